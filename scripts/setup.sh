@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the project needs (only those that are missing).
+# Safe to run repeatedly. Needs root (or sudo) for apt-get.
+set -euo pipefail
+PKGS=(build-essential cmake pkg-config git
+      libsimbody-dev libeigen3-dev libnlopt-cxx-dev libnlopt-dev
+      googletest libgtest-dev libgmock-dev
+      libcli11-dev libtomlplusplus-dev nlohmann-json3-dev)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "setup: all packages present"
+fi

@@ -1,0 +1,236 @@
+#include "subsystems/road.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <unsupported/Eigen/FFT>
+
+#include "subsystems/errors.hpp"
+#include "subsystems/random.hpp"
+
+namespace dtwin {
+namespace {
+constexpr double kHuge = 1e12;
+}
+
+RoadSample Road::sampleAveraged(Track t, double x, double L) const {
+  const double a = x - 0.5 * L, b = x + 0.5 * L;
+  return {(integral(t, b) - integral(t, a)) / L, (sample(t, b).height_m - sample(t, a).height_m) / L};
+}
+
+Interval FlatRoad::extent() const { return {-kHuge, kHuge}; }
+
+// ------------------------------------------------------------------ bump
+BumpRoad::BumpRoad(double start_x_m, double height_m, double length_m)
+    : x0_(start_x_m), H_(height_m), L_(length_m) {
+  DTWIN_CHECK(length_m > 0.0, "bump length must be positive");
+}
+
+RoadSample BumpRoad::sample(Track, double x) const {
+  if (x <= x0_ || x >= x0_ + L_) return {};
+  const double w = 2.0 * M_PI / L_;
+  return {0.5 * H_ * (1.0 - std::cos(w * (x - x0_))), 0.5 * H_ * w * std::sin(w * (x - x0_))};
+}
+
+double BumpRoad::integral(Track, double x) const {
+  if (x <= x0_) return 0.0;
+  if (x >= x0_ + L_) return 0.5 * H_ * L_;
+  const double w = 2.0 * M_PI / L_;
+  return 0.5 * H_ * ((x - x0_) - std::sin(w * (x - x0_)) / w);
+}
+
+Interval BumpRoad::extent() const { return {-kHuge, kHuge}; }
+
+nlohmann::json BumpRoad::describe() const {
+  return {{"type", "bump"}, {"shape", "one-cosine"}, {"start_x_m", x0_}, {"height_m", H_}, {"length_m", L_}};
+}
+
+// ------------------------------------------------------------------ grid
+GridRoad::GridRoad(double x0_m, double dx_m, std::vector<double> left_m, std::vector<double> right_m,
+                   nlohmann::json description)
+    : x0_(x0_m), dx_(dx_m), description_(std::move(description)) {
+  DTWIN_CHECK(dx_m > 0.0, "grid spacing must be positive");
+  DTWIN_CHECK(left_m.size() == right_m.size() && left_m.size() >= 2, "grid road needs >= 2 equal-length tracks");
+  h_[0] = std::move(left_m);
+  h_[1] = std::move(right_m);
+  for (int t = 0; t < 2; ++t) {
+    const auto& h = h_[t];
+    const std::size_t n = h.size();
+    auto& m = m_[t];
+    m.resize(n);
+    m[0] = (h[1] - h[0]) / dx_;
+    m[n - 1] = (h[n - 1] - h[n - 2]) / dx_;
+    for (std::size_t i = 1; i + 1 < n; ++i) m[i] = (h[i + 1] - h[i - 1]) / (2.0 * dx_);
+    auto& P = prefix_[t];
+    P.resize(n);
+    P[0] = 0.0;
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      P[i + 1] = P[i] + dx_ * 0.5 * (h[i] + h[i + 1]) + dx_ * dx_ * (m[i] - m[i + 1]) / 12.0;
+  }
+}
+
+RoadSample GridRoad::sample(Track t, double x) const {
+  const auto& h = h_[static_cast<int>(t)];
+  const auto& m = m_[static_cast<int>(t)];
+  const double s = (x - x0_) / dx_;
+  if (s <= 0.0) return {h.front(), 0.0};
+  const std::size_t n = h.size();
+  if (s >= static_cast<double>(n - 1)) return {h.back(), 0.0};
+  const std::size_t i = static_cast<std::size_t>(s);
+  const double u = s - static_cast<double>(i), u2 = u * u, u3 = u2 * u;
+  const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
+  const double d00 = 6 * u2 - 6 * u, d10 = 3 * u2 - 4 * u + 1, d01 = -6 * u2 + 6 * u, d11 = 3 * u2 - 2 * u;
+  return {h00 * h[i] + h10 * dx_ * m[i] + h01 * h[i + 1] + h11 * dx_ * m[i + 1],
+          (d00 * h[i] + d01 * h[i + 1]) / dx_ + d10 * m[i] + d11 * m[i + 1]};
+}
+
+double GridRoad::integral(Track t, double x) const {
+  const int k = static_cast<int>(t);
+  const auto& h = h_[k];
+  const auto& m = m_[k];
+  const auto& P = prefix_[k];
+  const std::size_t n = h.size();
+  const double s = (x - x0_) / dx_;
+  if (s <= 0.0) return h.front() * (x - x0_);
+  if (s >= static_cast<double>(n - 1)) return P.back() + h.back() * (x - (x0_ + dx_ * (n - 1)));
+  const std::size_t i = static_cast<std::size_t>(s);
+  const double u = s - static_cast<double>(i), u2 = u * u, u3 = u2 * u, u4 = u3 * u;
+  const double I00 = u - u3 + 0.5 * u4, I10 = 0.5 * u2 - 2.0 * u3 / 3.0 + 0.25 * u4;
+  const double I01 = u3 - 0.5 * u4, I11 = -u3 / 3.0 + 0.25 * u4;
+  return P[i] + dx_ * (h[i] * I00 + dx_ * m[i] * I10 + h[i + 1] * I01 + dx_ * m[i + 1] * I11);
+}
+
+Interval GridRoad::extent() const { return {x0_, x0_ + dx_ * static_cast<double>(h_[0].size() - 1)}; }
+
+// ------------------------------------------------------------------ ISO 8608
+double isoClassGd0(char c) {
+  if (c < 'A' || c > 'H') throw InputError("", std::string("ISO 8608 class must be A..H, got '") + c + "'");
+  return 16e-6 * std::pow(4.0, c - 'A');
+}
+
+double isoRmsHeight(char c, double n_min, double n_max) {
+  const double n0 = 0.1;
+  return std::sqrt(isoClassGd0(c) * n0 * n0 * (1.0 / n_min - 1.0 / n_max));
+}
+
+namespace {
+/// Integral of Gd(n0) (n/n0)^-w over [a, b].
+double gdIntegral(double gd0, double w, double a, double b) {
+  const double n0 = 0.1;
+  if (b <= a) return 0.0;
+  if (std::abs(w - 1.0) < 1e-12) return gd0 * n0 * std::log(b / a);
+  return gd0 * std::pow(n0, w) * (std::pow(b, 1.0 - w) - std::pow(a, 1.0 - w)) / (1.0 - w);
+}
+
+std::vector<double> isoTrack(const IsoRoadSpec& s, std::size_t N, std::uint64_t stream_id) {
+  const double period = static_cast<double>(N) * s.dx_m, dn = 1.0 / period, gd0 = isoClassGd0(s.road_class);
+  RandomStream rng(s.seed, 0x150'8608ULL, stream_id);
+  std::vector<std::complex<double>> spec(N, 0.0);
+  for (std::size_t k = 1; k < N / 2; ++k) {
+    const double phase = 2.0 * M_PI * rng.uniform();  // drawn for every bin: band changes keep phases
+    const double a = std::max(s.n_min, (k - 0.5) * dn), b = std::min(s.n_max, (k + 0.5) * dn);
+    const double var = gdIntegral(gd0, s.waviness, a, b);
+    if (var <= 0.0) continue;
+    const double amp = std::sqrt(2.0 * var);
+    spec[k] = static_cast<double>(N) * amp * std::polar(1.0, phase);
+  }
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> z;
+  fft.inv(z, spec);
+  std::vector<double> out(N);
+  for (std::size_t j = 0; j < N; ++j) out[j] = z[j].real();
+  return out;
+}
+}  // namespace
+
+std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& s) {
+  if (!(s.n_min > 0 && s.n_max > s.n_min)) throw InputError("", "ISO road band needs 0 < n_min < n_max");
+  if (!(s.dx_m > 0 && s.n_max < 0.25 / s.dx_m))
+    throw InputError("", "ISO road grid spacing must resolve n_max with >= 4 points per wavelength");
+  if (!(s.length_m > 0)) throw InputError("", "ISO road length must be > 0");
+  // Period P = N dx >= max(length, 4 / n_min), so that several bins lie below the band's low end.
+  const double need = std::max(s.length_m, 4.0 / s.n_min);
+  std::size_t N = 1024;
+  while (static_cast<double>(N) * s.dx_m < need) N *= 2;
+  std::vector<double> left = isoTrack(s, N, 0);
+  std::vector<double> right = s.coherence == IsoRoadSpec::Coherence::Identical ? left : isoTrack(s, N, 1);
+  const std::size_t n_pts = static_cast<std::size_t>(std::ceil(s.length_m / s.dx_m)) + 1;
+  left.resize(std::min(N, n_pts));
+  right.resize(left.size());
+  for (std::size_t j = 0; j < left.size(); ++j) {
+    const double x = s.x_begin_m + s.dx_m * static_cast<double>(j);
+    double w = 1.0;
+    if (x < s.smooth_until_m) w = 0.0;
+    else if (x < s.smooth_until_m + s.taper_m) w = 0.5 * (1.0 - std::cos(M_PI * (x - s.smooth_until_m) / s.taper_m));
+    left[j] *= w;
+    right[j] *= w;
+  }
+  nlohmann::json d = {{"type", "iso8608"},
+                      {"class", std::string(1, s.road_class)},
+                      {"gd_n0_m3", isoClassGd0(s.road_class)},
+                      {"n0_cycles_per_m", 0.1},
+                      {"waviness", s.waviness},
+                      {"band_cycles_per_m", {s.n_min, s.n_max}},
+                      {"dx_m", s.dx_m},
+                      {"x_begin_m", s.x_begin_m},
+                      {"length_m", s.length_m},
+                      {"period_m", static_cast<double>(N) * s.dx_m},
+                      {"tracks", s.coherence == IsoRoadSpec::Coherence::Identical ? "identical" : "independent"},
+                      {"seed", s.seed}};
+  if (s.smooth_until_m > -1e299) {
+    d["smooth_until_m"] = s.smooth_until_m;
+    d["taper_m"] = s.taper_m;
+  }
+  return std::make_shared<GridRoad>(s.x_begin_m, s.dx_m, std::move(left), std::move(right), std::move(d));
+}
+
+// ------------------------------------------------------------------ CSV
+std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "cannot open road profile");
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(path + ":1", "empty file; expected header 'distance_m,left_m,right_m'");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  if (line != "distance_m,left_m,right_m")
+    throw InputError(path + ":1", "header must be 'distance_m,left_m,right_m', got '" + line + "'");
+  std::vector<double> x, l, r;
+  int lineno = 1;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    double v[3];
+    std::stringstream ss(line);
+    std::string cell;
+    int c = 0;
+    while (std::getline(ss, cell, ',')) {
+      if (c >= 3) throw InputError(path + ":" + std::to_string(lineno), "expected 3 columns, got more");
+      char* end = nullptr;
+      v[c] = std::strtod(cell.c_str(), &end);
+      if (end == cell.c_str() || *end != '\0' || !std::isfinite(v[c]))
+        throw InputError(path + ":" + std::to_string(lineno), "value '" + cell + "' is not a finite number");
+      ++c;
+    }
+    if (c != 3) throw InputError(path + ":" + std::to_string(lineno), "expected 3 columns, got " + std::to_string(c));
+    if (!x.empty() && !(v[0] > x.back()))
+      throw InputError(path + ":" + std::to_string(lineno), "distance_m must increase strictly");
+    x.push_back(v[0]);
+    l.push_back(v[1]);
+    r.push_back(v[2]);
+  }
+  if (x.size() < 2) throw InputError(path, "a road profile needs at least 2 rows");
+  const double dx = (x.back() - x.front()) / static_cast<double>(x.size() - 1);
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (std::abs((x[i] - x[i - 1]) - dx) > 1e-6 * std::max(1.0, dx) + 1e-9 * std::abs(x[i]))
+      throw InputError(path + ":" + std::to_string(i + 2),
+                       "distance_m must be uniformly spaced (step " + std::to_string(x[i] - x[i - 1]) +
+                           " m differs from the mean " + std::to_string(dx) + " m)");
+  nlohmann::json d = {{"type", "csv"}, {"path", path}, {"rows", x.size()}, {"dx_m", dx}};
+  return std::make_shared<GridRoad>(x.front(), dx, std::move(l), std::move(r), std::move(d));
+}
+
+}  // namespace dtwin

@@ -1,0 +1,111 @@
+#pragma once
+// Road profiles h(x) [m] along the travelled distance x [m], one per wheel track.
+// The vehicle is kept in place and the road moves under it: the contact point of a wheel whose
+// hub sits at ground x-coordinate x_h is at road distance s(t) + x_h (docs/model.md).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace dtwin {
+
+enum class Track : int { Left = 0, Right = 1 };
+
+struct RoadSample {
+  double height_m = 0.0;
+  double slope = 0.0;  ///< dh/dx [m/m]
+};
+
+struct Interval {
+  double lo = 0.0, hi = 0.0;
+};
+
+class Road {
+ public:
+  virtual ~Road() = default;
+  virtual RoadSample sample(Track t, double x) const = 0;
+  /// Antiderivative of h for track t (any fixed origin); used for moving averages.
+  virtual double integral(Track t, double x) const = 0;
+  /// Mean height over [x - L/2, x + L/2] and its derivative with respect to x.
+  RoadSample sampleAveraged(Track t, double x, double L) const;
+  /// Range of x over which the profile is defined (outside it, the end value is held).
+  virtual Interval extent() const = 0;
+  /// Short obstacles (x ranges) near which the integrator's step must be bounded.
+  virtual std::vector<Interval> obstacles() const { return {}; }
+  /// How the road was made (type, parameters, seed, ...), for provenance sidecars.
+  virtual nlohmann::json describe() const = 0;
+};
+
+class FlatRoad final : public Road {
+ public:
+  RoadSample sample(Track, double) const override { return {}; }
+  double integral(Track, double) const override { return 0.0; }
+  Interval extent() const override;
+  nlohmann::json describe() const override { return {{"type", "flat"}}; }
+};
+
+/// One-cosine speed bump across both tracks: h = H/2 (1 - cos(2 pi (x - x0)/L)) on [x0, x0 + L].
+class BumpRoad final : public Road {
+ public:
+  BumpRoad(double start_x_m, double height_m, double length_m);
+  RoadSample sample(Track t, double x) const override;
+  double integral(Track t, double x) const override;
+  Interval extent() const override;
+  std::vector<Interval> obstacles() const override { return {{x0_, x0_ + L_}}; }
+  nlohmann::json describe() const override;
+
+ private:
+  double x0_, H_, L_;
+};
+
+/// A profile sampled on a uniform grid, interpolated with C1 cubic Hermite (Catmull-Rom)
+/// splines; integrals are exact for that interpolant.
+class GridRoad final : public Road {
+ public:
+  GridRoad(double x0_m, double dx_m, std::vector<double> left_m, std::vector<double> right_m,
+           nlohmann::json description);
+  RoadSample sample(Track t, double x) const override;
+  double integral(Track t, double x) const override;
+  Interval extent() const override;
+  nlohmann::json describe() const override { return description_; }
+  double x0() const { return x0_; }
+  double dx() const { return dx_; }
+  const std::vector<double>& heights(Track t) const { return h_[static_cast<int>(t)]; }
+
+ private:
+  double x0_, dx_;
+  std::vector<double> h_[2], m_[2], prefix_[2];  // heights, slopes at nodes, integral at nodes
+  nlohmann::json description_;
+};
+
+/// ISO 8608 random road (method.md §2): Gd(n) = Gd(n0) (n/n0)^-w, n0 = 0.1 cycles/m, w = 2 by
+/// default. Made as a sum of cosines on the frequency grid k/P (P the period) with random
+/// phases, evaluated by inverse FFT. Each bin's amplitude is sqrt(2 * integral of Gd over the
+/// bin within the band), so the profile's mean square over a period equals the integral of Gd
+/// over the band exactly; the band edges are stated in every description.
+struct IsoRoadSpec {
+  char road_class = 'D';          ///< A..H (geometric mean of the class)
+  double n_min = 0.011;           ///< lowest spatial frequency kept [cycles/m]
+  double n_max = 2.83;            ///< highest [cycles/m]
+  double waviness = 2.0;          ///< w
+  double dx_m = 0.01;             ///< grid spacing
+  double x_begin_m = 0.0;         ///< first grid point
+  double length_m = 200.0;        ///< covered length
+  double smooth_until_m = -1e300; ///< flat before this x, raised-cosine taper after it
+  double taper_m = 1.0;           ///< taper length
+  enum class Coherence { Independent, Identical } coherence = Coherence::Independent;
+  unsigned long long seed = 1;
+};
+
+/// Gd(n0) [m^3] of an ISO 8608 class (geometric mean): A 16e-6, B 64e-6, ..., H 262144e-6.
+double isoClassGd0(char road_class);
+/// RMS height over the band for w = 2: sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)) (vehicle.md).
+double isoRmsHeight(char road_class, double n_min, double n_max);
+std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& spec);
+
+/// Reads a CSV with header "distance_m,left_m,right_m", uniform spacing, strictly increasing
+/// distance, finite values. Errors name the file and line (InputError).
+std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path);
+
+}  // namespace dtwin

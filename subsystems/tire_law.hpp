@@ -1,0 +1,95 @@
+#pragma once
+// Vertical tire laws: the normal force between road and wheel hub.
+//
+// Contact model (the same for every law, stated plainly): single-point contact under the wheel
+// centre. Deflection rho_z = R0 - (z_hub - h_road(x_contact)); the law is evaluated only for
+// rho_z > 0 and the force is clamped at >= 0, so the wheel may leave the ground. A short-obstacle
+// enveloping filter can be added as an effect (see effect.hpp, "tire_enveloping").
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "subsystems/parameter.hpp"
+
+namespace dtwin {
+
+/// Inputs of a vertical tire law at one instant.
+struct TireState {
+  double deflection_m = 0.0;         ///< rho_z, positive in contact
+  /// Rate the damping term acts on. The twin passes -dz_hub/dt (paper eq. 2): see
+  /// docs/model.md, "tire damping".
+  double deflection_rate_mps = 0.0;
+  double wheel_speed_radps = 0.0;    ///< |Omega|
+  double fx_N = 0.0;                 ///< longitudinal force (PAC2002 load-response term)
+  double fy_N = 0.0;                 ///< lateral force
+  double camber_rad = 0.0;           ///< inclination angle gamma
+};
+
+class TireLaw {
+ public:
+  virtual ~TireLaw() = default;
+  /// Option name as used in study files ("fiala", "pac2002").
+  virtual std::string name() const = 0;
+  virtual const std::vector<ParameterSpec>& parameters() const = 0;
+  /// Normal force [N], >= 0, and exactly 0 when deflection_m <= 0.
+  virtual double calcNormalForce(const TireState& s, ParamValues p) const = 0;
+  /// The stiffness [N/m] this law states for parameters p at its operating point
+  /// (operatingDeflection), with zero rate, speed, Fx, Fy and camber.
+  virtual double statedStiffness(ParamValues p) const = 0;
+  /// Deflection [m] at the operating point where statedStiffness holds.
+  virtual double operatingDeflection(ParamValues p) const = 0;
+  /// Checks combinations of values that single-parameter ranges cannot express. Returns an
+  /// empty string if valid, else the broken rule.
+  virtual std::string checkCombination(ParamValues p) const { return {}; }
+  /// Unloaded radius R0 [m] (every law has one).
+  double unloadedRadius(ParamValues p) const { return p[parameterIndex(parameters(), "unloaded_radius_m")]; }
+
+  /// Static deflection [m] under `load_N` at zero speed (solved numerically, any monotone law).
+  double calcStaticDeflection(double load_N, ParamValues p) const;
+};
+
+/// Fiala ("Fiala Wheel 2DOF", vertical motion mapped as linear stiffness and damping), paper eq. 2:
+///   Fz = k rho_z + b d(rho_z)/dt,  clamped >= 0.
+/// The paper writes "- b z'" with z the hub height; on a flat road d(rho_z)/dt = -z'. The twin
+/// passes -z' as the rate (TireState::deflection_rate_mps). Parameters are in N/m and N s/m and share the calibrated bounds of PAC2002
+/// (method.md §1 explains why the paper's Simulink bounds are not used).
+class FialaTire final : public TireLaw {
+ public:
+  FialaTire();
+  std::string name() const override { return "fiala"; }
+  const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  double calcNormalForce(const TireState& s, ParamValues p) const override;
+  double statedStiffness(ParamValues p) const override { return p[0]; }
+  double operatingDeflection(ParamValues p) const override { return 0.02; }
+
+ private:
+  std::vector<ParameterSpec> specs_;
+};
+
+/// PAC2002 vertical law ("Combined Slip Wheel 2DOF"; the same law as MFeval), paper eq. 3:
+///   Fz = [1 + qV2 |Omega| R0/V0 - (qFcx Fx/Fz0)^2 - (qFcy Fy/Fz0)^2]
+///        * [(qFz1 + qFz3 gamma^2) rho/R0 + qFz2 (rho/R0)^2] * (1 + ppFz1 dpi) * Fz0
+///        + c d(rho)/dt,                                     clamped >= 0,
+/// with dpi = (p - p0)/p0. The calibrated stiffness Cz sets qFz1 = sqrt((Cz R0/Fz0)^2 - 4 qFz2),
+/// which makes the static stiffness equal Cz (1 + ppFz1 dpi) at the nominal load Fz0 (the
+/// operating point; MFeval's convention). Unlike Chrono's ChPac02Tire, the qV2 and Fx/Fy terms
+/// are kept, as in the paper.
+class Pac2002Tire final : public TireLaw {
+ public:
+  Pac2002Tire();
+  std::string name() const override { return "pac2002"; }
+  const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  double calcNormalForce(const TireState& s, ParamValues p) const override;
+  double statedStiffness(ParamValues p) const override;
+  double operatingDeflection(ParamValues p) const override;
+  std::string checkCombination(ParamValues p) const override;
+
+ private:
+  std::vector<ParameterSpec> specs_;
+};
+
+/// Factory keyed by study-file option name. Throws InputError listing the known names.
+std::unique_ptr<TireLaw> makeTireLaw(const std::string& name, const std::string& where);
+std::vector<std::string> tireLawNames();
+
+}  // namespace dtwin

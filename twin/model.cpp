@@ -1,0 +1,240 @@
+#include "twin/model.hpp"
+
+#include <limits>
+#include <toml++/toml.h>
+
+#include "subsystems/errors.hpp"
+
+namespace dtwin {
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+ParameterSpec fixedSpec(std::string name, std::string unit, std::string desc, double lo, bool lo_incl) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.unit = std::move(unit);
+  s.description = std::move(desc);
+  s.min_value = lo;
+  s.min_inclusive = lo_incl;
+  s.max_value = kInf;
+  return s;
+}
+
+std::string fullName(const std::string& subsystem, const std::string& option, const ParameterSpec& s) {
+  return s.shared ? subsystem + "." + s.name : subsystem + "." + option + "." + s.name;
+}
+
+std::string locate(const std::string& path, const toml::node& n) {
+  const auto& src = n.source();
+  return path + ":" + std::to_string(src.begin.line);
+}
+}  // namespace
+
+std::string AssemblySpec::option(const std::string& subsystem) const {
+  for (auto& [s, o] : options)
+    if (s == subsystem) return o;
+  return {};
+}
+
+std::string AssemblySpec::label() const {
+  std::string out;
+  for (auto& [s, o] : options) out += (out.empty() ? "" : " + ") + o;
+  for (auto& e : effects) out += " + " + e;
+  return out;
+}
+
+const std::map<std::string, std::vector<std::string>>& knownSubsystems() {
+  static const std::map<std::string, std::vector<std::string>> k = {
+      {"tire", {"fiala", "pac2002"}}, {"suspension", {"macpherson", "solid_axle"}}};
+  return k;
+}
+
+ParameterTable declareVehicleParameters() {
+  ParameterTable t;
+  auto fixed = [&](const char* n, const char* u, const char* d, double lo = 0.0, bool incl = false) {
+    t.declare(fixedSpec(n, u, d, lo, incl));
+  };
+  fixed("environment.gravity_mps2", "m/s^2", "gravitational acceleration");
+  fixed("chassis.mass_kg", "kg", "sprung mass");
+  fixed("chassis.roll_inertia_kgm2", "kg*m^2", "sprung-mass roll inertia about the CG");
+  fixed("chassis.pitch_inertia_kgm2", "kg*m^2", "sprung-mass pitch inertia about the CG");
+  fixed("chassis.yaw_inertia_kgm2", "kg*m^2", "sprung-mass yaw inertia about the CG");
+  fixed("chassis.cg_height_m", "m", "sprung-mass CG height above ground at design ride height");
+  fixed("geometry.cg_to_front_axle_m", "m", "longitudinal distance sprung CG to front axle");
+  fixed("geometry.cg_to_rear_axle_m", "m", "longitudinal distance sprung CG to rear axle");
+  fixed("geometry.track_m", "m", "track width (wheel centre to wheel centre)");
+  fixed("wheel.mass_kg", "kg", "wheel (unsprung) mass, each");
+  fixed("solid_axle.mass_kg", "kg", "axle beam mass (solid axle only), each axle");
+  fixed("solid_axle.roll_inertia_kgm2", "kg*m^2", "axle roll inertia about its centre");
+  fixed("solid_axle.spring_track_m", "m", "lateral distance between the axle's spring seats");
+  // Tire options.
+  std::vector<std::string> declared;
+  for (const auto& opt : knownSubsystems().at("tire")) {
+    auto law = makeTireLaw(opt, "");
+    for (auto s : law->parameters()) {
+      s.name = fullName("tire", opt, s);
+      if (!t.contains(s.name)) t.declare(s);
+    }
+  }
+  // Suspension options: main strut law per option; shared stiffness/damping.
+  LinearStrut strut;
+  for (const auto& opt : knownSubsystems().at("suspension"))
+    for (auto s : strut.parameters()) {
+      s.name = fullName("suspension", opt, s);
+      if (!t.contains(s.name)) t.declare(s);
+    }
+  fixed("suspension.solid_axle.interface_stiffness", "N/m", "wheel/axle interface stiffness k_wa (eq. 5)");
+  fixed("suspension.solid_axle.interface_damping", "N*s/m", "wheel/axle interface damping c_wa (eq. 5)", 0.0, true);
+  fixed("suspension.solid_axle.interface_preload_N", "N", "wheel/axle interface preload F0 (eq. 5)", -kInf, true);
+  fixed("suspension.solid_axle.interface_travel_limit_m", "m", "wheel/axle interface travel before its hardstop");
+  fixed("suspension.solid_axle.interface_hardstop_stiffness", "N/m", "wheel/axle interface hardstop stiffness", 0.0, true);
+  // Effects: pre-set to their "off" values.
+  for (const auto& e : effectNames()) {
+    auto eff = makeEffect(e, "");
+    for (auto s : eff->parameters()) {
+      s.name = e + "." + s.name;
+      const double off = s.default_value;
+      t.declare(s);
+      t.set(s.name, off, "effect default (off)", "");
+    }
+  }
+  return t;
+}
+
+void loadVehicleFile(ParameterTable& table, const std::string& path) {
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line), std::string("malformed TOML: ") + std::string(e.description()));
+  }
+  std::function<void(const toml::table&, const std::string&)> walk = [&](const toml::table& tbl, const std::string& prefix) {
+    for (auto&& [k, node] : tbl) {
+      const std::string name = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+      const std::string where = locate(path, node) + ": " + name;
+      if (name == "vehicle") {  // descriptive header table
+        continue;
+      }
+      const auto* sub = node.as_table();
+      if (!sub) throw InputError(where, "each parameter must be a table { value = .., unit = \"..\", source = \"..\" }");
+      if (!sub->contains("value")) {
+        walk(*sub, name);
+        continue;
+      }
+      const auto v = (*sub)["value"].value<double>();
+      const auto u = (*sub)["unit"].value<std::string>();
+      const auto src = (*sub)["source"].value<std::string>();
+      if (!v) throw InputError(where + ".value", "must be a number");
+      if (!u) throw InputError(where + ".unit", "is required (a string such as \"kg\")");
+      if (!src) throw InputError(where + ".source", "is required: say where the number comes from");
+      for (auto&& [kk, _] : *sub)
+        if (kk != "value" && kk != "unit" && kk != "source")
+          throw InputError(where + "." + std::string(kk.str()), "unknown key (allowed: value, unit, source)");
+      table.set(name, *v, path + " (" + *src + ")", where, *u);
+    }
+  };
+  walk(root, "");
+}
+
+// ------------------------------------------------------------------ Model
+Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where)
+    : assembly_(std::move(assembly)), table_(std::move(table)) {
+  const std::string tire = assembly_.option("tire"), susp = assembly_.option("suspension");
+  if (tire.empty()) throw InputError(where, "assembly " + assembly_.id + " has no tire option");
+  if (susp.empty()) throw InputError(where, "assembly " + assembly_.id + " has no suspension option");
+  tire_ = makeTireLaw(tire, where);
+  if (susp == "macpherson") topology_ = SuspensionTopology::MacPherson;
+  else if (susp == "solid_axle") topology_ = SuspensionTopology::SolidAxle;
+  else throw InputError(where, "unknown suspension option '" + susp + "' (known: macpherson, solid_axle)");
+
+  auto need = [&](const std::string& n) {
+    const auto& e = table_.at(n);
+    if (!e.has_value) throw InputError(where, "no value for required parameter '" + n + "' (set it in the vehicle file or the study)");
+    return e.value;
+  };
+  vehicle_.gravity = need("environment.gravity_mps2");
+  vehicle_.chassis_mass = need("chassis.mass_kg");
+  vehicle_.ixx = need("chassis.roll_inertia_kgm2");
+  vehicle_.iyy = need("chassis.pitch_inertia_kgm2");
+  vehicle_.izz = need("chassis.yaw_inertia_kgm2");
+  vehicle_.cg_height = need("chassis.cg_height_m");
+  vehicle_.a = need("geometry.cg_to_front_axle_m");
+  vehicle_.b = need("geometry.cg_to_rear_axle_m");
+  vehicle_.track = need("geometry.track_m");
+  vehicle_.wheel_mass = need("wheel.mass_kg");
+  if (topology_ == SuspensionTopology::SolidAxle) {
+    vehicle_.axle_mass = need("solid_axle.mass_kg");
+    vehicle_.axle_ixx = need("solid_axle.roll_inertia_kgm2");
+    vehicle_.spring_track = need("solid_axle.spring_track_m");
+  }
+
+  for (const auto& s : tire_->parameters()) tire_slots_.push_back(addRunParameter(fullName("tire", tire, s)));
+  for (const auto& s : strut_.parameters()) susp_slots_.push_back(addRunParameter(fullName("suspension", susp, s)));
+  if (topology_ == SuspensionTopology::SolidAxle) {
+    iface_slots_ = {addRunParameter("suspension.solid_axle.interface_stiffness"),
+                    addRunParameter("suspension.solid_axle.interface_damping"),
+                    addRunParameter("suspension.solid_axle.interface_travel_limit_m"),
+                    addRunParameter("suspension.solid_axle.interface_hardstop_stiffness")};
+    iface_preload_slot_ = addRunParameter("suspension.solid_axle.interface_preload_N");
+  }
+  for (const auto& e : assembly_.effects) {
+    std::shared_ptr<const Effect> eff = makeEffect(e, where);
+    std::vector<int> slots;
+    for (const auto& s : eff->parameters()) slots.push_back(addRunParameter(e + "." + s.name));
+    effects_.push_back(std::move(eff));
+    effect_slots_.push_back(std::move(slots));
+  }
+  for (const auto& n : run_names_) need(n);
+  const std::string rule = checkRunValues(defaultRunValues());
+  if (!rule.empty()) throw InputError(where, rule);
+}
+
+int Model::addRunParameter(const std::string& name) {
+  auto it = slots_.find(name);
+  if (it != slots_.end()) return it->second;
+  const int s = static_cast<int>(run_names_.size());
+  run_names_.push_back(name);
+  slots_[name] = s;
+  return s;
+}
+
+int Model::slot(const std::string& name) const {
+  auto it = slots_.find(name);
+  return it == slots_.end() ? -1 : it->second;
+}
+
+std::vector<double> Model::defaultRunValues() const {
+  std::vector<double> v;
+  for (const auto& n : run_names_) v.push_back(table_.value(n));
+  return v;
+}
+
+std::string Model::checkRunValues(const std::vector<double>& v) const {
+  DTWIN_CHECK(v.size() == run_names_.size(), "run vector size");
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string rule = checkParameterValue(table_.at(run_names_[i]).spec, v[i]);
+    if (!rule.empty()) return run_names_[i] + " " + rule;
+  }
+  std::vector<double> tp;
+  for (int s : tire_slots_) tp.push_back(v[static_cast<std::size_t>(s)]);
+  return tire_->checkCombination(tp);
+}
+
+double Model::staticTireLoad(int corner) const {
+  const auto& d = vehicle_;
+  const double g = d.gravity;
+  // Whole-vehicle CG from the sprung CG (x = 0) and the unsprung masses at the axles.
+  const double m_unsprung_axle = 2 * d.wheel_mass + (topology_ == SuspensionTopology::SolidAxle ? d.axle_mass : 0.0);
+  const double M = d.total_mass(topology_);
+  const double x_cg = m_unsprung_axle * (d.a - d.b) / M;
+  const double axle_load = isFront(corner) ? M * g * (x_cg + d.b) / d.wheelbase() : M * g * (d.a - x_cg) / d.wheelbase();
+  return 0.5 * axle_load;
+}
+
+double Model::staticStrutForce(int corner) const {
+  const auto& d = vehicle_;
+  const double sprung_axle = d.chassis_mass * d.gravity * (isFront(corner) ? d.b : d.a) / d.wheelbase();
+  return 0.5 * sprung_axle;
+}
+
+}  // namespace dtwin

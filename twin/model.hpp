@@ -1,0 +1,110 @@
+#pragma once
+// The constant description of one assembly (Pinocchio's Model / Drake's System in spirit): which
+// option each subsystem uses, which effects are installed, every fixed value, and the layout of
+// the per-run parameter vector. Immutable after construction and shared by all runs and threads.
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "subsystems/effect.hpp"
+#include "subsystems/strut_law.hpp"
+#include "subsystems/tire_law.hpp"
+#include "twin/parameters.hpp"
+
+namespace dtwin {
+
+enum class Corner : int { FL = 0, FR = 1, RL = 2, RR = 3 };
+inline constexpr std::array<const char*, 4> kCornerNames = {"fl", "fr", "rl", "rr"};
+inline bool isFront(int corner) { return corner < 2; }
+inline Track cornerTrack(int corner) { return corner % 2 == 0 ? Track::Left : Track::Right; }
+
+enum class SuspensionTopology { MacPherson, SolidAxle };
+
+/// One assembly: an option per subsystem plus optional effects.
+struct AssemblySpec {
+  std::string id;                                ///< "M1"
+  std::vector<std::pair<std::string, std::string>> options;  ///< (subsystem, option), study order
+  std::vector<std::string> effects;              ///< installed effect names
+  std::string option(const std::string& subsystem) const;
+  std::string label() const;                     ///< "pac2002 + macpherson [+ bump_stop]"
+};
+
+/// Subsystems and options the twin knows.
+const std::map<std::string, std::vector<std::string>>& knownSubsystems();
+
+/// A table declaring every parameter a vehicle can have: fixed data (masses, geometry), the
+/// parameters of every tire and suspension option, and every effect (pre-set to "off").
+ParameterTable declareVehicleParameters();
+
+/// Reads a vehicle data file (TOML; each leaf `name = { value = .., unit = "..", source = ".." }`)
+/// into `table`. Errors name the file, the line and the field.
+void loadVehicleFile(ParameterTable& table, const std::string& path);
+
+/// Fixed (topology-level) vehicle data, read once per model.
+struct VehicleData {
+  double gravity = 9.80665;
+  double chassis_mass = 0, ixx = 0, iyy = 0, izz = 0, cg_height = 0;
+  double a = 0, b = 0, track = 0;  ///< CG to front / rear axle, track width
+  double wheel_mass = 0;
+  double axle_mass = 0, axle_ixx = 0, spring_track = 0;
+  double wheelbase() const { return a + b; }
+  /// Total mass including wheels (and axles for a solid axle).
+  double total_mass(SuspensionTopology t) const {
+    return chassis_mass + 4 * wheel_mass + (t == SuspensionTopology::SolidAxle ? 2 * axle_mass : 0.0);
+  }
+};
+
+class Model {
+ public:
+  /// Validates the options and that every parameter this assembly needs has a value.
+  /// `where` names the source (study file) for error messages.
+  Model(AssemblySpec assembly, ParameterTable table, const std::string& where);
+
+  const AssemblySpec& assembly() const { return assembly_; }
+  const ParameterTable& table() const { return table_; }
+  const VehicleData& vehicle() const { return vehicle_; }
+  SuspensionTopology topology() const { return topology_; }
+  const TireLaw& tire() const { return *tire_; }
+  const LinearStrut& strut() const { return strut_; }
+  const std::vector<std::shared_ptr<const Effect>>& effects() const { return effects_; }
+
+  /// Names of the per-run parameters (the run vector's layout).
+  const std::vector<std::string>& runParameterNames() const { return run_names_; }
+  /// Slot of a run parameter, or -1 if `name` is not a run parameter of this model.
+  int slot(const std::string& name) const;
+  /// The run vector filled from the table's values.
+  std::vector<double> defaultRunValues() const;
+  /// Checks a run vector (ranges, law combinations). Returns "" or "<name> <rule>".
+  std::string checkRunValues(const std::vector<double>& v) const;
+
+  // Slot layouts of the elements (indices into the run vector).
+  const std::vector<int>& tireSlots() const { return tire_slots_; }
+  const std::vector<int>& suspensionSlots() const { return susp_slots_; }
+  const std::vector<int>& interfaceSlots() const { return iface_slots_; }
+  int interfacePreloadSlot() const { return iface_preload_slot_; }
+  const std::vector<std::vector<int>>& effectSlots() const { return effect_slots_; }
+
+  /// Static tire load [N] and main-strut static force [N] per corner (from masses and geometry).
+  double staticTireLoad(int corner) const;
+  double staticStrutForce(int corner) const;
+
+ private:
+  int addRunParameter(const std::string& name);
+
+  AssemblySpec assembly_;
+  ParameterTable table_;
+  VehicleData vehicle_;
+  SuspensionTopology topology_;
+  std::unique_ptr<TireLaw> tire_;
+  LinearStrut strut_;
+  std::vector<std::shared_ptr<const Effect>> effects_;
+  std::vector<std::string> run_names_;
+  std::map<std::string, int> slots_;
+  std::vector<int> tire_slots_, susp_slots_, iface_slots_;
+  int iface_preload_slot_ = -1;
+  std::vector<std::vector<int>> effect_slots_;
+};
+
+}  // namespace dtwin

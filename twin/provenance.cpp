@@ -1,0 +1,59 @@
+#include "twin/provenance.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+
+#include "dtwin/version.hpp"
+
+namespace dtwin {
+
+nlohmann::json programInfo() { return {{"name", "twin"}, {"version", kVersion}, {"git", kGitDescribe}}; }
+
+std::string utcNow() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioSpec& scenario, const Road& road,
+                         std::uint64_t seed, const std::vector<double>& values, const SimulationOptions& options,
+                         const RunStats& stats, const std::vector<Channel>& channels, const std::string& command) {
+  nlohmann::json j;
+  j["program"] = programInfo();
+  j["command"] = command;
+  j["created_utc"] = utcNow();
+  j["study"] = {{"path", study.path}, {"name", study.name}, {"vehicle", study.vehicle_path}};
+  j["assembly"] = {{"id", model.assembly().id}, {"label", model.assembly().label()}, {"effects", model.assembly().effects}};
+  for (auto& [s, o] : model.assembly().options) j["assembly"]["options"][s] = o;
+  j["scenario"] = scenario.toJson();
+  j["road"] = road.describe();
+  j["seed"] = seed;
+  nlohmann::json rp = nlohmann::json::object();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto& e = model.table().at(model.runParameterNames()[i]);
+    rp[model.runParameterNames()[i]] = {{"value", values[i]}, {"unit", e.spec.unit}, {"source", e.source}};
+  }
+  j["run_parameters"] = rp;
+  j["all_parameters"] = model.table().toJson();
+  j["simulation"] = options.toJson();
+  j["contact_model"] = "single-point contact under the wheel centre" +
+                       std::string(std::find(model.assembly().effects.begin(), model.assembly().effects.end(), "tire_enveloping") !=
+                                           model.assembly().effects.end()
+                                       ? " with a moving-average effective road (tire_enveloping)"
+                                       : "");
+  j["stats"] = {{"ok", stats.ok}, {"message", stats.message}, {"integrator_steps", stats.steps},
+                {"steps_attempted", stats.steps_attempted}, {"recorded_states", stats.knots},
+                {"simulated_s", stats.sim_s}, {"wall_s", stats.wall_s}};
+  for (const auto& c : channels) j["channels"].push_back({{"name", c.name}, {"unit", c.unit}, {"description", c.description}});
+  return j;
+}
+
+std::string sidecarPath(const std::string& csv_path) {
+  std::filesystem::path p(csv_path);
+  p.replace_extension(".json");
+  return p.string();
+}
+
+}  // namespace dtwin

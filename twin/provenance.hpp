@@ -1,0 +1,25 @@
+#pragma once
+// How an output was made: program version, command, study, assembly, every parameter value,
+// road and seed, integrator settings, run statistics. Written as a JSON sidecar next to outputs.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "twin/simulator.hpp"
+#include "twin/study.hpp"
+
+namespace dtwin {
+
+nlohmann::json programInfo();
+std::string utcNow();
+
+/// The sidecar of one simulation run.
+nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioSpec& scenario, const Road& road,
+                         std::uint64_t seed, const std::vector<double>& values, const SimulationOptions& options,
+                         const RunStats& stats, const std::vector<Channel>& channels, const std::string& command);
+
+/// "out/m1.csv" -> "out/m1.json".
+std::string sidecarPath(const std::string& csv_path);
+
+}  // namespace dtwin

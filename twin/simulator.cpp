@@ -1,0 +1,525 @@
+#include "twin/simulator.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+#include <Simbody.h>
+
+#include "subsystems/errors.hpp"
+
+namespace dtwin {
+using namespace SimTK;
+
+// ----------------------------------------------------------------------- options
+std::vector<std::string> SimulationOptions::integratorNames() {
+  return {"rk-merson", "rk3", "rk-feldberg", "cpodes", "semi-explicit-euler2"};
+}
+
+std::string SimulationOptions::check() const {
+  auto names = integratorNames();
+  if (std::find(names.begin(), names.end(), integrator) == names.end())
+    return "integrator must be one of rk-merson, rk3, rk-feldberg, cpodes, semi-explicit-euler2, got '" + integrator + "'";
+  if (!(accuracy > 0 && accuracy < 1)) return "accuracy must be in (0, 1), got " + std::to_string(accuracy);
+  if (!(max_step_s > 0)) return "max_step_s must be > 0, got " + std::to_string(max_step_s);
+  if (!(obstacle_max_step_s > 0)) return "obstacle_max_step_s must be > 0, got " + std::to_string(obstacle_max_step_s);
+  if (!(obstacle_margin_before_s >= 0 && obstacle_margin_after_s >= 0)) return "obstacle margins must be >= 0";
+  if (!(output_rate_hz > 0 && output_rate_hz <= 1e6)) return "output_rate_hz must be in (0, 1e6], got " + std::to_string(output_rate_hz);
+  return {};
+}
+
+nlohmann::json SimulationOptions::toJson() const {
+  return {{"integrator", integrator},
+          {"accuracy", accuracy},
+          {"max_step_s", max_step_s},
+          {"obstacle_max_step_s", obstacle_max_step_s},
+          {"obstacle_margin_before_s", obstacle_margin_before_s},
+          {"obstacle_margin_after_s", obstacle_margin_after_s},
+          {"output_rate_hz", output_rate_hz},
+          {"output_method", "cubic Hermite interpolation of states recorded at every integrator step; forces from the laws"}};
+}
+
+// ----------------------------------------------------------------------- run context
+namespace {
+
+/// Per-run data the force elements read (owned by the Simulator, set before each run).
+struct RunContext {
+  const double* p = nullptr;
+  const Road* road = nullptr;
+  SpeedProfile speed;
+  double traction_per_wheel_per_accel = 0.0;  ///< M/4: traction share per unit acceleration
+};
+
+struct TireEval {
+  double fz = 0, rho = 0, rho_dot = 0, road_h = 0, x_road = 0;
+};
+
+/// The tire at one corner: shared by the Simbody force element and the output reconstruction.
+struct TireCorner {
+  const Model* model = nullptr;
+  int corner = 0;
+  std::size_t p0 = 0, np = 0;  // contiguous tire slots
+  std::vector<std::pair<const Effect*, std::size_t>> filters;  // tire-input effects, first slot
+
+  TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
+    TireEval e;
+    const ParamValues p(c.p + p0, np);
+    const double v = c.speed.speed(t);
+    e.x_road = c.speed.distance(t) + hub_x - model->vehicle().a;
+    const Track tr = cornerTrack(corner);
+    RoadSample rs = c.road->sample(tr, e.x_road);
+    e.road_h = rs.height_m;
+    for (auto& [eff, s] : filters)
+      rs = eff->filterRoad(*c.road, tr, e.x_road, ParamValues(c.p + s, eff->parameters().size()));
+    const double R0 = model->tire().unloadedRadius(p);
+    e.rho = R0 - (hub_z - rs.height_m);
+    e.rho_dot = rs.slope * (v + hub_xd) - hub_zd;
+    TireState ts;
+    ts.deflection_m = e.rho;
+    // Damping acts on the hub's vertical velocity, -dz_hub/dt (paper eq. 2, "- b z'"). With
+    // single-point contact the full deflection rate would carry the road slope times the speed
+    // (56 m/s over the 100 mm bump): an unphysical damping spike a real tire never sees.
+    ts.deflection_rate_mps = -hub_zd;
+    ts.wheel_speed_radps = v / (R0 - std::max(0.0, e.rho) / 3.0);
+    ts.fx_N = c.traction_per_wheel_per_accel * c.speed.accel(t);
+    e.fz = model->tire().calcNormalForce(ts, p);
+    return e;
+  }
+};
+
+class TireElement : public Force::Custom::Implementation {
+ public:
+  TireElement(const RunContext* ctx, TireCorner tc, MobilizedBody wheel) : ctx_(ctx), tc_(std::move(tc)), wheel_(wheel) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    const Vec3 p = wheel_.getBodyOriginLocation(s), v = wheel_.getBodyOriginVelocity(s);
+    const double t = s.getTime();
+    const TireEval e = tc_.eval(*ctx_, t, p[0], v[0], p[2], v[2]);
+    const double fx = ctx_->traction_per_wheel_per_accel * ctx_->speed.accel(t);
+    SpatialVec& F = bodyForces[wheel_.getMobilizedBodyIndex()];
+    F[1] += Vec3(fx, 0, e.fz);
+    // Traction acts at the contact point, a height (hub_z - road) below the hub.
+    F[0] += Vec3(0, -(p[2] - (tc_.model->tire().unloadedRadius(ParamValues(ctx_->p + tc_.p0, tc_.np)) - e.rho)) * fx, 0);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  TireCorner tc_;
+  MobilizedBody wheel_;
+};
+
+struct StrutGeometry {
+  MobilizedBody upper, lower;
+  Vec3 st_upper, st_lower;
+  struct Kin {
+    double q, qd;
+  };
+  Kin kin(const State& s) const {
+    const Vec3 pu = upper.findStationLocationInGround(s, st_upper), pl = lower.findStationLocationInGround(s, st_lower);
+    const Vec3 vu = upper.findStationVelocityInGround(s, st_upper), vl = lower.findStationVelocityInGround(s, st_lower);
+    const UnitVec3 z = upper.getBodyRotation(s).z();
+    const Vec3 w = upper.getBodyAngularVelocity(s);
+    const Vec3 d = pl - pu;
+    return {~d * Vec3(z), ~(vl - vu) * Vec3(z) + ~d * (w % Vec3(z))};
+  }
+  double accel(const State& s) const {
+    const Vec3 au = upper.findStationAccelerationInGround(s, st_upper), al = lower.findStationAccelerationInGround(s, st_lower);
+    return ~(al - au) * Vec3(upper.getBodyRotation(s).z());
+  }
+};
+
+class StrutElement : public Force::Custom::Implementation {
+ public:
+  StrutElement(const RunContext* ctx, const Model* m, StrutGeometry g, std::size_t p0, int preload_slot,
+               double preload, bool with_effects)
+      : ctx_(ctx), m_(m), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    const auto k = g_.kin(s);
+    const double F = force(k.q, k.qd);
+    const Vec3 z(g_.upper.getBodyRotation(s).z());
+    g_.upper.applyForceToBodyPoint(s, g_.st_upper, F * z, bodyForces);
+    g_.lower.applyForceToBodyPoint(s, g_.st_lower, -F * z, bodyForces);
+  }
+  double force(double q, double qd) const {
+    const double* p = ctx_->p;
+    StrutState ss;
+    ss.deflection_m = q;
+    ss.rate_mps = qd;
+    ss.preload_N = preload_slot_ >= 0 ? p[preload_slot_] : preload_;
+    ss.base_stiffness = p[p0_];
+    ss.base_damping = p[p0_ + 1];
+    double F = m_->strut().calcForce(ss, ParamValues(p + p0_, 4));
+    if (effects_) {
+      const auto& effs = m_->effects();
+      for (std::size_t i = 0; i < effs.size(); ++i)
+        if (effs[i]->kind() == EffectKind::Strut)
+          F += effs[i]->calcStrutForce(ss, ParamValues(p + m_->effectSlots()[i][0], effs[i]->parameters().size()));
+    }
+    return F;
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  const Model* m_;
+  StrutGeometry g_;
+  std::size_t p0_;
+  int preload_slot_;
+  double preload_;
+  bool effects_;
+};
+
+/// d'Alembert load of the accelerating vehicle frame: -m a(t) at every body's mass centre.
+class FrameInertiaElement : public Force::Custom::Implementation {
+ public:
+  FrameInertiaElement(const RunContext* ctx, std::vector<std::pair<MobilizedBody, double>> bodies)
+      : ctx_(ctx), bodies_(std::move(bodies)) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    const double a = ctx_->speed.accel(s.getTime());
+    if (a == 0.0) return;
+    for (auto& [b, m] : bodies_) bodyForces[b.getMobilizedBodyIndex()][1] += Vec3(-m * a, 0, 0);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  std::vector<std::pair<MobilizedBody, double>> bodies_;
+};
+
+std::size_t contiguous(const std::vector<int>& slots) {
+  DTWIN_CHECK(!slots.empty(), "empty slot list");
+  for (std::size_t i = 1; i < slots.size(); ++i) DTWIN_CHECK(slots[i] == slots[0] + static_cast<int>(i), "slots not contiguous");
+  return static_cast<std::size_t>(slots[0]);
+}
+
+// Knot layout (one recorded integrator state).
+enum : std::size_t { HX = 0, HXD = 4, HZ = 8, HZD = 12, HZDD = 16, Q = 20, QD = 24, QDD = 28,
+                     BODY = 32 /* heave, pitch, roll: value, rate, accel (3 each) */, KNOT = 41 };
+
+double hermite(double h, double u, double y0, double m0, double y1, double m1) {
+  const double u2 = u * u, u3 = u2 * u;
+  return (2 * u3 - 3 * u2 + 1) * y0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * y1 + (u3 - u2) * h * m1;
+}
+double hermiteD(double h, double u, double y0, double m0, double y1, double m1) {
+  const double u2 = u * u;
+  return ((6 * u2 - 6 * u) * y0 + (-6 * u2 + 6 * u) * y1) / h + (3 * u2 - 4 * u + 1) * m0 + (3 * u2 - 2 * u) * m1;
+}
+
+}  // namespace
+
+// ----------------------------------------------------------------------- Impl
+struct Simulator::Impl {
+  std::shared_ptr<const Model> model;
+  SimulationOptions opt;
+  RunContext ctx;
+  MultibodySystem system;
+  SimbodyMatterSubsystem matter{system};
+  GeneralForceSubsystem forces{system};
+  MobilizedBody::Slider heave;
+  MobilizedBody::Universal chassis;
+  std::array<MobilizedBody, 4> wheels;
+  std::array<MobilizedBody, 2> axle_slider, axle;  // solid axle only
+  std::array<StrutGeometry, 4> struts;               // main suspension strut per corner
+  std::array<const StrutElement*, 4> strut_elems{};
+  std::array<TireCorner, 4> tires;
+  std::array<double, 4> strut_preload{};
+  State default_state;
+
+  Impl(std::shared_ptr<const Model> m, SimulationOptions o) : model(std::move(m)), opt(std::move(o)) {
+    const std::string rule = opt.check();
+    if (!rule.empty()) throw InputError("simulation", rule);
+    build();
+  }
+
+  void build() {
+    const Model& M = *model;
+    const VehicleData& d = M.vehicle();
+    Force::UniformGravity(forces, matter, Vec3(0, 0, -d.gravity));
+    const Rotation xToZ(-Pi / 2, YAxis);  // a slider's x axis along the parent's z
+    const Rotation zToX(Pi / 2, YAxis);   // a pin's z axis along the parent's x
+    heave = MobilizedBody::Slider(matter.Ground(), Transform(xToZ), Body::Massless(), Transform(xToZ));
+    chassis = MobilizedBody::Universal(heave, Transform(), Body::Rigid(MassProperties(d.chassis_mass, Vec3(0), Inertia(d.ixx, d.iyy, d.izz))), Transform());
+    const double z_wc = -(d.cg_height - M.table().value("tire.unloaded_radius_m"));  // wheel centre below CG
+    const Body::Rigid wheelBody(MassProperties(d.wheel_mass, Vec3(0), Inertia(1e-3)));
+    std::vector<std::pair<MobilizedBody, double>> massive = {{chassis, d.chassis_mass}};
+    for (int c = 0; c < 4; ++c) {
+      const double x = isFront(c) ? d.a : -d.b;
+      const double y = (cornerTrack(c) == Track::Left ? 0.5 : -0.5) * d.track;
+      strut_preload[c] = M.staticStrutForce(c);
+      if (M.topology() == SuspensionTopology::MacPherson) {
+        wheels[c] = MobilizedBody::Slider(chassis, Transform(xToZ, Vec3(x, y, z_wc)), wheelBody, Transform(xToZ));
+        struts[c] = {chassis, wheels[c], Vec3(x, y, z_wc), Vec3(0)};
+      }
+    }
+    if (M.topology() == SuspensionTopology::SolidAxle) {
+      const Body::Rigid axleBody(MassProperties(d.axle_mass, Vec3(0), Inertia(d.axle_ixx, d.axle_ixx, d.axle_ixx)));
+      for (int ax = 0; ax < 2; ++ax) {
+        const double x = ax == 0 ? d.a : -d.b;
+        axle_slider[ax] = MobilizedBody::Slider(chassis, Transform(xToZ, Vec3(x, 0, z_wc)), Body::Massless(), Transform(xToZ));
+        axle[ax] = MobilizedBody::Pin(axle_slider[ax], Transform(zToX), axleBody, Transform(zToX));
+        massive.push_back({axle[ax], d.axle_mass});
+        for (int side = 0; side < 2; ++side) {
+          const int c = 2 * ax + side;
+          const double sgn = side == 0 ? 1.0 : -1.0;
+          wheels[c] = MobilizedBody::Slider(axle[ax], Transform(xToZ, Vec3(0, sgn * 0.5 * d.track, 0)), wheelBody, Transform(xToZ));
+          struts[c] = {chassis, axle[ax], Vec3(x, sgn * 0.5 * d.spring_track, z_wc), Vec3(0, sgn * 0.5 * d.spring_track, 0)};
+          // Wheel/axle compliant interface (paper eq. 5): no effects, preload from the data.
+          StrutGeometry iface{axle[ax], wheels[c], Vec3(0, sgn * 0.5 * d.track, 0), Vec3(0)};
+          Force::Custom(forces, new StrutElement(&ctx, &M, iface, contiguous(M.interfaceSlots()),
+                                                     M.interfacePreloadSlot(), 0.0, false));
+        }
+      }
+    }
+    for (int c = 0; c < 4; ++c) {
+      massive.push_back({wheels[c], d.wheel_mass});
+      auto* se = new StrutElement(&ctx, &M, struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true);
+      strut_elems[c] = se;
+      Force::Custom(forces, se);
+      TireCorner tc;
+      tc.model = &M;
+      tc.corner = c;
+      tc.p0 = contiguous(M.tireSlots());
+      tc.np = M.tireSlots().size();
+      for (std::size_t i = 0; i < M.effects().size(); ++i)
+        if (M.effects()[i]->kind() == EffectKind::TireInput)
+          tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
+      tires[c] = tc;
+      Force::Custom(forces, new TireElement(&ctx, tc, wheels[c]));
+    }
+    Force::Custom(forces, new FrameInertiaElement(&ctx, massive));
+    ctx.traction_per_wheel_per_accel = d.total_mass(M.topology()) / 4.0;
+    system.realizeTopology();
+    default_state = system.getDefaultState();
+  }
+
+  /// Static equilibrium at t = 0 for the run parameters in ctx (vehicle at rest, flat start).
+  void setEquilibrium(State& s) {
+    const Model& M = *model;
+    const VehicleData& d = M.vehicle();
+    const ParamValues tp(ctx.p + tires[0].p0, tires[0].np);
+    const double R0 = M.tire().unloadedRadius(tp);
+    std::array<double, 4> target{};
+    for (int c = 0; c < 4; ++c) {
+      const double rho = M.tire().calcStaticDeflection(M.staticTireLoad(c), tp);
+      const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
+      target[c] = ctx.road->sample(cornerTrack(c), x_road).height_m + R0 - rho;
+      if (M.topology() == SuspensionTopology::SolidAxle) {
+        const double* p = ctx.p;
+        const double k = p[M.interfaceSlots()[0]], F0 = p[M.interfacePreloadSlot()];
+        const double q = (M.staticTireLoad(c) - d.wheel_mass * d.gravity - F0) / k;
+        wheels[c].setOneQ(s, 0, q);
+      }
+    }
+    // Newton on (heave, pitch, roll) so that the FL, FR, RL hubs sit at their targets.
+    auto residual = [&](const Vec3& x) {
+      heave.setOneQ(s, 0, x[0]);
+      chassis.setOneQ(s, 0, x[2]);  // roll
+      chassis.setOneQ(s, 1, x[1]);  // pitch
+      system.realize(s, Stage::Position);
+      return Vec3(wheels[0].getBodyOriginLocation(s)[2] - target[0], wheels[1].getBodyOriginLocation(s)[2] - target[1],
+                  wheels[2].getBodyOriginLocation(s)[2] - target[2]);
+    };
+    Vec3 x(d.cg_height, 0, 0);
+    for (int it = 0; it < 6; ++it) {
+      const Vec3 r = residual(x);
+      if (r.norm() < 1e-12) break;
+      Mat33 J;
+      for (int j = 0; j < 3; ++j) {
+        Vec3 xp = x;
+        xp[j] += 1e-7;
+        J(j) = (residual(xp) - r) / 1e-7;
+      }
+      x -= J.invert() * r;
+    }
+    residual(x);
+    s.updU() = 0;
+    system.realize(s, Stage::Velocity);
+  }
+
+  void record(const State& s, std::vector<std::array<double, KNOT>>& knots, std::vector<double>& times) {
+    system.realize(s, Stage::Acceleration);
+    std::array<double, KNOT> k{};
+    for (int c = 0; c < 4; ++c) {
+      const Vec3 p = wheels[c].getBodyOriginLocation(s), v = wheels[c].getBodyOriginVelocity(s);
+      const Vec3 a = wheels[c].getBodyOriginAcceleration(s);
+      k[HX + c] = p[0];
+      k[HXD + c] = v[0];
+      k[HZ + c] = p[2];
+      k[HZD + c] = v[2];
+      k[HZDD + c] = a[2];
+      const auto kin = struts[c].kin(s);
+      k[Q + c] = kin.q;
+      k[QD + c] = kin.qd;
+      k[QDD + c] = struts[c].accel(s);
+    }
+    const double vals[9] = {heave.getOneQ(s, 0), heave.getOneQDot(s, 0), heave.getOneQDotDot(s, 0),
+                            chassis.getOneQ(s, 1), chassis.getOneQDot(s, 1), chassis.getOneQDotDot(s, 1),
+                            chassis.getOneQ(s, 0), chassis.getOneQDot(s, 0), chassis.getOneQDotDot(s, 0)};
+    for (int i = 0; i < 9; ++i) k[BODY + i] = vals[i];
+    knots.push_back(k);
+    times.push_back(s.getTime());
+  }
+
+  std::unique_ptr<Integrator> makeIntegrator() {
+    if (opt.integrator == "rk-merson") return std::make_unique<RungeKuttaMersonIntegrator>(system);
+    if (opt.integrator == "rk3") return std::make_unique<RungeKutta3Integrator>(system);
+    if (opt.integrator == "rk-feldberg") return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
+    if (opt.integrator == "cpodes") return std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
+    return std::make_unique<SemiExplicitEuler2Integrator>(system);
+  }
+
+  /// Time windows in which a wheel crosses an obstacle (merged, clipped).
+  std::vector<Interval> obstacleWindows(const Road& road, const ScenarioSpec& sc) const {
+    std::vector<Interval> w;
+    const double wb = model->vehicle().wheelbase();
+    for (const auto& ob : road.obstacles())
+      for (double offset : {0.0, wb}) {
+        const double t0 = sc.speed.timeAtDistance(ob.lo + offset) - opt.obstacle_margin_before_s;
+        const double t1 = sc.speed.timeAtDistance(ob.hi + offset) + opt.obstacle_margin_after_s;
+        if (t1 > 0 && t0 < sc.duration_s) w.push_back({std::max(0.0, t0), std::min(sc.duration_s, t1)});
+      }
+    std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.lo < b.lo; });
+    std::vector<Interval> merged;
+    for (auto& i : w) {
+      if (!merged.empty() && i.lo <= merged.back().hi) merged.back().hi = std::max(merged.back().hi, i.hi);
+      else merged.push_back(i);
+    }
+    return merged;
+  }
+
+  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
+    const auto t_start = std::chrono::steady_clock::now();
+    const Model& M = *model;
+    if (values.size() != M.runParameterNames().size())
+      throw InputError("run parameters", "expected " + std::to_string(M.runParameterNames().size()) + " values");
+    const std::string rule = M.checkRunValues(values);
+    if (!rule.empty()) throw InputError("run parameters", rule);
+    if (!(sc.duration_s > 0)) throw InputError("scenario " + sc.name, "duration_s must be > 0");
+    ctx.p = values.data();
+    ctx.road = &road;
+    ctx.speed = sc.speed;
+
+    RunResult res;
+    std::vector<std::array<double, KNOT>> knots;
+    std::vector<double> times;
+    State s = default_state;
+    s.setTime(0);
+    setEquilibrium(s);
+    auto integ = makeIntegrator();
+    integ->setAccuracy(opt.accuracy);
+    integ->setReturnEveryInternalStep(true);
+    integ->setInternalStepLimit(0);
+    integ->setMaximumStepSize(opt.max_step_s);
+    integ->initialize(s);
+    record(integ->getState(), knots, times);
+    // Segments with their step bound.
+    std::vector<std::pair<double, double>> segs;  // (end time, max step)
+    double t = 0;
+    for (const auto& w : obstacleWindows(road, sc)) {
+      if (w.lo > t) segs.push_back({w.lo, opt.max_step_s});
+      segs.push_back({w.hi, std::min(opt.max_step_s, opt.obstacle_max_step_s)});
+      t = w.hi;
+    }
+    if (t < sc.duration_s) segs.push_back({sc.duration_s, opt.max_step_s});
+    try {
+      for (const auto& [t_end, hmax] : segs) {
+        integ->setMaximumStepSize(hmax);
+        while (integ->getTime() < t_end - 1e-12) {
+          const auto status = integ->stepTo(t_end, t_end);
+          if (integ->isSimulationOver() && integ->getTerminationReason() == Integrator::AnUnrecoverableErrorOccurred)
+            throw std::runtime_error("integrator failed");
+          if (status == Integrator::TimeHasAdvanced || status == Integrator::ReachedScheduledEvent ||
+              status == Integrator::ReachedReportTime) {
+            const State& st = integ->getState();
+            if (st.getTime() > times.back()) record(st, knots, times);
+          }
+          if (integ->getNumStepsTaken() > opt.max_internal_steps)
+            throw std::runtime_error("more than " + std::to_string(opt.max_internal_steps) + " integrator steps");
+          for (double v : knots.back())
+            if (!std::isfinite(v)) throw std::runtime_error("state became non-finite at t = " + std::to_string(integ->getTime()) + " s");
+        }
+      }
+    } catch (const std::exception& e) {
+      res.stats.ok = false;
+      res.stats.message = std::string("simulation failed: ") + e.what();
+    }
+    res.stats.steps = integ->getNumStepsTaken();
+    res.stats.steps_attempted = integ->getNumStepsAttempted();
+    res.stats.knots = static_cast<long>(knots.size());
+    res.stats.sim_s = times.back();
+    makeOutput(knots, times, sc, res.trace);
+    res.stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+    return res;
+  }
+
+  void makeOutput(const std::vector<std::array<double, KNOT>>& knots, const std::vector<double>& times,
+                  const ScenarioSpec& sc, Trace& tr) {
+    for (auto& ch : channels()) tr.addChannel(ch);
+    const std::size_t n = static_cast<std::size_t>(std::floor(times.back() * opt.output_rate_hz + 1e-9)) + 1;
+    for (std::size_t i = 0; i < tr.channels().size(); ++i) tr.column(i).resize(n);
+    const auto& k0 = knots.front();
+    std::size_t j = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      const double t = std::min(static_cast<double>(r) / opt.output_rate_hz, times.back());
+      while (j + 2 < times.size() && times[j + 1] < t) ++j;
+      const std::size_t j1 = std::min(j + 1, times.size() - 1);
+      const auto& a = knots[j];
+      const auto& b = knots[j1];
+      const double h = times[j1] - times[j];
+      const double u = h > 0 ? std::clamp((t - times[j]) / h, 0.0, 1.0) : 0.0;
+      auto pos = [&](std::size_t iv, std::size_t id) { return h > 0 ? hermite(h, u, a[iv], a[id], b[iv], b[id]) : a[iv]; };
+      auto acc = [&](std::size_t iv, std::size_t id) { return h > 0 ? hermiteD(h, u, a[iv], a[id], b[iv], b[id]) : a[id]; };
+      std::size_t col = 0;
+      tr.column(col++)[r] = t;
+      tr.column(col++)[r] = sc.speed.speed(t);
+      for (int c = 0; c < 4; ++c) {
+        const double hx = pos(HX + c, HXD + c), hxd = a[HXD + c] + u * (b[HXD + c] - a[HXD + c]);
+        const TireEval e = tires[c].eval(ctx, t, hx, hxd, pos(HZ + c, HZD + c), pos(HZD + c, HZDD + c));
+        tr.column(col + c)[r] = e.fz;
+        tr.column(col + 4 + c)[r] = e.rho;
+        tr.column(col + 8 + c)[r] = pos(Q + c, QD + c);
+        tr.column(col + 12 + c)[r] = pos(QD + c, QDD + c);
+        tr.column(col + 16 + c)[r] = e.road_h;
+      }
+      col += 20;
+      tr.column(col++)[r] = pos(BODY + 0, BODY + 1) - k0[BODY + 0];
+      tr.column(col++)[r] = pos(BODY + 3, BODY + 4);
+      tr.column(col++)[r] = pos(BODY + 6, BODY + 7);
+      tr.column(col++)[r] = acc(BODY + 1, BODY + 2);
+      tr.column(col++)[r] = acc(BODY + 4, BODY + 5);
+      tr.column(col++)[r] = acc(BODY + 7, BODY + 8);
+    }
+  }
+};
+
+std::vector<Channel> Simulator::channels() {
+  std::vector<Channel> ch = {{"time_s", "s", "time"}, {"speed_mps", "m/s", "forward speed"}};
+  const char* groups[5][3] = {{"hub_force_", "N", "tire normal force at the wheel hub"},
+                              {"tire_defl_", "m", "tire deflection rho_z (negative: airborne)"},
+                              {"susp_defl_", "m", "suspension deflection, compression positive, 0 at static ride height"},
+                              {"susp_rate_", "m/s", "suspension deflection rate, compression positive"},
+                              {"road_", "m", "road height under the wheel centre"}};
+  const char* suffix[5] = {"_N", "_m", "_m", "_mps", "_m"};
+  for (int g = 0; g < 5; ++g)
+    for (int c = 0; c < 4; ++c)
+      ch.push_back({std::string(groups[g][0]) + kCornerNames[c] + suffix[g], groups[g][1], std::string(groups[g][2]) + " (" + kCornerNames[c] + ")"});
+  ch.push_back({"chassis_heave_m", "m", "CG height change from static, up positive"});
+  ch.push_back({"chassis_pitch_rad", "rad", "pitch angle about +y (y to the left): positive nose down"});
+  ch.push_back({"chassis_roll_rad", "rad", "roll angle about +x (x forward): positive right side down"});
+  ch.push_back({"chassis_heave_acc_mps2", "m/s^2", "heave acceleration"});
+  ch.push_back({"chassis_pitch_acc_radps2", "rad/s^2", "pitch angular acceleration"});
+  ch.push_back({"chassis_roll_acc_radps2", "rad/s^2", "roll angular acceleration"});
+  return ch;
+}
+
+Simulator::Simulator(std::shared_ptr<const Model> model, SimulationOptions options)
+    : impl_(std::make_unique<Impl>(std::move(model), std::move(options))) {}
+Simulator::~Simulator() = default;
+const Model& Simulator::model() const { return *impl_->model; }
+const SimulationOptions& Simulator::options() const { return impl_->opt; }
+RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
+  return impl_->run(values, road, sc);
+}
+
+}  // namespace dtwin

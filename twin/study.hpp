@@ -1,0 +1,78 @@
+#pragma once
+// A study file (TOML) names the subsystems and their options, the calibrated parameters with
+// bounds, fixed values, effects, scenarios, noise, simulation options and sizes. Assemblies are
+// the Cartesian product of the options (last subsystem varies fastest), optionally filtered.
+// See docs/study-file.md for every field.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "twin/model.hpp"
+#include "twin/scenario.hpp"
+#include "twin/simulator.hpp"
+
+namespace dtwin {
+
+struct CalibratedParameter {
+  std::string name, unit;
+  double lower = 0, upper = 0;
+  std::optional<double> truth;
+};
+
+struct ParameterSetting {
+  std::string name;
+  double value = 0;
+  std::string where;   ///< "file:line: field" for errors
+  std::string source;  ///< provenance text
+};
+
+struct EffectSetting {
+  std::string name;
+  std::vector<ParameterSetting> values;  ///< names are "<effect>.<param>"
+};
+
+struct Study {
+  std::string path;
+  std::string name, description;
+  std::uint64_t seed = 1;
+  std::string vehicle_path;  ///< resolved relative to the study file
+  std::vector<std::pair<std::string, std::vector<std::string>>> subsystems;
+  std::vector<std::string> include;  ///< assembly ids to keep (empty: all)
+  std::vector<CalibratedParameter> calibrated;
+  std::vector<ParameterSetting> fixed;
+  std::vector<EffectSetting> effects;
+  std::vector<ScenarioSpec> scenarios;
+  SimulationOptions simulation;
+  double noise_variance_N2 = 18000.0;
+  std::map<std::string, long> sizes;
+
+  std::vector<AssemblySpec> assemblies() const;
+  const AssemblySpec& assembly(const std::string& id) const;  ///< InputError if unknown
+  const ScenarioSpec& scenario(const std::string& name) const;  ///< InputError if unknown
+  /// Every parameter with its value: declarations, vehicle file, [fixed], calibrated truths,
+  /// [effects], then `overrides` (e.g. --set), in that order of precedence.
+  ParameterTable parameterTable(const std::vector<ParameterSetting>& overrides = {}) const;
+  /// Builds the model of one assembly with extra effects installed (e.g. from --effect).
+  std::shared_ptr<const Model> makeModel(const AssemblySpec& a, const std::vector<EffectSetting>& extra_effects = {},
+                                         const std::vector<ParameterSetting>& overrides = {}) const;
+  nlohmann::json toJson() const;
+};
+
+/// Names of the sizes a study may set, with their defaults (paper sizes).
+const std::map<std::string, long>& knownSizes();
+
+/// Parses and validates a study file. Every error is an InputError naming the file, the line and
+/// the field, and the rule broken.
+Study loadStudy(const std::string& path);
+
+/// Parses "name=value" (CLI --set). `where` prefixes errors.
+ParameterSetting parseSetting(const std::string& text, const std::string& where);
+/// Parses "effect[:param=value,...]" (CLI --effect).
+EffectSetting parseEffectSetting(const std::string& text, const std::string& where);
+
+}  // namespace dtwin

@@ -1,0 +1,80 @@
+#include "twin/trace.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "subsystems/errors.hpp"
+
+namespace dtwin {
+
+int Trace::index(const std::string& name) const {
+  for (std::size_t i = 0; i < channels_.size(); ++i)
+    if (channels_[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+const std::vector<double>& Trace::column(const std::string& name) const {
+  const int i = index(name);
+  DTWIN_CHECK(i >= 0, "no channel " + name);
+  return columns_[static_cast<std::size_t>(i)];
+}
+
+std::string Trace::toCsv(const std::vector<std::string>& selected, double t_lo, double t_hi) const {
+  std::vector<std::size_t> cols;
+  if (selected.empty())
+    for (std::size_t i = 0; i < channels_.size(); ++i) cols.push_back(i);
+  else
+    for (auto& s : selected) {
+      const int i = index(s);
+      DTWIN_CHECK(i >= 0, "no channel " + s);
+      cols.push_back(static_cast<std::size_t>(i));
+    }
+  std::string out;
+  out.reserve(rows() * cols.size() * 14 + 256);
+  for (std::size_t k = 0; k < cols.size(); ++k) out += (k ? "," : "") + channels_[cols[k]].name;
+  out += '\n';
+  const int ti = index("time_s");
+  char buf[64];
+  for (std::size_t r = 0; r < rows(); ++r) {
+    if (ti >= 0) {
+      const double t = columns_[static_cast<std::size_t>(ti)][r];
+      if (t < t_lo - 1e-12 || t > t_hi + 1e-12) continue;
+    }
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      if (k) out += ',';
+      auto res = std::to_chars(buf, buf + sizeof buf, columns_[cols[k]][r]);
+      out.append(buf, res.ptr);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void writeFileAtomic(const std::string& path, const std::string& content) {
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  std::error_code ec;
+  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
+  if (ec) throw InputError(path, "cannot create folder " + p.parent_path().string() + ": " + ec.message());
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path, "cannot write (is the folder writable?)");
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw InputError(path, "write failed (disk full?)");
+    }
+  }
+  fs::rename(tmp, p, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw InputError(path, "cannot replace file: " + ec.message());
+  }
+}
+
+}  // namespace dtwin

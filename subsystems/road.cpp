@@ -198,6 +198,7 @@ std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
   if (line != "distance_m,left_m,right_m")
     throw InputError(path + ":1", "header must be 'distance_m,left_m,right_m', got '" + line + "'");
   std::vector<double> x, l, r;
+  std::vector<int> lines;
   int lineno = 1;
   while (std::getline(in, line)) {
     ++lineno;
@@ -221,14 +222,17 @@ std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
     x.push_back(v[0]);
     l.push_back(v[1]);
     r.push_back(v[2]);
+    lines.push_back(lineno);
   }
   if (x.size() < 2) throw InputError(path, "a road profile needs at least 2 rows");
-  const double dx = (x.back() - x.front()) / static_cast<double>(x.size() - 1);
-  for (std::size_t i = 1; i < x.size(); ++i)
-    if (std::abs((x[i] - x[i - 1]) - dx) > 1e-6 * std::max(1.0, dx) + 1e-9 * std::abs(x[i]))
-      throw InputError(path + ":" + std::to_string(i + 2),
+  // Uniform spacing: every step must equal the first one (the first irregular line is named).
+  const double step = x[1] - x[0];
+  for (std::size_t i = 2; i < x.size(); ++i)
+    if (std::abs((x[i] - x[i - 1]) - step) > 1e-6 * step + 1e-9 * std::abs(x[i]))
+      throw InputError(path + ":" + std::to_string(lines[i]),
                        "distance_m must be uniformly spaced (step " + std::to_string(x[i] - x[i - 1]) +
-                           " m differs from the mean " + std::to_string(dx) + " m)");
+                           " m differs from the first step " + std::to_string(step) + " m)");
+  const double dx = (x.back() - x.front()) / static_cast<double>(x.size() - 1);
   nlohmann::json d = {{"type", "csv"}, {"path", path}, {"rows", x.size()}, {"dx_m", dx}};
   return std::make_shared<GridRoad>(x.front(), dx, std::move(l), std::move(r), std::move(d));
 }

@@ -20,7 +20,7 @@ struct SimulationOptions {
   std::string integrator = "rk-merson";  ///< rk-merson | rk3 | rk-feldberg | cpodes | semi-explicit-euler2
   double accuracy = 1e-4;                ///< integrator relative accuracy
   double max_step_s = 0.02;              ///< largest step anywhere
-  double obstacle_max_step_s = 2.5e-4;   ///< largest step while a wheel crosses an obstacle
+  double obstacle_max_step_s = 1e-3;     ///< largest step while a wheel crosses an obstacle
   double obstacle_margin_before_s = 0.02;
   double obstacle_margin_after_s = 0.1;
   double output_rate_hz = 1000.0;

@@ -665,9 +665,10 @@ TEST_F(RoadCsv, NonUniformSpacingNamesTheIrregularLine) {
 }
 
 TEST_F(RoadCsv, NonUniformSpacingLineCountsBlankLines) {
-  // Line 3 is blank; the irregular step is onto line 5.
-  const std::string path = write("spacing_blank", "distance_m,left_m,right_m\n0,0,0\n\n0.1,0,0\n0.3,0,0\n");
-  expectError(path, path + ":5", "distance_m must be uniformly spaced");
+  // Line 3 is blank; lines 2, 4, 5 are spaced 0.1 m and the step onto line 6 is 0.15 m.
+  const std::string path =
+      write("spacing_blank", "distance_m,left_m,right_m\n0,0,0\n\n0.1,0,0\n0.2,0,0\n0.35,0,0\n");
+  expectError(path, path + ":6", "distance_m must be uniformly spaced");
 }
 
 TEST_F(RoadCsv, TooFewOrTooManyColumns) {

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <unsupported/Eigen/FFT>
 
 #include "subsystems/errors.hpp"
@@ -327,12 +329,12 @@ TEST(IsoRoad, RmsHeightFormula) {
 
 TEST(IsoRoad, MeanSquareOverOnePeriodEqualsBandIntegralOfGd) {
   // Parseval: over one full period of the sum of cosines the mean square is the integral of Gd
-  // over the band, exactly. With dx = 0.01 the period is 2^16 * 0.01 m.
+  // over the band, exactly. dx = 1/128 m and 2^16 points (the last at 65535 dx) make one period.
   IsoRoadSpec s;
   s.road_class = 'D';
   s.seed = 7;
-  s.dx_m = 0.01;
-  s.length_m = 655.36;
+  s.dx_m = 1.0 / 128.0;
+  s.length_m = 65535.0 / 128.0;
   auto road = makeIsoRoad(s);
   const auto& h = road->heights(Track::Left);
   ASSERT_NEAR(road->describe().at("period_m").get<double>(), static_cast<double>(h.size()) * s.dx_m, 1e-9)
@@ -355,24 +357,19 @@ TEST(IsoRoad, MeanSquareOverOnePeriodEqualsBandIntegralOfGd) {
 class IsoRoadStatistics : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    IsoRoadSpec s;
-    s.road_class = 'D';
-    s.seed = 7;
-    s.dx_m = 0.05;
-    s.length_m = 20000.0;
-    spec_ = new IsoRoadSpec(s);
-    road_ = new std::shared_ptr<const GridRoad>(makeIsoRoad(s));
+    spec_.road_class = 'D';
+    spec_.seed = 7;
+    spec_.dx_m = 0.05;
+    spec_.length_m = 20000.0;
+    road_ = makeIsoRoad(spec_);
   }
-  static void TearDownTestSuite() {
-    delete road_;
-    delete spec_;
-  }
-  static const GridRoad& road() { return **road_; }
-  static const IsoRoadSpec& spec() { return *spec_; }
+  static void TearDownTestSuite() { road_.reset(); }
+  static const GridRoad& road() { return *road_; }
+  static const IsoRoadSpec& spec() { return spec_; }
 
  private:
-  static inline IsoRoadSpec* spec_ = nullptr;
-  static inline std::shared_ptr<const GridRoad>* road_ = nullptr;
+  static inline IsoRoadSpec spec_;
+  static inline std::shared_ptr<const GridRoad> road_;
 };
 
 TEST_F(IsoRoadStatistics, ProfileCoversRequestedLength) {
@@ -567,7 +564,9 @@ TEST(IsoRoad, RejectsInvalidSpecs) {
 class RoadCsv : public ::testing::Test {
  protected:
   std::string write(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + "dtwin_road_test_" + name + ".csv";
+    // The process id keeps concurrent runs (ctest -j, several build trees) apart.
+    const std::string path =
+        ::testing::TempDir() + "dtwin_road_test_" + std::to_string(::getpid()) + "_" + name + ".csv";
     std::ofstream out(path, std::ios::binary);
     out << text;
     paths_.push_back(path);
@@ -620,6 +619,22 @@ TEST_F(RoadCsv, GoodFileLoadsAndInterpolates) {
   // Between nodes: the right track is linear, so its interpolant is exact.
   EXPECT_NEAR(road->sample(Track::Right, 10.537).height_m, -0.002 * 5.37, 1e-12);
   EXPECT_NEAR(road->sample(Track::Right, 10.537).slope, -0.02, 1e-9);
+}
+
+TEST_F(RoadCsv, AcceptsDistancesRoundedToMicrometres) {
+  // A uniform grid whose step (1/30 m) is not a whole number of micrometres, written with 6
+  // decimals as any export would: the steps then differ by 1 um. That is a uniform grid.
+  std::string text = "distance_m,left_m,right_m\n";
+  for (int i = 0; i <= 300; ++i) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6f,%.6f,0\n", i / 30.0, 0.001 * i);
+    text += buf;
+  }
+  const std::string path = write("rounded", text);
+  std::shared_ptr<const GridRoad> road;
+  ASSERT_NO_THROW(road = loadRoadCsv(path));
+  EXPECT_NEAR(road->dx(), 1.0 / 30.0, 1e-8);
+  EXPECT_NEAR(road->sample(Track::Left, 5.0).height_m, 0.15, 1e-6);
 }
 
 TEST_F(RoadCsv, AcceptsCrlfAndBlankLines) {

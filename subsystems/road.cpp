@@ -154,11 +154,11 @@ std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& s) {
   if (!(s.length_m > 0)) throw InputError("", "ISO road length must be > 0");
   // Period P = N dx >= max(length, 4 / n_min), so that several bins lie below the band's low end.
   const double need = std::max(s.length_m, 4.0 / s.n_min);
+  const std::size_t n_pts = static_cast<std::size_t>(std::ceil(s.length_m / s.dx_m)) + 1;
   std::size_t N = 1024;
-  while (static_cast<double>(N) * s.dx_m < need) N *= 2;
+  while (static_cast<double>(N) * s.dx_m < need || N < n_pts) N *= 2;
   std::vector<double> left = isoTrack(s, N, 0);
   std::vector<double> right = s.coherence == IsoRoadSpec::Coherence::Identical ? left : isoTrack(s, N, 1);
-  const std::size_t n_pts = static_cast<std::size_t>(std::ceil(s.length_m / s.dx_m)) + 1;
   left.resize(std::min(N, n_pts));
   right.resize(left.size());
   for (std::size_t j = 0; j < left.size(); ++j) {
@@ -228,7 +228,7 @@ std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
   // Uniform spacing: every step must equal the first one (the first irregular line is named).
   const double step = x[1] - x[0];
   for (std::size_t i = 2; i < x.size(); ++i)
-    if (std::abs((x[i] - x[i - 1]) - step) > 1e-6 * step + 1e-9 * std::abs(x[i]))
+    if (std::abs((x[i] - x[i - 1]) - step) > 1e-6 * std::max(1.0, step) + 1e-9 * std::abs(x[i]))
       throw InputError(path + ":" + std::to_string(lines[i]),
                        "distance_m must be uniformly spaced (step " + std::to_string(x[i] - x[i - 1]) +
                            " m differs from the first step " + std::to_string(step) + " m)");

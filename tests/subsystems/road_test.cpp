@@ -443,6 +443,17 @@ TEST_F(IsoRoadStatistics, TracksAreIndependentAndUncorrelated) {
   EXPECT_EQ(road().describe().at("tracks"), "independent");
 }
 
+TEST(IsoRoad, CoversRequestedLengthEvenWhenItIsAPowerOfTwoGrid) {
+  // 655.36 m = 2^16 * 0.01 m needs 2^16 + 1 points (both ends); the profile must still reach it.
+  IsoRoadSpec s;
+  s.seed = 3;
+  s.dx_m = 0.01;
+  s.length_m = 655.36;
+  auto road = makeIsoRoad(s);
+  EXPECT_GE(road->extent().hi, s.x_begin_m + s.length_m - 1e-9);
+  EXPECT_LT(road->extent().hi, s.x_begin_m + s.length_m + s.dx_m + 1e-9);
+}
+
 TEST(IsoRoad, IdenticalCoherenceGivesIdenticalTracks) {
   IsoRoadSpec s;
   s.seed = 7;

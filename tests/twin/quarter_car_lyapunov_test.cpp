@@ -324,7 +324,7 @@ TEST(QuarterCarLyapunov, SimulatedDynamicTireLoadMatchesLyapunovOnClassC) {
 
   std::cout << std::fixed << std::setprecision(2)
             << "quarter car, ISO class C, v = " << c.v << " m/s, road band [0.011, " << o.n_max << "] cycles/m, dx "
-            << o.dx_m << " m\n"
+            << std::defaultfloat << o.dx_m << std::fixed << " m\n"
             << "  sigma_Fz Lyapunov (full band)      : " << sigma_lyap << " N\n"
             << "  sigma_Fz frequency integral (band) : " << sigma_band << " N\n"
             << "  simulated RMS dynamic tire load    : " << r.rms_dyn_N << " N  (" << r.samples << " samples at "

@@ -2,6 +2,7 @@
 // and the rule broken.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 
 #include "subsystems/errors.hpp"
@@ -99,6 +100,8 @@ TEST(Study, BoundsAndSigns) {
 TEST(Study, CsvRoadMustExistAndCoverTheRun) {
   const std::string p = variant("csvroad", "road = { type = \"bump\", height_m = 0.2, length_m = 0.1, time_s = 6.0 }",
                                 "road = { type = \"csv\", path = \"no_such_road.csv\" }");
+  const std::string short_road = ::testing::TempDir() + "/no_such_road.csv";
+  std::remove(short_road.c_str());  // hermetic: a previous run may have left it
   const Study s = loadStudy(p);
   auto model = s.makeModel(s.assembly("M1"));
   try {
@@ -107,7 +110,6 @@ TEST(Study, CsvRoadMustExistAndCoverTheRun) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no_such_road.csv: cannot open road profile"), std::string::npos) << e.what();
   }
-  const std::string short_road = ::testing::TempDir() + "/no_such_road.csv";
   std::ofstream(short_road) << "distance_m,left_m,right_m\n0,0,0\n1,0,0\n2,0,0\n";
   try {
     makeRoad(s.scenario("lab"), model->vehicle(), 1);

@@ -7,8 +7,10 @@
 // A P + P A^T + B (G/2) B^T = 0 and sigma_Fz = k_t sqrt(P_11).
 //
 // The simulated road is band-limited to [n_min, n_max]; the Lyapunov value assumes the full
-// band. The variance the band leaves out is computed by a frequency-domain integral and printed,
-// so that a discrepancy can be attributed (road band vs integrator vs statistics).
+// band. The same variance restricted to the band is computed by a frequency-domain integral and
+// printed, so that a discrepancy can be attributed (road band vs integrator vs statistics).
+// Measured when this test was written: Lyapunov 711.8 N, band integral 709.0 N, simulated
+// 709.2 N; the result did not change (to 0.01 N) between integrator accuracies 1e-4 and 1e-6.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -159,20 +161,30 @@ class StrutElement : public Force::Custom::Implementation {
 };
 
 struct SimOptions {
+  // 292 s at 8.94 m/s is 2610 m of road: makeIsoRoad then uses a 2^19-point grid whose period,
+  // 2621.44 m, the sampled window (5 s to the end) covers to 98%. Over a whole period the cross
+  // terms between the road's cosines average out, so the RMS of this deterministic-amplitude road
+  // is (nearly) free of realisation scatter: it matched the band-limited frequency integral to
+  // 0.1% for seeds 1, 2, 3 and 8608, against +-0.6% scatter over half a period (300 s).
   double t_end_s = 292.0;
   double transient_s = 5.0;
   double sample_hz = 1000.0;
   double accuracy = 1e-5;
   double max_step_s = 2e-3;
   double dx_m = 0.005;
+  // Road band [0.011, 40] cycles/m (0.1..358 Hz at 8.94 m/s). The Lyapunov value assumes white
+  // road velocity; the band leaves out Gd(n0) n0^2 / n_max of height variance, nearly all of
+  // which shows up as tire deflection (above wheel hop the hub barely moves): -0.4% in sigma at
+  // n_max = 40, but -1.6% at 10 cycles/m. dx = 0.005 m keeps >= 4 points per wavelength.
   double n_max = 40.0;
-  unsigned long long seed = 3;
+  unsigned long long seed = 8608;
 };
 
 struct SimResult {
   double mean_N = 0, rms_dyn_N = 0, min_N = 0, max_N = 0;
   double static_residual = 0;  // max |udot| at the initial state
   long samples = 0, steps = 0;
+  double period_covered = 0;  // fraction of the road's period the sampled window spans
   double wall_s = 0;
 };
 
@@ -190,6 +202,8 @@ SimResult simulate(const QuarterCar& c, const SimOptions& o) {
   rs.coherence = dtwin::IsoRoadSpec::Coherence::Identical;
   rs.seed = o.seed;
   const auto road = dtwin::makeIsoRoad(rs);
+  SimResult r;
+  r.period_covered = c.v * (o.t_end_s - o.transient_s) / road->describe().at("period_m").get<double>();
 
   TireSide tire;
   tire.road = road.get();
@@ -216,7 +230,6 @@ SimResult simulate(const QuarterCar& c, const SimOptions& o) {
   State s = system.realizeTopology();
   s.setTime(0);
   system.realize(s, Stage::Acceleration);
-  SimResult r;
   r.static_residual = std::max(std::abs(s.getUDot()[0]), std::abs(s.getUDot()[1]));
 
   RungeKuttaMersonIntegrator integ(system);
@@ -309,7 +322,8 @@ TEST(QuarterCarLyapunov, SimulatedDynamicTireLoadMatchesLyapunovOnClassC) {
             << "  sigma_Fz Lyapunov (full band)      : " << sigma_lyap << " N\n"
             << "  sigma_Fz frequency integral (band) : " << sigma_band << " N\n"
             << "  simulated RMS dynamic tire load    : " << r.rms_dyn_N << " N  (" << r.samples << " samples at "
-            << o.sample_hz << " Hz, " << o.transient_s << "-" << o.t_end_s << " s)\n"
+            << o.sample_hz << " Hz, " << o.transient_s << "-" << o.t_end_s << " s, "
+            << 100.0 * r.period_covered << " % of the road period)\n"
             << std::setprecision(3) << "  relative error vs Lyapunov         : " << 100.0 * rel << " %\n"
             << "  relative error vs band integral    : " << 100.0 * (r.rms_dyn_N / sigma_band - 1.0) << " %\n"
             << std::setprecision(1) << "  tire force mean / min / max        : " << r.mean_N << " / " << r.min_N << " / "
@@ -320,6 +334,7 @@ TEST(QuarterCarLyapunov, SimulatedDynamicTireLoadMatchesLyapunovOnClassC) {
   RecordProperty("sigma_lyapunov_N", fmt(sigma_lyap, 6));
   RecordProperty("sigma_band_N", fmt(sigma_band, 6));
   RecordProperty("rms_simulated_N", fmt(r.rms_dyn_N, 6));
+  RecordProperty("min_tire_force_N", fmt(r.min_N, 6));
   RecordProperty("relative_error", fmt(rel, 4));
   RecordProperty("wall_s", fmt(r.wall_s, 3));
 

@@ -53,6 +53,7 @@ struct RunContext {
 
 struct TireEval {
   double fz = 0, rho = 0, rho_dot = 0, road_h = 0, x_road = 0;
+  double hub_above_road = 0;  ///< hub height above the (effective) road: where traction acts
 };
 
 /// The tire at one corner: shared by the Simbody force element and the output reconstruction.
@@ -60,6 +61,7 @@ struct TireCorner {
   const Model* model = nullptr;
   int corner = 0;
   std::size_t p0 = 0, np = 0;  // contiguous tire slots
+  std::size_t r0 = 0;          // index of unloaded_radius_m within the tire's parameters
   std::vector<std::pair<const Effect*, std::size_t>> filters;  // tire-input effects, first slot
 
   TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
@@ -72,8 +74,9 @@ struct TireCorner {
     e.road_h = rs.height_m;
     for (auto& [eff, s] : filters)
       rs = eff->filterRoad(*c.road, tr, e.x_road, ParamValues(c.p + s, eff->parameters().size()));
-    const double R0 = model->tire().unloadedRadius(p);
-    e.rho = R0 - (hub_z - rs.height_m);
+    const double R0 = p[r0];
+    e.hub_above_road = hub_z - rs.height_m;
+    e.rho = R0 - e.hub_above_road;
     e.rho_dot = rs.slope * (v + hub_xd) - hub_zd;
     TireState ts;
     ts.deflection_m = e.rho;
@@ -99,7 +102,7 @@ class TireElement : public Force::Custom::Implementation {
     SpatialVec& F = bodyForces[wheel_.getMobilizedBodyIndex()];
     F[1] += Vec3(fx, 0, e.fz);
     // Traction acts at the contact point, a height (hub_z - road) below the hub.
-    F[0] += Vec3(0, -(p[2] - (tc_.model->tire().unloadedRadius(ParamValues(ctx_->p + tc_.p0, tc_.np)) - e.rho)) * fx, 0);
+    F[0] += Vec3(0, -e.hub_above_road * fx, 0);
   }
   Real calcPotentialEnergy(const State&) const override { return 0; }
 
@@ -281,6 +284,7 @@ struct Simulator::Impl {
       tc.corner = c;
       tc.p0 = contiguous(M.tireSlots());
       tc.np = M.tireSlots().size();
+      tc.r0 = parameterIndex(M.tire().parameters(), "unloaded_radius_m");
       for (std::size_t i = 0; i < M.effects().size(); ++i)
         if (M.effects()[i]->kind() == EffectKind::TireInput)
           tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});

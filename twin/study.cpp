@@ -377,11 +377,9 @@ std::vector<AssemblySpec> Study::assemblies() const {
   }
 }
 
-const AssemblySpec& Study::assembly(const std::string& id) const {
-  static thread_local std::vector<AssemblySpec> cache;
-  cache = assemblies();
+AssemblySpec Study::assembly(const std::string& id) const {
   std::string known;
-  for (const auto& a : cache) {
+  for (const auto& a : assemblies()) {
     if (a.id == id) return a;
     known += (known.empty() ? "" : ", ") + a.id;
   }

@@ -52,7 +52,7 @@ struct Study {
   std::map<std::string, long> sizes;
 
   std::vector<AssemblySpec> assemblies() const;
-  const AssemblySpec& assembly(const std::string& id) const;  ///< InputError if unknown
+  AssemblySpec assembly(const std::string& id) const;  ///< InputError if unknown
   const ScenarioSpec& scenario(const std::string& name) const;  ///< InputError if unknown
   /// Every parameter with its value: declarations, vehicle file, [fixed], calibrated truths,
   /// [effects], then `overrides` (e.g. --set), in that order of precedence.

@@ -1,0 +1,28 @@
+#pragma once
+// The `twin` subcommands. Each lives in its own file and registers itself on the root CLI::App;
+// main() parses once and runs the chosen one. The CLI only parses, validates and calls.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace dtwin::cli {
+
+/// A registered subcommand: `run` is called when `app` was chosen on the command line.
+struct CommandHandle {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+/// The embedded default study (data/studies/demo.toml in the source tree or the install prefix).
+std::string defaultStudy();
+/// The command line as one string, recorded in every output.
+std::string joinArgs(int argc, char** argv);
+/// True when stderr is a terminal (progress bars are drawn only then).
+bool stderrIsTerminal();
+
+CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line);
+CommandHandle addListCommand(CLI::App& root);
+CommandHandle addBenchCommand(CLI::App& root);
+
+}  // namespace dtwin::cli

@@ -1,0 +1,28 @@
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "cli/commands.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin::cli {
+
+std::string defaultStudy() {
+  for (const char* dir : {DTWIN_SOURCE_DATA_DIR, DTWIN_INSTALL_DATA_DIR}) {
+    const fs::path p = fs::path(dir) / "studies" / "demo.toml";
+    if (fs::exists(p)) return p.string();
+  }
+  return "data/studies/demo.toml";
+}
+
+std::string joinArgs(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
+  return s;
+}
+
+bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
+
+}  // namespace dtwin::cli

@@ -115,10 +115,17 @@ class TireElement : public Force::Custom::Implementation {
 struct StrutGeometry {
   MobilizedBody upper, lower;
   Vec3 st_upper, st_lower;
+  /// When `lower` is a Slider on `upper` whose axis is upper's z through st_upper, the strut
+  /// length change is exactly the slider coordinate: read q, u, u-dot from the State directly
+  /// (no kinematics through Simbody's body caches), and apply the force as a mobility force.
+  bool is_slider = false;
+  QIndex qi;
+  UIndex ui;
   struct Kin {
     double q, qd;
   };
   Kin kin(const State& s) const {
+    if (is_slider) return {s.getQ()[qi], s.getU()[ui]};
     const Vec3 pu = upper.findStationLocationInGround(s, st_upper), pl = lower.findStationLocationInGround(s, st_lower);
     const Vec3 vu = upper.findStationVelocityInGround(s, st_upper), vl = lower.findStationVelocityInGround(s, st_lower);
     const UnitVec3 z = upper.getBodyRotation(s).z();
@@ -127,8 +134,25 @@ struct StrutGeometry {
     return {~d * Vec3(z), ~(vl - vu) * Vec3(z) + ~d * (w % Vec3(z))};
   }
   double accel(const State& s) const {
+    if (is_slider) return s.getUDot()[ui];
     const Vec3 au = upper.findStationAccelerationInGround(s, st_upper), al = lower.findStationAccelerationInGround(s, st_lower);
     return ~(al - au) * Vec3(upper.getBodyRotation(s).z());
+  }
+  /// Applies the strut force F (positive pushes the ends apart along upper's z).
+  void apply(const State& s, double F, Vector_<SpatialVec>& bodyForces, Vector& mobilityForces) const {
+    if (is_slider) {
+      mobilityForces[ui] -= F;  // compression positive: the force pushes the slider back down
+      return;
+    }
+    const Vec3 z(upper.getBodyRotation(s).z());
+    upper.applyForceToBodyPoint(s, st_upper, F * z, bodyForces);
+    lower.applyForceToBodyPoint(s, st_lower, -F * z, bodyForces);
+  }
+  /// Call after realizeTopology for slider struts.
+  void bindSlider(const State& s) {
+    is_slider = true;
+    qi = lower.getFirstQIndex(s);
+    ui = lower.getFirstUIndex(s);
   }
 };
 
@@ -137,13 +161,15 @@ class StrutElement : public Force::Custom::Implementation {
   StrutElement(const RunContext* ctx, const Model* m, StrutGeometry g, std::size_t p0, int preload_slot,
                double preload, bool with_effects)
       : ctx_(ctx), m_(m), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
     const auto k = g_.kin(s);
-    const double F = force(k.q, k.qd);
-    const Vec3 z(g_.upper.getBodyRotation(s).z());
-    g_.upper.applyForceToBodyPoint(s, g_.st_upper, F * z, bodyForces);
-    g_.lower.applyForceToBodyPoint(s, g_.st_lower, -F * z, bodyForces);
+    g_.apply(s, force(k.q, k.qd), bodyForces, mobilityForces);
   }
+  /// Binds slider struts to their state indices (after realizeTopology).
+  void bind(const State& s) {
+    if (bind_slider_) g_.bindSlider(s);
+  }
+  bool bind_slider_ = false;
   double force(double q, double qd) const {
     const double* p = ctx_->p;
     StrutState ss;
@@ -228,6 +254,8 @@ struct Simulator::Impl {
   std::array<TireCorner, 4> tires;
   std::array<double, 4> strut_preload{};
   State default_state;
+  QIndex heave_q, chassis_q;
+  UIndex heave_u, chassis_u;
 
   Impl(std::shared_ptr<const Model> m, SimulationOptions o) : model(std::move(m)), opt(std::move(o)) {
     const std::string rule = opt.check();
@@ -238,6 +266,7 @@ struct Simulator::Impl {
   void build() {
     const Model& M = *model;
     const VehicleData& d = M.vehicle();
+    std::vector<StrutElement*> slider_elems;
     Force::UniformGravity(forces, matter, Vec3(0, 0, -d.gravity));
     const Rotation xToZ(-Pi / 2, YAxis);  // a slider's x axis along the parent's z
     const Rotation zToX(Pi / 2, YAxis);   // a pin's z axis along the parent's x
@@ -269,8 +298,10 @@ struct Simulator::Impl {
           struts[c] = {chassis, axle[ax], Vec3(x, sgn * 0.5 * d.spring_track, z_wc), Vec3(0, sgn * 0.5 * d.spring_track, 0)};
           // Wheel/axle compliant interface (paper eq. 5): no effects, preload from the data.
           StrutGeometry iface{axle[ax], wheels[c], Vec3(0, sgn * 0.5 * d.track, 0), Vec3(0)};
-          Force::Custom(forces, new StrutElement(&ctx, &M, iface, contiguous(M.interfaceSlots()),
-                                                     M.interfacePreloadSlot(), 0.0, false));
+          auto* ie = new StrutElement(&ctx, &M, iface, contiguous(M.interfaceSlots()), M.interfacePreloadSlot(), 0.0, false);
+          ie->bind_slider_ = true;  // the wheel slides on the axle along the axle's z
+          slider_elems.push_back(ie);
+          Force::Custom(forces, ie);
         }
       }
     }
@@ -278,6 +309,10 @@ struct Simulator::Impl {
       massive.push_back({wheels[c], d.wheel_mass});
       auto* se = new StrutElement(&ctx, &M, struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true);
       strut_elems[c] = se;
+      if (M.topology() == SuspensionTopology::MacPherson) {
+        se->bind_slider_ = true;  // the wheel carrier slides along the chassis z at the strut
+        slider_elems.push_back(se);
+      }
       Force::Custom(forces, se);
       TireCorner tc;
       tc.model = &M;
@@ -295,6 +330,13 @@ struct Simulator::Impl {
     ctx.traction_per_wheel_per_accel = d.total_mass(M.topology()) / 4.0;
     system.realizeTopology();
     default_state = system.getDefaultState();
+    for (auto* e : slider_elems) e->bind(default_state);
+    heave_q = heave.getFirstQIndex(default_state);
+    heave_u = heave.getFirstUIndex(default_state);
+    chassis_q = chassis.getFirstQIndex(default_state);
+    chassis_u = chassis.getFirstUIndex(default_state);
+    if (M.topology() == SuspensionTopology::MacPherson)
+      for (auto& g : struts) g.bindSlider(default_state);
   }
 
   /// Static equilibrium at t = 0 for the run parameters in ctx (vehicle at rest, flat start).
@@ -342,7 +384,7 @@ struct Simulator::Impl {
   }
 
   void record(const State& s, std::vector<std::array<double, KNOT>>& knots, std::vector<double>& times) {
-    system.realize(s, Stage::Acceleration);
+    system.realize(s, Stage::Acceleration);  // a no-op after an integrator step (already realized)
     std::array<double, KNOT> k{};
     for (int c = 0; c < 4; ++c) {
       const Vec3 p = wheels[c].getBodyOriginLocation(s), v = wheels[c].getBodyOriginVelocity(s);
@@ -357,9 +399,11 @@ struct Simulator::Impl {
       k[QD + c] = kin.qd;
       k[QDD + c] = struts[c].accel(s);
     }
-    const double vals[9] = {heave.getOneQ(s, 0), heave.getOneQDot(s, 0), heave.getOneQDotDot(s, 0),
-                            chassis.getOneQ(s, 1), chassis.getOneQDot(s, 1), chassis.getOneQDotDot(s, 1),
-                            chassis.getOneQ(s, 0), chassis.getOneQDot(s, 0), chassis.getOneQDotDot(s, 0)};
+    // Heave (slider) and pitch/roll (universal) coordinates: their q-dot is u, so read the State.
+    const Vector &q = s.getQ(), &u = s.getU(), &ud = s.getUDot();
+    const double vals[9] = {q[heave_q], u[heave_u], ud[heave_u],
+                            q[chassis_q + 1], u[chassis_u + 1], ud[chassis_u + 1],
+                            q[chassis_q], u[chassis_u], ud[chassis_u]};
     for (int i = 0; i < 9; ++i) k[BODY + i] = vals[i];
     knots.push_back(k);
     times.push_back(s.getTime());

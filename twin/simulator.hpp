@@ -18,11 +18,11 @@ namespace dtwin {
 
 struct SimulationOptions {
   std::string integrator = "rk-merson";  ///< rk-merson | rk3 | rk-feldberg | cpodes | semi-explicit-euler2
-  double accuracy = 1e-4;                ///< integrator relative accuracy
-  double max_step_s = 0.02;              ///< largest step anywhere
-  double obstacle_max_step_s = 1e-3;     ///< largest step while a wheel crosses an obstacle
+  double accuracy = 1e-3;                ///< integrator relative accuracy (docs/performance.md: error << noise)
+  double max_step_s = 0.05;              ///< largest step anywhere
+  double obstacle_max_step_s = 2e-3;     ///< largest step while a wheel crosses an obstacle
   double obstacle_margin_before_s = 0.02;
-  double obstacle_margin_after_s = 0.1;
+  double obstacle_margin_after_s = 0.05;
   double output_rate_hz = 1000.0;
   long max_internal_steps = 2000000;     ///< a run taking more steps is reported as failed
   /// "" if valid, else "<field> <rule>".

@@ -24,5 +24,7 @@ bool stderrIsTerminal();
 CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line);
 CommandHandle addListCommand(CLI::App& root);
 CommandHandle addBenchCommand(CLI::App& root);
+/// `twin generate lab|field`: synthetic measurements (twin/generate.hpp, docs/data-files.md).
+CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line);
 
 }  // namespace dtwin::cli

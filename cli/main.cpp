@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   commands.push_back(addSimulateCommand(app, command));
   commands.push_back(addListCommand(app));
   commands.push_back(addBenchCommand(app));
+  commands.push_back(addGenerateCommand(app, command));
 
   try {
     app.parse(argc, argv);

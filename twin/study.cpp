@@ -1,6 +1,7 @@
 #include "twin/study.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -336,6 +337,54 @@ Study loadStudy(const std::string& path) {
     }
     r.finish();
   }
+  if (auto* t = top.table("lab")) {
+    TableReader r(*t, path, "lab");
+    auto& lab = s.lab;
+    lab.where = path + ":" + std::to_string(t->source().begin.line) + ": lab";
+    if (auto* a = r.array("times_s")) {
+      std::size_t i = 0;
+      for (auto&& el : *a) {
+        auto v = el.value<double>();
+        if (!v) throw InputError(r.where("times_s"), "must be an array of numbers (seconds)");
+        const std::string item = "element " + std::to_string(i) + " (" + std::to_string(*v) + ")";
+        if (!std::isfinite(*v) || *v < 0) throw InputError(r.where("times_s"), item + " must be a finite time >= 0");
+        if (!lab.times_s.empty() && !(*v > lab.times_s.back()))
+          throw InputError(r.where("times_s"), item + " must be greater than the one before it (times strictly increasing)");
+        const double k = *v * s.simulation.output_rate_hz;
+        if (std::abs(k - std::round(k)) > 1e-6)
+          throw InputError(r.where("times_s"), item + " is not on the output grid (multiples of 1/output_rate_hz = " +
+                                                   std::to_string(1.0 / s.simulation.output_rate_hz) + " s)");
+        lab.times_s.push_back(std::round(k) / s.simulation.output_rate_hz);
+        ++i;
+      }
+      if (lab.times_s.empty()) throw InputError(r.where("times_s"), "must list at least one time (or leave it out for automatic times)");
+    }
+    lab.channels = r.strings("channels");
+    std::vector<std::string> known;
+    for (const auto& c : Simulator::channels())
+      if (c.name != "time_s") known.push_back(c.name);
+    for (std::size_t i = 0; i < lab.channels.size(); ++i) {
+      const auto& c = lab.channels[i];
+      if (std::find(known.begin(), known.end(), c) == known.end()) {
+        const std::string hint = closestName(c, known);
+        throw InputError(r.where("channels"), "unknown channel '" + c + "'" +
+                                                  (hint.empty() ? std::string(" (see `twin list`)") : " (did you mean '" + hint + "'?)"));
+      }
+      if (std::find(lab.channels.begin(), lab.channels.begin() + static_cast<long>(i), c) != lab.channels.begin() + static_cast<long>(i))
+        throw InputError(r.where("channels"), "channel '" + c + "' listed twice");
+    }
+    if (r.has("auto_times")) {
+      if (!lab.times_s.empty()) throw InputError(r.where("auto_times"), "give either times_s or auto_times, not both");
+      lab.auto_times = *r.integer("auto_times");
+      if (lab.auto_times <= 0) throw InputError(r.where("auto_times"), "must be a positive integer, got " + std::to_string(lab.auto_times));
+    }
+    if (r.has("min_separation_s")) {
+      if (!lab.times_s.empty()) throw InputError(r.where("min_separation_s"), "applies to automatic times only (times_s is given)");
+      lab.min_separation_s = *r.number("min_separation_s");
+      if (!(lab.min_separation_s >= 0)) throw InputError(r.where("min_separation_s"), "must be >= 0");
+    }
+    r.finish();
+  }
   top.finish();
 
   // Cross-checks against the vehicle data: names, units and bounds of calibrated parameters.
@@ -421,6 +470,21 @@ std::shared_ptr<const Model> Study::makeModel(const AssemblySpec& a, const std::
   return std::make_shared<const Model>(spec, parameterTable(all), path);
 }
 
+std::vector<std::string> LabSettings::channelsOrDefault() const {
+  return channels.empty() ? std::vector<std::string>{"hub_force_fl_N"} : channels;
+}
+
+nlohmann::json LabSettings::toJson() const {
+  nlohmann::json j = {{"channels", channelsOrDefault()}};
+  if (times_s.empty()) {
+    j["auto_times"] = auto_times;
+    j["min_separation_s"] = min_separation_s;
+  } else {
+    j["times_s"] = times_s;
+  }
+  return j;
+}
+
 nlohmann::json Study::toJson() const {
   nlohmann::json j;
   j["path"] = path;
@@ -435,6 +499,7 @@ nlohmann::json Study::toJson() const {
   }
   j["noise_variance_N2"] = noise_variance_N2;
   j["sizes"] = sizes;
+  j["lab"] = lab.toJson();
   return j;
 }
 

@@ -36,6 +36,18 @@ struct EffectSetting {
   std::vector<ParameterSetting> values;  ///< names are "<effect>.<param>"
 };
 
+/// Optional [lab] table: which channels the lab data carry and at which times (docs/study-file.md).
+struct LabSettings {
+  std::vector<double> times_s;           ///< explicit times (empty: automatic)
+  std::vector<std::string> channels;     ///< empty: {"hub_force_fl_N"}
+  long auto_times = 5;                   ///< how many automatic times
+  double min_separation_s = 0.02;        ///< minimum spacing of automatic times
+  std::string where;                     ///< "file:line: lab" for errors
+  /// The channels to generate: `channels`, or hub_force_fl_N if none are given.
+  std::vector<std::string> channelsOrDefault() const;
+  nlohmann::json toJson() const;
+};
+
 struct Study {
   std::string path;
   std::string name, description;
@@ -50,6 +62,7 @@ struct Study {
   SimulationOptions simulation;
   double noise_variance_N2 = 18000.0;
   std::map<std::string, long> sizes;
+  LabSettings lab;
 
   std::vector<AssemblySpec> assemblies() const;
   AssemblySpec assembly(const std::string& id) const;  ///< InputError if unknown

@@ -1,0 +1,194 @@
+// `twin generate lab|field`: synthetic measurements made by one assembly at the study's true
+// parameters, plus noise. Thin: parse, validate, call twin/generate.hpp, write atomically.
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/generate.hpp"
+#include "twin/provenance.hpp"
+#include "twin/trace.hpp"
+
+namespace dtwin::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GenerateConfig {
+  std::string study = defaultStudy(), out, assembly, scenario, channel = "hub_force_fl_N";
+  std::uint64_t seed = 0;
+  long repetitions = 0, runs = 0;
+  int threads = 0;
+  std::vector<double> window;
+  bool quiet = false;
+  CLI::Option* seed_opt = nullptr;
+};
+
+/// A progress line on stderr, only when stderr is a terminal and --quiet is not given.
+class ProgressLine {
+ public:
+  ProgressLine(const char* what, const char* unit, bool quiet)
+      : what_(what), unit_(unit), on_(!quiet && stderrIsTerminal()), t0_(std::chrono::steady_clock::now()) {}
+  ~ProgressLine() {
+    if (on_ && printed_) std::fputc('\n', stderr);
+  }
+  ProgressFn fn() {
+    if (!on_) return {};
+    return [this](std::size_t done, std::size_t total) {
+      const auto now = std::chrono::steady_clock::now();
+      if (done != total && printed_ && now - last_ < std::chrono::milliseconds(200)) return;
+      last_ = now;
+      printed_ = true;
+      const double s = std::chrono::duration<double>(now - t0_).count();
+      std::fprintf(stderr, "\rtwin generate %s: %zu/%zu %s, %.1f s", what_, done, total, unit_, s);
+      std::fflush(stderr);
+    };
+  }
+
+ private:
+  const char* what_;
+  const char* unit_;
+  bool on_, printed_ = false;
+  std::chrono::steady_clock::time_point t0_, last_;
+};
+
+AssemblySpec chooseAssembly(const Study& study, const std::string& id) {
+  if (!id.empty()) return study.assembly(id);
+  const auto all = study.assemblies();
+  if (all.empty()) throw InputError(study.path + ": assemblies", "the study defines no assembly");
+  return all.front();  // M1: the highest fidelity by convention (method.md §1)
+}
+
+/// Rejects an --out that is not a .csv file or whose folder cannot be written, before any run.
+void checkOut(const std::string& out) {
+  const fs::path p(out);
+  if (p.extension() != ".csv") throw InputError("--out", "must name a .csv file, got '" + out + "'");
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)
+    throw InputError("--out", "cannot write into folder '" + dir.string() + "'");
+}
+
+int runLab(const GenerateConfig& cfg, const std::string& command) {
+  checkOut(cfg.out);
+  const Study study = loadStudy(cfg.study);
+  const AssemblySpec a = chooseAssembly(study, cfg.assembly);
+  LabOptions opt;
+  if (!cfg.scenario.empty()) opt.scenario = cfg.scenario;
+  opt.repetitions = cfg.repetitions;
+  if (cfg.seed_opt->count()) opt.seed = cfg.seed;
+  opt.command = command;
+  LabResult r;
+  {
+    ProgressLine line("lab", "runs", cfg.quiet);
+    r = generateLab(study, a, opt, line.fn());
+  }
+  writeLabCsv(cfg.out, r.data);
+  writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
+  if (!cfg.quiet) {
+    for (const auto& c : r.provenance["noise"]["not_applied_to"])
+      std::fprintf(stderr, "twin: note: channel %s is not in N; it is written without noise\n", c.get<std::string>().c_str());
+    std::string times;
+    for (double t : r.times_s) times += (times.empty() ? "" : ", ") + formatExact(t);
+    std::printf("%s (%s): %ld repetitions x %zu times x %zu channel(s), times %s s (%s) -> %s, %s\n", a.id.c_str(),
+                a.label().c_str(), r.provenance["lab"]["repetitions"].get<long>(), r.times_s.size(),
+                r.provenance["lab"]["channels"].size(), times.c_str(), r.provenance["lab"]["times"]["source"].get<std::string>().c_str(),
+                cfg.out.c_str(), sidecarPath(cfg.out).c_str());
+  }
+  return 0;
+}
+
+int runField(const GenerateConfig& cfg, const std::string& command) {
+  checkOut(cfg.out);
+  const Study study = loadStudy(cfg.study);
+  const AssemblySpec a = chooseAssembly(study, cfg.assembly);
+  FieldOptions opt;
+  if (!cfg.scenario.empty()) opt.scenario = cfg.scenario;
+  opt.channel = cfg.channel;
+  if (!cfg.window.empty()) {
+    if (cfg.window.size() != 2 || !(cfg.window[0] < cfg.window[1])) throw InputError("--window", "expects T0,T1 with T0 < T1");
+    opt.t_begin_s = cfg.window[0];
+    opt.t_end_s = cfg.window[1];
+  }
+  opt.runs = cfg.runs;
+  opt.threads = cfg.threads;
+  if (cfg.seed_opt->count()) opt.seed = cfg.seed;
+  opt.command = command;
+  FieldResult r;
+  {
+    ProgressLine line("field", "runs", cfg.quiet);
+    r = generateField(study, a, opt, line.fn());
+  }
+  writeFieldCsv(cfg.out, r.data);
+  writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
+  if (!cfg.quiet && !r.provenance["noise"]["applied"].get<bool>())
+    std::fprintf(stderr, "twin: note: channel %s is not in N; it is written without noise\n", opt.channel.c_str());
+  if (!cfg.quiet)
+    std::printf("%s (%s): %zu runs x %zu samples of %s (%g..%g s), %d threads, %.1f s -> %s, %s\n", a.id.c_str(),
+                a.label().c_str(), r.data.rowCount(), r.data.columnCount(), opt.channel.c_str(), r.data.times_s.front(),
+                r.data.times_s.back(), r.provenance["field"]["threads"].get<int>(),
+                r.provenance["stats"]["wall_s"].get<double>(), cfg.out.c_str(), sidecarPath(cfg.out).c_str());
+  return 0;
+}
+
+void commonOptions(CLI::App* s, GenerateConfig& cfg, const char* default_scenario) {
+  s->add_option("--study", cfg.study, "Study file (TOML)")->capture_default_str();
+  s->add_option("--out", cfg.out, "Output CSV file; the JSON sidecar is written next to it (.json)")->required();
+  s->add_option("--assembly", cfg.assembly, "Assembly that makes the data (default: the study's first, M1)");
+  s->add_option("--scenario", cfg.scenario, std::string("Scenario of the study (default: ") + default_scenario + ")");
+  cfg.seed_opt = s->add_option("--seed", cfg.seed, "Seed of noise and roads (default: the study's seed)")
+                     ->check(CLI::Validator(
+                         [](std::string& v) -> std::string {
+                           const bool digits = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos;
+                           return digits ? std::string() : "must be an integer >= 0, got '" + v + "'";
+                         },
+                         "INT>=0"));
+  s->add_flag("--quiet", cfg.quiet, "Print nothing on success (no progress line)");
+}
+
+}  // namespace
+
+CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line) {
+  auto* g = root.add_subcommand("generate", "Make synthetic measurements: lab data (condensed, repeated) or field data (random roads)");
+  g->require_subcommand(1);
+  auto lab = std::make_shared<GenerateConfig>();
+  auto field = std::make_shared<GenerateConfig>();
+
+  auto* l = g->add_subcommand("lab",
+                              "Lab data: the assembly at the study's true parameters over the lab scenario, plus noise, R "
+                              "repetitions, at a few significant times (tidy CSV repetition,time_s,channel,value; docs/data-files.md)");
+  commonOptions(l, *lab, "lab");
+  l->add_option("--repetitions", lab->repetitions, "Repetitions (default: the study's sizes.lab_repetitions)")
+      ->check(CLI::Range(1L, 1000000L));
+
+  auto* f = g->add_subcommand("field",
+                              "Field data: N runs on independent random roads of the field scenario, a window of one channel at "
+                              "the output rate, plus noise (CSV matrix run,road_seed,t_10.000,...; docs/data-files.md)");
+  commonOptions(f, *field, "field");
+  f->add_option("--runs", field->runs, "Runs (default: the study's sizes.field_runs)")->check(CLI::Range(1L, 100000000L));
+  f->add_option("--threads", field->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
+  f->add_option("--channel", field->channel, "Channel to keep")->capture_default_str();
+  f->add_option("--window", field->window, "Time window kept, T0,T1 [s] (default 10,15)")->delimiter(',')->expected(2);
+
+  CommandHandle h;
+  h.app = g;
+  h.run = [=]() -> int {
+    try {
+      if (*l) return runLab(*lab, command_line);
+      return runField(*field, command_line);
+    } catch (const RunFailedError& e) {
+      std::fprintf(stderr, "twin: error: %s\n", e.what());
+      return 1;
+    }
+  };
+  return h;
+}
+
+}  // namespace dtwin::cli

@@ -1,0 +1,314 @@
+#include "twin/generate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+
+#include "subsystems/errors.hpp"
+#include "subsystems/random.hpp"
+#include "twin/parallel.hpp"
+#include "twin/provenance.hpp"
+#include "twin/simulator.hpp"
+
+namespace dtwin {
+namespace {
+
+std::string hex(std::uint64_t v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "0x%016llX", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+double noiseVariance(const Study& study, const std::optional<double>& override_value) {
+  const double v = override_value.value_or(study.noise_variance_N2);
+  if (!(std::isfinite(v) && v >= 0)) throw InputError("noise variance", "must be a finite number >= 0 [N^2], got " + std::to_string(v));
+  return v;
+}
+
+const Channel& channelInfo(const std::string& name, const std::string& where) {
+  static const std::vector<Channel> known = measurableChannels();
+  const std::string rule = checkChannelName(name, known);
+  if (!rule.empty()) throw InputError(where, rule);
+  for (const auto& c : known)
+    if (c.name == name) return c;
+  DTWIN_CHECK(false, "channel " + name);
+  return known.front();
+}
+
+/// The calibrated parameters with the values a model uses (truths where the study gives them).
+nlohmann::json truthJson(const Study& study, const Model& model) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& c : study.calibrated) {
+    if (!model.table().contains(c.name)) continue;
+    const auto& e = model.table().at(c.name);
+    j[c.name] = {{"value", e.value}, {"unit", e.spec.unit}, {"source", e.source}, {"truth_given", c.truth.has_value()}};
+  }
+  return j;
+}
+
+/// Grid index of time t at `rate`; InputError if t is not on the grid or outside [0, duration].
+std::size_t gridIndex(double t, double rate, double duration, const std::string& where) {
+  const double k = t * rate;
+  if (!std::isfinite(t) || std::abs(k - std::round(k)) > 1e-6)
+    throw InputError(where, formatExact(t) + " s is not on the output grid (multiples of " + formatExact(1.0 / rate) + " s)");
+  if (t < 0 || t > duration + 1e-9)
+    throw InputError(where, formatExact(t) + " s lies outside the scenario (0 .. " + formatExact(duration) + " s)");
+  return static_cast<std::size_t>(std::llround(k));
+}
+
+}  // namespace
+
+std::uint64_t fieldRoadSeed(std::uint64_t seed, std::size_t run) {
+  DTWIN_CHECK(run >= 1, "runs are numbered from 1");
+  // 53 bits: exact as a double (MATLAB's readmatrix, pandas with NaNs) and as a signed 64-bit
+  // integer (`twin simulate --seed`).
+  return RandomStream(seed, kFieldRoadStream, run - 1).bits() >> 11;
+}
+
+double obstacleTime(const ScenarioSpec& s) {
+  switch (s.road.type) {
+    case RoadSpec::Type::Bump: return s.road.bump_time_s;
+    case RoadSpec::Type::Iso: return std::max(0.0, s.road.smooth_until_s);
+    default: return 0.0;
+  }
+}
+
+std::vector<double> automaticLabTimes(const Trace& tr, const std::string& channel, double obstacle_time_s, std::size_t count,
+                                      double min_separation_s) {
+  const auto& t = tr.column("time_s");
+  const auto& x = tr.column(channel);
+  if (x.empty() || count == 0) return {};
+  const double static_value = x.front();
+  // Runs of equal values (a flat run is one extremum at most, placed at its middle sample).
+  struct Run {
+    std::size_t lo, hi;
+  };
+  std::vector<Run> runs;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (!runs.empty() && x[k] == x[runs.back().hi]) runs.back().hi = k;
+    else runs.push_back({k, k});
+  }
+  struct Candidate {
+    std::size_t k;
+    double score;
+  };
+  std::vector<Candidate> cand;
+  for (std::size_t j = 1; j + 1 < runs.size(); ++j) {
+    const double v = x[runs[j].lo], before = x[runs[j - 1].lo], after = x[runs[j + 1].lo];
+    const bool extremum = (v > before && v > after) || (v < before && v < after);
+    const std::size_t mid = (runs[j].lo + runs[j].hi) / 2;
+    if (extremum && t[mid] >= obstacle_time_s - 1e-12) cand.push_back({mid, std::abs(v - static_value)});
+  }
+  std::stable_sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
+  std::vector<double> kept;
+  for (const auto& c : cand) {
+    if (kept.size() >= count) break;
+    bool far = true;
+    for (double tk : kept) far = far && std::abs(t[c.k] - tk) >= min_separation_s - 1e-9;
+    if (far) kept.push_back(t[c.k]);
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+LabResult generateLab(const Study& study, const AssemblySpec& assembly, const LabOptions& opt, const ProgressFn& progress) {
+  const ScenarioSpec& sc = study.scenario(opt.scenario);
+  const long reps = opt.repetitions > 0 ? opt.repetitions : study.sizes.at("lab_repetitions");
+  const std::uint64_t seed = opt.seed.value_or(study.seed);
+  const double variance = noiseVariance(study, opt.noise_variance_N2);
+  const double sigma = std::sqrt(variance);
+  const std::vector<std::string> names = study.lab.channelsOrDefault();
+  std::vector<Channel> channels;
+  for (const auto& n : names) channels.push_back(channelInfo(n, study.path + ": lab.channels"));
+  const double rate = study.simulation.output_rate_hz;
+
+  auto model = study.makeModel(assembly);
+  auto road = makeRoad(sc, model->vehicle(), seed);
+  Simulator sim(model, study.simulation);
+  const auto values = model->defaultRunValues();
+  if (progress) progress(0, 1);
+  RunResult run = sim.run(values, *road, sc);
+  if (!run.stats.ok)
+    throw RunFailedError("lab run of " + assembly.id + " over scenario '" + sc.name + "' (seed " + std::to_string(seed) +
+                             ") failed: " + run.stats.message,
+                         0, seed);
+  if (progress) progress(1, 1);
+
+  LabResult res;
+  const double t_obstacle = obstacleTime(sc);
+  nlohmann::json times_json;
+  if (!study.lab.times_s.empty()) {
+    res.times_s = study.lab.times_s;
+    res.times_rule = "explicit: [lab] times_s of " + study.path;
+    times_json = {{"source", "explicit"}, {"rule", res.times_rule}};
+  } else {
+    res.times_s = automaticLabTimes(run.trace, names.front(), t_obstacle, static_cast<std::size_t>(study.lab.auto_times),
+                                    study.lab.min_separation_s);
+    if (res.times_s.empty())
+      throw InputError(study.path + ": lab", "no local extremum of " + names.front() + " at or after t = " + formatExact(t_obstacle) +
+                                                 " s in scenario '" + sc.name + "'; give the times with [lab] times_s");
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "automatic: local extrema (sign changes of the discrete derivative; a flat run counts once, at its middle "
+                  "sample) of the noise-free %s at or after the obstacle time %g s, ranked by |value - static value at t = 0|, "
+                  "the %ld largest at least %g s apart, in time order, on the %g Hz output grid",
+                  names.front().c_str(), t_obstacle, study.lab.auto_times, study.lab.min_separation_s, rate);
+    res.times_rule = buf;
+    times_json = {{"source", "automatic"},
+                  {"rule", res.times_rule},
+                  {"channel", names.front()},
+                  {"obstacle_time_s", t_obstacle},
+                  {"requested", study.lab.auto_times},
+                  {"found", res.times_s.size()},
+                  {"min_separation_s", study.lab.min_separation_s},
+                  {"static_value", run.trace.column(names.front()).front()}};
+  }
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < res.times_s.size(); ++i)
+    rows.push_back(gridIndex(res.times_s[i], rate, sc.duration_s, study.path + ": lab.times_s[" + std::to_string(i) + "]"));
+  for (std::size_t r : rows) DTWIN_CHECK(r < run.trace.rows(), "lab time beyond the trace");
+
+  nlohmann::json noise_free = nlohmann::json::object();
+  for (const auto& c : channels) {
+    std::vector<double> v;
+    for (std::size_t r : rows) v.push_back(run.trace.column(c.name)[r]);
+    noise_free[c.name] = v;
+  }
+  const auto& time_col = run.trace.column("time_s");
+  for (long rep = 1; rep <= reps; ++rep) {
+    RandomStream rs(seed, kLabNoiseStream, static_cast<std::uint64_t>(rep - 1));
+    for (const auto& c : channels) {
+      const auto& col = run.trace.column(c.name);
+      const bool noisy = c.unit == "N";
+      for (std::size_t r : rows) res.data.records.push_back({rep, time_col[r], c.name, col[r] + (noisy ? sigma * rs.normal() : 0.0)});
+    }
+  }
+  validateLabData(res.data, "generated lab data");
+
+  nlohmann::json j = runRecord(study, *model, sc, *road, seed, values, study.simulation, run.stats, channels, opt.command);
+  j["kind"] = "lab";
+  j["format"] = "tidy CSV: repetition,time_s,channel,value (docs/data-files.md)";
+  j["truth"] = truthJson(study, *model);
+  std::vector<std::string> noisy, clean;
+  for (const auto& c : channels) (c.unit == "N" ? noisy : clean).push_back(c.name);
+  j["noise"] = {{"distribution", "independent normal N(0, variance) added to every value of a channel in N"},
+                {"variance_N2", variance},
+                {"sigma_N", sigma},
+                {"applied_to", noisy},
+                {"not_applied_to", clean},
+                {"seed", seed},
+                {"stream", hex(kLabNoiseStream)},
+                {"rule", "repetition r draws from RandomStream(seed, stream, r - 1) (mt19937_64 seeded by SplitMix64, "
+                         "Box-Muller), in the order of the channels, then of the times"}};
+  j["lab"] = {{"repetitions", reps},
+              {"times_s", res.times_s},
+              {"times", times_json},
+              {"channels", nlohmann::json::array()},
+              {"noise_free_values", noise_free}};
+  for (const auto& c : channels)
+    j["lab"]["channels"].push_back({{"name", c.name}, {"unit", c.unit}, {"description", c.description}});
+  res.provenance = std::move(j);
+  res.noise_free = std::move(run.trace);
+  return res;
+}
+
+FieldResult generateField(const Study& study, const AssemblySpec& assembly, const FieldOptions& opt, const ProgressFn& progress) {
+  const ScenarioSpec& sc = study.scenario(opt.scenario);
+  const long n_runs = opt.runs > 0 ? opt.runs : study.sizes.at("field_runs");
+  const std::uint64_t seed = opt.seed.value_or(study.seed);
+  const double variance = noiseVariance(study, opt.noise_variance_N2);
+  const double sigma = std::sqrt(variance);
+  const Channel channel = channelInfo(opt.channel, "field channel");
+  const bool noisy = channel.unit == "N";
+  const double rate = study.simulation.output_rate_hz;
+  if (!(opt.t_begin_s <= opt.t_end_s))
+    throw InputError("field window", "needs begin <= end, got " + formatExact(opt.t_begin_s) + " .. " + formatExact(opt.t_end_s) + " s");
+  const std::size_t kb = gridIndex(opt.t_begin_s, rate, sc.duration_s, "field window begin");
+  const std::size_t ke = gridIndex(opt.t_end_s, rate, sc.duration_s, "field window end");
+
+  auto model = study.makeModel(assembly);
+  const auto values = model->defaultRunValues();
+  const std::size_t N = static_cast<std::size_t>(n_runs), T = ke - kb + 1;
+  FieldData d;
+  for (std::size_t k = kb; k <= ke; ++k) d.times_s.push_back(static_cast<double>(k) / rate);  // as the simulator's grid
+  d.runs.resize(N);
+  d.road_seeds.resize(N);
+  d.values.assign(N * T, 0.0);
+  struct Stats {
+    long steps = 0;
+    double wall_s = 0;
+  };
+  std::vector<Stats> stats(N);
+  const int workers = workerCount(opt.threads, N);
+  std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
+  std::mutex progress_mutex;
+  std::size_t done = 0;
+  if (progress) progress(0, N);
+  const auto t0 = std::chrono::steady_clock::now();
+
+  parallelFor(N, workers, [&](std::size_t i, int w) {
+    const std::size_t run_no = i + 1;
+    const std::uint64_t road_seed = fieldRoadSeed(seed, run_no);
+    auto road = makeRoad(sc, model->vehicle(), road_seed);
+    auto& sim = sims[static_cast<std::size_t>(w)];
+    if (!sim) sim = std::make_unique<Simulator>(model, study.simulation);
+    RunResult r = sim->run(values, *road, sc);
+    if (!r.stats.ok)
+      throw RunFailedError("field run " + std::to_string(run_no) + " of " + std::to_string(N) + " (road seed " +
+                               std::to_string(road_seed) + ") failed: " + r.stats.message +
+                               "; reproduce it with `twin simulate --assembly " + assembly.id + " --scenario " + sc.name +
+                               " --seed " + std::to_string(road_seed) + "`",
+                           run_no, road_seed);
+    const auto& col = r.trace.column(channel.name);
+    DTWIN_CHECK(col.size() > ke, "field window beyond the trace");
+    RandomStream rs(seed, kFieldNoiseStream, i);
+    for (std::size_t k = 0; k < T; ++k) d.values[i * T + k] = col[kb + k] + (noisy ? sigma * rs.normal() : 0.0);
+    d.runs[i] = static_cast<long>(run_no);
+    d.road_seeds[i] = road_seed;
+    stats[i] = {r.stats.steps, r.stats.wall_s};
+    if (progress) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      progress(++done, N);
+    }
+  });
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  FlatRoad placeholder;
+  RunStats total;
+  total.sim_s = sc.duration_s * static_cast<double>(N);
+  total.wall_s = wall;
+  for (const auto& s : stats) total.steps += s.steps;
+  nlohmann::json j = runRecord(study, *model, sc, placeholder, seed, values, study.simulation, total, {channel}, opt.command);
+  j["kind"] = "field";
+  j["format"] = "CSV matrix: run,road_seed,t_<seconds>,... one row per run (docs/data-files.md)";
+  j["truth"] = truthJson(study, *model);
+  j["road"] = {{"family", sc.toJson()["road"]},
+               {"seed_rule", "road seed of run k = RandomStream(seed, " + hex(kFieldRoadStream) +
+                                 ", k - 1).bits() >> 11 (53 bits: exact as a double); `twin simulate --scenario " + sc.name + " --seed <road seed>` reproduces run k without noise"}};
+  j["noise"] = {{"distribution", "independent normal N(0, variance) added to every value (channels in N only)"},
+                {"variance_N2", variance},
+                {"sigma_N", sigma},
+                {"applied", noisy},
+                {"seed", seed},
+                {"stream", hex(kFieldNoiseStream)},
+                {"rule", "run k draws from RandomStream(seed, stream, k - 1) (mt19937_64 seeded by SplitMix64, Box-Muller), "
+                         "one value per time in time order"}};
+  j["field"] = {{"channel", channel.name},
+                {"unit", channel.unit},
+                {"window_s", {d.times_s.front(), d.times_s.back()}},
+                {"samples_per_run", T},
+                {"output_rate_hz", rate},
+                {"runs", N},
+                {"threads", workers},
+                {"per_run", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < N; ++i)
+    j["field"]["per_run"].push_back({{"run", d.runs[i]}, {"road_seed", d.road_seeds[i]}, {"integrator_steps", stats[i].steps},
+                                     {"wall_s", stats[i].wall_s}});
+  j["stats"]["message"] = "totals over all runs; wall_s is the elapsed time of the whole parallel loop";
+  return {std::move(d), std::move(j)};
+}
+
+}  // namespace dtwin

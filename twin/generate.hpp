@@ -1,0 +1,106 @@
+#pragma once
+// Synthetic measurements (method.md §3): lab data (one assembly at the study's true parameters
+// over the lab scenario, plus Gaussian noise, R repetitions, condensed to a few significant
+// times) and field data (N runs on independent random roads, a window of one channel, plus
+// noise). Everything is deterministic: noise and road seeds derive from (seed, a purpose-specific
+// stream constant, repetition or run index) through RandomStream, never from execution order,
+// so the output does not depend on the number of threads.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "twin/measurement.hpp"
+#include "twin/study.hpp"
+
+namespace dtwin {
+
+/// Stream constants of RandomStream(seed, stream, index) (ASCII tags; recorded in sidecars).
+inline constexpr std::uint64_t kLabNoiseStream = 0x4C41424E4F495345ULL;    // "LABNOISE"; index: repetition - 1
+inline constexpr std::uint64_t kFieldRoadStream = 0x4649454C44524F44ULL;   // "FIELDROD"; index: run - 1
+inline constexpr std::uint64_t kFieldNoiseStream = 0x4649454C444E4F49ULL;  // "FIELDNOI"; index: run - 1
+
+/// Progress: `done` of `total` units finished. Called one call at a time (possibly from worker
+/// threads), never concurrently.
+using ProgressFn = std::function<void(std::size_t done, std::size_t total)>;
+
+/// A simulation that failed (RunStats.ok false) while generating data: names the run and its seed.
+class RunFailedError : public std::runtime_error {
+ public:
+  RunFailedError(const std::string& what, std::size_t run, std::uint64_t seed)
+      : std::runtime_error(what), run_(run), seed_(seed) {}
+  std::size_t run() const { return run_; }  ///< 1-based run number (0 for the lab run)
+  std::uint64_t seed() const { return seed_; }
+
+ private:
+  std::size_t run_;
+  std::uint64_t seed_;
+};
+
+/// The road seed of field run `run` (1-based): RandomStream(seed, kFieldRoadStream, run - 1).bits()
+/// >> 11, i.e. in [0, 2^53): exact as a double (MATLAB) and as a signed 64-bit integer.
+/// `twin simulate --scenario field --seed <road seed>` reproduces that run without noise.
+std::uint64_t fieldRoadSeed(std::uint64_t seed, std::size_t run);
+
+/// When a scenario's obstacle starts: a bump road's time_s, a random road's smooth_until_s, else 0.
+double obstacleTime(const ScenarioSpec& scenario);
+
+/// Automatic lab times (docs/study-file.md, [lab]): on the output grid of `noise_free`, the local
+/// extrema of `channel` (sign changes of the discrete derivative; a flat run counts once, at its
+/// middle sample) at or after `obstacle_time_s`, ranked by |value - value at t = 0| (the static
+/// value); greedily keep the largest `count` that are at least `min_separation_s` from every one
+/// kept; returned in time order. Fewer than `count` if there are fewer extrema.
+std::vector<double> automaticLabTimes(const Trace& noise_free, const std::string& channel, double obstacle_time_s,
+                                      std::size_t count, double min_separation_s);
+
+struct LabOptions {
+  std::string scenario = "lab";
+  long repetitions = 0;                       ///< <= 0: the study's sizes.lab_repetitions
+  std::optional<std::uint64_t> seed;          ///< default: the study's seed
+  std::optional<double> noise_variance_N2;    ///< default: the study's [noise] variance_N2
+  std::string command;                        ///< recorded in the provenance
+};
+
+struct LabResult {
+  LabData data;                  ///< records: repetition, then channel, then time
+  std::vector<double> times_s;   ///< the condensed times
+  std::string times_rule;        ///< how the times were chosen
+  Trace noise_free;              ///< the full noise-free trace of the run
+  nlohmann::json provenance;     ///< the sidecar (docs/data-files.md)
+};
+
+/// Lab data: `assembly` at the study's parameters (calibrated truths applied) over the lab
+/// scenario, noise N(0, sigma^2) added to channels in N (other channels are written noise-free,
+/// and the provenance says so), repetitions 1..R, at the [lab] times or the automatic ones.
+/// Throws InputError for bad settings, RunFailedError if the simulation fails.
+LabResult generateLab(const Study& study, const AssemblySpec& assembly, const LabOptions& options = {},
+                      const ProgressFn& progress = {});
+
+struct FieldOptions {
+  std::string scenario = "field";
+  std::string channel = "hub_force_fl_N";
+  double t_begin_s = 10.0, t_end_s = 15.0;    ///< window kept (inclusive), on the output grid
+  long runs = 0;                              ///< <= 0: the study's sizes.field_runs
+  std::optional<std::uint64_t> seed;          ///< default: the study's seed
+  std::optional<double> noise_variance_N2;    ///< default: the study's [noise] variance_N2
+  int threads = 0;                            ///< <= 0: all cores
+  std::string command;
+};
+
+struct FieldResult {
+  FieldData data;
+  nlohmann::json provenance;
+};
+
+/// Field data: runs 1..N of `assembly` on independent roads of the field scenario (road seed of
+/// run k: fieldRoadSeed(seed, k)), the window of `channel`, plus noise (channels in N only), in
+/// parallel on options.threads workers (one Simulator each, one shared Model).
+/// Throws InputError for bad settings, RunFailedError naming the lowest failing run and its seed.
+FieldResult generateField(const Study& study, const AssemblySpec& assembly, const FieldOptions& options = {},
+                          const ProgressFn& progress = {});
+
+}  // namespace dtwin

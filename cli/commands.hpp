@@ -26,5 +26,7 @@ CommandHandle addListCommand(CLI::App& root);
 CommandHandle addBenchCommand(CLI::App& root);
 /// `twin generate lab|field`: synthetic measurements (twin/generate.hpp, docs/data-files.md).
 CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line);
+/// `twin calibrate`: Griddy Gibbs calibration of assemblies against lab data (calibration/calibrate.hpp).
+CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_line);
 
 }  // namespace dtwin::cli

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   commands.push_back(addListCommand(app));
   commands.push_back(addBenchCommand(app));
   commands.push_back(addGenerateCommand(app, command));
+  commands.push_back(addCalibrateCommand(app, command));
 
   try {
     app.parse(argc, argv);

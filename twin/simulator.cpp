@@ -8,19 +8,21 @@
 #include <Simbody.h>
 
 #include "subsystems/errors.hpp"
+#include "twin/rosenbrock.hpp"
 
 namespace dtwin {
 using namespace SimTK;
 
 // ----------------------------------------------------------------------- options
 std::vector<std::string> SimulationOptions::integratorNames() {
-  return {"rk-merson", "rk3", "rk-feldberg", "cpodes", "semi-explicit-euler2"};
+  return {"rosenbrock", "rk-merson", "rk3", "rk-feldberg", "cpodes", "semi-explicit-euler2"};
 }
 
 std::string SimulationOptions::check() const {
   auto names = integratorNames();
   if (std::find(names.begin(), names.end(), integrator) == names.end())
-    return "integrator must be one of rk-merson, rk3, rk-feldberg, cpodes, semi-explicit-euler2, got '" + integrator + "'";
+    return "integrator must be one of rosenbrock, rk-merson, rk3, rk-feldberg, cpodes, semi-explicit-euler2, got '" +
+           integrator + "'";
   if (!(accuracy > 0 && accuracy < 1)) return "accuracy must be in (0, 1), got " + std::to_string(accuracy);
   if (!(max_step_s > 0)) return "max_step_s must be > 0, got " + std::to_string(max_step_s);
   if (!(obstacle_max_step_s > 0)) return "obstacle_max_step_s must be > 0, got " + std::to_string(obstacle_max_step_s);
@@ -31,6 +33,8 @@ std::string SimulationOptions::check() const {
 
 nlohmann::json SimulationOptions::toJson() const {
   return {{"integrator", integrator},
+          {"integrator_note", integrator == "rosenbrock" ? "ROS34PW2 Rosenbrock-W (Rang & Angermann 2005), twin/rosenbrock.hpp"
+                                                                 : "Simbody's " + integrator + " integrator"},
           {"accuracy", accuracy},
           {"max_step_s", max_step_s},
           {"obstacle_max_step_s", obstacle_max_step_s},
@@ -409,11 +413,11 @@ struct Simulator::Impl {
     times.push_back(s.getTime());
   }
 
-  std::unique_ptr<Integrator> makeIntegrator() {
-    if (opt.integrator == "rk-merson") return std::make_unique<RungeKuttaMersonIntegrator>(system);
-    if (opt.integrator == "rk3") return std::make_unique<RungeKutta3Integrator>(system);
-    if (opt.integrator == "rk-feldberg") return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
-    if (opt.integrator == "cpodes") return std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
+  std::unique_ptr<Integrator> makeIntegrator(const std::string& method) {
+    if (method == "rk-merson") return std::make_unique<RungeKuttaMersonIntegrator>(system);
+    if (method == "rk3") return std::make_unique<RungeKutta3Integrator>(system);
+    if (method == "rk-feldberg") return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
+    if (method == "cpodes") return std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
     return std::make_unique<SemiExplicitEuler2Integrator>(system);
   }
 
@@ -454,13 +458,8 @@ struct Simulator::Impl {
     State s = default_state;
     s.setTime(0);
     setEquilibrium(s);
-    auto integ = makeIntegrator();
-    integ->setAccuracy(opt.accuracy);
-    integ->setReturnEveryInternalStep(true);
-    integ->setInternalStepLimit(0);
-    integ->setMaximumStepSize(opt.max_step_s);
-    integ->initialize(s);
-    record(integ->getState(), knots, times);
+    const std::string& method = opt.integrator;
+    const double accuracy = opt.accuracy;
     // Segments with their step bound.
     std::vector<std::pair<double, double>> segs;  // (end time, max step)
     double t = 0;
@@ -470,30 +469,78 @@ struct Simulator::Impl {
       t = w.hi;
     }
     if (t < sc.duration_s) segs.push_back({sc.duration_s, opt.max_step_s});
-    try {
-      for (const auto& [t_end, hmax] : segs) {
-        integ->setMaximumStepSize(hmax);
-        while (integ->getTime() < t_end - 1e-12) {
-          const auto status = integ->stepTo(t_end, t_end);
-          if (integ->isSimulationOver() && integ->getTerminationReason() == Integrator::AnUnrecoverableErrorOccurred)
-            throw std::runtime_error("integrator failed");
-          if (status == Integrator::TimeHasAdvanced || status == Integrator::ReachedScheduledEvent ||
-              status == Integrator::ReachedReportTime) {
-            const State& st = integ->getState();
-            if (st.getTime() > times.back()) record(st, knots, times);
-          }
-          if (integ->getNumStepsTaken() > opt.max_internal_steps)
-            throw std::runtime_error("more than " + std::to_string(opt.max_internal_steps) + " integrator steps");
-          for (double v : knots.back())
-            if (!std::isfinite(v)) throw std::runtime_error("state became non-finite at t = " + std::to_string(integ->getTime()) + " s");
+    // A rough section that starts at a known time: the integrator lands on a knot just before it,
+    // so nothing before that knot depends on the rough road (every road of one theta shares the
+    // smooth part bit for bit).
+    if (sc.road.type == RoadSpec::Type::Iso && sc.road.smooth_until_s > 0) {
+      const double tb = sc.road.smooth_until_s - opt.obstacle_margin_before_s;
+      for (std::size_t i = 0; i < segs.size(); ++i) {
+        const double lo = i == 0 ? 0.0 : segs[i - 1].first;
+        if (tb > lo + 1e-9 && tb < segs[i].first - 1e-9) {
+          segs.insert(segs.begin() + static_cast<long>(i), {tb, segs[i].second});
+          break;
         }
       }
-    } catch (const std::exception& e) {
-      res.stats.ok = false;
-      res.stats.message = std::string("simulation failed: ") + e.what();
     }
-    res.stats.steps = integ->getNumStepsTaken();
-    res.stats.steps_attempted = integ->getNumStepsAttempted();
+    auto checkFinite = [&](double time) {
+      for (double v : knots.back())
+        if (!std::isfinite(v)) throw std::runtime_error("state became non-finite at t = " + std::to_string(time) + " s");
+    };
+    if (method == "rosenbrock") {
+      RosenbrockOptions ro;
+      ro.accuracy = accuracy;
+      ro.max_step_s = opt.max_step_s;
+      ro.max_steps = opt.max_internal_steps;
+      RosenbrockIntegrator integ(system, ro);
+      integ.initialize(s);
+      record(integ.getState(), knots, times);
+      try {
+        for (const auto& [t_end, hmax] : segs) {
+          integ.setMaximumStepSize(hmax);
+          while (integ.getTime() < t_end - 1e-12) {
+            integ.step(t_end);
+            record(integ.getState(), knots, times);
+            checkFinite(integ.getTime());
+          }
+        }
+      } catch (const std::exception& e) {
+        res.stats.ok = false;
+        res.stats.message = std::string("simulation failed: ") + e.what();
+      }
+      res.stats.steps = integ.steps();
+      res.stats.steps_attempted = integ.attempts();
+    } else {
+      auto integ = makeIntegrator(method);
+      integ->setAccuracy(accuracy);
+      integ->setReturnEveryInternalStep(true);
+      integ->setInternalStepLimit(0);
+      integ->setMaximumStepSize(opt.max_step_s);
+      integ->initialize(s);
+      record(integ->getState(), knots, times);
+      try {
+        for (const auto& [t_end, hmax] : segs) {
+          integ->setMaximumStepSize(hmax);
+          while (integ->getTime() < t_end - 1e-12) {
+            const auto status = integ->stepTo(t_end, t_end);
+            if (integ->isSimulationOver() && integ->getTerminationReason() == Integrator::AnUnrecoverableErrorOccurred)
+              throw std::runtime_error("integrator failed");
+            if (status == Integrator::TimeHasAdvanced || status == Integrator::ReachedScheduledEvent ||
+                status == Integrator::ReachedReportTime) {
+              const State& st = integ->getState();
+              if (st.getTime() > times.back()) record(st, knots, times);
+            }
+            if (integ->getNumStepsTaken() > opt.max_internal_steps)
+              throw std::runtime_error("more than " + std::to_string(opt.max_internal_steps) + " integrator steps");
+            checkFinite(integ->getTime());
+          }
+        }
+      } catch (const std::exception& e) {
+        res.stats.ok = false;
+        res.stats.message = std::string("simulation failed: ") + e.what();
+      }
+      res.stats.steps = integ->getNumStepsTaken();
+      res.stats.steps_attempted = integ->getNumStepsAttempted();
+    }
     res.stats.knots = static_cast<long>(knots.size());
     res.stats.sim_s = times.back();
     makeOutput(knots, times, sc, res.trace);

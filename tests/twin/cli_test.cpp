@@ -44,7 +44,7 @@ TEST(Cli, SimulateWritesTraceAndSidecar) {
   EXPECT_TRUE(j["stats"]["ok"].get<bool>());
   EXPECT_GT(j["stats"]["wall_s"].get<double>(), 0.0);
   EXPECT_TRUE(j.contains("program"));
-  EXPECT_EQ(j["simulation"]["integrator"], "rk-merson");
+  EXPECT_EQ(j["simulation"]["integrator"], "rosenbrock");
 }
 
 TEST(Cli, BadInputsExitTwoWithOneLine) {

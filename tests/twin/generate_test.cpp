@@ -260,8 +260,9 @@ TEST(GenerateField, SmoothPartIsCommonAndNoiseHasTheStudyVariance) {
   const FieldResult clean = generateField(demo(), demo().assemblies().front(), opt);
   const FieldData& c = clean.data;
   ASSERT_EQ(c.columnCount(), 15001u);
-  // The road is flat until the front axle reaches it at 6 s. A 1 ms output sample interpolates
-  // between integrator knots (max step 20 ms), so samples up to 5.98 s are bit-identical.
+  // The road is flat until the front axle reaches it at 6 s. The integrator lands on a knot at
+  // 6 s - obstacle_margin_before_s (5.98 s) and never evaluates beyond it before, so samples up
+  // to 5.98 s are bit-identical.
   for (std::size_t k = 0; k <= 5980; ++k) ASSERT_EQ(c.at(0, k), c.at(1, k)) << "t = " << c.times_s[k];
   double diff = 0;
   for (std::size_t k = 6500; k < c.columnCount(); ++k) diff = std::max(diff, std::abs(c.at(0, k) - c.at(1, k)));

@@ -1,0 +1,515 @@
+#include "calibration/calibrate.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <sstream>
+
+#include "calibration/design_journal.hpp"
+#include "calibration/lhs.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/parallel.hpp"
+#include "twin/provenance.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin::calib {
+
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+// ------------------------------------------------------------------ LabObjective
+struct LabObjective::Pool {
+  std::shared_ptr<const Model> model;
+  SimulationOptions options;
+  std::mutex m;
+  std::vector<std::unique_ptr<Simulator>> free;
+  std::atomic<long> failures{0}, evaluations{0};
+  std::vector<double> walls;
+  std::string first_failure;
+
+  std::unique_ptr<Simulator> acquire() {
+    {
+      std::lock_guard<std::mutex> lock(m);
+      if (!free.empty()) {
+        auto s = std::move(free.back());
+        free.pop_back();
+        return s;
+      }
+    }
+    return std::make_unique<Simulator>(model, options);
+  }
+  void release(std::unique_ptr<Simulator> s, double wall) {
+    std::lock_guard<std::mutex> lock(m);
+    free.push_back(std::move(s));
+    walls.push_back(wall);
+  }
+};
+
+LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, const LabData& data,
+                           const std::string& scenario, const std::vector<EffectSetting>& extra_effects)
+    : pool_(std::make_unique<Pool>()) {
+  model_ = study.makeModel(assembly, extra_effects);
+  scenario_ = study.scenario(scenario);
+  road_ = makeRoad(scenario_, model_->vehicle(), study.seed);
+  if (study.calibrated.empty()) throw InputError(study.path + ": calibrated", "the study names no calibrated parameters");
+  for (const auto& c : study.calibrated) {
+    const int slot = model_->slot(c.name);
+    if (slot < 0)
+      throw InputError(study.path + ": calibrated", "'" + c.name + "' is not a parameter of assembly " + assembly.id + " (" +
+                                                        assembly.label() + ")");
+    names_.push_back(c.name);
+    lower_.push_back(c.lower);
+    upper_.push_back(c.upper);
+    slots_.push_back(slot);
+  }
+  base_values_ = model_->defaultRunValues();
+  const auto channels = Simulator::channels();
+  const double rate = study.simulation.output_rate_hz;
+  double t_max = 0.0;
+  for (std::size_t i = 0; i < data.records.size(); ++i) {
+    const LabRecord& r = data.records[i];
+    int col = -1;
+    for (std::size_t c = 0; c < channels.size(); ++c)
+      if (channels[c].name == r.channel) col = static_cast<int>(c);
+    if (col < 0) throw InputError("lab data record " + std::to_string(i + 1), "unknown channel '" + r.channel + "'");
+    if (!(r.time_s >= 0.0 && r.time_s <= scenario_.duration_s))
+      throw InputError("lab data record " + std::to_string(i + 1),
+                       "time_s " + formatExact(r.time_s) + " lies outside scenario '" + scenario_.name + "' (0.." +
+                           formatExact(scenario_.duration_s) + " s)");
+    const double row = std::round(r.time_s * rate);
+    if (std::abs(row - r.time_s * rate) > 1e-6)
+      throw InputError("lab data record " + std::to_string(i + 1),
+                       "time_s " + formatExact(r.time_s) + " is not on the " + formatExact(rate) +
+                           " Hz output grid of the simulation (set [simulation] output_rate_hz to match the data)");
+    y_.push_back(r.value);
+    where_.push_back({col, static_cast<std::size_t>(row)});
+    t_max = std::max(t_max, r.time_s);
+  }
+  if (y_.empty()) throw InputError("lab data", "holds no records");
+  // Nothing after the last measured time matters: stop the simulation shortly after it (the
+  // step sequence before that point does not depend on where the run ends).
+  scenario_.duration_s = std::min(scenario_.duration_s, t_max + 0.05);
+  pool_->model = model_;
+  pool_->options = study.simulation;
+}
+
+LabObjective::~LabObjective() = default;
+
+std::vector<double> LabObjective::predict(const std::vector<double>& theta) const {
+  DTWIN_CHECK(theta.size() == slots_.size(), "theta has the wrong size");
+  std::vector<double> values = base_values_;
+  for (std::size_t j = 0; j < slots_.size(); ++j) values[static_cast<std::size_t>(slots_[j])] = theta[j];
+  pool_->evaluations++;
+  auto sim = pool_->acquire();
+  RunResult r;
+  try {
+    r = sim->run(values, *road_, scenario_);
+  } catch (const InputError& e) {
+    // A combination of in-bound values the laws reject (e.g. PAC2002 with an impossible shape):
+    // a failed point, not a failed calibration.
+    r.stats.ok = false;
+    r.stats.message = e.what();
+  }
+  pool_->release(std::move(sim), r.stats.wall_s);
+  if (!r.stats.ok) {
+    pool_->failures++;
+    std::lock_guard<std::mutex> lock(pool_->m);
+    if (pool_->first_failure.empty()) pool_->first_failure = r.stats.message;
+    return {};
+  }
+  std::vector<double> eta(y_.size());
+  for (std::size_t i = 0; i < y_.size(); ++i) {
+    const auto& col = r.trace.column(static_cast<std::size_t>(where_[i].first));
+    if (where_[i].second >= col.size()) return {};
+    eta[i] = col[where_[i].second];
+  }
+  return eta;
+}
+
+double LabObjective::sse(const std::vector<double>& theta) const {
+  const auto eta = predict(theta);
+  if (eta.empty()) return std::numeric_limits<double>::infinity();
+  double s = 0.0;
+  for (std::size_t i = 0; i < y_.size(); ++i) s += (y_[i] - eta[i]) * (y_[i] - eta[i]);
+  return std::isfinite(s) ? s : std::numeric_limits<double>::infinity();
+}
+
+long LabObjective::failures() const { return pool_->failures.load(); }
+long LabObjective::evaluations() const { return pool_->evaluations.load(); }
+double LabObjective::medianWallSeconds() const {
+  std::lock_guard<std::mutex> lock(pool_->m);
+  if (pool_->walls.empty()) return 0.0;
+  std::vector<double> w = pool_->walls;
+  std::nth_element(w.begin(), w.begin() + static_cast<long>(w.size() / 2), w.end());
+  return w[w.size() / 2];
+}
+
+// ------------------------------------------------------------------ options
+void CalibrationOptions::validate() const {
+  if (optimizer_starts < 1) throw InputError("optimizer_starts", "must be >= 1, got " + std::to_string(optimizer_starts));
+  if (lhs_points < 2) throw InputError("lhs_points", "must be >= 2, got " + std::to_string(lhs_points));
+  if (gibbs_iterations < 1) throw InputError("gibbs_iterations", "must be >= 1, got " + std::to_string(gibbs_iterations));
+  if (gibbs_burn_in < 0 || gibbs_burn_in >= gibbs_iterations)
+    throw InputError("gibbs_burn_in", "must be in [0, gibbs_iterations), got " + std::to_string(gibbs_burn_in));
+  if (!(tau_prior_a >= 0 && tau_prior_b >= 0)) throw InputError("tau prior", "a and b must be >= 0");
+  optimizer.validate();
+  box.validate();
+}
+
+nlohmann::json CalibrationOptions::toJson() const {
+  return {{"optimizer_starts", optimizer_starts},
+          {"lhs_points", lhs_points},
+          {"gibbs_iterations", gibbs_iterations},
+          {"gibbs_burn_in", gibbs_burn_in},
+          {"tau_prior", {{"distribution", "Gamma(shape a, rate b)"}, {"a", tau_prior_a}, {"b", tau_prior_b}}},
+          {"theta_prior", "uniform on the feasible box"},
+          {"seed", seed},
+          {"optimizer",
+           {{"algorithm", optimizer.algorithm},
+            {"xtol_rel", optimizer.xtol_rel},
+            {"ftol_rel", optimizer.ftol_rel},
+            {"maxeval", optimizer.maxeval},
+            {"initial_step_scaled", optimizer.initial_step}}},
+          {"feasible_box",
+           {{"rule", "SSE <= SSE_min (1 + 2 ln(100) / n): likelihood ratio 1 %"},
+            {"initial_step_scaled", box.initial_step},
+            {"growth", box.growth},
+            {"tolerance_scaled", box.tolerance},
+            {"max_evaluations_per_sweep", box.max_evaluations}}}};
+}
+
+// ------------------------------------------------------------------ persistence helpers
+namespace {
+
+nlohmann::json num(double v) {
+  if (std::isfinite(v)) return v;
+  return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
+}
+double fromNum(const nlohmann::json& j) {
+  if (j.is_number()) return j.get<double>();
+  const std::string s = j.get<std::string>();
+  if (s == "inf") return std::numeric_limits<double>::infinity();
+  if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  return std::numeric_limits<double>::quiet_NaN();
+}
+nlohmann::json vec(const std::vector<double>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (double x : v) a.push_back(num(x));
+  return a;
+}
+std::vector<double> fromVec(const nlohmann::json& j) {
+  std::vector<double> v;
+  for (auto& x : j) v.push_back(fromNum(x));
+  return v;
+}
+
+nlohmann::json optimumJson(const Optimum& o) {
+  nlohmann::json j{{"theta", vec(o.theta)}, {"sse", num(o.sse)}, {"best_start", o.best_start}, {"evaluations", o.evaluations}};
+  for (const auto& s : o.starts)
+    j["starts"].push_back({{"start", vec(s.start)},
+                           {"theta", vec(s.theta)},
+                           {"sse", num(s.sse)},
+                           {"evaluations", s.evaluations},
+                           {"nonfinite_evaluations", s.nonfinite_evaluations},
+                           {"status", s.status}});
+  return j;
+}
+Optimum optimumFrom(const nlohmann::json& j) {
+  Optimum o;
+  o.theta = fromVec(j.at("theta"));
+  o.sse = fromNum(j.at("sse"));
+  o.best_start = j.at("best_start").get<int>();
+  o.evaluations = j.at("evaluations").get<int>();
+  for (auto& s : j.at("starts")) {
+    StartResult r;
+    r.start = fromVec(s.at("start"));
+    r.theta = fromVec(s.at("theta"));
+    r.sse = fromNum(s.at("sse"));
+    r.evaluations = s.at("evaluations").get<int>();
+    r.nonfinite_evaluations = s.at("nonfinite_evaluations").get<int>();
+    r.status = s.at("status").get<std::string>();
+    o.starts.push_back(r);
+  }
+  return o;
+}
+
+nlohmann::json boxJson(const FeasibleBox& b) {
+  nlohmann::json j{{"lower", vec(b.lower)}, {"upper", vec(b.upper)}, {"threshold", num(b.threshold)}, {"evaluations", b.evaluations}};
+  j["lower_clipped"] = b.lower_clipped;
+  j["upper_clipped"] = b.upper_clipped;
+  for (const auto& s : b.sweeps)
+    j["sweeps"].push_back({{"parameter", s.parameter},
+                           {"direction", s.direction},
+                           {"edge", num(s.edge)},
+                           {"edge_sse", num(s.edge_sse)},
+                           {"clipped", s.clipped},
+                           {"bracketed", s.bracketed},
+                           {"evaluations", s.evaluations},
+                           {"message", s.message}});
+  return j;
+}
+FeasibleBox boxFrom(const nlohmann::json& j) {
+  FeasibleBox b;
+  b.lower = fromVec(j.at("lower"));
+  b.upper = fromVec(j.at("upper"));
+  b.threshold = fromNum(j.at("threshold"));
+  b.evaluations = j.at("evaluations").get<int>();
+  b.lower_clipped = j.at("lower_clipped").get<std::vector<bool>>();
+  b.upper_clipped = j.at("upper_clipped").get<std::vector<bool>>();
+  for (auto& s : j.at("sweeps")) {
+    SweepResult r;
+    r.parameter = s.at("parameter").get<int>();
+    r.direction = s.at("direction").get<int>();
+    r.edge = fromNum(s.at("edge"));
+    r.edge_sse = fromNum(s.at("edge_sse"));
+    r.clipped = s.at("clipped").get<bool>();
+    r.bracketed = s.at("bracketed").get<bool>();
+    r.evaluations = s.at("evaluations").get<int>();
+    r.message = s.at("message").get<std::string>();
+    b.sweeps.push_back(r);
+  }
+  return b;
+}
+
+/// Reads a stage file when it exists and carries `fingerprint`; null otherwise.
+nlohmann::json readStage(const fs::path& p, const std::string& fingerprint) {
+  if (!fs::exists(p)) return nullptr;
+  std::ifstream in(p);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception&) {
+    return nullptr;  // written atomically, so this is a foreign file: redo the stage
+  }
+  if (!j.contains("fingerprint") || j["fingerprint"] != fingerprint)
+    throw InputError(p.string(), "was made by a different calibration (study, data, assembly or sizes changed); "
+                                 "use a new --out folder or delete it to start over");
+  return j;
+}
+
+std::string hex(std::uint64_t v) {
+  char b[17];
+  std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(v));
+  return b;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ result JSON
+nlohmann::json CalibrationResult::toJson() const {
+  nlohmann::json j;
+  j["assembly"] = assembly;
+  j["label"] = label;
+  j["n_data"] = n_data;
+  j["sse_min"] = num(optimum.sse);
+  j["tau_hat"] = optimum.sse > 0 ? num(n_data / optimum.sse) : num(std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto& p = posterior.parameters[k];
+    nlohmann::json e{{"mean", p.mean},
+                     {"sd", p.sd},
+                     {"ci95", {p.q025, p.q975}},
+                     {"ess", num(p.ess)},
+                     {"optimum", optimum.theta[k]},
+                     {"box", {box.lower[k], box.upper[k]}},
+                     {"box_clipped", {box.lower_clipped[k], box.upper_clipped[k]}}};
+    if (truth[k]) e["truth"] = *truth[k];
+    j["parameters"][names[k]] = e;
+  }
+  j["parameter_order"] = names;
+  j["tau"] = {{"mean", posterior.tau.mean},
+              {"sd", posterior.tau.sd},
+              {"ci95", {posterior.tau.q025, posterior.tau.q975}},
+              {"ess", num(posterior.tau.ess)},
+              {"noise_variance_mean_N2", posterior.tau.mean > 0 ? 1.0 / posterior.tau.mean : 0.0}};
+  j["optimum"] = optimumJson(optimum);
+  j["box"] = boxJson(box);
+  j["design"] = {{"points", design.rows()}, {"failures", design_failures}, {"resumed_points", resumed_points},
+                 {"method", "Latin hypercube in the feasible box, one point per stratum per dimension"}};
+  j["gibbs"] = {{"iterations", chains.options.iterations},
+                {"burn_in", chains.options.burn_in},
+                {"draws", posterior.draws},
+                {"seed", chains.options.seed},
+                {"distinct_points", posterior.distinct_points},
+                {"top_point", posterior.top_point},
+                {"top_share", posterior.top_share},
+                {"design_too_coarse", posterior.design_too_coarse},
+                {"message", posterior.message}};
+  double ess_min = std::numeric_limits<double>::infinity();
+  for (const auto& p : posterior.parameters)
+    if (std::isfinite(p.ess)) ess_min = std::min(ess_min, p.ess);
+  j["effective_sample_size_min"] = num(ess_min);
+  for (const auto& [s, w] : stage_wall_s) j["stages_wall_s"][s] = w;
+  j["median_run_wall_s"] = median_run_wall_s;
+  return j;
+}
+
+// ------------------------------------------------------------------ calibrateAssembly
+CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const LabData& data,
+                                    const std::string& scenario, const CalibrationOptions& options,
+                                    const std::string& out_dir, const std::string& fingerprint_extra,
+                                    const StageProgress& progress) {
+  options.validate();
+  const auto t_all = std::chrono::steady_clock::now();
+  LabObjective objective(study, assembly, data, scenario);
+  const std::size_t d = objective.names().size();
+  const int n = objective.dataCount();
+  fs::create_directories(out_dir);
+  auto report = [&](const std::string& stage, std::size_t done, std::size_t total) {
+    if (progress) progress(stage, done, total);
+  };
+
+  CalibrationResult res;
+  res.assembly = assembly.id;
+  res.label = assembly.label();
+  res.names = objective.names();
+  for (const auto& c : study.calibrated) res.truth.push_back(c.truth);
+  res.n_data = n;
+
+  // The resume fingerprint: everything that changes the numbers.
+  nlohmann::json fp{{"assembly", assembly.id},
+                    {"label", assembly.label()},
+                    {"names", objective.names()},
+                    {"lower", objective.lower()},
+                    {"upper", objective.upper()},
+                    {"scenario", objective.scenario().toJson()},
+                    {"simulation", study.simulation.toJson()},
+                    {"options", options.toJson()},
+                    {"data", fingerprint_extra}};
+  const std::string fingerprint = hex(fnv1a64(fp.dump()));
+  const ParallelFor pfor = [&](int count, const std::function<void(int)>& task) {
+    parallelFor(static_cast<std::size_t>(count), options.threads, [&](std::size_t i, int) { task(static_cast<int>(i)); });
+  };
+  const SseFunction sse = [&](const std::vector<double>& th) { return objective.sse(th); };
+
+  // Stage 1: optimum.
+  auto t0 = std::chrono::steady_clock::now();
+  const fs::path opt_path = fs::path(out_dir) / "optimum.json";
+  if (auto j = readStage(opt_path, fingerprint); !j.is_null()) {
+    res.optimum = optimumFrom(j.at("optimum"));
+  } else {
+    report("optimum", 0, static_cast<std::size_t>(options.optimizer_starts));
+    std::atomic<std::size_t> starts_done{0};
+    const ParallelFor counted = [&](int count, const std::function<void(int)>& task) {
+      pfor(count, [&](int i) {
+        task(i);
+        report("optimum", ++starts_done, static_cast<std::size_t>(count));
+      });
+    };
+    res.optimum = minimiseSse(sse, objective.lower(), objective.upper(), options.optimizer_starts, options.seed,
+                              options.optimizer, counted);
+    writeFileAtomic(opt_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"optimum", optimumJson(res.optimum)}}.dump(2) + "\n");
+  }
+  if (!std::isfinite(res.optimum.sse))
+    throw std::runtime_error("assembly " + assembly.id + ": every simulation of the optimiser failed; no calibration possible");
+  res.stage_wall_s.push_back({"optimum", secondsSince(t0)});
+
+  // Stage 2: feasible box.
+  t0 = std::chrono::steady_clock::now();
+  const fs::path box_path = fs::path(out_dir) / "box.json";
+  if (auto j = readStage(box_path, fingerprint); !j.is_null()) {
+    res.box = boxFrom(j.at("box"));
+  } else {
+    BoxProblem bp;
+    bp.theta_hat = res.optimum.theta;
+    bp.sse_min = res.optimum.sse;
+    bp.n_data = n;
+    bp.lower = objective.lower();
+    bp.upper = objective.upper();
+    std::atomic<std::size_t> sweeps_done{0};
+    const ParallelFor counted = [&](int count, const std::function<void(int)>& task) {
+      pfor(count, [&](int i) {
+        task(i);
+        report("box", ++sweeps_done, static_cast<std::size_t>(count));
+      });
+    };
+    res.box = calcFeasibleBox(sse, bp, options.box, counted);
+    writeFileAtomic(box_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"box", boxJson(res.box)}}.dump(2) + "\n");
+  }
+  res.stage_wall_s.push_back({"box", secondsSince(t0)});
+
+  // Stage 3: design, journalled point by point.
+  t0 = std::chrono::steady_clock::now();
+  const int N = options.lhs_points;
+  res.design = latinHypercube(N, res.box.lower, res.box.upper, options.seed);
+  res.sse.assign(static_cast<std::size_t>(N), std::numeric_limits<double>::quiet_NaN());
+  {
+    DesignJournal journal((fs::path(out_dir) / "design_journal.csv").string(), static_cast<int>(d), fingerprint);
+    for (const auto& e : journal.resumed()) {
+      if (e.index < 0 || e.index >= N)
+        throw InputError(journal.path(), "design index " + std::to_string(e.index) + " outside 0.." + std::to_string(N - 1));
+      for (std::size_t k = 0; k < d; ++k)
+        if (e.theta[k] != res.design(e.index, static_cast<long>(k)))
+          throw InputError(journal.path(), "design point " + std::to_string(e.index) + " differs from this calibration's design");
+      res.sse[static_cast<std::size_t>(e.index)] = e.sse;
+    }
+    std::vector<int> todo;
+    for (int i = 0; i < N; ++i)
+      if (std::isnan(res.sse[static_cast<std::size_t>(i)])) todo.push_back(i);
+    res.resumed_points = N - static_cast<long>(todo.size());
+    std::atomic<std::size_t> done{static_cast<std::size_t>(res.resumed_points)};
+    report("design", done, static_cast<std::size_t>(N));
+    parallelFor(todo.size(), options.threads, [&](std::size_t t, int) {
+      const int i = todo[t];
+      std::vector<double> th(d);
+      for (std::size_t k = 0; k < d; ++k) th[k] = res.design(i, static_cast<long>(k));
+      const double s = objective.sse(th);
+      res.sse[static_cast<std::size_t>(i)] = s;
+      journal.append(i, th, s);
+      report("design", ++done, static_cast<std::size_t>(N));
+    });
+  }
+  for (double s : res.sse) res.design_failures += std::isfinite(s) ? 0 : 1;
+  writeDesignTableCsv((fs::path(out_dir) / "design.csv").string(), res.names, res.design, res.sse);
+  res.stage_wall_s.push_back({"design", secondsSince(t0)});
+
+  // Stage 4: two-block Griddy Gibbs (cheap, deterministic from the seed: never persisted
+  // half-way, always rerun).
+  t0 = std::chrono::steady_clock::now();
+  report("gibbs", 0, 1);
+  GibbsOptions go;
+  go.iterations = options.gibbs_iterations;
+  go.burn_in = options.gibbs_burn_in;
+  go.a = options.tau_prior_a;
+  go.b = options.tau_prior_b;
+  go.seed = options.seed;
+  res.chains = runGriddyGibbs(res.sse, n, go);
+  res.posterior = summarisePosterior(res.design, res.chains, res.names);
+  report("gibbs", 1, 1);
+  {
+    std::string csv;
+    for (const auto& nm : res.names) csv += nm + ",";
+    csv += "tau,design_index\n";
+    char buf[64];
+    for (std::size_t t = 0; t < res.chains.index.size(); ++t) {
+      const int k = res.chains.index[t];
+      for (std::size_t c = 0; c < d; ++c) csv += formatExact(res.design(k, static_cast<long>(c))) + ",";
+      csv += formatExact(res.chains.tau[t]);
+      std::snprintf(buf, sizeof buf, ",%d\n", k);
+      csv += buf;
+    }
+    writeFileAtomic((fs::path(out_dir) / "posterior.csv").string(), csv);
+  }
+  res.stage_wall_s.push_back({"gibbs", secondsSince(t0)});
+  res.stage_wall_s.push_back({"total", secondsSince(t_all)});
+  res.median_run_wall_s = objective.medianWallSeconds();
+  return res;
+}
+
+}  // namespace dtwin::calib

@@ -1,0 +1,219 @@
+#include "calibration/feasible_box.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <sstream>
+
+#include "subsystems/errors.hpp"
+
+namespace dtwin::calib {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+void FeasibleBoxOptions::validate() const {
+  const std::string where = "feasible box options";
+  if (!(initial_step > 0.0 && initial_step <= 1.0))
+    throw InputError(where, "initial_step must be in (0, 1] (scaled units), got " +
+                                fmt(initial_step));
+  if (!(growth > 1.0 && std::isfinite(growth)))
+    throw InputError(where, "growth must be > 1, got " + fmt(growth));
+  if (!(tolerance > 0.0 && tolerance < 1.0))
+    throw InputError(where, "tolerance must be in (0, 1) (scaled units), got " + fmt(tolerance));
+  if (max_evaluations < 1)
+    throw InputError(where, "max_evaluations must be >= 1, got " + std::to_string(max_evaluations));
+}
+
+double BoxProblem::threshold() const { return sse_min * (1.0 + 2.0 * std::log(100.0) / n_data); }
+
+void BoxProblem::validate() const {
+  const std::string where = "feasible box";
+  checkBounds(lower, upper, where);
+  if (theta_hat.size() != lower.size())
+    throw InputError(where, "theta_hat has " + std::to_string(theta_hat.size()) +
+                                " values, the bounds have " + std::to_string(lower.size()));
+  for (std::size_t j = 0; j < theta_hat.size(); ++j)
+    if (!(theta_hat[j] >= lower[j] && theta_hat[j] <= upper[j]))
+      throw InputError(where, "theta_hat[" + std::to_string(j) + "] = " + fmt(theta_hat[j]) +
+                                  " is outside [" + fmt(lower[j]) + ", " + fmt(upper[j]) + "]");
+  if (n_data < 1)
+    throw InputError(where, "number of data points n must be >= 1, got " + std::to_string(n_data));
+  if (!std::isfinite(sse_min) || sse_min < 0.0)
+    throw InputError(where, "SSE_min must be finite and >= 0, got " + fmt(sse_min));
+  if (sse_min == 0.0)
+    throw InputError(where,
+                     "SSE_min is 0 (the model fits the data exactly, e.g. noise-free data): "
+                     "tau_hat = n/SSE_min is infinite and the 1 % likelihood-ratio contour is the "
+                     "single point theta_hat, so no box can be derived from it");
+}
+
+SweepResult calcBoxSweep(const SseFunction& sse, const BoxProblem& problem, int index,
+                         const FeasibleBoxOptions& options) {
+  problem.validate();
+  options.validate();
+  const int d = static_cast<int>(problem.theta_hat.size());
+  if (index < 0 || index >= 2 * d)
+    throw InputError("feasible box", "sweep index must be in [0, " + std::to_string(2 * d) +
+                                         "), got " + std::to_string(index));
+  const auto j = static_cast<std::size_t>(index / 2);
+  const int dir = (index % 2 == 0) ? -1 : +1;
+  const double lo = problem.lower[j], hi = problem.upper[j], range = hi - lo;
+  const double bound = dir < 0 ? lo : hi;
+  const double T = problem.threshold();
+  const double z0 = (problem.theta_hat[j] - lo) / range;
+  const double to_bound = dir < 0 ? z0 : 1.0 - z0;  // scaled distance from θ̂ to the bound
+
+  SweepResult r;
+  r.parameter = static_cast<int>(j);
+  r.direction = dir;
+
+  std::vector<double> theta = problem.theta_hat;
+  // Physical point at scaled distance t from θ̂ in direction dir (exact bound at t = to_bound).
+  auto at = [&](double t) {
+    return t >= to_bound ? bound : std::clamp(lo + (z0 + dir * t) * range, lo, hi);
+  };
+  auto eval = [&](double t) {
+    theta[j] = at(t);
+    ++r.evaluations;
+    const double f = sse(theta);
+    return std::isfinite(f) ? f : std::numeric_limits<double>::infinity();
+  };
+
+  if (to_bound <= 0.0) {
+    r.edge = bound;
+    r.edge_sse = problem.sse_min;
+    r.clipped = true;
+    return r;
+  }
+
+  // 1. Geometric stepping until outside or at the bound.
+  double inside = 0.0, inside_sse = problem.sse_min;
+  double outside = 0.0, outside_sse = 0.0;
+  double h = options.initial_step;
+  for (;;) {
+    if (r.evaluations >= options.max_evaluations) {
+      r.edge = at(inside);
+      r.edge_sse = inside_sse;
+      std::ostringstream os;
+      os << "parameter " << j << (dir < 0 ? " lower" : " upper") << " edge: the 1 % contour was "
+         << "not bracketed within " << options.max_evaluations
+         << " evaluations; the box edge is the farthest point known inside, so the box may be "
+            "too small here";
+      r.message = os.str();
+      return r;
+    }
+    const bool at_bound = h >= to_bound;
+    const double t = at_bound ? to_bound : h;
+    const double f = eval(t);
+    if (f <= T) {
+      inside = t;
+      inside_sse = f;
+      if (at_bound) {
+        r.edge = bound;
+        r.edge_sse = f;
+        r.clipped = true;
+        return r;
+      }
+      h *= options.growth;
+    } else {
+      outside = t;
+      outside_sse = f;
+      break;
+    }
+  }
+
+  // 2. Bisection of [inside, outside].
+  r.bracketed = true;
+  while (outside - inside > options.tolerance && r.evaluations < options.max_evaluations) {
+    const double mid = 0.5 * (inside + outside);
+    const double f = eval(mid);
+    if (f <= T) {
+      inside = mid;
+    } else {
+      outside = mid;
+      outside_sse = f;
+    }
+  }
+  if (outside - inside > options.tolerance) {
+    std::ostringstream os;
+    os << "parameter " << j << (dir < 0 ? " lower" : " upper")
+       << " edge: bisection stopped by max_evaluations at a bracket of " << (outside - inside)
+       << " (scaled), wider than the tolerance " << options.tolerance;
+    r.message = os.str();
+  }
+  r.edge = at(outside);
+  r.edge_sse = outside_sse;
+  return r;
+}
+
+FeasibleBox calcFeasibleBox(const SseFunction& sse, const BoxProblem& problem,
+                            const FeasibleBoxOptions& options, const ParallelFor& parallel_for) {
+  problem.validate();
+  options.validate();
+  const int d = static_cast<int>(problem.theta_hat.size());
+  const int count = 2 * d;
+  std::vector<SweepResult> sweeps(static_cast<std::size_t>(count));
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(count));
+  std::vector<char> done(static_cast<std::size_t>(count), 0);
+  const ParallelFor& run = parallel_for ? parallel_for : ParallelFor(sequentialFor);
+  run(count, [&](int i) {
+    DTWIN_CHECK(i >= 0 && i < count, "parallel_for called a task index out of range");
+    const auto k = static_cast<std::size_t>(i);
+    try {
+      sweeps[k] = calcBoxSweep(sse, problem, i, options);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+    done[k] = 1;
+  });
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+
+  FeasibleBox box;
+  box.threshold = problem.threshold();
+  box.lower.resize(static_cast<std::size_t>(d));
+  box.upper.resize(static_cast<std::size_t>(d));
+  box.lower_clipped.resize(static_cast<std::size_t>(d));
+  box.upper_clipped.resize(static_cast<std::size_t>(d));
+  for (int i = 0; i < count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    DTWIN_CHECK(done[k], "parallel_for did not run every sweep");
+    const SweepResult& s = sweeps[k];
+    const auto j = static_cast<std::size_t>(s.parameter);
+    (s.direction < 0 ? box.lower : box.upper)[j] = s.edge;
+    (s.direction < 0 ? box.lower_clipped : box.upper_clipped)[j] = s.clipped;
+    box.evaluations += s.evaluations;
+  }
+  box.sweeps = std::move(sweeps);
+  return box;
+}
+
+bool FeasibleBox::complete() const {
+  return std::all_of(sweeps.begin(), sweeps.end(),
+                     [](const SweepResult& s) { return s.bracketed || s.clipped; });
+}
+
+std::string FeasibleBox::briefReport() const {
+  std::ostringstream os;
+  os.precision(6);
+  os << "feasible box (SSE <= " << threshold << "): ";
+  for (std::size_t j = 0; j < lower.size(); ++j) {
+    os << (j ? ", " : "") << (lower_clipped[j] ? "[*" : "[") << lower[j] << ", " << upper[j]
+       << (upper_clipped[j] ? "*]" : "]");
+  }
+  os << " (* = at the calibration bound; " << evaluations << " evaluations)";
+  for (const auto& s : sweeps)
+    if (!s.message.empty()) os << "\n  warning: " << s.message;
+  return os.str();
+}
+
+}  // namespace dtwin::calib

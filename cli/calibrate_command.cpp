@@ -1,0 +1,134 @@
+// `twin calibrate`: Griddy Gibbs calibration of one or every assembly against a lab data file.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "calibration/calibrate.hpp"
+#include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/measurement.hpp"
+#include "twin/provenance.hpp"
+#include "twin/study.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin::cli {
+namespace {
+
+struct CalibrateConfig {
+  std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out;
+  int threads = 0;
+  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
+  long long seed = -1;
+  bool quiet = false;
+};
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
+  const Study study = loadStudy(cfg.study);
+  study.scenario(cfg.scenario);  // validates the name
+  if (!fs::exists(cfg.data)) throw InputError(cfg.data, "lab data file not found (--data)");
+  const LabData data = readLabCsv(cfg.data);
+  std::vector<AssemblySpec> targets;
+  if (cfg.assembly == "all") targets = study.assemblies();
+  else targets.push_back(study.assembly(cfg.assembly));
+  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
+
+  calib::CalibrationOptions opt;
+  opt.threads = cfg.threads;
+  opt.lhs_points = static_cast<int>(cfg.lhs_points > 0 ? cfg.lhs_points : study.sizes.at("lhs_points"));
+  opt.gibbs_iterations = static_cast<int>(cfg.iterations > 0 ? cfg.iterations : study.sizes.at("gibbs_iterations"));
+  opt.gibbs_burn_in = static_cast<int>(cfg.burn_in >= 0 ? cfg.burn_in : study.sizes.at("gibbs_burn_in"));
+  opt.optimizer_starts = static_cast<int>(cfg.starts > 0 ? cfg.starts : study.sizes.at("optimizer_starts"));
+  opt.seed = cfg.seed >= 0 ? static_cast<std::uint64_t>(cfg.seed) : study.seed;
+  if (opt.gibbs_burn_in >= opt.gibbs_iterations)
+    throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(opt.gibbs_iterations) + ")");
+  opt.validate();
+  const std::string data_hash = std::to_string(calib::fnv1a64(fileBytes(cfg.data)));
+
+  const bool bar_on = !cfg.quiet && stderrIsTerminal();
+  if (!cfg.quiet)
+    std::printf("calibrating %zu assembl%s against %s (%zu records): %d starts, %d design points, %d Gibbs iterations (%d burn-in)\n",
+                targets.size(), targets.size() == 1 ? "y" : "ies", cfg.data.c_str(), data.records.size(),
+                opt.optimizer_starts, opt.lhs_points, opt.gibbs_iterations, opt.gibbs_burn_in);
+  nlohmann::json index;
+  index["program"] = programInfo();
+  index["command"] = command;
+  index["created_utc"] = utcNow();
+  index["study"] = study.path;
+  index["data"] = cfg.data;
+  for (const auto& a : targets) {
+    ProgressBar bar(a.id, bar_on);
+    std::string current;
+    auto progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
+      if (stage != current) {
+        current = stage;
+        bar.restart(a.id + " " + stage);
+      }
+      bar.update(done, total);
+    };
+    const std::string dir = (fs::path(cfg.out) / a.id).string();
+    const calib::CalibrationResult r = calibrateAssembly(study, a, data, cfg.scenario, opt, dir, data_hash, progress);
+    bar.finish();
+    nlohmann::json j = r.toJson();
+    j["program"] = programInfo();
+    j["command"] = command;
+    j["created_utc"] = utcNow();
+    j["study"] = study.path;
+    j["scenario"] = cfg.scenario;
+    j["data"] = {{"path", cfg.data}, {"records", data.records.size()}, {"fnv1a64", data_hash}};
+    j["options"] = opt.toJson();
+    j["threads"] = cfg.threads;
+    writeFileAtomic((fs::path(dir) / "summary.json").string(), j.dump(2) + "\n");
+    index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
+    if (!cfg.quiet) {
+      std::printf("%-4s %-26s SSE_min %.4g  tau %.3g (noise var %.0f N^2)  distinct points %d  top share %.2f  failures %ld  %.1f s\n",
+                  a.id.c_str(), a.label().c_str(), r.optimum.sse, r.posterior.tau.mean,
+                  r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0, r.posterior.distinct_points, r.posterior.top_share,
+                  r.design_failures, r.stage_wall_s.back().second);
+      for (std::size_t k = 0; k < r.names.size(); ++k) {
+        const auto& p = r.posterior.parameters[k];
+        std::printf("       %-22s mean %-11.5g sd %-10.4g 95%% [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd, p.q025, p.q975,
+                    r.truth[k] ? (" truth " + formatExact(*r.truth[k])).c_str() : "");
+      }
+      if (r.posterior.design_too_coarse) std::printf("       note: %s\n", r.posterior.message.c_str());
+      if (r.design_failures) std::printf("       note: %ld design simulations failed (SSE = inf, weight 0)\n", r.design_failures);
+    }
+  }
+  writeFileAtomic((fs::path(cfg.out) / "calibration.json").string(), index.dump(2) + "\n");
+  return 0;
+}
+
+}  // namespace
+
+CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_line) {
+  auto cfg = std::make_shared<CalibrateConfig>();
+  auto* c = root.add_subcommand("calibrate",
+                                "Calibrate assemblies against lab data: NLopt optimum, feasible box, Latin hypercube design, "
+                                "two-block Griddy Gibbs (resumable: rerun the same command to continue)");
+  c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
+  c->add_option("--data", cfg->data, "Lab data CSV (repetition,time_s,channel,value), e.g. from `twin generate lab`")->required();
+  c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...) or 'all'")->capture_default_str();
+  c->add_option("--scenario", cfg->scenario, "Scenario the lab data was measured on")->capture_default_str();
+  c->add_option("--out", cfg->out, "Output folder; each assembly writes OUT/<id>/")->required();
+  c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+  c->add_option("--lhs-points", cfg->lhs_points, "Design points (default: the study's sizes.lhs_points)")->check(CLI::Range(2L, 10000000L));
+  c->add_option("--iterations", cfg->iterations, "Gibbs iterations incl. burn-in (default: sizes.gibbs_iterations)")
+      ->check(CLI::Range(1L, 100000000L));
+  c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
+  c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
+  c->add_option("--seed", cfg->seed, "Seed of the design and the sampler (default: the study's seed)")->check(CLI::Range(0LL, (1LL << 62)));
+  c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
+  return {c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }};
+}
+
+}  // namespace dtwin::cli

@@ -342,6 +342,13 @@ nlohmann::json CalibrationResult::toJson() const {
   j["box"] = boxJson(box);
   j["design"] = {{"points", design.rows()}, {"failures", design_failures}, {"resumed_points", resumed_points},
                  {"method", "Latin hypercube in the feasible box, one point per stratum per dimension"}};
+  double best = std::numeric_limits<double>::infinity();
+  for (double s : sse) best = std::min(best, s);
+  j["design"]["sse_min"] = num(best);
+  j["design"]["better_than_optimum"] = best < optimum.sse;
+  if (best < optimum.sse)
+    j["warnings"].push_back("a design point has a lower SSE (" + std::to_string(best) + ") than the optimiser's optimum (" +
+                            std::to_string(optimum.sse) + "): the optimiser stopped in a local minimum; more starts may help");
   j["gibbs"] = {{"iterations", chains.options.iterations},
                 {"burn_in", chains.options.burn_in},
                 {"draws", posterior.draws},

@@ -1,12 +1,14 @@
 // The calibration of an assembly against lab data, end to end on the real twin (small sizes).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "calibration/calibrate.hpp"
+#include "subsystems/errors.hpp"
 #include "twin/generate.hpp"
 
 namespace fs = std::filesystem;
@@ -37,4 +39,101 @@ TEST(LabObjective, PredictionsAtTruthEqualNoiseFreeLabValues) {
     const auto row = static_cast<std::size_t>(std::lround(lab.data.records[i].time_s * 1000.0));
     EXPECT_NEAR(eta[i], col[row], 1.0) << "record " << i << " t = " << lab.data.records[i].time_s;
   }
+}
+
+namespace {
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+CalibrationOptions smallOptions(int threads) {
+  CalibrationOptions o;
+  o.threads = threads;
+  o.optimizer_starts = 2;
+  o.optimizer.maxeval = 40;
+  o.box.max_evaluations = 12;
+  o.lhs_points = 12;
+  o.gibbs_iterations = 600;
+  o.gibbs_burn_in = 100;
+  o.seed = 7;
+  return o;
+}
+
+struct Fixture {
+  Study study = loadStudy(kDemo);
+  AssemblySpec assembly = study.assembly("M3");  // Fiala + MacPherson: the cheapest assembly
+  LabData data = generateLab(study, study.assemblies().front()).data;
+};
+}  // namespace
+
+// The same calibration with 1 and 2 threads gives byte-identical posterior and design files.
+TEST(Calibrate, ThreadCountDoesNotChangeResults) {
+  Fixture f;
+  const fs::path dir = fs::temp_directory_path() / "dtwin_calibrate_threads";
+  fs::remove_all(dir);
+  const auto r1 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(1), (dir / "t1").string(), "x");
+  const auto r2 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "t2").string(), "x");
+  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json"})
+    EXPECT_EQ(slurp(dir / "t1" / file), slurp(dir / "t2" / file)) << file;
+  EXPECT_FALSE(slurp(dir / "t1" / "posterior.csv").empty());
+  EXPECT_EQ(r1.posterior.parameters[0].mean, r2.posterior.parameters[0].mean);
+  // The box holds the optimum; a design point better than the optimum is reported.
+  const double best_design = *std::min_element(r1.sse.begin(), r1.sse.end());
+  EXPECT_EQ(r1.toJson()["design"]["better_than_optimum"].get<bool>(), best_design < r1.optimum.sse);
+  for (std::size_t k = 0; k < r1.names.size(); ++k) {
+    EXPECT_LE(r1.box.lower[k], r1.optimum.theta[k]);
+    EXPECT_GE(r1.box.upper[k], r1.optimum.theta[k]);
+  }
+  fs::remove_all(dir);
+}
+
+// A calibration interrupted during the design stage resumes from its journal and ends with the
+// same files as an uninterrupted one; a resume against different inputs is refused.
+TEST(Calibrate, InterruptedDesignResumesToIdenticalResults) {
+  Fixture f;
+  const fs::path dir = fs::temp_directory_path() / "dtwin_calibrate_resume";
+  fs::remove_all(dir);
+  calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "whole").string(), "x");
+  struct Stop {};
+  int seen = 0;
+  auto interrupt = [&](const std::string& stage, std::size_t done, std::size_t) {
+    if (stage == "design" && done >= 5 && ++seen > 0) throw Stop{};
+  };
+  EXPECT_THROW(calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "x", interrupt),
+               Stop);
+  const auto journal = slurp(dir / "cut" / "design_journal.csv");
+  EXPECT_FALSE(fs::exists(dir / "cut" / "posterior.csv"));
+  const auto r = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "x");
+  EXPECT_GE(r.resumed_points, 5);
+  EXPECT_LT(r.resumed_points, 12);
+  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json"})
+    EXPECT_EQ(slurp(dir / "whole" / file), slurp(dir / "cut" / file)) << file;
+  // Different data: refused with a clear message, nothing overwritten.
+  try {
+    calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "other data");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different calibration"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+// Lab data that do not fit the scenario are refused with the record named.
+TEST(LabObjective, RejectsTimesOutsideTheScenarioOrOffTheOutputGrid) {
+  Fixture f;
+  LabData d = f.data;
+  d.records[3].time_s = 99.0;
+  try {
+    LabObjective obj(f.study, f.assembly, d, "lab");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("record 4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("outside scenario"), std::string::npos) << e.what();
+  }
+  d = f.data;
+  d.records[0].time_s = 6.0005;
+  EXPECT_THROW(LabObjective(f.study, f.assembly, d, "lab"), InputError);
 }

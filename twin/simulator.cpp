@@ -128,8 +128,20 @@ struct StrutGeometry {
   struct Kin {
     double q, qd;
   };
+  /// A solid axle's spring seat: the axle hangs on a Slider (heave along the chassis z) and a
+  /// Pin (roll about the chassis x) with the seat at lateral offset `seat_y` on the axle. The seat
+  /// moves along the chassis z by q_h + y sin(phi): read q, u from the State. The force is applied
+  /// as the generalized forces of that pair (virtual work of a force along the chassis z).
+  bool is_axle_seat = false;
+  QIndex qh, qr;
+  UIndex uh, ur;
+  double seat_y = 0;
   Kin kin(const State& s) const {
     if (is_slider) return {s.getQ()[qi], s.getU()[ui]};
+    if (is_axle_seat) {
+      const double phi = s.getQ()[qr];
+      return {s.getQ()[qh] + seat_y * std::sin(phi), s.getU()[uh] + seat_y * std::cos(phi) * s.getU()[ur]};
+    }
     const Vec3 pu = upper.findStationLocationInGround(s, st_upper), pl = lower.findStationLocationInGround(s, st_lower);
     const Vec3 vu = upper.findStationVelocityInGround(s, st_upper), vl = lower.findStationVelocityInGround(s, st_lower);
     const UnitVec3 z = upper.getBodyRotation(s).z();
@@ -139,6 +151,10 @@ struct StrutGeometry {
   }
   double accel(const State& s) const {
     if (is_slider) return s.getUDot()[ui];
+    if (is_axle_seat) {
+      const double phi = s.getQ()[qr], w = s.getU()[ur];
+      return s.getUDot()[uh] + seat_y * (std::cos(phi) * s.getUDot()[ur] - std::sin(phi) * w * w);
+    }
     const Vec3 au = upper.findStationAccelerationInGround(s, st_upper), al = lower.findStationAccelerationInGround(s, st_lower);
     return ~(al - au) * Vec3(upper.getBodyRotation(s).z());
   }
@@ -148,9 +164,23 @@ struct StrutGeometry {
       mobilityForces[ui] -= F;  // compression positive: the force pushes the slider back down
       return;
     }
+    if (is_axle_seat) {
+      mobilityForces[uh] -= F;
+      mobilityForces[ur] -= F * seat_y * std::cos(s.getQ()[qr]);
+      return;
+    }
     const Vec3 z(upper.getBodyRotation(s).z());
     upper.applyForceToBodyPoint(s, st_upper, F * z, bodyForces);
     lower.applyForceToBodyPoint(s, st_lower, -F * z, bodyForces);
+  }
+  /// Call after realizeTopology for solid-axle spring seats (`slider` carries `pin`).
+  void bindAxleSeat(const State& s, const MobilizedBody& slider, const MobilizedBody& pin, double y) {
+    is_axle_seat = true;
+    qh = slider.getFirstQIndex(s);
+    uh = slider.getFirstUIndex(s);
+    qr = pin.getFirstQIndex(s);
+    ur = pin.getFirstUIndex(s);
+    seat_y = y;
   }
   /// Call after realizeTopology for slider struts.
   void bindSlider(const State& s) {
@@ -172,8 +202,11 @@ class StrutElement : public Force::Custom::Implementation {
   /// Binds slider struts to their state indices (after realizeTopology).
   void bind(const State& s) {
     if (bind_slider_) g_.bindSlider(s);
+    if (!seat_slider_.isEmptyHandle()) g_.bindAxleSeat(s, seat_slider_, seat_pin_, seat_y_);
   }
   bool bind_slider_ = false;
+  MobilizedBody seat_slider_, seat_pin_;
+  double seat_y_ = 0;
   double force(double q, double qd) const {
     const double* p = ctx_->p;
     StrutState ss;
@@ -315,8 +348,13 @@ struct Simulator::Impl {
       strut_elems[c] = se;
       if (M.topology() == SuspensionTopology::MacPherson) {
         se->bind_slider_ = true;  // the wheel carrier slides along the chassis z at the strut
-        slider_elems.push_back(se);
+      } else {
+        const int ax = c / 2;
+        se->seat_slider_ = axle_slider[ax];
+        se->seat_pin_ = axle[ax];
+        se->seat_y_ = struts[c].st_lower[1];
       }
+      slider_elems.push_back(se);
       Force::Custom(forces, se);
       TireCorner tc;
       tc.model = &M;
@@ -339,8 +377,10 @@ struct Simulator::Impl {
     heave_u = heave.getFirstUIndex(default_state);
     chassis_q = chassis.getFirstQIndex(default_state);
     chassis_u = chassis.getFirstUIndex(default_state);
-    if (M.topology() == SuspensionTopology::MacPherson)
-      for (auto& g : struts) g.bindSlider(default_state);
+    for (int c = 0; c < 4; ++c) {
+      if (M.topology() == SuspensionTopology::MacPherson) struts[c].bindSlider(default_state);
+      else struts[c].bindAxleSeat(default_state, axle_slider[c / 2], axle[c / 2], struts[c].st_lower[1]);
+    }
   }
 
   /// Static equilibrium at t = 0 for the run parameters in ctx (vehicle at rest, flat start).

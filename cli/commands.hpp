@@ -28,5 +28,11 @@ CommandHandle addBenchCommand(CLI::App& root);
 CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line);
 /// `twin calibrate`: Griddy Gibbs calibration of assemblies against lab data (calibration/calibrate.hpp).
 CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_line);
+/// `twin synthesize`: synthetic field data per calibrated assembly as moments (classification/synthesis.hpp).
+CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_line);
+/// `twin classify`: field records among synthesized assemblies, cost-aware choice (classification/classify_field.hpp).
+CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line);
+/// `twin study`: the whole method end to end, resumable (classification/study_run.hpp).
+CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line);
 
 }  // namespace dtwin::cli

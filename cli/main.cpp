@@ -25,6 +25,9 @@ int main(int argc, char** argv) {
   commands.push_back(addBenchCommand(app));
   commands.push_back(addGenerateCommand(app, command));
   commands.push_back(addCalibrateCommand(app, command));
+  commands.push_back(addSynthesizeCommand(app, command));
+  commands.push_back(addClassifyCommand(app, command));
+  commands.push_back(addStudyCommand(app, command));
 
   try {
     app.parse(argc, argv);

@@ -236,21 +236,24 @@ class StrutElement : public Force::Custom::Implementation {
   bool effects_;
 };
 
-/// d'Alembert load of the accelerating vehicle frame: -m a(t) at every body's mass centre.
-class FrameInertiaElement : public Force::Custom::Implementation {
+/// Gravity plus the d'Alembert load of the accelerating vehicle frame: m (-g z - a(t) x) at every
+/// massive body's mass centre (each body's origin is its mass centre). One element instead of
+/// Simbody's UniformGravity, which walks every body's mass properties on each evaluation.
+class BodyLoadElement : public Force::Custom::Implementation {
  public:
-  FrameInertiaElement(const RunContext* ctx, std::vector<std::pair<MobilizedBody, double>> bodies)
-      : ctx_(ctx), bodies_(std::move(bodies)) {}
+  BodyLoadElement(const RunContext* ctx, const std::vector<std::pair<MobilizedBody, double>>& bodies, double g) : ctx_(ctx), g_(g) {
+    for (auto& [b, m] : bodies) bodies_.push_back({b.getMobilizedBodyIndex(), m});
+  }
   void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
     const double a = ctx_->speed.accel(s.getTime());
-    if (a == 0.0) return;
-    for (auto& [b, m] : bodies_) bodyForces[b.getMobilizedBodyIndex()][1] += Vec3(-m * a, 0, 0);
+    for (auto& [i, m] : bodies_) bodyForces[i][1] += Vec3(-m * a, 0, -m * g_);
   }
   Real calcPotentialEnergy(const State&) const override { return 0; }
 
  private:
   const RunContext* ctx_;
-  std::vector<std::pair<MobilizedBody, double>> bodies_;
+  double g_;
+  std::vector<std::pair<MobilizedBodyIndex, double>> bodies_;
 };
 
 std::size_t contiguous(const std::vector<int>& slots) {
@@ -304,7 +307,6 @@ struct Simulator::Impl {
     const Model& M = *model;
     const VehicleData& d = M.vehicle();
     std::vector<StrutElement*> slider_elems;
-    Force::UniformGravity(forces, matter, Vec3(0, 0, -d.gravity));
     const Rotation xToZ(-Pi / 2, YAxis);  // a slider's x axis along the parent's z
     const Rotation zToX(Pi / 2, YAxis);   // a pin's z axis along the parent's x
     heave = MobilizedBody::Slider(matter.Ground(), Transform(xToZ), Body::Massless(), Transform(xToZ));
@@ -368,7 +370,7 @@ struct Simulator::Impl {
       tires[c] = tc;
       Force::Custom(forces, new TireElement(&ctx, tc, wheels[c]));
     }
-    Force::Custom(forces, new FrameInertiaElement(&ctx, massive));
+    Force::Custom(forces, new BodyLoadElement(&ctx, massive, d.gravity));
     ctx.traction_per_wheel_per_accel = d.total_mass(M.topology()) / 4.0;
     system.realizeTopology();
     default_state = system.getDefaultState();
@@ -480,8 +482,11 @@ struct Simulator::Impl {
     return merged;
   }
 
-  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
-    const auto t_start = std::chrono::steady_clock::now();
+  using Knots = std::vector<std::array<double, KNOT>>;
+  using Segments = std::vector<std::pair<double, double>>;  // (end time, max step)
+
+  /// Validates the run vector and the scenario and points the force elements at them.
+  void begin(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
     const Model& M = *model;
     if (values.size() != M.runParameterNames().size())
       throw InputError("run parameters", "expected " + std::to_string(M.runParameterNames().size()) + " values");
@@ -491,17 +496,18 @@ struct Simulator::Impl {
     ctx.p = values.data();
     ctx.road = &road;
     ctx.speed = sc.speed;
+  }
 
-    RunResult res;
-    std::vector<std::array<double, KNOT>> knots;
-    std::vector<double> times;
-    State s = default_state;
-    s.setTime(0);
-    setEquilibrium(s);
-    const std::string& method = opt.integrator;
-    const double accuracy = opt.accuracy;
-    // Segments with their step bound.
-    std::vector<std::pair<double, double>> segs;  // (end time, max step)
+  /// The branch time of a random road with a smooth start (smooth_until_s - margin), or a
+  /// negative value when the scenario has none.
+  double branchTime(const ScenarioSpec& sc) const {
+    if (sc.road.type == RoadSpec::Type::Iso && sc.road.smooth_until_s > 0) return sc.road.smooth_until_s - opt.obstacle_margin_before_s;
+    return -1.0;
+  }
+
+  /// Integration segments with their step bound.
+  Segments segments(const Road& road, const ScenarioSpec& sc) const {
+    Segments segs;
     double t = 0;
     for (const auto& w : obstacleWindows(road, sc)) {
       if (w.lo > t) segs.push_back({w.lo, opt.max_step_s});
@@ -511,9 +517,9 @@ struct Simulator::Impl {
     if (t < sc.duration_s) segs.push_back({sc.duration_s, opt.max_step_s});
     // A rough section that starts at a known time: the integrator lands on a knot just before it,
     // so nothing before that knot depends on the rough road (every road of one theta shares the
-    // smooth part bit for bit).
-    if (sc.road.type == RoadSpec::Type::Iso && sc.road.smooth_until_s > 0) {
-      const double tb = sc.road.smooth_until_s - opt.obstacle_margin_before_s;
+    // smooth part bit for bit; runBranched integrates it once).
+    const double tb = branchTime(sc);
+    if (tb > 0) {
       for (std::size_t i = 0; i < segs.size(); ++i) {
         const double lo = i == 0 ? 0.0 : segs[i - 1].first;
         if (tb > lo + 1e-9 && tb < segs[i].first - 1e-9) {
@@ -522,20 +528,31 @@ struct Simulator::Impl {
         }
       }
     }
+    return segs;
+  }
+
+  /// Integrates from `s0` through segments [i0, i1) of `segs`, appending a knot per step (and one
+  /// for `s0` itself when `record_start`). Never throws for a diverging run: ok = false and the
+  /// message say why. On success `end` (if given) receives the final State.
+  RunStats integrate(const State& s0, const Segments& segs, std::size_t i0, std::size_t i1, bool record_start, Knots& knots,
+                     std::vector<double>& times, State* end) {
+    RunStats st;
+    const std::string& method = opt.integrator;
     auto checkFinite = [&](double time) {
       for (double v : knots.back())
         if (!std::isfinite(v)) throw std::runtime_error("state became non-finite at t = " + std::to_string(time) + " s");
     };
     if (method == "rosenbrock") {
       RosenbrockOptions ro;
-      ro.accuracy = accuracy;
+      ro.accuracy = opt.accuracy;
       ro.max_step_s = opt.max_step_s;
       ro.max_steps = opt.max_internal_steps;
       RosenbrockIntegrator integ(system, ro);
-      integ.initialize(s);
-      record(integ.getState(), knots, times);
       try {
-        for (const auto& [t_end, hmax] : segs) {
+        integ.initialize(s0);
+        if (record_start) record(integ.getState(), knots, times);
+        for (std::size_t i = i0; i < i1; ++i) {
+          const auto [t_end, hmax] = segs[i];
           integ.setMaximumStepSize(hmax);
           while (integ.getTime() < t_end - 1e-12) {
             integ.step(t_end);
@@ -543,22 +560,24 @@ struct Simulator::Impl {
             checkFinite(integ.getTime());
           }
         }
+        if (end) *end = integ.getState();
       } catch (const std::exception& e) {
-        res.stats.ok = false;
-        res.stats.message = std::string("simulation failed: ") + e.what();
+        st.ok = false;
+        st.message = std::string("simulation failed: ") + e.what();
       }
-      res.stats.steps = integ.steps();
-      res.stats.steps_attempted = integ.attempts();
+      st.steps = integ.steps();
+      st.steps_attempted = integ.attempts();
     } else {
       auto integ = makeIntegrator(method);
-      integ->setAccuracy(accuracy);
+      integ->setAccuracy(opt.accuracy);
       integ->setReturnEveryInternalStep(true);
       integ->setInternalStepLimit(0);
       integ->setMaximumStepSize(opt.max_step_s);
-      integ->initialize(s);
-      record(integ->getState(), knots, times);
       try {
-        for (const auto& [t_end, hmax] : segs) {
+        integ->initialize(s0);
+        if (record_start) record(integ->getState(), knots, times);
+        for (std::size_t i = i0; i < i1; ++i) {
+          const auto [t_end, hmax] = segs[i];
           integ->setMaximumStepSize(hmax);
           while (integ->getTime() < t_end - 1e-12) {
             const auto status = integ->stepTo(t_end, t_end);
@@ -566,26 +585,121 @@ struct Simulator::Impl {
               throw std::runtime_error("integrator failed");
             if (status == Integrator::TimeHasAdvanced || status == Integrator::ReachedScheduledEvent ||
                 status == Integrator::ReachedReportTime) {
-              const State& st = integ->getState();
-              if (st.getTime() > times.back()) record(st, knots, times);
+              const State& s = integ->getState();
+              if (times.empty() || s.getTime() > times.back()) record(s, knots, times);
             }
             if (integ->getNumStepsTaken() > opt.max_internal_steps)
               throw std::runtime_error("more than " + std::to_string(opt.max_internal_steps) + " integrator steps");
             checkFinite(integ->getTime());
           }
         }
+        if (end) *end = integ->getState();
       } catch (const std::exception& e) {
-        res.stats.ok = false;
-        res.stats.message = std::string("simulation failed: ") + e.what();
+        st.ok = false;
+        st.message = std::string("simulation failed: ") + e.what();
       }
-      res.stats.steps = integ->getNumStepsTaken();
-      res.stats.steps_attempted = integ->getNumStepsAttempted();
+      st.steps = integ->getNumStepsTaken();
+      st.steps_attempted = integ->getNumStepsAttempted();
+    }
+    return st;
+  }
+
+  /// The equilibrium start state for the run set up by begin().
+  State startState() {
+    State s = default_state;
+    s.setTime(0);
+    setEquilibrium(s);
+    return s;
+  }
+
+  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
+    const auto t_start = std::chrono::steady_clock::now();
+    begin(values, road, sc);
+    RunResult res;
+    Knots knots;
+    std::vector<double> times;
+    const State s = startState();
+    const Segments segs = segments(road, sc);
+    res.stats = integrate(s, segs, 0, segs.size(), true, knots, times, nullptr);
+    finish(knots, times, sc, res);
+    res.stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+    return res;
+  }
+
+  /// Fills knot count, simulated time and the output trace of `res` from the recorded knots.
+  void finish(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, RunResult& res) {
+    if (times.empty()) {  // the integrator could not even start: an empty trace with its channels
+      for (auto& ch : channels()) res.trace.addChannel(ch);
+      return;
     }
     res.stats.knots = static_cast<long>(knots.size());
     res.stats.sim_s = times.back();
     makeOutput(knots, times, sc, res.trace);
-    res.stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-    return res;
+  }
+
+  std::vector<RunResult> runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
+                                     const ScenarioSpec& sc) {
+    using Clock = std::chrono::steady_clock;
+    const auto t_start = Clock::now();
+    if (roads.empty()) throw InputError("runBranched", "needs at least one road");
+    for (std::size_t r = 0; r < roads.size(); ++r)
+      if (!roads[r]) throw InputError("runBranched", "road " + std::to_string(r) + " is null");
+    const double tb = branchTime(sc);
+    if (!(tb > 0))
+      throw InputError("scenario " + sc.name,
+                       "cannot branch: the road has no smooth start (needs an iso8608 road with smooth_until_s > "
+                       "obstacle_margin_before_s = " + std::to_string(opt.obstacle_margin_before_s) + " s)");
+    if (!(tb < sc.duration_s))
+      throw InputError("scenario " + sc.name, "cannot branch: the smooth part (to " + std::to_string(tb) +
+                                                  " s) covers the whole run (duration " + std::to_string(sc.duration_s) + " s)");
+    begin(values, *roads[0], sc);
+    const Segments segs = segments(*roads[0], sc);
+    std::size_t ib = segs.size();
+    for (std::size_t i = 0; i < segs.size(); ++i)
+      if (segs[i].first == tb) ib = i;
+    if (ib == segs.size())
+      throw InputError("scenario " + sc.name, "cannot branch: no integration segment ends at the branch time " + std::to_string(tb) +
+                                                  " s (an obstacle window overlaps the smooth part's end)");
+    // Every road must share the segments and the smooth part (the scenario's road, other seed).
+    for (std::size_t r = 1; r < roads.size(); ++r) {
+      if (segments(*roads[r], sc) != segs)
+        throw InputError("runBranched", "road " + std::to_string(r) + " has other obstacle windows than road 0");
+      const double x_hi = sc.speed.distance(tb) + 0.1, x_lo = -model->vehicle().wheelbase() - 1.0;
+      for (double x = x_lo; x <= x_hi; x += 0.05)
+        for (Track t : {Track::Left, Track::Right}) {
+          const RoadSample a = roads[0]->sample(t, x), b = roads[r]->sample(t, x);
+          if (a.height_m != b.height_m || a.slope != b.slope)
+            throw InputError("runBranched", "road " + std::to_string(r) + " differs from road 0 before the branch point (x = " +
+                                                std::to_string(x) + " m): the roads must share the smooth start");
+        }
+    }
+    // The common part, once.
+    Knots knots0;
+    std::vector<double> times0;
+    State at_branch;
+    const RunStats common = integrate(startState(), segs, 0, ib + 1, true, knots0, times0, &at_branch);
+    const double common_wall = std::chrono::duration<double>(Clock::now() - t_start).count();
+    const double share = common_wall / static_cast<double>(roads.size());
+    std::vector<RunResult> out(roads.size());
+    for (std::size_t r = 0; r < roads.size(); ++r) {
+      const auto t_branch = Clock::now();
+      RunResult& res = out[r];
+      ctx.road = roads[r];
+      Knots knots = knots0;
+      std::vector<double> times = times0;
+      if (common.ok) {
+        State s = at_branch;
+        s.invalidateAllCacheAtOrAbove(Stage::Time);  // forces are re-evaluated on this branch's road
+        res.stats = integrate(s, segs, ib + 1, segs.size(), false, knots, times, nullptr);
+        res.stats.steps += common.steps;
+        res.stats.steps_attempted += common.steps_attempted;
+      } else {
+        res.stats = common;
+      }
+      finish(knots, times, sc, res);
+      res.stats.wall_s = share + std::chrono::duration<double>(Clock::now() - t_branch).count();
+    }
+    return out;
   }
 
   void makeOutput(const std::vector<std::array<double, KNOT>>& knots, const std::vector<double>& times,
@@ -656,5 +770,10 @@ const SimulationOptions& Simulator::options() const { return impl_->opt; }
 RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
   return impl_->run(values, road, sc);
 }
+std::vector<RunResult> Simulator::runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
+                                              const ScenarioSpec& sc) {
+  return impl_->runBranched(values, roads, sc);
+}
+double Simulator::branchTime(const ScenarioSpec& sc) const { return impl_->branchTime(sc); }
 
 }  // namespace dtwin

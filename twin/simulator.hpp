@@ -63,6 +63,34 @@ class Simulator {
   /// Throws InputError for invalid `values`.
   RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario);
 
+  /// Runs `scenario` once per road, sharing the smooth start (method.md §5: "the 0-6 s smooth
+  /// part is identical for every road of one θ: simulate it once").
+  ///
+  /// The common part is integrated once, with roads[0], from the equilibrium up to the branch
+  /// time t_b = branchTime(scenario) = road.smooth_until_s - options().obstacle_margin_before_s
+  /// (run() lands a knot exactly there for such roads). Then, for each road r, the State saved at
+  /// t_b and the knots recorded so far are restored, the road is switched, and a fresh integrator
+  /// continues from t_b to the end. Result r is the run on roads[r]: its output rows at t <= t_b
+  /// are bit-identical to those of run() on that road; after t_b it equals run() only within the
+  /// integrator's accuracy, because the integrator restarts at t_b (initial step, new Jacobian)
+  /// where run() carries its step size on. A branched run is itself deterministic: the same
+  /// inputs give bit-identical results, whatever the number of roads before or after it.
+  /// stats: steps and steps_attempted include the common part; wall_s is the common part's wall
+  /// time divided evenly among the roads plus the branch's own (integration and output).
+  ///
+  /// Preconditions, checked (InputError): at least one road and no null road; an iso8608 road
+  /// with smooth_until_s such that 0 < t_b < duration_s; every road has the same obstacle
+  /// windows as roads[0] and the same profile before the front wheels reach smooth_until_s
+  /// (i.e. they are makeRoad(scenario, ...) with different seeds). Invalid `values`: InputError as
+  /// for run(). A failure of the common part fails every result (same message); a failure of a
+  /// branch fails that result only. Never throws for a diverging simulation.
+  std::vector<RunResult> runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
+                                     const ScenarioSpec& scenario);
+
+  /// The branch time runBranched() would use for `scenario` (see there), or a negative value if
+  /// the scenario has no smooth start to share.
+  double branchTime(const ScenarioSpec& scenario) const;
+
   /// Channel names and units every run produces.
   static std::vector<Channel> channels();
 

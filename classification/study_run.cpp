@@ -1,0 +1,187 @@
+#include "classification/study_run.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "calibration/calibrate.hpp"
+#include "classification/classify_field.hpp"
+#include "classification/synthesis.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/generate.hpp"
+#include "twin/measurement.hpp"
+#include "twin/provenance.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin::classify {
+namespace {
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// A stage's output file is complete once it exists: every writer here is atomic.
+bool done(const fs::path& p) { return fs::exists(p); }
+
+}  // namespace
+
+nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, const std::string& out_dir,
+                        const StudyProgress& progress, const StudyLog& log) {
+  auto say = [&](const std::string& s) {
+    if (log) log(s);
+  };
+  auto report = [&](const std::string& stage, std::size_t d, std::size_t t) {
+    if (progress) progress(stage, d, t);
+  };
+  const auto t_all = std::chrono::steady_clock::now();
+  const fs::path out(out_dir);
+  fs::create_directories(out);
+  const auto assemblies = study.assemblies();
+  if (assemblies.empty()) throw InputError(study.path, "the study defines no assemblies");
+  const AssemblySpec& truth_assembly = assemblies.front();  // the highest fidelity generates the data
+
+  // The study's fingerprint: a rerun into the same folder must be the same study.
+  nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(fileBytes(study.path)))},
+                    {"vehicle_file", std::to_string(calib::fnv1a64(fileBytes(study.vehicle_path)))},
+                    {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.lab_file)))},
+                    {"field_file", options.field_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.field_file)))}};
+  const fs::path record = out / "study.json";
+  if (fs::exists(record)) {
+    nlohmann::json j;
+    try {
+      std::ifstream in(record);
+      in >> j;
+    } catch (const std::exception&) {
+      throw InputError(record.string(), "is not a study record; use an empty --out folder");
+    }
+    if (j.value("fingerprint", nlohmann::json()) != fp)
+      throw InputError(record.string(), "was made by a different study, vehicle or data file; use a new --out folder or delete it");
+  } else {
+    writeFileAtomic(record.string(), nlohmann::json{{"fingerprint", fp}, {"study", study.path}, {"program", programInfo()},
+                                                    {"command", options.command}, {"created_utc", utcNow()}}
+                                             .dump(2) + "\n");
+  }
+
+  nlohmann::json stages = nlohmann::json::object();
+  // ---- 1. lab data
+  auto t0 = std::chrono::steady_clock::now();
+  std::string lab_path = options.lab_file;
+  if (lab_path.empty()) {
+    lab_path = (out / "lab" / "lab.csv").string();
+    if (!done(sidecarPath(lab_path))) {
+      report("lab", 0, 1);
+      LabOptions lo;
+      lo.command = options.command;
+      const LabResult r = generateLab(study, truth_assembly, lo);
+      writeLabCsv(lab_path, r.data);
+      writeFileAtomic(sidecarPath(lab_path), r.provenance.dump(2) + "\n");  // last: marks the stage done
+      report("lab", 1, 1);
+      say("lab: " + truth_assembly.id + " at the truth, " + std::to_string(r.data.records.size()) + " records -> " + lab_path);
+    }
+  }
+  const LabData lab = readLabCsv(lab_path);
+  stages["lab"] = since(t0);
+
+  // ---- 2. field data
+  t0 = std::chrono::steady_clock::now();
+  std::string field_path = options.field_file;
+  if (field_path.empty()) {
+    field_path = (out / "field" / "field.csv").string();
+    if (!done(sidecarPath(field_path))) {
+      FieldOptions fo;
+      fo.threads = options.threads;
+      fo.command = options.command;
+      const FieldResult r = generateField(study, truth_assembly, fo, [&](std::size_t d, std::size_t t) { report("field", d, t); });
+      writeFieldCsv(field_path, r.data);
+      writeFileAtomic(sidecarPath(field_path), r.provenance.dump(2) + "\n");
+      say("field: " + std::to_string(r.data.rowCount()) + " records of " + truth_assembly.id + " on class-D roads -> " + field_path);
+    }
+  }
+  stages["field"] = since(t0);
+
+  // ---- 3. calibration of every assembly
+  t0 = std::chrono::steady_clock::now();
+  calib::CalibrationOptions co;
+  co.threads = options.threads;
+  co.lhs_points = static_cast<int>(study.sizes.at("lhs_points"));
+  co.gibbs_iterations = static_cast<int>(study.sizes.at("gibbs_iterations"));
+  co.gibbs_burn_in = static_cast<int>(study.sizes.at("gibbs_burn_in"));
+  co.optimizer_starts = static_cast<int>(study.sizes.at("optimizer_starts"));
+  co.seed = study.seed;
+  const std::string lab_hash = std::to_string(calib::fnv1a64(fileBytes(lab_path)));
+  nlohmann::json calibrated;
+  for (const auto& a : assemblies) {
+    const fs::path dir = out / "calibration" / a.id;
+    const auto r = calib::calibrateAssembly(study, a, lab, "lab", co, dir.string(), lab_hash,
+                                            [&](const std::string& s, std::size_t d, std::size_t t) {
+                                              report("calibrate " + a.id + " " + s, d, t);
+                                            });
+    nlohmann::json j = r.toJson();
+    j["program"] = programInfo();
+    j["command"] = options.command;
+    j["study"] = study.path;
+    j["data"] = {{"path", lab_path}, {"records", lab.records.size()}, {"fnv1a64", lab_hash}};
+    j["options"] = co.toJson();
+    writeFileAtomic((dir / "summary.json").string(), j.dump(2) + "\n");
+    calibrated[a.id] = {{"sse_min", j["sse_min"]}, {"parameters", j["parameters"]}, {"tau", j["tau"]}};
+    say("calibrate " + a.id + " (" + a.label() + "): SSE_min " + std::to_string(r.optimum.sse) + ", " +
+        std::to_string(r.posterior.distinct_points) + " distinct design points");
+  }
+  stages["calibrate"] = since(t0);
+
+  // ---- 4. synthetic field data from every posterior
+  t0 = std::chrono::steady_clock::now();
+  for (const auto& a : assemblies) {
+    SynthesisOptions so;
+    so.threads = options.threads;
+    so.command = options.command;
+    const auto post = readPosteriorCsv((out / "calibration" / a.id / "posterior.csv").string());
+    const auto r = synthesizeAssembly(study, a, post, so, (out / "synthetic" / a.id).string(),
+                                      [&](std::size_t d, std::size_t t) { report("synthesize " + a.id, d, t); });
+    say("synthesize " + a.id + ": " + std::to_string(r.simulations) + " simulations, " + std::to_string(r.failures) + " failed" +
+        (r.reused ? " (reused)" : ""));
+  }
+  stages["synthesize"] = since(t0);
+
+  // ---- 5. classification and recommendation
+  t0 = std::chrono::steady_clock::now();
+  report("classify", 0, 1);
+  FieldClassifyOptions fo;
+  fo.command = options.command;
+  const FieldClassification c = classifyFieldFile(study, field_path, (out / "synthetic").string(), fo);
+  writeFieldClassification(c, (out / "classification").string());
+  report("classify", 1, 1);
+  stages["classify"] = since(t0);
+  stages["total"] = since(t_all);
+
+  nlohmann::json s;
+  s["program"] = programInfo();
+  s["command"] = options.command;
+  s["created_utc"] = utcNow();
+  s["study"] = study.path;
+  s["wins"] = c.summary["wins"];
+  s["recommended"] = c.summary["recommended"];
+  s["recommendation_sentence"] = c.summary["recommendation_sentence"];
+  s["stages"] = stages;
+  s["stages_note"] = "wall seconds of this invocation per stage (a resumed stage costs only what was left)";
+  s["records"] = c.records.size();
+  s["calibration"] = calibrated;
+  s["paths"] = {{"lab", lab_path},
+                {"field", field_path},
+                {"calibration", (out / "calibration").string()},
+                {"synthetic", (out / "synthetic").string()},
+                {"classification", (out / "classification" / "summary.json").string()}};
+  writeFileAtomic((out / "summary.json").string(), s.dump(2) + "\n");
+  return s;
+}
+
+}  // namespace dtwin::classify

@@ -1,0 +1,41 @@
+#pragma once
+// The whole method end to end (method.md §1-5): lab data, field data, calibration of every
+// assembly, synthetic field data from every posterior, classification of the field records, and
+// the cost-aware recommendation. Every stage persists its results in the study folder as it
+// goes (each stage is itself resumable), so a killed study rerun with the same command continues
+// where it stopped and ends with identical results.
+//
+// Folder layout (docs/study.md):
+//   OUT/lab/lab.csv (+ .json)          stage "lab"        (or the user's --lab file)
+//   OUT/field/field.csv (+ .json)      stage "field"      (or the user's --field file)
+//   OUT/calibration/<id>/...           stage "calibrate"  (calibration/calibrate.hpp)
+//   OUT/synthetic/<id>/...             stage "synthesize" (classification/synthesis.hpp)
+//   OUT/classification/...             stage "classify"   (classification/classify_field.hpp)
+//   OUT/study.json                     the fingerprint of the study and the stage record
+//   OUT/summary.json                   wins, recommended, stages (wall seconds), sentence, paths
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "twin/study.hpp"
+
+namespace dtwin::classify {
+
+struct StudyRunOptions {
+  int threads = 0;              ///< 0: all cores (never changes the numbers)
+  std::string lab_file;         ///< use these lab data instead of generating them
+  std::string field_file;       ///< use these field records instead of generating them
+  std::string command;          ///< recorded in every output
+};
+
+/// Progress: stage ("lab", "field", "calibrate M1 optimum", ...), done, total.
+using StudyProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+/// One line of news per finished stage (for the CLI to print).
+using StudyLog = std::function<void(const std::string& line)>;
+
+/// Runs (or resumes) the study into `out_dir`; returns the content of OUT/summary.json.
+nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, const std::string& out_dir,
+                        const StudyProgress& progress = {}, const StudyLog& log = {});
+
+}  // namespace dtwin::classify

@@ -1,0 +1,585 @@
+#include "classification/synthesis.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <sstream>
+
+#include "calibration/calibrate.hpp"
+#include "subsystems/errors.hpp"
+#include "subsystems/random.hpp"
+#include "twin/parallel.hpp"
+#include "twin/provenance.hpp"
+#include "twin/simulator.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin::classify {
+namespace {
+
+std::string hex16(std::uint64_t v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "0x%016llX", static_cast<unsigned long long>(v));
+  return b;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string trim(const std::string& s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && (s[a] == ' ' || s[a] == '\t')) ++a;
+  while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t')) --b;
+  std::string t = s.substr(a, b - a);
+  if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
+  return t;
+}
+
+std::vector<std::string> splitFields(const std::string& line) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t c = line.find(',', start);
+    out.push_back(trim(line.substr(start, c == std::string::npos ? std::string::npos : c - start)));
+    if (c == std::string::npos) break;
+    start = c + 1;
+  }
+  return out;
+}
+
+bool parseDouble(const std::string& s, double& v) {
+  if (s.empty()) return false;
+  const char* b = s.data();
+  const char* e = b + s.size();
+  if (*b == '+') ++b;
+  const auto r = std::from_chars(b, e, v);
+  return r.ec == std::errc() && r.ptr == e;
+}
+
+/// Grid index of time t at `rate`; InputError if t is not on the grid or outside [0, duration].
+std::size_t gridIndex(double t, double rate, double duration, const std::string& where) {
+  const double k = t * rate;
+  if (!std::isfinite(t) || std::abs(k - std::round(k)) > 1e-6)
+    throw InputError(where, formatExact(t) + " s is not on the output grid (multiples of " + formatExact(1.0 / rate) + " s)");
+  if (t < 0 || t > duration + 1e-9)
+    throw InputError(where, formatExact(t) + " s lies outside the scenario (0 .. " + formatExact(duration) + " s)");
+  return static_cast<std::size_t>(std::llround(k));
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  const std::size_t m = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(m), v.end());
+  const double hi = v[m];
+  if (v.size() % 2) return hi;
+  return 0.5 * (hi + *std::max_element(v.begin(), v.begin() + static_cast<long>(m)));
+}
+
+nlohmann::json failureJson(const SynthesisFailure& f) {
+  return {{"draw", f.draw}, {"road", f.road}, {"library_index", f.library_index}, {"road_seed", f.road_seed}, {"message", f.message}};
+}
+SynthesisFailure failureFrom(const nlohmann::json& j) {
+  SynthesisFailure f;
+  f.draw = j.at("draw").get<long>();
+  f.road = j.at("road").get<long>();
+  f.library_index = j.at("library_index").get<long>();
+  f.road_seed = j.at("road_seed").get<std::uint64_t>();
+  f.message = j.at("message").get<std::string>();
+  return f;
+}
+
+/// What one draw produced: R vectors (empty where the run failed), failures, run costs.
+struct DrawOutput {
+  std::vector<std::vector<double>> vectors;
+  std::vector<SynthesisFailure> failures;
+  std::vector<double> cost;      ///< wall s per simulated s, successful runs
+  std::vector<double> run_wall;  ///< wall s, successful runs
+};
+
+struct PendingBlock {
+  std::vector<DrawOutput> draws;
+  long remaining = 0;
+};
+
+}  // namespace
+
+std::uint64_t librarySeed(std::uint64_t seed, std::uint64_t index) {
+  return RandomStream(seed, kRoadLibraryStream, index).bits() >> 11;
+}
+
+// ------------------------------------------------------------------ posterior.csv
+PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name) {
+  PosteriorSample ps;
+  ps.path = name;
+  std::istringstream in(text);
+  std::string line;
+  long line_no = 0;
+  std::vector<std::string> header;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line_no == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) continue;
+    const std::string at = name + ":" + std::to_string(line_no);
+    if (header.empty()) {
+      header = splitFields(line);
+      if (header.size() < 3 || header[header.size() - 2] != "tau" || header.back() != "design_index")
+        throw InputError(at, "header must be the calibrated parameter names, then tau, then design_index "
+                             "(as `twin calibrate` writes posterior.csv), got '" + line + "'");
+      std::set<std::string> seen;
+      for (std::size_t c = 0; c + 2 < header.size(); ++c) {
+        if (header[c].empty()) throw InputError(at, "header: column " + std::to_string(c + 1) + " has no name");
+        if (header[c] == "tau" || header[c] == "design_index" || !seen.insert(header[c]).second)
+          throw InputError(at, "header: column '" + header[c] + "' appears twice");
+        ps.names.push_back(header[c]);
+      }
+      continue;
+    }
+    const auto f = splitFields(line);
+    if (f.size() != header.size())
+      throw InputError(at, "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
+    std::vector<double> th(ps.names.size());
+    for (std::size_t c = 0; c < ps.names.size(); ++c) {
+      if (!parseDouble(f[c], th[c])) throw InputError(at + ": " + ps.names[c], "must be a number, got '" + f[c] + "'");
+      if (!std::isfinite(th[c])) throw InputError(at + ": " + ps.names[c], "must be finite, got " + f[c]);
+    }
+    double tau = 0;
+    const std::string& ft = f[ps.names.size()];
+    if (!parseDouble(ft, tau)) throw InputError(at + ": tau", "must be a number, got '" + ft + "'");
+    if (!(std::isfinite(tau) && tau > 0)) throw InputError(at + ": tau", "must be a finite number > 0 (a precision), got " + ft);
+    const std::string& fd = f.back();
+    long k = -1;
+    const auto r = std::from_chars(fd.data(), fd.data() + fd.size(), k);
+    if (r.ec != std::errc() || r.ptr != fd.data() + fd.size() || k < 0)
+      throw InputError(at + ": design_index", "must be an integer >= 0, got '" + fd + "'");
+    ps.theta.push_back(std::move(th));
+    ps.tau.push_back(tau);
+    ps.design_index.push_back(k);
+  }
+  if (header.empty()) throw InputError(name, "empty file (expected the header <parameters>,tau,design_index)");
+  if (ps.tau.empty()) throw InputError(name, "no rows after the header (line 1)");
+  return ps;
+}
+
+PosteriorSample readPosteriorCsv(const std::string& path) {
+  if (!fs::exists(path)) throw InputError(path, "posterior file not found");
+  return parsePosteriorCsv(slurp(path), path);
+}
+
+// ------------------------------------------------------------------ synthesis
+SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
+                                   const SynthesisOptions& opt, const std::string& out_dir, const ProgressFn& progress) {
+  using Clock = std::chrono::steady_clock;
+  const auto t_all = Clock::now();
+  const long M = opt.draws > 0 ? opt.draws : study.sizes.at("posterior_draws");
+  const long R = opt.roads_per_draw > 0 ? opt.roads_per_draw : study.sizes.at("roads_per_draw");
+  const long L = opt.road_library > 0 ? opt.road_library : study.sizes.at("road_library");
+  const long B = opt.block;
+  const std::uint64_t seed = opt.seed.value_or(study.seed);
+  if (M < 1) throw InputError("posterior draws", "must be >= 1, got " + std::to_string(M));
+  if (R < 1) throw InputError("roads per draw", "must be >= 1, got " + std::to_string(R));
+  if (L < R)
+    throw InputError("road library", "must hold at least the roads per draw (" + std::to_string(R) + "), got " + std::to_string(L));
+  if (B < 1) throw InputError("block", "must be >= 1 draws, got " + std::to_string(B));
+  if (!(opt.checkpoint_interval_s >= 0)) throw InputError("checkpoint interval", "must be >= 0 s");
+  if (post.size() == 0) throw InputError(post.path, "the posterior sample is empty");
+
+  // The posterior's parameters must be the study's calibrated ones, in order.
+  std::vector<std::string> names;
+  for (const auto& c : study.calibrated) names.push_back(c.name);
+  if (post.names != names) {
+    std::string a, b;
+    for (const auto& n : post.names) a += (a.empty() ? "" : ",") + n;
+    for (const auto& n : names) b += (b.empty() ? "" : ",") + n;
+    throw InputError(post.path + ":1", "parameter columns " + a + " are not the study's calibrated parameters " + b +
+                                           " (" + study.path + ")");
+  }
+  auto model = study.makeModel(assembly);
+  std::vector<int> slots;
+  for (const auto& n : names) {
+    const int s = model->slot(n);
+    if (s < 0) throw InputError(study.path + ": calibrated", "'" + n + "' is not a parameter of assembly " + assembly.id);
+    slots.push_back(s);
+  }
+  const std::vector<double> base = model->defaultRunValues();
+  const ScenarioSpec& sc = study.scenario(opt.scenario);
+  if (sc.road.type != RoadSpec::Type::Iso)
+    throw InputError("scenario " + sc.name, "synthetic field data need a random (iso8608) road to draw a road library from");
+  const auto channels = measurableChannels();
+  const std::string rule = checkChannelName(opt.channel, channels);
+  if (!rule.empty()) throw InputError("channel", rule);
+  std::string unit;
+  for (const auto& c : channels)
+    if (c.name == opt.channel) unit = c.unit;
+  const bool noisy = unit == "N";
+  const double rate = study.simulation.output_rate_hz;
+  if (!(opt.t_begin_s <= opt.t_end_s))
+    throw InputError("window", "needs begin <= end, got " + formatExact(opt.t_begin_s) + " .. " + formatExact(opt.t_end_s) + " s");
+  const std::size_t kb = gridIndex(opt.t_begin_s, rate, sc.duration_s, "window begin");
+  const std::size_t ke = gridIndex(opt.t_end_s, rate, sc.duration_s, "window end");
+  const std::size_t p = ke - kb + 1;
+  if (p > 46000) throw InputError("window", std::to_string(p) + " samples: the covariance would not fit in memory");
+  std::vector<double> times;
+  for (std::size_t k = kb; k <= ke; ++k) times.push_back(static_cast<double>(k) / rate);
+  Simulator probe(model, study.simulation);
+  const bool branched = opt.branch && probe.branchTime(sc) > 0 && probe.branchTime(sc) < sc.duration_s;
+  const double t_branch = branched ? probe.branchTime(sc) : -1.0;
+
+  // Fingerprint: everything that changes the numbers (not threads, not the checkpoint interval).
+  const std::string post_text = fs::exists(post.path) ? slurp(post.path) : std::string();
+  std::string post_rows;
+  for (std::size_t i = 0; i < post.size(); ++i) {
+    for (double v : post.theta[i]) post_rows += formatExact(v) + ",";
+    post_rows += formatExact(post.tau[i]) + "\n";
+  }
+  const std::string post_hash = hex16(calib::fnv1a64(post_rows));
+  nlohmann::json fp{{"format", 1},
+                    {"assembly", assembly.id},
+                    {"label", assembly.label()},
+                    {"names", names},
+                    {"posterior_values_fnv1a64", post_hash},
+                    {"draws", M},
+                    {"roads_per_draw", R},
+                    {"road_library", L},
+                    {"block", B},
+                    {"seed", seed},
+                    {"streams", {hex16(kSynthDrawStream), hex16(kSynthRoadStream), hex16(kSynthNoiseStream), hex16(kRoadLibraryStream)}},
+                    {"scenario", sc.toJson()},
+                    {"simulation", study.simulation.toJson()},
+                    {"channel", opt.channel},
+                    {"window", {kb, ke}},
+                    {"noise", noisy},
+                    {"track_fourth_moment", opt.track_fourth_moment},
+                    {"branched", branched},
+                    {"run_values", base}};
+  const std::string fingerprint = hex16(calib::fnv1a64(fp.dump()));
+
+  fs::create_directories(out_dir);
+  const fs::path dir(out_dir);
+  const fs::path moments_path = dir / "moments.bin", info_path = dir / "synthesis.json", ckpt_path = dir / "checkpoint.json";
+
+  SynthesisResult res;
+  res.assembly = assembly.id;
+  res.fingerprint = fingerprint;
+  res.times_s = times;
+  res.draws = M;
+  res.roads_per_draw = R;
+  res.road_library = L;
+  res.block = B;
+  res.simulations = M * R;
+
+  auto readJson = [](const fs::path& path) {
+    std::ifstream in(path);
+    nlohmann::json j;
+    try {
+      in >> j;
+    } catch (const std::exception&) {
+      return nlohmann::json();  // written atomically: a foreign file
+    }
+    return j;
+  };
+  auto refuse = [&](const fs::path& path) {
+    throw InputError(path.string(), "was made by a different synthesis (study, posterior, assembly, sizes, seed, window or "
+                                    "options changed); use a new --out folder or delete it to start over");
+  };
+
+  // A finished synthesis: reuse it.
+  if (fs::exists(info_path)) {
+    const nlohmann::json j = readJson(info_path);
+    if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuse(info_path);
+    if (fs::exists(moments_path)) {
+      res.moments = MomentAccumulator::load(moments_path.string());
+      res.info = j;
+      res.reused = true;
+      res.failures = j.at("failures").get<long>();
+      for (const auto& f : j.at("failure_list")) res.failure_list.push_back(failureFrom(f));
+      res.cost_s_per_s = j.at("cost").at("wall_s_per_simulated_s_median").get<double>();
+      res.median_run_wall_s = j.at("cost").at("run_wall_s_median").get<double>();
+      res.wall_s = std::chrono::duration<double>(Clock::now() - t_all).count();
+      if (progress) progress(static_cast<std::size_t>(M), static_cast<std::size_t>(M));
+      return res;
+    }
+  }
+
+  // State of the ordered reduction (guarded by reduce_m once the workers run).
+  MomentOptions mo;
+  mo.track_fourth_moment = opt.track_fourth_moment;
+  MomentAccumulator acc(static_cast<int>(p), mo);
+  long next_block = 0;
+  std::vector<SynthesisFailure> failures;
+  std::vector<double> costs, run_walls;
+  double previous_wall = 0.0;  // wall time of earlier (interrupted) invocations
+  std::string ckpt_file;       // current checkpoint_<block>.bin
+  if (fs::exists(ckpt_path)) {
+    const nlohmann::json j = readJson(ckpt_path);
+    if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuse(ckpt_path);
+    ckpt_file = j.at("moments").get<std::string>();
+    acc = MomentAccumulator::load((dir / ckpt_file).string());
+    if (acc.count() != j.at("vectors").get<std::int64_t>() || acc.dimension() != static_cast<int>(p))
+      throw InputError(ckpt_path.string(), "does not match " + ckpt_file + "; delete the folder to start over");
+    next_block = j.at("next_block").get<long>();
+    for (const auto& f : j.at("failure_list")) failures.push_back(failureFrom(f));
+    costs = j.at("cost_samples").get<std::vector<double>>();
+    run_walls = j.at("run_wall_samples").get<std::vector<double>>();
+    previous_wall = j.at("wall_s").get<double>();
+  }
+  const long n_blocks = (M + B - 1) / B;
+  res.resumed_blocks = next_block;
+  const long first_draw = std::min(M, next_block * B);
+
+  auto writeCheckpoint = [&](double wall_so_far) {
+    const std::string file = "checkpoint_" + std::to_string(next_block) + ".bin";
+    acc.save((dir / file).string());
+    nlohmann::json j{{"fingerprint", fingerprint},
+                     {"assembly", assembly.id},
+                     {"next_block", next_block},
+                     {"blocks", n_blocks},
+                     {"moments", file},
+                     {"vectors", acc.count()},
+                     {"failure_list", nlohmann::json::array()},
+                     {"cost_samples", costs},
+                     {"run_wall_samples", run_walls},
+                     {"wall_s", wall_so_far}};
+    for (const auto& f : failures) j["failure_list"].push_back(failureJson(f));
+    writeFileAtomic(ckpt_path.string(), j.dump() + "\n");
+    if (!ckpt_file.empty() && ckpt_file != file) fs::remove(dir / ckpt_file);
+    ckpt_file = file;
+  };
+
+  // ---- the parallel loop over the remaining draws, reduced in block order
+  const long todo = M - first_draw;
+  const int workers = workerCount(opt.threads, static_cast<std::size_t>(std::max<long>(todo, 1)));
+  std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
+  std::mutex state_m, reduce_m, progress_m;
+  std::map<long, PendingBlock> pending;  // guarded by state_m
+  std::size_t done = static_cast<std::size_t>(first_draw);
+  auto last_ckpt = Clock::now();
+  const auto t_run = Clock::now();
+  if (progress) progress(done, static_cast<std::size_t>(M));
+
+  auto blockSize = [&](long b) { return std::min(B, M - b * B); };
+  // Adds every finished block that is next in order (one reducer at a time; a finished block
+  // whose predecessor is still running waits in `pending`).
+  auto reduce = [&]() {
+    while (true) {
+      std::unique_lock<std::mutex> rl(reduce_m, std::try_to_lock);
+      if (!rl.owns_lock()) return;
+      while (true) {
+        PendingBlock blk;
+        {
+          std::lock_guard<std::mutex> sl(state_m);
+          auto it = pending.find(next_block);
+          if (it == pending.end() || it->second.remaining > 0) break;
+          blk = std::move(it->second);
+          pending.erase(it);
+        }
+        long cols = 0;
+        for (const auto& d : blk.draws)
+          for (const auto& v : d.vectors) cols += v.empty() ? 0 : 1;
+        if (cols > 0) {
+          Eigen::MatrixXd X(static_cast<Eigen::Index>(p), cols);
+          Eigen::Index c = 0;
+          for (const auto& d : blk.draws)
+            for (const auto& v : d.vectors)
+              if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(p));
+          acc.addBlock(X);
+        }
+        for (auto& d : blk.draws) {
+          failures.insert(failures.end(), d.failures.begin(), d.failures.end());
+          costs.insert(costs.end(), d.cost.begin(), d.cost.end());
+          run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
+        }
+        ++next_block;
+        const auto now = Clock::now();
+        if (next_block < n_blocks && std::chrono::duration<double>(now - last_ckpt).count() >= opt.checkpoint_interval_s) {
+          writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
+          last_ckpt = Clock::now();
+        }
+      }
+      rl.unlock();
+      std::lock_guard<std::mutex> sl(state_m);  // a block finished while we were releasing?
+      auto it = pending.find(next_block);
+      if (it == pending.end() || it->second.remaining > 0) return;
+    }
+  };
+
+  parallelFor(static_cast<std::size_t>(todo), opt.threads, [&](std::size_t task, int w) {
+    const long j = first_draw + static_cast<long>(task);
+    auto& sim = sims[static_cast<std::size_t>(w)];
+    if (!sim) sim = std::make_unique<Simulator>(model, study.simulation);
+    DrawOutput out;
+    out.vectors.resize(static_cast<std::size_t>(R));
+    // θ_j, τ_j: a row of the posterior sample.
+    RandomStream draw_rs(seed, kSynthDrawStream, static_cast<std::uint64_t>(j));
+    const std::size_t row = std::min(post.size() - 1, static_cast<std::size_t>(draw_rs.uniform() * static_cast<double>(post.size())));
+    std::vector<double> values = base;
+    for (std::size_t k = 0; k < slots.size(); ++k) values[static_cast<std::size_t>(slots[k])] = post.theta[row][k];
+    const double sigma = 1.0 / std::sqrt(post.tau[row]);
+    // R distinct library roads.
+    RandomStream road_rs(seed, kSynthRoadStream, static_cast<std::uint64_t>(j));
+    std::vector<long> idx;
+    while (static_cast<long>(idx.size()) < R) {
+      const long i = std::min(L - 1, static_cast<long>(road_rs.uniform() * static_cast<double>(L)));
+      if (std::find(idx.begin(), idx.end(), i) == idx.end()) idx.push_back(i);
+    }
+    std::vector<std::shared_ptr<const Road>> roads;
+    std::vector<const Road*> ptrs;
+    std::vector<std::uint64_t> road_seeds;
+    for (long i : idx) {
+      road_seeds.push_back(librarySeed(seed, static_cast<std::uint64_t>(i)));
+      roads.push_back(makeRoad(sc, model->vehicle(), road_seeds.back()));
+      ptrs.push_back(roads.back().get());
+    }
+    std::vector<RunResult> runs;
+    std::string input_error;
+    try {
+      if (branched) {
+        runs = sim->runBranched(values, ptrs, sc);
+      } else {
+        for (const Road* r : ptrs) runs.push_back(sim->run(values, *r, sc));
+      }
+    } catch (const InputError& e) {
+      input_error = e.what();  // a θ the laws reject: every run of the draw fails
+    }
+    for (long r = 0; r < R; ++r) {
+      const auto fail = [&](const std::string& msg) {
+        out.failures.push_back({j, r, idx[static_cast<std::size_t>(r)], road_seeds[static_cast<std::size_t>(r)], msg});
+      };
+      if (!input_error.empty()) {
+        fail(input_error);
+        continue;
+      }
+      const RunResult& run = runs[static_cast<std::size_t>(r)];
+      if (!run.stats.ok) {
+        fail(run.stats.message);
+        continue;
+      }
+      const auto& col = run.trace.column(opt.channel);
+      if (col.size() <= ke) {
+        fail("the run ended before the window");
+        continue;
+      }
+      std::vector<double> v(p);
+      RandomStream noise(seed, kSynthNoiseStream, static_cast<std::uint64_t>(j * R + r));
+      bool finite = true;
+      for (std::size_t k = 0; k < p; ++k) {
+        v[k] = col[kb + k] + (noisy ? sigma * noise.normal() : 0.0);
+        finite = finite && std::isfinite(v[k]);
+      }
+      if (!finite) {
+        fail("non-finite output in the window");
+        continue;
+      }
+      out.vectors[static_cast<std::size_t>(r)] = std::move(v);
+      if (run.stats.sim_s > 0) out.cost.push_back(run.stats.wall_s / run.stats.sim_s);
+      out.run_wall.push_back(run.stats.wall_s);
+    }
+    {
+      std::lock_guard<std::mutex> sl(state_m);
+      const long b = j / B;
+      auto& blk = pending[b];
+      if (blk.draws.empty()) {
+        blk.draws.resize(static_cast<std::size_t>(blockSize(b)));
+        blk.remaining = blockSize(b);
+      }
+      blk.draws[static_cast<std::size_t>(j - b * B)] = std::move(out);
+      --blk.remaining;
+    }
+    reduce();
+    if (progress) {
+      std::lock_guard<std::mutex> pl(progress_m);
+      progress(++done, static_cast<std::size_t>(M));
+    }
+  });
+  reduce();
+  DTWIN_CHECK(next_block == n_blocks, "blocks left unreduced");
+
+  // ---- results
+  const double wall_total = previous_wall + std::chrono::duration<double>(Clock::now() - t_run).count();
+  acc.save(moments_path.string());
+  res.failures = static_cast<long>(failures.size());
+  res.failure_list = failures;
+  res.cost_s_per_s = median(costs);
+  res.median_run_wall_s = median(run_walls);
+  nlohmann::json j;
+  j["program"] = programInfo();
+  j["command"] = opt.command;
+  j["created_utc"] = utcNow();
+  j["study"] = study.path;
+  j["assembly"] = assembly.id;
+  j["label"] = assembly.label();
+  j["posterior"] = {{"path", post.path}, {"rows", post.size()}, {"parameters", names}, {"values_fnv1a64", post_hash},
+                    {"file_fnv1a64", post_text.empty() ? std::string() : hex16(calib::fnv1a64(post_text))}};
+  j["draws"] = M;
+  j["roads_per_draw"] = R;
+  j["road_library"] = L;
+  j["block"] = B;
+  j["simulations"] = M * R;
+  j["vectors"] = acc.count();
+  j["failures"] = res.failures;
+  j["failure_list"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < failures.size() && i < 1000; ++i) j["failure_list"].push_back(failureJson(failures[i]));
+  if (failures.size() > 1000) j["failure_list_truncated"] = true;
+  j["seed"] = seed;
+  j["streams"] = {
+      {"draw", {{"constant", hex16(kSynthDrawStream)},
+                {"rule", "draw j uses posterior row floor(u * rows), u the first uniform of RandomStream(seed, draw, j)"}}},
+      {"road", {{"constant", hex16(kSynthRoadStream)},
+                {"rule", "draw j's library indices: floor(u * library) from RandomStream(seed, road, j), redrawn while one repeats"}}},
+      {"road_library", {{"constant", hex16(kRoadLibraryStream)},
+                        {"rule", "library road i has seed RandomStream(seed, road_library, i).bits() >> 11 (not the field data's stream)"}}},
+      {"noise", {{"constant", hex16(kSynthNoiseStream)},
+                 {"rule", "vector (j, r) adds sigma_j * N(0, 1) from RandomStream(seed, noise, j * roads_per_draw + r) in time order"}}}};
+  j["noise"] = {{"applied", noisy},
+                {"rule", noisy ? "N(0, 1/tau_j) per value, tau_j from the posterior row of draw j"
+                               : "none: the channel is not in N (as twin generate field)"}};
+  j["scenario"] = sc.toJson();
+  j["simulation"] = study.simulation.toJson();
+  j["branched"] = branched;
+  if (branched) j["branch_time_s"] = t_branch;
+  j["channel"] = opt.channel;
+  j["unit"] = unit;
+  j["window_s"] = {times.front(), times.back()};
+  j["samples"] = p;
+  j["output_rate_hz"] = rate;
+  j["moments"] = {{"file", "moments.bin"},
+                  {"format", "MomentAccumulator::save: 8-byte tag DTWMOM01, then doubles (little-endian): magic, version, p, n, "
+                             "track flag, mean (p), packed upper triangle of M2 column by column (p(p+1)/2), [T (p), Q]"},
+                  {"dimension", p},
+                  {"count", acc.count()},
+                  {"track_fourth_moment", opt.track_fourth_moment},
+                  {"accumulation", "fixed blocks of `block` draws, addBlock in (draw, road) order, blocks added in block order"}};
+  j["cost"] = {{"wall_s_per_simulated_s_median", res.cost_s_per_s},
+               {"run_wall_s_median", res.median_run_wall_s},
+               {"runs_measured", costs.size()},
+               {"rule", std::string("median over the successful runs of wall time / simulated time") +
+                            (branched ? "; a branched run carries an even share of its draw's common smooth part" : "")}};
+  j["wall_s"] = wall_total;
+  j["resumed_blocks"] = res.resumed_blocks;
+  j["threads"] = workers;
+  j["fingerprint"] = fingerprint;
+  writeFileAtomic(info_path.string(), j.dump(2) + "\n");
+  // The checkpoint is no longer needed.
+  std::error_code ec;
+  fs::remove(ckpt_path, ec);
+  if (!ckpt_file.empty()) fs::remove(dir / ckpt_file, ec);
+  res.info = std::move(j);
+  res.moments = std::move(acc);
+  res.wall_s = std::chrono::duration<double>(Clock::now() - t_all).count();
+  return res;
+}
+
+}  // namespace dtwin::classify

@@ -1,0 +1,71 @@
+// `twin study STUDY.toml --out DIR`: the whole method end to end, resumable.
+#include <cstdio>
+#include <memory>
+
+#include "classification/study_run.hpp"
+#include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/study.hpp"
+
+namespace dtwin::cli {
+namespace {
+
+struct StudyConfig {
+  std::string study = defaultStudy(), out = "out/study", lab, field;
+  int threads = 0;
+  bool quiet = false;
+};
+
+int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
+  const Study study = loadStudy(cfg.study);
+  classify::StudyRunOptions o;
+  o.threads = cfg.threads;
+  o.lab_file = cfg.lab;
+  o.field_file = cfg.field;
+  o.command = command;
+  ProgressBar bar("study", !cfg.quiet && stderrIsTerminal());
+  std::string current;
+  auto progress = [&](const std::string& stage, std::size_t d, std::size_t t) {
+    if (stage != current) {
+      current = stage;
+      bar.restart(stage);
+    }
+    bar.update(d, t);
+  };
+  auto log = [&](const std::string& line) {
+    if (cfg.quiet) return;
+    bar.finish();
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  };
+  if (!cfg.quiet) std::printf("study %s -> %s (rerun the same command to resume)\n", study.path.c_str(), cfg.out.c_str());
+  const auto s = classify::runStudy(study, o, cfg.out, progress, log);
+  bar.finish();
+  if (!cfg.quiet) {
+    std::printf("wins:");
+    for (auto& [id, n] : s["wins"].items()) std::printf(" %s %d", id.c_str(), n.get<int>());
+    std::printf("\n%s\nstages [s]:", s["recommendation_sentence"].get<std::string>().c_str());
+    for (auto& [k, v] : s["stages"].items()) std::printf(" %s %.1f", k.c_str(), v.get<double>());
+    std::printf("\nsummary: %s/summary.json\n", cfg.out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line) {
+  auto cfg = std::make_shared<StudyConfig>();
+  auto* c = root.add_subcommand("study",
+                                "Run the whole method: lab and field data, calibrate every assembly, synthesise field data, "
+                                "classify, recommend (resumable: rerun the same command to continue)");
+  c->add_option("study", cfg->study, "Study file (TOML); default: the embedded demo study")->capture_default_str();
+  c->add_option("--out", cfg->out, "Study folder (created; a rerun into it resumes)")->capture_default_str();
+  c->add_option("--lab", cfg->lab, "Use these lab data (CSV) instead of generating them");
+  c->add_option("--field", cfg->field, "Use these field records (CSV matrix) instead of generating them");
+  c->add_option("--threads", cfg->threads, "Worker threads (0: all cores; never changes the numbers)")->check(CLI::Range(0, 1024));
+  c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
+  return {c, [cfg, command_line] { return runStudyCommand(*cfg, command_line); }};
+}
+
+}  // namespace dtwin::cli

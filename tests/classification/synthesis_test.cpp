@@ -1,0 +1,201 @@
+// Synthetic field data of a calibrated assembly (classification/synthesis.hpp) on the real twin,
+// at tiny sizes: M3 (the cheapest assembly), a 0.5 s window (p = 501), a handful of draws.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "classification/synthesis.hpp"
+#include "subsystems/errors.hpp"
+
+namespace fs = std::filesystem;
+using namespace dtwin;
+using namespace dtwin::classify;
+
+namespace {
+const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
+
+const Study& demo() {
+  static const Study s = loadStudy(kDemo);
+  return s;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path tempDir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("dtwin_synthesis_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+void writeText(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
+// A small posterior around the demo study's truth (tau ~ 1/18000 N^-2).
+const char* kPosterior =
+    "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
+    "180000,3000,30000,2500,5.5e-05,0\n"
+    "181000,2950,30500,2450,5.6e-05,1\n"
+    "179000,3050,29500,2550,5.4e-05,2\n";
+
+SynthesisOptions tiny(int threads) {
+  SynthesisOptions o;
+  o.draws = 6;
+  o.roads_per_draw = 2;
+  o.road_library = 20;
+  o.block = 2;
+  o.threads = threads;
+  o.seed = 99;
+  o.t_begin_s = 10.0;
+  o.t_end_s = 10.5;
+  return o;
+}
+
+PosteriorSample posterior(const fs::path& dir, const std::string& text = kPosterior) {
+  writeText(dir / "posterior.csv", text);
+  return readPosteriorCsv((dir / "posterior.csv").string());
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    parsePosteriorCsv(text, "post.csv");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+}  // namespace
+
+TEST(Synthesis, LibrarySeedsAreA53BitStreamOfTheirOwn) {
+  EXPECT_EQ(librarySeed(1, 0), librarySeed(1, 0));
+  EXPECT_NE(librarySeed(1, 0), librarySeed(1, 1));
+  EXPECT_NE(librarySeed(1, 0), fieldRoadSeed(1, 1));  // not the field data's roads
+  for (std::uint64_t i = 0; i < 100; ++i) EXPECT_LT(librarySeed(7, i), 1ULL << 53);
+}
+
+TEST(Synthesis, ReadsPosteriorCsv) {
+  const auto ps = parsePosteriorCsv(std::string("\xEF\xBB\xBF") + "a,b,tau,design_index\r\n1,2,0.5,3\r\n\r\n4,5e3,1e-4,0\n", "p.csv");
+  ASSERT_EQ(ps.size(), 2u);
+  EXPECT_EQ(ps.names, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(ps.theta[1], (std::vector<double>{4, 5000}));
+  EXPECT_EQ(ps.tau[1], 1e-4);
+  EXPECT_EQ(ps.design_index[0], 3);
+}
+
+TEST(Synthesis, PosteriorCsvErrorsNameFileLineAndRule) {
+  EXPECT_EQ(errorOf(""), "post.csv: empty file (expected the header <parameters>,tau,design_index)");
+  EXPECT_NE(errorOf("a,b,design_index\n1,2,3\n").find("post.csv:1: header must be"), std::string::npos);
+  EXPECT_NE(errorOf("tau,design_index\n1,2\n").find("post.csv:1: header must be"), std::string::npos);
+  EXPECT_NE(errorOf("a,a,tau,design_index\n").find("post.csv:1: header: column 'a' appears twice"), std::string::npos);
+  EXPECT_EQ(errorOf("a,tau,design_index\n"), "post.csv: no rows after the header (line 1)");
+  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,3\n1,2\n"), "post.csv:3: expected 3 fields, got 2");
+  EXPECT_EQ(errorOf("a,tau,design_index\nx,2,3\n"), "post.csv:2: a: must be a number, got 'x'");
+  EXPECT_EQ(errorOf("a,tau,design_index\nnan,2,3\n"), "post.csv:2: a: must be finite, got nan");
+  EXPECT_EQ(errorOf("a,tau,design_index\n1,0,3\n"), "post.csv:2: tau: must be a finite number > 0 (a precision), got 0");
+  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,-1\n"), "post.csv:2: design_index: must be an integer >= 0, got '-1'");
+  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,1.5\n"), "post.csv:2: design_index: must be an integer >= 0, got '1.5'");
+  EXPECT_THROW(readPosteriorCsv("/nonexistent/posterior.csv"), InputError);
+}
+
+TEST(Synthesis, PosteriorMustNameTheStudysCalibratedParameters) {
+  const fs::path dir = tempDir("names");
+  const auto ps = posterior(dir, "tire.damping,tire.stiffness,suspension.stiffness,suspension.damping,tau,design_index\n"
+                                 "3000,180000,30000,2500,5.5e-05,0\n");
+  try {
+    synthesizeAssembly(demo(), demo().assembly("M3"), ps, tiny(1), (dir / "out").string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("are not the study's calibrated parameters"), std::string::npos) << e.what();
+  }
+}
+
+// 1 and 2 threads: bit-identical moments.bin (fixed blocks, ordered reduction).
+TEST(Synthesis, ThreadCountDoesNotChangeTheMoments) {
+  const fs::path dir = tempDir("threads");
+  const auto ps = posterior(dir);
+  const auto a = demo().assembly("M3");
+  const auto r1 = synthesizeAssembly(demo(), a, ps, tiny(1), (dir / "t1").string());
+  const auto r2 = synthesizeAssembly(demo(), a, ps, tiny(2), (dir / "t2").string());
+  EXPECT_EQ(r1.moments.count(), 12);
+  EXPECT_EQ(r1.moments.dimension(), 501);
+  EXPECT_EQ(r1.failures, 0);
+  EXPECT_GT(r1.cost_s_per_s, 0.0);
+  EXPECT_EQ(r1.fingerprint, r2.fingerprint);
+  const std::string b1 = slurp(dir / "t1" / "moments.bin"), b2 = slurp(dir / "t2" / "moments.bin");
+  ASSERT_FALSE(b1.empty());
+  EXPECT_TRUE(b1 == b2) << "moments.bin differs between 1 and 2 threads";
+  // The mean is a hub force near the static load (a few kN), the variance at least the noise's.
+  EXPECT_GT(r1.moments.mean()[0], 1000.0);
+  EXPECT_GT(r1.moments.covariance()(0, 0), 1.0 / 5.6e-5 * 0.3);
+  EXPECT_FALSE(fs::exists(dir / "t1" / "checkpoint.json"));
+  const auto j = nlohmann::json::parse(slurp(dir / "t1" / "synthesis.json"));
+  EXPECT_EQ(j["vectors"], 12);
+  EXPECT_EQ(j["samples"], 501);
+  EXPECT_EQ(j["fingerprint"], r1.fingerprint);
+  EXPECT_TRUE(j["branched"].get<bool>());
+}
+
+// Interrupted (an exception from the progress callback after a few draws) and rerun: the same
+// moments.bin as an uninterrupted run; a third run reuses the files; other sizes are refused.
+TEST(Synthesis, ResumesAfterAnInterruptionBitIdentically) {
+  const fs::path dir = tempDir("resume");
+  const auto ps = posterior(dir);
+  const auto a = demo().assembly("M3");
+  SynthesisOptions o = tiny(2);
+  o.checkpoint_interval_s = 0.0;  // checkpoint after every block
+  synthesizeAssembly(demo(), a, ps, o, (dir / "full").string());
+  const std::string out = (dir / "cut").string();
+  EXPECT_THROW(synthesizeAssembly(demo(), a, ps, o, out,
+                                  [](std::size_t done, std::size_t) {
+                                    if (done >= 3) throw std::runtime_error("interrupted");
+                                  }),
+               std::runtime_error);
+  ASSERT_TRUE(fs::exists(dir / "cut" / "checkpoint.json"));
+  EXPECT_FALSE(fs::exists(dir / "cut" / "moments.bin"));
+  const auto r = synthesizeAssembly(demo(), a, ps, o, out);
+  EXPECT_GE(r.resumed_blocks, 1);
+  EXPECT_LT(r.resumed_blocks, 3);
+  EXPECT_FALSE(r.reused);
+  EXPECT_TRUE(slurp(dir / "full" / "moments.bin") == slurp(dir / "cut" / "moments.bin")) << "resumed moments differ";
+  EXPECT_FALSE(fs::exists(dir / "cut" / "checkpoint.json"));
+  for (const auto& e : fs::directory_iterator(dir / "cut"))
+    EXPECT_EQ(e.path().filename().string().rfind("checkpoint_", 0), std::string::npos) << e.path();
+  const auto again = synthesizeAssembly(demo(), a, ps, o, out);
+  EXPECT_TRUE(again.reused);
+  EXPECT_EQ(again.moments.count(), r.moments.count());
+  SynthesisOptions other = o;
+  other.draws = 8;
+  EXPECT_THROW(synthesizeAssembly(demo(), a, ps, other, out), InputError);
+}
+
+// A draw whose parameters the model rejects: its runs are failures, counted and listed, and its
+// vectors are left out; the result stays deterministic.
+TEST(Synthesis, FailedRunsAreCountedAndSkipped) {
+  const fs::path dir = tempDir("failures");
+  const auto ps = posterior(dir, "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
+                                 "180000,3000,30000,2500,5.5e-05,0\n"
+                                 "-1,3000,30000,2500,5.5e-05,1\n");
+  const auto a = demo().assembly("M3");
+  const auto r1 = synthesizeAssembly(demo(), a, ps, tiny(2), (dir / "a").string());
+  const auto r2 = synthesizeAssembly(demo(), a, ps, tiny(1), (dir / "b").string());
+  EXPECT_GT(r1.failures, 0);
+  EXPECT_LT(r1.failures, 12);
+  EXPECT_EQ(r1.failures % 2, 0);  // a rejected θ fails both roads of its draw
+  EXPECT_EQ(r1.moments.count() + r1.failures, 12);
+  ASSERT_EQ(r1.failure_list.size(), static_cast<std::size_t>(r1.failures));
+  EXPECT_NE(r1.failure_list[0].message.find("stiffness"), std::string::npos) << r1.failure_list[0].message;
+  EXPECT_TRUE(slurp(dir / "a" / "moments.bin") == slurp(dir / "b" / "moments.bin"));
+  const auto j = nlohmann::json::parse(slurp(dir / "a" / "synthesis.json"));
+  EXPECT_EQ(j["failures"], r1.failures);
+  EXPECT_EQ(j["failure_list"].size(), static_cast<std::size_t>(r1.failures));
+}

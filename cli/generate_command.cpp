@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "subsystems/errors.hpp"
 #include "twin/generate.hpp"
 #include "twin/provenance.hpp"
@@ -30,33 +31,6 @@ struct GenerateConfig {
   CLI::Option* seed_opt = nullptr;
 };
 
-/// A progress line on stderr, only when stderr is a terminal and --quiet is not given.
-class ProgressLine {
- public:
-  ProgressLine(const char* what, const char* unit, bool quiet)
-      : what_(what), unit_(unit), on_(!quiet && stderrIsTerminal()), t0_(std::chrono::steady_clock::now()) {}
-  ~ProgressLine() {
-    if (on_ && printed_) std::fputc('\n', stderr);
-  }
-  ProgressFn fn() {
-    if (!on_) return {};
-    return [this](std::size_t done, std::size_t total) {
-      const auto now = std::chrono::steady_clock::now();
-      if (done != total && printed_ && now - last_ < std::chrono::milliseconds(200)) return;
-      last_ = now;
-      printed_ = true;
-      const double s = std::chrono::duration<double>(now - t0_).count();
-      std::fprintf(stderr, "\rtwin generate %s: %zu/%zu %s, %.1f s", what_, done, total, unit_, s);
-      std::fflush(stderr);
-    };
-  }
-
- private:
-  const char* what_;
-  const char* unit_;
-  bool on_, printed_ = false;
-  std::chrono::steady_clock::time_point t0_, last_;
-};
 
 AssemblySpec chooseAssembly(const Study& study, const std::string& id) {
   if (!id.empty()) return study.assembly(id);
@@ -87,8 +61,8 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   opt.command = command;
   LabResult r;
   {
-    ProgressLine line("lab", "runs", cfg.quiet);
-    r = generateLab(study, a, opt, line.fn());
+    ProgressBar bar("generate lab", !cfg.quiet && stderrIsTerminal());
+    r = generateLab(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
   writeLabCsv(cfg.out, r.data);
   writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
@@ -123,8 +97,8 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
   opt.command = command;
   FieldResult r;
   {
-    ProgressLine line("field", "runs", cfg.quiet);
-    r = generateField(study, a, opt, line.fn());
+    ProgressBar bar("generate field", !cfg.quiet && stderrIsTerminal());
+    r = generateField(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
   writeFieldCsv(cfg.out, r.data);
   writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");

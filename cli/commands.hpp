@@ -34,5 +34,7 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
 CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line);
 /// `twin study`: the whole method end to end, resumable (classification/study_run.hpp).
 CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line);
+/// `twin report`: a self-contained HTML report of a study folder (classification/report.hpp).
+CommandHandle addReportCommand(CLI::App& root, const std::string& command_line);
 
 }  // namespace dtwin::cli

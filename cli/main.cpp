@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   commands.push_back(addSynthesizeCommand(app, command));
   commands.push_back(addClassifyCommand(app, command));
   commands.push_back(addStudyCommand(app, command));
+  commands.push_back(addReportCommand(app, command));
 
   try {
     app.parse(argc, argv);

@@ -5,7 +5,8 @@ set -euo pipefail
 PKGS=(build-essential cmake pkg-config git
       libsimbody-dev libeigen3-dev libnlopt-cxx-dev libnlopt-dev
       googletest libgtest-dev libgmock-dev
-      libcli11-dev libtomlplusplus-dev nlohmann-json3-dev)
+      libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+      gnuplot-nox chromium)   # gnuplot: `twin report`; chromium: its rendering test
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

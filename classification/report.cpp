@@ -1,0 +1,699 @@
+#include "classification/report.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "calibration/calibrate.hpp"
+#include "classification/synthesis.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/measurement.hpp"
+#include "twin/provenance.hpp"
+#include "twin/study.hpp"
+#include "twin/trace.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace dtwin::classify {
+
+std::string htmlEscape(const std::string& text) {
+  std::string s;
+  s.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': s += "&amp;"; break;
+      case '<': s += "&lt;"; break;
+      case '>': s += "&gt;"; break;
+      case '"': s += "&quot;"; break;
+      case '\'': s += "&#39;"; break;
+      default: s += c;
+    }
+  }
+  return s;
+}
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw InputError(p.string(), "cannot be read (is this a `twin study` folder?)");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+json readJson(const fs::path& p) {
+  const std::string text = slurp(p);
+  try {
+    return json::parse(text);
+  } catch (const std::exception& e) {
+    throw InputError(p.string(), std::string("is not valid JSON: ") + e.what());
+  }
+}
+
+json readJsonIfExists(const fs::path& p) { return fs::exists(p) ? readJson(p) : json(); }
+
+std::string num(double v, int digits = 6) {
+  if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+std::string full(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+/// A JSON value as short text (strings without quotes).
+std::string text(const json& j) {
+  if (j.is_null()) return "–";
+  if (j.is_string()) return j.get<std::string>();
+  if (j.is_number_float()) return num(j.get<double>());
+  return j.dump();
+}
+
+/// gnuplot single-quoted string ('' stands for one quote).
+std::string gq(const std::string& s) {
+  std::string r = "'";
+  for (char c : s) {
+    if (c == '\'') r += "''";
+    else if (c == '\n' || c == '\r') r += ' ';
+    else r += c;
+  }
+  return r + "'";
+}
+
+std::string shq(const std::string& s) {
+  std::string r = "'";
+  for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return r + "'";
+}
+
+std::string findOnPath(const std::string& exe) {
+  const char* path = std::getenv("PATH");
+  std::stringstream ss(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    if (dir.empty()) continue;
+    const fs::path p = fs::path(dir) / exe;
+    if (::access(p.c_str(), X_OK) == 0 && !fs::is_directory(p)) return p.string();
+  }
+  return "";
+}
+
+/// Quantile of type 7 of sorted values.
+double quantile(const std::vector<double>& sorted, double p) {
+  if (sorted.empty()) return std::nan("");
+  const double h = (static_cast<double>(sorted.size()) - 1.0) * p;
+  const auto lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+}
+
+/// Quantile p of the equal-weight mixture of N(mean_k, sd_k²) (bisection on its CDF).
+double mixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p) {
+  double lo = mean[0] - 10 * sd[0], hi = mean[0] + 10 * sd[0];
+  for (std::size_t k = 0; k < mean.size(); ++k) {
+    lo = std::min(lo, mean[k] - 10 * sd[k]);
+    hi = std::max(hi, mean[k] + 10 * sd[k]);
+  }
+  for (int it = 0; it < 200 && hi - lo > 1e-12 * (std::abs(lo) + std::abs(hi) + 1e-300); ++it) {
+    const double mid = 0.5 * (lo + hi);
+    double f = 0.0;
+    for (std::size_t k = 0; k < mean.size(); ++k) f += 0.5 * std::erfc(-(mid - mean[k]) / (sd[k] * std::sqrt(2.0)));
+    (f / static_cast<double>(mean.size()) < p ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+std::vector<std::string> splitCsv(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::stringstream ss(line);
+  while (std::getline(ss, cell, ',')) out.push_back(cell);
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+/// Runs gnuplot on scripts and returns its SVG output, ready to inline.
+class Gnuplot {
+ public:
+  explicit Gnuplot(std::string exe) : exe_(std::move(exe)) {
+    std::string templ = (fs::temp_directory_path() / "dtwin_report_XXXXXX").string();
+    if (!::mkdtemp(templ.data())) throw InputError(templ, "cannot create a temporary folder");
+    dir_ = templ;
+  }
+  ~Gnuplot() {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  Gnuplot(const Gnuplot&) = delete;
+  Gnuplot& operator=(const Gnuplot&) = delete;
+
+  /// Writes a data file; returns its path as a gnuplot string.
+  std::string data(const std::string& content) {
+    const fs::path p = dir_ / ("data" + std::to_string(++files_) + ".dat");
+    std::ofstream(p, std::ios::binary) << content;
+    return gq(p.string());
+  }
+
+  /// Draws `body` (gnuplot commands) on a W x H svg canvas; returns the <svg> element.
+  std::string plot(const std::string& body, int w, int h, const std::string& title) {
+    const int n = ++plots_;
+    const fs::path svg = dir_ / ("plot" + std::to_string(n) + ".svg");
+    const fs::path script = dir_ / ("plot" + std::to_string(n) + ".gp");
+    const fs::path err = dir_ / ("plot" + std::to_string(n) + ".err");
+    std::ofstream(script, std::ios::binary)
+        << "set encoding utf8\n"
+        << "set terminal svg size " << w << "," << h << " dynamic enhanced font 'sans,10' background rgb 'white'\n"
+        << "set output " << gq(svg.string()) << "\n"
+        << body << "\nunset multiplot\nunset output\n";
+    const std::string cmd = shq(exe_) + " " + shq(script.string()) + " >" + shq(err.string()) + " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::string messages = fs::exists(err) ? slurp(err) : "";
+    while (!messages.empty() && (messages.back() == '\n' || messages.back() == ' ')) messages.pop_back();
+    if (rc != 0 || !fs::exists(svg) || fs::file_size(svg) == 0) {
+      std::string first = messages.substr(0, 400);
+      std::replace(first.begin(), first.end(), '\n', ' ');
+      throw std::runtime_error("gnuplot failed on plot '" + title + "' (exit " + std::to_string(rc) + "): " + first);
+    }
+    if (!messages.empty()) warnings.push_back("gnuplot, plot '" + title + "': " + messages);
+    return clean(slurp(svg), "p" + std::to_string(n) + "_", title);
+  }
+
+  int count() const { return plots_; }
+  std::vector<std::string> warnings;
+
+ private:
+  /// Drops the XML prolog and gnuplot's own title/desc, prefixes every id (several SVGs share a
+  /// page: ids must be unique) and names the figure.
+  static std::string clean(std::string s, const std::string& prefix, const std::string& title) {
+    const auto start = s.find("<svg");
+    if (start == std::string::npos) throw std::runtime_error("gnuplot wrote no <svg> element for plot '" + title + "'");
+    s = s.substr(start);
+    s = std::regex_replace(s, std::regex("<desc>[^<]*</desc>\\s*"), "");
+    const auto t = s.find("<title>");
+    const auto te = s.find("</title>", t == std::string::npos ? 0 : t);
+    if (t != std::string::npos && te != std::string::npos) s.replace(t, te + 8 - t, "<title>" + htmlEscape(title) + "</title>");
+    std::set<std::string> ids;
+    const std::regex id_re("\\bid=(['\"])([^'\"]+)\\1");
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), id_re); it != std::sregex_iterator(); ++it) ids.insert((*it)[2]);
+    for (const auto& id : ids) {
+      for (const char* q : {"'", "\""}) {
+        const std::string qs(q);
+        for (const std::string& pre : {std::string("id=") + qs, qs + "#"}) {
+          const std::string from = pre + id + qs, to = pre + prefix + id + qs;
+          for (std::size_t pos = 0; (pos = s.find(from, pos)) != std::string::npos; pos += to.size()) s.replace(pos, from.size(), to);
+        }
+      }
+      const std::string from = "url(#" + id + ")", to = "url(#" + prefix + id + ")";
+      for (std::size_t pos = 0; (pos = s.find(from, pos)) != std::string::npos; pos += to.size()) s.replace(pos, from.size(), to);
+    }
+    s.insert(4, " class=\"plot\" role=\"img\" aria-label=\"" + htmlEscape(title) + "\"");
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    return s;
+  }
+
+  std::string exe_;
+  fs::path dir_;
+  int files_ = 0, plots_ = 0;
+};
+
+const char* kCss = R"(body{font-family:sans-serif;margin:0 auto;max-width:1100px;padding:1em 2em;color:#222;background:#fff;line-height:1.4}
+h1{font-size:1.6em;border-bottom:2px solid #446;padding-bottom:.2em}
+h2{font-size:1.3em;margin-top:2em;border-bottom:1px solid #bbb}
+h3{font-size:1.1em;margin-top:1.5em}
+table{border-collapse:collapse;margin:.5em 0 1em 0;font-size:.9em}
+th,td{border:1px solid #ccc;padding:.2em .6em;text-align:left;vertical-align:top}
+th{background:#eef}
+td.n{text-align:right;font-variant-numeric:tabular-nums}
+figure{margin:1em 0}
+figcaption{font-size:.9em;color:#444;max-width:900px}
+svg.plot{width:100%;max-width:900px;height:auto;display:block}
+.rec{font-weight:bold;background:#efe;border:1px solid #9c9;padding:.5em 1em}
+.warn{background:#fee;border:1px solid #c99;padding:.5em 1em}
+code{font-size:.95em;word-break:break-all})";
+
+struct Prediction {
+  std::string channel;
+  std::vector<double> times;                 ///< distinct lab times of the channel
+  std::vector<double> lo, med, hi, plo, phi; ///< η quantiles; posterior predictive (with noise) quantiles
+};
+
+}  // namespace
+
+json writeStudyReport(const std::string& study_dir, const std::string& out_html, const std::string& command,
+                      const ReportOptions& options) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const std::string gnuplot_exe = findOnPath("gnuplot");
+  if (gnuplot_exe.empty())
+    throw InputError("gnuplot", "not found on PATH; `twin report` draws its plots with it: install the Debian package gnuplot-nox "
+                                "(apt-get install gnuplot-nox)");
+  if (options.draws < 2) throw InputError("--draws", "must be >= 2, got " + std::to_string(options.draws));
+  const fs::path dir(study_dir);
+  if (!fs::is_directory(dir)) throw InputError(study_dir, "is not a folder");
+  const json record = readJson(dir / "study.json");
+  const json summary = readJson(dir / "summary.json");
+  const json csum = readJson(dir / "classification" / "summary.json");
+  std::vector<std::string> warnings;
+
+  // ---- the study file (for the lab scenario and the assemblies)
+  std::string study_path = record.value("study", summary.value("study", std::string()));
+  if (study_path.empty() || !fs::exists(study_path))
+    throw InputError((dir / "study.json").string(), "names the study file '" + study_path + "', which does not exist");
+  const Study study = loadStudy(study_path);
+  if (record.contains("fingerprint") && record["fingerprint"].value("study_file", "") != std::to_string(calib::fnv1a64(slurp(study_path))))
+    warnings.push_back("the study file " + study_path + " changed after the study was run: the predictive bands use its current content");
+  std::string lab_path = summary.contains("paths") ? summary["paths"].value("lab", "") : "";
+  if (lab_path.empty() || !fs::exists(lab_path)) lab_path = (dir / "lab" / "lab.csv").string();
+  const LabData lab = readLabCsv(lab_path);
+
+  std::vector<AssemblySpec> assemblies;
+  for (const auto& a : study.assemblies())
+    if (fs::exists(dir / "calibration" / a.id / "posterior.csv")) assemblies.push_back(a);
+  if (assemblies.empty()) throw InputError((dir / "calibration").string(), "holds no <id>/posterior.csv of the study's assemblies");
+
+  // ---- 1. posterior predictive at the lab times
+  std::vector<PosteriorSample> posts;
+  std::vector<std::unique_ptr<calib::LabObjective>> objectives;
+  std::vector<std::vector<std::size_t>> rows(assemblies.size());
+  for (std::size_t m = 0; m < assemblies.size(); ++m) {
+    posts.push_back(readPosteriorCsv((dir / "calibration" / assemblies[m].id / "posterior.csv").string()));
+    objectives.push_back(std::make_unique<calib::LabObjective>(study, assemblies[m], lab, "lab"));
+    if (objectives.back()->names() != posts.back().names)
+      throw InputError(posts.back().path, "its parameter columns are not the study's calibrated parameters");
+    const std::size_t S = posts.back().size(), K = std::min<std::size_t>(S, static_cast<std::size_t>(options.draws));
+    for (std::size_t k = 0; k < K; ++k) rows[m].push_back(static_cast<std::size_t>((static_cast<double>(k) + 0.5) * static_cast<double>(S) / static_cast<double>(K)));
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> jobs;
+  for (std::size_t m = 0; m < assemblies.size(); ++m)
+    for (std::size_t k = 0; k < rows[m].size(); ++k) jobs.emplace_back(m, k);
+  std::vector<std::vector<std::vector<double>>> preds(assemblies.size());
+  for (std::size_t m = 0; m < assemblies.size(); ++m) preds[m].resize(rows[m].size());
+  {
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t j; (j = next++) < jobs.size();) {
+        const auto [m, k] = jobs[j];
+        try {
+          preds[m][k] = objectives[m]->predict(posts[m].theta[rows[m][k]]);
+        } catch (const std::exception&) {
+          preds[m][k].clear();  // counted as a failure below
+        }
+      }
+    };
+    unsigned n = options.threads > 0 ? static_cast<unsigned>(options.threads) : std::max(1u, std::thread::hardware_concurrency());
+    n = std::min<unsigned>(n, static_cast<unsigned>(std::max<std::size_t>(1, jobs.size())));
+    std::vector<std::thread> pool;
+    for (unsigned i = 1; i < n; ++i) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
+  }
+
+  const auto channels = lab.channels();
+  std::vector<std::vector<Prediction>> bands(assemblies.size());
+  json failures = json::object(), noise_sd = json::object();
+  std::vector<double> sigma_median(assemblies.size());
+  for (std::size_t m = 0; m < assemblies.size(); ++m) {
+    std::vector<std::size_t> ok;
+    for (std::size_t k = 0; k < rows[m].size(); ++k)
+      if (preds[m][k].size() == lab.records.size()) ok.push_back(k);
+    failures[assemblies[m].id] = rows[m].size() - ok.size();
+    if (ok.empty()) {
+      warnings.push_back(assemblies[m].id + ": every posterior draw failed to simulate the lab scenario; no predictive band");
+      continue;
+    }
+    std::vector<double> sd;
+    for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(posts[m].tau[rows[m][k]]));
+    std::vector<double> sd_sorted = sd;
+    std::sort(sd_sorted.begin(), sd_sorted.end());
+    sigma_median[m] = quantile(sd_sorted, 0.5);
+    noise_sd[assemblies[m].id] = sigma_median[m];
+    for (const auto& ch : channels) {
+      Prediction p;
+      p.channel = ch;
+      for (double t : lab.times(ch)) {
+        std::size_t i = 0;  // the first record at (ch, t): every repetition has the same prediction
+        while (!(lab.records[i].channel == ch && lab.records[i].time_s == t)) ++i;
+        std::vector<double> eta;
+        for (std::size_t k : ok) eta.push_back(preds[m][k][i]);
+        const std::vector<double> eta_unsorted = eta;
+        std::sort(eta.begin(), eta.end());
+        p.times.push_back(t);
+        p.lo.push_back(quantile(eta, 0.025));
+        p.med.push_back(quantile(eta, 0.5));
+        p.hi.push_back(quantile(eta, 0.975));
+        p.plo.push_back(mixtureQuantile(eta_unsorted, sd, 0.025));
+        p.phi.push_back(mixtureQuantile(eta_unsorted, sd, 0.975));
+      }
+      bands[m].push_back(std::move(p));
+    }
+  }
+
+  // ---- plots
+  Gnuplot gp(gnuplot_exe);
+  json plots = json::array();
+  std::ostringstream body;
+  auto figure = [&](const std::string& svg, const std::string& caption) {
+    body << "<figure>\n" << svg << "\n<figcaption>" << caption << "</figcaption>\n</figure>\n";
+  };
+
+  body << "<h2 id=\"lab\">1. Lab data against the posterior predictive bands</h2>\n"
+       << "<p>For each assembly, " << options.draws
+       << " evenly spaced rows of its posterior sample (rows ⌊(k + ½)·S / " << options.draws
+       << "⌋, k = 0 … " << options.draws - 1
+       << ") are simulated on the lab scenario and predicted at the lab times. Dark band: 2.5–97.5 % of the predictions "
+          "η(θ) (parameter uncertainty); line: their median; light band: 2.5–97.5 % of the posterior predictive "
+          "distribution, the predictions plus measurement noise N(0, 1/τ) of each draw (noise sd = 1/√τ). Points: the "
+          "measured values of every repetition. The lower panel shows the same relative to the median prediction.</p>\n";
+  for (std::size_t m = 0; m < assemblies.size(); ++m) {
+    const auto& a = assemblies[m];
+    for (const auto& p : bands[m]) {
+      std::ostringstream band, pts;
+      for (std::size_t i = 0; i < p.times.size(); ++i)
+        band << full(p.times[i]) << ' ' << full(p.lo[i]) << ' ' << full(p.med[i]) << ' ' << full(p.hi[i]) << ' '
+             << full(p.plo[i]) << ' ' << full(p.phi[i]) << '\n';
+      for (const auto& r : lab.records) {
+        if (r.channel != p.channel) continue;
+        const std::size_t i = static_cast<std::size_t>(std::find(p.times.begin(), p.times.end(), r.time_s) - p.times.begin());
+        pts << full(r.time_s) << ' ' << full(r.value) << ' ' << full(r.value - p.med[i]) << '\n';
+      }
+      const std::string fb = gp.data(band.str()), fp = gp.data(pts.str());
+      const std::string title = a.id + " (" + a.label() + "): " + p.channel;
+      std::ostringstream s;
+      s << "set multiplot layout 2,1 title " << gq(title) << " noenhanced\n"
+        << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(p.channel) << " noenhanced\n"
+        << "set style fill transparent solid 0.25 noborder\n"
+        << "plot " << fb << " using 1:5:6 with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
+        << fb << " using 1:2:4 with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
+        << fb << " using 1:3 with linespoints lw 1.5 pt 1 lc rgb '#103070' title 'median η(θ)', "
+        << fp << " using 1:2 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n"
+        << "set ylabel " << gq("measured − median [" + p.channel + "]") << " noenhanced\n"
+        << "plot " << fb << " using 1:($5-$3):($6-$3) with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
+        << fb << " using 1:($2-$3):($4-$3) with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
+        << fb << " using 1:($3-$3) with lines lc rgb '#103070' title 'median η(θ)', "
+        << fp << " using 1:3 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n";
+      const std::string name = "predictive_" + a.id + "_" + p.channel;
+      figure(gp.plot(s.str(), 900, 600, title),
+             htmlEscape(a.id + ": " + std::to_string(rows[m].size() - failures[a.id].get<std::size_t>()) + " of " +
+                        std::to_string(rows[m].size()) + " draws simulated; noise sd 1/√τ = " + num(sigma_median[m], 4) +
+                        " (posterior median over the draws, in the channel's unit)."));
+      plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", p.channel}});
+    }
+  }
+
+  // ---- 2. posterior histograms
+  body << "<h2 id=\"posterior\">2. Posterior of θ and τ</h2>\n<p>Histograms (40 bins) of every kept Gibbs iteration of "
+          "<code>calibration/&lt;id&gt;/posterior.csv</code>; θ takes only design-point values, so bars may be sparse. "
+          "The red line marks the truth when the study knows it and it lies in the plotted range.</p>\n";
+  for (std::size_t m = 0; m < assemblies.size(); ++m) {
+    const auto& a = assemblies[m];
+    const auto& post = posts[m];
+    std::vector<std::string> names = post.names;
+    names.push_back("tau");
+    const int np = static_cast<int>(names.size()), cols = np <= 3 ? np : 3, rws = (np + cols - 1) / cols;
+    std::ostringstream s;
+    s << "set multiplot layout " << rws << "," << cols << " title " << gq(a.id + " (" + a.label() + "): posterior, " +
+                                                                           std::to_string(post.size()) + " iterations")
+      << " noenhanced\nset style fill solid 0.6 border lc rgb '#333333'\nset ylabel 'count'\nset format x '%.5g'\n";
+    for (int j = 0; j < np; ++j) {
+      std::vector<double> v;
+      if (j < np - 1)
+        for (const auto& row : post.theta) v.push_back(row[static_cast<std::size_t>(j)]);
+      else
+        v = post.tau;
+      const auto [mn_it, mx_it] = std::minmax_element(v.begin(), v.end());
+      double lo = *mn_it, hi = *mx_it;
+      if (hi - lo <= 1e-12 * std::max(1.0, std::abs(lo))) {
+        const double d = std::max(std::abs(lo) * 1e-3, 1e-12);
+        lo -= d;
+        hi += d;
+      }
+      const int nb = 40;
+      const double w = (hi - lo) / nb;
+      std::vector<long> c(nb, 0);
+      for (double x : v) ++c[static_cast<std::size_t>(std::clamp(static_cast<int>((x - lo) / w), 0, nb - 1))];
+      std::ostringstream d;
+      for (int b = 0; b < nb; ++b) d << full(lo + (b + 0.5) * w) << ' ' << c[static_cast<std::size_t>(b)] << '\n';
+      const std::string f = gp.data(d.str());
+      s << "unset arrow\nset xrange [" << full(lo) << ":" << full(hi) << "]\nset boxwidth " << full(w) << " absolute\n"
+        << "set xtics (" << full(lo + 0.1 * (hi - lo)) << ", " << full(lo + 0.5 * (hi - lo)) << ", " << full(lo + 0.9 * (hi - lo))
+        << ")\n";
+      for (const auto& cp : study.calibrated)
+        if (j < np - 1 && cp.name == names[static_cast<std::size_t>(j)] && cp.truth && *cp.truth >= lo && *cp.truth <= hi)
+          s << "set arrow from " << full(*cp.truth) << ", graph 0 to " << full(*cp.truth) << ", graph 1 nohead lw 2 lc rgb '#c03020'\n";
+      s << "set xlabel " << gq(names[static_cast<std::size_t>(j)]) << " noenhanced\n"
+        << "plot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle\n";
+    }
+    figure(gp.plot(s.str(), 900, 300 * rws, a.id + " posterior histograms"),
+           htmlEscape(a.id + ": θ = (" + [&] {
+             std::string r;
+             for (std::size_t j = 0; j < post.names.size(); ++j) r += (j ? ", " : "") + post.names[j];
+             return r;
+           }() + "), τ the error precision [1/unit²]; noise sd = 1/√τ."));
+    plots.push_back({{"name", "posterior_" + a.id}, {"kind", "posterior_histograms"}, {"assembly", a.id}});
+  }
+
+  // ---- 3. selection boxplot and wins
+  std::vector<std::string> ids;
+  for (const auto& id : csum.value("assemblies", json::array())) ids.push_back(id.get<std::string>());
+  if (ids.empty())
+    for (auto& [id, n] : csum.value("wins", json::object()).items()) ids.push_back(id);
+  body << "<h2 id=\"selection\">3. Field-record selection</h2>\n";
+  {
+    const fs::path rec_path = dir / "classification" / "records.csv";
+    std::ifstream in(rec_path);
+    if (!in) throw InputError(rec_path.string(), "cannot be read (is this a `twin study` folder?)");
+    std::string line;
+    std::getline(in, line);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto header = splitCsv(line);
+    std::vector<std::size_t> col;
+    for (const auto& id : ids) {
+      const auto it = std::find(header.begin(), header.end(), "prob_" + id);
+      if (it == header.end()) throw InputError(rec_path.string(), "has no column prob_" + id);
+      col.push_back(static_cast<std::size_t>(it - header.begin()));
+    }
+    std::ostringstream d;
+    std::size_t n_rec = 0, lineno = 1;
+    while (std::getline(in, line)) {
+      ++lineno;
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (line.empty()) continue;
+      const auto cells = splitCsv(line);
+      for (std::size_t c = 0; c < col.size(); ++c) {
+        char* end = nullptr;
+        const std::string cell = col[c] < cells.size() ? cells[col[c]] : "";
+        const double v = std::strtod(cell.c_str(), &end);
+        if (cell.empty() || *end != '\0' || !std::isfinite(v))
+          throw InputError(rec_path.string() + ":" + std::to_string(lineno), "prob_" + ids[c] + " is not a number: '" + cell + "'");
+        d << (c ? " " : "") << full(v);
+      }
+      d << '\n';
+      ++n_rec;
+    }
+    if (n_rec == 0) throw InputError(rec_path.string(), "has no records");
+    const std::string f = gp.data(d.str());
+    std::ostringstream s, xt;
+    for (std::size_t i = 0; i < ids.size(); ++i) xt << (i ? ", " : "") << gq(ids[i]) << " " << i + 1;
+    s << "set title " << gq("P(M | record) over " + std::to_string(n_rec) + " field records") << " noenhanced\n"
+      << "set xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:" << ids.size() + 0.6 << "]\nset yrange [-0.05:1.05]\n"
+      << "set ylabel 'posterior probability'\nset grid ytics\nset style fill solid 0.4 border -1\n"
+      << "set style boxplot outliers pointtype 7\nset pointsize 0.4\nset boxwidth 0.5\nplot ";
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      s << (i ? ", " : "") << f << " using (" << i + 1 << "):" << i + 1 << " with boxplot lc " << i + 1 << " notitle";
+    s << "\n";
+    figure(gp.plot(s.str(), 900, 400, "selection boxplot"),
+           "Per assembly, the distribution over the field records of its posterior probability P(M<sub>m</sub> | y<sub>r</sub>) "
+           "(<code>classification/records.csv</code>, columns <code>prob_&lt;id&gt;</code>): box = quartiles, line = median, "
+           "whiskers 1.5 IQR, points = outliers.");
+    plots.push_back({{"name", "selection_boxplot"}, {"kind", "boxplot"}});
+  }
+  const json wins = summary.value("wins", csum.value("wins", json::object()));
+  {
+    std::ostringstream d, xt;
+    long total = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const long w = wins.value(ids[i], 0L);
+      total += w;
+      d << i + 1 << ' ' << w << '\n';
+      xt << (i ? ", " : "") << gq(ids[i]) << " " << i + 1;
+    }
+    const std::string f = gp.data(d.str());
+    std::ostringstream s;
+    s << "set title " << gq("records won (" + std::to_string(total) + " records)") << " noenhanced\n"
+      << "set xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:" << ids.size() + 0.6 << "]\nset yrange [0:"
+      << std::max<long>(1, total) * 1.12 << "]\nset ylabel 'records won'\nset grid ytics\nset style fill solid 0.6 border -1\n"
+      << "set boxwidth 0.5\nplot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle, " << f
+      << " using 1:2:(sprintf('%d', $2)) with labels offset 0,0.8 notitle\n";
+    figure(gp.plot(s.str(), 900, 350, "win counts"),
+           "Records won by each assembly (largest posterior probability; <code>summary.json</code> <code>wins</code>).");
+    plots.push_back({{"name", "wins"}, {"kind", "wins"}});
+  }
+
+  // ---- 4. evidence vs cost
+  const json L = csum.value("total_log_likelihood", json::object()), cost = csum.value("cost_s_per_s", json::object());
+  const std::string recommended = summary.value("recommended", csum.value("recommended", std::string()));
+  const std::string sentence = summary.value("recommendation_sentence", csum.value("recommendation_sentence", std::string()));
+  body << "<h2 id=\"evidence\">4. Evidence against cost</h2>\n<p class=\"rec\">" << htmlEscape(sentence) << "</p>\n";
+  {
+    std::ostringstream d, r;
+    double best = -INFINITY;
+    for (const auto& id : ids)
+      if (L.contains(id)) best = std::max(best, L[id].get<double>());
+    int n = 0;
+    for (const auto& id : ids) {
+      if (!L.contains(id) || !cost.contains(id)) continue;
+      ++n;
+      (id == recommended ? r : d) << full(cost[id].get<double>()) << ' ' << full(L[id].get<double>()) << " \"" << id << "\"\n";
+    }
+    if (n > 0) {
+      if (d.str().empty()) d << r.str();
+      if (r.str().empty()) r << d.str();
+      const std::string fd = gp.data(d.str()), fr = gp.data(r.str());
+      std::ostringstream s;
+      s << "set title 'evidence against cost'\nset xlabel 'cost [wall s per simulated s]'\nset ylabel 'total log likelihood L_m'\n"
+        << "set grid\nset offsets graph 0.1, graph 0.1, graph 0.1, graph 0.1\nset key bottom right\n"
+        << "plot " << fd << " using 1:2 with points pt 7 ps 1.2 lc rgb '#4a7fc0' title 'assemblies', " << fr
+        << " using 1:2 with points pt 5 ps 1.6 lc rgb '#2a9a3a' title " << gq("recommended: " + recommended) << " noenhanced, "
+        << fd << " using 1:2:3 with labels offset 1.5,0.8 noenhanced notitle, " << fr
+        << " using 1:2:3 with labels offset 1.5,0.8 noenhanced notitle\n";
+      figure(gp.plot(s.str(), 900, 450, "evidence against cost"),
+             "Joint log likelihood L<sub>m</sub> = Σ<sub>r</sub> ln N(y<sub>r</sub>; μ<sub>m</sub>, Σ<sub>m</sub>) of the field "
+             "records against the median wall time per simulated second of each assembly's synthesis runs "
+             "(<code>classification/summary.json</code>).");
+      plots.push_back({{"name", "evidence_cost"}, {"kind", "evidence_cost"}});
+    } else {
+      warnings.push_back("classification/summary.json has no total_log_likelihood/cost_s_per_s: no evidence plot");
+    }
+    const json two = csum.contains("recommendation") ? csum["recommendation"].value("two_ln_b_vs_best", json::object()) : json::object();
+    body << "<table>\n<tr><th>assembly</th><th>label</th><th>total log likelihood</th><th>2 (L<sub>best</sub> − L<sub>m</sub>)</th>"
+            "<th>cost [s/s]</th><th>records won</th><th>recommended</th></tr>\n";
+    for (const auto& id : ids) {
+      std::string label;
+      for (const auto& a : assemblies)
+        if (a.id == id) label = a.label();
+      body << "<tr><td>" << htmlEscape(id) << "</td><td>" << htmlEscape(label) << "</td><td class=\"n\">"
+           << (L.contains(id) ? num(L[id].get<double>(), 10) : "–") << "</td><td class=\"n\">"
+           << (two.contains(id) ? num(two[id].get<double>()) : (L.contains(id) ? num(2 * (best - L[id].get<double>())) : "–"))
+           << "</td><td class=\"n\">" << (cost.contains(id) ? num(cost[id].get<double>(), 4) : "–") << "</td><td class=\"n\">"
+           << wins.value(id, 0L) << "</td><td>" << (id == recommended ? "yes" : "") << "</td></tr>\n";
+    }
+    body << "</table>\n";
+    if (csum.contains("recommendation"))
+      body << "<p>Rule: " << htmlEscape(csum["recommendation"].value("rule", "")) << " (threshold "
+           << htmlEscape(text(csum["recommendation"].value("threshold_two_ln_b", json()))) << ").</p>\n";
+  }
+
+  // ---- 5. provenance
+  body << "<h2 id=\"provenance\">5. Provenance</h2>\n<table>\n";
+  auto row = [&](const std::string& k, const std::string& v) {
+    body << "<tr><th>" << htmlEscape(k) << "</th><td>" << htmlEscape(v) << "</td></tr>\n";
+  };
+  const json prog = record.value("program", summary.value("program", json::object()));
+  row("program", prog.value("name", std::string("twin")) + " " + prog.value("version", std::string()) + " (" +
+                     prog.value("git", std::string()) + ")");
+  const json now_prog = programInfo();
+  row("report made by", now_prog.value("name", std::string("twin")) + " " + now_prog.value("version", std::string()) + " (" +
+                            now_prog.value("git", std::string()) + "), " + utcNow());
+  row("study command", record.value("command", std::string()));
+  if (summary.value("command", std::string()) != record.value("command", std::string()))
+    row("last study command", summary.value("command", std::string()));
+  row("report command", command);
+  row("study file", study_path);
+  row("study folder", fs::absolute(dir).lexically_normal().string());
+  row("lab data", lab_path + " (" + std::to_string(lab.records.size()) + " records)");
+  row("study created (UTC)", record.value("created_utc", std::string()));
+  row("summary written (UTC)", summary.value("created_utc", std::string()));
+  row("seed", std::to_string(study.seed));
+  {
+    std::string sz;
+    for (const auto& [k, v] : study.sizes) sz += (sz.empty() ? "" : ", ") + k + " = " + std::to_string(v);
+    row("study sizes", sz);
+  }
+  row("field records classified", text(summary.value("records", json())));
+  if (csum.contains("covariance")) row("covariance", csum["covariance"].value("method", "") + ": " + csum["covariance"].value("reason", ""));
+  if (summary.contains("stages")) {
+    std::string st;
+    for (auto& [k, v] : summary["stages"].items()) st += (st.empty() ? "" : ", ") + k + " " + num(v.get<double>(), 4) + " s";
+    row("stage wall time (last invocation)", st);
+  }
+  body << "</table>\n<h3>Per assembly (from the calibration and synthesis summaries)</h3>\n<table>\n"
+          "<tr><th>assembly</th><th>calibration seed</th><th>optimizer starts</th><th>LHS points</th><th>Gibbs iterations</th>"
+          "<th>burn-in</th><th>lab values n</th><th>SSE<sub>min</sub></th><th>synthesis seed</th><th>draws × roads</th>"
+          "<th>road library</th><th>vectors</th><th>failures</th></tr>\n";
+  for (const auto& a : assemblies) {
+    const json cs = readJsonIfExists(dir / "calibration" / a.id / "summary.json");
+    const json ss = readJsonIfExists(dir / "synthetic" / a.id / "synthesis.json");
+    const json co = cs.value("options", json::object());
+    auto cell = [&](const json& j) { body << "<td class=\"n\">" << htmlEscape(text(j)) << "</td>"; };
+    body << "<tr><td>" << htmlEscape(a.id) << "</td>";
+    cell(co.value("seed", json()));
+    cell(co.value("optimizer_starts", json()));
+    cell(co.value("lhs_points", json()));
+    cell(co.value("gibbs_iterations", json()));
+    cell(co.value("gibbs_burn_in", json()));
+    cell(cs.value("n_data", json()));
+    cell(cs.value("sse_min", json()));
+    cell(ss.value("seed", json()));
+    body << "<td class=\"n\">" << htmlEscape(text(ss.value("draws", json())) + " × " + text(ss.value("roads_per_draw", json())))
+         << "</td>";
+    cell(ss.value("road_library", json()));
+    cell(ss.value("vectors", json()));
+    cell(ss.value("failures", json()));
+    body << "</tr>\n";
+  }
+  body << "</table>\n";
+
+  // ---- the page
+  for (const auto& w : gp.warnings) warnings.push_back(w);
+  const std::string title = "twin study report: " + fs::absolute(dir).lexically_normal().string();
+  std::ostringstream page;
+  page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << htmlEscape(title)
+       << "</title>\n<style>\n" << kCss << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
+       << "<p>Study <code>" << htmlEscape(study.name) << "</code>: " << htmlEscape(study.description) << ". Assemblies: ";
+  for (std::size_t m = 0; m < assemblies.size(); ++m)
+    page << (m ? ", " : "") << htmlEscape(assemblies[m].id + " (" + assemblies[m].label() + ")");
+  page << ".</p>\n<p class=\"rec\">" << htmlEscape(sentence) << "</p>\n";
+  if (!warnings.empty()) {
+    page << "<div class=\"warn\"><p>Warnings:</p>\n<ul>\n";
+    for (const auto& w : warnings) page << "<li>" << htmlEscape(w) << "</li>\n";
+    page << "</ul></div>\n";
+  }
+  page << "<nav><ol><li><a href=\"#lab\">Lab data and predictive bands</a></li><li><a href=\"#posterior\">Posterior "
+          "histograms</a></li><li><a href=\"#selection\">Field-record selection</a></li><li><a href=\"#evidence\">Evidence "
+          "against cost</a></li><li><a href=\"#provenance\">Provenance</a></li></ol></nav>\n"
+       << body.str() << "</body>\n</html>\n";
+  writeFileAtomic(out_html, page.str());
+
+  json assemblies_json = json::array();
+  for (const auto& a : assemblies) assemblies_json.push_back(a.id);
+  return {{"html", out_html},
+          {"plots", plots},
+          {"svg_count", gp.count()},
+          {"assemblies", assemblies_json},
+          {"draws", options.draws},
+          {"prediction_failures", failures},
+          {"noise_sd", noise_sd},
+          {"warnings", warnings},
+          {"wall_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count()}};
+}
+
+}  // namespace dtwin::classify

@@ -1,0 +1,35 @@
+#pragma once
+// The HTML report of a study folder (`twin report`, docs/classification.md): one self-contained
+// HTML5 page (inline CSS and inline SVG only: no external file, no script, no network) with
+//   1. the lab data against each assembly's posterior predictive band at the lab times
+//      (evenly spaced posterior rows, predicted with calib::LabObjective);
+//   2. posterior histograms of every θ and of τ per assembly (calibration/<id>/posterior.csv);
+//   3. the field-record selection boxplot (P(M_m | record) over the records,
+//      classification/records.csv) and the win counts (summary.json);
+//   4. evidence (total log likelihood) against cost, with the recommendation;
+//   5. provenance: program, commands, paths, times, seeds and sizes.
+// Plots are drawn by gnuplot (Debian package gnuplot-nox) run as a subprocess with the svg
+// terminal; its output is inlined (ids made unique per plot). Without gnuplot on PATH the call
+// throws InputError naming the package, before any work is done.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dtwin::classify {
+
+struct ReportOptions {
+  int draws = 50;    ///< posterior rows per assembly for the predictive band (evenly spaced)
+  int threads = 0;   ///< simulations in parallel (0: all cores; never changes the page)
+};
+
+/// Reads the study folder `study_dir` (written by `twin study`), writes `out_html` atomically
+/// and returns what was drawn: {"html", "plots": [{"name", "kind", "assembly"}...], "svg_count",
+/// "assemblies", "draws", "prediction_failures", "noise_sd", "warnings", "wall_s"}.
+/// InputError when a needed file is missing or malformed, or when gnuplot is not installed.
+nlohmann::json writeStudyReport(const std::string& study_dir, const std::string& out_html, const std::string& command,
+                                const ReportOptions& options = {});
+
+/// `text` with & < > " ' replaced by character references (HTML text and attribute values).
+std::string htmlEscape(const std::string& text);
+
+}  // namespace dtwin::classify

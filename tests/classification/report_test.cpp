@@ -1,0 +1,119 @@
+// `twin report` end to end: a tiny study folder made by `twin study`, its HTML report (one inline
+// SVG per expected plot, valid skeleton, escaped text, no gnuplot error text), a clear error when
+// gnuplot is missing, and a headless Chromium rendering without page errors.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+const fs::path kTmp = fs::temp_directory_path() / "dtwin_report_test";
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The demo study with tiny sizes and two assemblies (as tests/classification/study_cli_test.cpp).
+fs::path writeTinyStudy() {
+  std::string s = slurp(fs::path(DTWIN_SOURCE_DIR) / "data" / "studies" / "demo.toml");
+  s = std::regex_replace(s, std::regex("vehicle = \"[^\"]*\""),
+                         "vehicle = \"" + (fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml").string() + "\"");
+  const auto sizes = s.find("[sizes]");
+  s = s.substr(0, sizes) +
+      "[sizes]\nlab_repetitions = 3\nfield_runs = 4\nlhs_points = 10\ngibbs_iterations = 300\ngibbs_burn_in = 100\n"
+      "posterior_draws = 4\nroads_per_draw = 2\nroad_library = 8\noptimizer_starts = 1\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n";
+  const fs::path p = kTmp / "tiny.toml";
+  std::ofstream(p) << s;
+  return p;
+}
+
+std::string findOnPath(const std::string& exe) {
+  const char* path = std::getenv("PATH");
+  std::stringstream ss(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(ss, dir, ':'))
+    if (!dir.empty() && ::access((fs::path(dir) / exe).c_str(), X_OK) == 0) return (fs::path(dir) / exe).string();
+  return "";
+}
+
+std::size_t count(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t pos = 0; (pos = s.find(what, pos)) != std::string::npos; pos += what.size()) ++n;
+  return n;
+}
+}  // namespace
+
+TEST(Report, TinyStudyReportRendersInChromium) {
+  fs::remove_all(kTmp);
+  fs::create_directories(kTmp);
+  const fs::path study = writeTinyStudy();
+  const fs::path dir = kTmp / "study";
+  const std::string twin = DTWIN_TWIN_EXE;
+  ASSERT_EQ(std::system((twin + " study " + study.string() + " --out " + dir.string() + " --quiet").c_str()), 0);
+
+  // Without gnuplot: one clear line naming the package, exit code 2, nothing written.
+  const fs::path err = kTmp / "nognuplot.err";
+  const int rc = std::system(("env PATH=/nonexistent " + twin + " report " + dir.string() + " 2>" + err.string()).c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  EXPECT_NE(slurp(err).find("gnuplot-nox"), std::string::npos) << slurp(err);
+  EXPECT_FALSE(fs::exists(dir / "report.html"));
+
+  if (findOnPath("gnuplot").empty()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox): cannot draw the report";
+  ASSERT_EQ(std::system((twin + " report " + dir.string() + " --quiet").c_str()), 0);
+  const fs::path html = dir / "report.html";
+  ASSERT_TRUE(fs::exists(html));
+  const std::string page = slurp(html);
+  EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(page.find("<html lang=\"en\">"), std::string::npos);
+  EXPECT_NE(page.find("<meta charset=\"utf-8\">"), std::string::npos);
+  EXPECT_NE(page.find("<title>"), std::string::npos);
+  // 2 assemblies x 1 lab channel predictive plots, 2 posterior figures, boxplot, wins, evidence/cost.
+  EXPECT_EQ(count(page, "<svg"), 7u);
+  EXPECT_EQ(count(page, "</svg>"), 7u);
+  EXPECT_EQ(page.find("<?xml"), std::string::npos);
+  EXPECT_EQ(page.find("<!DOCTYPE svg"), std::string::npos);
+  for (const char* bad : {"gnuplot>", "line 0:", "warning:", "Warnings:", "<script", "http://www.w3.org/1999/xhtml", "src="})
+    EXPECT_EQ(page.find(bad), std::string::npos) << bad;
+  for (const char* must : {"M3", "M4", "recommended", "1/√τ", "Provenance", "tiny.toml", "20240601"})
+    EXPECT_NE(page.find(must), std::string::npos) << must;
+  // Ids unique on the page (every inline SVG has its own).
+  std::map<std::string, int> ids;
+  const std::regex id_re("\\bid=(['\"])([^'\"]+)\\1");
+  for (auto it = std::sregex_iterator(page.begin(), page.end(), id_re); it != std::sregex_iterator(); ++it) ++ids[(*it)[2]];
+  for (const auto& [id, n] : ids) EXPECT_EQ(n, 1) << "duplicate id " << id;
+
+  // --out elsewhere.
+  ASSERT_EQ(std::system((twin + " report " + dir.string() + " --quiet --draws 5 --out " + (kTmp / "r" / "x.html").string()).c_str()), 0);
+  EXPECT_EQ(count(slurp(kTmp / "r" / "x.html"), "<svg"), 7u);
+
+  std::string chromium = findOnPath("chromium");
+  if (chromium.empty()) chromium = findOnPath("chromium-browser");
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium): the rendering check is skipped";
+  const fs::path png = kTmp / "report.png", log = kTmp / "chromium.log";
+  const std::string cmd = chromium +
+                          " --headless --no-sandbox --disable-gpu --disable-background-networking --enable-logging=stderr --v=0"
+                          " --user-data-dir=" + (kTmp / "chromium-profile").string() + " --screenshot=" + png.string() +
+                          " --window-size=1200,3000 file://" + fs::absolute(html).string() + " >" + log.string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(log);
+  ASSERT_TRUE(fs::exists(png)) << slurp(log);
+  EXPECT_GT(fs::file_size(png), 10u * 1024u);
+  std::istringstream lines(slurp(log));
+  for (std::string line; std::getline(lines, line);) {
+    const bool page_line = line.find("report.html") != std::string::npos;
+    EXPECT_EQ(line.find("Uncaught"), std::string::npos) << line;
+    EXPECT_FALSE(line.find("CONSOLE") != std::string::npos && page_line) << line;
+    EXPECT_FALSE(line.find("ERROR") != std::string::npos && page_line) << line;
+  }
+  fs::remove_all(kTmp);
+}

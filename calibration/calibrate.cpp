@@ -14,6 +14,7 @@
 #include "calibration/design_journal.hpp"
 #include "calibration/lhs.hpp"
 #include "subsystems/errors.hpp"
+#include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 
@@ -284,13 +285,20 @@ FeasibleBox boxFrom(const nlohmann::json& j) {
   return b;
 }
 
-/// Reads a stage file when it exists and carries `fingerprint`; null otherwise.
+/// Reads a stage file when it exists and carries `fingerprint`; null otherwise. Under MPI the
+/// root reads it and every rank decides on the same bytes.
 nlohmann::json readStage(const fs::path& p, const std::string& fingerprint) {
-  if (!fs::exists(p)) return nullptr;
-  std::ifstream in(p);
+  const std::string text = onRoot([&]() -> std::string {
+    if (!fs::exists(p)) return std::string();
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream os;
+    os << in.rdbuf();
+    return "F" + os.str();
+  });
+  if (text.empty()) return nullptr;
   nlohmann::json j;
   try {
-    in >> j;
+    j = nlohmann::json::parse(text.begin() + 1, text.end());
   } catch (const std::exception&) {
     return nullptr;  // written atomically, so this is a foreign file: redo the stage
   }
@@ -304,6 +312,55 @@ std::string hex(std::uint64_t v) {
   char b[17];
   std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(v));
   return b;
+}
+
+/// Runs `write` on the root only (the only rank that writes files); its error reaches every rank.
+template <class F>
+void rootWrites(F write) {
+  onRoot([&]() -> std::string {
+    write();
+    return std::string();
+  });
+}
+
+std::vector<double> packStart(const StartResult& r) {
+  return Packer().put(r.start).put(r.theta).put(r.sse).put(r.evaluations).put(r.nonfinite_evaluations).put(r.status).take();
+}
+StartResult unpackStart(const std::vector<double>& v) {
+  Unpacker u(v);
+  StartResult r;
+  r.start = u.vec();
+  r.theta = u.vec();
+  r.sse = u.num();
+  r.evaluations = static_cast<int>(u.integer());
+  r.nonfinite_evaluations = static_cast<int>(u.integer());
+  r.status = u.str();
+  return r;
+}
+std::vector<double> packSweep(const SweepResult& r) {
+  return Packer()
+      .put(r.parameter)
+      .put(r.direction)
+      .put(r.edge)
+      .put(r.edge_sse)
+      .put(r.clipped ? 1.0 : 0.0)
+      .put(r.bracketed ? 1.0 : 0.0)
+      .put(r.evaluations)
+      .put(r.message)
+      .take();
+}
+SweepResult unpackSweep(const std::vector<double>& v) {
+  Unpacker u(v);
+  SweepResult r;
+  r.parameter = static_cast<int>(u.integer());
+  r.direction = static_cast<int>(u.integer());
+  r.edge = u.num();
+  r.edge_sse = u.num();
+  r.clipped = u.num() != 0.0;
+  r.bracketed = u.num() != 0.0;
+  r.evaluations = static_cast<int>(u.integer());
+  r.message = u.str();
+  return r;
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
@@ -377,7 +434,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   LabObjective objective(study, assembly, data, scenario);
   const std::size_t d = objective.names().size();
   const int n = objective.dataCount();
-  fs::create_directories(out_dir);
+  rootWrites([&] { fs::create_directories(out_dir); });
   auto report = [&](const std::string& stage, std::size_t done, std::size_t total) {
     if (progress) progress(stage, done, total);
   };
@@ -400,9 +457,9 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
                     {"options", options.toJson()},
                     {"data", fingerprint_extra}};
   const std::string fingerprint = hex(fnv1a64(fp.dump()));
-  const ParallelFor pfor = [&](int count, const std::function<void(int)>& task) {
-    parallelFor(static_cast<std::size_t>(count), options.threads, [&](std::size_t i, int) { task(static_cast<int>(i)); });
-  };
+  // Starts, sweeps and design points are spread over the MPI ranks and the threads of each rank
+  // (distributedMap: task i on rank i % size, results by index on every rank); only the root
+  // writes files.
   const SseFunction sse = [&](const std::vector<double>& th) { return objective.sse(th); };
 
   // Stage 1: optimum.
@@ -412,16 +469,18 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
     res.optimum = optimumFrom(j.at("optimum"));
   } else {
     report("optimum", 0, static_cast<std::size_t>(options.optimizer_starts));
-    std::atomic<std::size_t> starts_done{0};
-    const ParallelFor counted = [&](int count, const std::function<void(int)>& task) {
-      pfor(count, [&](int i) {
-        task(i);
-        report("optimum", ++starts_done, static_cast<std::size_t>(count));
-      });
-    };
-    res.optimum = minimiseSse(sse, objective.lower(), objective.upper(), options.optimizer_starts, options.seed,
-                              options.optimizer, counted);
-    writeFileAtomic(opt_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"optimum", optimumJson(res.optimum)}}.dump(2) + "\n");
+    // As minimiseSse, with the starts spread over ranks and threads.
+    const auto x0 = optimizerStarts(objective.lower(), objective.upper(), options.optimizer_starts, options.seed);
+    const auto packed = distributedMap(
+        x0.size(), options.threads,
+        [&](std::size_t i, int) { return packStart(minimiseFrom(sse, objective.lower(), objective.upper(), x0[i], options.optimizer)); },
+        [&](std::size_t done, std::size_t total) { report("optimum", done, total); });
+    std::vector<StartResult> starts;
+    for (const auto& v : packed) starts.push_back(unpackStart(v));
+    res.optimum = collectOptimum(std::move(starts));
+    rootWrites([&] {
+      writeFileAtomic(opt_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"optimum", optimumJson(res.optimum)}}.dump(2) + "\n");
+    });
   }
   if (!std::isfinite(res.optimum.sse))
     throw std::runtime_error("assembly " + assembly.id + ": every simulation of the optimiser failed; no calibration possible");
@@ -439,15 +498,17 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
     bp.n_data = n;
     bp.lower = objective.lower();
     bp.upper = objective.upper();
-    std::atomic<std::size_t> sweeps_done{0};
-    const ParallelFor counted = [&](int count, const std::function<void(int)>& task) {
-      pfor(count, [&](int i) {
-        task(i);
-        report("box", ++sweeps_done, static_cast<std::size_t>(count));
-      });
-    };
-    res.box = calcFeasibleBox(sse, bp, options.box, counted);
-    writeFileAtomic(box_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"box", boxJson(res.box)}}.dump(2) + "\n");
+    // As calcFeasibleBox, with the 2d sweeps spread over ranks and threads.
+    bp.validate();
+    const auto packed = distributedMap(
+        2 * d, options.threads, [&](std::size_t i, int) { return packSweep(calcBoxSweep(sse, bp, static_cast<int>(i), options.box)); },
+        [&](std::size_t done, std::size_t total) { report("box", done, total); });
+    std::vector<SweepResult> sweeps;
+    for (const auto& v : packed) sweeps.push_back(unpackSweep(v));
+    res.box = collectFeasibleBox(bp, std::move(sweeps));
+    rootWrites([&] {
+      writeFileAtomic(box_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"box", boxJson(res.box)}}.dump(2) + "\n");
+    });
   }
   res.stage_wall_s.push_back({"box", secondsSince(t0)});
 
@@ -457,33 +518,64 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   res.design = latinHypercube(N, res.box.lower, res.box.upper, options.seed);
   res.sse.assign(static_cast<std::size_t>(N), std::numeric_limits<double>::quiet_NaN());
   {
-    DesignJournal journal((fs::path(out_dir) / "design_journal.csv").string(), static_cast<int>(d), fingerprint);
-    for (const auto& e : journal.resumed()) {
-      if (e.index < 0 || e.index >= N)
-        throw InputError(journal.path(), "design index " + std::to_string(e.index) + " outside 0.." + std::to_string(N - 1));
-      for (std::size_t k = 0; k < d; ++k)
-        if (e.theta[k] != res.design(e.index, static_cast<long>(k)))
-          throw InputError(journal.path(), "design point " + std::to_string(e.index) + " differs from this calibration's design");
-      res.sse[static_cast<std::size_t>(e.index)] = e.sse;
-    }
+    // The journal lives on the root; every rank learns the journalled points from it.
+    const std::string journal_path = (fs::path(out_dir) / "design_journal.csv").string();
+    std::unique_ptr<DesignJournal> journal;
+    const std::vector<double> resumed = bytesToDoubles(onRoot([&]() -> std::string {
+      journal = std::make_unique<DesignJournal>(journal_path, static_cast<int>(d), fingerprint);
+      std::vector<double> v;
+      for (const auto& e : journal->resumed()) {
+        if (e.index < 0 || e.index >= N)
+          throw InputError(journal->path(), "design index " + std::to_string(e.index) + " outside 0.." + std::to_string(N - 1));
+        for (std::size_t k = 0; k < d; ++k)
+          if (e.theta[k] != res.design(e.index, static_cast<long>(k)))
+            throw InputError(journal->path(), "design point " + std::to_string(e.index) + " differs from this calibration's design");
+        v.push_back(static_cast<double>(e.index));
+        v.push_back(e.sse);
+      }
+      return doublesToBytes(v);
+    }));
+    for (std::size_t k = 0; k + 1 < resumed.size(); k += 2) res.sse[static_cast<std::size_t>(resumed[k])] = resumed[k + 1];
     std::vector<int> todo;
     for (int i = 0; i < N; ++i)
       if (std::isnan(res.sse[static_cast<std::size_t>(i)])) todo.push_back(i);
     res.resumed_points = N - static_cast<long>(todo.size());
-    std::atomic<std::size_t> done{static_cast<std::size_t>(res.resumed_points)};
-    report("design", done, static_cast<std::size_t>(N));
-    parallelFor(todo.size(), options.threads, [&](std::size_t t, int) {
-      const int i = todo[t];
+    report("design", static_cast<std::size_t>(res.resumed_points), static_cast<std::size_t>(N));
+    // One process: one loop, each point journalled as it finishes. Several ranks: chunks of
+    // 8 points per worker; the root journals its own points as they finish and the others' at
+    // the end of each chunk (a killed job loses at most one chunk of them).
+    const std::size_t ranks = static_cast<std::size_t>(Distributed::instance().size());
+    const std::size_t chunk = ranks == 1 ? std::max<std::size_t>(todo.size(), 1)
+                                         : 8 * ranks * static_cast<std::size_t>(distributedWorkers(todo.size(), options.threads));
+    auto point = [&](int i) {
       std::vector<double> th(d);
       for (std::size_t k = 0; k < d; ++k) th[k] = res.design(i, static_cast<long>(k));
-      const double s = objective.sse(th);
-      res.sse[static_cast<std::size_t>(i)] = s;
-      journal.append(i, th, s);
-      report("design", ++done, static_cast<std::size_t>(N));
-    });
+      return th;
+    };
+    for (std::size_t first = 0; first < todo.size(); first += chunk) {
+      const std::size_t m = std::min(chunk, todo.size() - first);
+      const auto sse_of = distributedMap(
+          m, options.threads,
+          [&](std::size_t t, int) {
+            const int i = todo[first + t];
+            const auto th = point(i);
+            const double s = objective.sse(th);
+            if (journal) journal->append(i, th, s);  // the root's own points, at once
+            return std::vector<double>{s};
+          },
+          [&](std::size_t done, std::size_t) {
+            report("design", static_cast<std::size_t>(res.resumed_points) + first + done, static_cast<std::size_t>(N));
+          });
+      for (std::size_t t = 0; t < m; ++t) res.sse[static_cast<std::size_t>(todo[first + t])] = sse_of[t][0];
+      if (ranks > 1)
+        rootWrites([&] {
+          for (std::size_t t = 0; t < m; ++t)
+            if (t % ranks != 0) journal->append(todo[first + t], point(todo[first + t]), sse_of[t][0]);
+        });
+    }
   }
   for (double s : res.sse) res.design_failures += std::isfinite(s) ? 0 : 1;
-  writeDesignTableCsv((fs::path(out_dir) / "design.csv").string(), res.names, res.design, res.sse);
+  rootWrites([&] { writeDesignTableCsv((fs::path(out_dir) / "design.csv").string(), res.names, res.design, res.sse); });
   res.stage_wall_s.push_back({"design", secondsSince(t0)});
 
   // Stage 4: two-block Griddy Gibbs (cheap, deterministic from the seed: never persisted
@@ -499,7 +591,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   res.chains = runGriddyGibbs(res.sse, n, go);
   res.posterior = summarisePosterior(res.design, res.chains, res.names);
   report("gibbs", 1, 1);
-  {
+  rootWrites([&] {
     std::string csv;
     for (const auto& nm : res.names) csv += nm + ",";
     csv += "tau,design_index\n";
@@ -512,7 +604,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
       csv += buf;
     }
     writeFileAtomic((fs::path(out_dir) / "posterior.csv").string(), csv);
-  }
+  });
   res.stage_wall_s.push_back({"gibbs", secondsSince(t0)});
   res.stage_wall_s.push_back({"total", secondsSince(t_all)});
   res.median_run_wall_s = objective.medianWallSeconds();

@@ -177,7 +177,14 @@ FeasibleBox calcFeasibleBox(const SseFunction& sse, const BoxProblem& problem,
   });
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
+  for (int i = 0; i < count; ++i) DTWIN_CHECK(done[static_cast<std::size_t>(i)], "parallel_for did not run every sweep");
+  return collectFeasibleBox(problem, std::move(sweeps));
+}
 
+FeasibleBox collectFeasibleBox(const BoxProblem& problem, std::vector<SweepResult> sweeps) {
+  const int d = static_cast<int>(problem.theta_hat.size());
+  const int count = 2 * d;
+  DTWIN_CHECK(static_cast<int>(sweeps.size()) == count, "a box needs 2d sweeps");
   FeasibleBox box;
   box.threshold = problem.threshold();
   box.lower.resize(static_cast<std::size_t>(d));
@@ -185,9 +192,7 @@ FeasibleBox calcFeasibleBox(const SseFunction& sse, const BoxProblem& problem,
   box.lower_clipped.resize(static_cast<std::size_t>(d));
   box.upper_clipped.resize(static_cast<std::size_t>(d));
   for (int i = 0; i < count; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    DTWIN_CHECK(done[k], "parallel_for did not run every sweep");
-    const SweepResult& s = sweeps[k];
+    const SweepResult& s = sweeps[static_cast<std::size_t>(i)];
     const auto j = static_cast<std::size_t>(s.parameter);
     (s.direction < 0 ? box.lower : box.upper)[j] = s.edge;
     (s.direction < 0 ? box.lower_clipped : box.upper_clipped)[j] = s.clipped;

@@ -90,4 +90,8 @@ FeasibleBox calcFeasibleBox(const SseFunction& sse, const BoxProblem& problem,
                             const FeasibleBoxOptions& options = {},
                             const ParallelFor& parallel_for = sequentialFor);
 
+/// The box of finished sweeps (index i = sweep i, as calcBoxSweep): what calcFeasibleBox returns.
+/// For callers that run the sweeps themselves (e.g. spread over MPI ranks).
+FeasibleBox collectFeasibleBox(const BoxProblem& problem, std::vector<SweepResult> sweeps);
+
 }  // namespace dtwin::calib

@@ -212,6 +212,11 @@ Optimum minimiseSse(const SseFunction& sse, const std::vector<double>& lower,
   for (const auto& e : errors)  // the lowest-index error, whatever the execution order
     if (e) std::rethrow_exception(e);
 
+  return collectOptimum(std::move(results));
+}
+
+Optimum collectOptimum(std::vector<StartResult> results) {
+  DTWIN_CHECK(!results.empty(), "no optimiser start");
   Optimum opt;
   opt.starts = std::move(results);
   for (std::size_t i = 0; i < opt.starts.size(); ++i) {

@@ -99,4 +99,9 @@ Optimum minimiseSse(const SseFunction& sse, const std::vector<double>& lower,
                     const OptimizerOptions& options = {},
                     const ParallelFor& parallel_for = sequentialFor);
 
+/// The optimum of finished starts (in start-index order): the smallest SSE, ties to the lowest
+/// index; what minimiseSse returns. For callers that run the starts themselves (minimiseFrom on
+/// optimizerStarts(), e.g. spread over MPI ranks).
+Optimum collectOptimum(std::vector<StartResult> starts);
+
 }  // namespace dtwin::calib

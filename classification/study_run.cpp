@@ -11,6 +11,7 @@
 #include "subsystems/errors.hpp"
 #include "twin/generate.hpp"
 #include "twin/measurement.hpp"
+#include "twin/distributed.hpp"
 #include "twin/provenance.hpp"
 
 namespace fs = std::filesystem;
@@ -29,8 +30,32 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// A stage's output file is complete once it exists: every writer here is atomic.
-bool done(const fs::path& p) { return fs::exists(p); }
+/// A stage's output file is complete once it exists: every writer here is atomic. Under MPI the
+/// root looks and every rank gets its answer.
+bool done(const fs::path& p) {
+  return onRoot([&] { return std::string(fs::exists(p) ? "1" : "0"); }) == "1";
+}
+
+/// A file's bytes as the root reads them, on every rank (files written by the root in this run
+/// are never read from another rank's view of a shared filesystem).
+std::string rootBytes(const std::string& path) {
+  return onRoot([&] {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "cannot open file (does it exist and is it readable?)");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  });
+}
+
+/// Runs `write` on the root only; its error reaches every rank.
+template <class F>
+void rootWrites(F write) {
+  onRoot([&]() -> std::string {
+    write();
+    return std::string();
+  });
+}
 
 }  // namespace
 
@@ -44,32 +69,35 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   };
   const auto t_all = std::chrono::steady_clock::now();
   const fs::path out(out_dir);
-  fs::create_directories(out);
+  const bool root = Distributed::instance().isRoot();  // only the root writes files and runs stage 5
+  rootWrites([&] { fs::create_directories(out); });
   const auto assemblies = study.assemblies();
   if (assemblies.empty()) throw InputError(study.path, "the study defines no assemblies");
   const AssemblySpec& truth_assembly = assemblies.front();  // the highest fidelity generates the data
 
   // The study's fingerprint: a rerun into the same folder must be the same study.
-  nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(fileBytes(study.path)))},
-                    {"vehicle_file", std::to_string(calib::fnv1a64(fileBytes(study.vehicle_path)))},
-                    {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.lab_file)))},
-                    {"field_file", options.field_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.field_file)))}};
-  const fs::path record = out / "study.json";
-  if (fs::exists(record)) {
-    nlohmann::json j;
-    try {
-      std::ifstream in(record);
-      in >> j;
-    } catch (const std::exception&) {
-      throw InputError(record.string(), "is not a study record; use an empty --out folder");
+  rootWrites([&] {
+    nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(fileBytes(study.path)))},
+                      {"vehicle_file", std::to_string(calib::fnv1a64(fileBytes(study.vehicle_path)))},
+                      {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.lab_file)))},
+                      {"field_file", options.field_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.field_file)))}};
+    const fs::path record = out / "study.json";
+    if (fs::exists(record)) {
+      nlohmann::json j;
+      try {
+        std::ifstream in(record);
+        in >> j;
+      } catch (const std::exception&) {
+        throw InputError(record.string(), "is not a study record; use an empty --out folder");
+      }
+      if (j.value("fingerprint", nlohmann::json()) != fp)
+        throw InputError(record.string(), "was made by a different study, vehicle or data file; use a new --out folder or delete it");
+    } else {
+      writeFileAtomic(record.string(), nlohmann::json{{"fingerprint", fp}, {"study", study.path}, {"program", programInfo()},
+                                                      {"command", options.command}, {"created_utc", utcNow()}}
+                                               .dump(2) + "\n");
     }
-    if (j.value("fingerprint", nlohmann::json()) != fp)
-      throw InputError(record.string(), "was made by a different study, vehicle or data file; use a new --out folder or delete it");
-  } else {
-    writeFileAtomic(record.string(), nlohmann::json{{"fingerprint", fp}, {"study", study.path}, {"program", programInfo()},
-                                                    {"command", options.command}, {"created_utc", utcNow()}}
-                                             .dump(2) + "\n");
-  }
+  });
 
   nlohmann::json stages = nlohmann::json::object();
   // ---- 1. lab data
@@ -78,17 +106,20 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   if (lab_path.empty()) {
     lab_path = (out / "lab" / "lab.csv").string();
     if (!done(sidecarPath(lab_path))) {
-      report("lab", 0, 1);
-      LabOptions lo;
-      lo.command = options.command;
-      const LabResult r = generateLab(study, truth_assembly, lo);
-      writeLabCsv(lab_path, r.data);
-      writeFileAtomic(sidecarPath(lab_path), r.provenance.dump(2) + "\n");  // last: marks the stage done
-      report("lab", 1, 1);
-      say("lab: " + truth_assembly.id + " at the truth, " + std::to_string(r.data.records.size()) + " records -> " + lab_path);
+      rootWrites([&] {  // one simulation: the root alone
+        report("lab", 0, 1);
+        LabOptions lo;
+        lo.command = options.command;
+        const LabResult r = generateLab(study, truth_assembly, lo);
+        writeLabCsv(lab_path, r.data);
+        writeFileAtomic(sidecarPath(lab_path), r.provenance.dump(2) + "\n");  // last: marks the stage done
+        report("lab", 1, 1);
+        say("lab: " + truth_assembly.id + " at the truth, " + std::to_string(r.data.records.size()) + " records -> " + lab_path);
+      });
     }
   }
-  const LabData lab = readLabCsv(lab_path);
+  const std::string lab_bytes = rootBytes(lab_path);
+  const LabData lab = parseLabCsv(lab_bytes, lab_path);
   stages["lab"] = since(t0);
 
   // ---- 2. field data
@@ -101,8 +132,10 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
       fo.threads = options.threads;
       fo.command = options.command;
       const FieldResult r = generateField(study, truth_assembly, fo, [&](std::size_t d, std::size_t t) { report("field", d, t); });
-      writeFieldCsv(field_path, r.data);
-      writeFileAtomic(sidecarPath(field_path), r.provenance.dump(2) + "\n");
+      rootWrites([&] {
+        writeFieldCsv(field_path, r.data);
+        writeFileAtomic(sidecarPath(field_path), r.provenance.dump(2) + "\n");
+      });
       say("field: " + std::to_string(r.data.rowCount()) + " records of " + truth_assembly.id + " on class-D roads -> " + field_path);
     }
   }
@@ -117,7 +150,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   co.gibbs_burn_in = static_cast<int>(study.sizes.at("gibbs_burn_in"));
   co.optimizer_starts = static_cast<int>(study.sizes.at("optimizer_starts"));
   co.seed = study.seed;
-  const std::string lab_hash = std::to_string(calib::fnv1a64(fileBytes(lab_path)));
+  const std::string lab_hash = std::to_string(calib::fnv1a64(lab_bytes));
   nlohmann::json calibrated;
   for (const auto& a : assemblies) {
     const fs::path dir = out / "calibration" / a.id;
@@ -131,7 +164,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
     j["study"] = study.path;
     j["data"] = {{"path", lab_path}, {"records", lab.records.size()}, {"fnv1a64", lab_hash}};
     j["options"] = co.toJson();
-    writeFileAtomic((dir / "summary.json").string(), j.dump(2) + "\n");
+    rootWrites([&] { writeFileAtomic((dir / "summary.json").string(), j.dump(2) + "\n"); });
     calibrated[a.id] = {{"sse_min", j["sse_min"]}, {"parameters", j["parameters"]}, {"tau", j["tau"]}};
     say("calibrate " + a.id + " (" + a.label() + "): SSE_min " + std::to_string(r.optimum.sse) + ", " +
         std::to_string(r.posterior.distinct_points) + " distinct design points");
@@ -144,7 +177,12 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
     SynthesisOptions so;
     so.threads = options.threads;
     so.command = options.command;
-    const auto post = readPosteriorCsv((out / "calibration" / a.id / "posterior.csv").string());
+    const std::string post_path = (out / "calibration" / a.id / "posterior.csv").string();
+    const auto post = parsePosteriorCsv(onRoot([&] {
+                                          if (!fs::exists(post_path)) throw InputError(post_path, "posterior file not found");
+                                          return fileBytes(post_path);
+                                        }),
+                                        post_path);
     const auto r = synthesizeAssembly(study, a, post, so, (out / "synthetic" / a.id).string(),
                                       [&](std::size_t d, std::size_t t) { report("synthesize " + a.id, d, t); });
     say("synthesize " + a.id + ": " + std::to_string(r.simulations) + " simulations, " + std::to_string(r.failures) + " failed" +
@@ -152,7 +190,8 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   }
   stages["synthesize"] = since(t0);
 
-  // ---- 5. classification and recommendation
+  // ---- 5. classification and recommendation: no simulation, the root alone (it wrote the files).
+  if (!root) return nlohmann::json{{"rank", Distributed::instance().rank()}, {"stages", stages}};
   t0 = std::chrono::steady_clock::now();
   report("classify", 0, 1);
   FieldClassifyOptions fo;

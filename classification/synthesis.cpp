@@ -16,6 +16,7 @@
 #include "calibration/calibrate.hpp"
 #include "subsystems/errors.hpp"
 #include "subsystems/random.hpp"
+#include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 #include "twin/simulator.hpp"
@@ -113,6 +114,36 @@ struct PendingBlock {
   std::vector<DrawOutput> draws;
   long remaining = 0;
 };
+
+/// A draw's output as doubles (what distributedMap carries between MPI ranks).
+std::vector<double> packDraw(const DrawOutput& d) {
+  Packer pk;
+  pk.put(static_cast<double>(d.vectors.size()));
+  for (const auto& v : d.vectors) pk.put(v);
+  pk.put(static_cast<double>(d.failures.size()));
+  for (const auto& f : d.failures)
+    pk.put(static_cast<double>(f.draw)).put(static_cast<double>(f.road)).put(static_cast<double>(f.library_index))
+        .put(static_cast<double>(f.road_seed)).put(f.message);
+  pk.put(d.cost).put(d.run_wall);
+  return pk.take();
+}
+DrawOutput unpackDraw(const std::vector<double>& v) {
+  Unpacker u(v);
+  DrawOutput d;
+  d.vectors.resize(static_cast<std::size_t>(u.integer()));
+  for (auto& x : d.vectors) x = u.vec();
+  d.failures.resize(static_cast<std::size_t>(u.integer()));
+  for (auto& f : d.failures) {
+    f.draw = static_cast<long>(u.integer());
+    f.road = static_cast<long>(u.integer());
+    f.library_index = static_cast<long>(u.integer());
+    f.road_seed = static_cast<std::uint64_t>(u.num());  // < 2^53: exact
+    f.message = u.str();
+  }
+  d.cost = u.vec();
+  d.run_wall = u.vec();
+  return d;
+}
 
 }  // namespace
 
@@ -239,7 +270,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   const double t_branch = branched ? probe.branchTime(sc) : -1.0;
 
   // Fingerprint: everything that changes the numbers (not threads, not the checkpoint interval).
-  const std::string post_text = fs::exists(post.path) ? slurp(post.path) : std::string();
+  const bool root = Distributed::instance().isRoot();  // only the root writes files
+  const std::string post_text = root && fs::exists(post.path) ? slurp(post.path) : std::string();
   std::string post_rows;
   for (std::size_t i = 0; i < post.size(); ++i) {
     for (double v : post.theta[i]) post_rows += formatExact(v) + ",";
@@ -267,7 +299,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
                     {"run_values", base}};
   const std::string fingerprint = hex16(calib::fnv1a64(fp.dump()));
 
-  fs::create_directories(out_dir);
+  if (root) fs::create_directories(out_dir);
   const fs::path dir(out_dir);
   const fs::path moments_path = dir / "moments.bin", info_path = dir / "synthesis.json", ckpt_path = dir / "checkpoint.json";
 
@@ -281,11 +313,14 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   res.block = B;
   res.simulations = M * R;
 
-  auto readJson = [](const fs::path& path) {
-    std::ifstream in(path);
+  // Resume decisions are taken on what the root reads (the same bytes on every MPI rank).
+  auto rootRead = [&](const fs::path& path) {
+    return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + slurp(path.string()) : std::string(); });
+  };
+  auto parseJson = [](const std::string& text) {
     nlohmann::json j;
     try {
-      in >> j;
+      j = nlohmann::json::parse(text.begin() + 1, text.end());
     } catch (const std::exception&) {
       return nlohmann::json();  // written atomically: a foreign file
     }
@@ -297,10 +332,10 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   };
 
   // A finished synthesis: reuse it.
-  if (fs::exists(info_path)) {
-    const nlohmann::json j = readJson(info_path);
+  if (const std::string info_text = rootRead(info_path); !info_text.empty()) {
+    const nlohmann::json j = parseJson(info_text);
     if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuse(info_path);
-    if (fs::exists(moments_path)) {
+    if (onRoot([&] { return std::string(fs::exists(moments_path) ? "1" : "0"); }) == "1") {
       res.moments = MomentAccumulator::load(moments_path.string());
       res.info = j;
       res.reused = true;
@@ -323,8 +358,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   std::vector<double> costs, run_walls;
   double previous_wall = 0.0;  // wall time of earlier (interrupted) invocations
   std::string ckpt_file;       // current checkpoint_<block>.bin
-  if (fs::exists(ckpt_path)) {
-    const nlohmann::json j = readJson(ckpt_path);
+  if (const std::string ckpt_text = rootRead(ckpt_path); !ckpt_text.empty()) {
+    const nlohmann::json j = parseJson(ckpt_text);
     if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuse(ckpt_path);
     ckpt_file = j.at("moments").get<std::string>();
     acc = MomentAccumulator::load((dir / ckpt_file).string());
@@ -341,6 +376,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   const long first_draw = std::min(M, next_block * B);
 
   auto writeCheckpoint = [&](double wall_so_far) {
+    if (!root) return;
     const std::string file = "checkpoint_" + std::to_string(next_block) + ".bin";
     acc.save((dir / file).string());
     nlohmann::json j{{"fingerprint", fingerprint},
@@ -361,7 +397,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
 
   // ---- the parallel loop over the remaining draws, reduced in block order
   const long todo = M - first_draw;
-  const int workers = workerCount(opt.threads, static_cast<std::size_t>(std::max<long>(todo, 1)));
+  const int ranks = Distributed::instance().size();
+  const int workers = distributedWorkers(static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
   std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
   std::mutex state_m, reduce_m, progress_m;
   std::map<long, PendingBlock> pending;  // guarded by state_m
@@ -371,53 +408,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   if (progress) progress(done, static_cast<std::size_t>(M));
 
   auto blockSize = [&](long b) { return std::min(B, M - b * B); };
-  // Adds every finished block that is next in order (one reducer at a time; a finished block
-  // whose predecessor is still running waits in `pending`).
-  auto reduce = [&]() {
-    while (true) {
-      std::unique_lock<std::mutex> rl(reduce_m, std::try_to_lock);
-      if (!rl.owns_lock()) return;
-      while (true) {
-        PendingBlock blk;
-        {
-          std::lock_guard<std::mutex> sl(state_m);
-          auto it = pending.find(next_block);
-          if (it == pending.end() || it->second.remaining > 0) break;
-          blk = std::move(it->second);
-          pending.erase(it);
-        }
-        long cols = 0;
-        for (const auto& d : blk.draws)
-          for (const auto& v : d.vectors) cols += v.empty() ? 0 : 1;
-        if (cols > 0) {
-          Eigen::MatrixXd X(static_cast<Eigen::Index>(p), cols);
-          Eigen::Index c = 0;
-          for (const auto& d : blk.draws)
-            for (const auto& v : d.vectors)
-              if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(p));
-          acc.addBlock(X);
-        }
-        for (auto& d : blk.draws) {
-          failures.insert(failures.end(), d.failures.begin(), d.failures.end());
-          costs.insert(costs.end(), d.cost.begin(), d.cost.end());
-          run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
-        }
-        ++next_block;
-        const auto now = Clock::now();
-        if (next_block < n_blocks && std::chrono::duration<double>(now - last_ckpt).count() >= opt.checkpoint_interval_s) {
-          writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
-          last_ckpt = Clock::now();
-        }
-      }
-      rl.unlock();
-      std::lock_guard<std::mutex> sl(state_m);  // a block finished while we were releasing?
-      auto it = pending.find(next_block);
-      if (it == pending.end() || it->second.remaining > 0) return;
-    }
-  };
-
-  parallelFor(static_cast<std::size_t>(todo), opt.threads, [&](std::size_t task, int w) {
-    const long j = first_draw + static_cast<long>(task);
+  // Draw j on worker w: R runs, their windows plus noise, failures and costs.
+  auto simulateDraw = [&](long j, int w) {
     auto& sim = sims[static_cast<std::size_t>(w)];
     if (!sim) sim = std::make_unique<Simulator>(model, study.simulation);
     DrawOutput out;
@@ -487,29 +479,119 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
       if (run.stats.sim_s > 0) out.cost.push_back(run.stats.wall_s / run.stats.sim_s);
       out.run_wall.push_back(run.stats.wall_s);
     }
-    {
-      std::lock_guard<std::mutex> sl(state_m);
-      const long b = j / B;
-      auto& blk = pending[b];
-      if (blk.draws.empty()) {
-        blk.draws.resize(static_cast<std::size_t>(blockSize(b)));
-        blk.remaining = blockSize(b);
+    return out;
+  };
+
+  // Adds one complete block to the accumulator (vectors in (draw, road) order).
+  auto addBlockToAcc = [&](PendingBlock& blk) {
+    long cols = 0;
+    for (const auto& d : blk.draws)
+      for (const auto& v : d.vectors) cols += v.empty() ? 0 : 1;
+    if (cols > 0) {
+      Eigen::MatrixXd X(static_cast<Eigen::Index>(p), cols);
+      Eigen::Index c = 0;
+      for (const auto& d : blk.draws)
+        for (const auto& v : d.vectors)
+          if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(p));
+      acc.addBlock(X);
+    }
+    for (auto& d : blk.draws) {
+      failures.insert(failures.end(), d.failures.begin(), d.failures.end());
+      costs.insert(costs.end(), d.cost.begin(), d.cost.end());
+      run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
+    }
+  };
+
+  // Adds every finished block that is next in order (one reducer at a time; a finished block
+  // whose predecessor is still running waits in `pending`).
+  auto reduce = [&]() {
+    while (true) {
+      std::unique_lock<std::mutex> rl(reduce_m, std::try_to_lock);
+      if (!rl.owns_lock()) return;
+      while (true) {
+        PendingBlock blk;
+        {
+          std::lock_guard<std::mutex> sl(state_m);
+          auto it = pending.find(next_block);
+          if (it == pending.end() || it->second.remaining > 0) break;
+          blk = std::move(it->second);
+          pending.erase(it);
+        }
+        addBlockToAcc(blk);
+        ++next_block;
+        const auto now = Clock::now();
+        if (next_block < n_blocks && std::chrono::duration<double>(now - last_ckpt).count() >= opt.checkpoint_interval_s) {
+          writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
+          last_ckpt = Clock::now();
+        }
       }
-      blk.draws[static_cast<std::size_t>(j - b * B)] = std::move(out);
-      --blk.remaining;
+      rl.unlock();
+      std::lock_guard<std::mutex> sl(state_m);  // a block finished while we were releasing?
+      auto it = pending.find(next_block);
+      if (it == pending.end() || it->second.remaining > 0) return;
     }
+  };
+
+  if (ranks == 1) {
+    // One process: draws on the threads, each finished block added as soon as its predecessors are.
+    parallelFor(static_cast<std::size_t>(todo), opt.threads, [&](std::size_t task, int w) {
+      const long j = first_draw + static_cast<long>(task);
+      DrawOutput out = simulateDraw(j, w);
+      {
+        std::lock_guard<std::mutex> sl(state_m);
+        const long b = j / B;
+        auto& blk = pending[b];
+        if (blk.draws.empty()) {
+          blk.draws.resize(static_cast<std::size_t>(blockSize(b)));
+          blk.remaining = blockSize(b);
+        }
+        blk.draws[static_cast<std::size_t>(j - b * B)] = std::move(out);
+        --blk.remaining;
+      }
+      reduce();
+      if (progress) {
+        std::lock_guard<std::mutex> pl(progress_m);
+        progress(++done, static_cast<std::size_t>(M));
+      }
+    });
     reduce();
-    if (progress) {
-      std::lock_guard<std::mutex> pl(progress_m);
-      progress(++done, static_cast<std::size_t>(M));
+  } else {
+    // Several MPI ranks: rounds of whole blocks. The draws of a round are spread over the ranks
+    // (draw j0 + t on rank t % size); every rank receives every draw's vectors and adds the
+    // blocks in block order with the same addBlock calls as one process: the same moments,
+    // bit for bit. A round holds about 8 draws per worker, at most ~256 MB of vectors.
+    const long per_round_mem = std::max<long>(1, static_cast<long>(256e6 / (8.0 * static_cast<double>(R) * static_cast<double>(p))));
+    const long per_round = std::min<long>(8L * ranks * workers, per_round_mem);
+    const long blocks_per_round = std::max<long>(1, per_round / B);
+    while (next_block < n_blocks) {
+      const long b0 = next_block, b1 = std::min(n_blocks, b0 + blocks_per_round);
+      const long j0 = b0 * B, j1 = std::min(M, b1 * B);
+      const auto packed = distributedMap(
+          static_cast<std::size_t>(j1 - j0), opt.threads,
+          [&](std::size_t t, int w) { return packDraw(simulateDraw(j0 + static_cast<long>(t), w)); },
+          [&](std::size_t d, std::size_t) {
+            if (progress) progress(static_cast<std::size_t>(j0) + d, static_cast<std::size_t>(M));
+          });
+      for (long b = b0; b < b1; ++b) {
+        PendingBlock blk;
+        for (long j = b * B; j < std::min(M, (b + 1) * B); ++j) blk.draws.push_back(unpackDraw(packed[static_cast<std::size_t>(j - j0)]));
+        addBlockToAcc(blk);
+        ++next_block;
+      }
+      onRoot([&]() -> std::string {
+        const auto now = Clock::now();
+        if (next_block < n_blocks && std::chrono::duration<double>(now - last_ckpt).count() >= opt.checkpoint_interval_s) {
+          writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
+          last_ckpt = Clock::now();
+        }
+        return std::string();
+      });
     }
-  });
-  reduce();
+  }
   DTWIN_CHECK(next_block == n_blocks, "blocks left unreduced");
 
   // ---- results
   const double wall_total = previous_wall + std::chrono::duration<double>(Clock::now() - t_run).count();
-  acc.save(moments_path.string());
   res.failures = static_cast<long>(failures.size());
   res.failure_list = failures;
   res.cost_s_per_s = median(costs);
@@ -570,12 +652,17 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   j["wall_s"] = wall_total;
   j["resumed_blocks"] = res.resumed_blocks;
   j["threads"] = workers;
+  j["ranks"] = ranks;
   j["fingerprint"] = fingerprint;
-  writeFileAtomic(info_path.string(), j.dump(2) + "\n");
-  // The checkpoint is no longer needed.
-  std::error_code ec;
-  fs::remove(ckpt_path, ec);
-  if (!ckpt_file.empty()) fs::remove(dir / ckpt_file, ec);
+  onRoot([&]() -> std::string {  // only the root writes; its error reaches every rank
+    acc.save(moments_path.string());
+    writeFileAtomic(info_path.string(), j.dump(2) + "\n");
+    // The checkpoint is no longer needed.
+    std::error_code ec;
+    fs::remove(ckpt_path, ec);
+    if (!ckpt_file.empty()) fs::remove(dir / ckpt_file, ec);
+    return std::string();
+  });
   res.info = std::move(j);
   res.moments = std::move(acc);
   res.wall_s = std::chrono::duration<double>(Clock::now() - t_all).count();

@@ -88,7 +88,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
     j["data"] = {{"path", cfg.data}, {"records", data.records.size()}, {"fnv1a64", data_hash}};
     j["options"] = opt.toJson();
     j["threads"] = cfg.threads;
-    writeFileAtomic((fs::path(dir) / "summary.json").string(), j.dump(2) + "\n");
+    rootWrites([&] { writeFileAtomic((fs::path(dir) / "summary.json").string(), j.dump(2) + "\n"); });
     index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
     if (!cfg.quiet) {
       std::printf("%-4s %-26s SSE_min %.4g  tau %.3g (noise var %.0f N^2)  distinct points %d  top share %.2f  failures %ld  %.1f s\n",
@@ -104,7 +104,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
       if (r.design_failures) std::printf("       note: %ld design simulations failed (SSE = inf, weight 0)\n", r.design_failures);
     }
   }
-  writeFileAtomic((fs::path(cfg.out) / "calibration.json").string(), index.dump(2) + "\n");
+  rootWrites([&] { writeFileAtomic((fs::path(cfg.out) / "calibration.json").string(), index.dump(2) + "\n"); });
   return 0;
 }
 
@@ -120,7 +120,7 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...) or 'all'")->capture_default_str();
   c->add_option("--scenario", cfg->scenario, "Scenario the lab data was measured on")->capture_default_str();
   c->add_option("--out", cfg->out, "Output folder; each assembly writes OUT/<id>/")->required();
-  c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+  c->add_option("--threads", cfg->threads, "Worker threads per process (0: all cores, shared among the MPI ranks of a machine)")->capture_default_str()->check(CLI::Range(0, 1024));
   c->add_option("--lhs-points", cfg->lhs_points, "Design points (default: the study's sizes.lhs_points)")->check(CLI::Range(2L, 10000000L));
   c->add_option("--iterations", cfg->iterations, "Gibbs iterations incl. burn-in (default: sizes.gibbs_iterations)")
       ->check(CLI::Range(1L, 100000000L));

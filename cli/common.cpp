@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "twin/distributed.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,5 +25,14 @@ std::string joinArgs(int argc, char** argv) {
 }
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
+
+void rootWrites(const std::function<void()>& write) {
+  onRoot([&]() -> std::string {
+    write();
+    return std::string();
+  });
+}
+
+bool isRootRank() { return Distributed::instance().isRoot(); }
 
 }  // namespace dtwin::cli

@@ -51,7 +51,7 @@ void checkOut(const std::string& out) {
 }
 
 int runLab(const GenerateConfig& cfg, const std::string& command) {
-  checkOut(cfg.out);
+  rootWrites([&] { checkOut(cfg.out); });
   const Study study = loadStudy(cfg.study);
   const AssemblySpec a = chooseAssembly(study, cfg.assembly);
   LabOptions opt;
@@ -64,8 +64,10 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
     ProgressBar bar("generate lab", !cfg.quiet && stderrIsTerminal());
     r = generateLab(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
-  writeLabCsv(cfg.out, r.data);
-  writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
+  rootWrites([&] {
+    writeLabCsv(cfg.out, r.data);
+    writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
+  });
   if (!cfg.quiet) {
     for (const auto& c : r.provenance["noise"]["not_applied_to"])
       std::fprintf(stderr, "twin: note: channel %s is not in N; it is written without noise\n", c.get<std::string>().c_str());
@@ -80,7 +82,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
 }
 
 int runField(const GenerateConfig& cfg, const std::string& command) {
-  checkOut(cfg.out);
+  rootWrites([&] { checkOut(cfg.out); });
   const Study study = loadStudy(cfg.study);
   const AssemblySpec a = chooseAssembly(study, cfg.assembly);
   FieldOptions opt;
@@ -100,8 +102,10 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
     ProgressBar bar("generate field", !cfg.quiet && stderrIsTerminal());
     r = generateField(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
-  writeFieldCsv(cfg.out, r.data);
-  writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
+  rootWrites([&] {
+    writeFieldCsv(cfg.out, r.data);
+    writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
+  });
   if (!cfg.quiet && !r.provenance["noise"]["applied"].get<bool>())
     std::fprintf(stderr, "twin: note: channel %s is not in N; it is written without noise\n", opt.channel.c_str());
   if (!cfg.quiet)

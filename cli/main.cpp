@@ -9,11 +9,14 @@
 #include "cli/commands.hpp"
 #include "dtwin/version.hpp"
 #include "subsystems/errors.hpp"
+#include "twin/distributed.hpp"
 
 using namespace dtwin;
 using namespace dtwin::cli;
 
-int main(int argc, char** argv) {
+namespace {
+
+int runTwin(int argc, char** argv, std::string& error) {
   const std::string command = joinArgs(argc, argv);
   CLI::App app{"twin: a multibody digital twin of a ground vehicle (Simbody), with Bayesian choice of subsystem fidelity"};
   app.require_subcommand(1);
@@ -36,15 +39,35 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
+  // Under MPI (mpirun -n K twin ...) the commands that simulate in bulk run on every rank and
+  // spread their simulations (twin/distributed.hpp); the others run on the root alone.
+  const Distributed& dist = Distributed::instance();
   try {
-    for (auto& c : commands)
-      if (c.app->parsed()) return c.run();
+    for (auto& c : commands) {
+      if (!c.app->parsed()) continue;
+      const std::string name = c.app->get_name();
+      const bool distributed = name == "calibrate" || name == "synthesize" || name == "study" || name == "generate";
+      if (!distributed && !dist.isRoot()) return 0;
+      return c.run();
+    }
   } catch (const InputError& e) {
-    std::fprintf(stderr, "twin: error: %s\n", e.what());
+    error = std::string("error: ") + e.what();
+    std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "twin: internal error: %s\n", e.what());
+    error = std::string("internal error: ") + e.what();
+    std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Distributed& dist = Distributed::instance();
+  dist.init(&argc, &argv);  // MPI when started by mpirun; otherwise one process
+  std::string error;
+  const int rc = runTwin(argc, argv, error);
+  return dist.finish(rc, error);
 }

@@ -42,7 +42,7 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
   if (!cfg.quiet) std::printf("study %s -> %s (rerun the same command to resume)\n", study.path.c_str(), cfg.out.c_str());
   const auto s = classify::runStudy(study, o, cfg.out, progress, log);
   bar.finish();
-  if (!cfg.quiet) {
+  if (!cfg.quiet && isRootRank()) {  // under MPI the other ranks do not run the classification
     std::printf("wins:");
     for (auto& [id, n] : s["wins"].items()) std::printf(" %s %d", id.c_str(), n.get<int>());
     std::printf("\n%s\nstages [s]:", s["recommendation_sentence"].get<std::string>().c_str());

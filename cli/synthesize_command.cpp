@@ -92,7 +92,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
                     r.failure_list[k].message.c_str());
     }
   }
-  writeFileAtomic((fs::path(cfg.out) / "synthesize.json").string(), index.dump(2) + "\n");
+  rootWrites([&] { writeFileAtomic((fs::path(cfg.out) / "synthesize.json").string(), index.dump(2) + "\n"); });
   return 0;
 }
 

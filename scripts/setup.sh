@@ -6,7 +6,8 @@ PKGS=(build-essential cmake pkg-config git
       libsimbody-dev libeigen3-dev libnlopt-cxx-dev libnlopt-dev
       googletest libgtest-dev libgmock-dev
       libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-      gnuplot-nox chromium)   # gnuplot: `twin report`; chromium: its rendering test
+      gnuplot-nox chromium    # gnuplot: `twin report`; chromium: its rendering test
+      libopenmpi-dev openmpi-bin)   # MPI: `mpirun -n K twin ...` (docs/cluster.md)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -9,6 +9,7 @@
 
 #include "subsystems/errors.hpp"
 #include "subsystems/random.hpp"
+#include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 #include "twin/simulator.hpp"
@@ -242,38 +243,46 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
     double wall_s = 0;
   };
   std::vector<Stats> stats(N);
-  const int workers = workerCount(opt.threads, N);
+  // Runs are spread over the MPI ranks (run i on rank i % size) and the threads of each rank;
+  // every rank receives every run's window (twin/distributed.hpp).
+  const int workers = distributedWorkers(N, opt.threads);
   std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
-  std::mutex progress_mutex;
-  std::size_t done = 0;
   if (progress) progress(0, N);
   const auto t0 = std::chrono::steady_clock::now();
 
-  parallelFor(N, workers, [&](std::size_t i, int w) {
-    const std::size_t run_no = i + 1;
-    const std::uint64_t road_seed = fieldRoadSeed(seed, run_no);
-    auto road = makeRoad(sc, model->vehicle(), road_seed);
-    auto& sim = sims[static_cast<std::size_t>(w)];
-    if (!sim) sim = std::make_unique<Simulator>(model, study.simulation);
-    RunResult r = sim->run(values, *road, sc);
-    if (!r.stats.ok)
-      throw RunFailedError("field run " + std::to_string(run_no) + " of " + std::to_string(N) + " (road seed " +
-                               std::to_string(road_seed) + ") failed: " + r.stats.message +
-                               "; reproduce it with `twin simulate --assembly " + assembly.id + " --scenario " + sc.name +
-                               " --seed " + std::to_string(road_seed) + "`",
-                           run_no, road_seed);
-    const auto& col = r.trace.column(channel.name);
-    DTWIN_CHECK(col.size() > ke, "field window beyond the trace");
-    RandomStream rs(seed, kFieldNoiseStream, i);
-    for (std::size_t k = 0; k < T; ++k) d.values[i * T + k] = col[kb + k] + (noisy ? sigma * rs.normal() : 0.0);
-    d.runs[i] = static_cast<long>(run_no);
-    d.road_seeds[i] = road_seed;
-    stats[i] = {r.stats.steps, r.stats.wall_s};
-    if (progress) {
-      std::lock_guard<std::mutex> lock(progress_mutex);
-      progress(++done, N);
-    }
-  });
+  const auto results = distributedMap(
+      N, opt.threads,
+      [&](std::size_t i, int w) {
+        const std::size_t run_no = i + 1;
+        const std::uint64_t road_seed = fieldRoadSeed(seed, run_no);
+        auto road = makeRoad(sc, model->vehicle(), road_seed);
+        auto& sim = sims[static_cast<std::size_t>(w)];
+        if (!sim) sim = std::make_unique<Simulator>(model, study.simulation);
+        RunResult r = sim->run(values, *road, sc);
+        if (!r.stats.ok)
+          throw RunFailedError("field run " + std::to_string(run_no) + " of " + std::to_string(N) + " (road seed " +
+                                   std::to_string(road_seed) + ") failed: " + r.stats.message +
+                                   "; reproduce it with `twin simulate --assembly " + assembly.id + " --scenario " + sc.name +
+                                   " --seed " + std::to_string(road_seed) + "`",
+                               run_no, road_seed);
+        const auto& col = r.trace.column(channel.name);
+        DTWIN_CHECK(col.size() > ke, "field window beyond the trace");
+        RandomStream rs(seed, kFieldNoiseStream, i);
+        std::vector<double> v(T + 2);
+        for (std::size_t k = 0; k < T; ++k) v[k] = col[kb + k] + (noisy ? sigma * rs.normal() : 0.0);
+        v[T] = static_cast<double>(r.stats.steps);
+        v[T + 1] = r.stats.wall_s;
+        return v;
+      },
+      progress);
+  for (std::size_t i = 0; i < N; ++i) {
+    const auto& v = results[i];
+    DTWIN_CHECK(v.size() == T + 2, "field run result has the wrong size");
+    std::copy(v.begin(), v.begin() + static_cast<long>(T), d.values.begin() + static_cast<long>(i * T));
+    d.runs[i] = static_cast<long>(i + 1);
+    d.road_seeds[i] = fieldRoadSeed(seed, i + 1);
+    stats[i] = {static_cast<long>(v[T]), v[T + 1]};
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   FlatRoad placeholder;
@@ -303,6 +312,7 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
                 {"output_rate_hz", rate},
                 {"runs", N},
                 {"threads", workers},
+                {"ranks", Distributed::instance().size()},
                 {"per_run", nlohmann::json::array()}};
   for (std::size_t i = 0; i < N; ++i)
     j["field"]["per_run"].push_back({{"run", d.runs[i]}, {"road_seed", d.road_seeds[i]}, {"integrator_steps", stats[i].steps},

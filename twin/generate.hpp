@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "twin/measurement.hpp"
+#include "twin/run_error.hpp"
 #include "twin/study.hpp"
 
 namespace dtwin {
@@ -27,19 +28,6 @@ inline constexpr std::uint64_t kFieldNoiseStream = 0x4649454C444E4F49ULL;  // "F
 /// Progress: `done` of `total` units finished. Called one call at a time (possibly from worker
 /// threads), never concurrently.
 using ProgressFn = std::function<void(std::size_t done, std::size_t total)>;
-
-/// A simulation that failed (RunStats.ok false) while generating data: names the run and its seed.
-class RunFailedError : public std::runtime_error {
- public:
-  RunFailedError(const std::string& what, std::size_t run, std::uint64_t seed)
-      : std::runtime_error(what), run_(run), seed_(seed) {}
-  std::size_t run() const { return run_; }  ///< 1-based run number (0 for the lab run)
-  std::uint64_t seed() const { return seed_; }
-
- private:
-  std::size_t run_;
-  std::uint64_t seed_;
-};
 
 /// The road seed of field run `run` (1-based): RandomStream(seed, kFieldRoadStream, run - 1).bits()
 /// >> 11, i.e. in [0, 2^53): exact as a double (MATLAB) and as a signed 64-bit integer.

@@ -31,7 +31,8 @@ int runList(const std::string& study_path, bool params) {
     auto e = makeEffect(n, "");
     std::printf("  %-18s %s\n", n.c_str(), e->description().c_str());
     for (const auto& p : e->parameters())
-      std::printf("      %-24s [%s] off = %g  %s\n", (n + "." + p.name).c_str(), p.unit.c_str(), p.default_value, p.description.c_str());
+      std::printf("      %-24s [%s] off = %g  prior [%g, %g]  %s\n", (n + "." + p.name).c_str(), p.unit.c_str(), p.default_value,
+                  p.prior_lower, p.prior_upper, p.description.c_str());
     std::printf("      signature: %s\n", e->signature().c_str());
   }
   if (!study.effects.empty()) {

@@ -20,6 +20,11 @@ struct ParameterSpec {
   /// Shared parameters are named "<subsystem>.<name>" (one value whatever option is chosen, e.g.
   /// the calibrated "tire.stiffness"); the others "<subsystem>.<option>.<name>".
   bool shared = false;
+  /// (Last, after `shared`: laws initialise the fields above positionally.)
+  /// Effects only: the prior range, i.e. the plausible range a diagnosis may search for this
+  /// parameter (inside the valid range, containing the off value). NaN for laws' parameters.
+  double prior_lower = std::numeric_limits<double>::quiet_NaN();
+  double prior_upper = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A read-only view of parameter values (pointer + count), in a law's `parameters()` order.

@@ -20,6 +20,7 @@ struct TireState {
   /// docs/model.md, "tire damping".
   double deflection_rate_mps = 0.0;
   double wheel_speed_radps = 0.0;    ///< |Omega|
+  double forward_speed_mps = 0.0;    ///< vehicle forward speed v (read by tire-force effects, not by the laws)
   double fx_N = 0.0;                 ///< longitudinal force (PAC2002 load-response term)
   double fy_N = 0.0;                 ///< lateral force
   double camber_rad = 0.0;           ///< inclination angle gamma

@@ -67,6 +67,7 @@ struct TireCorner {
   std::size_t p0 = 0, np = 0;  // contiguous tire slots
   std::size_t r0 = 0;          // index of unloaded_radius_m within the tire's parameters
   std::vector<std::pair<const Effect*, std::size_t>> filters;  // tire-input effects, first slot
+  std::vector<std::pair<const Effect*, std::size_t>> scalers;  // tire-force effects, first slot
 
   TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
     TireEval e;
@@ -89,8 +90,10 @@ struct TireCorner {
     // (56 m/s over the 100 mm bump): an unphysical damping spike a real tire never sees.
     ts.deflection_rate_mps = -hub_zd;
     ts.wheel_speed_radps = v / (R0 - std::max(0.0, e.rho) / 3.0);
+    ts.forward_speed_mps = v;
     ts.fx_N = c.traction_per_wheel_per_accel * c.speed.accel(t);
     e.fz = model->tire().calcNormalForce(ts, p);
+    for (auto& [eff, s] : scalers) e.fz *= eff->tireForceFactor(ts, ParamValues(c.p + s, eff->parameters().size()));
     return e;
   }
 };
@@ -192,12 +195,42 @@ struct StrutGeometry {
 
 class StrutElement : public Force::Custom::Implementation {
  public:
+  /// `filter_states`: allocate one auxiliary state (a Z of `sub`) per installed StrutFilter effect.
   StrutElement(const RunContext* ctx, const Model* m, StrutGeometry g, std::size_t p0, int preload_slot,
-               double preload, bool with_effects)
-      : ctx_(ctx), m_(m), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects) {}
+               double preload, bool with_effects, bool filter_states = false, SubsystemIndex sub = SubsystemIndex())
+      : ctx_(ctx), m_(m), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects), sub_(sub) {
+    if (with_effects && filter_states)
+      for (std::size_t i = 0; i < m->effects().size(); ++i)
+        if (m->effects()[i]->kind() == EffectKind::StrutFilter) filter_effects_.push_back(i);
+  }
   void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
     const auto k = g_.kin(s);
-    g_.apply(s, force(k.q, k.qd), bodyForces, mobilityForces);
+    double F = force(k.q, k.qd);
+    if (!filter_effects_.empty()) {
+      const StrutState ss = strutState(k.q, k.qd);
+      const Vector& z = s.getZ(sub_);
+      for (std::size_t j = 0; j < filter_effects_.size(); ++j) {
+        const std::size_t i = filter_effects_[j];
+        F += m_->effects()[i]->calcFilteredStrutForce(ss, z[zi_[j]], effectValues(i));
+      }
+    }
+    g_.apply(s, F, bodyForces, mobilityForces);
+  }
+  void realizeTopology(State& s) const override {
+    zi_.clear();
+    for (std::size_t j = 0; j < filter_effects_.size(); ++j) zi_.push_back(s.allocateZ(sub_, Vector(1, 0.0)));
+  }
+  /// The auxiliary states' derivatives (z = 0 at rest: the equilibrium start needs no setting).
+  void realizeAcceleration(const State& s) const override {
+    if (filter_effects_.empty()) return;
+    const auto k = g_.kin(s);
+    const StrutState ss = strutState(k.q, k.qd);
+    const Vector& z = s.getZ(sub_);
+    Vector& zd = s.updZDot(sub_);
+    for (std::size_t j = 0; j < filter_effects_.size(); ++j) {
+      const std::size_t i = filter_effects_[j];
+      zd[zi_[j]] = m_->effects()[i]->calcFilterRate(ss, z[zi_[j]], effectValues(i));
+    }
   }
   /// Binds slider struts to their state indices (after realizeTopology).
   void bind(const State& s) {
@@ -207,7 +240,7 @@ class StrutElement : public Force::Custom::Implementation {
   bool bind_slider_ = false;
   MobilizedBody seat_slider_, seat_pin_;
   double seat_y_ = 0;
-  double force(double q, double qd) const {
+  StrutState strutState(double q, double qd) const {
     const double* p = ctx_->p;
     StrutState ss;
     ss.deflection_m = q;
@@ -215,6 +248,15 @@ class StrutElement : public Force::Custom::Implementation {
     ss.preload_N = preload_slot_ >= 0 ? p[preload_slot_] : preload_;
     ss.base_stiffness = p[p0_];
     ss.base_damping = p[p0_ + 1];
+    return ss;
+  }
+  ParamValues effectValues(std::size_t i) const {
+    return ParamValues(ctx_->p + m_->effectSlots()[i][0], m_->effects()[i]->parameters().size());
+  }
+  /// Strut force without the StrutFilter effects (they need the State's auxiliary variables).
+  double force(double q, double qd) const {
+    const double* p = ctx_->p;
+    const StrutState ss = strutState(q, qd);
     double F = m_->strut().calcForce(ss, ParamValues(p + p0_, 4));
     if (effects_) {
       const auto& effs = m_->effects();
@@ -234,6 +276,34 @@ class StrutElement : public Force::Custom::Implementation {
   int preload_slot_;
   double preload_;
   bool effects_;
+  SubsystemIndex sub_;
+  std::vector<std::size_t> filter_effects_;  // indices into the model's effects
+  mutable std::vector<ZIndex> zi_;           // their auxiliary states (set in realizeTopology)
+};
+
+/// An AxleCoupling effect on one axle: a force pair on the left and right main struts computed
+/// from both deflections (kin()/apply() of the two corners' StrutGeometry: MacPherson sliders or
+/// solid-axle spring seats). Installed only when such an effect is.
+class AxleCouplingElement : public Force::Custom::Implementation {
+ public:
+  AxleCouplingElement(const RunContext* ctx, const Effect* eff, std::size_t slot, const StrutGeometry* left,
+                      const StrutGeometry* right, bool front)
+      : ctx_(ctx), eff_(eff), slot_(slot), left_(left), right_(right), front_(front) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
+    const double F = eff_->calcAxleCouplingForce(left_->kin(s).q, right_->kin(s).q, front_,
+                                                 ParamValues(ctx_->p + slot_, eff_->parameters().size()));
+    if (F == 0.0) return;
+    left_->apply(s, F, bodyForces, mobilityForces);
+    right_->apply(s, -F, bodyForces, mobilityForces);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  const Effect* eff_;
+  std::size_t slot_;
+  const StrutGeometry *left_, *right_;  // the Impl's struts (bound after realizeTopology)
+  bool front_;
 };
 
 /// Gravity plus the d'Alembert load of the accelerating vehicle frame: m (-g z - a(t) x) at every
@@ -297,7 +367,12 @@ struct Simulator::Impl {
   QIndex heave_q, chassis_q;
   UIndex heave_u, chassis_u;
 
-  Impl(std::shared_ptr<const Model> m, SimulationOptions o) : model(std::move(m)), opt(std::move(o)) {
+  /// With StrutFilter effects installed, `filter_states` selects the system that integrates their
+  /// auxiliary states (used for runs where such an effect is active); without, they are inert.
+  bool filter_states = false;
+
+  Impl(std::shared_ptr<const Model> m, SimulationOptions o, bool with_filter_states = false)
+      : model(std::move(m)), opt(std::move(o)), filter_states(with_filter_states) {
     const std::string rule = opt.check();
     if (!rule.empty()) throw InputError("simulation", rule);
     build();
@@ -346,7 +421,8 @@ struct Simulator::Impl {
     }
     for (int c = 0; c < 4; ++c) {
       massive.push_back({wheels[c], d.wheel_mass});
-      auto* se = new StrutElement(&ctx, &M, struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true);
+      auto* se = new StrutElement(&ctx, &M, struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
+                                  filter_states, forces.getMySubsystemIndex());
       strut_elems[c] = se;
       if (M.topology() == SuspensionTopology::MacPherson) {
         se->bind_slider_ = true;  // the wheel carrier slides along the chassis z at the strut
@@ -367,9 +443,16 @@ struct Simulator::Impl {
       for (std::size_t i = 0; i < M.effects().size(); ++i)
         if (M.effects()[i]->kind() == EffectKind::TireInput)
           tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
+        else if (M.effects()[i]->kind() == EffectKind::TireForce)
+          tc.scalers.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
       tires[c] = tc;
       Force::Custom(forces, new TireElement(&ctx, tc, wheels[c]));
     }
+    for (std::size_t i = 0; i < M.effects().size(); ++i)
+      if (M.effects()[i]->kind() == EffectKind::AxleCoupling)
+        for (int ax = 0; ax < 2; ++ax)
+          Force::Custom(forces, new AxleCouplingElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]),
+                                                        &struts[2 * ax], &struts[2 * ax + 1], ax == 0));
     Force::Custom(forces, new BodyLoadElement(&ctx, massive, d.gravity));
     ctx.traction_per_wheel_per_accel = d.total_mass(M.topology()) / 4.0;
     system.realizeTopology();
@@ -767,12 +850,24 @@ Simulator::Simulator(std::shared_ptr<const Model> model, SimulationOptions optio
 Simulator::~Simulator() = default;
 const Model& Simulator::model() const { return *impl_->model; }
 const SimulationOptions& Simulator::options() const { return impl_->opt; }
+Simulator::Impl& Simulator::pick(const std::vector<double>& values) {
+  const Model& M = *impl_->model;
+  if (values.size() != M.runParameterNames().size()) return *impl_;  // begin() reports it
+  bool active = false;
+  for (std::size_t i = 0; i < M.effects().size(); ++i)
+    if (M.effects()[i]->kind() == EffectKind::StrutFilter)
+      active = active || M.effects()[i]->filterActive(
+                             ParamValues(values.data() + M.effectSlots()[i][0], M.effects()[i]->parameters().size()));
+  if (!active) return *impl_;
+  if (!impl_filter_) impl_filter_ = std::make_unique<Impl>(impl_->model, impl_->opt, true);
+  return *impl_filter_;
+}
 RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
-  return impl_->run(values, road, sc);
+  return pick(values).run(values, road, sc);
 }
 std::vector<RunResult> Simulator::runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
                                               const ScenarioSpec& sc) {
-  return impl_->runBranched(values, roads, sc);
+  return pick(values).runBranched(values, roads, sc);
 }
 double Simulator::branchTime(const ScenarioSpec& sc) const { return impl_->branchTime(sc); }
 

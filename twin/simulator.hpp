@@ -96,7 +96,12 @@ class Simulator {
 
  private:
   struct Impl;
+  /// The system the run vector `values` needs: impl_, or (built on first use) impl_filter_, which
+  /// also integrates the auxiliary states of StrutFilter effects (top_mount_compliance) for runs
+  /// where one is switched on. At their off values no extra state exists: exactly the base model.
+  Impl& pick(const std::vector<double>& values);
   std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_filter_;
 };
 
 }  // namespace dtwin

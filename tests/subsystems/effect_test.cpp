@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -65,6 +66,13 @@ void checkEffectContract(const Effect& e) {
     EXPECT_FALSE(spec.unit.empty()) << spec.name;
     EXPECT_FALSE(spec.description.empty()) << spec.name;
     EXPECT_EQ(checkParameterValue(spec, spec.default_value), "") << spec.name << ": the off value is invalid";
+    // The prior range: finite, non-empty, valid, and containing the off value.
+    EXPECT_TRUE(std::isfinite(spec.prior_lower) && std::isfinite(spec.prior_upper)) << spec.name;
+    EXPECT_LT(spec.prior_lower, spec.prior_upper) << spec.name;
+    EXPECT_EQ(checkParameterValue(spec, spec.prior_lower), "") << spec.name;
+    EXPECT_EQ(checkParameterValue(spec, spec.prior_upper), "") << spec.name;
+    EXPECT_LE(spec.prior_lower, spec.default_value) << spec.name;
+    EXPECT_GE(spec.prior_upper, spec.default_value) << spec.name;
   }
   const std::vector<double> off = offValues(e);
 
@@ -76,6 +84,25 @@ void checkEffectContract(const Effect& e) {
     }
   for (double q : {-1.0, 0.5, 2.0})
     for (double qdot : {-50.0, -1e-9, 1e-9, 50.0}) EXPECT_EQ(e.calcStrutForce(strut(q, qdot), off), 0.0);
+
+  // Tire force factor exactly 1; no axle coupling force; no auxiliary state and no filtered force.
+  for (double rho : {-0.01, 0.0, 0.02, 0.2})
+    for (double v : {0.0, 1.0, 8.9408, 40.0}) {
+      TireState ts;
+      ts.deflection_m = rho;
+      ts.forward_speed_mps = v;
+      ts.wheel_speed_radps = v / 0.3;
+      EXPECT_EQ(e.tireForceFactor(ts, off), 1.0) << "rho " << rho << " v " << v;
+    }
+  for (double ql : {-0.2, 0.0, 0.03, 0.3})
+    for (double qr : {-0.1, 0.0, 0.05})
+      for (bool front : {true, false}) EXPECT_EQ(e.calcAxleCouplingForce(ql, qr, front, off), 0.0);
+  EXPECT_FALSE(e.filterActive(off));
+  for (double qdot : {-2.0, 0.0, 0.5})
+    for (double z : {-1000.0, 0.0, 300.0}) {
+      EXPECT_EQ(e.calcFilteredStrutForce(strut(0.02, qdot), z, off), 0.0);
+      EXPECT_EQ(e.calcFilterRate(strut(0.02, qdot), z, off), 0.0);
+    }
 
   // The road seen by the tire is exactly the road.
   BumpRoad bump(5.0, 0.2, 0.1);
@@ -96,7 +123,7 @@ void checkEffectContract(const Effect& e) {
 
 TEST(EffectContract, EveryEffectIsInertAtItsOffValues) {
   const auto names = effectNames();
-  ASSERT_GE(names.size(), 4u);
+  ASSERT_GE(names.size(), 8u);
   for (const auto& name : names) {
     SCOPED_TRACE("effect " + name);
     auto e = makeEffect(name, "test");
@@ -111,6 +138,10 @@ TEST(EffectContract, KindsAreAsDocumented) {
   EXPECT_EQ(makeEffect("damper_asymmetry", "t")->kind(), EffectKind::Strut);
   EXPECT_EQ(makeEffect("strut_friction", "t")->kind(), EffectKind::Strut);
   EXPECT_EQ(makeEffect("tire_enveloping", "t")->kind(), EffectKind::TireInput);
+  EXPECT_EQ(makeEffect("progressive_spring", "t")->kind(), EffectKind::Strut);
+  EXPECT_EQ(makeEffect("speed_dependent_tire_stiffness", "t")->kind(), EffectKind::TireForce);
+  EXPECT_EQ(makeEffect("anti_roll_bar", "t")->kind(), EffectKind::AxleCoupling);
+  EXPECT_EQ(makeEffect("top_mount_compliance", "t")->kind(), EffectKind::StrutFilter);
 }
 
 TEST(EffectFactory, UnknownNameThrowsInputError) {
@@ -269,6 +300,129 @@ TEST(TireEnveloping, ShortWindowTendsToPointContact) {
     EXPECT_NEAR(e->filterRoad(bump, Track::Left, x, v).height_m, bump.sample(Track::Left, x).height_m, 1e-5);
     EXPECT_NEAR(e->filterRoad(bump, Track::Left, x, v).slope, bump.sample(Track::Left, x).slope, 1e-3);
   }
+}
+
+// ------------------------------------------------------------------ progressive spring
+
+TEST(ProgressiveSpring, CubicOddMonotoneWithStatedTangentStiffness) {
+  auto e = makeEffect("progressive_spring", "t");
+  const double k3 = 2.0e6;
+  const auto v = valuesWith(*e, {{"stiffness3", k3}});
+  for (double q : {-0.3, -0.1, -0.01, 0.0, 0.02, 0.1, 0.25})
+    for (double qdot : {-1.0, 0.0, 2.0}) {  // independent of the rate
+      const double expected = k3 * q * q * q;
+      EXPECT_NEAR(e->calcStrutForce(strut(q, qdot), v), expected, 1e-12 * std::abs(expected) + 1e-300) << q;
+      EXPECT_EQ(e->calcStrutForce(strut(-q, qdot), v), -e->calcStrutForce(strut(q, qdot), v)) << q;  // odd
+    }
+  double prev = -1e300;
+  for (int i = -300; i <= 300; ++i) {  // monotone increasing
+    const double f = e->calcStrutForce(strut(0.001 * i, 0.0), v);
+    EXPECT_GE(f, prev);
+    prev = f;
+  }
+  // Finite-difference stiffness = 3 k3 q^2 (zero at the design height).
+  const double h = 1e-6;
+  for (double q : {-0.15, 0.05, 0.1, 0.2}) {
+    const double fd = (e->calcStrutForce(strut(q + h, 0), v) - e->calcStrutForce(strut(q - h, 0), v)) / (2 * h);
+    EXPECT_NEAR(fd / (3 * k3 * q * q), 1.0, 1e-6) << q;
+  }
+  const double fd0 = (e->calcStrutForce(strut(h, 0), v) - e->calcStrutForce(strut(-h, 0), v)) / (2 * h);
+  EXPECT_NEAR(fd0, 0.0, 1e-5);
+}
+
+// ------------------------------------------------------------------ speed-dependent tire stiffness
+
+TEST(SpeedDependentTireStiffness, FactorIsOnePlusCvTimesSpeed) {
+  auto e = makeEffect("speed_dependent_tire_stiffness", "t");
+  const double cv = 0.006;
+  const auto v = valuesWith(*e, {{"c_v", cv}});
+  TireState ts;
+  ts.deflection_m = 0.02;
+  EXPECT_EQ(e->tireForceFactor(ts, v), 1.0);  // none at rest
+  double prev = 1.0;
+  for (double speed : {0.5, 2.0, 8.9408, 20.0, 40.0}) {
+    ts.forward_speed_mps = speed;
+    ts.wheel_speed_radps = speed / 0.3;
+    const double f = e->tireForceFactor(ts, v);
+    EXPECT_NEAR(f, 1.0 + cv * speed, 1e-15) << speed;
+    EXPECT_GT(f, prev);  // monotone in speed
+    prev = f;
+    // Independent of the deflection: the stiffness is scaled by the same factor. Finite
+    // differences on a linear law k rho scaled by the factor give k (1 + c_v v).
+    const double k = 2.0e5, h = 1e-7;
+    auto force = [&](double rho) {
+      TireState s2 = ts;
+      s2.deflection_m = rho;
+      return k * rho * e->tireForceFactor(s2, v);
+    };
+    EXPECT_NEAR((force(0.02 + h) - force(0.02 - h)) / (2 * h) / (k * (1 + cv * speed)), 1.0, 1e-6);
+  }
+}
+
+// ------------------------------------------------------------------ anti-roll bar
+
+TEST(AntiRollBar, ForceIsAxleRateTimesDeflectionDifference) {
+  auto e = makeEffect("anti_roll_bar", "t");
+  const double kf = 20000.0, kr = 8000.0;
+  const auto v = valuesWith(*e, {{"stiffness_front_N_per_m", kf}, {"stiffness_rear_N_per_m", kr}});
+  for (double ql : {-0.1, 0.0, 0.04, 0.2})
+    for (double qr : {-0.05, 0.0, 0.04}) {
+      EXPECT_NEAR(e->calcAxleCouplingForce(ql, qr, true, v), kf * (ql - qr), 1e-12 * kf);
+      EXPECT_NEAR(e->calcAxleCouplingForce(ql, qr, false, v), kr * (ql - qr), 1e-12 * kr);
+      // Antisymmetric: swapping the sides negates the force (the right strut gets -F).
+      EXPECT_EQ(e->calcAxleCouplingForce(qr, ql, true, v), -e->calcAxleCouplingForce(ql, qr, true, v));
+    }
+  // Identical deflections: nothing, whatever the stiffness.
+  for (double q : {-0.1, 0.0, 0.07}) EXPECT_EQ(e->calcAxleCouplingForce(q, q, true, v), 0.0);
+  // Stated stiffness by finite differences (d/dq_left = k, d/dq_right = -k), monotone in q_left.
+  const double h = 1e-6;
+  EXPECT_NEAR((e->calcAxleCouplingForce(0.03 + h, 0.01, true, v) - e->calcAxleCouplingForce(0.03 - h, 0.01, true, v)) / (2 * h) / kf,
+              1.0, 1e-6);
+  EXPECT_NEAR((e->calcAxleCouplingForce(0.03, 0.01 + h, false, v) - e->calcAxleCouplingForce(0.03, 0.01 - h, false, v)) / (2 * h) / kr,
+              -1.0, 1e-6);
+  // Only one axle's bar installed: the other exerts nothing.
+  const auto front_only = valuesWith(*e, {{"stiffness_front_N_per_m", kf}});
+  EXPECT_EQ(e->calcAxleCouplingForce(0.05, -0.05, false, front_only), 0.0);
+}
+
+// ------------------------------------------------------------------ top-mount compliance
+
+TEST(TopMountCompliance, FirstOrderFilterOfTheDampingForce) {
+  auto e = makeEffect("top_mount_compliance", "t");
+  const double C = 4e-6, c = 2500.0, tau = c * C;
+  const auto v = valuesWith(*e, {{"compliance_m_per_N", C}});
+  EXPECT_TRUE(e->filterActive(v));
+  // Steady state: z = c qdot gives no extra force and no change.
+  for (double qdot : {-1.0, 0.0, 0.3}) {
+    EXPECT_EQ(e->calcFilteredStrutForce(strut(0.01, qdot), c * qdot, v), 0.0);
+    EXPECT_EQ(e->calcFilterRate(strut(0.01, qdot), c * qdot, v), 0.0);
+  }
+  // The extra force replaces c qdot by z; the rate is (c qdot - z) / tau (d rate / dz = -1/tau).
+  EXPECT_NEAR(e->calcFilteredStrutForce(strut(0.0, 0.2), 100.0, v), 100.0 - c * 0.2, 1e-9);
+  const double h = 1e-3;
+  const double fd = (e->calcFilterRate(strut(0, 0.2), 100.0 + h, v) - e->calcFilterRate(strut(0, 0.2), 100.0 - h, v)) / (2 * h);
+  EXPECT_NEAR(fd * tau, -1.0, 1e-9);
+  // Frequency response of the transmitted damping force z to qdot = sin(w t): gain
+  // c / sqrt(1 + (w tau)^2) (RK4 integration to a periodic steady state).
+  for (double f_hz : {1.0, 12.0, 40.0}) {
+    const double w = 2 * M_PI * f_hz, dt = std::min(tau, 1 / f_hz) / 200.0;
+    double z = 0.0, t = 0.0, amp = 0.0;
+    auto rate = [&](double tt, double zz) { return e->calcFilterRate(strut(0.0, std::sin(w * tt)), zz, v); };
+    const double t_end = 10 * tau + 5.0 / f_hz;
+    while (t < t_end) {
+      const double k1 = rate(t, z), k2 = rate(t + dt / 2, z + dt / 2 * k1), k3 = rate(t + dt / 2, z + dt / 2 * k2),
+                   k4 = rate(t + dt, z + dt * k3);
+      z += dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+      t += dt;
+      if (t > t_end - 2.0 / f_hz) amp = std::max(amp, std::abs(z));
+    }
+    EXPECT_NEAR(amp / (c / std::sqrt(1 + w * w * tau * tau)), 1.0, 2e-3) << f_hz << " Hz";
+  }
+  // No damping: nothing to filter.
+  StrutState s0 = strut(0.0, 0.5);
+  s0.base_damping = 0.0;
+  EXPECT_EQ(e->calcFilteredStrutForce(s0, 0.0, v), 0.0);
+  EXPECT_EQ(e->calcFilterRate(s0, 0.0, v), 0.0);
 }
 
 // ------------------------------------------------------------------ linear strut

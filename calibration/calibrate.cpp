@@ -22,15 +22,6 @@ namespace fs = std::filesystem;
 
 namespace dtwin::calib {
 
-std::uint64_t fnv1a64(const std::string& bytes) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
-
 // ------------------------------------------------------------------ LabObjective
 struct LabObjective::Pool {
   std::shared_ptr<const Model> model;
@@ -159,6 +150,16 @@ double LabObjective::medianWallSeconds() const {
 }
 
 // ------------------------------------------------------------------ options
+CalibrationOptions CalibrationOptions::fromStudy(const Study& study) {
+  CalibrationOptions o;
+  o.optimizer_starts = static_cast<int>(study.sizes.at("optimizer_starts"));
+  o.lhs_points = static_cast<int>(study.sizes.at("lhs_points"));
+  o.gibbs_iterations = static_cast<int>(study.sizes.at("gibbs_iterations"));
+  o.gibbs_burn_in = static_cast<int>(study.sizes.at("gibbs_burn_in"));
+  o.seed = study.seed;
+  return o;
+}
+
 void CalibrationOptions::validate() const {
   if (optimizer_starts < 1) throw InputError("optimizer_starts", "must be >= 1, got " + std::to_string(optimizer_starts));
   if (lhs_points < 2) throw InputError("lhs_points", "must be >= 2, got " + std::to_string(lhs_points));
@@ -312,15 +313,6 @@ std::string hex(std::uint64_t v) {
   char b[17];
   std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(v));
   return b;
-}
-
-/// Runs `write` on the root only (the only rank that writes files); its error reaches every rank.
-template <class F>
-void rootWrites(F write) {
-  onRoot([&]() -> std::string {
-    write();
-    return std::string();
-  });
 }
 
 std::vector<double> packStart(const StartResult& r) {
@@ -608,6 +600,17 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   res.stage_wall_s.push_back({"gibbs", secondsSince(t0)});
   res.stage_wall_s.push_back({"total", secondsSince(t_all)});
   res.median_run_wall_s = objective.medianWallSeconds();
+
+  nlohmann::json j = res.toJson();
+  j["program"] = programInfo();
+  j["command"] = options.command;
+  j["created_utc"] = utcNow();
+  j["study"] = study.path;
+  j["scenario"] = scenario;
+  j["data"] = {{"path", options.data_path}, {"records", data.records.size()}, {"fnv1a64", fingerprint_extra}};
+  j["options"] = options.toJson();
+  j["threads"] = options.threads;
+  rootWrites([&] { writeFileAtomic((fs::path(out_dir) / "summary.json").string(), j.dump(2) + "\n"); });
   return res;
 }
 

@@ -25,6 +25,7 @@
 #include "calibration/optimize.hpp"
 #include "calibration/summary.hpp"
 #include "twin/measurement.hpp"
+#include "twin/provenance.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
 
@@ -83,7 +84,12 @@ struct CalibrationOptions {
   std::uint64_t seed = 1;
   OptimizerOptions optimizer;
   FeasibleBoxOptions box;
+  /// Recorded in summary.json, not part of the resume fingerprint.
+  std::string command, data_path;
+  /// The sizes (optimizer_starts, lhs_points, gibbs_iterations, gibbs_burn_in) and seed of a study.
+  static CalibrationOptions fromStudy(const Study& study);
   void validate() const;
+  /// What changes the numbers (the resume fingerprint includes it).
   nlohmann::json toJson() const;
 };
 
@@ -116,7 +122,6 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
                                     const std::string& out_dir, const std::string& fingerprint_extra,
                                     const StageProgress& progress = {});
 
-/// 64-bit FNV-1a of a byte string (portable content fingerprint).
-std::uint64_t fnv1a64(const std::string& bytes);
+using ::dtwin::fnv1a64;  // twin/provenance.hpp
 
 }  // namespace dtwin::calib

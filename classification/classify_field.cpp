@@ -33,19 +33,6 @@ std::string exact(double v) {
   return v > 0 ? "inf" : "-inf";
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string hex16(std::uint64_t v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "0x%016llX", static_cast<unsigned long long>(v));
-  return b;
-}
-
 nlohmann::json readJsonFile(const fs::path& p) {
   std::ifstream in(p);
   if (!in) throw InputError(p.string(), "cannot open");
@@ -357,7 +344,7 @@ FieldClassification classifyFieldFile(const Study& study, const std::string& fie
   if (!fs::exists(field_csv)) throw InputError(field_csv, "field data file not found (--field)");
   const FieldData field = readFieldCsv(field_csv);
   std::string channel;
-  nlohmann::json info{{"path", field_csv}, {"fnv1a64", hex16(calib::fnv1a64(slurp(field_csv)))}};
+  nlohmann::json info{{"path", field_csv}, {"fnv1a64", hexId(calib::fnv1a64(readFileBytes(field_csv)))}};
   const std::string side = sidecarPath(field_csv);
   if (fs::exists(side)) {
     try {

@@ -19,13 +19,6 @@ namespace fs = std::filesystem;
 namespace dtwin::classify {
 namespace {
 
-std::string fileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -36,26 +29,6 @@ bool done(const fs::path& p) {
   return onRoot([&] { return std::string(fs::exists(p) ? "1" : "0"); }) == "1";
 }
 
-/// A file's bytes as the root reads them, on every rank (files written by the root in this run
-/// are never read from another rank's view of a shared filesystem).
-std::string rootBytes(const std::string& path) {
-  return onRoot([&] {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "cannot open file (does it exist and is it readable?)");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  });
-}
-
-/// Runs `write` on the root only; its error reaches every rank.
-template <class F>
-void rootWrites(F write) {
-  onRoot([&]() -> std::string {
-    write();
-    return std::string();
-  });
-}
 
 }  // namespace
 
@@ -77,10 +50,10 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
 
   // The study's fingerprint: a rerun into the same folder must be the same study.
   rootWrites([&] {
-    nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(fileBytes(study.path)))},
-                      {"vehicle_file", std::to_string(calib::fnv1a64(fileBytes(study.vehicle_path)))},
-                      {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.lab_file)))},
-                      {"field_file", options.field_file.empty() ? "" : std::to_string(calib::fnv1a64(fileBytes(options.field_file)))}};
+    nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(readFileBytes(study.path)))},
+                      {"vehicle_file", std::to_string(calib::fnv1a64(readFileBytes(study.vehicle_path)))},
+                      {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(readFileBytes(options.lab_file)))},
+                      {"field_file", options.field_file.empty() ? "" : std::to_string(calib::fnv1a64(readFileBytes(options.field_file)))}};
     const fs::path record = out / "study.json";
     if (fs::exists(record)) {
       nlohmann::json j;
@@ -118,7 +91,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
       });
     }
   }
-  const std::string lab_bytes = rootBytes(lab_path);
+  const std::string lab_bytes = rootFileBytes(lab_path);
   const LabData lab = parseLabCsv(lab_bytes, lab_path);
   stages["lab"] = since(t0);
 
@@ -143,13 +116,10 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
 
   // ---- 3. calibration of every assembly
   t0 = std::chrono::steady_clock::now();
-  calib::CalibrationOptions co;
+  calib::CalibrationOptions co = calib::CalibrationOptions::fromStudy(study);
   co.threads = options.threads;
-  co.lhs_points = static_cast<int>(study.sizes.at("lhs_points"));
-  co.gibbs_iterations = static_cast<int>(study.sizes.at("gibbs_iterations"));
-  co.gibbs_burn_in = static_cast<int>(study.sizes.at("gibbs_burn_in"));
-  co.optimizer_starts = static_cast<int>(study.sizes.at("optimizer_starts"));
-  co.seed = study.seed;
+  co.command = options.command;
+  co.data_path = lab_path;
   const std::string lab_hash = std::to_string(calib::fnv1a64(lab_bytes));
   nlohmann::json calibrated;
   for (const auto& a : assemblies) {
@@ -180,7 +150,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
     const std::string post_path = (out / "calibration" / a.id / "posterior.csv").string();
     const auto post = parsePosteriorCsv(onRoot([&] {
                                           if (!fs::exists(post_path)) throw InputError(post_path, "posterior file not found");
-                                          return fileBytes(post_path);
+                                          return readFileBytes(post_path);
                                         }),
                                         post_path);
     const auto r = synthesizeAssembly(study, a, post, so, (out / "synthetic" / a.id).string(),

@@ -26,20 +26,6 @@ namespace fs = std::filesystem;
 namespace dtwin::classify {
 namespace {
 
-std::string hex16(std::uint64_t v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "0x%016llX", static_cast<unsigned long long>(v));
-  return b;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string trim(const std::string& s) {
   std::size_t a = 0, b = s.size();
   while (a < b && (s[a] == ' ' || s[a] == '\t')) ++a;
@@ -207,7 +193,7 @@ PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& na
 
 PosteriorSample readPosteriorCsv(const std::string& path) {
   if (!fs::exists(path)) throw InputError(path, "posterior file not found");
-  return parsePosteriorCsv(slurp(path), path);
+  return parsePosteriorCsv(readFileBytes(path), path);
 }
 
 // ------------------------------------------------------------------ synthesis
@@ -271,13 +257,13 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
 
   // Fingerprint: everything that changes the numbers (not threads, not the checkpoint interval).
   const bool root = Distributed::instance().isRoot();  // only the root writes files
-  const std::string post_text = root && fs::exists(post.path) ? slurp(post.path) : std::string();
+  const std::string post_text = root && fs::exists(post.path) ? readFileBytes(post.path) : std::string();
   std::string post_rows;
   for (std::size_t i = 0; i < post.size(); ++i) {
     for (double v : post.theta[i]) post_rows += formatExact(v) + ",";
     post_rows += formatExact(post.tau[i]) + "\n";
   }
-  const std::string post_hash = hex16(calib::fnv1a64(post_rows));
+  const std::string post_hash = hexId(calib::fnv1a64(post_rows));
   nlohmann::json fp{{"format", 1},
                     {"assembly", assembly.id},
                     {"label", assembly.label()},
@@ -288,7 +274,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
                     {"road_library", L},
                     {"block", B},
                     {"seed", seed},
-                    {"streams", {hex16(kSynthDrawStream), hex16(kSynthRoadStream), hex16(kSynthNoiseStream), hex16(kRoadLibraryStream)}},
+                    {"streams", {hexId(kSynthDrawStream), hexId(kSynthRoadStream), hexId(kSynthNoiseStream), hexId(kRoadLibraryStream)}},
                     {"scenario", sc.toJson()},
                     {"simulation", study.simulation.toJson()},
                     {"channel", opt.channel},
@@ -297,7 +283,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
                     {"track_fourth_moment", opt.track_fourth_moment},
                     {"branched", branched},
                     {"run_values", base}};
-  const std::string fingerprint = hex16(calib::fnv1a64(fp.dump()));
+  const std::string fingerprint = hexId(calib::fnv1a64(fp.dump()));
 
   if (root) fs::create_directories(out_dir);
   const fs::path dir(out_dir);
@@ -315,7 +301,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
 
   // Resume decisions are taken on what the root reads (the same bytes on every MPI rank).
   auto rootRead = [&](const fs::path& path) {
-    return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + slurp(path.string()) : std::string(); });
+    return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + readFileBytes(path.string()) : std::string(); });
   };
   auto parseJson = [](const std::string& text) {
     nlohmann::json j;
@@ -604,7 +590,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   j["assembly"] = assembly.id;
   j["label"] = assembly.label();
   j["posterior"] = {{"path", post.path}, {"rows", post.size()}, {"parameters", names}, {"values_fnv1a64", post_hash},
-                    {"file_fnv1a64", post_text.empty() ? std::string() : hex16(calib::fnv1a64(post_text))}};
+                    {"file_fnv1a64", post_text.empty() ? std::string() : hexId(calib::fnv1a64(post_text))}};
   j["draws"] = M;
   j["roads_per_draw"] = R;
   j["road_library"] = L;
@@ -617,13 +603,13 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   if (failures.size() > 1000) j["failure_list_truncated"] = true;
   j["seed"] = seed;
   j["streams"] = {
-      {"draw", {{"constant", hex16(kSynthDrawStream)},
+      {"draw", {{"constant", hexId(kSynthDrawStream)},
                 {"rule", "draw j uses posterior row floor(u * rows), u the first uniform of RandomStream(seed, draw, j)"}}},
-      {"road", {{"constant", hex16(kSynthRoadStream)},
+      {"road", {{"constant", hexId(kSynthRoadStream)},
                 {"rule", "draw j's library indices: floor(u * library) from RandomStream(seed, road, j), redrawn while one repeats"}}},
-      {"road_library", {{"constant", hex16(kRoadLibraryStream)},
+      {"road_library", {{"constant", hexId(kRoadLibraryStream)},
                         {"rule", "library road i has seed RandomStream(seed, road_library, i).bits() >> 11 (not the field data's stream)"}}},
-      {"noise", {{"constant", hex16(kSynthNoiseStream)},
+      {"noise", {{"constant", hexId(kSynthNoiseStream)},
                  {"rule", "vector (j, r) adds sigma_j * N(0, 1) from RandomStream(seed, noise, j * roads_per_draw + r) in time order"}}}};
   j["noise"] = {{"applied", noisy},
                 {"rule", noisy ? "N(0, 1/tau_j) per value, tau_j from the posterior row of draw j"

@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "subsystems/errors.hpp"
+#include "twin/distributed.hpp"
 #include "twin/measurement.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"
@@ -26,13 +27,6 @@ struct CalibrateConfig {
   bool quiet = false;
 };
 
-std::string fileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
   study.scenario(cfg.scenario);  // validates the name
@@ -43,17 +37,19 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   else targets.push_back(study.assembly(cfg.assembly));
   if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
 
-  calib::CalibrationOptions opt;
+  calib::CalibrationOptions opt = calib::CalibrationOptions::fromStudy(study);
   opt.threads = cfg.threads;
-  opt.lhs_points = static_cast<int>(cfg.lhs_points > 0 ? cfg.lhs_points : study.sizes.at("lhs_points"));
-  opt.gibbs_iterations = static_cast<int>(cfg.iterations > 0 ? cfg.iterations : study.sizes.at("gibbs_iterations"));
-  opt.gibbs_burn_in = static_cast<int>(cfg.burn_in >= 0 ? cfg.burn_in : study.sizes.at("gibbs_burn_in"));
-  opt.optimizer_starts = static_cast<int>(cfg.starts > 0 ? cfg.starts : study.sizes.at("optimizer_starts"));
-  opt.seed = cfg.seed >= 0 ? static_cast<std::uint64_t>(cfg.seed) : study.seed;
+  if (cfg.lhs_points > 0) opt.lhs_points = static_cast<int>(cfg.lhs_points);
+  if (cfg.iterations > 0) opt.gibbs_iterations = static_cast<int>(cfg.iterations);
+  if (cfg.burn_in >= 0) opt.gibbs_burn_in = static_cast<int>(cfg.burn_in);
+  if (cfg.starts > 0) opt.optimizer_starts = static_cast<int>(cfg.starts);
+  if (cfg.seed >= 0) opt.seed = static_cast<std::uint64_t>(cfg.seed);
+  opt.command = command;
+  opt.data_path = cfg.data;
   if (opt.gibbs_burn_in >= opt.gibbs_iterations)
     throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(opt.gibbs_iterations) + ")");
   opt.validate();
-  const std::string data_hash = std::to_string(calib::fnv1a64(fileBytes(cfg.data)));
+  const std::string data_hash = std::to_string(calib::fnv1a64(readFileBytes(cfg.data)));
 
   const bool bar_on = !cfg.quiet && stderrIsTerminal();
   if (!cfg.quiet)

@@ -20,9 +20,6 @@ std::string defaultStudy();
 std::string joinArgs(int argc, char** argv);
 /// True when stderr is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
-/// Runs `write` on the MPI root only (the only rank that writes files; without MPI: at once);
-/// an exception it throws is rethrown on every rank. Every rank must call it (a collective).
-void rootWrites(const std::function<void()>& write);
 /// True on the rank that prints and writes (always, without MPI).
 bool isRootRank();
 

@@ -26,13 +26,6 @@ std::string joinArgs(int argc, char** argv) {
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
 
-void rootWrites(const std::function<void()>& write) {
-  onRoot([&]() -> std::string {
-    write();
-    return std::string();
-  });
-}
-
 bool isRootRank() { return Distributed::instance().isRoot(); }
 
 }  // namespace dtwin::cli

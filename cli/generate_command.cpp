@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "subsystems/errors.hpp"
+#include "twin/distributed.hpp"
 #include "twin/generate.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"

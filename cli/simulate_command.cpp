@@ -93,7 +93,7 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
     const std::string csv = all ? (fs::path(cfg.out) / (a.id + "_" + sc.name + ".csv")).string() : cfg.out;
     const double t_lo = cfg.window.empty() ? -1e300 : cfg.window[0], t_hi = cfg.window.empty() ? 1e300 : cfg.window[1];
     writeFileAtomic(csv, r.trace.toCsv(channels, t_lo, t_hi));
-    const auto rec = runRecord(study, *model, sc, *road, seed, values, opt, r.stats, Simulator::channels(), command);
+    const auto rec = runRecord(study, *model, sc, road->describe(), seed, values, opt, r.stats, Simulator::channels(), command);
     writeFileAtomic(sidecarPath(csv), rec.dump(2) + "\n");
     const double peak = peakOf(r.trace, "hub_force_fl_N");
     if (!cfg.quiet)

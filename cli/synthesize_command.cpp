@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "subsystems/errors.hpp"
+#include "twin/distributed.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"
 

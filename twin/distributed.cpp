@@ -7,6 +7,8 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <thread>
 
 #include "subsystems/errors.hpp"
@@ -17,6 +19,16 @@
 #endif
 
 namespace dtwin {
+
+std::string rootFileBytes(const std::string& path) {
+  return onRoot([&] {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "cannot be read");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  });
+}
 namespace {
 
 #ifdef DTWIN_HAVE_MPI

@@ -168,6 +168,19 @@ std::string onRoot(F f) {
   return D.broadcastFromRoot(payload, error);
 }
 
+/// Runs `write` on the root only (the only rank that writes files); its error reaches every rank.
+template <class F>
+void rootWrites(F write) {
+  onRoot([&]() -> std::string {
+    write();
+    return std::string();
+  });
+}
+
+/// A file's bytes as the root reads them (InputError if it cannot be read), on every rank: files the root wrote in
+/// this run are never read from another rank's view of a shared filesystem.
+std::string rootFileBytes(const std::string& path);
+
 /// Packing of mixed values into the doubles distributedMap carries (integers up to 2^53 exactly,
 /// strings byte by byte).
 class Packer {

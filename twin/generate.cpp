@@ -17,12 +17,6 @@
 namespace dtwin {
 namespace {
 
-std::string hex(std::uint64_t v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "0x%016llX", static_cast<unsigned long long>(v));
-  return buf;
-}
-
 double noiseVariance(const Study& study, const std::optional<double>& override_value) {
   const double v = override_value.value_or(study.noise_variance_N2);
   if (!(std::isfinite(v) && v >= 0)) throw InputError("noise variance", "must be a finite number >= 0 [N^2], got " + std::to_string(v));
@@ -189,7 +183,7 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   }
   validateLabData(res.data, "generated lab data");
 
-  nlohmann::json j = runRecord(study, *model, sc, *road, seed, values, study.simulation, run.stats, channels, opt.command);
+  nlohmann::json j = runRecord(study, *model, sc, road->describe(), seed, values, study.simulation, run.stats, channels, opt.command);
   j["kind"] = "lab";
   j["format"] = "tidy CSV: repetition,time_s,channel,value (docs/data-files.md)";
   j["truth"] = truthJson(study, *model);
@@ -201,7 +195,7 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
                 {"applied_to", noisy},
                 {"not_applied_to", clean},
                 {"seed", seed},
-                {"stream", hex(kLabNoiseStream)},
+                {"stream", hexId(kLabNoiseStream)},
                 {"rule", "repetition r draws from RandomStream(seed, stream, r - 1) (mt19937_64 seeded by SplitMix64, "
                          "Box-Muller), in the order of the channels, then of the times"}};
   j["lab"] = {{"repetitions", reps},
@@ -285,24 +279,25 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  FlatRoad placeholder;
   RunStats total;
   total.sim_s = sc.duration_s * static_cast<double>(N);
   total.wall_s = wall;
   for (const auto& s : stats) total.steps += s.steps;
-  nlohmann::json j = runRecord(study, *model, sc, placeholder, seed, values, study.simulation, total, {channel}, opt.command);
+  const nlohmann::json road_family{
+      {"family", sc.toJson()["road"]},
+      {"seed_rule", "road seed of run k = RandomStream(seed, " + hexId(kFieldRoadStream) +
+                        ", k - 1).bits() >> 11 (53 bits: exact as a double); `twin simulate --scenario " + sc.name +
+                        " --seed <road seed>` reproduces run k without noise"}};
+  nlohmann::json j = runRecord(study, *model, sc, road_family, seed, values, study.simulation, total, {channel}, opt.command);
   j["kind"] = "field";
   j["format"] = "CSV matrix: run,road_seed,t_<seconds>,... one row per run (docs/data-files.md)";
   j["truth"] = truthJson(study, *model);
-  j["road"] = {{"family", sc.toJson()["road"]},
-               {"seed_rule", "road seed of run k = RandomStream(seed, " + hex(kFieldRoadStream) +
-                                 ", k - 1).bits() >> 11 (53 bits: exact as a double); `twin simulate --scenario " + sc.name + " --seed <road seed>` reproduces run k without noise"}};
   j["noise"] = {{"distribution", "independent normal N(0, variance) added to every value (channels in N only)"},
                 {"variance_N2", variance},
                 {"sigma_N", sigma},
                 {"applied", noisy},
                 {"seed", seed},
-                {"stream", hex(kFieldNoiseStream)},
+                {"stream", hexId(kFieldNoiseStream)},
                 {"rule", "run k draws from RandomStream(seed, stream, k - 1) (mt19937_64 seeded by SplitMix64, Box-Muller), "
                          "one value per time in time order"}};
   j["field"] = {{"channel", channel.name},

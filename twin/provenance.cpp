@@ -1,6 +1,7 @@
 #include "twin/provenance.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 
@@ -10,6 +11,21 @@ namespace dtwin {
 
 nlohmann::json programInfo() { return {{"name", "twin"}, {"version", kVersion}, {"git", kGitDescribe}}; }
 
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+std::string hexId(std::uint64_t v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "0x%016llX", static_cast<unsigned long long>(v));
+  return b;
+}
+
 std::string utcNow() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char buf[32];
@@ -17,7 +33,7 @@ std::string utcNow() {
   return buf;
 }
 
-nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioSpec& scenario, const Road& road,
+nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioSpec& scenario, const nlohmann::json& road,
                          std::uint64_t seed, const std::vector<double>& values, const SimulationOptions& options,
                          const RunStats& stats, const std::vector<Channel>& channels, const std::string& command) {
   nlohmann::json j;
@@ -28,7 +44,7 @@ nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioS
   j["assembly"] = {{"id", model.assembly().id}, {"label", model.assembly().label()}, {"effects", model.assembly().effects}};
   for (auto& [s, o] : model.assembly().options) j["assembly"]["options"][s] = o;
   j["scenario"] = scenario.toJson();
-  j["road"] = road.describe();
+  j["road"] = road;
   j["seed"] = seed;
   nlohmann::json rp = nlohmann::json::object();
   for (std::size_t i = 0; i < values.size(); ++i) {

@@ -126,8 +126,8 @@ struct StrutGeometry {
   /// length change is exactly the slider coordinate: read q, u, u-dot from the State directly
   /// (no kinematics through Simbody's body caches), and apply the force as a mobility force.
   bool is_slider = false;
-  QIndex qi;
-  UIndex ui;
+  QIndex qi{};
+  UIndex ui{};
   struct Kin {
     double q, qd;
   };
@@ -136,8 +136,8 @@ struct StrutGeometry {
   /// moves along the chassis z by q_h + y sin(phi): read q, u from the State. The force is applied
   /// as the generalized forces of that pair (virtual work of a force along the chassis z).
   bool is_axle_seat = false;
-  QIndex qh, qr;
-  UIndex uh, ur;
+  QIndex qh{}, qr{};
+  UIndex uh{}, ur{};
   double seat_y = 0;
   Kin kin(const State& s) const {
     if (is_slider) return {s.getQ()[qi], s.getU()[ui]};

@@ -4,11 +4,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <unistd.h>
 
 #include "subsystems/errors.hpp"
 
 namespace dtwin {
+
+std::string readFileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot be read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 int Trace::index(const std::string& name) const {
   for (std::size_t i = 0; i < channels_.size(); ++i)

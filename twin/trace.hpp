@@ -36,5 +36,7 @@ class Trace {
 /// Writes `content` to `path` atomically: a temporary file in the same folder, then rename.
 /// Creates parent folders. Throws InputError naming the path on failure.
 void writeFileAtomic(const std::string& path, const std::string& content);
+/// The bytes of a file. Throws InputError naming the path if it cannot be read.
+std::string readFileBytes(const std::string& path);
 
 }  // namespace dtwin

@@ -3,6 +3,8 @@
 // as an uninterrupted one.
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <sys/wait.h>
 
 #include <chrono>
@@ -14,23 +16,21 @@
 namespace fs = std::filesystem;
 
 namespace {
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using dtwin_test::slurp;
 
 struct Result {
   int code;
   std::string err;
 };
 
-const fs::path kTmp = fs::temp_directory_path() / "dtwin_calibrate_cli";
+/// Evaluated at use, after main() has given this process its own TMPDIR (tests/test_main.cpp).
+fs::path kTmp() { return fs::temp_directory_path() / "dtwin_calibrate_cli"; }
 
 Result twin(const std::string& args) {
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + (kTmp / "out.txt").string() + " 2> " +
-                          (kTmp / "err.txt").string();
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + (kTmp() / "out.txt").string() + " 2> " +
+                          (kTmp() / "err.txt").string();
   const int st = std::system(cmd.c_str());
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(kTmp / "err.txt")};
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(kTmp() / "err.txt")};
 }
 
 std::size_t lines(const fs::path& p) {
@@ -41,23 +41,23 @@ std::size_t lines(const fs::path& p) {
 class CalibrateCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    fs::remove_all(kTmp);
-    fs::create_directories(kTmp);
-    ASSERT_EQ(twin("generate lab --quiet --out " + (kTmp / "lab.csv").string()).code, 0);
+    fs::remove_all(kTmp());
+    fs::create_directories(kTmp());
+    ASSERT_EQ(twin("generate lab --quiet --out " + (kTmp() / "lab.csv").string()).code, 0);
   }
-  void TearDown() override { fs::remove_all(kTmp); }
+  void TearDown() override { fs::remove_all(kTmp()); }
 };
 }  // namespace
 
 TEST_F(CalibrateCli, BadInputExitsTwoWithOneLine) {
-  const std::string lab = (kTmp / "lab.csv").string();
+  const std::string lab = (kTmp() / "lab.csv").string();
   struct Case {
     std::string args, expect;
   } cases[] = {
-      {"calibrate --data " + (kTmp / "missing.csv").string() + " --out " + (kTmp / "o").string(), "lab data file not found"},
-      {"calibrate --data " + lab + " --assembly M9 --out " + (kTmp / "o").string(), "unknown assembly 'M9'"},
-      {"calibrate --data " + lab + " --iterations 100 --burn-in 100 --out " + (kTmp / "o").string(), "--burn-in"},
-      {"calibrate --data " + lab + " --scenario nowhere --out " + (kTmp / "o").string(), "nowhere"},
+      {"calibrate --data " + (kTmp() / "missing.csv").string() + " --out " + (kTmp() / "o").string(), "lab data file not found"},
+      {"calibrate --data " + lab + " --assembly M9 --out " + (kTmp() / "o").string(), "unknown assembly 'M9'"},
+      {"calibrate --data " + lab + " --iterations 100 --burn-in 100 --out " + (kTmp() / "o").string(), "--burn-in"},
+      {"calibrate --data " + lab + " --scenario nowhere --out " + (kTmp() / "o").string(), "nowhere"},
   };
   for (const auto& c : cases) {
     const Result r = twin(c.args);
@@ -65,28 +65,28 @@ TEST_F(CalibrateCli, BadInputExitsTwoWithOneLine) {
     EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
-  EXPECT_FALSE(fs::exists(kTmp / "o" / "M1" / "posterior.csv"));
+  EXPECT_FALSE(fs::exists(kTmp() / "o" / "M1" / "posterior.csv"));
 }
 
 TEST_F(CalibrateCli, KilledRunResumesToIdenticalFiles) {
   const std::string base = std::string(DTWIN_TWIN_EXE) + " calibrate --quiet --assembly M3 --starts 1 --lhs-points 300 --iterations 2000 " +
-                           "--burn-in 500 --threads 1 --data " + (kTmp / "lab.csv").string();
-  ASSERT_EQ(std::system((base + " --out " + (kTmp / "whole").string()).c_str()), 0);
+                           "--burn-in 500 --threads 1 --data " + (kTmp() / "lab.csv").string();
+  ASSERT_EQ(std::system((base + " --out " + (kTmp() / "whole").string()).c_str()), 0);
   // Start the same calibration in the background, kill it with SIGKILL once the design journal
   // holds 30 points, then rerun the same command.
-  const fs::path cut = kTmp / "cut", journal = cut / "M3" / "design_journal.csv";
-  ASSERT_EQ(std::system((base + " --out " + cut.string() + " & echo $! > " + (kTmp / "pid").string()).c_str()), 0);
+  const fs::path cut = kTmp() / "cut", journal = cut / "M3" / "design_journal.csv";
+  ASSERT_EQ(std::system((base + " --out " + cut.string() + " & echo $! > " + (kTmp() / "pid").string()).c_str()), 0);
   const auto t0 = std::chrono::steady_clock::now();
   while (!(fs::exists(journal) && lines(journal) >= 31)) {
     ASSERT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(120)) << "the design stage never started";
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ASSERT_EQ(std::system(("kill -9 $(cat " + (kTmp / "pid").string() + ")").c_str()), 0);
+  ASSERT_EQ(std::system(("kill -9 $(cat " + (kTmp() / "pid").string() + ")").c_str()), 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   const std::size_t done_before = lines(journal) - 1;
   EXPECT_LT(done_before, 300u) << "killed too late to test a resume";
   EXPECT_FALSE(fs::exists(cut / "M3" / "posterior.csv"));
   ASSERT_EQ(std::system((base + " --out " + cut.string()).c_str()), 0);
   for (const char* f : {"posterior.csv", "design.csv", "optimum.json", "box.json"})
-    EXPECT_EQ(slurp(kTmp / "whole" / "M3" / f), slurp(cut / "M3" / f)) << f;
+    EXPECT_EQ(slurp(kTmp() / "whole" / "M3" / f), slurp(cut / "M3" / f)) << f;
 }

@@ -1,6 +1,8 @@
 // The calibration of an assembly against lab data, end to end on the real twin (small sizes).
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -42,12 +44,7 @@ TEST(LabObjective, PredictionsAtTruthEqualNoiseFreeLabValues) {
 }
 
 namespace {
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using dtwin_test::slurp;
 
 CalibrationOptions smallOptions(int threads) {
   CalibrationOptions o;

@@ -4,6 +4,8 @@
 // wins summing to the record count.
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,12 +30,7 @@ using namespace dtwin::classify;
 namespace {
 const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using dtwin_test::slurp;
 
 struct World {
   Study study = loadStudy(kDemo);

@@ -5,6 +5,8 @@
 // not installed. Oversubscription is allowed (2 ranks on any machine).
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -96,14 +98,7 @@ TEST(MpiCli, TinyStudyIsBitIdenticalWithTwoRanks) {
   const fs::path tmp = fs::temp_directory_path() / "mpi_study";
   fs::remove_all(tmp);
   fs::create_directories(tmp);
-  std::string s = slurp(kDemo);
-  s = std::regex_replace(s, std::regex("vehicle = \"[^\"]*\""),
-                         "vehicle = \"" + (fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml").string() + "\"");
-  s = s.substr(0, s.find("[sizes]")) +
-      "[sizes]\nlab_repetitions = 3\nfield_runs = 4\nlhs_points = 10\ngibbs_iterations = 300\ngibbs_burn_in = 100\n"
-      "posterior_draws = 4\nroads_per_draw = 2\nroad_library = 8\noptimizer_starts = 2\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n";
-  const fs::path study = tmp / "tiny.toml";
-  std::ofstream(study) << s;
+  const fs::path study = dtwin_test::writeTinyStudy(tmp / "tiny.toml", 2);
   const std::string cmd = kTwin + " study " + study.string() + " --threads 1 --quiet --out ";
   ASSERT_EQ(run(cmd + (tmp / "one").string()), 0);
   ASSERT_EQ(run(mpirun2() + cmd + (tmp / "two").string()), 0);

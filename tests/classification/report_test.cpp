@@ -3,6 +3,8 @@
 // gnuplot is missing, and a headless Chromium rendering without page errors.
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,26 +18,11 @@
 namespace fs = std::filesystem;
 
 namespace {
-const fs::path kTmp = fs::temp_directory_path() / "dtwin_report_test";
+/// Evaluated at use, after main() has given this process its own TMPDIR (tests/test_main.cpp).
+fs::path kTmp() { return fs::temp_directory_path() / "dtwin_report_test"; }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using dtwin_test::slurp;
 
-/// The demo study with tiny sizes and two assemblies (as tests/classification/study_cli_test.cpp).
-fs::path writeTinyStudy() {
-  std::string s = slurp(fs::path(DTWIN_SOURCE_DIR) / "data" / "studies" / "demo.toml");
-  s = std::regex_replace(s, std::regex("vehicle = \"[^\"]*\""),
-                         "vehicle = \"" + (fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml").string() + "\"");
-  const auto sizes = s.find("[sizes]");
-  s = s.substr(0, sizes) +
-      "[sizes]\nlab_repetitions = 3\nfield_runs = 4\nlhs_points = 10\ngibbs_iterations = 300\ngibbs_burn_in = 100\n"
-      "posterior_draws = 4\nroads_per_draw = 2\nroad_library = 8\noptimizer_starts = 1\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n";
-  const fs::path p = kTmp / "tiny.toml";
-  std::ofstream(p) << s;
-  return p;
-}
 
 std::string findOnPath(const std::string& exe) {
   const char* path = std::getenv("PATH");
@@ -54,15 +41,15 @@ std::size_t count(const std::string& s, const std::string& what) {
 }  // namespace
 
 TEST(Report, TinyStudyReportRendersInChromium) {
-  fs::remove_all(kTmp);
-  fs::create_directories(kTmp);
-  const fs::path study = writeTinyStudy();
-  const fs::path dir = kTmp / "study";
+  fs::remove_all(kTmp());
+  fs::create_directories(kTmp());
+  const fs::path study = dtwin_test::writeTinyStudy(kTmp() / "tiny.toml");
+  const fs::path dir = kTmp() / "study";
   const std::string twin = DTWIN_TWIN_EXE;
   ASSERT_EQ(std::system((twin + " study " + study.string() + " --out " + dir.string() + " --quiet").c_str()), 0);
 
   // Without gnuplot: one clear line naming the package, exit code 2, nothing written.
-  const fs::path err = kTmp / "nognuplot.err";
+  const fs::path err = kTmp() / "nognuplot.err";
   const int rc = std::system(("env PATH=/nonexistent " + twin + " report " + dir.string() + " 2>" + err.string()).c_str());
   ASSERT_TRUE(WIFEXITED(rc));
   EXPECT_EQ(WEXITSTATUS(rc), 2);
@@ -94,16 +81,16 @@ TEST(Report, TinyStudyReportRendersInChromium) {
   for (const auto& [id, n] : ids) EXPECT_EQ(n, 1) << "duplicate id " << id;
 
   // --out elsewhere.
-  ASSERT_EQ(std::system((twin + " report " + dir.string() + " --quiet --draws 5 --out " + (kTmp / "r" / "x.html").string()).c_str()), 0);
-  EXPECT_EQ(count(slurp(kTmp / "r" / "x.html"), "<svg"), 7u);
+  ASSERT_EQ(std::system((twin + " report " + dir.string() + " --quiet --draws 5 --out " + (kTmp() / "r" / "x.html").string()).c_str()), 0);
+  EXPECT_EQ(count(slurp(kTmp() / "r" / "x.html"), "<svg"), 7u);
 
   std::string chromium = findOnPath("chromium");
   if (chromium.empty()) chromium = findOnPath("chromium-browser");
   if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium): the rendering check is skipped";
-  const fs::path png = kTmp / "report.png", log = kTmp / "chromium.log";
+  const fs::path png = kTmp() / "report.png", log = kTmp() / "chromium.log";
   const std::string cmd = chromium +
                           " --headless --no-sandbox --disable-gpu --disable-background-networking --enable-logging=stderr --v=0"
-                          " --user-data-dir=" + (kTmp / "chromium-profile").string() + " --screenshot=" + png.string() +
+                          " --user-data-dir=" + (kTmp() / "chromium-profile").string() + " --screenshot=" + png.string() +
                           " --window-size=1200,3000 file://" + fs::absolute(html).string() + " >" + log.string() + " 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(log);
   ASSERT_TRUE(fs::exists(png)) << slurp(log);
@@ -115,5 +102,5 @@ TEST(Report, TinyStudyReportRendersInChromium) {
     EXPECT_FALSE(line.find("CONSOLE") != std::string::npos && page_line) << line;
     EXPECT_FALSE(line.find("ERROR") != std::string::npos && page_line) << line;
   }
-  fs::remove_all(kTmp);
+  fs::remove_all(kTmp());
 }

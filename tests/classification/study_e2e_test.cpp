@@ -3,6 +3,8 @@
 // whose joint evidence is not decisively worse than the best: 2 (L_best - L_m) < 10).
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,22 +16,15 @@
 namespace fs = std::filesystem;
 
 namespace {
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using dtwin_test::slurp;
 }  // namespace
 
 TEST(StudyEndToEnd, DemoStudyPicksTheGeneratingAssemblyAndFollowsTheRule) {
   const fs::path tmp = fs::temp_directory_path() / "e2e";
   fs::create_directories(tmp);
-  std::string s = slurp(fs::path(DTWIN_SOURCE_DIR) / "data" / "studies" / "demo.toml");
-  s = std::regex_replace(s, std::regex("vehicle = \"[^\"]*\""),
-                         "vehicle = \"" + (fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml").string() + "\"");
-  s = s.substr(0, s.find("[sizes]")) +
-      "[sizes]\nlab_repetitions = 10\nfield_runs = 20\nlhs_points = 60\ngibbs_iterations = 6000\ngibbs_burn_in = 1000\n"
-      "posterior_draws = 40\nroads_per_draw = 5\nroad_library = 200\noptimizer_starts = 2\n";
-  std::ofstream(tmp / "demo_small.toml") << s;
+  dtwin_test::writeDemoStudy(tmp / "demo_small.toml",
+                             "lab_repetitions = 10\nfield_runs = 20\nlhs_points = 60\ngibbs_iterations = 6000\ngibbs_burn_in = 1000\n"
+                             "posterior_draws = 40\nroads_per_draw = 5\nroad_library = 200\noptimizer_starts = 2\n");
   const std::string cmd = std::string(DTWIN_TWIN_EXE) + " study " + (tmp / "demo_small.toml").string() + " --quiet --out " +
                           (tmp / "study").string();
   ASSERT_EQ(std::system(cmd.c_str()), 0);

@@ -2,6 +2,8 @@
 // at tiny sizes: M3 (the cheapest assembly), a 0.5 s window (p = 501), a handful of draws.
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -22,12 +24,7 @@ const Study& demo() {
   return s;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using dtwin_test::slurp;
 
 fs::path tempDir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("dtwin_synthesis_" + name);

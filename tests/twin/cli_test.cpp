@@ -1,6 +1,8 @@
 // The `twin` executable: exit codes, one-line errors, outputs and sidecars.
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -17,10 +19,7 @@ struct Result {
   std::string err, out;
 };
 
-std::string slurp(const std::string& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using dtwin_test::slurp;
 
 Result twin(const std::string& args) {
   const std::string dir = ::testing::TempDir();

@@ -1,6 +1,8 @@
 // `twin generate lab|field`: outputs readable by the measurement readers, sidecars, exit codes.
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -22,10 +24,7 @@ struct Result {
   std::string err, out;
 };
 
-std::string slurp(const std::string& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using dtwin_test::slurp;
 
 Result twin(const std::string& args) {
   const std::string dir = ::testing::TempDir();

@@ -1,0 +1,37 @@
+#pragma once
+// Small helpers shared by the tests that drive files and the `twin` CLI.
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <string>
+
+namespace dtwin_test {
+
+/// The bytes of a file ("" if it cannot be read).
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Writes data/studies/demo.toml to `path` with its [sizes] table replaced by `sizes` (the text
+/// of the table's lines, and anything that should follow it) and the vehicle file made absolute.
+inline std::filesystem::path writeDemoStudy(const std::filesystem::path& path, const std::string& sizes) {
+  namespace fs = std::filesystem;
+  std::string s = slurp(fs::path(DTWIN_SOURCE_DIR) / "data" / "studies" / "demo.toml");
+  s = std::regex_replace(s, std::regex("vehicle = \"[^\"]*\""),
+                         "vehicle = \"" + (fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml").string() + "\"");
+  s = s.substr(0, s.find("[sizes]")) + "[sizes]\n" + sizes;
+  std::ofstream(path) << s;
+  return path;
+}
+
+/// The tiny two-assembly study (M3 generates the data) the study-level tests run.
+inline std::filesystem::path writeTinyStudy(const std::filesystem::path& path, int optimizer_starts = 1) {
+  return writeDemoStudy(path,
+                        "lab_repetitions = 3\nfield_runs = 4\nlhs_points = 10\ngibbs_iterations = 300\ngibbs_burn_in = 100\n"
+                        "posterior_draws = 4\nroads_per_draw = 2\nroad_library = 8\noptimizer_starts = " +
+                            std::to_string(optimizer_starts) + "\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n");
+}
+
+}  // namespace dtwin_test

@@ -50,84 +50,200 @@ struct LabObjective::Pool {
   }
 };
 
+// ------------------------------------------------------------------ CalibrationSetup
+nlohmann::json CalibrationSetup::toJson() const {
+  nlohmann::json j = nlohmann::json::object();
+  j["extra_effects"] = nlohmann::json::array();
+  for (const auto& e : extra_effects) {
+    nlohmann::json v = nlohmann::json::object();
+    for (const auto& p : e.values) v[p.name] = p.value;
+    j["extra_effects"].push_back({{"name", e.name}, {"values", v}});
+  }
+  j["extra_calibrated"] = nlohmann::json::array();
+  for (const auto& c : extra_calibrated) {
+    nlohmann::json e{{"name", c.name}, {"unit", c.unit}, {"lower", c.lower}, {"upper", c.upper}};
+    if (c.truth) e["truth"] = *c.truth;
+    j["extra_calibrated"].push_back(e);
+  }
+  j["channel_weights"] = nlohmann::json::object();
+  for (const auto& [c, w] : channel_weights) j["channel_weights"][c] = w;
+  return j;
+}
+
+CalibrationSetup CalibrationSetup::fromJson(const nlohmann::json& j) {
+  CalibrationSetup s;
+  if (j.is_null()) return s;
+  for (const auto& e : j.at("extra_effects")) {
+    EffectSetting es;
+    es.name = e.at("name").get<std::string>();
+    for (const auto& [k, v] : e.at("values").items()) {
+      ParameterSetting ps;
+      ps.name = k;
+      ps.value = v.get<double>();
+      ps.where = "setup";
+      es.values.push_back(ps);
+    }
+    s.extra_effects.push_back(es);
+  }
+  for (const auto& e : j.at("extra_calibrated")) {
+    CalibratedParameter c;
+    c.name = e.at("name").get<std::string>();
+    c.unit = e.value("unit", "");
+    c.lower = e.at("lower").get<double>();
+    c.upper = e.at("upper").get<double>();
+    if (e.contains("truth")) c.truth = e.at("truth").get<double>();
+    s.extra_calibrated.push_back(c);
+  }
+  for (const auto& [k, v] : j.at("channel_weights").items()) s.channel_weights[k] = v.get<double>();
+  return s;
+}
+
+// ------------------------------------------------------------------ LabObjective
 LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, const LabData& data,
                            const std::string& scenario, const std::vector<EffectSetting>& extra_effects)
+    : LabObjective(study, assembly, std::vector<DataSet>{DataSet{"lab data", scenario, data}},
+                   CalibrationSetup{extra_effects, {}, {}}) {}
+
+LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
+                           const CalibrationSetup& setup)
     : pool_(std::make_unique<Pool>()) {
-  model_ = study.makeModel(assembly, extra_effects);
-  scenario_ = study.scenario(scenario);
-  road_ = makeRoad(scenario_, model_->vehicle(), study.seed);
+  model_ = study.makeModel(assembly, setup.extra_effects);
   if (study.calibrated.empty()) throw InputError(study.path + ": calibrated", "the study names no calibrated parameters");
-  for (const auto& c : study.calibrated) {
+  if (data.empty()) throw InputError("calibration", "no data sets given");
+  auto add = [&](const CalibratedParameter& c, const std::string& where) {
     const int slot = model_->slot(c.name);
     if (slot < 0)
-      throw InputError(study.path + ": calibrated", "'" + c.name + "' is not a parameter of assembly " + assembly.id + " (" +
-                                                        assembly.label() + ")");
+      throw InputError(where, "'" + c.name + "' is not a parameter of assembly " + assembly.id + " (" +
+                                  model_->assembly().label() + ")");
+    if (std::find(names_.begin(), names_.end(), c.name) != names_.end())
+      throw InputError(where, "'" + c.name + "' is calibrated twice");
+    if (!(c.lower < c.upper)) throw InputError(where, "'" + c.name + "' needs lower < upper");
     names_.push_back(c.name);
     lower_.push_back(c.lower);
     upper_.push_back(c.upper);
+    truths_.push_back(c.truth);
     slots_.push_back(slot);
-  }
+  };
+  for (const auto& c : study.calibrated) add(c, study.path + ": calibrated");
+  for (const auto& c : setup.extra_calibrated) add(c, "calibrated effect parameter");
   base_values_ = model_->defaultRunValues();
+  for (const auto& [c, w] : setup.channel_weights)
+    if (!(std::isfinite(w) && w > 0)) throw InputError("channel weight of " + c, "must be finite and > 0");
+  for (const auto& ds : data) {
+    const std::size_t first = y_.size();
+    addDataSet(study, ds, data.size() == 1);
+    for (std::size_t i = first; i < y_.size(); ++i) {
+      const auto& ch = ds.data.records[i - first].channel;
+      const auto it = setup.channel_weights.find(ch);
+      w_.push_back(it == setup.channel_weights.end() ? 1.0 : it->second);
+      set_of_.push_back(static_cast<int>(sets_.size() - 1));
+    }
+  }
+  pool_->model = model_;
+  pool_->options = study.simulation;
+}
+
+void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single) {
+  Set set;
+  set.scenario = study.scenario(ds.scenario);
+  set.road = makeRoad(set.scenario, model_->vehicle(), ds.road_seed.value_or(study.seed));
+  set.first = y_.size();
   const auto channels = Simulator::channels();
   const double rate = study.simulation.output_rate_hz;
   double t_max = 0.0;
-  for (std::size_t i = 0; i < data.records.size(); ++i) {
-    const LabRecord& r = data.records[i];
+  const std::string prefix = single ? ds.name + " record " : ds.name + ": record ";
+  for (std::size_t i = 0; i < ds.data.records.size(); ++i) {
+    const LabRecord& r = ds.data.records[i];
     int col = -1;
     for (std::size_t c = 0; c < channels.size(); ++c)
       if (channels[c].name == r.channel) col = static_cast<int>(c);
-    if (col < 0) throw InputError("lab data record " + std::to_string(i + 1), "unknown channel '" + r.channel + "'");
-    if (!(r.time_s >= 0.0 && r.time_s <= scenario_.duration_s))
-      throw InputError("lab data record " + std::to_string(i + 1),
-                       "time_s " + formatExact(r.time_s) + " lies outside scenario '" + scenario_.name + "' (0.." +
-                           formatExact(scenario_.duration_s) + " s)");
+    if (col < 0) throw InputError(prefix + std::to_string(i + 1), "unknown channel '" + r.channel + "'");
+    if (!(r.time_s >= 0.0 && r.time_s <= set.scenario.duration_s))
+      throw InputError(prefix + std::to_string(i + 1),
+                       "time_s " + formatExact(r.time_s) + " lies outside scenario '" + set.scenario.name + "' (0.." +
+                           formatExact(set.scenario.duration_s) + " s)");
     const double row = std::round(r.time_s * rate);
     if (std::abs(row - r.time_s * rate) > 1e-6)
-      throw InputError("lab data record " + std::to_string(i + 1),
+      throw InputError(prefix + std::to_string(i + 1),
                        "time_s " + formatExact(r.time_s) + " is not on the " + formatExact(rate) +
                            " Hz output grid of the simulation (set [simulation] output_rate_hz to match the data)");
     y_.push_back(r.value);
     where_.push_back({col, static_cast<std::size_t>(row)});
     t_max = std::max(t_max, r.time_s);
   }
-  if (y_.empty()) throw InputError("lab data", "holds no records");
+  if (ds.data.records.empty()) throw InputError(ds.name, "holds no records");
+  set.count = y_.size() - set.first;
   // Nothing after the last measured time matters: stop the simulation shortly after it (the
   // step sequence before that point does not depend on where the run ends).
-  scenario_.duration_s = std::min(scenario_.duration_s, t_max + 0.05);
-  pool_->model = model_;
-  pool_->options = study.simulation;
+  set.scenario.duration_s = std::min(set.scenario.duration_s, t_max + 0.05);
+  sets_.push_back(std::move(set));
 }
 
 LabObjective::~LabObjective() = default;
 
-std::vector<double> LabObjective::predict(const std::vector<double>& theta) const {
+std::vector<ScenarioSpec> LabObjective::scenarios() const {
+  std::vector<ScenarioSpec> v;
+  for (const auto& s : sets_) v.push_back(s.scenario);
+  return v;
+}
+
+std::vector<double> LabObjective::runValues(const std::vector<double>& theta) const {
   DTWIN_CHECK(theta.size() == slots_.size(), "theta has the wrong size");
   std::vector<double> values = base_values_;
   for (std::size_t j = 0; j < slots_.size(); ++j) values[static_cast<std::size_t>(slots_[j])] = theta[j];
+  return values;
+}
+
+std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta) const {
+  const std::vector<double> values = runValues(theta);
   pool_->evaluations++;
   auto sim = pool_->acquire();
-  RunResult r;
-  try {
-    r = sim->run(values, *road_, scenario_);
-  } catch (const InputError& e) {
-    // A combination of in-bound values the laws reject (e.g. PAC2002 with an impossible shape):
-    // a failed point, not a failed calibration.
-    r.stats.ok = false;
-    r.stats.message = e.what();
+  std::vector<RunResult> out;
+  double wall = 0.0;
+  for (const auto& set : sets_) {
+    RunResult r;
+    try {
+      r = sim->run(values, *set.road, set.scenario);
+    } catch (const InputError& e) {
+      // A combination of in-bound values the laws reject (e.g. PAC2002 with an impossible shape):
+      // a failed point, not a failed calibration.
+      r.stats.ok = false;
+      r.stats.message = e.what();
+    }
+    wall += r.stats.wall_s;
+    const bool ok = r.stats.ok;
+    if (!ok) {
+      pool_->failures++;
+      std::lock_guard<std::mutex> lock(pool_->m);
+      if (pool_->first_failure.empty()) pool_->first_failure = r.stats.message;
+    }
+    out.push_back(std::move(r));
+    if (!ok) break;
   }
-  pool_->release(std::move(sim), r.stats.wall_s);
-  if (!r.stats.ok) {
-    pool_->failures++;
-    std::lock_guard<std::mutex> lock(pool_->m);
-    if (pool_->first_failure.empty()) pool_->first_failure = r.stats.message;
-    return {};
+  pool_->release(std::move(sim), wall / static_cast<double>(sets_.size()));
+  return out;
+}
+
+std::vector<Trace> LabObjective::traces(const std::vector<double>& theta) const {
+  auto runs = runAll(theta);
+  std::vector<Trace> t;
+  for (auto& r : runs) {
+    if (!r.stats.ok) return {};
+    t.push_back(std::move(r.trace));
   }
+  return t;
+}
+
+std::vector<double> LabObjective::predict(const std::vector<double>& theta) const {
+  const auto runs = runAll(theta);
+  if (runs.size() != sets_.size() || !runs.back().stats.ok) return {};
   std::vector<double> eta(y_.size());
-  for (std::size_t i = 0; i < y_.size(); ++i) {
-    const auto& col = r.trace.column(static_cast<std::size_t>(where_[i].first));
-    if (where_[i].second >= col.size()) return {};
-    eta[i] = col[where_[i].second];
-  }
+  for (std::size_t k = 0; k < sets_.size(); ++k)
+    for (std::size_t i = sets_[k].first; i < sets_[k].first + sets_[k].count; ++i) {
+      const auto& col = runs[k].trace.column(static_cast<std::size_t>(where_[i].first));
+      if (where_[i].second >= col.size()) return {};
+      eta[i] = col[where_[i].second];
+    }
   return eta;
 }
 
@@ -135,7 +251,7 @@ double LabObjective::sse(const std::vector<double>& theta) const {
   const auto eta = predict(theta);
   if (eta.empty()) return std::numeric_limits<double>::infinity();
   double s = 0.0;
-  for (std::size_t i = 0; i < y_.size(); ++i) s += (y_[i] - eta[i]) * (y_[i] - eta[i]);
+  for (std::size_t i = 0; i < y_.size(); ++i) s += w_[i] * (y_[i] - eta[i]) * (y_[i] - eta[i]);
   return std::isfinite(s) ? s : std::numeric_limits<double>::infinity();
 }
 
@@ -172,7 +288,7 @@ void CalibrationOptions::validate() const {
 }
 
 nlohmann::json CalibrationOptions::toJson() const {
-  return {{"optimizer_starts", optimizer_starts},
+  nlohmann::json j{{"optimizer_starts", optimizer_starts},
           {"lhs_points", lhs_points},
           {"gibbs_iterations", gibbs_iterations},
           {"gibbs_burn_in", gibbs_burn_in},
@@ -191,6 +307,9 @@ nlohmann::json CalibrationOptions::toJson() const {
             {"growth", box.growth},
             {"tolerance_scaled", box.tolerance},
             {"max_evaluations_per_sweep", box.max_evaluations}}}};
+  if (!extra_starts.empty()) j["extra_starts"] = extra_starts;
+  if (polish_step > 0) j["polish_step"] = polish_step;
+  return j;
 }
 
 // ------------------------------------------------------------------ persistence helpers
@@ -421,9 +540,17 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
                                     const std::string& scenario, const CalibrationOptions& options,
                                     const std::string& out_dir, const std::string& fingerprint_extra,
                                     const StageProgress& progress) {
+  return calibrateAssembly(study, assembly, std::vector<DataSet>{DataSet{"lab data", scenario, data}}, CalibrationSetup{},
+                           options, out_dir, fingerprint_extra, progress);
+}
+
+CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
+                                    const CalibrationSetup& setup, const CalibrationOptions& options,
+                                    const std::string& out_dir, const std::string& fingerprint_extra,
+                                    const StageProgress& progress) {
   options.validate();
   const auto t_all = std::chrono::steady_clock::now();
-  LabObjective objective(study, assembly, data, scenario);
+  LabObjective objective(study, assembly, data, setup);
   const std::size_t d = objective.names().size();
   const int n = objective.dataCount();
   rootWrites([&] { fs::create_directories(out_dir); });
@@ -435,7 +562,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   res.assembly = assembly.id;
   res.label = assembly.label();
   res.names = objective.names();
-  for (const auto& c : study.calibrated) res.truth.push_back(c.truth);
+  res.truth = objective.truths();
   res.n_data = n;
 
   // The resume fingerprint: everything that changes the numbers.
@@ -448,6 +575,14 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
                     {"simulation", study.simulation.toJson()},
                     {"options", options.toJson()},
                     {"data", fingerprint_extra}};
+  // Only the general form adds keys, so a plain calibration keeps its fingerprint.
+  if (data.size() > 1) {
+    fp["scenarios"] = nlohmann::json::array();
+    for (const auto& sc : objective.scenarios()) fp["scenarios"].push_back(sc.toJson());
+  }
+  if (!setup.empty()) fp["setup"] = setup.toJson();
+  for (const auto& ds : data)
+    if (ds.road_seed) fp["road_seeds"].push_back(*ds.road_seed);
   const std::string fingerprint = hex(fnv1a64(fp.dump()));
   // Starts, sweeps and design points are spread over the MPI ranks and the threads of each rank
   // (distributedMap: task i on rank i % size, results by index on every rank); only the root
@@ -462,13 +597,28 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   } else {
     report("optimum", 0, static_cast<std::size_t>(options.optimizer_starts));
     // As minimiseSse, with the starts spread over ranks and threads.
-    const auto x0 = optimizerStarts(objective.lower(), objective.upper(), options.optimizer_starts, options.seed);
+    auto x0 = optimizerStarts(objective.lower(), objective.upper(), options.optimizer_starts, options.seed);
+    for (std::size_t k = options.extra_starts.size(); k-- > 0;) {
+      auto x = options.extra_starts[k];
+      if (x.size() != d) throw InputError("extra optimiser start", "has " + std::to_string(x.size()) + " values, expected " + std::to_string(d));
+      for (std::size_t i = 0; i < d; ++i) x[i] = std::clamp(x[i], objective.lower()[i], objective.upper()[i]);
+      x0.insert(x0.begin(), x);
+    }
     const auto packed = distributedMap(
         x0.size(), options.threads,
         [&](std::size_t i, int) { return packStart(minimiseFrom(sse, objective.lower(), objective.upper(), x0[i], options.optimizer)); },
         [&](std::size_t done, std::size_t total) { report("optimum", done, total); });
     std::vector<StartResult> starts;
     for (const auto& v : packed) starts.push_back(unpackStart(v));
+    if (options.polish_step > 0) {
+      const Optimum first = collectOptimum(starts);
+      if (std::isfinite(first.sse)) {
+        OptimizerOptions po = options.optimizer;
+        po.initial_step = options.polish_step;
+        report("optimum: polish", 0, 1);
+        starts.push_back(minimiseFrom(sse, objective.lower(), objective.upper(), first.theta, po));
+      }
+    }
     res.optimum = collectOptimum(std::move(starts));
     rootWrites([&] {
       writeFileAtomic(opt_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"optimum", optimumJson(res.optimum)}}.dump(2) + "\n");
@@ -606,8 +756,17 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   j["command"] = options.command;
   j["created_utc"] = utcNow();
   j["study"] = study.path;
-  j["scenario"] = scenario;
-  j["data"] = {{"path", options.data_path}, {"records", data.records.size()}, {"fnv1a64", fingerprint_extra}};
+  j["scenario"] = data.front().scenario;
+  std::size_t records = 0;
+  for (const auto& ds : data) records += ds.data.records.size();
+  j["data"] = {{"path", options.data_path}, {"records", records}, {"fnv1a64", fingerprint_extra}};
+  j["data_sets"] = nlohmann::json::array();
+  for (const auto& ds : data)
+    j["data_sets"].push_back({{"name", ds.name},
+                              {"scenario", ds.scenario},
+                              {"records", ds.data.records.size()},
+                              {"road_seed", ds.road_seed ? nlohmann::json(*ds.road_seed) : nlohmann::json(study.seed)}});
+  j["setup"] = setup.toJson();
   j["options"] = options.toJson();
   j["threads"] = options.threads;
   rootWrites([&] { writeFileAtomic((fs::path(out_dir) / "summary.json").string(), j.dump(2) + "\n"); });

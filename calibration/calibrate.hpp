@@ -13,6 +13,8 @@
 //   summary.json        everything a script needs (see CalibrationResult::toJson)
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,45 +33,99 @@
 
 namespace dtwin::calib {
 
-/// The SSE of one assembly against lab data: simulates the lab scenario (cut just after the last
-/// measured time) for θ and sums (y − η(θ))² over every record of every repetition.
+/// One set of measurements tied to the scenario it was measured on (a file of the tidy lab
+/// layout: several channels, times on the simulation's output grid, any number of repetitions).
+struct DataSet {
+  std::string name;      ///< names the data in errors and reports (e.g. the file path)
+  std::string scenario;  ///< a scenario of the study
+  LabData data;
+  /// The seed of the scenario's random road the data were measured on (e.g. from the data's
+  /// sidecar); unset: the study's seed.
+  std::optional<std::uint64_t> road_seed = std::nullopt;
+};
+
+/// What a calibration adds to the study's [[calibrated]] parameters: effects installed in the
+/// assembly (their values fixed, e.g. shape parameters), effect parameters calibrated along with
+/// θ (bounds: the effect's prior range), and weights of the channels in the SSE. Empty: the plain
+/// calibration of method.md §4 (bit for bit as before these existed).
+struct CalibrationSetup {
+  std::vector<EffectSetting> extra_effects;
+  std::vector<CalibratedParameter> extra_calibrated;
+  /// SSE = Σ w_c (y − η)², w_c = channel_weights[channel] (1 when absent). With w_c = 1/σ_c² the
+  /// SSE is a χ² in standard units, so channels of different units can be fitted together.
+  std::map<std::string, double> channel_weights;
+  bool empty() const { return extra_effects.empty() && extra_calibrated.empty() && channel_weights.empty(); }
+  /// Everything that changes the numbers (part of the resume fingerprint when not empty).
+  nlohmann::json toJson() const;
+  /// Inverse of toJson (reads summary.json's "setup"); null gives an empty setup.
+  static CalibrationSetup fromJson(const nlohmann::json& j);
+};
+
+/// The SSE of one assembly against measurements: simulates each data set's scenario (cut just
+/// after its last measured time) for θ and sums w_c (y − η(θ))² over every record of every
+/// repetition of every data set. θ is the study's calibrated parameters, then the setup's
+/// extra_calibrated ones.
 /// Thread-safe: each call takes a Simulator from an internal pool (one per concurrent caller).
 class LabObjective {
  public:
   LabObjective(const Study& study, const AssemblySpec& assembly, const LabData& data, const std::string& scenario,
                const std::vector<EffectSetting>& extra_effects = {});
+  LabObjective(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
+               const CalibrationSetup& setup);
   ~LabObjective();
   LabObjective(const LabObjective&) = delete;
   LabObjective& operator=(const LabObjective&) = delete;
 
-  /// Calibrated parameter names, bounds and (when known) truths, in study order.
+  /// Calibrated parameter names, bounds and (when known) truths, in study order then setup order.
   const std::vector<std::string>& names() const { return names_; }
   const std::vector<double>& lower() const { return lower_; }
   const std::vector<double>& upper() const { return upper_; }
+  const std::vector<std::optional<double>>& truths() const { return truths_; }
   /// Number of scalar residuals n.
   int dataCount() const { return static_cast<int>(y_.size()); }
   const Model& model() const { return *model_; }
-  const ScenarioSpec& scenario() const { return scenario_; }
+  std::shared_ptr<const Model> modelPtr() const { return model_; }
+  /// The scenario of the first data set (cut after its last measured time).
+  const ScenarioSpec& scenario() const { return sets_.front().scenario; }
+  /// The data sets' scenarios, cut after their last measured time.
+  std::vector<ScenarioSpec> scenarios() const;
+  /// Measured values, their SSE weights and the data set each record belongs to, in record order
+  /// (data set by data set, each in its file's order).
+  const std::vector<double>& measured() const { return y_; }
+  const std::vector<double>& weights() const { return w_; }
+  const std::vector<int>& dataSetOf() const { return set_of_; }
 
-  /// SSE(θ); +inf when the simulation fails (counted in failures()).
+  /// SSE(θ); +inf when a simulation fails (counted in failures()).
   double sse(const std::vector<double>& theta) const;
-  /// Model predictions at every record (same order as the lab data records); empty on failure.
+  /// Model predictions at every record (same order as measured()); empty on failure.
   std::vector<double> predict(const std::vector<double>& theta) const;
+  /// The full traces of each data set's run at θ (empty vector on failure).
+  std::vector<Trace> traces(const std::vector<double>& theta) const;
+  /// The run vector (model().runParameterNames() layout) θ maps to.
+  std::vector<double> runValues(const std::vector<double>& theta) const;
   long failures() const;
   long evaluations() const;
-  /// Median wall time of the simulations so far [s].
+  /// Median wall time of the simulations so far [s] (one data set's run).
   double medianWallSeconds() const;
 
  private:
   struct Pool;
+  struct Set {
+    ScenarioSpec scenario;
+    std::shared_ptr<const Road> road;
+    std::size_t first = 0, count = 0;  ///< its records in y_
+  };
+  void addDataSet(const Study& study, const DataSet& ds, bool single);
+  std::vector<RunResult> runAll(const std::vector<double>& theta) const;
   std::shared_ptr<const Model> model_;
-  ScenarioSpec scenario_;
-  std::shared_ptr<const Road> road_;
+  std::vector<Set> sets_;
   std::vector<std::string> names_;
   std::vector<double> lower_, upper_;
+  std::vector<std::optional<double>> truths_;
   std::vector<int> slots_;
   std::vector<double> base_values_;
-  std::vector<double> y_;
+  std::vector<double> y_, w_;
+  std::vector<int> set_of_;
   std::vector<std::pair<int, std::size_t>> where_;  ///< (channel column, output row) per record
   std::unique_ptr<Pool> pool_;
 };
@@ -84,6 +140,13 @@ struct CalibrationOptions {
   std::uint64_t seed = 1;
   OptimizerOptions optimizer;
   FeasibleBoxOptions box;
+  /// Extra optimiser starts (physical units, θ order), run before the usual ones; e.g. a nested
+  /// model's optimum with the added parameters at their off values, so the larger model's
+  /// optimum is never worse than the nested one's. Part of the fingerprint when not empty.
+  std::vector<std::vector<double>> extra_starts;
+  /// > 0: after the starts, one more local run from the best point with this initial step
+  /// (scaled units), to polish a sharp minimum (dense data). 0: off (method.md §4 as written).
+  double polish_step = 0.0;
   /// Recorded in summary.json, not part of the resume fingerprint.
   std::string command, data_path;
   /// The sizes (optimizer_starts, lhs_points, gibbs_iterations, gibbs_burn_in) and seed of a study.
@@ -119,6 +182,15 @@ struct CalibrationResult {
 /// lab data's content hash) so a resume against different inputs is refused.
 CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const LabData& data,
                                     const std::string& scenario, const CalibrationOptions& options,
+                                    const std::string& out_dir, const std::string& fingerprint_extra,
+                                    const StageProgress& progress = {});
+
+/// The general form: several data sets (each on its own scenario) and a setup (extra effects,
+/// extra calibrated parameters, channel weights). With one data set and an empty setup it is the
+/// call above, bit for bit (same files, same fingerprint). summary.json records the setup and the
+/// data sets so the calibration can be rebuilt from its folder (readCalibrationFolder).
+CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
+                                    const CalibrationSetup& setup, const CalibrationOptions& options,
                                     const std::string& out_dir, const std::string& fingerprint_extra,
                                     const StageProgress& progress = {});
 

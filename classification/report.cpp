@@ -1,7 +1,5 @@
 #include "classification/report.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -12,12 +10,11 @@
 #include <fstream>
 #include <map>
 #include <mutex>
-#include <regex>
-#include <set>
 #include <sstream>
 #include <thread>
 
 #include "calibration/calibrate.hpp"
+#include "classification/svg_plot.hpp"
 #include "classification/synthesis.hpp"
 #include "subsystems/errors.hpp"
 #include "twin/measurement.hpp"
@@ -74,11 +71,9 @@ std::string num(double v, int digits = 6) {
   return b;
 }
 
-std::string full(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
+std::string full(double v) { return plotNumber(v); }
+
+std::string gq(const std::string& s) { return gnuplotQuote(s); }
 
 /// A JSON value as short text (strings without quotes).
 std::string text(const json& j) {
@@ -86,35 +81,6 @@ std::string text(const json& j) {
   if (j.is_string()) return j.get<std::string>();
   if (j.is_number_float()) return num(j.get<double>());
   return j.dump();
-}
-
-/// gnuplot single-quoted string ('' stands for one quote).
-std::string gq(const std::string& s) {
-  std::string r = "'";
-  for (char c : s) {
-    if (c == '\'') r += "''";
-    else if (c == '\n' || c == '\r') r += ' ';
-    else r += c;
-  }
-  return r + "'";
-}
-
-std::string shq(const std::string& s) {
-  std::string r = "'";
-  for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return r + "'";
-}
-
-std::string findOnPath(const std::string& exe) {
-  const char* path = std::getenv("PATH");
-  std::stringstream ss(path ? path : "/usr/bin:/bin");
-  std::string dir;
-  while (std::getline(ss, dir, ':')) {
-    if (dir.empty()) continue;
-    const fs::path p = fs::path(dir) / exe;
-    if (::access(p.c_str(), X_OK) == 0 && !fs::is_directory(p)) return p.string();
-  }
-  return "";
 }
 
 /// Quantile of type 7 of sorted values.
@@ -151,105 +117,6 @@ std::vector<std::string> splitCsv(const std::string& line) {
   return out;
 }
 
-/// Runs gnuplot on scripts and returns its SVG output, ready to inline.
-class Gnuplot {
- public:
-  explicit Gnuplot(std::string exe) : exe_(std::move(exe)) {
-    std::string templ = (fs::temp_directory_path() / "dtwin_report_XXXXXX").string();
-    if (!::mkdtemp(templ.data())) throw InputError(templ, "cannot create a temporary folder");
-    dir_ = templ;
-  }
-  ~Gnuplot() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  Gnuplot(const Gnuplot&) = delete;
-  Gnuplot& operator=(const Gnuplot&) = delete;
-
-  /// Writes a data file; returns its path as a gnuplot string.
-  std::string data(const std::string& content) {
-    const fs::path p = dir_ / ("data" + std::to_string(++files_) + ".dat");
-    std::ofstream(p, std::ios::binary) << content;
-    return gq(p.string());
-  }
-
-  /// Draws `body` (gnuplot commands) on a W x H svg canvas; returns the <svg> element.
-  std::string plot(const std::string& body, int w, int h, const std::string& title) {
-    const int n = ++plots_;
-    const fs::path svg = dir_ / ("plot" + std::to_string(n) + ".svg");
-    const fs::path script = dir_ / ("plot" + std::to_string(n) + ".gp");
-    const fs::path err = dir_ / ("plot" + std::to_string(n) + ".err");
-    std::ofstream(script, std::ios::binary)
-        << "set encoding utf8\n"
-        << "set terminal svg size " << w << "," << h << " dynamic enhanced font 'sans,10' background rgb 'white'\n"
-        << "set output " << gq(svg.string()) << "\n"
-        << body << "\nunset multiplot\nunset output\n";
-    const std::string cmd = shq(exe_) + " " + shq(script.string()) + " >" + shq(err.string()) + " 2>&1";
-    const int rc = std::system(cmd.c_str());
-    std::string messages = fs::exists(err) ? slurp(err) : "";
-    while (!messages.empty() && (messages.back() == '\n' || messages.back() == ' ')) messages.pop_back();
-    if (rc != 0 || !fs::exists(svg) || fs::file_size(svg) == 0) {
-      std::string first = messages.substr(0, 400);
-      std::replace(first.begin(), first.end(), '\n', ' ');
-      throw std::runtime_error("gnuplot failed on plot '" + title + "' (exit " + std::to_string(rc) + "): " + first);
-    }
-    if (!messages.empty()) warnings.push_back("gnuplot, plot '" + title + "': " + messages);
-    return clean(slurp(svg), "p" + std::to_string(n) + "_", title);
-  }
-
-  int count() const { return plots_; }
-  std::vector<std::string> warnings;
-
- private:
-  /// Drops the XML prolog and gnuplot's own title/desc, prefixes every id (several SVGs share a
-  /// page: ids must be unique) and names the figure.
-  static std::string clean(std::string s, const std::string& prefix, const std::string& title) {
-    const auto start = s.find("<svg");
-    if (start == std::string::npos) throw std::runtime_error("gnuplot wrote no <svg> element for plot '" + title + "'");
-    s = s.substr(start);
-    s = std::regex_replace(s, std::regex("<desc>[^<]*</desc>\\s*"), "");
-    const auto t = s.find("<title>");
-    const auto te = s.find("</title>", t == std::string::npos ? 0 : t);
-    if (t != std::string::npos && te != std::string::npos) s.replace(t, te + 8 - t, "<title>" + htmlEscape(title) + "</title>");
-    std::set<std::string> ids;
-    const std::regex id_re("\\bid=(['\"])([^'\"]+)\\1");
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), id_re); it != std::sregex_iterator(); ++it) ids.insert((*it)[2]);
-    for (const auto& id : ids) {
-      for (const char* q : {"'", "\""}) {
-        const std::string qs(q);
-        for (const std::string& pre : {std::string("id=") + qs, qs + "#"}) {
-          const std::string from = pre + id + qs, to = pre + prefix + id + qs;
-          for (std::size_t pos = 0; (pos = s.find(from, pos)) != std::string::npos; pos += to.size()) s.replace(pos, from.size(), to);
-        }
-      }
-      const std::string from = "url(#" + id + ")", to = "url(#" + prefix + id + ")";
-      for (std::size_t pos = 0; (pos = s.find(from, pos)) != std::string::npos; pos += to.size()) s.replace(pos, from.size(), to);
-    }
-    s.insert(4, " class=\"plot\" role=\"img\" aria-label=\"" + htmlEscape(title) + "\"");
-    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-    return s;
-  }
-
-  std::string exe_;
-  fs::path dir_;
-  int files_ = 0, plots_ = 0;
-};
-
-const char* kCss = R"(body{font-family:sans-serif;margin:0 auto;max-width:1100px;padding:1em 2em;color:#222;background:#fff;line-height:1.4}
-h1{font-size:1.6em;border-bottom:2px solid #446;padding-bottom:.2em}
-h2{font-size:1.3em;margin-top:2em;border-bottom:1px solid #bbb}
-h3{font-size:1.1em;margin-top:1.5em}
-table{border-collapse:collapse;margin:.5em 0 1em 0;font-size:.9em}
-th,td{border:1px solid #ccc;padding:.2em .6em;text-align:left;vertical-align:top}
-th{background:#eef}
-td.n{text-align:right;font-variant-numeric:tabular-nums}
-figure{margin:1em 0}
-figcaption{font-size:.9em;color:#444;max-width:900px}
-svg.plot{width:100%;max-width:900px;height:auto;display:block}
-.rec{font-weight:bold;background:#efe;border:1px solid #9c9;padding:.5em 1em}
-.warn{background:#fee;border:1px solid #c99;padding:.5em 1em}
-code{font-size:.95em;word-break:break-all})";
-
 struct Prediction {
   std::string channel;
   std::vector<double> times;                 ///< distinct lab times of the channel
@@ -261,10 +128,7 @@ struct Prediction {
 json writeStudyReport(const std::string& study_dir, const std::string& out_html, const std::string& command,
                       const ReportOptions& options) {
   const auto t_start = std::chrono::steady_clock::now();
-  const std::string gnuplot_exe = findOnPath("gnuplot");
-  if (gnuplot_exe.empty())
-    throw InputError("gnuplot", "not found on PATH; `twin report` draws its plots with it: install the Debian package gnuplot-nox "
-                                "(apt-get install gnuplot-nox)");
+  const std::string gnuplot_exe = requireGnuplot("`twin report`");
   if (options.draws < 2) throw InputError("--draws", "must be >= 2, got " + std::to_string(options.draws));
   const fs::path dir(study_dir);
   if (!fs::is_directory(dir)) throw InputError(study_dir, "is not a folder");
@@ -367,7 +231,7 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
   }
 
   // ---- plots
-  Gnuplot gp(gnuplot_exe);
+  GnuplotSvg gp(gnuplot_exe);
   json plots = json::array();
   std::ostringstream body;
   auto figure = [&](const std::string& svg, const std::string& caption) {
@@ -662,12 +526,12 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
   body << "</table>\n";
 
   // ---- the page
-  for (const auto& w : gp.warnings) warnings.push_back(w);
+  for (const auto& w : gp.warnings()) warnings.push_back(w);
   const std::string title = "twin study report: " + fs::absolute(dir).lexically_normal().string();
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << htmlEscape(title)
-       << "</title>\n<style>\n" << kCss << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
+       << "</title>\n<style>\n" << reportCss() << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
        << "<p>Study <code>" << htmlEscape(study.name) << "</code>: " << htmlEscape(study.description) << ". Assemblies: ";
   for (std::size_t m = 0; m < assemblies.size(); ++m)
     page << (m ? ", " : "") << htmlEscape(assemblies[m].id + " (" + assemblies[m].label() + ")");
@@ -679,15 +543,22 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
   }
   page << "<nav><ol><li><a href=\"#lab\">Lab data and predictive bands</a></li><li><a href=\"#posterior\">Posterior "
           "histograms</a></li><li><a href=\"#selection\">Field-record selection</a></li><li><a href=\"#evidence\">Evidence "
-          "against cost</a></li><li><a href=\"#provenance\">Provenance</a></li></ol></nav>\n"
-       << body.str() << "</body>\n</html>\n";
+          "against cost</a></li><li><a href=\"#provenance\">Provenance</a></li>";
+  int appendix_svgs = 0;
+  for (const auto& a : options.appendix) {
+    page << "<li><a href=\"#" << htmlEscape(a.id) << "\">" << htmlEscape(a.title) << "</a></li>";
+    appendix_svgs += a.svg_count;
+  }
+  page << "</ol></nav>\n" << body.str();
+  for (const auto& a : options.appendix) page << a.html;
+  page << "</body>\n</html>\n";
   writeFileAtomic(out_html, page.str());
 
   json assemblies_json = json::array();
   for (const auto& a : assemblies) assemblies_json.push_back(a.id);
   return {{"html", out_html},
           {"plots", plots},
-          {"svg_count", gp.count()},
+          {"svg_count", gp.count() + appendix_svgs},
           {"assemblies", assemblies_json},
           {"draws", options.draws},
           {"prediction_failures", failures},

@@ -7,19 +7,32 @@
 //   3. the field-record selection boxplot (P(M_m | record) over the records,
 //      classification/records.csv) and the win counts (summary.json);
 //   4. evidence (total log likelihood) against cost, with the recommendation;
-//   5. provenance: program, commands, paths, times, seeds and sizes.
+//   5. provenance: program, commands, paths, times, seeds and sizes;
+// then any ReportOptions::appendix sections (`twin report --diagnosis DIR`).
 // Plots are drawn by gnuplot (Debian package gnuplot-nox) run as a subprocess with the svg
-// terminal; its output is inlined (ids made unique per plot). Without gnuplot on PATH the call
-// throws InputError naming the package, before any work is done.
+// terminal; its output is inlined (ids made unique per plot; classification/svg_plot.hpp).
+// Without gnuplot on PATH the call throws InputError naming the package, before any work is done.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace dtwin::classify {
 
+/// A section appended to the page after the provenance and listed in its contents (e.g. a
+/// diagnosis, diagnosis/diagnosis_report.hpp); `html` is inserted as is (its SVG ids must not
+/// clash with the report's own "p<n>_" ids).
+struct ReportSection {
+  std::string id;     ///< anchor of the section's heading (for the contents)
+  std::string title;  ///< entry in the contents
+  std::string html;   ///< the section
+  int svg_count = 0;  ///< its plots (added to the returned svg_count)
+};
+
 struct ReportOptions {
   int draws = 50;    ///< posterior rows per assembly for the predictive band (evenly spaced)
   int threads = 0;   ///< simulations in parallel (0: all cores; never changes the page)
+  std::vector<ReportSection> appendix;  ///< extra sections after the provenance (none: the page as before)
 };
 
 /// Reads the study folder `study_dir` (written by `twin study`), writes `out_html` atomically

@@ -38,5 +38,9 @@ CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line
 CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line);
 /// `twin report`: a self-contained HTML report of a study folder (classification/report.hpp).
 CommandHandle addReportCommand(CLI::App& root, const std::string& command_line);
+/// `twin compare`: a calibrated assembly against measurements, where it fails (diagnosis/compare.hpp).
+CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line);
+/// `twin diagnose`: which catalogue effect the assembly misses; --apply adds effects (diagnosis/diagnose.hpp).
+CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line);
 
 }  // namespace dtwin::cli

@@ -28,8 +28,13 @@ struct GenerateConfig {
   long repetitions = 0, runs = 0;
   int threads = 0;
   std::vector<double> window;
+  std::vector<std::string> hidden_effects;  ///< --hidden-effect NAME[:param=value,...], repeatable
+  std::string times = "auto";               ///< lab: --times auto|all
+  double rate = 0;                          ///< lab: --rate HZ (0: not given)
+  std::vector<std::string> channels;        ///< lab: --channels a,b,c
   bool quiet = false;
   CLI::Option* seed_opt = nullptr;
+  CLI::Option* rate_opt = nullptr;
 };
 
 
@@ -51,12 +56,32 @@ void checkOut(const std::string& out) {
     throw InputError("--out", "cannot write into folder '" + dir.string() + "'");
 }
 
+std::vector<EffectSetting> parseHidden(const std::vector<std::string>& texts) {
+  std::vector<EffectSetting> out;
+  for (const auto& t : texts) out.push_back(parseEffectSetting(t, "--hidden-effect"));
+  return out;
+}
+
+/// "twin: hidden effect: ..." on stdout (one line), unless quiet or none.
+void printHidden(const nlohmann::json& provenance) {
+  if (provenance.contains("hidden_effects"))
+    std::printf("hidden effect used to make the data: %s\n", hiddenEffectsSummary(provenance["hidden_effects"]).c_str());
+}
+
 int runLab(const GenerateConfig& cfg, const std::string& command) {
   rootWrites([&] { checkOut(cfg.out); });
   const Study study = loadStudy(cfg.study);
   const AssemblySpec a = chooseAssembly(study, cfg.assembly);
   LabOptions opt;
   if (!cfg.scenario.empty()) opt.scenario = cfg.scenario;
+  opt.hidden_effects = parseHidden(cfg.hidden_effects);
+  opt.times_mode = cfg.times == "all" ? LabTimesMode::All : LabTimesMode::Study;
+  if (!cfg.window.empty()) {
+    if (cfg.window.size() != 2) throw InputError("--window", "expects T0,T1 with T0 < T1");
+    opt.window = std::make_pair(cfg.window[0], cfg.window[1]);
+  }
+  if (cfg.rate_opt && cfg.rate_opt->count()) opt.rate_hz = cfg.rate;
+  opt.channels = cfg.channels;
   opt.repetitions = cfg.repetitions;
   if (cfg.seed_opt->count()) opt.seed = cfg.seed;
   opt.command = command;
@@ -73,11 +98,16 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
     for (const auto& c : r.provenance["noise"]["not_applied_to"])
       std::fprintf(stderr, "twin: note: channel %s is not in N; it is written without noise\n", c.get<std::string>().c_str());
     std::string times;
-    for (double t : r.times_s) times += (times.empty() ? "" : ", ") + formatExact(t);
-    std::printf("%s (%s): %ld repetitions x %zu times x %zu channel(s), times %s s (%s) -> %s, %s\n", a.id.c_str(),
-                a.label().c_str(), r.provenance["lab"]["repetitions"].get<long>(), r.times_s.size(),
-                r.provenance["lab"]["channels"].size(), times.c_str(), r.provenance["lab"]["times"]["source"].get<std::string>().c_str(),
-                cfg.out.c_str(), sidecarPath(cfg.out).c_str());
+    if (opt.times_mode == LabTimesMode::All)
+      times = "times: " + r.times_rule + " (" + std::to_string(r.times_s.size()) + " times)";
+    else {
+      for (double t : r.times_s) times += (times.empty() ? "" : ", ") + formatExact(t);
+      times = "times " + times + " s (" + r.provenance["lab"]["times"]["source"].get<std::string>() + ")";
+    }
+    std::printf("%s (%s): %ld repetitions x %zu times x %zu channel(s), %s -> %s, %s\n", a.id.c_str(), a.label().c_str(),
+                r.provenance["lab"]["repetitions"].get<long>(), r.times_s.size(), r.provenance["lab"]["channels"].size(),
+                times.c_str(), cfg.out.c_str(), sidecarPath(cfg.out).c_str());
+    printHidden(r.provenance);
   }
   return 0;
 }
@@ -94,6 +124,7 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
     opt.t_begin_s = cfg.window[0];
     opt.t_end_s = cfg.window[1];
   }
+  opt.hidden_effects = parseHidden(cfg.hidden_effects);
   opt.runs = cfg.runs;
   opt.threads = cfg.threads;
   if (cfg.seed_opt->count()) opt.seed = cfg.seed;
@@ -114,6 +145,7 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
                 a.label().c_str(), r.data.rowCount(), r.data.columnCount(), opt.channel.c_str(), r.data.times_s.front(),
                 r.data.times_s.back(), r.provenance["field"]["threads"].get<int>(),
                 r.provenance["stats"]["wall_s"].get<double>(), cfg.out.c_str(), sidecarPath(cfg.out).c_str());
+  if (!cfg.quiet) printHidden(r.provenance);
   return 0;
 }
 
@@ -129,6 +161,10 @@ void commonOptions(CLI::App* s, GenerateConfig& cfg, const char* default_scenari
                            return digits ? std::string() : "must be an integer >= 0, got '" + v + "'";
                          },
                          "INT>=0"));
+  s->add_option("--hidden-effect", cfg.hidden_effects,
+                "Make the data with this effect switched on (the study's assemblies lack it; for testing a diagnosis): "
+                "NAME[:param=value,...], e.g. bump_stop:stiffness=2e6,gap_m=0.02; repeatable; recorded in the sidecar")
+      ->allow_extra_args(false);
   s->add_flag("--quiet", cfg.quiet, "Print nothing on success (no progress line)");
 }
 
@@ -146,6 +182,17 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
   commonOptions(l, *lab, "lab");
   l->add_option("--repetitions", lab->repetitions, "Repetitions (default: the study's sizes.lab_repetitions)")
       ->check(CLI::Range(1L, 1000000L));
+  l->add_option("--times", lab->times,
+                "auto: the study's [lab] times_s, else the automatic times (default); all: every output sample of the "
+                "noise-free run in --window at --rate")
+      ->check(CLI::IsMember({"auto", "all"}))
+      ->capture_default_str();
+  l->add_option("--window", lab->window, "With --times all: time window T0,T1 [s] (default: the whole scenario)")
+      ->delimiter(',')
+      ->expected(2);
+  lab->rate_opt = l->add_option("--rate", lab->rate,
+                "With --times all: samples per second kept [Hz] (default: the output rate; must divide it into an integer step)");
+  l->add_option("--channels", lab->channels, "Channels, a,b,c (default: the study's [lab] channels)")->delimiter(',');
 
   auto* f = g->add_subcommand("field",
                               "Field data: N runs on independent random roads of the field scenario, a window of one channel at "

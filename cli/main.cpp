@@ -32,6 +32,8 @@ int runTwin(int argc, char** argv, std::string& error) {
   commands.push_back(addClassifyCommand(app, command));
   commands.push_back(addStudyCommand(app, command));
   commands.push_back(addReportCommand(app, command));
+  commands.push_back(addCompareCommand(app, command));
+  commands.push_back(addDiagnoseCommand(app, command));
 
   try {
     app.parse(argc, argv);

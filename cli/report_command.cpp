@@ -1,27 +1,56 @@
-// `twin report STUDY_DIR [--out FILE.html]`: a self-contained HTML report of a study folder.
+// `twin report [STUDY_DIR] [--diagnosis DIR]... [--out FILE.html]`: a self-contained HTML report of
+// a study folder, with the diagnosis sections appended; or of diagnosis folders alone.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "classification/report.hpp"
 #include "cli/commands.hpp"
+#include "diagnosis/diagnosis_report.hpp"
+#include "subsystems/errors.hpp"
 
 namespace dtwin::cli {
 namespace {
 
 struct ReportConfig {
   std::string dir, out;
+  std::vector<std::string> diagnoses;
   int draws = 50, threads = 0;
   bool quiet = false;
 };
 
 int runReportCommand(const ReportConfig& cfg, const std::string& command) {
+  if (cfg.dir.empty() && cfg.diagnoses.empty()) throw InputError("twin report", "give a study folder, --diagnosis DIR, or both");
+  if (cfg.dir.empty()) {  // diagnosis-only page
+    const std::string out = cfg.out.empty() ? (std::filesystem::path(cfg.diagnoses[0]) / "report.html").string() : cfg.out;
+    const auto r = diag::writeDiagnosisReport(cfg.diagnoses, out, command);
+    for (const auto& w : r["warnings"]) std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
+    if (!cfg.quiet) std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(), r["wall_s"].get<double>());
+    return 0;
+  }
   const std::string out = cfg.out.empty() ? (std::filesystem::path(cfg.dir) / "report.html").string() : cfg.out;
   classify::ReportOptions o;
   o.draws = cfg.draws;
   o.threads = cfg.threads;
+  std::vector<std::string> diag_warnings;
+  for (std::size_t k = 0; k < cfg.diagnoses.size(); ++k) {  // read (and checked) before the study's simulations
+    diag::DiagnosisSectionOptions so;
+    so.anchor = "diagnosis-" + std::to_string(k + 1);
+    so.id_prefix = "d" + std::to_string(k + 1) + "p";
+    so.heading_prefix = std::to_string(6 + k) + ". ";
+    nlohmann::json drawn;
+    classify::ReportSection s;
+    s.html = diag::diagnosisSectionHtml(cfg.diagnoses[k], so, &drawn);
+    s.id = so.anchor;
+    s.title = "Diagnosis: " + cfg.diagnoses[k];
+    s.svg_count = drawn["svg_count"].get<int>();
+    for (const auto& w : drawn["warnings"]) diag_warnings.push_back(w.get<std::string>());
+    o.appendix.push_back(std::move(s));
+  }
   const auto r = classify::writeStudyReport(cfg.dir, out, command, o);
   for (const auto& w : r["warnings"]) std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
+  for (const auto& w : diag_warnings) std::fprintf(stderr, "twin report: warning: %s\n", w.c_str());
   if (!cfg.quiet) std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(), r["wall_s"].get<double>());
   return 0;
 }
@@ -32,9 +61,15 @@ CommandHandle addReportCommand(CLI::App& root, const std::string& command_line) 
   auto cfg = std::make_shared<ReportConfig>();
   auto* c = root.add_subcommand("report",
                                 "Write a self-contained HTML report of a study folder (lab data vs posterior predictive bands, "
-                                "posteriors, field-record selection, evidence vs cost, provenance); needs gnuplot");
-  c->add_option("study_dir", cfg->dir, "Study folder written by `twin study`")->required()->check(CLI::ExistingDirectory);
-  c->add_option("--out", cfg->out, "HTML file (default: STUDY_DIR/report.html)");
+                                "posteriors, field-record selection, evidence vs cost, provenance) and/or of diagnosis folders; "
+                                "needs gnuplot");
+  c->add_option("study_dir", cfg->dir, "Study folder written by `twin study` (optional with --diagnosis)")->check(CLI::ExistingDirectory);
+  c->add_option("--diagnosis", cfg->diagnoses,
+                "Folder written by `twin diagnose --out` (repeatable): its section is appended to the study report, or, "
+                "without STUDY_DIR, makes a diagnosis-only report")
+      ->take_all()
+      ->allow_extra_args(false);
+  c->add_option("--out", cfg->out, "HTML file (default: STUDY_DIR/report.html, or the first --diagnosis DIR/report.html)");
   c->add_option("--draws", cfg->draws, "Posterior rows per assembly for the predictive band (evenly spaced)")
       ->capture_default_str()->check(CLI::Range(2, 100000));
   c->add_option("--threads", cfg->threads, "Simulations in parallel (0: all cores; never changes the page)")->check(CLI::Range(0, 1024));

@@ -26,9 +26,10 @@ ParameterSpec p(std::string name, std::string unit, std::string desc, double off
 }  // namespace
 
 BumpStopEffect::BumpStopEffect() {
-  specs_ = {p("stiffness", "N/m^n", "bump-stop stiffness k (off: 0)", 0.0, 0.0, kInf, 0.0, 1.0e7),
+  specs_ = {p("stiffness", "N/m^n", "bump-stop stiffness k (off: 0)", 0.0, 0.0, kInf, 0.0, 5.0e7),
             p("gap_m", "m", "compression from design height at which the stop touches", 0.05, 0.0, kInf, 0.01, 0.15),
             p("exponent", "1", "force exponent n (1 linear, 2 progressive)", 2.0, 1.0, 5.0, 1.0, 3.0)};
+  specs_[2].shape = true;
 }
 double BumpStopEffect::calcStrutForce(const StrutState& s, ParamValues v) const {
   const double d = s.deflection_m - v[1];
@@ -45,6 +46,7 @@ double DamperAsymmetryEffect::calcStrutForce(const StrutState& s, ParamValues v)
 StrutFrictionEffect::StrutFrictionEffect() {
   specs_ = {p("force_N", "N", "Coulomb friction force level (off: 0)", 0.0, 0.0, kInf, 0.0, 500.0),
             p("smoothing_velocity_mps", "m/s", "tanh smoothing velocity", 0.01, 0.0, kInf, 0.001, 0.05, false)};
+  specs_[1].shape = true;
 }
 double StrutFrictionEffect::calcStrutForce(const StrutState& s, ParamValues v) const {
   return v[0] == 0.0 ? 0.0 : v[0] * std::tanh(s.rate_mps / v[1]);
@@ -58,7 +60,7 @@ RoadSample TireEnvelopingEffect::filterRoad(const Road& road, Track t, double x,
 }
 
 ProgressiveSpringEffect::ProgressiveSpringEffect() {
-  specs_ = {p("stiffness3", "N/m^3", "cubic spring coefficient k3: extra force k3 q^3 (off: 0)", 0.0, 0.0, kInf, 0.0, 1.0e7)};
+  specs_ = {p("stiffness3", "N/m^3", "cubic spring coefficient k3: extra force k3 q^3 (off: 0)", 0.0, 0.0, kInf, 0.0, 5.0e7)};
 }
 double ProgressiveSpringEffect::calcStrutForce(const StrutState& s, ParamValues v) const {
   if (v[0] == 0.0) return 0.0;

@@ -25,6 +25,9 @@ struct ParameterSpec {
   /// parameter (inside the valid range, containing the off value). NaN for laws' parameters.
   double prior_lower = std::numeric_limits<double>::quiet_NaN();
   double prior_upper = std::numeric_limits<double>::quiet_NaN();
+  /// Effects only: a shape parameter (e.g. a force exponent, a smoothing velocity) that a
+  /// diagnosis holds at its default while it calibrates the effect's other parameters.
+  bool shape = false;
 };
 
 /// A read-only view of parameter values (pointer + count), in a law's `parameters()` order.

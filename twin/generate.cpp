@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 
+#include "subsystems/effect.hpp"
 #include "subsystems/errors.hpp"
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
@@ -54,7 +55,64 @@ std::size_t gridIndex(double t, double rate, double duration, const std::string&
   return static_cast<std::size_t>(std::llround(k));
 }
 
+/// Validates the hidden effects' names (errors name --hidden-effect) and builds the model with them.
+std::shared_ptr<const Model> modelWithHidden(const Study& study, const AssemblySpec& assembly,
+                                             const std::vector<EffectSetting>& hidden) {
+  for (std::size_t i = 0; i < hidden.size(); ++i) {
+    const auto& e = hidden[i];
+    makeEffect(e.name, "--hidden-effect");
+    for (std::size_t j = 0; j < i; ++j)
+      if (hidden[j].name == e.name) throw InputError("--hidden-effect", "effect " + e.name + " given twice");
+    for (const auto& v : e.values)
+      if (v.name.rfind(e.name + ".", 0) != 0)
+        throw InputError("--hidden-effect", "parameter '" + v.name + "' does not belong to effect " + e.name);
+  }
+  return study.makeModel(assembly, hidden);
+}
+
+/// Grid indices k in [t0, t1] (inclusive, 1e-6 sample tolerance) that are multiples of `step`.
+std::vector<std::size_t> windowRows(double t0, double t1, double rate, std::size_t step) {
+  const double k0 = std::ceil(t0 * rate - 1e-6), k1 = std::floor(t1 * rate + 1e-6);
+  std::vector<std::size_t> rows;
+  if (k1 < k0) return rows;
+  auto k = static_cast<std::size_t>(std::max(0.0, k0));
+  k = (k + step - 1) / step * step;
+  for (; static_cast<double>(k) <= k1; k += step) rows.push_back(k);
+  return rows;
+}
+
 }  // namespace
+
+nlohmann::json hiddenEffectsJson(const Model& model, const std::vector<EffectSetting>& hidden) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& h : hidden) {
+    const auto& names = model.assembly().effects;
+    const auto it = std::find(names.begin(), names.end(), h.name);
+    DTWIN_CHECK(it != names.end(), "hidden effect " + h.name + " not installed");
+    const auto& effect = *model.effects()[static_cast<std::size_t>(it - names.begin())];
+    nlohmann::json params = nlohmann::json::object(), given = nlohmann::json::array();
+    for (const auto& ps : effect.parameters()) params[ps.name] = model.table().value(h.name + "." + ps.name);
+    for (const auto& v : h.values) given.push_back(v.name.substr(h.name.size() + 1));
+    out.push_back({{"name", h.name}, {"parameters", params}, {"given", given}});
+  }
+  return out;
+}
+
+std::string hiddenEffectsSummary(const nlohmann::json& hidden) {
+  std::string s;
+  for (const auto& h : hidden) {
+    const std::string name = h["name"].get<std::string>();
+    const auto effect = makeEffect(name, "hidden effect");
+    std::string p;
+    for (const auto& [k, v] : h["parameters"].items()) {
+      p += (p.empty() ? "" : ", ") + k + "=" + formatExact(v.get<double>());
+      for (const auto& ps : effect->parameters())
+        if (ps.name == k && ps.unit != "1") p += " " + ps.unit;
+    }
+    s += (s.empty() ? "" : "; ") + name + " (" + p + ")";
+  }
+  return s;
+}
 
 std::uint64_t fieldRoadSeed(std::uint64_t seed, std::size_t run) {
   DTWIN_CHECK(run >= 1, "runs are numbered from 1");
@@ -115,12 +173,45 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   const std::uint64_t seed = opt.seed.value_or(study.seed);
   const double variance = noiseVariance(study, opt.noise_variance_N2);
   const double sigma = std::sqrt(variance);
-  const std::vector<std::string> names = study.lab.channelsOrDefault();
+  const std::vector<std::string> names = opt.channels.empty() ? study.lab.channelsOrDefault() : opt.channels;
   std::vector<Channel> channels;
-  for (const auto& n : names) channels.push_back(channelInfo(n, study.path + ": lab.channels"));
+  for (const auto& n : names) {
+    channels.push_back(channelInfo(n, opt.channels.empty() ? study.path + ": lab.channels" : "--channels"));
+    for (std::size_t i = 0; i + 1 < channels.size(); ++i)
+      if (channels[i].name == n) throw InputError("--channels", "channel '" + n + "' listed twice");
+  }
   const double rate = study.simulation.output_rate_hz;
+  const bool all_times = opt.times_mode == LabTimesMode::All;
+  if (!all_times && opt.window) throw InputError("--window", "needs --times all");
+  if (!all_times && opt.rate_hz) throw InputError("--rate", "needs --times all");
+  double w0 = 0.0, w1 = sc.duration_s, keep_rate = rate;
+  std::size_t step = 1;
+  if (all_times) {
+    if (opt.window) {
+      w0 = opt.window->first;
+      w1 = opt.window->second;
+      if (!(std::isfinite(w0) && std::isfinite(w1) && w0 < w1))
+        throw InputError("--window", "expects T0,T1 with T0 < T1, got " + formatExact(w0) + "," + formatExact(w1));
+      if (w0 < 0 || w1 > sc.duration_s + 1e-9)
+        throw InputError("--window", formatExact(w0) + " .. " + formatExact(w1) + " s lies outside the scenario '" + sc.name +
+                                         "' (0 .. " + formatExact(sc.duration_s) + " s)");
+    }
+    if (opt.rate_hz) {
+      keep_rate = *opt.rate_hz;
+      const double q = rate / keep_rate;
+      if (!(std::isfinite(keep_rate) && keep_rate > 0) || !(q >= 1 - 1e-9) || std::abs(q - std::round(q)) > 1e-9 * q)
+        throw InputError("--rate", "must divide the output rate " + formatExact(rate) + " Hz into an integer step (e.g. " +
+                                       formatExact(rate / 2) + ", " + formatExact(rate / 5) + ", " + formatExact(rate / 10) +
+                                       " Hz), got " + formatExact(keep_rate) + " Hz");
+      step = static_cast<std::size_t>(std::llround(q));
+    }
+  }
+  const std::vector<std::size_t> all_rows = all_times ? windowRows(w0, w1, rate, step) : std::vector<std::size_t>{};
+  if (all_times && all_rows.empty())
+    throw InputError("--window", "no output sample at " + formatExact(keep_rate) + " Hz in " + formatExact(w0) + " .. " +
+                                     formatExact(w1) + " s");
 
-  auto model = study.makeModel(assembly);
+  auto model = modelWithHidden(study, assembly, opt.hidden_effects);
   auto road = makeRoad(sc, model->vehicle(), seed);
   Simulator sim(model, study.simulation);
   const auto values = model->defaultRunValues();
@@ -135,7 +226,19 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   LabResult res;
   const double t_obstacle = obstacleTime(sc);
   nlohmann::json times_json;
-  if (!study.lab.times_s.empty()) {
+  std::vector<std::size_t> rows = all_rows;
+  if (all_times) {
+    for (std::size_t r : rows) res.times_s.push_back(run.trace.column("time_s").at(r));
+    res.times_rule = "all samples in [" + formatExact(w0) + "," + formatExact(w1) + "] at " + formatExact(keep_rate) + " Hz";
+    times_json = {{"source", "all"},
+                  {"rule", res.times_rule + ": the noise-free " + formatExact(rate) + " Hz output samples k (time k / " +
+                               formatExact(rate) + " s) in the window with k a multiple of " + std::to_string(step)},
+                  {"window_s", {w0, w1}},
+                  {"rate_hz", keep_rate},
+                  {"output_rate_hz", rate},
+                  {"step", step},
+                  {"count", rows.size()}};
+  } else if (!study.lab.times_s.empty()) {
     res.times_s = study.lab.times_s;
     res.times_rule = "explicit: [lab] times_s of " + study.path;
     times_json = {{"source", "explicit"}, {"rule", res.times_rule}};
@@ -161,9 +264,9 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
                   {"min_separation_s", study.lab.min_separation_s},
                   {"static_value", run.trace.column(names.front()).front()}};
   }
-  std::vector<std::size_t> rows;
-  for (std::size_t i = 0; i < res.times_s.size(); ++i)
-    rows.push_back(gridIndex(res.times_s[i], rate, sc.duration_s, study.path + ": lab.times_s[" + std::to_string(i) + "]"));
+  if (!all_times)
+    for (std::size_t i = 0; i < res.times_s.size(); ++i)
+      rows.push_back(gridIndex(res.times_s[i], rate, sc.duration_s, study.path + ": lab.times_s[" + std::to_string(i) + "]"));
   for (std::size_t r : rows) DTWIN_CHECK(r < run.trace.rows(), "lab time beyond the trace");
 
   nlohmann::json noise_free = nlohmann::json::object();
@@ -187,6 +290,7 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   j["kind"] = "lab";
   j["format"] = "tidy CSV: repetition,time_s,channel,value (docs/data-files.md)";
   j["truth"] = truthJson(study, *model);
+  if (!opt.hidden_effects.empty()) j["hidden_effects"] = hiddenEffectsJson(*model, opt.hidden_effects);
   std::vector<std::string> noisy, clean;
   for (const auto& c : channels) (c.unit == "N" ? noisy : clean).push_back(c.name);
   j["noise"] = {{"distribution", "independent normal N(0, variance) added to every value of a channel in N"},
@@ -224,7 +328,7 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
   const std::size_t kb = gridIndex(opt.t_begin_s, rate, sc.duration_s, "field window begin");
   const std::size_t ke = gridIndex(opt.t_end_s, rate, sc.duration_s, "field window end");
 
-  auto model = study.makeModel(assembly);
+  auto model = modelWithHidden(study, assembly, opt.hidden_effects);
   const auto values = model->defaultRunValues();
   const std::size_t N = static_cast<std::size_t>(n_runs), T = ke - kb + 1;
   FieldData d;
@@ -292,6 +396,7 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
   j["kind"] = "field";
   j["format"] = "CSV matrix: run,road_seed,t_<seconds>,... one row per run (docs/data-files.md)";
   j["truth"] = truthJson(study, *model);
+  if (!opt.hidden_effects.empty()) j["hidden_effects"] = hiddenEffectsJson(*model, opt.hidden_effects);
   j["noise"] = {{"distribution", "independent normal N(0, variance) added to every value (channels in N only)"},
                 {"variance_N2", variance},
                 {"sigma_N", sigma},

@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -45,26 +46,54 @@ double obstacleTime(const ScenarioSpec& scenario);
 std::vector<double> automaticLabTimes(const Trace& noise_free, const std::string& channel, double obstacle_time_s,
                                       std::size_t count, double min_separation_s);
 
+/// Which times the lab data carry.
+enum class LabTimesMode {
+  Study,  ///< the study's rule (default): [lab] times_s if given, else the automatic times
+  All,    ///< every output sample in `window` (default: the whole scenario), decimated to `rate_hz`
+};
+
+/// Hidden effects (diagnosis tests): the data are made by the assembly with these effects
+/// switched on (Study::makeModel's extra effects); recorded in the sidecar under `hidden_effects`.
+/// `hiddenEffectsJson` gives [{name, parameters: {param: value used}}] for every parameter of each
+/// hidden effect, the off/default values of those not given included.
+nlohmann::json hiddenEffectsJson(const Model& model, const std::vector<EffectSetting>& hidden);
+/// One line from hiddenEffectsJson: "bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)";
+/// effects separated by "; ".
+std::string hiddenEffectsSummary(const nlohmann::json& hidden_effects_json);
+
 struct LabOptions {
   std::string scenario = "lab";
   long repetitions = 0;                       ///< <= 0: the study's sizes.lab_repetitions
   std::optional<std::uint64_t> seed;          ///< default: the study's seed
   std::optional<double> noise_variance_N2;    ///< default: the study's [noise] variance_N2
+  std::vector<EffectSetting> hidden_effects;  ///< effects switched on in the assembly that makes the data
+  LabTimesMode times_mode = LabTimesMode::Study;
+  /// times_mode All: the window [T0, T1] in s (inclusive; default: [0, duration]); must lie in
+  /// the scenario. Ignored (must be unset) otherwise.
+  std::optional<std::pair<double, double>> window;
+  /// times_mode All: samples per second kept (default: the output rate); output_rate / rate_hz
+  /// must be an integer step. Kept samples are the output samples k (time k / output rate) with
+  /// k a multiple of that step, in the window. Ignored (must be unset) otherwise.
+  std::optional<double> rate_hz;
+  std::vector<std::string> channels;          ///< empty: the study's [lab] channels
   std::string command;                        ///< recorded in the provenance
 };
 
 struct LabResult {
   LabData data;                  ///< records: repetition, then channel, then time
-  std::vector<double> times_s;   ///< the condensed times
+  std::vector<double> times_s;   ///< the condensed times (times_mode All: every kept sample)
   std::string times_rule;        ///< how the times were chosen
   Trace noise_free;              ///< the full noise-free trace of the run
   nlohmann::json provenance;     ///< the sidecar (docs/data-files.md)
 };
 
 /// Lab data: `assembly` at the study's parameters (calibrated truths applied) over the lab
-/// scenario, noise N(0, sigma^2) added to channels in N (other channels are written noise-free,
-/// and the provenance says so), repetitions 1..R, at the [lab] times or the automatic ones.
-/// Throws InputError for bad settings, RunFailedError if the simulation fails.
+/// scenario (with options.hidden_effects switched on), noise N(0, sigma^2) added to channels in N
+/// (other channels are written noise-free, and the provenance says so), repetitions 1..R, at the
+/// [lab] times or the automatic ones, or (times_mode All) every sample of a window at a rate.
+/// Throws InputError for bad settings (errors about window, rate, channels and hidden effects
+/// name the CLI flags --window, --rate, --channels, --hidden-effect), RunFailedError if the
+/// simulation fails.
 LabResult generateLab(const Study& study, const AssemblySpec& assembly, const LabOptions& options = {},
                       const ProgressFn& progress = {});
 
@@ -75,6 +104,7 @@ struct FieldOptions {
   long runs = 0;                              ///< <= 0: the study's sizes.field_runs
   std::optional<std::uint64_t> seed;          ///< default: the study's seed
   std::optional<double> noise_variance_N2;    ///< default: the study's [noise] variance_N2
+  std::vector<EffectSetting> hidden_effects;  ///< effects switched on in the assembly that makes the data
   int threads = 0;                            ///< <= 0: all cores
   std::string command;
 };
@@ -84,7 +114,7 @@ struct FieldResult {
   nlohmann::json provenance;
 };
 
-/// Field data: runs 1..N of `assembly` on independent roads of the field scenario (road seed of
+/// Field data: runs 1..N of `assembly` (with options.hidden_effects switched on) on independent roads of the field scenario (road seed of
 /// run k: fieldRoadSeed(seed, k)), the window of `channel`, plus noise (channels in N only), in
 /// parallel on options.threads workers (one Simulator each, one shared Model).
 /// Throws InputError for bad settings, RunFailedError naming the lowest failing run and its seed.

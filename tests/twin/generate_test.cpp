@@ -6,6 +6,8 @@
 #include <atomic>
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <set>
 
 #include "subsystems/errors.hpp"
@@ -328,4 +330,194 @@ TEST(ParallelFor, EveryIndexOnceAndLowestErrorRethrown) {
   EXPECT_EQ(workerCount(8, 3), 3);
   EXPECT_EQ(workerCount(0, 0), 1);
   EXPECT_GE(workerCount(0, 1000), 1);
+}
+
+// --- hidden effects and dense lab data (diagnosis) ---
+
+namespace {
+EffectSetting hidden(const std::string& text) { return parseEffectSetting(text, "--hidden-effect"); }
+
+LabOptions denseBump() {
+  LabOptions opt;
+  opt.scenario = "diag_bump";
+  opt.repetitions = 2;
+  opt.times_mode = LabTimesMode::All;
+  opt.channels = {"hub_force_fl_N", "susp_defl_fl_m"};
+  return opt;
+}
+}  // namespace
+
+TEST(GenerateLabHidden, BumpStopChangesTheBumpAndNothingBefore) {
+  const Study& s = demo();
+  const LabResult base = generateLab(s, s.assemblies().front(), denseBump());
+  LabOptions opt = denseBump();
+  opt.hidden_effects = {hidden("bump_stop:stiffness=2e6,gap_m=0.02")};
+  const LabResult hid = generateLab(s, s.assemblies().front(), opt);
+  ASSERT_EQ(base.data.records.size(), hid.data.records.size());
+  ASSERT_EQ(base.data.records.size(), 2u * 2u * 2501u) << "every 1 kHz sample of the 2.5 s scenario";
+  EXPECT_FALSE(base.provenance.contains("hidden_effects"));
+
+  // Before the bump (front wheels meet it at 1 s; the integrator lands on 1 s - 0.02 s) the
+  // stop is not touched: bit-identical, noise included (same seed, same streams).
+  std::size_t before = 0;
+  for (std::size_t i = 0; i < base.data.records.size(); ++i) {
+    const auto& a = base.data.records[i];
+    const auto& b = hid.data.records[i];
+    ASSERT_EQ(a.time_s, b.time_s);
+    ASSERT_EQ(a.channel, b.channel);
+    if (a.time_s <= 0.98) {
+      ASSERT_EQ(a.value, b.value) << a.channel << " at t = " << a.time_s;
+      ++before;
+    }
+  }
+  EXPECT_EQ(before, 2u * 2u * 981u);
+
+  // At the bump peak (largest noise-free front-left suspension compression of the base run,
+  // beyond the 0.02 m gap) the stop pushes: the hub force differs there (noise-free and noisy).
+  const auto& d0 = base.noise_free.column("susp_defl_fl_m");
+  const auto& f0 = base.noise_free.column("hub_force_fl_N");
+  const auto& f1 = hid.noise_free.column("hub_force_fl_N");
+  const auto k_peak = static_cast<std::size_t>(std::max_element(d0.begin(), d0.end()) - d0.begin());
+  const double t_peak = base.noise_free.column("time_s")[k_peak];
+  EXPECT_GT(t_peak, 1.0);
+  EXPECT_LT(t_peak, 1.3);
+  EXPECT_GT(d0[k_peak], 0.025) << "the stop (gap 0.02 m) is engaged at the peak";
+  EXPECT_GT(std::abs(f1[k_peak] - f0[k_peak]), 10.0) << "base " << f0[k_peak] << " N, hidden " << f1[k_peak] << " N";
+  EXPECT_NE(hid.noise_free.column("susp_defl_fl_m")[k_peak], d0[k_peak]);
+  for (std::size_t i = 0; i < base.data.records.size(); ++i) {
+    if (base.data.records[i].time_s == t_peak) {
+      EXPECT_NE(base.data.records[i].value, hid.data.records[i].value);
+    }
+  }
+  double max_diff = 0;
+  for (std::size_t k = 0; k < f0.size(); ++k) max_diff = std::max(max_diff, std::abs(f1[k] - f0[k]));
+  EXPECT_GT(max_diff, 30.0);
+
+  // The sidecar records every parameter of the hidden effect with the value used.
+  const auto& h = hid.provenance["hidden_effects"];
+  ASSERT_EQ(h.size(), 1u);
+  EXPECT_EQ(h[0]["name"], "bump_stop");
+  EXPECT_EQ(h[0]["parameters"]["stiffness"].get<double>(), 2e6);
+  EXPECT_EQ(h[0]["parameters"]["gap_m"].get<double>(), 0.02);
+  EXPECT_EQ(h[0]["parameters"]["exponent"].get<double>(), 2.0) << "the default of a parameter not given";
+  EXPECT_EQ(hiddenEffectsSummary(h), "bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)");
+}
+
+TEST(GenerateLabHidden, EffectAtItsOffValuesGivesTheBaseDataBitForBit) {
+  const Study& s = demo();
+  const LabResult base = generateLab(s, s.assemblies().front(), denseBump());
+  LabOptions opt = denseBump();
+  opt.hidden_effects = {hidden("bump_stop")};
+  const LabResult off = generateLab(s, s.assemblies().front(), opt);
+  ASSERT_EQ(base.data.records.size(), off.data.records.size());
+  for (std::size_t i = 0; i < base.data.records.size(); ++i)
+    ASSERT_EQ(base.data.records[i].value, off.data.records[i].value) << i;
+  EXPECT_EQ(labCsvText(base.data), labCsvText(off.data));
+  EXPECT_EQ(off.provenance["hidden_effects"][0]["parameters"]["stiffness"].get<double>(), 0.0);
+  EXPECT_EQ(off.provenance["hidden_effects"][0]["parameters"]["gap_m"].get<double>(), 0.05);
+  EXPECT_EQ(off.provenance["hidden_effects"][0]["given"], nlohmann::json::array());
+}
+
+TEST(GenerateLabDense, WindowAndRateGiveEveryDecimatedSample) {
+  const Study& s = demo();
+  LabOptions opt = denseBump();
+  opt.repetitions = 3;
+  opt.window = std::make_pair(0.9, 1.2);
+  opt.rate_hz = 200.0;
+  const LabResult r = generateLab(s, s.assemblies().front(), opt);
+  std::vector<double> expected;
+  for (int k = 900; k <= 1200; k += 5) expected.push_back(k / 1000.0);
+  ASSERT_EQ(expected.size(), 61u);
+  EXPECT_EQ(expected[1], 0.905);
+  EXPECT_EQ(expected.back(), 1.2);
+  EXPECT_EQ(r.times_s, expected);
+  std::map<std::pair<long, std::string>, std::vector<double>> times;
+  for (const auto& rec : r.data.records) times[{rec.repetition, rec.channel}].push_back(rec.time_s);
+  ASSERT_EQ(times.size(), 3u * 2u);
+  for (const auto& [key, t] : times) EXPECT_EQ(t, expected) << "repetition " << key.first << " " << key.second;
+  // Noise on the channel in N only; the values are the noise-free samples at those times.
+  const auto& defl = r.noise_free.column("susp_defl_fl_m");
+  const auto& force = r.noise_free.column("hub_force_fl_N");
+  int noisy = 0;
+  for (const auto& rec : r.data.records) {
+    const auto k = static_cast<std::size_t>(std::llround(rec.time_s * 1000.0));
+    if (rec.channel == "susp_defl_fl_m") EXPECT_EQ(rec.value, defl[k]);
+    else noisy += rec.value != force[k];
+  }
+  EXPECT_EQ(noisy, 3 * 61);
+  const auto& tj = r.provenance["lab"]["times"];
+  EXPECT_EQ(tj["source"], "all");
+  EXPECT_EQ(r.times_rule, "all samples in [0.9,1.2] at 200 Hz");
+  EXPECT_NE(tj["rule"].get<std::string>().find("all samples in [0.9,1.2] at 200 Hz"), std::string::npos);
+  EXPECT_EQ(tj["step"], 5);
+  EXPECT_EQ(tj["count"], 61);
+  EXPECT_EQ(r.provenance["lab"]["channels"].size(), 2u);
+
+  // Defaults: the whole scenario at the output rate.
+  LabOptions whole = denseBump();
+  whole.repetitions = 1;
+  whole.channels = {"susp_defl_fl_m"};
+  const LabResult w = generateLab(s, s.assemblies().front(), whole);
+  ASSERT_EQ(w.times_s.size(), 2501u);
+  EXPECT_EQ(w.times_s.front(), 0.0);
+  EXPECT_EQ(w.times_s.back(), 2.5);
+  EXPECT_EQ(w.times_rule, "all samples in [0,2.5] at 1000 Hz");
+  EXPECT_EQ(w.data.channels(), (std::vector<std::string>{"susp_defl_fl_m"}));
+}
+
+TEST(GenerateLabDense, BadSettingsNameTheFlag) {
+  const Study& s = demo();
+  struct Case {
+    std::function<void(LabOptions&)> set;
+    std::string expect;
+  };
+  const std::vector<Case> cases = {
+      {[](LabOptions& o) { o.rate_hz = 300.0; }, "--rate: must divide the output rate 1000 Hz into an integer step"},
+      {[](LabOptions& o) { o.rate_hz = 2000.0; }, "--rate: must divide"},
+      {[](LabOptions& o) { o.rate_hz = -5.0; }, "--rate: must divide"},
+      {[](LabOptions& o) { o.window = std::make_pair(1.2, 0.9); }, "--window: expects T0,T1 with T0 < T1"},
+      {[](LabOptions& o) { o.window = std::make_pair(0.0, 9.0); }, "--window: 0 .. 9 s lies outside the scenario 'diag_bump'"},
+      {[](LabOptions& o) { o.channels = {"hub_force_fl_kN"}; }, "--channels: wrong unit suffix"},
+      {[](LabOptions& o) { o.channels = {"susp_defl_fl_m", "susp_defl_fl_m"}; }, "--channels: channel 'susp_defl_fl_m' listed twice"},
+      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.rate_hz = 200.0; }, "--rate: needs --times all"},
+      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.window = std::make_pair(0.9, 1.2); }, "--window: needs --times all"},
+      {[](LabOptions& o) { o.hidden_effects = {EffectSetting{"bump_stop", {}}, EffectSetting{"bump_stop", {}}}; },
+       "--hidden-effect: effect bump_stop given twice"},
+      {[](LabOptions& o) { o.hidden_effects = {hidden("bump_stop:stiffnes=1")}; },
+       "--hidden-effect stiffnes: unknown parameter 'bump_stop.stiffnes'"},
+      {[](LabOptions& o) { o.hidden_effects = {hidden("bump_stop:gap_m=-1")}; }, "--hidden-effect gap_m: bump_stop.gap_m"},
+  };
+  for (const auto& c : cases) {
+    LabOptions o = denseBump();
+    c.set(o);
+    try {
+      generateLab(s, s.assemblies().front(), o);
+      ADD_FAILURE() << "no error for " << c.expect;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(hidden("bump_stopp"), InputError);
+}
+
+TEST(GenerateFieldHidden, HiddenEffectChangesFieldData) {
+  const Study& s = demo();
+  FieldOptions opt;
+  opt.scenario = "diag_rough";
+  opt.runs = 2;
+  opt.threads = 2;
+  opt.t_begin_s = 0.0;
+  opt.t_end_s = 3.0;
+  const FieldResult base = generateField(s, s.assemblies().front(), opt);
+  opt.hidden_effects = {hidden("damper_asymmetry:ratio=2.5")};
+  const FieldResult hid = generateField(s, s.assemblies().front(), opt);
+  ASSERT_EQ(base.data.values.size(), hid.data.values.size());
+  EXPECT_EQ(base.data.road_seeds, hid.data.road_seeds) << "the same roads";
+  double diff = 0;
+  for (std::size_t i = 0; i < base.data.values.size(); ++i) diff = std::max(diff, std::abs(base.data.values[i] - hid.data.values[i]));
+  EXPECT_GT(diff, 200.0) << "rebound damping x2.5 on a class-C road";
+  ASSERT_TRUE(hid.provenance.contains("hidden_effects"));
+  EXPECT_EQ(hid.provenance["hidden_effects"][0]["name"], "damper_asymmetry");
+  EXPECT_EQ(hid.provenance["hidden_effects"][0]["parameters"]["ratio"].get<double>(), 2.5);
+  EXPECT_FALSE(base.provenance.contains("hidden_effects"));
 }

@@ -1,0 +1,382 @@
+#include "diagnosis/compare.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "subsystems/errors.hpp"
+#include "twin/parallel.hpp"
+
+namespace dtwin::diag {
+namespace {
+
+double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+
+/// P(χ²_k > x), Wilson–Hilferty cube-root normal approximation (accurate to ~1e-3 for k ≥ 10).
+/// The normal deviate of F = (X/d1) against F(d1, d2) (Paulson 1942; d2 = inf: Wilson–Hilferty
+/// for χ²_d1/d1). Accurate to ~1e-3 in p for d1, d2 >= 10.
+double fDeviate(double f, double d1, double d2) {
+  const double a1 = 2.0 / (9.0 * d1), a2 = std::isfinite(d2) ? 2.0 / (9.0 * d2) : 0.0;
+  const double c = std::cbrt(f);
+  return ((1.0 - a2) * c - (1.0 - a1)) / std::sqrt(a2 * c * c + a1);
+}
+
+/// "fl", "fr", "rl", "rr" from a channel name, or "" (chassis channels).
+std::string cornerOf(const std::string& channel) {
+  for (const char* c : {"fl", "fr", "rl", "rr"}) {
+    const std::string tag = std::string("_") + c + "_";
+    if (channel.find(tag) != std::string::npos) return c;
+  }
+  return "";
+}
+
+std::string unitOf(const std::string& channel) {
+  const auto u = channel.rfind('_');
+  return u == std::string::npos ? "" : channel.substr(u + 1);
+}
+
+/// Largest power of two <= n / 2, within [32, 512].
+int welchSegment(std::size_t n) {
+  int s = 32;
+  while (static_cast<std::size_t>(2 * s) <= n / 2 && s < 512) s *= 2;
+  return s;
+}
+
+}  // namespace
+
+std::string describeScenarioWindow(const ScenarioSpec& sc, const VehicleData& v, double t0, double t1) {
+  const double wb = v.wheelbase();
+  auto overlaps = [&](double a, double b) { return t0 <= b && t1 >= a; };
+  std::vector<std::string> parts;
+  if (sc.road.type == RoadSpec::Type::Bump) {
+    const double x0 = sc.speed.distance(sc.road.bump_time_s), L = sc.road.bump_length_m;
+    const double f0 = sc.speed.timeAtDistance(x0), f1 = sc.speed.timeAtDistance(x0 + L);
+    const double r0 = sc.speed.timeAtDistance(x0 + wb), r1 = sc.speed.timeAtDistance(x0 + wb + L);
+    const double fm = 0.5 * (f0 + f1), rm = 0.5 * (r0 + r1);
+    if (overlaps(f0, fm)) parts.push_back("front wheels climbing the bump");
+    if (overlaps(fm, f1)) parts.push_back("front wheels leaving the bump");
+    if (overlaps(f1, r0)) parts.push_back("after the front wheels' bump (wheel hop and body response)");
+    if (overlaps(r0, rm)) parts.push_back("rear wheels climbing the bump");
+    if (overlaps(rm, r1)) parts.push_back("rear wheels leaving the bump");
+    if (t1 > r1) parts.push_back("after the rear wheels' bump (free vibration)");
+    if (t0 < f0) parts.push_back("smooth road before the bump");
+  } else if (sc.road.type == RoadSpec::Type::Iso) {
+    const double ts = sc.road.smooth_until_s;
+    if (t0 < ts) parts.push_back("smooth road before the rough section");
+    if (t1 >= ts) parts.push_back("rough road (ISO 8608 class " + std::string(1, sc.road.iso_class) + ")");
+  } else if (sc.road.type == RoadSpec::Type::Csv) {
+    parts.push_back("measured road profile");
+  } else {
+    parts.push_back("flat road");
+  }
+  if (sc.speed.ramp_s > 0 && t0 < sc.speed.ramp_s) parts.push_back("accelerating");
+  std::string s;
+  for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? "; " : "") + parts[i];
+  return s;
+}
+
+std::vector<std::vector<double>> posteriorRows(const std::vector<std::string>& sample_names,
+                                               const std::vector<std::vector<double>>& rows,
+                                               const std::vector<std::string>& names, int count, const std::string& where) {
+  std::vector<int> col;
+  for (const auto& n : names) {
+    const auto it = std::find(sample_names.begin(), sample_names.end(), n);
+    if (it == sample_names.end()) throw InputError(where, "has no column '" + n + "' (the calibrated parameters differ)");
+    col.push_back(static_cast<int>(it - sample_names.begin()));
+  }
+  if (rows.empty()) throw InputError(where, "holds no posterior rows");
+  if (count < 1) throw InputError("draws", "must be >= 1");
+  const std::size_t m = std::min<std::size_t>(static_cast<std::size_t>(count), rows.size());
+  std::vector<std::vector<double>> out;
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t i = m == 1 ? rows.size() / 2 : k * (rows.size() - 1) / (m - 1);
+    std::vector<double> th;
+    for (int c : col) th.push_back(rows[i][static_cast<std::size_t>(c)]);
+    out.push_back(th);
+  }
+  return out;
+}
+
+Comparison compareModel(const calib::LabObjective& objective, const std::vector<calib::DataSet>& sets,
+                        const std::vector<std::vector<double>>& draws, const std::map<std::string, ChannelNoise>& noise,
+                        const CompareOptions& options) {
+  if (draws.empty()) throw InputError("compare", "needs at least one posterior draw");
+  Comparison out;
+  out.draws = static_cast<long>(draws.size());
+  std::vector<std::vector<double>> preds(draws.size());
+  parallelFor(draws.size(), options.threads, [&](std::size_t i, int) { preds[i] = objective.predict(draws[i]); });
+  std::vector<const std::vector<double>*> ok;
+  for (const auto& p : preds)
+    if (p.empty()) ++out.failures;
+    else ok.push_back(&p);
+  if (ok.empty()) throw std::runtime_error("compare: every simulation of the posterior draws failed");
+  if (out.failures > 0)
+    out.notes.push_back(std::to_string(out.failures) + " of " + std::to_string(draws.size()) +
+                        " posterior draws failed to simulate and were left out");
+  // The central run (states for the maps, road input for coherence): the draws' mean.
+  std::vector<double> centre(draws[0].size(), 0.0);
+  for (const auto& d : draws)
+    for (std::size_t k = 0; k < d.size(); ++k) centre[k] += d[k] / static_cast<double>(draws.size());
+  std::vector<Trace> traces = objective.traces(centre);
+  if (traces.empty()) traces = objective.traces(draws[0]);
+  if (traces.empty()) throw std::runtime_error("compare: the run at the posterior mean failed");
+  const auto scenarios = objective.scenarios();
+  const VehicleData& veh = objective.model().vehicle();
+  const double rate = [&] {
+    // Output rate of the traces (rows per second).
+    const auto& tc = traces[0].column("time_s");
+    return tc.size() > 1 ? 1.0 / (tc[1] - tc[0]) : 1000.0;
+  }();
+
+  struct Pooled {
+    std::vector<std::map<std::string, std::vector<double>>> states;  // unused
+    std::map<std::string, std::vector<double>> state;
+    std::vector<double> residual;
+  };
+  std::map<std::string, Pooled> pooled;
+  std::vector<std::string> channel_order;
+  long fitted_points = 0;
+
+  std::size_t offset = 0;
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    const auto& ds = sets[s];
+    const Trace& tr = traces[s];
+    for (const auto& ch : ds.data.channels()) {
+      SeriesComparison sc;
+      sc.data_set = ds.name;
+      sc.scenario = ds.scenario;
+      sc.channel = ch;
+      sc.unit = unitOf(ch);
+      const auto nit = noise.find(ch);
+      if (nit != noise.end()) {
+        sc.fitted = true;
+        sc.noise_variance = nit->second.variance;
+        sc.noise_source = nit->second.source;
+        sc.noise_dof = nit->second.dof;
+      } else {
+        sc.noise_source = "none (not fitted)";
+      }
+      std::map<double, std::vector<std::size_t>> by_time;
+      for (std::size_t k = 0; k < ds.data.records.size(); ++k)
+        if (ds.data.records[k].channel == ch) by_time[ds.data.records[k].time_s].push_back(offset + k);
+      double ss = 0, ss_sys = 0, ss_noise = 0, ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+      long n_rec = 0, covered = 0;
+      for (const auto& [t, idx] : by_time) {
+        double ym = 0.0;
+        for (auto i : idx) ym += objective.measured()[i];
+        ym /= static_cast<double>(idx.size());
+        double pm = 0.0, pv = 0.0;
+        for (const auto* p : ok) pm += (*p)[idx[0]];
+        pm /= static_cast<double>(ok.size());
+        for (const auto* p : ok) pv += ((*p)[idx[0]] - pm) * ((*p)[idx[0]] - pm);
+        pv = ok.size() > 1 ? pv / static_cast<double>(ok.size() - 1) : 0.0;
+        const double half = 1.959964 * std::sqrt(pv + sc.noise_variance);
+        sc.t.push_back(t);
+        sc.repetitions.push_back(static_cast<int>(idx.size()));
+        sc.measured_mean.push_back(ym);
+        sc.predicted_mean.push_back(pm);
+        sc.band_lo.push_back(pm - half);
+        sc.band_hi.push_back(pm + half);
+        const double zden = std::sqrt(sc.noise_variance / static_cast<double>(idx.size()) + pv);
+        sc.z.push_back(zden > 0 ? (ym - pm) / zden : std::numeric_limits<double>::quiet_NaN());
+        for (auto i : idx) {
+          const double e = objective.measured()[i] - pm;
+          ss += e * e;
+          ++n_rec;
+          if (std::abs(e) > sc.max_abs) {
+            sc.max_abs = std::abs(e);
+            sc.max_at_s = t;
+          }
+          if (std::abs(e) <= half) ++covered;
+        }
+        ss_sys += (ym - pm) * (ym - pm);
+        ss_noise += sc.noise_variance / static_cast<double>(idx.size());
+        ymin = std::min(ymin, ym);
+        ymax = std::max(ymax, ym);
+        if (sc.fitted) sc.lack_of_fit += static_cast<double>(idx.size()) * (ym - pm) * (ym - pm) / sc.noise_variance;
+        // Pool the residual against the model's states at this time (force-state maps).
+        const std::size_t row = static_cast<std::size_t>(std::llround(t * rate));
+        auto& pl = pooled[ch];
+        pl.residual.push_back(ym - pm);
+        std::string c = cornerOf(ch);
+        if (c.empty()) c = "fl";
+        const bool front = c[0] == 'f';
+        auto val = [&](const std::string& name) {
+          const auto& col = tr.column(name);
+          return row < col.size() ? col[row] : col.back();
+        };
+        pl.state["susp_defl_" + c + "_m"].push_back(val("susp_defl_" + c + "_m"));
+        pl.state["susp_rate_" + c + "_mps"].push_back(val("susp_rate_" + c + "_mps"));
+        pl.state["tire_defl_" + c + "_m"].push_back(val("tire_defl_" + c + "_m"));
+        pl.state["speed_mps"].push_back(val("speed_mps"));
+        const std::string l = front ? "fl" : "rl", r = front ? "fr" : "rr";
+        pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(
+            val("susp_defl_" + l + "_m") - val("susp_defl_" + r + "_m"));
+      }
+      if (std::find(channel_order.begin(), channel_order.end(), ch) == channel_order.end()) channel_order.push_back(ch);
+      const double nt = static_cast<double>(sc.t.size());
+      sc.rms = std::sqrt(ss / static_cast<double>(n_rec));
+      sc.nrmse = ymax > ymin ? sc.rms / (ymax - ymin) : 0.0;
+      sc.coverage = static_cast<double>(covered) / static_cast<double>(n_rec);
+      sc.systematic_rms = std::sqrt(std::max(0.0, (ss_sys - ss_noise) / nt));
+      if (sc.fitted) {
+        out.lack_of_fit += sc.lack_of_fit;
+        fitted_points += static_cast<long>(sc.t.size());
+      }
+      // In time: windows of large standardised residual, labelled.
+      if (sc.fitted) {
+        for (const auto& w : exceedanceWindows(sc.t, sc.z, options.window_threshold, options.window_merge_s,
+                                               options.window_min_s)) {
+          LabelledWindow lw;
+          lw.window = w;
+          lw.label = describeScenarioWindow(scenarios[s], veh, w.t_begin, w.t_end);
+          lw.speed_mps = scenarios[s].speed.speed(0.5 * (w.t_begin + w.t_end));
+          sc.windows.push_back(lw);
+        }
+      }
+      // In frequency: needs a uniform time base.
+      bool uniform = sc.t.size() >= 64;
+      const double dt = sc.t.size() > 1 ? sc.t[1] - sc.t[0] : 0.0;
+      for (std::size_t i = 1; uniform && i < sc.t.size(); ++i)
+        if (std::abs(sc.t[i] - sc.t[i - 1] - dt) > 1e-6 * dt) uniform = false;
+      if (!uniform) {
+        sc.bands_note = "no spectrum: fewer than 64 times or a non-uniform time base";
+      } else if (!sc.fitted) {
+        sc.bands_note = "no spectrum: no noise estimate for this channel";
+      } else {
+        std::vector<double> res(sc.t.size()), road(sc.t.size());
+        double rbar = 0.0;
+        std::string c = cornerOf(ch);
+        if (c.empty()) c = "fl";
+        const auto& rc = tr.column("road_" + c + "_m");
+        for (std::size_t i = 0; i < sc.t.size(); ++i) {
+          res[i] = sc.measured_mean[i] - sc.predicted_mean[i];
+          rbar += sc.repetitions[i];
+          const std::size_t row = static_cast<std::size_t>(std::llround(sc.t[i] * rate));
+          road[i] = row < rc.size() ? rc[row] : rc.back();
+        }
+        rbar /= static_cast<double>(sc.t.size());
+        sc.bands = bandAnalysis(res, 1.0 / dt, sc.noise_variance / rbar, &road, welchSegment(res.size()));
+      }
+      out.series.push_back(std::move(sc));
+    }
+    offset += ds.data.records.size();
+  }
+  // In state: pooled force-state maps per channel.
+  for (const auto& ch : channel_order) {
+    ChannelMaps cm;
+    cm.channel = ch;
+    const auto& pl = pooled[ch];
+    if (pl.residual.size() < 8) continue;
+    for (const auto& [name, values] : pl.state) {
+      StateMap m;
+      m.state = name;
+      m.bins = binByState(values, pl.residual, std::min<int>(options.state_bins, static_cast<int>(values.size() / 2)));
+      const bool rate_like = name.find("_rate_") != std::string::npos;
+      m.fits = rate_like ? fitRateSignatures(values, pl.residual) : fitDeflectionSignatures(values, pl.residual);
+      std::sort(m.fits.begin(), m.fits.end(),
+                [](const SignatureFit& a, const SignatureFit& b) { return a.explained_fraction > b.explained_fraction; });
+      cm.maps.push_back(std::move(m));
+    }
+    out.maps.push_back(std::move(cm));
+  }
+  out.lack_of_fit_dof = std::max<long>(1, fitted_points - options.fitted_parameters);
+  const double k = static_cast<double>(out.lack_of_fit_dof);
+  // σ_c² estimated from the repetitions with dof_c: X/k is F-like. Its denominator's effective
+  // dof: 1/d2 = Σ_c (k_c/K)² / dof_c (study [noise] variances are known: no contribution).
+  double inv_d2 = 0.0;
+  for (const auto& x : out.series)
+    if (x.fitted && x.noise_dof > 0) {
+      const double share = static_cast<double>(x.t.size()) / static_cast<double>(std::max<long>(1, fitted_points));
+      inv_d2 += share * share / static_cast<double>(x.noise_dof);
+    }
+  out.noise_dof_effective = inv_d2 > 0 ? 1.0 / inv_d2 : std::numeric_limits<double>::infinity();
+  out.lack_of_fit_z = fDeviate(out.lack_of_fit / k, k, out.noise_dof_effective);
+  out.lack_of_fit_p = 1.0 - normalCdf(out.lack_of_fit_z);
+  out.systematic_rms_sd = fitted_points > 0 ? std::sqrt(std::max(0.0, out.lack_of_fit - k) / static_cast<double>(fitted_points)) : 0.0;
+  return out;
+}
+
+nlohmann::json Comparison::toJson(bool with_series_data) const {
+  nlohmann::json j;
+  j["draws"] = draws;
+  j["failures"] = failures;
+  j["lack_of_fit"] = {{"chi2", lack_of_fit},
+                      {"dof", lack_of_fit_dof},
+                      {"z", lack_of_fit_z},
+                      {"p_value", lack_of_fit_p},
+                      {"noise_dof_effective", std::isfinite(noise_dof_effective) ? nlohmann::json(noise_dof_effective) : nlohmann::json("inf")},
+                      {"test", "F = X / (points - parameters), X = sum over times of R_t (mean_t - prediction_t)^2 / sigma_c^2, against "
+                               "F(points - parameters, noise dof) (Paulson's normal approximation; chi2 when sigma is known)"}};
+  j["systematic_rms_noise_sd"] = systematic_rms_sd;
+  j["notes"] = notes;
+  j["series"] = nlohmann::json::array();
+  for (const auto& s : series) {
+    nlohmann::json e{{"data_set", s.data_set}, {"scenario", s.scenario}, {"channel", s.channel}, {"unit", s.unit},
+                     {"fitted", s.fitted}, {"noise_variance", s.noise_variance}, {"noise_source", s.noise_source},
+                     {"points", s.t.size()}, {"rms", s.rms}, {"nrmse", s.nrmse}, {"max_abs_error", s.max_abs},
+                     {"max_error_at_s", s.max_at_s}, {"coverage95", s.coverage}, {"systematic_rms", s.systematic_rms},
+                     {"lack_of_fit_chi2", s.lack_of_fit}};
+    e["windows"] = nlohmann::json::array();
+    for (const auto& w : s.windows)
+      e["windows"].push_back({{"t_begin_s", w.window.t_begin}, {"t_end_s", w.window.t_end}, {"peak_z", w.window.peak_z},
+                              {"share_of_chi2", w.window.share}, {"label", w.label}, {"speed_mps", w.speed_mps}});
+    e["bands"] = nlohmann::json::array();
+    for (const auto& b : s.bands)
+      e["bands"].push_back({{"band", b.band}, {"lo_hz", b.lo_hz}, {"hi_hz", b.hi_hz}, {"residual_power", b.residual_power},
+                            {"noise_power", b.noise_power}, {"ratio", b.ratio}, {"coherence_with_road", b.coherence},
+                            {"significant", b.significant}});
+    if (!s.bands_note.empty()) e["bands_note"] = s.bands_note;
+    if (with_series_data) {
+      e["t"] = s.t;
+      e["measured_mean"] = s.measured_mean;
+      e["predicted_mean"] = s.predicted_mean;
+      e["band_lo"] = s.band_lo;
+      e["band_hi"] = s.band_hi;
+    }
+    j["series"].push_back(e);
+  }
+  j["state_maps"] = nlohmann::json::array();
+  for (const auto& cm : maps) {
+    nlohmann::json c{{"channel", cm.channel}, {"maps", nlohmann::json::array()}};
+    for (const auto& m : cm.maps) {
+      nlohmann::json mm{{"state", m.state}, {"bins", nlohmann::json::array()}, {"fits", nlohmann::json::array()}};
+      for (const auto& b : m.bins)
+        mm["bins"].push_back({{"lo", b.lo}, {"hi", b.hi}, {"centre", b.centre}, {"mean_residual", b.mean}, {"se", b.se},
+                              {"count", b.count}});
+      for (const auto& f : m.fits) {
+        nlohmann::json fj{{"feature", f.feature}, {"coefficient", f.coefficient}, {"explained_fraction", f.explained_fraction}};
+        if (f.feature == "knee") fj["knee_at"] = f.knee_at;
+        mm["fits"].push_back(fj);
+      }
+      c["maps"].push_back(mm);
+    }
+    j["state_maps"].push_back(c);
+  }
+  return j;
+}
+
+std::string comparisonTable(const Comparison& c) {
+  std::string s;
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%-28s %-12s %-20s %10s %8s %10s %9s %10s\n", "data set", "scenario", "channel", "RMS", "NRMSE",
+                "max |err|", "coverage", "syst. RMS");
+  s += buf;
+  for (const auto& x : c.series) {
+    std::string name = x.data_set;
+    if (name.size() > 28) name = "…" + name.substr(name.size() - 27);
+    std::snprintf(buf, sizeof buf, "%-28s %-12s %-20s %10.4g %8.4f %10.4g %8.1f%% %10.4g\n", name.c_str(), x.scenario.c_str(),
+                  x.channel.c_str(), x.rms, x.nrmse, x.max_abs, 100.0 * x.coverage, x.systematic_rms);
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, "lack of fit: chi2 = %.1f on %ld dof (z = %.1f, p = %.2g); systematic residual %.3f noise sd\n",
+                c.lack_of_fit, c.lack_of_fit_dof, c.lack_of_fit_z, c.lack_of_fit_p, c.systematic_rms_sd);
+  s += buf;
+  return s;
+}
+
+}  // namespace dtwin::diag

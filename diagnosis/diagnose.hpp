@@ -1,0 +1,117 @@
+#pragma once
+// `twin diagnose` (docs/diagnosis.md): which physical effect of the catalogue (subsystems/
+// effect.hpp) the assembly is missing, given measurements.
+//
+//  1. Calibrate the base assembly on the measurements (calib::calibrateAssembly, channels
+//     weighted by 1/σ_c², σ_c² from the repetitions), compare it (compareModel).
+//  2. Screen every effect cheaply: at the base optimum θ̂, the effect's contribution g at a few
+//     probe values of its parameters, with the span of ∂η/∂θ projected out (what re-calibrating θ
+//     could absorb), gives the score S = rᵀ P_{g⊥} r of the standardised residual r — χ² with
+//     rank(g⊥) degrees of freedom when the effect is absent. Gate: an effect whose largest
+//     plausible contribution is invisible in these data (e.g. the travel never reaches a
+//     plausible bump-stop gap) is not a candidate.
+//  3. Confirm the best candidates by re-calibrating with the effect's parameters added (the
+//     same machinery; bounds = the effect's prior range) and compare evidence by BIC:
+//     BIC = SSE_w,min + k ln n (σ known: −2 ln L = SSE_w + const), log evidence ≈ −BIC/2.
+//  4. Verdict: "effect" (a confirmed effect with ΔBIC < −10 that leaves no significant lack of
+//     fit, or explains most of the excess), "none" (no lack of fit and no candidate), or
+//     "unexplained" (significant residual that no catalogue effect explains), with ambiguity
+//     stated when two effects' evidence is within a factor e^3.
+//  5. --apply: effects added in turn, each re-calibrated; the before/after table and waterfall.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "calibration/calibrate.hpp"
+#include "diagnosis/compare.hpp"
+#include "diagnosis/measurements.hpp"
+
+namespace dtwin::diag {
+
+struct DiagnoseOptions {
+  calib::CalibrationOptions calibration;  ///< sizes of every calibration (base, candidates, applied)
+  int candidates = 3;                ///< at most this many screened effects are confirmed
+  double screen_alpha = 0.01;        ///< family-wise level of the screening (Bonferroni over every probe)
+  double bic_strong = 10.0;          ///< ΔBIC below −bic_strong names an effect (Kass & Raftery 1995: strong)
+  double ambiguity_log_evidence = 3.0;  ///< two effects closer than this in log evidence: ambiguous
+  double explained_min = 0.8;        ///< share of the excess residual a named effect must explain when a lack of fit remains
+  double lack_of_fit_alpha = 1e-3;   ///< level of the lack-of-fit test
+  int compare_draws = 20;            ///< posterior rows per comparison
+  std::vector<std::string> effects;  ///< the catalogue to rank (empty: every effect not already installed)
+  std::vector<std::string> apply;    ///< --apply: effects added in turn
+  int threads = 0;
+  std::string command;
+};
+
+/// Progress: stage text, done, total.
+using DiagnoseProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+
+struct EffectParameter {
+  std::string name, unit;
+  double mean = 0, sd = 0, q025 = 0, q975 = 0, optimum = 0;
+};
+
+/// Error figures of one calibrated model (a row of the before/after table).
+struct Figures {
+  std::string label;                  ///< "base", "+ bump_stop", ...
+  std::vector<std::string> effects;   ///< effects installed and calibrated
+  double sse_min = 0, bic = 0, log_evidence = 0;
+  int parameters = 0;
+  Comparison comparison;
+  std::optional<Comparison> holdout;  ///< on the held-out data, when given
+  std::string folder;                 ///< the calibration's folder
+  std::vector<EffectParameter> effect_parameters;
+  nlohmann::json toJson() const;
+};
+
+struct Candidate {
+  std::string effect, signature;
+  std::string gate;          ///< empty: passed the gate; else why it cannot matter here
+  double score = 0;          ///< max over probes of rᵀ P r
+  int score_dof = 1;
+  double p_value = 1.0;      ///< Bonferroni-adjusted over every probe of every effect
+  double max_signal = 0;     ///< largest ‖g⊥‖² over the probes (noise units)
+  /// The screening's estimate of the effect's parameters (best probe, linearised amplitude):
+  /// an extra optimiser start of the confirmation.
+  std::vector<double> screening_estimate;
+  /// ... and of the base parameters with it: θ̂ + J⁺ (r − G c) (the joint linearised fit).
+  std::vector<double> screening_theta;
+  bool confirmed = false;
+  std::optional<Figures> fit;  ///< the re-calibration with the effect (confirmed candidates)
+  double delta_bic = 0;      ///< BIC(with effect) − BIC(base)
+  double explained = 0;      ///< share of the base's excess residual (χ² − dof) it removes
+  std::optional<double> holdout_change;  ///< held-out systematic RMS after / before
+  std::string why;           ///< one plain sentence
+};
+
+struct DiagnosisResult {
+  std::string assembly, verdict;  ///< verdict: "effect" | "none" | "unexplained"
+  std::string summary;            ///< plain sentences
+  std::string named_effect;       ///< when verdict == "effect"
+  std::vector<std::string> ambiguous_with;
+  std::string unexplained_location;
+  Figures base;
+  std::vector<Candidate> candidates;  ///< every effect: confirmed ones first (by evidence), then by score, gated last
+  std::vector<Figures> steps;         ///< --apply: base, + e1, + e1 + e2, ...
+  std::vector<std::string> fitted_channels, left_out_channels;
+  nlohmann::json toJson() const;
+  /// The report printed by the CLI.
+  std::string text() const;
+};
+
+/// Runs the diagnosis of `assembly` on `fit` (and, when not empty, the held-out data `holdout`),
+/// persisting every calibration under out_dir/calibrations/<effects> (resumable: a rerun reuses
+/// them). Throws InputError for bad input (no channel with a noise estimate, unknown effect in
+/// options.effects or options.apply, an effect already installed).
+DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const std::vector<calib::DataSet>& fit,
+                         const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options,
+                         const std::string& out_dir, const DiagnoseProgress& progress = {});
+
+/// The calibration setup of `effects` (each installed, its non-shape parameters calibrated over
+/// its prior range) with the channel weights.
+calib::CalibrationSetup effectSetup(const std::vector<std::string>& effects, const std::map<std::string, double>& weights);
+
+}  // namespace dtwin::diag

@@ -1,0 +1,641 @@
+#include "diagnosis/diagnosis_report.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "classification/report.hpp"
+#include "classification/svg_plot.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/provenance.hpp"
+#include "twin/trace.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using dtwin::classify::GnuplotSvg;
+using dtwin::classify::htmlEscape;
+
+namespace dtwin::diag {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string gq(const std::string& s) { return classify::gnuplotQuote(s); }
+std::string full(double v) { return classify::plotNumber(v); }
+
+std::string num(double v, int digits = 4) {
+  if (!std::isfinite(v)) return "–";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+/// j[key], or null when j is not an object or has no such key.
+const json& at(const json& j, const char* key) {
+  static const json null;
+  if (!j.is_object()) return null;
+  const auto it = j.find(key);
+  return it == j.end() ? null : *it;
+}
+
+/// A number (null, as nlohmann writes NaN, and anything else: NaN).
+double dbl(const json& j) { return j.is_number() ? j.get<double>() : kNaN; }
+
+std::string str(const json& j) { return j.is_string() ? j.get<std::string>() : std::string(); }
+
+/// A JSON value as short text (strings without quotes, arrays joined with ", ").
+std::string text(const json& j) {
+  if (j.is_null()) return "–";
+  if (j.is_string()) return j.get<std::string>();
+  if (j.is_number()) return num(j.get<double>());
+  if (j.is_boolean()) return j.get<bool>() ? "yes" : "no";
+  if (j.is_array()) {
+    std::string s;
+    for (const auto& e : j) s += (s.empty() ? "" : ", ") + text(e);
+    return s.empty() ? "–" : s;
+  }
+  return j.dump();
+}
+
+json readJson(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw InputError(p.string(), "cannot be read (is this a folder written by `twin diagnose --out`?)");
+  std::ostringstream s;
+  s << in.rdbuf();
+  try {
+    return json::parse(s.str());
+  } catch (const std::exception& e) {
+    throw InputError(p.string(), std::string("is not valid JSON: ") + e.what());
+  }
+}
+
+struct Band {
+  std::string name;
+  double ratio;
+};
+
+struct Series {
+  std::string data_set, scenario, channel, unit;
+  double rms, nrmse, coverage, systematic_rms;
+  std::vector<double> t, measured, predicted, lo, hi;
+  std::vector<Band> bands;
+  std::string key() const { return data_set + "\n" + scenario + "\n" + channel; }
+  std::string name() const { return scenario + " " + channel + " (" + fs::path(data_set).filename().string() + ")"; }
+};
+
+struct MapBin {
+  double centre, mean, se;
+};
+
+struct StateMap {
+  std::string channel, state, feature;
+  double explained = kNaN, knee_at = kNaN;
+  std::vector<MapBin> bins;
+};
+
+struct Comparison {
+  std::string file;
+  std::vector<Series> series;
+  std::vector<StateMap> maps;
+  const Series* find(const std::string& key) const {
+    for (const auto& s : series)
+      if (s.key() == key) return &s;
+    return nullptr;
+  }
+  const StateMap* findMap(const std::string& channel, const std::string& state) const {
+    for (const auto& m : maps)
+      if (m.channel == channel && m.state == state) return &m;
+    return nullptr;
+  }
+};
+
+std::vector<double> numbers(const json& j, const char* what) {
+  if (!j.is_array()) throw InputError("", std::string("field ") + what + " must be an array of numbers");
+  std::vector<double> v;
+  v.reserve(j.size());
+  for (const auto& e : j) v.push_back(dbl(e));
+  return v;
+}
+
+/// Reads a full comparison (diagnosis/compare.hpp Comparison::toJson(true)).
+Comparison readComparison(const fs::path& p) {
+  const json j = readJson(p);
+  Comparison c;
+  c.file = p.string();
+  try {
+    if (!j.is_object() || !at(j, "series").is_array()) throw InputError("", "has no array `series`");
+    for (const auto& e : j["series"]) {
+      Series s;
+      s.data_set = str(at(e, "data_set"));
+      s.scenario = str(at(e, "scenario"));
+      s.channel = str(at(e, "channel"));
+      s.unit = str(at(e, "unit"));
+      if (s.channel.empty()) throw InputError("", "a series has no `channel`");
+      s.rms = dbl(at(e, "rms"));
+      s.nrmse = dbl(at(e, "nrmse"));
+      s.coverage = dbl(at(e, "coverage95"));
+      s.systematic_rms = dbl(at(e, "systematic_rms"));
+      s.t = numbers(at(e, "t"), "t");
+      s.measured = numbers(at(e, "measured_mean"), "measured_mean");
+      s.predicted = numbers(at(e, "predicted_mean"), "predicted_mean");
+      s.lo = numbers(at(e, "band_lo"), "band_lo");
+      s.hi = numbers(at(e, "band_hi"), "band_hi");
+      const std::size_t n = s.t.size();
+      if (n == 0 || s.measured.size() != n || s.predicted.size() != n || s.lo.size() != n || s.hi.size() != n)
+        throw InputError("", "series " + s.channel + ": t, measured_mean, predicted_mean, band_lo and band_hi must be non-empty "
+                                                     "arrays of one length");
+      for (const auto& b : at(e, "bands")) s.bands.push_back({str(at(b, "band")), dbl(at(b, "ratio"))});
+      c.series.push_back(std::move(s));
+    }
+    for (const auto& cm : at(j, "state_maps")) {
+      for (const auto& m : at(cm, "maps")) {
+        StateMap sm;
+        sm.channel = str(at(cm, "channel"));
+        sm.state = str(at(m, "state"));
+        for (const auto& b : at(m, "bins")) sm.bins.push_back({dbl(at(b, "centre")), dbl(at(b, "mean_residual")), dbl(at(b, "se"))});
+        for (const auto& f : at(m, "fits")) {
+          const double e = dbl(at(f, "explained_fraction"));
+          if (std::isfinite(e) && (!std::isfinite(sm.explained) || e > sm.explained)) {
+            sm.explained = e;
+            sm.feature = str(at(f, "feature"));
+            sm.knee_at = dbl(at(f, "knee_at"));
+          }
+        }
+        c.maps.push_back(std::move(sm));
+      }
+    }
+  } catch (const InputError& e) {
+    throw InputError(p.string(), e.rule());
+  } catch (const std::exception& e) {
+    throw InputError(p.string(), std::string("is malformed: ") + e.what());
+  }
+  return c;
+}
+
+std::string joinEffects(const json& effects) {
+  std::string s;
+  for (const auto& e : effects) s += (s.empty() ? "" : "+") + str(e);
+  return s.empty() ? "base" : s;
+}
+
+std::string stepLabel(const json& step, std::size_t k) {
+  return k == 0 ? std::string("base") : "+ " + joinEffects(at(step, "effects"));
+}
+
+/// "name = mean ± sd unit [lo, hi]" per parameter of a {name: {unit, mean, sd, ci95, optimum}} object.
+std::string paramsHtml(const json& params) {
+  std::string s;
+  if (!params.is_object()) return "–";
+  for (auto it = params.begin(); it != params.end(); ++it) {
+    const json& p = it.value();
+    const json& ci = at(p, "ci95");
+    s += (s.empty() ? "" : "<br>") + htmlEscape(it.key() + " = " + num(dbl(at(p, "mean"))) + " ± " + num(dbl(at(p, "sd")), 2) + " " +
+                                                str(at(p, "unit")));
+    if (ci.is_array() && ci.size() == 2) s += htmlEscape(" [" + num(dbl(ci[0])) + ", " + num(dbl(ci[1])) + "]");
+  }
+  return s.empty() ? "–" : s;
+}
+
+double meanCoverage(const json& figures) {
+  double sum = 0.0;
+  int n = 0;
+  for (const auto& s : at(figures, "series"))
+    if (std::isfinite(dbl(at(s, "coverage95")))) {
+      sum += dbl(at(s, "coverage95"));
+      ++n;
+    }
+  return n ? sum / n : kNaN;
+}
+
+std::string pct(double v) { return std::isfinite(v) ? num(100.0 * v, 3) + " %" : "–"; }
+
+}  // namespace
+
+std::string diagnosisSectionHtml(const std::string& diag_dir, const DiagnosisSectionOptions& options, json* drawn) {
+  const std::string gnuplot_exe = classify::requireGnuplot("the diagnosis report");
+  const fs::path dir(diag_dir);
+  if (!fs::is_directory(dir)) throw InputError(diag_dir, "is not a folder (give one written by `twin diagnose --out`)");
+  const fs::path diag_file = dir / "diagnosis.json";
+  const json d = readJson(diag_file);
+  if (!d.is_object() || !at(d, "verdict").is_string() || !at(d, "base").is_object())
+    throw InputError(diag_file.string(), "is not a diagnosis (needs a string `verdict` and an object `base`)");
+  for (const char* k : {"ranked", "screening", "steps"})
+    if (!at(d, k).is_null() && !at(d, k).is_array()) throw InputError(diag_file.string(), std::string("field `") + k + "` must be an array");
+  const std::string verdict = str(at(d, "verdict")), effect = str(at(d, "effect")), assembly = str(at(d, "assembly"));
+  const json& steps = at(d, "steps");
+  const bool has_steps = steps.is_array() && !steps.empty();
+
+  // ---- before / after comparisons
+  const Comparison base = readComparison(dir / "comparisons" / "base.json");
+  std::string after_name, after_label;
+  if (!effect.empty()) {
+    after_name = effect;
+    after_label = "with " + effect;
+  } else if (has_steps && steps.size() > 1) {
+    after_name = joinEffects(at(steps[1], "effects"));
+    after_label = "with " + after_name + " (applied)";
+  }
+  Comparison after;
+  const bool has_after = !after_name.empty();
+  if (has_after) after = readComparison(dir / "comparisons" / (after_name + ".json"));
+
+  GnuplotSvg gp(gnuplot_exe, options.id_prefix);
+  json plots = json::array();
+  std::vector<std::string> warnings;
+  std::ostringstream b;
+  const std::string& A = options.anchor;
+  auto figure = [&](const std::string& svg, const std::string& caption) {
+    b << "<figure>\n" << svg << "\n<figcaption>" << caption << "</figcaption>\n</figure>\n";
+  };
+
+  // ---- verdict
+  b << "<section id=\"" << htmlEscape(A) << "\">\n<h2>" << htmlEscape(options.heading_prefix) << "Diagnosis"
+    << (assembly.empty() ? "" : " of " + htmlEscape(assembly)) << ": <code>" << htmlEscape(diag_dir) << "</code></h2>\n";
+  b << "<p class=\"" << (verdict == "unexplained" ? "warn" : "rec") << "\">Verdict: " << htmlEscape(verdict);
+  if (!effect.empty()) b << " — " << htmlEscape(effect);
+  b << "</p>\n";
+  const json& summary = at(d, "summary");
+  if (summary.is_string()) b << "<p>" << htmlEscape(summary.get<std::string>()) << "</p>\n";
+  else if (summary.is_array())
+    for (const auto& s : summary) b << "<p>" << htmlEscape(text(s)) << "</p>\n";
+  if (at(d, "ambiguous_with").is_array() && !at(d, "ambiguous_with").empty())
+    b << "<p>Ambiguous with: " << htmlEscape(text(at(d, "ambiguous_with"))) << ".</p>\n";
+  const std::string location = text(at(d, "unexplained_location"));
+  if (!at(d, "unexplained_location").is_null() && text(summary).find(location) == std::string::npos)
+    b << "<p>Unexplained residual: " << htmlEscape(text(at(d, "unexplained_location"))) << ".</p>\n";
+  const json& bf = at(d, "base");
+  b << "<p>Base model (" << htmlEscape(str(at(bf, "label"))) << "): systematic RMS " << num(dbl(at(bf, "systematic_rms_noise_sd")), 3)
+    << " noise sd, lack of fit z = " << num(dbl(at(bf, "lack_of_fit_z")), 3) << " (p = " << num(dbl(at(bf, "lack_of_fit_p")), 3)
+    << "), log evidence " << num(dbl(at(bf, "log_evidence")), 6) << ".</p>\n";
+
+  // ---- ranked and screening tables
+  b << "<h3 id=\"" << htmlEscape(A) << "-ranked\">Confirmed effects (ranked)</h3>\n";
+  const json& ranked = at(d, "ranked");
+  if (!ranked.is_array() || ranked.empty()) {
+    b << "<p>No effect was confirmed by re-calibration.</p>\n";
+  } else {
+    b << "<table>\n<tr><th>#</th><th>effect</th><th>ΔBIC</th><th>log evidence vs base</th><th>explained</th>"
+         "<th>parameter posterior: mean ± sd [95 %]</th></tr>\n";
+    int k = 0;
+    for (const auto& r : ranked)
+      b << "<tr><td class=\"n\">" << ++k << "</td><td>" << htmlEscape(str(at(r, "effect"))) << "</td><td class=\"n\">"
+        << num(dbl(at(r, "delta_bic")), 5) << "</td><td class=\"n\">" << num(dbl(at(r, "log_evidence_vs_base")), 5)
+        << "</td><td class=\"n\">" << pct(dbl(at(r, "explained_fraction"))) << "</td><td>" << paramsHtml(at(r, "parameters"))
+        << "</td></tr>\n";
+    b << "</table>\n";
+  }
+  b << "<h3 id=\"" << htmlEscape(A) << "-screening\">Screening of every effect</h3>\n";
+  const json& screening = at(d, "screening");
+  if (!screening.is_array() || screening.empty()) {
+    b << "<p>No effect was screened.</p>\n";
+  } else {
+    b << "<table>\n<tr><th>effect</th><th>score (dof)</th><th>p</th><th>gate</th><th>confirmed</th><th>why</th></tr>\n";
+    for (const auto& s : screening)
+      b << "<tr><td>" << htmlEscape(str(at(s, "effect"))) << "</td><td class=\"n\">" << num(dbl(at(s, "score")), 4) << " ("
+        << htmlEscape(text(at(s, "score_dof"))) << ")</td><td class=\"n\">" << num(dbl(at(s, "p_value")), 3) << "</td><td>"
+        << htmlEscape(text(at(s, "gate"))) << "</td><td>" << htmlEscape(text(at(s, "confirmed"))) << "</td><td>"
+        << htmlEscape(text(at(s, "why"))) << "</td></tr>\n";
+    b << "</table>\n";
+  }
+
+  // ---- per series overlays
+  b << "<h3 id=\"" << htmlEscape(A) << "-series\">Measured against predicted</h3>\n<p>Per series: the measured mean over "
+       "the repetitions (points), the base model's predicted mean (line) and 95 % band"
+    << (has_after ? ", and the same " + htmlEscape(after_label) + " (<code>comparisons/" + htmlEscape(after_name) + ".json</code>)"
+                  : "")
+    << ". Lower panel: measured − predicted, with the base band around the base prediction.</p>\n";
+  for (const auto& s : base.series) {
+    const Series* a = has_after ? after.find(s.key()) : nullptr;
+    std::ostringstream db, da;
+    for (std::size_t i = 0; i < s.t.size(); ++i)
+      if (std::isfinite(s.t[i]) && std::isfinite(s.measured[i]) && std::isfinite(s.predicted[i]) && std::isfinite(s.lo[i]) &&
+          std::isfinite(s.hi[i]))
+        db << full(s.t[i]) << ' ' << full(s.measured[i]) << ' ' << full(s.predicted[i]) << ' ' << full(s.lo[i]) << ' '
+           << full(s.hi[i]) << '\n';
+    if (a)
+      for (std::size_t i = 0; i < a->t.size(); ++i)
+        if (std::isfinite(a->t[i]) && std::isfinite(a->measured[i]) && std::isfinite(a->predicted[i]) && std::isfinite(a->lo[i]) &&
+            std::isfinite(a->hi[i]))
+          da << full(a->t[i]) << ' ' << full(a->measured[i]) << ' ' << full(a->predicted[i]) << ' ' << full(a->lo[i]) << ' '
+             << full(a->hi[i]) << '\n';
+    if (db.str().empty()) {
+      warnings.push_back(s.name() + ": no finite points; no plot");
+      continue;
+    }
+    if (has_after && !a) warnings.push_back(s.name() + ": not in " + after.file);
+    const bool with_after = a && !da.str().empty();
+    const std::string fb = gp.data(db.str()), fa = with_after ? gp.data(da.str()) : "";
+    const std::string ylab = s.channel + (s.unit.empty() ? "" : " [" + s.unit + "]");
+    const std::string title = s.name();
+    std::ostringstream p;
+    p << "set multiplot layout 2,1 title " << gq(title) << " noenhanced\n"
+      << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(ylab) << " noenhanced\n"
+      << "set style fill transparent solid 0.25 noborder\n"
+      << "plot " << fb << " using 1:4:5 with filledcurves lc rgb '#7fa7d8' title 'base 95 %', ";
+    if (with_after) p << fa << " using 1:4:5 with filledcurves lc rgb '#7fd08f' title " << gq(after_label + " 95 %") << " noenhanced, ";
+    p << fb << " using 1:3 with lines lw 1.5 lc rgb '#103070' title 'base predicted', ";
+    if (with_after) p << fa << " using 1:3 with lines lw 1.5 lc rgb '#1a7a2a' title " << gq(after_label + " predicted") << " noenhanced, ";
+    p << fb << " using 1:2 with points pt 7 ps 0.35 lc rgb '#c03020' title 'measured mean'\n"
+      << "set ylabel " << gq("measured − predicted" + (s.unit.empty() ? "" : " [" + s.unit + "]")) << " noenhanced\n"
+      << "plot " << fb << " using 1:($4-$3):($5-$3) with filledcurves lc rgb '#7fa7d8' title 'base 95 % band', "
+      << fb << " using 1:($2-$3) with lines lc rgb '#103070' title 'base residual'";
+    if (with_after) p << ", " << fa << " using 1:($2-$3) with lines lc rgb '#1a7a2a' title " << gq(after_label + " residual") << " noenhanced";
+    p << "\n";
+    figure(gp.plot(p.str(), 900, 600, title),
+           htmlEscape(s.name() + ": base RMS " + num(s.rms) + " " + s.unit + ", NRMSE " + num(s.nrmse, 3) + ", coverage " +
+                      pct(s.coverage) +
+                      (a ? "; " + after_label + ": RMS " + num(a->rms) + " " + s.unit + ", NRMSE " + num(a->nrmse, 3) + ", coverage " +
+                               pct(a->coverage)
+                         : "") +
+                      "."));
+    plots.push_back({{"name", "series_" + s.scenario + "_" + s.channel}, {"kind", "series"}, {"channel", s.channel},
+                     {"scenario", s.scenario}, {"data_set", s.data_set}});
+  }
+
+  // ---- band-power ratios
+  b << "<h3 id=\"" << htmlEscape(A) << "-bands\">Residual band power</h3>\n";
+  {
+    std::vector<const Series*> with_bands;
+    for (const auto& s : base.series)
+      if (!s.bands.empty()) with_bands.push_back(&s);
+    if (with_bands.empty()) {
+      b << "<p>No series has band powers (too short for the Welch estimate).</p>\n";
+    } else {
+      double lo = 1.0, hi = 1.0;
+      auto seen = [&](double r) {
+        if (std::isfinite(r) && r > 0) {
+          lo = std::min(lo, r);
+          hi = std::max(hi, r);
+        }
+      };
+      for (const Series* s : with_bands) {
+        for (const auto& band : s->bands) seen(band.ratio);
+        if (const Series* a = has_after ? after.find(s->key()) : nullptr)
+          for (const auto& band : a->bands) seen(band.ratio);
+      }
+      const double ymin = lo / 3.0, ymax = hi * 3.0;
+      const int n = static_cast<int>(with_bands.size()), cols = n > 1 ? 2 : 1, rows = (n + cols - 1) / cols;
+      std::ostringstream p;
+      p << "set multiplot layout " << rows << "," << cols << " title " << gq("residual power / noise power per band") << "\n"
+        << "set logscale y\nset yrange [" << full(ymin) << ":" << full(ymax) << "]\nset grid ytics\n"
+        << "set style fill solid 0.7 border -1\nset ylabel 'ratio'\nset key top left\n";
+      for (const Series* s : with_bands) {
+        const Series* a = has_after ? after.find(s->key()) : nullptr;
+        std::ostringstream fb_, fa_, xt;
+        for (std::size_t i = 0; i < s->bands.size(); ++i) {
+          xt << (i ? ", " : "") << gq(s->bands[i].name) << " " << i + 1;
+          if (std::isfinite(s->bands[i].ratio) && s->bands[i].ratio > 0)
+            fb_ << i + 1 << ' ' << full(s->bands[i].ratio) << '\n';
+          if (a)
+            for (const auto& band : a->bands)
+              if (band.name == s->bands[i].name && std::isfinite(band.ratio) && band.ratio > 0) fa_ << i + 1 << ' ' << full(band.ratio) << '\n';
+        }
+        p << "set title " << gq(s->name()) << " noenhanced\nset xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:"
+          << s->bands.size() + 0.6 << "]\nplot ";
+        if (!fb_.str().empty())
+          p << gp.data(fb_.str()) << " using 1:2:($1-0.38):($1-0.02):(" << full(ymin)
+            << "):2 with boxxyerror lc rgb '#4a7fc0' title 'base', ";
+        if (!fa_.str().empty())
+          p << gp.data(fa_.str()) << " using 1:2:($1+0.02):($1+0.38):(" << full(ymin) << "):2 with boxxyerror lc rgb '#2a9a3a' title "
+            << gq(after_label) << " noenhanced, ";
+        p << "1 with lines dt 2 lw 1.5 lc rgb '#333333' title 'noise floor'\n";
+      }
+      figure(gp.plot(p.str(), 900, 260 * rows, "residual band power"),
+             "Per series and frequency band, the power of the residual (measured − predicted mean) divided by the power the "
+             "measurement noise alone would leave there (log scale; 1 = the noise floor, dashed), base" +
+                 (has_after ? " and " + htmlEscape(after_label) : std::string()) + ".");
+      plots.push_back({{"name", "band_power"}, {"kind", "band_power"}, {"panels", n}});
+    }
+  }
+
+  // ---- force–state map
+  b << "<h3 id=\"" << htmlEscape(A) << "-map\">Force–state map</h3>\n";
+  {
+    const StateMap* best = nullptr;
+    for (const auto& m : base.maps)
+      if (std::isfinite(m.explained) && !m.bins.empty() && (!best || m.explained > best->explained)) best = &m;
+    if (!best) {
+      b << "<p>The base comparison has no force–state map with a fitted signature.</p>\n";
+    } else {
+      const StateMap* am = has_after ? after.findMap(best->channel, best->state) : nullptr;
+      std::string unit;
+      for (const auto& s : base.series)
+        if (s.channel == best->channel) unit = s.unit;
+      auto binData = [&](const StateMap& m) {
+        std::ostringstream o;
+        for (const auto& bin : m.bins)
+          if (std::isfinite(bin.centre) && std::isfinite(bin.mean))
+            o << full(bin.centre) << ' ' << full(bin.mean) << ' ' << full(std::isfinite(bin.se) ? 2 * bin.se : 0.0) << '\n';
+        return o.str();
+      };
+      const std::string title = best->channel + " residual against " + best->state;
+      std::ostringstream p;
+      p << "set title " << gq(title + " (best base signature: " + best->feature + ", explains " + pct(best->explained) + ")")
+        << " noenhanced\nset grid\nset key below horizontal\nset xlabel " << gq(best->state) << " noenhanced\nset ylabel "
+        << gq("mean residual" + (unit.empty() ? "" : " [" + unit + "]")) << " noenhanced\nset xzeroaxis lt -1\n";
+      if (best->feature == "knee" && std::isfinite(best->knee_at))
+        p << "set arrow from " << full(best->knee_at) << ", graph 0 to " << full(best->knee_at)
+          << ", graph 1 nohead dt 2 lc rgb '#c03020'\nset label " << gq("knee " + num(best->knee_at)) << " at " << full(best->knee_at)
+          << ", graph 0.95 offset 0.5,0 tc rgb '#c03020'\n";
+      const std::string bd = binData(*best), ad = am ? binData(*am) : "";
+      const std::string fb = gp.data(bd);
+      p << "plot " << fb << " using 1:2:3 with yerrorbars pt 7 ps 0.6 lc rgb '#103070' title 'base ± 2 se', " << fb
+        << " using 1:2 with lines lc rgb '#103070' notitle";
+      if (!ad.empty()) {
+        const std::string fa = gp.data(ad);
+        p << ", " << fa << " using 1:2:3 with yerrorbars pt 5 ps 0.6 lc rgb '#1a7a2a' title " << gq(after_label + " ± 2 se")
+          << " noenhanced, " << fa << " using 1:2 with lines lc rgb '#1a7a2a' notitle";
+      }
+      p << "\n";
+      figure(gp.plot(p.str(), 900, 450, title),
+             "The residual of " + htmlEscape(best->channel) + " averaged in equal-count bins of " + htmlEscape(best->state) +
+                 " (± 2 standard errors): the map of the base comparison whose best signature explains the largest fraction (" +
+                 htmlEscape(best->feature) + ", " + pct(best->explained) + ")" +
+                 (am ? ", and the same map " + htmlEscape(after_label) : std::string()) + ".");
+      plots.push_back({{"name", "state_map"}, {"kind", "state_map"}, {"channel", best->channel}, {"state", best->state},
+                       {"feature", best->feature}, {"explained_fraction", best->explained}});
+    }
+  }
+
+  // ---- steps: before/after tables and waterfall
+  if (has_steps) {
+    b << "<h3 id=\"" << htmlEscape(A) << "-steps\">Before and after (effects added in turn)</h3>\n<table>\n"
+         "<tr><th>model</th><th>systematic RMS [noise sd]</th><th>lack of fit z</th><th>mean coverage 95 %</th>"
+         "<th>log evidence</th><th>Δ log evidence vs base</th><th>effect parameters</th></tr>\n";
+    const double le0 = dbl(at(steps[0], "log_evidence"));
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const json& st = steps[k];
+      b << "<tr><td>" << htmlEscape(stepLabel(st, k)) << "</td><td class=\"n\">" << num(dbl(at(st, "systematic_rms_noise_sd")), 4)
+        << "</td><td class=\"n\">" << num(dbl(at(st, "lack_of_fit_z")), 3) << "</td><td class=\"n\">" << pct(meanCoverage(st))
+        << "</td><td class=\"n\">" << num(dbl(at(st, "log_evidence")), 6) << "</td><td class=\"n\">"
+        << num(dbl(at(st, "log_evidence")) - le0, 5) << "</td><td>" << paramsHtml(at(st, "effect_parameters")) << "</td></tr>\n";
+    }
+    b << "</table>\n<p>Per series: RMS [unit] (NRMSE), coverage of the 95 % band.</p>\n<table>\n<tr><th>series</th>";
+    for (std::size_t k = 0; k < steps.size(); ++k) b << "<th>" << htmlEscape(stepLabel(steps[k], k)) << "</th>";
+    b << "</tr>\n";
+    const json& s0 = at(steps[0], "series");
+    for (std::size_t i = 0; s0.is_array() && i < s0.size(); ++i) {
+      const json& e0 = s0[i];
+      b << "<tr><td>" << htmlEscape(str(at(e0, "scenario")) + " " + str(at(e0, "channel"))) << "</td>";
+      for (std::size_t k = 0; k < steps.size(); ++k) {
+        const json* e = nullptr;
+        for (const auto& x : at(steps[k], "series"))
+          if (str(at(x, "data_set")) == str(at(e0, "data_set")) && str(at(x, "scenario")) == str(at(e0, "scenario")) &&
+              str(at(x, "channel")) == str(at(e0, "channel")))
+            e = &x;
+        if (e)
+          b << "<td class=\"n\">" << num(dbl(at(*e, "rms"))) << " (" << num(dbl(at(*e, "nrmse")), 3) << "), "
+            << pct(dbl(at(*e, "coverage95"))) << "</td>";
+        else
+          b << "<td>–</td>";
+      }
+      b << "</tr>\n";
+    }
+    b << "</table>\n";
+
+    std::vector<double> v;
+    std::vector<std::string> labels;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      v.push_back(dbl(at(steps[k], "systematic_rms_noise_sd")));
+      labels.push_back(stepLabel(steps[k], k));
+    }
+    if (std::any_of(v.begin(), v.end(), [](double x) { return !std::isfinite(x); })) {
+      warnings.push_back("a step of diagnosis.json has no finite systematic_rms_noise_sd: no waterfall chart");
+    } else {
+      std::ostringstream whole, down, up, lab, xt;
+      const std::size_t K = v.size();
+      whole << 1 << ' ' << full(v[0]) << ' ' << 0 << ' ' << full(v[0]) << '\n';
+      for (std::size_t k = 1; k < K; ++k)
+        (v[k] <= v[k - 1] ? down : up) << k + 1 << ' ' << full(v[k]) << ' ' << full(std::min(v[k], v[k - 1])) << ' '
+                                       << full(std::max(v[k], v[k - 1])) << '\n';
+      whole << K + 1 << ' ' << full(v[K - 1]) << ' ' << 0 << ' ' << full(v[K - 1]) << '\n';
+      for (std::size_t k = 0; k < K; ++k) {
+        xt << (k ? ", " : "") << gq(labels[k]) << ' ' << k + 1;
+        lab << k + 1 << ' ' << full(v[k]) << " \"" << num(v[k], 3) << "\"\n";
+      }
+      lab << K + 1 << ' ' << full(v[K - 1]) << " \"" << num(v[K - 1], 3) << "\"\n";
+      xt << ", 'after' " << K + 1;
+      const double top = std::max(1.0, *std::max_element(v.begin(), v.end())) * 1.15;
+      std::ostringstream p;
+      p << "set title 'systematic RMS over the steps' noenhanced\nset xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:"
+        << K + 1.6 << "]\nset yrange [0:" << full(top) << "]\nset ylabel 'systematic RMS [noise sd]'\nset grid ytics\n"
+        << "set style fill solid 0.7 border -1\nset key top right\nplot " << gp.data(whole.str())
+        << " using 1:2:($1-0.3):($1+0.3):3:4 with boxxyerror lc rgb '#4a7fc0' title 'level', ";
+      if (!down.str().empty())
+        p << gp.data(down.str()) << " using 1:2:($1-0.3):($1+0.3):3:4 with boxxyerror lc rgb '#2a9a3a' title 'decrease', ";
+      if (!up.str().empty())
+        p << gp.data(up.str()) << " using 1:2:($1-0.3):($1+0.3):3:4 with boxxyerror lc rgb '#c03020' title 'increase', ";
+      p << gp.data(lab.str()) << " using 1:2:3 with labels offset 0,0.8 notitle, 1 with lines dt 2 lw 1.5 lc rgb '#333333' title "
+        << "'1 noise sd'\n";
+      figure(gp.plot(p.str(), 900, 400, "systematic RMS waterfall"),
+             "Systematic RMS of the residual (the part beyond the measurement noise, in noise sd, over all series) of the base "
+             "model and after each effect added in turn (<code>diagnosis.json</code> <code>steps</code>): a green bar is a "
+             "decrease, a red one an increase.");
+      plots.push_back({{"name", "waterfall"}, {"kind", "waterfall"}, {"steps", K}});
+    }
+  }
+
+  // ---- source
+  b << "<h3 id=\"" << htmlEscape(A) << "-source\">Source</h3>\n<table>\n";
+  auto row = [&](const std::string& k, const std::string& v) {
+    b << "<tr><th>" << htmlEscape(k) << "</th><td>" << htmlEscape(v) << "</td></tr>\n";
+  };
+  row("diagnosis folder", fs::absolute(dir).lexically_normal().string());
+  const json& prog = at(d, "program");
+  if (prog.is_object()) row("program", str(at(prog, "name")) + " " + str(at(prog, "version")) + " (" + str(at(prog, "git")) + ")");
+  row("command", text(at(d, "command")));
+  row("created (UTC)", text(at(d, "created_utc")));
+  row("study", text(at(d, "study")));
+  row("data", text(at(d, "data")));
+  row("after comparison", has_after ? after.file : "–");
+  b << "</table>\n";
+  for (const auto& w : gp.warnings()) warnings.push_back(w);
+  if (!warnings.empty()) {
+    b << "<div class=\"warn\"><p>Diagnosis report warnings:</p>\n<ul>\n";
+    for (const auto& w : warnings) b << "<li>" << htmlEscape(w) << "</li>\n";
+    b << "</ul></div>\n";
+  }
+  b << "</section>\n";
+
+  if (drawn)
+    *drawn = {{"plots", plots},
+              {"svg_count", gp.count()},
+              {"verdict", verdict},
+              {"effect", effect},
+              {"after", has_after ? json(after.file) : json()},
+              {"warnings", warnings}};
+  return b.str();
+}
+
+json writeDiagnosisReport(const std::vector<std::string>& diag_dirs, const std::string& out_html, const std::string& command) {
+  const auto t_start = std::chrono::steady_clock::now();
+  classify::requireGnuplot("the diagnosis report");
+  if (diag_dirs.empty()) throw InputError("--diagnosis", "needs at least one diagnosis folder");
+  std::vector<std::string> sections;
+  json all = json::array(), plots = json::array(), warnings = json::array();
+  int svg_count = 0;
+  std::ostringstream nav;
+  for (std::size_t k = 0; k < diag_dirs.size(); ++k) {
+    DiagnosisSectionOptions o;
+    if (diag_dirs.size() > 1) {
+      o.anchor = "diagnosis-" + std::to_string(k + 1);
+      o.id_prefix = "d" + std::to_string(k + 1) + "p";
+      o.heading_prefix = std::to_string(k + 1) + ". ";
+    }
+    json drawn;
+    sections.push_back(diagnosisSectionHtml(diag_dirs[k], o, &drawn));
+    const std::string& sec = sections.back();
+    const std::string& A = o.anchor;
+    if (diag_dirs.size() > 1) nav << "<li><a href=\"#" << htmlEscape(A) << "\">" << htmlEscape(diag_dirs[k]) << "</a><ol>";
+    for (const auto& [part, name] : std::vector<std::pair<std::string, std::string>>{{"-ranked", "Confirmed effects"},
+                                                                                      {"-screening", "Screening"},
+                                                                                      {"-series", "Measured against predicted"},
+                                                                                      {"-bands", "Residual band power"},
+                                                                                      {"-map", "Force–state map"},
+                                                                                      {"-steps", "Before and after"},
+                                                                                      {"-source", "Source"}})
+      if (sec.find("id=\"" + A + part + "\"") != std::string::npos)
+        nav << "<li><a href=\"#" << htmlEscape(A + part) << "\">" << htmlEscape(name) << "</a></li>";
+    if (diag_dirs.size() > 1) nav << "</ol></li>";
+    svg_count += drawn["svg_count"].get<int>();
+    for (const auto& p : drawn["plots"]) plots.push_back(p);
+    for (const auto& w : drawn["warnings"]) warnings.push_back(w);
+    drawn["folder"] = diag_dirs[k];
+    all.push_back(drawn);
+  }
+  const std::string title = diag_dirs.size() == 1
+                                ? "twin diagnosis report: " + fs::absolute(diag_dirs[0]).lexically_normal().string()
+                                : "twin diagnosis report: " + std::to_string(diag_dirs.size()) + " diagnoses";
+  std::ostringstream page;
+  page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << htmlEscape(title)
+       << "</title>\n<style>\n" << classify::reportCss() << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
+       << "<nav><ol>" << nav.str() << "</ol></nav>\n";
+  for (const auto& sec : sections) page << sec;
+  const json prog = programInfo();
+  page << "<p>Report command: <code>" << htmlEscape(command) << "</code>; made by "
+       << htmlEscape(str(at(prog, "name")) + " " + str(at(prog, "version")) + " (" + str(at(prog, "git")) + ")") << ", "
+       << htmlEscape(utcNow()) << ".</p>\n</body>\n</html>\n";
+  writeFileAtomic(out_html, page.str());
+  json r = all.size() == 1 ? all[0] : json::object();
+  r["diagnoses"] = all;
+  r["plots"] = plots;
+  r["svg_count"] = svg_count;
+  r["warnings"] = warnings;
+  r["html"] = out_html;
+  r["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return r;
+}
+
+json writeDiagnosisReport(const std::string& diag_dir, const std::string& out_html, const std::string& command) {
+  return writeDiagnosisReport(std::vector<std::string>{diag_dir}, out_html, command);
+}
+
+}  // namespace dtwin::diag

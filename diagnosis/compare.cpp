@@ -133,7 +133,6 @@ Comparison compareModel(const calib::LabObjective& objective, const std::vector<
   }();
 
   struct Pooled {
-    std::vector<std::map<std::string, std::vector<double>>> states;  // unused
     std::map<std::string, std::vector<double>> state;
     std::vector<double> residual;
   };

@@ -357,13 +357,7 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
         for (double q : t.column(std::string("susp_defl_") + c + "_m")) max_compression = std::max(max_compression, q);
   }
 
-  struct Probe {
-    std::size_t effect;
-    std::vector<double> values;  // the effect's diagnosed parameters
-    std::vector<std::vector<double>> columns;  // one probe column per strength parameter: values set
-  };
   std::vector<std::unique_ptr<calib::LabObjective>> eff_obj;
-  std::vector<std::vector<std::vector<double>>> probe_sets(catalogue.size());  // per effect: list of parameter vectors per column group
   struct Group {
     std::size_t effect;
     std::vector<std::vector<double>> cols;  // parameter vectors, one per column
@@ -404,7 +398,6 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t c = 0; c < groups[g].cols.size(); ++c) jobs.push_back({g, c});
   std::vector<std::vector<double>> probe_eta(jobs.size());
-  std::size_t done = 0;
   report("screening: probes", 0, jobs.size());
   parallelFor(jobs.size(), options.threads, [&](std::size_t j, int) {
     const auto& g = groups[jobs[j].first];
@@ -412,8 +405,7 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
     for (double v : g.cols[jobs[j].second]) th.push_back(v);
     probe_eta[j] = eff_obj[g.effect]->predict(th);
   });
-  done = jobs.size();
-  report("screening: probes", done, jobs.size());
+  report("screening: probes", jobs.size(), jobs.size());
   const double bonferroni = static_cast<double>(groups.size());
   res.candidates.resize(catalogue.size());
   for (std::size_t e = 0; e < catalogue.size(); ++e) {

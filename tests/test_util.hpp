@@ -5,6 +5,7 @@
 #include <iterator>
 #include <regex>
 #include <string>
+#include <vector>
 
 namespace dtwin_test {
 
@@ -32,6 +33,15 @@ inline std::filesystem::path writeTinyStudy(const std::filesystem::path& path, i
                         "lab_repetitions = 3\nfield_runs = 4\nlhs_points = 10\ngibbs_iterations = 300\ngibbs_burn_in = 100\n"
                         "posterior_draws = 4\nroads_per_draw = 2\nroad_library = 8\noptimizer_starts = " +
                             std::to_string(optimizer_starts) + "\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n");
+}
+
+/// The calibrated parameters' truths of a study, in study order.
+/// (A template so this header needs no twin/ include: StudyT is dtwin::Study.)
+template <class StudyT>
+std::vector<double> truthOf(const StudyT& s) {
+  std::vector<double> t;
+  for (const auto& c : s.calibrated) t.push_back(*c.truth);
+  return t;
 }
 
 }  // namespace dtwin_test

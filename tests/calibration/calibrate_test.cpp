@@ -20,11 +20,7 @@ using namespace dtwin::calib;
 namespace {
 const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
 
-std::vector<double> truthOf(const Study& s) {
-  std::vector<double> t;
-  for (const auto& c : s.calibrated) t.push_back(*c.truth);
-  return t;
-}
+using dtwin_test::truthOf;
 }  // namespace
 
 // The SSE's predictions at the true parameters reproduce the noise-free lab values that

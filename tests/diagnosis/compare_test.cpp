@@ -16,11 +16,7 @@ using namespace dtwin::diag;
 namespace {
 const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
 
-std::vector<double> truthOf(const Study& s) {
-  std::vector<double> t;
-  for (const auto& c : s.calibrated) t.push_back(*c.truth);
-  return t;
-}
+using dtwin_test::truthOf;
 
 calib::DataSet labSet(const Study& s, std::uint64_t seed) {
   LabOptions o;

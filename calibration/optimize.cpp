@@ -168,6 +168,10 @@ StartResult minimiseFrom(const SseFunction& sse, const std::vector<double>& lowe
   StartResult r;
   r.start = start;
   double fz = 0.0;
+  // The start itself counts: BOBYQA moves a start lying within the initial step of a bound before
+  // its first evaluation (Powell 2009, §2), so a start that is already optimal (a nested model's
+  // optimum with an added effect off) would otherwise be lost.
+  objective(static_cast<unsigned>(d), z.data(), nullptr, &ctx);
   try {
     opt.optimize(z, fz);
     r.status = nlopt_result_to_string(static_cast<nlopt_result>(opt.last_optimize_result()));

@@ -216,3 +216,18 @@ TEST(Optimize, EveryAllowedAlgorithmSolvesTheQuadratic) {
     EXPECT_NEAR(o.sse, 1234.5, 1e-3) << alg << ": " << o.fullReport();
   }
 }
+
+// BOBYQA moves a start lying within its initial step of a bound before evaluating it; a start that
+// already sits in a narrow well (a nested model's optimum with an added effect off) must still be
+// the answer when nothing better is found.
+TEST(Optimize, AStartNearABoundIsEvaluatedAndKept) {
+  auto f = [](const std::vector<double>& t) {
+    const double u = (t[0] - 0.02) / 0.005;
+    return -std::exp(-u * u) + 0.1 * (t[0] - 0.6) * (t[0] - 0.6);
+  };
+  OptimizerOptions opt;
+  opt.initial_step = 0.1;
+  const StartResult r = minimiseFrom(f, {0.0}, {1.0}, {0.02}, opt);
+  EXPECT_LT(r.sse, -0.9);
+  EXPECT_NEAR(r.theta[0], 0.02, 1e-3);
+}

@@ -80,8 +80,8 @@ TEST(Measurements, BadInputsGiveOneLineErrorsNamingTheProblem) {
   e = errorOf(s, grid.string() + "@diag_bump");
   EXPECT_NE(e.find("grid.csv:2: time_s"), std::string::npos) << e;
   EXPECT_NE(e.find("output grid"), std::string::npos) << e;
-  // A time after the end of the scenario (diag_bump lasts 2.5 s).
-  const auto late = writeFile("late.csv", "repetition,time_s,channel,value\n1,3.0,hub_force_fl_N,3700\n");
+  // A time after the end of the scenario (diag_bump lasts 3 s).
+  const auto late = writeFile("late.csv", "repetition,time_s,channel,value\n1,3.5,hub_force_fl_N,3700\n");
   e = errorOf(s, late.string() + "@diag_bump");
   EXPECT_NE(e.find("after the end"), std::string::npos) << e;
   // A missing file.

@@ -194,6 +194,16 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
                                     const std::string& out_dir, const std::string& fingerprint_extra,
                                     const StageProgress& progress = {});
 
+/// The finite-difference step (scaled units) of polishLeastSquares used by calibrateAssembly's
+/// polish: well above the integrator's noise in the residuals (see calibrate.cpp).
+inline constexpr double kPolishStep = 1e-2;
+
+/// Levenberg–Marquardt on the weighted residuals sqrt(w) (η(θ) − y) of `obj` from `theta0`, in the
+/// scaled coordinates [0,1]^d with central differences of step `h` (2d runs per iteration, on
+/// `threads` workers), steps clipped to the box; at most 30 iterations. Returns the best point
+/// seen (status "LM_POLISH"); sse is infinite when the run at theta0 fails.
+StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h = kPolishStep);
+
 using ::dtwin::fnv1a64;  // twin/provenance.hpp
 
 }  // namespace dtwin::calib

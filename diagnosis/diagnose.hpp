@@ -94,6 +94,10 @@ struct DiagnosisResult {
   std::vector<std::string> ambiguous_with;
   std::string unexplained_location;
   Figures base;
+  /// When a candidate's base parameters (its effect off) fitted better than the base optimum, the
+  /// base was re-calibrated from there: that candidate, and the base's SSE before.
+  std::string base_refined_from;
+  double base_unrefined_sse = 0;
   std::vector<Candidate> candidates;  ///< every effect: confirmed ones first (by evidence), then by score, gated last
   std::vector<Figures> steps;         ///< --apply: base, + e1, + e1 + e2, ...
   std::vector<std::string> fitted_channels, left_out_channels;

@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-# Usage: python3 scripts/diagnosis_matrix.py OUT_ROOT SEEDS(1,2,..) [EFFECTS(a,b,..|none)] : hidden effect -> diagnose verdict, recovery, error cut.
+# Usage: python3 scripts/diagnosis_matrix.py OUT_ROOT SEEDS(1,2,..) [EFFECTS(a,b,..|none|ooc:EFFECT)] ["extra diagnose args"]
+#   hidden effect -> diagnose verdict, recovery, error cut. `ooc:EFFECT` hides EFFECT and diagnoses with a
+#   catalogue that lacks it (--effects = every other effect): the out-of-catalogue case, expected "unexplained".
 # Diagnosis confusion matrix: hidden effect -> verdict/named effect, parameter recovery, error fall.
 import subprocess, json, sys, os, math, time
 T=os.environ.get('TWIN','/work/main/build/cli/twin')
@@ -18,21 +20,25 @@ cases={
 root=sys.argv[1]; seeds=[int(s) for s in sys.argv[2].split(',')]; names=sys.argv[3].split(',') if len(sys.argv)>3 else list(cases)
 extra=sys.argv[4].split() if len(sys.argv)>4 else []
 for name in names:
+  ooc = name.startswith('ooc:')
+  if ooc:
+    hidden_name = name[4:]; cases[name] = cases[hidden_name]
   for seed in seeds:
-    d=f'{root}/{name}_{seed}'; os.makedirs(d,exist_ok=True)
+    d=f'{root}/{name.replace(":","_")}_{seed}'; os.makedirs(d,exist_ok=True)
     t0=time.time()
     for sc in ['diag_bump','diag_rough']:
         cmd=[T,'generate','lab','--scenario',sc,'--times','all','--rate','200','--repetitions','3','--channels',CH,'--seed',str(seed),'--out',f'{d}/{sc}.csv','--quiet']
         if cases[name]: cmd+=['--hidden-effect',cases[name]]
         subprocess.run(cmd,check=True)
     cmd=[T,'diagnose','--data',f'{d}/diag_bump.csv','--data',f'{d}/diag_rough.csv','--out',f'{d}/out','--lhs-points','40','--iterations','3000','--burn-in','1000','--starts','2','--candidates','2','--quiet']+extra
-    if cases[name]: cmd+=['--apply',name]
+    if ooc: cmd+=['--effects',','.join(e for e in cases if e not in ('none',hidden_name) and not e.startswith('ooc:'))]
+    elif cases[name]: cmd+=['--apply',name]
     p=subprocess.run(cmd,capture_output=True,text=True)
     if p.returncode: print(name,seed,'FAILED',p.stderr[-500:]); continue
     j=json.load(open(f'{d}/out/diagnosis.json'))
     named=j.get('effect','-')
     rec=''
-    if cases[name] and j['ranked']:
+    if cases[name] and j['ranked'] and not ooc:
         for r in j['ranked']:
             if r['effect']==name:
                 hid=dict(kv.split('=') for kv in cases[name].split(':')[1].split(','))
@@ -44,4 +50,5 @@ for name in names:
         b=j['before']['systematic_rms_noise_sd']; a=j['after']['systematic_rms_noise_sd']
         fall=f' systRMS {b:.3f}->{a:.3f} ({100*(1-a/b) if b>0 else 0:.0f}% cut)'
     top=[(r['effect'],round(r['delta_bic'],1)) for r in j['ranked']]
-    print(f"{name:32s} seed {seed}: verdict {j['verdict']:11s} named {named:30s} base z {j['base']['lack_of_fit_z']:.1f}{rec}{fall} ranked {top} amb {j['ambiguous_with']} [{time.time()-t0:.0f}s]",flush=True)
+    where = f" where: {j.get('unexplained_location','')[:160]}" if j['verdict']=='unexplained' else ''
+    print(f"{name:32s} seed {seed}: verdict {j['verdict']:11s} named {named:30s} base z {j['base']['lack_of_fit_z']:.1f}{rec}{fall} ranked {top} amb {j['ambiguous_with']}{where} [{time.time()-t0:.0f}s]",flush=True)

@@ -167,6 +167,8 @@ std::vector<double> automaticLabTimes(const Trace& tr, const std::string& channe
   return kept;
 }
 
+std::uint64_t labNoiseStream(const std::string& scenario) { return kLabNoiseStream ^ fnv1a64(scenario); }
+
 LabResult generateLab(const Study& study, const AssemblySpec& assembly, const LabOptions& opt, const ProgressFn& progress) {
   const ScenarioSpec& sc = study.scenario(opt.scenario);
   const long reps = opt.repetitions > 0 ? opt.repetitions : study.sizes.at("lab_repetitions");
@@ -277,7 +279,7 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   }
   const auto& time_col = run.trace.column("time_s");
   for (long rep = 1; rep <= reps; ++rep) {
-    RandomStream rs(seed, kLabNoiseStream, static_cast<std::uint64_t>(rep - 1));
+    RandomStream rs(seed, labNoiseStream(sc.name), static_cast<std::uint64_t>(rep - 1));
     for (const auto& c : channels) {
       const auto& col = run.trace.column(c.name);
       const bool noisy = c.unit == "N";
@@ -299,9 +301,10 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
                 {"applied_to", noisy},
                 {"not_applied_to", clean},
                 {"seed", seed},
-                {"stream", hexId(kLabNoiseStream)},
+                {"stream", hexId(labNoiseStream(sc.name))},
                 {"rule", "repetition r draws from RandomStream(seed, stream, r - 1) (mt19937_64 seeded by SplitMix64, "
-                         "Box-Muller), in the order of the channels, then of the times"}};
+                         "Box-Muller), in the order of the channels, then of the times; stream = " + hexId(kLabNoiseStream) +
+                             " xor FNV-1a 64 of the scenario name (files of two scenarios made with one seed have independent noise)"}};
   j["lab"] = {{"repetitions", reps},
               {"times_s", res.times_s},
               {"times", times_json},

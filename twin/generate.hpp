@@ -23,6 +23,11 @@ namespace dtwin {
 
 /// Stream constants of RandomStream(seed, stream, index) (ASCII tags; recorded in sidecars).
 inline constexpr std::uint64_t kLabNoiseStream = 0x4C41424E4F495345ULL;    // "LABNOISE"; index: repetition - 1
+/// The lab noise stream of a scenario: kLabNoiseStream xor FNV-1a 64 of its name, so lab files of
+/// two scenarios made with one seed have independent noise (with one stream, the same noise
+/// sequence went into both, and a diagnosis pooling them saw it twice: the lack-of-fit z had
+/// twice its nominal spread).
+std::uint64_t labNoiseStream(const std::string& scenario);
 inline constexpr std::uint64_t kFieldRoadStream = 0x4649454C44524F44ULL;   // "FIELDROD"; index: run - 1
 inline constexpr std::uint64_t kFieldNoiseStream = 0x4649454C444E4F49ULL;  // "FIELDNOI"; index: run - 1
 

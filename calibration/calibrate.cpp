@@ -247,6 +247,12 @@ std::vector<double> LabObjective::predict(const std::vector<double>& theta) cons
   return eta;
 }
 
+std::vector<double> LabObjective::residuals(const std::vector<double>& theta) const {
+  auto r = predict(theta);
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = std::sqrt(w_[i]) * (r[i] - y_[i]);
+  return r;
+}
+
 double LabObjective::sse(const std::vector<double>& theta) const {
   const auto eta = predict(theta);
   if (eta.empty()) return std::numeric_limits<double>::infinity();
@@ -273,7 +279,23 @@ CalibrationOptions CalibrationOptions::fromStudy(const Study& study) {
   o.gibbs_iterations = static_cast<int>(study.sizes.at("gibbs_iterations"));
   o.gibbs_burn_in = static_cast<int>(study.sizes.at("gibbs_burn_in"));
   o.seed = study.seed;
+  o.region = study.calibration.region;
+  o.design.adaptive = study.calibration.designOrDefault() == "adaptive";
+  o.design.round_points = static_cast<int>(study.calibration.round_points);  // 0: lhs_points
+  o.design.max_rounds = static_cast<int>(study.calibration.max_rounds);
+  o.design.target_ess = study.calibration.target_ess;
+  o.joint.margin = study.calibration.margin;
   return o;
+}
+
+AdaptiveDesignOptions CalibrationOptions::designOptions() const {
+  AdaptiveDesignOptions d = design;
+  d.first_points = lhs_points;
+  if (d.round_points <= 0) d.round_points = lhs_points;
+  d.tau_a = tau_prior_a;
+  d.tau_b = tau_prior_b;
+  d.seed = seed;
+  return d;
 }
 
 void CalibrationOptions::validate() const {
@@ -283,8 +305,12 @@ void CalibrationOptions::validate() const {
   if (gibbs_burn_in < 0 || gibbs_burn_in >= gibbs_iterations)
     throw InputError("gibbs_burn_in", "must be in [0, gibbs_iterations), got " + std::to_string(gibbs_burn_in));
   if (!(tau_prior_a >= 0 && tau_prior_b >= 0)) throw InputError("tau prior", "a and b must be >= 0");
+  if (region != "joint" && region != "paper")
+    throw InputError("region", "must be \"joint\" or \"paper\", got \"" + region + "\"");
   optimizer.validate();
   box.validate();
+  joint.validate();
+  designOptions().validate();
 }
 
 nlohmann::json CalibrationOptions::toJson() const {
@@ -300,13 +326,20 @@ nlohmann::json CalibrationOptions::toJson() const {
             {"xtol_rel", optimizer.xtol_rel},
             {"ftol_rel", optimizer.ftol_rel},
             {"maxeval", optimizer.maxeval},
-            {"initial_step_scaled", optimizer.initial_step}}},
+            {"initial_step_scaled", optimizer.initial_step},
+            {"screen_per_start", optimizer.screen_per_start}}},
           {"feasible_box",
            {{"rule", "SSE <= SSE_min (1 + 2 ln(100) / n): likelihood ratio 1 %"},
             {"initial_step_scaled", box.initial_step},
             {"growth", box.growth},
             {"tolerance_scaled", box.tolerance},
             {"max_evaluations_per_sweep", box.max_evaluations}}}};
+  j["region"] = region;
+  if (region == "joint") {
+    j.erase("feasible_box");
+    j["joint_region"] = joint.toJson();
+  }
+  j["design"] = designOptions().toJson();
   if (!extra_starts.empty()) j["extra_starts"] = extra_starts;
   if (polish_step > 0) j["polish_step"] = polish_step;
   return j;
@@ -474,6 +507,66 @@ SweepResult unpackSweep(const std::vector<double>& v) {
   return r;
 }
 
+std::vector<double> packRay(const RaySweep& r) {
+  return Packer()
+      .put(r.t_edge)
+      .put(r.edge_sse)
+      .put(r.clipped ? 1.0 : 0.0)
+      .put(r.bracketed ? 1.0 : 0.0)
+      .put(r.budget_out ? 1.0 : 0.0)
+      .put(r.loose ? 1.0 : 0.0)
+      .put(r.bracket)
+      .put(r.evaluations)
+      .take();
+}
+RaySweep unpackRay(const std::vector<double>& v) {
+  Unpacker u(v);
+  RaySweep r;
+  r.t_edge = u.num();
+  r.edge_sse = u.num();
+  r.clipped = u.num() != 0.0;
+  r.bracketed = u.num() != 0.0;
+  r.budget_out = u.num() != 0.0;
+  r.loose = u.num() != 0.0;
+  r.bracket = u.num();
+  r.evaluations = static_cast<int>(u.integer());
+  return r;
+}
+
+std::vector<double> packTrace(const RidgeTrace& r) {
+  std::vector<double> z;
+  for (const auto& p : r.z) z.insert(z.end(), p.data(), p.data() + p.size());
+  return Packer()
+      .put(r.axis)
+      .put(r.direction)
+      .put(r.t)
+      .put(z)
+      .put(r.sse)
+      .put(r.closed ? 1.0 : 0.0)
+      .put(r.crossing)
+      .put(r.clipped ? 1.0 : 0.0)
+      .put(r.evaluations)
+      .put(r.message)
+      .take();
+}
+RidgeTrace unpackTrace(const std::vector<double>& v, int d) {
+  Unpacker u(v);
+  RidgeTrace r;
+  r.axis = static_cast<int>(u.integer());
+  r.direction = static_cast<int>(u.integer());
+  r.t = u.vec();
+  const std::vector<double> z = u.vec();
+  for (std::size_t k = 0; k + static_cast<std::size_t>(d) <= z.size(); k += static_cast<std::size_t>(d))
+    r.z.push_back(Eigen::Map<const Eigen::VectorXd>(z.data() + k, d));
+  r.sse = u.vec();
+  r.closed = u.num() != 0.0;
+  r.crossing = u.num();
+  r.clipped = u.num() != 0.0;
+  r.evaluations = static_cast<int>(u.integer());
+  r.message = u.str();
+  return r;
+}
+
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -573,6 +666,8 @@ nlohmann::json CalibrationResult::toJson() const {
   j["n_data"] = n_data;
   j["sse_min"] = num(optimum.sse);
   j["tau_hat"] = optimum.sse > 0 ? num(n_data / optimum.sse) : num(std::numeric_limits<double>::infinity());
+  std::vector<double> box_lo, box_hi;
+  region.boundingBox(box_lo, box_hi);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const auto& p = posterior.parameters[k];
     nlohmann::json e{{"mean", p.mean},
@@ -580,9 +675,12 @@ nlohmann::json CalibrationResult::toJson() const {
                      {"ci95", {p.q025, p.q975}},
                      {"ess", num(p.ess)},
                      {"optimum", optimum.theta[k]},
-                     {"box", {box.lower[k], box.upper[k]}},
-                     {"box_clipped", {box.lower_clipped[k], box.upper_clipped[k]}}};
-    if (truth[k]) e["truth"] = *truth[k];
+                     {"box", {box_lo[k], box_hi[k]}},
+                     {"box_clipped", {box_lo[k] <= region.lower[k], box_hi[k] >= region.upper[k]}}};
+    if (truth[k]) {
+      e["truth"] = *truth[k];
+      e["truth_in_ci95"] = *truth[k] >= p.q025 && *truth[k] <= p.q975;
+    }
     j["parameters"][names[k]] = e;
   }
   j["parameter_order"] = names;
@@ -592,9 +690,16 @@ nlohmann::json CalibrationResult::toJson() const {
               {"ess", num(posterior.tau.ess)},
               {"noise_variance_mean_N2", posterior.tau.mean > 0 ? 1.0 / posterior.tau.mean : 0.0}};
   j["optimum"] = optimumJson(optimum);
-  j["box"] = boxJson(box);
-  j["design"] = {{"points", design.rows()}, {"failures", design_failures}, {"resumed_points", resumed_points},
-                 {"method", "Latin hypercube in the feasible box, one point per stratum per dimension"}};
+  j["region"] = region.toJson();
+  if (region.kind == "paper") j["box"] = boxJson(box);
+  j["design"] = rounds.toJson(names);
+  j["design"]["failures"] = design_failures;
+  j["design"]["resumed_points"] = resumed_points;
+  j["design"]["method"] = rounds.rounds.size() > 1
+                              ? "Latin hypercube in the region, then stratified Gaussian rounds around the posterior; "
+                                "Griddy Gibbs with deterministic-mixture design weights"
+                              : "Latin hypercube in the region, one point per stratum per dimension";
+  for (const auto& w : rounds.warnings) j["warnings"].push_back(w);
   double best = std::numeric_limits<double>::infinity();
   for (double s : sse) best = std::min(best, s);
   j["design"]["sse_min"] = num(best);
@@ -680,9 +785,25 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   if (auto j = readStage(opt_path, fingerprint); !j.is_null()) {
     res.optimum = optimumFrom(j.at("optimum"));
   } else {
+    // As minimiseSse, with the screening and the starts spread over ranks and threads.
+    std::vector<std::vector<double>> x0;
+    nlohmann::json screening;
+    if (options.optimizer.screen_per_start > 0) {
+      const auto cand = screeningPoints(objective.lower(), objective.upper(), options.optimizer_starts,
+                                        options.optimizer.screen_per_start, options.seed);
+      const auto f = distributedMap(
+          cand.size(), options.threads, [&](std::size_t i, int) { return std::vector<double>{objective.sse(cand[i])}; },
+          [&](std::size_t done, std::size_t total) { report("optimum: screening", done, total); });
+      std::vector<double> fs;
+      for (const auto& v : f) fs.push_back(v[0]);
+      x0 = bestStarts(cand, fs, objective.lower(), objective.upper(), options.optimizer_starts);
+      screening = {{"points", cand.size()},
+                   {"rule", "the box centre and a Latin hypercube of the bounds; starts = the best, 0.05 apart (scaled)"},
+                   {"best_sse", num(*std::min_element(fs.begin(), fs.end()))}};
+    } else {
+      x0 = optimizerStarts(objective.lower(), objective.upper(), options.optimizer_starts, options.seed);
+    }
     report("optimum", 0, static_cast<std::size_t>(options.optimizer_starts));
-    // As minimiseSse, with the starts spread over ranks and threads.
-    auto x0 = optimizerStarts(objective.lower(), objective.upper(), options.optimizer_starts, options.seed);
     for (std::size_t k = options.extra_starts.size(); k-- > 0;) {
       auto x = options.extra_starts[k];
       if (x.size() != d) throw InputError("extra optimiser start", "has " + std::to_string(x.size()) + " values, expected " + std::to_string(d));
@@ -709,18 +830,21 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
     }
     res.optimum = collectOptimum(std::move(starts));
     rootWrites([&] {
-      writeFileAtomic(opt_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"optimum", optimumJson(res.optimum)}}.dump(2) + "\n");
+      nlohmann::json stage{{"fingerprint", fingerprint}, {"optimum", optimumJson(res.optimum)}};
+      if (!screening.is_null()) stage["screening"] = screening;
+      writeFileAtomic(opt_path.string(), stage.dump(2) + "\n");
     });
   }
   if (!std::isfinite(res.optimum.sse))
     throw std::runtime_error("assembly " + assembly.id + ": every simulation of the optimiser failed; no calibration possible");
   res.stage_wall_s.push_back({"optimum", secondsSince(t0)});
 
-  // Stage 2: feasible box.
+  // Stage 2: the region the design covers.
   t0 = std::chrono::steady_clock::now();
   const fs::path box_path = fs::path(out_dir) / "box.json";
   if (auto j = readStage(box_path, fingerprint); !j.is_null()) {
-    res.box = boxFrom(j.at("box"));
+    res.region = Region::fromJson(j.at("region"));
+    if (j.contains("box")) res.box = boxFrom(j.at("box"));
   } else {
     BoxProblem bp;
     bp.theta_hat = res.optimum.theta;
@@ -728,88 +852,161 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
     bp.n_data = n;
     bp.lower = objective.lower();
     bp.upper = objective.upper();
-    // As calcFeasibleBox, with the 2d sweeps spread over ranks and threads.
     bp.validate();
-    const auto packed = distributedMap(
-        2 * d, options.threads, [&](std::size_t i, int) { return packSweep(calcBoxSweep(sse, bp, static_cast<int>(i), options.box)); },
-        [&](std::size_t done, std::size_t total) { report("box", done, total); });
-    std::vector<SweepResult> sweeps;
-    for (const auto& v : packed) sweeps.push_back(unpackSweep(v));
-    res.box = collectFeasibleBox(bp, std::move(sweeps));
-    rootWrites([&] {
-      writeFileAtomic(box_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"box", boxJson(res.box)}}.dump(2) + "\n");
-    });
+    nlohmann::json stage{{"fingerprint", fingerprint}};
+    if (options.region == "paper") {
+      // As calcFeasibleBox, with the 2d sweeps spread over ranks and threads.
+      const auto packed = distributedMap(
+          2 * d, options.threads, [&](std::size_t i, int) { return packSweep(calcBoxSweep(sse, bp, static_cast<int>(i), options.box)); },
+          [&](std::size_t done, std::size_t total) { report("box", done, total); });
+      std::vector<SweepResult> sweeps;
+      for (const auto& v : packed) sweeps.push_back(unpackSweep(v));
+      res.box = collectFeasibleBox(bp, std::move(sweeps));
+      res.region = regionFromBox(res.box, bp);
+      stage["box"] = boxJson(res.box);
+    } else {
+      // As calcJointRegion: the Jacobian stencil, then the sweeps along the principal axes.
+      const auto stencil = jacobianStencil(bp, options.joint);
+      const auto residuals = distributedMap(
+          stencil.size(), options.threads, [&](std::size_t i, int) { return objective.residuals(stencil[i]); },
+          [&](std::size_t done, std::size_t total) { report("region: Jacobian", done, total); });
+      const JointRegionPlan plan = planJointRegion(bp, residuals, options.joint);
+      const auto packed = distributedMap(
+          2 * d, options.threads,
+          [&](std::size_t i, int) { return packRay(calcRegionSweep(sse, plan, static_cast<int>(i), options.joint)); },
+          [&](std::size_t done, std::size_t total) { report("region: sweeps", done, total); });
+      std::vector<RaySweep> sweeps;
+      for (const auto& v : packed) sweeps.push_back(unpackRay(v));
+      const auto packed_traces = distributedMap(
+          2 * ridgeAxes(plan, options.joint).size(), options.threads,
+          [&](std::size_t i, int) {
+            return packTrace(calcRidgeTrace([&](const std::vector<double>& th) { return objective.residuals(th); }, plan, sweeps,
+                                            static_cast<int>(i), options.joint));
+          },
+          [&](std::size_t done, std::size_t total) { report("region: ridges", done, total); });
+      std::vector<RidgeTrace> traces;
+      for (const auto& v : packed_traces) traces.push_back(unpackTrace(v, static_cast<int>(d)));
+      res.region = collectJointRegion(plan, sweeps, traces, options.joint);
+      nlohmann::json gn{{"hessian", "J^T J of the weighted residuals, scaled coordinates"},
+                        {"eigenvalues", vec(std::vector<double>(plan.eigenvalues.data(), plan.eigenvalues.data() + plan.eigenvalues.size()))},
+                        {"quadratic_half_width", vec(std::vector<double>(plan.half_width.data(), plan.half_width.data() + plan.half_width.size()))}};
+      for (std::size_t k = 0; k < sweeps.size(); ++k)
+        gn["sweeps"].push_back({{"axis", k / 2},
+                                {"direction", k % 2 == 0 ? -1 : 1},
+                                {"crossing", sweeps[k].t_edge},
+                                {"edge_sse", num(sweeps[k].edge_sse)},
+                                {"clipped", sweeps[k].clipped},
+                                {"bracketed", sweeps[k].bracketed},
+                                {"evaluations", sweeps[k].evaluations},
+                                {"quadratic_guess", plan.half_width(static_cast<long>(k / 2))}});
+      for (const auto& tr : traces) {
+        nlohmann::json t{{"axis", tr.axis}, {"direction", tr.direction}, {"t", tr.t}, {"sse", vec(tr.sse)}, {"closed", tr.closed},
+                         {"crossing", tr.crossing},
+                         {"clipped", tr.clipped}, {"evaluations", tr.evaluations}, {"message", tr.message}};
+        gn["ridges"].push_back(t);
+      }
+      stage["gauss_newton"] = gn;
+    }
+    stage["region"] = res.region.toJson();
+    rootWrites([&] { writeFileAtomic(box_path.string(), stage.dump(2) + "\n"); });
   }
-  res.stage_wall_s.push_back({"box", secondsSince(t0)});
+  res.stage_wall_s.push_back({"region", secondsSince(t0)});
 
-  // Stage 3: design, journalled point by point.
+  // Stage 3: the design, round by round, journalled point by point.
   t0 = std::chrono::steady_clock::now();
-  const int N = options.lhs_points;
-  res.design = latinHypercube(N, res.box.lower, res.box.upper, options.seed);
-  res.sse.assign(static_cast<std::size_t>(N), std::numeric_limits<double>::quiet_NaN());
   {
     // The journal lives on the root; every rank learns the journalled points from it.
     const std::string journal_path = (fs::path(out_dir) / "design_journal.csv").string();
     std::unique_ptr<DesignJournal> journal;
-    const std::vector<double> resumed = bytesToDoubles(onRoot([&]() -> std::string {
+    const std::vector<double> resumed_flat = bytesToDoubles(onRoot([&]() -> std::string {
       journal = std::make_unique<DesignJournal>(journal_path, static_cast<int>(d), fingerprint);
       std::vector<double> v;
       for (const auto& e : journal->resumed()) {
-        if (e.index < 0 || e.index >= N)
-          throw InputError(journal->path(), "design index " + std::to_string(e.index) + " outside 0.." + std::to_string(N - 1));
-        for (std::size_t k = 0; k < d; ++k)
-          if (e.theta[k] != res.design(e.index, static_cast<long>(k)))
-            throw InputError(journal->path(), "design point " + std::to_string(e.index) + " differs from this calibration's design");
+        if (e.index < 0) throw InputError(journal->path(), "design index " + std::to_string(e.index) + " is negative");
         v.push_back(static_cast<double>(e.index));
+        v.insert(v.end(), e.theta.begin(), e.theta.end());
         v.push_back(e.sse);
       }
       return doublesToBytes(v);
     }));
-    for (std::size_t k = 0; k + 1 < resumed.size(); k += 2) res.sse[static_cast<std::size_t>(resumed[k])] = resumed[k + 1];
-    std::vector<int> todo;
-    for (int i = 0; i < N; ++i)
-      if (std::isnan(res.sse[static_cast<std::size_t>(i)])) todo.push_back(i);
-    res.resumed_points = N - static_cast<long>(todo.size());
-    report("design", static_cast<std::size_t>(res.resumed_points), static_cast<std::size_t>(N));
-    // One process: one loop, each point journalled as it finishes. Several ranks: chunks of
-    // 8 points per worker; the root journals its own points as they finish and the others' at
-    // the end of each chunk (a killed job loses at most one chunk of them).
+    std::map<long, std::pair<std::vector<double>, double>> resumed;
+    for (std::size_t k = 0; k + d + 2 <= resumed_flat.size(); k += d + 2)
+      resumed[static_cast<long>(resumed_flat[k])] = {std::vector<double>(resumed_flat.begin() + static_cast<long>(k) + 1,
+                                                                         resumed_flat.begin() + static_cast<long>(k + 1 + d)),
+                                                     resumed_flat[k + 1 + d]};
     const std::size_t ranks = static_cast<std::size_t>(Distributed::instance().size());
-    const std::size_t chunk = ranks == 1 ? std::max<std::size_t>(todo.size(), 1)
-                                         : 8 * ranks * static_cast<std::size_t>(distributedWorkers(todo.size(), options.threads));
-    auto point = [&](int i) {
-      std::vector<double> th(d);
-      for (std::size_t k = 0; k < d; ++k) th[k] = res.design(i, static_cast<long>(k));
-      return th;
-    };
-    for (std::size_t first = 0; first < todo.size(); first += chunk) {
-      const std::size_t m = std::min(chunk, todo.size() - first);
-      const auto sse_of = distributedMap(
-          m, options.threads,
-          [&](std::size_t t, int) {
-            const int i = todo[first + t];
-            const auto th = point(i);
-            const double s = objective.sse(th);
-            if (journal) journal->append(i, th, s);  // the root's own points, at once
-            return std::vector<double>{s};
-          },
-          [&](std::size_t done, std::size_t) {
-            report("design", static_cast<std::size_t>(res.resumed_points) + first + done, static_cast<std::size_t>(N));
+    int round_no = 0;
+    const DesignEvaluator evaluate = [&](const Eigen::MatrixXd& pts, int first) {
+      const std::string stage = "design round " + std::to_string(round_no++);
+      const std::size_t m_all = static_cast<std::size_t>(pts.rows());
+      std::vector<double> out(m_all, std::numeric_limits<double>::quiet_NaN());
+      auto point = [&](std::size_t t) {
+        std::vector<double> th(d);
+        for (std::size_t k = 0; k < d; ++k) th[k] = pts(static_cast<long>(t), static_cast<long>(k));
+        return th;
+      };
+      std::vector<std::size_t> todo;
+      for (std::size_t t = 0; t < m_all; ++t) {
+        const long idx = first + static_cast<long>(t);
+        const auto it = resumed.find(idx);
+        if (it == resumed.end()) {
+          todo.push_back(t);
+          continue;
+        }
+        if (it->second.first != point(t))
+          throw InputError(journal_path, "design point " + std::to_string(idx) + " differs from this calibration's design");
+        out[t] = it->second.second;
+        ++res.resumed_points;
+        resumed.erase(it);
+      }
+      report(stage, m_all - todo.size(), m_all);
+      // One process: one loop, each point journalled as it finishes. Several ranks: chunks of
+      // 8 points per worker; the root journals its own points as they finish and the others' at
+      // the end of each chunk (a killed job loses at most one chunk of them).
+      const std::size_t chunk = ranks == 1 ? std::max<std::size_t>(todo.size(), 1)
+                                           : 8 * ranks * static_cast<std::size_t>(distributedWorkers(todo.size(), options.threads));
+      for (std::size_t c0 = 0; c0 < todo.size(); c0 += chunk) {
+        const std::size_t m = std::min(chunk, todo.size() - c0);
+        const auto sse_of = distributedMap(
+            m, options.threads,
+            [&](std::size_t t, int) {
+              const std::size_t row = todo[c0 + t];
+              const auto th = point(row);
+              const double s = objective.sse(th);
+              if (journal) journal->append(first + static_cast<long>(row), th, s);  // the root's own points, at once
+              return std::vector<double>{s};
+            },
+            [&](std::size_t done, std::size_t) { report(stage, m_all - todo.size() + c0 + done, m_all); });
+        for (std::size_t t = 0; t < m; ++t) out[todo[c0 + t]] = sse_of[t][0];
+        if (ranks > 1)
+          rootWrites([&] {
+            for (std::size_t t = 0; t < m; ++t)
+              if (t % ranks != 0) journal->append(first + static_cast<long>(todo[c0 + t]), point(todo[c0 + t]), sse_of[t][0]);
           });
-      for (std::size_t t = 0; t < m; ++t) res.sse[static_cast<std::size_t>(todo[first + t])] = sse_of[t][0];
-      if (ranks > 1)
-        rootWrites([&] {
-          for (std::size_t t = 0; t < m; ++t)
-            if (t % ranks != 0) journal->append(todo[first + t], point(todo[first + t]), sse_of[t][0]);
-        });
-    }
+      }
+      return out;
+    };
+    res.rounds = runAdaptiveDesign(res.region, n, options.designOptions(), evaluate);
+    if (!resumed.empty())
+      throw InputError(journal_path, "holds design point " + std::to_string(resumed.begin()->first) +
+                                         ", which this calibration's design does not have (made by another version?); delete it to start over");
   }
+  res.design = res.rounds.points;
+  res.sse = res.rounds.sse;
   for (double s : res.sse) res.design_failures += std::isfinite(s) ? 0 : 1;
-  rootWrites([&] { writeDesignTableCsv((fs::path(out_dir) / "design.csv").string(), res.names, res.design, res.sse); });
+  {
+    std::vector<double> round_of(res.sse.size());
+    for (const auto& r : res.rounds.rounds)
+      for (int i = r.first; i < r.first + r.count; ++i) round_of[static_cast<std::size_t>(i)] = r.index;
+    rootWrites([&] {
+      writeDesignTableCsv((fs::path(out_dir) / "design.csv").string(), res.names, res.design, res.sse, "sse",
+                          {{"round", round_of}, {"log_design_weight", res.rounds.log_weight}});
+    });
+  }
   res.stage_wall_s.push_back({"design", secondsSince(t0)});
 
-  // Stage 4: two-block Griddy Gibbs (cheap, deterministic from the seed: never persisted
-  // half-way, always rerun).
+  // Stage 4: two-block Griddy Gibbs with the design weights (cheap, deterministic from the seed:
+  // never persisted half-way, always rerun).
   t0 = std::chrono::steady_clock::now();
   report("gibbs", 0, 1);
   GibbsOptions go;
@@ -818,7 +1015,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   go.a = options.tau_prior_a;
   go.b = options.tau_prior_b;
   go.seed = options.seed;
-  res.chains = runGriddyGibbs(res.sse, n, go);
+  res.chains = runGriddyGibbs(res.sse, n, go, res.rounds.log_weight);
   res.posterior = summarisePosterior(res.design, res.chains, res.names);
   report("gibbs", 1, 1);
   rootWrites([&] {

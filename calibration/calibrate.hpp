@@ -1,14 +1,16 @@
 #pragma once
 // Calibration of one assembly against lab data (method.md §4): bounded multi-start SSE
-// minimisation, feasible box, Latin-hypercube design simulated in parallel, two-block Griddy
-// Gibbs, posterior summaries. Every stage is persisted in the assembly's output folder as it
+// minimisation, the region (the joint 1 % contour by default, or the paper's one-at-a-time box),
+// a design simulated in parallel (a Latin hypercube, then adaptive rounds where the posterior
+// lies), the two-block Griddy Gibbs with design weights, posterior summaries. Every stage is persisted in the assembly's output folder as it
 // finishes, so a killed calibration rerun with the same inputs continues where it stopped and
 // ends with identical results (design points are journalled one by one).
 //
 // Outputs in `out_dir` (docs/calibration.md describes every file):
 //   optimum.json        every start of the optimiser and the optimum (stage 1)
-//   box.json            the feasible box and its sweeps (stage 2)
-//   design_journal.csv  design points as they finish (resume); design.csv the full table (stage 3)
+//   box.json            the region (joint: Gauss–Newton axes and sweeps; paper: the box) (stage 2)
+//   design_journal.csv  design points as they finish (resume); design.csv the full table with
+//                       each point's round and log design weight (stage 3)
 //   posterior.csv       θ_1..θ_d, τ, design index per kept Gibbs iteration (stage 4)
 //   summary.json        everything a script needs (see CalibrationResult::toJson)
 #include <cstdint>
@@ -22,9 +24,11 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "calibration/adaptive_design.hpp"
 #include "calibration/feasible_box.hpp"
 #include "calibration/gibbs.hpp"
 #include "calibration/optimize.hpp"
+#include "calibration/region.hpp"
 #include "calibration/summary.hpp"
 #include "twin/measurement.hpp"
 #include "twin/provenance.hpp"
@@ -99,6 +103,8 @@ class LabObjective {
   double sse(const std::vector<double>& theta) const;
   /// Model predictions at every record (same order as measured()); empty on failure.
   std::vector<double> predict(const std::vector<double>& theta) const;
+  /// Weighted residuals sqrt(w)(η(θ) − y), so SSE = |r|²; empty on failure.
+  std::vector<double> residuals(const std::vector<double>& theta) const;
   /// The full traces of each data set's run at θ (empty vector on failure).
   std::vector<Trace> traces(const std::vector<double>& theta) const;
   /// The run vector (model().runParameterNames() layout) θ maps to.
@@ -139,7 +145,14 @@ struct CalibrationOptions {
   double tau_prior_a = 1e-3, tau_prior_b = 1e-3;
   std::uint64_t seed = 1;
   OptimizerOptions optimizer;
-  FeasibleBoxOptions box;
+  /// "joint" (default): the region holds the joint 1 % contour (region.hpp); "paper": the
+  /// one-at-a-time box of method.md §4 step 2.
+  std::string region = "joint";
+  FeasibleBoxOptions box;        ///< the paper's box sweeps
+  JointRegionOptions joint;      ///< the joint region
+  /// Rounds after the first Latin hypercube (adaptive_design.hpp); first_points, seed and the τ
+  /// prior are taken from lhs_points, seed and tau_prior_* when the calibration runs.
+  AdaptiveDesignOptions design;
   /// Extra optimiser starts (physical units, θ order), run before the usual ones; e.g. a nested
   /// model's optimum with the added parameters at their off values, so the larger model's
   /// optimum is never worse than the nested one's. Part of the fingerprint when not empty.
@@ -149,8 +162,12 @@ struct CalibrationOptions {
   double polish_step = 0.0;
   /// Recorded in summary.json, not part of the resume fingerprint.
   std::string command, data_path;
-  /// The sizes (optimizer_starts, lhs_points, gibbs_iterations, gibbs_burn_in) and seed of a study.
+  /// The sizes (optimizer_starts, lhs_points, gibbs_iterations, gibbs_burn_in), the [calibration]
+  /// settings (region, design, rounds) and the seed of a study.
   static CalibrationOptions fromStudy(const Study& study);
+  /// `design` with first_points = lhs_points, round_points resolved (0: lhs_points), the τ prior
+  /// and the seed.
+  AdaptiveDesignOptions designOptions() const;
   void validate() const;
   /// What changes the numbers (the resume fingerprint includes it).
   nlohmann::json toJson() const;
@@ -165,8 +182,10 @@ struct CalibrationResult {
   std::vector<std::optional<double>> truth;
   int n_data = 0;
   Optimum optimum;
-  FeasibleBox box;
-  Eigen::MatrixXd design;   ///< lhs_points x d
+  Region region;            ///< what the design covers (stage 2)
+  FeasibleBox box;          ///< the paper's box and its sweeps (region = "paper" only)
+  AdaptiveDesign rounds;    ///< the design's rounds, weights and diagnostics (stage 3)
+  Eigen::MatrixXd design;   ///< N x d, every round's points
   std::vector<double> sse;  ///< per design point (+inf: failed)
   long design_failures = 0;
   long resumed_points = 0;  ///< design points found in the journal

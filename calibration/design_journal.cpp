@@ -242,7 +242,7 @@ void DesignJournal::append(std::int64_t index, const std::vector<double>& theta,
 
 void writeDesignTableCsv(const std::string& path, const std::vector<std::string>& names,
                          const Eigen::MatrixXd& design, const std::vector<double>& sse,
-                         const std::string& sse_name) {
+                         const std::string& sse_name, const std::vector<DesignColumn>& extra) {
   if (names.size() != static_cast<std::size_t>(design.cols()))
     throw InputError(path, std::to_string(names.size()) + " column names for " +
                                std::to_string(design.cols()) + " design columns");
@@ -251,6 +251,12 @@ void writeDesignTableCsv(const std::string& path, const std::vector<std::string>
                                std::to_string(design.rows()) + " design points");
   std::vector<std::string> header = names;
   header.push_back(sse_name);
+  for (const auto& [name, values] : extra) {
+    if (values.size() != sse.size())
+      throw InputError(path, "column '" + name + "' has " + std::to_string(values.size()) + " values for " +
+                                 std::to_string(design.rows()) + " design points");
+    header.push_back(name);
+  }
   for (const auto& n : header)
     if (n.empty() || n.find_first_of(",\"\r\n") != std::string::npos)
       throw InputError(path, "column name '" + n +
@@ -268,6 +274,10 @@ void writeDesignTableCsv(const std::string& path, const std::vector<std::string>
       text += ',';
     }
     appendDouble(text, sse[static_cast<std::size_t>(i)]);
+    for (const auto& col : extra) {
+      text += ',';
+      appendDouble(text, col.second[static_cast<std::size_t>(i)]);
+    }
     text += '\n';
   }
 

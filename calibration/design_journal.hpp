@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dtwin::calib {
@@ -79,10 +80,14 @@ class DesignJournal {
   bool discarded_ = false;
 };
 
-/// Writes "names...,sse_name" and one row per design point atomically (temp file + rename).
-/// design is N x d, names has d entries (no commas, quotes or line breaks), sse has N entries.
+/// A further column of the design table: its name and one value per design point.
+using DesignColumn = std::pair<std::string, std::vector<double>>;
+
+/// Writes "names...,sse_name[,extra...]" and one row per design point atomically (temp file +
+/// rename). design is N x d, names has d entries (no commas, quotes or line breaks), sse and every
+/// extra column have N entries.
 void writeDesignTableCsv(const std::string& path, const std::vector<std::string>& names,
                          const Eigen::MatrixXd& design, const std::vector<double>& sse,
-                         const std::string& sse_name = "sse");
+                         const std::string& sse_name = "sse", const std::vector<DesignColumn>& extra = {});
 
 }  // namespace dtwin::calib

@@ -56,6 +56,71 @@ void BoxProblem::validate() const {
                      "single point theta_hat, so no box can be derived from it");
 }
 
+RaySweep sweepRay(const std::function<double(double t)>& sse_at, double t_max, double threshold,
+                  double sse0, const FeasibleBoxOptions& options, double first_step,
+                  double relative_tolerance) {
+  options.validate();
+  RaySweep r;
+  auto eval = [&](double t) {
+    ++r.evaluations;
+    const double f = sse_at(t);
+    return std::isfinite(f) ? f : std::numeric_limits<double>::infinity();
+  };
+  if (t_max <= 0.0) {
+    r.edge_sse = sse0;
+    r.clipped = true;
+    return r;
+  }
+  // 1. Geometric stepping until outside or at t_max.
+  double inside = 0.0, inside_sse = sse0;
+  double outside = 0.0, outside_sse = 0.0;
+  double h = first_step > 0.0 ? first_step : options.initial_step;
+  for (;;) {
+    if (r.evaluations >= options.max_evaluations) {
+      r.t_edge = inside;
+      r.edge_sse = inside_sse;
+      r.budget_out = true;
+      return r;
+    }
+    const bool at_end = h >= t_max;
+    const double t = at_end ? t_max : h;
+    const double f = eval(t);
+    if (f <= threshold) {
+      inside = t;
+      inside_sse = f;
+      if (at_end) {
+        r.t_edge = t_max;
+        r.edge_sse = f;
+        r.clipped = true;
+        return r;
+      }
+      h *= options.growth;
+    } else {
+      outside = t;
+      outside_sse = f;
+      break;
+    }
+  }
+  // 2. Bisection of [inside, outside].
+  r.bracketed = true;
+  auto tol = [&] { return relative_tolerance > 0.0 ? relative_tolerance * outside : options.tolerance; };
+  while (outside - inside > tol() && r.evaluations < options.max_evaluations) {
+    const double mid = 0.5 * (inside + outside);
+    const double f = eval(mid);
+    if (f <= threshold) {
+      inside = mid;
+    } else {
+      outside = mid;
+      outside_sse = f;
+    }
+  }
+  r.bracket = outside - inside;
+  r.loose = r.bracket > tol();
+  r.t_edge = outside;
+  r.edge_sse = outside_sse;
+  return r;
+}
+
 SweepResult calcBoxSweep(const SseFunction& sse, const BoxProblem& problem, int index,
                          const FeasibleBoxOptions& options) {
   problem.validate();
@@ -68,90 +133,41 @@ SweepResult calcBoxSweep(const SseFunction& sse, const BoxProblem& problem, int 
   const int dir = (index % 2 == 0) ? -1 : +1;
   const double lo = problem.lower[j], hi = problem.upper[j], range = hi - lo;
   const double bound = dir < 0 ? lo : hi;
-  const double T = problem.threshold();
   const double z0 = (problem.theta_hat[j] - lo) / range;
   const double to_bound = dir < 0 ? z0 : 1.0 - z0;  // scaled distance from θ̂ to the bound
 
-  SweepResult r;
-  r.parameter = static_cast<int>(j);
-  r.direction = dir;
-
-  std::vector<double> theta = problem.theta_hat;
   // Physical point at scaled distance t from θ̂ in direction dir (exact bound at t = to_bound).
   auto at = [&](double t) {
     return t >= to_bound ? bound : std::clamp(lo + (z0 + dir * t) * range, lo, hi);
   };
-  auto eval = [&](double t) {
-    theta[j] = at(t);
-    ++r.evaluations;
-    const double f = sse(theta);
-    return std::isfinite(f) ? f : std::numeric_limits<double>::infinity();
-  };
+  std::vector<double> theta = problem.theta_hat;
+  const RaySweep ray = sweepRay(
+      [&](double t) {
+        theta[j] = at(t);
+        return sse(theta);
+      },
+      to_bound, problem.threshold(), problem.sse_min, options);
 
-  if (to_bound <= 0.0) {
-    r.edge = bound;
-    r.edge_sse = problem.sse_min;
-    r.clipped = true;
-    return r;
-  }
-
-  // 1. Geometric stepping until outside or at the bound.
-  double inside = 0.0, inside_sse = problem.sse_min;
-  double outside = 0.0, outside_sse = 0.0;
-  double h = options.initial_step;
-  for (;;) {
-    if (r.evaluations >= options.max_evaluations) {
-      r.edge = at(inside);
-      r.edge_sse = inside_sse;
-      std::ostringstream os;
-      os << "parameter " << j << (dir < 0 ? " lower" : " upper") << " edge: the 1 % contour was "
-         << "not bracketed within " << options.max_evaluations
-         << " evaluations; the box edge is the farthest point known inside, so the box may be "
-            "too small here";
-      r.message = os.str();
-      return r;
-    }
-    const bool at_bound = h >= to_bound;
-    const double t = at_bound ? to_bound : h;
-    const double f = eval(t);
-    if (f <= T) {
-      inside = t;
-      inside_sse = f;
-      if (at_bound) {
-        r.edge = bound;
-        r.edge_sse = f;
-        r.clipped = true;
-        return r;
-      }
-      h *= options.growth;
-    } else {
-      outside = t;
-      outside_sse = f;
-      break;
-    }
-  }
-
-  // 2. Bisection of [inside, outside].
-  r.bracketed = true;
-  while (outside - inside > options.tolerance && r.evaluations < options.max_evaluations) {
-    const double mid = 0.5 * (inside + outside);
-    const double f = eval(mid);
-    if (f <= T) {
-      inside = mid;
-    } else {
-      outside = mid;
-      outside_sse = f;
-    }
-  }
-  if (outside - inside > options.tolerance) {
-    std::ostringstream os;
+  SweepResult r;
+  r.parameter = static_cast<int>(j);
+  r.direction = dir;
+  r.edge = at(ray.t_edge);
+  r.edge_sse = ray.edge_sse;
+  r.clipped = ray.clipped;
+  r.bracketed = ray.bracketed;
+  r.evaluations = ray.evaluations;
+  std::ostringstream os;
+  if (ray.budget_out) {
+    os << "parameter " << j << (dir < 0 ? " lower" : " upper") << " edge: the 1 % contour was "
+       << "not bracketed within " << options.max_evaluations
+       << " evaluations; the box edge is the farthest point known inside, so the box may be "
+          "too small here";
+  } else if (ray.loose) {
     os << "parameter " << j << (dir < 0 ? " lower" : " upper")
-       << " edge: bisection stopped by max_evaluations at a bracket of " << (outside - inside)
+       << " edge: bisection stopped by max_evaluations at a bracket of " << ray.bracket
        << " (scaled), wider than the tolerance " << options.tolerance;
-    r.message = os.str();
   }
-  r.edge = at(outside);
-  r.edge_sse = outside_sse;
+  r.message = os.str();
   return r;
 }
 

@@ -28,6 +28,7 @@
 // An exact fit (noise-free data) gives τ̂ = ∞ and T = SSE_min: the contour degenerates to the
 // point θ̂. calcFeasibleBox then throws InputError (saying so) rather than return a zero-width
 // box; a non-finite or negative SSE_min is rejected the same way.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,28 @@ struct FeasibleBox {
   bool complete() const;
   std::string briefReport() const;
 };
+
+/// One sweep along a ray from θ̂: t >= 0 is the scaled distance from θ̂, t_max where the ray leaves
+/// the calibration bounds. The stepping and bisection of the procedure above, on any ray.
+struct RaySweep {
+  double t_edge = 0.0;     ///< the edge: outer end of the final bracket, or t_max when clipped
+  double edge_sse = 0.0;   ///< SSE at t_edge (as SweepResult::edge_sse)
+  bool clipped = false;    ///< the contour reaches t_max
+  bool bracketed = false;
+  bool budget_out = false; ///< max_evaluations ran out before bracketing (t_edge: farthest inside)
+  bool loose = false;      ///< bracketed, but bisection stopped by the budget above the tolerance
+  double bracket = 0.0;    ///< final bracket width (scaled)
+  int evaluations = 0;
+};
+
+/// Sweeps `sse_at(t)` (SSE at scaled distance t along the ray, t in (0, t_max]) for the crossing
+/// of `threshold`, starting with steps of `options.initial_step` (or `first_step` when > 0).
+/// `sse0` is the SSE at t = 0. t_max <= 0: clipped at once (0 evaluations). With
+/// `relative_tolerance` > 0 the bisection stops when the bracket is below that fraction of its
+/// outer end (instead of options.tolerance).
+RaySweep sweepRay(const std::function<double(double t)>& sse_at, double t_max, double threshold,
+                  double sse0, const FeasibleBoxOptions& options, double first_step = 0.0,
+                  double relative_tolerance = 0.0);
 
 /// The one-sided sweep `index` in [0, 2d): parameter j = index / 2, direction −1 for even
 /// indices and +1 for odd ones. Independent of every other sweep (run them in any order).

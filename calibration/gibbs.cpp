@@ -62,12 +62,18 @@ void GibbsOptions::validate() const {
 }
 
 GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
-                           const GibbsOptions& options) {
+                           const GibbsOptions& options, const std::vector<double>& log_weight) {
   const std::string where = "griddy gibbs";
   options.validate();
   if (n_data < 1)
     throw InputError(where, "number of data points n must be >= 1, got " + std::to_string(n_data));
 
+  if (!log_weight.empty() && log_weight.size() != sse.size())
+    throw InputError(where, "log_weight has " + std::to_string(log_weight.size()) + " values for " +
+                                std::to_string(sse.size()) + " design points");
+  for (std::size_t k = 0; k < log_weight.size(); ++k)
+    if (!std::isfinite(log_weight[k]))
+      throw InputError(where, "log design weight of point " + std::to_string(k) + " is not finite");
   // Finite points, sorted by SSE (ties by index: deterministic).
   std::vector<int> order;
   order.reserve(sse.size());
@@ -97,11 +103,22 @@ GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
                                 std::to_string(order.front()) + " has SSE 0");
 
   const std::size_t m_all = order.size();
-  std::vector<double> half_delta(m_all), rate(m_all);
+  std::vector<double> half_delta(m_all), rate(m_all), omega;
   for (std::size_t m = 0; m < m_all; ++m) {
     const double s = sse[static_cast<std::size_t>(order[m])];
     half_delta[m] = 0.5 * (s - sse_min);
     rate[m] = options.b + 0.5 * s;
+  }
+  // Design weights relative to the largest, so ω_m <= 0: exp(ω_m − τΔ_m/2) <= exp(−τΔ_m/2).
+  bool weighted = false;
+  if (!log_weight.empty()) {
+    double mx = -std::numeric_limits<double>::infinity();
+    for (int k : order) mx = std::max(mx, log_weight[static_cast<std::size_t>(k)]);
+    omega.resize(m_all);
+    for (std::size_t m = 0; m < m_all; ++m) {
+      omega[m] = log_weight[static_cast<std::size_t>(order[m])] - mx;
+      weighted = weighted || omega[m] != 0.0;
+    }
   }
   std::vector<double> cum(m_all);
 
@@ -125,13 +142,30 @@ GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
     // k | τ: cumulative weights over the sorted points, cut where exp() underflows to 0.
     double total = 0.0;
     std::size_t m = 0;
-    for (; m < m_all; ++m) {
-      const double x = tau * half_delta[m];
-      if (x > kUnderflow) break;
-      total += std::exp(-x);
-      cum[m] = total;
+    if (!weighted) {
+      for (; m < m_all; ++m) {
+        const double x = tau * half_delta[m];
+        if (x > kUnderflow) break;
+        total += std::exp(-x);
+        cum[m] = total;
+      }
+      DTWIN_CHECK(m >= 1 && total >= 1.0, "the best design point must carry weight 1");
+    } else {
+      // The largest log weight M first (the points are sorted by SSE, so once −τΔ/2 < M − 746 no
+      // later point can matter), then the cumulative sums of exp(ω − τΔ/2 − M) over that prefix.
+      double top = -std::numeric_limits<double>::infinity();
+      std::size_t end = 0;
+      for (; end < m_all; ++end) {
+        const double x = tau * half_delta[end];
+        if (-x < top - kUnderflow) break;
+        top = std::max(top, omega[end] - x);
+      }
+      for (; m < end; ++m) {
+        total += std::exp(omega[m] - tau * half_delta[m] - top);
+        cum[m] = total;
+      }
+      DTWIN_CHECK(m >= 1 && total >= 1.0, "the heaviest design point must carry weight 1");
     }
-    DTWIN_CHECK(m >= 1 && total >= 1.0, "the best design point must carry weight 1");
     const double target = rng.uniform() * total;
     std::size_t pos = static_cast<std::size_t>(
         std::upper_bound(cum.begin(), cum.begin() + static_cast<std::ptrdiff_t>(m), target) -

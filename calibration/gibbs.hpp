@@ -19,6 +19,13 @@
 // this sign wrong), so the best point has weight exactly 1 and the sum never overflows or
 // underflows to 0. Points with non-finite SSE (failed simulations) get weight 0.
 //
+// \par Design weights
+// When the design points are not a uniform sample of the box (an adaptive design,
+// adaptive_design.hpp), each point stands for a volume ∝ 1/q(θ_k) and carries a log design weight
+// ω_k = −log q(θ_k):
+//     P(k | τ, y)  ∝ exp(ω_k − τ SSE_k / 2).
+// Equal ω_k (or none given) is the paper's sampler, bit for bit.
+//
 // \par Implementation
 // The finite points are sorted once by SSE. Each iteration accumulates the cumulative weights in
 // that order and stops as soon as τ (SSE_k − SSE_min)/2 > 746, where exp() underflows to exactly
@@ -71,9 +78,11 @@ struct GibbsChains {
 };
 
 /// Runs the two-block Gibbs sampler. `sse[k]` is SSE at design point k (+inf = failed);
-/// n_data >= 1. Throws InputError when there is no finite SSE, an SSE is negative, n_data < 1,
-/// or the options are invalid.
+/// n_data >= 1; `log_weight` (empty: all equal) the design weights ω_k, finite, one per point.
+/// Throws InputError when there is no finite SSE, an SSE is negative, n_data < 1, the weights
+/// have the wrong size or are not finite, or the options are invalid.
 GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
-                           const GibbsOptions& options = {});
+                           const GibbsOptions& options = {},
+                           const std::vector<double>& log_weight = {});
 
 }  // namespace dtwin::calib

@@ -97,6 +97,52 @@ void OptimizerOptions::validate() const {
   if (!(initial_step > 0.0 && initial_step <= 0.5))
     throw InputError(where, "initial_step must be in (0, 0.5] (scaled units), got " +
                                 fmt(initial_step));
+  if (screen_per_start < 0)
+    throw InputError(where, "screen_per_start must be >= 0, got " + std::to_string(screen_per_start));
+}
+
+std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lower, const std::vector<double>& upper,
+                                                 int starts, int per_start, std::uint64_t seed) {
+  checkBounds(lower, upper, "optimizer");
+  const std::size_t d = lower.size();
+  std::vector<std::vector<double>> out;
+  std::vector<double> centre(d);
+  for (std::size_t j = 0; j < d; ++j) centre[j] = 0.5 * (lower[j] + upper[j]);
+  out.push_back(centre);
+  const int n = std::max(starts, 1) * std::max(per_start, 0);
+  if (n > 0) {
+    constexpr std::uint64_t kStreamScreen = 0x5343'5200'0000'0007ULL;  // "SCR"
+    const Eigen::MatrixXd x = latinHypercube(n, lower, upper, splitmix64(seed ^ kStreamScreen));
+    for (int i = 0; i < n; ++i) {
+      std::vector<double> p(d);
+      for (std::size_t j = 0; j < d; ++j) p[j] = x(i, static_cast<Eigen::Index>(j));
+      out.push_back(std::move(p));
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> bestStarts(const std::vector<std::vector<double>>& candidates, const std::vector<double>& sse,
+                                            const std::vector<double>& lower, const std::vector<double>& upper, int starts) {
+  DTWIN_CHECK(candidates.size() == sse.size() && !candidates.empty(), "bestStarts needs one SSE per candidate");
+  std::vector<std::size_t> order(candidates.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto key = [&](std::size_t i) { return std::isfinite(sse[i]) ? sse[i] : std::numeric_limits<double>::infinity(); };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  std::vector<std::vector<double>> out;
+  for (std::size_t i : order) {
+    if (static_cast<int>(out.size()) >= starts) break;
+    bool near = false;
+    for (const auto& s : out) {
+      double dmax = 0.0;
+      for (std::size_t j = 0; j < s.size(); ++j) dmax = std::max(dmax, std::abs(s[j] - candidates[i][j]) / (upper[j] - lower[j]));
+      near = near || dmax < 0.05;
+    }
+    if (!near) out.push_back(candidates[i]);
+  }
+  for (std::size_t i : order)  // fewer distinct candidates than starts: fill up in SSE order
+    if (static_cast<int>(out.size()) < starts && std::find(out.begin(), out.end(), candidates[i]) == out.end()) out.push_back(candidates[i]);
+  return out;
 }
 
 std::vector<std::vector<double>> optimizerStarts(const std::vector<double>& lower,
@@ -200,10 +246,29 @@ Optimum minimiseSse(const SseFunction& sse, const std::vector<double>& lower,
                     const std::vector<double>& upper, int starts, std::uint64_t seed,
                     const OptimizerOptions& options, const ParallelFor& parallel_for) {
   options.validate();
-  const std::vector<std::vector<double>> x0 = optimizerStarts(lower, upper, starts, seed);
+  checkBounds(lower, upper, "optimizer");
+  if (starts < 1) throw InputError("optimizer", "number of starts must be >= 1, got " + std::to_string(starts));
+  std::vector<std::vector<double>> x0;
+  const ParallelFor& run = parallel_for ? parallel_for : ParallelFor(sequentialFor);
+  if (options.screen_per_start > 0) {
+    const auto cand = screeningPoints(lower, upper, starts, options.screen_per_start, seed);
+    std::vector<double> f(cand.size());
+    std::vector<std::exception_ptr> errs(cand.size());
+    run(static_cast<int>(cand.size()), [&](int i) {
+      try {
+        f[static_cast<std::size_t>(i)] = sse(cand[static_cast<std::size_t>(i)]);
+      } catch (...) {
+        errs[static_cast<std::size_t>(i)] = std::current_exception();
+      }
+    });
+    for (const auto& e : errs)
+      if (e) std::rethrow_exception(e);
+    x0 = bestStarts(cand, f, lower, upper, starts);
+  } else {
+    x0 = optimizerStarts(lower, upper, starts, seed);
+  }
   std::vector<StartResult> results(x0.size());
   std::vector<std::exception_ptr> errors(x0.size());
-  const ParallelFor& run = parallel_for ? parallel_for : ParallelFor(sequentialFor);
   run(starts, [&](int i) {
     DTWIN_CHECK(i >= 0 && i < starts, "parallel_for called a task index out of range");
     const auto k = static_cast<std::size_t>(i);

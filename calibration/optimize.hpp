@@ -20,8 +20,17 @@
 // through OptimizerOptions::algorithm when the SSE is rough.
 //
 // \par Starts
-// Start 0 is the box centre z = (½, .., ½); starts 1..m−1 are the rows of a Latin hypercube of
-// m−1 points in [0,1]^d drawn with RandomStream(seed, kStreamOptimizerStarts, ·) (see lhs.hpp).
+// Without screening: start 0 is the box centre z = (½, .., ½); starts 1..m−1 are the rows of a
+// Latin hypercube of m−1 points in [0,1]^d drawn with RandomStream(seed, kStreamOptimizerStarts, ·)
+// (see lhs.hpp).
+// With screening (screen_per_start = s > 0, the default): the SSE is first evaluated at the box
+// centre and at a Latin hypercube of s·m points of the bounds (its own seeded stream), and the m
+// starts are the best of them, in order of SSE (ties by index), skipping a candidate within 0.05
+// (scaled, largest coordinate difference) of a start already taken. A local optimiser started in
+// a random place stops in the nearest basin; when the SSE is rugged (a wheel that loses and regains
+// contact between two sample times makes steps in it) most such basins are poor: on the demo's
+// solid-axle assembly all four unscreened starts stopped 6 to 39 noise variances above the SSE of
+// the true parameters in 3 seeds of 8. Screening costs s·m + 1 simulations, run in parallel.
 // The best start is the one with the smallest SSE; ties go to the lowest start index, so the
 // answer does not depend on the order in which a parallel hook runs the starts.
 //
@@ -54,6 +63,7 @@ struct OptimizerOptions {
   double ftol_abs = 0.0;     ///< ... or by < ftol_abs [SSE units]; 0 = off
   int maxeval = 2000;        ///< evaluation budget per start (>= 1)
   double initial_step = 0.1; ///< initial step in scaled units, in (0, 0.5]
+  int screen_per_start = 25; ///< screening points per start (0: no screening), >= 0
   /// Throws InputError naming the field, the value and the broken rule.
   void validate() const;
 };
@@ -80,11 +90,21 @@ struct Optimum {
   std::string fullReport() const;
 };
 
-/// The starting points (physical units) minimiseSse uses: row 0 the box centre, rows 1.. a
-/// Latin hypercube of starts−1 points. Exposed so callers can log or replay them.
+/// The unscreened starting points (physical units): row 0 the box centre, rows 1.. a Latin
+/// hypercube of starts−1 points. Exposed so callers can log or replay them.
 std::vector<std::vector<double>> optimizerStarts(const std::vector<double>& lower,
                                                  const std::vector<double>& upper, int starts,
                                                  std::uint64_t seed);
+
+/// The screening candidates (physical units): the box centre, then a Latin hypercube of
+/// per_start · starts points of the bounds.
+std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lower, const std::vector<double>& upper,
+                                                 int starts, int per_start, std::uint64_t seed);
+
+/// The `starts` best screening candidates by SSE (ties by index, non-finite last), skipping one
+/// within 0.05 scaled units (largest coordinate difference) of a start already taken.
+std::vector<std::vector<double>> bestStarts(const std::vector<std::vector<double>>& candidates, const std::vector<double>& sse,
+                                            const std::vector<double>& lower, const std::vector<double>& upper, int starts);
 
 /// One local NLopt run from `start` (physical units, inside the bounds).
 StartResult minimiseFrom(const SseFunction& sse, const std::vector<double>& lower,

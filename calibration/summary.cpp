@@ -138,7 +138,7 @@ PosteriorSummary summarisePosterior(const Eigen::MatrixXd& design, const GibbsCh
     os << "design too coarse for the data: design point " << out.top_point << " carries "
        << 100.0 * out.top_share << " % of the " << S << " draws (" << out.distinct_points
        << " distinct points visited); the posterior is essentially a single point, so its "
-          "spread is not resolved. Use a smaller box or more design points.";
+          "spread is not resolved. Use more design points (lhs_points, [calibration] round_points, max_rounds) or the adaptive design.";
     out.message = os.str();
   }
   return out;

@@ -17,7 +17,7 @@
 // If a single design point carries more than `dominance_threshold` (default 0.9) of the draws,
 // the posterior is essentially that one point: the design is too coarse for the data (the
 // likelihood is narrower than the spacing of the design points). The summary flags this and
-// says so; the remedy is a smaller box or more design points.
+// says so; the remedy is more design points or the adaptive design (adaptive_design.hpp).
 #include <Eigen/Core>
 #include <string>
 #include <vector>

@@ -10,10 +10,12 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "calibration/calibrate.hpp"
+#include "calibration/summary.hpp"
 #include "classification/svg_plot.hpp"
 #include "classification/synthesis.hpp"
 #include "subsystems/errors.hpp"
@@ -285,7 +287,9 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
   // ---- 2. posterior histograms
   body << "<h2 id=\"posterior\">2. Posterior of θ and τ</h2>\n<p>Histograms (40 bins) of every kept Gibbs iteration of "
           "<code>calibration/&lt;id&gt;/posterior.csv</code>; θ takes only design-point values, so bars may be sparse. "
-          "The red line marks the truth when the study knows it and it lies in the plotted range.</p>\n";
+          "Dashed lines mark the 95 % interval (2.5 % and 97.5 % quantiles, as in <code>summary.json</code>). When the study "
+          "knows the truth, a red line marks it, the axis is widened to show it, and the sentence under the figure says "
+          "whether the interval holds it.</p>\n";
   for (std::size_t m = 0; m < assemblies.size(); ++m) {
     const auto& a = assemblies[m];
     const auto& post = posts[m];
@@ -296,6 +300,7 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
     s << "set multiplot layout " << rws << "," << cols << " title " << gq(a.id + " (" + a.label() + "): posterior, " +
                                                                            std::to_string(post.size()) + " iterations")
       << " noenhanced\nset style fill solid 0.6 border lc rgb '#333333'\nset ylabel 'count'\nset format x '%.5g'\n";
+    std::vector<std::string> truth_notes;
     for (int j = 0; j < np; ++j) {
       std::vector<double> v;
       if (j < np - 1)
@@ -304,6 +309,22 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
         v = post.tau;
       const auto [mn_it, mx_it] = std::minmax_element(v.begin(), v.end());
       double lo = *mn_it, hi = *mx_it;
+      std::vector<double> sorted = v;
+      std::sort(sorted.begin(), sorted.end());
+      const double q025 = calib::quantileSorted(sorted, 0.025), q975 = calib::quantileSorted(sorted, 0.975);
+      std::optional<double> truth;
+      for (const auto& cp : study.calibrated)
+        if (j < np - 1 && cp.name == names[static_cast<std::size_t>(j)] && cp.truth) truth = *cp.truth;
+      if (truth) {
+        // Widen the axis to show the truth, with a margin of 5 % of the span.
+        const double span = std::max(std::max(hi, *truth) - std::min(lo, *truth), 1e-12 * std::max(1.0, std::abs(*truth)));
+        if (*truth < lo) lo = *truth - 0.05 * span;
+        if (*truth > hi) hi = *truth + 0.05 * span;
+        const bool inside = *truth >= q025 && *truth <= q975;
+        truth_notes.push_back(names[static_cast<std::size_t>(j)] + ": the truth " + num(*truth, 6) +
+                              (inside ? " lies inside" : (*truth < q025 ? " lies BELOW" : " lies ABOVE")) + " the 95 % interval [" +
+                              num(q025, 6) + ", " + num(q975, 6) + "]");
+      }
       if (hi - lo <= 1e-12 * std::max(1.0, std::abs(lo))) {
         const double d = std::max(std::abs(lo) * 1e-3, 1e-12);
         lo -= d;
@@ -319,18 +340,20 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
       s << "unset arrow\nset xrange [" << full(lo) << ":" << full(hi) << "]\nset boxwidth " << full(w) << " absolute\n"
         << "set xtics (" << full(lo + 0.1 * (hi - lo)) << ", " << full(lo + 0.5 * (hi - lo)) << ", " << full(lo + 0.9 * (hi - lo))
         << ")\n";
-      for (const auto& cp : study.calibrated)
-        if (j < np - 1 && cp.name == names[static_cast<std::size_t>(j)] && cp.truth && *cp.truth >= lo && *cp.truth <= hi)
-          s << "set arrow from " << full(*cp.truth) << ", graph 0 to " << full(*cp.truth) << ", graph 1 nohead lw 2 lc rgb '#c03020'\n";
+      for (double q : {q025, q975})
+        s << "set arrow from " << full(q) << ", graph 0 to " << full(q) << ", graph 1 nohead lw 1 dt 2 lc rgb '#222222'\n";
+      if (truth)
+        s << "set arrow from " << full(*truth) << ", graph 0 to " << full(*truth) << ", graph 1 nohead lw 2 lc rgb '#c03020'\n";
       s << "set xlabel " << gq(names[static_cast<std::size_t>(j)]) << " noenhanced\n"
         << "plot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle\n";
     }
-    figure(gp.plot(s.str(), 900, 300 * rws, a.id + " posterior histograms"),
-           htmlEscape(a.id + ": θ = (" + [&] {
-             std::string r;
-             for (std::size_t j = 0; j < post.names.size(); ++j) r += (j ? ", " : "") + post.names[j];
-             return r;
-           }() + "), τ the error precision [1/unit²]; noise sd = 1/√τ."));
+    std::string caption = a.id + ": θ = (" + [&] {
+      std::string r;
+      for (std::size_t j = 0; j < post.names.size(); ++j) r += (j ? ", " : "") + post.names[j];
+      return r;
+    }() + "), τ the error precision [1/unit²]; noise sd = 1/√τ.";
+    for (const auto& t : truth_notes) caption += " " + t + ".";
+    figure(gp.plot(s.str(), 900, 300 * rws, a.id + " posterior histograms"), htmlEscape(caption));
     plots.push_back({{"name", "posterior_" + a.id}, {"kind", "posterior_histograms"}, {"assembly", a.id}});
   }
 

@@ -20,7 +20,7 @@ namespace dtwin::cli {
 namespace {
 
 struct CalibrateConfig {
-  std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out;
+  std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out, region, design;
   int threads = 0;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
   long long seed = -1;
@@ -44,6 +44,11 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   if (cfg.burn_in >= 0) opt.gibbs_burn_in = static_cast<int>(cfg.burn_in);
   if (cfg.starts > 0) opt.optimizer_starts = static_cast<int>(cfg.starts);
   if (cfg.seed >= 0) opt.seed = static_cast<std::uint64_t>(cfg.seed);
+  if (!cfg.region.empty()) {
+    opt.region = cfg.region;
+    if (cfg.design.empty()) opt.design.adaptive = cfg.region == "joint";  // the region's default design
+  }
+  if (!cfg.design.empty()) opt.design.adaptive = cfg.design == "adaptive";
   opt.command = command;
   opt.data_path = cfg.data;
   if (opt.gibbs_burn_in >= opt.gibbs_iterations)
@@ -52,10 +57,14 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   const std::string data_hash = std::to_string(calib::fnv1a64(readFileBytes(cfg.data)));
 
   const bool bar_on = !cfg.quiet && stderrIsTerminal();
-  if (!cfg.quiet)
-    std::printf("calibrating %zu assembl%s against %s (%zu records): %d starts, %d design points, %d Gibbs iterations (%d burn-in)\n",
-                targets.size(), targets.size() == 1 ? "y" : "ies", cfg.data.c_str(), data.records.size(),
-                opt.optimizer_starts, opt.lhs_points, opt.gibbs_iterations, opt.gibbs_burn_in);
+  if (!cfg.quiet) {
+    const std::string rounds = opt.design.adaptive ? " + up to " + std::to_string(opt.design.max_rounds) + " adaptive rounds of " +
+                                                         std::to_string(opt.designOptions().round_points)
+                                                   : std::string();
+    std::printf("calibrating %zu assembl%s against %s (%zu records): %d starts, %s region, %d design points%s, %d Gibbs iterations (%d burn-in)\n",
+                targets.size(), targets.size() == 1 ? "y" : "ies", cfg.data.c_str(), data.records.size(), opt.optimizer_starts,
+                opt.region.c_str(), opt.lhs_points, rounds.c_str(), opt.gibbs_iterations, opt.gibbs_burn_in);
+  }
   nlohmann::json index;
   index["program"] = programInfo();
   index["command"] = command;
@@ -75,28 +84,22 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
     const std::string dir = (fs::path(cfg.out) / a.id).string();
     const calib::CalibrationResult r = calibrateAssembly(study, a, data, cfg.scenario, opt, dir, data_hash, progress);
     bar.finish();
-    nlohmann::json j = r.toJson();
-    j["program"] = programInfo();
-    j["command"] = command;
-    j["created_utc"] = utcNow();
-    j["study"] = study.path;
-    j["scenario"] = cfg.scenario;
-    j["data"] = {{"path", cfg.data}, {"records", data.records.size()}, {"fnv1a64", data_hash}};
-    j["options"] = opt.toJson();
-    j["threads"] = cfg.threads;
-    rootWrites([&] { writeFileAtomic((fs::path(dir) / "summary.json").string(), j.dump(2) + "\n"); });
     index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
     if (!cfg.quiet) {
-      std::printf("%-4s %-26s SSE_min %.4g  tau %.3g (noise var %.0f N^2)  distinct points %d  top share %.2f  failures %ld  %.1f s\n",
+      std::printf("%-4s %-26s SSE_min %.4g  tau %.3g (noise var %.0f N^2)  design %ld points in %zu round%s (importance ESS %.0f)  "
+                  "distinct points %d  top share %.2f  failures %ld  %.1f s\n",
                   a.id.c_str(), a.label().c_str(), r.optimum.sse, r.posterior.tau.mean,
-                  r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0, r.posterior.distinct_points, r.posterior.top_share,
-                  r.design_failures, r.stage_wall_s.back().second);
+                  r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0, static_cast<long>(r.design.rows()),
+                  r.rounds.rounds.size(), r.rounds.rounds.size() == 1 ? "" : "s", r.rounds.ess, r.posterior.distinct_points,
+                  r.posterior.top_share, r.design_failures, r.stage_wall_s.back().second);
       for (std::size_t k = 0; k < r.names.size(); ++k) {
         const auto& p = r.posterior.parameters[k];
         std::printf("       %-22s mean %-11.5g sd %-10.4g 95%% [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd, p.q025, p.q975,
                     r.truth[k] ? (" truth " + formatExact(*r.truth[k])).c_str() : "");
       }
       if (r.posterior.design_too_coarse) std::printf("       note: %s\n", r.posterior.message.c_str());
+      for (const auto& w : r.rounds.warnings) std::printf("       note: %s\n", w.c_str());
+      for (const auto& m : r.region.messages) std::printf("       note: %s\n", m.c_str());
       if (r.design_failures) std::printf("       note: %ld design simulations failed (SSE = inf, weight 0)\n", r.design_failures);
     }
   }
@@ -122,6 +125,14 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
       ->check(CLI::Range(1L, 100000000L));
   c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
   c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
+  c->add_option("--region", cfg->region,
+                 "Region the design covers: joint (the joint 1 % likelihood-ratio contour, default) or paper (the paper's "
+                 "one-at-a-time box); default: the study's [calibration] region")
+      ->check(CLI::IsMember({"joint", "paper"}));
+  c->add_option("--design", cfg->design,
+                "adaptive (a Latin hypercube, then rounds where the posterior lies) or lhs (one Latin hypercube); "
+                "default: the study's [calibration] design (adaptive for joint, lhs for paper)")
+      ->check(CLI::IsMember({"adaptive", "lhs"}));
   c->add_option("--seed", cfg->seed, "Seed of the design and the sampler (default: the study's seed)")->check(CLI::Range(0LL, (1LL << 62)));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   return {c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }};

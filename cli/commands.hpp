@@ -30,6 +30,8 @@ CommandHandle addBenchCommand(CLI::App& root);
 CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line);
 /// `twin calibrate`: Griddy Gibbs calibration of assemblies against lab data (calibration/calibrate.hpp).
 CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_line);
+/// `twin coverage`: how often the calibration's 95 % intervals hold the truth (calibration/coverage.hpp).
+CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line);
 /// `twin synthesize`: synthetic field data per calibrated assembly as moments (classification/synthesis.hpp).
 CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_line);
 /// `twin classify`: field records among synthesized assemblies, cost-aware choice (classification/classify_field.hpp).

@@ -28,6 +28,7 @@ int runTwin(int argc, char** argv, std::string& error) {
   commands.push_back(addBenchCommand(app));
   commands.push_back(addGenerateCommand(app, command));
   commands.push_back(addCalibrateCommand(app, command));
+  commands.push_back(addCoverageCommand(app, command));
   commands.push_back(addSynthesizeCommand(app, command));
   commands.push_back(addClassifyCommand(app, command));
   commands.push_back(addStudyCommand(app, command));

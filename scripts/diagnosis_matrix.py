@@ -2,7 +2,8 @@
 # Usage: python3 scripts/diagnosis_matrix.py OUT_ROOT SEEDS(1,2,..) [EFFECTS(a,b,..|none|ooc:EFFECT)] ["extra diagnose args"]
 #   hidden effect -> diagnose verdict, recovery, error cut. `ooc:EFFECT` hides EFFECT and diagnoses with a
 #   catalogue that lacks it (--effects = every other effect): the out-of-catalogue case, expected "unexplained".
-# Diagnosis confusion matrix: hidden effect -> verdict/named effect, parameter recovery, error fall.
+# Diagnosis confusion matrix: hidden effect -> verdict/named effect, parameter recovery (mean, 95 % interval and
+# whether it holds the hidden value), error fall.
 import subprocess, json, sys, os, math, time
 T=os.environ.get('TWIN','/work/main/build/cli/twin')
 CH='hub_force_fl_N,hub_force_fr_N,hub_force_rl_N,hub_force_rr_N'
@@ -44,7 +45,9 @@ for name in names:
                 hid=dict(kv.split('=') for kv in cases[name].split(':')[1].split(','))
                 for k,v in hid.items():
                     pm=r['parameters'].get(name+'.'+k)
-                    if pm: rec+=f" {k}={pm['mean']:.3g}({100*(pm['mean']/float(v)-1):+.0f}%)"
+                    if pm:
+                        lo,hi=pm['ci95']; held='in' if lo<=float(v)<=hi else 'OUT'
+                        rec+=f" {k}={pm['mean']:.3g}({100*(pm['mean']/float(v)-1):+.0f}%) 95% [{lo:.3g},{hi:.3g}] {held}"
     fall=''
     if 'before' in j:
         b=j['before']['systematic_rms_noise_sd']; a=j['after']['systematic_rms_noise_sd']

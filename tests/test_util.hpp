@@ -32,7 +32,8 @@ inline std::filesystem::path writeTinyStudy(const std::filesystem::path& path, i
   return writeDemoStudy(path,
                         "lab_repetitions = 3\nfield_runs = 4\nlhs_points = 10\ngibbs_iterations = 300\ngibbs_burn_in = 100\n"
                         "posterior_draws = 4\nroads_per_draw = 2\nroad_library = 8\noptimizer_starts = " +
-                            std::to_string(optimizer_starts) + "\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n");
+                            std::to_string(optimizer_starts) +
+                            "\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n\n[calibration]\nmax_rounds = 2\n");
 }
 
 /// The calibrated parameters' truths of a study, in study order.

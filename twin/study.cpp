@@ -151,6 +151,11 @@ RoadSpec parseRoad(TableReader& r, const std::string& scenario) {
 
 }  // namespace
 
+nlohmann::json CalibrationSettings::toJson() const {
+  return {{"region", region}, {"design", designOrDefault()}, {"round_points", round_points}, {"max_rounds", max_rounds},
+          {"target_ess", target_ess}, {"margin", margin}};
+}
+
 const std::map<std::string, long>& knownSizes() {
   static const std::map<std::string, long> k = {
       {"lab_repetitions", 10}, {"field_runs", 500},     {"lhs_points", 2000},      {"gibbs_iterations", 50000},
@@ -385,6 +390,40 @@ Study loadStudy(const std::string& path) {
     }
     r.finish();
   }
+  if (auto* t = top.table("calibration")) {
+    TableReader r(*t, path, "calibration");
+    auto& c = s.calibration;
+    if (auto v = r.string("region")) {
+      if (*v != "joint" && *v != "paper")
+        throw InputError(r.where("region"), "must be \"joint\" (the joint 1 % likelihood-ratio region, default) or \"paper\" "
+                                            "(the paper's one-at-a-time box), got \"" + *v + "\"");
+      c.region = *v;
+    }
+    if (auto v = r.string("design")) {
+      if (*v != "adaptive" && *v != "lhs")
+        throw InputError(r.where("design"), "must be \"adaptive\" (Latin hypercube, then rounds where the posterior lies) or "
+                                            "\"lhs\" (one Latin hypercube), got \"" + *v + "\"");
+      c.design = *v;
+    }
+    if (auto v = r.integer("round_points")) {
+      c.round_points = *v;
+      if (c.round_points < 2) throw InputError(r.where("round_points"), "must be an integer >= 2, got " + std::to_string(c.round_points));
+    }
+    if (auto v = r.integer("max_rounds")) {
+      c.max_rounds = *v;
+      if (c.max_rounds < 0 || c.max_rounds > 100)
+        throw InputError(r.where("max_rounds"), "must be an integer in [0, 100], got " + std::to_string(c.max_rounds));
+    }
+    if (auto v = r.number("target_ess")) {
+      c.target_ess = *v;
+      if (!(std::isfinite(c.target_ess) && c.target_ess > 0)) throw InputError(r.where("target_ess"), "must be a finite number > 0");
+    }
+    if (auto v = r.number("margin")) {
+      c.margin = *v;
+      if (!(std::isfinite(c.margin) && c.margin >= 1 && c.margin <= 10)) throw InputError(r.where("margin"), "must be a number in [1, 10]");
+    }
+    r.finish();
+  }
   top.finish();
 
   // Cross-checks against the vehicle data: names, units and bounds of calibrated parameters.
@@ -500,6 +539,7 @@ nlohmann::json Study::toJson() const {
   j["noise_variance_N2"] = noise_variance_N2;
   j["sizes"] = sizes;
   j["lab"] = lab.toJson();
+  j["calibration"] = calibration.toJson();
   return j;
 }
 

@@ -48,6 +48,20 @@ struct LabSettings {
   nlohmann::json toJson() const;
 };
 
+/// Optional [calibration] table: how the calibration covers the posterior (docs/study-file.md,
+/// docs/calibration.md). Values are checked when the study is read.
+struct CalibrationSettings {
+  std::string region = "joint";  ///< "joint" (the joint 1 % contour) or "paper" (one-at-a-time box)
+  std::string design;            ///< "adaptive" or "lhs"; empty: adaptive for joint, lhs for paper
+  long round_points = 0;         ///< points per adaptive round (0: sizes.lhs_points)
+  long max_rounds = 8;           ///< adaptive rounds after the first Latin hypercube, >= 0
+  double target_ess = 400.0;     ///< importance ESS at which the rounds may stop, > 0
+  double margin = 1.25;          ///< joint region: extents = margin x the contour's, >= 1
+  /// "adaptive" or "lhs", the default resolved.
+  std::string designOrDefault() const { return design.empty() ? (region == "paper" ? "lhs" : "adaptive") : design; }
+  nlohmann::json toJson() const;
+};
+
 struct Study {
   std::string path;
   std::string name, description;
@@ -63,6 +77,7 @@ struct Study {
   double noise_variance_N2 = 18000.0;
   std::map<std::string, long> sizes;
   LabSettings lab;
+  CalibrationSettings calibration;
 
   std::vector<AssemblySpec> assemblies() const;
   AssemblySpec assembly(const std::string& id) const;  ///< InputError if unknown

@@ -49,6 +49,9 @@ CalibrationOptions smallOptions(int threads) {
   o.optimizer.maxeval = 40;
   o.box.max_evaluations = 12;
   o.lhs_points = 12;
+  o.design.round_points = 10;
+  o.design.max_rounds = 2;
+  o.joint.ridge_steps = 4;
   o.gibbs_iterations = 600;
   o.gibbs_burn_in = 100;
   o.seed = 7;
@@ -73,12 +76,32 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
     EXPECT_EQ(slurp(dir / "t1" / file), slurp(dir / "t2" / file)) << file;
   EXPECT_FALSE(slurp(dir / "t1" / "posterior.csv").empty());
   EXPECT_EQ(r1.posterior.parameters[0].mean, r2.posterior.parameters[0].mean);
-  // The box holds the optimum; a design point better than the optimum is reported.
+  // The region holds the optimum; a design point better than the optimum is reported.
   const double best_design = *std::min_element(r1.sse.begin(), r1.sse.end());
   EXPECT_EQ(r1.toJson()["design"]["better_than_optimum"].get<bool>(), best_design < r1.optimum.sse);
+  EXPECT_EQ(r1.region.kind, "joint");
+  EXPECT_TRUE(r1.region.contains(r1.region.toScaled(r1.optimum.theta)));
+  EXPECT_EQ(r1.rounds.rounds.size(), 3u);  // round 0 and two adaptive rounds (they never settle at these sizes)
+  std::vector<double> lo, hi;
+  r1.region.boundingBox(lo, hi);
   for (std::size_t k = 0; k < r1.names.size(); ++k) {
-    EXPECT_LE(r1.box.lower[k], r1.optimum.theta[k]);
-    EXPECT_GE(r1.box.upper[k], r1.optimum.theta[k]);
+    EXPECT_LE(lo[k], r1.optimum.theta[k]);
+    EXPECT_GE(hi[k], r1.optimum.theta[k]);
+  }
+  // summary.json records the region with its axes and the rounds.
+  const auto j = nlohmann::json::parse(slurp(dir / "t1" / "summary.json"));
+  EXPECT_EQ(j["region"]["kind"], "joint");
+  EXPECT_EQ(j["region"]["axes"].size(), r1.names.size());
+  EXPECT_EQ(j["design"]["rounds"].size(), 3u);
+  // Along a traced ridge the region reaches margin x the profile's crossing (or the bounds' reach).
+  const auto box = nlohmann::json::parse(slurp(dir / "t1" / "box.json"));
+  ASSERT_TRUE(box["gauss_newton"].contains("ridges"));
+  for (const auto& tr : box["gauss_newton"]["ridges"]) {
+    const int i = tr["axis"].get<int>(), s = tr["direction"].get<int>();
+    if (!tr["closed"].get<bool>()) continue;
+    const double want = std::min(1.25 * tr["crossing"].get<double>(), s > 0 ? r1.region.reach_upper(i) : r1.region.reach_lower(i));
+    EXPECT_GT(tr["crossing"].get<double>(), 0.0);
+    EXPECT_GE(s > 0 ? r1.region.t_upper(i) : -r1.region.t_lower(i), want * (1 - 1e-12)) << "ridge axis " << i << " direction " << s;
   }
   fs::remove_all(dir);
 }
@@ -93,15 +116,15 @@ TEST(Calibrate, InterruptedDesignResumesToIdenticalResults) {
   struct Stop {};
   int seen = 0;
   auto interrupt = [&](const std::string& stage, std::size_t done, std::size_t) {
-    if (stage == "design" && done >= 5 && ++seen > 0) throw Stop{};
+    if (stage == "design round 1" && done >= 5 && ++seen > 0) throw Stop{};
   };
   EXPECT_THROW(calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "x", interrupt),
                Stop);
   const auto journal = slurp(dir / "cut" / "design_journal.csv");
   EXPECT_FALSE(fs::exists(dir / "cut" / "posterior.csv"));
   const auto r = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "x");
-  EXPECT_GE(r.resumed_points, 5);
-  EXPECT_LT(r.resumed_points, 12);
+  EXPECT_GE(r.resumed_points, r.rounds.rounds[0].count + 5);  // all of round 0 and part of round 1
+  EXPECT_LT(r.resumed_points, r.design.rows());
   for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json"})
     EXPECT_EQ(slurp(dir / "whole" / file), slurp(dir / "cut" / file)) << file;
   // Different data: refused with a clear message, nothing overwritten.
@@ -111,6 +134,33 @@ TEST(Calibrate, InterruptedDesignResumesToIdenticalResults) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different calibration"), std::string::npos) << e.what();
   }
+  fs::remove_all(dir);
+}
+
+// region = "paper" is the paper's procedure: the one-at-a-time box, one Latin hypercube, equal
+// design weights.
+TEST(Calibrate, PaperRegionIsTheOneAtATimeBox) {
+  Fixture f;
+  const fs::path dir = fs::temp_directory_path() / "dtwin_calibrate_paper";
+  fs::remove_all(dir);
+  CalibrationOptions o = smallOptions(2);
+  o.region = "paper";
+  o.design.adaptive = false;
+  const auto r = calibrateAssembly(f.study, f.assembly, f.data, "lab", o, dir.string(), "x");
+  EXPECT_EQ(r.region.kind, "paper");
+  EXPECT_TRUE(r.region.axes.isIdentity());
+  EXPECT_EQ(r.box.sweeps.size(), 2 * r.names.size());
+  ASSERT_EQ(r.rounds.rounds.size(), 1u);
+  EXPECT_EQ(r.design.rows(), o.lhs_points);
+  for (double w : r.rounds.log_weight) EXPECT_EQ(w, 0.0);
+  for (Eigen::Index k = 0; k < r.design.rows(); ++k)
+    for (std::size_t j = 0; j < r.names.size(); ++j) {
+      EXPECT_GE(r.design(k, static_cast<long>(j)), r.box.lower[j] - 1e-9 * std::abs(r.box.lower[j]));
+      EXPECT_LE(r.design(k, static_cast<long>(j)), r.box.upper[j] + 1e-9 * std::abs(r.box.upper[j]));
+    }
+  const auto j = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(j["options"]["region"], "paper");
+  EXPECT_TRUE(j.contains("box"));
   fs::remove_all(dir);
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -124,6 +125,7 @@ TEST(Optimize, FailedEvaluationsDoNotCrashAndAreNeverTheOptimum) {
     SCOPED_TRACE(alg);
     OptimizerOptions opt;
     opt.algorithm = alg;
+    opt.screen_per_start = 0;  // the unscreened starts: the centre lies in the failing band
     const Optimum o = minimiseSse(f, lo, hi, 5, 2, opt);
     std::cout << alg << "\n" << o.fullReport();
     EXPECT_GT(failures.load(), 0);
@@ -141,6 +143,35 @@ TEST(Optimize, FailedEvaluationsDoNotCrashAndAreNeverTheOptimum) {
     // The centre start (460e3, 3750) lies in the failing band itself.
     EXPECT_GE(o.starts[0].nonfinite_evaluations, 1);
   }
+}
+
+// A broad, shallow basin around the centre of the bounds and a narrow, deep one near a corner:
+// unscreened starts all stop in the shallow basin, the screened ones find the deep one.
+TEST(Optimize, ScreeningFindsTheDeepBasinUnscreenedStartsMiss) {
+  auto f = [](const std::vector<double>& t) {
+    const double a = (t[0] - 0.5) / 0.3, b = (t[1] - 0.5) / 0.3;
+    const double c = (t[0] - 0.9) / 0.12, d = (t[1] - 0.12) / 0.12;
+    return 10.0 - 2.0 * std::exp(-(a * a + b * b)) - 9.0 * std::exp(-(c * c + d * d));
+  };
+  OptimizerOptions opt;
+  opt.screen_per_start = 0;
+  const Optimum plain = minimiseSse(f, {0.0, 0.0}, {1.0, 1.0}, 2, 3, opt);
+  EXPECT_GT(plain.sse, 7.0) << plain.fullReport();
+  opt.screen_per_start = 25;
+  const Optimum screened = minimiseSse(f, {0.0, 0.0}, {1.0, 1.0}, 2, 3, opt);
+  EXPECT_LT(screened.sse, 1.5) << screened.fullReport();
+  EXPECT_NEAR(screened.theta[0], 0.9, 0.01);
+  EXPECT_NEAR(screened.theta[1], 0.12, 0.01);
+  // The chosen starts are the best candidates, at least 0.05 apart.
+  const auto cand = screeningPoints({0.0, 0.0}, {1.0, 1.0}, 2, 25, 3);
+  ASSERT_EQ(cand.size(), 51u);
+  EXPECT_EQ(cand[0], (std::vector<double>{0.5, 0.5}));
+  std::vector<double> fs;
+  for (const auto& c : cand) fs.push_back(f(c));
+  const auto starts = bestStarts(cand, fs, {0.0, 0.0}, {1.0, 1.0}, 2);
+  ASSERT_EQ(starts.size(), 2u);
+  EXPECT_EQ(f(starts[0]), *std::min_element(fs.begin(), fs.end()));
+  EXPECT_GE(std::max(std::abs(starts[0][0] - starts[1][0]), std::abs(starts[0][1] - starts[1][1])), 0.05);
 }
 
 TEST(Optimize, AllEvaluationsFailingGivesInfiniteSse) {

@@ -74,6 +74,10 @@ TEST(Report, TinyStudyReportRendersInChromium) {
     EXPECT_EQ(page.find(bad), std::string::npos) << bad;
   for (const char* must : {"M3", "M4", "recommended", "1/√τ", "Provenance", "tiny.toml", "20240601"})
     EXPECT_NE(page.find(must), std::string::npos) << must;
+  // Every posterior histogram says, per calibrated parameter, whether its 95 % interval holds the
+  // study's truth (2 assemblies x 4 parameters).
+  EXPECT_EQ(count(page, "the 95 % interval ["), 8u);
+  EXPECT_EQ(count(page, "the truth 180000 lies"), 2u);
   // Ids unique on the page (every inline SVG has its own).
   std::map<std::string, int> ids;
   const std::regex id_re("\\bid=(['\"])([^'\"]+)\\1");

@@ -97,6 +97,39 @@ TEST(Study, BoundsAndSigns) {
   EXPECT_NE(e4.find("calibrated[1].truth: must lie within [lower, upper]"), std::string::npos) << e4;
 }
 
+// The [calibration] table: defaults, the paper's procedure, and every bad value named.
+TEST(Study, CalibrationSettings) {
+  const Study d = loadStudy(kSrc + "/data/studies/demo.toml");
+  EXPECT_EQ(d.calibration.region, "joint");
+  EXPECT_EQ(d.calibration.designOrDefault(), "adaptive");
+  const Study p = loadStudy(variant("cal_paper", "[noise]", "[calibration]\nregion = \"paper\"\n\n[noise]"));
+  EXPECT_EQ(p.calibration.region, "paper");
+  EXPECT_EQ(p.calibration.designOrDefault(), "lhs");
+  const Study q = loadStudy(variant("cal_all", "[noise]",
+                                    "[calibration]\nregion = \"paper\"\ndesign = \"adaptive\"\nround_points = 50\nmax_rounds = 3\n"
+                                    "target_ess = 250.5\nmargin = 1.5\n\n[noise]"));
+  EXPECT_EQ(q.calibration.designOrDefault(), "adaptive");
+  EXPECT_EQ(q.calibration.round_points, 50);
+  EXPECT_EQ(q.calibration.max_rounds, 3);
+  EXPECT_DOUBLE_EQ(q.calibration.target_ess, 250.5);
+  EXPECT_DOUBLE_EQ(q.calibration.margin, 1.5);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"region = \"box\"", "calibration.region: must be \"joint\""},
+      {"design = \"grid\"", "calibration.design: must be \"adaptive\""},
+      {"round_points = 1", "calibration.round_points: must be an integer >= 2, got 1"},
+      {"max_rounds = -1", "calibration.max_rounds: must be an integer in [0, 100], got -1"},
+      {"target_ess = 0", "calibration.target_ess: must be a finite number > 0"},
+      {"target_ess = nan", "calibration.target_ess: must be a finite number > 0"},
+      {"margin = 0.5", "calibration.margin: must be a number in [1, 10]"},
+      {"max_round = 3", "calibration.max_round: unknown field (did you mean 'max_rounds'?)"},
+  };
+  for (const auto& [line, want] : bad) {
+    const std::string e = errorOf(variant("cal_bad", "[noise]", "[calibration]\n" + line + "\n\n[noise]"));
+    EXPECT_NE(e.find(want), std::string::npos) << line << " -> " << e;
+    EXPECT_NE(e.find(".toml:"), std::string::npos) << e;
+  }
+}
+
 TEST(Study, CsvRoadMustExistAndCoverTheRun) {
   const std::string p = variant("csvroad", "road = { type = \"bump\", height_m = 0.2, length_m = 0.1, time_s = 6.0 }",
                                 "road = { type = \"csv\", path = \"no_such_road.csv\" }");

@@ -1,0 +1,400 @@
+#include "calibration/adaptive_design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "calibration/lhs.hpp"
+#include "subsystems/errors.hpp"
+
+namespace dtwin::calib {
+namespace {
+
+constexpr std::uint64_t kStreamDesignRound = 0x4144'5200'0000'0004ULL;  // "ADR"
+constexpr std::uint64_t kStreamDesignPilot = 0x4144'5000'0000'0005ULL;  // "ADP"
+constexpr std::uint64_t kStreamResample = 0x4144'4b00'0000'0006ULL;     // "ADK"
+constexpr int kPilot = 4096;
+constexpr double kLog2Pi = 1.8378770664093454836;
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(4);
+  os << v;
+  return os.str();
+}
+
+nlohmann::json vecJson(const Eigen::VectorXd& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
+  return a;
+}
+
+/// A lower-triangular L with L Lᵀ = cov (eigenvalue floor when cov is not positive definite).
+Eigen::MatrixXd choleskyOf(const Eigen::MatrixXd& cov) {
+  Eigen::LLT<Eigen::MatrixXd> llt(cov);
+  if (llt.info() == Eigen::Success) return llt.matrixL();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(cov);
+  Eigen::VectorXd lam = es.eigenvalues();
+  const double floor = std::max(lam.maxCoeff(), 1e-300) * 1e-12;
+  for (Eigen::Index i = 0; i < lam.size(); ++i) lam(i) = std::max(lam(i), floor);
+  const Eigen::MatrixXd fixed = es.eigenvectors() * lam.asDiagonal() * es.eigenvectors().transpose();
+  Eigen::LLT<Eigen::MatrixXd> llt2(0.5 * (fixed + fixed.transpose()));
+  DTWIN_CHECK(llt2.info() == Eigen::Success, "Cholesky factor of a floored covariance failed");
+  return llt2.matrixL();
+}
+
+/// Scaled points of one round from a unit Latin hypercube u (rows); row i of a Gaussian round
+/// takes kernel i mod K.
+Eigen::MatrixXd mapUnit(const DesignRound& round, const Eigen::MatrixXd& u) {
+  const Eigen::Index d = u.cols();
+  Eigen::MatrixXd z(u.rows(), d);
+  for (Eigen::Index i = 0; i < u.rows(); ++i) {
+    if (round.kind == "uniform") {
+      Eigen::VectorXd t(d);
+      for (Eigen::Index j = 0; j < d; ++j)
+        t(j) = round.region.t_lower(j) + u(i, j) * (round.region.t_upper(j) - round.region.t_lower(j));
+      z.row(i) = round.region.at(t).transpose();
+    } else {
+      Eigen::VectorXd x(d);
+      for (Eigen::Index j = 0; j < d; ++j) x(j) = normalQuantile(std::clamp(u(i, j), 1e-12, 1.0 - 1e-12));
+      const long nb = round.broadCount(u.rows());
+      if (i < nb) z.row(i) = (round.broad_mean + round.broad_chol * x).transpose();
+      else z.row(i) = round.centres.row((i - nb) % round.centres.rows()) + (round.chol * x).transpose();
+    }
+  }
+  return z;
+}
+
+std::uint64_t derivedSeed(std::uint64_t seed, std::uint64_t stream, int round) {
+  return RandomStream(seed, stream, static_cast<std::uint64_t>(round)).bits();
+}
+
+/// Importance diagnostics over the design so far.
+struct Diagnostics {
+  double ess = 0.0, top_share = 0.0, edge_share = 0.0;
+  Eigen::VectorXd mean;
+  Eigen::MatrixXd cov;
+  Eigen::VectorXd weights;  ///< normalised, one per design point
+  std::vector<double> mean_theta, sd_theta;
+};
+
+Diagnostics diagnose(const Eigen::MatrixXd& z, const std::vector<double>& sse, const std::vector<double>& logq,
+                     int n_data, const AdaptiveDesignOptions& o, const Region& outer) {
+  const Eigen::Index N = z.rows(), d = z.cols();
+  std::vector<double> lw(static_cast<std::size_t>(N), -std::numeric_limits<double>::infinity());
+  double top = -std::numeric_limits<double>::infinity();
+  for (Eigen::Index k = 0; k < N; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (!std::isfinite(sse[i])) continue;
+    lw[i] = -(o.tau_a + 0.5 * n_data) * std::log(o.tau_b + 0.5 * sse[i]) - logq[i];
+    top = std::max(top, lw[i]);
+  }
+  Diagnostics g;
+  g.mean = Eigen::VectorXd::Zero(d);
+  g.cov = Eigen::MatrixXd::Zero(d, d);
+  if (!std::isfinite(top)) return g;
+  Eigen::VectorXd w(N);
+  for (Eigen::Index k = 0; k < N; ++k) w(k) = std::isfinite(lw[static_cast<std::size_t>(k)]) ? std::exp(lw[static_cast<std::size_t>(k)] - top) : 0.0;
+  const double sw = w.sum();
+  w /= sw;
+  g.weights = w;
+  g.ess = 1.0 / w.squaredNorm();
+  g.top_share = w.maxCoeff();
+  g.mean = z.transpose() * w;
+  for (Eigen::Index k = 0; k < N; ++k) {
+    if (w(k) == 0.0) continue;
+    const Eigen::VectorXd e = z.row(k).transpose() - g.mean;
+    g.cov += w(k) * e * e.transpose();
+  }
+  for (Eigen::Index j = 0; j < d; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const double range = outer.upper[k] - outer.lower[k];
+    g.mean_theta.push_back(outer.lower[k] + g.mean(j) * range);
+    g.sd_theta.push_back(std::sqrt(std::max(g.cov(j, j), 0.0)) * range);
+  }
+  // Edge shell of region 0, on the sides that can still grow.
+  for (Eigen::Index k = 0; k < N; ++k) {
+    if (w(k) == 0.0) continue;
+    const Eigen::VectorXd t = outer.coordinates(z.row(k).transpose());
+    bool edge = false;
+    for (Eigen::Index i = 0; i < d && !edge; ++i) {
+      const double shell = o.edge_fraction * (outer.t_upper(i) - outer.t_lower(i));
+      edge = (outer.openLower(static_cast<int>(i)) && t(i) < outer.t_lower(i) + shell) ||
+             (outer.openUpper(static_cast<int>(i)) && t(i) > outer.t_upper(i) - shell);
+    }
+    if (edge) g.edge_share += w(k);
+  }
+  return g;
+}
+
+/// K rows of z drawn in proportion to w by systematic resampling (one uniform offset).
+Eigen::MatrixXd resampleCentres(const Eigen::MatrixXd& z, const Eigen::VectorXd& w, int k, std::uint64_t seed) {
+  RandomStream rng(seed, 0);
+  const double u = rng.uniform();
+  Eigen::MatrixXd c(k, z.cols());
+  double cum = 0.0;
+  Eigen::Index i = 0;
+  for (int j = 0; j < k; ++j) {
+    const double target = (u + j) / k;
+    while (i + 1 < z.rows() && cum + w(i) <= target) cum += w(i++);
+    c.row(j) = z.row(i);
+  }
+  return c;
+}
+
+bool settled(const Diagnostics& now, const Diagnostics& before, double settle) {
+  if (before.sd_theta.empty()) return false;
+  for (std::size_t j = 0; j < now.sd_theta.size(); ++j) {
+    const double sd = now.sd_theta[j], sd0 = before.sd_theta[j];
+    if (!(sd > 0.0 && sd0 > 0.0)) {
+      if (sd != sd0) return false;
+      continue;
+    }
+    if (std::abs(now.mean_theta[j] - before.mean_theta[j]) > settle * sd) return false;
+    if (std::abs(sd / sd0 - 1.0) > settle) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void DesignRound::prepare() {
+  if (kind != "gaussian") return;
+  chol = choleskyOf(cov);
+  if (broad_share > 0.0) broad_chol = choleskyOf(broad_cov);
+}
+
+long DesignRound::broadCount(long m) const { return broad_share > 0.0 ? std::lround(broad_share * static_cast<double>(m)) : 0; }
+
+void AdaptiveDesignOptions::validate() const {
+  const std::string where = "adaptive design options";
+  if (first_points < 2) throw InputError(where, "first_points (lhs_points) must be >= 2, got " + std::to_string(first_points));
+  if (round_points < 2) throw InputError(where, "round_points must be >= 2, got " + std::to_string(round_points));
+  if (max_rounds < 0) throw InputError(where, "max_rounds must be >= 0, got " + std::to_string(max_rounds));
+  if (!(target_ess > 0.0 && std::isfinite(target_ess))) throw InputError(where, "target_ess must be > 0, got " + fmt(target_ess));
+  if (!(settle > 0.0 && std::isfinite(settle))) throw InputError(where, "settle must be > 0, got " + fmt(settle));
+  if (!(kernel_min > 0.0 && kernel_min <= 2.0)) throw InputError(where, "kernel_min must be in (0, 2], got " + fmt(kernel_min));
+  if (kernels < 1) throw InputError(where, "kernels must be >= 1, got " + std::to_string(kernels));
+  if (!(broad_share >= 0.0 && broad_share < 1.0)) throw InputError(where, "broad_share must be in [0, 1), got " + fmt(broad_share));
+  if (!(broad_scale >= 1.0 && std::isfinite(broad_scale))) throw InputError(where, "broad_scale must be >= 1, got " + fmt(broad_scale));
+  if (!(edge_fraction > 0.0 && edge_fraction < 0.5)) throw InputError(where, "edge_fraction must be in (0, 0.5), got " + fmt(edge_fraction));
+  if (!(edge_share_max > 0.0 && edge_share_max < 1.0)) throw InputError(where, "edge_share_max must be in (0, 1), got " + fmt(edge_share_max));
+  if (!(tau_a >= 0.0 && tau_b >= 0.0)) throw InputError(where, "the tau prior needs a, b >= 0");
+}
+
+nlohmann::json AdaptiveDesignOptions::toJson() const {
+  return {{"design", adaptive ? "adaptive" : "lhs"},
+          {"first_points", first_points},
+          {"round_points", round_points},
+          {"max_rounds", max_rounds},
+          {"target_ess", target_ess},
+          {"settle", settle},
+          {"kernel_min", kernel_min},
+          {"kernels", kernels},
+          {"broad_share", broad_share},
+          {"broad_scale", broad_scale},
+          {"edge_fraction", edge_fraction},
+          {"edge_share_max", edge_share_max}};
+}
+
+nlohmann::json DesignRound::toJson(const std::vector<std::string>& names) const {
+  nlohmann::json j{{"round", index},
+                   {"kind", kind},
+                   {"drawn", drawn},
+                   {"first_row", first},
+                   {"points", count},
+                   {"importance_ess", ess},
+                   {"top_share", top_share},
+                   {"edge_share", edge_share}};
+  if (kind == "uniform") j["region"] = region.toJson();
+  else {
+    j["kernels"] = centres.rows();
+    j["centres_scaled"] = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < centres.rows(); ++i) j["centres_scaled"].push_back(vecJson(centres.row(i).transpose()));
+    j["covariance_scaled"] = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < cov.rows(); ++i) j["covariance_scaled"].push_back(vecJson(cov.row(i).transpose()));
+    if (broad_share > 0.0) {
+      j["broad"] = {{"share", broad_share}, {"mean_scaled", vecJson(broad_mean)}, {"covariance_scaled", nlohmann::json::array()}};
+      for (Eigen::Index i = 0; i < broad_cov.rows(); ++i) j["broad"]["covariance_scaled"].push_back(vecJson(broad_cov.row(i).transpose()));
+    }
+  }
+  for (std::size_t k = 0; k < names.size() && k < mean_theta.size(); ++k)
+    j["posterior"][names[k]] = {{"mean", mean_theta[k]}, {"sd", sd_theta[k]}};
+  return j;
+}
+
+nlohmann::json AdaptiveDesign::toJson(const std::vector<std::string>& names) const {
+  nlohmann::json j{{"points", points.rows()}, {"importance_ess", ess}, {"top_share", top_share}, {"stop_reason", stop_reason},
+                   {"warnings", warnings}};
+  j["rounds"] = nlohmann::json::array();
+  for (const auto& r : rounds) j["rounds"].push_back(r.toJson(names));
+  return j;
+}
+
+double logMixtureDensity(const std::vector<DesignRound>& rounds, const Eigen::VectorXd& z) {
+  const double d = static_cast<double>(z.size());
+  std::vector<double> terms;
+  for (const auto& r : rounds) {
+    if (r.drawn <= 0) continue;
+    if (r.kind == "uniform") {
+      if (r.region.contains(z)) terms.push_back(std::log(static_cast<double>(r.drawn)) - r.region.logVolume());
+    } else {
+      // Each component weighted by the number of points it took (exactly as drawRound assigns).
+      const long nb = r.broadCount(r.drawn), rest = r.drawn - nb, K = r.centres.rows();
+      if (nb > 0) {
+        const Eigen::VectorXd x = r.broad_chol.triangularView<Eigen::Lower>().solve(z - r.broad_mean);
+        terms.push_back(std::log(static_cast<double>(nb)) - 0.5 * d * kLog2Pi - r.broad_chol.diagonal().array().log().sum() -
+                        0.5 * x.squaredNorm());
+      }
+      const double logdet = r.chol.diagonal().array().log().sum();
+      for (long c = 0; c < K; ++c) {
+        const long count = rest / K + (c < rest % K ? 1 : 0);
+        if (count == 0) continue;
+        const Eigen::VectorXd x = r.chol.triangularView<Eigen::Lower>().solve(z - r.centres.row(c).transpose());
+        terms.push_back(std::log(static_cast<double>(count)) - 0.5 * d * kLog2Pi - logdet - 0.5 * x.squaredNorm());
+      }
+    }
+  }
+  if (terms.empty()) return -std::numeric_limits<double>::infinity();
+  const double m = *std::max_element(terms.begin(), terms.end());
+  double s = 0.0;
+  for (double t : terms) s += std::exp(t - m);
+  return m + std::log(s);
+}
+
+Eigen::MatrixXd drawRound(const DesignRound& round, int inside, std::uint64_t seed, long& drawn) {
+  DTWIN_CHECK(inside >= 1, "a round needs at least one point");
+  const int d = round.kind == "uniform" ? round.region.dim() : static_cast<int>(round.centres.cols());
+  const std::vector<double> zero(static_cast<std::size_t>(d), 0.0), one(static_cast<std::size_t>(d), 1.0);
+  // Inside fraction from a pilot sample (no simulation).
+  const Eigen::MatrixXd pilot = mapUnit(round, latinHypercube(kPilot, zero, one, derivedSeed(seed, kStreamDesignPilot, round.index)));
+  int in = 0;
+  for (Eigen::Index i = 0; i < pilot.rows(); ++i) in += insideUnitCube(pilot.row(i).transpose()) ? 1 : 0;
+  const long cap = 64L * inside;
+  long m = in > 0 ? static_cast<long>(std::ceil(static_cast<double>(inside) * kPilot / in)) : cap;
+  m = std::clamp(m, static_cast<long>(inside), cap);
+  const std::uint64_t s = round.index == 0 ? seed : derivedSeed(seed, kStreamDesignRound, round.index);
+  const Eigen::MatrixXd z = mapUnit(round, latinHypercube(static_cast<int>(m), zero, one, s));
+  drawn = m;
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index i = 0; i < z.rows(); ++i)
+    if (insideUnitCube(z.row(i).transpose())) keep.push_back(i);
+  Eigen::MatrixXd in_z(static_cast<Eigen::Index>(keep.size()), d);
+  for (std::size_t r = 0; r < keep.size(); ++r) in_z.row(static_cast<Eigen::Index>(r)) = z.row(keep[r]);
+  return in_z;
+}
+
+AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const AdaptiveDesignOptions& options,
+                                 const DesignEvaluator& evaluate) {
+  options.validate();
+  DTWIN_CHECK(n_data >= 1, "an adaptive design needs n >= 1");
+  const int d = region.dim();
+  AdaptiveDesign out;
+  out.points.resize(0, d);
+  Eigen::MatrixXd zs(0, d);
+  Diagnostics before;
+
+  auto runRound = [&](DesignRound round, int inside) -> Diagnostics {
+    round.prepare();
+    round.first = static_cast<int>(out.points.rows());
+    const Eigen::MatrixXd z = drawRound(round, inside, options.seed, round.drawn);
+    Eigen::MatrixXd theta(z.rows(), d);
+    for (Eigen::Index i = 0; i < z.rows(); ++i) {
+      const auto th = region.toPhysical(z.row(i).transpose());
+      for (int j = 0; j < d; ++j) theta(i, j) = th[static_cast<std::size_t>(j)];
+    }
+    round.count = static_cast<int>(theta.rows());
+    std::vector<double> s = round.count > 0 ? evaluate(theta, round.first) : std::vector<double>{};
+    DTWIN_CHECK(static_cast<Eigen::Index>(s.size()) == theta.rows(), "the design evaluator returned the wrong number of SSEs");
+    const Eigen::Index n0 = out.points.rows();
+    out.points.conservativeResize(n0 + theta.rows(), d);
+    out.points.bottomRows(theta.rows()) = theta;
+    zs.conservativeResize(n0 + z.rows(), d);
+    zs.bottomRows(z.rows()) = z;
+    out.sse.insert(out.sse.end(), s.begin(), s.end());
+    out.rounds.push_back(round);
+    std::vector<double> logq(static_cast<std::size_t>(zs.rows()));
+    for (Eigen::Index k = 0; k < zs.rows(); ++k) logq[static_cast<std::size_t>(k)] = logMixtureDensity(out.rounds, zs.row(k).transpose());
+    Diagnostics g = diagnose(zs, out.sse, logq, n_data, options, region);
+    auto& last = out.rounds.back();
+    last.ess = g.ess;
+    last.top_share = g.top_share;
+    last.edge_share = g.edge_share;
+    last.mean_theta = g.mean_theta;
+    last.sd_theta = g.sd_theta;
+    return g;
+  };
+
+  DesignRound r0;
+  r0.index = 0;
+  r0.kind = "uniform";
+  r0.region = region;
+  Diagnostics now = runRound(r0, options.first_points);
+  out.stop_reason = options.adaptive ? "" : "one Latin hypercube (design = \"lhs\")";
+  for (int r = 1; options.adaptive && r <= options.max_rounds; ++r) {
+    if (!std::isfinite(now.ess) || now.ess <= 0.0) {
+      out.stop_reason = "no design point has a finite SSE";
+      break;
+    }
+    DesignRound next;
+    next.index = r;
+    next.kind = "gaussian";
+    // Kernels on the heavy points. Their covariance is the weighted posterior covariance shrunk
+    // towards the region's guess with the weight of nu0 = 10 (d + 1) points, so a round that rests
+    // on a handful of heavy points still explores around them with a sensible shape.
+    const double dd = static_cast<double>(d), nu0 = 10.0 * (dd + 1.0);
+    const Eigen::MatrixXd blend = (now.ess * now.cov + nu0 * region.guessCovariance()) / (now.ess + nu0);
+    const double h = std::max(options.kernel_min, std::pow(4.0 / (dd + 2.0), 1.0 / (dd + 4.0)) * std::pow(now.ess, -1.0 / (dd + 4.0)));
+    next.centres = resampleCentres(zs, now.weights, options.kernels, derivedSeed(options.seed, kStreamResample, r));
+    if (r == 1 && region.ridge.rows() > 0) {
+      // The first adaptive round also puts kernels on the traced ridge floor (region.hpp), so a
+      // curved ridge that round 0 sampled thinly is covered from the start.
+      Eigen::MatrixXd both(next.centres.rows() + region.ridge.rows(), d);
+      both << next.centres, region.ridge;
+      next.centres = both;
+    }
+    next.cov = h * h * blend;
+    next.broad_share = options.broad_share;
+    next.broad_mean = now.mean;
+    next.broad_cov = options.broad_scale * options.broad_scale * blend;
+    // A floor keeps the kernels proper.
+    for (int j = 0; j < d; ++j) {
+      next.cov(j, j) = std::max(next.cov(j, j), 1e-12);
+      next.broad_cov(j, j) = std::max(next.broad_cov(j, j), 1e-12);
+    }
+    before = now;
+    now = runRound(next, options.round_points);
+    if (now.ess >= options.target_ess && settled(now, before, options.settle)) {
+      out.stop_reason = "settled after round " + std::to_string(r) + ": importance ESS " + fmt(now.ess) + " >= " +
+                        fmt(options.target_ess) + ", means and sds changed by less than " + fmt(options.settle) + " sd";
+      break;
+    }
+    if (r == options.max_rounds)
+      out.stop_reason = "all " + std::to_string(options.max_rounds) + " adaptive rounds used";
+  }
+  if (options.adaptive && options.max_rounds == 0) out.stop_reason = "max_rounds = 0: round 0 only";
+  out.ess = now.ess;
+  out.top_share = now.top_share;
+  // Design weights ω_k = −log q(z_k), largest 0.
+  out.log_weight.resize(out.sse.size());
+  double mx = -std::numeric_limits<double>::infinity();
+  for (Eigen::Index k = 0; k < zs.rows(); ++k) {
+    out.log_weight[static_cast<std::size_t>(k)] = -logMixtureDensity(out.rounds, zs.row(k).transpose());
+    mx = std::max(mx, out.log_weight[static_cast<std::size_t>(k)]);
+  }
+  for (auto& w : out.log_weight) w -= mx;
+  if (out.ess < 100.0)
+    out.warnings.push_back("the design resolves the posterior with only " + fmt(out.ess) +
+                           " effective points (importance ESS < 100): the intervals are rough; raise lhs_points, "
+                           "[calibration] round_points or max_rounds");
+  const bool kernel_rounds = std::any_of(out.rounds.begin(), out.rounds.end(), [](const DesignRound& r) { return r.kind == "gaussian"; });
+  if (!kernel_rounds && now.edge_share > options.edge_share_max)
+    out.warnings.push_back("the posterior still puts " + fmt(100.0 * now.edge_share) +
+                           " % of its weight near the region's edge: the region may cut it off");
+  if (options.adaptive && out.stop_reason.rfind("settled", 0) != 0 && out.ess >= 100.0)
+    out.warnings.push_back("the adaptive design did not settle (" + out.stop_reason + "): the intervals may still move with more rounds");
+  return out;
+}
+
+}  // namespace dtwin::calib

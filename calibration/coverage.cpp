@@ -1,0 +1,191 @@
+#include "calibration/coverage.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <tuple>
+#include <sstream>
+
+#include "subsystems/errors.hpp"
+#include "twin/distributed.hpp"
+#include "twin/generate.hpp"
+#include "twin/provenance.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin::calib {
+namespace {
+
+std::string fmt(double v, int digits = 4) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+}  // namespace
+
+void CoverageOptions::validate() const {
+  if (seeds < 2) throw InputError("--seeds", "must be >= 2 (a coverage needs several noise seeds), got " + std::to_string(seeds));
+  if (out_dir.empty()) throw InputError("--out", "an output folder is required");
+  calibration.validate();
+}
+
+std::pair<double, double> wilsonInterval(int k, int m) {
+  if (m <= 0) return {0.0, 1.0};
+  const double z = 1.959963984540054, p = static_cast<double>(k) / m, n = m;
+  const double c = (p + z * z / (2 * n)) / (1 + z * z / n);
+  const double h = z / (1 + z * z / n) * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n));
+  return {std::max(0.0, c - h), std::min(1.0, c + h)};
+}
+
+nlohmann::json CoverageResult::toJson() const {
+  nlohmann::json j;
+  for (const auto& r : rows)
+    j["rows"].push_back({{"assembly", r.assembly},
+                         {"parameter", r.parameter},
+                         {"truth", r.truth},
+                         {"seeds", r.seeds},
+                         {"covered", r.covered},
+                         {"coverage", r.seeds ? static_cast<double>(r.covered) / r.seeds : 0.0},
+                         {"coverage_wilson95", {r.wilson_low, r.wilson_high}},
+                         {"mean_ci95_width", r.mean_width},
+                         {"mean_posterior_sd", r.mean_sd},
+                         {"sd_of_posterior_means", r.sd_of_means},
+                         {"sd_ratio", r.sd_ratio()},
+                         {"rmse_of_posterior_means", r.rmse},
+                         {"sd_of_optima", r.sd_of_optima},
+                         {"sd_ratio_to_optima", r.optimum_ratio()},
+                         {"rmse_over_mean_sd", r.rmse_ratio()}});
+  for (const auto& [a, t] : totals)
+    j["assemblies"][a] = {{"covered", t.first}, {"pairs", t.second}, {"coverage", t.second ? static_cast<double>(t.first) / t.second : 0.0}};
+  j["median_calibration_wall_s"] = median_calibration_wall_s;
+  j["wall_s"] = wall_s;
+  return j;
+}
+
+std::string CoverageResult::markdown() const {
+  std::ostringstream s;
+  s << "| assembly | parameter | truth | 95 % interval holds the truth | Wilson 95 % | mean width | mean sd | sd of means | "
+       "mean sd / sd of means | sd of θ̂ | mean sd / sd of θ̂ | RMSE of means / mean sd |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    s << "| " << r.assembly << " | " << r.parameter << " | " << fmt(r.truth, 6) << " | " << r.covered << "/" << r.seeds << " ("
+      << fmt(100.0 * r.covered / std::max(r.seeds, 1), 3) << " %) | " << fmt(100 * r.wilson_low, 3) << "–" << fmt(100 * r.wilson_high, 3)
+      << " % | " << fmt(r.mean_width) << " | " << fmt(r.mean_sd) << " | " << fmt(r.sd_of_means) << " | " << fmt(r.sd_ratio(), 3)
+      << " | " << fmt(r.sd_of_optima) << " | " << fmt(r.optimum_ratio(), 3) << " | " << fmt(r.rmse_ratio(), 3) << " |\n";
+  s << "\n| assembly | (parameter, seed) pairs covered |\n|---|---|\n";
+  for (const auto& [a, t] : totals)
+    s << "| " << a << " | " << t.first << "/" << t.second << " (" << fmt(100.0 * t.first / std::max(t.second, 1), 3) << " %) |\n";
+  return s.str();
+}
+
+CoverageResult runCoverage(const Study& study, const CoverageOptions& options, const CoverageProgress& progress) {
+  options.validate();
+  const auto t_all = std::chrono::steady_clock::now();
+  std::vector<AssemblySpec> targets;
+  if (options.assemblies.empty()) targets = study.assemblies();
+  else
+    for (const auto& id : options.assemblies) targets.push_back(study.assembly(id));
+  CoverageResult res;
+  std::vector<double> walls;
+  const int count = static_cast<int>(targets.size()) * options.seeds;
+  int index = 0;
+  for (const auto& a : targets) {
+    const fs::path adir = fs::path(options.out_dir) / a.id;
+    rootWrites([&] { fs::create_directories(adir); });
+    std::map<std::string, std::vector<const nlohmann::json*>> per;  // parameter -> summaries' entries
+    std::vector<nlohmann::json> summaries;
+    summaries.reserve(static_cast<std::size_t>(options.seeds));
+    std::vector<std::string> order;
+    std::vector<std::optional<double>> truths;
+    for (int k = 0; k < options.seeds; ++k, ++index) {
+      const std::uint64_t seed = options.first_seed + static_cast<std::uint64_t>(k);
+      if (progress) progress(a.id, seed, index, count, "lab data", 0, 1);
+      LabOptions lo;
+      lo.seed = seed;
+      lo.command = options.command;
+      const LabResult lab = generateLab(study, a, lo);
+      const std::string lab_path = (adir / ("lab_" + std::to_string(seed) + ".csv")).string();
+      rootWrites([&] {
+        writeLabCsv(lab_path, lab.data);
+        writeFileAtomic(fs::path(lab_path).replace_extension(".json").string(), lab.provenance.dump(2) + "\n");
+      });
+      CalibrationOptions co = options.calibration;
+      co.command = options.command;
+      co.data_path = lab_path;
+      std::ostringstream csv;
+      for (const auto& r : lab.data.records) csv << r.repetition << ',' << formatExact(r.time_s) << ',' << r.channel << ',' << formatExact(r.value) << '\n';
+      const std::string hash = std::to_string(fnv1a64(csv.str()));
+      const CalibrationResult cr =
+          calibrateAssembly(study, a, lab.data, "lab", co, (adir / ("seed_" + std::to_string(seed))).string(), hash,
+                            [&](const std::string& stage, std::size_t done, std::size_t total) {
+                              if (progress) progress(a.id, seed, index, count, stage, done, total);
+                            });
+      walls.push_back(cr.stage_wall_s.back().second);
+      summaries.push_back(cr.toJson());
+      order = cr.names;
+      truths = cr.truth;
+    }
+    int covered_all = 0, pairs = 0;
+    for (std::size_t p = 0; p < order.size(); ++p) {
+      if (!truths[p]) continue;  // no truth: nothing to cover
+      CoverageRow row;
+      row.assembly = a.id;
+      row.parameter = order[p];
+      row.truth = *truths[p];
+      std::vector<double> means, optima;
+      double sse = 0.0;
+      for (const auto& s : summaries) {
+        const auto& e = s.at("parameters").at(order[p]);
+        const double lo = e.at("ci95")[0].get<double>(), hi = e.at("ci95")[1].get<double>(), m = e.at("mean").get<double>();
+        ++row.seeds;
+        row.covered += (row.truth >= lo && row.truth <= hi) ? 1 : 0;
+        row.mean_width += hi - lo;
+        row.mean_sd += e.at("sd").get<double>();
+        means.push_back(m);
+        optima.push_back(e.at("optimum").get<double>());
+        sse += (m - row.truth) * (m - row.truth);
+      }
+      row.mean_width /= row.seeds;
+      row.mean_sd /= row.seeds;
+      auto sdOf = [](const std::vector<double>& v) {
+        double mean = 0.0, ss = 0.0;
+        for (double x : v) mean += x / static_cast<double>(v.size());
+        for (double x : v) ss += (x - mean) * (x - mean);
+        return std::sqrt(ss / static_cast<double>(v.size() - 1));
+      };
+      row.sd_of_means = sdOf(means);
+      row.sd_of_optima = sdOf(optima);
+      row.rmse = std::sqrt(sse / row.seeds);
+      std::tie(row.wilson_low, row.wilson_high) = wilsonInterval(row.covered, row.seeds);
+      covered_all += row.covered;
+      pairs += row.seeds;
+      res.rows.push_back(row);
+    }
+    res.totals.push_back({a.id, {covered_all, pairs}});
+  }
+  std::sort(walls.begin(), walls.end());
+  res.median_calibration_wall_s = walls.empty() ? 0.0 : walls[walls.size() / 2];
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
+  nlohmann::json j = res.toJson();
+  j["program"] = programInfo();
+  j["command"] = options.command;
+  j["created_utc"] = utcNow();
+  j["study"] = study.path;
+  j["seeds"] = {{"first", options.first_seed}, {"count", options.seeds}, {"rule", "lab noise seed s = first .. first + count - 1"}};
+  j["calibration_options"] = options.calibration.toJson();
+  rootWrites([&] {
+    writeFileAtomic((fs::path(options.out_dir) / "coverage.json").string(), j.dump(2) + "\n");
+    std::string md = "# Coverage of the 95 % intervals\n\nStudy `" + study.path + "`, noise seeds " + std::to_string(options.first_seed) + "–" +
+                     std::to_string(options.first_seed + static_cast<std::uint64_t>(options.seeds) - 1) + ", region `" +
+                     options.calibration.region + "`, design `" + (options.calibration.design.adaptive ? "adaptive" : "lhs") +
+                     "`.\n\n" + res.markdown();
+    writeFileAtomic((fs::path(options.out_dir) / "coverage.md").string(), md);
+  });
+  return res;
+}
+
+}  // namespace dtwin::calib

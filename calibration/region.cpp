@@ -1,0 +1,602 @@
+#include "calibration/region.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <sstream>
+
+#include "subsystems/errors.hpp"
+
+namespace dtwin::calib {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+nlohmann::json vecJson(const Eigen::VectorXd& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
+  return a;
+}
+Eigen::VectorXd vecFrom(const nlohmann::json& j) {
+  Eigen::VectorXd v(static_cast<Eigen::Index>(j.size()));
+  for (std::size_t i = 0; i < j.size(); ++i) v(static_cast<Eigen::Index>(i)) = j[i].get<double>();
+  return v;
+}
+
+/// Where the ray ẑ + s·t·a leaves [0,1]^d (t >= 0).
+double rayExit(const Eigen::VectorXd& z0, const Eigen::VectorXd& a, int s) {
+  double t = std::numeric_limits<double>::infinity();
+  for (Eigen::Index j = 0; j < z0.size(); ++j) {
+    const double v = s * a(j);
+    if (v > 1e-15) t = std::min(t, (1.0 - z0(j)) / v);
+    else if (v < -1e-15) t = std::min(t, -z0(j) / v);
+  }
+  return std::max(t, 0.0);
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ Region
+bool insideUnitCube(const Eigen::VectorXd& z) {
+  for (Eigen::Index j = 0; j < z.size(); ++j)
+    if (!(z(j) >= 0.0 && z(j) <= 1.0)) return false;
+  return true;
+}
+
+double Region::logVolume() const {
+  double v = 0.0;
+  for (Eigen::Index i = 0; i < t_lower.size(); ++i) v += std::log(t_upper(i) - t_lower(i));
+  return v;
+}
+
+Eigen::VectorXd Region::toScaled(const std::vector<double>& theta) const {
+  Eigen::VectorXd z(dim());
+  for (int j = 0; j < dim(); ++j) z(j) = (theta[static_cast<std::size_t>(j)] - lower[static_cast<std::size_t>(j)]) /
+                                         (upper[static_cast<std::size_t>(j)] - lower[static_cast<std::size_t>(j)]);
+  return z;
+}
+
+std::vector<double> Region::toPhysical(const Eigen::VectorXd& z) const {
+  std::vector<double> th(static_cast<std::size_t>(dim()));
+  for (int j = 0; j < dim(); ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const double zj = std::clamp(z(j), 0.0, 1.0);
+    th[k] = zj >= 1.0 ? upper[k] : lower[k] + zj * (upper[k] - lower[k]);
+  }
+  return th;
+}
+
+bool Region::contains(const Eigen::VectorXd& z) const {
+  const Eigen::VectorXd t = coordinates(z);
+  for (Eigen::Index i = 0; i < t.size(); ++i) {
+    const double tol = 1e-12 * (t_upper(i) - t_lower(i));
+    if (t(i) < t_lower(i) - tol || t(i) > t_upper(i) + tol) return false;
+  }
+  return true;
+}
+
+namespace {
+/// Reach of the unit cube from z0 along −a (lower) and +a (upper).
+void cubeReach(const Eigen::VectorXd& z0, const Eigen::VectorXd& a, double& lower, double& upper) {
+  lower = upper = 0.0;
+  for (Eigen::Index j = 0; j < z0.size(); ++j) {
+    upper += std::max(-z0(j) * a(j), (1.0 - z0(j)) * a(j));
+    lower += std::max(z0(j) * a(j), -(1.0 - z0(j)) * a(j));
+  }
+}
+}  // namespace
+
+void Region::boundingBox(std::vector<double>& lo, std::vector<double>& hi) const {
+  const int d = dim();
+  Eigen::VectorXd zlo(d), zhi(d);
+  for (int j = 0; j < d; ++j) {
+    double a = centre(j), b = centre(j);
+    for (int i = 0; i < d; ++i) {
+      const double x = axes(j, i) * t_lower(i), y = axes(j, i) * t_upper(i);
+      a += std::min(x, y);
+      b += std::max(x, y);
+    }
+    zlo(j) = std::clamp(a, 0.0, 1.0);
+    zhi(j) = std::clamp(b, 0.0, 1.0);
+  }
+  lo = toPhysical(zlo);
+  hi = toPhysical(zhi);
+}
+
+nlohmann::json Region::toJson() const {
+  nlohmann::json j{{"kind", kind},
+                   {"coordinates", "scaled z_j = (theta_j - lower_j)/(upper_j - lower_j); region = {centre + axes t : t_lower <= t <= t_upper}"},
+                   {"bounds_lower", lower},
+                   {"bounds_upper", upper},
+                   {"centre", vecJson(centre)},
+                   {"t_lower", vecJson(t_lower)},
+                   {"t_upper", vecJson(t_upper)},
+                   {"reach_lower", vecJson(reach_lower)},
+                   {"reach_upper", vecJson(reach_upper)},
+                   {"guess_mean", vecJson(guess_mean)},
+                   {"guess_sd", vecJson(guess_sd)},
+                   {"threshold", threshold},
+                   {"sse_min", sse_min},
+                   {"evaluations", evaluations},
+                   {"log_volume", logVolume()},
+                   {"messages", messages}};
+  j["axes"] = nlohmann::json::array();  // column i = axis i
+  for (Eigen::Index i = 0; i < axes.cols(); ++i) j["axes"].push_back(vecJson(axes.col(i)));
+  j["ridge"] = nlohmann::json::array();  // traced floor points inside the contour, scaled
+  for (Eigen::Index i = 0; i < ridge.rows(); ++i) j["ridge"].push_back(vecJson(ridge.row(i).transpose()));
+  std::vector<double> lo, hi;
+  boundingBox(lo, hi);
+  j["bounding_box_lower"] = lo;
+  j["bounding_box_upper"] = hi;
+  return j;
+}
+
+Region Region::fromJson(const nlohmann::json& j) {
+  Region r;
+  r.kind = j.at("kind").get<std::string>();
+  r.lower = j.at("bounds_lower").get<std::vector<double>>();
+  r.upper = j.at("bounds_upper").get<std::vector<double>>();
+  r.centre = vecFrom(j.at("centre"));
+  r.t_lower = vecFrom(j.at("t_lower"));
+  r.t_upper = vecFrom(j.at("t_upper"));
+  r.reach_lower = vecFrom(j.at("reach_lower"));
+  r.reach_upper = vecFrom(j.at("reach_upper"));
+  r.guess_mean = vecFrom(j.at("guess_mean"));
+  r.guess_sd = vecFrom(j.at("guess_sd"));
+  r.threshold = j.at("threshold").get<double>();
+  r.sse_min = j.at("sse_min").get<double>();
+  r.evaluations = j.at("evaluations").get<int>();
+  r.messages = j.at("messages").get<std::vector<std::string>>();
+  const auto& ax = j.at("axes");
+  const auto d = static_cast<Eigen::Index>(ax.size());
+  r.axes.resize(d, d);
+  for (Eigen::Index i = 0; i < d; ++i) r.axes.col(i) = vecFrom(ax[static_cast<std::size_t>(i)]);
+  const auto& rg = j.at("ridge");
+  r.ridge.resize(static_cast<Eigen::Index>(rg.size()), d);
+  for (std::size_t i = 0; i < rg.size(); ++i) r.ridge.row(static_cast<Eigen::Index>(i)) = vecFrom(rg[i]).transpose();
+  return r;
+}
+
+std::string Region::briefReport() const {
+  std::ostringstream os;
+  std::vector<double> lo, hi;
+  boundingBox(lo, hi);
+  os << kind << " region (SSE <= " << fmt(threshold) << "), bounding box ";
+  for (std::size_t j = 0; j < lo.size(); ++j) os << (j ? ", " : "") << "[" << fmt(lo[j]) << ", " << fmt(hi[j]) << "]";
+  os << " (" << evaluations << " evaluations)";
+  for (const auto& m : messages) os << "\n  note: " << m;
+  return os.str();
+}
+
+Region regionFromBox(const FeasibleBox& box, const BoxProblem& problem) {
+  Region r;
+  r.kind = "paper";
+  r.lower = problem.lower;
+  r.upper = problem.upper;
+  const int d = r.dim();
+  r.axes = Eigen::MatrixXd::Identity(d, d);
+  r.centre = r.toScaled(problem.theta_hat);
+  const Eigen::VectorXd zlo = r.toScaled(box.lower), zhi = r.toScaled(box.upper);
+  r.t_lower = zlo - r.centre;
+  r.t_upper = zhi - r.centre;
+  r.reach_lower = r.centre;
+  r.reach_upper = Eigen::VectorXd::Ones(d) - r.centre;
+  r.guess_mean = r.centre + 0.5 * (r.t_lower + r.t_upper);
+  r.guess_sd = (r.t_upper - r.t_lower) / (2.0 * std::sqrt(2.0 * std::log(100.0)));
+  r.ridge.resize(0, d);
+  r.threshold = box.threshold;
+  r.sse_min = problem.sse_min;
+  r.evaluations = box.evaluations;
+  for (const auto& s : box.sweeps)
+    if (!s.message.empty()) r.messages.push_back(s.message);
+  return r;
+}
+
+// ------------------------------------------------------------------ joint region
+void JointRegionOptions::validate() const {
+  const std::string where = "joint region options";
+  if (!(jacobian_step > 0.0 && jacobian_step <= 0.5))
+    throw InputError(where, "jacobian_step must be in (0, 0.5] (scaled units), got " + fmt(jacobian_step));
+  if (!(margin >= 1.0 && std::isfinite(margin))) throw InputError(where, "margin must be >= 1, got " + fmt(margin));
+  if (!(relative_tolerance > 0.0 && relative_tolerance < 1.0))
+    throw InputError(where, "relative_tolerance must be in (0, 1), got " + fmt(relative_tolerance));
+  if (!(growth > 1.0 && std::isfinite(growth))) throw InputError(where, "growth must be > 1, got " + fmt(growth));
+  if (max_evaluations < 2) throw InputError(where, "max_evaluations must be >= 2, got " + std::to_string(max_evaluations));
+  if (!(ridge_ratio >= 1.0 && std::isfinite(ridge_ratio))) throw InputError(where, "ridge_ratio must be >= 1, got " + fmt(ridge_ratio));
+  if (ridge_steps < 0) throw InputError(where, "ridge_steps must be >= 0, got " + std::to_string(ridge_steps));
+}
+
+nlohmann::json JointRegionOptions::toJson() const {
+  return {{"rule", "principal axes of the Gauss-Newton Hessian at the optimum; extents = margin * the crossings of the 1 % contour by "
+                   "straight sweeps and, along the weak axes, by ridge traces (profiles)"},
+          {"jacobian_step_scaled", jacobian_step},
+          {"margin", margin},
+          {"relative_tolerance", relative_tolerance},
+          {"growth", growth},
+          {"max_evaluations_per_sweep", max_evaluations},
+          {"ridge_ratio", ridge_ratio},
+          {"ridge_steps", ridge_steps}};
+}
+
+std::vector<std::vector<double>> jacobianStencil(const BoxProblem& problem, const JointRegionOptions& options) {
+  problem.validate();
+  options.validate();
+  const std::size_t d = problem.theta_hat.size();
+  std::vector<std::vector<double>> pts;
+  for (std::size_t j = 0; j < d; ++j)
+    for (int s : {-1, +1}) {
+      auto th = problem.theta_hat;
+      const double range = problem.upper[j] - problem.lower[j];
+      th[j] = std::clamp(th[j] + s * options.jacobian_step * range, problem.lower[j], problem.upper[j]);
+      pts.push_back(th);
+    }
+  return pts;
+}
+
+JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std::vector<double>>& residuals,
+                                const JointRegionOptions& options) {
+  problem.validate();
+  options.validate();
+  const int d = static_cast<int>(problem.theta_hat.size());
+  DTWIN_CHECK(static_cast<int>(residuals.size()) == 2 * d, "planJointRegion needs 2d stencil residuals");
+  JointRegionPlan plan;
+  plan.problem = problem;
+  plan.evaluations = 2 * d;
+  const auto stencil = jacobianStencil(problem, options);
+  std::size_t n = 0;
+  for (const auto& r : residuals) n = std::max(n, r.size());
+  plan.jacobian = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), d);
+  for (int j = 0; j < d; ++j) {
+    const auto& rm = residuals[static_cast<std::size_t>(2 * j)];
+    const auto& rp = residuals[static_cast<std::size_t>(2 * j + 1)];
+    const auto k = static_cast<std::size_t>(j);
+    const double range = problem.upper[k] - problem.lower[k];
+    const double dz = (stencil[static_cast<std::size_t>(2 * j + 1)][k] - stencil[static_cast<std::size_t>(2 * j)][k]) / range;
+    bool ok = rm.size() == n && rp.size() == n && dz > 0.0;
+    for (std::size_t i = 0; ok && i < n; ++i) ok = std::isfinite(rm[i]) && std::isfinite(rp[i]);
+    if (!ok) {
+      plan.messages.push_back("parameter " + std::to_string(j) +
+                              ": a simulation of the Jacobian stencil failed; the region spans this parameter's range");
+      continue;
+    }
+    for (std::size_t i = 0; i < n; ++i) plan.jacobian(static_cast<Eigen::Index>(i), j) = (rp[i] - rm[i]) / dz;
+  }
+  const Eigen::MatrixXd H = plan.jacobian.transpose() * plan.jacobian;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
+  DTWIN_CHECK(es.info() == Eigen::Success, "eigen-decomposition of the Gauss-Newton Hessian failed");
+  plan.eigenvalues = es.eigenvalues();
+  plan.axes = es.eigenvectors();
+  const double dT = problem.threshold() - problem.sse_min;
+  const double cap = std::sqrt(static_cast<double>(d));
+  plan.half_width.resize(d);
+  plan.reach_lower.resize(d);
+  plan.reach_upper.resize(d);
+  Eigen::VectorXd zhat(d);
+  for (int j = 0; j < d; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    zhat(j) = (problem.theta_hat[k] - problem.lower[k]) / (problem.upper[k] - problem.lower[k]);
+  }
+  const double lam_max = std::max(plan.eigenvalues.maxCoeff(), 0.0);
+  for (int i = 0; i < d; ++i) {
+    Eigen::Index big = 0;
+    plan.axes.col(i).cwiseAbs().maxCoeff(&big);
+    if (plan.axes(big, i) < 0) plan.axes.col(i) *= -1.0;
+    const double lam = plan.eigenvalues(i);
+    const bool identified = lam > 1e-12 * lam_max && lam > 0.0;
+    plan.half_width(i) = identified ? std::min(std::sqrt(dT / lam), cap) : cap;
+    cubeReach(zhat, plan.axes.col(i), plan.reach_lower(i), plan.reach_upper(i));
+  }
+  return plan;
+}
+
+RaySweep calcRegionSweep(const SseFunction& sse, const JointRegionPlan& plan, int index, const JointRegionOptions& options) {
+  options.validate();
+  const auto& p = plan.problem;
+  const int d = static_cast<int>(p.theta_hat.size());
+  DTWIN_CHECK(index >= 0 && index < 2 * d, "region sweep index out of range");
+  const int i = index / 2, s = index % 2 == 0 ? -1 : +1;
+  Eigen::VectorXd zhat(d);
+  for (int j = 0; j < d; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    zhat(j) = (p.theta_hat[k] - p.lower[k]) / (p.upper[k] - p.lower[k]);
+  }
+  const Eigen::VectorXd a = plan.axes.col(i);
+  const double t_max = rayExit(zhat, a, s);
+  const double half = plan.half_width(i);
+  FeasibleBoxOptions fo;
+  fo.initial_step = 0.5 * std::min(half, 0.2);
+  fo.growth = options.growth;
+  fo.max_evaluations = options.max_evaluations;
+  std::vector<double> theta(static_cast<std::size_t>(d));
+  return sweepRay(
+      [&](double t) {
+        const Eigen::VectorXd z = zhat + (s * t) * a;
+        for (int j = 0; j < d; ++j) {
+          const auto k = static_cast<std::size_t>(j);
+          const double zj = std::clamp(z(j), 0.0, 1.0);
+          theta[k] = zj >= 1.0 ? p.upper[k] : p.lower[k] + zj * (p.upper[k] - p.lower[k]);
+        }
+        return sse(theta);
+      },
+      t_max, p.threshold(), p.sse_min, fo, fo.initial_step, options.relative_tolerance);
+}
+
+std::vector<int> ridgeAxes(const JointRegionPlan& plan, const JointRegionOptions& options) {
+  std::vector<int> axes;
+  if (options.ridge_steps == 0 || plan.eigenvalues.size() == 0) return axes;
+  const double lam_min = std::max(plan.eigenvalues(0), 0.0);
+  for (Eigen::Index i = 0; i < plan.eigenvalues.size(); ++i)
+    if (i == 0 || plan.eigenvalues(i) <= options.ridge_ratio * lam_min) axes.push_back(static_cast<int>(i));
+  return axes;
+}
+
+namespace {
+
+/// Scaled point -> physical θ (clamped to the bounds).
+std::vector<double> physical(const BoxProblem& p, const Eigen::VectorXd& z) {
+  std::vector<double> th(p.theta_hat.size());
+  for (std::size_t k = 0; k < th.size(); ++k) {
+    const double zk = std::clamp(z(static_cast<Eigen::Index>(k)), 0.0, 1.0);
+    th[k] = zk >= 1.0 ? p.upper[k] : p.lower[k] + zk * (p.upper[k] - p.lower[k]);
+  }
+  return th;
+}
+
+/// The straight sweep's crossing along axis i, direction s (the reach when it was clipped).
+double crossingOf(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps, int i, int s) {
+  const RaySweep& w = sweeps[static_cast<std::size_t>(2 * i + (s > 0 ? 1 : 0))];
+  const double reach = s > 0 ? plan.reach_upper(i) : plan.reach_lower(i);
+  return (w.clipped || w.budget_out) ? reach : std::max(w.t_edge, 1e-12);
+}
+
+}  // namespace
+
+RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
+                          int index, const JointRegionOptions& options) {
+  options.validate();
+  const auto& p = plan.problem;
+  const int d = static_cast<int>(p.theta_hat.size());
+  const std::vector<int> ridge = ridgeAxes(plan, options);
+  DTWIN_CHECK(index >= 0 && index < 2 * static_cast<int>(ridge.size()), "ridge trace index out of range");
+  RidgeTrace tr;
+  tr.axis = ridge[static_cast<std::size_t>(index / 2)];
+  tr.direction = index % 2 == 0 ? -1 : +1;
+  const int i = tr.axis, s = tr.direction;
+  Eigen::VectorXd z0(d);
+  for (int j = 0; j < d; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    z0(j) = (p.theta_hat[k] - p.lower[k]) / (p.upper[k] - p.lower[k]);
+  }
+  const Eigen::VectorXd a = plan.axes.col(i);
+  // B: the other axes; h: their central-difference steps (10 % of their crossings).
+  Eigen::MatrixXd B(d, d - 1);
+  Eigen::VectorXd h(d - 1);
+  for (int j = 0, c = 0; j < d; ++j) {
+    if (j == i) continue;
+    B.col(c) = plan.axes.col(j);
+    h(c) = std::max(0.05 * (crossingOf(plan, sweeps, j, -1) + crossingOf(plan, sweeps, j, +1)), 1e-9);
+    ++c;
+  }
+  const double T = p.threshold();
+  const double sigma2 = p.sse_min / p.n_data;
+  const double reach = s > 0 ? plan.reach_upper(i) : plan.reach_lower(i);
+  auto res = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) {
+    ++tr.evaluations;
+    const auto v = residuals(physical(p, z));
+    if (v.empty()) return false;
+    r = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+    return r.allFinite();
+  };
+  auto point = [&](double t, const Eigen::VectorXd& u) -> Eigen::VectorXd { return z0 + (s * t) * a + B * u; };
+  if (d < 2) {
+    tr.message = "one parameter: nothing to re-optimise";
+    return tr;
+  }
+  double step = 0.25 * crossingOf(plan, sweeps, i, s);
+  const double min_step = step / 16.0;
+  double t = 0.0, prev_sse = p.sse_min, prev_step = step;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(d - 1), u_prev = u;
+  // The floor at t: Levenberg–Marquardt on u from `un` (at most 4 iterations). False when the
+  // simulation at the start point fails.
+  auto floorAt = [&](double tt, Eigen::VectorXd& un, Eigen::VectorXd& r, double& f) {
+    if (!res(point(tt, un), r)) return false;
+    f = r.squaredNorm();
+    double mu = 1e-3;
+    for (int it = 0; it < 4; ++it) {
+      Eigen::MatrixXd J(r.size(), d - 1);
+      bool ok = true;
+      for (int c = 0; c < d - 1 && ok; ++c) {
+        Eigen::VectorXd rp, rm, e = Eigen::VectorXd::Zero(d - 1);
+        e(c) = h(c);
+        ok = res(point(tt, un + e), rp) && res(point(tt, un - e), rm) && rp.size() == r.size() && rm.size() == r.size();
+        if (ok) J.col(c) = (rp - rm) / (2 * h(c));
+      }
+      if (!ok) break;
+      const Eigen::MatrixXd A = J.transpose() * J;
+      const Eigen::VectorXd g = J.transpose() * r;
+      bool improved = false;
+      for (int tries = 0; tries < 3 && !improved; ++tries) {
+        Eigen::MatrixXd Al = A;
+        for (int c = 0; c < d - 1; ++c) Al(c, c) += mu * std::max(A(c, c), 1e-300);
+        const Eigen::VectorXd cand = un + Al.ldlt().solve(-g);
+        Eigen::VectorXd rc;
+        if (res(point(tt, cand), rc) && rc.size() == r.size() && rc.squaredNorm() < f) {
+          const double gain = f - rc.squaredNorm();
+          un = cand;
+          r = rc;
+          f = rc.squaredNorm();
+          mu = std::max(mu / 10, 1e-9);
+          improved = true;
+          if (gain < 0.05 * sigma2) it = 4;  // converged
+        } else {
+          mu *= 10;
+        }
+      }
+      if (!improved) break;
+    }
+    return true;
+  };
+  for (int k = 0; k < options.ridge_steps; ++k) {
+    if (t > reach) {
+      tr.clipped = true;
+      return tr;
+    }
+    const double t_next = t + step;
+    // Warm start: extrapolate the floor.
+    Eigen::VectorXd un = u + (u - u_prev) * (step / prev_step), r;
+    double f = 0.0;
+    if (!floorAt(t_next, un, r, f)) {
+      un = u;
+      if (!floorAt(t_next, un, r, f)) {
+        tr.message = "a simulation on the ridge failed at t = " + fmt(t_next) + "; the trace stops there";
+        return tr;
+      }
+    }
+    if (f > T && step > min_step) {
+      // A step that lands outside may have jumped off a thin, bending ridge rather than reached
+      // the contour's end: halve it, from the last floor point, before concluding (down to 1/16
+      // of the first step).
+      step *= 0.5;
+      continue;
+    }
+    u_prev = u;
+    u = un;
+    prev_step = step;
+    t = t_next;
+    tr.t.push_back(t);
+    tr.z.push_back(point(t, u));
+    tr.sse.push_back(f);
+    if (f > T) {
+      tr.closed = true;
+      const double t_in = tr.t.size() >= 2 ? tr.t[tr.t.size() - 2] : 0.0;
+      const double f_in = tr.t.size() >= 2 ? tr.sse[tr.sse.size() - 2] : p.sse_min;
+      const double g_in = std::sqrt(std::max(f_in - p.sse_min, 0.0)), g_out = std::sqrt(f - p.sse_min),
+                   g_T = std::sqrt(T - p.sse_min);
+      tr.crossing = g_out > g_in ? t_in + (g_T - g_in) / (g_out - g_in) * (t - t_in) : t;
+      return tr;
+    }
+    const double rise = f - prev_sse;
+    prev_sse = f;
+    if (rise < 0.5 * sigma2) step *= 1.5;
+    else if (rise > 3.0 * sigma2) step *= 0.6;
+  }
+  if (t > reach) tr.clipped = true;
+  else tr.message = "the ridge trace used its " + std::to_string(options.ridge_steps) + " steps inside the contour";
+  return tr;
+}
+
+Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps, const std::vector<RidgeTrace>& traces,
+                          const JointRegionOptions& options) {
+  const auto& p = plan.problem;
+  const int d = static_cast<int>(p.theta_hat.size());
+  DTWIN_CHECK(static_cast<int>(sweeps.size()) == 2 * d, "a joint region needs 2d sweeps");
+  Region r;
+  r.kind = "joint";
+  r.lower = p.lower;
+  r.upper = p.upper;
+  r.centre = r.toScaled(p.theta_hat);
+  r.axes = plan.axes;
+  r.t_lower.resize(d);
+  r.t_upper.resize(d);
+  r.reach_lower = plan.reach_lower;
+  r.reach_upper = plan.reach_upper;
+  r.threshold = p.threshold();
+  r.sse_min = p.sse_min;
+  r.evaluations = plan.evaluations;
+  r.messages = plan.messages;
+  r.guess_mean = r.centre;
+  r.guess_sd.resize(d);
+  const double k = std::sqrt(2.0 * std::log(100.0));
+  // Straight sweeps.
+  Eigen::MatrixXd crossing(d, 2);  // column 0: towards −a_i, 1: towards +a_i
+  std::vector<bool> traced(static_cast<std::size_t>(d), false);
+  for (const auto& tr : traces) traced[static_cast<std::size_t>(tr.axis)] = true;
+  for (int i = 0; i < d; ++i)
+    for (int s : {-1, +1}) {
+      const RaySweep& w = sweeps[static_cast<std::size_t>(2 * i + (s > 0 ? 1 : 0))];
+      r.evaluations += w.evaluations;
+      if (w.budget_out)
+        r.messages.push_back("axis " + std::to_string(i) + (s > 0 ? " (+)" : " (-)") +
+                             ": the sweep did not bracket the 1 % contour within its budget; the region takes the bounds' reach");
+      crossing(i, s > 0 ? 1 : 0) = crossingOf(plan, sweeps, i, s);
+    }
+  // Ridge traces: the crossing along a traced axis is where its profile crossed T.
+  std::vector<Eigen::VectorXd> floor;
+  for (const auto& tr : traces) {
+    r.evaluations += tr.evaluations;
+    if (!tr.message.empty()) r.messages.push_back("ridge along axis " + std::to_string(tr.axis) + (tr.direction > 0 ? " (+)" : " (-)") + ": " + tr.message);
+    const int col = tr.direction > 0 ? 1 : 0;
+    const double reach = tr.direction > 0 ? plan.reach_upper(tr.axis) : plan.reach_lower(tr.axis);
+    const double along = tr.closed ? tr.crossing : (tr.clipped ? reach : (tr.t.empty() ? 0.0 : tr.t.back()));
+    crossing(tr.axis, col) = std::max(crossing(tr.axis, col), along);
+    for (std::size_t q = 0; q < tr.z.size(); ++q)
+      if (tr.sse[q] <= r.threshold) floor.push_back(tr.z[q]);
+  }
+  for (int i = 0; i < d; ++i) {
+    for (int s : {-1, +1}) {
+      const double reach = s > 0 ? plan.reach_upper(i) : plan.reach_lower(i);
+      double e = options.margin * crossing(i, s > 0 ? 1 : 0);
+      // Across a ridge: room for the contour's cross-section around every floor point.
+      if (!traced[static_cast<std::size_t>(i)])
+        for (const auto& z : floor) e = std::max(e, s * r.axes.col(i).dot(z - r.centre) + options.margin * crossing(i, s > 0 ? 1 : 0));
+      e = std::min(e, reach);
+      (s > 0 ? r.t_upper(i) : r.t_lower(i)) = s * std::max(e, 1e-12);
+    }
+    r.guess_mean += r.axes.col(i) * (0.5 * (crossing(i, 1) - crossing(i, 0)));
+    r.guess_sd(i) = 0.5 * (crossing(i, 0) + crossing(i, 1)) / k;
+  }
+  r.ridge.resize(static_cast<Eigen::Index>(floor.size()), d);
+  for (std::size_t q = 0; q < floor.size(); ++q) r.ridge.row(static_cast<Eigen::Index>(q)) = floor[q].transpose();
+  return r;
+}
+
+Region calcJointRegion(const SseFunction& sse, const ResidualFunction& residuals, const BoxProblem& problem,
+                       const JointRegionOptions& options, const ParallelFor& parallel_for) {
+  const int d = static_cast<int>(problem.theta_hat.size());
+  const ParallelFor& run = parallel_for ? parallel_for : ParallelFor(sequentialFor);
+  const auto stencil = jacobianStencil(problem, options);
+  std::vector<std::vector<double>> res(stencil.size());
+  std::vector<std::exception_ptr> errors(stencil.size());
+  run(static_cast<int>(stencil.size()), [&](int k) {
+    try {
+      res[static_cast<std::size_t>(k)] = residuals(stencil[static_cast<std::size_t>(k)]);
+    } catch (...) {
+      errors[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  });
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  const JointRegionPlan plan = planJointRegion(problem, res, options);
+  std::vector<RaySweep> sweeps(static_cast<std::size_t>(2 * d));
+  std::vector<std::exception_ptr> errs(sweeps.size());
+  run(2 * d, [&](int k) {
+    try {
+      sweeps[static_cast<std::size_t>(k)] = calcRegionSweep(sse, plan, k, options);
+    } catch (...) {
+      errs[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  });
+  for (const auto& e : errs)
+    if (e) std::rethrow_exception(e);
+  const int m = 2 * static_cast<int>(ridgeAxes(plan, options).size());
+  std::vector<RidgeTrace> traces(static_cast<std::size_t>(m));
+  std::vector<std::exception_ptr> terr(traces.size());
+  run(m, [&](int k) {
+    try {
+      traces[static_cast<std::size_t>(k)] = calcRidgeTrace(residuals, plan, sweeps, k, options);
+    } catch (...) {
+      terr[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  });
+  for (const auto& e : terr)
+    if (e) std::rethrow_exception(e);
+  return collectJointRegion(plan, sweeps, traces, options);
+}
+
+}  // namespace dtwin::calib

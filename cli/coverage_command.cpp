@@ -1,0 +1,102 @@
+// `twin coverage`: how often the calibration's 95 % intervals hold the truth, over noise seeds
+// (calibration/coverage.hpp, docs/calibration.md).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "calibration/coverage.hpp"
+#include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/study.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin::cli {
+namespace {
+
+struct CoverageConfig {
+  std::string study = defaultStudy(), out, region, design;
+  std::vector<std::string> assemblies;
+  int seeds = 20, threads = 0;
+  long long first_seed = 1001;
+  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
+  bool quiet = false;
+};
+
+int runCoverage(const CoverageConfig& cfg, const std::string& command) {
+  const Study study = loadStudy(cfg.study);
+  for (const auto& id : cfg.assemblies) study.assembly(id);  // validates the ids
+  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
+  calib::CoverageOptions o;
+  o.seeds = cfg.seeds;
+  o.first_seed = static_cast<std::uint64_t>(cfg.first_seed);
+  o.assemblies = cfg.assemblies;
+  o.out_dir = cfg.out;
+  o.command = command;
+  o.calibration = calib::CalibrationOptions::fromStudy(study);
+  o.calibration.threads = cfg.threads;
+  if (cfg.lhs_points > 0) o.calibration.lhs_points = static_cast<int>(cfg.lhs_points);
+  if (cfg.iterations > 0) o.calibration.gibbs_iterations = static_cast<int>(cfg.iterations);
+  if (cfg.burn_in >= 0) o.calibration.gibbs_burn_in = static_cast<int>(cfg.burn_in);
+  if (cfg.starts > 0) o.calibration.optimizer_starts = static_cast<int>(cfg.starts);
+  if (!cfg.region.empty()) {
+    o.calibration.region = cfg.region;
+    if (cfg.design.empty()) o.calibration.design.adaptive = cfg.region == "joint";
+  }
+  if (!cfg.design.empty()) o.calibration.design.adaptive = cfg.design == "adaptive";
+  if (o.calibration.gibbs_burn_in >= o.calibration.gibbs_iterations)
+    throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
+  o.validate();
+  const std::size_t n_asm = cfg.assemblies.empty() ? study.assemblies().size() : cfg.assemblies.size();
+  if (!cfg.quiet)
+    std::printf("coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n", n_asm, n_asm == 1 ? "y" : "ies",
+                cfg.seeds, cfg.first_seed, cfg.first_seed + cfg.seeds - 1, o.calibration.region.c_str(),
+                o.calibration.design.adaptive ? "adaptive" : "lhs", cfg.out.c_str());
+  const bool bar_on = !cfg.quiet && stderrIsTerminal();
+  ProgressBar bar("coverage", bar_on);
+  std::string current;
+  const calib::CoverageResult r = calib::runCoverage(
+      study, o, [&](const std::string& a, std::uint64_t seed, int index, int count, const std::string& stage, std::size_t done, std::size_t total) {
+        const std::string label = a + " seed " + std::to_string(seed) + " (" + std::to_string(index + 1) + "/" + std::to_string(count) + ") " + stage;
+        if (label != current) {
+          current = label;
+          bar.restart(label);
+          if (!bar_on && !cfg.quiet && stage == "lab data") std::printf("  %s\n", label.c_str()), std::fflush(stdout);
+        }
+        bar.update(done, total);
+      });
+  bar.finish();
+  if (!cfg.quiet) {
+    std::printf("\n%s\nmedian calibration %.1f s, total %.0f s; %s/coverage.json, %s/coverage.md\n", r.markdown().c_str(),
+                r.median_calibration_wall_s, r.wall_s, cfg.out.c_str(), cfg.out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line) {
+  auto cfg = std::make_shared<CoverageConfig>();
+  auto* c = root.add_subcommand("coverage",
+                                "Measure how often the calibration's 95 % intervals hold the truth: each assembly's own lab data over N "
+                                "noise seeds, calibrated as `twin calibrate` would (resumable: rerun the same command to continue)");
+  c->add_option("--study", cfg->study, "Study file (TOML); its calibrated truths are what is covered")->capture_default_str();
+  c->add_option("--out", cfg->out, "Output folder: <id>/lab_<seed>.csv, <id>/seed_<seed>/, coverage.json, coverage.md")->required();
+  c->add_option("--assembly", cfg->assemblies, "Assembly ids (repeatable; default: all)");
+  c->add_option("--seeds", cfg->seeds, "Number of noise seeds N")->capture_default_str()->check(CLI::Range(2, 100000));
+  c->add_option("--first-seed", cfg->first_seed, "Noise seed of the first data set (seeds first .. first + N - 1)")
+      ->capture_default_str()
+      ->check(CLI::Range(0LL, (1LL << 62)));
+  c->add_option("--region", cfg->region, "joint or paper (default: the study's [calibration] region)")->check(CLI::IsMember({"joint", "paper"}));
+  c->add_option("--design", cfg->design, "adaptive or lhs (default: the study's, or the region's default)")->check(CLI::IsMember({"adaptive", "lhs"}));
+  c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+  c->add_option("--lhs-points", cfg->lhs_points, "Design points of round 0 (default: sizes.lhs_points)")->check(CLI::Range(2L, 10000000L));
+  c->add_option("--iterations", cfg->iterations, "Gibbs iterations incl. burn-in (default: sizes.gibbs_iterations)")->check(CLI::Range(1L, 100000000L));
+  c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
+  c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
+  c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  return {c, [cfg, command_line] { return runCoverage(*cfg, command_line); }};
+}
+
+}  // namespace dtwin::cli

@@ -285,6 +285,7 @@ CalibrationOptions CalibrationOptions::fromStudy(const Study& study) {
   o.design.max_rounds = static_cast<int>(study.calibration.max_rounds);
   o.design.target_ess = study.calibration.target_ess;
   o.joint.margin = study.calibration.margin;
+  o.interval = study.calibration.interval;
   return o;
 }
 
@@ -307,6 +308,9 @@ void CalibrationOptions::validate() const {
   if (!(tau_prior_a >= 0 && tau_prior_b >= 0)) throw InputError("tau prior", "a and b must be >= 0");
   if (region != "joint" && region != "paper")
     throw InputError("region", "must be \"joint\" or \"paper\", got \"" + region + "\"");
+  if (interval != "profile" && interval != "posterior")
+    throw InputError("interval", "must be \"profile\" or \"posterior\", got \"" + interval + "\"");
+  profile.validate();
   optimizer.validate();
   box.validate();
   joint.validate();
@@ -340,6 +344,8 @@ nlohmann::json CalibrationOptions::toJson() const {
     j["joint_region"] = joint.toJson();
   }
   j["design"] = designOptions().toJson();
+  j["profile"] = profile.toJson();
+  j["interval"] = interval;
   if (!extra_starts.empty()) j["extra_starts"] = extra_starts;
   if (polish_step > 0) j["polish_step"] = polish_step;
   return j;
@@ -670,16 +676,24 @@ nlohmann::json CalibrationResult::toJson() const {
   region.boundingBox(box_lo, box_hi);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const auto& p = posterior.parameters[k];
+    const bool has_profile = k < profile.lower.size();
+    const double plo = has_profile ? profile.lower[k] : p.q025, phi = has_profile ? profile.upper[k] : p.q975;
+    const bool use_profile = interval == "profile" && has_profile;
     nlohmann::json e{{"mean", p.mean},
                      {"sd", p.sd},
-                     {"ci95", {p.q025, p.q975}},
+                     {"ci95", {use_profile ? plo : p.q025, use_profile ? phi : p.q975}},
+                     {"interval", use_profile ? "profile" : "posterior"},
+                     {"credible95", {p.q025, p.q975}},
                      {"ess", num(p.ess)},
                      {"optimum", optimum.theta[k]},
                      {"box", {box_lo[k], box_hi[k]}},
                      {"box_clipped", {box_lo[k] <= region.lower[k], box_hi[k] >= region.upper[k]}}};
+    if (has_profile) e["profile95"] = {plo, phi};
     if (truth[k]) {
       e["truth"] = *truth[k];
-      e["truth_in_ci95"] = *truth[k] >= p.q025 && *truth[k] <= p.q975;
+      e["truth_in_credible95"] = *truth[k] >= p.q025 && *truth[k] <= p.q975;
+      if (has_profile) e["truth_in_profile95"] = *truth[k] >= plo && *truth[k] <= phi;
+      e["truth_in_ci95"] = use_profile ? (*truth[k] >= plo && *truth[k] <= phi) : (*truth[k] >= p.q025 && *truth[k] <= p.q975);
     }
     j["parameters"][names[k]] = e;
   }
@@ -691,6 +705,8 @@ nlohmann::json CalibrationResult::toJson() const {
               {"noise_variance_mean_N2", posterior.tau.mean > 0 ? 1.0 / posterior.tau.mean : 0.0}};
   j["optimum"] = optimumJson(optimum);
   j["region"] = region.toJson();
+  j["interval"] = interval;
+  if (!profile.lower.empty()) j["profile"] = profile.toJson();
   if (region.kind == "paper") j["box"] = boxJson(box);
   j["design"] = rounds.toJson(names);
   j["design"]["failures"] = design_failures;
@@ -1005,7 +1021,53 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   }
   res.stage_wall_s.push_back({"design", secondsSince(t0)});
 
-  // Stage 4: two-block Griddy Gibbs with the design weights (cheap, deterministic from the seed:
+  // Stage 4: the profile-likelihood intervals, from every evaluated point (the design, the ridge
+  // floor, the optimum), each end pushed out by profile steps.
+  t0 = std::chrono::steady_clock::now();
+  res.interval = options.interval;
+  const fs::path profile_path = fs::path(out_dir) / "profile.json";
+  if (auto j = readStage(profile_path, fingerprint); !j.is_null()) {
+    res.profile = ProfileIntervals::fromJson(j.at("profile"));
+  } else {
+    const long extra = 1 + res.region.ridge.rows();
+    Eigen::MatrixXd pts(res.design.rows() + extra, static_cast<long>(d));
+    std::vector<double> f = res.sse;
+    pts.topRows(res.design.rows()) = res.design;
+    for (std::size_t k = 0; k < d; ++k) pts(res.design.rows(), static_cast<long>(k)) = res.optimum.theta[k];
+    f.push_back(res.optimum.sse);
+    for (Eigen::Index q = 0; q < res.region.ridge.rows(); ++q) {
+      const auto th = res.region.toPhysical(res.region.ridge.row(q).transpose());
+      for (std::size_t k = 0; k < d; ++k) pts(res.design.rows() + 1 + q, static_cast<long>(k)) = th[k];
+      f.push_back(res.region.ridge_sse[static_cast<std::size_t>(q)]);
+    }
+    const ProfilePlan plan = planProfile(pts, f, n, objective.lower(), objective.upper(), options.profile);
+    const auto packed = distributedMap(
+        2 * d, options.threads,
+        [&](std::size_t i, int) {
+          const ProfileEnd e = refineProfileEnd([&](const std::vector<double>& th) { return objective.residuals(th); }, plan,
+                                                static_cast<int>(i), options.profile);
+          return Packer().put(e.theta).put(e.sse).put(e.at_bound ? 1.0 : 0.0).put(e.evaluations).put(e.steps_taken).take();
+        },
+        [&](std::size_t done, std::size_t total) { report("profile", done, total); });
+    std::vector<ProfileEnd> ends;
+    for (const auto& v : packed) {
+      Unpacker u(v);
+      ProfileEnd e;
+      e.theta = u.vec();
+      e.sse = u.num();
+      e.at_bound = u.num() != 0.0;
+      e.evaluations = static_cast<int>(u.integer());
+      e.steps_taken = static_cast<int>(u.integer());
+      ends.push_back(e);
+    }
+    res.profile = collectProfile(plan, ends, options.profile);
+    rootWrites([&] {
+      writeFileAtomic(profile_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"profile", res.profile.toJson()}}.dump(2) + "\n");
+    });
+  }
+  res.stage_wall_s.push_back({"profile", secondsSince(t0)});
+
+  // Stage 5: two-block Griddy Gibbs with the design weights (cheap, deterministic from the seed:
   // never persisted half-way, always rerun).
   t0 = std::chrono::steady_clock::now();
   report("gibbs", 0, 1);

@@ -11,7 +11,8 @@
 //   box.json            the region (joint: Gauss–Newton axes and sweeps; paper: the box) (stage 2)
 //   design_journal.csv  design points as they finish (resume); design.csv the full table with
 //                       each point's round and log design weight (stage 3)
-//   posterior.csv       θ_1..θ_d, τ, design index per kept Gibbs iteration (stage 4)
+//   profile.json        the profile-likelihood intervals (stage 4)
+//   posterior.csv       θ_1..θ_d, τ, design index per kept Gibbs iteration (stage 5)
 //   summary.json        everything a script needs (see CalibrationResult::toJson)
 #include <cstdint>
 #include <functional>
@@ -28,6 +29,7 @@
 #include "calibration/feasible_box.hpp"
 #include "calibration/gibbs.hpp"
 #include "calibration/optimize.hpp"
+#include "calibration/profile.hpp"
 #include "calibration/region.hpp"
 #include "calibration/summary.hpp"
 #include "twin/measurement.hpp"
@@ -153,6 +155,11 @@ struct CalibrationOptions {
   /// Rounds after the first Latin hypercube (adaptive_design.hpp); first_points, seed and the τ
   /// prior are taken from lhs_points, seed and tau_prior_* when the calibration runs.
   AdaptiveDesignOptions design;
+  /// The profile-likelihood intervals (profile.hpp), computed after the design.
+  ProfileOptions profile;
+  /// Which 95 % interval summaries print as ci95: "profile" (default) or "posterior" (the
+  /// posterior's central interval, the paper's). Both are always in summary.json.
+  std::string interval = "profile";
   /// Extra optimiser starts (physical units, θ order), run before the usual ones; e.g. a nested
   /// model's optimum with the added parameters at their off values, so the larger model's
   /// optimum is never worse than the nested one's. Part of the fingerprint when not empty.
@@ -185,6 +192,8 @@ struct CalibrationResult {
   Region region;            ///< what the design covers (stage 2)
   FeasibleBox box;          ///< the paper's box and its sweeps (region = "paper" only)
   AdaptiveDesign rounds;    ///< the design's rounds, weights and diagnostics (stage 3)
+  ProfileIntervals profile; ///< the profile-likelihood intervals (stage 4)
+  std::string interval = "profile";  ///< which interval ci95 is
   Eigen::MatrixXd design;   ///< N x d, every round's points
   std::vector<double> sse;  ///< per design point (+inf: failed)
   long design_failures = 0;

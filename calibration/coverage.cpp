@@ -52,7 +52,12 @@ nlohmann::json CoverageResult::toJson() const {
                          {"covered", r.covered},
                          {"coverage", r.seeds ? static_cast<double>(r.covered) / r.seeds : 0.0},
                          {"coverage_wilson95", {r.wilson_low, r.wilson_high}},
+                         {"interval", r.interval},
+                         {"covered_profile", r.covered_profile},
+                         {"covered_posterior", r.covered_posterior},
                          {"mean_ci95_width", r.mean_width},
+                         {"mean_profile95_width", r.mean_width_profile},
+                         {"mean_credible95_width", r.mean_width_posterior},
                          {"mean_posterior_sd", r.mean_sd},
                          {"sd_of_posterior_means", r.sd_of_means},
                          {"sd_ratio", r.sd_ratio()},
@@ -69,16 +74,28 @@ nlohmann::json CoverageResult::toJson() const {
 
 std::string CoverageResult::markdown() const {
   std::ostringstream s;
-  s << "| assembly | parameter | truth | 95 % interval holds the truth | Wilson 95 % | mean width | mean sd | sd of means | "
-       "mean sd / sd of means | sd of θ̂ | mean sd / sd of θ̂ | RMSE of means / mean sd |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  s << "| assembly | parameter | truth | ci95 holds the truth | Wilson 95 % | profile holds | posterior holds | mean width profile | "
+       "mean width posterior | mean sd | sd of means | mean sd / sd of means | sd of θ̂ | mean sd / sd of θ̂ | RMSE of means / mean sd |\n"
+       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
     s << "| " << r.assembly << " | " << r.parameter << " | " << fmt(r.truth, 6) << " | " << r.covered << "/" << r.seeds << " ("
-      << fmt(100.0 * r.covered / std::max(r.seeds, 1), 3) << " %) | " << fmt(100 * r.wilson_low, 3) << "–" << fmt(100 * r.wilson_high, 3)
-      << " % | " << fmt(r.mean_width) << " | " << fmt(r.mean_sd) << " | " << fmt(r.sd_of_means) << " | " << fmt(r.sd_ratio(), 3)
-      << " | " << fmt(r.sd_of_optima) << " | " << fmt(r.optimum_ratio(), 3) << " | " << fmt(r.rmse_ratio(), 3) << " |\n";
-  s << "\n| assembly | (parameter, seed) pairs covered |\n|---|---|\n";
-  for (const auto& [a, t] : totals)
-    s << "| " << a << " | " << t.first << "/" << t.second << " (" << fmt(100.0 * t.first / std::max(t.second, 1), 3) << " %) |\n";
+      << fmt(100.0 * r.covered / std::max(r.seeds, 1), 3) << " %, " << r.interval << ") | " << fmt(100 * r.wilson_low, 3) << "–"
+      << fmt(100 * r.wilson_high, 3) << " % | " << r.covered_profile << "/" << r.seeds << " | " << r.covered_posterior << "/" << r.seeds
+      << " | " << fmt(r.mean_width_profile) << " | " << fmt(r.mean_width_posterior) << " | " << fmt(r.mean_sd) << " | "
+      << fmt(r.sd_of_means) << " | " << fmt(r.sd_ratio(), 3) << " | " << fmt(r.sd_of_optima) << " | " << fmt(r.optimum_ratio(), 3)
+      << " | " << fmt(r.rmse_ratio(), 3) << " |\n";
+  s << "\n| assembly | (parameter, seed) pairs whose ci95 holds the truth | profile | posterior |\n|---|---|---|---|\n";
+  for (const auto& [a, t] : totals) {
+    int prof = 0, post = 0;
+    for (const auto& r : rows)
+      if (r.assembly == a) {
+        prof += r.covered_profile;
+        post += r.covered_posterior;
+      }
+    s << "| " << a << " | " << t.first << "/" << t.second << " (" << fmt(100.0 * t.first / std::max(t.second, 1), 3) << " %) | " << prof
+      << "/" << t.second << " (" << fmt(100.0 * prof / std::max(t.second, 1), 3) << " %) | " << post << "/" << t.second << " ("
+      << fmt(100.0 * post / std::max(t.second, 1), 3) << " %) |\n";
+  }
   return s.str();
 }
 
@@ -141,15 +158,24 @@ CoverageResult runCoverage(const Study& study, const CoverageOptions& options, c
       for (const auto& s : summaries) {
         const auto& e = s.at("parameters").at(order[p]);
         const double lo = e.at("ci95")[0].get<double>(), hi = e.at("ci95")[1].get<double>(), m = e.at("mean").get<double>();
+        const auto& cr = e.at("credible95");
+        const auto& pr = e.contains("profile95") ? e.at("profile95") : cr;
+        row.interval = e.at("interval").get<std::string>();
         ++row.seeds;
         row.covered += (row.truth >= lo && row.truth <= hi) ? 1 : 0;
+        row.covered_profile += (row.truth >= pr[0].get<double>() && row.truth <= pr[1].get<double>()) ? 1 : 0;
+        row.covered_posterior += (row.truth >= cr[0].get<double>() && row.truth <= cr[1].get<double>()) ? 1 : 0;
         row.mean_width += hi - lo;
+        row.mean_width_profile += pr[1].get<double>() - pr[0].get<double>();
+        row.mean_width_posterior += cr[1].get<double>() - cr[0].get<double>();
         row.mean_sd += e.at("sd").get<double>();
         means.push_back(m);
         optima.push_back(e.at("optimum").get<double>());
         sse += (m - row.truth) * (m - row.truth);
       }
       row.mean_width /= row.seeds;
+      row.mean_width_profile /= row.seeds;
+      row.mean_width_posterior /= row.seeds;
       row.mean_sd /= row.seeds;
       auto sdOf = [](const std::vector<double>& v) {
         double mean = 0.0, ss = 0.0;
@@ -182,7 +208,7 @@ CoverageResult runCoverage(const Study& study, const CoverageOptions& options, c
     std::string md = "# Coverage of the 95 % intervals\n\nStudy `" + study.path + "`, noise seeds " + std::to_string(options.first_seed) + "–" +
                      std::to_string(options.first_seed + static_cast<std::uint64_t>(options.seeds) - 1) + ", region `" +
                      options.calibration.region + "`, design `" + (options.calibration.design.adaptive ? "adaptive" : "lhs") +
-                     "`.\n\n" + res.markdown();
+                     "`, ci95 = the `" + options.calibration.interval + "` interval.\n\n" + res.markdown();
     writeFileAtomic((fs::path(options.out_dir) / "coverage.md").string(), md);
   });
   return res;

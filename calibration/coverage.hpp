@@ -49,9 +49,12 @@ struct CoverageOptions {
 struct CoverageRow {
   std::string assembly, parameter;
   double truth = 0.0;
-  int seeds = 0, covered = 0;
+  std::string interval;          ///< which interval ci95 is ("profile" or "posterior")
+  int seeds = 0, covered = 0;    ///< seeds whose ci95 holds the truth
+  int covered_profile = 0, covered_posterior = 0;  ///< the same for each interval
   double wilson_low = 0.0, wilson_high = 0.0;  ///< 95 % Wilson interval of covered / seeds
-  double mean_width = 0.0;       ///< mean of q97.5 − q2.5
+  double mean_width = 0.0;       ///< mean width of ci95
+  double mean_width_profile = 0.0, mean_width_posterior = 0.0;
   double mean_sd = 0.0;          ///< mean posterior sd
   double sd_of_means = 0.0;      ///< sd of the posterior means across seeds
   double rmse = 0.0;             ///< root mean square of (posterior mean − truth)

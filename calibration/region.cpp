@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "calibration/subspace_lm.hpp"
 #include "subsystems/errors.hpp"
 
 namespace dtwin::calib {
@@ -130,6 +131,7 @@ nlohmann::json Region::toJson() const {
   for (Eigen::Index i = 0; i < axes.cols(); ++i) j["axes"].push_back(vecJson(axes.col(i)));
   j["ridge"] = nlohmann::json::array();  // traced floor points inside the contour, scaled
   for (Eigen::Index i = 0; i < ridge.rows(); ++i) j["ridge"].push_back(vecJson(ridge.row(i).transpose()));
+  j["ridge_sse"] = ridge_sse;
   std::vector<double> lo, hi;
   boundingBox(lo, hi);
   j["bounding_box_lower"] = lo;
@@ -160,6 +162,7 @@ Region Region::fromJson(const nlohmann::json& j) {
   const auto& rg = j.at("ridge");
   r.ridge.resize(static_cast<Eigen::Index>(rg.size()), d);
   for (std::size_t i = 0; i < rg.size(); ++i) r.ridge.row(static_cast<Eigen::Index>(i)) = vecFrom(rg[i]).transpose();
+  r.ridge_sse = j.at("ridge_sse").get<std::vector<double>>();
   return r;
 }
 
@@ -404,43 +407,9 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
   Eigen::VectorXd u = Eigen::VectorXd::Zero(d - 1), u_prev = u;
   // The floor at t: Levenberg–Marquardt on u from `un` (at most 4 iterations). False when the
   // simulation at the start point fails.
+  const ScaledResiduals scaled = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) { return res(z, r); };
   auto floorAt = [&](double tt, Eigen::VectorXd& un, Eigen::VectorXd& r, double& f) {
-    if (!res(point(tt, un), r)) return false;
-    f = r.squaredNorm();
-    double mu = 1e-3;
-    for (int it = 0; it < 4; ++it) {
-      Eigen::MatrixXd J(r.size(), d - 1);
-      bool ok = true;
-      for (int c = 0; c < d - 1 && ok; ++c) {
-        Eigen::VectorXd rp, rm, e = Eigen::VectorXd::Zero(d - 1);
-        e(c) = h(c);
-        ok = res(point(tt, un + e), rp) && res(point(tt, un - e), rm) && rp.size() == r.size() && rm.size() == r.size();
-        if (ok) J.col(c) = (rp - rm) / (2 * h(c));
-      }
-      if (!ok) break;
-      const Eigen::MatrixXd A = J.transpose() * J;
-      const Eigen::VectorXd g = J.transpose() * r;
-      bool improved = false;
-      for (int tries = 0; tries < 3 && !improved; ++tries) {
-        Eigen::MatrixXd Al = A;
-        for (int c = 0; c < d - 1; ++c) Al(c, c) += mu * std::max(A(c, c), 1e-300);
-        const Eigen::VectorXd cand = un + Al.ldlt().solve(-g);
-        Eigen::VectorXd rc;
-        if (res(point(tt, cand), rc) && rc.size() == r.size() && rc.squaredNorm() < f) {
-          const double gain = f - rc.squaredNorm();
-          un = cand;
-          r = rc;
-          f = rc.squaredNorm();
-          mu = std::max(mu / 10, 1e-9);
-          improved = true;
-          if (gain < 0.05 * sigma2) it = 4;  // converged
-        } else {
-          mu *= 10;
-        }
-      }
-      if (!improved) break;
-    }
-    return true;
+    return minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, un, r, f);
   };
   for (int k = 0; k < options.ridge_steps; ++k) {
     if (t > reach) {
@@ -528,6 +497,7 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
     }
   // Ridge traces: the crossing along a traced axis is where its profile crossed T.
   std::vector<Eigen::VectorXd> floor;
+  std::vector<double> floor_sse;
   for (const auto& tr : traces) {
     r.evaluations += tr.evaluations;
     if (!tr.message.empty()) r.messages.push_back("ridge along axis " + std::to_string(tr.axis) + (tr.direction > 0 ? " (+)" : " (-)") + ": " + tr.message);
@@ -536,7 +506,10 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
     const double along = tr.closed ? tr.crossing : (tr.clipped ? reach : (tr.t.empty() ? 0.0 : tr.t.back()));
     crossing(tr.axis, col) = std::max(crossing(tr.axis, col), along);
     for (std::size_t q = 0; q < tr.z.size(); ++q)
-      if (tr.sse[q] <= r.threshold) floor.push_back(tr.z[q]);
+      if (tr.sse[q] <= r.threshold) {
+        floor.push_back(tr.z[q]);
+        floor_sse.push_back(tr.sse[q]);
+      }
   }
   for (int i = 0; i < d; ++i) {
     for (int s : {-1, +1}) {
@@ -553,6 +526,7 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
   }
   r.ridge.resize(static_cast<Eigen::Index>(floor.size()), d);
   for (std::size_t q = 0; q < floor.size(); ++q) r.ridge.row(static_cast<Eigen::Index>(q)) = floor[q].transpose();
+  r.ridge_sse = floor_sse;
   return r;
 }
 

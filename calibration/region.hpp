@@ -47,10 +47,10 @@
 // (the weakest, and every axis with λ_i <= ridge_ratio · λ_min) are therefore traced as profiles:
 // step t along ±v_i and re-optimise the other coordinates u (z = ẑ ± t v_i + B u, B the other
 // axes) by Levenberg–Marquardt on the residuals (Jacobian by central differences of 10 % of each
-// axis's crossing, at most 4 iterations, warm-started by extrapolating the last two floor points),
+// axis's crossing, at most 3 iterations, warm-started by extrapolating the last two floor points),
 // until the profile SSE exceeds T (the crossing is interpolated between the last two floor points,
 // linearly in sqrt(SSE − SSE_min), exact for a quadratic profile), the bounds' reach is passed,
-// or 40 steps are used. Steps start
+// or 30 steps (halvings included) are used. Steps start
 // at a quarter of the straight crossing and grow x1.5 while the profile rises by less than
 // σ̂²/2 per step (shrink x0.6 above 3 σ̂², σ̂² = SSE_min/n). A step whose floor lies outside the
 // contour is halved and retried from the last floor point, down to 1/16 of the first step, before
@@ -93,8 +93,10 @@ struct Region {
   Eigen::VectorXd reach_lower, reach_upper;
   /// The Gaussian guess of the posterior (scaled): mean `guess_mean`, sd `guess_sd` along each axis.
   Eigen::VectorXd guess_mean, guess_sd;
-  /// Traced ridge floor points inside the contour (rows, scaled); empty for the paper's box.
+  /// Traced ridge floor points inside the contour (rows, scaled) and their SSE; empty for the
+  /// paper's box.
   Eigen::MatrixXd ridge;
+  std::vector<double> ridge_sse;
   double threshold = 0.0;           ///< T of the 1 % contour
   double sse_min = 0.0;
   int evaluations = 0;              ///< simulations spent building the region
@@ -136,7 +138,7 @@ struct JointRegionOptions {
   double growth = 2.0;          ///< sweep step growth, > 1
   int max_evaluations = 40;     ///< per sweep, >= 2
   double ridge_ratio = 100.0;   ///< trace every axis with λ_i <= ridge_ratio · λ_min, >= 1
-  int ridge_steps = 40;         ///< steps per ridge trace, halvings included (0: no traces)
+  int ridge_steps = 30;         ///< steps per ridge trace, halvings included (0: no traces)
   void validate() const;
   nlohmann::json toJson() const;
 };

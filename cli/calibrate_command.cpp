@@ -20,7 +20,7 @@ namespace dtwin::cli {
 namespace {
 
 struct CalibrateConfig {
-  std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out, region, design;
+  std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out, region, design, interval;
   int threads = 0;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
   long long seed = -1;
@@ -49,6 +49,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
     if (cfg.design.empty()) opt.design.adaptive = cfg.region == "joint";  // the region's default design
   }
   if (!cfg.design.empty()) opt.design.adaptive = cfg.design == "adaptive";
+  if (!cfg.interval.empty()) opt.interval = cfg.interval;
   opt.command = command;
   opt.data_path = cfg.data;
   if (opt.gibbs_burn_in >= opt.gibbs_iterations)
@@ -94,8 +95,15 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
                   r.posterior.top_share, r.design_failures, r.stage_wall_s.back().second);
       for (std::size_t k = 0; k < r.names.size(); ++k) {
         const auto& p = r.posterior.parameters[k];
-        std::printf("       %-22s mean %-11.5g sd %-10.4g 95%% [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd, p.q025, p.q975,
-                    r.truth[k] ? (" truth " + formatExact(*r.truth[k])).c_str() : "");
+        const std::string truth = r.truth[k] ? " truth " + formatExact(*r.truth[k]) : std::string();
+        if (k < r.profile.lower.size())
+          std::printf("       %-22s mean %-11.5g sd %-10.4g 95%% %s [%.5g, %.5g], %s [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd,
+                      r.interval == "profile" ? "profile" : "posterior", r.interval == "profile" ? r.profile.lower[k] : p.q025,
+                      r.interval == "profile" ? r.profile.upper[k] : p.q975, r.interval == "profile" ? "posterior" : "profile",
+                      r.interval == "profile" ? p.q025 : r.profile.lower[k], r.interval == "profile" ? p.q975 : r.profile.upper[k],
+                      truth.c_str());
+        else
+          std::printf("       %-22s mean %-11.5g sd %-10.4g 95%% [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd, p.q025, p.q975, truth.c_str());
       }
       if (r.posterior.design_too_coarse) std::printf("       note: %s\n", r.posterior.message.c_str());
       for (const auto& w : r.rounds.warnings) std::printf("       note: %s\n", w.c_str());
@@ -129,6 +137,10 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
                  "Region the design covers: joint (the joint 1 % likelihood-ratio contour, default) or paper (the paper's "
                  "one-at-a-time box); default: the study's [calibration] region")
       ->check(CLI::IsMember({"joint", "paper"}));
+  c->add_option("--interval", cfg->interval,
+                "The 95 % interval printed as ci95: profile (the profile-likelihood interval, default) or posterior (the "
+                "posterior's central interval); both are in summary.json. Default: the study's [calibration] interval")
+      ->check(CLI::IsMember({"profile", "posterior"}));
   c->add_option("--design", cfg->design,
                 "adaptive (a Latin hypercube, then rounds where the posterior lies) or lhs (one Latin hypercube); "
                 "default: the study's [calibration] design (adaptive for joint, lhs for paper)")

@@ -16,7 +16,7 @@ namespace dtwin::cli {
 namespace {
 
 struct CoverageConfig {
-  std::string study = defaultStudy(), out, region, design;
+  std::string study = defaultStudy(), out, region, design, interval;
   std::vector<std::string> assemblies;
   int seeds = 20, threads = 0;
   long long first_seed = 1001;
@@ -45,6 +45,7 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
     if (cfg.design.empty()) o.calibration.design.adaptive = cfg.region == "joint";
   }
   if (!cfg.design.empty()) o.calibration.design.adaptive = cfg.design == "adaptive";
+  if (!cfg.interval.empty()) o.calibration.interval = cfg.interval;
   if (o.calibration.gibbs_burn_in >= o.calibration.gibbs_iterations)
     throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
   o.validate();
@@ -89,6 +90,10 @@ CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line
       ->capture_default_str()
       ->check(CLI::Range(0LL, (1LL << 62)));
   c->add_option("--region", cfg->region, "joint or paper (default: the study's [calibration] region)")->check(CLI::IsMember({"joint", "paper"}));
+  c->add_option("--interval", cfg->interval,
+                "The 95 % interval printed as ci95: profile (the profile-likelihood interval, default) or posterior (the "
+                "posterior's central interval); both are in summary.json. Default: the study's [calibration] interval")
+      ->check(CLI::IsMember({"profile", "posterior"}));
   c->add_option("--design", cfg->design, "adaptive or lhs (default: the study's, or the region's default)")->check(CLI::IsMember({"adaptive", "lhs"}));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
   c->add_option("--lhs-points", cfg->lhs_points, "Design points of round 0 (default: sizes.lhs_points)")->check(CLI::Range(2L, 10000000L));

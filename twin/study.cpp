@@ -153,7 +153,7 @@ RoadSpec parseRoad(TableReader& r, const std::string& scenario) {
 
 nlohmann::json CalibrationSettings::toJson() const {
   return {{"region", region}, {"design", designOrDefault()}, {"round_points", round_points}, {"max_rounds", max_rounds},
-          {"target_ess", target_ess}, {"margin", margin}};
+          {"target_ess", target_ess}, {"margin", margin}, {"interval", interval}};
 }
 
 const std::map<std::string, long>& knownSizes() {
@@ -417,6 +417,12 @@ Study loadStudy(const std::string& path) {
     if (auto v = r.number("target_ess")) {
       c.target_ess = *v;
       if (!(std::isfinite(c.target_ess) && c.target_ess > 0)) throw InputError(r.where("target_ess"), "must be a finite number > 0");
+    }
+    if (auto v = r.string("interval")) {
+      if (*v != "profile" && *v != "posterior")
+        throw InputError(r.where("interval"), "must be \"profile\" (the profile-likelihood interval, default) or \"posterior\" "
+                                              "(the posterior's central interval), got \"" + *v + "\"");
+      c.interval = *v;
     }
     if (auto v = r.number("margin")) {
       c.margin = *v;

@@ -14,6 +14,7 @@
 #include "calibration/feasible_box.hpp"
 #include "calibration/gibbs.hpp"
 #include "calibration/optimize.hpp"
+#include "calibration/profile.hpp"
 #include "calibration/region.hpp"
 #include "calibration/summary.hpp"
 #include "subsystems/random.hpp"
@@ -25,7 +26,7 @@ namespace {
 
 /// Student-t quantile with ν degrees of freedom, by bisection on the CDF (Simpson's rule on the
 /// density; exact to ~1e-9 for the values used here).
-double studentQuantile(double p, double nu) {
+double studentQuantileBySimpson(double p, double nu) {
   const double c = std::exp(std::lgamma(0.5 * (nu + 1)) - std::lgamma(0.5 * nu)) / std::sqrt(nu * M_PI);
   auto pdf = [&](double x) { return c * std::pow(1.0 + x * x / nu, -0.5 * (nu + 1)); };
   auto cdf = [&](double x) {  // x >= 0
@@ -80,6 +81,20 @@ struct Interval {
   double lo = 0, hi = 0, sd = 0;
 };
 
+/// The exact 95 % profile-likelihood interval of a linear model: SSE_p(v) − SSE_min =
+/// (v − θ̂_j)² / [(XᵀX)⁻¹]_jj, so {v : SSE_p(v) <= SSE_min + t²_{n−d} s²} is θ̂_j ± t_{n−d} s
+/// sqrt([(XᵀX)⁻¹]_jj), s² = SSE_min / (n − d): the classical t interval.
+std::vector<Interval> exactProfile(const Linear& p) {
+  const Eigen::Matrix2d XtX = p.X.transpose() * p.X;
+  const Eigen::Vector2d hat = XtX.ldlt().solve(p.X.transpose() * p.y);
+  const double s2 = (p.y - p.X * hat).squaredNorm() / (p.n - 2);
+  const double t = studentQuantile(0.975, p.n - 2);
+  const Eigen::Matrix2d inv = XtX.inverse();
+  std::vector<Interval> out;
+  for (int j = 0; j < 2; ++j) out.push_back({hat(j) - t * std::sqrt(s2 * inv(j, j)), hat(j) + t * std::sqrt(s2 * inv(j, j)), 0.0});
+  return out;
+}
+
 /// Exact marginal 95 % intervals: θ_j | y ~ t_ν(θ̂_j, s² [(XᵀX)⁻¹]_jj), ν = 2a + n − d,
 /// s² = (2b + SSE_min)/ν (flat prior on a box far wider than the posterior; τ ~ Gamma(a, b)).
 std::vector<Interval> exactIntervals(const Linear& p, double a, double b) {
@@ -89,7 +104,7 @@ std::vector<Interval> exactIntervals(const Linear& p, double a, double b) {
   const double nu = 2 * a + p.n - 2;
   const double s2 = (2 * b + sse_min) / nu;
   const Eigen::Matrix2d inv = XtX.inverse();
-  const double t = studentQuantile(0.975, nu);
+  const double t = studentQuantileBySimpson(0.975, nu);
   std::vector<Interval> out;
   for (int j = 0; j < 2; ++j) {
     const double scale = std::sqrt(s2 * inv(j, j));
@@ -99,8 +114,9 @@ std::vector<Interval> exactIntervals(const Linear& p, double a, double b) {
 }
 
 /// The calibration chain of calibrateAssembly on the linear problem: optimum, region, design,
-/// Griddy Gibbs with design weights, summary.
-PosteriorSummary calibrate(const Linear& p, const std::string& region, std::uint64_t seed, AdaptiveDesign* design_out = nullptr) {
+/// Griddy Gibbs with design weights, summary (and, when asked, the profile intervals).
+PosteriorSummary calibrate(const Linear& p, const std::string& region, std::uint64_t seed, AdaptiveDesign* design_out = nullptr,
+                           ProfileIntervals* profile_out = nullptr) {
   const SseFunction sse = [&](const std::vector<double>& th) { return p.sse(th); };
   const Optimum opt = minimiseSse(sse, p.lower, p.upper, 4, seed);
   BoxProblem bp;
@@ -123,6 +139,13 @@ PosteriorSummary calibrate(const Linear& p, const std::string& region, std::uint
     return s;
   });
   if (design_out) *design_out = design;
+  if (profile_out) {
+    const ProfileOptions po;
+    const ProfilePlan plan = planProfile(design.points, design.sse, p.n, p.lower, p.upper, po);
+    std::vector<ProfileEnd> ends;
+    for (int i = 0; i < 4; ++i) ends.push_back(refineProfileEnd([&](const std::vector<double>& th) { return p.residuals(th); }, plan, i, po));
+    *profile_out = collectProfile(plan, ends, po);
+  }
   GibbsOptions go;
   go.iterations = 40000;
   go.burn_in = 5000;
@@ -140,8 +163,20 @@ TEST(JointRegion, LinearGaussianRidgeIntervalsWithinTenPercentOfExact) {
     ASSERT_NEAR(inv(0, 1) / std::sqrt(inv(0, 0) * inv(1, 1)), 0.99, 1e-9) << "the posterior correlation of the test problem";
     const auto exact = exactIntervals(p, 1e-3, 1e-3);
     AdaptiveDesign design;
-    const PosteriorSummary post = calibrate(p, "joint", seed, &design);
+    ProfileIntervals profile;
+    const PosteriorSummary post = calibrate(p, "joint", seed, &design, &profile);
     EXPECT_GE(design.ess, 300.0) << "seed " << seed << ": " << design.stop_reason;
+    // The profile interval is the classical t interval here: within 2 % of its width.
+    const auto t_exact = exactProfile(p);
+    for (int j = 0; j < 2; ++j) {
+      const double width = t_exact[j].hi - t_exact[j].lo;
+      EXPECT_NEAR(profile.lower[static_cast<std::size_t>(j)], t_exact[j].lo, 0.02 * width) << "seed " << seed << " theta" << j + 1;
+      EXPECT_NEAR(profile.upper[static_cast<std::size_t>(j)], t_exact[j].hi, 0.02 * width) << "seed " << seed << " theta" << j + 1;
+      // Never beyond the exact ends (every end is a point inside the threshold; the threshold rests
+      // on the best evaluated SSE, a hair above the exact minimum, hence the 1e-4 of slack).
+      EXPECT_GE(profile.lower[static_cast<std::size_t>(j)], t_exact[j].lo - 1e-4 * width);
+      EXPECT_LE(profile.upper[static_cast<std::size_t>(j)], t_exact[j].hi + 1e-4 * width);
+    }
     for (int j = 0; j < 2; ++j) {
       const double width = exact[j].hi - exact[j].lo;
       const auto& q = post.parameters[static_cast<std::size_t>(j)];
@@ -168,7 +203,13 @@ TEST(JointRegion, PaperBoxFailsTheSameProblem) {
   }
 }
 
-TEST(JointRegion, StudentQuantileHelperMatchesTables) {
-  EXPECT_NEAR(studentQuantile(0.975, 10.0), 2.228138851986274, 1e-7);
-  EXPECT_NEAR(studentQuantile(0.975, 38.002), 2.024394164, 1e-5);
+TEST(JointRegion, StudentQuantilesMatchTables) {
+  // This file's Simpson-rule helper and the library's incomplete-beta quantile, against tables.
+  EXPECT_NEAR(studentQuantileBySimpson(0.975, 10.0), 2.228138851986274, 1e-7);
+  EXPECT_NEAR(studentQuantileBySimpson(0.975, 38.002), 2.024394164, 1e-5);
+  EXPECT_NEAR(calib::studentQuantile(0.975, 10.0), 2.228138851986274, 1e-9);
+  EXPECT_NEAR(calib::studentQuantile(0.975, 46.0), 2.012895598919429, 1e-9);
+  EXPECT_NEAR(calib::studentQuantile(0.975, 1.0), 12.70620473617471, 1e-7);
+  EXPECT_NEAR(calib::studentQuantile(0.025, 5.0), -2.570581835636314, 1e-9);
+  EXPECT_NEAR(calib::studentQuantile(0.5, 7.0), 0.0, 1e-12);
 }

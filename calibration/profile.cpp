@@ -1,0 +1,301 @@
+#include "calibration/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "calibration/subspace_lm.hpp"
+#include "subsystems/errors.hpp"
+
+namespace dtwin::calib {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+/// Continued fraction of the incomplete beta function (modified Lentz), x < (a+1)/(a+b+2).
+double betaContinuedFraction(double a, double b, double x) {
+  const double tiny = 1e-300;
+  double c = 1.0, d = 1.0 - (a + b) * x / (a + 1.0);
+  if (std::abs(d) < tiny) d = tiny;
+  d = 1.0 / d;
+  double h = d;
+  for (int m = 1; m <= 500; ++m) {
+    const double m2 = 2.0 * m;
+    double aa = m * (b - m) * x / ((a + m2 - 1.0) * (a + m2));
+    d = 1.0 + aa * d;
+    if (std::abs(d) < tiny) d = tiny;
+    c = 1.0 + aa / c;
+    if (std::abs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    h *= d * c;
+    aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1.0));
+    d = 1.0 + aa * d;
+    if (std::abs(d) < tiny) d = tiny;
+    c = 1.0 + aa / c;
+    if (std::abs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::abs(del - 1.0) < 1e-15) break;
+  }
+  return h;
+}
+
+/// Regularized incomplete beta I_x(a, b), with y = 1 − x given separately (no cancellation).
+double incompleteBeta(double a, double b, double x, double y) {
+  if (x <= 0.0) return 0.0;
+  if (y <= 0.0) return 1.0;
+  const double lbt = std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log(y);
+  if (x < (a + 1.0) / (a + b + 2.0)) return std::exp(lbt) * betaContinuedFraction(a, b, x) / a;
+  return 1.0 - std::exp(lbt) * betaContinuedFraction(b, a, y) / b;
+}
+
+/// Student t CDF: P(T <= t) = 1 − I_x(ν/2, 1/2)/2 for t >= 0, x = ν/(ν + t²).
+double studentCdf(double t, double nu) {
+  const double x = nu / (nu + t * t), y = t * t / (nu + t * t);
+  const double tail = 0.5 * incompleteBeta(0.5 * nu, 0.5, x, y);
+  return t >= 0.0 ? 1.0 - tail : tail;
+}
+
+}  // namespace
+
+double studentQuantile(double p, double nu) {
+  if (!(p > 0.0 && p < 1.0)) throw InputError("student quantile", "p must lie in (0, 1), got " + fmt(p));
+  if (!(nu > 0.0 && std::isfinite(nu))) throw InputError("student quantile", "degrees of freedom must be finite and > 0, got " + fmt(nu));
+  double lo = -1.0, hi = 1.0;
+  while (studentCdf(lo, nu) > p) lo *= 2.0;
+  while (studentCdf(hi, nu) < p) hi *= 2.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (studentCdf(mid, nu) < p ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+void ProfileOptions::validate() const {
+  const std::string where = "profile options";
+  if (!(level > 0.0 && level < 1.0)) throw InputError(where, "level must lie in (0, 1), got " + fmt(level));
+  if (steps < 0) throw InputError(where, "steps must be >= 0, got " + std::to_string(steps));
+  if (lm_iterations < 1) throw InputError(where, "lm_iterations must be >= 1, got " + std::to_string(lm_iterations));
+}
+
+nlohmann::json ProfileOptions::toJson() const {
+  return {{"rule", "{v : SSE_profile(v) <= SSE* + c s^2}, c = F(1, n-d) quantile, s^2 = SSE*/(n-d)"},
+          {"level", level},
+          {"steps_per_end", steps},
+          {"lm_iterations", lm_iterations}};
+}
+
+ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>& sse, int n_data, const std::vector<double>& lower,
+                        const std::vector<double>& upper, const ProfileOptions& options) {
+  options.validate();
+  DTWIN_CHECK(static_cast<std::size_t>(points.rows()) == sse.size(), "planProfile needs one SSE per point");
+  const int d = static_cast<int>(points.cols());
+  ProfilePlan p;
+  p.lower = lower;
+  p.upper = upper;
+  p.n_data = n_data;
+  p.dof = n_data > d ? n_data - d : n_data;
+  p.sse_best = std::numeric_limits<double>::infinity();
+  for (double s : sse)
+    if (std::isfinite(s)) p.sse_best = std::min(p.sse_best, s);
+  if (!std::isfinite(p.sse_best)) throw InputError("profile interval", "no evaluated point has a finite SSE");
+  p.s2 = p.sse_best / p.dof;
+  const double t = studentQuantile(0.5 + 0.5 * options.level, p.dof);
+  p.c = t * t;
+  p.threshold = p.sse_best + p.c * p.s2;
+  p.low_point.assign(static_cast<std::size_t>(d), {});
+  p.high_point.assign(static_cast<std::size_t>(d), {});
+  p.low_sse.assign(static_cast<std::size_t>(d), 0.0);
+  p.high_sse.assign(static_cast<std::size_t>(d), 0.0);
+  for (Eigen::Index k = 0; k < points.rows(); ++k) {
+    const double s = sse[static_cast<std::size_t>(k)];
+    if (!(std::isfinite(s) && s <= p.threshold)) continue;
+    std::vector<double> th(static_cast<std::size_t>(d));
+    for (int j = 0; j < d; ++j) th[static_cast<std::size_t>(j)] = points(k, j);
+    for (int j = 0; j < d; ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      if (p.low_point[jj].empty() || th[jj] < p.low_point[jj][jj]) {
+        p.low_point[jj] = th;
+        p.low_sse[jj] = s;
+      }
+      if (p.high_point[jj].empty() || th[jj] > p.high_point[jj][jj]) {
+        p.high_point[jj] = th;
+        p.high_sse[jj] = s;
+      }
+    }
+  }
+  return p;
+}
+
+ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index, const ProfileOptions& options) {
+  options.validate();
+  const int d = static_cast<int>(plan.lower.size());
+  DTWIN_CHECK(index >= 0 && index < 2 * d, "profile end index out of range");
+  const int j = index / 2, s = index % 2 == 0 ? -1 : +1;
+  const auto jj = static_cast<std::size_t>(j);
+  ProfileEnd end;
+  end.theta = s < 0 ? plan.low_point[jj] : plan.high_point[jj];
+  end.sse = s < 0 ? plan.low_sse[jj] : plan.high_sse[jj];
+  auto scaled = [&](const std::vector<double>& th) {
+    Eigen::VectorXd z(d);
+    for (int k = 0; k < d; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      z(k) = (th[kk] - plan.lower[kk]) / (plan.upper[kk] - plan.lower[kk]);
+    }
+    return z;
+  };
+  auto physical = [&](const Eigen::VectorXd& z) {
+    std::vector<double> th(static_cast<std::size_t>(d));
+    for (int k = 0; k < d; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const double zk = std::clamp(z(k), 0.0, 1.0);
+      th[kk] = zk >= 1.0 ? plan.upper[kk] : plan.lower[kk] + zk * (plan.upper[kk] - plan.lower[kk]);
+    }
+    return th;
+  };
+  Eigen::VectorXd z = scaled(end.theta);
+  const double bound = s < 0 ? 0.0 : 1.0;
+  if (std::abs(z(j) - bound) < 1e-12) {
+    end.at_bound = true;
+    return end;
+  }
+  if (options.steps == 0 || d < 1) return end;
+  // The interval of every parameter among the inside points, in scaled units (step sizes).
+  Eigen::VectorXd width(d);
+  for (int k = 0; k < d; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    width(k) = (plan.high_point[kk][kk] - plan.low_point[kk][kk]) / (plan.upper[kk] - plan.lower[kk]);
+  }
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(d, d - 1);
+  Eigen::VectorXd h(d - 1);
+  for (int k = 0, c = 0; k < d; ++k) {
+    if (k == j) continue;
+    B(k, c) = 1.0;
+    h(c) = std::clamp(0.05 * width(k), 1e-6, 0.02);
+    ++c;
+  }
+  const ScaledResiduals res = [&](const Eigen::VectorXd& zz, Eigen::VectorXd& r) {
+    ++end.evaluations;
+    const auto v = residuals(physical(zz));
+    if (v.empty()) return false;
+    r = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+    return r.allFinite();
+  };
+  // The search in v = z_j: g(v) = sqrt(SSE_p(v) − SSE*) is linear in v for a quadratic profile;
+  // the end is where g = g_T = sqrt(threshold − SSE*). Secant steps on the last two inside points
+  // while nothing outside is known (at most 4 times the distance covered, and to the bound), then
+  // regula falsi in the bracket, kept 10 % inside it; stop when the bracket is below 1 % of the
+  // interval's width.
+  const double g_T = std::sqrt(plan.threshold - plan.sse_best);
+  auto gOf = [&](double f) { return std::sqrt(std::max(f - plan.sse_best, 0.0)); };
+  double best_v = 0.0;  // v at the best fit: the other end of the secant to start with
+  {
+    const auto& lo = plan.low_point[jj];
+    const auto& hi = plan.high_point[jj];
+    best_v = 0.5 * ((lo[jj] - plan.lower[jj]) / (plan.upper[jj] - plan.lower[jj]) + (hi[jj] - plan.lower[jj]) / (plan.upper[jj] - plan.lower[jj]));
+  }
+  double v_in = z(j), g_in = gOf(end.sse), v_prev = best_v, g_prev = 0.0;
+  bool have_out = false;
+  double v_out = bound, g_out = 0.0;
+  const double tol = std::max(0.01 * std::max(width(j), 1e-3), 1e-9);
+  Eigen::VectorXd u(d - 1);
+  for (int k = 0, c = 0; k < d; ++k)
+    if (k != j) u(c++) = z(k);
+  for (int step = 0; step < options.steps; ++step) {
+    double target;
+    if (!have_out) {
+      const double dist = std::abs(v_in - v_prev);
+      double reach = dist > 0.0 && g_in > g_prev ? (g_T - g_in) * dist / (g_in - g_prev) : 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08));
+      reach = std::clamp(reach, 0.05 * std::max(width(j), 0.02), 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08)));
+      target = std::clamp(v_in + s * reach, 0.0, 1.0);
+    } else {
+      if (std::abs(v_out - v_in) < tol) break;
+      const double frac = g_out > g_in ? std::clamp((g_T - g_in) / (g_out - g_in), 0.1, 0.9) : 0.5;
+      target = v_in + frac * (v_out - v_in);
+    }
+    if (std::abs(target - v_in) < 1e-12) break;
+    Eigen::VectorXd z0 = Eigen::VectorXd::Zero(d);
+    z0(j) = target;
+    Eigen::VectorXd un = u, r;
+    double f = 0.0;
+    const bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, un, r, f);
+    if (ok && f <= plan.threshold) {
+      v_prev = v_in;
+      g_prev = g_in;
+      v_in = target;
+      g_in = gOf(f);
+      u = un;
+      z = z0 + B * u;
+      end.theta = physical(z);
+      end.sse = f;
+      ++end.steps_taken;
+      if (std::abs(target - bound) < 1e-12) {
+        end.at_bound = true;
+        break;
+      }
+    } else {
+      have_out = true;
+      v_out = target;
+      g_out = ok ? gOf(f) : std::numeric_limits<double>::infinity();
+      if (!std::isfinite(g_out)) g_out = 10.0 * g_T;
+    }
+  }
+  return end;
+}
+
+ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<ProfileEnd>& ends, const ProfileOptions& options) {
+  const int d = static_cast<int>(plan.lower.size());
+  DTWIN_CHECK(static_cast<int>(ends.size()) == 2 * d, "a profile needs 2d ends");
+  ProfileIntervals out;
+  out.level = options.level;
+  out.c = plan.c;
+  out.s2 = plan.s2;
+  out.sse_best = plan.sse_best;
+  out.threshold = plan.threshold;
+  out.dof = plan.dof;
+  for (int j = 0; j < d; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    const ProfileEnd& lo = ends[static_cast<std::size_t>(2 * j)];
+    const ProfileEnd& hi = ends[static_cast<std::size_t>(2 * j + 1)];
+    out.lower.push_back(std::min(lo.theta[jj], plan.low_point[jj][jj]));
+    out.upper.push_back(std::max(hi.theta[jj], plan.high_point[jj][jj]));
+    out.lower_at_bound.push_back(lo.at_bound);
+    out.upper_at_bound.push_back(hi.at_bound);
+    out.evaluations += lo.evaluations + hi.evaluations;
+  }
+  return out;
+}
+
+nlohmann::json ProfileIntervals::toJson() const {
+  return {{"level", level},       {"c", c},
+          {"s2", s2},             {"dof", dof},
+          {"sse_best", sse_best}, {"threshold", threshold},
+          {"lower", lower},       {"upper", upper},
+          {"lower_at_bound", lower_at_bound}, {"upper_at_bound", upper_at_bound},
+          {"evaluations", evaluations}};
+}
+
+ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
+  ProfileIntervals p;
+  p.level = j.at("level").get<double>();
+  p.c = j.at("c").get<double>();
+  p.s2 = j.at("s2").get<double>();
+  p.dof = j.at("dof").get<int>();
+  p.sse_best = j.at("sse_best").get<double>();
+  p.threshold = j.at("threshold").get<double>();
+  p.lower = j.at("lower").get<std::vector<double>>();
+  p.upper = j.at("upper").get<std::vector<double>>();
+  p.lower_at_bound = j.at("lower_at_bound").get<std::vector<bool>>();
+  p.upper_at_bound = j.at("upper_at_bound").get<std::vector<bool>>();
+  p.evaluations = j.at("evaluations").get<int>();
+  return p;
+}
+
+}  // namespace dtwin::calib

@@ -1,0 +1,22 @@
+#pragma once
+// Levenberg–Marquardt on a subspace: minimise |r(z0 + B u)|² over u, the other coordinates held.
+// The inner step of a profile: the ridge traces of region.hpp (z0 moves along a principal axis)
+// and the profile intervals of profile.hpp (z0 moves along a parameter) share it.
+#include <Eigen/Dense>
+#include <functional>
+
+namespace dtwin::calib {
+
+/// Residuals at a scaled point z; false for a failed simulation.
+using ScaledResiduals = std::function<bool(const Eigen::VectorXd& z, Eigen::VectorXd& r)>;
+
+/// From u: at most `iterations` Levenberg–Marquardt iterations on |r(z0 + B u)|² (Jacobian by
+/// central differences of step h_c along column c of B; damping λ·diag(JᵀJ), λ from 1e-3,
+/// ÷10 after an accepted step, ×10 after a rejected one, 3 tries per iteration). Stops early when
+/// an accepted step gains less than `min_gain`. On return u, r and f = |r|² are the best point
+/// seen. Returns false when the simulation at the start point fails.
+bool minimiseOnSubspace(const ScaledResiduals& residuals, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B,
+                        const Eigen::VectorXd& h, int iterations, double min_gain, Eigen::VectorXd& u, Eigen::VectorXd& r,
+                        double& f);
+
+}  // namespace dtwin::calib

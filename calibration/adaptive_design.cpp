@@ -1,11 +1,13 @@
 #include "calibration/adaptive_design.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "calibration/lhs.hpp"
+#include "calibration/eigen_json.hpp"
 #include "subsystems/errors.hpp"
 
 namespace dtwin::calib {
@@ -17,18 +19,7 @@ constexpr std::uint64_t kStreamResample = 0x4144'4b00'0000'0006ULL;     // "ADK"
 constexpr int kPilot = 4096;
 constexpr double kLog2Pi = 1.8378770664093454836;
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(4);
-  os << v;
-  return os.str();
-}
 
-nlohmann::json vecJson(const Eigen::VectorXd& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
-  return a;
-}
 
 /// A lower-triangular L with L Lᵀ = cov (eigenvalue floor when cov is not positive definite).
 Eigen::MatrixXd choleskyOf(const Eigen::MatrixXd& cov) {
@@ -172,14 +163,14 @@ void AdaptiveDesignOptions::validate() const {
   if (first_points < 2) throw InputError(where, "first_points (lhs_points) must be >= 2, got " + std::to_string(first_points));
   if (round_points < 2) throw InputError(where, "round_points must be >= 2, got " + std::to_string(round_points));
   if (max_rounds < 0) throw InputError(where, "max_rounds must be >= 0, got " + std::to_string(max_rounds));
-  if (!(target_ess > 0.0 && std::isfinite(target_ess))) throw InputError(where, "target_ess must be > 0, got " + fmt(target_ess));
-  if (!(settle > 0.0 && std::isfinite(settle))) throw InputError(where, "settle must be > 0, got " + fmt(settle));
-  if (!(kernel_min > 0.0 && kernel_min <= 2.0)) throw InputError(where, "kernel_min must be in (0, 2], got " + fmt(kernel_min));
+  if (!(target_ess > 0.0 && std::isfinite(target_ess))) throw InputError(where, "target_ess must be > 0, got " + formatNumber(target_ess, 4));
+  if (!(settle > 0.0 && std::isfinite(settle))) throw InputError(where, "settle must be > 0, got " + formatNumber(settle, 4));
+  if (!(kernel_min > 0.0 && kernel_min <= 2.0)) throw InputError(where, "kernel_min must be in (0, 2], got " + formatNumber(kernel_min, 4));
   if (kernels < 1) throw InputError(where, "kernels must be >= 1, got " + std::to_string(kernels));
-  if (!(broad_share >= 0.0 && broad_share < 1.0)) throw InputError(where, "broad_share must be in [0, 1), got " + fmt(broad_share));
-  if (!(broad_scale >= 1.0 && std::isfinite(broad_scale))) throw InputError(where, "broad_scale must be >= 1, got " + fmt(broad_scale));
-  if (!(edge_fraction > 0.0 && edge_fraction < 0.5)) throw InputError(where, "edge_fraction must be in (0, 0.5), got " + fmt(edge_fraction));
-  if (!(edge_share_max > 0.0 && edge_share_max < 1.0)) throw InputError(where, "edge_share_max must be in (0, 1), got " + fmt(edge_share_max));
+  if (!(broad_share >= 0.0 && broad_share < 1.0)) throw InputError(where, "broad_share must be in [0, 1), got " + formatNumber(broad_share, 4));
+  if (!(broad_scale >= 1.0 && std::isfinite(broad_scale))) throw InputError(where, "broad_scale must be >= 1, got " + formatNumber(broad_scale, 4));
+  if (!(edge_fraction > 0.0 && edge_fraction < 0.5)) throw InputError(where, "edge_fraction must be in (0, 0.5), got " + formatNumber(edge_fraction, 4));
+  if (!(edge_share_max > 0.0 && edge_share_max < 1.0)) throw InputError(where, "edge_share_max must be in (0, 1), got " + formatNumber(edge_share_max, 4));
   if (!(tau_a >= 0.0 && tau_b >= 0.0)) throw InputError(where, "the tau prior needs a, b >= 0");
 }
 
@@ -211,12 +202,12 @@ nlohmann::json DesignRound::toJson(const std::vector<std::string>& names) const 
   else {
     j["kernels"] = centres.rows();
     j["centres_scaled"] = nlohmann::json::array();
-    for (Eigen::Index i = 0; i < centres.rows(); ++i) j["centres_scaled"].push_back(vecJson(centres.row(i).transpose()));
+    for (Eigen::Index i = 0; i < centres.rows(); ++i) j["centres_scaled"].push_back(vectorJson(centres.row(i).transpose()));
     j["covariance_scaled"] = nlohmann::json::array();
-    for (Eigen::Index i = 0; i < cov.rows(); ++i) j["covariance_scaled"].push_back(vecJson(cov.row(i).transpose()));
+    for (Eigen::Index i = 0; i < cov.rows(); ++i) j["covariance_scaled"].push_back(vectorJson(cov.row(i).transpose()));
     if (broad_share > 0.0) {
-      j["broad"] = {{"share", broad_share}, {"mean_scaled", vecJson(broad_mean)}, {"covariance_scaled", nlohmann::json::array()}};
-      for (Eigen::Index i = 0; i < broad_cov.rows(); ++i) j["broad"]["covariance_scaled"].push_back(vecJson(broad_cov.row(i).transpose()));
+      j["broad"] = {{"share", broad_share}, {"mean_scaled", vectorJson(broad_mean)}, {"covariance_scaled", nlohmann::json::array()}};
+      for (Eigen::Index i = 0; i < broad_cov.rows(); ++i) j["broad"]["covariance_scaled"].push_back(vectorJson(broad_cov.row(i).transpose()));
     }
   }
   for (std::size_t k = 0; k < names.size() && k < mean_theta.size(); ++k)
@@ -299,6 +290,9 @@ AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const Adaptiv
     round.prepare();
     round.first = static_cast<int>(out.points.rows());
     const Eigen::MatrixXd z = drawRound(round, inside, options.seed, round.drawn);
+    if (round.index == 0 && z.rows() == 0)
+      throw std::runtime_error("the calibration region lies outside the parameter bounds: none of " + std::to_string(round.drawn) +
+                               " points drawn in it is inside them (box.json shows the region)");
     Eigen::MatrixXd theta(z.rows(), d);
     for (Eigen::Index i = 0; i < z.rows(); ++i) {
       const auto th = region.toPhysical(z.row(i).transpose());
@@ -366,8 +360,8 @@ AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const Adaptiv
     before = now;
     now = runRound(next, options.round_points);
     if (now.ess >= options.target_ess && settled(now, before, options.settle)) {
-      out.stop_reason = "settled after round " + std::to_string(r) + ": importance ESS " + fmt(now.ess) + " >= " +
-                        fmt(options.target_ess) + ", means and sds changed by less than " + fmt(options.settle) + " sd";
+      out.stop_reason = "settled after round " + std::to_string(r) + ": importance ESS " + formatNumber(now.ess, 4) + " >= " +
+                        formatNumber(options.target_ess, 4) + ", means and sds changed by less than " + formatNumber(options.settle, 4) + " sd";
       break;
     }
     if (r == options.max_rounds)
@@ -385,12 +379,12 @@ AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const Adaptiv
   }
   for (auto& w : out.log_weight) w -= mx;
   if (out.ess < 100.0)
-    out.warnings.push_back("the design resolves the posterior with only " + fmt(out.ess) +
+    out.warnings.push_back("the design resolves the posterior with only " + formatNumber(out.ess, 4) +
                            " effective points (importance ESS < 100): the intervals are rough; raise lhs_points, "
                            "[calibration] round_points or max_rounds");
   const bool kernel_rounds = std::any_of(out.rounds.begin(), out.rounds.end(), [](const DesignRound& r) { return r.kind == "gaussian"; });
   if (!kernel_rounds && now.edge_share > options.edge_share_max)
-    out.warnings.push_back("the posterior still puts " + fmt(100.0 * now.edge_share) +
+    out.warnings.push_back("the posterior still puts " + formatNumber(100.0 * now.edge_share, 4) +
                            " % of its weight near the region's edge: the region may cut it off");
   if (options.adaptive && out.stop_reason.rfind("settled", 0) != 0 && out.ess >= 100.0)
     out.warnings.push_back("the adaptive design did not settle (" + out.stop_reason + "): the intervals may still move with more rounds");

@@ -285,6 +285,7 @@ CalibrationOptions CalibrationOptions::fromStudy(const Study& study) {
   o.design.max_rounds = static_cast<int>(study.calibration.max_rounds);
   o.design.target_ess = study.calibration.target_ess;
   o.joint.margin = study.calibration.margin;
+  o.joint.ridge_steps = static_cast<int>(study.calibration.ridge_steps);
   o.interval = study.calibration.interval;
   return o;
 }

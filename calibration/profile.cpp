@@ -11,13 +11,6 @@
 namespace dtwin::calib {
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
 /// Continued fraction of the incomplete beta function (modified Lentz), x < (a+1)/(a+b+2).
 double betaContinuedFraction(double a, double b, double x) {
   const double tiny = 1e-300;
@@ -66,8 +59,8 @@ double studentCdf(double t, double nu) {
 }  // namespace
 
 double studentQuantile(double p, double nu) {
-  if (!(p > 0.0 && p < 1.0)) throw InputError("student quantile", "p must lie in (0, 1), got " + fmt(p));
-  if (!(nu > 0.0 && std::isfinite(nu))) throw InputError("student quantile", "degrees of freedom must be finite and > 0, got " + fmt(nu));
+  if (!(p > 0.0 && p < 1.0)) throw InputError("student quantile", "p must lie in (0, 1), got " + formatNumber(p));
+  if (!(nu > 0.0 && std::isfinite(nu))) throw InputError("student quantile", "degrees of freedom must be finite and > 0, got " + formatNumber(nu));
   double lo = -1.0, hi = 1.0;
   while (studentCdf(lo, nu) > p) lo *= 2.0;
   while (studentCdf(hi, nu) < p) hi *= 2.0;
@@ -80,7 +73,7 @@ double studentQuantile(double p, double nu) {
 
 void ProfileOptions::validate() const {
   const std::string where = "profile options";
-  if (!(level > 0.0 && level < 1.0)) throw InputError(where, "level must lie in (0, 1), got " + fmt(level));
+  if (!(level > 0.0 && level < 1.0)) throw InputError(where, "level must lie in (0, 1), got " + formatNumber(level));
   if (steps < 0) throw InputError(where, "steps must be >= 0, got " + std::to_string(steps));
   if (lm_iterations < 1) throw InputError(where, "lm_iterations must be >= 1, got " + std::to_string(lm_iterations));
 }

@@ -7,28 +7,11 @@
 #include <sstream>
 
 #include "calibration/subspace_lm.hpp"
+#include "calibration/eigen_json.hpp"
 #include "subsystems/errors.hpp"
 
 namespace dtwin::calib {
 namespace {
-
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
-nlohmann::json vecJson(const Eigen::VectorXd& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
-  return a;
-}
-Eigen::VectorXd vecFrom(const nlohmann::json& j) {
-  Eigen::VectorXd v(static_cast<Eigen::Index>(j.size()));
-  for (std::size_t i = 0; i < j.size(); ++i) v(static_cast<Eigen::Index>(i)) = j[i].get<double>();
-  return v;
-}
 
 /// Where the ray ẑ + s·t·a leaves [0,1]^d (t >= 0).
 double rayExit(const Eigen::VectorXd& z0, const Eigen::VectorXd& a, int s) {
@@ -115,22 +98,22 @@ nlohmann::json Region::toJson() const {
                    {"coordinates", "scaled z_j = (theta_j - lower_j)/(upper_j - lower_j); region = {centre + axes t : t_lower <= t <= t_upper}"},
                    {"bounds_lower", lower},
                    {"bounds_upper", upper},
-                   {"centre", vecJson(centre)},
-                   {"t_lower", vecJson(t_lower)},
-                   {"t_upper", vecJson(t_upper)},
-                   {"reach_lower", vecJson(reach_lower)},
-                   {"reach_upper", vecJson(reach_upper)},
-                   {"guess_mean", vecJson(guess_mean)},
-                   {"guess_sd", vecJson(guess_sd)},
+                   {"centre", vectorJson(centre)},
+                   {"t_lower", vectorJson(t_lower)},
+                   {"t_upper", vectorJson(t_upper)},
+                   {"reach_lower", vectorJson(reach_lower)},
+                   {"reach_upper", vectorJson(reach_upper)},
+                   {"guess_mean", vectorJson(guess_mean)},
+                   {"guess_sd", vectorJson(guess_sd)},
                    {"threshold", threshold},
                    {"sse_min", sse_min},
                    {"evaluations", evaluations},
                    {"log_volume", logVolume()},
                    {"messages", messages}};
   j["axes"] = nlohmann::json::array();  // column i = axis i
-  for (Eigen::Index i = 0; i < axes.cols(); ++i) j["axes"].push_back(vecJson(axes.col(i)));
+  for (Eigen::Index i = 0; i < axes.cols(); ++i) j["axes"].push_back(vectorJson(axes.col(i)));
   j["ridge"] = nlohmann::json::array();  // traced floor points inside the contour, scaled
-  for (Eigen::Index i = 0; i < ridge.rows(); ++i) j["ridge"].push_back(vecJson(ridge.row(i).transpose()));
+  for (Eigen::Index i = 0; i < ridge.rows(); ++i) j["ridge"].push_back(vectorJson(ridge.row(i).transpose()));
   j["ridge_sse"] = ridge_sse;
   std::vector<double> lo, hi;
   boundingBox(lo, hi);
@@ -144,13 +127,13 @@ Region Region::fromJson(const nlohmann::json& j) {
   r.kind = j.at("kind").get<std::string>();
   r.lower = j.at("bounds_lower").get<std::vector<double>>();
   r.upper = j.at("bounds_upper").get<std::vector<double>>();
-  r.centre = vecFrom(j.at("centre"));
-  r.t_lower = vecFrom(j.at("t_lower"));
-  r.t_upper = vecFrom(j.at("t_upper"));
-  r.reach_lower = vecFrom(j.at("reach_lower"));
-  r.reach_upper = vecFrom(j.at("reach_upper"));
-  r.guess_mean = vecFrom(j.at("guess_mean"));
-  r.guess_sd = vecFrom(j.at("guess_sd"));
+  r.centre = vectorFromJson(j.at("centre"));
+  r.t_lower = vectorFromJson(j.at("t_lower"));
+  r.t_upper = vectorFromJson(j.at("t_upper"));
+  r.reach_lower = vectorFromJson(j.at("reach_lower"));
+  r.reach_upper = vectorFromJson(j.at("reach_upper"));
+  r.guess_mean = vectorFromJson(j.at("guess_mean"));
+  r.guess_sd = vectorFromJson(j.at("guess_sd"));
   r.threshold = j.at("threshold").get<double>();
   r.sse_min = j.at("sse_min").get<double>();
   r.evaluations = j.at("evaluations").get<int>();
@@ -158,10 +141,10 @@ Region Region::fromJson(const nlohmann::json& j) {
   const auto& ax = j.at("axes");
   const auto d = static_cast<Eigen::Index>(ax.size());
   r.axes.resize(d, d);
-  for (Eigen::Index i = 0; i < d; ++i) r.axes.col(i) = vecFrom(ax[static_cast<std::size_t>(i)]);
+  for (Eigen::Index i = 0; i < d; ++i) r.axes.col(i) = vectorFromJson(ax[static_cast<std::size_t>(i)]);
   const auto& rg = j.at("ridge");
   r.ridge.resize(static_cast<Eigen::Index>(rg.size()), d);
-  for (std::size_t i = 0; i < rg.size(); ++i) r.ridge.row(static_cast<Eigen::Index>(i)) = vecFrom(rg[i]).transpose();
+  for (std::size_t i = 0; i < rg.size(); ++i) r.ridge.row(static_cast<Eigen::Index>(i)) = vectorFromJson(rg[i]).transpose();
   r.ridge_sse = j.at("ridge_sse").get<std::vector<double>>();
   return r;
 }
@@ -170,8 +153,8 @@ std::string Region::briefReport() const {
   std::ostringstream os;
   std::vector<double> lo, hi;
   boundingBox(lo, hi);
-  os << kind << " region (SSE <= " << fmt(threshold) << "), bounding box ";
-  for (std::size_t j = 0; j < lo.size(); ++j) os << (j ? ", " : "") << "[" << fmt(lo[j]) << ", " << fmt(hi[j]) << "]";
+  os << kind << " region (SSE <= " << formatNumber(threshold) << "), bounding box ";
+  for (std::size_t j = 0; j < lo.size(); ++j) os << (j ? ", " : "") << "[" << formatNumber(lo[j]) << ", " << formatNumber(hi[j]) << "]";
   os << " (" << evaluations << " evaluations)";
   for (const auto& m : messages) os << "\n  note: " << m;
   return os.str();
@@ -205,13 +188,13 @@ Region regionFromBox(const FeasibleBox& box, const BoxProblem& problem) {
 void JointRegionOptions::validate() const {
   const std::string where = "joint region options";
   if (!(jacobian_step > 0.0 && jacobian_step <= 0.5))
-    throw InputError(where, "jacobian_step must be in (0, 0.5] (scaled units), got " + fmt(jacobian_step));
-  if (!(margin >= 1.0 && std::isfinite(margin))) throw InputError(where, "margin must be >= 1, got " + fmt(margin));
+    throw InputError(where, "jacobian_step must be in (0, 0.5] (scaled units), got " + formatNumber(jacobian_step));
+  if (!(margin >= 1.0 && std::isfinite(margin))) throw InputError(where, "margin must be >= 1, got " + formatNumber(margin));
   if (!(relative_tolerance > 0.0 && relative_tolerance < 1.0))
-    throw InputError(where, "relative_tolerance must be in (0, 1), got " + fmt(relative_tolerance));
-  if (!(growth > 1.0 && std::isfinite(growth))) throw InputError(where, "growth must be > 1, got " + fmt(growth));
+    throw InputError(where, "relative_tolerance must be in (0, 1), got " + formatNumber(relative_tolerance));
+  if (!(growth > 1.0 && std::isfinite(growth))) throw InputError(where, "growth must be > 1, got " + formatNumber(growth));
   if (max_evaluations < 2) throw InputError(where, "max_evaluations must be >= 2, got " + std::to_string(max_evaluations));
-  if (!(ridge_ratio >= 1.0 && std::isfinite(ridge_ratio))) throw InputError(where, "ridge_ratio must be >= 1, got " + fmt(ridge_ratio));
+  if (!(ridge_ratio >= 1.0 && std::isfinite(ridge_ratio))) throw InputError(where, "ridge_ratio must be >= 1, got " + formatNumber(ridge_ratio));
   if (ridge_steps < 0) throw InputError(where, "ridge_steps must be >= 0, got " + std::to_string(ridge_steps));
 }
 
@@ -271,20 +254,70 @@ JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std
     for (std::size_t i = 0; i < n; ++i) plan.jacobian(static_cast<Eigen::Index>(i), j) = (rp[i] - rm[i]) / dz;
   }
   const Eigen::MatrixXd H = plan.jacobian.transpose() * plan.jacobian;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
-  DTWIN_CHECK(es.info() == Eigen::Success, "eigen-decomposition of the Gauss-Newton Hessian failed");
-  plan.eigenvalues = es.eigenvalues();
-  plan.axes = es.eigenvectors();
-  const double dT = problem.threshold() - problem.sse_min;
-  const double cap = std::sqrt(static_cast<double>(d));
-  plan.half_width.resize(d);
-  plan.reach_lower.resize(d);
-  plan.reach_upper.resize(d);
   Eigen::VectorXd zhat(d);
   for (int j = 0; j < d; ++j) {
     const auto k = static_cast<std::size_t>(j);
     zhat(j) = (problem.theta_hat[k] - problem.lower[k]) / (problem.upper[k] - problem.lower[k]);
   }
+  // Parameters whose optimum sits on a bound (an effect switched off, say) are the active set.
+  // An eigen-axis that mixes one of them leaves the bounds at once in one direction, and a
+  // parallelepiped on such axes lies mostly outside the bounds. So the free parameters get the
+  // eigen-axes of their own block of H, and each active parameter its coordinate axis (pointing
+  // into the bounds from one side only), ranked by its profile curvature, the Schur complement
+  // H_aa - H_aF H_FF^-1 H_Fa: how fast the SSE rises along it when the free parameters follow.
+  // "On a bound": within 0.1 % of the narrowest quadratic half-width along its coordinate.
+  const double dT = problem.threshold() - problem.sse_min;
+  std::vector<int> active, free;
+  auto onBound = [&](int j) {
+    const double gap = std::min(zhat(j), 1.0 - zhat(j));
+    return gap <= 1e-9 || (H(j, j) > 0.0 && gap < 1e-3 * std::sqrt(dT / H(j, j)));
+  };
+  for (int j = 0; j < d; ++j) (onBound(j) ? active : free).push_back(j);
+  if (active.empty()) {
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
+    DTWIN_CHECK(es.info() == Eigen::Success, "eigen-decomposition of the Gauss-Newton Hessian failed");
+    plan.eigenvalues = es.eigenvalues();
+    plan.axes = es.eigenvectors();
+  } else {
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd Hff(nf, nf);
+    for (Eigen::Index a = 0; a < nf; ++a)
+      for (Eigen::Index b = 0; b < nf; ++b) Hff(a, b) = H(free[static_cast<std::size_t>(a)], free[static_cast<std::size_t>(b)]);
+    std::vector<std::pair<double, Eigen::VectorXd>> pairs;
+    Eigen::MatrixXd pinv = Eigen::MatrixXd::Zero(nf, nf);
+    if (nf > 0) {
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Hff);
+      DTWIN_CHECK(es.info() == Eigen::Success, "eigen-decomposition of the Gauss-Newton Hessian failed");
+      const double top = std::max(es.eigenvalues().maxCoeff(), 0.0);
+      for (Eigen::Index c = 0; c < nf; ++c) {
+        Eigen::VectorXd v = Eigen::VectorXd::Zero(d);
+        for (Eigen::Index a = 0; a < nf; ++a) v(free[static_cast<std::size_t>(a)]) = es.eigenvectors()(a, c);
+        pairs.emplace_back(es.eigenvalues()(c), v);
+        const double lam = es.eigenvalues()(c);
+        if (lam > 1e-12 * top && lam > 0.0) pinv += es.eigenvectors().col(c) * es.eigenvectors().col(c).transpose() / lam;
+      }
+    }
+    for (int j : active) {
+      Eigen::VectorXd hf(nf);
+      for (Eigen::Index a = 0; a < nf; ++a) hf(a) = H(j, free[static_cast<std::size_t>(a)]);
+      Eigen::VectorXd e = Eigen::VectorXd::Zero(d);
+      e(j) = 1.0;
+      pairs.emplace_back(std::max(H(j, j) - (nf > 0 ? hf.dot(pinv * hf) : 0.0), 0.0), e);
+      plan.messages.push_back("parameter " + std::to_string(j) + " sits on its " + (zhat(j) < 0.5 ? "lower" : "upper") +
+                              " bound at the optimum: its axis is its own, one-sided");
+    }
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    plan.eigenvalues.resize(d);
+    plan.axes.resize(d, d);
+    for (int c = 0; c < d; ++c) {
+      plan.eigenvalues(c) = pairs[static_cast<std::size_t>(c)].first;
+      plan.axes.col(c) = pairs[static_cast<std::size_t>(c)].second;
+    }
+  }
+  const double cap = std::sqrt(static_cast<double>(d));
+  plan.half_width.resize(d);
+  plan.reach_lower.resize(d);
+  plan.reach_upper.resize(d);
   const double lam_max = std::max(plan.eigenvalues.maxCoeff(), 0.0);
   for (int i = 0; i < d; ++i) {
     Eigen::Index big = 0;
@@ -423,7 +456,7 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
     if (!floorAt(t_next, un, r, f)) {
       un = u;
       if (!floorAt(t_next, un, r, f)) {
-        tr.message = "a simulation on the ridge failed at t = " + fmt(t_next) + "; the trace stops there";
+        tr.message = "a simulation on the ridge failed at t = " + formatNumber(t_next) + "; the trace stops there";
         return tr;
       }
     }

@@ -123,7 +123,8 @@ std::string locate(const Comparison& c) {
 nlohmann::json paramsJson(const std::vector<EffectParameter>& ps) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& p : ps)
-    j[p.name] = {{"unit", p.unit}, {"mean", p.mean}, {"sd", p.sd}, {"ci95", {p.q025, p.q975}}, {"optimum", p.optimum}};
+    j[p.name] = {{"unit", p.unit},        {"mean", p.mean}, {"sd", p.sd}, {"ci95", {p.q025, p.q975}}, {"interval", p.interval},
+                 {"credible95", {p.post_q025, p.post_q975}}, {"optimum", p.optimum}};
   return j;
 }
 
@@ -282,8 +283,12 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
       ep.unit = setup.extra_calibrated[k - static_cast<std::size_t>(n_fit_params)].unit;
       ep.mean = p.mean;
       ep.sd = p.sd;
-      ep.q025 = p.q025;
-      ep.q975 = p.q975;
+      ep.post_q025 = p.q025;
+      ep.post_q975 = p.q975;
+      const bool prof = r.interval == "profile" && k < r.profile.lower.size();
+      ep.interval = prof ? "profile" : "posterior";
+      ep.q025 = prof ? r.profile.lower[k] : p.q025;
+      ep.q975 = prof ? r.profile.upper[k] : p.q975;
       ep.optimum = r.optimum.theta[k];
       f.effect_parameters.push_back(ep);
     }
@@ -723,8 +728,9 @@ std::string DiagnosisResult::text() const {
     if (c.confirmed && !c.fit->effect_parameters.empty()) {
       s += "\n  " + c.effect + " posterior:\n";
       for (const auto& p : c.fit->effect_parameters)
-        s += "    " + p.name + " = " + fmt("%.4g", p.mean) + " ± " + fmt("%.2g", p.sd) + " " + p.unit + "  (95 % [" +
-             fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) + "])\n";
+        s += "    " + p.name + " = " + fmt("%.4g", p.mean) + " ± " + fmt("%.2g", p.sd) + " " + p.unit + "  (95 % " +
+             (p.interval == "profile" ? "profile likelihood" : "posterior") + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) +
+             "])\n";
     }
   if (!left_out_channels.empty()) {
     s += "\n  Compared but not fitted: ";

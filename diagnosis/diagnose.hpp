@@ -51,7 +51,10 @@ using DiagnoseProgress = std::function<void(const std::string& stage, std::size_
 
 struct EffectParameter {
   std::string name, unit;
-  double mean = 0, sd = 0, q025 = 0, q975 = 0, optimum = 0;
+  double mean = 0, sd = 0, optimum = 0;
+  double q025 = 0, q975 = 0;            ///< the 95 % interval printed (ci95: profile likelihood by default)
+  double post_q025 = 0, post_q975 = 0;  ///< the posterior's central 95 % interval
+  std::string interval = "profile";     ///< which interval q025/q975 are
 };
 
 /// Error figures of one calibrated model (a row of the before/after table).

@@ -3,7 +3,7 @@
 # end (twin study): lab and field data, Griddy Gibbs calibration of every assembly, synthetic
 # field data, Bayesian classification and the cost-aware recommendation, into out/study/, and
 # its self-contained HTML report out/study/report.html.
-# About 5 minutes on 2 cores. Rerunning resumes where a killed run stopped.
+# About 4 minutes on 2 cores (plus the build). Rerunning resumes where a killed run stopped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh

@@ -2,9 +2,10 @@
 // processes, possibly at the same time (ctest -j), and many tests write files: each process gets
 // its own temporary folder (TMPDIR and TEST_TMPDIR point into it, so ::testing::TempDir(),
 // std::filesystem::temp_directory_path() and every child process such as the `twin` CLI use it),
-// which is removed at the end.
+// which is removed at the end (kept, and its path printed, when DTWIN_KEEP_TEST_TMP is set).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -19,7 +20,10 @@ int main(int argc, char** argv) {
   }
   ::testing::InitGoogleTest(&argc, argv);
   const int rc = RUN_ALL_TESTS();
-  if (dir) {
+  const char* keep = std::getenv("DTWIN_KEEP_TEST_TMP");
+  if (dir && keep && *keep) {
+    std::fprintf(stderr, "test files kept in %s\n", dir);
+  } else if (dir) {
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
   }

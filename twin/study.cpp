@@ -153,7 +153,7 @@ RoadSpec parseRoad(TableReader& r, const std::string& scenario) {
 
 nlohmann::json CalibrationSettings::toJson() const {
   return {{"region", region}, {"design", designOrDefault()}, {"round_points", round_points}, {"max_rounds", max_rounds},
-          {"target_ess", target_ess}, {"margin", margin}, {"interval", interval}};
+          {"target_ess", target_ess}, {"margin", margin}, {"ridge_steps", ridge_steps}, {"interval", interval}};
 }
 
 const std::map<std::string, long>& knownSizes() {
@@ -427,6 +427,11 @@ Study loadStudy(const std::string& path) {
     if (auto v = r.number("margin")) {
       c.margin = *v;
       if (!(std::isfinite(c.margin) && c.margin >= 1 && c.margin <= 10)) throw InputError(r.where("margin"), "must be a number in [1, 10]");
+    }
+    if (auto v = r.integer("ridge_steps")) {
+      c.ridge_steps = *v;
+      if (c.ridge_steps < 0 || c.ridge_steps > 1000)
+        throw InputError(r.where("ridge_steps"), "must be an integer in [0, 1000], got " + std::to_string(c.ridge_steps));
     }
     r.finish();
   }

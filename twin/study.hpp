@@ -57,6 +57,7 @@ struct CalibrationSettings {
   long max_rounds = 8;           ///< adaptive rounds after the first Latin hypercube, >= 0
   double target_ess = 400.0;     ///< importance ESS at which the rounds may stop, > 0
   double margin = 1.25;          ///< joint region: extents = margin x the contour's, >= 1
+  long ridge_steps = 30;         ///< joint region: steps per ridge trace (0: no traces)
   std::string interval = "profile";  ///< the 95 % interval summaries print as ci95: "profile" or "posterior"
   /// "adaptive" or "lhs", the default resolved.
   std::string designOrDefault() const { return design.empty() ? (region == "paper" ? "lhs" : "adaptive") : design; }

@@ -72,7 +72,7 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
   fs::remove_all(dir);
   const auto r1 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(1), (dir / "t1").string(), "x");
   const auto r2 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "t2").string(), "x");
-  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json"})
+  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json", "profile.json"})
     EXPECT_EQ(slurp(dir / "t1" / file), slurp(dir / "t2" / file)) << file;
   EXPECT_FALSE(slurp(dir / "t1" / "posterior.csv").empty());
   EXPECT_EQ(r1.posterior.parameters[0].mean, r2.posterior.parameters[0].mean);
@@ -93,6 +93,25 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
   EXPECT_EQ(j["region"]["kind"], "joint");
   EXPECT_EQ(j["region"]["axes"].size(), r1.names.size());
   EXPECT_EQ(j["design"]["rounds"].size(), 3u);
+  // Both 95 % intervals; ci95 is the profile interval (the default), which holds the best
+  // evaluated design point.
+  EXPECT_EQ(j["interval"], "profile");
+  const auto best = std::min_element(r1.sse.begin(), r1.sse.end()) - r1.sse.begin();
+  for (std::size_t k = 0; k < r1.names.size(); ++k) {
+    const auto& e = j["parameters"][r1.names[k]];
+    EXPECT_EQ(e["interval"], "profile");
+    EXPECT_EQ(e["ci95"], e["profile95"]);
+    EXPECT_EQ(e["credible95"][0].get<double>(), r1.posterior.parameters[k].q025);
+    if (r1.sse[static_cast<std::size_t>(best)] <= j["profile"]["threshold"].get<double>()) {
+      EXPECT_LE(e["profile95"][0].get<double>(), r1.design(best, static_cast<long>(k)));
+      EXPECT_GE(e["profile95"][1].get<double>(), r1.design(best, static_cast<long>(k)));
+    }
+    EXPECT_EQ(e["truth_in_ci95"], e["truth_in_profile95"]);
+  }
+  // The profile's threshold rests on the best SSE evaluated anywhere (the optimum, or a design
+  // point that beat it: this test's optimiser is cut short at 40 evaluations).
+  EXPECT_LE(j["profile"]["sse_best"].get<double>(), std::min(j["sse_min"].get<double>(), best_design));
+  EXPECT_GT(j["profile"]["threshold"].get<double>(), j["profile"]["sse_best"].get<double>());
   // Along a traced ridge the region reaches margin x the profile's crossing (or the bounds' reach).
   const auto box = nlohmann::json::parse(slurp(dir / "t1" / "box.json"));
   ASSERT_TRUE(box["gauss_newton"].contains("ridges"));
@@ -125,7 +144,7 @@ TEST(Calibrate, InterruptedDesignResumesToIdenticalResults) {
   const auto r = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "x");
   EXPECT_GE(r.resumed_points, r.rounds.rounds[0].count + 5);  // all of round 0 and part of round 1
   EXPECT_LT(r.resumed_points, r.design.rows());
-  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json"})
+  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json", "profile.json"})
     EXPECT_EQ(slurp(dir / "whole" / file), slurp(dir / "cut" / file)) << file;
   // Different data: refused with a clear message, nothing overwritten.
   try {

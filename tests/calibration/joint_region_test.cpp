@@ -213,3 +213,28 @@ TEST(JointRegion, StudentQuantilesMatchTables) {
   EXPECT_NEAR(calib::studentQuantile(0.025, 5.0), -2.570581835636314, 1e-9);
   EXPECT_NEAR(calib::studentQuantile(0.5, 7.0), 0.0, 1e-12);
 }
+
+// The optimum on a bound (as an effect switched off): θ2's lower bound lies above its
+// unconstrained estimate. The region gives θ2 its own one-sided axis, so the design lies inside
+// the bounds; the profile interval of θ2 starts at the bound and ends where the closed form says:
+// SSE(θ2) − SSE* = ((θ2 − θ̂2)² − (b − θ̂2)²) / V22 = t² s², i.e. θ2 = θ̂2 + sqrt((b − θ̂2)² + t² s² V22).
+TEST(JointRegion, OptimumOnABoundGetsAOneSidedAxis) {
+  Linear p = makeProblem(4);
+  const Eigen::Matrix2d V = (p.X.transpose() * p.X).inverse();
+  const Eigen::Vector2d th_u = V * p.X.transpose() * p.y;
+  const double sse_u = p.sse({th_u(0), th_u(1)});
+  const double sd2 = std::sqrt(sse_u / (p.n - 2) * V(1, 1));
+  const double b = th_u(1) + 0.5 * sd2;
+  p.lower[1] = b;
+  const double sse_star = sse_u + (b - th_u(1)) * (b - th_u(1)) / V(1, 1);
+  const double t = studentQuantileBySimpson(0.975, p.n - 2);
+  const double upper_exact = th_u(1) + std::sqrt((b - th_u(1)) * (b - th_u(1)) + t * t * sse_star / (p.n - 2) * V(1, 1));
+  AdaptiveDesign design;
+  ProfileIntervals profile;
+  calibrate(p, "joint", 4, &design, &profile);
+  ASSERT_GE(design.points.rows(), 200);
+  for (Eigen::Index i = 0; i < design.points.rows(); ++i) ASSERT_GE(design.points(i, 1), b);
+  EXPECT_TRUE(profile.lower_at_bound[1]);
+  EXPECT_DOUBLE_EQ(profile.lower[1], b);
+  EXPECT_NEAR(profile.upper[1], upper_exact, 0.02 * (upper_exact - b));
+}

@@ -61,6 +61,11 @@ DiagnoseOptions smallOptions(const Study& s) {
   o.calibration.gibbs_iterations = 3000;
   o.calibration.gibbs_burn_in = 1000;
   o.calibration.optimizer_starts = 2;
+  // One adaptive round and short ridge traces: the region's ridge traces are most of a
+  // calibration's simulations, and this test checks the diagnosis, not the intervals' coverage
+  // (scripts/diagnosis_matrix.py runs the defaults).
+  o.calibration.design.max_rounds = 1;
+  o.calibration.joint.ridge_steps = 4;
   o.candidates = 2;
   o.compare_draws = 10;
   return o;

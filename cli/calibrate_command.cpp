@@ -22,7 +22,7 @@ namespace {
 struct CalibrateConfig {
   std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out, region, design, interval;
   int threads = 0;
-  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
+  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1, max_rounds = -1, ridge_steps = -1;
   long long seed = -1;
   bool quiet = false;
 };
@@ -50,6 +50,8 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   }
   if (!cfg.design.empty()) opt.design.adaptive = cfg.design == "adaptive";
   if (!cfg.interval.empty()) opt.interval = cfg.interval;
+  if (cfg.max_rounds >= 0) opt.design.max_rounds = static_cast<int>(cfg.max_rounds);
+  if (cfg.ridge_steps >= 0) opt.joint.ridge_steps = static_cast<int>(cfg.ridge_steps);
   opt.command = command;
   opt.data_path = cfg.data;
   if (opt.gibbs_burn_in >= opt.gibbs_iterations)
@@ -145,6 +147,12 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
                 "adaptive (a Latin hypercube, then rounds where the posterior lies) or lhs (one Latin hypercube); "
                 "default: the study's [calibration] design (adaptive for joint, lhs for paper)")
       ->check(CLI::IsMember({"adaptive", "lhs"}));
+  c->add_option("--max-rounds", cfg->max_rounds, "Adaptive design rounds after the first Latin hypercube (default: the study's "
+                                                 "[calibration] max_rounds)")
+      ->check(CLI::Range(0L, 100L));
+  c->add_option("--ridge-steps", cfg->ridge_steps, "Steps per ridge trace of the joint region, 0: none (default: the study's "
+                                                   "[calibration] ridge_steps)")
+      ->check(CLI::Range(0L, 1000L));
   c->add_option("--seed", cfg->seed, "Seed of the design and the sampler (default: the study's seed)")->check(CLI::Range(0LL, (1LL << 62)));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   return {c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }};

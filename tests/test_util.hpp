@@ -34,11 +34,11 @@ inline std::filesystem::path writeTinyStudy(const std::filesystem::path& path, i
                         "posterior_draws = 4\nroads_per_draw = 2\nroad_library = 8\noptimizer_starts = " +
                             std::to_string(optimizer_starts) +
                             "\n\n[assemblies]\ninclude = [\"M3\", \"M4\"]\n");
-  // Two design rounds (the demo's [calibration] table asks for three) and short ridge traces:
+  // Two design rounds (the demo's [calibration] table asks for three) and no ridge traces:
   // these tests check files, resumption and determinism, not the intervals (docs/calibration.md
   // and tests/calibration check those), and the traces are most of a calibration's simulations.
   std::string s = slurp(path);
-  s = std::regex_replace(s, std::regex("\nmax_rounds = [0-9]+"), "\nmax_rounds = 2\nridge_steps = 3");
+  s = std::regex_replace(s, std::regex("\nmax_rounds = [0-9]+"), "\nmax_rounds = 2\nridge_steps = 0");
   std::ofstream(path) << s;
   return path;
 }

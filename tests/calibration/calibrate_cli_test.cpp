@@ -69,7 +69,7 @@ TEST_F(CalibrateCli, BadInputExitsTwoWithOneLine) {
 }
 
 TEST_F(CalibrateCli, KilledRunResumesToIdenticalFiles) {
-  const std::string base = std::string(DTWIN_TWIN_EXE) + " calibrate --quiet --assembly M3 --starts 1 --lhs-points 300 --iterations 2000 " +
+  const std::string base = std::string(DTWIN_TWIN_EXE) + " calibrate --quiet --assembly M3 --starts 1 --lhs-points 300 --max-rounds 1 --ridge-steps 0 --iterations 2000 " +
                            "--burn-in 500 --threads 1 --data " + (kTmp() / "lab.csv").string();
   ASSERT_EQ(std::system((base + " --out " + (kTmp() / "whole").string()).c_str()), 0);
   // Start the same calibration in the background, kill it with SIGKILL once the design journal

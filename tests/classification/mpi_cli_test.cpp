@@ -61,7 +61,7 @@ TEST(MpiCli, CalibrateAndSynthesizeAreBitIdenticalWithTwoRanks) {
   ASSERT_EQ(run(kTwin + " generate lab --study " + kDemo + " --out " + lab + " --quiet"), 0);
 
   const std::string calib = " calibrate --study " + kDemo + " --data " + lab +
-                            " --assembly M3 --starts 3 --lhs-points 20 --iterations 300 --burn-in 100 --quiet --out ";
+                            " --assembly M3 --starts 3 --lhs-points 20 --max-rounds 2 --ridge-steps 3 --iterations 300 --burn-in 100 --quiet --out ";
   ASSERT_EQ(run(kTwin + calib + (tmp / "c1").string() + " --threads 1"), 0);
   ASSERT_EQ(run(mpirun2() + kTwin + calib + (tmp / "c2").string() + " --threads 1"), 0);
   for (const char* f : {"posterior.csv", "design.csv", "optimum.json", "box.json"})

@@ -54,18 +54,25 @@ std::vector<calib::DataSet> makeData(const Study& s, const std::string& hidden, 
   return sets;
 }
 
-DiagnoseOptions smallOptions(const Study& s) {
+/// Small sizes and, unless `joint`, the paper's region with one Latin hypercube: these tests check
+/// the diagnosis, not the intervals' coverage (docs/calibration.md, tests/calibration), and the
+/// joint region's ridge traces and profile points are most of a calibration's simulations. The
+/// null case runs the joint region (short traces, one adaptive round), where every candidate
+/// effect sits on its "off" bound.
+DiagnoseOptions smallOptions(const Study& s, bool joint = false) {
   DiagnoseOptions o;
   o.calibration = calib::CalibrationOptions::fromStudy(s);
   o.calibration.lhs_points = 40;
   o.calibration.gibbs_iterations = 3000;
   o.calibration.gibbs_burn_in = 1000;
   o.calibration.optimizer_starts = 2;
-  // One adaptive round and short ridge traces: the region's ridge traces are most of a
-  // calibration's simulations, and this test checks the diagnosis, not the intervals' coverage
-  // (scripts/diagnosis_matrix.py runs the defaults).
-  o.calibration.design.max_rounds = 1;
-  o.calibration.joint.ridge_steps = 4;
+  if (joint) {
+    o.calibration.design.max_rounds = 1;
+    o.calibration.joint.ridge_steps = 4;
+  } else {
+    o.calibration.region = "paper";
+    o.calibration.design.adaptive = false;
+  }
   o.candidates = 2;
   o.compare_draws = 10;
   return o;
@@ -127,7 +134,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Diagnose, NoHiddenEffectGivesNone) {
   const Study s = study();
-  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "", 4), {}, smallOptions(s),
+  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "", 4), {}, smallOptions(s, true),
                           freshDir("diag_null"));
   EXPECT_EQ(r.verdict, "none") << r.text();
   EXPECT_TRUE(r.named_effect.empty());

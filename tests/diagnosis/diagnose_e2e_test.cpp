@@ -54,7 +54,8 @@ std::vector<calib::DataSet> makeData(const Study& s, const std::string& hidden, 
   return sets;
 }
 
-/// Small sizes and, unless `joint`, the paper's region with one Latin hypercube: these tests check
+/// Small sizes and, unless `joint`, the paper's region with one Latin hypercube and two profile
+/// points per interval end: these tests check
 /// the diagnosis, not the intervals' coverage (docs/calibration.md, tests/calibration), and the
 /// joint region's ridge traces and profile points are most of a calibration's simulations. The
 /// null case runs the joint region (short traces, one adaptive round), where every candidate
@@ -72,6 +73,7 @@ DiagnoseOptions smallOptions(const Study& s, bool joint = false) {
   } else {
     o.calibration.region = "paper";
     o.calibration.design.adaptive = false;
+    o.calibration.profile.steps = 2;
   }
   o.candidates = 2;
   o.compare_draws = 10;

@@ -36,9 +36,9 @@ CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line
 CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_line);
 /// `twin classify`: field records among synthesized assemblies, cost-aware choice (classification/classify_field.hpp).
 CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line);
-/// `twin study`: the whole method end to end, resumable (classification/study_run.hpp).
+/// `twin study`: the whole method end to end, resumable (study/run.hpp).
 CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line);
-/// `twin report`: a self-contained HTML report of a study folder (classification/report.hpp).
+/// `twin report`: a self-contained HTML report of a study folder (report/study_report.hpp).
 CommandHandle addReportCommand(CLI::App& root, const std::string& command_line);
 /// `twin compare`: a calibrated assembly against measurements, where it fails (diagnosis/compare.hpp).
 CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line);

@@ -12,7 +12,7 @@
 #include "cli/progress.hpp"
 #include "diagnosis/compare.hpp"
 #include "diagnosis/diagnose.hpp"
-#include "diagnosis/diagnosis_report.hpp"
+#include "report/diagnosis_report.hpp"
 #include "diagnosis/measurements.hpp"
 #include "subsystems/errors.hpp"
 #include "twin/distributed.hpp"
@@ -202,7 +202,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
     if (isRootRank()) {
       const std::string html = (fs::path(cfg.out) / "report.html").string();
       try {
-        diag::writeDiagnosisReport(cfg.out, html, command);
+        report::writeDiagnosisReport(cfg.out, html, command);
         if (!cfg.quiet) std::printf("wrote %s\n", html.c_str());
       } catch (const InputError& e) {
         std::printf("note: no HTML report (%s)\n", e.what());

@@ -5,9 +5,11 @@
 #include <memory>
 #include <vector>
 
-#include "classification/report.hpp"
 #include "cli/commands.hpp"
-#include "diagnosis/diagnosis_report.hpp"
+#include "report/diagnosis_report.hpp"
+#include "report/study_report.hpp"
+#include "report/svg_plot.hpp"
+#include "study/lab_bands.hpp"
 #include "subsystems/errors.hpp"
 
 namespace dtwin::cli {
@@ -24,31 +26,34 @@ int runReportCommand(const ReportConfig& cfg, const std::string& command) {
   if (cfg.dir.empty() && cfg.diagnoses.empty()) throw InputError("twin report", "give a study folder, --diagnosis DIR, or both");
   if (cfg.dir.empty()) {  // diagnosis-only page
     const std::string out = cfg.out.empty() ? (std::filesystem::path(cfg.diagnoses[0]) / "report.html").string() : cfg.out;
-    const auto r = diag::writeDiagnosisReport(cfg.diagnoses, out, command);
+    const auto r = report::writeDiagnosisReport(cfg.diagnoses, out, command);
     for (const auto& w : r["warnings"]) std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
     if (!cfg.quiet) std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(), r["wall_s"].get<double>());
     return 0;
   }
   const std::string out = cfg.out.empty() ? (std::filesystem::path(cfg.dir) / "report.html").string() : cfg.out;
-  classify::ReportOptions o;
-  o.draws = cfg.draws;
-  o.threads = cfg.threads;
+  report::requireGnuplot("`twin report`");  // before any simulation
+  report::ReportOptions o;
   std::vector<std::string> diag_warnings;
   for (std::size_t k = 0; k < cfg.diagnoses.size(); ++k) {  // read (and checked) before the study's simulations
-    diag::DiagnosisSectionOptions so;
+    report::DiagnosisSectionOptions so;
     so.anchor = "diagnosis-" + std::to_string(k + 1);
     so.id_prefix = "d" + std::to_string(k + 1) + "p";
     so.heading_prefix = std::to_string(6 + k) + ". ";
     nlohmann::json drawn;
-    classify::ReportSection s;
-    s.html = diag::diagnosisSectionHtml(cfg.diagnoses[k], so, &drawn);
+    report::ReportSection s;
+    s.html = report::diagnosisSectionHtml(cfg.diagnoses[k], so, &drawn);
     s.id = so.anchor;
     s.title = "Diagnosis: " + cfg.diagnoses[k];
     s.svg_count = drawn["svg_count"].get<int>();
     for (const auto& w : drawn["warnings"]) diag_warnings.push_back(w.get<std::string>());
     o.appendix.push_back(std::move(s));
   }
-  const auto r = classify::writeStudyReport(cfg.dir, out, command, o);
+  study::LabBandOptions bo;
+  bo.draws = cfg.draws;
+  bo.threads = cfg.threads;
+  const study::LabBands bands = study::predictLabBands(cfg.dir, bo);
+  const auto r = report::writeStudyReport(bands, cfg.dir, out, command, o);
   for (const auto& w : r["warnings"]) std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
   for (const auto& w : diag_warnings) std::fprintf(stderr, "twin report: warning: %s\n", w.c_str());
   if (!cfg.quiet) std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(), r["wall_s"].get<double>());

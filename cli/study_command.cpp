@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "classification/study_run.hpp"
+#include "study/run.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "subsystems/errors.hpp"
@@ -19,7 +19,7 @@ struct StudyConfig {
 
 int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
-  classify::StudyRunOptions o;
+  study::StudyRunOptions o;
   o.threads = cfg.threads;
   o.lab_file = cfg.lab;
   o.field_file = cfg.field;
@@ -40,7 +40,7 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
     std::fflush(stdout);
   };
   if (!cfg.quiet) std::printf("study %s -> %s (rerun the same command to resume)\n", study.path.c_str(), cfg.out.c_str());
-  const auto s = classify::runStudy(study, o, cfg.out, progress, log);
+  const auto s = study::runStudy(study, o, cfg.out, progress, log);
   bar.finish();
   if (!cfg.quiet && isRootRank()) {  // under MPI the other ranks do not run the classification
     std::printf("wins:");

@@ -20,7 +20,7 @@
 
 #include "twin/study.hpp"
 
-namespace dtwin::classify {
+namespace dtwin::study {
 
 struct StudyRunOptions {
   int threads = 0;              ///< 0: all cores (never changes the numbers)
@@ -38,4 +38,4 @@ using StudyLog = std::function<void(const std::string& line)>;
 nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, const std::string& out_dir,
                         const StudyProgress& progress = {}, const StudyLog& log = {});
 
-}  // namespace dtwin::classify
+}  // namespace dtwin::study

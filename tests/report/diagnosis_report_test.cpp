@@ -1,4 +1,4 @@
-// The diagnosis report (diagnosis/diagnosis_report.hpp, `twin report --diagnosis DIR`) on a small
+// The diagnosis report (report/diagnosis_report.hpp, `twin report --diagnosis DIR`) on a small
 // hand-written diagnosis folder: the page is written, holds the verdict, one inline SVG per
 // expected plot (the waterfall only with steps), unique ids, no external resource; missing or
 // malformed files and a missing gnuplot give an InputError naming the file or the package.
@@ -18,8 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "classification/svg_plot.hpp"
-#include "diagnosis/diagnosis_report.hpp"
+#include "report/svg_plot.hpp"
+#include "report/diagnosis_report.hpp"
 #include "subsystems/errors.hpp"
 
 namespace fs = std::filesystem;
@@ -159,7 +159,7 @@ void checkPage(const std::string& page, std::size_t svgs) {
   for (const auto& [id, n] : ids) EXPECT_EQ(n, 1) << "duplicate id " << id;
 }
 
-bool haveGnuplot() { return !dtwin::classify::findOnPath("gnuplot").empty(); }
+bool haveGnuplot() { return !dtwin::report::findOnPath("gnuplot").empty(); }
 
 }  // namespace
 
@@ -167,7 +167,7 @@ TEST(DiagnosisReport, WithStepsDrawsEveryPlotAndTheWaterfall) {
   if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
   const fs::path dir = makeDiagnosis("steps", true);
   const fs::path html = kTmp() / "steps.html";
-  const json r = dtwin::diag::writeDiagnosisReport(dir.string(), html.string(), "test");
+  const json r = dtwin::report::writeDiagnosisReport(dir.string(), html.string(), "test");
   ASSERT_TRUE(fs::exists(html));
   const std::string page = dtwin_test::slurp(html);
   // 2 series overlays, band power, state map, waterfall.
@@ -184,16 +184,16 @@ TEST(DiagnosisReport, WithoutStepsHasNoWaterfall) {
   if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
   const fs::path dir = makeDiagnosis("nosteps", false);
   const fs::path html = kTmp() / "nosteps.html";
-  const json r = dtwin::diag::writeDiagnosisReport(dir.string(), html.string(), "test");
+  const json r = dtwin::report::writeDiagnosisReport(dir.string(), html.string(), "test");
   const std::string page = dtwin_test::slurp(html);
   checkPage(page, 4);
   EXPECT_EQ(page.find("waterfall"), std::string::npos);
   EXPECT_EQ(page.find("Before and after"), std::string::npos);
   // Section only (for the study report): the same plots, no page skeleton, its own id prefix.
-  dtwin::diag::DiagnosisSectionOptions o;
+  dtwin::report::DiagnosisSectionOptions o;
   o.id_prefix = "q";
   json drawn;
-  const std::string sec = dtwin::diag::diagnosisSectionHtml(dir.string(), o, &drawn);
+  const std::string sec = dtwin::report::diagnosisSectionHtml(dir.string(), o, &drawn);
   EXPECT_EQ(sec.find("<html"), std::string::npos);
   EXPECT_EQ(count(sec, "<svg"), 4u);
   EXPECT_EQ(drawn["svg_count"], 4);
@@ -221,7 +221,7 @@ TEST(DiagnosisReport, MissingOrMalformedFilesAreNamed) {
   if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
   fs::remove(dir / "comparisons" / "base.json");
   try {
-    dtwin::diag::writeDiagnosisReport(dir.string(), (kTmp() / "broken.html").string(), "test");
+    dtwin::report::writeDiagnosisReport(dir.string(), (kTmp() / "broken.html").string(), "test");
     FAIL() << "no InputError";
   } catch (const dtwin::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("comparisons/base.json"), std::string::npos) << e.what();
@@ -229,7 +229,7 @@ TEST(DiagnosisReport, MissingOrMalformedFilesAreNamed) {
   EXPECT_FALSE(fs::exists(kTmp() / "broken.html"));
   std::ofstream(dir / "diagnosis.json") << "{\"verdict\": ";
   try {
-    dtwin::diag::writeDiagnosisReport(dir.string(), (kTmp() / "broken.html").string(), "test");
+    dtwin::report::writeDiagnosisReport(dir.string(), (kTmp() / "broken.html").string(), "test");
     FAIL() << "no InputError";
   } catch (const dtwin::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("diagnosis.json"), std::string::npos) << e.what();
@@ -237,7 +237,7 @@ TEST(DiagnosisReport, MissingOrMalformedFilesAreNamed) {
   const fs::path dir2 = makeDiagnosis("broken2", false);
   writeJson(dir2 / "comparisons" / "bump_stop.json", json{{"series", {{{"channel", "x"}, {"t", {1, 2}}}}}});
   try {
-    dtwin::diag::writeDiagnosisReport(dir2.string(), (kTmp() / "broken2.html").string(), "test");
+    dtwin::report::writeDiagnosisReport(dir2.string(), (kTmp() / "broken2.html").string(), "test");
     FAIL() << "no InputError";
   } catch (const dtwin::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("comparisons/bump_stop.json"), std::string::npos) << e.what();
@@ -249,7 +249,7 @@ TEST(DiagnosisReport, MissingGnuplotNamesThePackage) {
   const std::string old = std::getenv("PATH") ? std::getenv("PATH") : "";
   ::setenv("PATH", "/nonexistent", 1);
   try {
-    dtwin::diag::writeDiagnosisReport(dir.string(), (kTmp() / "nognuplot.html").string(), "test");
+    dtwin::report::writeDiagnosisReport(dir.string(), (kTmp() / "nognuplot.html").string(), "test");
     ::setenv("PATH", old.c_str(), 1);
     FAIL() << "no InputError";
   } catch (const dtwin::InputError& e) {

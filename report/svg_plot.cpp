@@ -1,4 +1,4 @@
-#include "classification/svg_plot.hpp"
+#include "report/svg_plot.hpp"
 
 #include <unistd.h>
 
@@ -12,12 +12,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "classification/report.hpp"
+#include "report/study_report.hpp"
 #include "subsystems/errors.hpp"
 
 namespace fs = std::filesystem;
 
-namespace dtwin::classify {
+namespace dtwin::report {
 namespace {
 
 std::string slurp(const fs::path& p) {
@@ -159,4 +159,4 @@ std::string GnuplotSvg::plot(const std::string& body, int width, int height, con
   return clean(slurp(svg), prefix_ + std::to_string(n) + "_", title);
 }
 
-}  // namespace dtwin::classify
+}  // namespace dtwin::report

@@ -3,8 +3,8 @@
 // (Debian package gnuplot-nox) runs as one subprocess per plot with the svg terminal, data reach it
 // through files in a private temporary folder, and the SVG it writes is cleaned for inlining (XML
 // prolog and gnuplot's <desc> dropped, <title> set, every id prefixed so that several plots, and
-// several plotters, can share one page). Used by classification/report.cpp and
-// diagnosis/diagnosis_report.cpp.
+// several plotters, can share one page). Used by report/study_report.cpp and
+// report/diagnosis_report.cpp.
 //
 //   const std::string exe = requireGnuplot("`twin report`");   // InputError naming gnuplot-nox
 //   GnuplotSvg gp(exe);
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace dtwin::classify {
+namespace dtwin::report {
 
 /// Absolute path of the executable `exe` in a folder of $PATH (/usr/bin:/bin if unset), or "".
 std::string findOnPath(const std::string& exe);
@@ -61,4 +61,4 @@ class GnuplotSvg {
   std::vector<std::string> warnings_;
 };
 
-}  // namespace dtwin::classify
+}  // namespace dtwin::report

@@ -2,7 +2,8 @@
 // The HTML report of a study folder (`twin report`, docs/classification.md): one self-contained
 // HTML5 page (inline CSS and inline SVG only: no external file, no script, no network) with
 //   1. the lab data against each assembly's posterior predictive band at the lab times
-//      (evenly spaced posterior rows, predicted with calib::LabObjective);
+//      (computed beforehand by study::predictLabBands, study/lab_bands.hpp: the report itself
+//      runs no simulation);
 //   2. posterior histograms of every θ and of τ per assembly (calibration/<id>/posterior.csv);
 //   3. the field-record selection boxplot (P(M_m | record) over the records,
 //      classification/records.csv) and the win counts (summary.json);
@@ -10,17 +11,20 @@
 //   5. provenance: program, commands, paths, times, seeds and sizes;
 // then any ReportOptions::appendix sections (`twin report --diagnosis DIR`).
 // Plots are drawn by gnuplot (Debian package gnuplot-nox) run as a subprocess with the svg
-// terminal; its output is inlined (ids made unique per plot; classification/svg_plot.hpp).
-// Without gnuplot on PATH the call throws InputError naming the package, before any work is done.
+// terminal; its output is inlined (ids made unique per plot; report/svg_plot.hpp).
+// Without gnuplot on PATH the call throws InputError naming the package, before any work is done
+// (callers that compute the bands first check requireGnuplot() before, as `twin report` does).
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-namespace dtwin::classify {
+#include "study/lab_bands.hpp"
+
+namespace dtwin::report {
 
 /// A section appended to the page after the provenance and listed in its contents (e.g. a
-/// diagnosis, diagnosis/diagnosis_report.hpp); `html` is inserted as is (its SVG ids must not
+/// diagnosis, report/diagnosis_report.hpp); `html` is inserted as is (its SVG ids must not
 /// clash with the report's own "p<n>_" ids).
 struct ReportSection {
   std::string id;     ///< anchor of the section's heading (for the contents)
@@ -30,19 +34,18 @@ struct ReportSection {
 };
 
 struct ReportOptions {
-  int draws = 50;    ///< posterior rows per assembly for the predictive band (evenly spaced)
-  int threads = 0;   ///< simulations in parallel (0: all cores; never changes the page)
   std::vector<ReportSection> appendix;  ///< extra sections after the provenance (none: the page as before)
 };
 
-/// Reads the study folder `study_dir` (written by `twin study`), writes `out_html` atomically
-/// and returns what was drawn: {"html", "plots": [{"name", "kind", "assembly"}...], "svg_count",
+/// Draws the study folder `study_dir` (written by `twin study`) with its predictive `bands`
+/// (study::predictLabBands of the same folder), writes `out_html` atomically and returns what
+/// was drawn: {"html", "plots": [{"name", "kind", "assembly"}...], "svg_count",
 /// "assemblies", "draws", "prediction_failures", "noise_sd", "warnings", "wall_s"}.
 /// InputError when a needed file is missing or malformed, or when gnuplot is not installed.
-nlohmann::json writeStudyReport(const std::string& study_dir, const std::string& out_html, const std::string& command,
-                                const ReportOptions& options = {});
+nlohmann::json writeStudyReport(const study::LabBands& bands, const std::string& study_dir, const std::string& out_html,
+                                const std::string& command, const ReportOptions& options = {});
 
 /// `text` with & < > " ' replaced by character references (HTML text and attribute values).
 std::string htmlEscape(const std::string& text);
 
-}  // namespace dtwin::classify
+}  // namespace dtwin::report

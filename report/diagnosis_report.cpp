@@ -1,4 +1,4 @@
-#include "diagnosis/diagnosis_report.hpp"
+#include "report/diagnosis_report.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,24 +11,24 @@
 #include <sstream>
 #include <vector>
 
-#include "classification/report.hpp"
-#include "classification/svg_plot.hpp"
+#include "report/study_report.hpp"
+#include "report/svg_plot.hpp"
 #include "subsystems/errors.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using dtwin::classify::GnuplotSvg;
-using dtwin::classify::htmlEscape;
 
-namespace dtwin::diag {
+
+
+namespace dtwin::report {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string gq(const std::string& s) { return classify::gnuplotQuote(s); }
-std::string full(double v) { return classify::plotNumber(v); }
+std::string gq(const std::string& s) { return gnuplotQuote(s); }
+std::string full(double v) { return plotNumber(v); }
 
 std::string num(double v, int digits = 4) {
   if (!std::isfinite(v)) return "–";
@@ -219,7 +219,7 @@ std::string pct(double v) { return std::isfinite(v) ? num(100.0 * v, 3) + " %" :
 }  // namespace
 
 std::string diagnosisSectionHtml(const std::string& diag_dir, const DiagnosisSectionOptions& options, json* drawn) {
-  const std::string gnuplot_exe = classify::requireGnuplot("the diagnosis report");
+  const std::string gnuplot_exe = requireGnuplot("the diagnosis report");
   const fs::path dir(diag_dir);
   if (!fs::is_directory(dir)) throw InputError(diag_dir, "is not a folder (give one written by `twin diagnose --out`)");
   const fs::path diag_file = dir / "diagnosis.json";
@@ -576,7 +576,7 @@ std::string diagnosisSectionHtml(const std::string& diag_dir, const DiagnosisSec
 
 json writeDiagnosisReport(const std::vector<std::string>& diag_dirs, const std::string& out_html, const std::string& command) {
   const auto t_start = std::chrono::steady_clock::now();
-  classify::requireGnuplot("the diagnosis report");
+  requireGnuplot("the diagnosis report");
   if (diag_dirs.empty()) throw InputError("--diagnosis", "needs at least one diagnosis folder");
   std::vector<std::string> sections;
   json all = json::array(), plots = json::array(), warnings = json::array();
@@ -616,7 +616,7 @@ json writeDiagnosisReport(const std::vector<std::string>& diag_dirs, const std::
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << htmlEscape(title)
-       << "</title>\n<style>\n" << classify::reportCss() << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
+       << "</title>\n<style>\n" << reportCss() << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
        << "<nav><ol>" << nav.str() << "</ol></nav>\n";
   for (const auto& sec : sections) page << sec;
   const json prog = programInfo();
@@ -638,4 +638,4 @@ json writeDiagnosisReport(const std::string& diag_dir, const std::string& out_ht
   return writeDiagnosisReport(std::vector<std::string>{diag_dir}, out_html, command);
 }
 
-}  // namespace dtwin::diag
+}  // namespace dtwin::report

@@ -1,4 +1,4 @@
-#include "classification/report.hpp"
+#include "report/study_report.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -16,7 +16,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "calibration/summary.hpp"
-#include "classification/svg_plot.hpp"
+#include "report/svg_plot.hpp"
 #include "classification/synthesis.hpp"
 #include "subsystems/errors.hpp"
 #include "twin/measurement.hpp"
@@ -27,7 +27,7 @@
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-namespace dtwin::classify {
+namespace dtwin::report {
 
 std::string htmlEscape(const std::string& text) {
   std::string s;
@@ -85,31 +85,6 @@ std::string text(const json& j) {
   return j.dump();
 }
 
-/// Quantile of type 7 of sorted values.
-double quantile(const std::vector<double>& sorted, double p) {
-  if (sorted.empty()) return std::nan("");
-  const double h = (static_cast<double>(sorted.size()) - 1.0) * p;
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
-}
-
-/// Quantile p of the equal-weight mixture of N(mean_k, sd_k²) (bisection on its CDF).
-double mixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p) {
-  double lo = mean[0] - 10 * sd[0], hi = mean[0] + 10 * sd[0];
-  for (std::size_t k = 0; k < mean.size(); ++k) {
-    lo = std::min(lo, mean[k] - 10 * sd[k]);
-    hi = std::max(hi, mean[k] + 10 * sd[k]);
-  }
-  for (int it = 0; it < 200 && hi - lo > 1e-12 * (std::abs(lo) + std::abs(hi) + 1e-300); ++it) {
-    const double mid = 0.5 * (lo + hi);
-    double f = 0.0;
-    for (std::size_t k = 0; k < mean.size(); ++k) f += 0.5 * std::erfc(-(mid - mean[k]) / (sd[k] * std::sqrt(2.0)));
-    (f / static_cast<double>(mean.size()) < p ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 std::vector<std::string> splitCsv(const std::string& line) {
   std::vector<std::string> out;
   std::string cell;
@@ -119,117 +94,26 @@ std::vector<std::string> splitCsv(const std::string& line) {
   return out;
 }
 
-struct Prediction {
-  std::string channel;
-  std::vector<double> times;                 ///< distinct lab times of the channel
-  std::vector<double> lo, med, hi, plo, phi; ///< η quantiles; posterior predictive (with noise) quantiles
-};
-
 }  // namespace
 
-json writeStudyReport(const std::string& study_dir, const std::string& out_html, const std::string& command,
-                      const ReportOptions& options) {
+json writeStudyReport(const study::LabBands& bands, const std::string& study_dir, const std::string& out_html,
+                      const std::string& command, const ReportOptions& options) {
   const auto t_start = std::chrono::steady_clock::now();
   const std::string gnuplot_exe = requireGnuplot("`twin report`");
-  if (options.draws < 2) throw InputError("--draws", "must be >= 2, got " + std::to_string(options.draws));
   const fs::path dir(study_dir);
   if (!fs::is_directory(dir)) throw InputError(study_dir, "is not a folder");
   const json record = readJson(dir / "study.json");
   const json summary = readJson(dir / "summary.json");
   const json csum = readJson(dir / "classification" / "summary.json");
-  std::vector<std::string> warnings;
-
-  // ---- the study file (for the lab scenario and the assemblies)
-  std::string study_path = record.value("study", summary.value("study", std::string()));
-  if (study_path.empty() || !fs::exists(study_path))
-    throw InputError((dir / "study.json").string(), "names the study file '" + study_path + "', which does not exist");
-  const Study study = loadStudy(study_path);
-  if (record.contains("fingerprint") && record["fingerprint"].value("study_file", "") != std::to_string(calib::fnv1a64(slurp(study_path))))
-    warnings.push_back("the study file " + study_path + " changed after the study was run: the predictive bands use its current content");
-  std::string lab_path = summary.contains("paths") ? summary["paths"].value("lab", "") : "";
-  if (lab_path.empty() || !fs::exists(lab_path)) lab_path = (dir / "lab" / "lab.csv").string();
-  const LabData lab = readLabCsv(lab_path);
-
-  std::vector<AssemblySpec> assemblies;
-  for (const auto& a : study.assemblies())
-    if (fs::exists(dir / "calibration" / a.id / "posterior.csv")) assemblies.push_back(a);
-  if (assemblies.empty()) throw InputError((dir / "calibration").string(), "holds no <id>/posterior.csv of the study's assemblies");
-
-  // ---- 1. posterior predictive at the lab times
-  std::vector<PosteriorSample> posts;
-  std::vector<std::unique_ptr<calib::LabObjective>> objectives;
-  std::vector<std::vector<std::size_t>> rows(assemblies.size());
-  for (std::size_t m = 0; m < assemblies.size(); ++m) {
-    posts.push_back(readPosteriorCsv((dir / "calibration" / assemblies[m].id / "posterior.csv").string()));
-    objectives.push_back(std::make_unique<calib::LabObjective>(study, assemblies[m], lab, "lab"));
-    if (objectives.back()->names() != posts.back().names)
-      throw InputError(posts.back().path, "its parameter columns are not the study's calibrated parameters");
-    const std::size_t S = posts.back().size(), K = std::min<std::size_t>(S, static_cast<std::size_t>(options.draws));
-    for (std::size_t k = 0; k < K; ++k) rows[m].push_back(static_cast<std::size_t>((static_cast<double>(k) + 0.5) * static_cast<double>(S) / static_cast<double>(K)));
-  }
-  std::vector<std::pair<std::size_t, std::size_t>> jobs;
-  for (std::size_t m = 0; m < assemblies.size(); ++m)
-    for (std::size_t k = 0; k < rows[m].size(); ++k) jobs.emplace_back(m, k);
-  std::vector<std::vector<std::vector<double>>> preds(assemblies.size());
-  for (std::size_t m = 0; m < assemblies.size(); ++m) preds[m].resize(rows[m].size());
-  {
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-      for (std::size_t j; (j = next++) < jobs.size();) {
-        const auto [m, k] = jobs[j];
-        try {
-          preds[m][k] = objectives[m]->predict(posts[m].theta[rows[m][k]]);
-        } catch (const std::exception&) {
-          preds[m][k].clear();  // counted as a failure below
-        }
-      }
-    };
-    unsigned n = options.threads > 0 ? static_cast<unsigned>(options.threads) : std::max(1u, std::thread::hardware_concurrency());
-    n = std::min<unsigned>(n, static_cast<unsigned>(std::max<std::size_t>(1, jobs.size())));
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < n; ++i) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
-  }
-
-  const auto channels = lab.channels();
-  std::vector<std::vector<Prediction>> bands(assemblies.size());
+  std::vector<std::string> warnings = bands.warnings;
+  const Study& study = bands.study;
+  const LabData& lab = bands.lab;
+  const std::string& lab_path = bands.lab_path;
+  const int draws = bands.draws;
   json failures = json::object(), noise_sd = json::object();
-  std::vector<double> sigma_median(assemblies.size());
-  for (std::size_t m = 0; m < assemblies.size(); ++m) {
-    std::vector<std::size_t> ok;
-    for (std::size_t k = 0; k < rows[m].size(); ++k)
-      if (preds[m][k].size() == lab.records.size()) ok.push_back(k);
-    failures[assemblies[m].id] = rows[m].size() - ok.size();
-    if (ok.empty()) {
-      warnings.push_back(assemblies[m].id + ": every posterior draw failed to simulate the lab scenario; no predictive band");
-      continue;
-    }
-    std::vector<double> sd;
-    for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(posts[m].tau[rows[m][k]]));
-    std::vector<double> sd_sorted = sd;
-    std::sort(sd_sorted.begin(), sd_sorted.end());
-    sigma_median[m] = quantile(sd_sorted, 0.5);
-    noise_sd[assemblies[m].id] = sigma_median[m];
-    for (const auto& ch : channels) {
-      Prediction p;
-      p.channel = ch;
-      for (double t : lab.times(ch)) {
-        std::size_t i = 0;  // the first record at (ch, t): every repetition has the same prediction
-        while (!(lab.records[i].channel == ch && lab.records[i].time_s == t)) ++i;
-        std::vector<double> eta;
-        for (std::size_t k : ok) eta.push_back(preds[m][k][i]);
-        const std::vector<double> eta_unsorted = eta;
-        std::sort(eta.begin(), eta.end());
-        p.times.push_back(t);
-        p.lo.push_back(quantile(eta, 0.025));
-        p.med.push_back(quantile(eta, 0.5));
-        p.hi.push_back(quantile(eta, 0.975));
-        p.plo.push_back(mixtureQuantile(eta_unsorted, sd, 0.025));
-        p.phi.push_back(mixtureQuantile(eta_unsorted, sd, 0.975));
-      }
-      bands[m].push_back(std::move(p));
-    }
+  for (const auto& ab : bands.assemblies) {
+    failures[ab.assembly.id] = ab.failures;
+    if (!ab.channels.empty()) noise_sd[ab.assembly.id] = ab.noise_sd;
   }
 
   // ---- plots
@@ -241,16 +125,16 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
   };
 
   body << "<h2 id=\"lab\">1. Lab data against the posterior predictive bands</h2>\n"
-       << "<p>For each assembly, " << options.draws
-       << " evenly spaced rows of its posterior sample (rows ⌊(k + ½)·S / " << options.draws
-       << "⌋, k = 0 … " << options.draws - 1
+       << "<p>For each assembly, " << draws
+       << " evenly spaced rows of its posterior sample (rows ⌊(k + ½)·S / " << draws
+       << "⌋, k = 0 … " << draws - 1
        << ") are simulated on the lab scenario and predicted at the lab times. Dark band: 2.5–97.5 % of the predictions "
           "η(θ) (parameter uncertainty); line: their median; light band: 2.5–97.5 % of the posterior predictive "
           "distribution, the predictions plus measurement noise N(0, 1/τ) of each draw (noise sd = 1/√τ). Points: the "
           "measured values of every repetition. The lower panel shows the same relative to the median prediction.</p>\n";
-  for (std::size_t m = 0; m < assemblies.size(); ++m) {
-    const auto& a = assemblies[m];
-    for (const auto& p : bands[m]) {
+  for (const auto& ab : bands.assemblies) {
+    const auto& a = ab.assembly;
+    for (const auto& p : ab.channels) {
       std::ostringstream band, pts;
       for (std::size_t i = 0; i < p.times.size(); ++i)
         band << full(p.times[i]) << ' ' << full(p.lo[i]) << ' ' << full(p.med[i]) << ' ' << full(p.hi[i]) << ' '
@@ -277,8 +161,8 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
         << fp << " using 1:3 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n";
       const std::string name = "predictive_" + a.id + "_" + p.channel;
       figure(gp.plot(s.str(), 900, 600, title),
-             htmlEscape(a.id + ": " + std::to_string(rows[m].size() - failures[a.id].get<std::size_t>()) + " of " +
-                        std::to_string(rows[m].size()) + " draws simulated; noise sd 1/√τ = " + num(sigma_median[m], 4) +
+             htmlEscape(a.id + ": " + std::to_string(ab.drawn - ab.failures) + " of " +
+                        std::to_string(ab.drawn) + " draws simulated; noise sd 1/√τ = " + num(ab.noise_sd, 4) +
                         " (posterior median over the draws, in the channel's unit)."));
       plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", p.channel}});
     }
@@ -292,9 +176,9 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
           "one of them as <code>ci95</code> (the profile interval by default, docs/calibration.md). When the study knows the "
           "truth, a red line marks it, the axis is widened to show it, and the sentence under the figure says whether the "
           "ci95 interval holds it.</p>\n";
-  for (std::size_t m = 0; m < assemblies.size(); ++m) {
-    const auto& a = assemblies[m];
-    const auto& post = posts[m];
+  for (const auto& ab : bands.assemblies) {
+    const auto& a = ab.assembly;
+    const auto& post = ab.posterior;
     std::vector<std::string> names = post.names;
     names.push_back("tau");
     const int np = static_cast<int>(names.size()), cols = np <= 3 ? np : 3, rws = (np + cols - 1) / cols;
@@ -494,8 +378,8 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
             "<th>cost [s/s]</th><th>records won</th><th>recommended</th></tr>\n";
     for (const auto& id : ids) {
       std::string label;
-      for (const auto& a : assemblies)
-        if (a.id == id) label = a.label();
+      for (const auto& ab : bands.assemblies)
+        if (ab.assembly.id == id) label = ab.assembly.label();
       body << "<tr><td>" << htmlEscape(id) << "</td><td>" << htmlEscape(label) << "</td><td class=\"n\">"
            << (L.contains(id) ? num(L[id].get<double>(), 10) : "–") << "</td><td class=\"n\">"
            << (two.contains(id) ? num(two[id].get<double>()) : (L.contains(id) ? num(2 * (best - L[id].get<double>())) : "–"))
@@ -523,7 +407,7 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
   if (summary.value("command", std::string()) != record.value("command", std::string()))
     row("last study command", summary.value("command", std::string()));
   row("report command", command);
-  row("study file", study_path);
+  row("study file", bands.study_path);
   row("study folder", fs::absolute(dir).lexically_normal().string());
   row("lab data", lab_path + " (" + std::to_string(lab.records.size()) + " records)");
   row("study created (UTC)", record.value("created_utc", std::string()));
@@ -545,7 +429,8 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
           "<tr><th>assembly</th><th>calibration seed</th><th>optimizer starts</th><th>LHS points</th><th>Gibbs iterations</th>"
           "<th>burn-in</th><th>lab values n</th><th>SSE<sub>min</sub></th><th>synthesis seed</th><th>draws × roads</th>"
           "<th>road library</th><th>vectors</th><th>failures</th></tr>\n";
-  for (const auto& a : assemblies) {
+  for (const auto& ab : bands.assemblies) {
+    const auto& a = ab.assembly;
     const json cs = readJsonIfExists(dir / "calibration" / a.id / "summary.json");
     const json ss = readJsonIfExists(dir / "synthetic" / a.id / "synthesis.json");
     const json co = cs.value("options", json::object());
@@ -576,8 +461,8 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << htmlEscape(title)
        << "</title>\n<style>\n" << reportCss() << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
        << "<p>Study <code>" << htmlEscape(study.name) << "</code>: " << htmlEscape(study.description) << ". Assemblies: ";
-  for (std::size_t m = 0; m < assemblies.size(); ++m)
-    page << (m ? ", " : "") << htmlEscape(assemblies[m].id + " (" + assemblies[m].label() + ")");
+  for (std::size_t m = 0; m < bands.assemblies.size(); ++m)
+    page << (m ? ", " : "") << htmlEscape(bands.assemblies[m].assembly.id + " (" + bands.assemblies[m].assembly.label() + ")");
   page << ".</p>\n<p class=\"rec\">" << htmlEscape(sentence) << "</p>\n";
   if (!warnings.empty()) {
     page << "<div class=\"warn\"><p>Warnings:</p>\n<ul>\n";
@@ -598,16 +483,16 @@ json writeStudyReport(const std::string& study_dir, const std::string& out_html,
   writeFileAtomic(out_html, page.str());
 
   json assemblies_json = json::array();
-  for (const auto& a : assemblies) assemblies_json.push_back(a.id);
+  for (const auto& ab : bands.assemblies) assemblies_json.push_back(ab.assembly.id);
   return {{"html", out_html},
           {"plots", plots},
           {"svg_count", gp.count() + appendix_svgs},
           {"assemblies", assemblies_json},
-          {"draws", options.draws},
+          {"draws", draws},
           {"prediction_failures", failures},
           {"noise_sd", noise_sd},
           {"warnings", warnings},
           {"wall_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count()}};
 }
 
-}  // namespace dtwin::classify
+}  // namespace dtwin::report

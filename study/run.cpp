@@ -1,4 +1,4 @@
-#include "classification/study_run.hpp"
+#include "study/run.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -16,7 +16,7 @@
 
 namespace fs = std::filesystem;
 
-namespace dtwin::classify {
+namespace dtwin::study {
 namespace {
 
 double since(std::chrono::steady_clock::time_point t0) {
@@ -144,16 +144,16 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   // ---- 4. synthetic field data from every posterior
   t0 = std::chrono::steady_clock::now();
   for (const auto& a : assemblies) {
-    SynthesisOptions so;
+    classify::SynthesisOptions so;
     so.threads = options.threads;
     so.command = options.command;
     const std::string post_path = (out / "calibration" / a.id / "posterior.csv").string();
-    const auto post = parsePosteriorCsv(onRoot([&] {
+    const auto post = classify::parsePosteriorCsv(onRoot([&] {
                                           if (!fs::exists(post_path)) throw InputError(post_path, "posterior file not found");
                                           return readFileBytes(post_path);
                                         }),
                                         post_path);
-    const auto r = synthesizeAssembly(study, a, post, so, (out / "synthetic" / a.id).string(),
+    const auto r = classify::synthesizeAssembly(study, a, post, so, (out / "synthetic" / a.id).string(),
                                       [&](std::size_t d, std::size_t t) { report("synthesize " + a.id, d, t); });
     say("synthesize " + a.id + ": " + std::to_string(r.simulations) + " simulations, " + std::to_string(r.failures) + " failed" +
         (r.reused ? " (reused)" : ""));
@@ -164,10 +164,10 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   if (!root) return nlohmann::json{{"rank", Distributed::instance().rank()}, {"stages", stages}};
   t0 = std::chrono::steady_clock::now();
   report("classify", 0, 1);
-  FieldClassifyOptions fo;
+  classify::FieldClassifyOptions fo;
   fo.command = options.command;
-  const FieldClassification c = classifyFieldFile(study, field_path, (out / "synthetic").string(), fo);
-  writeFieldClassification(c, (out / "classification").string());
+  const classify::FieldClassification c = classifyFieldFile(study, field_path, (out / "synthetic").string(), fo);
+  classify::writeFieldClassification(c, (out / "classification").string());
   report("classify", 1, 1);
   stages["classify"] = since(t0);
   stages["total"] = since(t_all);
@@ -193,4 +193,4 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   return s;
 }
 
-}  // namespace dtwin::classify
+}  // namespace dtwin::study

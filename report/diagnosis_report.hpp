@@ -1,7 +1,7 @@
 #pragma once
 // The HTML report of a diagnosis folder (`twin report --diagnosis DIR`, docs/classification.md):
 // one self-contained HTML5 page (inline CSS and inline SVG drawn by gnuplot, no script, no
-// network; the style of the study report, classification/svg_plot.hpp) with
+// network; the style of the study report, report/svg_plot.hpp) with
 //   * the verdict and summary of DIR/diagnosis.json, the ranked (confirmed) effects with their
 //     parameter posteriors, and the screening table of every effect;
 //   * per series, the measured mean against the base model's predicted mean and 95 % band, and
@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace dtwin::diag {
+namespace dtwin::report {
 
 struct DiagnosisSectionOptions {
   std::string anchor = "diagnosis";  ///< id of the section heading; sub-sections get "<anchor>-<part>"
@@ -28,7 +28,7 @@ struct DiagnosisSectionOptions {
 };
 
 /// The <section> of the diagnosis folder `diag_dir` (written by `twin diagnose --out`), for
-/// embedding in a page that uses classify::reportCss(). When `drawn` is given it receives
+/// embedding in a page that uses report::reportCss(). When `drawn` is given it receives
 /// {"plots": [{"name", "kind", ...}], "svg_count", "verdict", "effect", "after", "warnings"}.
 /// InputError (naming the file) when diagnosis.json or a needed comparisons/*.json file is
 /// missing or malformed, or (naming the Debian package gnuplot-nox) when gnuplot is not on PATH,
@@ -46,4 +46,4 @@ nlohmann::json writeDiagnosisReport(const std::string& diag_dir, const std::stri
 nlohmann::json writeDiagnosisReport(const std::vector<std::string>& diag_dirs, const std::string& out_html,
                                     const std::string& command);
 
-}  // namespace dtwin::diag
+}  // namespace dtwin::report

@@ -1,0 +1,189 @@
+#include "study/lab_bands.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "calibration/calibrate.hpp"
+#include "subsystems/errors.hpp"
+#include "twin/provenance.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace dtwin::study {
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw InputError(p.string(), "cannot be read (is this a `twin study` folder?)");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+json readJson(const fs::path& p) {
+  const std::string text = slurp(p);
+  try {
+    return json::parse(text);
+  } catch (const std::exception& e) {
+    throw InputError(p.string(), std::string("is not valid JSON: ") + e.what());
+  }
+}
+
+/// Rows ⌊(k + ½)·S / K⌋ of a sample of S rows, K = min(S, draws).
+std::vector<std::size_t> evenRows(std::size_t S, int draws) {
+  const std::size_t K = std::min<std::size_t>(S, static_cast<std::size_t>(draws));
+  std::vector<std::size_t> rows;
+  for (std::size_t k = 0; k < K; ++k)
+    rows.push_back(static_cast<std::size_t>((static_cast<double>(k) + 0.5) * static_cast<double>(S) / static_cast<double>(K)));
+  return rows;
+}
+
+/// Runs task(j) for j in [0, count) on `threads` threads (0: all cores).
+void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t)>& task) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t j; (j = next++) < count;) task(j);
+  };
+  unsigned n = threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
+  n = std::min<unsigned>(n, static_cast<unsigned>(std::max<std::size_t>(1, count)));
+  std::vector<std::thread> pool;
+  for (unsigned i = 1; i < n; ++i) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+}
+
+/// The bands of one assembly from its predictions (rows that failed are empty vectors).
+void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std::vector<std::vector<double>>& preds,
+               const LabData& lab, std::vector<std::string>& warnings) {
+  std::vector<std::size_t> ok;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (preds[k].size() == lab.records.size()) ok.push_back(k);
+  a.drawn = rows.size();
+  a.failures = rows.size() - ok.size();
+  if (ok.empty()) {
+    warnings.push_back(a.assembly.id + ": every posterior draw failed to simulate the lab scenario; no predictive band");
+    return;
+  }
+  std::vector<double> sd;
+  for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(a.posterior.tau[rows[k]]));
+  std::vector<double> sd_sorted = sd;
+  std::sort(sd_sorted.begin(), sd_sorted.end());
+  a.noise_sd = sortedQuantile(sd_sorted, 0.5);
+  for (const auto& ch : lab.channels()) {
+    ChannelBand p;
+    p.channel = ch;
+    for (double t : lab.times(ch)) {
+      std::size_t i = 0;  // the first record at (ch, t): every repetition has the same prediction
+      while (!(lab.records[i].channel == ch && lab.records[i].time_s == t)) ++i;
+      std::vector<double> eta;
+      for (std::size_t k : ok) eta.push_back(preds[k][i]);
+      const std::vector<double> eta_unsorted = eta;
+      std::sort(eta.begin(), eta.end());
+      p.times.push_back(t);
+      p.lo.push_back(sortedQuantile(eta, 0.025));
+      p.med.push_back(sortedQuantile(eta, 0.5));
+      p.hi.push_back(sortedQuantile(eta, 0.975));
+      p.plo.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.025));
+      p.phi.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.975));
+    }
+    a.channels.push_back(std::move(p));
+  }
+}
+
+}  // namespace
+
+void LabBandOptions::validate() const {
+  if (draws < 2) throw InputError("draws", "must be >= 2, got " + std::to_string(draws));
+  if (threads < 0) throw InputError("threads", "must be >= 0 (0: all cores), got " + std::to_string(threads));
+}
+
+double sortedQuantile(const std::vector<double>& sorted, double p) {
+  if (sorted.empty()) return std::nan("");
+  const double h = (static_cast<double>(sorted.size()) - 1.0) * p;
+  const auto lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+}
+
+double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p) {
+  double lo = mean[0] - 10 * sd[0], hi = mean[0] + 10 * sd[0];
+  for (std::size_t k = 0; k < mean.size(); ++k) {
+    lo = std::min(lo, mean[k] - 10 * sd[k]);
+    hi = std::max(hi, mean[k] + 10 * sd[k]);
+  }
+  for (int it = 0; it < 200 && hi - lo > 1e-12 * (std::abs(lo) + std::abs(hi) + 1e-300); ++it) {
+    const double mid = 0.5 * (lo + hi);
+    double f = 0.0;
+    for (std::size_t k = 0; k < mean.size(); ++k) f += 0.5 * std::erfc(-(mid - mean[k]) / (sd[k] * std::sqrt(2.0)));
+    (f / static_cast<double>(mean.size()) < p ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& options) {
+  options.validate();
+  const fs::path dir(study_dir);
+  if (!fs::is_directory(dir)) throw InputError(study_dir, "is not a folder");
+  const json record = readJson(dir / "study.json");
+  const json summary = readJson(dir / "summary.json");
+
+  LabBands out;
+  out.draws = options.draws;
+  out.study_path = record.value("study", summary.value("study", std::string()));
+  if (out.study_path.empty() || !fs::exists(out.study_path))
+    throw InputError((dir / "study.json").string(), "names the study file '" + out.study_path + "', which does not exist");
+  out.study = loadStudy(out.study_path);
+  if (record.contains("fingerprint") &&
+      record["fingerprint"].value("study_file", "") != std::to_string(fnv1a64(slurp(out.study_path))))
+    out.warnings.push_back("the study file " + out.study_path +
+                           " changed after the study was run: the predictive bands use its current content");
+  out.lab_path = summary.contains("paths") ? summary["paths"].value("lab", "") : "";
+  if (out.lab_path.empty() || !fs::exists(out.lab_path)) out.lab_path = (dir / "lab" / "lab.csv").string();
+  out.lab = readLabCsv(out.lab_path);
+
+  std::vector<std::unique_ptr<calib::LabObjective>> objectives;
+  std::vector<std::vector<std::size_t>> rows;
+  for (const auto& spec : out.study.assemblies()) {
+    const fs::path post = dir / "calibration" / spec.id / "posterior.csv";
+    if (!fs::exists(post)) continue;
+    AssemblyBands a;
+    a.assembly = spec;
+    a.posterior = classify::readPosteriorCsv(post.string());
+    objectives.push_back(std::make_unique<calib::LabObjective>(out.study, spec, out.lab, "lab"));
+    if (objectives.back()->names() != a.posterior.names)
+      throw InputError(a.posterior.path, "its parameter columns are not the study's calibrated parameters");
+    rows.push_back(evenRows(a.posterior.size(), options.draws));
+    out.assemblies.push_back(std::move(a));
+  }
+  if (out.assemblies.empty())
+    throw InputError((dir / "calibration").string(), "holds no <id>/posterior.csv of the study's assemblies");
+
+  std::vector<std::pair<std::size_t, std::size_t>> jobs;
+  std::vector<std::vector<std::vector<double>>> preds(out.assemblies.size());
+  for (std::size_t m = 0; m < out.assemblies.size(); ++m) {
+    preds[m].resize(rows[m].size());
+    for (std::size_t k = 0; k < rows[m].size(); ++k) jobs.emplace_back(m, k);
+  }
+  parallelFor(jobs.size(), options.threads, [&](std::size_t j) {
+    const auto [m, k] = jobs[j];
+    try {
+      preds[m][k] = objectives[m]->predict(out.assemblies[m].posterior.theta[rows[m][k]]);
+    } catch (const std::exception&) {
+      preds[m][k].clear();  // counted as a failure
+    }
+  });
+  for (std::size_t m = 0; m < out.assemblies.size(); ++m) summarise(out.assemblies[m], rows[m], preds[m], out.lab, out.warnings);
+  return out;
+}
+
+}  // namespace dtwin::study

@@ -1,0 +1,62 @@
+// The layering of the libraries (docs/architecture.md): each folder includes only the folders
+// beneath it, and no library includes the CLI. Read from the source tree, so that an upward
+// include fails the suite instead of waiting for a reviewer.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Folder -> the project folders its sources may include (itself included).
+const std::map<std::string, std::set<std::string>>& allowed() {
+  static const std::map<std::string, std::set<std::string>> a = {
+      {"subsystems", {"subsystems"}},
+      {"twin", {"subsystems", "twin"}},
+      {"calibration", {"subsystems", "twin", "calibration"}},
+      {"classification", {"subsystems", "twin", "calibration", "classification"}},
+      {"diagnosis", {"subsystems", "twin", "calibration", "diagnosis"}},
+      {"study", {"subsystems", "twin", "calibration", "classification", "diagnosis", "study"}},
+      {"report", {"subsystems", "twin", "calibration", "classification", "diagnosis", "study", "report"}},
+  };
+  return a;
+}
+
+const std::set<std::string>& projectFolders() {
+  static const std::set<std::string> f = {"subsystems", "twin",  "calibration", "classification",
+                                          "diagnosis",  "study", "report",      "cli"};
+  return f;
+}
+
+}  // namespace
+
+TEST(Layering, NoLibraryIncludesAFolderAboveIt) {
+  const fs::path root(DTWIN_SOURCE_DIR);
+  const std::regex inc(R"(^\s*#\s*include\s*"([a-z_]+)/[^"]+")");
+  int files = 0;
+  for (const auto& [folder, ok] : allowed()) {
+    ASSERT_TRUE(fs::is_directory(root / folder)) << folder;
+    for (const auto& e : fs::recursive_directory_iterator(root / folder)) {
+      const auto ext = e.path().extension().string();
+      if (ext != ".cpp" && ext != ".hpp") continue;
+      ++files;
+      std::ifstream in(e.path());
+      std::string line;
+      for (int n = 1; std::getline(in, line); ++n) {
+        std::smatch m;
+        if (!std::regex_search(line, m, inc)) continue;
+        const std::string target = m[1];
+        if (!projectFolders().count(target)) continue;  // e.g. "dtwin/version.hpp" (generated)
+        EXPECT_TRUE(ok.count(target)) << fs::relative(e.path(), root).string() << ":" << n << " includes " << target
+                                      << "/, which is not beneath " << folder << "/";
+      }
+    }
+  }
+  EXPECT_GT(files, 50);  // the walk found the sources
+}

@@ -1,5 +1,5 @@
 #pragma once
-// The design the Griddy Gibbs samples over (method.md §4 step 3, made adaptive).
+// The design the Griddy Gibbs samples over (docs/method.md §4 step 3, made adaptive).
 //
 // \par Rounds
 // Round 0 is the paper's design: a Latin hypercube in the region (region.hpp), uniform over it.

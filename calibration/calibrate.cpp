@@ -1,4 +1,5 @@
 #include "calibration/calibrate.hpp"
+#include "calibration/folder.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -1082,18 +1083,16 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   res.posterior = summarisePosterior(res.design, res.chains, res.names);
   report("gibbs", 1, 1);
   rootWrites([&] {
-    std::string csv;
-    for (const auto& nm : res.names) csv += nm + ",";
-    csv += "tau,design_index\n";
-    char buf[64];
+    std::vector<std::vector<double>> rows;
+    std::vector<long> index;
     for (std::size_t t = 0; t < res.chains.index.size(); ++t) {
       const int k = res.chains.index[t];
-      for (std::size_t c = 0; c < d; ++c) csv += formatExact(res.design(k, static_cast<long>(c))) + ",";
-      csv += formatExact(res.chains.tau[t]);
-      std::snprintf(buf, sizeof buf, ",%d\n", k);
-      csv += buf;
+      std::vector<double> row(d);
+      for (std::size_t c = 0; c < d; ++c) row[c] = res.design(k, static_cast<long>(c));
+      rows.push_back(std::move(row));
+      index.push_back(k);
     }
-    writeFileAtomic((fs::path(out_dir) / "posterior.csv").string(), csv);
+    writeFileAtomic((fs::path(out_dir) / "posterior.csv").string(), posteriorCsv(res.names, rows, res.chains.tau, index));
   });
   res.stage_wall_s.push_back({"gibbs", secondsSince(t0)});
   res.stage_wall_s.push_back({"total", secondsSince(t_all)});

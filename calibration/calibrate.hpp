@@ -1,5 +1,5 @@
 #pragma once
-// Calibration of one assembly against lab data (method.md §4): bounded multi-start SSE
+// Calibration of one assembly against lab data (docs/method.md §4): bounded multi-start SSE
 // minimisation, the region (the joint 1 % contour by default, or the paper's one-at-a-time box),
 // a design simulated in parallel (a Latin hypercube, then adaptive rounds where the posterior
 // lies), the two-block Griddy Gibbs with design weights, posterior summaries. Every stage is persisted in the assembly's output folder as it
@@ -53,7 +53,7 @@ struct DataSet {
 /// What a calibration adds to the study's [[calibrated]] parameters: effects installed in the
 /// assembly (their values fixed, e.g. shape parameters), effect parameters calibrated along with
 /// θ (bounds: the effect's prior range), and weights of the channels in the SSE. Empty: the plain
-/// calibration of method.md §4 (bit for bit as before these existed).
+/// calibration of docs/method.md §4 (bit for bit as before these existed).
 struct CalibrationSetup {
   std::vector<EffectSetting> extra_effects;
   std::vector<CalibratedParameter> extra_calibrated;
@@ -148,7 +148,7 @@ struct CalibrationOptions {
   std::uint64_t seed = 1;
   OptimizerOptions optimizer;
   /// "joint" (default): the region holds the joint 1 % contour (region.hpp); "paper": the
-  /// one-at-a-time box of method.md §4 step 2.
+  /// one-at-a-time box of docs/method.md §4 step 2.
   std::string region = "joint";
   FeasibleBoxOptions box;        ///< the paper's box sweeps
   JointRegionOptions joint;      ///< the joint region
@@ -165,7 +165,7 @@ struct CalibrationOptions {
   /// optimum is never worse than the nested one's. Part of the fingerprint when not empty.
   std::vector<std::vector<double>> extra_starts;
   /// > 0: after the starts, one more local run from the best point with this initial step
-  /// (scaled units), to polish a sharp minimum (dense data). 0: off (method.md §4 as written).
+  /// (scaled units), to polish a sharp minimum (dense data). 0: off (docs/method.md §4 as written).
   double polish_step = 0.0;
   /// Recorded in summary.json, not part of the resume fingerprint.
   std::string command, data_path;
@@ -216,7 +216,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
 /// The general form: several data sets (each on its own scenario) and a setup (extra effects,
 /// extra calibrated parameters, channel weights). With one data set and an empty setup it is the
 /// call above, bit for bit (same files, same fingerprint). summary.json records the setup and the
-/// data sets so the calibration can be rebuilt from its folder (readCalibrationFolder).
+/// data sets so the calibration can be rebuilt from its folder (readCalibrationFolder, folder.hpp).
 CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
                                     const CalibrationSetup& setup, const CalibrationOptions& options,
                                     const std::string& out_dir, const std::string& fingerprint_extra,

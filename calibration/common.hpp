@@ -6,7 +6,7 @@
 //     SSE(θ) = Σ_i (y_i − η_i(θ))²                                   [output unit²]
 // between the measurements y and the model output η. A simulation that fails (diverges, throws
 // inside the model, ...) is reported by the callback as +inf, never as an exception: in the hot
-// loops of the calibration a failed evaluation is a value (see docs/design style.md, "Errors").
+// loops of the calibration a failed evaluation is a value (docs/architecture.md, "Errors").
 //
 // Parallelism is injected, not owned: every component that runs independent tasks (optimiser
 // starts, feasible-box sweeps) accepts a ParallelFor hook. The hook must call task(i) exactly once

@@ -1,5 +1,5 @@
 #pragma once
-// The feasible box around the optimum (method.md §4 step 2).
+// The feasible box around the optimum (docs/method.md §4 step 2).
 //
 // \par Theory
 // With Gaussian errors of precision τ the likelihood ratio of θ against θ̂ is

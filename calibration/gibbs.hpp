@@ -1,5 +1,5 @@
 #pragma once
-// Two-block "Griddy Gibbs" sampler over simulated design points (method.md §4 steps 4–5).
+// Two-block "Griddy Gibbs" sampler over simulated design points (docs/method.md §4 steps 4–5).
 //
 // \par Model
 // Data y ∈ R^n, model output η(θ), Gaussian errors with precision τ:

@@ -1,5 +1,5 @@
 #pragma once
-// Bounded multi-start minimisation of SSE(θ) with NLopt (method.md §4 step 1).
+// Bounded multi-start minimisation of SSE(θ) with NLopt (docs/method.md §4 step 1).
 //
 // \par Problem
 //     θ̂ = argmin_{l <= θ <= u} SSE(θ),   SSE_min = SSE(θ̂),   τ̂ = n / SSE_min.

@@ -1,5 +1,5 @@
 #pragma once
-// The region of θ the design covers (method.md §4 step 2): the paper's one-at-a-time box, or the
+// The region of θ the design covers (docs/method.md §4 step 2): the paper's one-at-a-time box, or the
 // joint region that holds the whole 1 % likelihood-ratio contour (the default, docs/calibration.md).
 //
 // \par Coordinates

@@ -1,5 +1,5 @@
 #pragma once
-// Posterior summaries of Griddy Gibbs chains (method.md §4 step 6).
+// Posterior summaries of Griddy Gibbs chains (docs/method.md §4 step 6).
 //
 // \par Definitions (draws x_1..x_S of one quantity)
 //  * mean  x̄ = Σ x_t / S;  sd = sqrt(Σ (x_t − x̄)² / (S − 1))  (0 when S = 1).

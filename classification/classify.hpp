@@ -1,5 +1,5 @@
 #pragma once
-// Bayesian classification of field records among candidate assemblies (method.md §5).
+// Bayesian classification of field records among candidate assemblies (docs/method.md §5).
 //
 // \par Theory
 // For record r and model m with log-likelihood ℓ_{r,m} = ln p(y_r | M_m) and prior π_m:

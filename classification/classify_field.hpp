@@ -1,5 +1,5 @@
 #pragma once
-// Classification of field records among synthesized assemblies (method.md §5, bullets 2–4): the
+// Classification of field records among synthesized assemblies (docs/method.md §5, bullets 2–4): the
 // glue between synthesis.hpp (moments.bin + synthesis.json per assembly), the mathematics
 // (moments, shrinkage, mvn, classify, recommend) and the output files. `twin classify` is a thin
 // front end to this; `twin study` can call it too.

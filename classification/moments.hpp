@@ -1,5 +1,5 @@
 #pragma once
-// Streaming mean and covariance of p-dimensional vectors (method.md §5: "fit a multivariate
+// Streaming mean and covariance of p-dimensional vectors (docs/method.md §5: "fit a multivariate
 // normal per assembly ... no need to hold all outputs").
 //
 // \par State of an accumulator over a set A of n vectors x_1..x_n (each of length p)

@@ -1,5 +1,5 @@
 #pragma once
-// Multivariate normal model of one assembly's outputs (method.md §5): built once per assembly,
+// Multivariate normal model of one assembly's outputs (docs/method.md §5): built once per assembly,
 // then evaluated for every field record.
 //
 // \par Theory

@@ -1,5 +1,5 @@
 #pragma once
-// Cost-aware choice of an assembly (method.md §5): recommend the cheapest assembly whose evidence
+// Cost-aware choice of an assembly (docs/method.md §5): recommend the cheapest assembly whose evidence
 // is not decisively worse than the best one.
 //
 // \par Rule

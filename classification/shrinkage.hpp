@@ -1,6 +1,6 @@
 #pragma once
 // Ledoit–Wolf shrinkage of a sample covariance towards a scaled identity, computed from a
-// streaming MomentAccumulator (method.md §5: "Ledoit–Wolf shrinkage as an option").
+// streaming MomentAccumulator (docs/method.md §5: "Ledoit–Wolf shrinkage as an option").
 //
 // \par Theory (Ledoit & Wolf 2004, "A well-conditioned estimator for large-dimensional
 // covariance matrices", J. Multivariate Anal. 88, 365–411, Lemma 3.2 and Theorem 3.2)

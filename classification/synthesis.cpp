@@ -26,36 +26,6 @@ namespace fs = std::filesystem;
 namespace dtwin::classify {
 namespace {
 
-std::string trim(const std::string& s) {
-  std::size_t a = 0, b = s.size();
-  while (a < b && (s[a] == ' ' || s[a] == '\t')) ++a;
-  while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t')) --b;
-  std::string t = s.substr(a, b - a);
-  if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
-  return t;
-}
-
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t c = line.find(',', start);
-    out.push_back(trim(line.substr(start, c == std::string::npos ? std::string::npos : c - start)));
-    if (c == std::string::npos) break;
-    start = c + 1;
-  }
-  return out;
-}
-
-bool parseDouble(const std::string& s, double& v) {
-  if (s.empty()) return false;
-  const char* b = s.data();
-  const char* e = b + s.size();
-  if (*b == '+') ++b;
-  const auto r = std::from_chars(b, e, v);
-  return r.ec == std::errc() && r.ptr == e;
-}
-
 /// Grid index of time t at `rate`; InputError if t is not on the grid or outside [0, duration].
 std::size_t gridIndex(double t, double rate, double duration, const std::string& where) {
   const double k = t * rate;
@@ -135,65 +105,6 @@ DrawOutput unpackDraw(const std::vector<double>& v) {
 
 std::uint64_t librarySeed(std::uint64_t seed, std::uint64_t index) {
   return RandomStream(seed, kRoadLibraryStream, index).bits() >> 11;
-}
-
-// ------------------------------------------------------------------ posterior.csv
-PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name) {
-  PosteriorSample ps;
-  ps.path = name;
-  std::istringstream in(text);
-  std::string line;
-  long line_no = 0;
-  std::vector<std::string> header;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line_no == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (trim(line).empty()) continue;
-    const std::string at = name + ":" + std::to_string(line_no);
-    if (header.empty()) {
-      header = splitFields(line);
-      if (header.size() < 3 || header[header.size() - 2] != "tau" || header.back() != "design_index")
-        throw InputError(at, "header must be the calibrated parameter names, then tau, then design_index "
-                             "(as `twin calibrate` writes posterior.csv), got '" + line + "'");
-      std::set<std::string> seen;
-      for (std::size_t c = 0; c + 2 < header.size(); ++c) {
-        if (header[c].empty()) throw InputError(at, "header: column " + std::to_string(c + 1) + " has no name");
-        if (header[c] == "tau" || header[c] == "design_index" || !seen.insert(header[c]).second)
-          throw InputError(at, "header: column '" + header[c] + "' appears twice");
-        ps.names.push_back(header[c]);
-      }
-      continue;
-    }
-    const auto f = splitFields(line);
-    if (f.size() != header.size())
-      throw InputError(at, "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
-    std::vector<double> th(ps.names.size());
-    for (std::size_t c = 0; c < ps.names.size(); ++c) {
-      if (!parseDouble(f[c], th[c])) throw InputError(at + ": " + ps.names[c], "must be a number, got '" + f[c] + "'");
-      if (!std::isfinite(th[c])) throw InputError(at + ": " + ps.names[c], "must be finite, got " + f[c]);
-    }
-    double tau = 0;
-    const std::string& ft = f[ps.names.size()];
-    if (!parseDouble(ft, tau)) throw InputError(at + ": tau", "must be a number, got '" + ft + "'");
-    if (!(std::isfinite(tau) && tau > 0)) throw InputError(at + ": tau", "must be a finite number > 0 (a precision), got " + ft);
-    const std::string& fd = f.back();
-    long k = -1;
-    const auto r = std::from_chars(fd.data(), fd.data() + fd.size(), k);
-    if (r.ec != std::errc() || r.ptr != fd.data() + fd.size() || k < 0)
-      throw InputError(at + ": design_index", "must be an integer >= 0, got '" + fd + "'");
-    ps.theta.push_back(std::move(th));
-    ps.tau.push_back(tau);
-    ps.design_index.push_back(k);
-  }
-  if (header.empty()) throw InputError(name, "empty file (expected the header <parameters>,tau,design_index)");
-  if (ps.tau.empty()) throw InputError(name, "no rows after the header (line 1)");
-  return ps;
-}
-
-PosteriorSample readPosteriorCsv(const std::string& path) {
-  if (!fs::exists(path)) throw InputError(path, "posterior file not found");
-  return parsePosteriorCsv(readFileBytes(path), path);
 }
 
 // ------------------------------------------------------------------ synthesis

@@ -1,5 +1,5 @@
 #pragma once
-// Synthetic field data of one calibrated assembly (method.md §5, first bullet), accumulated as
+// Synthetic field data of one calibrated assembly (docs/method.md §5, first bullet), accumulated as
 // streaming moments: the input of the classifier (classify_field.hpp).
 //
 // \par What is simulated
@@ -53,11 +53,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "calibration/folder.hpp"
 #include "classification/moments.hpp"
 #include "twin/generate.hpp"
 #include "twin/study.hpp"
 
 namespace dtwin::classify {
+
+using calib::PosteriorSample;  // calibration/folder.hpp
+
 
 /// Stream constants of RandomStream(seed, stream, index) (ASCII tags; recorded in synthesis.json).
 inline constexpr std::uint64_t kSynthDrawStream = 0x53594E5444524157ULL;    // "SYNTDRAW"; index: draw j
@@ -68,25 +72,6 @@ inline constexpr std::uint64_t kRoadLibraryStream = 0x524F41444C494252ULL;  // "
 /// Seed of library road i: RandomStream(seed, kRoadLibraryStream, i).bits() >> 11 (53 bits, as
 /// fieldRoadSeed). `twin simulate --scenario field --seed <it>` reproduces the road.
 std::uint64_t librarySeed(std::uint64_t seed, std::uint64_t index);
-
-/// A posterior sample as `twin calibrate` writes it (posterior.csv): θ columns, then tau, then
-/// design_index; one row per kept Gibbs iteration.
-struct PosteriorSample {
-  std::string path;
-  std::vector<std::string> names;          ///< θ column names (the calibrated parameters)
-  std::vector<std::vector<double>> theta;  ///< one row per draw, names.size() values each
-  std::vector<double> tau;                 ///< error precision [1/unit²], > 0
-  std::vector<long> design_index;          ///< >= 0
-  std::size_t size() const { return tau.size(); }
-};
-
-/// Reads and validates posterior.csv. Rules (InputError naming file:line, the column and the
-/// rule): a header of at least one θ name, then `tau`, then `design_index`, names unique and
-/// non-empty; every line has one field per column; θ values finite numbers; tau a finite number
-/// > 0; design_index an integer >= 0; at least one row. CR line ends and blank lines are accepted.
-PosteriorSample readPosteriorCsv(const std::string& path);
-/// The same from text; `name` prefixes errors.
-PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name);
 
 struct SynthesisOptions {
   long draws = 0;           ///< M; <= 0: the study's sizes.posterior_draws

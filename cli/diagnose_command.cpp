@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "calibration/calibrate.hpp"
+#include "calibration/folder.hpp"
 #include "classification/synthesis.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
@@ -45,23 +46,13 @@ struct CompareConfig {
 int runCompare(const CompareConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
   checkOutFolder(cfg.out);
-  const fs::path cal(cfg.calibration);
-  const fs::path summary_path = cal / "summary.json", posterior_path = cal / "posterior.csv";
-  if (!fs::exists(summary_path)) throw InputError("--calibration " + cfg.calibration, "has no summary.json (give a folder written by `twin calibrate` or `twin diagnose`)");
-  nlohmann::json summary;
-  try {
-    summary = nlohmann::json::parse(readFileBytes(summary_path.string()));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(summary_path.string(), std::string("is not valid JSON: ") + e.what());
-  }
-  if (!summary.contains("assembly")) throw InputError(summary_path.string(), "has no 'assembly'");
-  const AssemblySpec assembly = study.assembly(summary["assembly"].get<std::string>());
-  const calib::CalibrationSetup setup =
-      calib::CalibrationSetup::fromJson(summary.contains("setup") ? summary["setup"] : nlohmann::json());
+  const calib::CalibrationFolder folder = calib::readCalibrationFolder(cfg.calibration);
+  const AssemblySpec assembly = calib::calibratedAssembly(study, folder);
+  const calib::CalibrationSetup& setup = folder.setup;
   const auto sets = loadSets(study, cfg.data, "--data");
-  const auto sample = classify::readPosteriorCsv(posterior_path.string());
+  const calib::PosteriorSample& sample = folder.posterior;
   calib::LabObjective obj(study, assembly, sets, setup);
-  const auto rows = diag::posteriorRows(sample.names, sample.theta, obj.names(), cfg.draws, posterior_path.string());
+  const auto rows = diag::posteriorRows(sample.names, sample.theta, obj.names(), cfg.draws, sample.path);
   const auto noise = diag::estimateChannelNoise(study, sets);
   if (!cfg.quiet)
     std::printf("comparing %s (%s) from %s with %zu measurement file%s at %zu posterior draws\n", assembly.id.c_str(),

@@ -42,7 +42,7 @@ AssemblySpec chooseAssembly(const Study& study, const std::string& id) {
   if (!id.empty()) return study.assembly(id);
   const auto all = study.assemblies();
   if (all.empty()) throw InputError(study.path + ": assemblies", "the study defines no assembly");
-  return all.front();  // M1: the highest fidelity by convention (method.md §1)
+  return all.front();  // M1: the highest fidelity by convention (docs/method.md §1)
 }
 
 /// Rejects an --out that is not a .csv file or whose folder cannot be written, before any run.

@@ -35,12 +35,12 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   if (!fs::is_directory(cfg.calibration)) throw InputError(cfg.calibration, "calibration folder not found (--calibration)");
   if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
   // Read every posterior first: a missing or malformed one stops before any simulation.
-  std::vector<classify::PosteriorSample> posteriors;
+  std::vector<calib::PosteriorSample> posteriors;
   for (const auto& a : targets) {
     const std::string p = (fs::path(cfg.calibration) / a.id / "posterior.csv").string();
     if (!fs::exists(p))
       throw InputError(p, "not found: calibrate assembly " + a.id + " first (twin calibrate --assembly " + a.id + ")");
-    posteriors.push_back(classify::readPosteriorCsv(p));
+    posteriors.push_back(calib::readPosteriorCsv(p));
   }
   classify::SynthesisOptions opt;
   opt.draws = cfg.draws;

@@ -158,7 +158,7 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
     if (!fs::exists(post)) continue;
     AssemblyBands a;
     a.assembly = spec;
-    a.posterior = classify::readPosteriorCsv(post.string());
+    a.posterior = calib::readPosteriorCsv(post.string());
     objectives.push_back(std::make_unique<calib::LabObjective>(out.study, spec, out.lab, "lab"));
     if (objectives.back()->names() != a.posterior.names)
       throw InputError(a.posterior.path, "its parameter columns are not the study's calibrated parameters");

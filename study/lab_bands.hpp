@@ -34,7 +34,7 @@ struct ChannelBand {
 /// One assembly's posterior and its bands.
 struct AssemblyBands {
   AssemblySpec assembly;
-  classify::PosteriorSample posterior;       ///< calibration/<id>/posterior.csv
+  calib::PosteriorSample posterior;       ///< calibration/<id>/posterior.csv
   std::size_t drawn = 0;                     ///< rows simulated
   std::size_t failures = 0;                  ///< of which failed to simulate
   double noise_sd = 0.0;                     ///< median of 1/√τ over the rows that simulated (0 when none)

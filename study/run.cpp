@@ -148,7 +148,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
     so.threads = options.threads;
     so.command = options.command;
     const std::string post_path = (out / "calibration" / a.id / "posterior.csv").string();
-    const auto post = classify::parsePosteriorCsv(onRoot([&] {
+    const auto post = calib::parsePosteriorCsv(onRoot([&] {
                                           if (!fs::exists(post_path)) throw InputError(post_path, "posterior file not found");
                                           return readFileBytes(post_path);
                                         }),

@@ -1,11 +1,11 @@
 #pragma once
-// The whole method end to end (method.md §1-5): lab data, field data, calibration of every
+// The whole method end to end (docs/method.md §1-5): lab data, field data, calibration of every
 // assembly, synthetic field data from every posterior, classification of the field records, and
 // the cost-aware recommendation. Every stage persists its results in the study folder as it
 // goes (each stage is itself resumable), so a killed study rerun with the same command continues
 // where it stopped and ends with identical results.
 //
-// Folder layout (docs/study.md):
+// Folder layout (docs/architecture.md, "One study through the layers"):
 //   OUT/lab/lab.csv (+ .json)          stage "lab"        (or the user's --lab file)
 //   OUT/field/field.csv (+ .json)      stage "field"      (or the user's --field file)
 //   OUT/calibration/<id>/...           stage "calibrate"  (calibration/calibrate.hpp)

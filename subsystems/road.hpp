@@ -79,7 +79,7 @@ class GridRoad final : public Road {
   nlohmann::json description_;
 };
 
-/// ISO 8608 random road (method.md §2): Gd(n) = Gd(n0) (n/n0)^-w, n0 = 0.1 cycles/m, w = 2 by
+/// ISO 8608 random road (docs/method.md §2): Gd(n) = Gd(n0) (n/n0)^-w, n0 = 0.1 cycles/m, w = 2 by
 /// default. Made as a sum of cosines on the frequency grid k/P (P the period) with random
 /// phases, evaluated by inverse FFT. Each bin's amplitude is sqrt(2 * integral of Gd over the
 /// bin within the band), so the profile's mean square over a period equals the integral of Gd
@@ -100,7 +100,7 @@ struct IsoRoadSpec {
 
 /// Gd(n0) [m^3] of an ISO 8608 class (geometric mean): A 16e-6, B 64e-6, ..., H 262144e-6.
 double isoClassGd0(char road_class);
-/// RMS height over the band for w = 2: sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)) (vehicle.md).
+/// RMS height over the band for w = 2: sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)) (the integral of Gd(n) over the band).
 double isoRmsHeight(char road_class, double n_min, double n_max);
 std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& spec);
 

@@ -53,7 +53,7 @@ class TireLaw {
 ///   Fz = k rho_z + b d(rho_z)/dt,  clamped >= 0.
 /// The paper writes "- b z'" with z the hub height; on a flat road d(rho_z)/dt = -z'. The twin
 /// passes -z' as the rate (TireState::deflection_rate_mps). Parameters are in N/m and N s/m and share the calibrated bounds of PAC2002
-/// (method.md §1 explains why the paper's Simulink bounds are not used).
+/// (docs/method.md §1 explains why the paper's Simulink bounds are not used).
 class FialaTire final : public TireLaw {
  public:
   FialaTire();

@@ -1,5 +1,5 @@
 #pragma once
-// Synthetic measurements (method.md §3): lab data (one assembly at the study's true parameters
+// Synthetic measurements (docs/method.md §3): lab data (one assembly at the study's true parameters
 // over the lab scenario, plus Gaussian noise, R repetitions, condensed to a few significant
 // times) and field data (N runs on independent random roads, a window of one channel, plus
 // noise). Everything is deterministic: noise and road seeds derive from (seed, a purpose-specific

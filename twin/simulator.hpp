@@ -63,7 +63,7 @@ class Simulator {
   /// Throws InputError for invalid `values`.
   RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario);
 
-  /// Runs `scenario` once per road, sharing the smooth start (method.md §5: "the 0-6 s smooth
+  /// Runs `scenario` once per road, sharing the smooth start (docs/method.md §5: "the 0-6 s smooth
   /// part is identical for every road of one θ: simulate it once").
   ///
   /// The common part is integrated once, with roads[0], from the equilibrium up to the branch

@@ -67,7 +67,7 @@ struct World {
       so.threads = 2;
       so.t_begin_s = 10.0;
       so.t_end_s = 10.5;
-      synthesizeAssembly(study, study.assembly(id), readPosteriorCsv((dir / "calib" / id / "posterior.csv").string()), so,
+      synthesizeAssembly(study, study.assembly(id), calib::readPosteriorCsv((dir / "calib" / id / "posterior.csv").string()), so,
                          (dir / "synth" / id).string());
     }
   }

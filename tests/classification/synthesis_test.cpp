@@ -15,6 +15,7 @@
 namespace fs = std::filesystem;
 using namespace dtwin;
 using namespace dtwin::classify;
+using dtwin::calib::readPosteriorCsv;
 
 namespace {
 const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
@@ -63,14 +64,6 @@ PosteriorSample posterior(const fs::path& dir, const std::string& text = kPoster
   return readPosteriorCsv((dir / "posterior.csv").string());
 }
 
-std::string errorOf(const std::string& text) {
-  try {
-    parsePosteriorCsv(text, "post.csv");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 }  // namespace
 
 TEST(Synthesis, LibrarySeedsAreA53BitStreamOfTheirOwn) {
@@ -78,30 +71,6 @@ TEST(Synthesis, LibrarySeedsAreA53BitStreamOfTheirOwn) {
   EXPECT_NE(librarySeed(1, 0), librarySeed(1, 1));
   EXPECT_NE(librarySeed(1, 0), fieldRoadSeed(1, 1));  // not the field data's roads
   for (std::uint64_t i = 0; i < 100; ++i) EXPECT_LT(librarySeed(7, i), 1ULL << 53);
-}
-
-TEST(Synthesis, ReadsPosteriorCsv) {
-  const auto ps = parsePosteriorCsv(std::string("\xEF\xBB\xBF") + "a,b,tau,design_index\r\n1,2,0.5,3\r\n\r\n4,5e3,1e-4,0\n", "p.csv");
-  ASSERT_EQ(ps.size(), 2u);
-  EXPECT_EQ(ps.names, (std::vector<std::string>{"a", "b"}));
-  EXPECT_EQ(ps.theta[1], (std::vector<double>{4, 5000}));
-  EXPECT_EQ(ps.tau[1], 1e-4);
-  EXPECT_EQ(ps.design_index[0], 3);
-}
-
-TEST(Synthesis, PosteriorCsvErrorsNameFileLineAndRule) {
-  EXPECT_EQ(errorOf(""), "post.csv: empty file (expected the header <parameters>,tau,design_index)");
-  EXPECT_NE(errorOf("a,b,design_index\n1,2,3\n").find("post.csv:1: header must be"), std::string::npos);
-  EXPECT_NE(errorOf("tau,design_index\n1,2\n").find("post.csv:1: header must be"), std::string::npos);
-  EXPECT_NE(errorOf("a,a,tau,design_index\n").find("post.csv:1: header: column 'a' appears twice"), std::string::npos);
-  EXPECT_EQ(errorOf("a,tau,design_index\n"), "post.csv: no rows after the header (line 1)");
-  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,3\n1,2\n"), "post.csv:3: expected 3 fields, got 2");
-  EXPECT_EQ(errorOf("a,tau,design_index\nx,2,3\n"), "post.csv:2: a: must be a number, got 'x'");
-  EXPECT_EQ(errorOf("a,tau,design_index\nnan,2,3\n"), "post.csv:2: a: must be finite, got nan");
-  EXPECT_EQ(errorOf("a,tau,design_index\n1,0,3\n"), "post.csv:2: tau: must be a finite number > 0 (a precision), got 0");
-  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,-1\n"), "post.csv:2: design_index: must be an integer >= 0, got '-1'");
-  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,1.5\n"), "post.csv:2: design_index: must be an integer >= 0, got '1.5'");
-  EXPECT_THROW(readPosteriorCsv("/nonexistent/posterior.csv"), InputError);
 }
 
 TEST(Synthesis, PosteriorMustNameTheStudysCalibratedParameters) {

@@ -302,7 +302,7 @@ TEST_F(GridRoadTest, SampleAveragedEqualsBruteForceMean) {
 // ------------------------------------------------------------------ ISO 8608
 
 TEST(IsoRoad, ClassGd0ValuesAreGeometricMeans) {
-  // method.md §2: 16, 64, ..., 262144 e-6 m^3 for A..H, i.e. 16e-6 * 4^k.
+  // docs/method.md §2: 16, 64, ..., 262144 e-6 m^3 for A..H, i.e. 16e-6 * 4^k.
   const double expected[] = {16e-6, 64e-6, 256e-6, 1024e-6, 4096e-6, 16384e-6, 65536e-6, 262144e-6};
   for (int k = 0; k < 8; ++k) {
     const char c = static_cast<char>('A' + k);
@@ -320,7 +320,7 @@ TEST(IsoRoad, ClassGd0ValuesAreGeometricMeans) {
 }
 
 TEST(IsoRoad, RmsHeightFormula) {
-  // sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)), vehicle.md.
+  // sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)): the integral of Gd(n0) (n/n0)^-2 over the band.
   EXPECT_DOUBLE_EQ(isoRmsHeight('D', 0.011, 2.83), std::sqrt(1024e-6 * 0.01 * (1 / 0.011 - 1 / 2.83)));
   // Each class up doubles the RMS.
   for (char c = 'A'; c < 'H'; ++c)

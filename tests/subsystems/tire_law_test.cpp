@@ -17,7 +17,7 @@ namespace {
 
 using Values = std::map<std::string, double>;
 
-/// Nominal values by name (method.md §1 true θ1, θ2; PAC2002 defaults of vehicle.md).
+/// Nominal values by name (docs/method.md §1 true θ1, θ2; PAC2002 defaults of data/vehicle/midsize_sedan.toml).
 Values nominalValues() {
   return {{"stiffness", 180000.0},
           {"damping", 3000.0},

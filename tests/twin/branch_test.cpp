@@ -1,5 +1,5 @@
 // Simulator::runBranched: the smooth start of a random-road scenario is integrated once and each
-// road continues from the saved State (method.md §5).
+// road continues from the saved State (docs/method.md §5).
 #include <gtest/gtest.h>
 
 #include <chrono>

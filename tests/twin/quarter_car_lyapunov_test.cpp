@@ -1,4 +1,4 @@
-// Independent check (docs: vehicle.md, "Independent checks worth building"): a linear quarter car
+// Independent check (docs/model.md, "Independent checks"): a linear quarter car
 // built directly in Simbody, driven over a long ISO 8608 class C road, against the exact RMS of
 // the dynamic tire load from the Lyapunov equation of the linear model with white road velocity.
 //
@@ -303,7 +303,8 @@ TEST(QuarterCarLyapunov, SimulatedDynamicTireLoadMatchesLyapunovOnClassC) {
   const Eigen::Matrix4d P = solveLyapunov(m.A, m.B * (G / 2.0) * m.B.transpose());
   const double sigma_lyap = c.k_t * std::sqrt(P(0, 0));
 
-  // Sanity check of the formula against vehicle.md ("0.71 kN on class C").
+  // Sanity check of the formula: about 0.71 kN on class C for this quarter car (a textbook
+  // figure for a mid-size car at this speed).
   EXPECT_NEAR(sigma_lyap, 710.0, 0.02 * 710.0);
   // Independent check of the Lyapunov solve: the same variance from the frequency response
   // over (practically) the whole band.

@@ -1,0 +1,62 @@
+#pragma once
+// The calibration folder, read back: what `twin calibrate` (and `twin diagnose`, for its base and
+// candidate calibrations) writes into OUT/<id>/, and the one reader of it that synthesis,
+// diagnosis, the study and the CLI use.
+//
+//   OUT/<id>/summary.json   the result (CalibrationResult::toJson) plus program, command, study,
+//                           scenario, data, data_sets, setup, options and threads
+//   OUT/<id>/posterior.csv  one row per kept Gibbs iteration: the calibrated parameters, then
+//                           tau, then design_index (written with posteriorCsv)
+//   OUT/<id>/box.json       the region stage (its fingerprint, the region and its axes, the box)
+//   OUT/<id>/stage_*.json, design journal: resumable stages (calibrate.hpp)
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "calibration/calibrate.hpp"
+
+namespace dtwin::calib {
+
+/// A posterior sample as `twin calibrate` writes it (posterior.csv): θ columns, then tau, then
+/// design_index; one row per kept Gibbs iteration.
+struct PosteriorSample {
+  std::string path;
+  std::vector<std::string> names;          ///< θ column names (the calibrated parameters)
+  std::vector<std::vector<double>> theta;  ///< one row per draw, names.size() values each
+  std::vector<double> tau;                 ///< error precision [1/unit²], > 0
+  std::vector<long> design_index;          ///< >= 0
+  std::size_t size() const { return tau.size(); }
+};
+
+/// Reads and validates posterior.csv. Rules (InputError naming file:line, the column and the
+/// rule): a header of at least one θ name, then `tau`, then `design_index`, names unique and
+/// non-empty; every line has one field per column; θ values finite numbers; tau a finite number
+/// > 0; design_index an integer >= 0; at least one row. CR line ends and blank lines are accepted.
+PosteriorSample readPosteriorCsv(const std::string& path);
+/// The same from text; `name` prefixes errors.
+PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name);
+
+/// The text of posterior.csv (numbers round-trip exactly): the inverse of parsePosteriorCsv.
+std::string posteriorCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& theta,
+                         const std::vector<double>& tau, const std::vector<long>& design_index);
+
+/// A calibration folder read back.
+struct CalibrationFolder {
+  std::string dir;
+  nlohmann::json summary;     ///< summary.json as written
+  std::string assembly;       ///< summary.json "assembly" (checked: a non-empty string)
+  CalibrationSetup setup;     ///< summary.json "setup" (empty when absent: a plain calibration)
+  PosteriorSample posterior;  ///< posterior.csv
+};
+
+/// Reads `dir`: InputError naming the folder when it is not one or has no summary.json, naming
+/// summary.json and the field when it is not valid JSON, has no string "assembly" or a malformed
+/// "setup", and the posterior.csv rules above.
+CalibrationFolder readCalibrationFolder(const std::string& dir);
+
+/// The study's assembly that `folder` calibrated; InputError naming summary.json's "assembly"
+/// (not the study file) when the study has no such assembly.
+AssemblySpec calibratedAssembly(const Study& study, const CalibrationFolder& folder);
+
+}  // namespace dtwin::calib

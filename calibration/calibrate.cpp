@@ -14,7 +14,8 @@
 
 #include "calibration/design_journal.hpp"
 #include "calibration/lhs.hpp"
-#include "subsystems/errors.hpp"
+#include "common/json.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
@@ -356,27 +357,10 @@ nlohmann::json CalibrationOptions::toJson() const {
 // ------------------------------------------------------------------ persistence helpers
 namespace {
 
-nlohmann::json num(double v) {
-  if (std::isfinite(v)) return v;
-  return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
-}
-double fromNum(const nlohmann::json& j) {
-  if (j.is_number()) return j.get<double>();
-  const std::string s = j.get<std::string>();
-  if (s == "inf") return std::numeric_limits<double>::infinity();
-  if (s == "-inf") return -std::numeric_limits<double>::infinity();
-  return std::numeric_limits<double>::quiet_NaN();
-}
-nlohmann::json vec(const std::vector<double>& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (double x : v) a.push_back(num(x));
-  return a;
-}
-std::vector<double> fromVec(const nlohmann::json& j) {
-  std::vector<double> v;
-  for (auto& x : j) v.push_back(fromNum(x));
-  return v;
-}
+nlohmann::json num(double v) { return jsonNumber(v); }
+double fromNum(const nlohmann::json& j) { return numberFromJson(j); }
+nlohmann::json vec(const std::vector<double>& v) { return jsonNumbers(v); }
+std::vector<double> fromVec(const nlohmann::json& j) { return numbersFromJson(j); }
 
 nlohmann::json optimumJson(const Optimum& o) {
   nlohmann::json j{{"theta", vec(o.theta)}, {"sse", num(o.sse)}, {"best_start", o.best_start}, {"evaluations", o.evaluations}};

@@ -25,6 +25,7 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "common/progress.hpp"
 #include "calibration/adaptive_design.hpp"
 #include "calibration/feasible_box.hpp"
 #include "calibration/gibbs.hpp"
@@ -181,7 +182,7 @@ struct CalibrationOptions {
 };
 
 /// Progress: stage name, points done, points in the stage.
-using StageProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+using ::dtwin::StageProgress;  // common/progress.hpp
 
 struct CalibrationResult {
   std::string assembly, label;

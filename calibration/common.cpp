@@ -3,16 +3,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
-
-std::string formatNumber(double v, int digits) {
-  std::ostringstream os;
-  os.precision(digits);
-  os << v;
-  return os.str();
-}
 
 void sequentialFor(int count, const std::function<void(int)>& task) {
   for (int i = 0; i < count; ++i) task(i);

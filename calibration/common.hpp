@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "common/format.hpp"
+
 namespace dtwin::calib {
 
 /// θ (physical units, length d) -> SSE(θ) >= 0, or +inf for a failed simulation.
@@ -27,8 +29,7 @@ using SseFunction = std::function<double(const std::vector<double>& theta)>;
 /// Runs task(i) for i = 0 .. count-1 (any order, any threads), returns when all have finished.
 using ParallelFor = std::function<void(int count, const std::function<void(int)>& task)>;
 
-/// `v` with `digits` significant digits (%g), for messages and tables.
-std::string formatNumber(double v, int digits = 6);
+using ::dtwin::formatNumber;  // common/format.hpp
 
 /// The default hook: a plain loop on the calling thread.
 void sequentialFor(int count, const std::function<void(int)>& task);

@@ -10,7 +10,7 @@
 #include <tuple>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/generate.hpp"
 #include "twin/provenance.hpp"
@@ -20,11 +20,7 @@ namespace fs = std::filesystem;
 namespace dtwin::calib {
 namespace {
 
-std::string fmt(double v, int digits = 4) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
+std::string fmt(double v, int digits = 4) { return formatNumber(v, digits); }
 
 }  // namespace
 

@@ -15,7 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 namespace {

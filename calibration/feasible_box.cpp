@@ -6,17 +6,12 @@
 #include <limits>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+std::string fmt(double v) { return formatNumber(v, 17); }
 
 }  // namespace
 

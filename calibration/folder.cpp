@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 

@@ -6,17 +6,12 @@
 #include <sstream>
 
 #include "calibration/common.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+std::string fmt(double v) { return formatNumber(v, 17); }
 
 /// exp(−x) is exactly 0 in double precision for x > 745.14 (below the smallest subnormal).
 constexpr double kUnderflow = 746.0;

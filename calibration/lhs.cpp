@@ -6,7 +6,7 @@
 #include <string>
 
 #include "calibration/common.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 

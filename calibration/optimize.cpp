@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "calibration/lhs.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 namespace {
@@ -23,12 +23,7 @@ std::string allowedList() {
   return s;
 }
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+std::string fmt(double v) { return formatNumber(v, 17); }
 
 /// State of one local run, reached from the C callback through `void* data`.
 struct RunContext {

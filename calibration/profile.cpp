@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "calibration/subspace_lm.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "calibration/subspace_lm.hpp"
 #include "calibration/eigen_json.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 namespace {

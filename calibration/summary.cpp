@@ -9,7 +9,7 @@
 #include <map>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::calib {
 

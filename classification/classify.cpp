@@ -1,4 +1,5 @@
 #include "classification/classify.hpp"
+#include "common/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,18 +7,13 @@
 #include <limits>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::classify {
 
 namespace {
 
-std::string num(double v, int precision = 6) {
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
+std::string num(double v, int precision = 6) { return formatNumber(v, precision); }
 
 // Type-7 quantile of sorted (ascending, non-empty) data.
 double quantile7(const std::vector<double>& sorted, double q) {

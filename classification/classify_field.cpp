@@ -12,7 +12,8 @@
 #include "calibration/calibrate.hpp"
 #include "classification/moments.hpp"
 #include "classification/shrinkage.hpp"
-#include "subsystems/errors.hpp"
+#include "common/json.hpp"
+#include "common/errors.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -21,11 +22,7 @@ namespace fs = std::filesystem;
 namespace dtwin::classify {
 namespace {
 
-nlohmann::json num(double v) {
-  if (std::isfinite(v)) return v;
-  if (std::isnan(v)) return "nan";
-  return v > 0 ? "inf" : "-inf";
-}
+nlohmann::json num(double v) { return jsonNumber(v); }
 
 std::string exact(double v) {
   if (std::isfinite(v)) return formatExact(v);

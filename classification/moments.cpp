@@ -1,4 +1,5 @@
 #include "classification/moments.hpp"
+#include "common/format.hpp"
 
 #include <unistd.h>
 
@@ -9,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::classify {
 
@@ -20,12 +21,7 @@ constexpr double kFormatVersion = 1.0;
 constexpr std::size_t kHeader = 5;
 constexpr char kFileTag[8] = {'D', 'T', 'W', 'M', 'O', 'M', '0', '1'};
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return formatNumber(v, 17); }
 
 std::size_t flatSize(std::size_t p, bool track) {
   return kHeader + p + p * (p + 1) / 2 + (track ? p + 1 : 0);

@@ -1,4 +1,5 @@
 #include "classification/mvn.hpp"
+#include "common/format.hpp"
 
 #include <Eigen/Cholesky>
 #include <cfloat>
@@ -6,7 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::classify {
 
@@ -15,12 +16,7 @@ namespace {
 constexpr double kLn2Pi = 1.83787706640934548356065947281123527;  // ln(2π)
 constexpr const char* kWhere = "Gaussian model";
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return formatNumber(v, 6); }
 
 std::string formatG(double v) {
   char buf[32];

@@ -1,4 +1,5 @@
 #include "classification/recommend.hpp"
+#include "common/format.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -7,18 +8,13 @@
 #include <set>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::classify {
 
 namespace {
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return formatNumber(v, 6); }
 
 // `v` with 1 decimal, or with more until the printed value still satisfies `ok`.
 template <class Ok>

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::classify {
 

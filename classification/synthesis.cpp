@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "calibration/calibrate.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"

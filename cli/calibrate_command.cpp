@@ -8,7 +8,7 @@
 #include "calibration/calibrate.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/measurement.hpp"
 #include "twin/provenance.hpp"

@@ -7,7 +7,7 @@
 
 #include "classification/classify_field.hpp"
 #include "cli/commands.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/study.hpp"
 
 namespace fs = std::filesystem;

@@ -7,7 +7,7 @@
 #include "calibration/coverage.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/study.hpp"
 
 namespace fs = std::filesystem;

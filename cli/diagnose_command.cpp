@@ -15,7 +15,7 @@
 #include "diagnosis/diagnose.hpp"
 #include "report/diagnosis_report.hpp"
 #include "diagnosis/measurements.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"

@@ -11,7 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/generate.hpp"
 #include "twin/provenance.hpp"

@@ -8,7 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "dtwin/version.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 
 using namespace dtwin;

@@ -10,7 +10,7 @@
 #include "report/study_report.hpp"
 #include "report/svg_plot.hpp"
 #include "study/lab_bands.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin::cli {
 namespace {

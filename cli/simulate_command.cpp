@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/bench.hpp"
 #include "twin/provenance.hpp"
 #include "twin/simulator.hpp"

@@ -5,7 +5,7 @@
 #include "study/run.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/study.hpp"
 
 namespace dtwin::cli {

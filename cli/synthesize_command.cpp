@@ -7,7 +7,7 @@
 #include "classification/synthesis.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"

@@ -8,7 +8,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/parallel.hpp"
 
 namespace dtwin::diag {

@@ -11,7 +11,7 @@
 #include <Eigen/Dense>
 
 #include "subsystems/effect.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 

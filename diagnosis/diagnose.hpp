@@ -25,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/progress.hpp"
 #include "calibration/calibrate.hpp"
 #include "diagnosis/compare.hpp"
 #include "diagnosis/measurements.hpp"
@@ -47,7 +48,7 @@ struct DiagnoseOptions {
 };
 
 /// Progress: stage text, done, total.
-using DiagnoseProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+using DiagnoseProgress = StageProgress;  // common/progress.hpp
 
 struct EffectParameter {
   std::string name, unit;

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 

@@ -13,7 +13,8 @@
 
 #include "report/study_report.hpp"
 #include "report/svg_plot.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
+#include "common/json.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -65,15 +66,7 @@ std::string text(const json& j) {
 }
 
 json readJson(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw InputError(p.string(), "cannot be read (is this a folder written by `twin diagnose --out`?)");
-  std::ostringstream s;
-  s << in.rdbuf();
-  try {
-    return json::parse(s.str());
-  } catch (const std::exception& e) {
-    throw InputError(p.string(), std::string("is not valid JSON: ") + e.what());
-  }
+  return readJsonFile(p.string(), " (is this a folder written by `twin diagnose --out`?)");
 }
 
 struct Band {

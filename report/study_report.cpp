@@ -18,7 +18,9 @@
 #include "calibration/summary.hpp"
 #include "report/svg_plot.hpp"
 #include "classification/synthesis.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/json.hpp"
 #include "twin/measurement.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"
@@ -47,31 +49,11 @@ std::string htmlEscape(const std::string& text) {
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw InputError(p.string(), "cannot be read (is this a `twin study` folder?)");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-json readJson(const fs::path& p) {
-  const std::string text = slurp(p);
-  try {
-    return json::parse(text);
-  } catch (const std::exception& e) {
-    throw InputError(p.string(), std::string("is not valid JSON: ") + e.what());
-  }
-}
+json readJson(const fs::path& p) { return readJsonFile(p.string(), " (is this a `twin study` folder?)"); }
 
 json readJsonIfExists(const fs::path& p) { return fs::exists(p) ? readJson(p) : json(); }
 
-std::string num(double v, int digits = 6) {
-  if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
+std::string num(double v, int digits = 6) { return formatNumber(v, digits); }
 
 std::string full(double v) { return plotNumber(v); }
 

@@ -13,20 +13,15 @@
 #include <stdexcept>
 
 #include "report/study_report.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
+#include "common/json.hpp"
 
 namespace fs = std::filesystem;
 
 namespace dtwin::report {
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw InputError(p.string(), "cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string slurp(const fs::path& p) { return readTextFile(p.string()); }
 
 std::string shq(const std::string& s) {
   std::string r = "'";

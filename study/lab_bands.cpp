@@ -12,7 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "calibration/calibrate.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
+#include "common/json.hpp"
 #include "twin/provenance.hpp"
 
 namespace fs = std::filesystem;
@@ -22,22 +23,7 @@ namespace dtwin::study {
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw InputError(p.string(), "cannot be read (is this a `twin study` folder?)");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-json readJson(const fs::path& p) {
-  const std::string text = slurp(p);
-  try {
-    return json::parse(text);
-  } catch (const std::exception& e) {
-    throw InputError(p.string(), std::string("is not valid JSON: ") + e.what());
-  }
-}
+json readJson(const fs::path& p) { return readJsonFile(p.string(), " (is this a `twin study` folder?)"); }
 
 /// Rows ⌊(k + ½)·S / K⌋ of a sample of S rows, K = min(S, draws).
 std::vector<std::size_t> evenRows(std::size_t S, int draws) {
@@ -144,7 +130,7 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
     throw InputError((dir / "study.json").string(), "names the study file '" + out.study_path + "', which does not exist");
   out.study = loadStudy(out.study_path);
   if (record.contains("fingerprint") &&
-      record["fingerprint"].value("study_file", "") != std::to_string(fnv1a64(slurp(out.study_path))))
+      record["fingerprint"].value("study_file", "") != std::to_string(fnv1a64(readTextFile(out.study_path))))
     out.warnings.push_back("the study file " + out.study_path +
                            " changed after the study was run: the predictive bands use its current content");
   out.lab_path = summary.contains("paths") ? summary["paths"].value("lab", "") : "";

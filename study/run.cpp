@@ -8,7 +8,7 @@
 #include "calibration/calibrate.hpp"
 #include "classification/classify_field.hpp"
 #include "classification/synthesis.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/generate.hpp"
 #include "twin/measurement.hpp"
 #include "twin/distributed.hpp"

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/progress.hpp"
 #include "twin/study.hpp"
 
 namespace dtwin::study {
@@ -30,7 +31,7 @@ struct StudyRunOptions {
 };
 
 /// Progress: stage ("lab", "field", "calibrate M1 optimum", ...), done, total.
-using StudyProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+using StudyProgress = StageProgress;  // common/progress.hpp
 /// One line of news per finished stage (for the CLI to print).
 using StudyLog = std::function<void(const std::string& line)>;
 

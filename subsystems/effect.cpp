@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <unsupported/Eigen/FFT>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "subsystems/random.hpp"
 
 namespace dtwin {

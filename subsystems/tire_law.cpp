@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 namespace {

@@ -17,20 +17,21 @@ namespace {
 /// Folder -> the project folders its sources may include (itself included).
 const std::map<std::string, std::set<std::string>>& allowed() {
   static const std::map<std::string, std::set<std::string>> a = {
-      {"subsystems", {"subsystems"}},
-      {"twin", {"subsystems", "twin"}},
-      {"calibration", {"subsystems", "twin", "calibration"}},
-      {"classification", {"subsystems", "twin", "calibration", "classification"}},
-      {"diagnosis", {"subsystems", "twin", "calibration", "diagnosis"}},
-      {"study", {"subsystems", "twin", "calibration", "classification", "diagnosis", "study"}},
-      {"report", {"subsystems", "twin", "calibration", "classification", "diagnosis", "study", "report"}},
+      {"common", {"common"}},
+      {"subsystems", {"common", "subsystems"}},
+      {"twin", {"common", "subsystems", "twin"}},
+      {"calibration", {"common", "subsystems", "twin", "calibration"}},
+      {"classification", {"common", "subsystems", "twin", "calibration", "classification"}},
+      {"diagnosis", {"common", "subsystems", "twin", "calibration", "diagnosis"}},
+      {"study", {"common", "subsystems", "twin", "calibration", "classification", "diagnosis", "study"}},
+      {"report", {"common", "subsystems", "twin", "calibration", "classification", "diagnosis", "study", "report"}},
   };
   return a;
 }
 
 const std::set<std::string>& projectFolders() {
-  static const std::set<std::string> f = {"subsystems", "twin",  "calibration", "classification",
-                                          "diagnosis",  "study", "report",      "cli"};
+  static const std::set<std::string> f = {"common",    "subsystems", "twin",   "calibration", "classification",
+                                          "diagnosis", "study",      "report", "cli"};
   return f;
 }
 

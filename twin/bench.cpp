@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 namespace {

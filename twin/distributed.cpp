@@ -11,7 +11,7 @@
 #include <sstream>
 #include <thread>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/run_error.hpp"
 
 #ifdef DTWIN_HAVE_MPI

@@ -8,7 +8,7 @@
 #include <mutex>
 
 #include "subsystems/effect.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"

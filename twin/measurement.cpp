@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/parameters.hpp"
 #include "twin/simulator.hpp"
 

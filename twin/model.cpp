@@ -3,7 +3,7 @@
 #include <limits>
 #include <toml++/toml.h>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 namespace {

@@ -1,4 +1,5 @@
 #include "twin/rosenbrock.hpp"
+#include "common/format.hpp"
 
 #include <algorithm>
 #include <array>
@@ -104,12 +105,7 @@ struct Transformed {
   }
 };
 
-std::string fmt(double v) {
-  std::ostringstream o;
-  o.precision(10);
-  o << v;
-  return o.str();
-}
+std::string fmt(double v) { return formatNumber(v, 10); }
 }  // namespace
 
 // ----------------------------------------------------------------------------- Impl

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 

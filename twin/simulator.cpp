@@ -7,7 +7,7 @@
 
 #include <Simbody.h>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/rosenbrock.hpp"
 
 namespace dtwin {

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 

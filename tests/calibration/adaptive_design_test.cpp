@@ -13,7 +13,7 @@
 #include "calibration/lhs.hpp"
 #include "calibration/region.hpp"
 #include "calibration/summary.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "calibration/calibrate.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/generate.hpp"
 
 namespace fs = std::filesystem;

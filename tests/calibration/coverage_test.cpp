@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "calibration/coverage.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "calibration/design_journal.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

@@ -7,7 +7,7 @@
 #include <thread>
 
 #include "calibration/feasible_box.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "calibration/folder.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

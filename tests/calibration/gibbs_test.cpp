@@ -9,7 +9,7 @@
 
 #include "calibration/gibbs.hpp"
 #include "calibration/summary.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

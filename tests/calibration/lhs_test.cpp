@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "calibration/lhs.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

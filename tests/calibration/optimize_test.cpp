@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "calibration/optimize.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

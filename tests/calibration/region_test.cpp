@@ -11,7 +11,7 @@
 #include "calibration/feasible_box.hpp"
 #include "calibration/lhs.hpp"
 #include "calibration/region.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "calibration/summary.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::calib;

@@ -18,7 +18,7 @@
 
 #include "classification/classify_field.hpp"
 #include "classification/synthesis.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/generate.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"

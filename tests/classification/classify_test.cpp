@@ -9,7 +9,7 @@
 
 #include "classification/classify.hpp"
 #include "classification/mvn.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::classify;

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "classification/moments.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "subsystems/random.hpp"
 
 using namespace dtwin;

@@ -8,7 +8,7 @@
 
 #include "classification/moments.hpp"
 #include "classification/mvn.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "subsystems/random.hpp"
 
 using namespace dtwin;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "classification/recommend.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using namespace dtwin;
 using namespace dtwin::classify;

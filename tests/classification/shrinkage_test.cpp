@@ -6,7 +6,7 @@
 #include <string>
 
 #include "classification/shrinkage.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "subsystems/random.hpp"
 
 using namespace dtwin;

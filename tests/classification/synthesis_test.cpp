@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "classification/synthesis.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "diagnosis/measurements.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

@@ -20,7 +20,7 @@
 
 #include "report/svg_plot.hpp"
 #include "report/diagnosis_report.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

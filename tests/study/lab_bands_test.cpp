@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "study/lab_bands.hpp"
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 using dtwin::study::normalMixtureQuantile;
 using dtwin::study::sortedQuantile;

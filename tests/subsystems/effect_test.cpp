@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "subsystems/road.hpp"
 #include "subsystems/strut_law.hpp"
 

@@ -19,7 +19,7 @@
 
 #include <unsupported/Eigen/FFT>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 
 namespace dtwin {
 namespace {

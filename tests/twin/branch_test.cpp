@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/run_error.hpp"
 

@@ -10,7 +10,7 @@
 #include <map>
 #include <set>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/generate.hpp"
 #include "twin/parallel.hpp"
 #include "twin/simulator.hpp"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <limits>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/measurement.hpp"
 
 using namespace dtwin;

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "subsystems/errors.hpp"
+#include "common/errors.hpp"
 #include "twin/study.hpp"
 
 using namespace dtwin;

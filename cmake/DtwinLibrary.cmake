@@ -1,0 +1,26 @@
+# dtwin_library(<name> SOURCES ... HEADERS ... [PUBLIC ...] [PRIVATE ...] [HEADER_DIR dir])
+# One library of the project: target dtwin_<name> with alias dtwin::<name>, the project root on
+# its include path, the project's warnings, exported as dtwin::<name> by `install`, and its
+# HEADERS installed under include/dtwin/<HEADER_DIR, default name>/.
+function(dtwin_library name)
+  cmake_parse_arguments(L "" "HEADER_DIR" "SOURCES;HEADERS;PUBLIC;PRIVATE" ${ARGN})
+  if(L_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "dtwin_library(${name}): unknown arguments ${L_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT L_HEADER_DIR)
+    set(L_HEADER_DIR ${name})
+  endif()
+  set(target dtwin_${name})
+  add_library(${target} ${L_SOURCES})
+  add_library(dtwin::${name} ALIAS ${target})
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:include/dtwin>)
+  target_link_libraries(${target} PUBLIC ${L_PUBLIC} PRIVATE ${L_PRIVATE})
+  target_compile_options(${target} PRIVATE ${DTWIN_WARNINGS})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME ${target})
+  install(TARGETS ${target} EXPORT dtwinTargets ARCHIVE DESTINATION lib LIBRARY DESTINATION lib)
+  if(L_HEADERS)
+    install(FILES ${L_HEADERS} DESTINATION include/dtwin/${L_HEADER_DIR})
+  endif()
+endfunction()

@@ -1,0 +1,55 @@
+#include "common/json.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "common/errors.hpp"
+
+namespace dtwin {
+
+std::string readTextFile(const std::string& path, const std::string& hint) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot be read" + hint);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+nlohmann::json readJsonFile(const std::string& path, const std::string& hint) {
+  const std::string text = readTextFile(path, hint);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const std::exception& e) {
+    throw InputError(path, std::string("is not valid JSON: ") + e.what());
+  }
+}
+
+nlohmann::json jsonNumber(double v) {
+  if (std::isfinite(v)) return v;
+  if (std::isnan(v)) return "nan";
+  return v > 0 ? "inf" : "-inf";
+}
+
+double numberFromJson(const nlohmann::json& j) {
+  if (j.is_number()) return j.get<double>();
+  const std::string s = j.get<std::string>();
+  if (s == "inf") return std::numeric_limits<double>::infinity();
+  if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+nlohmann::json jsonNumbers(const std::vector<double>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (double x : v) a.push_back(jsonNumber(x));
+  return a;
+}
+
+std::vector<double> numbersFromJson(const nlohmann::json& j) {
+  std::vector<double> v;
+  for (const auto& x : j) v.push_back(numberFromJson(x));
+  return v;
+}
+
+}  // namespace dtwin

@@ -357,17 +357,12 @@ nlohmann::json CalibrationOptions::toJson() const {
 // ------------------------------------------------------------------ persistence helpers
 namespace {
 
-nlohmann::json num(double v) { return jsonNumber(v); }
-double fromNum(const nlohmann::json& j) { return numberFromJson(j); }
-nlohmann::json vec(const std::vector<double>& v) { return jsonNumbers(v); }
-std::vector<double> fromVec(const nlohmann::json& j) { return numbersFromJson(j); }
-
 nlohmann::json optimumJson(const Optimum& o) {
-  nlohmann::json j{{"theta", vec(o.theta)}, {"sse", num(o.sse)}, {"best_start", o.best_start}, {"evaluations", o.evaluations}};
+  nlohmann::json j{{"theta", jsonNumbers(o.theta)}, {"sse", jsonNumber(o.sse)}, {"best_start", o.best_start}, {"evaluations", o.evaluations}};
   for (const auto& s : o.starts)
-    j["starts"].push_back({{"start", vec(s.start)},
-                           {"theta", vec(s.theta)},
-                           {"sse", num(s.sse)},
+    j["starts"].push_back({{"start", jsonNumbers(s.start)},
+                           {"theta", jsonNumbers(s.theta)},
+                           {"sse", jsonNumber(s.sse)},
                            {"evaluations", s.evaluations},
                            {"nonfinite_evaluations", s.nonfinite_evaluations},
                            {"status", s.status}});
@@ -375,15 +370,15 @@ nlohmann::json optimumJson(const Optimum& o) {
 }
 Optimum optimumFrom(const nlohmann::json& j) {
   Optimum o;
-  o.theta = fromVec(j.at("theta"));
-  o.sse = fromNum(j.at("sse"));
+  o.theta = numbersFromJson(j.at("theta"));
+  o.sse = numberFromJson(j.at("sse"));
   o.best_start = j.at("best_start").get<int>();
   o.evaluations = j.at("evaluations").get<int>();
   for (auto& s : j.at("starts")) {
     StartResult r;
-    r.start = fromVec(s.at("start"));
-    r.theta = fromVec(s.at("theta"));
-    r.sse = fromNum(s.at("sse"));
+    r.start = numbersFromJson(s.at("start"));
+    r.theta = numbersFromJson(s.at("theta"));
+    r.sse = numberFromJson(s.at("sse"));
     r.evaluations = s.at("evaluations").get<int>();
     r.nonfinite_evaluations = s.at("nonfinite_evaluations").get<int>();
     r.status = s.at("status").get<std::string>();
@@ -393,14 +388,14 @@ Optimum optimumFrom(const nlohmann::json& j) {
 }
 
 nlohmann::json boxJson(const FeasibleBox& b) {
-  nlohmann::json j{{"lower", vec(b.lower)}, {"upper", vec(b.upper)}, {"threshold", num(b.threshold)}, {"evaluations", b.evaluations}};
+  nlohmann::json j{{"lower", jsonNumbers(b.lower)}, {"upper", jsonNumbers(b.upper)}, {"threshold", jsonNumber(b.threshold)}, {"evaluations", b.evaluations}};
   j["lower_clipped"] = b.lower_clipped;
   j["upper_clipped"] = b.upper_clipped;
   for (const auto& s : b.sweeps)
     j["sweeps"].push_back({{"parameter", s.parameter},
                            {"direction", s.direction},
-                           {"edge", num(s.edge)},
-                           {"edge_sse", num(s.edge_sse)},
+                           {"edge", jsonNumber(s.edge)},
+                           {"edge_sse", jsonNumber(s.edge_sse)},
                            {"clipped", s.clipped},
                            {"bracketed", s.bracketed},
                            {"evaluations", s.evaluations},
@@ -409,9 +404,9 @@ nlohmann::json boxJson(const FeasibleBox& b) {
 }
 FeasibleBox boxFrom(const nlohmann::json& j) {
   FeasibleBox b;
-  b.lower = fromVec(j.at("lower"));
-  b.upper = fromVec(j.at("upper"));
-  b.threshold = fromNum(j.at("threshold"));
+  b.lower = numbersFromJson(j.at("lower"));
+  b.upper = numbersFromJson(j.at("upper"));
+  b.threshold = numberFromJson(j.at("threshold"));
   b.evaluations = j.at("evaluations").get<int>();
   b.lower_clipped = j.at("lower_clipped").get<std::vector<bool>>();
   b.upper_clipped = j.at("upper_clipped").get<std::vector<bool>>();
@@ -419,8 +414,8 @@ FeasibleBox boxFrom(const nlohmann::json& j) {
     SweepResult r;
     r.parameter = s.at("parameter").get<int>();
     r.direction = s.at("direction").get<int>();
-    r.edge = fromNum(s.at("edge"));
-    r.edge_sse = fromNum(s.at("edge_sse"));
+    r.edge = numberFromJson(s.at("edge"));
+    r.edge_sse = numberFromJson(s.at("edge_sse"));
     r.clipped = s.at("clipped").get<bool>();
     r.bracketed = s.at("bracketed").get<bool>();
     r.evaluations = s.at("evaluations").get<int>();
@@ -656,8 +651,8 @@ nlohmann::json CalibrationResult::toJson() const {
   j["assembly"] = assembly;
   j["label"] = label;
   j["n_data"] = n_data;
-  j["sse_min"] = num(optimum.sse);
-  j["tau_hat"] = optimum.sse > 0 ? num(n_data / optimum.sse) : num(std::numeric_limits<double>::infinity());
+  j["sse_min"] = jsonNumber(optimum.sse);
+  j["tau_hat"] = optimum.sse > 0 ? jsonNumber(n_data / optimum.sse) : jsonNumber(std::numeric_limits<double>::infinity());
   std::vector<double> box_lo, box_hi;
   region.boundingBox(box_lo, box_hi);
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -670,7 +665,7 @@ nlohmann::json CalibrationResult::toJson() const {
                      {"ci95", {use_profile ? plo : p.q025, use_profile ? phi : p.q975}},
                      {"interval", use_profile ? "profile" : "posterior"},
                      {"credible95", {p.q025, p.q975}},
-                     {"ess", num(p.ess)},
+                     {"ess", jsonNumber(p.ess)},
                      {"optimum", optimum.theta[k]},
                      {"box", {box_lo[k], box_hi[k]}},
                      {"box_clipped", {box_lo[k] <= region.lower[k], box_hi[k] >= region.upper[k]}}};
@@ -687,7 +682,7 @@ nlohmann::json CalibrationResult::toJson() const {
   j["tau"] = {{"mean", posterior.tau.mean},
               {"sd", posterior.tau.sd},
               {"ci95", {posterior.tau.q025, posterior.tau.q975}},
-              {"ess", num(posterior.tau.ess)},
+              {"ess", jsonNumber(posterior.tau.ess)},
               {"noise_variance_mean_N2", posterior.tau.mean > 0 ? 1.0 / posterior.tau.mean : 0.0}};
   j["optimum"] = optimumJson(optimum);
   j["region"] = region.toJson();
@@ -704,7 +699,7 @@ nlohmann::json CalibrationResult::toJson() const {
   for (const auto& w : rounds.warnings) j["warnings"].push_back(w);
   double best = std::numeric_limits<double>::infinity();
   for (double s : sse) best = std::min(best, s);
-  j["design"]["sse_min"] = num(best);
+  j["design"]["sse_min"] = jsonNumber(best);
   j["design"]["better_than_optimum"] = best < optimum.sse;
   if (best < optimum.sse)
     j["warnings"].push_back("a design point has a lower SSE (" + std::to_string(best) + ") than the optimiser's optimum (" +
@@ -721,7 +716,7 @@ nlohmann::json CalibrationResult::toJson() const {
   double ess_min = std::numeric_limits<double>::infinity();
   for (const auto& p : posterior.parameters)
     if (std::isfinite(p.ess)) ess_min = std::min(ess_min, p.ess);
-  j["effective_sample_size_min"] = num(ess_min);
+  j["effective_sample_size_min"] = jsonNumber(ess_min);
   for (const auto& [s, w] : stage_wall_s) j["stages_wall_s"][s] = w;
   j["median_run_wall_s"] = median_run_wall_s;
   return j;
@@ -801,7 +796,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
       x0 = bestStarts(cand, fs, objective.lower(), objective.upper(), options.optimizer_starts);
       screening = {{"points", cand.size()},
                    {"rule", "the box centre and a Latin hypercube of the bounds; starts = the best, 0.05 apart (scaled)"},
-                   {"best_sse", num(*std::min_element(fs.begin(), fs.end()))}};
+                   {"best_sse", jsonNumber(*std::min_element(fs.begin(), fs.end()))}};
     } else {
       x0 = optimizerStarts(objective.lower(), objective.upper(), options.optimizer_starts, options.seed);
     }
@@ -890,19 +885,19 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
       for (const auto& v : packed_traces) traces.push_back(unpackTrace(v, static_cast<int>(d)));
       res.region = collectJointRegion(plan, sweeps, traces, options.joint);
       nlohmann::json gn{{"hessian", "J^T J of the weighted residuals, scaled coordinates"},
-                        {"eigenvalues", vec(std::vector<double>(plan.eigenvalues.data(), plan.eigenvalues.data() + plan.eigenvalues.size()))},
-                        {"quadratic_half_width", vec(std::vector<double>(plan.half_width.data(), plan.half_width.data() + plan.half_width.size()))}};
+                        {"eigenvalues", jsonNumbers(std::vector<double>(plan.eigenvalues.data(), plan.eigenvalues.data() + plan.eigenvalues.size()))},
+                        {"quadratic_half_width", jsonNumbers(std::vector<double>(plan.half_width.data(), plan.half_width.data() + plan.half_width.size()))}};
       for (std::size_t k = 0; k < sweeps.size(); ++k)
         gn["sweeps"].push_back({{"axis", k / 2},
                                 {"direction", k % 2 == 0 ? -1 : 1},
                                 {"crossing", sweeps[k].t_edge},
-                                {"edge_sse", num(sweeps[k].edge_sse)},
+                                {"edge_sse", jsonNumber(sweeps[k].edge_sse)},
                                 {"clipped", sweeps[k].clipped},
                                 {"bracketed", sweeps[k].bracketed},
                                 {"evaluations", sweeps[k].evaluations},
                                 {"quadratic_guess", plan.half_width(static_cast<long>(k / 2))}});
       for (const auto& tr : traces) {
-        nlohmann::json t{{"axis", tr.axis}, {"direction", tr.direction}, {"t", tr.t}, {"sse", vec(tr.sse)}, {"closed", tr.closed},
+        nlohmann::json t{{"axis", tr.axis}, {"direction", tr.direction}, {"t", tr.t}, {"sse", jsonNumbers(tr.sse)}, {"closed", tr.closed},
                          {"crossing", tr.crossing},
                          {"clipped", tr.clipped}, {"evaluations", tr.evaluations}, {"message", tr.message}};
         gn["ridges"].push_back(t);

@@ -22,7 +22,6 @@ namespace fs = std::filesystem;
 namespace dtwin::classify {
 namespace {
 
-nlohmann::json num(double v) { return jsonNumber(v); }
 
 std::string exact(double v) {
   if (std::isfinite(v)) return formatExact(v);
@@ -288,8 +287,8 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
     s["wins"][id] = out.result.wins[static_cast<std::size_t>(m)];
     const auto& sp = out.result.spread[static_cast<std::size_t>(m)];
     s["probability"][id] = {{"min", sp.min}, {"q1", sp.q1}, {"median", sp.median}, {"q3", sp.q3}, {"max", sp.max}, {"mean", sp.mean}};
-    s["total_log_likelihood"][id] = num(out.result.total_log_likelihood[m]);
-    s["joint_probability"][id] = num(out.result.joint_probability[m]);
+    s["total_log_likelihood"][id] = jsonNumber(out.result.total_log_likelihood[m]);
+    s["joint_probability"][id] = jsonNumber(out.result.joint_probability[m]);
     s["factorization"][id] = info.factorization;
     s["cost_s_per_s"][id] = info.cost_s_per_s;
     s["models"][id] = {{"label", info.label},
@@ -301,8 +300,8 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
                        {"factorization", info.factorization},
                        {"jitter_relative", info.jitter},
                        {"jitter_absolute", info.jitter_absolute},
-                       {"log_det", num(info.log_det)},
-                       {"relative_min_pivot", num(info.relative_min_pivot)},
+                       {"log_det", jsonNumber(info.log_det)},
+                       {"relative_min_pivot", jsonNumber(info.relative_min_pivot)},
                        {"cost_s_per_s", info.cost_s_per_s},
                        {"build_wall_s", info.build_wall_s},
                        {"synthesis", info.synthesis}};
@@ -312,8 +311,8 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
   for (const auto& pr : out.result.pairs)
     s["bayes_factors"].push_back({{"a", co.model_ids[static_cast<std::size_t>(pr.a)]},
                                   {"b", co.model_ids[static_cast<std::size_t>(pr.b)]},
-                                  {"two_ln_b", num(pr.two_ln_b)},
-                                  {"log_bayes_factor", num(pr.log_bayes_factor)},
+                                  {"two_ln_b", jsonNumber(pr.two_ln_b)},
+                                  {"log_bayes_factor", jsonNumber(pr.log_bayes_factor)},
                                   {"favoured", pr.favoured >= 0 ? nlohmann::json(co.model_ids[static_cast<std::size_t>(pr.favoured)]) : nlohmann::json(nullptr)},
                                   {"category", pr.category},
                                   {"meaning", "2 ln B_ab = 2 sum_r (loglik_a - loglik_b) over all records; Kass-Raftery scale"}});
@@ -321,7 +320,7 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
   s["recommended"] = rec.recommended;
   s["recommendation_sentence"] = rec.explanation;
   nlohmann::json tl = nlohmann::json::object();
-  for (int m = 0; m < M; ++m) tl[co.model_ids[static_cast<std::size_t>(m)]] = num(rec.two_ln_b[static_cast<std::size_t>(m)]);
+  for (int m = 0; m < M; ++m) tl[co.model_ids[static_cast<std::size_t>(m)]] = jsonNumber(rec.two_ln_b[static_cast<std::size_t>(m)]);
   s["recommendation"] = {{"recommended", rec.recommended},
                          {"best_by_evidence", rec.best},
                          {"candidates", rec.candidates},

@@ -1,7 +1,6 @@
 #include "report/study_report.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,12 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <sstream>
-#include <thread>
 
-#include "calibration/calibrate.hpp"
 #include "calibration/summary.hpp"
 #include "report/svg_plot.hpp"
 #include "classification/synthesis.hpp"
@@ -246,8 +242,10 @@ json writeStudyReport(const study::LabBands& bands, const std::string& study_dir
   // ---- 3. selection boxplot and wins
   std::vector<std::string> ids;
   for (const auto& id : csum.value("assemblies", json::array())) ids.push_back(id.get<std::string>());
-  if (ids.empty())
-    for (auto& [id, n] : csum.value("wins", json::object()).items()) ids.push_back(id);
+  if (ids.empty()) {
+    const json wins_by_id = csum.value("wins", json::object());  // named: items() must not outlive it
+    for (const auto& [id, n] : wins_by_id.items()) ids.push_back(id);
+  }
   body << "<h2 id=\"selection\">3. Field-record selection</h2>\n";
   {
     const fs::path rec_path = dir / "classification" / "records.csv";

@@ -1,19 +1,17 @@
 #include "study/lab_bands.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sstream>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "calibration/calibrate.hpp"
+#include "calibration/summary.hpp"
 #include "common/errors.hpp"
 #include "common/json.hpp"
+#include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 
 namespace fs = std::filesystem;
@@ -34,20 +32,6 @@ std::vector<std::size_t> evenRows(std::size_t S, int draws) {
   return rows;
 }
 
-/// Runs task(j) for j in [0, count) on `threads` threads (0: all cores).
-void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t)>& task) {
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t j; (j = next++) < count;) task(j);
-  };
-  unsigned n = threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
-  n = std::min<unsigned>(n, static_cast<unsigned>(std::max<std::size_t>(1, count)));
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < n; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-}
-
 /// The bands of one assembly from its predictions (rows that failed are empty vectors).
 void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std::vector<std::vector<double>>& preds,
                const LabData& lab, std::vector<std::string>& warnings) {
@@ -64,7 +48,7 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
   for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(a.posterior.tau[rows[k]]));
   std::vector<double> sd_sorted = sd;
   std::sort(sd_sorted.begin(), sd_sorted.end());
-  a.noise_sd = sortedQuantile(sd_sorted, 0.5);
+  a.noise_sd = calib::quantileSorted(sd_sorted, 0.5);
   for (const auto& ch : lab.channels()) {
     ChannelBand p;
     p.channel = ch;
@@ -76,9 +60,9 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
       const std::vector<double> eta_unsorted = eta;
       std::sort(eta.begin(), eta.end());
       p.times.push_back(t);
-      p.lo.push_back(sortedQuantile(eta, 0.025));
-      p.med.push_back(sortedQuantile(eta, 0.5));
-      p.hi.push_back(sortedQuantile(eta, 0.975));
+      p.lo.push_back(calib::quantileSorted(eta, 0.025));
+      p.med.push_back(calib::quantileSorted(eta, 0.5));
+      p.hi.push_back(calib::quantileSorted(eta, 0.975));
       p.plo.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.025));
       p.phi.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.975));
     }
@@ -91,14 +75,6 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
 void LabBandOptions::validate() const {
   if (draws < 2) throw InputError("draws", "must be >= 2, got " + std::to_string(draws));
   if (threads < 0) throw InputError("threads", "must be >= 0 (0: all cores), got " + std::to_string(threads));
-}
-
-double sortedQuantile(const std::vector<double>& sorted, double p) {
-  if (sorted.empty()) return std::nan("");
-  const double h = (static_cast<double>(sorted.size()) - 1.0) * p;
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
 }
 
 double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p) {
@@ -160,7 +136,7 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
     preds[m].resize(rows[m].size());
     for (std::size_t k = 0; k < rows[m].size(); ++k) jobs.emplace_back(m, k);
   }
-  parallelFor(jobs.size(), options.threads, [&](std::size_t j) {
+  parallelFor(jobs.size(), options.threads, [&](std::size_t j, int /*worker*/) {
     const auto [m, k] = jobs[j];
     try {
       preds[m][k] = objectives[m]->predict(out.assemblies[m].posterior.theta[rows[m][k]]);

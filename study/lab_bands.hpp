@@ -58,9 +58,6 @@ struct LabBands {
 /// the study's calibrated parameters. A row whose simulation fails counts as a failure.
 LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& options = {});
 
-/// Quantile of type 7 (linear interpolation) of sorted values; NaN when empty.
-double sortedQuantile(const std::vector<double>& sorted, double p);
-
 /// Quantile p of the equal-weight mixture of N(mean_k, sd_k²) (bisection on its CDF).
 double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p);
 

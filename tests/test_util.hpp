@@ -15,6 +15,20 @@ inline std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+/// An empty folder `name` in the test's temporary folder (removed first if it exists).
+inline std::filesystem::path freshDir(const std::string& name) {
+  const std::filesystem::path d = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+/// Writes `text` to `p` as is (binary).
+inline void writeText(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
 /// Writes data/studies/demo.toml to `path` with its [sizes] table replaced by `sizes` (the text
 /// of the table's lines, and anything that should follow it) and the vehicle file made absolute.
 inline std::filesystem::path writeDemoStudy(const std::filesystem::path& path, const std::string& sizes) {

@@ -3,6 +3,8 @@
 // field by field.
 #include <gtest/gtest.h>
 
+#include "test_util.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -26,17 +28,8 @@ std::string errorOf(const std::string& text) {
   return "(no error)";
 }
 
-fs::path tempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("dtwin_folder_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
+fs::path tempDir(const std::string& name) { return dtwin_test::freshDir("dtwin_folder_" + name); }
+using dtwin_test::writeText;
 
 std::string folderError(const fs::path& dir) {
   try {

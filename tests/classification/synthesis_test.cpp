@@ -27,17 +27,8 @@ const Study& demo() {
 
 using dtwin_test::slurp;
 
-fs::path tempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("dtwin_synthesis_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
+fs::path tempDir(const std::string& name) { return dtwin_test::freshDir("dtwin_synthesis_" + name); }
+using dtwin_test::writeText;
 
 // A small posterior around the demo study's truth (tau ~ 1/18000 N^-2).
 const char* kPosterior =

@@ -4,22 +4,25 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
+#include "calibration/summary.hpp"
 #include "study/lab_bands.hpp"
 #include "common/errors.hpp"
 
 using dtwin::study::normalMixtureQuantile;
-using dtwin::study::sortedQuantile;
+using dtwin::calib::quantileSorted;
 
-TEST(LabBands, SortedQuantileIsType7) {
+// The bands use the calibration's type-7 quantile (calibration/summary.hpp).
+TEST(LabBands, BandQuantilesAreType7) {
   const std::vector<double> x{1.0, 2.0, 4.0, 8.0};
-  EXPECT_DOUBLE_EQ(sortedQuantile(x, 0.0), 1.0);
-  EXPECT_DOUBLE_EQ(sortedQuantile(x, 1.0), 8.0);
-  EXPECT_DOUBLE_EQ(sortedQuantile(x, 0.5), 3.0);        // h = 1.5: 2 + 0.5 (4 - 2)
-  EXPECT_DOUBLE_EQ(sortedQuantile(x, 0.25), 1.75);      // h = 0.75: 1 + 0.75 (2 - 1)
-  EXPECT_TRUE(std::isnan(sortedQuantile({}, 0.5)));
-  EXPECT_DOUBLE_EQ(sortedQuantile({7.0}, 0.975), 7.0);
+  EXPECT_DOUBLE_EQ(quantileSorted(x, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(quantileSorted(x, 1.0), 8.0);
+  EXPECT_DOUBLE_EQ(quantileSorted(x, 0.5), 3.0);        // h = 1.5: 2 + 0.5 (4 - 2)
+  EXPECT_DOUBLE_EQ(quantileSorted(x, 0.25), 1.75);      // h = 0.75: 1 + 0.75 (2 - 1)
+  EXPECT_THROW(quantileSorted({}, 0.5), std::logic_error);  // never asked of an empty band
+  EXPECT_DOUBLE_EQ(quantileSorted({7.0}, 0.975), 7.0);
 }
 
 TEST(LabBands, MixtureOfOneNormalGivesItsQuantiles) {

@@ -9,6 +9,7 @@
 #include "calibration/lhs.hpp"
 #include "calibration/eigen_json.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::calib {
 namespace {
@@ -148,6 +149,40 @@ bool settled(const Diagnostics& now, const Diagnostics& before, double settle) {
   return true;
 }
 
+/// Adaptive round r >= 1: a Gaussian mixture with kernels on the heavy points of the design so far
+/// (scaled points `zs`, diagnostics `now`) and a defensive broad component.
+DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs, const Region& region,
+                        const AdaptiveDesignOptions& options) {
+  const int d = region.dim();
+  DesignRound next;
+  next.index = r;
+  next.kind = "gaussian";
+  // Kernels on the heavy points. Their covariance is the weighted posterior covariance shrunk
+  // towards the region's guess with the weight of nu0 = 10 (d + 1) points, so a round that rests
+  // on a handful of heavy points still explores around them with a sensible shape.
+  const double dd = static_cast<double>(d), nu0 = 10.0 * (dd + 1.0);
+  const Eigen::MatrixXd blend = (now.ess * now.cov + nu0 * region.guessCovariance()) / (now.ess + nu0);
+  const double h = std::max(options.kernel_min, std::pow(4.0 / (dd + 2.0), 1.0 / (dd + 4.0)) * std::pow(now.ess, -1.0 / (dd + 4.0)));
+  next.centres = resampleCentres(zs, now.weights, options.kernels, derivedSeed(options.seed, kStreamResample, r));
+  if (r == 1 && region.ridge.rows() > 0) {
+    // The first adaptive round also puts kernels on the traced ridge floor (region.hpp), so a
+    // curved ridge that round 0 sampled thinly is covered from the start.
+    Eigen::MatrixXd both(next.centres.rows() + region.ridge.rows(), d);
+    both << next.centres, region.ridge;
+    next.centres = both;
+  }
+  next.cov = h * h * blend;
+  next.broad_share = options.broad_share;
+  next.broad_mean = now.mean;
+  next.broad_cov = options.broad_scale * options.broad_scale * blend;
+  // A floor keeps the kernels proper.
+  for (int j = 0; j < d; ++j) {
+    next.cov(j, j) = std::max(next.cov(j, j), 1e-12);
+    next.broad_cov(j, j) = std::max(next.broad_cov(j, j), 1e-12);
+  }
+  return next;
+}
+
 }  // namespace
 
 void DesignRound::prepare() {
@@ -159,19 +194,22 @@ void DesignRound::prepare() {
 long DesignRound::broadCount(long m) const { return broad_share > 0.0 ? std::lround(broad_share * static_cast<double>(m)) : 0; }
 
 void AdaptiveDesignOptions::validate() const {
-  const std::string where = "adaptive design options";
-  if (first_points < 2) throw InputError(where, "first_points (lhs_points) must be >= 2, got " + std::to_string(first_points));
-  if (round_points < 2) throw InputError(where, "round_points must be >= 2, got " + std::to_string(round_points));
-  if (max_rounds < 0) throw InputError(where, "max_rounds must be >= 0, got " + std::to_string(max_rounds));
-  if (!(target_ess > 0.0 && std::isfinite(target_ess))) throw InputError(where, "target_ess must be > 0, got " + formatNumber(target_ess, 4));
-  if (!(settle > 0.0 && std::isfinite(settle))) throw InputError(where, "settle must be > 0, got " + formatNumber(settle, 4));
-  if (!(kernel_min > 0.0 && kernel_min <= 2.0)) throw InputError(where, "kernel_min must be in (0, 2], got " + formatNumber(kernel_min, 4));
-  if (kernels < 1) throw InputError(where, "kernels must be >= 1, got " + std::to_string(kernels));
-  if (!(broad_share >= 0.0 && broad_share < 1.0)) throw InputError(where, "broad_share must be in [0, 1), got " + formatNumber(broad_share, 4));
-  if (!(broad_scale >= 1.0 && std::isfinite(broad_scale))) throw InputError(where, "broad_scale must be >= 1, got " + formatNumber(broad_scale, 4));
-  if (!(edge_fraction > 0.0 && edge_fraction < 0.5)) throw InputError(where, "edge_fraction must be in (0, 0.5), got " + formatNumber(edge_fraction, 4));
-  if (!(edge_share_max > 0.0 && edge_share_max < 1.0)) throw InputError(where, "edge_share_max must be in (0, 1), got " + formatNumber(edge_share_max, 4));
-  if (!(tau_a >= 0.0 && tau_b >= 0.0)) throw InputError(where, "the tau prior needs a, b >= 0");
+  const OptionCheck check("design");
+  check.atLeast("first_points", first_points, 2);
+  check.atLeast("round_points", round_points, 2);
+  check.atLeast("max_rounds", max_rounds, 0);
+  check.positive("target_ess", target_ess);
+  check.positive("settle", settle);
+  check.require(kernel_min > 0.0 && kernel_min <= 2.0, "kernel_min", "must lie in (0, 2], got " + formatNumber(kernel_min));
+  check.atLeast("kernels", kernels, 1);
+  check.require(broad_share >= 0.0 && broad_share < 1.0, "broad_share", "must lie in [0, 1), got " + formatNumber(broad_share));
+  check.require(broad_scale >= 1.0 && std::isfinite(broad_scale), "broad_scale",
+                "must be a finite number >= 1, got " + formatNumber(broad_scale));
+  check.require(edge_fraction > 0.0 && edge_fraction < 0.5, "edge_fraction",
+                "must lie in (0, 0.5), got " + formatNumber(edge_fraction));
+  check.open01("edge_share_max", edge_share_max);
+  check.nonNegative("tau_a", tau_a);
+  check.nonNegative("tau_b", tau_b);
 }
 
 nlohmann::json AdaptiveDesignOptions::toJson() const {
@@ -331,34 +369,8 @@ AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const Adaptiv
       out.stop_reason = "no design point has a finite SSE";
       break;
     }
-    DesignRound next;
-    next.index = r;
-    next.kind = "gaussian";
-    // Kernels on the heavy points. Their covariance is the weighted posterior covariance shrunk
-    // towards the region's guess with the weight of nu0 = 10 (d + 1) points, so a round that rests
-    // on a handful of heavy points still explores around them with a sensible shape.
-    const double dd = static_cast<double>(d), nu0 = 10.0 * (dd + 1.0);
-    const Eigen::MatrixXd blend = (now.ess * now.cov + nu0 * region.guessCovariance()) / (now.ess + nu0);
-    const double h = std::max(options.kernel_min, std::pow(4.0 / (dd + 2.0), 1.0 / (dd + 4.0)) * std::pow(now.ess, -1.0 / (dd + 4.0)));
-    next.centres = resampleCentres(zs, now.weights, options.kernels, derivedSeed(options.seed, kStreamResample, r));
-    if (r == 1 && region.ridge.rows() > 0) {
-      // The first adaptive round also puts kernels on the traced ridge floor (region.hpp), so a
-      // curved ridge that round 0 sampled thinly is covered from the start.
-      Eigen::MatrixXd both(next.centres.rows() + region.ridge.rows(), d);
-      both << next.centres, region.ridge;
-      next.centres = both;
-    }
-    next.cov = h * h * blend;
-    next.broad_share = options.broad_share;
-    next.broad_mean = now.mean;
-    next.broad_cov = options.broad_scale * options.broad_scale * blend;
-    // A floor keeps the kernels proper.
-    for (int j = 0; j < d; ++j) {
-      next.cov(j, j) = std::max(next.cov(j, j), 1e-12);
-      next.broad_cov(j, j) = std::max(next.broad_cov(j, j), 1e-12);
-    }
     before = now;
-    now = runRound(next, options.round_points);
+    now = runRound(kernelRound(r, now, zs, region, options), options.round_points);
     if (now.ess >= options.target_ess && settled(now, before, options.settle)) {
       out.stop_reason = "settled after round " + std::to_string(r) + ": importance ESS " + formatNumber(now.ess, 4) + " >= " +
                         formatNumber(options.target_ess, 4) + ", means and sds changed by less than " + formatNumber(options.settle, 4) + " sd";

@@ -80,9 +80,10 @@ struct AdaptiveDesignOptions {
   double broad_share = 0.2;  ///< share of a round from the defensive component, in [0, 1)
   double broad_scale = 2.0;  ///< its sd scale, >= 1
   double edge_fraction = 0.1;   ///< outer shell of the region checked, in (0, 0.5)
-  double edge_share_max = 0.01; ///< posterior weight in that shell above which a one-round design is warned about
-  double tau_a = 1e-3, tau_b = 1e-3;  ///< Gamma prior of τ (diagnostic weights)
+  double edge_share_max = 0.01; ///< posterior weight in that shell above which a one-round design is warned about, in (0, 1)
+  double tau_a = kDefaultTauPrior, tau_b = kDefaultTauPrior;  ///< Gamma prior of τ (diagnostic weights), finite, >= 0
   std::uint64_t seed = 1;
+  /// Throws InputError whose where() is "design.<field>" (common/validate.hpp).
   void validate() const;
   nlohmann::json toJson() const;
 };

@@ -16,6 +16,7 @@
 #include "calibration/lhs.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
@@ -302,22 +303,38 @@ AdaptiveDesignOptions CalibrationOptions::designOptions() const {
   return d;
 }
 
+GibbsOptions CalibrationOptions::gibbsOptions() const {
+  GibbsOptions g;
+  g.iterations = gibbs_iterations;
+  g.burn_in = gibbs_burn_in;
+  g.a = tau_prior_a;
+  g.b = tau_prior_b;
+  g.seed = seed;
+  return g;
+}
+
 void CalibrationOptions::validate() const {
-  if (optimizer_starts < 1) throw InputError("optimizer_starts", "must be >= 1, got " + std::to_string(optimizer_starts));
-  if (lhs_points < 2) throw InputError("lhs_points", "must be >= 2, got " + std::to_string(lhs_points));
-  if (gibbs_iterations < 1) throw InputError("gibbs_iterations", "must be >= 1, got " + std::to_string(gibbs_iterations));
-  if (gibbs_burn_in < 0 || gibbs_burn_in >= gibbs_iterations)
-    throw InputError("gibbs_burn_in", "must be in [0, gibbs_iterations), got " + std::to_string(gibbs_burn_in));
-  if (!(tau_prior_a >= 0 && tau_prior_b >= 0)) throw InputError("tau prior", "a and b must be >= 0");
-  if (region != "joint" && region != "paper")
-    throw InputError("region", "must be \"joint\" or \"paper\", got \"" + region + "\"");
-  if (interval != "profile" && interval != "posterior")
-    throw InputError("interval", "must be \"profile\" or \"posterior\", got \"" + interval + "\"");
+  const OptionCheck check("calibration");
+  check.atLeast("threads", threads, 0);
+  check.atLeast("optimizer_starts", optimizer_starts, 1);
+  check.atLeast("lhs_points", lhs_points, 2);
+  check.atLeast("gibbs_iterations", gibbs_iterations, 1);
+  check.atLeast("gibbs_burn_in", gibbs_burn_in, 0);
+  check.require(gibbs_burn_in < gibbs_iterations, "gibbs_burn_in",
+                "must be below the number of Gibbs iterations (" + std::to_string(gibbs_iterations) + "), got " +
+                    std::to_string(gibbs_burn_in));
+  check.nonNegative("tau_prior_a", tau_prior_a);
+  check.nonNegative("tau_prior_b", tau_prior_b);
+  check.require(region == "joint" || region == "paper", "region", "must be \"joint\" or \"paper\", got \"" + region + "\"");
+  check.require(interval == "profile" || interval == "posterior", "interval",
+                "must be \"profile\" or \"posterior\", got \"" + interval + "\"");
+  check.inRange("polish_step", polish_step, 0.0, 0.5);
   profile.validate();
   optimizer.validate();
   box.validate();
   joint.validate();
   designOptions().validate();
+  gibbsOptions().validate();
 }
 
 nlohmann::json CalibrationOptions::toJson() const {
@@ -444,7 +461,7 @@ nlohmann::json readStage(const fs::path& p, const std::string& fingerprint) {
   }
   if (!j.contains("fingerprint") || j["fingerprint"] != fingerprint)
     throw InputError(p.string(), "was made by a different calibration (study, data, assembly or sizes changed); "
-                                 "use a new --out folder or delete it to start over");
+                                 "use a new output folder or delete it to start over");
   return j;
 }
 
@@ -552,6 +569,45 @@ RidgeTrace unpackTrace(const std::vector<double>& v, int d) {
   r.evaluations = static_cast<int>(u.integer());
   r.message = u.str();
   return r;
+}
+
+std::vector<double> packProfileEnd(const ProfileEnd& e) {
+  return Packer().put(e.theta).put(e.sse).put(e.at_bound ? 1.0 : 0.0).put(e.evaluations).put(e.steps_taken).take();
+}
+ProfileEnd unpackProfileEnd(const std::vector<double>& v) {
+  Unpacker u(v);
+  ProfileEnd e;
+  e.theta = u.vec();
+  e.sse = u.num();
+  e.at_bound = u.num() != 0.0;
+  e.evaluations = static_cast<int>(u.integer());
+  e.steps_taken = static_cast<int>(u.integer());
+  return e;
+}
+
+/// box.json's "gauss_newton" of a joint region: the Gauss–Newton model, the sweeps along its
+/// axes and the ridge traces.
+nlohmann::json gaussNewtonJson(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
+                               const std::vector<RidgeTrace>& traces) {
+  nlohmann::json gn{{"hessian", "J^T J of the weighted residuals, scaled coordinates"},
+                    {"eigenvalues", jsonNumbers(std::vector<double>(plan.eigenvalues.data(), plan.eigenvalues.data() + plan.eigenvalues.size()))},
+                    {"quadratic_half_width", jsonNumbers(std::vector<double>(plan.half_width.data(), plan.half_width.data() + plan.half_width.size()))}};
+  for (std::size_t k = 0; k < sweeps.size(); ++k)
+    gn["sweeps"].push_back({{"axis", k / 2},
+                            {"direction", k % 2 == 0 ? -1 : 1},
+                            {"crossing", sweeps[k].t_edge},
+                            {"edge_sse", jsonNumber(sweeps[k].edge_sse)},
+                            {"clipped", sweeps[k].clipped},
+                            {"bracketed", sweeps[k].bracketed},
+                            {"evaluations", sweeps[k].evaluations},
+                            {"quadratic_guess", plan.half_width(static_cast<long>(k / 2))}});
+  for (const auto& tr : traces) {
+    nlohmann::json t{{"axis", tr.axis}, {"direction", tr.direction}, {"t", tr.t}, {"sse", jsonNumbers(tr.sse)}, {"closed", tr.closed},
+                     {"crossing", tr.crossing},
+                     {"clipped", tr.clipped}, {"evaluations", tr.evaluations}, {"message", tr.message}};
+    gn["ridges"].push_back(t);
+  }
+  return gn;
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
@@ -723,6 +779,480 @@ nlohmann::json CalibrationResult::toJson() const {
 }
 
 // ------------------------------------------------------------------ calibrateAssembly
+namespace {
+
+/// One calibration of one assembly (docs/method.md §4; docs/calibration.md lists its files): the
+/// inputs, the state its stages share and the result they fill in, one method per stage, run in
+/// order by calibrateAssembly. A stage that takes long persists what it found in the output folder
+/// under the resume fingerprint as it finishes (readStage, the design journal) and reads it back
+/// on a rerun with the same inputs. Starts, sweeps and design points are spread over the MPI ranks
+/// and the threads of each rank (distributedMap: task i on rank i % size, results by index on
+/// every rank); only the root writes files (rootWrites).
+class CalibrationRun {
+ public:
+  CalibrationRun(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
+                 const CalibrationSetup& setup, const CalibrationOptions& options, const std::string& out_dir,
+                 const std::string& fingerprint_extra, const StageProgress& progress)
+      : study_(study), assembly_(assembly), data_(data), setup_(setup), options_(options), out_dir_(out_dir),
+        fingerprint_extra_(fingerprint_extra), progress_(progress), t_all_(Clock::now()) {}
+
+  void objective();
+  void optimum();
+  void region();
+  void design();
+  void profile();
+  void sampler();
+  void summary();
+  CalibrationResult take() { return std::move(res_); }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  using ResumedPoints = std::map<long, std::pair<std::vector<double>, double>>;  ///< design index -> (θ, SSE)
+
+  void report(const std::string& stage, std::size_t done, std::size_t total) const {
+    if (progress_) progress_(stage, done, total);
+  }
+  fs::path file(const char* name) const { return fs::path(out_dir_) / name; }
+  std::string resumeFingerprint() const;
+  std::vector<std::vector<double>> optimiserStarts(nlohmann::json& screening) const;
+  void polish(std::vector<StartResult>& starts) const;
+  BoxProblem boxProblem() const;
+  void paperBox(const BoxProblem& bp, nlohmann::json& stage);
+  void jointRegion(const BoxProblem& bp, nlohmann::json& stage);
+  ResumedPoints openJournal(const std::string& journal_path, std::unique_ptr<DesignJournal>& journal) const;
+  std::vector<double> evaluateRound(const Eigen::MatrixXd& pts, int first, const std::string& stage, DesignJournal* journal,
+                                    const std::string& journal_path, ResumedPoints& resumed);
+  void writeDesignTable() const;
+  void evaluatedPoints(Eigen::MatrixXd& pts, std::vector<double>& f) const;
+  void writePosterior() const;
+
+  const Study& study_;
+  const AssemblySpec& assembly_;
+  const std::vector<DataSet>& data_;
+  const CalibrationSetup& setup_;
+  const CalibrationOptions& options_;
+  const std::string& out_dir_;
+  const std::string& fingerprint_extra_;
+  const StageProgress& progress_;
+  const Clock::time_point t_all_;
+  std::unique_ptr<LabObjective> objective_;
+  SseFunction sse_;          ///< objective_->sse
+  std::size_t d_ = 0;        ///< calibrated parameters
+  int n_ = 0;                ///< scalar residuals
+  std::string fingerprint_;  ///< of everything that changes the numbers; every stage file carries it
+  CalibrationResult res_;
+};
+
+/// The resume fingerprint: everything that changes the numbers.
+std::string CalibrationRun::resumeFingerprint() const {
+  const LabObjective& objective = *objective_;
+  nlohmann::json fp{{"assembly", assembly_.id},
+                    {"label", assembly_.label()},
+                    {"names", objective.names()},
+                    {"lower", objective.lower()},
+                    {"upper", objective.upper()},
+                    {"scenario", objective.scenario().toJson()},
+                    {"simulation", study_.simulation.toJson()},
+                    {"options", options_.toJson()},
+                    {"data", fingerprint_extra_}};
+  // Only the general form adds keys, so a plain calibration keeps its fingerprint.
+  if (data_.size() > 1) {
+    fp["scenarios"] = nlohmann::json::array();
+    for (const auto& sc : objective.scenarios()) fp["scenarios"].push_back(sc.toJson());
+  }
+  if (!setup_.empty()) fp["setup"] = setup_.toJson();
+  for (const auto& ds : data_)
+    if (ds.road_seed) fp["road_seeds"].push_back(*ds.road_seed);
+  return hex(fnv1a64(fp.dump()));
+}
+
+/// Stage 0, objective: the SSE of the assembly against the data sets (LabObjective), the output
+/// folder, the result's header and the resume fingerprint. Nothing is persisted.
+void CalibrationRun::objective() {
+  objective_ = std::make_unique<LabObjective>(study_, assembly_, data_, setup_);
+  d_ = objective_->names().size();
+  n_ = objective_->dataCount();
+  rootWrites([&] { fs::create_directories(out_dir_); });
+  res_.assembly = assembly_.id;
+  res_.label = assembly_.label();
+  res_.names = objective_->names();
+  res_.truth = objective_->truths();
+  res_.n_data = n_;
+  fingerprint_ = resumeFingerprint();
+  sse_ = [this](const std::vector<double>& th) { return objective_->sse(th); };
+}
+
+/// The optimiser's starting points: the best screening points (or a plain spread of starts when
+/// screening is off), after the options' extra starts. `screening` receives what the screening did.
+std::vector<std::vector<double>> CalibrationRun::optimiserStarts(nlohmann::json& screening) const {
+  const LabObjective& objective = *objective_;
+  std::vector<std::vector<double>> x0;
+  if (options_.optimizer.screen_per_start > 0) {
+    const auto cand = screeningPoints(objective.lower(), objective.upper(), options_.optimizer_starts,
+                                      options_.optimizer.screen_per_start, options_.seed);
+    const auto f = distributedMap(
+        cand.size(), options_.threads, [&](std::size_t i, int) { return std::vector<double>{objective.sse(cand[i])}; },
+        [&](std::size_t done, std::size_t total) { report("optimum: screening", done, total); });
+    std::vector<double> fs;
+    for (const auto& v : f) fs.push_back(v[0]);
+    x0 = bestStarts(cand, fs, objective.lower(), objective.upper(), options_.optimizer_starts);
+    screening = {{"points", cand.size()},
+                 {"rule", "the box centre and a Latin hypercube of the bounds; starts = the best, 0.05 apart (scaled)"},
+                 {"best_sse", jsonNumber(*std::min_element(fs.begin(), fs.end()))}};
+  } else {
+    x0 = optimizerStarts(objective.lower(), objective.upper(), options_.optimizer_starts, options_.seed);
+  }
+  report("optimum", 0, static_cast<std::size_t>(options_.optimizer_starts));
+  for (std::size_t k = options_.extra_starts.size(); k-- > 0;) {
+    auto x = options_.extra_starts[k];
+    if (x.size() != d_) throw InputError("extra optimiser start", "has " + std::to_string(x.size()) + " values, expected " + std::to_string(d_));
+    for (std::size_t i = 0; i < d_; ++i) x[i] = std::clamp(x[i], objective.lower()[i], objective.upper()[i]);
+    x0.insert(x0.begin(), x);
+  }
+  return x0;
+}
+
+/// options.polish_step > 0: one more local run from the best start with that initial step, then
+/// Levenberg–Marquardt from the best point so far (polishLeastSquares); both appended to `starts`.
+void CalibrationRun::polish(std::vector<StartResult>& starts) const {
+  const LabObjective& objective = *objective_;
+  const Optimum first = collectOptimum(starts);
+  if (!std::isfinite(first.sse)) return;
+  OptimizerOptions po = options_.optimizer;
+  po.initial_step = options_.polish_step;
+  report("optimum: polish", 0, 1);
+  starts.push_back(minimiseFrom(sse_, objective.lower(), objective.upper(), first.theta, po));
+  const Optimum second = collectOptimum(starts);
+  report("optimum: polish", 0, 1);
+  starts.push_back(polishLeastSquares(objective, second.theta, options_.threads, kPolishStep));
+}
+
+/// Stage 1, optimum (optimum.json): as minimiseSse, with the screening and the starts spread over
+/// ranks and threads, then the optional polish. Throws when every simulation of it failed.
+void CalibrationRun::optimum() {
+  const auto t0 = Clock::now();
+  const fs::path opt_path = file("optimum.json");
+  if (auto j = readStage(opt_path, fingerprint_); !j.is_null()) {
+    res_.optimum = optimumFrom(j.at("optimum"));
+  } else {
+    nlohmann::json screening;
+    const std::vector<std::vector<double>> x0 = optimiserStarts(screening);
+    const LabObjective& objective = *objective_;
+    const auto packed = distributedMap(
+        x0.size(), options_.threads,
+        [&](std::size_t i, int) { return packStart(minimiseFrom(sse_, objective.lower(), objective.upper(), x0[i], options_.optimizer)); },
+        [&](std::size_t done, std::size_t total) { report("optimum", done, total); });
+    std::vector<StartResult> starts;
+    for (const auto& v : packed) starts.push_back(unpackStart(v));
+    if (options_.polish_step > 0) polish(starts);
+    res_.optimum = collectOptimum(std::move(starts));
+    rootWrites([&] {
+      nlohmann::json stage{{"fingerprint", fingerprint_}, {"optimum", optimumJson(res_.optimum)}};
+      if (!screening.is_null()) stage["screening"] = screening;
+      writeFileAtomic(opt_path.string(), stage.dump(2) + "\n");
+    });
+  }
+  if (!std::isfinite(res_.optimum.sse))
+    throw std::runtime_error("assembly " + assembly_.id + ": every simulation of the optimiser failed; no calibration possible");
+  res_.stage_wall_s.push_back({"optimum", secondsSince(t0)});
+}
+
+/// The problem the region's sweeps share: the optimum, n and the bounds.
+BoxProblem CalibrationRun::boxProblem() const {
+  BoxProblem bp;
+  bp.theta_hat = res_.optimum.theta;
+  bp.sse_min = res_.optimum.sse;
+  bp.n_data = n_;
+  bp.lower = objective_->lower();
+  bp.upper = objective_->upper();
+  bp.validate();
+  return bp;
+}
+
+/// The paper's box (region = "paper"): as calcFeasibleBox, with the 2d sweeps spread over ranks
+/// and threads. Sets res_.box and res_.region; `stage` receives the box.
+void CalibrationRun::paperBox(const BoxProblem& bp, nlohmann::json& stage) {
+  const auto packed = distributedMap(
+      2 * d_, options_.threads,
+      [&](std::size_t i, int) { return packSweep(calcBoxSweep(sse_, bp, static_cast<int>(i), options_.box)); },
+      [&](std::size_t done, std::size_t total) { report("box", done, total); });
+  std::vector<SweepResult> sweeps;
+  for (const auto& v : packed) sweeps.push_back(unpackSweep(v));
+  res_.box = collectFeasibleBox(bp, std::move(sweeps));
+  res_.region = regionFromBox(res_.box, bp);
+  stage["box"] = boxJson(res_.box);
+}
+
+/// The joint region (region = "joint"): as calcJointRegion, the Jacobian stencil, then the sweeps
+/// along the principal axes, then the ridge traces, each spread over ranks and threads. Sets
+/// res_.region; `stage` receives the Gauss–Newton model, the sweeps and the traces.
+void CalibrationRun::jointRegion(const BoxProblem& bp, nlohmann::json& stage) {
+  const LabObjective& objective = *objective_;
+  const auto stencil = jacobianStencil(bp, options_.joint);
+  const auto residuals = distributedMap(
+      stencil.size(), options_.threads, [&](std::size_t i, int) { return objective.residuals(stencil[i]); },
+      [&](std::size_t done, std::size_t total) { report("region: Jacobian", done, total); });
+  const JointRegionPlan plan = planJointRegion(bp, residuals, options_.joint);
+  const auto packed = distributedMap(
+      2 * d_, options_.threads,
+      [&](std::size_t i, int) { return packRay(calcRegionSweep(sse_, plan, static_cast<int>(i), options_.joint)); },
+      [&](std::size_t done, std::size_t total) { report("region: sweeps", done, total); });
+  std::vector<RaySweep> sweeps;
+  for (const auto& v : packed) sweeps.push_back(unpackRay(v));
+  const auto packed_traces = distributedMap(
+      2 * ridgeAxes(plan, options_.joint).size(), options_.threads,
+      [&](std::size_t i, int) {
+        return packTrace(calcRidgeTrace([&](const std::vector<double>& th) { return objective.residuals(th); }, plan, sweeps,
+                                        static_cast<int>(i), options_.joint));
+      },
+      [&](std::size_t done, std::size_t total) { report("region: ridges", done, total); });
+  std::vector<RidgeTrace> traces;
+  for (const auto& v : packed_traces) traces.push_back(unpackTrace(v, static_cast<int>(d_)));
+  res_.region = collectJointRegion(plan, sweeps, traces, options_.joint);
+  stage["gauss_newton"] = gaussNewtonJson(plan, sweeps, traces);
+}
+
+/// Stage 2, region (box.json): the region the design covers, the joint 1 % contour or the
+/// paper's box.
+void CalibrationRun::region() {
+  const auto t0 = Clock::now();
+  const fs::path box_path = file("box.json");
+  if (auto j = readStage(box_path, fingerprint_); !j.is_null()) {
+    res_.region = Region::fromJson(j.at("region"));
+    if (j.contains("box")) res_.box = boxFrom(j.at("box"));
+  } else {
+    const BoxProblem bp = boxProblem();
+    nlohmann::json stage{{"fingerprint", fingerprint_}};
+    if (options_.region == "paper") paperBox(bp, stage);
+    else jointRegion(bp, stage);
+    stage["region"] = res_.region.toJson();
+    rootWrites([&] { writeFileAtomic(box_path.string(), stage.dump(2) + "\n"); });
+  }
+  res_.stage_wall_s.push_back({"region", secondsSince(t0)});
+}
+
+/// Opens the design journal on the root (`journal`, null on the other ranks) and returns the
+/// points it holds, which every rank learns from the root.
+CalibrationRun::ResumedPoints CalibrationRun::openJournal(const std::string& journal_path,
+                                                          std::unique_ptr<DesignJournal>& journal) const {
+  const std::size_t d = d_;
+  const std::vector<double> resumed_flat = bytesToDoubles(onRoot([&]() -> std::string {
+    journal = std::make_unique<DesignJournal>(journal_path, static_cast<int>(d), fingerprint_);
+    std::vector<double> v;
+    for (const auto& e : journal->resumed()) {
+      if (e.index < 0) throw InputError(journal->path(), "design index " + std::to_string(e.index) + " is negative");
+      v.push_back(static_cast<double>(e.index));
+      v.insert(v.end(), e.theta.begin(), e.theta.end());
+      v.push_back(e.sse);
+    }
+    return doublesToBytes(v);
+  }));
+  ResumedPoints resumed;
+  for (std::size_t k = 0; k + d + 2 <= resumed_flat.size(); k += d + 2)
+    resumed[static_cast<long>(resumed_flat[k])] = {std::vector<double>(resumed_flat.begin() + static_cast<long>(k) + 1,
+                                                                       resumed_flat.begin() + static_cast<long>(k + 1 + d)),
+                                                   resumed_flat[k + 1 + d]};
+  return resumed;
+}
+
+/// The SSEs of one round's points `pts` (design rows first ..): those in `resumed` from there
+/// (each checked against the point and taken out of `resumed`), the others simulated and
+/// journalled. One process: one loop, each point journalled as it finishes. Several ranks: chunks
+/// of 8 points per worker; the root journals its own points as they finish and the others' at the
+/// end of each chunk (a killed job loses at most one chunk of them).
+std::vector<double> CalibrationRun::evaluateRound(const Eigen::MatrixXd& pts, int first, const std::string& stage,
+                                                  DesignJournal* journal, const std::string& journal_path,
+                                                  ResumedPoints& resumed) {
+  const std::size_t d = d_;
+  const std::size_t ranks = static_cast<std::size_t>(Distributed::instance().size());
+  const std::size_t m_all = static_cast<std::size_t>(pts.rows());
+  std::vector<double> out(m_all, std::numeric_limits<double>::quiet_NaN());
+  auto point = [&](std::size_t t) {
+    std::vector<double> th(d);
+    for (std::size_t k = 0; k < d; ++k) th[k] = pts(static_cast<long>(t), static_cast<long>(k));
+    return th;
+  };
+  std::vector<std::size_t> todo;
+  for (std::size_t t = 0; t < m_all; ++t) {
+    const long idx = first + static_cast<long>(t);
+    const auto it = resumed.find(idx);
+    if (it == resumed.end()) {
+      todo.push_back(t);
+      continue;
+    }
+    if (it->second.first != point(t))
+      throw InputError(journal_path, "design point " + std::to_string(idx) + " differs from this calibration's design");
+    out[t] = it->second.second;
+    ++res_.resumed_points;
+    resumed.erase(it);
+  }
+  report(stage, m_all - todo.size(), m_all);
+  const std::size_t chunk = ranks == 1 ? std::max<std::size_t>(todo.size(), 1)
+                                       : 8 * ranks * static_cast<std::size_t>(distributedWorkers(todo.size(), options_.threads));
+  for (std::size_t c0 = 0; c0 < todo.size(); c0 += chunk) {
+    const std::size_t m = std::min(chunk, todo.size() - c0);
+    const auto sse_of = distributedMap(
+        m, options_.threads,
+        [&](std::size_t t, int) {
+          const std::size_t row = todo[c0 + t];
+          const auto th = point(row);
+          const double s = objective_->sse(th);
+          if (journal) journal->append(first + static_cast<long>(row), th, s);  // the root's own points, at once
+          return std::vector<double>{s};
+        },
+        [&](std::size_t done, std::size_t) { report(stage, m_all - todo.size() + c0 + done, m_all); });
+    for (std::size_t t = 0; t < m; ++t) out[todo[c0 + t]] = sse_of[t][0];
+    if (ranks > 1)
+      rootWrites([&] {
+        for (std::size_t t = 0; t < m; ++t)
+          if (t % ranks != 0) journal->append(first + static_cast<long>(todo[c0 + t]), point(todo[c0 + t]), sse_of[t][0]);
+      });
+  }
+  return out;
+}
+
+/// design.csv: every design point with its SSE, round and log design weight.
+void CalibrationRun::writeDesignTable() const {
+  std::vector<double> round_of(res_.sse.size());
+  for (const auto& r : res_.rounds.rounds)
+    for (int i = r.first; i < r.first + r.count; ++i) round_of[static_cast<std::size_t>(i)] = r.index;
+  rootWrites([&] {
+    writeDesignTableCsv(file("design.csv").string(), res_.names, res_.design, res_.sse, "sse",
+                        {{"round", round_of}, {"log_design_weight", res_.rounds.log_weight}});
+  });
+}
+
+/// Stage 3, design (design_journal.csv, design.csv): runAdaptiveDesign, round by round, each
+/// point journalled as it finishes; a rerun takes the journalled points from the journal.
+void CalibrationRun::design() {
+  const auto t0 = Clock::now();
+  {
+    // The journal lives on the root; every rank learns the journalled points from it.
+    const std::string journal_path = file("design_journal.csv").string();
+    std::unique_ptr<DesignJournal> journal;
+    ResumedPoints resumed = openJournal(journal_path, journal);
+    int round_no = 0;
+    const DesignEvaluator evaluate = [&](const Eigen::MatrixXd& pts, int first) {
+      return evaluateRound(pts, first, "design round " + std::to_string(round_no++), journal.get(), journal_path, resumed);
+    };
+    res_.rounds = runAdaptiveDesign(res_.region, n_, options_.designOptions(), evaluate);
+    if (!resumed.empty())
+      throw InputError(journal_path, "holds design point " + std::to_string(resumed.begin()->first) +
+                                         ", which this calibration's design does not have (made by another version?); delete it to start over");
+  }
+  res_.design = res_.rounds.points;
+  res_.sse = res_.rounds.sse;
+  for (double s : res_.sse) res_.design_failures += std::isfinite(s) ? 0 : 1;
+  writeDesignTable();
+  res_.stage_wall_s.push_back({"design", secondsSince(t0)});
+}
+
+/// Every evaluated point the profile starts from: the design, the optimum, the ridge floor
+/// (rows of `pts`, physical units) and their SSEs `f`.
+void CalibrationRun::evaluatedPoints(Eigen::MatrixXd& pts, std::vector<double>& f) const {
+  const std::size_t d = d_;
+  const long extra = 1 + res_.region.ridge.rows();
+  pts.resize(res_.design.rows() + extra, static_cast<long>(d));
+  f = res_.sse;
+  pts.topRows(res_.design.rows()) = res_.design;
+  for (std::size_t k = 0; k < d; ++k) pts(res_.design.rows(), static_cast<long>(k)) = res_.optimum.theta[k];
+  f.push_back(res_.optimum.sse);
+  for (Eigen::Index q = 0; q < res_.region.ridge.rows(); ++q) {
+    const auto th = res_.region.toPhysical(res_.region.ridge.row(q).transpose());
+    for (std::size_t k = 0; k < d; ++k) pts(res_.design.rows() + 1 + q, static_cast<long>(k)) = th[k];
+    f.push_back(res_.region.ridge_sse[static_cast<std::size_t>(q)]);
+  }
+}
+
+/// Stage 4, profile (profile.json): the profile-likelihood intervals, from every evaluated point
+/// (the design, the ridge floor, the optimum), each end pushed out by profile steps.
+void CalibrationRun::profile() {
+  const auto t0 = Clock::now();
+  res_.interval = options_.interval;
+  const fs::path profile_path = file("profile.json");
+  if (auto j = readStage(profile_path, fingerprint_); !j.is_null()) {
+    res_.profile = ProfileIntervals::fromJson(j.at("profile"));
+  } else {
+    Eigen::MatrixXd pts;
+    std::vector<double> f;
+    evaluatedPoints(pts, f);
+    const LabObjective& objective = *objective_;
+    const ProfilePlan plan = planProfile(pts, f, n_, objective.lower(), objective.upper(), options_.profile);
+    const auto packed = distributedMap(
+        2 * d_, options_.threads,
+        [&](std::size_t i, int) {
+          return packProfileEnd(refineProfileEnd([&](const std::vector<double>& th) { return objective.residuals(th); }, plan,
+                                                 static_cast<int>(i), options_.profile));
+        },
+        [&](std::size_t done, std::size_t total) { report("profile", done, total); });
+    std::vector<ProfileEnd> ends;
+    for (const auto& v : packed) ends.push_back(unpackProfileEnd(v));
+    res_.profile = collectProfile(plan, ends, options_.profile);
+    rootWrites([&] {
+      writeFileAtomic(profile_path.string(), nlohmann::json{{"fingerprint", fingerprint_}, {"profile", res_.profile.toJson()}}.dump(2) + "\n");
+    });
+  }
+  res_.stage_wall_s.push_back({"profile", secondsSince(t0)});
+}
+
+/// posterior.csv: θ, τ and the design index of every kept Gibbs iteration.
+void CalibrationRun::writePosterior() const {
+  rootWrites([&] {
+    std::vector<std::vector<double>> rows;
+    std::vector<long> index;
+    for (std::size_t t = 0; t < res_.chains.index.size(); ++t) {
+      const int k = res_.chains.index[t];
+      std::vector<double> row(d_);
+      for (std::size_t c = 0; c < d_; ++c) row[c] = res_.design(k, static_cast<long>(c));
+      rows.push_back(std::move(row));
+      index.push_back(k);
+    }
+    writeFileAtomic(file("posterior.csv").string(), posteriorCsv(res_.names, rows, res_.chains.tau, index));
+  });
+}
+
+/// Stage 5, sampler (posterior.csv): the two-block Griddy Gibbs with the design weights and the
+/// posterior summaries. Cheap and deterministic from the seed: never persisted half-way, always
+/// rerun.
+void CalibrationRun::sampler() {
+  const auto t0 = Clock::now();
+  report("gibbs", 0, 1);
+  res_.chains = runGriddyGibbs(res_.sse, n_, options_.gibbsOptions(), res_.rounds.log_weight);
+  res_.posterior = summarisePosterior(res_.design, res_.chains, res_.names);
+  report("gibbs", 1, 1);
+  writePosterior();
+  res_.stage_wall_s.push_back({"gibbs", secondsSince(t0)});
+}
+
+/// Stage 6, summary (summary.json): the result (CalibrationResult::toJson) with how it was made:
+/// program, command, study, data sets, setup and options.
+void CalibrationRun::summary() {
+  res_.stage_wall_s.push_back({"total", secondsSince(t_all_)});
+  res_.median_run_wall_s = objective_->medianWallSeconds();
+
+  nlohmann::json j = res_.toJson();
+  j["program"] = programInfo();
+  j["command"] = options_.command;
+  j["created_utc"] = utcNow();
+  j["study"] = study_.path;
+  j["scenario"] = data_.front().scenario;
+  std::size_t records = 0;
+  for (const auto& ds : data_) records += ds.data.records.size();
+  j["data"] = {{"path", options_.data_path}, {"records", records}, {"fnv1a64", fingerprint_extra_}};
+  j["data_sets"] = nlohmann::json::array();
+  for (const auto& ds : data_)
+    j["data_sets"].push_back({{"name", ds.name},
+                              {"scenario", ds.scenario},
+                              {"records", ds.data.records.size()},
+                              {"road_seed", ds.road_seed ? nlohmann::json(*ds.road_seed) : nlohmann::json(study_.seed)}});
+  j["setup"] = setup_.toJson();
+  j["options"] = options_.toJson();
+  j["threads"] = options_.threads;
+  rootWrites([&] { writeFileAtomic(file("summary.json").string(), j.dump(2) + "\n"); });
+}
+
+}  // namespace
+
 CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const LabData& data,
                                     const std::string& scenario, const CalibrationOptions& options,
                                     const std::string& out_dir, const std::string& fingerprint_extra,
@@ -736,367 +1266,15 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
                                     const std::string& out_dir, const std::string& fingerprint_extra,
                                     const StageProgress& progress) {
   options.validate();
-  const auto t_all = std::chrono::steady_clock::now();
-  LabObjective objective(study, assembly, data, setup);
-  const std::size_t d = objective.names().size();
-  const int n = objective.dataCount();
-  rootWrites([&] { fs::create_directories(out_dir); });
-  auto report = [&](const std::string& stage, std::size_t done, std::size_t total) {
-    if (progress) progress(stage, done, total);
-  };
-
-  CalibrationResult res;
-  res.assembly = assembly.id;
-  res.label = assembly.label();
-  res.names = objective.names();
-  res.truth = objective.truths();
-  res.n_data = n;
-
-  // The resume fingerprint: everything that changes the numbers.
-  nlohmann::json fp{{"assembly", assembly.id},
-                    {"label", assembly.label()},
-                    {"names", objective.names()},
-                    {"lower", objective.lower()},
-                    {"upper", objective.upper()},
-                    {"scenario", objective.scenario().toJson()},
-                    {"simulation", study.simulation.toJson()},
-                    {"options", options.toJson()},
-                    {"data", fingerprint_extra}};
-  // Only the general form adds keys, so a plain calibration keeps its fingerprint.
-  if (data.size() > 1) {
-    fp["scenarios"] = nlohmann::json::array();
-    for (const auto& sc : objective.scenarios()) fp["scenarios"].push_back(sc.toJson());
-  }
-  if (!setup.empty()) fp["setup"] = setup.toJson();
-  for (const auto& ds : data)
-    if (ds.road_seed) fp["road_seeds"].push_back(*ds.road_seed);
-  const std::string fingerprint = hex(fnv1a64(fp.dump()));
-  // Starts, sweeps and design points are spread over the MPI ranks and the threads of each rank
-  // (distributedMap: task i on rank i % size, results by index on every rank); only the root
-  // writes files.
-  const SseFunction sse = [&](const std::vector<double>& th) { return objective.sse(th); };
-
-  // Stage 1: optimum.
-  auto t0 = std::chrono::steady_clock::now();
-  const fs::path opt_path = fs::path(out_dir) / "optimum.json";
-  if (auto j = readStage(opt_path, fingerprint); !j.is_null()) {
-    res.optimum = optimumFrom(j.at("optimum"));
-  } else {
-    // As minimiseSse, with the screening and the starts spread over ranks and threads.
-    std::vector<std::vector<double>> x0;
-    nlohmann::json screening;
-    if (options.optimizer.screen_per_start > 0) {
-      const auto cand = screeningPoints(objective.lower(), objective.upper(), options.optimizer_starts,
-                                        options.optimizer.screen_per_start, options.seed);
-      const auto f = distributedMap(
-          cand.size(), options.threads, [&](std::size_t i, int) { return std::vector<double>{objective.sse(cand[i])}; },
-          [&](std::size_t done, std::size_t total) { report("optimum: screening", done, total); });
-      std::vector<double> fs;
-      for (const auto& v : f) fs.push_back(v[0]);
-      x0 = bestStarts(cand, fs, objective.lower(), objective.upper(), options.optimizer_starts);
-      screening = {{"points", cand.size()},
-                   {"rule", "the box centre and a Latin hypercube of the bounds; starts = the best, 0.05 apart (scaled)"},
-                   {"best_sse", jsonNumber(*std::min_element(fs.begin(), fs.end()))}};
-    } else {
-      x0 = optimizerStarts(objective.lower(), objective.upper(), options.optimizer_starts, options.seed);
-    }
-    report("optimum", 0, static_cast<std::size_t>(options.optimizer_starts));
-    for (std::size_t k = options.extra_starts.size(); k-- > 0;) {
-      auto x = options.extra_starts[k];
-      if (x.size() != d) throw InputError("extra optimiser start", "has " + std::to_string(x.size()) + " values, expected " + std::to_string(d));
-      for (std::size_t i = 0; i < d; ++i) x[i] = std::clamp(x[i], objective.lower()[i], objective.upper()[i]);
-      x0.insert(x0.begin(), x);
-    }
-    const auto packed = distributedMap(
-        x0.size(), options.threads,
-        [&](std::size_t i, int) { return packStart(minimiseFrom(sse, objective.lower(), objective.upper(), x0[i], options.optimizer)); },
-        [&](std::size_t done, std::size_t total) { report("optimum", done, total); });
-    std::vector<StartResult> starts;
-    for (const auto& v : packed) starts.push_back(unpackStart(v));
-    if (options.polish_step > 0) {
-      const Optimum first = collectOptimum(starts);
-      if (std::isfinite(first.sse)) {
-        OptimizerOptions po = options.optimizer;
-        po.initial_step = options.polish_step;
-        report("optimum: polish", 0, 1);
-        starts.push_back(minimiseFrom(sse, objective.lower(), objective.upper(), first.theta, po));
-        const Optimum second = collectOptimum(starts);
-        report("optimum: polish", 0, 1);
-        starts.push_back(polishLeastSquares(objective, second.theta, options.threads, kPolishStep));
-      }
-    }
-    res.optimum = collectOptimum(std::move(starts));
-    rootWrites([&] {
-      nlohmann::json stage{{"fingerprint", fingerprint}, {"optimum", optimumJson(res.optimum)}};
-      if (!screening.is_null()) stage["screening"] = screening;
-      writeFileAtomic(opt_path.string(), stage.dump(2) + "\n");
-    });
-  }
-  if (!std::isfinite(res.optimum.sse))
-    throw std::runtime_error("assembly " + assembly.id + ": every simulation of the optimiser failed; no calibration possible");
-  res.stage_wall_s.push_back({"optimum", secondsSince(t0)});
-
-  // Stage 2: the region the design covers.
-  t0 = std::chrono::steady_clock::now();
-  const fs::path box_path = fs::path(out_dir) / "box.json";
-  if (auto j = readStage(box_path, fingerprint); !j.is_null()) {
-    res.region = Region::fromJson(j.at("region"));
-    if (j.contains("box")) res.box = boxFrom(j.at("box"));
-  } else {
-    BoxProblem bp;
-    bp.theta_hat = res.optimum.theta;
-    bp.sse_min = res.optimum.sse;
-    bp.n_data = n;
-    bp.lower = objective.lower();
-    bp.upper = objective.upper();
-    bp.validate();
-    nlohmann::json stage{{"fingerprint", fingerprint}};
-    if (options.region == "paper") {
-      // As calcFeasibleBox, with the 2d sweeps spread over ranks and threads.
-      const auto packed = distributedMap(
-          2 * d, options.threads, [&](std::size_t i, int) { return packSweep(calcBoxSweep(sse, bp, static_cast<int>(i), options.box)); },
-          [&](std::size_t done, std::size_t total) { report("box", done, total); });
-      std::vector<SweepResult> sweeps;
-      for (const auto& v : packed) sweeps.push_back(unpackSweep(v));
-      res.box = collectFeasibleBox(bp, std::move(sweeps));
-      res.region = regionFromBox(res.box, bp);
-      stage["box"] = boxJson(res.box);
-    } else {
-      // As calcJointRegion: the Jacobian stencil, then the sweeps along the principal axes.
-      const auto stencil = jacobianStencil(bp, options.joint);
-      const auto residuals = distributedMap(
-          stencil.size(), options.threads, [&](std::size_t i, int) { return objective.residuals(stencil[i]); },
-          [&](std::size_t done, std::size_t total) { report("region: Jacobian", done, total); });
-      const JointRegionPlan plan = planJointRegion(bp, residuals, options.joint);
-      const auto packed = distributedMap(
-          2 * d, options.threads,
-          [&](std::size_t i, int) { return packRay(calcRegionSweep(sse, plan, static_cast<int>(i), options.joint)); },
-          [&](std::size_t done, std::size_t total) { report("region: sweeps", done, total); });
-      std::vector<RaySweep> sweeps;
-      for (const auto& v : packed) sweeps.push_back(unpackRay(v));
-      const auto packed_traces = distributedMap(
-          2 * ridgeAxes(plan, options.joint).size(), options.threads,
-          [&](std::size_t i, int) {
-            return packTrace(calcRidgeTrace([&](const std::vector<double>& th) { return objective.residuals(th); }, plan, sweeps,
-                                            static_cast<int>(i), options.joint));
-          },
-          [&](std::size_t done, std::size_t total) { report("region: ridges", done, total); });
-      std::vector<RidgeTrace> traces;
-      for (const auto& v : packed_traces) traces.push_back(unpackTrace(v, static_cast<int>(d)));
-      res.region = collectJointRegion(plan, sweeps, traces, options.joint);
-      nlohmann::json gn{{"hessian", "J^T J of the weighted residuals, scaled coordinates"},
-                        {"eigenvalues", jsonNumbers(std::vector<double>(plan.eigenvalues.data(), plan.eigenvalues.data() + plan.eigenvalues.size()))},
-                        {"quadratic_half_width", jsonNumbers(std::vector<double>(plan.half_width.data(), plan.half_width.data() + plan.half_width.size()))}};
-      for (std::size_t k = 0; k < sweeps.size(); ++k)
-        gn["sweeps"].push_back({{"axis", k / 2},
-                                {"direction", k % 2 == 0 ? -1 : 1},
-                                {"crossing", sweeps[k].t_edge},
-                                {"edge_sse", jsonNumber(sweeps[k].edge_sse)},
-                                {"clipped", sweeps[k].clipped},
-                                {"bracketed", sweeps[k].bracketed},
-                                {"evaluations", sweeps[k].evaluations},
-                                {"quadratic_guess", plan.half_width(static_cast<long>(k / 2))}});
-      for (const auto& tr : traces) {
-        nlohmann::json t{{"axis", tr.axis}, {"direction", tr.direction}, {"t", tr.t}, {"sse", jsonNumbers(tr.sse)}, {"closed", tr.closed},
-                         {"crossing", tr.crossing},
-                         {"clipped", tr.clipped}, {"evaluations", tr.evaluations}, {"message", tr.message}};
-        gn["ridges"].push_back(t);
-      }
-      stage["gauss_newton"] = gn;
-    }
-    stage["region"] = res.region.toJson();
-    rootWrites([&] { writeFileAtomic(box_path.string(), stage.dump(2) + "\n"); });
-  }
-  res.stage_wall_s.push_back({"region", secondsSince(t0)});
-
-  // Stage 3: the design, round by round, journalled point by point.
-  t0 = std::chrono::steady_clock::now();
-  {
-    // The journal lives on the root; every rank learns the journalled points from it.
-    const std::string journal_path = (fs::path(out_dir) / "design_journal.csv").string();
-    std::unique_ptr<DesignJournal> journal;
-    const std::vector<double> resumed_flat = bytesToDoubles(onRoot([&]() -> std::string {
-      journal = std::make_unique<DesignJournal>(journal_path, static_cast<int>(d), fingerprint);
-      std::vector<double> v;
-      for (const auto& e : journal->resumed()) {
-        if (e.index < 0) throw InputError(journal->path(), "design index " + std::to_string(e.index) + " is negative");
-        v.push_back(static_cast<double>(e.index));
-        v.insert(v.end(), e.theta.begin(), e.theta.end());
-        v.push_back(e.sse);
-      }
-      return doublesToBytes(v);
-    }));
-    std::map<long, std::pair<std::vector<double>, double>> resumed;
-    for (std::size_t k = 0; k + d + 2 <= resumed_flat.size(); k += d + 2)
-      resumed[static_cast<long>(resumed_flat[k])] = {std::vector<double>(resumed_flat.begin() + static_cast<long>(k) + 1,
-                                                                         resumed_flat.begin() + static_cast<long>(k + 1 + d)),
-                                                     resumed_flat[k + 1 + d]};
-    const std::size_t ranks = static_cast<std::size_t>(Distributed::instance().size());
-    int round_no = 0;
-    const DesignEvaluator evaluate = [&](const Eigen::MatrixXd& pts, int first) {
-      const std::string stage = "design round " + std::to_string(round_no++);
-      const std::size_t m_all = static_cast<std::size_t>(pts.rows());
-      std::vector<double> out(m_all, std::numeric_limits<double>::quiet_NaN());
-      auto point = [&](std::size_t t) {
-        std::vector<double> th(d);
-        for (std::size_t k = 0; k < d; ++k) th[k] = pts(static_cast<long>(t), static_cast<long>(k));
-        return th;
-      };
-      std::vector<std::size_t> todo;
-      for (std::size_t t = 0; t < m_all; ++t) {
-        const long idx = first + static_cast<long>(t);
-        const auto it = resumed.find(idx);
-        if (it == resumed.end()) {
-          todo.push_back(t);
-          continue;
-        }
-        if (it->second.first != point(t))
-          throw InputError(journal_path, "design point " + std::to_string(idx) + " differs from this calibration's design");
-        out[t] = it->second.second;
-        ++res.resumed_points;
-        resumed.erase(it);
-      }
-      report(stage, m_all - todo.size(), m_all);
-      // One process: one loop, each point journalled as it finishes. Several ranks: chunks of
-      // 8 points per worker; the root journals its own points as they finish and the others' at
-      // the end of each chunk (a killed job loses at most one chunk of them).
-      const std::size_t chunk = ranks == 1 ? std::max<std::size_t>(todo.size(), 1)
-                                           : 8 * ranks * static_cast<std::size_t>(distributedWorkers(todo.size(), options.threads));
-      for (std::size_t c0 = 0; c0 < todo.size(); c0 += chunk) {
-        const std::size_t m = std::min(chunk, todo.size() - c0);
-        const auto sse_of = distributedMap(
-            m, options.threads,
-            [&](std::size_t t, int) {
-              const std::size_t row = todo[c0 + t];
-              const auto th = point(row);
-              const double s = objective.sse(th);
-              if (journal) journal->append(first + static_cast<long>(row), th, s);  // the root's own points, at once
-              return std::vector<double>{s};
-            },
-            [&](std::size_t done, std::size_t) { report(stage, m_all - todo.size() + c0 + done, m_all); });
-        for (std::size_t t = 0; t < m; ++t) out[todo[c0 + t]] = sse_of[t][0];
-        if (ranks > 1)
-          rootWrites([&] {
-            for (std::size_t t = 0; t < m; ++t)
-              if (t % ranks != 0) journal->append(first + static_cast<long>(todo[c0 + t]), point(todo[c0 + t]), sse_of[t][0]);
-          });
-      }
-      return out;
-    };
-    res.rounds = runAdaptiveDesign(res.region, n, options.designOptions(), evaluate);
-    if (!resumed.empty())
-      throw InputError(journal_path, "holds design point " + std::to_string(resumed.begin()->first) +
-                                         ", which this calibration's design does not have (made by another version?); delete it to start over");
-  }
-  res.design = res.rounds.points;
-  res.sse = res.rounds.sse;
-  for (double s : res.sse) res.design_failures += std::isfinite(s) ? 0 : 1;
-  {
-    std::vector<double> round_of(res.sse.size());
-    for (const auto& r : res.rounds.rounds)
-      for (int i = r.first; i < r.first + r.count; ++i) round_of[static_cast<std::size_t>(i)] = r.index;
-    rootWrites([&] {
-      writeDesignTableCsv((fs::path(out_dir) / "design.csv").string(), res.names, res.design, res.sse, "sse",
-                          {{"round", round_of}, {"log_design_weight", res.rounds.log_weight}});
-    });
-  }
-  res.stage_wall_s.push_back({"design", secondsSince(t0)});
-
-  // Stage 4: the profile-likelihood intervals, from every evaluated point (the design, the ridge
-  // floor, the optimum), each end pushed out by profile steps.
-  t0 = std::chrono::steady_clock::now();
-  res.interval = options.interval;
-  const fs::path profile_path = fs::path(out_dir) / "profile.json";
-  if (auto j = readStage(profile_path, fingerprint); !j.is_null()) {
-    res.profile = ProfileIntervals::fromJson(j.at("profile"));
-  } else {
-    const long extra = 1 + res.region.ridge.rows();
-    Eigen::MatrixXd pts(res.design.rows() + extra, static_cast<long>(d));
-    std::vector<double> f = res.sse;
-    pts.topRows(res.design.rows()) = res.design;
-    for (std::size_t k = 0; k < d; ++k) pts(res.design.rows(), static_cast<long>(k)) = res.optimum.theta[k];
-    f.push_back(res.optimum.sse);
-    for (Eigen::Index q = 0; q < res.region.ridge.rows(); ++q) {
-      const auto th = res.region.toPhysical(res.region.ridge.row(q).transpose());
-      for (std::size_t k = 0; k < d; ++k) pts(res.design.rows() + 1 + q, static_cast<long>(k)) = th[k];
-      f.push_back(res.region.ridge_sse[static_cast<std::size_t>(q)]);
-    }
-    const ProfilePlan plan = planProfile(pts, f, n, objective.lower(), objective.upper(), options.profile);
-    const auto packed = distributedMap(
-        2 * d, options.threads,
-        [&](std::size_t i, int) {
-          const ProfileEnd e = refineProfileEnd([&](const std::vector<double>& th) { return objective.residuals(th); }, plan,
-                                                static_cast<int>(i), options.profile);
-          return Packer().put(e.theta).put(e.sse).put(e.at_bound ? 1.0 : 0.0).put(e.evaluations).put(e.steps_taken).take();
-        },
-        [&](std::size_t done, std::size_t total) { report("profile", done, total); });
-    std::vector<ProfileEnd> ends;
-    for (const auto& v : packed) {
-      Unpacker u(v);
-      ProfileEnd e;
-      e.theta = u.vec();
-      e.sse = u.num();
-      e.at_bound = u.num() != 0.0;
-      e.evaluations = static_cast<int>(u.integer());
-      e.steps_taken = static_cast<int>(u.integer());
-      ends.push_back(e);
-    }
-    res.profile = collectProfile(plan, ends, options.profile);
-    rootWrites([&] {
-      writeFileAtomic(profile_path.string(), nlohmann::json{{"fingerprint", fingerprint}, {"profile", res.profile.toJson()}}.dump(2) + "\n");
-    });
-  }
-  res.stage_wall_s.push_back({"profile", secondsSince(t0)});
-
-  // Stage 5: two-block Griddy Gibbs with the design weights (cheap, deterministic from the seed:
-  // never persisted half-way, always rerun).
-  t0 = std::chrono::steady_clock::now();
-  report("gibbs", 0, 1);
-  GibbsOptions go;
-  go.iterations = options.gibbs_iterations;
-  go.burn_in = options.gibbs_burn_in;
-  go.a = options.tau_prior_a;
-  go.b = options.tau_prior_b;
-  go.seed = options.seed;
-  res.chains = runGriddyGibbs(res.sse, n, go, res.rounds.log_weight);
-  res.posterior = summarisePosterior(res.design, res.chains, res.names);
-  report("gibbs", 1, 1);
-  rootWrites([&] {
-    std::vector<std::vector<double>> rows;
-    std::vector<long> index;
-    for (std::size_t t = 0; t < res.chains.index.size(); ++t) {
-      const int k = res.chains.index[t];
-      std::vector<double> row(d);
-      for (std::size_t c = 0; c < d; ++c) row[c] = res.design(k, static_cast<long>(c));
-      rows.push_back(std::move(row));
-      index.push_back(k);
-    }
-    writeFileAtomic((fs::path(out_dir) / "posterior.csv").string(), posteriorCsv(res.names, rows, res.chains.tau, index));
-  });
-  res.stage_wall_s.push_back({"gibbs", secondsSince(t0)});
-  res.stage_wall_s.push_back({"total", secondsSince(t_all)});
-  res.median_run_wall_s = objective.medianWallSeconds();
-
-  nlohmann::json j = res.toJson();
-  j["program"] = programInfo();
-  j["command"] = options.command;
-  j["created_utc"] = utcNow();
-  j["study"] = study.path;
-  j["scenario"] = data.front().scenario;
-  std::size_t records = 0;
-  for (const auto& ds : data) records += ds.data.records.size();
-  j["data"] = {{"path", options.data_path}, {"records", records}, {"fnv1a64", fingerprint_extra}};
-  j["data_sets"] = nlohmann::json::array();
-  for (const auto& ds : data)
-    j["data_sets"].push_back({{"name", ds.name},
-                              {"scenario", ds.scenario},
-                              {"records", ds.data.records.size()},
-                              {"road_seed", ds.road_seed ? nlohmann::json(*ds.road_seed) : nlohmann::json(study.seed)}});
-  j["setup"] = setup.toJson();
-  j["options"] = options.toJson();
-  j["threads"] = options.threads;
-  rootWrites([&] { writeFileAtomic((fs::path(out_dir) / "summary.json").string(), j.dump(2) + "\n"); });
-  return res;
+  CalibrationRun run(study, assembly, data, setup, options, out_dir, fingerprint_extra, progress);
+  run.objective();  // the SSE against the data, the output folder, the resume fingerprint
+  run.optimum();    // optimum.json
+  run.region();     // box.json
+  run.design();     // design_journal.csv, design.csv
+  run.profile();    // profile.json
+  run.sampler();    // posterior.csv
+  run.summary();    // summary.json
+  return run.take();
 }
 
 }  // namespace dtwin::calib

@@ -4,7 +4,9 @@
 // a design simulated in parallel (a Latin hypercube, then adaptive rounds where the posterior
 // lies), the two-block Griddy Gibbs with design weights, posterior summaries. Every stage is persisted in the assembly's output folder as it
 // finishes, so a killed calibration rerun with the same inputs continues where it stopped and
-// ends with identical results (design points are journalled one by one).
+// ends with identical results (design points are journalled one by one). In calibrate.cpp each
+// stage is one method of CalibrationRun, and calibrateAssembly lists them in order: objective,
+// optimum, region, design, profile, sampler, summary.
 //
 // Outputs in `out_dir` (docs/calibration.md describes every file):
 //   optimum.json        every start of the optimiser and the optimum (stage 1)
@@ -139,13 +141,15 @@ class LabObjective {
   std::unique_ptr<Pool> pool_;
 };
 
+/// The settings of one calibration. The sizes default to the paper's (calibration/common.hpp);
+/// a study's are taken by fromStudy.
 struct CalibrationOptions {
-  int threads = 0;  ///< 0: all cores
-  int optimizer_starts = 4;
-  int lhs_points = 2000;
-  int gibbs_iterations = 50000;
-  int gibbs_burn_in = 15000;
-  double tau_prior_a = 1e-3, tau_prior_b = 1e-3;
+  int threads = 0;  ///< >= 0; 0: all cores
+  int optimizer_starts = kDefaultOptimizerStarts;  ///< >= 1
+  int lhs_points = kDefaultLhsPoints;              ///< the first Latin hypercube, >= 2
+  int gibbs_iterations = kDefaultGibbsIterations;  ///< >= 1, burn-in included
+  int gibbs_burn_in = kDefaultGibbsBurnIn;         ///< in [0, gibbs_iterations)
+  double tau_prior_a = kDefaultTauPrior, tau_prior_b = kDefaultTauPrior;  ///< Gamma(a, b) prior of τ, finite, >= 0
   std::uint64_t seed = 1;
   OptimizerOptions optimizer;
   /// "joint" (default): the region holds the joint 1 % contour (region.hpp); "paper": the
@@ -166,7 +170,8 @@ struct CalibrationOptions {
   /// optimum is never worse than the nested one's. Part of the fingerprint when not empty.
   std::vector<std::vector<double>> extra_starts;
   /// > 0: after the starts, one more local run from the best point with this initial step
-  /// (scaled units), to polish a sharp minimum (dense data). 0: off (docs/method.md §4 as written).
+  /// (scaled units, at most 0.5), to polish a sharp minimum (dense data). 0: off (docs/method.md §4
+  /// as written).
   double polish_step = 0.0;
   /// Recorded in summary.json, not part of the resume fingerprint.
   std::string command, data_path;
@@ -176,6 +181,10 @@ struct CalibrationOptions {
   /// `design` with first_points = lhs_points, round_points resolved (0: lhs_points), the τ prior
   /// and the seed.
   AdaptiveDesignOptions designOptions() const;
+  /// The Gibbs sampler's options: iterations, burn-in, the τ prior and the seed.
+  GibbsOptions gibbsOptions() const;
+  /// Throws InputError whose where() is "calibration.<field>" (common/validate.hpp), or that of
+  /// the nested options ("optimizer.<field>", "design.<field>", ...). calibrateAssembly calls it.
   void validate() const;
   /// What changes the numbers (the resume fingerprint includes it).
   nlohmann::json toJson() const;

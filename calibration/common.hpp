@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "common/format.hpp"
+#include "twin/study.hpp"
 
 namespace dtwin::calib {
 
@@ -38,6 +39,15 @@ void sequentialFor(int count, const std::function<void(int)>& task);
 /// (or <= when `allow_degenerate`). Throws InputError naming `where`, the index and the values.
 void checkBounds(const std::vector<double>& lower, const std::vector<double>& upper,
                  const std::string& where, bool allow_degenerate = false);
+
+/// The default sizes of a calibration (docs/method.md §4: the paper's), read from the one set
+/// of study-size defaults (twin/study.hpp StudySizes). GibbsOptions, CalibrationOptions and
+/// AdaptiveDesignOptions take their defaults from them.
+inline constexpr int kDefaultOptimizerStarts = static_cast<int>(StudySizes{}.optimizer_starts);  ///< multi-start optimiser starts
+inline constexpr int kDefaultLhsPoints = static_cast<int>(StudySizes{}.lhs_points);  ///< design points of the first Latin hypercube
+inline constexpr int kDefaultGibbsIterations = static_cast<int>(StudySizes{}.gibbs_iterations);  ///< Gibbs iterations S, burn-in included
+inline constexpr int kDefaultGibbsBurnIn = static_cast<int>(StudySizes{}.gibbs_burn_in);  ///< Gibbs iterations discarded from the start
+inline constexpr double kDefaultTauPrior = 1e-3;        ///< shape a and rate b of the Gamma prior of τ
 
 /// Stream identifiers for RandomStream(seed, stream, index): one purpose, one stream, so that two
 /// components given the same user seed still draw independent numbers.

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 #include "twin/distributed.hpp"
 #include "twin/generate.hpp"
 #include "twin/provenance.hpp"
@@ -25,8 +26,9 @@ std::string fmt(double v, int digits = 4) { return formatNumber(v, digits); }
 }  // namespace
 
 void CoverageOptions::validate() const {
-  if (seeds < 2) throw InputError("--seeds", "must be >= 2 (a coverage needs several noise seeds), got " + std::to_string(seeds));
-  if (out_dir.empty()) throw InputError("--out", "an output folder is required");
+  const OptionCheck check("coverage");
+  check.require(seeds >= 2, "seeds", "must be >= 2 (a coverage needs several noise seeds), got " + std::to_string(seeds));
+  check.require(!out_dir.empty(), "out_dir", "an output folder is required");
   calibration.validate();
 }
 
@@ -95,103 +97,76 @@ std::string CoverageResult::markdown() const {
   return s.str();
 }
 
-CoverageResult runCoverage(const Study& study, const CoverageOptions& options, const CoverageProgress& progress) {
-  options.validate();
-  const auto t_all = std::chrono::steady_clock::now();
-  std::vector<AssemblySpec> targets;
-  if (options.assemblies.empty()) targets = study.assemblies();
-  else
-    for (const auto& id : options.assemblies) targets.push_back(study.assembly(id));
-  CoverageResult res;
-  std::vector<double> walls;
-  const int count = static_cast<int>(targets.size()) * options.seeds;
-  int index = 0;
-  for (const auto& a : targets) {
-    const fs::path adir = fs::path(options.out_dir) / a.id;
-    rootWrites([&] { fs::create_directories(adir); });
-    std::map<std::string, std::vector<const nlohmann::json*>> per;  // parameter -> summaries' entries
-    std::vector<nlohmann::json> summaries;
-    summaries.reserve(static_cast<std::size_t>(options.seeds));
-    std::vector<std::string> order;
-    std::vector<std::optional<double>> truths;
-    for (int k = 0; k < options.seeds; ++k, ++index) {
-      const std::uint64_t seed = options.first_seed + static_cast<std::uint64_t>(k);
-      if (progress) progress(a.id, seed, index, count, "lab data", 0, 1);
-      LabOptions lo;
-      lo.seed = seed;
-      lo.command = options.command;
-      const LabResult lab = generateLab(study, a, lo);
-      const std::string lab_path = (adir / ("lab_" + std::to_string(seed) + ".csv")).string();
-      rootWrites([&] {
-        writeLabCsv(lab_path, lab.data);
-        writeFileAtomic(fs::path(lab_path).replace_extension(".json").string(), lab.provenance.dump(2) + "\n");
-      });
-      CalibrationOptions co = options.calibration;
-      co.command = options.command;
-      co.data_path = lab_path;
-      std::ostringstream csv;
-      for (const auto& r : lab.data.records) csv << r.repetition << ',' << formatExact(r.time_s) << ',' << r.channel << ',' << formatExact(r.value) << '\n';
-      const std::string hash = std::to_string(fnv1a64(csv.str()));
-      const CalibrationResult cr =
-          calibrateAssembly(study, a, lab.data, "lab", co, (adir / ("seed_" + std::to_string(seed))).string(), hash,
-                            [&](const std::string& stage, std::size_t done, std::size_t total) {
-                              if (progress) progress(a.id, seed, index, count, stage, done, total);
-                            });
-      walls.push_back(cr.stage_wall_s.back().second);
-      summaries.push_back(cr.toJson());
-      order = cr.names;
-      truths = cr.truth;
-    }
-    int covered_all = 0, pairs = 0;
-    for (std::size_t p = 0; p < order.size(); ++p) {
-      if (!truths[p]) continue;  // no truth: nothing to cover
-      CoverageRow row;
-      row.assembly = a.id;
-      row.parameter = order[p];
-      row.truth = *truths[p];
-      std::vector<double> means, optima;
-      double sse = 0.0;
-      for (const auto& s : summaries) {
-        const auto& e = s.at("parameters").at(order[p]);
-        const double lo = e.at("ci95")[0].get<double>(), hi = e.at("ci95")[1].get<double>(), m = e.at("mean").get<double>();
-        const auto& cr = e.at("credible95");
-        const auto& pr = e.contains("profile95") ? e.at("profile95") : cr;
-        row.interval = e.at("interval").get<std::string>();
-        ++row.seeds;
-        row.covered += (row.truth >= lo && row.truth <= hi) ? 1 : 0;
-        row.covered_profile += (row.truth >= pr[0].get<double>() && row.truth <= pr[1].get<double>()) ? 1 : 0;
-        row.covered_posterior += (row.truth >= cr[0].get<double>() && row.truth <= cr[1].get<double>()) ? 1 : 0;
-        row.mean_width += hi - lo;
-        row.mean_width_profile += pr[1].get<double>() - pr[0].get<double>();
-        row.mean_width_posterior += cr[1].get<double>() - cr[0].get<double>();
-        row.mean_sd += e.at("sd").get<double>();
-        means.push_back(m);
-        optima.push_back(e.at("optimum").get<double>());
-        sse += (m - row.truth) * (m - row.truth);
-      }
-      row.mean_width /= row.seeds;
-      row.mean_width_profile /= row.seeds;
-      row.mean_width_posterior /= row.seeds;
-      row.mean_sd /= row.seeds;
-      auto sdOf = [](const std::vector<double>& v) {
-        double mean = 0.0, ss = 0.0;
-        for (double x : v) mean += x / static_cast<double>(v.size());
-        for (double x : v) ss += (x - mean) * (x - mean);
-        return std::sqrt(ss / static_cast<double>(v.size() - 1));
-      };
-      row.sd_of_means = sdOf(means);
-      row.sd_of_optima = sdOf(optima);
-      row.rmse = std::sqrt(sse / row.seeds);
-      std::tie(row.wilson_low, row.wilson_high) = wilsonInterval(row.covered, row.seeds);
-      covered_all += row.covered;
-      pairs += row.seeds;
-      res.rows.push_back(row);
-    }
-    res.totals.push_back({a.id, {covered_all, pairs}});
+namespace {
+
+/// One noise seed of one assembly: its lab data (generated at the study's truths, written to
+/// `adir`) calibrated as `twin calibrate` would, in adir/seed_<seed>/.
+CalibrationResult calibrateSeed(const Study& study, const AssemblySpec& a, const fs::path& adir, std::uint64_t seed,
+                                const CoverageOptions& options, const StageProgress& progress) {
+  LabOptions lo;
+  lo.seed = seed;
+  lo.command = options.command;
+  const LabResult lab = generateLab(study, a, lo);
+  const std::string lab_path = (adir / ("lab_" + std::to_string(seed) + ".csv")).string();
+  rootWrites([&] {
+    writeLabCsv(lab_path, lab.data);
+    writeFileAtomic(fs::path(lab_path).replace_extension(".json").string(), lab.provenance.dump(2) + "\n");
+  });
+  CalibrationOptions co = options.calibration;
+  co.command = options.command;
+  co.data_path = lab_path;
+  std::ostringstream csv;
+  for (const auto& r : lab.data.records) csv << r.repetition << ',' << formatExact(r.time_s) << ',' << r.channel << ',' << formatExact(r.value) << '\n';
+  const std::string hash = std::to_string(fnv1a64(csv.str()));
+  return calibrateAssembly(study, a, lab.data, "lab", co, (adir / ("seed_" + std::to_string(seed))).string(), hash, progress);
+}
+
+/// The row of one parameter (with a truth) over the seeds' summaries (summary.json's content).
+CoverageRow coverageRow(const std::string& assembly, const std::string& parameter, double truth,
+                        const std::vector<nlohmann::json>& summaries) {
+  CoverageRow row;
+  row.assembly = assembly;
+  row.parameter = parameter;
+  row.truth = truth;
+  std::vector<double> means, optima;
+  double sse = 0.0;
+  for (const auto& s : summaries) {
+    const auto& e = s.at("parameters").at(parameter);
+    const double lo = e.at("ci95")[0].get<double>(), hi = e.at("ci95")[1].get<double>(), m = e.at("mean").get<double>();
+    const auto& cr = e.at("credible95");
+    const auto& pr = e.contains("profile95") ? e.at("profile95") : cr;
+    row.interval = e.at("interval").get<std::string>();
+    ++row.seeds;
+    row.covered += (row.truth >= lo && row.truth <= hi) ? 1 : 0;
+    row.covered_profile += (row.truth >= pr[0].get<double>() && row.truth <= pr[1].get<double>()) ? 1 : 0;
+    row.covered_posterior += (row.truth >= cr[0].get<double>() && row.truth <= cr[1].get<double>()) ? 1 : 0;
+    row.mean_width += hi - lo;
+    row.mean_width_profile += pr[1].get<double>() - pr[0].get<double>();
+    row.mean_width_posterior += cr[1].get<double>() - cr[0].get<double>();
+    row.mean_sd += e.at("sd").get<double>();
+    means.push_back(m);
+    optima.push_back(e.at("optimum").get<double>());
+    sse += (m - row.truth) * (m - row.truth);
   }
-  std::sort(walls.begin(), walls.end());
-  res.median_calibration_wall_s = walls.empty() ? 0.0 : walls[walls.size() / 2];
-  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
+  row.mean_width /= row.seeds;
+  row.mean_width_profile /= row.seeds;
+  row.mean_width_posterior /= row.seeds;
+  row.mean_sd /= row.seeds;
+  auto sdOf = [](const std::vector<double>& v) {
+    double mean = 0.0, ss = 0.0;
+    for (double x : v) mean += x / static_cast<double>(v.size());
+    for (double x : v) ss += (x - mean) * (x - mean);
+    return std::sqrt(ss / static_cast<double>(v.size() - 1));
+  };
+  row.sd_of_means = sdOf(means);
+  row.sd_of_optima = sdOf(optima);
+  row.rmse = std::sqrt(sse / row.seeds);
+  std::tie(row.wilson_low, row.wilson_high) = wilsonInterval(row.covered, row.seeds);
+  return row;
+}
+
+/// coverage.json and coverage.md in options.out_dir.
+void writeCoverage(const Study& study, const CoverageOptions& options, const CoverageResult& res) {
   nlohmann::json j = res.toJson();
   j["program"] = programInfo();
   j["command"] = options.command;
@@ -207,6 +182,54 @@ CoverageResult runCoverage(const Study& study, const CoverageOptions& options, c
                      "`, ci95 = the `" + options.calibration.interval + "` interval.\n\n" + res.markdown();
     writeFileAtomic((fs::path(options.out_dir) / "coverage.md").string(), md);
   });
+}
+
+}  // namespace
+
+CoverageResult runCoverage(const Study& study, const CoverageOptions& options, const CoverageProgress& progress) {
+  options.validate();
+  const auto t_all = std::chrono::steady_clock::now();
+  std::vector<AssemblySpec> targets;
+  if (options.assemblies.empty()) targets = study.assemblies();
+  else
+    for (const auto& id : options.assemblies) targets.push_back(study.assembly(id));
+  CoverageResult res;
+  std::vector<double> walls;
+  const int count = static_cast<int>(targets.size()) * options.seeds;
+  int index = 0;
+  for (const auto& a : targets) {
+    const fs::path adir = fs::path(options.out_dir) / a.id;
+    rootWrites([&] { fs::create_directories(adir); });
+    std::vector<nlohmann::json> summaries;
+    summaries.reserve(static_cast<std::size_t>(options.seeds));
+    std::vector<std::string> order;
+    std::vector<std::optional<double>> truths;
+    for (int k = 0; k < options.seeds; ++k, ++index) {
+      const std::uint64_t seed = options.first_seed + static_cast<std::uint64_t>(k);
+      if (progress) progress(a.id, seed, index, count, "lab data", 0, 1);
+      const CalibrationResult cr =
+          calibrateSeed(study, a, adir, seed, options, [&](const std::string& stage, std::size_t done, std::size_t total) {
+            if (progress) progress(a.id, seed, index, count, stage, done, total);
+          });
+      walls.push_back(cr.stage_wall_s.back().second);
+      summaries.push_back(cr.toJson());
+      order = cr.names;
+      truths = cr.truth;
+    }
+    int covered_all = 0, pairs = 0;
+    for (std::size_t p = 0; p < order.size(); ++p) {
+      if (!truths[p]) continue;  // no truth: nothing to cover
+      const CoverageRow row = coverageRow(a.id, order[p], *truths[p], summaries);
+      covered_all += row.covered;
+      pairs += row.seeds;
+      res.rows.push_back(row);
+    }
+    res.totals.push_back({a.id, {covered_all, pairs}});
+  }
+  std::sort(walls.begin(), walls.end());
+  res.median_calibration_wall_s = walls.empty() ? 0.0 : walls[walls.size() / 2];
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
+  writeCoverage(study, options, res);
   return res;
 }
 

@@ -40,8 +40,10 @@ struct CoverageOptions {
   std::uint64_t first_seed = 1001;   ///< noise seed of the first data set
   std::vector<std::string> assemblies;  ///< empty: every assembly of the study
   CalibrationOptions calibration;    ///< as `twin calibrate` would use (CalibrationOptions::fromStudy)
-  std::string out_dir;
+  std::string out_dir;               ///< required
   std::string command;               ///< recorded in coverage.json
+  /// Throws InputError whose where() is "coverage.<field>" (common/validate.hpp), then validates
+  /// `calibration`. runCoverage calls it.
   void validate() const;
 };
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::calib {
 namespace {
@@ -16,16 +17,12 @@ std::string fmt(double v) { return formatNumber(v, 17); }
 }  // namespace
 
 void FeasibleBoxOptions::validate() const {
-  const std::string where = "feasible box options";
-  if (!(initial_step > 0.0 && initial_step <= 1.0))
-    throw InputError(where, "initial_step must be in (0, 1] (scaled units), got " +
-                                fmt(initial_step));
-  if (!(growth > 1.0 && std::isfinite(growth)))
-    throw InputError(where, "growth must be > 1, got " + fmt(growth));
-  if (!(tolerance > 0.0 && tolerance < 1.0))
-    throw InputError(where, "tolerance must be in (0, 1) (scaled units), got " + fmt(tolerance));
-  if (max_evaluations < 1)
-    throw InputError(where, "max_evaluations must be >= 1, got " + std::to_string(max_evaluations));
+  const OptionCheck check("feasible_box");
+  check.require(initial_step > 0.0 && initial_step <= 1.0, "initial_step",
+                "must lie in (0, 1] (scaled units), got " + formatNumber(initial_step));
+  check.require(growth > 1.0 && std::isfinite(growth), "growth", "must be a finite number > 1, got " + formatNumber(growth));
+  check.open01("tolerance", tolerance);
+  check.atLeast("max_evaluations", max_evaluations, 1);
 }
 
 double BoxProblem::threshold() const { return sse_min * (1.0 + 2.0 * std::log(100.0) / n_data); }

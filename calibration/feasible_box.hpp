@@ -41,7 +41,7 @@ struct FeasibleBoxOptions {
   double growth = 2.0;         ///< geometric step growth factor, > 1
   double tolerance = 1e-3;     ///< bisection stops when the bracket is below this (scaled), > 0
   int max_evaluations = 60;    ///< budget per sweep (stepping + bisection), >= 1
-  /// Throws InputError naming the field, the value and the broken rule.
+  /// Throws InputError whose where() is "feasible_box.<field>" (common/validate.hpp).
   void validate() const;
 };
 

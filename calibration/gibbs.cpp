@@ -7,6 +7,7 @@
 
 #include "calibration/common.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::calib {
 namespace {
@@ -43,18 +44,123 @@ double sampleGamma(RandomStream& rng, double shape) {
 }
 
 void GibbsOptions::validate() const {
-  const std::string where = "gibbs options";
-  if (iterations < 1)
-    throw InputError(where, "iterations must be >= 1, got " + std::to_string(iterations));
-  if (burn_in < 0 || burn_in >= iterations)
-    throw InputError(where, "burn_in must be in [0, iterations = " + std::to_string(iterations) +
-                                "), got " + std::to_string(burn_in));
-  if (!(a >= 0.0 && std::isfinite(a))) throw InputError(where, "a must be >= 0, got " + fmt(a));
-  if (!(b >= 0.0 && std::isfinite(b))) throw InputError(where, "b must be >= 0, got " + fmt(b));
-  if (!std::isnan(initial_tau) && !(initial_tau > 0.0 && std::isfinite(initial_tau)))
-    throw InputError(where, "initial_tau must be finite and > 0 (or NaN for the default n/SSE_min), "
-                            "got " + fmt(initial_tau));
+  const OptionCheck check("gibbs");
+  check.atLeast("iterations", iterations, 1);
+  check.atLeast("burn_in", burn_in, 0);
+  check.require(burn_in < iterations, "burn_in",
+                "must be below iterations (" + std::to_string(iterations) + "), got " + std::to_string(burn_in));
+  check.nonNegative("a", a);
+  check.nonNegative("b", b);
+  if (!std::isnan(initial_tau))
+    check.require(initial_tau > 0.0 && std::isfinite(initial_tau), "initial_tau",
+                  "must be a finite number > 0 (or NaN for the default n/SSE_min), got " + fmt(initial_tau));
 }
+
+namespace {
+
+/// The finite design points sorted by SSE (ties by index: deterministic), and what every
+/// iteration needs of them.
+struct SortedDesign {
+  std::vector<int> order;          ///< design index of each finite point, by SSE
+  int failed = 0;                  ///< points with non-finite SSE (weight 0)
+  double sse_min = 0.0;
+  std::vector<double> half_delta;  ///< (SSE_m − SSE_min) / 2, sorted order
+  std::vector<double> rate;        ///< b + SSE_m / 2: the rate of τ | k
+  std::vector<double> omega;       ///< ω_m minus the largest, so <= 0 (empty: no design weights)
+  bool weighted = false;           ///< some ω_m differ
+};
+
+/// Sorts the finite points; throws InputError (naming `where`) for a negative or −inf SSE, no
+/// finite SSE at all, or b = 0 with SSE_min = 0.
+SortedDesign sortDesign(const std::vector<double>& sse, const GibbsOptions& options, const std::vector<double>& log_weight,
+                        const std::string& where) {
+  SortedDesign s;
+  s.order.reserve(sse.size());
+  for (std::size_t k = 0; k < sse.size(); ++k) {
+    if (std::isfinite(sse[k])) {
+      if (sse[k] < 0.0)
+        throw InputError(where, "SSE of design point " + std::to_string(k) +
+                                    " is negative: " + fmt(sse[k]));
+      s.order.push_back(static_cast<int>(k));
+    } else if (std::isnan(sse[k]) || sse[k] > 0.0) {
+      ++s.failed;
+    } else {
+      throw InputError(where, "SSE of design point " + std::to_string(k) + " is -inf");
+    }
+  }
+  if (s.order.empty())
+    throw InputError(where, "none of the " + std::to_string(sse.size()) +
+                                " design points has a finite SSE (all simulations failed?)");
+  std::stable_sort(s.order.begin(), s.order.end(), [&](int i, int j) {
+    return sse[static_cast<std::size_t>(i)] < sse[static_cast<std::size_t>(j)];
+  });
+  s.sse_min = sse[static_cast<std::size_t>(s.order.front())];
+  if (options.b == 0.0 && s.sse_min == 0.0)
+    throw InputError(where, "b = 0 needs SSE_k > 0 at every design point (the conditional rate "
+                            "b + SSE_k/2 would be 0), but design point " +
+                                std::to_string(s.order.front()) + " has SSE 0");
+
+  const std::size_t m_all = s.order.size();
+  s.half_delta.resize(m_all);
+  s.rate.resize(m_all);
+  for (std::size_t m = 0; m < m_all; ++m) {
+    const double v = sse[static_cast<std::size_t>(s.order[m])];
+    s.half_delta[m] = 0.5 * (v - s.sse_min);
+    s.rate[m] = options.b + 0.5 * v;
+  }
+  // Design weights relative to the largest, so ω_m <= 0: exp(ω_m − τΔ_m/2) <= exp(−τΔ_m/2).
+  if (!log_weight.empty()) {
+    double mx = -std::numeric_limits<double>::infinity();
+    for (int k : s.order) mx = std::max(mx, log_weight[static_cast<std::size_t>(k)]);
+    s.omega.resize(m_all);
+    for (std::size_t m = 0; m < m_all; ++m) {
+      s.omega[m] = log_weight[static_cast<std::size_t>(s.order[m])] - mx;
+      s.weighted = s.weighted || s.omega[m] != 0.0;
+    }
+  }
+  return s;
+}
+
+/// One draw of k | τ: the cumulative weights over the sorted points (in `cum`, scratch of one
+/// slot per point), cut where exp() underflows to 0, searched for one uniform times their total.
+/// Returns the position in s.order.
+std::size_t drawPoint(const SortedDesign& s, double tau, RandomStream& rng, std::vector<double>& cum) {
+  const std::size_t m_all = s.order.size();
+  double total = 0.0;
+  std::size_t m = 0;
+  if (!s.weighted) {
+    for (; m < m_all; ++m) {
+      const double x = tau * s.half_delta[m];
+      if (x > kUnderflow) break;
+      total += std::exp(-x);
+      cum[m] = total;
+    }
+    DTWIN_CHECK(m >= 1 && total >= 1.0, "the best design point must carry weight 1");
+  } else {
+    // The largest log weight M first (the points are sorted by SSE, so once −τΔ/2 < M − 746 no
+    // later point can matter), then the cumulative sums of exp(ω − τΔ/2 − M) over that prefix.
+    double top = -std::numeric_limits<double>::infinity();
+    std::size_t end = 0;
+    for (; end < m_all; ++end) {
+      const double x = tau * s.half_delta[end];
+      if (-x < top - kUnderflow) break;
+      top = std::max(top, s.omega[end] - x);
+    }
+    for (; m < end; ++m) {
+      total += std::exp(s.omega[m] - tau * s.half_delta[m] - top);
+      cum[m] = total;
+    }
+    DTWIN_CHECK(m >= 1 && total >= 1.0, "the heaviest design point must carry weight 1");
+  }
+  const double target = rng.uniform() * total;
+  std::size_t pos = static_cast<std::size_t>(
+      std::upper_bound(cum.begin(), cum.begin() + static_cast<std::ptrdiff_t>(m), target) -
+      cum.begin());
+  if (pos >= m) pos = m - 1;  // rounding guard; target < total in exact arithmetic
+  return pos;
+}
+
+}  // namespace
 
 GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
                            const GibbsOptions& options, const std::vector<double>& log_weight) {
@@ -69,63 +175,18 @@ GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
   for (std::size_t k = 0; k < log_weight.size(); ++k)
     if (!std::isfinite(log_weight[k]))
       throw InputError(where, "log design weight of point " + std::to_string(k) + " is not finite");
-  // Finite points, sorted by SSE (ties by index: deterministic).
-  std::vector<int> order;
-  order.reserve(sse.size());
-  int failed = 0;
-  for (std::size_t k = 0; k < sse.size(); ++k) {
-    if (std::isfinite(sse[k])) {
-      if (sse[k] < 0.0)
-        throw InputError(where, "SSE of design point " + std::to_string(k) +
-                                    " is negative: " + fmt(sse[k]));
-      order.push_back(static_cast<int>(k));
-    } else if (std::isnan(sse[k]) || sse[k] > 0.0) {
-      ++failed;
-    } else {
-      throw InputError(where, "SSE of design point " + std::to_string(k) + " is -inf");
-    }
-  }
-  if (order.empty())
-    throw InputError(where, "none of the " + std::to_string(sse.size()) +
-                                " design points has a finite SSE (all simulations failed?)");
-  std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
-    return sse[static_cast<std::size_t>(i)] < sse[static_cast<std::size_t>(j)];
-  });
-  const double sse_min = sse[static_cast<std::size_t>(order.front())];
-  if (options.b == 0.0 && sse_min == 0.0)
-    throw InputError(where, "b = 0 needs SSE_k > 0 at every design point (the conditional rate "
-                            "b + SSE_k/2 would be 0), but design point " +
-                                std::to_string(order.front()) + " has SSE 0");
-
-  const std::size_t m_all = order.size();
-  std::vector<double> half_delta(m_all), rate(m_all), omega;
-  for (std::size_t m = 0; m < m_all; ++m) {
-    const double s = sse[static_cast<std::size_t>(order[m])];
-    half_delta[m] = 0.5 * (s - sse_min);
-    rate[m] = options.b + 0.5 * s;
-  }
-  // Design weights relative to the largest, so ω_m <= 0: exp(ω_m − τΔ_m/2) <= exp(−τΔ_m/2).
-  bool weighted = false;
-  if (!log_weight.empty()) {
-    double mx = -std::numeric_limits<double>::infinity();
-    for (int k : order) mx = std::max(mx, log_weight[static_cast<std::size_t>(k)]);
-    omega.resize(m_all);
-    for (std::size_t m = 0; m < m_all; ++m) {
-      omega[m] = log_weight[static_cast<std::size_t>(order[m])] - mx;
-      weighted = weighted || omega[m] != 0.0;
-    }
-  }
-  std::vector<double> cum(m_all);
+  const SortedDesign sorted = sortDesign(sse, options, log_weight, where);
+  std::vector<double> cum(sorted.order.size());
 
   const double shape = options.a + 0.5 * n_data;
   double tau = options.initial_tau;
-  if (std::isnan(tau)) tau = sse_min > 0.0 ? n_data / sse_min : shape / options.b;
+  if (std::isnan(tau)) tau = sorted.sse_min > 0.0 ? n_data / sorted.sse_min : shape / options.b;
 
   GibbsChains out;
   out.design_points = static_cast<int>(sse.size());
-  out.failed_points = failed;
+  out.failed_points = sorted.failed;
   out.n_data = n_data;
-  out.sse_min = sse_min;
+  out.sse_min = sorted.sse_min;
   out.initial_tau = tau;
   out.options = options;
   const auto kept = static_cast<std::size_t>(options.iterations - options.burn_in);
@@ -134,45 +195,11 @@ GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
 
   RandomStream rng(options.seed, kStreamGibbs, options.chain);
   for (int it = 0; it < options.iterations; ++it) {
-    // k | τ: cumulative weights over the sorted points, cut where exp() underflows to 0.
-    double total = 0.0;
-    std::size_t m = 0;
-    if (!weighted) {
-      for (; m < m_all; ++m) {
-        const double x = tau * half_delta[m];
-        if (x > kUnderflow) break;
-        total += std::exp(-x);
-        cum[m] = total;
-      }
-      DTWIN_CHECK(m >= 1 && total >= 1.0, "the best design point must carry weight 1");
-    } else {
-      // The largest log weight M first (the points are sorted by SSE, so once −τΔ/2 < M − 746 no
-      // later point can matter), then the cumulative sums of exp(ω − τΔ/2 − M) over that prefix.
-      double top = -std::numeric_limits<double>::infinity();
-      std::size_t end = 0;
-      for (; end < m_all; ++end) {
-        const double x = tau * half_delta[end];
-        if (-x < top - kUnderflow) break;
-        top = std::max(top, omega[end] - x);
-      }
-      for (; m < end; ++m) {
-        total += std::exp(omega[m] - tau * half_delta[m] - top);
-        cum[m] = total;
-      }
-      DTWIN_CHECK(m >= 1 && total >= 1.0, "the heaviest design point must carry weight 1");
-    }
-    const double target = rng.uniform() * total;
-    std::size_t pos = static_cast<std::size_t>(
-        std::upper_bound(cum.begin(), cum.begin() + static_cast<std::ptrdiff_t>(m), target) -
-        cum.begin());
-    if (pos >= m) pos = m - 1;  // rounding guard; target < total in exact arithmetic
-
-    // τ | k.
-    tau = sampleGamma(rng, shape) / rate[pos];
+    const std::size_t pos = drawPoint(sorted, tau, rng, cum);  // k | τ
+    tau = sampleGamma(rng, shape) / sorted.rate[pos];          // τ | k
     DTWIN_CHECK(tau > 0.0 && std::isfinite(tau), "tau draw must be finite and > 0");
-
     if (it >= options.burn_in) {
-      out.index.push_back(order[pos]);
+      out.index.push_back(sorted.order[pos]);
       out.tau.push_back(tau);
     }
   }

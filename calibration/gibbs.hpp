@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "calibration/common.hpp"
 #include "subsystems/random.hpp"
 
 namespace dtwin::calib {
@@ -54,15 +55,15 @@ namespace dtwin::calib {
 double sampleGamma(RandomStream& rng, double shape);
 
 struct GibbsOptions {
-  int iterations = 50000;  ///< total iterations S (paper: 50000), including burn-in
-  int burn_in = 15000;     ///< discarded from the start (paper: 15000); 0 <= burn_in < iterations
-  double a = 1e-3;         ///< prior shape of τ, >= 0
-  double b = 1e-3;         ///< prior rate of τ, >= 0 (b = 0 needs SSE_k > 0 for every point)
+  int iterations = kDefaultGibbsIterations;  ///< total iterations S (paper: 50000), including burn-in
+  int burn_in = kDefaultGibbsBurnIn;         ///< discarded from the start (paper: 15000); 0 <= burn_in < iterations
+  double a = kDefaultTauPrior;  ///< prior shape of τ, finite, >= 0
+  double b = kDefaultTauPrior;  ///< prior rate of τ, finite, >= 0 (b = 0 needs SSE_k > 0 for every point)
   std::uint64_t seed = 1;
   std::uint64_t chain = 0;  ///< stream index: independent chains from one seed
   /// τ at the start. NaN (default) means n / SSE_min, or (a + n/2)/b when SSE_min = 0.
   double initial_tau = std::numeric_limits<double>::quiet_NaN();
-  /// Throws InputError naming the field, the value and the broken rule.
+  /// Throws InputError whose where() is "gibbs.<field>" (common/validate.hpp).
   void validate() const;
 };
 

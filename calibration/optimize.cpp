@@ -10,6 +10,7 @@
 
 #include "calibration/lhs.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::calib {
 namespace {
@@ -79,21 +80,17 @@ double objective(unsigned n, const double* z, double* grad, void* data) {
 }  // namespace
 
 void OptimizerOptions::validate() const {
-  const std::string where = "optimizer options";
-  if (std::find(std::begin(kAllowedAlgorithms), std::end(kAllowedAlgorithms), algorithm) ==
-      std::end(kAllowedAlgorithms))
-    throw InputError(where, "algorithm must be one of " + allowedList() + ", got '" + algorithm +
-                                "'");
-  if (!(xtol_rel >= 0.0)) throw InputError(where, "xtol_rel must be >= 0, got " + fmt(xtol_rel));
-  if (!(xtol_abs >= 0.0)) throw InputError(where, "xtol_abs must be >= 0, got " + fmt(xtol_abs));
-  if (!(ftol_rel >= 0.0)) throw InputError(where, "ftol_rel must be >= 0, got " + fmt(ftol_rel));
-  if (!(ftol_abs >= 0.0)) throw InputError(where, "ftol_abs must be >= 0, got " + fmt(ftol_abs));
-  if (maxeval < 1) throw InputError(where, "maxeval must be >= 1, got " + std::to_string(maxeval));
-  if (!(initial_step > 0.0 && initial_step <= 0.5))
-    throw InputError(where, "initial_step must be in (0, 0.5] (scaled units), got " +
-                                fmt(initial_step));
-  if (screen_per_start < 0)
-    throw InputError(where, "screen_per_start must be >= 0, got " + std::to_string(screen_per_start));
+  const OptionCheck check("optimizer");
+  check.require(std::find(std::begin(kAllowedAlgorithms), std::end(kAllowedAlgorithms), algorithm) != std::end(kAllowedAlgorithms),
+                "algorithm", "must be one of " + allowedList() + ", got '" + algorithm + "'");
+  check.nonNegative("xtol_rel", xtol_rel);
+  check.nonNegative("xtol_abs", xtol_abs);
+  check.nonNegative("ftol_rel", ftol_rel);
+  check.nonNegative("ftol_abs", ftol_abs);
+  check.atLeast("maxeval", maxeval, 1);
+  check.require(initial_step > 0.0 && initial_step <= 0.5, "initial_step",
+                "must lie in (0, 0.5] (scaled units), got " + formatNumber(initial_step));
+  check.atLeast("screen_per_start", screen_per_start, 0);
 }
 
 std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lower, const std::vector<double>& upper,

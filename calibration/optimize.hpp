@@ -64,7 +64,7 @@ struct OptimizerOptions {
   int maxeval = 2000;        ///< evaluation budget per start (>= 1)
   double initial_step = 0.1; ///< initial step in scaled units, in (0, 0.5]
   int screen_per_start = 25; ///< screening points per start (0: no screening), >= 0
-  /// Throws InputError naming the field, the value and the broken rule.
+  /// Throws InputError whose where() is "optimizer.<field>" (common/validate.hpp).
   void validate() const;
 };
 

@@ -76,13 +76,17 @@ void ProfileOptions::validate() const {
   if (!(level > 0.0 && level < 1.0)) throw InputError(where, "level must lie in (0, 1), got " + formatNumber(level));
   if (steps < 0) throw InputError(where, "steps must be >= 0, got " + std::to_string(steps));
   if (lm_iterations < 1) throw InputError(where, "lm_iterations must be >= 1, got " + std::to_string(lm_iterations));
+  if (restarts < 0) throw InputError(where, "restarts must be >= 0, got " + std::to_string(restarts));
+  if (polish_iterations < 0) throw InputError(where, "polish_iterations must be >= 0, got " + std::to_string(polish_iterations));
 }
 
 nlohmann::json ProfileOptions::toJson() const {
   return {{"rule", "{v : SSE_profile(v) <= SSE* + c s^2}, c = F(1, n-d) quantile, s^2 = SSE*/(n-d)"},
           {"level", level},
           {"steps_per_end", steps},
-          {"lm_iterations", lm_iterations}};
+          {"lm_iterations", lm_iterations},
+          {"restarts", restarts},
+          {"polish_iterations", polish_iterations}};
 }
 
 ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>& sse, int n_data, const std::vector<double>& lower,
@@ -94,6 +98,8 @@ ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>
   p.lower = lower;
   p.upper = upper;
   p.n_data = n_data;
+  p.points = points;
+  p.sse = sse;
   p.dof = n_data > d ? n_data - d : n_data;
   p.sse_best = std::numeric_limits<double>::infinity();
   for (double s : sse)
@@ -127,6 +133,9 @@ ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>
   return p;
 }
 
+// About 160 lines, kept whole on purpose: the secant / regula falsi search shares its bracket
+// (v_in, g_in, v_prev, g_prev, v_out, g_out) and the subspace coordinates with the restarts of
+// each step; the scaling helpers and the restart choice are the lambdas above the loop.
 ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index, const ProfileOptions& options) {
   options.validate();
   const int d = static_cast<int>(plan.lower.size());
@@ -201,6 +210,33 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   Eigen::VectorXd u(d - 1);
   for (int k = 0, c = 0; k < d; ++k)
     if (k != j) u(c++) = z(k);
+  // Restart points for a profile point at v: the evaluated points of lowest SSE with |z_j − v| <=
+  // band, their other coordinates (not the warm start's own), best first.
+  auto restartsNear = [&](double v, double band, const Eigen::VectorXd& warm) {
+    std::vector<std::pair<double, Eigen::VectorXd>> cand;
+    for (Eigen::Index q = 0; q < plan.points.rows(); ++q) {
+      const double f = plan.sse[static_cast<std::size_t>(q)];
+      if (!std::isfinite(f)) continue;
+      std::vector<double> th(static_cast<std::size_t>(d));
+      for (int k = 0; k < d; ++k) th[static_cast<std::size_t>(k)] = plan.points(q, k);
+      const Eigen::VectorXd zq = scaled(th);
+      if (std::abs(zq(j) - v) > band) continue;
+      Eigen::VectorXd uq(d - 1);
+      for (int k = 0, c = 0; k < d; ++k)
+        if (k != j) uq(c++) = zq(k);
+      if ((uq - warm).norm() < 1e-3) continue;
+      cand.emplace_back(f, uq);
+    }
+    std::stable_sort(cand.begin(), cand.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Eigen::VectorXd> out;
+    for (const auto& c : cand) {
+      if (static_cast<int>(out.size()) >= options.restarts) break;
+      bool distinct = true;
+      for (const auto& o : out) distinct = distinct && (o - c.second).norm() >= 1e-3;
+      if (distinct) out.push_back(c.second);
+    }
+    return out;
+  };
   for (int step = 0; step < options.steps; ++step) {
     double target;
     if (!have_out) {
@@ -218,7 +254,27 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     z0(j) = target;
     Eigen::VectorXd un = u, r;
     double f = 0.0;
-    const bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, un, r, f);
+    bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, un, r, f);
+    // Outside after the warm start: a curved valley may need more iterations than a straight one.
+    if (ok && f > plan.threshold && options.polish_iterations > 0) {
+      Eigen::VectorXd up = un, rp;
+      double fp = 0.0;
+      if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp) && fp < f) {
+        f = fp;
+        un = up;
+      }
+    }
+    if (!(ok && f <= plan.threshold))
+      for (const Eigen::VectorXd& start : restartsNear(target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un)) {
+        Eigen::VectorXd ur = start, rr;
+        double fr = 0.0;
+        if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr) && (!ok || fr < f)) {
+          ok = true;
+          f = fr;
+          un = ur;
+        }
+        if (ok && f <= plan.threshold) break;
+      }
     if (ok && f <= plan.threshold) {
       v_prev = v_in;
       g_prev = g_in;

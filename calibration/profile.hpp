@@ -27,6 +27,13 @@
 //    the end) while no outside point is known, at most 4 times the distance covered so far, then
 //    regula falsi in the bracket [last inside, first outside], kept 10 % inside it. At most `steps`
 //    profile points, or until the bracket is below 1 % of the interval, or the bound is reached.
+//    A warm start that ends above the threshold first gets `polish_iterations` more LM iterations
+//    (a curved valley needs more than a straight one). Where the SSE has several basins, a warm
+//    start can stop in the wrong one and overstate
+//    SSE_p(v), cutting the interval short. So when the warm start ends above the threshold, the
+//    step is retried from up to `restarts` other starts: the evaluated points of lowest SSE whose
+//    θ_j lies near v (within the step just taken, at least 5 % of the interval), moved to θ_j = v;
+//    the lowest fit counts.
 //    The design places few points where the posterior has little volume; the profile reaches there.
 //    Every end is a point whose SSE is within the threshold, so an end can only be short of the
 //    true profile end, never beyond it; a short end is what the coverage benchmark would show.
@@ -46,8 +53,10 @@ double studentQuantile(double p, double nu);
 
 struct ProfileOptions {
   double level = 0.95;    ///< in (0, 1)
-  int steps = 6;          ///< profile points per end (0: the evaluated points only)
+  int steps = 12;         ///< profile points per end (0: the evaluated points only)
   int lm_iterations = 2;  ///< Levenberg–Marquardt iterations per profile point, >= 1
+  int restarts = 2;       ///< extra starts of a profile point whose warm start ends outside, >= 0
+  int polish_iterations = 2;  ///< further LM iterations, from the warm start's end, when it ends outside, >= 0
   void validate() const;
   nlohmann::json toJson() const;
 };
@@ -59,6 +68,8 @@ struct ProfilePlan {
   double sse_best = 0.0, s2 = 0.0, c = 0.0, threshold = 0.0;
   std::vector<std::vector<double>> low_point, high_point;  ///< θ at each parameter's ends
   std::vector<double> low_sse, high_sse;
+  Eigen::MatrixXd points;                  ///< every evaluated point (physical), for restarts
+  std::vector<double> sse;                 ///< their SSE (+inf: failed)
 };
 
 /// `points` N x d (physical), `sse` N (+inf: failed). Throws InputError when no SSE is finite.

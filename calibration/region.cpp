@@ -9,6 +9,7 @@
 #include "calibration/subspace_lm.hpp"
 #include "calibration/eigen_json.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::calib {
 namespace {
@@ -186,16 +187,16 @@ Region regionFromBox(const FeasibleBox& box, const BoxProblem& problem) {
 
 // ------------------------------------------------------------------ joint region
 void JointRegionOptions::validate() const {
-  const std::string where = "joint region options";
-  if (!(jacobian_step > 0.0 && jacobian_step <= 0.5))
-    throw InputError(where, "jacobian_step must be in (0, 0.5] (scaled units), got " + formatNumber(jacobian_step));
-  if (!(margin >= 1.0 && std::isfinite(margin))) throw InputError(where, "margin must be >= 1, got " + formatNumber(margin));
-  if (!(relative_tolerance > 0.0 && relative_tolerance < 1.0))
-    throw InputError(where, "relative_tolerance must be in (0, 1), got " + formatNumber(relative_tolerance));
-  if (!(growth > 1.0 && std::isfinite(growth))) throw InputError(where, "growth must be > 1, got " + formatNumber(growth));
-  if (max_evaluations < 2) throw InputError(where, "max_evaluations must be >= 2, got " + std::to_string(max_evaluations));
-  if (!(ridge_ratio >= 1.0 && std::isfinite(ridge_ratio))) throw InputError(where, "ridge_ratio must be >= 1, got " + formatNumber(ridge_ratio));
-  if (ridge_steps < 0) throw InputError(where, "ridge_steps must be >= 0, got " + std::to_string(ridge_steps));
+  const OptionCheck check("joint_region");
+  check.require(jacobian_step > 0.0 && jacobian_step <= 0.5, "jacobian_step",
+                "must lie in (0, 0.5] (scaled units), got " + formatNumber(jacobian_step));
+  check.require(margin >= 1.0 && std::isfinite(margin), "margin", "must be a finite number >= 1, got " + formatNumber(margin));
+  check.open01("relative_tolerance", relative_tolerance);
+  check.require(growth > 1.0 && std::isfinite(growth), "growth", "must be a finite number > 1, got " + formatNumber(growth));
+  check.atLeast("max_evaluations", max_evaluations, 2);
+  check.require(ridge_ratio >= 1.0 && std::isfinite(ridge_ratio), "ridge_ratio",
+                "must be a finite number >= 1, got " + formatNumber(ridge_ratio));
+  check.atLeast("ridge_steps", ridge_steps, 0);
 }
 
 nlohmann::json JointRegionOptions::toJson() const {

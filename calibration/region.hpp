@@ -138,7 +138,8 @@ struct JointRegionOptions {
   double growth = 2.0;          ///< sweep step growth, > 1
   int max_evaluations = 40;     ///< per sweep, >= 2
   double ridge_ratio = 100.0;   ///< trace every axis with λ_i <= ridge_ratio · λ_min, >= 1
-  int ridge_steps = 30;         ///< steps per ridge trace, halvings included (0: no traces)
+  int ridge_steps = 30;         ///< steps per ridge trace, halvings included (0: no traces), >= 0
+  /// Throws InputError whose where() is "joint_region.<field>" (common/validate.hpp).
   void validate() const;
   nlohmann::json toJson() const;
 };

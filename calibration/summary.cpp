@@ -10,15 +10,14 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::calib {
 
 void SummaryOptions::validate() const {
-  if (!(dominance_threshold > 0.0 && dominance_threshold <= 1.0)) {
-    std::ostringstream os;
-    os << "dominance_threshold must be in (0, 1], got " << dominance_threshold;
-    throw InputError("posterior summary options", os.str());
-  }
+  const OptionCheck check("summary");
+  check.require(dominance_threshold > 0.0 && dominance_threshold <= 1.0, "dominance_threshold",
+                "must lie in (0, 1], got " + formatNumber(dominance_threshold));
 }
 
 double quantileSorted(const std::vector<double>& sorted, double p) {

@@ -37,6 +37,7 @@ struct DrawSummary {
 
 struct SummaryOptions {
   double dominance_threshold = 0.9;  ///< in (0, 1]; flag when one point's share exceeds it
+  /// Throws InputError whose where() is "summary.<field>" (common/validate.hpp).
   void validate() const;
 };
 

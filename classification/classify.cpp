@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::classify {
 
@@ -56,29 +57,27 @@ std::string fixed(double v, int decimals) {
 
 }  // namespace
 
-void ClassifyOptions::validate(int models) const {
-  const std::string where = "classification options";
-  if (!(tie_tolerance >= 0.0 && std::isfinite(tie_tolerance)))
-    throw InputError(where + ": tie_tolerance", "must be >= 0 and finite, got " +
-                                                    num(tie_tolerance));
-  if (!model_ids.empty() && static_cast<int>(model_ids.size()) != models)
-    throw InputError(where + ": model_ids", "has " + std::to_string(model_ids.size()) +
-                                                " entries, expected " + std::to_string(models) +
-                                                " (one per model)");
+void ClassifyOptions::validate() const {
+  const OptionCheck check("classify");
+  check.nonNegative("tie_tolerance", tie_tolerance);
   if (prior.empty()) return;
-  if (static_cast<int>(prior.size()) != models)
-    throw InputError(where + ": prior", "has " + std::to_string(prior.size()) +
-                                            " entries, expected " + std::to_string(models) +
-                                            " (one per model)");
   double sum = 0.0;
   for (std::size_t m = 0; m < prior.size(); ++m) {
-    if (!(std::isfinite(prior[m]) && prior[m] > 0.0))
-      throw InputError(where + ": prior[" + std::to_string(m) + "]",
-                       "must be > 0 and finite, got " + num(prior[m]));
+    check.positive("prior[" + std::to_string(m) + "]", prior[m]);
     sum += prior[m];
   }
-  if (std::abs(sum - 1.0) > 1e-9)
-    throw InputError(where + ": prior", "must sum to 1 within 1e-9, got " + num(sum, 17));
+  check.require(std::abs(sum - 1.0) <= 1e-9, "prior", "must sum to 1 within 1e-9, got " + num(sum, 17));
+}
+
+void ClassifyOptions::validate(int models) const {
+  validate();
+  const OptionCheck check("classify");
+  const auto perModel = [&](const char* field, std::size_t entries) {
+    check.require(entries == 0 || static_cast<int>(entries) == models, field,
+                  "has " + std::to_string(entries) + " entries, expected " + std::to_string(models) + " (one per model)");
+  };
+  perModel("model_ids", model_ids.size());
+  perModel("prior", prior.size());
 }
 
 double logSumExp(const Eigen::Ref<const Eigen::VectorXd>& v) {

@@ -44,9 +44,12 @@ struct ClassifyOptions {
   std::vector<double> prior;
   /// Names used in the reports, one per model; empty means "M1", "M2", ... (index + 1).
   std::vector<std::string> model_ids;
-  /// Relative tolerance for ties between log posteriors, >= 0.
+  /// Relative tolerance for ties between log posteriors, finite and >= 0.
   double tie_tolerance = 1e-12;
-  /// Throws InputError naming the field, the value and the rule.
+  /// InputError whose where() is "classify.<field>" (common/validate.hpp): tie_tolerance, each
+  /// prior finite and > 0, the priors summing to 1 within 1e-9.
+  void validate() const;
+  /// validate(), and `prior` and `model_ids` each empty or with one entry per model.
   void validate(int models) const;
 };
 

@@ -14,6 +14,7 @@
 #include "classification/shrinkage.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -44,10 +45,15 @@ nlohmann::json readJsonFile(const fs::path& p) {
 }  // namespace
 
 void FieldClassifyOptions::validate() const {
-  if (covariance != "auto" && covariance != "sample" && covariance != "ledoit-wolf")
-    throw InputError("covariance", "must be auto, sample or ledoit-wolf, got '" + covariance + "'");
-  if (!(std::isfinite(threshold) && threshold > 0)) throw InputError("threshold", "must be a finite number > 0 (on 2 ln B)");
-  if (!(tie_tolerance >= 0)) throw InputError("tie tolerance", "must be >= 0");
+  const OptionCheck check("field_classify");
+  std::set<std::string> seen;
+  for (const auto& id : assemblies) check.require(seen.insert(id).second, "assemblies", id + " appears twice");
+  check.require(covariance == "auto" || covariance == "sample" || covariance == "ledoit-wolf", "covariance",
+                "must be auto, sample or ledoit-wolf, got '" + covariance + "'");
+  for (const auto& [id, p] : prior)
+    check.require(std::isfinite(p) && p > 0, "prior", "the prior of " + id + " must be a finite number > 0, got " + formatNumber(p));
+  check.positive("threshold", threshold);
+  check.nonNegative("tie_tolerance", tie_tolerance);
   factor.validate();
 }
 
@@ -89,41 +95,34 @@ std::string FieldClassification::recordsCsv() const {
   return s;
 }
 
-FieldClassification classifyField(const Study& study, const FieldData& field, const std::string& field_channel,
-                                  const std::string& synthetic_dir, const FieldClassifyOptions& opt,
-                                  const nlohmann::json& field_info) {
-  opt.validate();
-  if (field.rowCount() == 0 || field.columnCount() == 0) throw InputError("field data", "holds no records");
-  const fs::path sdir(synthetic_dir);
-  if (!fs::is_directory(sdir)) throw InputError(synthetic_dir, "synthetic data folder not found (--synthetic)");
+namespace {
 
-  // Which assemblies.
+/// The assemblies to compare: those named by the options, else every assembly of the study with
+/// a synthesis in the folder.
+std::vector<AssemblySpec> comparedAssemblies(const Study& study, const fs::path& sdir, const FieldClassifyOptions& opt) {
   std::vector<AssemblySpec> targets;
   if (opt.assemblies.empty()) {
     for (const auto& a : study.assemblies())
       if (fs::exists(sdir / a.id / "synthesis.json")) targets.push_back(a);
     if (targets.empty())
-      throw InputError(synthetic_dir, "holds no synthesis of any assembly of " + study.path +
+      throw InputError(sdir.string(), "holds no synthesis of any assembly of " + study.path +
                                           " (expected <id>/synthesis.json, written by twin synthesize)");
   } else {
-    std::set<std::string> seen;
-    for (const auto& id : opt.assemblies) {
-      if (!seen.insert(id).second) throw InputError("assemblies", id + " appears twice");
-      targets.push_back(study.assembly(id));
-    }
+    for (const auto& id : opt.assemblies) targets.push_back(study.assembly(id));
   }
-  const int M = static_cast<int>(targets.size());
-  const int p = static_cast<int>(field.columnCount());
-  const long R = static_cast<long>(field.rowCount());
+  return targets;
+}
 
-  FieldClassification out;
-  out.records = field.runs;
-  // Synthesis metadata, window and channel checks.
+/// Each target's synthesis.json, checked: finished (moments.bin exists), the field data's window
+/// and channel, a recorded cost (step 1 of the file header).
+std::vector<nlohmann::json> readSyntheses(const std::vector<AssemblySpec>& targets, const fs::path& sdir, const FieldData& field,
+                                          const std::string& field_channel) {
+  const int p = static_cast<int>(field.columnCount());
   std::vector<nlohmann::json> infos;
   for (const auto& a : targets) {
     const fs::path info_path = sdir / a.id / "synthesis.json";
     if (!fs::exists(info_path))
-      throw InputError(info_path.string(), "not found: synthesize assembly " + a.id + " first (twin synthesize --assembly " + a.id + ")");
+      throw InputError(info_path.string(), "not found: synthesize assembly " + a.id + " first (twin synthesize)");
     if (!fs::exists(sdir / a.id / "moments.bin"))
       throw InputError((sdir / a.id / "moments.bin").string(), "not found (the synthesis of " + a.id + " did not finish)");
     const nlohmann::json j = readJsonFile(info_path);
@@ -139,7 +138,7 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
         throw InputError(where, "the synthesis window (" + std::to_string(samples) + " samples, " + formatExact(w.at(0)) + ".." +
                                     formatExact(w.at(1)) + " s) is not the field data's (" + std::to_string(p) + " samples, " +
                                     formatExact(field.times_s.front()) + ".." + formatExact(field.times_s.back()) +
-                                    " s); synthesize with the field data's --window");
+                                    " s); synthesize with the field data's window (synthesis options t_begin_s, t_end_s)");
       const std::string ch = j.at("channel").get<std::string>();
       if (!field_channel.empty() && ch != field_channel)
         throw InputError(where, "the synthesis is of channel " + ch + ", the field data of " + field_channel);
@@ -150,136 +149,142 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
     }
     infos.push_back(j);
   }
+  return infos;
+}
 
-  // Covariance method.
+/// The covariance method for every assembly and why (step 2 of the file header): the requested
+/// one, or for "auto" Ledoit–Wolf when the smallest synthesis has fewer than 2p vectors.
+void chooseCovariance(const std::vector<nlohmann::json>& infos, int p, const std::string& requested, FieldClassification& out) {
   long n_min = std::numeric_limits<long>::max();
   for (const auto& j : infos) n_min = std::min(n_min, j.at("vectors").get<long>());
-  if (opt.covariance == "auto") {
-    if (n_min < 2L * p) {
-      out.covariance_method = "ledoit-wolf";
-      out.covariance_reason = "automatic: the smallest synthesis has n = " + std::to_string(n_min) + " vectors < 2p = " +
-                              std::to_string(2L * p) + " (p = " + std::to_string(p) +
-                              " samples per record), so the sample covariance is " +
-                              (n_min <= p ? "singular (n <= p)" : "poorly conditioned") +
-                              "; Ledoit-Wolf shrinkage towards a scaled identity is used for every assembly";
-    } else {
-      out.covariance_method = "sample";
-      out.covariance_reason = "automatic: every synthesis has n >= 2p = " + std::to_string(2L * p) +
-                              " vectors, so the unbiased sample covariance M2/(n-1) is used";
-    }
+  if (requested != "auto") {
+    out.covariance_method = requested;
+    out.covariance_reason = "requested (covariance = " + requested + ")";
+  } else if (n_min < 2L * p) {
+    out.covariance_method = "ledoit-wolf";
+    out.covariance_reason = "automatic: the smallest synthesis has n = " + std::to_string(n_min) + " vectors < 2p = " +
+                            std::to_string(2L * p) + " (p = " + std::to_string(p) +
+                            " samples per record), so the sample covariance is " +
+                            (n_min <= p ? "singular (n <= p)" : "poorly conditioned") +
+                            "; Ledoit-Wolf shrinkage towards a scaled identity is used for every assembly";
   } else {
-    out.covariance_method = opt.covariance;
-    out.covariance_reason = "requested (--covariance " + opt.covariance + ")";
+    out.covariance_method = "sample";
+    out.covariance_reason = "automatic: every synthesis has n >= 2p = " + std::to_string(2L * p) +
+                            " vectors, so the unbiased sample covariance M2/(n-1) is used";
   }
+}
 
-  // Records as columns.
+/// The field records as the columns of a p×R matrix.
+Eigen::MatrixXd recordsAsColumns(const FieldData& field) {
+  const int p = static_cast<int>(field.columnCount());
+  const long R = static_cast<long>(field.rowCount());
   Eigen::MatrixXd Y(p, R);
   for (long r = 0; r < R; ++r)
     for (int k = 0; k < p; ++k) Y(k, r) = field.at(static_cast<std::size_t>(r), static_cast<std::size_t>(k));
+  return Y;
+}
 
-  out.log_likelihood.resize(R, M);
-  for (int m = 0; m < M; ++m) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const AssemblySpec& a = targets[static_cast<std::size_t>(m)];
-    const nlohmann::json& j = infos[static_cast<std::size_t>(m)];
-    AssemblyModelInfo info;
-    info.id = a.id;
-    info.label = a.label();
-    info.dir = (sdir / a.id).string();
-    info.covariance = out.covariance_method;
-    info.cost_s_per_s = j.at("cost").at("wall_s_per_simulated_s_median").get<double>();
-    info.synthesis = {{"fingerprint", j.value("fingerprint", "")},
-                      {"draws", j.value("draws", 0L)},
-                      {"roads_per_draw", j.value("roads_per_draw", 0L)},
-                      {"road_library", j.value("road_library", 0L)},
-                      {"vectors", j.value("vectors", 0L)},
-                      {"failures", j.value("failures", 0L)},
-                      {"seed", j.value("seed", std::uint64_t{0})},
-                      {"posterior", j.value("posterior", nlohmann::json())},
-                      {"cost", j.at("cost")}};
-    Eigen::VectorXd mean;
-    Eigen::MatrixXd cov;
-    {
-      const std::string mpath = (sdir / a.id / "moments.bin").string();
-      const MomentAccumulator acc = MomentAccumulator::load(mpath);
-      if (acc.dimension() != p) throw InputError(mpath, "dimension " + std::to_string(acc.dimension()) + " differs from the field data's " + std::to_string(p));
-      if (acc.count() < 2) throw InputError(mpath, "holds fewer than 2 vectors; no covariance");
-      info.vectors = acc.count();
-      info.dimension = acc.dimension();
-      mean = acc.mean();
-      if (out.covariance_method == "ledoit-wolf") {
-        if (!acc.tracksFourthMoment())
-          throw InputError(mpath, "was synthesized without the fourth moment, which Ledoit-Wolf needs; resynthesize "
-                                  "(twin synthesize tracks it by default) or use --covariance sample");
-        LedoitWolfEstimate lw = calcLedoitWolf(acc, true);
-        info.shrinkage_intensity = lw.intensity;
-        cov = std::move(lw.covariance);
-      } else {
-        cov = acc.covariance();
-      }
+/// One assembly's Gaussian model (steps 2–4 of the file header): its moments, the covariance by
+/// `method`, the factor, and ℓ of every record (column of Y) into `loglik`; one assembly's p×p
+/// matrices at a time.
+AssemblyModelInfo fitAssembly(const AssemblySpec& a, const nlohmann::json& j, const fs::path& sdir, const std::string& method,
+                              const FactorOptions& factor, const Eigen::MatrixXd& Y, Eigen::Ref<Eigen::VectorXd> loglik) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int p = static_cast<int>(Y.rows());
+  AssemblyModelInfo info;
+  info.id = a.id;
+  info.label = a.label();
+  info.dir = (sdir / a.id).string();
+  info.covariance = method;
+  info.cost_s_per_s = j.at("cost").at("wall_s_per_simulated_s_median").get<double>();
+  info.synthesis = {{"fingerprint", j.value("fingerprint", "")},
+                    {"draws", j.value("draws", 0L)},
+                    {"roads_per_draw", j.value("roads_per_draw", 0L)},
+                    {"road_library", j.value("road_library", 0L)},
+                    {"vectors", j.value("vectors", 0L)},
+                    {"failures", j.value("failures", 0L)},
+                    {"seed", j.value("seed", std::uint64_t{0})},
+                    {"posterior", j.value("posterior", nlohmann::json())},
+                    {"cost", j.at("cost")}};
+  Eigen::VectorXd mean;
+  Eigen::MatrixXd cov;
+  {
+    const std::string mpath = (sdir / a.id / "moments.bin").string();
+    const MomentAccumulator acc = MomentAccumulator::load(mpath);
+    if (acc.dimension() != p) throw InputError(mpath, "dimension " + std::to_string(acc.dimension()) + " differs from the field data's " + std::to_string(p));
+    if (acc.count() < 2) throw InputError(mpath, "holds fewer than 2 vectors; no covariance");
+    info.vectors = acc.count();
+    info.dimension = acc.dimension();
+    mean = acc.mean();
+    if (method == "ledoit-wolf") {
+      if (!acc.tracksFourthMoment())
+        throw InputError(mpath, "was synthesized without the fourth moment, which Ledoit-Wolf needs; resynthesize "
+                                "(twin synthesize tracks it by default) or choose the sample covariance (option covariance)");
+      LedoitWolfEstimate lw = calcLedoitWolf(acc, true);
+      info.shrinkage_intensity = lw.intensity;
+      cov = std::move(lw.covariance);
+    } else {
+      cov = acc.covariance();
     }
-    try {
-      const GaussianModel g(mean, cov, opt.factor);
-      cov.resize(0, 0);
-      info.factorization = g.factorization();
-      info.jitter = g.jitter();
-      info.jitter_absolute = g.jitterAbsolute();
-      info.log_det = g.logDeterminant();
-      info.relative_min_pivot = g.relativeMinPivot();
-      out.log_likelihood.col(m) = g.logPdfBatch(Y);
-    } catch (const InputError& e) {
-      throw InputError("assembly " + a.id + " (" + out.covariance_method + " covariance)", e.what());
-    }
-    info.build_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    out.models.push_back(std::move(info));
   }
-  for (long r = 0; r < R; ++r)
-    for (int m = 0; m < M; ++m)
-      if (std::isnan(out.log_likelihood(r, m)))
-        throw InputError("field record " + std::to_string(field.runs[static_cast<std::size_t>(r)]), "log likelihood is NaN");
+  try {
+    const GaussianModel g(mean, cov, factor);
+    cov.resize(0, 0);
+    info.factorization = g.factorization();
+    info.jitter = g.jitter();
+    info.jitter_absolute = g.jitterAbsolute();
+    info.log_det = g.logDeterminant();
+    info.relative_min_pivot = g.relativeMinPivot();
+    loglik = g.logPdfBatch(Y);
+  } catch (const InputError& e) {
+    throw InputError("assembly " + a.id + " (" + method + " covariance)", e.what());
+  }
+  info.build_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return info;
+}
 
-  // Classification.
+/// The options of classifyRecords: the compared ids, the tie tolerance, and the priors in
+/// comparison order (every compared assembly needs one when any is given).
+ClassifyOptions recordOptions(const std::vector<AssemblySpec>& targets, const FieldClassifyOptions& opt) {
+  const OptionCheck check("field_classify");
   ClassifyOptions co;
   for (const auto& a : targets) co.model_ids.push_back(a.id);
   co.tie_tolerance = opt.tie_tolerance;
-  if (!opt.prior.empty()) {
-    for (const auto& [id, v] : opt.prior) {
-      bool known = false;
-      for (const auto& a : targets) known = known || a.id == id;
-      if (!known) throw InputError("prior", id + " is not among the compared assemblies");
-    }
-    for (const auto& a : targets) {
-      double v = -1;
-      for (const auto& [id, pv] : opt.prior)
-        if (id == a.id) v = pv;
-      if (v < 0) throw InputError("prior", "gives no probability for " + a.id + " (give one for every compared assembly)");
-      co.prior.push_back(v);
-    }
+  if (opt.prior.empty()) return co;
+  for (const auto& [id, v] : opt.prior) {
+    bool known = false;
+    for (const auto& a : targets) known = known || a.id == id;
+    check.require(known, "prior", id + " is not among the compared assemblies");
   }
-  out.result = classifyRecords(out.log_likelihood, co);
+  for (const auto& a : targets) {
+    double v = -1;
+    for (const auto& [id, pv] : opt.prior)
+      if (id == a.id) v = pv;
+    check.require(v >= 0, "prior", "gives no probability for " + a.id + " (give one for every compared assembly)");
+    co.prior.push_back(v);
+  }
+  return co;
+}
 
-  // Cost-aware recommendation on the joint evidence.
-  std::vector<ModelCost> mc;
-  for (int m = 0; m < M; ++m)
-    mc.push_back({targets[static_cast<std::size_t>(m)].id, out.result.total_log_likelihood[m], out.models[static_cast<std::size_t>(m)].cost_s_per_s});
-  RecommendOptions ro;
-  ro.threshold = opt.threshold;
-  out.recommendation = recommendAssembly(mc, ro);
-
-  // summary.json
+/// summary.json (FieldClassification::summary) of a finished classification.
+nlohmann::json classificationSummary(const Study& study, const FieldData& field, const std::string& field_channel,
+                                     const std::string& synthetic_dir, const FieldClassifyOptions& opt,
+                                     const nlohmann::json& field_info, const std::vector<std::string>& ids,
+                                     const FieldClassification& out) {
+  const int M = static_cast<int>(ids.size());
   nlohmann::json s;
   s["program"] = programInfo();
   s["command"] = opt.command;
   s["created_utc"] = utcNow();
   s["study"] = study.path;
   s["field"] = field_info.is_null() ? nlohmann::json::object() : field_info;
-  s["field"]["records"] = R;
-  s["field"]["samples"] = p;
+  s["field"]["records"] = static_cast<long>(field.rowCount());
+  s["field"]["samples"] = static_cast<int>(field.columnCount());
   s["field"]["window_s"] = {field.times_s.front(), field.times_s.back()};
   if (!field_channel.empty()) s["field"]["channel"] = field_channel;
   s["synthetic_dir"] = synthetic_dir;
-  s["assemblies"] = co.model_ids;
-  for (int m = 0; m < M; ++m) s["prior"][co.model_ids[static_cast<std::size_t>(m)]] = std::exp(out.result.log_prior[m]);
+  s["assemblies"] = ids;
+  for (int m = 0; m < M; ++m) s["prior"][ids[static_cast<std::size_t>(m)]] = std::exp(out.result.log_prior[m]);
   s["covariance"] = {{"method", out.covariance_method}, {"reason", out.covariance_reason}, {"requested", opt.covariance}};
   for (int m = 0; m < M; ++m) {
     const auto& info = out.models[static_cast<std::size_t>(m)];
@@ -309,18 +314,18 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
   s["tied_records"] = out.result.tied_records;
   s["bayes_factors"] = nlohmann::json::array();
   for (const auto& pr : out.result.pairs)
-    s["bayes_factors"].push_back({{"a", co.model_ids[static_cast<std::size_t>(pr.a)]},
-                                  {"b", co.model_ids[static_cast<std::size_t>(pr.b)]},
+    s["bayes_factors"].push_back({{"a", ids[static_cast<std::size_t>(pr.a)]},
+                                  {"b", ids[static_cast<std::size_t>(pr.b)]},
                                   {"two_ln_b", jsonNumber(pr.two_ln_b)},
                                   {"log_bayes_factor", jsonNumber(pr.log_bayes_factor)},
-                                  {"favoured", pr.favoured >= 0 ? nlohmann::json(co.model_ids[static_cast<std::size_t>(pr.favoured)]) : nlohmann::json(nullptr)},
+                                  {"favoured", pr.favoured >= 0 ? nlohmann::json(ids[static_cast<std::size_t>(pr.favoured)]) : nlohmann::json(nullptr)},
                                   {"category", pr.category},
                                   {"meaning", "2 ln B_ab = 2 sum_r (loglik_a - loglik_b) over all records; Kass-Raftery scale"}});
   const auto& rec = out.recommendation;
   s["recommended"] = rec.recommended;
   s["recommendation_sentence"] = rec.explanation;
   nlohmann::json tl = nlohmann::json::object();
-  for (int m = 0; m < M; ++m) tl[co.model_ids[static_cast<std::size_t>(m)]] = jsonNumber(rec.two_ln_b[static_cast<std::size_t>(m)]);
+  for (int m = 0; m < M; ++m) tl[ids[static_cast<std::size_t>(m)]] = jsonNumber(rec.two_ln_b[static_cast<std::size_t>(m)]);
   s["recommendation"] = {{"recommended", rec.recommended},
                          {"best_by_evidence", rec.best},
                          {"candidates", rec.candidates},
@@ -331,13 +336,56 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
                                   "evidence is not decisively worse than the best: 2 (L_best - L_m) < threshold"},
                          {"sentence", rec.explanation}};
   s["report"] = out.result.fullReport();
-  out.summary = std::move(s);
+  return s;
+}
+
+}  // namespace
+
+// The steps of the file header: the compared assemblies and their syntheses → the covariance
+// method → one Gaussian model per assembly and ℓ of every record → classification →
+// recommendation → summary.json.
+FieldClassification classifyField(const Study& study, const FieldData& field, const std::string& field_channel,
+                                  const std::string& synthetic_dir, const FieldClassifyOptions& opt,
+                                  const nlohmann::json& field_info) {
+  opt.validate();
+  if (field.rowCount() == 0 || field.columnCount() == 0) throw InputError("field data", "holds no records");
+  const fs::path sdir(synthetic_dir);
+  if (!fs::is_directory(sdir)) throw InputError(synthetic_dir, "synthetic data folder not found");
+  const std::vector<AssemblySpec> targets = comparedAssemblies(study, sdir, opt);
+  const int M = static_cast<int>(targets.size());
+  const int p = static_cast<int>(field.columnCount());
+
+  FieldClassification out;
+  out.records = field.runs;
+  const std::vector<nlohmann::json> infos = readSyntheses(targets, sdir, field, field_channel);
+  chooseCovariance(infos, p, opt.covariance, out);
+  const Eigen::MatrixXd Y = recordsAsColumns(field);
+  out.log_likelihood.resize(static_cast<long>(field.rowCount()), M);
+  for (int m = 0; m < M; ++m)
+    out.models.push_back(fitAssembly(targets[static_cast<std::size_t>(m)], infos[static_cast<std::size_t>(m)], sdir,
+                                     out.covariance_method, opt.factor, Y, out.log_likelihood.col(m)));
+  for (Eigen::Index r = 0; r < out.log_likelihood.rows(); ++r)
+    for (int m = 0; m < M; ++m)
+      if (std::isnan(out.log_likelihood(r, m)))
+        throw InputError("field record " + std::to_string(field.runs[static_cast<std::size_t>(r)]), "log likelihood is NaN");
+
+  const ClassifyOptions co = recordOptions(targets, opt);
+  out.result = classifyRecords(out.log_likelihood, co);
+
+  // Cost-aware recommendation on the joint evidence.
+  std::vector<ModelCost> mc;
+  for (int m = 0; m < M; ++m)
+    mc.push_back({targets[static_cast<std::size_t>(m)].id, out.result.total_log_likelihood[m], out.models[static_cast<std::size_t>(m)].cost_s_per_s});
+  RecommendOptions ro;
+  ro.threshold = opt.threshold;
+  out.recommendation = recommendAssembly(mc, ro);
+  out.summary = classificationSummary(study, field, field_channel, synthetic_dir, opt, field_info, co.model_ids, out);
   return out;
 }
 
 FieldClassification classifyFieldFile(const Study& study, const std::string& field_csv, const std::string& synthetic_dir,
                                       const FieldClassifyOptions& options) {
-  if (!fs::exists(field_csv)) throw InputError(field_csv, "field data file not found (--field)");
+  if (!fs::exists(field_csv)) throw InputError(field_csv, "field data file not found");
   const FieldData field = readFieldCsv(field_csv);
   std::string channel;
   nlohmann::json info{{"path", field_csv}, {"fnv1a64", hexId(calib::fnv1a64(readFileBytes(field_csv)))}};

@@ -50,7 +50,10 @@ struct FieldClassifyOptions {
   double tie_tolerance = 1e-12;
   FactorOptions factor;
   std::string command;      ///< recorded in summary.json
-  void validate() const;    ///< InputError naming the option
+  /// InputError whose where() is "field_classify.<field>" (common/validate.hpp): no assembly twice,
+  /// a known covariance, each prior finite and > 0, threshold finite and > 0, tie_tolerance
+  /// finite and >= 0, and factor.validate().
+  void validate() const;
 };
 
 struct AssemblyModelInfo {

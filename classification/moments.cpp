@@ -34,6 +34,7 @@ bool isCount(double v) { return std::isfinite(v) && v >= 0 && v <= 9007199254740
 
 MomentAccumulator::MomentAccumulator(int dimension, const MomentOptions& options)
     : p_(dimension), track_(options.track_fourth_moment) {
+  options.validate();
   if (dimension < 1)
     throw InputError(kWhere, "dimension must be >= 1, got " + std::to_string(dimension));
   mean_ = Eigen::VectorXd::Zero(p_);

@@ -63,6 +63,8 @@ struct MomentOptions {
   /// Also accumulate T and Q (needed by calcLedoitWolf). Costs one extra O(p²) symmetric
   /// matrix-vector product per add/addBlock/merge and 8 (p + 1) bytes.
   bool track_fourth_moment = false;
+  /// The one convention (common/validate.hpp); a flag has no range, so nothing can be wrong.
+  void validate() const {}
 };
 
 class MomentAccumulator {

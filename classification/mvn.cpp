@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::classify {
 
@@ -27,19 +28,13 @@ std::string formatG(double v) {
 }  // namespace
 
 void FactorOptions::validate() const {
-  const std::string where = "factor options";
-  if (std::isnan(pivot_tolerance) || std::isinf(pivot_tolerance))
-    throw InputError(where + ": pivot_tolerance", "must be finite, got " + num(pivot_tolerance));
-  if (!(std::isfinite(jitter_initial) && jitter_initial > 0.0))
-    throw InputError(where + ": jitter_initial", "must be > 0 and finite, got " +
-                                                     num(jitter_initial));
-  if (!(std::isfinite(jitter_growth) && jitter_growth > 1.0))
-    throw InputError(where + ": jitter_growth", "must be > 1 and finite, got " +
-                                                    num(jitter_growth));
-  if (!(std::isfinite(jitter_max) && jitter_max >= jitter_initial))
-    throw InputError(where + ": jitter_max", "must be finite and >= jitter_initial (" +
-                                                 num(jitter_initial) + "), got " +
-                                                 num(jitter_max));
+  const OptionCheck check("factor");
+  check.finite("pivot_tolerance", pivot_tolerance);  // negative: the default p · 2.2e-16
+  check.positive("jitter_initial", jitter_initial);
+  check.require(std::isfinite(jitter_growth) && jitter_growth > 1.0, "jitter_growth",
+                "must be a finite number > 1, got " + num(jitter_growth));
+  check.require(std::isfinite(jitter_max) && jitter_max >= jitter_initial, "jitter_max",
+                "must be a finite number >= jitter_initial (" + num(jitter_initial) + "), got " + num(jitter_max));
 }
 
 GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov,

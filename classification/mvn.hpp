@@ -46,7 +46,7 @@ struct FactorOptions {
   double jitter_initial = 1e-10; ///< first ε of step 3, > 0
   double jitter_growth = 10.0;   ///< factor between successive ε, > 1
   double jitter_max = 1e-3;      ///< largest ε tried, >= jitter_initial
-  /// Throws InputError naming the field, its value and the rule.
+  /// InputError whose where() is "factor.<field>" (common/validate.hpp).
   void validate() const;
 };
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::classify {
 
@@ -37,9 +38,8 @@ std::string formatG(double v) {
 }  // namespace
 
 void RecommendOptions::validate() const {
-  if (!(std::isfinite(threshold) && threshold > 0.0))
-    throw InputError("recommendation options: threshold",
-                     "must be > 0 and finite, got " + num(threshold));
+  const OptionCheck check("recommend");
+  check.positive("threshold", threshold);
 }
 
 Recommendation recommendAssembly(const std::vector<ModelCost>& models,

@@ -34,7 +34,7 @@ struct ModelCost {
 
 struct RecommendOptions {
   double threshold = 10.0;  ///< t on 2 ln B, finite and > 0
-  void validate() const;    ///< InputError naming the field, value and rule
+  void validate() const;    ///< InputError whose where() is "recommend.<field>" (common/validate.hpp)
 };
 
 struct Recommendation {

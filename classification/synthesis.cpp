@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -15,6 +16,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
@@ -101,295 +103,291 @@ DrawOutput unpackDraw(const std::vector<double>& v) {
   return d;
 }
 
-}  // namespace
+using Clock = std::chrono::steady_clock;
 
-std::uint64_t librarySeed(std::uint64_t seed, std::uint64_t index) {
-  return RandomStream(seed, kRoadLibraryStream, index).bits() >> 11;
+double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// Grid index of a window end, or InputError naming the option field (synthesis.<field>).
+std::size_t windowIndex(double t, double rate, double duration, const char* field) {
+  return gridIndex(t, rate, duration, OptionCheck("synthesis").where(field));
 }
 
-// ------------------------------------------------------------------ synthesis
-SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
-                                   const SynthesisOptions& opt, const std::string& out_dir, const ProgressFn& progress) {
-  using Clock = std::chrono::steady_clock;
-  const auto t_all = Clock::now();
-  const long M = opt.draws > 0 ? opt.draws : study.sizes.at("posterior_draws");
-  const long R = opt.roads_per_draw > 0 ? opt.roads_per_draw : study.sizes.at("roads_per_draw");
-  const long L = opt.road_library > 0 ? opt.road_library : study.sizes.at("road_library");
-  const long B = opt.block;
-  const std::uint64_t seed = opt.seed.value_or(study.seed);
-  if (M < 1) throw InputError("posterior draws", "must be >= 1, got " + std::to_string(M));
-  if (R < 1) throw InputError("roads per draw", "must be >= 1, got " + std::to_string(R));
-  if (L < R)
-    throw InputError("road library", "must hold at least the roads per draw (" + std::to_string(R) + "), got " + std::to_string(L));
-  if (B < 1) throw InputError("block", "must be >= 1 draws, got " + std::to_string(B));
-  if (!(opt.checkpoint_interval_s >= 0)) throw InputError("checkpoint interval", "must be >= 0 s");
+/// Everything a synthesis fixes before it simulates (synthesis.hpp, "What is simulated").
+struct SynthesisPlan {
+  long M = 0, R = 0, L = 0, B = 0;      ///< draws, roads per draw, library roads, draws per block
+  std::uint64_t seed = 0;
+  std::vector<std::string> names;       ///< the study's calibrated parameters (= the posterior's columns)
+  std::shared_ptr<const Model> model;
+  std::vector<int> slots;               ///< run-value slot of each calibrated parameter
+  std::vector<double> base;             ///< the model's default run values
+  const ScenarioSpec* sc = nullptr;     ///< the field scenario (random road)
+  std::string unit;                     ///< of the channel
+  bool noisy = false;                   ///< noise N(0, 1/τ) is added (channels in N)
+  double rate = 0.0;                    ///< output grid [Hz]
+  std::size_t kb = 0, ke = 0, p = 0;    ///< the window: first and last grid index, samples
+  std::vector<double> times;            ///< the window's times
+  bool branched = false;                ///< the roads of a draw share the smooth start
+  double t_branch = -1.0;
+  long blocks() const { return (M + B - 1) / B; }
+  long blockSize(long b) const { return std::min(B, M - b * B); }
+};
+
+/// The sizes (options, else the study's sizes), the posterior checked against the study's
+/// calibrated parameters, the model's slots, the scenario, channel and window, and whether the
+/// roads of a draw branch from one smooth start.
+SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
+                            const SynthesisOptions& opt) {
+  const OptionCheck check("synthesis");
+  SynthesisPlan plan;
+  plan.M = opt.draws > 0 ? opt.draws : study.sizes.at("posterior_draws");
+  plan.R = opt.roads_per_draw > 0 ? opt.roads_per_draw : study.sizes.at("roads_per_draw");
+  plan.L = opt.road_library > 0 ? opt.road_library : study.sizes.at("road_library");
+  plan.B = opt.block;
+  plan.seed = opt.seed.value_or(study.seed);
+  check.atLeast("draws", plan.M, 1);
+  check.atLeast("roads_per_draw", plan.R, 1);
+  check.require(plan.L >= plan.R, "road_library",
+                "must hold at least the roads per draw (" + std::to_string(plan.R) + "), got " + std::to_string(plan.L));
   if (post.size() == 0) throw InputError(post.path, "the posterior sample is empty");
 
   // The posterior's parameters must be the study's calibrated ones, in order.
-  std::vector<std::string> names;
-  for (const auto& c : study.calibrated) names.push_back(c.name);
-  if (post.names != names) {
+  for (const auto& c : study.calibrated) plan.names.push_back(c.name);
+  if (post.names != plan.names) {
     std::string a, b;
     for (const auto& n : post.names) a += (a.empty() ? "" : ",") + n;
-    for (const auto& n : names) b += (b.empty() ? "" : ",") + n;
+    for (const auto& n : plan.names) b += (b.empty() ? "" : ",") + n;
     throw InputError(post.path + ":1", "parameter columns " + a + " are not the study's calibrated parameters " + b +
                                            " (" + study.path + ")");
   }
-  auto model = study.makeModel(assembly);
-  std::vector<int> slots;
-  for (const auto& n : names) {
-    const int s = model->slot(n);
+  plan.model = study.makeModel(assembly);
+  for (const auto& n : plan.names) {
+    const int s = plan.model->slot(n);
     if (s < 0) throw InputError(study.path + ": calibrated", "'" + n + "' is not a parameter of assembly " + assembly.id);
-    slots.push_back(s);
+    plan.slots.push_back(s);
   }
-  const std::vector<double> base = model->defaultRunValues();
+  plan.base = plan.model->defaultRunValues();
   const ScenarioSpec& sc = study.scenario(opt.scenario);
-  if (sc.road.type != RoadSpec::Type::Iso)
+  plan.sc = &sc;
+  if (!sc.road->random())
     throw InputError("scenario " + sc.name, "synthetic field data need a random (iso8608) road to draw a road library from");
-  const auto channels = measurableChannels();
-  const std::string rule = checkChannelName(opt.channel, channels);
-  if (!rule.empty()) throw InputError("channel", rule);
-  std::string unit;
-  for (const auto& c : channels)
-    if (c.name == opt.channel) unit = c.unit;
-  const bool noisy = unit == "N";
-  const double rate = study.simulation.output_rate_hz;
-  if (!(opt.t_begin_s <= opt.t_end_s))
-    throw InputError("window", "needs begin <= end, got " + formatExact(opt.t_begin_s) + " .. " + formatExact(opt.t_end_s) + " s");
-  const std::size_t kb = gridIndex(opt.t_begin_s, rate, sc.duration_s, "window begin");
-  const std::size_t ke = gridIndex(opt.t_end_s, rate, sc.duration_s, "window end");
-  const std::size_t p = ke - kb + 1;
-  if (p > 46000) throw InputError("window", std::to_string(p) + " samples: the covariance would not fit in memory");
-  std::vector<double> times;
-  for (std::size_t k = kb; k <= ke; ++k) times.push_back(static_cast<double>(k) / rate);
-  Simulator probe(model, study.simulation);
-  const bool branched = opt.branch && probe.branchTime(sc) > 0 && probe.branchTime(sc) < sc.duration_s;
-  const double t_branch = branched ? probe.branchTime(sc) : -1.0;
+  for (const auto& c : measurableChannels())
+    if (c.name == opt.channel) plan.unit = c.unit;
+  plan.noisy = plan.unit == "N";
+  plan.rate = study.simulation.output_rate_hz;
+  plan.kb = windowIndex(opt.t_begin_s, plan.rate, sc.duration_s, "t_begin_s");
+  plan.ke = windowIndex(opt.t_end_s, plan.rate, sc.duration_s, "t_end_s");
+  plan.p = plan.ke - plan.kb + 1;
+  check.require(plan.p <= 46000, "t_end_s", "the window holds " + std::to_string(plan.p) +
+                                                " samples: the covariance would not fit in memory");
+  for (std::size_t k = plan.kb; k <= plan.ke; ++k) plan.times.push_back(static_cast<double>(k) / plan.rate);
+  Simulator probe(plan.model, study.simulation);
+  plan.branched = opt.branch && probe.branchTime(sc) > 0 && probe.branchTime(sc) < sc.duration_s;
+  plan.t_branch = plan.branched ? probe.branchTime(sc) : -1.0;
+  return plan;
+}
 
-  // Fingerprint: everything that changes the numbers (not threads, not the checkpoint interval).
-  const bool root = Distributed::instance().isRoot();  // only the root writes files
-  const std::string post_text = root && fs::exists(post.path) ? readFileBytes(post.path) : std::string();
+/// Who a synthesis is: the fingerprint of everything that changes the numbers (not threads, not
+/// the checkpoint interval), and the hashes of the posterior recorded in synthesis.json.
+struct SynthesisIdentity {
+  std::string fingerprint;
+  std::string post_text;  ///< the posterior file's bytes (root only; "" elsewhere)
+  std::string post_hash;  ///< FNV-1a of the posterior's values as read
+};
+
+/// The fingerprint of `plan` and the posterior (synthesis.hpp, "Resume").
+SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
+                                    const SynthesisOptions& opt, const SynthesisPlan& plan, bool root) {
+  SynthesisIdentity id;
+  id.post_text = root && fs::exists(post.path) ? readFileBytes(post.path) : std::string();
   std::string post_rows;
   for (std::size_t i = 0; i < post.size(); ++i) {
     for (double v : post.theta[i]) post_rows += formatExact(v) + ",";
     post_rows += formatExact(post.tau[i]) + "\n";
   }
-  const std::string post_hash = hexId(calib::fnv1a64(post_rows));
+  id.post_hash = hexId(calib::fnv1a64(post_rows));
   nlohmann::json fp{{"format", 1},
                     {"assembly", assembly.id},
                     {"label", assembly.label()},
-                    {"names", names},
-                    {"posterior_values_fnv1a64", post_hash},
-                    {"draws", M},
-                    {"roads_per_draw", R},
-                    {"road_library", L},
-                    {"block", B},
-                    {"seed", seed},
+                    {"names", plan.names},
+                    {"posterior_values_fnv1a64", id.post_hash},
+                    {"draws", plan.M},
+                    {"roads_per_draw", plan.R},
+                    {"road_library", plan.L},
+                    {"block", plan.B},
+                    {"seed", plan.seed},
                     {"streams", {hexId(kSynthDrawStream), hexId(kSynthRoadStream), hexId(kSynthNoiseStream), hexId(kRoadLibraryStream)}},
-                    {"scenario", sc.toJson()},
+                    {"scenario", plan.sc->toJson()},
                     {"simulation", study.simulation.toJson()},
                     {"channel", opt.channel},
-                    {"window", {kb, ke}},
-                    {"noise", noisy},
+                    {"window", {plan.kb, plan.ke}},
+                    {"noise", plan.noisy},
                     {"track_fourth_moment", opt.track_fourth_moment},
-                    {"branched", branched},
-                    {"run_values", base}};
-  const std::string fingerprint = hexId(calib::fnv1a64(fp.dump()));
+                    {"branched", plan.branched},
+                    {"run_values", plan.base}};
+  id.fingerprint = hexId(calib::fnv1a64(fp.dump()));
+  return id;
+}
 
-  if (root) fs::create_directories(out_dir);
-  const fs::path dir(out_dir);
-  const fs::path moments_path = dir / "moments.bin", info_path = dir / "synthesis.json", ckpt_path = dir / "checkpoint.json";
+/// The files of a synthesis folder (synthesis.hpp, "Files in out_dir").
+struct SynthesisFiles {
+  fs::path dir, moments, info, checkpoint;
+  explicit SynthesisFiles(const std::string& out_dir)
+      : dir(out_dir), moments(dir / "moments.bin"), info(dir / "synthesis.json"), checkpoint(dir / "checkpoint.json") {}
+};
 
-  SynthesisResult res;
-  res.assembly = assembly.id;
-  res.fingerprint = fingerprint;
-  res.times_s = times;
-  res.draws = M;
-  res.roads_per_draw = R;
-  res.road_library = L;
-  res.block = B;
-  res.simulations = M * R;
+/// "F" + the bytes of `path` as the root reads them, "" when it does not exist: resume decisions
+/// are taken on what the root reads (the same bytes on every MPI rank).
+std::string rootRead(const fs::path& path) {
+  return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + readFileBytes(path.string()) : std::string(); });
+}
 
-  // Resume decisions are taken on what the root reads (the same bytes on every MPI rank).
-  auto rootRead = [&](const fs::path& path) {
-    return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + readFileBytes(path.string()) : std::string(); });
-  };
-  auto parseJson = [](const std::string& text) {
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(text.begin() + 1, text.end());
-    } catch (const std::exception&) {
-      return nlohmann::json();  // written atomically: a foreign file
-    }
-    return j;
-  };
-  auto refuse = [&](const fs::path& path) {
-    throw InputError(path.string(), "was made by a different synthesis (study, posterior, assembly, sizes, seed, window or "
-                                    "options changed); use a new --out folder or delete it to start over");
-  };
-
-  // A finished synthesis: reuse it.
-  if (const std::string info_text = rootRead(info_path); !info_text.empty()) {
-    const nlohmann::json j = parseJson(info_text);
-    if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuse(info_path);
-    if (onRoot([&] { return std::string(fs::exists(moments_path) ? "1" : "0"); }) == "1") {
-      res.moments = MomentAccumulator::load(moments_path.string());
-      res.info = j;
-      res.reused = true;
-      res.failures = j.at("failures").get<long>();
-      for (const auto& f : j.at("failure_list")) res.failure_list.push_back(failureFrom(f));
-      res.cost_s_per_s = j.at("cost").at("wall_s_per_simulated_s_median").get<double>();
-      res.median_run_wall_s = j.at("cost").at("run_wall_s_median").get<double>();
-      res.wall_s = std::chrono::duration<double>(Clock::now() - t_all).count();
-      if (progress) progress(static_cast<std::size_t>(M), static_cast<std::size_t>(M));
-      return res;
-    }
+/// The JSON of a rootRead() text; null when it is not JSON (written atomically: a foreign file).
+nlohmann::json parseRootJson(const std::string& text) {
+  try {
+    return nlohmann::json::parse(text.begin() + 1, text.end());
+  } catch (const std::exception&) {
+    return nlohmann::json();
   }
+}
 
-  // State of the ordered reduction (guarded by reduce_m once the workers run).
-  MomentOptions mo;
-  mo.track_fourth_moment = opt.track_fourth_moment;
-  MomentAccumulator acc(static_cast<int>(p), mo);
-  long next_block = 0;
-  std::vector<SynthesisFailure> failures;
-  std::vector<double> costs, run_walls;
-  double previous_wall = 0.0;  // wall time of earlier (interrupted) invocations
-  std::string ckpt_file;       // current checkpoint_<block>.bin
-  if (const std::string ckpt_text = rootRead(ckpt_path); !ckpt_text.empty()) {
-    const nlohmann::json j = parseJson(ckpt_text);
-    if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuse(ckpt_path);
-    ckpt_file = j.at("moments").get<std::string>();
-    acc = MomentAccumulator::load((dir / ckpt_file).string());
-    if (acc.count() != j.at("vectors").get<std::int64_t>() || acc.dimension() != static_cast<int>(p))
-      throw InputError(ckpt_path.string(), "does not match " + ckpt_file + "; delete the folder to start over");
+/// InputError: `path` belongs to a different synthesis.
+[[noreturn]] void refuseForeign(const fs::path& path) {
+  throw InputError(path.string(), "was made by a different synthesis (study, posterior, assembly, sizes, seed, window or "
+                                  "options changed); use a new output folder or delete it to start over");
+}
+
+/// A finished synthesis of this fingerprint in the folder: `res` filled from its files, true.
+/// False when there is none; InputError when the folder holds a different synthesis.
+bool reuseFinished(const SynthesisFiles& files, const std::string& fingerprint, SynthesisResult& res) {
+  const std::string info_text = rootRead(files.info);
+  if (info_text.empty()) return false;
+  const nlohmann::json j = parseRootJson(info_text);
+  if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuseForeign(files.info);
+  if (onRoot([&] { return std::string(fs::exists(files.moments) ? "1" : "0"); }) != "1") return false;
+  res.moments = MomentAccumulator::load(files.moments.string());
+  res.info = j;
+  res.reused = true;
+  res.failures = j.at("failures").get<long>();
+  for (const auto& f : j.at("failure_list")) res.failure_list.push_back(failureFrom(f));
+  res.cost_s_per_s = j.at("cost").at("wall_s_per_simulated_s_median").get<double>();
+  res.median_run_wall_s = j.at("cost").at("run_wall_s_median").get<double>();
+  return true;
+}
+
+/// Draw j on `sim`: its posterior row, R distinct library roads, the runs (branched or not), each
+/// run's window plus noise, and what failed (synthesis.hpp, "What is simulated").
+DrawOutput simulateDraw(const SynthesisPlan& plan, const PosteriorSample& post, const std::string& channel, Simulator& sim,
+                        long j) {
+  const long R = plan.R, L = plan.L;
+  DrawOutput out;
+  out.vectors.resize(static_cast<std::size_t>(R));
+  // θ_j, τ_j: a row of the posterior sample.
+  RandomStream draw_rs(plan.seed, kSynthDrawStream, static_cast<std::uint64_t>(j));
+  const std::size_t row = std::min(post.size() - 1, static_cast<std::size_t>(draw_rs.uniform() * static_cast<double>(post.size())));
+  std::vector<double> values = plan.base;
+  for (std::size_t k = 0; k < plan.slots.size(); ++k) values[static_cast<std::size_t>(plan.slots[k])] = post.theta[row][k];
+  const double sigma = 1.0 / std::sqrt(post.tau[row]);
+  // R distinct library roads.
+  RandomStream road_rs(plan.seed, kSynthRoadStream, static_cast<std::uint64_t>(j));
+  std::vector<long> idx;
+  while (static_cast<long>(idx.size()) < R) {
+    const long i = std::min(L - 1, static_cast<long>(road_rs.uniform() * static_cast<double>(L)));
+    if (std::find(idx.begin(), idx.end(), i) == idx.end()) idx.push_back(i);
+  }
+  std::vector<std::shared_ptr<const Road>> roads;
+  std::vector<const Road*> ptrs;
+  std::vector<std::uint64_t> road_seeds;
+  for (long i : idx) {
+    road_seeds.push_back(librarySeed(plan.seed, static_cast<std::uint64_t>(i)));
+    roads.push_back(makeRoad(*plan.sc, plan.model->vehicle(), road_seeds.back()));
+    ptrs.push_back(roads.back().get());
+  }
+  std::vector<RunResult> runs;
+  std::string input_error;
+  try {
+    if (plan.branched) {
+      runs = sim.runBranched(values, ptrs, *plan.sc);
+    } else {
+      for (const Road* r : ptrs) runs.push_back(sim.run(values, *r, *plan.sc));
+    }
+  } catch (const InputError& e) {
+    input_error = e.what();  // a θ the laws reject: every run of the draw fails
+  }
+  for (long r = 0; r < R; ++r) {
+    const auto fail = [&](const std::string& msg) {
+      out.failures.push_back({j, r, idx[static_cast<std::size_t>(r)], road_seeds[static_cast<std::size_t>(r)], msg});
+    };
+    if (!input_error.empty()) {
+      fail(input_error);
+      continue;
+    }
+    const RunResult& run = runs[static_cast<std::size_t>(r)];
+    if (!run.stats.ok) {
+      fail(run.stats.message);
+      continue;
+    }
+    const auto& col = run.trace.column(channel);
+    if (col.size() <= plan.ke) {
+      fail("the run ended before the window");
+      continue;
+    }
+    std::vector<double> v(plan.p);
+    RandomStream noise(plan.seed, kSynthNoiseStream, static_cast<std::uint64_t>(j * R + r));
+    bool finite = true;
+    for (std::size_t k = 0; k < plan.p; ++k) {
+      v[k] = col[plan.kb + k] + (plan.noisy ? sigma * noise.normal() : 0.0);
+      finite = finite && std::isfinite(v[k]);
+    }
+    if (!finite) {
+      fail("non-finite output in the window");
+      continue;
+    }
+    out.vectors[static_cast<std::size_t>(r)] = std::move(v);
+    if (run.stats.sim_s > 0) out.cost.push_back(run.stats.wall_s / run.stats.sim_s);
+    out.run_wall.push_back(run.stats.wall_s);
+  }
+  return out;
+}
+
+/// The ordered reduction of a synthesis: the accumulator, the next block to add, the failures
+/// and run costs so far, and the checkpoint that lets a rerun continue (synthesis.hpp,
+/// "Accumulation" and "Resume"). Not thread-safe: the caller adds one block at a time.
+class Reduction {
+ public:
+  Reduction(const SynthesisPlan& plan, const SynthesisOptions& opt, const SynthesisFiles& files, std::string assembly,
+            std::string fingerprint, bool root)
+      : acc(static_cast<int>(plan.p), momentOptions(opt)), plan_(plan), opt_(opt), files_(files), assembly_(std::move(assembly)),
+        fingerprint_(std::move(fingerprint)), root_(root) {}
+
+  /// Continues from checkpoint.json when the folder has one (InputError when it is another
+  /// synthesis's or does not match its moments file).
+  void resume() {
+    const std::string ckpt_text = rootRead(files_.checkpoint);
+    if (ckpt_text.empty()) return;
+    const nlohmann::json j = parseRootJson(ckpt_text);
+    if (!j.is_object() || j.value("fingerprint", "") != fingerprint_) refuseForeign(files_.checkpoint);
+    ckpt_file_ = j.at("moments").get<std::string>();
+    acc = MomentAccumulator::load((files_.dir / ckpt_file_).string());
+    if (acc.count() != j.at("vectors").get<std::int64_t>() || acc.dimension() != static_cast<int>(plan_.p))
+      throw InputError(files_.checkpoint.string(), "does not match " + ckpt_file_ + "; delete the folder to start over");
     next_block = j.at("next_block").get<long>();
     for (const auto& f : j.at("failure_list")) failures.push_back(failureFrom(f));
     costs = j.at("cost_samples").get<std::vector<double>>();
     run_walls = j.at("run_wall_samples").get<std::vector<double>>();
     previous_wall = j.at("wall_s").get<double>();
   }
-  const long n_blocks = (M + B - 1) / B;
-  res.resumed_blocks = next_block;
-  const long first_draw = std::min(M, next_block * B);
 
-  auto writeCheckpoint = [&](double wall_so_far) {
-    if (!root) return;
-    const std::string file = "checkpoint_" + std::to_string(next_block) + ".bin";
-    acc.save((dir / file).string());
-    nlohmann::json j{{"fingerprint", fingerprint},
-                     {"assembly", assembly.id},
-                     {"next_block", next_block},
-                     {"blocks", n_blocks},
-                     {"moments", file},
-                     {"vectors", acc.count()},
-                     {"failure_list", nlohmann::json::array()},
-                     {"cost_samples", costs},
-                     {"run_wall_samples", run_walls},
-                     {"wall_s", wall_so_far}};
-    for (const auto& f : failures) j["failure_list"].push_back(failureJson(f));
-    writeFileAtomic(ckpt_path.string(), j.dump() + "\n");
-    if (!ckpt_file.empty() && ckpt_file != file) fs::remove(dir / ckpt_file);
-    ckpt_file = file;
-  };
-
-  // ---- the parallel loop over the remaining draws, reduced in block order
-  const long todo = M - first_draw;
-  const int ranks = Distributed::instance().size();
-  const int workers = distributedWorkers(static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
-  std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
-  std::mutex state_m, reduce_m, progress_m;
-  std::map<long, PendingBlock> pending;  // guarded by state_m
-  std::size_t done = static_cast<std::size_t>(first_draw);
-  auto last_ckpt = Clock::now();
-  const auto t_run = Clock::now();
-  if (progress) progress(done, static_cast<std::size_t>(M));
-
-  auto blockSize = [&](long b) { return std::min(B, M - b * B); };
-  // Draw j on worker w: R runs, their windows plus noise, failures and costs.
-  auto simulateDraw = [&](long j, int w) {
-    auto& sim = sims[static_cast<std::size_t>(w)];
-    if (!sim) sim = std::make_unique<Simulator>(model, study.simulation);
-    DrawOutput out;
-    out.vectors.resize(static_cast<std::size_t>(R));
-    // θ_j, τ_j: a row of the posterior sample.
-    RandomStream draw_rs(seed, kSynthDrawStream, static_cast<std::uint64_t>(j));
-    const std::size_t row = std::min(post.size() - 1, static_cast<std::size_t>(draw_rs.uniform() * static_cast<double>(post.size())));
-    std::vector<double> values = base;
-    for (std::size_t k = 0; k < slots.size(); ++k) values[static_cast<std::size_t>(slots[k])] = post.theta[row][k];
-    const double sigma = 1.0 / std::sqrt(post.tau[row]);
-    // R distinct library roads.
-    RandomStream road_rs(seed, kSynthRoadStream, static_cast<std::uint64_t>(j));
-    std::vector<long> idx;
-    while (static_cast<long>(idx.size()) < R) {
-      const long i = std::min(L - 1, static_cast<long>(road_rs.uniform() * static_cast<double>(L)));
-      if (std::find(idx.begin(), idx.end(), i) == idx.end()) idx.push_back(i);
-    }
-    std::vector<std::shared_ptr<const Road>> roads;
-    std::vector<const Road*> ptrs;
-    std::vector<std::uint64_t> road_seeds;
-    for (long i : idx) {
-      road_seeds.push_back(librarySeed(seed, static_cast<std::uint64_t>(i)));
-      roads.push_back(makeRoad(sc, model->vehicle(), road_seeds.back()));
-      ptrs.push_back(roads.back().get());
-    }
-    std::vector<RunResult> runs;
-    std::string input_error;
-    try {
-      if (branched) {
-        runs = sim->runBranched(values, ptrs, sc);
-      } else {
-        for (const Road* r : ptrs) runs.push_back(sim->run(values, *r, sc));
-      }
-    } catch (const InputError& e) {
-      input_error = e.what();  // a θ the laws reject: every run of the draw fails
-    }
-    for (long r = 0; r < R; ++r) {
-      const auto fail = [&](const std::string& msg) {
-        out.failures.push_back({j, r, idx[static_cast<std::size_t>(r)], road_seeds[static_cast<std::size_t>(r)], msg});
-      };
-      if (!input_error.empty()) {
-        fail(input_error);
-        continue;
-      }
-      const RunResult& run = runs[static_cast<std::size_t>(r)];
-      if (!run.stats.ok) {
-        fail(run.stats.message);
-        continue;
-      }
-      const auto& col = run.trace.column(opt.channel);
-      if (col.size() <= ke) {
-        fail("the run ended before the window");
-        continue;
-      }
-      std::vector<double> v(p);
-      RandomStream noise(seed, kSynthNoiseStream, static_cast<std::uint64_t>(j * R + r));
-      bool finite = true;
-      for (std::size_t k = 0; k < p; ++k) {
-        v[k] = col[kb + k] + (noisy ? sigma * noise.normal() : 0.0);
-        finite = finite && std::isfinite(v[k]);
-      }
-      if (!finite) {
-        fail("non-finite output in the window");
-        continue;
-      }
-      out.vectors[static_cast<std::size_t>(r)] = std::move(v);
-      if (run.stats.sim_s > 0) out.cost.push_back(run.stats.wall_s / run.stats.sim_s);
-      out.run_wall.push_back(run.stats.wall_s);
-    }
-    return out;
-  };
-
-  // Adds one complete block to the accumulator (vectors in (draw, road) order).
-  auto addBlockToAcc = [&](PendingBlock& blk) {
+  /// Adds block next_block (vectors in (draw, road) order; failed runs left out) and moves on.
+  void addNext(PendingBlock& blk) {
     long cols = 0;
     for (const auto& d : blk.draws)
       for (const auto& v : d.vectors) cols += v.empty() ? 0 : 1;
     if (cols > 0) {
-      Eigen::MatrixXd X(static_cast<Eigen::Index>(p), cols);
+      Eigen::MatrixXd X(static_cast<Eigen::Index>(plan_.p), cols);
       Eigen::Index c = 0;
       for (const auto& d : blk.draws)
         for (const auto& v : d.vectors)
-          if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(p));
+          if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(plan_.p));
       acc.addBlock(X);
     }
     for (auto& d : blk.draws) {
@@ -397,10 +395,90 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
       costs.insert(costs.end(), d.cost.begin(), d.cost.end());
       run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
     }
-  };
+    ++next_block;
+  }
 
-  // Adds every finished block that is next in order (one reducer at a time; a finished block
-  // whose predecessor is still running waits in `pending`).
+  /// Starts the checkpoint clock (when the simulations start).
+  void startClock() { last_ckpt_ = Clock::now(); }
+
+  /// Writes a checkpoint when blocks remain and checkpoint_interval_s has passed since the last
+  /// one; `t_run` is when this invocation started simulating.
+  void checkpointIfDue(Clock::time_point t_run) {
+    const auto now = Clock::now();
+    if (next_block < plan_.blocks() && std::chrono::duration<double>(now - last_ckpt_).count() >= opt_.checkpoint_interval_s) {
+      writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
+      last_ckpt_ = Clock::now();
+    }
+  }
+
+  /// The finished synthesis replaces the checkpoint: moments.bin and synthesis.json (root only;
+  /// its error reaches every rank).
+  void writeResults(const nlohmann::json& info) {
+    onRoot([&]() -> std::string {
+      acc.save(files_.moments.string());
+      writeFileAtomic(files_.info.string(), info.dump(2) + "\n");
+      // The checkpoint is no longer needed.
+      std::error_code ec;
+      fs::remove(files_.checkpoint, ec);
+      if (!ckpt_file_.empty()) fs::remove(files_.dir / ckpt_file_, ec);
+      return std::string();
+    });
+  }
+
+  MomentAccumulator acc;
+  long next_block = 0;
+  std::vector<SynthesisFailure> failures;
+  std::vector<double> costs, run_walls;
+  double previous_wall = 0.0;  ///< wall time of earlier (interrupted) invocations
+
+ private:
+  static MomentOptions momentOptions(const SynthesisOptions& opt) {
+    MomentOptions mo;
+    mo.track_fourth_moment = opt.track_fourth_moment;
+    return mo;
+  }
+
+  /// checkpoint_<next_block>.bin and checkpoint.json naming it; the previous .bin is removed.
+  void writeCheckpoint(double wall_so_far) {
+    if (!root_) return;
+    const std::string file = "checkpoint_" + std::to_string(next_block) + ".bin";
+    acc.save((files_.dir / file).string());
+    nlohmann::json j{{"fingerprint", fingerprint_},
+                     {"assembly", assembly_},
+                     {"next_block", next_block},
+                     {"blocks", plan_.blocks()},
+                     {"moments", file},
+                     {"vectors", acc.count()},
+                     {"failure_list", nlohmann::json::array()},
+                     {"cost_samples", costs},
+                     {"run_wall_samples", run_walls},
+                     {"wall_s", wall_so_far}};
+    for (const auto& f : failures) j["failure_list"].push_back(failureJson(f));
+    writeFileAtomic(files_.checkpoint.string(), j.dump() + "\n");
+    if (!ckpt_file_.empty() && ckpt_file_ != file) fs::remove(files_.dir / ckpt_file_);
+    ckpt_file_ = file;
+  }
+
+  const SynthesisPlan& plan_;
+  const SynthesisOptions& opt_;
+  const SynthesisFiles& files_;
+  std::string assembly_, fingerprint_;
+  bool root_;
+  std::string ckpt_file_;  ///< current checkpoint_<block>.bin
+  Clock::time_point last_ckpt_ = Clock::now();
+};
+
+/// Simulates draw j on worker w (each worker has its own Simulator, made on first use).
+using DrawFn = std::function<DrawOutput(long j, int w)>;
+
+/// One process: draws first_draw .. M−1 on the threads; each finished block is added as soon as
+/// its predecessors are (one reducer at a time; a finished block whose predecessor is still
+/// running waits in `pending`).
+void reduceOnThreads(const SynthesisPlan& plan, const SynthesisOptions& opt, long first_draw, const DrawFn& draw,
+                     Reduction& red, Clock::time_point t_run, const ProgressFn& progress) {
+  std::mutex state_m, reduce_m, progress_m;
+  std::map<long, PendingBlock> pending;  // guarded by state_m
+  std::size_t done = static_cast<std::size_t>(first_draw);
   auto reduce = [&]() {
     while (true) {
       std::unique_lock<std::mutex> rl(reduce_m, std::try_to_lock);
@@ -409,90 +487,82 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
         PendingBlock blk;
         {
           std::lock_guard<std::mutex> sl(state_m);
-          auto it = pending.find(next_block);
+          auto it = pending.find(red.next_block);
           if (it == pending.end() || it->second.remaining > 0) break;
           blk = std::move(it->second);
           pending.erase(it);
         }
-        addBlockToAcc(blk);
-        ++next_block;
-        const auto now = Clock::now();
-        if (next_block < n_blocks && std::chrono::duration<double>(now - last_ckpt).count() >= opt.checkpoint_interval_s) {
-          writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
-          last_ckpt = Clock::now();
-        }
+        red.addNext(blk);
+        red.checkpointIfDue(t_run);
       }
       rl.unlock();
       std::lock_guard<std::mutex> sl(state_m);  // a block finished while we were releasing?
-      auto it = pending.find(next_block);
+      auto it = pending.find(red.next_block);
       if (it == pending.end() || it->second.remaining > 0) return;
     }
   };
-
-  if (ranks == 1) {
-    // One process: draws on the threads, each finished block added as soon as its predecessors are.
-    parallelFor(static_cast<std::size_t>(todo), opt.threads, [&](std::size_t task, int w) {
-      const long j = first_draw + static_cast<long>(task);
-      DrawOutput out = simulateDraw(j, w);
-      {
-        std::lock_guard<std::mutex> sl(state_m);
-        const long b = j / B;
-        auto& blk = pending[b];
-        if (blk.draws.empty()) {
-          blk.draws.resize(static_cast<std::size_t>(blockSize(b)));
-          blk.remaining = blockSize(b);
-        }
-        blk.draws[static_cast<std::size_t>(j - b * B)] = std::move(out);
-        --blk.remaining;
+  parallelFor(static_cast<std::size_t>(plan.M - first_draw), opt.threads, [&](std::size_t task, int w) {
+    const long j = first_draw + static_cast<long>(task);
+    DrawOutput out = draw(j, w);
+    {
+      std::lock_guard<std::mutex> sl(state_m);
+      const long b = j / plan.B;
+      auto& blk = pending[b];
+      if (blk.draws.empty()) {
+        blk.draws.resize(static_cast<std::size_t>(plan.blockSize(b)));
+        blk.remaining = plan.blockSize(b);
       }
-      reduce();
-      if (progress) {
-        std::lock_guard<std::mutex> pl(progress_m);
-        progress(++done, static_cast<std::size_t>(M));
-      }
-    });
-    reduce();
-  } else {
-    // Several MPI ranks: rounds of whole blocks. The draws of a round are spread over the ranks
-    // (draw j0 + t on rank t % size); every rank receives every draw's vectors and adds the
-    // blocks in block order with the same addBlock calls as one process: the same moments,
-    // bit for bit. A round holds about 8 draws per worker, at most ~256 MB of vectors.
-    const long per_round_mem = std::max<long>(1, static_cast<long>(256e6 / (8.0 * static_cast<double>(R) * static_cast<double>(p))));
-    const long per_round = std::min<long>(8L * ranks * workers, per_round_mem);
-    const long blocks_per_round = std::max<long>(1, per_round / B);
-    while (next_block < n_blocks) {
-      const long b0 = next_block, b1 = std::min(n_blocks, b0 + blocks_per_round);
-      const long j0 = b0 * B, j1 = std::min(M, b1 * B);
-      const auto packed = distributedMap(
-          static_cast<std::size_t>(j1 - j0), opt.threads,
-          [&](std::size_t t, int w) { return packDraw(simulateDraw(j0 + static_cast<long>(t), w)); },
-          [&](std::size_t d, std::size_t) {
-            if (progress) progress(static_cast<std::size_t>(j0) + d, static_cast<std::size_t>(M));
-          });
-      for (long b = b0; b < b1; ++b) {
-        PendingBlock blk;
-        for (long j = b * B; j < std::min(M, (b + 1) * B); ++j) blk.draws.push_back(unpackDraw(packed[static_cast<std::size_t>(j - j0)]));
-        addBlockToAcc(blk);
-        ++next_block;
-      }
-      onRoot([&]() -> std::string {
-        const auto now = Clock::now();
-        if (next_block < n_blocks && std::chrono::duration<double>(now - last_ckpt).count() >= opt.checkpoint_interval_s) {
-          writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
-          last_ckpt = Clock::now();
-        }
-        return std::string();
-      });
+      blk.draws[static_cast<std::size_t>(j - b * plan.B)] = std::move(out);
+      --blk.remaining;
     }
-  }
-  DTWIN_CHECK(next_block == n_blocks, "blocks left unreduced");
+    reduce();
+    if (progress) {
+      std::lock_guard<std::mutex> pl(progress_m);
+      progress(++done, static_cast<std::size_t>(plan.M));
+    }
+  });
+  reduce();
+}
 
-  // ---- results
-  const double wall_total = previous_wall + std::chrono::duration<double>(Clock::now() - t_run).count();
-  res.failures = static_cast<long>(failures.size());
-  res.failure_list = failures;
-  res.cost_s_per_s = median(costs);
-  res.median_run_wall_s = median(run_walls);
+/// Several MPI ranks: rounds of whole blocks. The draws of a round are spread over the ranks
+/// (draw j0 + t on rank t % size); every rank receives every draw's vectors and adds the blocks
+/// in block order with the same addBlock calls as one process: the same moments, bit for bit. A
+/// round holds about 8 draws per worker, at most ~256 MB of vectors.
+void reduceOnRanks(const SynthesisPlan& plan, const SynthesisOptions& opt, int ranks, int workers, const DrawFn& draw,
+                   Reduction& red, Clock::time_point t_run, const ProgressFn& progress) {
+  const long per_round_mem =
+      std::max<long>(1, static_cast<long>(256e6 / (8.0 * static_cast<double>(plan.R) * static_cast<double>(plan.p))));
+  const long per_round = std::min<long>(8L * ranks * workers, per_round_mem);
+  const long blocks_per_round = std::max<long>(1, per_round / plan.B);
+  const long n_blocks = plan.blocks();
+  while (red.next_block < n_blocks) {
+    const long b0 = red.next_block, b1 = std::min(n_blocks, b0 + blocks_per_round);
+    const long j0 = b0 * plan.B, j1 = std::min(plan.M, b1 * plan.B);
+    const auto packed = distributedMap(
+        static_cast<std::size_t>(j1 - j0), opt.threads,
+        [&](std::size_t t, int w) { return packDraw(draw(j0 + static_cast<long>(t), w)); },
+        [&](std::size_t d, std::size_t) {
+          if (progress) progress(static_cast<std::size_t>(j0) + d, static_cast<std::size_t>(plan.M));
+        });
+    for (long b = b0; b < b1; ++b) {
+      PendingBlock blk;
+      for (long j = b * plan.B; j < std::min(plan.M, (b + 1) * plan.B); ++j)
+        blk.draws.push_back(unpackDraw(packed[static_cast<std::size_t>(j - j0)]));
+      red.addNext(blk);
+    }
+    onRoot([&]() -> std::string {
+      red.checkpointIfDue(t_run);
+      return std::string();
+    });
+  }
+}
+
+/// synthesis.json (SynthesisResult::info): provenance, sizes, streams, noise, window, moments,
+/// cost and wall time.
+nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
+                             const SynthesisOptions& opt, const SynthesisPlan& plan, const SynthesisIdentity& id,
+                             const Reduction& red, const SynthesisResult& res, double wall_total, int workers, int ranks) {
+  const long M = plan.M, R = plan.R;
   nlohmann::json j;
   j["program"] = programInfo();
   j["command"] = opt.command;
@@ -500,19 +570,19 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   j["study"] = study.path;
   j["assembly"] = assembly.id;
   j["label"] = assembly.label();
-  j["posterior"] = {{"path", post.path}, {"rows", post.size()}, {"parameters", names}, {"values_fnv1a64", post_hash},
-                    {"file_fnv1a64", post_text.empty() ? std::string() : hexId(calib::fnv1a64(post_text))}};
+  j["posterior"] = {{"path", post.path}, {"rows", post.size()}, {"parameters", plan.names}, {"values_fnv1a64", id.post_hash},
+                    {"file_fnv1a64", id.post_text.empty() ? std::string() : hexId(calib::fnv1a64(id.post_text))}};
   j["draws"] = M;
   j["roads_per_draw"] = R;
-  j["road_library"] = L;
-  j["block"] = B;
+  j["road_library"] = plan.L;
+  j["block"] = plan.B;
   j["simulations"] = M * R;
-  j["vectors"] = acc.count();
+  j["vectors"] = red.acc.count();
   j["failures"] = res.failures;
   j["failure_list"] = nlohmann::json::array();
-  for (std::size_t i = 0; i < failures.size() && i < 1000; ++i) j["failure_list"].push_back(failureJson(failures[i]));
-  if (failures.size() > 1000) j["failure_list_truncated"] = true;
-  j["seed"] = seed;
+  for (std::size_t i = 0; i < red.failures.size() && i < 1000; ++i) j["failure_list"].push_back(failureJson(red.failures[i]));
+  if (red.failures.size() > 1000) j["failure_list_truncated"] = true;
+  j["seed"] = plan.seed;
   j["streams"] = {
       {"draw", {{"constant", hexId(kSynthDrawStream)},
                 {"rule", "draw j uses posterior row floor(u * rows), u the first uniform of RandomStream(seed, draw, j)"}}},
@@ -522,47 +592,118 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
                         {"rule", "library road i has seed RandomStream(seed, road_library, i).bits() >> 11 (not the field data's stream)"}}},
       {"noise", {{"constant", hexId(kSynthNoiseStream)},
                  {"rule", "vector (j, r) adds sigma_j * N(0, 1) from RandomStream(seed, noise, j * roads_per_draw + r) in time order"}}}};
-  j["noise"] = {{"applied", noisy},
-                {"rule", noisy ? "N(0, 1/tau_j) per value, tau_j from the posterior row of draw j"
-                               : "none: the channel is not in N (as twin generate field)"}};
-  j["scenario"] = sc.toJson();
+  j["noise"] = {{"applied", plan.noisy},
+                {"rule", plan.noisy ? "N(0, 1/tau_j) per value, tau_j from the posterior row of draw j"
+                                    : "none: the channel is not in N (as twin generate field)"}};
+  j["scenario"] = plan.sc->toJson();
   j["simulation"] = study.simulation.toJson();
-  j["branched"] = branched;
-  if (branched) j["branch_time_s"] = t_branch;
+  j["branched"] = plan.branched;
+  if (plan.branched) j["branch_time_s"] = plan.t_branch;
   j["channel"] = opt.channel;
-  j["unit"] = unit;
-  j["window_s"] = {times.front(), times.back()};
-  j["samples"] = p;
-  j["output_rate_hz"] = rate;
+  j["unit"] = plan.unit;
+  j["window_s"] = {plan.times.front(), plan.times.back()};
+  j["samples"] = plan.p;
+  j["output_rate_hz"] = plan.rate;
   j["moments"] = {{"file", "moments.bin"},
                   {"format", "MomentAccumulator::save: 8-byte tag DTWMOM01, then doubles (little-endian): magic, version, p, n, "
                              "track flag, mean (p), packed upper triangle of M2 column by column (p(p+1)/2), [T (p), Q]"},
-                  {"dimension", p},
-                  {"count", acc.count()},
+                  {"dimension", plan.p},
+                  {"count", red.acc.count()},
                   {"track_fourth_moment", opt.track_fourth_moment},
                   {"accumulation", "fixed blocks of `block` draws, addBlock in (draw, road) order, blocks added in block order"}};
   j["cost"] = {{"wall_s_per_simulated_s_median", res.cost_s_per_s},
                {"run_wall_s_median", res.median_run_wall_s},
-               {"runs_measured", costs.size()},
+               {"runs_measured", red.costs.size()},
                {"rule", std::string("median over the successful runs of wall time / simulated time") +
-                            (branched ? "; a branched run carries an even share of its draw's common smooth part" : "")}};
+                            (plan.branched ? "; a branched run carries an even share of its draw's common smooth part" : "")}};
   j["wall_s"] = wall_total;
   j["resumed_blocks"] = res.resumed_blocks;
   j["threads"] = workers;
   j["ranks"] = ranks;
-  j["fingerprint"] = fingerprint;
-  onRoot([&]() -> std::string {  // only the root writes; its error reaches every rank
-    acc.save(moments_path.string());
-    writeFileAtomic(info_path.string(), j.dump(2) + "\n");
-    // The checkpoint is no longer needed.
-    std::error_code ec;
-    fs::remove(ckpt_path, ec);
-    if (!ckpt_file.empty()) fs::remove(dir / ckpt_file, ec);
-    return std::string();
-  });
-  res.info = std::move(j);
-  res.moments = std::move(acc);
-  res.wall_s = std::chrono::duration<double>(Clock::now() - t_all).count();
+  j["fingerprint"] = id.fingerprint;
+  return j;
+}
+
+}  // namespace
+
+std::uint64_t librarySeed(std::uint64_t seed, std::uint64_t index) {
+  return RandomStream(seed, kRoadLibraryStream, index).bits() >> 11;
+}
+
+void SynthesisOptions::validate() const {
+  const OptionCheck check("synthesis");
+  check.atLeast("block", block, 1);
+  check.finite("t_begin_s", t_begin_s);
+  check.finite("t_end_s", t_end_s);
+  check.require(t_begin_s <= t_end_s, "t_begin_s",
+                "must be <= t_end_s (" + formatExact(t_end_s) + " s), got " + formatExact(t_begin_s) + " s");
+  check.require(checkpoint_interval_s >= 0, "checkpoint_interval_s",  // +inf: no checkpoint
+                "must be >= 0 s (0: after every block), got " + formatNumber(checkpoint_interval_s));
+  const std::string channel_rule = checkChannelName(channel, measurableChannels());
+  check.require(channel_rule.empty(), "channel", channel_rule);
+}
+
+// ------------------------------------------------------------------ synthesis
+// The stages: plan (sizes, model, window) → identity (fingerprint) → reuse a finished synthesis,
+// or resume from its checkpoint → simulate the remaining draws, reduced in block order (threads
+// or MPI ranks) → synthesis.json and moments.bin.
+SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
+                                   const SynthesisOptions& opt, const std::string& out_dir, const ProgressFn& progress) {
+  const auto t_all = Clock::now();
+  opt.validate();
+  const SynthesisPlan plan = planSynthesis(study, assembly, post, opt);
+  const bool root = Distributed::instance().isRoot();  // only the root writes files
+  const SynthesisIdentity id = identifySynthesis(study, assembly, post, opt, plan, root);
+  if (root) fs::create_directories(out_dir);
+  const SynthesisFiles files(out_dir);
+
+  SynthesisResult res;
+  res.assembly = assembly.id;
+  res.fingerprint = id.fingerprint;
+  res.times_s = plan.times;
+  res.draws = plan.M;
+  res.roads_per_draw = plan.R;
+  res.road_library = plan.L;
+  res.block = plan.B;
+  res.simulations = plan.M * plan.R;
+  if (reuseFinished(files, id.fingerprint, res)) {
+    res.wall_s = secondsSince(t_all);
+    if (progress) progress(static_cast<std::size_t>(plan.M), static_cast<std::size_t>(plan.M));
+    return res;
+  }
+
+  Reduction red(plan, opt, files, assembly.id, id.fingerprint, root);
+  red.resume();
+  res.resumed_blocks = red.next_block;
+  const long first_draw = std::min(plan.M, red.next_block * plan.B);
+  const long todo = plan.M - first_draw;
+  const int ranks = Distributed::instance().size();
+  const int workers = distributedWorkers(static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
+  std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
+  const DrawFn draw = [&](long j, int w) {
+    auto& sim = sims[static_cast<std::size_t>(w)];
+    if (!sim) sim = std::make_unique<Simulator>(plan.model, study.simulation);
+    return simulateDraw(plan, post, opt.channel, *sim, j);
+  };
+  red.startClock();
+  const auto t_run = Clock::now();
+  if (progress) progress(static_cast<std::size_t>(first_draw), static_cast<std::size_t>(plan.M));
+  if (ranks == 1)
+    reduceOnThreads(plan, opt, first_draw, draw, red, t_run, progress);
+  else
+    reduceOnRanks(plan, opt, ranks, workers, draw, red, t_run, progress);
+  DTWIN_CHECK(red.next_block == plan.blocks(), "blocks left unreduced");
+
+  const double wall_total = red.previous_wall + secondsSince(t_run);
+  res.failures = static_cast<long>(red.failures.size());
+  res.failure_list = red.failures;
+  res.cost_s_per_s = median(red.costs);
+  res.median_run_wall_s = median(red.run_walls);
+  nlohmann::json info = synthesisInfo(study, assembly, post, opt, plan, id, red, res, wall_total, workers, ranks);
+  red.writeResults(info);
+  res.info = std::move(info);
+  res.moments = std::move(red.acc);
+  res.wall_s = secondsSince(t_all);
   return res;
 }
 

@@ -89,6 +89,10 @@ struct SynthesisOptions {
   bool branch = true;                  ///< share the smooth start among the roads of a draw
   double checkpoint_interval_s = 30.0; ///< at most this long between checkpoints (0: every block)
   std::string command;                 ///< recorded in synthesis.json
+  /// InputError whose where() is "synthesis.<field>" (common/validate.hpp): block >= 1, a finite
+  /// window with t_begin_s <= t_end_s, checkpoint_interval_s >= 0, a known channel. The sizes
+  /// (draws, roads_per_draw, road_library: <= 0 for the study's) are checked once resolved.
+  void validate() const;
 };
 
 struct SynthesisFailure {

@@ -20,8 +20,8 @@ int runBench(const std::string& study_path, int runs, bool markdown, const std::
   const Study study = loadStudy(study_path);
   const ScenarioSpec *bump = nullptr, *rough = nullptr;
   for (const auto& s : study.scenarios) {
-    if (!bump && s.road.type == RoadSpec::Type::Bump) bump = &s;
-    if (!rough && s.road.type == RoadSpec::Type::Iso) rough = &s;
+    if (!bump && s.road->obstacle()) bump = &s;
+    if (!rough && s.road->random()) rough = &s;
   }
   std::vector<BenchRow> rows;
   std::fprintf(stderr, "twin bench: %d timed runs per case (after one warm-up), median reported\n", runs);

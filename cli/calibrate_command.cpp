@@ -54,9 +54,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   if (cfg.ridge_steps >= 0) opt.joint.ridge_steps = static_cast<int>(cfg.ridge_steps);
   opt.command = command;
   opt.data_path = cfg.data;
-  if (opt.gibbs_burn_in >= opt.gibbs_iterations)
-    throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(opt.gibbs_iterations) + ")");
-  opt.validate();
+  opt.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
   const std::string data_hash = std::to_string(calib::fnv1a64(readFileBytes(cfg.data)));
 
   const bool bar_on = !cfg.quiet && stderrIsTerminal();
@@ -155,7 +153,13 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
       ->check(CLI::Range(0L, 1000L));
   c->add_option("--seed", cfg->seed, "Seed of the design and the sampler (default: the study's seed)")->check(CLI::Range(0LL, (1LL << 62)));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
-  return {c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }};
+  CommandHandle handle{c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }, {}};
+  // Library errors name CalibrationOptions fields ("calibration.gibbs_burn_in"); the fields whose
+  // flag is not "--" + the field with '_' as '-':
+  handle.field_flags["gibbs_iterations"] = "--iterations";
+  handle.field_flags["gibbs_burn_in"] = "--burn-in";
+  handle.field_flags["optimizer_starts"] = "--starts";
+  return handle;
 }
 
 }  // namespace dtwin::cli

@@ -35,6 +35,8 @@ int runClassify(const ClassifyConfig& cfg, const std::string& command) {
   opt.command = command;
   opt.validate();
   if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
+  if (!fs::exists(cfg.field)) throw InputError(cfg.field, "field data file not found (--field)");
+  if (!fs::is_directory(cfg.synthetic)) throw InputError(cfg.synthetic, "synthetic data folder not found (--synthetic)");
   const classify::FieldClassification c = classify::classifyFieldFile(study, cfg.field, cfg.synthetic, opt);
   classify::writeFieldClassification(c, cfg.out);
   if (!cfg.quiet) {
@@ -70,7 +72,11 @@ CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line
   c->add_option("--threshold", cfg->threshold, "Decisive evidence threshold on 2 ln B for the recommendation")->capture_default_str();
   c->add_option("--out", cfg->out, "Output folder: records.csv and summary.json")->required();
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
-  return {c, [cfg, command_line] { return runClassify(*cfg, command_line); }};
+  CommandHandle handle{c, [cfg, command_line] { return runClassify(*cfg, command_line); }, {}};
+  // Library errors name FieldClassifyOptions fields ("field_classify.threshold"); the fields whose
+  // flag is not "--" + the field with '_' as '-':
+  handle.field_flags["assemblies"] = "--assembly";
+  return handle;
 }
 
 }  // namespace dtwin::cli

@@ -4,15 +4,24 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <map>
 #include <string>
 
 namespace dtwin::cli {
 
 /// A registered subcommand: `run` is called when `app` was chosen on the command line.
+/// Library errors name option fields ("diagnose.effects", common/validate.hpp), never flags;
+/// main() shows them as the flag the user typed: the field's entry in `field_flags` if any
+/// (field name -> flag), else "--" + the field with '_' as '-' when the command has that flag.
 struct CommandHandle {
   CLI::App* app = nullptr;
   std::function<int()> run;
+  std::map<std::string, std::string> field_flags = {};
 };
+
+/// The message of an InputError as the user of command `handle` should read it: where() of the
+/// form "<options>.<field>" becomes the flag that sets the field, when there is one.
+std::string messageForCommand(const CommandHandle& handle, const std::string& where, const std::string& rule);
 
 /// The embedded default study (data/studies/demo.toml in the source tree or the install prefix).
 std::string defaultStudy();

@@ -29,3 +29,25 @@ bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
 bool isRootRank() { return Distributed::instance().isRoot(); }
 
 }  // namespace dtwin::cli
+
+namespace dtwin::cli {
+
+std::string messageForCommand(const CommandHandle& handle, const std::string& where, const std::string& rule) {
+  const std::string plain = where.empty() ? rule : where + ": " + rule;
+  const auto dot = where.rfind('.');
+  // Only "<options>.<field>" (no path, no spaces) is an option field.
+  if (dot == std::string::npos || where.find_first_of(" /:") != std::string::npos || handle.app == nullptr) return plain;
+  const std::string field = where.substr(dot + 1);
+  std::string flag;
+  if (auto it = handle.field_flags.find(field); it != handle.field_flags.end()) {
+    flag = it->second;
+  } else {
+    flag = "--" + field;
+    for (char& ch : flag)
+      if (ch == '_') ch = '-';
+    if (handle.app->get_option_no_throw(flag) == nullptr) return plain;
+  }
+  return flag + ": " + rule;
+}
+
+}  // namespace dtwin::cli

@@ -46,9 +46,7 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   }
   if (!cfg.design.empty()) o.calibration.design.adaptive = cfg.design == "adaptive";
   if (!cfg.interval.empty()) o.calibration.interval = cfg.interval;
-  if (o.calibration.gibbs_burn_in >= o.calibration.gibbs_iterations)
-    throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
-  o.validate();
+  o.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
   const std::size_t n_asm = cfg.assemblies.empty() ? study.assemblies().size() : cfg.assemblies.size();
   if (!cfg.quiet)
     std::printf("coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n", n_asm, n_asm == 1 ? "y" : "ies",
@@ -101,7 +99,14 @@ CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line
   c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
   c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
-  return {c, [cfg, command_line] { return runCoverage(*cfg, command_line); }};
+  CommandHandle handle{c, [cfg, command_line] { return runCoverage(*cfg, command_line); }, {}};
+  // Library errors name CoverageOptions and CalibrationOptions fields ("coverage.out_dir",
+  // "calibration.gibbs_burn_in"); the fields whose flag is not "--" + the field with '_' as '-':
+  handle.field_flags["out_dir"] = "--out";
+  handle.field_flags["gibbs_iterations"] = "--iterations";
+  handle.field_flags["gibbs_burn_in"] = "--burn-in";
+  handle.field_flags["optimizer_starts"] = "--starts";
+  return handle;
 }
 
 }  // namespace dtwin::cli

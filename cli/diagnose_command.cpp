@@ -245,7 +245,12 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
   c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
   c->add_option("--out", cfg->out, "Folder: diagnosis.json, comparisons/, calibrations/ (resumable)");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
-  return {c, [cfg, command_line] { return runDiagnose(*cfg, command_line); }};
+  CommandHandle handle{c, [cfg, command_line] { return runDiagnose(*cfg, command_line); }, {}};
+  // Library errors name DiagnoseOptions fields and diagnose()'s arguments ("diagnose.compare_draws");
+  // the fields whose flag is not "--" + the field with '_' as '-':
+  handle.field_flags["compare_draws"] = "--draws";
+  handle.field_flags["fit"] = "--data";
+  return handle;
 }
 
 }  // namespace dtwin::cli

@@ -205,6 +205,7 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
 
   CommandHandle h;
   h.app = g;
+  h.field_flags = {{"channels", "--channels"}, {"window", "--window"}, {"rate_hz", "--rate"}, {"hidden_effects", "--hidden-effect"}};
   h.run = [=]() -> int {
     try {
       if (*l) return runLab(*lab, command_line);

@@ -8,6 +8,7 @@
 #include "common/errors.hpp"
 #include "twin/bench.hpp"
 #include "twin/provenance.hpp"
+#include "twin/road_setting.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
 
@@ -22,6 +23,14 @@ int runList(const std::string& study_path, bool params) {
   for (const auto& a : study.assemblies()) std::printf("  %-4s %s\n", a.id.c_str(), a.label().c_str());
   std::printf("\nscenarios:\n");
   for (const auto& s : study.scenarios) std::printf("  %-10s %s\n", s.name.c_str(), s.toJson()["road"].dump().c_str());
+  std::printf("\nroad types (scenarios.NAME.road.type):\n");
+  for (const auto& t : roadTypes()) std::printf("  %-10s %s\n", t.name.c_str(), t.description.c_str());
+  std::printf("\nsubsystem options:\n");
+  for (const auto& [sub, options] : knownSubsystems()) {
+    std::string list;
+    for (const auto& o : options) list += (list.empty() ? "" : ", ") + o;
+    std::printf("  %-10s %s\n", sub.c_str(), list.c_str());
+  }
   std::printf("\ncalibrated parameters:\n");
   for (const auto& c : study.calibrated)
     std::printf("  %-24s [%g, %g] %s%s\n", c.name.c_str(), c.lower, c.upper, c.unit.c_str(),

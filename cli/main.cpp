@@ -45,16 +45,18 @@ int runTwin(int argc, char** argv, std::string& error) {
   // Under MPI (mpirun -n K twin ...) the commands that simulate in bulk run on every rank and
   // spread their simulations (twin/distributed.hpp); the others run on the root alone.
   const Distributed& dist = Distributed::instance();
+  const CommandHandle* chosen = nullptr;
   try {
     for (auto& c : commands) {
       if (!c.app->parsed()) continue;
+      chosen = &c;
       const std::string name = c.app->get_name();
       const bool distributed = name == "calibrate" || name == "synthesize" || name == "study" || name == "generate";
       if (!distributed && !dist.isRoot()) return 0;
       return c.run();
     }
   } catch (const InputError& e) {
-    error = std::string("error: ") + e.what();
+    error = std::string("error: ") + (chosen ? messageForCommand(*chosen, e.where(), e.rule()) : std::string(e.what()));
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 2;
   } catch (const std::exception& e) {

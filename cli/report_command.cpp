@@ -79,7 +79,11 @@ CommandHandle addReportCommand(CLI::App& root, const std::string& command_line) 
       ->capture_default_str()->check(CLI::Range(2, 100000));
   c->add_option("--threads", cfg->threads, "Simulations in parallel (0: all cores; never changes the page)")->check(CLI::Range(0, 1024));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
-  return {c, [cfg, command_line] { return runReportCommand(*cfg, command_line); }};
+  CommandHandle handle{c, [cfg, command_line] { return runReportCommand(*cfg, command_line); }, {}};
+  // Library errors name fields ("lab_bands.draws" is --draws); the ones whose flag is not "--" +
+  // the field with '_' as '-':
+  handle.field_flags["diag_dirs"] = "--diagnosis";
+  return handle;
 }
 
 }  // namespace dtwin::cli

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -20,9 +21,9 @@ struct SimulateConfig {
   std::string study = defaultStudy(), assembly = "M1", scenario = "lab", out;
   std::vector<std::string> sets, effects, channels;
   std::vector<double> window;
-  long long seed = -1;
+  std::optional<std::uint64_t> seed;  ///< unset: the study's
   std::string integrator;
-  double accuracy = 0, max_step = 0, obstacle_step = 0, rate = 0;
+  std::optional<double> accuracy, max_step, obstacle_step, rate;  ///< unset: the study's
   bool quiet = false;
 };
 
@@ -40,11 +41,11 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
   for (auto& e : cfg.effects) effects.push_back(parseEffectSetting(e, "--effect"));
   SimulationOptions opt = study.simulation;
   if (!cfg.integrator.empty()) opt.integrator = cfg.integrator;
-  if (cfg.accuracy > 0) opt.accuracy = cfg.accuracy;
-  if (cfg.max_step > 0) opt.max_step_s = cfg.max_step;
-  if (cfg.obstacle_step > 0) opt.obstacle_max_step_s = cfg.obstacle_step;
-  if (cfg.rate > 0) opt.output_rate_hz = cfg.rate;
-  if (auto rule = opt.check(); !rule.empty()) throw InputError("command line", rule);
+  opt.accuracy = cfg.accuracy.value_or(opt.accuracy);
+  opt.max_step_s = cfg.max_step.value_or(opt.max_step_s);
+  opt.obstacle_max_step_s = cfg.obstacle_step.value_or(opt.obstacle_max_step_s);
+  opt.output_rate_hz = cfg.rate.value_or(opt.output_rate_hz);
+  opt.validate();  // errors name the flag (field_flags below)
   if (!cfg.window.empty() && (cfg.window.size() != 2 || !(cfg.window[0] < cfg.window[1])))
     throw InputError("--window", "expects T0,T1 with T0 < T1");
   for (auto& c : cfg.channels) {
@@ -55,7 +56,7 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
   std::vector<std::string> channels = cfg.channels;
   if (!channels.empty() && std::find(channels.begin(), channels.end(), "time_s") == channels.end())
     channels.insert(channels.begin(), "time_s");
-  const std::uint64_t seed = cfg.seed >= 0 ? static_cast<std::uint64_t>(cfg.seed) : study.seed;
+  const std::uint64_t seed = cfg.seed.value_or(study.seed);
 
   std::vector<AssemblySpec> targets;
   const bool all = cfg.assembly == "all";
@@ -125,7 +126,7 @@ CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line
   s->add_option("--out", sim.out, "Output CSV file (a folder with --assembly all); the sidecar is written next to it as .json")->required();
   s->add_option("--set", sim.sets, "Override a parameter: NAME=VALUE (e.g. tire.stiffness=2.0e5); repeatable; `twin list --parameters` lists names");
   s->add_option("--effect", sim.effects, "Add an effect: NAME[:param=value,...] (e.g. bump_stop:stiffness=5e6,gap_m=0.04); repeatable");
-  s->add_option("--seed", sim.seed, "Seed of random roads (default: the study's seed)");
+  s->add_option("--seed", sim.seed, "Seed of random roads (default: the study's seed)")->check(CLI::NonNegativeNumber);
   s->add_option("--channels", sim.channels, "Only these channels (comma separated); time_s is always written")->delimiter(',');
   s->add_option("--window", sim.window, "Only rows with T0 <= time_s <= T1 (T0,T1)")->delimiter(',')->expected(2);
   s->add_option("--integrator", sim.integrator, "Override the study's integrator: rk-merson, rk3, rk-feldberg, cpodes, semi-explicit-euler2");
@@ -135,7 +136,9 @@ CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line
   s->add_option("--output-rate", sim.rate, "Override the output rate [Hz]");
   s->add_flag("--quiet", sim.quiet, "Print nothing on success");
 
-  return {s, [cfg, command_line] { return runSimulate(*cfg, command_line); }};
+  CommandHandle handle{s, [cfg, command_line] { return runSimulate(*cfg, command_line); }};
+  handle.field_flags = {{"effects", "--effect"}, {"max_step_s", "--max-step"}, {"obstacle_max_step_s", "--obstacle-step"}, {"output_rate_hz", "--output-rate"}};
+  return handle;
 }
 
 }  // namespace dtwin::cli

@@ -123,7 +123,14 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
   c->add_flag("--no-branch", cfg->no_branch, "Simulate every road from t = 0 (default: the smooth start once per draw)");
   c->add_flag("--no-fourth-moment", cfg->no_fourth, "Do not accumulate the moments Ledoit-Wolf needs");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
-  return {c, [cfg, command_line] { return runSynthesize(*cfg, command_line); }};
+  CommandHandle handle{c, [cfg, command_line] { return runSynthesize(*cfg, command_line); }, {}};
+  // Library errors name SynthesisOptions fields ("synthesis.road_library"); the fields whose flag
+  // is not "--" + the field with '_' as '-':
+  handle.field_flags["roads_per_draw"] = "--roads";
+  handle.field_flags["road_library"] = "--library";
+  handle.field_flags["t_begin_s"] = "--window";
+  handle.field_flags["t_end_s"] = "--window";
+  return handle;
 }
 
 }  // namespace dtwin::cli

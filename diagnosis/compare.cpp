@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 #include "twin/parallel.hpp"
 
 namespace dtwin::diag {
@@ -16,7 +17,6 @@ namespace {
 
 double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
-/// P(χ²_k > x), Wilson–Hilferty cube-root normal approximation (accurate to ~1e-3 for k ≥ 10).
 /// The normal deviate of F = (X/d1) against F(d1, d2) (Paulson 1942; d2 = inf: Wilson–Hilferty
 /// for χ²_d1/d1). Accurate to ~1e-3 in p for d1, d2 >= 10.
 double fDeviate(double f, double d1, double d2) {
@@ -49,30 +49,7 @@ int welchSegment(std::size_t n) {
 }  // namespace
 
 std::string describeScenarioWindow(const ScenarioSpec& sc, const VehicleData& v, double t0, double t1) {
-  const double wb = v.wheelbase();
-  auto overlaps = [&](double a, double b) { return t0 <= b && t1 >= a; };
-  std::vector<std::string> parts;
-  if (sc.road.type == RoadSpec::Type::Bump) {
-    const double x0 = sc.speed.distance(sc.road.bump_time_s), L = sc.road.bump_length_m;
-    const double f0 = sc.speed.timeAtDistance(x0), f1 = sc.speed.timeAtDistance(x0 + L);
-    const double r0 = sc.speed.timeAtDistance(x0 + wb), r1 = sc.speed.timeAtDistance(x0 + wb + L);
-    const double fm = 0.5 * (f0 + f1), rm = 0.5 * (r0 + r1);
-    if (overlaps(f0, fm)) parts.push_back("front wheels climbing the bump");
-    if (overlaps(fm, f1)) parts.push_back("front wheels leaving the bump");
-    if (overlaps(f1, r0)) parts.push_back("after the front wheels' bump (wheel hop and body response)");
-    if (overlaps(r0, rm)) parts.push_back("rear wheels climbing the bump");
-    if (overlaps(rm, r1)) parts.push_back("rear wheels leaving the bump");
-    if (t1 > r1) parts.push_back("after the rear wheels' bump (free vibration)");
-    if (t0 < f0) parts.push_back("smooth road before the bump");
-  } else if (sc.road.type == RoadSpec::Type::Iso) {
-    const double ts = sc.road.smooth_until_s;
-    if (t0 < ts) parts.push_back("smooth road before the rough section");
-    if (t1 >= ts) parts.push_back("rough road (ISO 8608 class " + std::string(1, sc.road.iso_class) + ")");
-  } else if (sc.road.type == RoadSpec::Type::Csv) {
-    parts.push_back("measured road profile");
-  } else {
-    parts.push_back("flat road");
-  }
+  std::vector<std::string> parts = sc.road->describeWindow(sc, v, t0, t1);
   if (sc.speed.ramp_s > 0 && t0 < sc.speed.ramp_s) parts.push_back("accelerating");
   std::string s;
   for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? "; " : "") + parts[i];
@@ -101,9 +78,215 @@ std::vector<std::vector<double>> posteriorRows(const std::vector<std::string>& s
   return out;
 }
 
+void CompareOptions::validate() const {
+  const OptionCheck check("compare");
+  check.atLeast("threads", threads, 0);
+  check.nonNegative("window_threshold", window_threshold);
+  check.nonNegative("window_merge_s", window_merge_s);
+  check.nonNegative("window_min_s", window_min_s);
+  check.atLeast("state_bins", state_bins, 1);
+  check.atLeast("fitted_parameters", fitted_parameters, 0);
+}
+
+namespace {
+
+/// The residual of one channel pooled over every data set, with the model's states at the same
+/// times (the force-state maps).
+struct Pooled {
+  std::map<std::string, std::vector<double>> state;
+  std::vector<double> residual;
+};
+
+/// What every series of one comparison shares.
+struct SeriesContext {
+  const calib::LabObjective& objective;
+  const std::vector<const std::vector<double>*>& ok;  ///< the predictions of the draws that simulated
+  const std::map<std::string, ChannelNoise>& noise;
+  const CompareOptions& options;
+  const VehicleData& vehicle;
+  double rate;  ///< output rate of the traces [rows/s]
+};
+
+/// The row of a trace at time t, clamped to its last row.
+double valueAt(const Trace& tr, const std::string& column, std::size_t row) {
+  const auto& col = tr.column(column);
+  return row < col.size() ? col[row] : col.back();
+}
+
+/// Adds the residual of channel `ch` at trace row `row` and the model's states there (the
+/// channel's corner, "fl" for chassis channels) to `pl`.
+void poolStates(Pooled& pl, const Trace& tr, const std::string& ch, std::size_t row, double residual) {
+  pl.residual.push_back(residual);
+  std::string c = cornerOf(ch);
+  if (c.empty()) c = "fl";
+  const bool front = c[0] == 'f';
+  pl.state["susp_defl_" + c + "_m"].push_back(valueAt(tr, "susp_defl_" + c + "_m", row));
+  pl.state["susp_rate_" + c + "_mps"].push_back(valueAt(tr, "susp_rate_" + c + "_mps", row));
+  pl.state["tire_defl_" + c + "_m"].push_back(valueAt(tr, "tire_defl_" + c + "_m", row));
+  pl.state["speed_mps"].push_back(valueAt(tr, "speed_mps", row));
+  const std::string l = front ? "fl" : "rl", r = front ? "fr" : "rr";
+  pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(valueAt(tr, "susp_defl_" + l + "_m", row) -
+                                                                                   valueAt(tr, "susp_defl_" + r + "_m", row));
+}
+
+/// The residual of a fitted series in frequency (needs a uniform time base of >= 64 times), with
+/// the road under the channel's wheel as the coherence input; else why not, in bands_note.
+void addBands(SeriesComparison& sc, const Trace& tr, double rate) {
+  bool uniform = sc.t.size() >= 64;
+  const double dt = sc.t.size() > 1 ? sc.t[1] - sc.t[0] : 0.0;
+  for (std::size_t i = 1; uniform && i < sc.t.size(); ++i)
+    if (std::abs(sc.t[i] - sc.t[i - 1] - dt) > 1e-6 * dt) uniform = false;
+  if (!uniform) {
+    sc.bands_note = "no spectrum: fewer than 64 times or a non-uniform time base";
+    return;
+  }
+  if (!sc.fitted) {
+    sc.bands_note = "no spectrum: no noise estimate for this channel";
+    return;
+  }
+  std::vector<double> res(sc.t.size()), road(sc.t.size());
+  double rbar = 0.0;
+  std::string c = cornerOf(sc.channel);
+  if (c.empty()) c = "fl";
+  const auto& rc = tr.column("road_" + c + "_m");
+  for (std::size_t i = 0; i < sc.t.size(); ++i) {
+    res[i] = sc.measured_mean[i] - sc.predicted_mean[i];
+    rbar += sc.repetitions[i];
+    const std::size_t row = static_cast<std::size_t>(std::llround(sc.t[i] * rate));
+    road[i] = row < rc.size() ? rc[row] : rc.back();
+  }
+  rbar /= static_cast<double>(sc.t.size());
+  sc.bands = bandAnalysis(res, 1.0 / dt, sc.noise_variance / rbar, &road, welchSegment(res.size()));
+}
+
+/// One (data set, channel): the predictive mean and band at every measured time, the error
+/// figures, the windows of large residual (fitted series) and the bands; the residual is pooled
+/// into `pl` for the force-state maps. `offset`: the data set's first record in the objective.
+SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds, const std::string& ch, std::size_t offset,
+                               const Trace& tr, const ScenarioSpec& scenario, Pooled& pl) {
+  const auto& measured = cx.objective.measured();
+  SeriesComparison sc;
+  sc.data_set = ds.name;
+  sc.scenario = ds.scenario;
+  sc.channel = ch;
+  sc.unit = unitOf(ch);
+  const auto nit = cx.noise.find(ch);
+  if (nit != cx.noise.end()) {
+    sc.fitted = true;
+    sc.noise_variance = nit->second.variance;
+    sc.noise_source = nit->second.source;
+    sc.noise_dof = nit->second.dof;
+  } else {
+    sc.noise_source = "none (not fitted)";
+  }
+  std::map<double, std::vector<std::size_t>> by_time;
+  for (std::size_t k = 0; k < ds.data.records.size(); ++k)
+    if (ds.data.records[k].channel == ch) by_time[ds.data.records[k].time_s].push_back(offset + k);
+  double ss = 0, ss_sys = 0, ss_noise = 0, ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+  long n_rec = 0, covered = 0;
+  for (const auto& [t, idx] : by_time) {
+    double ym = 0.0;
+    for (auto i : idx) ym += measured[i];
+    ym /= static_cast<double>(idx.size());
+    double pm = 0.0, pv = 0.0;
+    for (const auto* p : cx.ok) pm += (*p)[idx[0]];
+    pm /= static_cast<double>(cx.ok.size());
+    for (const auto* p : cx.ok) pv += ((*p)[idx[0]] - pm) * ((*p)[idx[0]] - pm);
+    pv = cx.ok.size() > 1 ? pv / static_cast<double>(cx.ok.size() - 1) : 0.0;
+    const double half = 1.959964 * std::sqrt(pv + sc.noise_variance);
+    sc.t.push_back(t);
+    sc.repetitions.push_back(static_cast<int>(idx.size()));
+    sc.measured_mean.push_back(ym);
+    sc.predicted_mean.push_back(pm);
+    sc.band_lo.push_back(pm - half);
+    sc.band_hi.push_back(pm + half);
+    const double zden = std::sqrt(sc.noise_variance / static_cast<double>(idx.size()) + pv);
+    sc.z.push_back(zden > 0 ? (ym - pm) / zden : std::numeric_limits<double>::quiet_NaN());
+    for (auto i : idx) {
+      const double e = measured[i] - pm;
+      ss += e * e;
+      ++n_rec;
+      if (std::abs(e) > sc.max_abs) {
+        sc.max_abs = std::abs(e);
+        sc.max_at_s = t;
+      }
+      if (std::abs(e) <= half) ++covered;
+    }
+    ss_sys += (ym - pm) * (ym - pm);
+    ss_noise += sc.noise_variance / static_cast<double>(idx.size());
+    ymin = std::min(ymin, ym);
+    ymax = std::max(ymax, ym);
+    if (sc.fitted) sc.lack_of_fit += static_cast<double>(idx.size()) * (ym - pm) * (ym - pm) / sc.noise_variance;
+    poolStates(pl, tr, ch, static_cast<std::size_t>(std::llround(t * cx.rate)), ym - pm);
+  }
+  const double nt = static_cast<double>(sc.t.size());
+  sc.rms = std::sqrt(ss / static_cast<double>(n_rec));
+  sc.nrmse = ymax > ymin ? sc.rms / (ymax - ymin) : 0.0;
+  sc.coverage = static_cast<double>(covered) / static_cast<double>(n_rec);
+  sc.systematic_rms = std::sqrt(std::max(0.0, (ss_sys - ss_noise) / nt));
+  // In time: windows of large standardised residual, labelled.
+  if (sc.fitted) {
+    const auto& o = cx.options;
+    for (const auto& w : exceedanceWindows(sc.t, sc.z, o.window_threshold, o.window_merge_s, o.window_min_s)) {
+      LabelledWindow lw;
+      lw.window = w;
+      lw.label = describeScenarioWindow(scenario, cx.vehicle, w.t_begin, w.t_end);
+      lw.speed_mps = scenario.speed.speed(0.5 * (w.t_begin + w.t_end));
+      sc.windows.push_back(lw);
+    }
+  }
+  addBands(sc, tr, cx.rate);
+  return sc;
+}
+
+/// The force-state maps of one channel: its pooled residual binned against each state, with the
+/// signature fits (rate-like states: fitRateSignatures, else fitDeflectionSignatures), best first.
+ChannelMaps stateMaps(const std::string& ch, const Pooled& pl, int state_bins) {
+  ChannelMaps cm;
+  cm.channel = ch;
+  for (const auto& [name, values] : pl.state) {
+    StateMap m;
+    m.state = name;
+    m.bins = binByState(values, pl.residual, std::min<int>(state_bins, static_cast<int>(values.size() / 2)));
+    const bool rate_like = name.find("_rate_") != std::string::npos;
+    m.fits = rate_like ? fitRateSignatures(values, pl.residual) : fitDeflectionSignatures(values, pl.residual);
+    std::sort(m.fits.begin(), m.fits.end(),
+              [](const SignatureFit& a, const SignatureFit& b) { return a.explained_fraction > b.explained_fraction; });
+    cm.maps.push_back(std::move(m));
+  }
+  return cm;
+}
+
+/// The lack-of-fit test over the fitted series of `out` (see Comparison) and the systematic RMS.
+void lackOfFit(Comparison& out, int fitted_parameters) {
+  long fitted_points = 0;
+  for (const auto& x : out.series)
+    if (x.fitted) {
+      out.lack_of_fit += x.lack_of_fit;
+      fitted_points += static_cast<long>(x.t.size());
+    }
+  out.lack_of_fit_dof = std::max<long>(1, fitted_points - fitted_parameters);
+  const double k = static_cast<double>(out.lack_of_fit_dof);
+  // σ_c² estimated from the repetitions with dof_c: X/k is F-like. Its denominator's effective
+  // dof: 1/d2 = Σ_c (k_c/K)² / dof_c (study [noise] variances are known: no contribution).
+  double inv_d2 = 0.0;
+  for (const auto& x : out.series)
+    if (x.fitted && x.noise_dof > 0) {
+      const double share = static_cast<double>(x.t.size()) / static_cast<double>(std::max<long>(1, fitted_points));
+      inv_d2 += share * share / static_cast<double>(x.noise_dof);
+    }
+  out.noise_dof_effective = inv_d2 > 0 ? 1.0 / inv_d2 : std::numeric_limits<double>::infinity();
+  out.lack_of_fit_z = fDeviate(out.lack_of_fit / k, k, out.noise_dof_effective);
+  out.lack_of_fit_p = 1.0 - normalCdf(out.lack_of_fit_z);
+  out.systematic_rms_sd = fitted_points > 0 ? std::sqrt(std::max(0.0, out.lack_of_fit - k) / static_cast<double>(fitted_points)) : 0.0;
+}
+
+}  // namespace
+
 Comparison compareModel(const calib::LabObjective& objective, const std::vector<calib::DataSet>& sets,
                         const std::vector<std::vector<double>>& draws, const std::map<std::string, ChannelNoise>& noise,
                         const CompareOptions& options) {
+  options.validate();
   if (draws.empty()) throw InputError("compare", "needs at least one posterior draw");
   Comparison out;
   out.draws = static_cast<long>(draws.size());
@@ -125,178 +308,27 @@ Comparison compareModel(const calib::LabObjective& objective, const std::vector<
   if (traces.empty()) traces = objective.traces(draws[0]);
   if (traces.empty()) throw std::runtime_error("compare: the run at the posterior mean failed");
   const auto scenarios = objective.scenarios();
-  const VehicleData& veh = objective.model().vehicle();
   const double rate = [&] {
     // Output rate of the traces (rows per second).
     const auto& tc = traces[0].column("time_s");
     return tc.size() > 1 ? 1.0 / (tc[1] - tc[0]) : 1000.0;
   }();
+  const SeriesContext cx{objective, ok, noise, options, objective.model().vehicle(), rate};
 
-  struct Pooled {
-    std::map<std::string, std::vector<double>> state;
-    std::vector<double> residual;
-  };
   std::map<std::string, Pooled> pooled;
   std::vector<std::string> channel_order;
-  long fitted_points = 0;
-
   std::size_t offset = 0;
   for (std::size_t s = 0; s < sets.size(); ++s) {
-    const auto& ds = sets[s];
-    const Trace& tr = traces[s];
-    for (const auto& ch : ds.data.channels()) {
-      SeriesComparison sc;
-      sc.data_set = ds.name;
-      sc.scenario = ds.scenario;
-      sc.channel = ch;
-      sc.unit = unitOf(ch);
-      const auto nit = noise.find(ch);
-      if (nit != noise.end()) {
-        sc.fitted = true;
-        sc.noise_variance = nit->second.variance;
-        sc.noise_source = nit->second.source;
-        sc.noise_dof = nit->second.dof;
-      } else {
-        sc.noise_source = "none (not fitted)";
-      }
-      std::map<double, std::vector<std::size_t>> by_time;
-      for (std::size_t k = 0; k < ds.data.records.size(); ++k)
-        if (ds.data.records[k].channel == ch) by_time[ds.data.records[k].time_s].push_back(offset + k);
-      double ss = 0, ss_sys = 0, ss_noise = 0, ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
-      long n_rec = 0, covered = 0;
-      for (const auto& [t, idx] : by_time) {
-        double ym = 0.0;
-        for (auto i : idx) ym += objective.measured()[i];
-        ym /= static_cast<double>(idx.size());
-        double pm = 0.0, pv = 0.0;
-        for (const auto* p : ok) pm += (*p)[idx[0]];
-        pm /= static_cast<double>(ok.size());
-        for (const auto* p : ok) pv += ((*p)[idx[0]] - pm) * ((*p)[idx[0]] - pm);
-        pv = ok.size() > 1 ? pv / static_cast<double>(ok.size() - 1) : 0.0;
-        const double half = 1.959964 * std::sqrt(pv + sc.noise_variance);
-        sc.t.push_back(t);
-        sc.repetitions.push_back(static_cast<int>(idx.size()));
-        sc.measured_mean.push_back(ym);
-        sc.predicted_mean.push_back(pm);
-        sc.band_lo.push_back(pm - half);
-        sc.band_hi.push_back(pm + half);
-        const double zden = std::sqrt(sc.noise_variance / static_cast<double>(idx.size()) + pv);
-        sc.z.push_back(zden > 0 ? (ym - pm) / zden : std::numeric_limits<double>::quiet_NaN());
-        for (auto i : idx) {
-          const double e = objective.measured()[i] - pm;
-          ss += e * e;
-          ++n_rec;
-          if (std::abs(e) > sc.max_abs) {
-            sc.max_abs = std::abs(e);
-            sc.max_at_s = t;
-          }
-          if (std::abs(e) <= half) ++covered;
-        }
-        ss_sys += (ym - pm) * (ym - pm);
-        ss_noise += sc.noise_variance / static_cast<double>(idx.size());
-        ymin = std::min(ymin, ym);
-        ymax = std::max(ymax, ym);
-        if (sc.fitted) sc.lack_of_fit += static_cast<double>(idx.size()) * (ym - pm) * (ym - pm) / sc.noise_variance;
-        // Pool the residual against the model's states at this time (force-state maps).
-        const std::size_t row = static_cast<std::size_t>(std::llround(t * rate));
-        auto& pl = pooled[ch];
-        pl.residual.push_back(ym - pm);
-        std::string c = cornerOf(ch);
-        if (c.empty()) c = "fl";
-        const bool front = c[0] == 'f';
-        auto val = [&](const std::string& name) {
-          const auto& col = tr.column(name);
-          return row < col.size() ? col[row] : col.back();
-        };
-        pl.state["susp_defl_" + c + "_m"].push_back(val("susp_defl_" + c + "_m"));
-        pl.state["susp_rate_" + c + "_mps"].push_back(val("susp_rate_" + c + "_mps"));
-        pl.state["tire_defl_" + c + "_m"].push_back(val("tire_defl_" + c + "_m"));
-        pl.state["speed_mps"].push_back(val("speed_mps"));
-        const std::string l = front ? "fl" : "rl", r = front ? "fr" : "rr";
-        pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(
-            val("susp_defl_" + l + "_m") - val("susp_defl_" + r + "_m"));
-      }
+    for (const auto& ch : sets[s].data.channels()) {
+      out.series.push_back(compareSeries(cx, sets[s], ch, offset, traces[s], scenarios[s], pooled[ch]));
       if (std::find(channel_order.begin(), channel_order.end(), ch) == channel_order.end()) channel_order.push_back(ch);
-      const double nt = static_cast<double>(sc.t.size());
-      sc.rms = std::sqrt(ss / static_cast<double>(n_rec));
-      sc.nrmse = ymax > ymin ? sc.rms / (ymax - ymin) : 0.0;
-      sc.coverage = static_cast<double>(covered) / static_cast<double>(n_rec);
-      sc.systematic_rms = std::sqrt(std::max(0.0, (ss_sys - ss_noise) / nt));
-      if (sc.fitted) {
-        out.lack_of_fit += sc.lack_of_fit;
-        fitted_points += static_cast<long>(sc.t.size());
-      }
-      // In time: windows of large standardised residual, labelled.
-      if (sc.fitted) {
-        for (const auto& w : exceedanceWindows(sc.t, sc.z, options.window_threshold, options.window_merge_s,
-                                               options.window_min_s)) {
-          LabelledWindow lw;
-          lw.window = w;
-          lw.label = describeScenarioWindow(scenarios[s], veh, w.t_begin, w.t_end);
-          lw.speed_mps = scenarios[s].speed.speed(0.5 * (w.t_begin + w.t_end));
-          sc.windows.push_back(lw);
-        }
-      }
-      // In frequency: needs a uniform time base.
-      bool uniform = sc.t.size() >= 64;
-      const double dt = sc.t.size() > 1 ? sc.t[1] - sc.t[0] : 0.0;
-      for (std::size_t i = 1; uniform && i < sc.t.size(); ++i)
-        if (std::abs(sc.t[i] - sc.t[i - 1] - dt) > 1e-6 * dt) uniform = false;
-      if (!uniform) {
-        sc.bands_note = "no spectrum: fewer than 64 times or a non-uniform time base";
-      } else if (!sc.fitted) {
-        sc.bands_note = "no spectrum: no noise estimate for this channel";
-      } else {
-        std::vector<double> res(sc.t.size()), road(sc.t.size());
-        double rbar = 0.0;
-        std::string c = cornerOf(ch);
-        if (c.empty()) c = "fl";
-        const auto& rc = tr.column("road_" + c + "_m");
-        for (std::size_t i = 0; i < sc.t.size(); ++i) {
-          res[i] = sc.measured_mean[i] - sc.predicted_mean[i];
-          rbar += sc.repetitions[i];
-          const std::size_t row = static_cast<std::size_t>(std::llround(sc.t[i] * rate));
-          road[i] = row < rc.size() ? rc[row] : rc.back();
-        }
-        rbar /= static_cast<double>(sc.t.size());
-        sc.bands = bandAnalysis(res, 1.0 / dt, sc.noise_variance / rbar, &road, welchSegment(res.size()));
-      }
-      out.series.push_back(std::move(sc));
     }
-    offset += ds.data.records.size();
+    offset += sets[s].data.records.size();
   }
   // In state: pooled force-state maps per channel.
-  for (const auto& ch : channel_order) {
-    ChannelMaps cm;
-    cm.channel = ch;
-    const auto& pl = pooled[ch];
-    if (pl.residual.size() < 8) continue;
-    for (const auto& [name, values] : pl.state) {
-      StateMap m;
-      m.state = name;
-      m.bins = binByState(values, pl.residual, std::min<int>(options.state_bins, static_cast<int>(values.size() / 2)));
-      const bool rate_like = name.find("_rate_") != std::string::npos;
-      m.fits = rate_like ? fitRateSignatures(values, pl.residual) : fitDeflectionSignatures(values, pl.residual);
-      std::sort(m.fits.begin(), m.fits.end(),
-                [](const SignatureFit& a, const SignatureFit& b) { return a.explained_fraction > b.explained_fraction; });
-      cm.maps.push_back(std::move(m));
-    }
-    out.maps.push_back(std::move(cm));
-  }
-  out.lack_of_fit_dof = std::max<long>(1, fitted_points - options.fitted_parameters);
-  const double k = static_cast<double>(out.lack_of_fit_dof);
-  // σ_c² estimated from the repetitions with dof_c: X/k is F-like. Its denominator's effective
-  // dof: 1/d2 = Σ_c (k_c/K)² / dof_c (study [noise] variances are known: no contribution).
-  double inv_d2 = 0.0;
-  for (const auto& x : out.series)
-    if (x.fitted && x.noise_dof > 0) {
-      const double share = static_cast<double>(x.t.size()) / static_cast<double>(std::max<long>(1, fitted_points));
-      inv_d2 += share * share / static_cast<double>(x.noise_dof);
-    }
-  out.noise_dof_effective = inv_d2 > 0 ? 1.0 / inv_d2 : std::numeric_limits<double>::infinity();
-  out.lack_of_fit_z = fDeviate(out.lack_of_fit / k, k, out.noise_dof_effective);
-  out.lack_of_fit_p = 1.0 - normalCdf(out.lack_of_fit_z);
-  out.systematic_rms_sd = fitted_points > 0 ? std::sqrt(std::max(0.0, out.lack_of_fit - k) / static_cast<double>(fitted_points)) : 0.0;
+  for (const auto& ch : channel_order)
+    if (pooled[ch].residual.size() >= 8) out.maps.push_back(stateMaps(ch, pooled[ch], options.state_bins));
+  lackOfFit(out, options.fitted_parameters);
   return out;
 }
 

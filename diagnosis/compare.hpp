@@ -83,12 +83,16 @@ struct CompareOptions {
   int state_bins = 12;
   /// Parameters absorbed by the fit (for the lack-of-fit dof).
   int fitted_parameters = 0;
+  /// Throws InputError("compare.<field>", rule) for a field out of range (common/validate.hpp).
+  /// compareModel() calls it.
+  void validate() const;
 };
 
 /// Compares `objective`'s assembly at the posterior `draws` (θ rows in objective.names() order;
 /// at least one) with the measurements `sets` (the data sets the objective was built from, same order). The states for the maps and the road
 /// input come from the run at the draws' mean. `noise` (estimateChannelNoise) gives σ² per
-/// channel; channels absent from it are compared with σ² = 0 (not fitted).
+/// channel; channels absent from it are compared with σ² = 0 (not fitted). Throws InputError for
+/// bad options (options.validate()) or no draws.
 Comparison compareModel(const calib::LabObjective& objective, const std::vector<calib::DataSet>& sets,
                         const std::vector<std::vector<double>>& draws,
                         const std::map<std::string, ChannelNoise>& noise, const CompareOptions& options = {});

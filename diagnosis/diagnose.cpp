@@ -6,12 +6,14 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include <Eigen/Dense>
 
-#include "subsystems/effect.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
+#include "subsystems/effect.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 
@@ -69,15 +71,21 @@ double chi2In(const SeriesComparison& s, double t0, double t1) {
   return a;
 }
 
-/// The state map and feature where an effect's signature shows (empty: none specific).
-std::pair<std::string, std::string> expectedSignature(const std::string& effect) {
-  if (effect == "bump_stop") return {"susp_defl_", "knee"};
-  if (effect == "progressive_spring") return {"susp_defl_", "cubic"};
-  if (effect == "strut_friction") return {"susp_rate_", "step"};
-  if (effect == "damper_asymmetry") return {"susp_rate_", "rebound_slope"};
-  if (effect == "anti_roll_bar") return {"roll_defl_", "linear"};
-  if (effect == "speed_dependent_tire_stiffness") return {"tire_defl_", "linear"};
-  return {"", ""};
+/// An effect's name in words with its article: "bump_stop" -> "a bump stop".
+std::string inWords(const std::string& effect) {
+  std::string w = effect;
+  std::replace(w.begin(), w.end(), '_', ' ');
+  return (std::string("aeiou").find(w.empty() ? 'x' : w[0]) == std::string::npos ? "a " : "an ") + w;
+}
+
+/// A length parameter's name without its unit suffix: "gap_m" -> "gap".
+std::string withoutUnit(const std::string& parameter) {
+  const std::string suffix = "_m";
+  const bool has =
+      parameter.size() > suffix.size() && parameter.compare(parameter.size() - suffix.size(), suffix.size(), suffix) == 0;
+  std::string w = has ? parameter.substr(0, parameter.size() - suffix.size()) : parameter;
+  std::replace(w.begin(), w.end(), '_', ' ');
+  return w;
 }
 
 /// Where the residual of a comparison lies: the largest windows, the bands above the noise floor,
@@ -169,259 +177,334 @@ nlohmann::json Figures::toJson() const {
   return j;
 }
 
-DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const std::vector<calib::DataSet>& fit,
-                         const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options,
-                         const std::string& out_dir, const DiagnoseProgress& progress) {
-  if (fit.empty()) throw InputError("diagnose", "needs at least one measurement file (--data)");
-  auto report = [&](const std::string& s, std::size_t d, std::size_t t) {
-    if (progress) progress(s, d, t);
-  };
+void DiagnoseOptions::validate() const {
+  const OptionCheck check("diagnose");
+  calibration.validate();
+  check.atLeast("candidates", candidates, 0);
+  check.open01("screen_alpha", screen_alpha);
+  check.nonNegative("bic_strong", bic_strong);
+  check.nonNegative("ambiguity_log_evidence", ambiguity_log_evidence);
+  check.inRange("explained_min", explained_min, 0.0, 1.0);
+  check.open01("lack_of_fit_alpha", lack_of_fit_alpha);
+  check.atLeast("compare_draws", compare_draws, 1);
+  check.atLeast("threads", threads, 0);
+  for (const char* field : {"effects", "apply"}) {
+    const auto& names = std::string(field) == "effects" ? effects : apply;
+    std::set<std::string> seen;
+    for (const auto& e : names) {
+      makeEffect(e, check.where(field));  // InputError naming the nearest and every known effect
+      check.require(seen.insert(e).second, field, "names '" + e + "' twice");
+    }
+  }
+}
+
+namespace {
+
+/// What the stages of one diagnosis share (docs/diagnosis.md, "twin diagnose"): the inputs, the
+/// fitted data and their weights, the catalogue, every calibration's optimum and the result
+/// being built. Each stage below reads and extends it.
+struct Diagnosis {
+  Diagnosis(const Study& s, const AssemblySpec& a, const DiagnoseOptions& o, std::string out, const DiagnoseProgress& p)
+      : study(s), assembly(a), options(o), out_dir(std::move(out)), progress(p) {}
+  const Study& study;
+  const AssemblySpec& assembly;
+  const DiagnoseOptions& options;
+  const std::string out_dir;
+  const DiagnoseProgress& progress;
+  std::map<std::string, ChannelNoise> noise;          ///< per fitted channel
+  std::map<std::string, double> weights;              ///< 1/σ_c² per fitted channel
+  std::vector<calib::DataSet> fit_sets, hold_sets;    ///< the fitted channels of the fit and held-out data
+  std::string data_hash;                              ///< of fit_sets: a calibration folder's identity
+  std::vector<std::string> catalogue;                 ///< the effects ranked (none installed)
+  std::map<std::string, std::vector<double>> optima;  ///< every calibration's optimum, by joinEffects(effects)
+  std::unique_ptr<calib::LabObjective> base_obj;      ///< the base model on fit_sets (screening, refinement)
   DiagnosisResult res;
-  res.assembly = assembly.id;
+
+  void report(const std::string& stage, std::size_t done, std::size_t total) const {
+    if (progress) progress(stage, done, total);
+  }
+  /// One calibration with `effects` installed (persisted under out_dir/calibrations, resumable),
+  /// compared on the fit and held-out data. effect_start, theta_start: the screening's estimate of
+  /// the effects' and the base parameters (extra optimiser starts); a base given theta_start is
+  /// the refined base and has its own folder.
+  Figures calibrateWith(const std::vector<std::string>& effects, const std::string& stage,
+                        const std::vector<double>& effect_start = {}, const std::vector<double>& theta_start = {});
+
+ private:
+  /// The optimiser's extra starts of a calibration with `effects` (see calibrateWith).
+  std::vector<std::vector<double>> extraStarts(const std::vector<std::string>& effects, const std::vector<double>& effect_start,
+                                               const std::vector<double>& theta_start) const;
+  /// The model calibrated with `setup` compared with the data at evenly spaced posterior rows of `r`.
+  void compareFigures(Figures& f, const calib::CalibrationResult& r, const calib::CalibrationSetup& setup,
+                      const std::string& stage) const;
+};
+
+/// The off values of the diagnosed (non-shape) parameters of `effects`, in order.
+std::vector<double> offValues(const std::vector<std::string>& effects) {
+  std::vector<double> v;
+  for (const auto& e : effects)
+    for (const auto* p : diagnosedParameters(*makeEffect(e, "effect"))) v.push_back(p->default_value);
+  return v;
+}
+
+std::vector<std::vector<double>> Diagnosis::extraStarts(const std::vector<std::string>& effects,
+                                                        const std::vector<double>& effect_start,
+                                                        const std::vector<double>& theta_start) const {
+  // Every calibration polishes its optimum; a model with effects also starts from the nested
+  // model's optimum with the effects' parameters off, so adding an effect never fits worse.
+  std::vector<std::vector<double>> starts;
+  if (effects.empty() && !theta_start.empty()) starts.push_back(theta_start);
+  if (effects.empty()) return starts;
+  const std::vector<std::string> nested(effects.begin(), effects.end() - 1);
+  const auto it = optima.find(joinEffects(nested));
+  if (it == optima.end()) return starts;
+  auto x = it->second;
+  for (double v : offValues({effects.back()})) x.push_back(v);
+  starts.push_back(x);
+  if (effect_start.empty()) return starts;
+  auto y = it->second;
+  for (double v : effect_start) y.push_back(v);
+  starts.push_back(y);
+  if (effects.size() == 1 && theta_start.size() == study.calibrated.size()) {
+    auto z = theta_start;
+    for (double v : effect_start) z.push_back(v);
+    starts.push_back(z);
+  }
+  return starts;
+}
+
+Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const std::string& stage,
+                                 const std::vector<double>& effect_start, const std::vector<double>& theta_start) {
+  const std::size_t n_fit_params = study.calibrated.size();
+  Figures f;
+  f.effects = effects;
+  f.label = effects.empty() ? "base" : "+ " + joinEffects(effects);
+  // A base started from a better point than its own optimum (see refine) has its own folder.
+  f.folder = (fs::path(out_dir) / "calibrations" / (joinEffects(effects) + (effects.empty() && !theta_start.empty() ? ".refined" : "")))
+                 .string();
+  const auto setup = effectSetup(effects, weights);
+  auto copt = options.calibration;
+  copt.threads = options.threads;
+  copt.command = options.command;
+  copt.polish_step = 0.01;
+  for (auto& s : extraStarts(effects, effect_start, theta_start)) copt.extra_starts.push_back(std::move(s));
+  const auto r = calib::calibrateAssembly(study, assembly, fit_sets, setup, copt, f.folder, data_hash,
+                                          [&](const std::string& s, std::size_t d, std::size_t t) {
+                                            report(stage + ": " + s, d, t);
+                                          });
+  optima[joinEffects(effects)] = r.optimum.theta;
+  f.parameters = static_cast<int>(r.names.size());
+  f.sse_min = r.optimum.sse;
+  f.bic = r.optimum.sse + f.parameters * std::log(static_cast<double>(r.n_data));
+  f.log_evidence = -0.5 * f.bic;
+  for (std::size_t k = n_fit_params; k < r.names.size(); ++k) {
+    const auto& p = r.posterior.parameters[k];
+    EffectParameter ep;
+    ep.name = r.names[k];
+    ep.unit = setup.extra_calibrated[k - n_fit_params].unit;
+    ep.mean = p.mean;
+    ep.sd = p.sd;
+    ep.post_q025 = p.q025;
+    ep.post_q975 = p.q975;
+    const bool prof = r.interval == "profile" && k < r.profile.lower.size();
+    ep.interval = prof ? "profile" : "posterior";
+    ep.q025 = prof ? r.profile.lower[k] : p.q025;
+    ep.q975 = prof ? r.profile.upper[k] : p.q975;
+    ep.optimum = r.optimum.theta[k];
+    f.effect_parameters.push_back(ep);
+  }
+  compareFigures(f, r, setup, stage);
+  return f;
+}
+
+void Diagnosis::compareFigures(Figures& f, const calib::CalibrationResult& r, const calib::CalibrationSetup& setup,
+                               const std::string& stage) const {
+  std::vector<std::vector<double>> rows;
+  const std::size_t m = r.chains.index.size();
+  const std::size_t want = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, options.compare_draws)), m);
+  for (std::size_t k = 0; k < want; ++k) {
+    const std::size_t i = want == 1 ? m / 2 : k * (m - 1) / (want - 1);
+    std::vector<double> th(r.names.size());
+    for (std::size_t c = 0; c < th.size(); ++c) th[c] = r.design(r.chains.index[i], static_cast<long>(c));
+    rows.push_back(th);
+  }
+  report(stage + ": compare", 0, 1);
+  CompareOptions co;
+  co.threads = options.threads;
+  co.fitted_parameters = f.parameters;
+  calib::LabObjective obj(study, assembly, fit_sets, setup);
+  f.comparison = compareModel(obj, fit_sets, rows, noise, co);
+  if (!hold_sets.empty()) {
+    calib::LabObjective hobj(study, assembly, hold_sets, setup);
+    CompareOptions ho = co;
+    ho.fitted_parameters = 0;
+    f.holdout = compareModel(hobj, hold_sets, rows, noise, ho);
+  }
+  report(stage + ": compare", 1, 1);
+}
+
+// ------------------------------------------------------------------ inputs
+
+/// The effects to rank: options.effects, or every registered effect not installed in the assembly
+/// or the study. Throws InputError when options.effects or options.apply names an installed one.
+std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& assembly, const DiagnoseOptions& options) {
+  const OptionCheck check("diagnose");
+  std::set<std::string> installed(assembly.effects.begin(), assembly.effects.end());
+  for (const auto& e : study.effects) installed.insert(e.name);
+  const std::string rule = " is already installed in assembly " + assembly.id + " or the study's [effects]";
+  for (const auto& e : options.effects) check.require(!installed.count(e), "effects", "'" + e + "'" + rule);
+  for (const auto& e : options.apply) check.require(!installed.count(e), "apply", "'" + e + "'" + rule);
+  std::vector<std::string> catalogue = options.effects.empty() ? effectNames() : options.effects;
+  catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const std::string& e) { return installed.count(e) > 0; }),
+                  catalogue.end());
+  return catalogue;
+}
+
+/// The noise of every channel, the weights 1/σ_c², and the data sets reduced to the channels with
+/// a noise estimate (the others are compared, not weighed).
+void prepareData(Diagnosis& d, const std::vector<calib::DataSet>& fit, const std::vector<calib::DataSet>& holdout) {
   std::vector<std::string> left;
-  const auto noise = estimateChannelNoise(study, fit, &left);
-  res.left_out_channels = left;
-  if (noise.empty())
+  d.noise = estimateChannelNoise(d.study, fit, &left);
+  d.res.left_out_channels = left;
+  if (d.noise.empty())
     throw InputError(fit.front().name, "no channel has a noise estimate: give at least two repetitions, or force channels (unit N) "
                                        "with the study's [noise] variance");
-  std::map<std::string, double> weights;
-  for (const auto& [c, n] : noise) {
-    weights[c] = 1.0 / n.variance;
-    res.fitted_channels.push_back(c);
+  for (const auto& [c, n] : d.noise) {
+    d.weights[c] = 1.0 / n.variance;
+    d.res.fitted_channels.push_back(c);
   }
-  // Only fitted channels enter the calibrations (others are compared, not weighed).
   auto fittedOnly = [&](const std::vector<calib::DataSet>& sets) {
     std::vector<calib::DataSet> out;
     for (const auto& s : sets) {
-      calib::DataSet d{s.name, s.scenario, {}, s.road_seed};
+      calib::DataSet ds{s.name, s.scenario, {}, s.road_seed};
       for (const auto& r : s.data.records)
-        if (noise.count(r.channel)) d.data.records.push_back(r);
-      if (!d.data.records.empty()) out.push_back(std::move(d));
+        if (d.noise.count(r.channel)) ds.data.records.push_back(r);
+      if (!ds.data.records.empty()) out.push_back(std::move(ds));
     }
     return out;
   };
-  const auto fit_sets = fittedOnly(fit);
-  const auto hold_sets = fittedOnly(holdout);
-  std::string data_hash;
-  for (const auto& s : fit_sets) data_hash += s.scenario + ":" + hexId(fnv1a64(labCsvText(s.data))) + ";";
+  d.fit_sets = fittedOnly(fit);
+  d.hold_sets = fittedOnly(holdout);
+  for (const auto& s : d.fit_sets) d.data_hash += s.scenario + ":" + hexId(fnv1a64(labCsvText(s.data))) + ";";
+}
 
-  // The catalogue.
-  std::set<std::string> installed(assembly.effects.begin(), assembly.effects.end());
-  for (const auto& e : study.effects) installed.insert(e.name);
-  std::vector<std::string> catalogue = options.effects.empty() ? effectNames() : options.effects;
-  for (const auto& e : catalogue) {
-    makeEffect(e, "--effects");  // InputError listing the known names
-    if (installed.count(e)) {
-      if (!options.effects.empty())
-        throw InputError("--effects " + e, "is already installed in assembly " + assembly.id + " or the study's [effects]");
-    }
-  }
-  catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const std::string& e) { return installed.count(e) > 0; }),
-                  catalogue.end());
-  for (const auto& e : options.apply) {
-    makeEffect(e, "--apply");
-    if (installed.count(e)) throw InputError("--apply " + e, "is already installed in assembly " + assembly.id);
-  }
+// ------------------------------------------------------------------ screen
 
-  // One calibration (persisted, resumable), compared on the fit and held-out data.
-  const int n_fit_params = static_cast<int>(study.calibrated.size());
-  // Every calibration polishes its optimum; a model with effects also starts from the nested
-  // model's optimum with the effects' parameters off, so adding an effect never fits worse.
-  auto offValues = [&](const std::vector<std::string>& effects) {
-    std::vector<double> v;
-    for (const auto& e : effects)
-      for (const auto* p : diagnosedParameters(*makeEffect(e, "effect"))) v.push_back(p->default_value);
-    return v;
-  };
-  std::map<std::string, std::vector<double>> optima;  // by joinEffects(effects)
-  auto calibrateWith = [&](const std::vector<std::string>& effects, const std::string& stage,
-                           const std::vector<double>& effect_start = {}, const std::vector<double>& theta_start = {}) {
-    Figures f;
-    f.effects = effects;
-    f.label = effects.empty() ? "base" : "+ " + joinEffects(effects);
-    // A base started from a better point than its own optimum (see "refined" below) has its own folder.
-    f.folder = (fs::path(out_dir) / "calibrations" / (joinEffects(effects) + (effects.empty() && !theta_start.empty() ? ".refined" : "")))
-                   .string();
-    const auto setup = effectSetup(effects, weights);
-    auto copt = options.calibration;
-    copt.threads = options.threads;
-    copt.command = options.command;
-    copt.polish_step = 0.01;
-    if (effects.empty() && !theta_start.empty()) copt.extra_starts.push_back(theta_start);
-    if (!effects.empty()) {
-      const std::vector<std::string> nested(effects.begin(), effects.end() - 1);
-      const auto it = optima.find(joinEffects(nested));
-      if (it != optima.end()) {
-        auto x = it->second;
-        for (double v : offValues({effects.back()})) x.push_back(v);
-        copt.extra_starts.push_back(x);
-        if (!effect_start.empty()) {
-          auto y = it->second;
-          for (double v : effect_start) y.push_back(v);
-          copt.extra_starts.push_back(y);
-          if (effects.size() == 1 && theta_start.size() == static_cast<std::size_t>(n_fit_params)) {
-            auto z = theta_start;
-            for (double v : effect_start) z.push_back(v);
-            copt.extra_starts.push_back(z);
-          }
-        }
+/// The base model linearised at its optimum θ̂: the standardised residual r, the sensitivities
+/// J = ∂η/∂θ (weighted, central differences) and J's QR (the span re-calibrating θ could absorb).
+struct Linearisation {
+  std::vector<double> theta_hat, eta_hat;
+  Eigen::VectorXd r;
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr;
+  Eigen::MatrixXd Q;  ///< orthonormal basis of span(J)
+  /// G with span(J) projected out.
+  Eigen::MatrixXd project(const Eigen::MatrixXd& G) const { return G - Q * (Q.transpose() * G); }
+};
+
+Linearisation linearise(const Diagnosis& d) {
+  const auto& obj = *d.base_obj;
+  Linearisation lin;
+  lin.theta_hat = d.optima.at("base");
+  lin.eta_hat = obj.predict(lin.theta_hat);
+  if (lin.eta_hat.empty()) throw std::runtime_error("diagnose: the run at the base optimum failed");
+  const auto& y = obj.measured();
+  const auto& w = obj.weights();
+  const std::size_t n = y.size(), dim = lin.theta_hat.size();
+  lin.r.resize(static_cast<long>(n));
+  for (std::size_t i = 0; i < n; ++i) lin.r[static_cast<long>(i)] = std::sqrt(w[i]) * (y[i] - lin.eta_hat[i]);
+  Eigen::MatrixXd J(static_cast<long>(n), static_cast<long>(dim));
+  std::vector<std::vector<double>> plus(dim), minus(dim);
+  std::vector<double> h(dim);
+  for (std::size_t k = 0; k < dim; ++k)
+    h[k] = 1e-2 * std::max(std::abs(lin.theta_hat[k]), 1e-3 * (obj.upper()[k] - obj.lower()[k]));
+  d.report("screening: sensitivities", 0, 2 * dim);
+  parallelFor(2 * dim, d.options.threads, [&](std::size_t t, int) {
+    const std::size_t k = t / 2;
+    auto th = lin.theta_hat;
+    th[k] += (t % 2 == 0 ? 1.0 : -1.0) * h[k];
+    (t % 2 == 0 ? plus[k] : minus[k]) = obj.predict(th);
+  });
+  for (std::size_t k = 0; k < dim; ++k) {
+    if (plus[k].empty() || minus[k].empty()) throw std::runtime_error("diagnose: a sensitivity run at the base optimum failed");
+    for (std::size_t i = 0; i < n; ++i)
+      J(static_cast<long>(i), static_cast<long>(k)) = std::sqrt(w[i]) * (plus[k][i] - minus[k][i]) / (2 * h[k]);
+  }
+  lin.qr.compute(J);
+  lin.Q = lin.qr.householderQ() * Eigen::MatrixXd::Identity(static_cast<long>(n), static_cast<long>(dim));
+  return lin;
+}
+
+/// One probe of one effect: columns of its parameter vectors (one strength parameter moved per
+/// column, at one level, the scanned shape-like parameters at one point), tested together.
+struct ProbeGroup {
+  std::size_t effect;                     ///< index into the catalogue
+  std::vector<std::vector<double>> cols;  ///< parameter vectors, one per column
+};
+
+/// The probes of effect `e` (docs/diagnosis.md, screening): every strength parameter at 5, 20 and
+/// 60 % of the way to its far prior end, for every point of the scan (10, 30, 60 % of the prior)
+/// of the parameters whose off value lies inside their prior.
+std::vector<ProbeGroup> probesOf(std::size_t e, const Effect& effect) {
+  const auto ps = diagnosedParameters(effect);
+  std::vector<double> off;
+  for (const auto* p : ps) off.push_back(p->default_value);
+  std::vector<std::size_t> strength, scan;
+  for (std::size_t k = 0; k < ps.size(); ++k) (k == 0 || isStrength(*ps[k]) ? strength : scan).push_back(k);
+  std::vector<std::vector<double>> scans{off};
+  for (std::size_t k : scan) {
+    std::vector<std::vector<double>> next;
+    for (const auto& base_v : scans)
+      for (double f : {0.1, 0.3, 0.6}) {
+        auto v = base_v;
+        v[k] = ps[k]->prior_lower + f * (ps[k]->prior_upper - ps[k]->prior_lower);
+        next.push_back(v);
       }
-    }
-    const auto r = calib::calibrateAssembly(study, assembly, fit_sets, setup, copt, f.folder, data_hash,
-                                            [&](const std::string& s, std::size_t d, std::size_t t) {
-                                              report(stage + ": " + s, d, t);
-                                            });
-    optima[joinEffects(effects)] = r.optimum.theta;
-    f.parameters = static_cast<int>(r.names.size());
-    f.sse_min = r.optimum.sse;
-    f.bic = r.optimum.sse + f.parameters * std::log(static_cast<double>(r.n_data));
-    f.log_evidence = -0.5 * f.bic;
-    for (std::size_t k = static_cast<std::size_t>(n_fit_params); k < r.names.size(); ++k) {
-      const auto& p = r.posterior.parameters[k];
-      EffectParameter ep;
-      ep.name = r.names[k];
-      ep.unit = setup.extra_calibrated[k - static_cast<std::size_t>(n_fit_params)].unit;
-      ep.mean = p.mean;
-      ep.sd = p.sd;
-      ep.post_q025 = p.q025;
-      ep.post_q975 = p.q975;
-      const bool prof = r.interval == "profile" && k < r.profile.lower.size();
-      ep.interval = prof ? "profile" : "posterior";
-      ep.q025 = prof ? r.profile.lower[k] : p.q025;
-      ep.q975 = prof ? r.profile.upper[k] : p.q975;
-      ep.optimum = r.optimum.theta[k];
-      f.effect_parameters.push_back(ep);
-    }
-    // Posterior rows for the comparison.
-    std::vector<std::vector<double>> rows;
-    const std::size_t m = r.chains.index.size();
-    const std::size_t want = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, options.compare_draws)), m);
-    for (std::size_t k = 0; k < want; ++k) {
-      const std::size_t i = want == 1 ? m / 2 : k * (m - 1) / (want - 1);
-      std::vector<double> th(r.names.size());
-      for (std::size_t c = 0; c < th.size(); ++c) th[c] = r.design(r.chains.index[i], static_cast<long>(c));
-      rows.push_back(th);
-    }
-    report(stage + ": compare", 0, 1);
-    CompareOptions co;
-    co.threads = options.threads;
-    co.fitted_parameters = f.parameters;
-    calib::LabObjective obj(study, assembly, fit_sets, setup);
-    f.comparison = compareModel(obj, fit_sets, rows, noise, co);
-    if (!hold_sets.empty()) {
-      calib::LabObjective hobj(study, assembly, hold_sets, setup);
-      CompareOptions ho = co;
-      ho.fitted_parameters = 0;
-      f.holdout = compareModel(hobj, hold_sets, rows, noise, ho);
-    }
-    report(stage + ": compare", 1, 1);
-    return f;
-  };
-
-  // 1. Base.
-  res.base = calibrateWith({}, "base");
-  const Comparison& base = res.base.comparison;
-
-  // 2. Screening at the base optimum.
-  calib::LabObjective base_obj(study, assembly, fit_sets, effectSetup({}, weights));
-  const std::vector<double> theta_hat = optima.at("base");
-  const auto eta_hat = base_obj.predict(theta_hat);
-  if (eta_hat.empty()) throw std::runtime_error("diagnose: the run at the base optimum failed");
-  const auto& y = base_obj.measured();
-  const auto& w = base_obj.weights();
-  const std::size_t n = y.size();
-  Eigen::VectorXd r(static_cast<long>(n));
-  for (std::size_t i = 0; i < n; ++i) r[static_cast<long>(i)] = std::sqrt(w[i]) * (y[i] - eta_hat[i]);
-  const std::size_t d = theta_hat.size();
-  Eigen::MatrixXd J(static_cast<long>(n), static_cast<long>(d));
-  {
-    std::vector<std::vector<double>> plus(d), minus(d);
-    std::vector<double> h(d);
-    for (std::size_t k = 0; k < d; ++k)
-      h[k] = 1e-2 * std::max(std::abs(theta_hat[k]), 1e-3 * (base_obj.upper()[k] - base_obj.lower()[k]));
-    report("screening: sensitivities", 0, 2 * d);
-    parallelFor(2 * d, options.threads, [&](std::size_t t, int) {
-      const std::size_t k = t / 2;
-      auto th = theta_hat;
-      th[k] += (t % 2 == 0 ? 1.0 : -1.0) * h[k];
-      (t % 2 == 0 ? plus[k] : minus[k]) = base_obj.predict(th);
-    });
-    for (std::size_t k = 0; k < d; ++k) {
-      if (plus[k].empty() || minus[k].empty()) throw std::runtime_error("diagnose: a sensitivity run at the base optimum failed");
-      for (std::size_t i = 0; i < n; ++i)
-        J(static_cast<long>(i), static_cast<long>(k)) = std::sqrt(w[i]) * (plus[k][i] - minus[k][i]) / (2 * h[k]);
-    }
+    scans = next;
   }
-  Eigen::HouseholderQR<Eigen::MatrixXd> qr(J);
-  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(static_cast<long>(n), static_cast<long>(d));
-  auto project = [&](const Eigen::MatrixXd& G) -> Eigen::MatrixXd { return G - Q * (Q.transpose() * G); };
+  std::vector<ProbeGroup> groups;
+  for (double level : {0.05, 0.2, 0.6})
+    for (const auto& sv : scans) {
+      ProbeGroup g{e, {}};
+      for (std::size_t k : strength) {
+        auto v = sv;
+        v[k] = towardFar(*ps[k], level);
+        g.cols.push_back(v);
+      }
+      groups.push_back(g);
+    }
+  return groups;
+}
 
-  // The model's largest compression over the fit data (for the bump stop's gate sentence).
-  double max_compression = -std::numeric_limits<double>::infinity();
-  {
-    const auto tr = base_obj.traces(theta_hat);
-    for (const auto& t : tr)
-      for (const char* c : {"fl", "fr", "rl", "rr"})
-        for (double q : t.column(std::string("susp_defl_") + c + "_m")) max_compression = std::max(max_compression, q);
-  }
-
+/// The predictions at every probe column, in group then column order (empty: a failed run).
+std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::vector<ProbeGroup>& groups,
+                                                const std::vector<double>& theta_hat) {
   std::vector<std::unique_ptr<calib::LabObjective>> eff_obj;
-  struct Group {
-    std::size_t effect;
-    std::vector<std::vector<double>> cols;  // parameter vectors, one per column
-  };
-  std::vector<Group> groups;
-  for (std::size_t e = 0; e < catalogue.size(); ++e) {
-    const auto eff = makeEffect(catalogue[e], "effect");
-    const auto ps = diagnosedParameters(*eff);
-    eff_obj.push_back(std::make_unique<calib::LabObjective>(study, assembly, fit_sets, effectSetup({catalogue[e]}, weights)));
-    std::vector<double> off;
-    for (const auto* p : ps) off.push_back(p->default_value);
-    std::vector<std::size_t> strength, scan;
-    for (std::size_t k = 0; k < ps.size(); ++k) (k == 0 || isStrength(*ps[k]) ? strength : scan).push_back(k);
-    std::vector<std::vector<double>> scans{off};
-    for (std::size_t k : scan) {
-      std::vector<std::vector<double>> next;
-      for (const auto& base_v : scans)
-        for (double f : {0.1, 0.3, 0.6}) {
-          auto v = base_v;
-          v[k] = ps[k]->prior_lower + f * (ps[k]->prior_upper - ps[k]->prior_lower);
-          next.push_back(v);
-        }
-      scans = next;
-    }
-    for (double level : {0.05, 0.2, 0.6})
-      for (const auto& sv : scans) {
-        Group g{e, {}};
-        for (std::size_t k : strength) {
-          auto v = sv;
-          v[k] = towardFar(*ps[k], level);
-          g.cols.push_back(v);
-        }
-        groups.push_back(g);
-      }
-  }
-  // Simulate every probe column.
+  for (const auto& e : d.catalogue)
+    eff_obj.push_back(std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, effectSetup({e}, d.weights)));
   std::vector<std::pair<std::size_t, std::size_t>> jobs;  // (group, column)
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t c = 0; c < groups[g].cols.size(); ++c) jobs.push_back({g, c});
   std::vector<std::vector<double>> probe_eta(jobs.size());
-  report("screening: probes", 0, jobs.size());
-  parallelFor(jobs.size(), options.threads, [&](std::size_t j, int) {
+  d.report("screening: probes", 0, jobs.size());
+  parallelFor(jobs.size(), d.options.threads, [&](std::size_t j, int) {
     const auto& g = groups[jobs[j].first];
     auto th = theta_hat;
     for (double v : g.cols[jobs[j].second]) th.push_back(v);
     probe_eta[j] = eff_obj[g.effect]->predict(th);
   });
-  report("screening: probes", jobs.size(), jobs.size());
-  const double bonferroni = static_cast<double>(groups.size());
-  res.candidates.resize(catalogue.size());
-  for (std::size_t e = 0; e < catalogue.size(); ++e) {
-    const auto eff = makeEffect(catalogue[e], "effect");
-    res.candidates[e].effect = catalogue[e];
-    res.candidates[e].signature = eff->signature();
-  }
-  std::vector<bool> any_failed(catalogue.size(), false);
+  d.report("screening: probes", jobs.size(), jobs.size());
+  return probe_eta;
+}
+
+/// Scores every probe group: S = rᵀ P r, P the projection on span(g⊥) (g⊥ the group's
+/// contributions with span(J) projected out), rank(g⊥) degrees of freedom. Each candidate keeps its
+/// largest S, its largest ‖g⊥‖², and the linearised estimate of the effect's and the base
+/// parameters at its best probe. Returns, per catalogue effect, whether a probe run failed.
+std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std::vector<ProbeGroup>& groups,
+                              const std::vector<std::vector<double>>& probe_eta) {
+  const auto& w = d.base_obj->weights();
+  const std::size_t n = lin.eta_hat.size(), dim = lin.theta_hat.size();
+  std::vector<bool> any_failed(d.catalogue.size(), false);
   for (std::size_t g = 0, j = 0; g < groups.size(); ++g) {
     const std::size_t e = groups[g].effect;
     Eigen::MatrixXd G(static_cast<long>(n), static_cast<long>(groups[g].cols.size()));
@@ -431,52 +514,76 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
         failed = true;
         continue;
       }
-      for (std::size_t i = 0; i < n; ++i) G(static_cast<long>(i), static_cast<long>(c)) = std::sqrt(w[i]) * (probe_eta[j][i] - eta_hat[i]);
+      for (std::size_t i = 0; i < n; ++i)
+        G(static_cast<long>(i), static_cast<long>(c)) = std::sqrt(w[i]) * (probe_eta[j][i] - lin.eta_hat[i]);
     }
     if (failed) {
       any_failed[e] = true;
       continue;
     }
-    const Eigen::MatrixXd Gp = project(G);
-    auto& cand = res.candidates[e];
+    const Eigen::MatrixXd Gp = lin.project(G);
+    auto& cand = d.res.candidates[e];
     cand.max_signal = std::max(cand.max_signal, Gp.squaredNorm());
     // S = rᵀ Gp (Gpᵀ Gp)⁺ Gpᵀ r (rank-revealing: a column the base absorbs entirely drops out).
     Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(Gp);
     const long rank = cod.rank();
     if (rank == 0) continue;
-    const Eigen::VectorXd coef = cod.solve(r);
+    const Eigen::VectorXd coef = cod.solve(lin.r);
     const double S = (Gp * coef).squaredNorm();
-    if (S > cand.score) {
-      cand.score = S;
-      cand.score_dof = static_cast<int>(rank);
-      // Column c probes one strength parameter at value v_c (the others off): the linearised
-      // fit says the parameter is off + coef_c (v_c − off), clipped to the prior.
-      const auto eff = makeEffect(catalogue[e], "effect");
-      const auto ps = diagnosedParameters(*eff);
-      std::vector<double> est = groups[g].cols[0];
-      for (std::size_t col = 0; col < groups[g].cols.size(); ++col)
-        for (std::size_t k = 0; k < ps.size(); ++k)
-          if (groups[g].cols[col][k] != ps[k]->default_value && (k == 0 || isStrength(*ps[k]))) {
-            const double v = ps[k]->default_value + coef[static_cast<long>(col)] * (groups[g].cols[col][k] - ps[k]->default_value);
-            est[k] = std::clamp(v, ps[k]->prior_lower, ps[k]->prior_upper);
-          }
-      cand.screening_estimate = est;
-      // The base parameters of the joint linearised fit r ≈ J δθ + G c: δθ = J⁺ (r − G c).
-      const Eigen::VectorXd dtheta = qr.solve(r - G * coef);
-      cand.screening_theta = theta_hat;
-      for (std::size_t k = 0; k < d; ++k)
-        cand.screening_theta[k] = std::clamp(theta_hat[k] + dtheta[static_cast<long>(k)], base_obj.lower()[k], base_obj.upper()[k]);
-    }
+    if (S <= cand.score) continue;
+    cand.score = S;
+    cand.score_dof = static_cast<int>(rank);
+    // Column c probes one strength parameter at value v_c (the others off): the linearised
+    // fit says the parameter is off + coef_c (v_c − off), clipped to the prior.
+    const auto eff = makeEffect(d.catalogue[e], "effect");
+    const auto ps = diagnosedParameters(*eff);
+    std::vector<double> est = groups[g].cols[0];
+    for (std::size_t col = 0; col < groups[g].cols.size(); ++col)
+      for (std::size_t k = 0; k < ps.size(); ++k)
+        if (groups[g].cols[col][k] != ps[k]->default_value && (k == 0 || isStrength(*ps[k]))) {
+          const double v = ps[k]->default_value + coef[static_cast<long>(col)] * (groups[g].cols[col][k] - ps[k]->default_value);
+          est[k] = std::clamp(v, ps[k]->prior_lower, ps[k]->prior_upper);
+        }
+    cand.screening_estimate = est;
+    // The base parameters of the joint linearised fit r ≈ J δθ + G c: δθ = J⁺ (r − G c).
+    const Eigen::VectorXd dtheta = lin.qr.solve(lin.r - G * coef);
+    cand.screening_theta = lin.theta_hat;
+    for (std::size_t k = 0; k < dim; ++k)
+      cand.screening_theta[k] =
+          std::clamp(lin.theta_hat[k] + dtheta[static_cast<long>(k)], d.base_obj->lower()[k], d.base_obj->upper()[k]);
   }
-  for (std::size_t e = 0; e < catalogue.size(); ++e) {
-    auto& c = res.candidates[e];
+  return any_failed;
+}
+
+/// The model's largest suspension compression [m] over the fit data at θ̂ (every corner).
+double maxCompression(const Diagnosis& d, const std::vector<double>& theta_hat) {
+  double max_compression = -std::numeric_limits<double>::infinity();
+  for (const auto& t : d.base_obj->traces(theta_hat))
+    for (const char* c : {"fl", "fr", "rl", "rr"})
+      for (double q : t.column(std::string("susp_defl_") + c + "_m")) max_compression = std::max(max_compression, q);
+  return max_compression;
+}
+
+/// The p-value of every candidate (Bonferroni over `probes`) and its gate: why an effect cannot
+/// matter in these data (no plausible value changes them; an engagement threshold the travel
+/// never reaches; a contribution below the noise; a failed probe).
+void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::size_t probes, const std::vector<bool>& any_failed) {
+  const double bonferroni = static_cast<double>(probes);
+  std::optional<double> max_compression;  // one more run, only when a threshold gate needs it
+  for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
+    auto& c = d.res.candidates[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
     if (c.max_signal == 0.0) {
-      if (c.effect == "bump_stop")
-        c.gate = "the suspension never compresses beyond the smallest plausible gap (" + fmt("%.3g", max_compression) + " m < " +
-                 fmt("%.3g", makeEffect("bump_stop", "")->parameters()[1].prior_lower) + " m): a bump stop cannot act here";
-      else
+      const auto eff = makeEffect(c.effect, "effect");
+      const std::string threshold = eff->engagementThreshold();
+      if (!threshold.empty()) {
+        if (!max_compression) max_compression = maxCompression(d, theta_hat);
+        const double smallest = eff->parameters()[parameterIndex(eff->parameters(), threshold)].prior_lower;
+        c.gate = "the suspension never compresses beyond the smallest plausible " + withoutUnit(threshold) + " (" +
+                 fmt("%.3g", *max_compression) + " m < " + fmt("%.3g", smallest) + " m): " + inWords(c.effect) + " cannot act here";
+      } else {
         c.gate = "exerts no force in these runs at any plausible value";
+      }
     } else if (c.max_signal < 1.0) {
       c.gate = "its largest plausible contribution, after re-calibrating the base parameters, is below the noise (" +
                fmt("%.2g", c.max_signal) + " noise variances in total): these data cannot show it";
@@ -484,127 +591,178 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
       c.gate = "a probe simulation failed";
     }
   }
+}
 
-  // 3. Confirm the best candidates.
-  std::vector<std::size_t> order(catalogue.size());
+/// Screen (docs/diagnosis.md, `twin diagnose` step 2): at the base optimum θ̂, every catalogue effect's
+/// contribution at a few probe values, with what re-calibrating θ could absorb projected out,
+/// scored against the residual; fills res.candidates (score, p-value, gate, screening estimates).
+void screen(Diagnosis& d) {
+  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, effectSetup({}, d.weights));
+  const Linearisation lin = linearise(d);
+  std::vector<ProbeGroup> groups;
+  d.res.candidates.resize(d.catalogue.size());
+  for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
+    const auto eff = makeEffect(d.catalogue[e], "effect");
+    for (auto& g : probesOf(e, *eff)) groups.push_back(std::move(g));
+    d.res.candidates[e].effect = d.catalogue[e];
+    d.res.candidates[e].signature = eff->signature();
+  }
+  const auto probe_eta = simulateProbes(d, groups, lin.theta_hat);
+  const auto any_failed = scoreProbes(d, lin, groups, probe_eta);
+  gateCandidates(d, lin.theta_hat, groups.size(), any_failed);
+}
+
+// ------------------------------------------------------------------ confirm, refine
+
+/// Confirm (step 3): the best ungated candidates with p < screen_alpha (at most
+/// options.candidates, by score) re-calibrated with their effect. Returns their indices in
+/// res.candidates.
+std::vector<std::size_t> confirm(Diagnosis& d) {
+  auto& cands = d.res.candidates;
+  std::vector<std::size_t> order(cands.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return res.candidates[a].score > res.candidates[b].score; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cands[a].score > cands[b].score; });
   std::vector<std::size_t> to_confirm;
   for (std::size_t i : order)
-    if (res.candidates[i].gate.empty() && res.candidates[i].p_value < options.screen_alpha &&
-        static_cast<int>(to_confirm.size()) < options.candidates)
+    if (cands[i].gate.empty() && cands[i].p_value < d.options.screen_alpha &&
+        static_cast<int>(to_confirm.size()) < d.options.candidates)
       to_confirm.push_back(i);
   for (std::size_t k = 0; k < to_confirm.size(); ++k) {
-    auto& c = res.candidates[to_confirm[k]];
+    auto& c = cands[to_confirm[k]];
     c.confirmed = true;
-    c.fit = calibrateWith({c.effect}, "confirm " + c.effect + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")",
-                          c.screening_estimate, c.screening_theta);
+    const std::string stage = "confirm " + c.effect + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
+    c.fit = d.calibrateWith({c.effect}, stage, c.screening_estimate, c.screening_theta);
   }
-  // The evidence for an effect must not come from a base optimum the optimiser missed. The base is
-  // polished again from every strongly favoured candidate's base parameters (its effect switched
-  // off); when that fits better, the base is re-calibrated from there and becomes the reference
-  // of every ΔBIC and of the lack-of-fit figures.
-  {
-    std::vector<double> better;
-    double better_sse = res.base.sse_min - 1.0;  // below the integrator's noise in the SSE: no change
-    for (std::size_t i : to_confirm) {
-      const auto& c = res.candidates[i];
-      if (c.fit->bic - res.base.bic >= -options.bic_strong) continue;
-      auto th = optima.at(joinEffects({c.effect}));
-      th.resize(d);
-      report("refine base from " + c.effect, 0, 1);
-      const auto p = calib::polishLeastSquares(base_obj, th, options.threads);
-      report("refine base from " + c.effect, 1, 1);
-      if (p.sse < better_sse) {
-        better_sse = p.sse;
-        better = p.theta;
-        res.base_refined_from = c.effect;
-      }
-    }
-    if (!better.empty()) {
-      res.base_unrefined_sse = res.base.sse_min;
-      res.base = calibrateWith({}, "base (refined)", {}, better);
+  return to_confirm;
+}
+
+/// Refine (the end of step 3): the evidence for an effect must not come from a base optimum the optimiser
+/// missed. The base is polished again from every strongly favoured candidate's base parameters
+/// (its effect switched off); when that fits better, the base is re-calibrated from there and
+/// becomes the reference of every ΔBIC and of the lack-of-fit figures. Then each confirmed
+/// candidate is weighed against the base (ΔBIC, share of the excess residual it explains,
+/// held-out change) and the candidates are ranked: confirmed by log evidence, then by score,
+/// gated last.
+void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
+  auto& res = d.res;
+  std::vector<double> better;
+  double better_sse = res.base.sse_min - 1.0;  // below the integrator's noise in the SSE: no change
+  for (std::size_t i : to_confirm) {
+    const auto& c = res.candidates[i];
+    if (c.fit->bic - res.base.bic >= -d.options.bic_strong) continue;
+    auto th = d.optima.at(joinEffects({c.effect}));
+    th.resize(d.optima.at("base").size());
+    d.report("refine base from " + c.effect, 0, 1);
+    const auto p = calib::polishLeastSquares(*d.base_obj, th, d.options.threads);
+    d.report("refine base from " + c.effect, 1, 1);
+    if (p.sse < better_sse) {
+      better_sse = p.sse;
+      better = p.theta;
+      res.base_refined_from = c.effect;
     }
   }
+  if (!better.empty()) {
+    res.base_unrefined_sse = res.base.sse_min;
+    res.base = d.calibrateWith({}, "base (refined)", {}, better);
+  }
+  const Comparison& base = res.base.comparison;
   const double base_excess = base.lack_of_fit - static_cast<double>(base.lack_of_fit_dof);
-  for (std::size_t k = 0; k < to_confirm.size(); ++k) {
-    auto& c = res.candidates[to_confirm[k]];
+  for (std::size_t i : to_confirm) {
+    auto& c = res.candidates[i];
     c.delta_bic = c.fit->bic - res.base.bic;
     c.explained = base_excess > 0 ? std::clamp((base.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess, 0.0, 1.0) : 0.0;
     if (c.fit->holdout && res.base.holdout && res.base.holdout->systematic_rms_sd > 0)
       c.holdout_change = c.fit->holdout->systematic_rms_sd / res.base.holdout->systematic_rms_sd;
   }
-  // Rank: confirmed by log evidence, then by score, gated last.
   std::stable_sort(res.candidates.begin(), res.candidates.end(), [](const Candidate& a, const Candidate& b) {
     auto cls = [](const Candidate& c) { return c.confirmed ? 0 : (c.gate.empty() ? 1 : 2); };
     if (cls(a) != cls(b)) return cls(a) < cls(b);
     if (a.confirmed) return a.fit->log_evidence > b.fit->log_evidence;
     return a.score > b.score;
   });
+}
 
-  // Why, per candidate.
-  for (auto& c : res.candidates) {
-    if (!c.gate.empty()) {
-      c.why = c.effect + ": not a candidate: " + c.gate + ".";
-      continue;
-    }
-    if (!c.confirmed) {
-      c.why = c.effect + ": screening score " + fmt("%.3g", c.score) + " (p = " + fmt("%.2g", c.p_value) + ")" +
-              (c.p_value < options.screen_alpha ? ", not among the best candidates confirmed" : ": explains nothing beyond noise") + ".";
-      continue;
-    }
-    std::string s = c.effect + ": " + (c.delta_bic < 0 ? "ΔBIC " : "ΔBIC +") + fmt("%.1f", c.delta_bic) + ", explains " +
-                    fmt("%.0f", 100 * c.explained) + " % of the excess residual";
-    // The window it fixes most.
-    double best_drop = 0.0;
-    std::string where;
-    for (std::size_t i = 0; i < base.series.size() && i < c.fit->comparison.series.size(); ++i)
-      for (const auto& win : base.series[i].windows) {
-        const double before = chi2In(base.series[i], win.window.t_begin, win.window.t_end);
-        const double after = chi2In(c.fit->comparison.series[i], win.window.t_begin, win.window.t_end);
-        if (before - after > best_drop) {
-          best_drop = before - after;
-          where = "removes " + fmt("%.0f", before > 0 ? 100 * (before - after) / before : 0.0) + " % of the residual of " +
-                  base.series[i].channel + " in " + base.series[i].scenario + " " + fmt("%.3f", win.window.t_begin) + "-" +
-                  fmt("%.3f", win.window.t_end) + " s (" + win.label + ")";
-        }
-      }
-    if (!where.empty()) s += "; " + where;
-    // The band it fixes most.
-    double band_drop = 0.0;
-    std::string band;
-    for (std::size_t i = 0; i < base.series.size() && i < c.fit->comparison.series.size(); ++i)
-      for (std::size_t b = 0; b < base.series[i].bands.size() && b < c.fit->comparison.series[i].bands.size(); ++b) {
-        const double before = base.series[i].bands[b].ratio, after = c.fit->comparison.series[i].bands[b].ratio;
-        if (before - after > band_drop && before > 2.0) {
-          band_drop = before - after;
-          band = base.series[i].bands[b].band + " band of " + base.series[i].channel + " from " + fmt("%.3g", before) + "x to " +
-                 fmt("%.3g", after) + "x the noise floor";
-        }
-      }
-    if (!band.empty()) s += "; lowers the " + band;
-    // The force-state signature it predicts, as seen in the base residual.
-    const auto sig = expectedSignature(c.effect);
-    if (!sig.first.empty()) {
-      double ef = 0.0;
-      std::string txt;
-      for (const auto& cm : base.maps)
-        for (const auto& m : cm.maps)
-          if (m.state.rfind(sig.first, 0) == 0)
-            for (const auto& f : m.fits)
-              if (f.feature == sig.second && f.explained_fraction > ef) {
-                ef = f.explained_fraction;
-                txt = cm.channel + " vs " + m.state + " shows a " + f.feature +
-                      (f.feature == "knee" ? " beyond " + fmt("%.3g", f.knee_at) : "") + " (" + fmt("%.0f", 100 * ef) +
-                      " % of that map)";
-              }
-      if (!txt.empty() && ef > 0.1) s += "; its signature is in the data: " + txt;
-    }
-    if (c.holdout_change) s += "; held-out systematic error x" + fmt("%.2f", *c.holdout_change);
-    c.why = s + ".";
-  }
+// ------------------------------------------------------------------ verdict
 
-  // 4. Verdict.
+/// The window of the base residual a confirmed candidate fixes most, in words ("" if none).
+std::string windowFixed(const Comparison& base, const Comparison& with) {
+  double best_drop = 0.0;
+  std::string where;
+  for (std::size_t i = 0; i < base.series.size() && i < with.series.size(); ++i)
+    for (const auto& win : base.series[i].windows) {
+      const double before = chi2In(base.series[i], win.window.t_begin, win.window.t_end);
+      const double after = chi2In(with.series[i], win.window.t_begin, win.window.t_end);
+      if (before - after > best_drop) {
+        best_drop = before - after;
+        where = "removes " + fmt("%.0f", before > 0 ? 100 * (before - after) / before : 0.0) + " % of the residual of " +
+                base.series[i].channel + " in " + base.series[i].scenario + " " + fmt("%.3f", win.window.t_begin) + "-" +
+                fmt("%.3f", win.window.t_end) + " s (" + win.label + ")";
+      }
+    }
+  return where;
+}
+
+/// The frequency band a confirmed candidate lowers most (of those > 2x the noise floor), in words.
+std::string bandFixed(const Comparison& base, const Comparison& with) {
+  double band_drop = 0.0;
+  std::string band;
+  for (std::size_t i = 0; i < base.series.size() && i < with.series.size(); ++i)
+    for (std::size_t b = 0; b < base.series[i].bands.size() && b < with.series[i].bands.size(); ++b) {
+      const double before = base.series[i].bands[b].ratio, after = with.series[i].bands[b].ratio;
+      if (before - after > band_drop && before > 2.0) {
+        band_drop = before - after;
+        band = base.series[i].bands[b].band + " band of " + base.series[i].channel + " from " + fmt("%.3g", before) + "x to " +
+               fmt("%.3g", after) + "x the noise floor";
+      }
+    }
+  return band;
+}
+
+/// The effect's residual signature (Effect::residualSignature) as the base residual shows it, in
+/// words ("" if the effect names none or it explains <= 10 % of its map).
+std::string signatureSeen(const Comparison& base, const std::string& effect) {
+  const ResidualSignature sig = makeEffect(effect, "effect")->residualSignature();
+  if (sig.state_map.empty()) return "";
+  double ef = 0.0;
+  std::string txt;
+  for (const auto& cm : base.maps)
+    for (const auto& m : cm.maps)
+      if (m.state.rfind(sig.state_map, 0) == 0)
+        for (const auto& f : m.fits)
+          if (f.feature == sig.feature && f.explained_fraction > ef) {
+            ef = f.explained_fraction;
+            txt = cm.channel + " vs " + m.state + " shows a " + f.feature +
+                  (f.feature == "knee" ? " beyond " + fmt("%.3g", f.knee_at) : "") + " (" + fmt("%.0f", 100 * ef) + " % of that map)";
+          }
+  return !txt.empty() && ef > 0.1 ? txt : "";
+}
+
+/// One plain sentence per candidate: why it is ranked where it is.
+std::string whyOf(const Candidate& c, const Comparison& base, const DiagnoseOptions& options) {
+  if (!c.gate.empty()) return c.effect + ": not a candidate: " + c.gate + ".";
+  if (!c.confirmed)
+    return c.effect + ": screening score " + fmt("%.3g", c.score) + " (p = " + fmt("%.2g", c.p_value) + ")" +
+           (c.p_value < options.screen_alpha ? ", not among the best candidates confirmed" : ": explains nothing beyond noise") + ".";
+  std::string s = c.effect + ": " + (c.delta_bic < 0 ? "ΔBIC " : "ΔBIC +") + fmt("%.1f", c.delta_bic) + ", explains " +
+                  fmt("%.0f", 100 * c.explained) + " % of the excess residual";
+  const std::string where = windowFixed(base, c.fit->comparison);
+  if (!where.empty()) s += "; " + where;
+  const std::string band = bandFixed(base, c.fit->comparison);
+  if (!band.empty()) s += "; lowers the " + band;
+  const std::string sig = signatureSeen(base, c.effect);
+  if (!sig.empty()) s += "; its signature is in the data: " + sig;
+  if (c.holdout_change) s += "; held-out systematic error x" + fmt("%.2f", *c.holdout_change);
+  return s + ".";
+}
+
+/// Verdict (step 4): every candidate's why, then "effect" (the best confirmed
+/// effect with ΔBIC < −bic_strong that leaves no significant lack of fit or explains at least
+/// explained_min of the excess; ambiguity stated), "none" or "unexplained" (with where).
+void verdict(Diagnosis& d) {
+  auto& res = d.res;
+  const auto& options = d.options;
+  const Comparison& base = res.base.comparison;
+  for (auto& c : res.candidates) c.why = whyOf(c, base, options);
   const double alpha = options.lack_of_fit_alpha;
   const bool base_bad = base.lack_of_fit_p < alpha;
   std::vector<const Candidate*> named;
@@ -622,54 +780,79 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
                     fmt("%.1f", base.lack_of_fit_z) + ", p = " + fmt("%.2g", base.lack_of_fit_p) +
                     ") and no catalogue effect passes the screening and the evidence test.";
     }
-  } else {
-    const Candidate& best = *named.front();
-    const bool after_bad = best.fit->comparison.lack_of_fit_p < alpha;
-    if (after_bad && best.explained < options.explained_min) {
-      res.verdict = "unexplained";
-      res.unexplained_location = locate(best.fit->comparison);
-      res.summary = "Unexplained residual: the best catalogue effect, " + best.effect + ", explains only " +
-                    fmt("%.0f", 100 * best.explained) + " % of the excess residual and a significant lack of fit remains (z = " +
-                    fmt("%.1f", best.fit->comparison.lack_of_fit_z) + "); it is not named. Where: " + res.unexplained_location + ".";
-    } else {
-      res.verdict = "effect";
-      res.named_effect = best.effect;
-      res.summary = "Missing effect: " + best.effect + " (ΔBIC " + fmt("%.1f", best.delta_bic) + ", explains " +
-                    fmt("%.0f", 100 * best.explained) + " % of the excess residual).";
-      for (std::size_t i = 1; i < named.size(); ++i)
-        if (best.fit->log_evidence - named[i]->fit->log_evidence < options.ambiguity_log_evidence)
-          res.ambiguous_with.push_back(named[i]->effect);
-      if (!res.ambiguous_with.empty()) {
-        res.summary += " Ambiguous: ";
-        for (std::size_t i = 0; i < res.ambiguous_with.size(); ++i) res.summary += (i ? ", " : "") + res.ambiguous_with[i];
-        res.summary += " explain" + std::string(res.ambiguous_with.size() == 1 ? "s" : "") +
-                       " the data almost as well (log evidence within " + fmt("%.0f", options.ambiguity_log_evidence) +
-                       "); more data (another scenario) would separate them.";
-      }
-      if (after_bad)
-        res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", best.fit->comparison.lack_of_fit_z) +
-                       "): " + locate(best.fit->comparison) + ".";
-    }
+    return;
   }
+  const Candidate& best = *named.front();
+  const bool after_bad = best.fit->comparison.lack_of_fit_p < alpha;
+  if (after_bad && best.explained < options.explained_min) {
+    res.verdict = "unexplained";
+    res.unexplained_location = locate(best.fit->comparison);
+    res.summary = "Unexplained residual: the best catalogue effect, " + best.effect + ", explains only " +
+                  fmt("%.0f", 100 * best.explained) + " % of the excess residual and a significant lack of fit remains (z = " +
+                  fmt("%.1f", best.fit->comparison.lack_of_fit_z) + "); it is not named. Where: " + res.unexplained_location + ".";
+    return;
+  }
+  res.verdict = "effect";
+  res.named_effect = best.effect;
+  res.summary = "Missing effect: " + best.effect + " (ΔBIC " + fmt("%.1f", best.delta_bic) + ", explains " +
+                fmt("%.0f", 100 * best.explained) + " % of the excess residual).";
+  for (std::size_t i = 1; i < named.size(); ++i)
+    if (best.fit->log_evidence - named[i]->fit->log_evidence < options.ambiguity_log_evidence)
+      res.ambiguous_with.push_back(named[i]->effect);
+  if (!res.ambiguous_with.empty()) {
+    res.summary += " Ambiguous: ";
+    for (std::size_t i = 0; i < res.ambiguous_with.size(); ++i) res.summary += (i ? ", " : "") + res.ambiguous_with[i];
+    res.summary += " explain" + std::string(res.ambiguous_with.size() == 1 ? "s" : "") +
+                   " the data almost as well (log evidence within " + fmt("%.0f", options.ambiguity_log_evidence) +
+                   "); more data (another scenario) would separate them.";
+  }
+  if (after_bad)
+    res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", best.fit->comparison.lack_of_fit_z) +
+                   "): " + locate(best.fit->comparison) + ".";
+}
 
-  // 5. Apply: effects added in turn.
-  if (!options.apply.empty()) {
-    res.steps.push_back(res.base);
-    std::vector<std::string> acc;
-    for (std::size_t k = 0; k < options.apply.size(); ++k) {
-      acc.push_back(options.apply[k]);
-      std::vector<double> start, theta;
-      const Figures* confirmed = nullptr;
-      for (const auto& c : res.candidates)
-        if (c.effect == options.apply[k]) {
-          start = c.screening_estimate;
-          theta = c.screening_theta;
-          if (acc.size() == 1 && c.fit) confirmed = &*c.fit;  // already calibrated with this effect alone
-        }
-      res.steps.push_back(confirmed ? *confirmed : calibrateWith(acc, "apply " + joinEffects(acc), start, theta));
-    }
+// ------------------------------------------------------------------ apply
+
+/// Apply (step 5): options.apply's effects added in turn, each model re-calibrated (a lone effect
+/// confirmed above is reused); res.steps = base, + e1, + e1 + e2, ...
+void apply(Diagnosis& d) {
+  const auto& effects = d.options.apply;
+  if (effects.empty()) return;
+  auto& res = d.res;
+  res.steps.push_back(res.base);
+  std::vector<std::string> acc;
+  for (const auto& effect : effects) {
+    acc.push_back(effect);
+    std::vector<double> start, theta;
+    const Figures* confirmed = nullptr;
+    for (const auto& c : res.candidates)
+      if (c.effect == effect) {
+        start = c.screening_estimate;
+        theta = c.screening_theta;
+        if (acc.size() == 1 && c.fit) confirmed = &*c.fit;  // already calibrated with this effect alone
+      }
+    res.steps.push_back(confirmed ? *confirmed : d.calibrateWith(acc, "apply " + joinEffects(acc), start, theta));
   }
-  return res;
+}
+
+}  // namespace
+
+DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const std::vector<calib::DataSet>& fit,
+                         const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options,
+                         const std::string& out_dir, const DiagnoseProgress& progress) {
+  options.validate();
+  if (fit.empty()) throw InputError(OptionCheck("diagnose").where("fit"), "needs at least one measurement data set");
+  Diagnosis d(study, assembly, options, out_dir, progress);
+  d.catalogue = catalogueOf(study, assembly, options);
+  d.res.assembly = assembly.id;
+  prepareData(d, fit, holdout);
+  d.res.base = d.calibrateWith({}, "base");
+  screen(d);
+  const auto confirmed = confirm(d);
+  refine(d, confirmed);
+  verdict(d);
+  apply(d);
+  return std::move(d.res);
 }
 
 nlohmann::json DiagnosisResult::toJson() const {

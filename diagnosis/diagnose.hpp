@@ -17,7 +17,9 @@
 //     fit, or explains most of the excess), "none" (no lack of fit and no candidate), or
 //     "unexplained" (significant residual that no catalogue effect explains), with ambiguity
 //     stated when two effects' evidence is within a factor e^3.
-//  5. --apply: effects added in turn, each re-calibrated; the before/after table and waterfall.
+//  5. Apply (options.apply): effects added in turn, each re-calibrated; the before/after table
+//     and waterfall.
+// diagnose() runs these as named stages (diagnose.cpp: screen, confirm, refine, verdict, apply).
 #include <functional>
 #include <optional>
 #include <string>
@@ -42,9 +44,12 @@ struct DiagnoseOptions {
   double lack_of_fit_alpha = 1e-3;   ///< level of the lack-of-fit test
   int compare_draws = 20;            ///< posterior rows per comparison
   std::vector<std::string> effects;  ///< the catalogue to rank (empty: every effect not already installed)
-  std::vector<std::string> apply;    ///< --apply: effects added in turn
-  int threads = 0;
-  std::string command;
+  std::vector<std::string> apply;    ///< effects added in turn after the verdict (`twin diagnose --apply`)
+  int threads = 0;                   ///< worker threads (0: all cores)
+  std::string command;               ///< recorded in every calibration folder
+  /// Throws InputError("diagnose.<field>", rule) for a field out of range, an unknown or repeated
+  /// effect in effects or apply (common/validate.hpp); checks calibration too. diagnose() calls it.
+  void validate() const;
 };
 
 /// Progress: stage text, done, total.
@@ -103,7 +108,7 @@ struct DiagnosisResult {
   std::string base_refined_from;
   double base_unrefined_sse = 0;
   std::vector<Candidate> candidates;  ///< every effect: confirmed ones first (by evidence), then by score, gated last
-  std::vector<Figures> steps;         ///< --apply: base, + e1, + e1 + e2, ...
+  std::vector<Figures> steps;         ///< options.apply: base, + e1, + e1 + e2, ...
   std::vector<std::string> fitted_channels, left_out_channels;
   nlohmann::json toJson() const;
   /// The report printed by the CLI.
@@ -112,8 +117,8 @@ struct DiagnosisResult {
 
 /// Runs the diagnosis of `assembly` on `fit` (and, when not empty, the held-out data `holdout`),
 /// persisting every calibration under out_dir/calibrations/<effects> (resumable: a rerun reuses
-/// them). Throws InputError for bad input (no channel with a noise estimate, unknown effect in
-/// options.effects or options.apply, an effect already installed).
+/// them). Throws InputError for bad input: options.validate(), no fit data ("diagnose.fit"), no
+/// channel with a noise estimate, an effect of options.effects or options.apply already installed.
 DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const std::vector<calib::DataSet>& fit,
                          const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options,
                          const std::string& out_dir, const DiagnoseProgress& progress = {});

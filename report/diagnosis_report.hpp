@@ -25,6 +25,9 @@ struct DiagnosisSectionOptions {
   std::string anchor = "diagnosis";  ///< id of the section heading; sub-sections get "<anchor>-<part>"
   std::string id_prefix = "d";       ///< SVG ids of plot n become "<id_prefix><n>_<id>" (distinct per section on a page)
   std::string heading_prefix;        ///< put before the heading text (e.g. "6. " in the study report)
+  /// InputError whose where() is "diagnosis_section.<field>" (common/validate.hpp): a non-empty
+  /// anchor and id_prefix.
+  void validate() const;
 };
 
 /// The <section> of the diagnosis folder `diag_dir` (written by `twin diagnose --out`), for

@@ -17,6 +17,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
+#include "common/validate.hpp"
 #include "twin/measurement.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"
@@ -72,339 +73,346 @@ std::vector<std::string> splitCsv(const std::string& line) {
   return out;
 }
 
-}  // namespace
-
-json writeStudyReport(const study::LabBands& bands, const std::string& study_dir, const std::string& out_html,
-                      const std::string& command, const ReportOptions& options) {
-  const auto t_start = std::chrono::steady_clock::now();
-  const std::string gnuplot_exe = requireGnuplot("`twin report`");
-  const fs::path dir(study_dir);
-  if (!fs::is_directory(dir)) throw InputError(study_dir, "is not a folder");
-  const json record = readJson(dir / "study.json");
-  const json summary = readJson(dir / "summary.json");
-  const json csum = readJson(dir / "classification" / "summary.json");
-  std::vector<std::string> warnings = bands.warnings;
-  const Study& study = bands.study;
-  const LabData& lab = bands.lab;
-  const std::string& lab_path = bands.lab_path;
-  const int draws = bands.draws;
-  json failures = json::object(), noise_sd = json::object();
-  for (const auto& ab : bands.assemblies) {
-    failures[ab.assembly.id] = ab.failures;
-    if (!ab.channels.empty()) noise_sd[ab.assembly.id] = ab.noise_sd;
-  }
-
-  // ---- plots
-  GnuplotSvg gp(gnuplot_exe);
-  json plots = json::array();
+/// What the sections of the study report draw into: the plotter, the page body (sections 1–5),
+/// the list of plots and the warnings shown at the top of the page.
+struct ReportPage {
+  GnuplotSvg gp;
   std::ostringstream body;
-  auto figure = [&](const std::string& svg, const std::string& caption) {
+  json plots = json::array();
+  std::vector<std::string> warnings;
+  ReportPage(const std::string& gnuplot_exe, std::vector<std::string> first_warnings)
+      : gp(gnuplot_exe), warnings(std::move(first_warnings)) {}
+  void figure(const std::string& svg, const std::string& caption) {
     body << "<figure>\n" << svg << "\n<figcaption>" << caption << "</figcaption>\n</figure>\n";
-  };
-
-  body << "<h2 id=\"lab\">1. Lab data against the posterior predictive bands</h2>\n"
-       << "<p>For each assembly, " << draws
-       << " evenly spaced rows of its posterior sample (rows ⌊(k + ½)·S / " << draws
-       << "⌋, k = 0 … " << draws - 1
-       << ") are simulated on the lab scenario and predicted at the lab times. Dark band: 2.5–97.5 % of the predictions "
-          "η(θ) (parameter uncertainty); line: their median; light band: 2.5–97.5 % of the posterior predictive "
-          "distribution, the predictions plus measurement noise N(0, 1/τ) of each draw (noise sd = 1/√τ). Points: the "
-          "measured values of every repetition. The lower panel shows the same relative to the median prediction.</p>\n";
-  for (const auto& ab : bands.assemblies) {
-    const auto& a = ab.assembly;
-    for (const auto& p : ab.channels) {
-      std::ostringstream band, pts;
-      for (std::size_t i = 0; i < p.times.size(); ++i)
-        band << full(p.times[i]) << ' ' << full(p.lo[i]) << ' ' << full(p.med[i]) << ' ' << full(p.hi[i]) << ' '
-             << full(p.plo[i]) << ' ' << full(p.phi[i]) << '\n';
-      for (const auto& r : lab.records) {
-        if (r.channel != p.channel) continue;
-        const std::size_t i = static_cast<std::size_t>(std::find(p.times.begin(), p.times.end(), r.time_s) - p.times.begin());
-        pts << full(r.time_s) << ' ' << full(r.value) << ' ' << full(r.value - p.med[i]) << '\n';
-      }
-      const std::string fb = gp.data(band.str()), fp = gp.data(pts.str());
-      const std::string title = a.id + " (" + a.label() + "): " + p.channel;
-      std::ostringstream s;
-      s << "set multiplot layout 2,1 title " << gq(title) << " noenhanced\n"
-        << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(p.channel) << " noenhanced\n"
-        << "set style fill transparent solid 0.25 noborder\n"
-        << "plot " << fb << " using 1:5:6 with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
-        << fb << " using 1:2:4 with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
-        << fb << " using 1:3 with linespoints lw 1.5 pt 1 lc rgb '#103070' title 'median η(θ)', "
-        << fp << " using 1:2 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n"
-        << "set ylabel " << gq("measured − median [" + p.channel + "]") << " noenhanced\n"
-        << "plot " << fb << " using 1:($5-$3):($6-$3) with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
-        << fb << " using 1:($2-$3):($4-$3) with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
-        << fb << " using 1:($3-$3) with lines lc rgb '#103070' title 'median η(θ)', "
-        << fp << " using 1:3 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n";
-      const std::string name = "predictive_" + a.id + "_" + p.channel;
-      figure(gp.plot(s.str(), 900, 600, title),
-             htmlEscape(a.id + ": " + std::to_string(ab.drawn - ab.failures) + " of " +
-                        std::to_string(ab.drawn) + " draws simulated; noise sd 1/√τ = " + num(ab.noise_sd, 4) +
-                        " (posterior median over the draws, in the channel's unit)."));
-      plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", p.channel}});
-    }
   }
+};
 
-  // ---- 2. posterior histograms
-  body << "<h2 id=\"posterior\">2. Posterior of θ and τ</h2>\n<p>Histograms (40 bins) of every kept Gibbs iteration of "
-          "<code>calibration/&lt;id&gt;/posterior.csv</code>; θ takes only design-point values, so bars may be sparse. "
-          "Dashed lines mark the posterior's central 95 % interval (2.5 % and 97.5 % quantiles, <code>credible95</code>), "
-          "dotted green lines the profile-likelihood 95 % interval (<code>profile95</code>); <code>summary.json</code> prints "
-          "one of them as <code>ci95</code> (the profile interval by default, docs/calibration.md). When the study knows the "
-          "truth, a red line marks it, the axis is widened to show it, and the sentence under the figure says whether the "
-          "ci95 interval holds it.</p>\n";
-  for (const auto& ab : bands.assemblies) {
-    const auto& a = ab.assembly;
-    const auto& post = ab.posterior;
-    std::vector<std::string> names = post.names;
-    names.push_back("tau");
-    const int np = static_cast<int>(names.size()), cols = np <= 3 ? np : 3, rws = (np + cols - 1) / cols;
-    std::ostringstream s;
-    s << "set multiplot layout " << rws << "," << cols << " title " << gq(a.id + " (" + a.label() + "): posterior, " +
-                                                                           std::to_string(post.size()) + " iterations")
-      << " noenhanced\nset style fill solid 0.6 border lc rgb '#333333'\nset ylabel 'count'\nset format x '%.5g'\n";
-    std::vector<std::string> truth_notes;
-    const json cal_summary = readJsonIfExists(dir / "calibration" / a.id / "summary.json");
-    for (int j = 0; j < np; ++j) {
-      std::vector<double> v;
-      if (j < np - 1)
-        for (const auto& row : post.theta) v.push_back(row[static_cast<std::size_t>(j)]);
-      else
-        v = post.tau;
-      const auto [mn_it, mx_it] = std::minmax_element(v.begin(), v.end());
-      double lo = *mn_it, hi = *mx_it;
-      std::vector<double> sorted = v;
-      std::sort(sorted.begin(), sorted.end());
-      const double q025 = calib::quantileSorted(sorted, 0.025), q975 = calib::quantileSorted(sorted, 0.975);
-      std::optional<double> truth;
-      for (const auto& cp : study.calibrated)
-        if (j < np - 1 && cp.name == names[static_cast<std::size_t>(j)] && cp.truth) truth = *cp.truth;
-      // The profile interval and which interval ci95 is, from the calibration's summary.json.
-      std::optional<std::pair<double, double>> prof;
-      std::string ci_kind = "posterior";
-      if (j < np - 1 && cal_summary.contains("parameters") && cal_summary["parameters"].contains(names[static_cast<std::size_t>(j)])) {
-        const auto& e = cal_summary["parameters"][names[static_cast<std::size_t>(j)]];
-        if (e.contains("profile95")) prof = std::make_pair(e["profile95"][0].get<double>(), e["profile95"][1].get<double>());
-        ci_kind = e.value("interval", std::string("posterior"));
-      }
-      const double ci_lo = ci_kind == "profile" && prof ? prof->first : q025, ci_hi = ci_kind == "profile" && prof ? prof->second : q975;
-      if (prof) {
-        lo = std::min(lo, prof->first);
-        hi = std::max(hi, prof->second);
-      }
-      if (truth) {
-        // Widen the axis to show the truth, with a margin of 5 % of the span.
-        const double span = std::max(std::max(hi, *truth) - std::min(lo, *truth), 1e-12 * std::max(1.0, std::abs(*truth)));
-        if (*truth < lo) lo = *truth - 0.05 * span;
-        if (*truth > hi) hi = *truth + 0.05 * span;
-        const bool inside = *truth >= ci_lo && *truth <= ci_hi;
-        truth_notes.push_back(names[static_cast<std::size_t>(j)] + ": the truth " + num(*truth, 6) +
-                              (inside ? " lies inside" : (*truth < ci_lo ? " lies BELOW" : " lies ABOVE")) + " the 95 % interval [" +
-                              num(ci_lo, 6) + ", " + num(ci_hi, 6) + "] (" + (ci_kind == "profile" && prof ? "profile likelihood" : "posterior") +
-                              ")");
-      }
-      if (hi - lo <= 1e-12 * std::max(1.0, std::abs(lo))) {
-        const double d = std::max(std::abs(lo) * 1e-3, 1e-12);
-        lo -= d;
-        hi += d;
-      }
-      const int nb = 40;
-      const double w = (hi - lo) / nb;
-      std::vector<long> c(nb, 0);
-      for (double x : v) ++c[static_cast<std::size_t>(std::clamp(static_cast<int>((x - lo) / w), 0, nb - 1))];
-      std::ostringstream d;
-      for (int b = 0; b < nb; ++b) d << full(lo + (b + 0.5) * w) << ' ' << c[static_cast<std::size_t>(b)] << '\n';
-      const std::string f = gp.data(d.str());
-      s << "unset arrow\nset xrange [" << full(lo) << ":" << full(hi) << "]\nset boxwidth " << full(w) << " absolute\n"
-        << "set xtics (" << full(lo + 0.1 * (hi - lo)) << ", " << full(lo + 0.5 * (hi - lo)) << ", " << full(lo + 0.9 * (hi - lo))
-        << ")\n";
-      for (double q : {q025, q975})
-        s << "set arrow from " << full(q) << ", graph 0 to " << full(q) << ", graph 1 nohead lw 1 dt 2 lc rgb '#222222'\n";
-      if (prof)
-        for (double q : {prof->first, prof->second})
-          s << "set arrow from " << full(q) << ", graph 0 to " << full(q) << ", graph 1 nohead lw 2 dt 3 lc rgb '#2a8a3a'\n";
-      if (truth)
-        s << "set arrow from " << full(*truth) << ", graph 0 to " << full(*truth) << ", graph 1 nohead lw 2 lc rgb '#c03020'\n";
-      s << "set xlabel " << gq(names[static_cast<std::size_t>(j)]) << " noenhanced\n"
-        << "plot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle\n";
-    }
-    std::string caption = a.id + ": θ = (" + [&] {
-      std::string r;
-      for (std::size_t j = 0; j < post.names.size(); ++j) r += (j ? ", " : "") + post.names[j];
-      return r;
-    }() + "), τ the error precision [1/unit²]; noise sd = 1/√τ.";
-    for (const auto& t : truth_notes) caption += " " + t + ".";
-    figure(gp.plot(s.str(), 900, 300 * rws, a.id + " posterior histograms"), htmlEscape(caption));
-    plots.push_back({{"name", "posterior_" + a.id}, {"kind", "posterior_histograms"}, {"assembly", a.id}});
+/// The JSON files of a study folder the report reads (written by `twin study`).
+struct StudyFiles {
+  json record;   ///< study.json
+  json summary;  ///< summary.json
+  json csum;     ///< classification/summary.json
+};
+
+StudyFiles readStudyFiles(const fs::path& dir) {
+  StudyFiles f;
+  f.record = readJson(dir / "study.json");
+  f.summary = readJson(dir / "summary.json");
+  f.csum = readJson(dir / "classification" / "summary.json");
+  return f;
+}
+
+/// One figure of section 1: the lab data of `p.channel` against the assembly's predictive band,
+/// and the same relative to the median prediction.
+void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, const study::ChannelBand& p, const LabData& lab) {
+  const auto& a = ab.assembly;
+  std::ostringstream band, pts;
+  for (std::size_t i = 0; i < p.times.size(); ++i)
+    band << full(p.times[i]) << ' ' << full(p.lo[i]) << ' ' << full(p.med[i]) << ' ' << full(p.hi[i]) << ' '
+         << full(p.plo[i]) << ' ' << full(p.phi[i]) << '\n';
+  for (const auto& r : lab.records) {
+    if (r.channel != p.channel) continue;
+    const std::size_t i = static_cast<std::size_t>(std::find(p.times.begin(), p.times.end(), r.time_s) - p.times.begin());
+    pts << full(r.time_s) << ' ' << full(r.value) << ' ' << full(r.value - p.med[i]) << '\n';
   }
+  const std::string fb = pg.gp.data(band.str()), fp = pg.gp.data(pts.str());
+  const std::string title = a.id + " (" + a.label() + "): " + p.channel;
+  std::ostringstream s;
+  s << "set multiplot layout 2,1 title " << gq(title) << " noenhanced\n"
+    << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(p.channel) << " noenhanced\n"
+    << "set style fill transparent solid 0.25 noborder\n"
+    << "plot " << fb << " using 1:5:6 with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
+    << fb << " using 1:2:4 with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
+    << fb << " using 1:3 with linespoints lw 1.5 pt 1 lc rgb '#103070' title 'median η(θ)', "
+    << fp << " using 1:2 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n"
+    << "set ylabel " << gq("measured − median [" + p.channel + "]") << " noenhanced\n"
+    << "plot " << fb << " using 1:($5-$3):($6-$3) with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
+    << fb << " using 1:($2-$3):($4-$3) with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
+    << fb << " using 1:($3-$3) with lines lc rgb '#103070' title 'median η(θ)', "
+    << fp << " using 1:3 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n";
+  const std::string name = "predictive_" + a.id + "_" + p.channel;
+  pg.figure(pg.gp.plot(s.str(), 900, 600, title),
+            htmlEscape(a.id + ": " + std::to_string(ab.drawn - ab.failures) + " of " + std::to_string(ab.drawn) +
+                       " draws simulated; noise sd 1/√τ = " + num(ab.noise_sd, 4) +
+                       " (posterior median over the draws, in the channel's unit)."));
+  pg.plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", p.channel}});
+}
 
-  // ---- 3. selection boxplot and wins
+/// Section 1: the lab data against every assembly's posterior predictive bands.
+void predictiveSection(ReportPage& pg, const study::LabBands& bands) {
+  const int draws = bands.draws;
+  pg.body << "<h2 id=\"lab\">1. Lab data against the posterior predictive bands</h2>\n"
+          << "<p>For each assembly, " << draws
+          << " evenly spaced rows of its posterior sample (rows ⌊(k + ½)·S / " << draws
+          << "⌋, k = 0 … " << draws - 1
+          << ") are simulated on the lab scenario and predicted at the lab times. Dark band: 2.5–97.5 % of the predictions "
+             "η(θ) (parameter uncertainty); line: their median; light band: 2.5–97.5 % of the posterior predictive "
+             "distribution, the predictions plus measurement noise N(0, 1/τ) of each draw (noise sd = 1/√τ). Points: the "
+             "measured values of every repetition. The lower panel shows the same relative to the median prediction.</p>\n";
+  for (const auto& ab : bands.assemblies)
+    for (const auto& p : ab.channels) predictivePlot(pg, ab, p, bands.lab);
+}
+
+/// One panel of a posterior figure: the 40-bin histogram of `v` (the values of parameter `name`),
+/// the posterior's central 95 % interval, the profile interval of `entry` (its summary.json
+/// parameter entry; nullptr for τ or when there is none) and the truth when known, whose note joins `truth_notes`. Returns
+/// the panel's gnuplot commands.
+std::string histogramPanel(GnuplotSvg& gp, const std::string& name, const std::vector<double>& v, std::optional<double> truth,
+                           const json* entry, std::vector<std::string>& truth_notes) {
+  const auto [mn_it, mx_it] = std::minmax_element(v.begin(), v.end());
+  double lo = *mn_it, hi = *mx_it;
+  std::vector<double> sorted = v;
+  std::sort(sorted.begin(), sorted.end());
+  const double q025 = calib::quantileSorted(sorted, 0.025), q975 = calib::quantileSorted(sorted, 0.975);
+  // The profile interval and which interval ci95 is, from the calibration's summary.json.
+  std::optional<std::pair<double, double>> prof;
+  std::string ci_kind = "posterior";
+  if (entry) {
+    const json& e = *entry;
+    if (e.contains("profile95")) prof = std::make_pair(e["profile95"][0].get<double>(), e["profile95"][1].get<double>());
+    ci_kind = e.value("interval", std::string("posterior"));
+  }
+  const double ci_lo = ci_kind == "profile" && prof ? prof->first : q025, ci_hi = ci_kind == "profile" && prof ? prof->second : q975;
+  if (prof) {
+    lo = std::min(lo, prof->first);
+    hi = std::max(hi, prof->second);
+  }
+  if (truth) {
+    // Widen the axis to show the truth, with a margin of 5 % of the span.
+    const double span = std::max(std::max(hi, *truth) - std::min(lo, *truth), 1e-12 * std::max(1.0, std::abs(*truth)));
+    if (*truth < lo) lo = *truth - 0.05 * span;
+    if (*truth > hi) hi = *truth + 0.05 * span;
+    const bool inside = *truth >= ci_lo && *truth <= ci_hi;
+    truth_notes.push_back(name + ": the truth " + num(*truth, 6) +
+                          (inside ? " lies inside" : (*truth < ci_lo ? " lies BELOW" : " lies ABOVE")) + " the 95 % interval [" +
+                          num(ci_lo, 6) + ", " + num(ci_hi, 6) + "] (" + (ci_kind == "profile" && prof ? "profile likelihood" : "posterior") +
+                          ")");
+  }
+  if (hi - lo <= 1e-12 * std::max(1.0, std::abs(lo))) {
+    const double d = std::max(std::abs(lo) * 1e-3, 1e-12);
+    lo -= d;
+    hi += d;
+  }
+  const int nb = 40;
+  const double w = (hi - lo) / nb;
+  std::vector<long> c(nb, 0);
+  for (double x : v) ++c[static_cast<std::size_t>(std::clamp(static_cast<int>((x - lo) / w), 0, nb - 1))];
+  std::ostringstream d;
+  for (int b = 0; b < nb; ++b) d << full(lo + (b + 0.5) * w) << ' ' << c[static_cast<std::size_t>(b)] << '\n';
+  const std::string f = gp.data(d.str());
+  std::ostringstream s;
+  s << "unset arrow\nset xrange [" << full(lo) << ":" << full(hi) << "]\nset boxwidth " << full(w) << " absolute\n"
+    << "set xtics (" << full(lo + 0.1 * (hi - lo)) << ", " << full(lo + 0.5 * (hi - lo)) << ", " << full(lo + 0.9 * (hi - lo))
+    << ")\n";
+  for (double q : {q025, q975})
+    s << "set arrow from " << full(q) << ", graph 0 to " << full(q) << ", graph 1 nohead lw 1 dt 2 lc rgb '#222222'\n";
+  if (prof)
+    for (double q : {prof->first, prof->second})
+      s << "set arrow from " << full(q) << ", graph 0 to " << full(q) << ", graph 1 nohead lw 2 dt 3 lc rgb '#2a8a3a'\n";
+  if (truth)
+    s << "set arrow from " << full(*truth) << ", graph 0 to " << full(*truth) << ", graph 1 nohead lw 2 lc rgb '#c03020'\n";
+  s << "set xlabel " << gq(name) << " noenhanced\n"
+    << "plot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle\n";
+  return s.str();
+}
+
+/// One figure of section 2: the histograms of an assembly's θ and τ (one panel each).
+void posteriorFigure(ReportPage& pg, const study::AssemblyBands& ab, const Study& study, const fs::path& dir) {
+  const auto& a = ab.assembly;
+  const auto& post = ab.posterior;
+  std::vector<std::string> names = post.names;
+  names.push_back("tau");
+  const int np = static_cast<int>(names.size()), cols = np <= 3 ? np : 3, rws = (np + cols - 1) / cols;
+  std::ostringstream s;
+  s << "set multiplot layout " << rws << "," << cols << " title " << gq(a.id + " (" + a.label() + "): posterior, " +
+                                                                         std::to_string(post.size()) + " iterations")
+    << " noenhanced\nset style fill solid 0.6 border lc rgb '#333333'\nset ylabel 'count'\nset format x '%.5g'\n";
+  std::vector<std::string> truth_notes;
+  const json cal_summary = readJsonIfExists(dir / "calibration" / a.id / "summary.json");
+  for (int j = 0; j < np; ++j) {
+    const std::string& name = names[static_cast<std::size_t>(j)];
+    const bool theta = j < np - 1;
+    std::vector<double> v;
+    if (theta)
+      for (const auto& row : post.theta) v.push_back(row[static_cast<std::size_t>(j)]);
+    else
+      v = post.tau;
+    std::optional<double> truth;
+    for (const auto& cp : study.calibrated)
+      if (theta && cp.name == name && cp.truth) truth = *cp.truth;
+    const bool has_entry = theta && cal_summary.contains("parameters") && cal_summary["parameters"].contains(name);
+    s << histogramPanel(pg.gp, name, v, truth, has_entry ? &cal_summary["parameters"][name] : nullptr, truth_notes);
+  }
+  std::string caption = a.id + ": θ = (" + [&] {
+    std::string r;
+    for (std::size_t j = 0; j < post.names.size(); ++j) r += (j ? ", " : "") + post.names[j];
+    return r;
+  }() + "), τ the error precision [1/unit²]; noise sd = 1/√τ.";
+  for (const auto& t : truth_notes) caption += " " + t + ".";
+  pg.figure(pg.gp.plot(s.str(), 900, 300 * rws, a.id + " posterior histograms"), htmlEscape(caption));
+  pg.plots.push_back({{"name", "posterior_" + a.id}, {"kind", "posterior_histograms"}, {"assembly", a.id}});
+}
+
+/// Section 2: the posterior histograms of every assembly.
+void posteriorSection(ReportPage& pg, const study::LabBands& bands, const fs::path& dir) {
+  pg.body << "<h2 id=\"posterior\">2. Posterior of θ and τ</h2>\n<p>Histograms (40 bins) of every kept Gibbs iteration of "
+             "<code>calibration/&lt;id&gt;/posterior.csv</code>; θ takes only design-point values, so bars may be sparse. "
+             "Dashed lines mark the posterior's central 95 % interval (2.5 % and 97.5 % quantiles, <code>credible95</code>), "
+             "dotted green lines the profile-likelihood 95 % interval (<code>profile95</code>); <code>summary.json</code> prints "
+             "one of them as <code>ci95</code> (the profile interval by default, docs/calibration.md). When the study knows the "
+             "truth, a red line marks it, the axis is widened to show it, and the sentence under the figure says whether the "
+             "ci95 interval holds it.</p>\n";
+  for (const auto& ab : bands.assemblies) posteriorFigure(pg, ab, bands.study, dir);
+}
+
+/// The compared assemblies of the classification: its "assemblies", else the keys of its "wins".
+std::vector<std::string> comparedIds(const json& csum) {
   std::vector<std::string> ids;
   for (const auto& id : csum.value("assemblies", json::array())) ids.push_back(id.get<std::string>());
   if (ids.empty()) {
     const json wins_by_id = csum.value("wins", json::object());  // named: items() must not outlive it
     for (const auto& [id, n] : wins_by_id.items()) ids.push_back(id);
   }
-  body << "<h2 id=\"selection\">3. Field-record selection</h2>\n";
-  {
-    const fs::path rec_path = dir / "classification" / "records.csv";
-    std::ifstream in(rec_path);
-    if (!in) throw InputError(rec_path.string(), "cannot be read (is this a `twin study` folder?)");
-    std::string line;
-    std::getline(in, line);
+  return ids;
+}
+
+/// Section 3, first figure: the boxplot of P(M_m | record) over the field records
+/// (classification/records.csv, columns prob_<id>).
+void selectionBoxplot(ReportPage& pg, const fs::path& dir, const std::vector<std::string>& ids) {
+  const fs::path rec_path = dir / "classification" / "records.csv";
+  std::ifstream in(rec_path);
+  if (!in) throw InputError(rec_path.string(), "cannot be read (is this a `twin study` folder?)");
+  std::string line;
+  std::getline(in, line);
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const auto header = splitCsv(line);
+  std::vector<std::size_t> col;
+  for (const auto& id : ids) {
+    const auto it = std::find(header.begin(), header.end(), "prob_" + id);
+    if (it == header.end()) throw InputError(rec_path.string(), "has no column prob_" + id);
+    col.push_back(static_cast<std::size_t>(it - header.begin()));
+  }
+  std::ostringstream d;
+  std::size_t n_rec = 0, lineno = 1;
+  while (std::getline(in, line)) {
+    ++lineno;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto header = splitCsv(line);
-    std::vector<std::size_t> col;
-    for (const auto& id : ids) {
-      const auto it = std::find(header.begin(), header.end(), "prob_" + id);
-      if (it == header.end()) throw InputError(rec_path.string(), "has no column prob_" + id);
-      col.push_back(static_cast<std::size_t>(it - header.begin()));
+    if (line.empty()) continue;
+    const auto cells = splitCsv(line);
+    for (std::size_t c = 0; c < col.size(); ++c) {
+      char* end = nullptr;
+      const std::string cell = col[c] < cells.size() ? cells[col[c]] : "";
+      const double v = std::strtod(cell.c_str(), &end);
+      if (cell.empty() || *end != '\0' || !std::isfinite(v))
+        throw InputError(rec_path.string() + ":" + std::to_string(lineno), "prob_" + ids[c] + " is not a number: '" + cell + "'");
+      d << (c ? " " : "") << full(v);
     }
-    std::ostringstream d;
-    std::size_t n_rec = 0, lineno = 1;
-    while (std::getline(in, line)) {
-      ++lineno;
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      if (line.empty()) continue;
-      const auto cells = splitCsv(line);
-      for (std::size_t c = 0; c < col.size(); ++c) {
-        char* end = nullptr;
-        const std::string cell = col[c] < cells.size() ? cells[col[c]] : "";
-        const double v = std::strtod(cell.c_str(), &end);
-        if (cell.empty() || *end != '\0' || !std::isfinite(v))
-          throw InputError(rec_path.string() + ":" + std::to_string(lineno), "prob_" + ids[c] + " is not a number: '" + cell + "'");
-        d << (c ? " " : "") << full(v);
-      }
-      d << '\n';
-      ++n_rec;
-    }
-    if (n_rec == 0) throw InputError(rec_path.string(), "has no records");
-    const std::string f = gp.data(d.str());
-    std::ostringstream s, xt;
-    for (std::size_t i = 0; i < ids.size(); ++i) xt << (i ? ", " : "") << gq(ids[i]) << " " << i + 1;
-    s << "set title " << gq("P(M | record) over " + std::to_string(n_rec) + " field records") << " noenhanced\n"
-      << "set xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:" << ids.size() + 0.6 << "]\nset yrange [-0.05:1.05]\n"
-      << "set ylabel 'posterior probability'\nset grid ytics\nset style fill solid 0.4 border -1\n"
-      << "set style boxplot outliers pointtype 7\nset pointsize 0.4\nset boxwidth 0.5\nplot ";
-    for (std::size_t i = 0; i < ids.size(); ++i)
-      s << (i ? ", " : "") << f << " using (" << i + 1 << "):" << i + 1 << " with boxplot lc " << i + 1 << " notitle";
-    s << "\n";
-    figure(gp.plot(s.str(), 900, 400, "selection boxplot"),
-           "Per assembly, the distribution over the field records of its posterior probability P(M<sub>m</sub> | y<sub>r</sub>) "
-           "(<code>classification/records.csv</code>, columns <code>prob_&lt;id&gt;</code>): box = quartiles, line = median, "
-           "whiskers 1.5 IQR, points = outliers.");
-    plots.push_back({{"name", "selection_boxplot"}, {"kind", "boxplot"}});
+    d << '\n';
+    ++n_rec;
   }
-  const json wins = summary.value("wins", csum.value("wins", json::object()));
-  {
-    std::ostringstream d, xt;
-    long total = 0;
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      const long w = wins.value(ids[i], 0L);
-      total += w;
-      d << i + 1 << ' ' << w << '\n';
-      xt << (i ? ", " : "") << gq(ids[i]) << " " << i + 1;
-    }
-    const std::string f = gp.data(d.str());
-    std::ostringstream s;
-    s << "set title " << gq("records won (" + std::to_string(total) + " records)") << " noenhanced\n"
-      << "set xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:" << ids.size() + 0.6 << "]\nset yrange [0:"
-      << std::max<long>(1, total) * 1.12 << "]\nset ylabel 'records won'\nset grid ytics\nset style fill solid 0.6 border -1\n"
-      << "set boxwidth 0.5\nplot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle, " << f
-      << " using 1:2:(sprintf('%d', $2)) with labels offset 0,0.8 notitle\n";
-    figure(gp.plot(s.str(), 900, 350, "win counts"),
-           "Records won by each assembly (largest posterior probability; <code>summary.json</code> <code>wins</code>).");
-    plots.push_back({{"name", "wins"}, {"kind", "wins"}});
-  }
+  if (n_rec == 0) throw InputError(rec_path.string(), "has no records");
+  const std::string f = pg.gp.data(d.str());
+  std::ostringstream s, xt;
+  for (std::size_t i = 0; i < ids.size(); ++i) xt << (i ? ", " : "") << gq(ids[i]) << " " << i + 1;
+  s << "set title " << gq("P(M | record) over " + std::to_string(n_rec) + " field records") << " noenhanced\n"
+    << "set xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:" << ids.size() + 0.6 << "]\nset yrange [-0.05:1.05]\n"
+    << "set ylabel 'posterior probability'\nset grid ytics\nset style fill solid 0.4 border -1\n"
+    << "set style boxplot outliers pointtype 7\nset pointsize 0.4\nset boxwidth 0.5\nplot ";
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    s << (i ? ", " : "") << f << " using (" << i + 1 << "):" << i + 1 << " with boxplot lc " << i + 1 << " notitle";
+  s << "\n";
+  pg.figure(pg.gp.plot(s.str(), 900, 400, "selection boxplot"),
+            "Per assembly, the distribution over the field records of its posterior probability P(M<sub>m</sub> | y<sub>r</sub>) "
+            "(<code>classification/records.csv</code>, columns <code>prob_&lt;id&gt;</code>): box = quartiles, line = median, "
+            "whiskers 1.5 IQR, points = outliers.");
+  pg.plots.push_back({{"name", "selection_boxplot"}, {"kind", "boxplot"}});
+}
 
-  // ---- 4. evidence vs cost
+/// Section 3, second figure: the records won by each assembly.
+void winsPlot(ReportPage& pg, const std::vector<std::string>& ids, const json& wins) {
+  std::ostringstream d, xt;
+  long total = 0;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const long w = wins.value(ids[i], 0L);
+    total += w;
+    d << i + 1 << ' ' << w << '\n';
+    xt << (i ? ", " : "") << gq(ids[i]) << " " << i + 1;
+  }
+  const std::string f = pg.gp.data(d.str());
+  std::ostringstream s;
+  s << "set title " << gq("records won (" + std::to_string(total) + " records)") << " noenhanced\n"
+    << "set xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:" << ids.size() + 0.6 << "]\nset yrange [0:"
+    << std::max<long>(1, total) * 1.12 << "]\nset ylabel 'records won'\nset grid ytics\nset style fill solid 0.6 border -1\n"
+    << "set boxwidth 0.5\nplot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle, " << f
+    << " using 1:2:(sprintf('%d', $2)) with labels offset 0,0.8 notitle\n";
+  pg.figure(pg.gp.plot(s.str(), 900, 350, "win counts"),
+            "Records won by each assembly (largest posterior probability; <code>summary.json</code> <code>wins</code>).");
+  pg.plots.push_back({{"name", "wins"}, {"kind", "wins"}});
+}
+
+/// Section 4, figure: total log likelihood against cost, the recommended assembly marked (a
+/// warning instead when the classification has no such figures).
+void evidencePlot(ReportPage& pg, const std::vector<std::string>& ids, const json& L, const json& cost, const std::string& recommended) {
+  std::ostringstream d, r;
+  int n = 0;
+  for (const auto& id : ids) {
+    if (!L.contains(id) || !cost.contains(id)) continue;
+    ++n;
+    (id == recommended ? r : d) << full(cost[id].get<double>()) << ' ' << full(L[id].get<double>()) << " \"" << id << "\"\n";
+  }
+  if (n == 0) {
+    pg.warnings.push_back("classification/summary.json has no total_log_likelihood/cost_s_per_s: no evidence plot");
+    return;
+  }
+  if (d.str().empty()) d << r.str();
+  if (r.str().empty()) r << d.str();
+  const std::string fd = pg.gp.data(d.str()), fr = pg.gp.data(r.str());
+  std::ostringstream s;
+  s << "set title 'evidence against cost'\nset xlabel 'cost [wall s per simulated s]'\nset ylabel 'total log likelihood L_m'\n"
+    << "set grid\nset offsets graph 0.1, graph 0.1, graph 0.1, graph 0.1\nset key bottom right\n"
+    << "plot " << fd << " using 1:2 with points pt 7 ps 1.2 lc rgb '#4a7fc0' title 'assemblies', " << fr
+    << " using 1:2 with points pt 5 ps 1.6 lc rgb '#2a9a3a' title " << gq("recommended: " + recommended) << " noenhanced, "
+    << fd << " using 1:2:3 with labels offset 1.5,0.8 noenhanced notitle, " << fr
+    << " using 1:2:3 with labels offset 1.5,0.8 noenhanced notitle\n";
+  pg.figure(pg.gp.plot(s.str(), 900, 450, "evidence against cost"),
+            "Joint log likelihood L<sub>m</sub> = Σ<sub>r</sub> ln N(y<sub>r</sub>; μ<sub>m</sub>, Σ<sub>m</sub>) of the field "
+            "records against the median wall time per simulated second of each assembly's synthesis runs "
+            "(<code>classification/summary.json</code>).");
+  pg.plots.push_back({{"name", "evidence_cost"}, {"kind", "evidence_cost"}});
+}
+
+/// Section 4: the recommendation, the evidence-against-cost figure, and the table of evidence,
+/// cost and wins per assembly with the rule.
+void evidenceSection(ReportPage& pg, const study::LabBands& bands, const std::vector<std::string>& ids, const json& csum,
+                     const json& wins, const std::string& recommended, const std::string& sentence) {
   const json L = csum.value("total_log_likelihood", json::object()), cost = csum.value("cost_s_per_s", json::object());
-  const std::string recommended = summary.value("recommended", csum.value("recommended", std::string()));
-  const std::string sentence = summary.value("recommendation_sentence", csum.value("recommendation_sentence", std::string()));
-  body << "<h2 id=\"evidence\">4. Evidence against cost</h2>\n<p class=\"rec\">" << htmlEscape(sentence) << "</p>\n";
-  {
-    std::ostringstream d, r;
-    double best = -INFINITY;
-    for (const auto& id : ids)
-      if (L.contains(id)) best = std::max(best, L[id].get<double>());
-    int n = 0;
-    for (const auto& id : ids) {
-      if (!L.contains(id) || !cost.contains(id)) continue;
-      ++n;
-      (id == recommended ? r : d) << full(cost[id].get<double>()) << ' ' << full(L[id].get<double>()) << " \"" << id << "\"\n";
-    }
-    if (n > 0) {
-      if (d.str().empty()) d << r.str();
-      if (r.str().empty()) r << d.str();
-      const std::string fd = gp.data(d.str()), fr = gp.data(r.str());
-      std::ostringstream s;
-      s << "set title 'evidence against cost'\nset xlabel 'cost [wall s per simulated s]'\nset ylabel 'total log likelihood L_m'\n"
-        << "set grid\nset offsets graph 0.1, graph 0.1, graph 0.1, graph 0.1\nset key bottom right\n"
-        << "plot " << fd << " using 1:2 with points pt 7 ps 1.2 lc rgb '#4a7fc0' title 'assemblies', " << fr
-        << " using 1:2 with points pt 5 ps 1.6 lc rgb '#2a9a3a' title " << gq("recommended: " + recommended) << " noenhanced, "
-        << fd << " using 1:2:3 with labels offset 1.5,0.8 noenhanced notitle, " << fr
-        << " using 1:2:3 with labels offset 1.5,0.8 noenhanced notitle\n";
-      figure(gp.plot(s.str(), 900, 450, "evidence against cost"),
-             "Joint log likelihood L<sub>m</sub> = Σ<sub>r</sub> ln N(y<sub>r</sub>; μ<sub>m</sub>, Σ<sub>m</sub>) of the field "
-             "records against the median wall time per simulated second of each assembly's synthesis runs "
-             "(<code>classification/summary.json</code>).");
-      plots.push_back({{"name", "evidence_cost"}, {"kind", "evidence_cost"}});
-    } else {
-      warnings.push_back("classification/summary.json has no total_log_likelihood/cost_s_per_s: no evidence plot");
-    }
-    const json two = csum.contains("recommendation") ? csum["recommendation"].value("two_ln_b_vs_best", json::object()) : json::object();
-    body << "<table>\n<tr><th>assembly</th><th>label</th><th>total log likelihood</th><th>2 (L<sub>best</sub> − L<sub>m</sub>)</th>"
-            "<th>cost [s/s]</th><th>records won</th><th>recommended</th></tr>\n";
-    for (const auto& id : ids) {
-      std::string label;
-      for (const auto& ab : bands.assemblies)
-        if (ab.assembly.id == id) label = ab.assembly.label();
-      body << "<tr><td>" << htmlEscape(id) << "</td><td>" << htmlEscape(label) << "</td><td class=\"n\">"
-           << (L.contains(id) ? num(L[id].get<double>(), 10) : "–") << "</td><td class=\"n\">"
-           << (two.contains(id) ? num(two[id].get<double>()) : (L.contains(id) ? num(2 * (best - L[id].get<double>())) : "–"))
-           << "</td><td class=\"n\">" << (cost.contains(id) ? num(cost[id].get<double>(), 4) : "–") << "</td><td class=\"n\">"
-           << wins.value(id, 0L) << "</td><td>" << (id == recommended ? "yes" : "") << "</td></tr>\n";
-    }
-    body << "</table>\n";
-    if (csum.contains("recommendation"))
-      body << "<p>Rule: " << htmlEscape(csum["recommendation"].value("rule", "")) << " (threshold "
-           << htmlEscape(text(csum["recommendation"].value("threshold_two_ln_b", json()))) << ").</p>\n";
+  pg.body << "<h2 id=\"evidence\">4. Evidence against cost</h2>\n<p class=\"rec\">" << htmlEscape(sentence) << "</p>\n";
+  double best = -INFINITY;
+  for (const auto& id : ids)
+    if (L.contains(id)) best = std::max(best, L[id].get<double>());
+  evidencePlot(pg, ids, L, cost, recommended);
+  const json two = csum.contains("recommendation") ? csum["recommendation"].value("two_ln_b_vs_best", json::object()) : json::object();
+  std::ostringstream& body = pg.body;
+  body << "<table>\n<tr><th>assembly</th><th>label</th><th>total log likelihood</th><th>2 (L<sub>best</sub> − L<sub>m</sub>)</th>"
+          "<th>cost [s/s]</th><th>records won</th><th>recommended</th></tr>\n";
+  for (const auto& id : ids) {
+    std::string label;
+    for (const auto& ab : bands.assemblies)
+      if (ab.assembly.id == id) label = ab.assembly.label();
+    body << "<tr><td>" << htmlEscape(id) << "</td><td>" << htmlEscape(label) << "</td><td class=\"n\">"
+         << (L.contains(id) ? num(L[id].get<double>(), 10) : "–") << "</td><td class=\"n\">"
+         << (two.contains(id) ? num(two[id].get<double>()) : (L.contains(id) ? num(2 * (best - L[id].get<double>())) : "–"))
+         << "</td><td class=\"n\">" << (cost.contains(id) ? num(cost[id].get<double>(), 4) : "–") << "</td><td class=\"n\">"
+         << wins.value(id, 0L) << "</td><td>" << (id == recommended ? "yes" : "") << "</td></tr>\n";
   }
+  body << "</table>\n";
+  if (csum.contains("recommendation"))
+    body << "<p>Rule: " << htmlEscape(csum["recommendation"].value("rule", "")) << " (threshold "
+         << htmlEscape(text(csum["recommendation"].value("threshold_two_ln_b", json()))) << ").</p>\n";
+}
 
-  // ---- 5. provenance
-  body << "<h2 id=\"provenance\">5. Provenance</h2>\n<table>\n";
-  auto row = [&](const std::string& k, const std::string& v) {
-    body << "<tr><th>" << htmlEscape(k) << "</th><td>" << htmlEscape(v) << "</td></tr>\n";
-  };
-  const json prog = record.value("program", summary.value("program", json::object()));
-  row("program", prog.value("name", std::string("twin")) + " " + prog.value("version", std::string()) + " (" +
-                     prog.value("git", std::string()) + ")");
-  const json now_prog = programInfo();
-  row("report made by", now_prog.value("name", std::string("twin")) + " " + now_prog.value("version", std::string()) + " (" +
-                            now_prog.value("git", std::string()) + "), " + utcNow());
-  row("study command", record.value("command", std::string()));
-  if (summary.value("command", std::string()) != record.value("command", std::string()))
-    row("last study command", summary.value("command", std::string()));
-  row("report command", command);
-  row("study file", bands.study_path);
-  row("study folder", fs::absolute(dir).lexically_normal().string());
-  row("lab data", lab_path + " (" + std::to_string(lab.records.size()) + " records)");
-  row("study created (UTC)", record.value("created_utc", std::string()));
-  row("summary written (UTC)", summary.value("created_utc", std::string()));
-  row("seed", std::to_string(study.seed));
-  {
-    std::string sz;
-    for (const auto& [k, v] : study.sizes) sz += (sz.empty() ? "" : ", ") + k + " = " + std::to_string(v);
-    row("study sizes", sz);
-  }
-  row("field records classified", text(summary.value("records", json())));
-  if (csum.contains("covariance")) row("covariance", csum["covariance"].value("method", "") + ": " + csum["covariance"].value("reason", ""));
-  if (summary.contains("stages")) {
-    std::string st;
-    for (auto& [k, v] : summary["stages"].items()) st += (st.empty() ? "" : ", ") + k + " " + num(v.get<double>(), 4) + " s";
-    row("stage wall time (last invocation)", st);
-  }
+/// Section 5, second table: per assembly, the sizes and seeds of its calibration and synthesis.
+void perAssemblyProvenance(std::ostringstream& body, const study::LabBands& bands, const fs::path& dir) {
   body << "</table>\n<h3>Per assembly (from the calibration and synthesis summaries)</h3>\n<table>\n"
           "<tr><th>assembly</th><th>calibration seed</th><th>optimizer starts</th><th>LHS points</th><th>Gibbs iterations</th>"
           "<th>burn-in</th><th>lab values n</th><th>SSE<sub>min</sub></th><th>synthesis seed</th><th>draws × roads</th>"
@@ -432,46 +440,135 @@ json writeStudyReport(const study::LabBands& bands, const std::string& study_dir
     body << "</tr>\n";
   }
   body << "</table>\n";
+}
 
-  // ---- the page
-  for (const auto& w : gp.warnings()) warnings.push_back(w);
+/// Section 5: program, commands, paths, times, seeds and sizes.
+void provenanceSection(ReportPage& pg, const study::LabBands& bands, const fs::path& dir, const StudyFiles& files,
+                       const std::string& command) {
+  const json& record = files.record;
+  const json& summary = files.summary;
+  const json& csum = files.csum;
+  std::ostringstream& body = pg.body;
+  body << "<h2 id=\"provenance\">5. Provenance</h2>\n<table>\n";
+  auto row = [&](const std::string& k, const std::string& v) {
+    body << "<tr><th>" << htmlEscape(k) << "</th><td>" << htmlEscape(v) << "</td></tr>\n";
+  };
+  const json prog = record.value("program", summary.value("program", json::object()));
+  row("program", prog.value("name", std::string("twin")) + " " + prog.value("version", std::string()) + " (" +
+                     prog.value("git", std::string()) + ")");
+  const json now_prog = programInfo();
+  row("report made by", now_prog.value("name", std::string("twin")) + " " + now_prog.value("version", std::string()) + " (" +
+                            now_prog.value("git", std::string()) + "), " + utcNow());
+  row("study command", record.value("command", std::string()));
+  if (summary.value("command", std::string()) != record.value("command", std::string()))
+    row("last study command", summary.value("command", std::string()));
+  row("report command", command);
+  row("study file", bands.study_path);
+  row("study folder", fs::absolute(dir).lexically_normal().string());
+  row("lab data", bands.lab_path + " (" + std::to_string(bands.lab.records.size()) + " records)");
+  row("study created (UTC)", record.value("created_utc", std::string()));
+  row("summary written (UTC)", summary.value("created_utc", std::string()));
+  row("seed", std::to_string(bands.study.seed));
+  {
+    std::string sz;
+    for (const auto& [k, v] : bands.study.sizes.asMap()) sz += (sz.empty() ? "" : ", ") + k + " = " + std::to_string(v);
+    row("study sizes", sz);
+  }
+  row("field records classified", text(summary.value("records", json())));
+  if (csum.contains("covariance")) row("covariance", csum["covariance"].value("method", "") + ": " + csum["covariance"].value("reason", ""));
+  if (summary.contains("stages")) {
+    std::string st;
+    for (auto& [k, v] : summary["stages"].items()) st += (st.empty() ? "" : ", ") + k + " " + num(v.get<double>(), 4) + " s";
+    row("stage wall time (last invocation)", st);
+  }
+  perAssemblyProvenance(body, bands, dir);
+}
+
+/// The whole page: head and style, title, study line, recommendation, warnings, contents, the
+/// sections 1–5 and the appendix.
+std::string pageHtml(const study::LabBands& bands, const fs::path& dir, const std::string& sentence, const ReportPage& pg,
+                     const ReportOptions& options) {
   const std::string title = "twin study report: " + fs::absolute(dir).lexically_normal().string();
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << htmlEscape(title)
        << "</title>\n<style>\n" << reportCss() << "\n</style>\n</head>\n<body>\n<h1>" << htmlEscape(title) << "</h1>\n"
-       << "<p>Study <code>" << htmlEscape(study.name) << "</code>: " << htmlEscape(study.description) << ". Assemblies: ";
+       << "<p>Study <code>" << htmlEscape(bands.study.name) << "</code>: " << htmlEscape(bands.study.description) << ". Assemblies: ";
   for (std::size_t m = 0; m < bands.assemblies.size(); ++m)
     page << (m ? ", " : "") << htmlEscape(bands.assemblies[m].assembly.id + " (" + bands.assemblies[m].assembly.label() + ")");
   page << ".</p>\n<p class=\"rec\">" << htmlEscape(sentence) << "</p>\n";
-  if (!warnings.empty()) {
+  if (!pg.warnings.empty()) {
     page << "<div class=\"warn\"><p>Warnings:</p>\n<ul>\n";
-    for (const auto& w : warnings) page << "<li>" << htmlEscape(w) << "</li>\n";
+    for (const auto& w : pg.warnings) page << "<li>" << htmlEscape(w) << "</li>\n";
     page << "</ul></div>\n";
   }
   page << "<nav><ol><li><a href=\"#lab\">Lab data and predictive bands</a></li><li><a href=\"#posterior\">Posterior "
           "histograms</a></li><li><a href=\"#selection\">Field-record selection</a></li><li><a href=\"#evidence\">Evidence "
           "against cost</a></li><li><a href=\"#provenance\">Provenance</a></li>";
-  int appendix_svgs = 0;
-  for (const auto& a : options.appendix) {
-    page << "<li><a href=\"#" << htmlEscape(a.id) << "\">" << htmlEscape(a.title) << "</a></li>";
-    appendix_svgs += a.svg_count;
-  }
-  page << "</ol></nav>\n" << body.str();
+  for (const auto& a : options.appendix) page << "<li><a href=\"#" << htmlEscape(a.id) << "\">" << htmlEscape(a.title) << "</a></li>";
+  page << "</ol></nav>\n" << pg.body.str();
   for (const auto& a : options.appendix) page << a.html;
   page << "</body>\n</html>\n";
-  writeFileAtomic(out_html, page.str());
+  return page.str();
+}
 
-  json assemblies_json = json::array();
-  for (const auto& ab : bands.assemblies) assemblies_json.push_back(ab.assembly.id);
+}  // namespace
+
+void ReportOptions::validate() const {
+  const OptionCheck check("report");
+  for (std::size_t k = 0; k < appendix.size(); ++k) {
+    const std::string section = "section " + std::to_string(k + 1);
+    check.require(!appendix[k].id.empty(), "appendix", section + ": id (the anchor of its heading) must not be empty");
+    check.require(appendix[k].svg_count >= 0, "appendix",
+                  section + ": svg_count must be >= 0, got " + std::to_string(appendix[k].svg_count));
+  }
+}
+
+// The stages: the study folder's files → sections 1 (predictive bands), 2 (posteriors),
+// 3 (selection), 4 (evidence against cost), 5 (provenance) → the page with the appendix,
+// written atomically → what was drawn.
+json writeStudyReport(const study::LabBands& bands, const std::string& study_dir, const std::string& out_html,
+                      const std::string& command, const ReportOptions& options) {
+  const auto t_start = std::chrono::steady_clock::now();
+  options.validate();
+  const std::string gnuplot_exe = requireGnuplot("`twin report`");
+  const fs::path dir(study_dir);
+  if (!fs::is_directory(dir)) throw InputError(study_dir, "is not a folder");
+  const StudyFiles files = readStudyFiles(dir);
+  const json& summary = files.summary;
+  const json& csum = files.csum;
+  const std::string recommended = summary.value("recommended", csum.value("recommended", std::string()));
+  const std::string sentence = summary.value("recommendation_sentence", csum.value("recommendation_sentence", std::string()));
+  const json wins = summary.value("wins", csum.value("wins", json::object()));
+
+  ReportPage pg(gnuplot_exe, bands.warnings);
+  predictiveSection(pg, bands);
+  posteriorSection(pg, bands, dir);
+  const std::vector<std::string> ids = comparedIds(csum);
+  pg.body << "<h2 id=\"selection\">3. Field-record selection</h2>\n";
+  selectionBoxplot(pg, dir, ids);
+  winsPlot(pg, ids, wins);
+  evidenceSection(pg, bands, ids, csum, wins, recommended, sentence);
+  provenanceSection(pg, bands, dir, files, command);
+  for (const auto& w : pg.gp.warnings()) pg.warnings.push_back(w);
+  writeFileAtomic(out_html, pageHtml(bands, dir, sentence, pg, options));
+
+  json failures = json::object(), noise_sd = json::object(), assemblies_json = json::array();
+  for (const auto& ab : bands.assemblies) {
+    failures[ab.assembly.id] = ab.failures;
+    if (!ab.channels.empty()) noise_sd[ab.assembly.id] = ab.noise_sd;
+    assemblies_json.push_back(ab.assembly.id);
+  }
+  int appendix_svgs = 0;
+  for (const auto& a : options.appendix) appendix_svgs += a.svg_count;
   return {{"html", out_html},
-          {"plots", plots},
-          {"svg_count", gp.count() + appendix_svgs},
+          {"plots", pg.plots},
+          {"svg_count", pg.gp.count() + appendix_svgs},
           {"assemblies", assemblies_json},
-          {"draws", draws},
+          {"draws", bands.draws},
           {"prediction_failures", failures},
           {"noise_sd", noise_sd},
-          {"warnings", warnings},
+          {"warnings", pg.warnings},
           {"wall_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count()}};
 }
 

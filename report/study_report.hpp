@@ -35,6 +35,9 @@ struct ReportSection {
 
 struct ReportOptions {
   std::vector<ReportSection> appendix;  ///< extra sections after the provenance (none: the page as before)
+  /// InputError whose where() is "report.<field>" (common/validate.hpp): every appendix section
+  /// has an id and svg_count >= 0.
+  void validate() const;
 };
 
 /// Draws the study folder `study_dir` (written by `twin study`) with its predictive `bands`

@@ -11,6 +11,7 @@
 #include "calibration/summary.hpp"
 #include "common/errors.hpp"
 #include "common/json.hpp"
+#include "common/validate.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 
@@ -73,8 +74,9 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
 }  // namespace
 
 void LabBandOptions::validate() const {
-  if (draws < 2) throw InputError("draws", "must be >= 2, got " + std::to_string(draws));
-  if (threads < 0) throw InputError("threads", "must be >= 0 (0: all cores), got " + std::to_string(threads));
+  const OptionCheck check("lab_bands");
+  check.atLeast("draws", draws, 2);
+  check.atLeast("threads", threads, 0);  // 0: all cores
 }
 
 double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p) {

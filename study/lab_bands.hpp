@@ -19,7 +19,7 @@ namespace dtwin::study {
 struct LabBandOptions {
   int draws = 50;   ///< posterior rows per assembly (>= 2)
   int threads = 0;  ///< simulations in parallel (0: all cores; never changes the numbers)
-  /// InputError naming the field ("draws", "threads") when out of range.
+  /// InputError whose where() is "lab_bands.<field>" (common/validate.hpp) when out of range.
   void validate() const;
 };
 

@@ -28,6 +28,8 @@ struct StudyRunOptions {
   std::string lab_file;         ///< use these lab data instead of generating them
   std::string field_file;       ///< use these field records instead of generating them
   std::string command;          ///< recorded in every output
+  /// InputError whose where() is "study.<field>" (common/validate.hpp): threads >= 0.
+  void validate() const;
 };
 
 /// Progress: stage ("lab", "field", "calibrate M1 optimum", ...), done, total.

@@ -2,26 +2,48 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
+#include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/names.hpp"
+// Effects in their own files, subsystems/effects/<name>.hpp (docs/extending.md): one #include
+// each here, and one line in effectRegistry() below.
 
 namespace dtwin {
-namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-/// One effect parameter: off value, valid range [lo, hi] and prior range [prior_lo, prior_hi].
-ParameterSpec p(std::string name, std::string unit, std::string desc, double off, double lo,
-                double hi, double prior_lo, double prior_hi, bool lo_incl = true) {
+
+ParameterSpec effectParameter(std::string name, std::string unit, std::string description, double off, double lo, double hi,
+                              double prior_lo, double prior_hi, bool lo_inclusive) {
   ParameterSpec s;
   s.name = std::move(name);
   s.unit = std::move(unit);
-  s.description = std::move(desc);
+  s.description = std::move(description);
   s.default_value = off;
   s.min_value = lo;
   s.max_value = hi;
-  s.min_inclusive = lo_incl;
+  s.min_inclusive = lo_inclusive;
   s.prior_lower = prior_lo;
   s.prior_upper = prior_hi;
   return s;
+}
+
+const char* kindName(EffectKind kind) {
+  switch (kind) {
+    case EffectKind::Strut: return "Strut";
+    case EffectKind::TireInput: return "TireInput";
+    case EffectKind::TireForce: return "TireForce";
+    case EffectKind::AxleCoupling: return "AxleCoupling";
+    case EffectKind::StrutFilter: return "StrutFilter";
+  }
+  return "?";
+}
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// effectParameter, short.
+ParameterSpec p(std::string name, std::string unit, std::string desc, double off, double lo, double hi, double prior_lo,
+                double prior_hi, bool lo_incl = true) {
+  return effectParameter(std::move(name), std::move(unit), std::move(desc), off, lo, hi, prior_lo, prior_hi, lo_incl);
 }
 }  // namespace
 
@@ -100,25 +122,49 @@ double TopMountComplianceEffect::calcFilteredStrutForce(const StrutState& s, dou
   return tau > 0.0 ? z - s.base_damping * s.rate_mps : 0.0;
 }
 
+// ------------------------------------------------------------------ the registry
+namespace {
+
+/// The registry entry of effect class E: its name from E itself, and a factory.
+template <class E>
+EffectEntry entry() {
+  return {E().name(), [] { return std::unique_ptr<Effect>(std::make_unique<E>()); }};
+}
+
+}  // namespace
+
+const std::vector<EffectEntry>& effectRegistry() {
+  // The one list of effects. A new effect: its class (subsystems/effects/<name>.hpp, #included
+  // above) and one line here (docs/extending.md). The order is the order of `twin list`.
+  static const std::vector<EffectEntry> registry = [] {
+    std::vector<EffectEntry> r = {
+        entry<BumpStopEffect>(),
+        entry<DamperAsymmetryEffect>(),
+        entry<StrutFrictionEffect>(),
+        entry<TireEnvelopingEffect>(),
+        entry<ProgressiveSpringEffect>(),
+        entry<SpeedDependentTireStiffnessEffect>(),
+        entry<AntiRollBarEffect>(),
+        entry<TopMountComplianceEffect>(),
+    };
+    std::set<std::string> seen;
+    for (const auto& e : r)
+      if (!seen.insert(e.name).second) throw std::logic_error("effectRegistry: effect '" + e.name + "' registered twice");
+    return r;
+  }();
+  return registry;
+}
+
 std::vector<std::string> effectNames() {
-  return {"bump_stop",          "damper_asymmetry",
-          "strut_friction",     "tire_enveloping",
-          "progressive_spring", "speed_dependent_tire_stiffness",
-          "anti_roll_bar",      "top_mount_compliance"};
+  std::vector<std::string> names;
+  for (const auto& e : effectRegistry()) names.push_back(e.name);
+  return names;
 }
 
 std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& where) {
-  if (name == "bump_stop") return std::make_unique<BumpStopEffect>();
-  if (name == "damper_asymmetry") return std::make_unique<DamperAsymmetryEffect>();
-  if (name == "strut_friction") return std::make_unique<StrutFrictionEffect>();
-  if (name == "tire_enveloping") return std::make_unique<TireEnvelopingEffect>();
-  if (name == "progressive_spring") return std::make_unique<ProgressiveSpringEffect>();
-  if (name == "speed_dependent_tire_stiffness") return std::make_unique<SpeedDependentTireStiffnessEffect>();
-  if (name == "anti_roll_bar") return std::make_unique<AntiRollBarEffect>();
-  if (name == "top_mount_compliance") return std::make_unique<TopMountComplianceEffect>();
-  std::string known;
-  for (auto& n : effectNames()) known += (known.empty() ? "" : ", ") + n;
-  throw InputError(where, "unknown effect '" + name + "' (known: " + known + ")");
+  for (const auto& e : effectRegistry())
+    if (e.name == name) return e.make();
+  throw InputError(where, unknownNameRule("effect", name, effectNames()));
 }
 
 }  // namespace dtwin

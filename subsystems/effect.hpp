@@ -2,7 +2,9 @@
 // Optional physical effects: force elements that can be added to any assembly. Each has named
 // parameters with units, an "off" value (its ParameterSpec::default_value) at which it exerts no
 // force, and a signature: the trace it leaves in a residual. This catalogue is what the
-// diagnosis ranks.
+// diagnosis ranks. Every effect is one entry of effectRegistry() (effect.cpp); how to add one:
+// docs/extending.md.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +24,21 @@ enum class EffectKind {
   StrutFilter,   ///< a series element with one auxiliary state z [N] per strut (see calcFilterRate)
 };
 
+/// The name of a kind as docs/model.md writes it ("Strut", "TireInput", ...).
+const char* kindName(EffectKind kind);
+
+/// Where the diagnosis expects an effect's trace in the force-state maps of a residual
+/// (docs/diagnosis.md, "The catalogue's signatures").
+struct ResidualSignature {
+  /// Prefix of the state the residual is binned against: "susp_defl_", "susp_rate_",
+  /// "tire_defl_", "roll_defl_" (left − right deflection of an axle) or "speed_mps". Empty: no
+  /// specific map (the diagnosis then cites none).
+  std::string state_map;
+  /// The signature fit expected on that map: on deflection-like states "knee", "cubic" or
+  /// "linear"; on rate states "step", "rebound_slope", "compression_slope" or "linear".
+  std::string feature;
+};
+
 class Effect {
  public:
   virtual ~Effect() = default;
@@ -32,6 +49,14 @@ class Effect {
   virtual EffectKind kind() const = 0;
   /// Each parameter's default_value is its off value; prior_lower/prior_upper its prior range.
   virtual const std::vector<ParameterSpec>& parameters() const = 0;
+  /// Where the diagnosis looks for this effect's trace (default: no specific force-state map).
+  virtual ResidualSignature residualSignature() const { return {}; }
+  /// The parameter (a name in parameters(), unit m) that is an engagement threshold on suspension
+  /// compression: the effect exerts no force until the deflection exceeds it (the bump stop's
+  /// gap_m). When no plausible value of the effect changes these data, the diagnosis then says why
+  /// ("the suspension never compresses beyond the smallest plausible gap (0.008 m < 0.01 m): a bump
+  /// stop cannot act here", the parameter's name without "_m" and the effect's in words). Empty: none.
+  virtual std::string engagementThreshold() const { return ""; }
   /// Strut effects: extra strut force [N] (same sign convention as StrutState).
   virtual double calcStrutForce(const StrutState& s, ParamValues p) const { return 0.0; }
   /// TireInput effects: the effective road under the contact point.
@@ -67,6 +92,8 @@ class BumpStopEffect final : public Effect {
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  ResidualSignature residualSignature() const override { return {"susp_defl_", "knee"}; }
+  std::string engagementThreshold() const override { return "gap_m"; }
   double calcStrutForce(const StrutState& s, ParamValues p) const override;
 
  private:
@@ -86,6 +113,7 @@ class DamperAsymmetryEffect final : public Effect {
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  ResidualSignature residualSignature() const override { return {"susp_rate_", "rebound_slope"}; }
   double calcStrutForce(const StrutState& s, ParamValues p) const override;
 
  private:
@@ -104,6 +132,7 @@ class StrutFrictionEffect final : public Effect {
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  ResidualSignature residualSignature() const override { return {"susp_rate_", "step"}; }
   double calcStrutForce(const StrutState& s, ParamValues p) const override;
 
  private:
@@ -146,6 +175,7 @@ class ProgressiveSpringEffect final : public Effect {
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  ResidualSignature residualSignature() const override { return {"susp_defl_", "cubic"}; }
   double calcStrutForce(const StrutState& s, ParamValues p) const override;
 
  private:
@@ -168,6 +198,7 @@ class SpeedDependentTireStiffnessEffect final : public Effect {
   }
   EffectKind kind() const override { return EffectKind::TireForce; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  ResidualSignature residualSignature() const override { return {"tire_defl_", "linear"}; }
   double tireForceFactor(const TireState& s, ParamValues p) const override;
 
  private:
@@ -190,6 +221,7 @@ class AntiRollBarEffect final : public Effect {
   }
   EffectKind kind() const override { return EffectKind::AxleCoupling; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  ResidualSignature residualSignature() const override { return {"roll_defl_", "linear"}; }
   double calcAxleCouplingForce(double q_left, double q_right, bool front, ParamValues p) const override;
 
  private:
@@ -225,8 +257,26 @@ class TopMountComplianceEffect final : public Effect {
   std::vector<ParameterSpec> specs_;
 };
 
-/// Factory keyed by name. Throws InputError listing the known names.
+/// One effect parameter for an effect's parameters(): off value (default_value), valid range
+/// [lo, hi] (lo excluded when !lo_inclusive) and prior range [prior_lo, prior_hi] (inside the valid
+/// range, containing the off value: what the diagnosis searches).
+ParameterSpec effectParameter(std::string name, std::string unit, std::string description, double off, double lo, double hi,
+                              double prior_lo, double prior_hi, bool lo_inclusive = true);
+
+/// One entry of the effect registry: the effect's name (its own name()) and its factory.
+struct EffectEntry {
+  std::string name;
+  std::function<std::unique_ptr<Effect>()> make;
+};
+
+/// Every effect, in the order `twin list`, the study file and the diagnosis know them: the one
+/// table in effect.cpp (names unique). A new effect is one line there (docs/extending.md).
+const std::vector<EffectEntry>& effectRegistry();
+
+/// The registered effect `name`. Throws InputError(where, "unknown effect 'x' (known: ...; did you
+/// mean 'y'?)") (common/names.hpp unknownNameRule).
 std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& where);
+/// The registered names, in registry order.
 std::vector<std::string> effectNames();
 
 }  // namespace dtwin

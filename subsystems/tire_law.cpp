@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/names.hpp"
 
 namespace dtwin {
 namespace {
@@ -117,13 +118,30 @@ double Pac2002Tire::operatingDeflection(ParamValues p) const {
   return x * R0;
 }
 
-// ---------------------------------------------------------------- factory
-std::vector<std::string> tireLawNames() { return {"fiala", "pac2002"}; }
+// ---------------------------------------------------------------- registry
+// The one list of tire laws: each entry makes a law, which names itself. Adding a law is its
+// class and one line here (docs/extending.md).
+namespace {
+using TireFactory = std::unique_ptr<TireLaw> (*)();
+const std::vector<TireFactory>& tireRegistry() {
+  static const std::vector<TireFactory> r = {
+      [] { return std::unique_ptr<TireLaw>(std::make_unique<FialaTire>()); },
+      [] { return std::unique_ptr<TireLaw>(std::make_unique<Pac2002Tire>()); },
+  };
+  return r;
+}
+}  // namespace
+
+std::vector<std::string> tireLawNames() {
+  std::vector<std::string> out;
+  for (const auto& make : tireRegistry()) out.push_back(make()->name());
+  return out;
+}
 
 std::unique_ptr<TireLaw> makeTireLaw(const std::string& name, const std::string& where) {
-  if (name == "fiala") return std::make_unique<FialaTire>();
-  if (name == "pac2002") return std::make_unique<Pac2002Tire>();
-  throw InputError(where, "unknown tire option '" + name + "' (known: fiala, pac2002)");
+  for (const auto& make : tireRegistry())
+    if (auto law = make(); law->name() == name) return law;
+  throw InputError(where, unknownNameRule("tire option", name, tireLawNames()));
 }
 
 }  // namespace dtwin

@@ -9,6 +9,7 @@
 
 #include "subsystems/effect.hpp"
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
@@ -55,17 +56,18 @@ std::size_t gridIndex(double t, double rate, double duration, const std::string&
   return static_cast<std::size_t>(std::llround(k));
 }
 
-/// Validates the hidden effects' names (errors name --hidden-effect) and builds the model with them.
+/// Validates the hidden effects' names (errors name the options field `where`, e.g.
+/// "lab.hidden_effects") and builds the model with them.
 std::shared_ptr<const Model> modelWithHidden(const Study& study, const AssemblySpec& assembly,
-                                             const std::vector<EffectSetting>& hidden) {
+                                             const std::vector<EffectSetting>& hidden, const std::string& where) {
   for (std::size_t i = 0; i < hidden.size(); ++i) {
     const auto& e = hidden[i];
-    makeEffect(e.name, "--hidden-effect");
+    makeEffect(e.name, where);
     for (std::size_t j = 0; j < i; ++j)
-      if (hidden[j].name == e.name) throw InputError("--hidden-effect", "effect " + e.name + " given twice");
+      if (hidden[j].name == e.name) throw InputError(where, "effect " + e.name + " given twice");
     for (const auto& v : e.values)
       if (v.name.rfind(e.name + ".", 0) != 0)
-        throw InputError("--hidden-effect", "parameter '" + v.name + "' does not belong to effect " + e.name);
+        throw InputError(where, "parameter '" + v.name + "' does not belong to effect " + e.name);
   }
   return study.makeModel(assembly, hidden);
 }
@@ -122,11 +124,7 @@ std::uint64_t fieldRoadSeed(std::uint64_t seed, std::size_t run) {
 }
 
 double obstacleTime(const ScenarioSpec& s) {
-  switch (s.road.type) {
-    case RoadSpec::Type::Bump: return s.road.bump_time_s;
-    case RoadSpec::Type::Iso: return std::max(0.0, s.road.smooth_until_s);
-    default: return 0.0;
-  }
+  return s.road->featureTime_s();
 }
 
 std::vector<double> automaticLabTimes(const Trace& tr, const std::string& channel, double obstacle_time_s, std::size_t count,
@@ -169,7 +167,11 @@ std::vector<double> automaticLabTimes(const Trace& tr, const std::string& channe
 
 std::uint64_t labNoiseStream(const std::string& scenario) { return kLabNoiseStream ^ fnv1a64(scenario); }
 
+// About 150 lines, kept whole on purpose: the checks of the options (each naming its field), the
+// one run, the noise draws in record order and the sidecar form one straight sequence whose
+// order fixes the random streams; split into pieces it would pass a dozen locals between them.
 LabResult generateLab(const Study& study, const AssemblySpec& assembly, const LabOptions& opt, const ProgressFn& progress) {
+  const OptionCheck check("lab");
   const ScenarioSpec& sc = study.scenario(opt.scenario);
   const long reps = opt.repetitions > 0 ? opt.repetitions : study.sizes.at("lab_repetitions");
   const std::uint64_t seed = opt.seed.value_or(study.seed);
@@ -178,14 +180,14 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   const std::vector<std::string> names = opt.channels.empty() ? study.lab.channelsOrDefault() : opt.channels;
   std::vector<Channel> channels;
   for (const auto& n : names) {
-    channels.push_back(channelInfo(n, opt.channels.empty() ? study.path + ": lab.channels" : "--channels"));
+    channels.push_back(channelInfo(n, opt.channels.empty() ? study.path + ": lab.channels" : check.where("channels")));
     for (std::size_t i = 0; i + 1 < channels.size(); ++i)
-      if (channels[i].name == n) throw InputError("--channels", "channel '" + n + "' listed twice");
+      if (channels[i].name == n) throw InputError(check.where("channels"), "channel '" + n + "' listed twice");
   }
   const double rate = study.simulation.output_rate_hz;
   const bool all_times = opt.times_mode == LabTimesMode::All;
-  if (!all_times && opt.window) throw InputError("--window", "needs --times all");
-  if (!all_times && opt.rate_hz) throw InputError("--rate", "needs --times all");
+  check.require(all_times || !opt.window, "window", "needs every sample kept (times mode all)");
+  check.require(all_times || !opt.rate_hz, "rate_hz", "needs every sample kept (times mode all)");
   double w0 = 0.0, w1 = sc.duration_s, keep_rate = rate;
   std::size_t step = 1;
   if (all_times) {
@@ -193,16 +195,16 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
       w0 = opt.window->first;
       w1 = opt.window->second;
       if (!(std::isfinite(w0) && std::isfinite(w1) && w0 < w1))
-        throw InputError("--window", "expects T0,T1 with T0 < T1, got " + formatExact(w0) + "," + formatExact(w1));
+        throw InputError(check.where("window"), "expects T0,T1 with T0 < T1, got " + formatExact(w0) + "," + formatExact(w1));
       if (w0 < 0 || w1 > sc.duration_s + 1e-9)
-        throw InputError("--window", formatExact(w0) + " .. " + formatExact(w1) + " s lies outside the scenario '" + sc.name +
+        throw InputError(check.where("window"), formatExact(w0) + " .. " + formatExact(w1) + " s lies outside the scenario '" + sc.name +
                                          "' (0 .. " + formatExact(sc.duration_s) + " s)");
     }
     if (opt.rate_hz) {
       keep_rate = *opt.rate_hz;
       const double q = rate / keep_rate;
       if (!(std::isfinite(keep_rate) && keep_rate > 0) || !(q >= 1 - 1e-9) || std::abs(q - std::round(q)) > 1e-9 * q)
-        throw InputError("--rate", "must divide the output rate " + formatExact(rate) + " Hz into an integer step (e.g. " +
+        throw InputError(check.where("rate_hz"), "must divide the output rate " + formatExact(rate) + " Hz into an integer step (e.g. " +
                                        formatExact(rate / 2) + ", " + formatExact(rate / 5) + ", " + formatExact(rate / 10) +
                                        " Hz), got " + formatExact(keep_rate) + " Hz");
       step = static_cast<std::size_t>(std::llround(q));
@@ -210,10 +212,10 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   }
   const std::vector<std::size_t> all_rows = all_times ? windowRows(w0, w1, rate, step) : std::vector<std::size_t>{};
   if (all_times && all_rows.empty())
-    throw InputError("--window", "no output sample at " + formatExact(keep_rate) + " Hz in " + formatExact(w0) + " .. " +
+    throw InputError(check.where("window"), "no output sample at " + formatExact(keep_rate) + " Hz in " + formatExact(w0) + " .. " +
                                      formatExact(w1) + " s");
 
-  auto model = modelWithHidden(study, assembly, opt.hidden_effects);
+  auto model = modelWithHidden(study, assembly, opt.hidden_effects, check.where("hidden_effects"));
   auto road = makeRoad(sc, model->vehicle(), seed);
   Simulator sim(model, study.simulation);
   const auto values = model->defaultRunValues();
@@ -331,7 +333,7 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
   const std::size_t kb = gridIndex(opt.t_begin_s, rate, sc.duration_s, "field window begin");
   const std::size_t ke = gridIndex(opt.t_end_s, rate, sc.duration_s, "field window end");
 
-  auto model = modelWithHidden(study, assembly, opt.hidden_effects);
+  auto model = modelWithHidden(study, assembly, opt.hidden_effects, OptionCheck("field").where("hidden_effects"));
   const auto values = model->defaultRunValues();
   const std::size_t N = static_cast<std::size_t>(n_runs), T = ke - kb + 1;
   FieldData d;

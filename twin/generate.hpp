@@ -97,8 +97,8 @@ struct LabResult {
 /// (other channels are written noise-free, and the provenance says so), repetitions 1..R, at the
 /// [lab] times or the automatic ones, or (times_mode All) every sample of a window at a rate.
 /// Throws InputError for bad settings (errors about window, rate, channels and hidden effects
-/// name the CLI flags --window, --rate, --channels, --hidden-effect), RunFailedError if the
-/// simulation fails.
+/// name the fields "lab.window", "lab.rate_hz", "lab.channels", "lab.hidden_effects"),
+/// RunFailedError if the simulation fails.
 LabResult generateLab(const Study& study, const AssemblySpec& assembly, const LabOptions& options = {},
                       const ProgressFn& progress = {});
 

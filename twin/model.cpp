@@ -1,5 +1,7 @@
 #include "twin/model.hpp"
 
+#include <algorithm>
+
 #include <limits>
 #include <toml++/toml.h>
 
@@ -43,9 +45,22 @@ std::string AssemblySpec::label() const {
   return out;
 }
 
+namespace {
+/// The suspension options: each is a mobilizer layout of the simulator (twin/simulator.cpp), so a
+/// new one needs simulator code, not only an entry here.
+const std::vector<std::pair<std::string, SuspensionTopology>>& suspensionOptions() {
+  static const std::vector<std::pair<std::string, SuspensionTopology>> r = {{"macpherson", SuspensionTopology::MacPherson},
+                                                                             {"solid_axle", SuspensionTopology::SolidAxle}};
+  return r;
+}
+}  // namespace
+
 const std::map<std::string, std::vector<std::string>>& knownSubsystems() {
-  static const std::map<std::string, std::vector<std::string>> k = {
-      {"tire", {"fiala", "pac2002"}}, {"suspension", {"macpherson", "solid_axle"}}};
+  static const std::map<std::string, std::vector<std::string>> k = [] {
+    std::vector<std::string> susp;
+    for (const auto& [name, topology] : suspensionOptions()) susp.push_back(name);
+    return std::map<std::string, std::vector<std::string>>{{"tire", tireLawNames()}, {"suspension", susp}};
+  }();
   return k;
 }
 
@@ -143,9 +158,10 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   if (tire.empty()) throw InputError(where, "assembly " + assembly_.id + " has no tire option");
   if (susp.empty()) throw InputError(where, "assembly " + assembly_.id + " has no suspension option");
   tire_ = makeTireLaw(tire, where);
-  if (susp == "macpherson") topology_ = SuspensionTopology::MacPherson;
-  else if (susp == "solid_axle") topology_ = SuspensionTopology::SolidAxle;
-  else throw InputError(where, "unknown suspension option '" + susp + "' (known: macpherson, solid_axle)");
+  const auto& topologies = suspensionOptions();
+  const auto found = std::find_if(topologies.begin(), topologies.end(), [&](const auto& o) { return o.first == susp; });
+  if (found == topologies.end()) throw InputError(where, unknownNameRule("suspension option", susp, knownSubsystems().at("suspension")));
+  topology_ = found->second;
 
   auto need = [&](const std::string& n) {
     const auto& e = table_.at(n);

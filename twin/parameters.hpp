@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/names.hpp"
+
 #include "subsystems/parameter.hpp"
 
 namespace dtwin {
@@ -39,7 +41,5 @@ class ParameterTable {
   std::map<std::string, ParameterEntry> entries_;
 };
 
-/// Closest known name to `name` (for "did you mean" hints), or "" if none is close.
-std::string closestName(const std::string& name, const std::vector<std::string>& known);
 
 }  // namespace dtwin

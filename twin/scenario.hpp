@@ -1,5 +1,5 @@
 #pragma once
-// Scenarios: a speed profile, a road, a duration. The vehicle stays in place and the road moves
+// Scenarios: a speed profile, a road (one of the road types of twin/road_setting.hpp), a duration. The vehicle stays in place and the road moves
 // under it; road coordinate x = s(t) + (x_hub - a), so the front axle starts at x = 0.
 #include <cstdint>
 #include <memory>
@@ -9,6 +9,7 @@
 
 #include "subsystems/road.hpp"
 #include "twin/model.hpp"
+#include "twin/road_setting.hpp"
 
 namespace dtwin {
 
@@ -22,24 +23,12 @@ struct SpeedProfile {
   double timeAtDistance(double x) const;  ///< inverse of distance (x >= 0)
 };
 
-struct RoadSpec {
-  enum class Type { Flat, Bump, Iso, Csv } type = Type::Flat;
-  // bump
-  double bump_height_m = 0.2, bump_length_m = 0.1, bump_time_s = 6.0;
-  // iso
-  char iso_class = 'D';
-  double smooth_until_s = 6.0;  ///< front axle reaches the rough section at this time
-  double n_min = 0.011, n_max = 2.83, dx_m = 0.01, taper_m = 1.0;
-  IsoRoadSpec::Coherence coherence = IsoRoadSpec::Coherence::Independent;
-  // csv
-  std::string csv_path;
-};
-
 struct ScenarioSpec {
   std::string name;
   double duration_s = 15.0;
   SpeedProfile speed;
-  RoadSpec road;
+  /// The road type and its fields (twin/road_setting.hpp); shared, never modified after reading.
+  std::shared_ptr<const RoadSetting> road = flatRoadSetting();
   nlohmann::json toJson() const;
 };
 

@@ -8,6 +8,7 @@
 #include <Simbody.h>
 
 #include "common/errors.hpp"
+#include "common/validate.hpp"
 #include "twin/rosenbrock.hpp"
 
 namespace dtwin {
@@ -18,17 +19,21 @@ std::vector<std::string> SimulationOptions::integratorNames() {
   return {"rosenbrock", "rk-merson", "rk3", "rk-feldberg", "cpodes", "semi-explicit-euler2"};
 }
 
-std::string SimulationOptions::check() const {
-  auto names = integratorNames();
-  if (std::find(names.begin(), names.end(), integrator) == names.end())
-    return "integrator must be one of rosenbrock, rk-merson, rk3, rk-feldberg, cpodes, semi-explicit-euler2, got '" +
-           integrator + "'";
-  if (!(accuracy > 0 && accuracy < 1)) return "accuracy must be in (0, 1), got " + std::to_string(accuracy);
-  if (!(max_step_s > 0)) return "max_step_s must be > 0, got " + std::to_string(max_step_s);
-  if (!(obstacle_max_step_s > 0)) return "obstacle_max_step_s must be > 0, got " + std::to_string(obstacle_max_step_s);
-  if (!(obstacle_margin_before_s >= 0 && obstacle_margin_after_s >= 0)) return "obstacle margins must be >= 0";
-  if (!(output_rate_hz > 0 && output_rate_hz <= 1e6)) return "output_rate_hz must be in (0, 1e6], got " + std::to_string(output_rate_hz);
-  return {};
+void SimulationOptions::validate() const {
+  const OptionCheck check("simulation");
+  const auto names = integratorNames();
+  if (std::find(names.begin(), names.end(), integrator) == names.end()) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    check.require(false, "integrator", "must be one of " + list + ", got '" + integrator + "'");
+  }
+  check.open01("accuracy", accuracy);
+  check.positive("max_step_s", max_step_s);
+  check.positive("obstacle_max_step_s", obstacle_max_step_s);
+  check.nonNegative("obstacle_margin_before_s", obstacle_margin_before_s);
+  check.nonNegative("obstacle_margin_after_s", obstacle_margin_after_s);
+  check.require(output_rate_hz > 0 && output_rate_hz <= 1e6, "output_rate_hz", "must lie in (0, 1e6], got " + formatNumber(output_rate_hz));
+  check.atLeast("max_internal_steps", max_internal_steps, 1);
 }
 
 nlohmann::json SimulationOptions::toJson() const {
@@ -373,8 +378,7 @@ struct Simulator::Impl {
 
   Impl(std::shared_ptr<const Model> m, SimulationOptions o, bool with_filter_states = false)
       : model(std::move(m)), opt(std::move(o)), filter_states(with_filter_states) {
-    const std::string rule = opt.check();
-    if (!rule.empty()) throw InputError("simulation", rule);
+    opt.validate();
     build();
   }
 
@@ -584,7 +588,7 @@ struct Simulator::Impl {
   /// The branch time of a random road with a smooth start (smooth_until_s - margin), or a
   /// negative value when the scenario has none.
   double branchTime(const ScenarioSpec& sc) const {
-    if (sc.road.type == RoadSpec::Type::Iso && sc.road.smooth_until_s > 0) return sc.road.smooth_until_s - opt.obstacle_margin_before_s;
+    if (const double t = sc.road->roughStart_s(); t > 0) return t - opt.obstacle_margin_before_s;
     return -1.0;
   }
 

@@ -27,8 +27,8 @@ struct SimulationOptions {
   double obstacle_margin_after_s = 0.05;
   double output_rate_hz = 1000.0;
   long max_internal_steps = 2000000;     ///< a run taking more steps is reported as failed
-  /// "" if valid, else "<field> <rule>".
-  std::string check() const;
+  /// InputError "simulation.<field>: <rule>" (common/validate.hpp) when a field is out of range.
+  void validate() const;
   nlohmann::json toJson() const;
   static std::vector<std::string> integratorNames();
 };

@@ -8,146 +8,11 @@
 #include <toml++/toml.h>
 
 #include "common/errors.hpp"
+#include "twin/road_setting.hpp"
+#include "twin/toml_reader.hpp"
 
 namespace dtwin {
 namespace {
-
-/// Reader over one TOML table that remembers which keys were consumed, so that unknown keys are
-/// reported instead of silently ignored.
-class TableReader {
- public:
-  TableReader(const toml::table& t, std::string file, std::string prefix)
-      : t_(t), file_(std::move(file)), prefix_(std::move(prefix)) {}
-
-  std::string where(const std::string& key) const {
-    const toml::node* n = t_.get(key);
-    const int line = n ? static_cast<int>(n->source().begin.line) : static_cast<int>(t_.source().begin.line);
-    return file_ + ":" + std::to_string(line) + ": " + field(key);
-  }
-  std::string field(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
-  bool has(const std::string& key) const { return t_.contains(key); }
-
-  std::optional<double> number(const std::string& key) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return std::nullopt;
-    if (auto v = n->value<double>()) return *v;
-    throw InputError(where(key), "must be a number");
-  }
-  double number(const std::string& key, double def) { return number(key).value_or(def); }
-  double required(const std::string& key) {
-    auto v = number(key);
-    if (!v) throw InputError(where(key), "is required");
-    return *v;
-  }
-  double positive(const std::string& key, double def) {
-    const double v = number(key, def);
-    if (!(v > 0)) throw InputError(where(key), "must be > 0, got " + std::to_string(v));
-    return v;
-  }
-  std::optional<std::string> string(const std::string& key) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return std::nullopt;
-    if (auto v = n->value<std::string>()) return *v;
-    throw InputError(where(key), "must be a string");
-  }
-  std::optional<long> integer(const std::string& key) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return std::nullopt;
-    if (auto v = n->value_exact<int64_t>()) return static_cast<long>(*v);
-    throw InputError(where(key), "must be an integer");
-  }
-  const toml::table* table(const std::string& key) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return nullptr;
-    if (auto* tt = n->as_table()) return tt;
-    throw InputError(where(key), "must be a table");
-  }
-  const toml::array* array(const std::string& key) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return nullptr;
-    if (auto* a = n->as_array()) return a;
-    throw InputError(where(key), "must be an array");
-  }
-  std::vector<std::string> strings(const std::string& key) {
-    std::vector<std::string> out;
-    if (auto* a = array(key))
-      for (auto&& el : *a) {
-        auto v = el.value<std::string>();
-        if (!v) throw InputError(where(key), "must be an array of strings");
-        out.push_back(*v);
-      }
-    return out;
-  }
-  /// Throws for any key not read.
-  void finish() const {
-    for (auto&& [k, n] : t_) {
-      const std::string key(k.str());
-      if (!used_.count(key)) {
-        std::vector<std::string> known(used_.begin(), used_.end());
-        const std::string hint = closestName(key, known);
-        throw InputError(where(key), "unknown field" + (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
-      }
-    }
-  }
-  const std::string& file() const { return file_; }
-
- private:
-  const toml::table& t_;
-  std::string file_, prefix_;
-  std::set<std::string> used_;
-};
-
-RoadSpec parseRoad(TableReader& r, const std::string& scenario) {
-  RoadSpec rs;
-  const toml::table* t = r.table("road");
-  if (!t) throw InputError(r.where("road"), "is required (a table with a 'type')");
-  TableReader rr(*t, r.file(), r.field("road"));
-  const std::string type = rr.string("type").value_or("");
-  if (type == "flat") {
-    rs.type = RoadSpec::Type::Flat;
-  } else if (type == "bump") {
-    rs.type = RoadSpec::Type::Bump;
-    rs.bump_height_m = rr.number("height_m", 0.2);
-    rs.bump_length_m = rr.positive("length_m", 0.1);
-    rs.bump_time_s = rr.number("time_s", 6.0);
-    if (rs.bump_time_s < 0) throw InputError(rr.where("time_s"), "must be >= 0");
-  } else if (type == "iso8608") {
-    rs.type = RoadSpec::Type::Iso;
-    const std::string cls = rr.string("class").value_or("D");
-    if (cls.size() != 1 || cls[0] < 'A' || cls[0] > 'H') throw InputError(rr.where("class"), "must be one of A..H, got '" + cls + "'");
-    rs.iso_class = cls[0];
-    rs.smooth_until_s = rr.number("smooth_until_s", 0.0);
-    if (auto* band = rr.array("band_cycles_per_m")) {
-      if (band->size() != 2 || !band->get(0)->value<double>() || !band->get(1)->value<double>())
-        throw InputError(rr.where("band_cycles_per_m"), "must be two numbers [n_min, n_max]");
-      rs.n_min = *band->get(0)->value<double>();
-      rs.n_max = *band->get(1)->value<double>();
-      if (!(rs.n_min > 0 && rs.n_max > rs.n_min)) throw InputError(rr.where("band_cycles_per_m"), "needs 0 < n_min < n_max");
-    }
-    rs.dx_m = rr.positive("dx_m", 0.01);
-    if (rs.n_max >= 0.25 / rs.dx_m) throw InputError(rr.where("dx_m"), "must give >= 4 points per shortest wavelength (dx < 0.25/n_max)");
-    rs.taper_m = rr.positive("taper_m", 1.0);
-    const std::string tracks = rr.string("tracks").value_or("independent");
-    if (tracks == "independent") rs.coherence = IsoRoadSpec::Coherence::Independent;
-    else if (tracks == "identical") rs.coherence = IsoRoadSpec::Coherence::Identical;
-    else throw InputError(rr.where("tracks"), "must be \"independent\" or \"identical\", got \"" + tracks + "\"");
-  } else if (type == "csv") {
-    rs.type = RoadSpec::Type::Csv;
-    auto p = rr.string("path");
-    if (!p) throw InputError(rr.where("path"), "is required for a csv road");
-    namespace fs = std::filesystem;
-    rs.csv_path = fs::path(*p).is_absolute() ? *p : (fs::path(r.file()).parent_path() / *p).lexically_normal().string();
-  } else {
-    throw InputError(rr.where("type"), "must be one of flat, bump, iso8608, csv, got \"" + type + "\"");
-  }
-  rr.finish();
-  return rs;
-}
 
 }  // namespace
 
@@ -156,28 +21,41 @@ nlohmann::json CalibrationSettings::toJson() const {
           {"target_ess", target_ess}, {"margin", margin}, {"ridge_steps", ridge_steps}, {"interval", interval}};
 }
 
+const std::vector<std::pair<std::string, long StudySizes::*>>& StudySizes::fields() {
+  static const std::vector<std::pair<std::string, long StudySizes::*>> f = {
+      {"field_runs", &StudySizes::field_runs},         {"gibbs_burn_in", &StudySizes::gibbs_burn_in},
+      {"gibbs_iterations", &StudySizes::gibbs_iterations}, {"lab_repetitions", &StudySizes::lab_repetitions},
+      {"lhs_points", &StudySizes::lhs_points},         {"optimizer_starts", &StudySizes::optimizer_starts},
+      {"posterior_draws", &StudySizes::posterior_draws}, {"road_library", &StudySizes::road_library},
+      {"roads_per_draw", &StudySizes::roads_per_draw}};
+  return f;
+}
+
+long StudySizes::at(const std::string& name) const { return const_cast<StudySizes*>(this)->at(name); }
+
+long& StudySizes::at(const std::string& name) {
+  for (const auto& [n, member] : fields())
+    if (n == name) return this->*member;
+  throw std::out_of_range("unknown study size '" + name + "'");
+}
+
+std::map<std::string, long> StudySizes::asMap() const {
+  std::map<std::string, long> m;
+  for (const auto& [n, member] : fields()) m[n] = this->*member;
+  return m;
+}
+
 const std::map<std::string, long>& knownSizes() {
-  static const std::map<std::string, long> k = {
-      {"lab_repetitions", 10}, {"field_runs", 500},     {"lhs_points", 2000},      {"gibbs_iterations", 50000},
-      {"gibbs_burn_in", 15000}, {"posterior_draws", 10000}, {"roads_per_draw", 5}, {"road_library", 50000},
-      {"optimizer_starts", 4}};
+  static const std::map<std::string, long> k = StudySizes{}.asMap();
   return k;
 }
 
-Study loadStudy(const std::string& path) {
-  namespace fs = std::filesystem;
-  if (!fs::exists(path)) throw InputError(path, "study file not found");
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
-  }
-  Study s;
-  s.path = path;
-  s.sizes = knownSizes();
-  TableReader top(root, path, "");
+namespace {
 
+/// [study]: name, description, seed and the vehicle file (relative to the study file).
+void readStudyTable(TableReader& top, Study& s) {
+  namespace fs = std::filesystem;
+  const std::string& path = top.file();
   if (auto* t = top.table("study")) {
     TableReader r(*t, path, "study");
     s.name = r.string("name").value_or(fs::path(path).stem().string());
@@ -193,7 +71,11 @@ Study loadStudy(const std::string& path) {
   } else {
     throw InputError(path, "missing [study] table");
   }
+}
 
+/// [subsystems]: the options of each subsystem, in the file's order (the assemblies are their combinations).
+void readSubsystems(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("subsystems")) {
     TableReader r(*t, path, "subsystems");
     // toml++ iterates keys alphabetically; assemblies follow the file's order.
@@ -202,16 +84,16 @@ Study loadStudy(const std::string& path) {
     std::sort(keys.begin(), keys.end());
     for (const auto& [line, sub] : keys) {
       const auto& known = knownSubsystems();
-      if (!known.count(sub)) throw InputError(r.where(sub), "unknown subsystem '" + sub + "' (known: suspension, tire)");
+      if (!known.count(sub)) {
+        std::vector<std::string> names;
+        for (const auto& [name, options] : known) names.push_back(name);
+        throw InputError(r.where(sub), unknownNameRule("subsystem", sub, names));
+      }
       auto opts = r.strings(sub);
       if (opts.empty()) throw InputError(r.where(sub), "must list at least one option");
       for (auto& o : opts) {
         const auto& ko = known.at(sub);
-        if (std::find(ko.begin(), ko.end(), o) == ko.end()) {
-          std::string list;
-          for (auto& x : ko) list += (list.empty() ? "" : ", ") + x;
-          throw InputError(r.where(sub), "unknown " + sub + " option '" + o + "' (known: " + list + ")");
-        }
+        if (std::find(ko.begin(), ko.end(), o) == ko.end()) throw InputError(r.where(sub), unknownNameRule(sub + " option", o, ko));
       }
       s.subsystems.push_back({sub, opts});
     }
@@ -224,13 +106,21 @@ Study loadStudy(const std::string& path) {
     for (auto& [n, o] : s.subsystems) found |= n == req;
     if (!found) throw InputError(path + ": subsystems", std::string("must name the '") + req + "' subsystem's options");
   }
+}
 
+/// [assemblies]: which combinations to include.
+void readAssemblies(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("assemblies")) {
     TableReader r(*t, path, "assemblies");
     s.include = r.strings("include");
     r.finish();
   }
+}
 
+/// [[calibrated]]: the calibrated parameters with their bounds and, when known, their truths.
+void readCalibrated(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* a = top.array("calibrated")) {
     int i = 0;
     for (auto&& el : *a) {
@@ -253,7 +143,11 @@ Study loadStudy(const std::string& path) {
       s.calibrated.push_back(c);
     }
   }
+}
 
+/// [fixed]: parameter values that override the vehicle file.
+void readFixed(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("fixed")) {
     TableReader r(*t, path, "fixed");
     for (auto&& [k, n] : *t) {
@@ -262,7 +156,11 @@ Study loadStudy(const std::string& path) {
     }
     r.finish();
   }
+}
 
+/// [effects.NAME]: effects installed in every assembly, with their parameter values.
+void readEffects(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("effects")) {
     TableReader r(*t, path, "effects");
     for (auto&& [k, n] : *t) {
@@ -280,7 +178,11 @@ Study loadStudy(const std::string& path) {
     }
     r.finish();
   }
+}
 
+/// [scenarios.NAME]: duration, speed profile and road (one of the registered road types), in the file's order.
+void readScenarios(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("scenarios")) {
     std::vector<std::pair<int, std::string>> keys;
     for (auto&& [k, n] : *t) keys.push_back({static_cast<int>(n.source().begin.line), std::string(k.str())});
@@ -300,15 +202,18 @@ Study loadStudy(const std::string& path) {
         if (sc.speed.ramp_s < 0) throw InputError(rs.where("ramp_s"), "must be >= 0");
         rs.finish();
       }
-      sc.road = parseRoad(r, sc.name);
-      if (sc.road.type == RoadSpec::Type::Bump && sc.road.bump_time_s >= sc.duration_s)
-        throw InputError(r.where("road"), "bump time_s must be before the end of the scenario");
+      sc.road = parseRoadSetting(r);
+      sc.road->check(sc, r.where("road"));
       r.finish();
       s.scenarios.push_back(sc);
     }
   }
   if (s.scenarios.empty()) throw InputError(path, "no [scenarios.*] defined");
+}
 
+/// [simulation]: integrator options (SimulationOptions::validate, errors at the study file's line).
+void readSimulation(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("simulation")) {
     TableReader r(*t, path, "simulation");
     auto& o = s.simulation;
@@ -319,18 +224,29 @@ Study loadStudy(const std::string& path) {
     o.obstacle_margin_before_s = r.number("obstacle_margin_before_s", o.obstacle_margin_before_s);
     o.obstacle_margin_after_s = r.number("obstacle_margin_after_s", o.obstacle_margin_after_s);
     o.output_rate_hz = r.number("output_rate_hz", o.output_rate_hz);
-    const std::string rule = o.check();
-    if (!rule.empty()) throw InputError(path + ": simulation", rule);
     r.finish();
+    try {
+      o.validate();
+    } catch (const InputError& e) {  // "simulation.<field>": name the line of the study file
+      throw InputError(r.where(e.where().substr(e.where().rfind('.') + 1)), e.rule());
+    }
   }
+}
 
+/// [noise]: the measurement noise variance.
+void readNoise(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("noise")) {
     TableReader r(*t, path, "noise");
     s.noise_variance_N2 = r.number("variance_N2", s.noise_variance_N2);
     if (!(s.noise_variance_N2 >= 0)) throw InputError(r.where("variance_N2"), "must be >= 0");
     r.finish();
   }
+}
 
+/// [sizes]: the study sizes (knownSizes), positive integers.
+void readSizes(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("sizes")) {
     TableReader r(*t, path, "sizes");
     for (auto&& [k, n] : *t) {
@@ -338,10 +254,15 @@ Study loadStudy(const std::string& path) {
       if (!knownSizes().count(key)) continue;  // reported by finish()
       const long v = *r.integer(key);
       if (v <= 0) throw InputError(r.where(key), "must be a positive integer, got " + std::to_string(v));
-      s.sizes[key] = v;
+      s.sizes.at(key) = v;
     }
     r.finish();
   }
+}
+
+/// [lab]: lab times (given, or automatic), channels.
+void readLab(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("lab")) {
     TableReader r(*t, path, "lab");
     auto& lab = s.lab;
@@ -390,6 +311,11 @@ Study loadStudy(const std::string& path) {
     }
     r.finish();
   }
+}
+
+/// [calibration]: region, design, rounds, interval and the region's margins.
+void readCalibrationSettings(TableReader& top, Study& s) {
+  const std::string& path = top.file();
   if (auto* t = top.table("calibration")) {
     TableReader r(*t, path, "calibration");
     auto& c = s.calibration;
@@ -435,13 +361,14 @@ Study loadStudy(const std::string& path) {
     }
     r.finish();
   }
-  top.finish();
+}
 
-  // Cross-checks against the vehicle data: names, units and bounds of calibrated parameters.
+/// The calibrated parameters against the vehicle's parameter table: names, units and bounds.
+void checkCalibratedAgainstVehicle(const Study& s) {
   const ParameterTable table = s.parameterTable();
   for (std::size_t i = 0; i < s.calibrated.size(); ++i) {
     const auto& c = s.calibrated[i];
-    const std::string where = path + ": calibrated[" + std::to_string(i) + "]";
+    const std::string where = s.path + ": calibrated[" + std::to_string(i) + "]";
     if (!table.contains(c.name)) throw InputError(where + ".name", "unknown parameter '" + c.name + "'");
     const auto& spec = table.at(c.name).spec;
     if (!c.unit.empty() && c.unit != spec.unit)
@@ -451,6 +378,40 @@ Study loadStudy(const std::string& path) {
       if (!rule.empty()) throw InputError(where, "bound of " + c.name + " " + rule);
     }
   }
+}
+
+}  // namespace
+
+/// The study file, table by table (each reader checks its own fields and reports unknown ones),
+/// then the cross-checks that need the whole study.
+Study loadStudy(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (!fs::exists(path)) throw InputError(path, "study file not found");
+  if (fs::is_directory(path)) throw InputError(path, "is a folder, not a study file");
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
+  }
+  Study s;
+  s.path = path;
+  TableReader top(root, path, "");
+
+  readStudyTable(top, s);
+  readSubsystems(top, s);
+  readAssemblies(top, s);
+  readCalibrated(top, s);
+  readFixed(top, s);
+  readEffects(top, s);
+  readScenarios(top, s);
+  readSimulation(top, s);
+  readNoise(top, s);
+  readSizes(top, s);
+  readLab(top, s);  // after [simulation]: lab times lie on its output grid
+  readCalibrationSettings(top, s);
+  top.finish();
+  checkCalibratedAgainstVehicle(s);
   for (const auto& a : s.assemblies()) s.makeModel(a);  // validates every assembly now
   return s;
 }
@@ -512,7 +473,7 @@ std::shared_ptr<const Model> Study::makeModel(const AssemblySpec& a, const std::
   AssemblySpec spec = a;
   std::vector<ParameterSetting> all;
   for (const auto& e : extra) {
-    makeEffect(e.name, "--effect");
+    makeEffect(e.name, "model.effects");
     if (std::find(spec.effects.begin(), spec.effects.end(), e.name) == spec.effects.end()) spec.effects.push_back(e.name);
     all.insert(all.end(), e.values.begin(), e.values.end());
   }
@@ -548,7 +509,7 @@ nlohmann::json Study::toJson() const {
     j["calibrated"].push_back(cj);
   }
   j["noise_variance_N2"] = noise_variance_N2;
-  j["sizes"] = sizes;
+  j["sizes"] = sizes.asMap();
   j["lab"] = lab.toJson();
   j["calibration"] = calibration.toJson();
   return j;

@@ -232,6 +232,7 @@ TEST(AdaptiveDesign, BadOptionsAreNamed) {
     o.validate();
     FAIL() << "target_ess -1 accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("target_ess must be > 0"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where(), "design.target_ess");
+    EXPECT_EQ(e.rule(), "must be a finite number > 0, got -1");
   }
 }

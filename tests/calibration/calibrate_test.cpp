@@ -7,7 +7,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
@@ -181,6 +185,59 @@ TEST(Calibrate, PaperRegionIsTheOneAtATimeBox) {
   EXPECT_EQ(j["options"]["region"], "paper");
   EXPECT_TRUE(j.contains("box"));
   fs::remove_all(dir);
+}
+
+// The defaults are typed once (calibration/common.hpp): CalibrationOptions and GibbsOptions agree.
+TEST(CalibrationOptions, DefaultsComeFromOnePlace) {
+  const CalibrationOptions o;
+  const GibbsOptions g = o.gibbsOptions();
+  EXPECT_EQ(o.lhs_points, kDefaultLhsPoints);
+  EXPECT_EQ(o.optimizer_starts, kDefaultOptimizerStarts);
+  EXPECT_EQ(g.iterations, GibbsOptions{}.iterations);
+  EXPECT_EQ(g.burn_in, GibbsOptions{}.burn_in);
+  EXPECT_EQ(g.a, GibbsOptions{}.a);
+  EXPECT_EQ(g.b, GibbsOptions{}.b);
+  EXPECT_EQ(o.designOptions().tau_a, AdaptiveDesignOptions{}.tau_a);
+  EXPECT_NO_THROW(o.validate());
+}
+
+// Bad values are refused naming "<options>.<field>" (common/validate.hpp), nested options included.
+TEST(CalibrationOptions, BadValuesNameTheField) {
+  auto whereOf = [](const CalibrationOptions& o) {
+    try {
+      o.validate();
+    } catch (const InputError& e) {
+      return e.where();
+    }
+    return std::string("(accepted)");
+  };
+  const std::vector<std::pair<std::function<void(CalibrationOptions&)>, std::string>> cases = {
+      {[](CalibrationOptions& o) { o.threads = -1; }, "calibration.threads"},
+      {[](CalibrationOptions& o) { o.optimizer_starts = 0; }, "calibration.optimizer_starts"},
+      {[](CalibrationOptions& o) { o.lhs_points = 1; }, "calibration.lhs_points"},
+      {[](CalibrationOptions& o) { o.gibbs_iterations = 0; }, "calibration.gibbs_iterations"},
+      {[](CalibrationOptions& o) { o.gibbs_burn_in = -1; }, "calibration.gibbs_burn_in"},
+      {[](CalibrationOptions& o) { o.gibbs_burn_in = o.gibbs_iterations; }, "calibration.gibbs_burn_in"},
+      {[](CalibrationOptions& o) { o.tau_prior_a = -1; }, "calibration.tau_prior_a"},
+      {[](CalibrationOptions& o) { o.tau_prior_b = std::numeric_limits<double>::infinity(); }, "calibration.tau_prior_b"},
+      {[](CalibrationOptions& o) { o.region = "box"; }, "calibration.region"},
+      {[](CalibrationOptions& o) { o.interval = "hpd"; }, "calibration.interval"},
+      {[](CalibrationOptions& o) { o.polish_step = 0.6; }, "calibration.polish_step"},
+      {[](CalibrationOptions& o) { o.optimizer.maxeval = 0; }, "optimizer.maxeval"},
+      {[](CalibrationOptions& o) { o.box.growth = 1.0; }, "feasible_box.growth"},
+      {[](CalibrationOptions& o) { o.joint.ridge_steps = -1; }, "joint_region.ridge_steps"},
+      {[](CalibrationOptions& o) { o.design.max_rounds = -1; }, "design.max_rounds"},
+  };
+  for (const auto& [spoil, where] : cases) {
+    CalibrationOptions o;
+    spoil(o);
+    EXPECT_EQ(whereOf(o), where);
+  }
+  CalibrationOptions o;
+  o.gibbs_iterations = 100;
+  o.gibbs_burn_in = 0;  // no burn-in is allowed
+  o.polish_step = 0.01;
+  EXPECT_EQ(whereOf(o), "(accepted)");
 }
 
 // Lab data that do not fit the scenario are refused with the record named.

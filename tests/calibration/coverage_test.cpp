@@ -71,3 +71,26 @@ TEST(Coverage, TinyRunCountsAndResumes) {
   o.seeds = 1;
   EXPECT_THROW(o.validate(), InputError);
 }
+
+// Errors name the options' fields, never command-line flags (common/validate.hpp).
+TEST(Coverage, BadOptionsNameTheField) {
+  auto whereOf = [](const CoverageOptions& o) {
+    try {
+      o.validate();
+    } catch (const InputError& e) {
+      return e.where();
+    }
+    return std::string("(accepted)");
+  };
+  CoverageOptions o;
+  o.out_dir = "cov";
+  EXPECT_EQ(whereOf(o), "(accepted)");
+  o.seeds = 1;
+  EXPECT_EQ(whereOf(o), "coverage.seeds");
+  o.seeds = 2;
+  o.out_dir.clear();
+  EXPECT_EQ(whereOf(o), "coverage.out_dir");
+  o.out_dir = "cov";
+  o.calibration.gibbs_burn_in = o.calibration.gibbs_iterations;
+  EXPECT_EQ(whereOf(o), "calibration.gibbs_burn_in");
+}

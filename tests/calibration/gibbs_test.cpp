@@ -228,8 +228,8 @@ TEST(GriddyGibbs, InvalidInputsNameTheRule) {
     runGriddyGibbs({1.0}, 10, opt);
     FAIL() << "no throw";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("burn_in must be in [0, iterations = 100), got 100"),
-              std::string::npos) << e.what();
+    EXPECT_EQ(e.where(), "gibbs.burn_in");
+    EXPECT_EQ(e.rule(), "must be below iterations (100), got 100");
   }
   try {
     runGriddyGibbs({1.0, -2.0}, 10, {});

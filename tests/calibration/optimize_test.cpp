@@ -221,8 +221,8 @@ TEST(Optimize, OptionsAreValidatedWithClearMessages) {
     minimiseSse(quadratic, kLo, kHi, 2, 1, opt);
     FAIL() << "no throw";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("algorithm must be one of LN_BOBYQA"), std::string::npos)
-        << e.what();
+    EXPECT_EQ(e.where(), "optimizer.algorithm");
+    EXPECT_NE(e.rule().find("must be one of LN_BOBYQA"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("got 'LD_LBFGS'"), std::string::npos) << e.what();
   }
   opt = {};

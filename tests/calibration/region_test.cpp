@@ -193,6 +193,7 @@ TEST(Region, BadOptionsAreNamed) {
     o.validate();
     FAIL() << "margin 0.5 accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("margin must be >= 1, got 0.5"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where(), "joint_region.margin");
+    EXPECT_EQ(e.rule(), "must be a finite number >= 1, got 0.5");
   }
 }

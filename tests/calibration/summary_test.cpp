@@ -118,3 +118,17 @@ TEST(PosteriorSummary, InconsistentInputsAreRejected) {
   ch.tau.clear();
   EXPECT_THROW(summarisePosterior(design, ch), InputError);
 }
+
+TEST(PosteriorSummary, BadOptionsNameTheField) {
+  SummaryOptions o;
+  EXPECT_NO_THROW(o.validate());
+  o.dominance_threshold = 1.0;
+  EXPECT_NO_THROW(o.validate());
+  o.dominance_threshold = 0.0;
+  try {
+    o.validate();
+    FAIL() << "dominance_threshold 0 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "summary.dominance_threshold");
+  }
+}

@@ -184,3 +184,35 @@ TEST(ClassifyField, CommandLine) {
   EXPECT_NE(err.find("posterior.csv: not found"), std::string::npos) << err;
   EXPECT_EQ(run("classify" + study + " --field " + w.field_csv + " --synthetic " + d + "/synth --prior M3=2 --out " + d + "/x", &err), 2);
 }
+
+// Options errors name the field as "field_classify.<field>" (common/validate.hpp); the factor
+// options as "factor.<field>".
+TEST(ClassifyField, OptionsNameTheField) {
+  auto where = [](const FieldClassifyOptions& o) -> std::string {
+    try {
+      o.validate();
+    } catch (const InputError& e) {
+      return e.where();
+    }
+    return "no error";
+  };
+  FieldClassifyOptions o;
+  EXPECT_EQ(where(o), "no error");
+  o.covariance = "diagonal";
+  EXPECT_EQ(where(o), "field_classify.covariance");
+  o = {};
+  o.threshold = 0.0;
+  EXPECT_EQ(where(o), "field_classify.threshold");
+  o = {};
+  o.tie_tolerance = -1e-12;
+  EXPECT_EQ(where(o), "field_classify.tie_tolerance");
+  o = {};
+  o.assemblies = {"M3", "M3"};
+  EXPECT_EQ(where(o), "field_classify.assemblies");
+  o = {};
+  o.prior = {{"M3", 0.5}, {"M4", -0.5}};
+  EXPECT_EQ(where(o), "field_classify.prior");
+  o = {};
+  o.factor.jitter_initial = 0.0;
+  EXPECT_EQ(where(o), "factor.jitter_initial");
+}

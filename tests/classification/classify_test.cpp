@@ -169,13 +169,11 @@ TEST(Classify, InvalidInputIsRejectedWithMessage) {
   };
   ClassifyOptions o;
   o.prior = {0.5, 0.6};
-  EXPECT_EQ(message(o, ll),
-            "classification options: prior: must sum to 1 within 1e-9, got 1.1000000000000001");
+  EXPECT_EQ(message(o, ll), "classify.prior: must sum to 1 within 1e-9, got 1.1000000000000001");
   o.prior = {1.5, -0.5};
-  EXPECT_EQ(message(o, ll), "classification options: prior[1]: must be > 0 and finite, got -0.5");
+  EXPECT_EQ(message(o, ll), "classify.prior[1]: must be a finite number > 0, got -0.5");
   o.prior = {1.0};
-  EXPECT_EQ(message(o, ll),
-            "classification options: prior: has 1 entries, expected 2 (one per model)");
+  EXPECT_EQ(message(o, ll), "classify.prior: has 1 entries, expected 2 (one per model)");
   o.prior = {0.5, 0.5 + 5e-10};  // within 1e-9: accepted
   EXPECT_EQ(message(o, ll), "no error");
   Eigen::MatrixXd bad = ll;

@@ -199,7 +199,7 @@ TEST(GaussianModel, InputErrorsNameTheField) {
     o.validate();
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "factor options: jitter_growth: must be > 1 and finite, got 1");
+    EXPECT_EQ(std::string(e.what()), "factor.jitter_growth: must be a finite number > 1, got 1");
   }
   GaussianModel g(Eigen::Vector2d::Zero(), Eigen::MatrixXd::Identity(2, 2));
   try {

@@ -99,5 +99,5 @@ TEST(Recommend, InvalidInputIsRejectedWithMessage) {
   RecommendOptions o;
   o.threshold = -1.0;
   EXPECT_EQ(message({{"M1", 0.0, 1.0}}, o),
-            "recommendation options: threshold: must be > 0 and finite, got -1");
+            "recommend.threshold: must be a finite number > 0, got -1");
 }

@@ -156,3 +156,38 @@ TEST(Synthesis, FailedRunsAreCountedAndSkipped) {
   EXPECT_EQ(j["failures"], r1.failures);
   EXPECT_EQ(j["failure_list"].size(), static_cast<std::size_t>(r1.failures));
 }
+
+// Options errors name the field as "synthesis.<field>" (common/validate.hpp), checked before any
+// simulation; the sizes once resolved against the study.
+TEST(Synthesis, OptionsNameTheField) {
+  const fs::path dir = tempDir("options");
+  const auto ps = posterior(dir);
+  auto where = [&](const SynthesisOptions& o) -> std::string {
+    try {
+      synthesizeAssembly(demo(), demo().assembly("M3"), ps, o, (dir / "out").string());
+    } catch (const InputError& e) {
+      return e.where();
+    }
+    return "no error";
+  };
+  SynthesisOptions o = tiny(1);
+  EXPECT_NO_THROW(o.validate());
+  o.block = 0;
+  EXPECT_EQ(where(o), "synthesis.block");
+  o = tiny(1);
+  o.t_begin_s = 11.0;  // after t_end_s
+  EXPECT_EQ(where(o), "synthesis.t_begin_s");
+  o = tiny(1);
+  o.t_end_s = 99.0;  // outside the scenario
+  EXPECT_EQ(where(o), "synthesis.t_end_s");
+  o = tiny(1);
+  o.checkpoint_interval_s = -1.0;
+  EXPECT_EQ(where(o), "synthesis.checkpoint_interval_s");
+  o = tiny(1);
+  o.channel = "no_such_channel";
+  EXPECT_EQ(where(o), "synthesis.channel");
+  o = tiny(1);
+  o.road_library = 1;  // fewer than the roads per draw
+  EXPECT_EQ(where(o), "synthesis.road_library");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "diagnosis/compare.hpp"
+#include "subsystems/effect.hpp"
 #include "twin/generate.hpp"
 
 using namespace dtwin;
@@ -94,4 +95,24 @@ TEST(Compare, WindowsAreLabelledFromTheScenario) {
   EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), 0.1, 0.2).find("before the bump"), std::string::npos);
   EXPECT_EQ(describeScenarioWindow(sc, m->vehicle(), 0.1, 0.2).find("rear"), std::string::npos);
   EXPECT_NE(describeScenarioWindow(s.scenario("diag_rough"), m->vehicle(), 1.0, 1.2).find("rough road"), std::string::npos);
+}
+
+// Every registered effect's residual signature (Effect::residualSignature) names a force-state map
+// compareModel makes and a signature fit it computes there, so the diagnosis can cite it.
+TEST(Compare, EveryEffectsSignatureIsAMapAndFitTheComparisonMakes) {
+  const Study s = loadStudy(kDemo);
+  const auto ds = labSet(s, 11);
+  calib::LabObjective obj(s, s.assemblies().front(), {ds}, {});
+  const auto c = compareModel(obj, {ds}, {truthOf(s)}, estimateChannelNoise(s, {ds}));
+  ASSERT_FALSE(c.maps.empty());
+  for (const auto& name : effectNames()) {
+    const ResidualSignature sig = makeEffect(name, "test")->residualSignature();
+    if (sig.state_map.empty()) continue;
+    bool found = false;
+    for (const auto& cm : c.maps)
+      for (const auto& m : cm.maps)
+        if (m.state.rfind(sig.state_map, 0) == 0)
+          for (const auto& f : m.fits) found = found || f.feature == sig.feature;
+    EXPECT_TRUE(found) << name << ": no map " << sig.state_map << "* with a fit '" << sig.feature << "'";
+  }
 }

@@ -67,9 +67,14 @@ DiagnoseOptions smallOptions(const Study& s, bool joint = false) {
   o.calibration.gibbs_iterations = 3000;
   o.calibration.gibbs_burn_in = 1000;
   o.calibration.optimizer_starts = 2;
+  // The profile search's restarts and polish (curved, multi-basin valleys) matter for coverage,
+  // not for naming an effect: off here, as are most profile points.
+  o.calibration.profile.restarts = 0;
+  o.calibration.profile.polish_iterations = 0;
   if (joint) {
     o.calibration.design.max_rounds = 1;
     o.calibration.joint.ridge_steps = 4;
+    o.calibration.profile.steps = 6;
   } else {
     o.calibration.region = "paper";
     o.calibration.design.adaptive = false;

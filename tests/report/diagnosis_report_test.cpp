@@ -20,6 +20,7 @@
 
 #include "report/svg_plot.hpp"
 #include "report/diagnosis_report.hpp"
+#include "report/study_report.hpp"
 #include "common/errors.hpp"
 
 namespace fs = std::filesystem;
@@ -257,4 +258,31 @@ TEST(DiagnosisReport, MissingGnuplotNamesThePackage) {
     EXPECT_NE(std::string(e.what()).find("gnuplot-nox"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(kTmp() / "nognuplot.html"));
+}
+
+// Options errors name the field (common/validate.hpp): "diagnosis_section.<field>" and
+// "report.<field>"; an empty folder list is "diagnosis_report.diag_dirs".
+TEST(DiagnosisReport, OptionsNameTheField) {
+  auto where = [](const auto& f) -> std::string {
+    try {
+      f();
+    } catch (const dtwin::InputError& e) {
+      return e.where();
+    }
+    return "no error";
+  };
+  dtwin::report::DiagnosisSectionOptions o;
+  EXPECT_EQ(where([&] { o.validate(); }), "no error");
+  o.anchor.clear();
+  EXPECT_EQ(where([&] { o.validate(); }), "diagnosis_section.anchor");
+  o = {};
+  o.id_prefix.clear();
+  EXPECT_EQ(where([&] { o.validate(); }), "diagnosis_section.id_prefix");
+  dtwin::report::ReportOptions r;
+  EXPECT_EQ(where([&] { r.validate(); }), "no error");
+  r.appendix.push_back({"", "a section", "<section></section>", 0});
+  EXPECT_EQ(where([&] { r.validate(); }), "report.appendix");
+  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+  EXPECT_EQ(where([&] { dtwin::report::writeDiagnosisReport(std::vector<std::string>{}, (kTmp() / "x.html").string(), "t"); }),
+            "diagnosis_report.diag_dirs");
 }

@@ -9,6 +9,7 @@
 
 #include "calibration/summary.hpp"
 #include "study/lab_bands.hpp"
+#include "study/run.hpp"
 #include "common/errors.hpp"
 
 using dtwin::study::normalMixtureQuantile;
@@ -51,7 +52,7 @@ TEST(LabBands, OptionsNameTheField) {
     o.validate();
     FAIL() << "draws = 1 accepted";
   } catch (const dtwin::InputError& e) {
-    EXPECT_EQ(e.where(), "draws");
+    EXPECT_EQ(e.where(), "lab_bands.draws");
   }
   o.draws = 2;
   o.threads = -1;
@@ -60,4 +61,16 @@ TEST(LabBands, OptionsNameTheField) {
 
 TEST(LabBands, AFolderThatIsNotAStudyIsAnInputError) {
   EXPECT_THROW(dtwin::study::predictLabBands("/nonexistent/dtwin/study"), dtwin::InputError);
+}
+
+TEST(StudyRun, OptionsNameTheField) {
+  dtwin::study::StudyRunOptions o;
+  EXPECT_NO_THROW(o.validate());
+  o.threads = -1;
+  try {
+    o.validate();
+    FAIL() << "threads = -1 accepted";
+  } catch (const dtwin::InputError& e) {
+    EXPECT_EQ(e.where(), "study.threads");
+  }
 }

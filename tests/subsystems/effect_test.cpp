@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,16 @@ void checkEffectContract(const Effect& e) {
     EXPECT_EQ(checkParameterValue(spec, spec.prior_upper), "") << spec.name;
     EXPECT_LE(spec.prior_lower, spec.default_value) << spec.name;
     EXPECT_GE(spec.prior_upper, spec.default_value) << spec.name;
+  }
+  // The diagnosis' hints: a signature names both a state map and a feature, or neither; an
+  // engagement threshold is one of the effect's length parameters.
+  const ResidualSignature sig = e.residualSignature();
+  EXPECT_EQ(sig.state_map.empty(), sig.feature.empty()) << sig.state_map << " / " << sig.feature;
+  if (const std::string th = e.engagementThreshold(); !th.empty()) {
+    const auto& specs = e.parameters();
+    const auto it = std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& p) { return p.name == th; });
+    ASSERT_NE(it, specs.end()) << "engagementThreshold() names no parameter: " << th;
+    EXPECT_EQ(it->unit, "m") << th;
   }
   const std::vector<double> off = offValues(e);
 
@@ -142,6 +153,34 @@ TEST(EffectContract, KindsAreAsDocumented) {
   EXPECT_EQ(makeEffect("speed_dependent_tire_stiffness", "t")->kind(), EffectKind::TireForce);
   EXPECT_EQ(makeEffect("anti_roll_bar", "t")->kind(), EffectKind::AxleCoupling);
   EXPECT_EQ(makeEffect("top_mount_compliance", "t")->kind(), EffectKind::StrutFilter);
+}
+
+TEST(EffectRegistry, NamesAreUniqueAndEachEntryMakesItsEffect) {
+  const auto& registry = effectRegistry();
+  ASSERT_EQ(effectNames().size(), registry.size());
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < registry.size(); ++i) {
+    EXPECT_TRUE(seen.insert(registry[i].name).second) << registry[i].name;
+    EXPECT_EQ(effectNames()[i], registry[i].name);
+    EXPECT_EQ(registry[i].make()->name(), registry[i].name);
+    EXPECT_EQ(makeEffect(registry[i].name, "t")->name(), registry[i].name);
+  }
+}
+
+TEST(EffectFactory, AMisspeltNameGetsTheNearestAsAHint) {
+  try {
+    makeEffect("bumpstop", "study.toml: effects");
+    FAIL() << "unknown effect accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.rule().rfind("unknown effect 'bumpstop' (known: bump_stop, ", 0), 0u) << e.rule();
+    EXPECT_NE(e.rule().find("; did you mean 'bump_stop'?)"), std::string::npos) << e.rule();
+  }
+  try {
+    makeEffect("warp_drive", "t");
+    FAIL() << "unknown effect accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find("did you mean"), std::string::npos) << e.what();
+  }
 }
 
 TEST(EffectFactory, UnknownNameThrowsInputError) {

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "twin/roads/iso8608.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
 
@@ -56,7 +57,7 @@ TEST(Branch, EachBranchAgreesWithAnUnbranchedRun) {
     RoadSet s(id);
     Simulator sim(s.model, demo().simulation);
     const double tb = sim.branchTime(s.scenario);
-    ASSERT_NEAR(tb, s.scenario.road.smooth_until_s - demo().simulation.obstacle_margin_before_s, 1e-15);
+    ASSERT_NEAR(tb, s.scenario.road->roughStart_s() - demo().simulation.obstacle_margin_before_s, 1e-15);
     const auto values = s.model->defaultRunValues();
     const auto t0 = std::chrono::steady_clock::now();
     const auto branched = sim.runBranched(values, s.ptrs, s.scenario);
@@ -130,7 +131,9 @@ TEST(Branch, RefusesScenariosWithoutASmoothStart) {
   EXPECT_LT(sim.branchTime(lab), 0.0);
   EXPECT_THROW(sim.runBranched(values, {bump.get()}, lab), InputError);
   ScenarioSpec rough = s.scenario;
-  rough.road.smooth_until_s = 0.0;
+  auto rough_from_start = std::make_shared<IsoRoadSetting>(dynamic_cast<const IsoRoadSetting&>(*rough.road));
+  rough_from_start->smooth_until_s = 0.0;
+  rough.road = rough_from_start;
   auto r0 = makeRoad(rough, s.model->vehicle(), 1);
   EXPECT_THROW(sim.runBranched(values, {r0.get()}, rough), InputError);
   EXPECT_THROW(sim.runBranched(values, {}, s.scenario), InputError);

@@ -1,6 +1,6 @@
-// Full-vehicle checks of the effects added for the diagnosis (progressive_spring,
-// speed_dependent_tire_stiffness, anti_roll_bar, top_mount_compliance): at their off values the
-// trace is the base model's bit for bit; switched on they change it in the physically
+// Full-vehicle checks of the effects: at its off values every registered effect leaves the trace
+// the base model's bit for bit; switched on, the effects added for the diagnosis (progressive_spring,
+// speed_dependent_tire_stiffness, anti_roll_bar, top_mount_compliance) change it in the physically
 // determined direction.
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "subsystems/effect.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
 
@@ -40,7 +41,6 @@ ScenarioSpec standstill(double duration) {
   s.name = "standstill";
   s.duration_s = duration;
   s.speed.v_final_mps = 0.0;
-  s.road.type = RoadSpec::Type::Flat;
   return s;
 }
 
@@ -63,15 +63,15 @@ std::vector<double> frontRollDeflection(const RunResult& r) {
   return d;
 }
 
-const std::vector<std::string> kNewEffects = {"progressive_spring", "speed_dependent_tire_stiffness", "anti_roll_bar",
-                                              "top_mount_compliance"};
 }  // namespace
 
+// Every registered effect (subsystems/effect.hpp effectRegistry), so a new effect is checked here
+// without an edit.
 TEST(NewEffects, AtTheirOffValuesTheBumpTraceIsTheBaseModelsBitForBit) {
   const auto& sc = paper().scenario("lab");
   for (const std::string id : {"M1", "M2"}) {
     const auto base = runWith(id, {}, sc);
-    for (const auto& name : kNewEffects) {
+    for (const auto& name : effectNames()) {
       SCOPED_TRACE(id + " " + name);
       const auto off = runWith(id, {EffectSetting{name, {}}}, sc);
       ASSERT_EQ(off.trace.channels().size(), base.trace.channels().size());

@@ -174,7 +174,7 @@ TEST(GenerateCli, BadDiagnosisFlagsExitTwoWithOneLine) {
   const std::vector<Case> cases = {
       {"generate lab --scenario diag_bump --times all --rate 300 --out " + out,
        "--rate: must divide the output rate 1000 Hz into an integer step"},
-      {"generate lab --scenario diag_bump --rate 200 --out " + out, "--rate: needs --times all"},
+      {"generate lab --scenario diag_bump --rate 200 --out " + out, "--rate: needs every sample kept (times mode all)"},
       {"generate lab --scenario diag_bump --times all --window 0,9 --out " + out, "--window: 0 .. 9 s lies outside"},
       {"generate lab --scenario diag_bump --times all --channels hub_force_fl_N,bogus_m --out " + out, "--channels: unknown channel"},
       {"generate lab --scenario diag_bump --hidden-effect bump_stp:stiffness=1 --out " + out, "--hidden-effect"},

@@ -465,24 +465,24 @@ TEST(GenerateLabDense, WindowAndRateGiveEveryDecimatedSample) {
   EXPECT_EQ(w.data.channels(), (std::vector<std::string>{"susp_defl_fl_m"}));
 }
 
-TEST(GenerateLabDense, BadSettingsNameTheFlag) {
+TEST(GenerateLabDense, BadSettingsNameTheField) {
   const Study& s = demo();
   struct Case {
     std::function<void(LabOptions&)> set;
     std::string expect;
   };
   const std::vector<Case> cases = {
-      {[](LabOptions& o) { o.rate_hz = 300.0; }, "--rate: must divide the output rate 1000 Hz into an integer step"},
-      {[](LabOptions& o) { o.rate_hz = 2000.0; }, "--rate: must divide"},
-      {[](LabOptions& o) { o.rate_hz = -5.0; }, "--rate: must divide"},
-      {[](LabOptions& o) { o.window = std::make_pair(1.2, 0.9); }, "--window: expects T0,T1 with T0 < T1"},
-      {[](LabOptions& o) { o.window = std::make_pair(0.0, 9.0); }, "--window: 0 .. 9 s lies outside the scenario 'diag_bump'"},
-      {[](LabOptions& o) { o.channels = {"hub_force_fl_kN"}; }, "--channels: wrong unit suffix"},
-      {[](LabOptions& o) { o.channels = {"susp_defl_fl_m", "susp_defl_fl_m"}; }, "--channels: channel 'susp_defl_fl_m' listed twice"},
-      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.rate_hz = 200.0; }, "--rate: needs --times all"},
-      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.window = std::make_pair(0.9, 1.2); }, "--window: needs --times all"},
+      {[](LabOptions& o) { o.rate_hz = 300.0; }, "lab.rate_hz: must divide the output rate 1000 Hz into an integer step"},
+      {[](LabOptions& o) { o.rate_hz = 2000.0; }, "lab.rate_hz: must divide"},
+      {[](LabOptions& o) { o.rate_hz = -5.0; }, "lab.rate_hz: must divide"},
+      {[](LabOptions& o) { o.window = std::make_pair(1.2, 0.9); }, "lab.window: expects T0,T1 with T0 < T1"},
+      {[](LabOptions& o) { o.window = std::make_pair(0.0, 9.0); }, "lab.window: 0 .. 9 s lies outside the scenario 'diag_bump'"},
+      {[](LabOptions& o) { o.channels = {"hub_force_fl_kN"}; }, "lab.channels: wrong unit suffix"},
+      {[](LabOptions& o) { o.channels = {"susp_defl_fl_m", "susp_defl_fl_m"}; }, "lab.channels: channel 'susp_defl_fl_m' listed twice"},
+      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.rate_hz = 200.0; }, "lab.rate_hz: needs every sample kept (times mode all)"},
+      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.window = std::make_pair(0.9, 1.2); }, "lab.window: needs every sample kept (times mode all)"},
       {[](LabOptions& o) { o.hidden_effects = {EffectSetting{"bump_stop", {}}, EffectSetting{"bump_stop", {}}}; },
-       "--hidden-effect: effect bump_stop given twice"},
+       "lab.hidden_effects: effect bump_stop given twice"},
       {[](LabOptions& o) { o.hidden_effects = {hidden("bump_stop:stiffnes=1")}; },
        "--hidden-effect stiffnes: unknown parameter 'bump_stop.stiffnes'"},
       {[](LabOptions& o) { o.hidden_effects = {hidden("bump_stop:gap_m=-1")}; }, "--hidden-effect gap_m: bump_stop.gap_m"},

@@ -120,7 +120,7 @@ TEST(Study, CalibrationSettings) {
       {"round_points = 1", "calibration.round_points: must be an integer >= 2, got 1"},
       {"max_rounds = -1", "calibration.max_rounds: must be an integer in [0, 100], got -1"},
       {"target_ess = 0", "calibration.target_ess: must be a finite number > 0"},
-      {"target_ess = nan", "calibration.target_ess: must be a finite number > 0"},
+      {"target_ess = nan", "calibration.target_ess: must be a finite number"},
       {"margin = 0.5", "calibration.margin: must be a number in [1, 10]"},
       {"ridge_steps = -2", "calibration.ridge_steps: must be an integer in [0, 1000], got -2"},
       {"max_round = 3", "calibration.max_round: unknown field (did you mean 'max_rounds'?)"},

@@ -27,7 +27,6 @@ ScenarioSpec standstill(double duration) {
   s.name = "standstill";
   s.duration_s = duration;
   s.speed.v_final_mps = 0.0;
-  s.road.type = RoadSpec::Type::Flat;
   return s;
 }
 }  // namespace

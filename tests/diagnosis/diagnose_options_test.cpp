@@ -1,0 +1,118 @@
+// The options of `compare` and `diagnose` (common/validate.hpp): every field out of range is an
+// InputError whose where() is "<options>.<field>", checked at the library boundary before any
+// simulation; the CLI shows such an error as the flag that sets the field.
+#include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+#include "common/errors.hpp"
+#include "diagnosis/compare.hpp"
+#include "diagnosis/diagnose.hpp"
+
+using namespace dtwin;
+using namespace dtwin::diag;
+
+namespace {
+const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
+
+/// The where() and rule() of the InputError `f` throws ("" if none).
+std::pair<std::string, std::string> inputError(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return {e.where(), e.rule()};
+  }
+  return {"", ""};
+}
+}  // namespace
+
+TEST(DiagnoseOptions, DefaultsAreValidAndEveryFieldIsChecked) {
+  EXPECT_NO_THROW(DiagnoseOptions().validate());
+  const std::vector<std::pair<std::string, std::function<void(DiagnoseOptions&)>>> cases = {
+      {"candidates", [](DiagnoseOptions& o) { o.candidates = -1; }},
+      {"screen_alpha", [](DiagnoseOptions& o) { o.screen_alpha = 0.0; }},
+      {"screen_alpha", [](DiagnoseOptions& o) { o.screen_alpha = 1.0; }},
+      {"bic_strong", [](DiagnoseOptions& o) { o.bic_strong = -1.0; }},
+      {"ambiguity_log_evidence", [](DiagnoseOptions& o) { o.ambiguity_log_evidence = std::nan(""); }},
+      {"explained_min", [](DiagnoseOptions& o) { o.explained_min = 1.5; }},
+      {"lack_of_fit_alpha", [](DiagnoseOptions& o) { o.lack_of_fit_alpha = -0.1; }},
+      {"compare_draws", [](DiagnoseOptions& o) { o.compare_draws = 0; }},
+      {"threads", [](DiagnoseOptions& o) { o.threads = -2; }},
+  };
+  for (const auto& [field, spoil] : cases) {
+    DiagnoseOptions o;
+    spoil(o);
+    EXPECT_EQ(inputError([&] { o.validate(); }).first, "diagnose." + field);
+  }
+}
+
+TEST(DiagnoseOptions, EffectsMustBeKnownAndNamedOnce) {
+  DiagnoseOptions o;
+  o.effects = {"bump_stop", "bumpstop"};
+  const auto [where, rule] = inputError([&] { o.validate(); });
+  EXPECT_EQ(where, "diagnose.effects");
+  EXPECT_EQ(rule.rfind("unknown effect 'bumpstop' (known: ", 0), 0u) << rule;
+  EXPECT_NE(rule.find("did you mean 'bump_stop'?"), std::string::npos) << rule;
+  o.effects = {};
+  o.apply = {"strut_friction", "bump_stop", "strut_friction"};
+  const auto [where2, rule2] = inputError([&] { o.validate(); });
+  EXPECT_EQ(where2, "diagnose.apply");
+  EXPECT_EQ(rule2, "names 'strut_friction' twice");
+}
+
+TEST(CompareOptions, DefaultsAreValidAndEveryFieldIsChecked) {
+  EXPECT_NO_THROW(CompareOptions().validate());
+  const std::vector<std::pair<std::string, std::function<void(CompareOptions&)>>> cases = {
+      {"threads", [](CompareOptions& o) { o.threads = -1; }},
+      {"window_threshold", [](CompareOptions& o) { o.window_threshold = -4.0; }},
+      {"window_merge_s", [](CompareOptions& o) { o.window_merge_s = std::nan(""); }},
+      {"window_min_s", [](CompareOptions& o) { o.window_min_s = -1e-3; }},
+      {"state_bins", [](CompareOptions& o) { o.state_bins = 0; }},
+      {"fitted_parameters", [](CompareOptions& o) { o.fitted_parameters = -1; }},
+  };
+  for (const auto& [field, spoil] : cases) {
+    CompareOptions o;
+    spoil(o);
+    EXPECT_EQ(inputError([&] { o.validate(); }).first, "compare." + field);
+  }
+}
+
+// Bad input is refused before any simulation, naming the field.
+TEST(Diagnose, RefusesNoDataAndAnInstalledEffectByField) {
+  Study s = loadStudy(kDemo);
+  const AssemblySpec a = s.assemblies().front();
+  const std::string out = dtwin_test::freshDir("diag_options").string();
+  EXPECT_EQ(inputError([&] { diagnose(s, a, {}, {}, DiagnoseOptions(), out); }).first, "diagnose.fit");
+  s.effects.push_back(EffectSetting{"bump_stop", {}});
+  const std::vector<calib::DataSet> fit(1);  // never read: the catalogue is checked first
+  DiagnoseOptions o;
+  o.effects = {"bump_stop"};
+  const auto [where, rule] = inputError([&] { diagnose(s, a, fit, {}, o, out); });
+  EXPECT_EQ(where, "diagnose.effects");
+  EXPECT_EQ(rule, "'bump_stop' is already installed in assembly " + a.id + " or the study's [effects]");
+  o.effects = {};
+  o.apply = {"bump_stop"};
+  EXPECT_EQ(inputError([&] { diagnose(s, a, fit, {}, o, out); }).first, "diagnose.apply");
+}
+
+// The CLI shows the field as its flag.
+TEST(Diagnose, TheCliNamesTheFlagOfABadField) {
+  const std::string dir = dtwin_test::freshDir("diag_options_cli").string();
+  const std::string twin = DTWIN_TWIN_EXE;
+  const std::string data = dir + "/bump.csv";
+  ASSERT_EQ(std::system((twin + " generate lab --scenario diag_bump --times all --rate 50 --repetitions 2 --channels hub_force_fl_N"
+                                " --out " + data + " --quiet").c_str()),
+            0);
+  const std::string err = dir + "/err.txt";
+  const int st = std::system((twin + " diagnose --data " + data + " --effects warp_drive --quiet 2> " + err).c_str());
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), 2);
+  const std::string text = dtwin_test::slurp(err);
+  EXPECT_NE(text.find("twin: error: --effects: unknown effect 'warp_drive' (known: bump_stop, "), std::string::npos) << text;
+}

@@ -1,0 +1,30 @@
+#include "twin/roads/csv.hpp"
+
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "twin/scenario.hpp"
+#include "twin/toml_reader.hpp"
+
+namespace dtwin {
+
+std::shared_ptr<const RoadSetting> CsvRoadSetting::parse(TableReader& rr) {
+  auto rs = std::make_shared<CsvRoadSetting>();
+  auto p = rr.string("path");
+  if (!p) throw InputError(rr.where("path"), "is required for a csv road");
+  namespace fs = std::filesystem;
+  rs->path = fs::path(*p).is_absolute() ? *p : (fs::path(rr.file()).parent_path() / *p).lexically_normal().string();
+  return rs;
+}
+
+std::shared_ptr<const Road> CsvRoadSetting::make(const ScenarioSpec& s, const VehicleData& v, std::uint64_t) const {
+  auto road = loadRoadCsv(path);
+  const auto ext = road->extent();
+  if (ext.lo > -v.wheelbase() || ext.hi < s.speed.distance(s.duration_s))
+    throw InputError(path, "road profile covers distance_m " + std::to_string(ext.lo) + ".." + std::to_string(ext.hi) +
+                               " but scenario '" + s.name + "' needs " + std::to_string(-v.wheelbase()) + ".." +
+                               std::to_string(s.speed.distance(s.duration_s)) + " (front axle starts at 0, rear axle at -wheelbase)");
+  return road;
+}
+
+}  // namespace dtwin

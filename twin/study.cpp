@@ -45,11 +45,6 @@ std::map<std::string, long> StudySizes::asMap() const {
   return m;
 }
 
-const std::map<std::string, long>& knownSizes() {
-  static const std::map<std::string, long> k = StudySizes{}.asMap();
-  return k;
-}
-
 namespace {
 
 /// [study]: name, description, seed and the vehicle file (relative to the study file).
@@ -244,14 +239,14 @@ void readNoise(TableReader& top, Study& s) {
   }
 }
 
-/// [sizes]: the study sizes (knownSizes), positive integers.
+/// [sizes]: the study sizes (StudySizes::fields()), positive integers.
 void readSizes(TableReader& top, Study& s) {
   const std::string& path = top.file();
   if (auto* t = top.table("sizes")) {
     TableReader r(*t, path, "sizes");
     for (auto&& [k, n] : *t) {
       const std::string key(k.str());
-      if (!knownSizes().count(key)) continue;  // reported by finish()
+      if (!StudySizes{}.asMap().count(key)) continue;  // reported by finish()
       const long v = *r.integer(key);
       if (v <= 0) throw InputError(r.where(key), "must be a positive integer, got " + std::to_string(v));
       s.sizes.at(key) = v;

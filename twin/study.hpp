@@ -115,8 +115,6 @@ struct Study {
   nlohmann::json toJson() const;
 };
 
-/// Names of the sizes a study may set, with their defaults (StudySizes{}: the paper's).
-const std::map<std::string, long>& knownSizes();
 
 /// Parses and validates a study file. Every error is an InputError naming the file, the line and
 /// the field, and the rule broken.

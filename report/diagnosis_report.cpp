@@ -412,21 +412,12 @@ void seriesPart(SectionPage& pg, const DiagnosisInput& in) {
 /// The residual band-power ratios (residual / noise power, log scale) before and after, one
 /// panel per series.
 void bandPowerPart(SectionPage& pg, const DiagnosisInput& in) {
-  std::ostringstream& b = pg.b;
-  const std::string& A = pg.anchor;
-  GnuplotSvg& gp = pg.gp;
-  auto figure = [&](const std::string& svg, const std::string& caption) { pg.figure(svg, caption); };
-  const Comparison& base = in.base;
-  const Comparison& after = in.after;
-  const bool has_after = in.has_after;
-  const std::string& after_label = in.after_label;
-  auto& plots = pg.plots;
-  b << "<h3 id=\"" << htmlEscape(A) << "-bands\">Residual band power</h3>\n";
+  pg.b << "<h3 id=\"" << htmlEscape(pg.anchor) << "-bands\">Residual band power</h3>\n";
   std::vector<const Series*> with_bands;
-  for (const auto& s : base.series)
+  for (const auto& s : in.base.series)
     if (!s.bands.empty()) with_bands.push_back(&s);
   if (with_bands.empty()) {
-    b << "<p>No series has band powers (too short for the Welch estimate).</p>\n";
+    pg.b << "<p>No series has band powers (too short for the Welch estimate).</p>\n";
   } else {
     double lo = 1.0, hi = 1.0;
     auto seen = [&](double r) {
@@ -437,7 +428,7 @@ void bandPowerPart(SectionPage& pg, const DiagnosisInput& in) {
     };
     for (const Series* s : with_bands) {
       for (const auto& band : s->bands) seen(band.ratio);
-      if (const Series* a = has_after ? after.find(s->key()) : nullptr)
+      if (const Series* a = in.has_after ? in.after.find(s->key()) : nullptr)
         for (const auto& band : a->bands) seen(band.ratio);
     }
     const double ymin = lo / 3.0, ymax = hi * 3.0;
@@ -447,7 +438,7 @@ void bandPowerPart(SectionPage& pg, const DiagnosisInput& in) {
       << "set logscale y\nset yrange [" << full(ymin) << ":" << full(ymax) << "]\nset grid ytics\n"
       << "set style fill solid 0.7 border -1\nset ylabel 'ratio'\nset key top left\n";
     for (const Series* s : with_bands) {
-      const Series* a = has_after ? after.find(s->key()) : nullptr;
+      const Series* a = in.has_after ? in.after.find(s->key()) : nullptr;
       std::ostringstream fb_, fa_, xt;
       for (std::size_t i = 0; i < s->bands.size(); ++i) {
         xt << (i ? ", " : "") << gq(s->bands[i].name) << " " << i + 1;
@@ -460,43 +451,34 @@ void bandPowerPart(SectionPage& pg, const DiagnosisInput& in) {
       p << "set title " << gq(s->name()) << " noenhanced\nset xtics (" << xt.str() << ") noenhanced\nset xrange [0.4:"
         << s->bands.size() + 0.6 << "]\nplot ";
       if (!fb_.str().empty())
-        p << gp.data(fb_.str()) << " using 1:2:($1-0.38):($1-0.02):(" << full(ymin)
+        p << pg.gp.data(fb_.str()) << " using 1:2:($1-0.38):($1-0.02):(" << full(ymin)
           << "):2 with boxxyerror lc rgb '#4a7fc0' title 'base', ";
       if (!fa_.str().empty())
-        p << gp.data(fa_.str()) << " using 1:2:($1+0.02):($1+0.38):(" << full(ymin) << "):2 with boxxyerror lc rgb '#2a9a3a' title "
-          << gq(after_label) << " noenhanced, ";
+        p << pg.gp.data(fa_.str()) << " using 1:2:($1+0.02):($1+0.38):(" << full(ymin) << "):2 with boxxyerror lc rgb '#2a9a3a' title "
+          << gq(in.after_label) << " noenhanced, ";
       p << "1 with lines dt 2 lw 1.5 lc rgb '#333333' title 'noise floor'\n";
     }
-    figure(gp.plot(p.str(), 900, 260 * rows, "residual band power"),
+    pg.figure(pg.gp.plot(p.str(), 900, 260 * rows, "residual band power"),
            "Per series and frequency band, the power of the residual (measured − predicted mean) divided by the power the "
            "measurement noise alone would leave there (log scale; 1 = the noise floor, dashed), base" +
-               (has_after ? " and " + htmlEscape(after_label) : std::string()) + ".");
-    plots.push_back({{"name", "band_power"}, {"kind", "band_power"}, {"panels", n}});
+               (in.has_after ? " and " + htmlEscape(in.after_label) : std::string()) + ".");
+    pg.plots.push_back({{"name", "band_power"}, {"kind", "band_power"}, {"panels", n}});
   }
 }
 
 /// The force–state map whose best signature explains the largest fraction in the base
 /// comparison, before and after (bin means ± 2 se).
 void stateMapPart(SectionPage& pg, const DiagnosisInput& in) {
-  std::ostringstream& b = pg.b;
-  const std::string& A = pg.anchor;
-  GnuplotSvg& gp = pg.gp;
-  auto figure = [&](const std::string& svg, const std::string& caption) { pg.figure(svg, caption); };
-  const Comparison& base = in.base;
-  const Comparison& after = in.after;
-  const bool has_after = in.has_after;
-  const std::string& after_label = in.after_label;
-  auto& plots = pg.plots;
-  b << "<h3 id=\"" << htmlEscape(A) << "-map\">Force–state map</h3>\n";
+  pg.b << "<h3 id=\"" << htmlEscape(pg.anchor) << "-map\">Force–state map</h3>\n";
   const StateMap* best = nullptr;
-  for (const auto& m : base.maps)
+  for (const auto& m : in.base.maps)
     if (std::isfinite(m.explained) && !m.bins.empty() && (!best || m.explained > best->explained)) best = &m;
   if (!best) {
-    b << "<p>The base comparison has no force–state map with a fitted signature.</p>\n";
+    pg.b << "<p>The base comparison has no force–state map with a fitted signature.</p>\n";
   } else {
-    const StateMap* am = has_after ? after.findMap(best->channel, best->state) : nullptr;
+    const StateMap* am = in.has_after ? in.after.findMap(best->channel, best->state) : nullptr;
     std::string unit;
-    for (const auto& s : base.series)
+    for (const auto& s : in.base.series)
       if (s.channel == best->channel) unit = s.unit;
     auto binData = [&](const StateMap& m) {
       std::ostringstream o;
@@ -515,21 +497,21 @@ void stateMapPart(SectionPage& pg, const DiagnosisInput& in) {
         << ", graph 1 nohead dt 2 lc rgb '#c03020'\nset label " << gq("knee " + num(best->knee_at)) << " at " << full(best->knee_at)
         << ", graph 0.95 offset 0.5,0 tc rgb '#c03020'\n";
     const std::string bd = binData(*best), ad = am ? binData(*am) : "";
-    const std::string fb = gp.data(bd);
+    const std::string fb = pg.gp.data(bd);
     p << "plot " << fb << " using 1:2:3 with yerrorbars pt 7 ps 0.6 lc rgb '#103070' title 'base ± 2 se', " << fb
       << " using 1:2 with lines lc rgb '#103070' notitle";
     if (!ad.empty()) {
-      const std::string fa = gp.data(ad);
-      p << ", " << fa << " using 1:2:3 with yerrorbars pt 5 ps 0.6 lc rgb '#1a7a2a' title " << gq(after_label + " ± 2 se")
+      const std::string fa = pg.gp.data(ad);
+      p << ", " << fa << " using 1:2:3 with yerrorbars pt 5 ps 0.6 lc rgb '#1a7a2a' title " << gq(in.after_label + " ± 2 se")
         << " noenhanced, " << fa << " using 1:2 with lines lc rgb '#1a7a2a' notitle";
     }
     p << "\n";
-    figure(gp.plot(p.str(), 900, 450, title),
+    pg.figure(pg.gp.plot(p.str(), 900, 450, title),
            "The residual of " + htmlEscape(best->channel) + " averaged in equal-count bins of " + htmlEscape(best->state) +
                " (± 2 standard errors): the map of the base comparison whose best signature explains the largest fraction (" +
                htmlEscape(best->feature) + ", " + pct(best->explained) + ")" +
-               (am ? ", and the same map " + htmlEscape(after_label) : std::string()) + ".");
-    plots.push_back({{"name", "state_map"}, {"kind", "state_map"}, {"channel", best->channel}, {"state", best->state},
+               (am ? ", and the same map " + htmlEscape(in.after_label) : std::string()) + ".");
+    pg.plots.push_back({{"name", "state_map"}, {"kind", "state_map"}, {"channel", best->channel}, {"state", best->state},
                      {"feature", best->feature}, {"explained_fraction", best->explained}});
   }
 }

@@ -2,6 +2,9 @@
 
 #include <limits>
 
+#include "common/errors.hpp"
+#include "common/names.hpp"
+
 namespace dtwin {
 
 LinearStrut::LinearStrut() {
@@ -20,6 +23,31 @@ double LinearStrut::hardstop(double q, double limit, double k_hs) {
 
 double LinearStrut::calcForce(const StrutState& s, ParamValues p) const {
   return s.preload_N + p[0] * s.deflection_m + p[1] * s.rate_mps + hardstop(s.deflection_m, p[2], p[3]);
+}
+
+// ---------------------------------------------------------------- registry
+// The one list of strut laws: each entry makes a law, which names itself. Adding a law is its
+// class and one line here (docs/extending.md).
+namespace {
+using StrutFactory = std::unique_ptr<StrutLaw> (*)();
+const std::vector<StrutFactory>& strutRegistry() {
+  static const std::vector<StrutFactory> r = {
+      [] { return std::unique_ptr<StrutLaw>(std::make_unique<LinearStrut>()); },
+  };
+  return r;
+}
+}  // namespace
+
+std::vector<std::string> strutLawNames() {
+  std::vector<std::string> out;
+  for (const auto& make : strutRegistry()) out.push_back(make()->name());
+  return out;
+}
+
+std::unique_ptr<StrutLaw> makeStrutLaw(const std::string& name, const std::string& where) {
+  for (const auto& make : strutRegistry())
+    if (auto law = make(); law->name() == name) return law;
+  throw InputError(where, unknownNameRule("strut option", name, strutLawNames()));
 }
 
 }  // namespace dtwin

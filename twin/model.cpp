@@ -59,7 +59,8 @@ const std::map<std::string, std::vector<std::string>>& knownSubsystems() {
   static const std::map<std::string, std::vector<std::string>> k = [] {
     std::vector<std::string> susp;
     for (const auto& [name, topology] : suspensionOptions()) susp.push_back(name);
-    return std::map<std::string, std::vector<std::string>>{{"tire", tireLawNames()}, {"suspension", susp}};
+    // `strut` is optional in a study: without it every assembly uses the first registered law.
+    return std::map<std::string, std::vector<std::string>>{{"tire", tireLawNames()}, {"suspension", susp}, {"strut", strutLawNames()}};
   }();
   return k;
 }
@@ -91,13 +92,16 @@ ParameterTable declareVehicleParameters() {
       if (!t.contains(s.name)) t.declare(s);
     }
   }
-  // Suspension options: main strut law per option; shared stiffness/damping.
-  LinearStrut strut;
-  for (const auto& opt : knownSubsystems().at("suspension"))
-    for (auto s : strut.parameters()) {
-      s.name = fullName("suspension", opt, s);
-      if (!t.contains(s.name)) t.declare(s);
-    }
+  // Suspension options: the parameters of every strut law, per suspension option (the
+  // contract's shared stiffness and damping once).
+  for (const auto& law_name : strutLawNames()) {
+    const auto law = makeStrutLaw(law_name, "");
+    for (const auto& opt : knownSubsystems().at("suspension"))
+      for (auto s : law->parameters()) {
+        s.name = fullName("suspension", opt, s);
+        if (!t.contains(s.name)) t.declare(s);
+      }
+  }
   fixed("suspension.solid_axle.interface_stiffness", "N/m", "wheel/axle interface stiffness k_wa (eq. 5)");
   fixed("suspension.solid_axle.interface_damping", "N*s/m", "wheel/axle interface damping c_wa (eq. 5)", 0.0, true);
   fixed("suspension.solid_axle.interface_preload_N", "N", "wheel/axle interface preload F0 (eq. 5)", -kInf, true);
@@ -158,6 +162,8 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   if (tire.empty()) throw InputError(where, "assembly " + assembly_.id + " has no tire option");
   if (susp.empty()) throw InputError(where, "assembly " + assembly_.id + " has no suspension option");
   tire_ = makeTireLaw(tire, where);
+  const std::string strut = assembly_.option("strut");
+  strut_ = makeStrutLaw(strut.empty() ? strutLawNames().front() : strut, where);
   const auto& topologies = suspensionOptions();
   const auto found = std::find_if(topologies.begin(), topologies.end(), [&](const auto& o) { return o.first == susp; });
   if (found == topologies.end()) throw InputError(where, unknownNameRule("suspension option", susp, knownSubsystems().at("suspension")));
@@ -185,7 +191,7 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   }
 
   for (const auto& s : tire_->parameters()) tire_slots_.push_back(addRunParameter(fullName("tire", tire, s)));
-  for (const auto& s : strut_.parameters()) susp_slots_.push_back(addRunParameter(fullName("suspension", susp, s)));
+  for (const auto& s : strut_->parameters()) susp_slots_.push_back(addRunParameter(fullName("suspension", susp, s)));
   if (topology_ == SuspensionTopology::SolidAxle) {
     iface_slots_ = {addRunParameter("suspension.solid_axle.interface_stiffness"),
                     addRunParameter("suspension.solid_axle.interface_damping"),

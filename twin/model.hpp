@@ -67,7 +67,10 @@ class Model {
   const VehicleData& vehicle() const { return vehicle_; }
   SuspensionTopology topology() const { return topology_; }
   const TireLaw& tire() const { return *tire_; }
-  const LinearStrut& strut() const { return strut_; }
+  /// The main struts' law (the study's `strut` option; the first registered law by default).
+  const StrutLaw& strut() const { return *strut_; }
+  /// The solid axle's wheel/axle interface law (paper eq. 5): always linear, fixed data.
+  const StrutLaw& interfaceLaw() const { return interface_law_; }
   const std::vector<std::shared_ptr<const Effect>>& effects() const { return effects_; }
 
   /// Names of the per-run parameters (the run vector's layout).
@@ -98,7 +101,8 @@ class Model {
   VehicleData vehicle_;
   SuspensionTopology topology_;
   std::unique_ptr<TireLaw> tire_;
-  LinearStrut strut_;
+  std::unique_ptr<StrutLaw> strut_;
+  LinearStrut interface_law_;
   std::vector<std::shared_ptr<const Effect>> effects_;
   std::vector<std::string> run_names_;
   std::map<std::string, int> slots_;

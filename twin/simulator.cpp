@@ -201,9 +201,9 @@ struct StrutGeometry {
 class StrutElement : public Force::Custom::Implementation {
  public:
   /// `filter_states`: allocate one auxiliary state (a Z of `sub`) per installed StrutFilter effect.
-  StrutElement(const RunContext* ctx, const Model* m, StrutGeometry g, std::size_t p0, int preload_slot,
+  StrutElement(const RunContext* ctx, const Model* m, const StrutLaw* law, StrutGeometry g, std::size_t p0, int preload_slot,
                double preload, bool with_effects, bool filter_states = false, SubsystemIndex sub = SubsystemIndex())
-      : ctx_(ctx), m_(m), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects), sub_(sub) {
+      : ctx_(ctx), m_(m), law_(law), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects), sub_(sub) {
     if (with_effects && filter_states)
       for (std::size_t i = 0; i < m->effects().size(); ++i)
         if (m->effects()[i]->kind() == EffectKind::StrutFilter) filter_effects_.push_back(i);
@@ -262,7 +262,7 @@ class StrutElement : public Force::Custom::Implementation {
   double force(double q, double qd) const {
     const double* p = ctx_->p;
     const StrutState ss = strutState(q, qd);
-    double F = m_->strut().calcForce(ss, ParamValues(p + p0_, 4));
+    double F = law_->calcForce(ss, ParamValues(p + p0_, law_->parameters().size()));
     if (effects_) {
       const auto& effs = m_->effects();
       for (std::size_t i = 0; i < effs.size(); ++i)
@@ -276,6 +276,7 @@ class StrutElement : public Force::Custom::Implementation {
  private:
   const RunContext* ctx_;
   const Model* m_;
+  const StrutLaw* law_;
   StrutGeometry g_;
   std::size_t p0_;
   int preload_slot_;
@@ -416,7 +417,7 @@ struct Simulator::Impl {
           struts[c] = {chassis, axle[ax], Vec3(x, sgn * 0.5 * d.spring_track, z_wc), Vec3(0, sgn * 0.5 * d.spring_track, 0)};
           // Wheel/axle compliant interface (paper eq. 5): no effects, preload from the data.
           StrutGeometry iface{axle[ax], wheels[c], Vec3(0, sgn * 0.5 * d.track, 0), Vec3(0)};
-          auto* ie = new StrutElement(&ctx, &M, iface, contiguous(M.interfaceSlots()), M.interfacePreloadSlot(), 0.0, false);
+          auto* ie = new StrutElement(&ctx, &M, &M.interfaceLaw(), iface, contiguous(M.interfaceSlots()), M.interfacePreloadSlot(), 0.0, false);
           ie->bind_slider_ = true;  // the wheel slides on the axle along the axle's z
           slider_elems.push_back(ie);
           Force::Custom(forces, ie);
@@ -425,7 +426,7 @@ struct Simulator::Impl {
     }
     for (int c = 0; c < 4; ++c) {
       massive.push_back({wheels[c], d.wheel_mass});
-      auto* se = new StrutElement(&ctx, &M, struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
+      auto* se = new StrutElement(&ctx, &M, &M.strut(), struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
                                   filter_states, forces.getMySubsystemIndex());
       strut_elems[c] = se;
       if (M.topology() == SuspensionTopology::MacPherson) {

@@ -12,10 +12,6 @@
 #include "twin/toml_reader.hpp"
 
 namespace dtwin {
-namespace {
-
-}  // namespace
-
 nlohmann::json CalibrationSettings::toJson() const {
   return {{"region", region}, {"design", designOrDefault()}, {"round_points", round_points}, {"max_rounds", max_rounds},
           {"target_ess", target_ess}, {"margin", margin}, {"ridge_steps", ridge_steps}, {"interval", interval}};
@@ -31,13 +27,15 @@ const std::vector<std::pair<std::string, long StudySizes::*>>& StudySizes::field
   return f;
 }
 
-long StudySizes::at(const std::string& name) const { return const_cast<StudySizes*>(this)->at(name); }
-
-long& StudySizes::at(const std::string& name) {
-  for (const auto& [n, member] : fields())
-    if (n == name) return this->*member;
+long StudySizes::* StudySizes::member(const std::string& name) {
+  for (const auto& [n, m] : fields())
+    if (n == name) return m;
   throw std::out_of_range("unknown study size '" + name + "'");
 }
+
+long StudySizes::at(const std::string& name) const { return this->*member(name); }
+
+long& StudySizes::at(const std::string& name) { return this->*member(name); }
 
 std::map<std::string, long> StudySizes::asMap() const {
   std::map<std::string, long> m;

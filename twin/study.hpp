@@ -84,6 +84,9 @@ struct StudySizes {
   long& at(const std::string& name);
   /// name -> value, as study.json records them.
   std::map<std::string, long> asMap() const;
+
+ private:
+  static long StudySizes::* member(const std::string& name);
 };
 
 struct Study {

@@ -11,19 +11,12 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "effect_fixture.hpp"
 
 namespace dtwin {
 namespace {
 
-StrutState strut(double q, double qdot) {
-  StrutState s;
-  s.deflection_m = q;
-  s.rate_mps = qdot;
-  s.preload_N = 2907.0;
-  s.base_stiffness = 30000.0;
-  s.base_damping = 2500.0;
-  return s;
-}
+using dtwin_test::strut;
 
 /// Values a law accepts: the contract's stiffness and damping at realistic figures, the other
 /// parameters at their default when valid, else one unit above their lower bound.

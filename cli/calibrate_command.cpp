@@ -23,7 +23,7 @@ struct CalibrateConfig {
   std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out, region, design, interval;
   int threads = 0;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1, max_rounds = -1, ridge_steps = -1;
-  long long seed = -1;
+  std::optional<std::uint64_t> seed;  ///< unset: the study's
   bool quiet = false;
 };
 
@@ -43,7 +43,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   if (cfg.iterations > 0) opt.gibbs_iterations = static_cast<int>(cfg.iterations);
   if (cfg.burn_in >= 0) opt.gibbs_burn_in = static_cast<int>(cfg.burn_in);
   if (cfg.starts > 0) opt.optimizer_starts = static_cast<int>(cfg.starts);
-  if (cfg.seed >= 0) opt.seed = static_cast<std::uint64_t>(cfg.seed);
+  if (cfg.seed) opt.seed = *cfg.seed;
   if (!cfg.region.empty()) {
     opt.region = cfg.region;
     if (cfg.design.empty()) opt.design.adaptive = cfg.region == "joint";  // the region's default design
@@ -151,7 +151,7 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
   c->add_option("--ridge-steps", cfg->ridge_steps, "Steps per ridge trace of the joint region, 0: none (default: the study's "
                                                    "[calibration] ridge_steps)")
       ->check(CLI::Range(0L, 1000L));
-  c->add_option("--seed", cfg->seed, "Seed of the design and the sampler (default: the study's seed)")->check(CLI::Range(0LL, (1LL << 62)));
+  addSeedOption(c, cfg->seed, "Seed of the design and the sampler (default: the study's seed)");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   CommandHandle handle{c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }, {}};
   // Library errors name CalibrationOptions fields ("calibration.gibbs_burn_in"); the fields whose

@@ -3,8 +3,10 @@
 // main() parses once and runs the chosen one. The CLI only parses, validates and calls.
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace dtwin::cli {
@@ -27,6 +29,9 @@ std::string messageForCommand(const CommandHandle& handle, const std::string& wh
 std::string defaultStudy();
 /// The command line as one string, recorded in every output.
 std::string joinArgs(int argc, char** argv);
+/// The `--seed` option of every command: an integer in [0, 2^64 - 1], written as digits (anything
+/// else, a sign or an overflow included, is a one-line parse error); unset means the study's seed.
+CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, const std::string& help);
 /// True when stderr is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
 /// True on the rank that prints and writes (always, without MPI).

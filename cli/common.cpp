@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <charconv>
 #include <filesystem>
 #include <string>
 
@@ -9,6 +10,22 @@
 namespace fs = std::filesystem;
 
 namespace dtwin::cli {
+
+CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, const std::string& help) {
+  return app
+      ->add_option_function<std::string>(
+          "--seed",
+          [&seed](const std::string& v) {
+            std::uint64_t x = 0;
+            const char* end = v.data() + v.size();
+            const auto [p, ec] = std::from_chars(v.data(), end, x);
+            if (v.empty() || ec != std::errc() || p != end)
+              throw CLI::ValidationError("--seed", "must be an integer in [0, 18446744073709551615], got '" + v + "'");
+            seed = x;
+          },
+          help)
+      ->type_name("UINT64");
+}
 
 std::string defaultStudy() {
   for (const char* dir : {DTWIN_SOURCE_DATA_DIR, DTWIN_INSTALL_DATA_DIR}) {

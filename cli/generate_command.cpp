@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 struct GenerateConfig {
   std::string study = defaultStudy(), out, assembly, scenario, channel = "hub_force_fl_N";
-  std::uint64_t seed = 0;
+  std::optional<std::uint64_t> seed;  ///< unset: the study's
   long repetitions = 0, runs = 0;
   int threads = 0;
   std::vector<double> window;
@@ -33,7 +33,6 @@ struct GenerateConfig {
   double rate = 0;                          ///< lab: --rate HZ (0: not given)
   std::vector<std::string> channels;        ///< lab: --channels a,b,c
   bool quiet = false;
-  CLI::Option* seed_opt = nullptr;
   CLI::Option* rate_opt = nullptr;
 };
 
@@ -45,13 +44,15 @@ AssemblySpec chooseAssembly(const Study& study, const std::string& id) {
   return all.front();  // M1: the highest fidelity by convention (docs/method.md §1)
 }
 
-/// Rejects an --out that is not a .csv file or whose folder cannot be written, before any run.
+/// Rejects an --out that is not a .csv file or whose folder cannot be made or written, before any run.
 void checkOut(const std::string& out) {
   const fs::path p(out);
   if (p.extension() != ".csv") throw InputError("--out", "must name a .csv file, got '" + out + "'");
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  fs::create_directories(dir, ec);
+  // The folder is made only when the data are written (writeFileAtomic); here its nearest existing
+  // ancestor must be a folder we may write into, so that no run is wasted and nothing is created.
+  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  while (!fs::exists(dir) && dir.has_parent_path() && dir.parent_path() != dir) dir = dir.parent_path();
+  if (!fs::exists(dir)) dir = ".";
   if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)
     throw InputError("--out", "cannot write into folder '" + dir.string() + "'");
 }
@@ -83,7 +84,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   if (cfg.rate_opt && cfg.rate_opt->count()) opt.rate_hz = cfg.rate;
   opt.channels = cfg.channels;
   opt.repetitions = cfg.repetitions;
-  if (cfg.seed_opt->count()) opt.seed = cfg.seed;
+  if (cfg.seed) opt.seed = *cfg.seed;
   opt.command = command;
   LabResult r;
   {
@@ -127,7 +128,7 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
   opt.hidden_effects = parseHidden(cfg.hidden_effects);
   opt.runs = cfg.runs;
   opt.threads = cfg.threads;
-  if (cfg.seed_opt->count()) opt.seed = cfg.seed;
+  if (cfg.seed) opt.seed = *cfg.seed;
   opt.command = command;
   FieldResult r;
   {
@@ -154,13 +155,7 @@ void commonOptions(CLI::App* s, GenerateConfig& cfg, const char* default_scenari
   s->add_option("--out", cfg.out, "Output CSV file; the JSON sidecar is written next to it (.json)")->required();
   s->add_option("--assembly", cfg.assembly, "Assembly that makes the data (default: the study's first, M1)");
   s->add_option("--scenario", cfg.scenario, std::string("Scenario of the study (default: ") + default_scenario + ")");
-  cfg.seed_opt = s->add_option("--seed", cfg.seed, "Seed of noise and roads (default: the study's seed)")
-                     ->check(CLI::Validator(
-                         [](std::string& v) -> std::string {
-                           const bool digits = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos;
-                           return digits ? std::string() : "must be an integer >= 0, got '" + v + "'";
-                         },
-                         "INT>=0"));
+  addSeedOption(s, cfg.seed, "Seed of noise and roads (default: the study's seed)");
   s->add_option("--hidden-effect", cfg.hidden_effects,
                 "Make the data with this effect switched on (the study's assemblies lack it; for testing a diagnosis): "
                 "NAME[:param=value,...], e.g. bump_stop:stiffness=2e6,gap_m=0.02; repeatable; recorded in the sidecar")

@@ -2,6 +2,7 @@
 // Each subcommand lives in its own <name>_command.cpp and registers itself here.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -9,12 +10,63 @@
 #include "cli/commands.hpp"
 #include "dtwin/version.hpp"
 #include "common/errors.hpp"
+#include "common/names.hpp"
 #include "twin/distributed.hpp"
 
 using namespace dtwin;
 using namespace dtwin::cli;
 
 namespace {
+
+/// The names of an app's subcommands.
+std::vector<std::string> subcommandNames(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  return names;
+}
+
+/// "unknown command 'simulat' (known: ...; did you mean 'simulate'?)" when a word where a
+/// subcommand must stand names none; "" otherwise (CLI11 then reports what else is wrong).
+std::string unknownCommand(const CLI::App& root, int argc, char** argv) {
+  const CLI::App* app = &root;
+  std::string path;  // the subcommands chosen so far ("generate")
+  for (int i = 1; i < argc && app->get_require_subcommand_min() > 0; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-') return "";  // an option: CLI11 checks it
+    const std::vector<std::string> names = subcommandNames(*app);
+    const auto found = std::find(names.begin(), names.end(), word);
+    if (found == names.end()) return (path.empty() ? "" : path + ": ") + unknownNameRule("command", word, names);
+    app = app->get_subcommand(word);
+    path += (path.empty() ? "" : " ") + word;
+  }
+  return "";
+}
+
+/// A CLI11 parse error as one line: "<what> (see twin <command> --help)", naming the deepest
+/// subcommand that was chosen.
+std::string parseErrorLine(const CLI::App& root, const CLI::ParseError& e) {
+  std::string path = "twin";
+  const CLI::App* app = &root;
+  for (bool deeper = true; deeper;) {
+    deeper = false;
+    for (const CLI::App* sub : app->get_subcommands()) {
+      path += " " + sub->get_name();
+      app = sub;
+      deeper = true;
+      break;
+    }
+  }
+  std::string what = e.what();
+  for (char& c : what)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!what.empty() && what.back() == ' ') what.pop_back();
+  if (what == "A subcommand is required") what = "a subcommand is required (" + [&] {
+      std::string list;
+      for (const auto& n : subcommandNames(*app)) list += (list.empty() ? "" : ", ") + n;
+      return list;
+    }() + ")";
+  return what + " (see " + path + " --help)";
+}
 
 int runTwin(int argc, char** argv, std::string& error) {
   const std::string command = joinArgs(argc, argv);
@@ -36,11 +88,18 @@ int runTwin(int argc, char** argv, std::string& error) {
   commands.push_back(addCompareCommand(app, command));
   commands.push_back(addDiagnoseCommand(app, command));
 
+  if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
+    error = "error: " + unknown;
+    std::fprintf(stderr, "twin: %s\n", error.c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+    error = "error: " + parseErrorLine(app, e);
+    std::fprintf(stderr, "twin: %s\n", error.c_str());
+    return 2;
   }
   // Under MPI (mpirun -n K twin ...) the commands that simulate in bulk run on every rank and
   // spread their simulations (twin/distributed.hpp); the others run on the root alone.

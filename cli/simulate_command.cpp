@@ -126,7 +126,7 @@ CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line
   s->add_option("--out", sim.out, "Output CSV file (a folder with --assembly all); the sidecar is written next to it as .json")->required();
   s->add_option("--set", sim.sets, "Override a parameter: NAME=VALUE (e.g. tire.stiffness=2.0e5); repeatable; `twin list --parameters` lists names");
   s->add_option("--effect", sim.effects, "Add an effect: NAME[:param=value,...] (e.g. bump_stop:stiffness=5e6,gap_m=0.04); repeatable");
-  s->add_option("--seed", sim.seed, "Seed of random roads (default: the study's seed)")->check(CLI::NonNegativeNumber);
+  addSeedOption(s, sim.seed, "Seed of random roads (default: the study's seed)");
   s->add_option("--channels", sim.channels, "Only these channels (comma separated); time_s is always written")->delimiter(',');
   s->add_option("--window", sim.window, "Only rows with T0 <= time_s <= T1 (T0,T1)")->delimiter(',')->expected(2);
   s->add_option("--integrator", sim.integrator, "Override the study's integrator: rk-merson, rk3, rk-feldberg, cpodes, semi-explicit-euler2");

@@ -21,7 +21,7 @@ struct SynthesizeConfig {
   std::string study = defaultStudy(), calibration, assembly = "all", out, scenario = "field", channel = "hub_force_fl_N";
   long draws = 0, roads = 0, library = 0, block = 16;
   int threads = 0;
-  long long seed = -1;
+  std::optional<std::uint64_t> seed;  ///< unset: the study's
   std::vector<double> window;
   bool no_branch = false, no_fourth = false, quiet = false;
 };
@@ -48,7 +48,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   opt.road_library = cfg.library;
   opt.block = cfg.block;
   opt.threads = cfg.threads;
-  if (cfg.seed >= 0) opt.seed = static_cast<std::uint64_t>(cfg.seed);
+  if (cfg.seed) opt.seed = *cfg.seed;
   opt.scenario = cfg.scenario;
   opt.channel = cfg.channel;
   if (!cfg.window.empty()) {
@@ -116,7 +116,7 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
       ->capture_default_str()->check(CLI::Range(1L, 100000L));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores; never changes the result)")
       ->capture_default_str()->check(CLI::Range(0, 1024));
-  c->add_option("--seed", cfg->seed, "Seed of draws, roads and noise (default: the study's seed)")->check(CLI::Range(0LL, (1LL << 62)));
+  addSeedOption(c, cfg->seed, "Seed of draws, roads and noise (default: the study's seed)");
   c->add_option("--scenario", cfg->scenario, "Scenario with a random road")->capture_default_str();
   c->add_option("--channel", cfg->channel, "Channel kept")->capture_default_str();
   c->add_option("--window", cfg->window, "Time window kept, T0,T1 [s] (default 10,15)")->delimiter(',')->expected(2);

@@ -95,6 +95,13 @@ class LabChecker {
     const std::string rule = checkChannelName(r.channel, known_);
     if (!rule.empty()) throw InputError(at + ": channel", rule);
     if (!std::isfinite(r.value)) throw InputError(at + ": value", "must be finite, got " + formatExact(r.value));
+    if (r.time_s > plausibleLimit("s"))
+      throw InputError(at + ": time_s", "must be <= " + formatExact(plausibleLimit("s")) + " s (plausible range), got " + formatExact(r.time_s));
+    for (const auto& k : known_)
+      if (k.name == r.channel && std::abs(r.value) > plausibleLimit(k.unit))
+        throw InputError(at + ": value", "must lie in the plausible range [-" + formatExact(plausibleLimit(k.unit)) + ", " +
+                                             formatExact(plausibleLimit(k.unit)) + "] " + k.unit + " for " + r.channel + ", got " +
+                                             formatExact(r.value));
     auto key = std::make_pair(r.repetition, r.channel);
     auto it = last_.find(key);
     if (it != last_.end() && !(r.time_s > it->second))
@@ -135,6 +142,20 @@ std::vector<double> LabData::times(const std::string& channel) const {
   for (const auto& r : records)
     if (r.channel == channel) s.insert(r.time_s);
   return {s.begin(), s.end()};
+}
+
+double plausibleLimit(const std::string& unit) {
+  static const std::map<std::string, double> limits = {
+      {"N", 1e6},       // 1 MN: about 70 times the weight of the vehicle on one wheel
+      {"m", 10.0},      // travel, deflection, heave, road height
+      {"m/s", 200.0},   // speeds and deflection rates
+      {"rad", 10.0},    // pitch and roll angles
+      {"m/s^2", 1e4},   // about 1000 g
+      {"rad/s^2", 1e5},
+      {"s", 1e6},       // time since the scenario start: 11 days
+  };
+  const auto it = limits.find(unit);
+  return it == limits.end() ? 1e12 : it->second;
 }
 
 std::vector<Channel> measurableChannels() {
@@ -335,6 +356,9 @@ FieldData parseFieldCsv(const std::string& text, const std::string& name) {
       double v = 0;
       if (!parseDouble(f[i], v)) throw InputError(at + ": " + header[i], "must be a number, got " + quoted(f[i]));
       if (!std::isfinite(v)) throw InputError(at + ": " + header[i], "must be finite, got " + f[i]);
+      // The file does not name its channel: the widest plausible range of any unit.
+      if (std::abs(v) > plausibleLimit(""))
+        throw InputError(at + ": " + header[i], "must lie in [-1e12, 1e12] (the plausible range of any channel), got " + f[i]);
       d.values.push_back(v);
     }
   }

@@ -54,6 +54,11 @@ LabData readLabCsv(const std::string& path, const std::vector<Channel>& known = 
 /// Validates lab data held in memory (the reader's rules; "record i" stands for line i + 2).
 void validateLabData(const LabData& data, const std::string& name, const std::vector<Channel>& known = measurableChannels());
 
+/// The largest magnitude a measured value in `unit` may have (the plausibility range [-limit,
+/// limit] of docs/data-files.md, "Plausible values"): far beyond what a road vehicle produces,
+/// so that only corrupt numbers (1e308 N, a mis-scaled column) are refused. Unknown units: 1e12.
+double plausibleLimit(const std::string& unit);
+
 /// Checks one channel name against `known`: "" if known, else the rule broken (unknown channel
 /// with the closest known name, or a wrong unit suffix with the expected one).
 std::string checkChannelName(const std::string& channel, const std::vector<Channel>& known = measurableChannels());
@@ -77,7 +82,7 @@ std::string fieldCsvText(const FieldData& data);
 void writeFieldCsv(const std::string& path, const FieldData& data);
 /// Parses field CSV text. Rules: header `run[,road_seed],t_<seconds>,...` with at least one time
 /// column, times finite and strictly increasing; every row has one field per column; run is a
-/// positive integer, unique; road_seed an integer in [0, 2^64); values finite.
+/// positive integer, unique; road_seed an integer in [0, 2^64); values finite, |v| <= 1e12.
 FieldData parseFieldCsv(const std::string& text, const std::string& name);
 FieldData readFieldCsv(const std::string& path);
 

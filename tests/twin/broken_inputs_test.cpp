@@ -1,0 +1,217 @@
+// A corpus of broken inputs, generated from the project's own valid files: every number of the
+// demo study and of the vehicle file replaced in turn by values no field accepts, and the lab
+// CSV broken in the ways loggers and hand edits break files. Each case must give exit code 2,
+// one line on stderr naming the broken file (and, where it has one, the field), and write
+// nothing.
+#include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using dtwin_test::freshDir;
+using dtwin_test::slurp;
+using dtwin_test::writeText;
+
+const std::string kSrc = DTWIN_SOURCE_DIR;
+
+struct Result {
+  int code;
+  std::string err;
+};
+
+Result twin(const std::string& args, const fs::path& dir) {
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + (dir / "out.txt").string() + " 2> " +
+                          (dir / "err.txt").string();
+  const int st = std::system(cmd.c_str());
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(dir / "err.txt")};
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> v;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) v.push_back(l);
+  return v;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& l : v) s += l + "\n";
+  return s;
+}
+
+/// One mutation of a TOML file: line `line` with the number of `key = <number>` replaced.
+struct TomlCase {
+  std::size_t line;
+  std::string key, bad, text;
+};
+
+/// Every `key = <number>` of a TOML text (plain or inside an inline table), each replaced by each
+/// of `bad` in turn.
+std::vector<TomlCase> numberMutations(const std::string& text, const std::vector<std::string>& bad) {
+  static const std::regex kv(R"(([A-Za-z_][A-Za-z_0-9]*)\s*=\s*(-?[0-9][0-9.eE+\-]*))");
+  std::vector<TomlCase> out;
+  const auto ls = lines(text);
+  for (std::size_t i = 0; i < ls.size(); ++i) {
+    const std::string code = ls[i].substr(0, ls[i].find('#'));
+    for (auto it = std::sregex_iterator(code.begin(), code.end(), kv); it != std::sregex_iterator(); ++it) {
+      for (const auto& b : bad) {
+        auto copy = ls;
+        copy[i] = code.substr(0, it->position(2)) + b + code.substr(it->position(2) + it->length(2));
+        out.push_back({i + 1, (*it)[1].str(), b, join(copy)});
+      }
+    }
+  }
+  return out;
+}
+
+/// The checks every case must pass.
+void expectRejected(const Result& r, const std::string& names_file, const std::string& names_field, const fs::path& must_not_exist) {
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_EQ(r.err.rfind("twin: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(names_file), std::string::npos) << "names the file " << names_file << ": " << r.err;
+  if (!names_field.empty()) {
+    EXPECT_NE(r.err.find(names_field), std::string::npos) << "names the field " << names_field << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(must_not_exist)) << "nothing may be written: " << must_not_exist;
+}
+
+const std::vector<std::string> kBadNumbers = {"nan", "inf", "-inf", "\"12\"", "true"};
+
+TEST(BrokenInputs, EveryNumberOfTheStudyFile) {
+  const fs::path dir = freshDir("broken_study");
+  const std::string base = slurp(kSrc + "/data/studies/demo.toml");
+  auto cases = numberMutations(base, kBadNumbers);
+  ASSERT_GT(cases.size(), 120u);
+  // The vehicle path is relative to the study: keep it pointing at the project's vehicle file.
+  const std::string vehicle = "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"";
+  int n = 0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE("demo.toml line " + std::to_string(c.line) + ": " + c.key + " = " + c.bad);
+    const fs::path study = dir / ("study_" + std::to_string(n++) + ".toml");
+    writeText(study, std::regex_replace(c.text, std::regex(R"(vehicle = "[^"]*")"), vehicle));
+    const fs::path out = dir / "out" / "lab.csv";
+    const Result r = twin("generate lab --quiet --study " + study.string() + " --out " + out.string(), dir);
+    expectRejected(r, study.string(), c.key, dir / "out");
+  }
+}
+
+TEST(BrokenInputs, EveryNumberOfTheVehicleFile) {
+  const fs::path dir = freshDir("broken_vehicle");
+  const std::string base = slurp(kSrc + "/data/vehicle/midsize_sedan.toml");
+  auto cases = numberMutations(base, {"nan", "inf", "\"12\""});
+  ASSERT_GT(cases.size(), 60u);
+  const std::string study_text = slurp(kSrc + "/data/studies/demo.toml");
+  int n = 0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE("midsize_sedan.toml line " + std::to_string(c.line) + ": " + c.key + " = " + c.bad);
+    const fs::path vehicle = dir / ("vehicle_" + std::to_string(n) + ".toml");
+    const fs::path study = dir / ("study_" + std::to_string(n++) + ".toml");
+    writeText(vehicle, c.text);
+    writeText(study, std::regex_replace(study_text, std::regex(R"(vehicle = "[^"]*")"), "vehicle = \"" + vehicle.string() + "\""));
+    const fs::path out = dir / "out" / "lab.csv";
+    const Result r = twin("generate lab --quiet --study " + study.string() + " --out " + out.string(), dir);
+    expectRejected(r, vehicle.string(), "", dir / "out");
+  }
+}
+
+TEST(BrokenInputs, LabCsvBrokenAsLoggersAndEditorsBreakThem) {
+  const fs::path dir = freshDir("broken_lab");
+  const fs::path good = dir / "good.csv";
+  const Result made = twin("generate lab --quiet --repetitions 2 --out " + good.string(), dir);
+  ASSERT_EQ(made.code, 0) << made.err;
+  const auto ls = lines(slurp(good));
+  ASSERT_GT(ls.size(), 4u);
+  const std::string header = ls[0];
+  const std::string row = ls[2];
+  const auto cells = [&](const std::string& r) {
+    std::vector<std::string> v;
+    std::stringstream s(r);
+    for (std::string c; std::getline(s, c, ',');) v.push_back(c);
+    return v;
+  };
+  const auto withCell = [&](std::size_t col, const std::string& value) {
+    auto v = cells(row);
+    v[col] = value;
+    std::string r;
+    for (std::size_t k = 0; k < v.size(); ++k) r += (k ? "," : "") + v[k];
+    auto copy = ls;
+    copy[2] = r;
+    return join(copy);
+  };
+  const std::size_t ncol = cells(header).size();
+  std::vector<std::pair<std::string, std::string>> cases;  // (what, text)
+  for (std::size_t col = 0; col < ncol; ++col)
+    for (const std::string bad : {"", "abc", "nan", "inf", "-inf", "1e308", "-1e308", "1,2", "0x10"})
+      cases.push_back({"column " + std::to_string(col + 1) + " = '" + bad + "'", withCell(col, bad)});
+  {
+    auto copy = ls;
+    copy[2] = row + ",7";
+    cases.push_back({"extra cell", join(copy)});
+    copy = ls;
+    copy[2] = row.substr(0, row.rfind(','));
+    cases.push_back({"missing cell", join(copy)});
+    copy = ls;
+    copy[0] = "repetition,time,channel,value";
+    cases.push_back({"renamed column", join(copy)});
+    copy = ls;
+    copy.erase(copy.begin());
+    cases.push_back({"no header", join(copy)});
+    cases.push_back({"header only", header + "\n"});
+    cases.push_back({"empty file", ""});
+    cases.push_back({"binary", std::string("\x00\x01\x02\xff\xfe", 5)});
+  }
+  int n = 0;
+  for (const auto& [what, text] : cases) {
+    SCOPED_TRACE(what);
+    const fs::path lab = dir / ("lab_" + std::to_string(n++) + ".csv");
+    writeText(lab, text);
+    const Result r = twin("calibrate --quiet --assembly M1 --data " + lab.string() + " --out " + (dir / "cal").string(), dir);
+    expectRejected(r, lab.string(), "", dir / "cal");
+  }
+}
+
+TEST(BrokenInputs, CommandLinesGetOneLineNamingTheCommand) {
+  const fs::path dir = freshDir("broken_cli");
+  struct Case {
+    std::string args, expect;
+  };
+  const std::vector<Case> cases = {
+      {"simulat", "unknown command 'simulat'"},
+      {"simulat", "did you mean 'simulate'"},
+      {"generate lb --out x.csv", "generate: unknown command 'lb'"},
+      {"", "a subcommand is required"},
+      {"generate", "(see twin generate --help)"},
+      {"simulate --bogus --out " + (dir / "o" / "x.csv").string(), "--bogus"},
+      {"simulate --out", "--out"},
+      {"simulate --seed -3 --out " + (dir / "o" / "x.csv").string(), "--seed: must be an integer"},
+      {"simulate --seed 99999999999999999999999 --out " + (dir / "o" / "x.csv").string(), "--seed: must be an integer"},
+      {"calibrate --seed 1e3 --data x.csv --out " + (dir / "o").string(), "--seed"},
+      {"calibrate --threads -1 --data x.csv --out " + (dir / "o").string(), "(see twin calibrate --help)"},
+      {"simulate --accuracy -1 --out " + (dir / "o" / "x.csv").string(), "--accuracy"},
+      {"simulate --max-step 0 --out " + (dir / "o" / "x.csv").string(), "--max-step"},
+      {"simulate --output-rate -1000 --out " + (dir / "o" / "x.csv").string(), "--output-rate"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    const Result r = twin(c.args, dir);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "o"));
+  }
+}
+
+}  // namespace

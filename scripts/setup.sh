@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project needs (only those that are missing).
-# Safe to run repeatedly. Needs root (or sudo) for apt-get.
+# Safe to run repeatedly. Needs root (or sudo) for apt-get. `setup.sh demo`: the demo's only.
 set -euo pipefail
 PKGS=(build-essential cmake pkg-config git
       libsimbody-dev libeigen3-dev libnlopt-cxx-dev libnlopt-dev
@@ -8,6 +8,14 @@ PKGS=(build-essential cmake pkg-config git
       libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
       gnuplot-nox chromium    # gnuplot: `twin report`; chromium: its rendering test
       libopenmpi-dev openmpi-bin)   # MPI: `mpirun -n K twin ...` (docs/cluster.md)
+# `setup.sh demo`: only what the demo needs (no test framework, no browser for the report test).
+if [ "${1:-}" = "demo" ]; then
+  keep=()
+  for p in "${PKGS[@]}"; do
+    case "$p" in googletest|libgtest-dev|libgmock-dev|chromium) ;; *) keep+=("$p") ;; esac
+  done
+  PKGS=("${keep[@]}")
+fi
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -40,7 +40,7 @@ LabData sample() {
   for (long rep = 1; rep <= 3; ++rep)
     for (const char* ch : {"hub_force_fl_N", "susp_defl_fl_m"})
       for (double t : {6.005, 6.1, 7.25})
-        d.records.push_back({rep, t, ch, std::sqrt(2.0) * 1000.0 * rep + t / 3.0});
+        d.records.push_back({rep, t, ch, (std::string(ch) == "hub_force_fl_N" ? 1000.0 : 0.01) * (std::sqrt(2.0) * rep + t / 3000.0)});
   d.records.push_back({4, 0.0, "chassis_pitch_acc_radps2", 1e-300});
   d.records.push_back({4, 0.1 + 0.2, "chassis_pitch_acc_radps2", -0.1});
   return d;
@@ -68,6 +68,16 @@ TEST(LabCsv, RoundTripIsExact) {
   const std::string path = ::testing::TempDir() + "/measurement/lab.csv";
   writeLabCsv(path, d);
   EXPECT_EQ(readLabCsv(path).records.size(), d.records.size());
+}
+
+TEST(LabCsv, ValuesOutsideTheirUnitsPlausibleRangeAreRefused) {
+  // Finite, yet no road vehicle measures them: 2 MN at a hub, 11 m of strut deflection.
+  EXPECT_NE(labError(H + "1,6.0,hub_force_fl_N,2e6\n").find("lab.csv:2: value: must lie in the plausible range [-1e+06, 1e+06] N"),
+            std::string::npos);
+  EXPECT_NE(labError(H + "1,6.0,susp_defl_fl_m,-11\n").find("[-10, 10] m for susp_defl_fl_m"), std::string::npos);
+  EXPECT_EQ(labError(H + "1,6.0,hub_force_fl_N,-9.99e5\n"), "(no error)");
+  EXPECT_NE(labError(H + "1,2e6,hub_force_fl_N,1\n").find("time_s: must be <= 1e+06 s"), std::string::npos);
+  EXPECT_NE(fieldError("run,t_1.0\n1,1e13\n").find("plausible range of any channel"), std::string::npos);
 }
 
 TEST(LabCsv, AcceptsWhatSpreadsheetsWrite) {

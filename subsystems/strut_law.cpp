@@ -4,6 +4,7 @@
 
 #include "common/errors.hpp"
 #include "common/names.hpp"
+#include "subsystems/registry.hpp"
 
 namespace dtwin {
 
@@ -29,25 +30,18 @@ double LinearStrut::calcForce(const StrutState& s, ParamValues p) const {
 // The one list of strut laws: each entry makes a law, which names itself. Adding a law is its
 // class and one line here (docs/extending.md).
 namespace {
-using StrutFactory = std::unique_ptr<StrutLaw> (*)();
-const std::vector<StrutFactory>& strutRegistry() {
-  static const std::vector<StrutFactory> r = {
+const std::vector<Factory<StrutLaw>>& strutRegistry() {
+  static const std::vector<Factory<StrutLaw>> r = {
       [] { return std::unique_ptr<StrutLaw>(std::make_unique<LinearStrut>()); },
   };
   return r;
 }
 }  // namespace
 
-std::vector<std::string> strutLawNames() {
-  std::vector<std::string> out;
-  for (const auto& make : strutRegistry()) out.push_back(make()->name());
-  return out;
-}
+std::vector<std::string> strutLawNames() { return registeredNames(strutRegistry()); }
 
 std::unique_ptr<StrutLaw> makeStrutLaw(const std::string& name, const std::string& where) {
-  for (const auto& make : strutRegistry())
-    if (auto law = make(); law->name() == name) return law;
-  throw InputError(where, unknownNameRule("strut option", name, strutLawNames()));
+  return makeRegistered(strutRegistry(), name, "strut option", where);
 }
 
 }  // namespace dtwin

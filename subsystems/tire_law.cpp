@@ -5,6 +5,7 @@
 
 #include "common/errors.hpp"
 #include "common/names.hpp"
+#include "subsystems/registry.hpp"
 
 namespace dtwin {
 namespace {
@@ -122,9 +123,8 @@ double Pac2002Tire::operatingDeflection(ParamValues p) const {
 // The one list of tire laws: each entry makes a law, which names itself. Adding a law is its
 // class and one line here (docs/extending.md).
 namespace {
-using TireFactory = std::unique_ptr<TireLaw> (*)();
-const std::vector<TireFactory>& tireRegistry() {
-  static const std::vector<TireFactory> r = {
+const std::vector<Factory<TireLaw>>& tireRegistry() {
+  static const std::vector<Factory<TireLaw>> r = {
       [] { return std::unique_ptr<TireLaw>(std::make_unique<FialaTire>()); },
       [] { return std::unique_ptr<TireLaw>(std::make_unique<Pac2002Tire>()); },
   };
@@ -132,16 +132,10 @@ const std::vector<TireFactory>& tireRegistry() {
 }
 }  // namespace
 
-std::vector<std::string> tireLawNames() {
-  std::vector<std::string> out;
-  for (const auto& make : tireRegistry()) out.push_back(make()->name());
-  return out;
-}
+std::vector<std::string> tireLawNames() { return registeredNames(tireRegistry()); }
 
 std::unique_ptr<TireLaw> makeTireLaw(const std::string& name, const std::string& where) {
-  for (const auto& make : tireRegistry())
-    if (auto law = make(); law->name() == name) return law;
-  throw InputError(where, unknownNameRule("tire option", name, tireLawNames()));
+  return makeRegistered(tireRegistry(), name, "tire option", where);
 }
 
 }  // namespace dtwin

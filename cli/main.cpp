@@ -47,24 +47,20 @@ std::string unknownCommand(const CLI::App& root, int argc, char** argv) {
 std::string parseErrorLine(const CLI::App& root, const CLI::ParseError& e) {
   std::string path = "twin";
   const CLI::App* app = &root;
-  for (bool deeper = true; deeper;) {
-    deeper = false;
-    for (const CLI::App* sub : app->get_subcommands()) {
-      path += " " + sub->get_name();
-      app = sub;
-      deeper = true;
-      break;
-    }
+  while (!app->get_subcommands().empty()) {
+    app = app->get_subcommands().front();
+    path += " " + app->get_name();
   }
   std::string what = e.what();
   for (char& c : what)
     if (c == '\n' || c == '\r') c = ' ';
   while (!what.empty() && what.back() == ' ') what.pop_back();
-  if (what == "A subcommand is required") what = "a subcommand is required (" + [&] {
-      std::string list;
-      for (const auto& n : subcommandNames(*app)) list += (list.empty() ? "" : ", ") + n;
-      return list;
-    }() + ")";
+  if (what == "A subcommand is required") {
+    what = "a subcommand is required (";
+    for (const auto& n : subcommandNames(*app)) what += n + ", ";
+    what.resize(what.size() - 2);
+    what += ")";
+  }
   return what + " (see " + path + " --help)";
 }
 

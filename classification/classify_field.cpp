@@ -132,13 +132,24 @@ std::vector<nlohmann::json> readSyntheses(const std::vector<AssemblySpec>& targe
       const auto w = j.at("window_s").get<std::vector<double>>();
       const double rate = j.at("output_rate_hz").get<double>();
       bool same = samples == p;
+      int first_diff = -1;  // the first sample whose time differs (when the counts agree)
       for (int k = 0; same && k < p; ++k)
-        same = std::abs(field.times_s[static_cast<std::size_t>(k)] - (w.at(0) + k / rate)) < 1e-9;
-      if (!same)
+        if (std::abs(field.times_s[static_cast<std::size_t>(k)] - (w.at(0) + k / rate)) >= 1e-9) {
+          same = false;
+          first_diff = k;
+        }
+      if (!same) {
+        // Two windows with the same ends and counts can still differ inside: name the first sample.
+        const std::string inside =
+            first_diff < 0 ? ""
+                           : "; they differ first at sample " + std::to_string(first_diff + 1) + ": " +
+                                 formatExact(w.at(0) + first_diff / rate) + " s in the synthesis (" + formatExact(rate) +
+                                 " Hz), " + formatExact(field.times_s[static_cast<std::size_t>(first_diff)]) + " s in the field data";
         throw InputError(where, "the synthesis window (" + std::to_string(samples) + " samples, " + formatExact(w.at(0)) + ".." +
                                     formatExact(w.at(1)) + " s) is not the field data's (" + std::to_string(p) + " samples, " +
-                                    formatExact(field.times_s.front()) + ".." + formatExact(field.times_s.back()) +
-                                    " s); synthesize with the field data's window (synthesis options t_begin_s, t_end_s)");
+                                    formatExact(field.times_s.front()) + ".." + formatExact(field.times_s.back()) + " s)" +
+                                    inside + "; synthesize with the field data's window (synthesis options t_begin_s, t_end_s)");
+      }
       const std::string ch = j.at("channel").get<std::string>();
       if (!field_channel.empty() && ch != field_channel)
         throw InputError(where, "the synthesis is of channel " + ch + ", the field data of " + field_channel);

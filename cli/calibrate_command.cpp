@@ -24,7 +24,7 @@ struct CalibrateConfig {
   int threads = 0;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1, max_rounds = -1, ridge_steps = -1;
   std::optional<std::uint64_t> seed;  ///< unset: the study's
-  bool quiet = false;
+  bool quiet = false, force = false;
 };
 
 int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
@@ -36,6 +36,15 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   if (cfg.assembly == "all") targets = study.assemblies();
   else targets.push_back(study.assembly(cfg.assembly));
   if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
+  {
+    Study sized = study;
+    overrideSize(sized, "lhs_points", cfg.lhs_points, "--lhs-points");
+    overrideSize(sized, "gibbs_iterations", cfg.iterations, "--iterations");
+    overrideSize(sized, "optimizer_starts", cfg.starts, "--starts");
+    std::vector<std::string> stages;
+    for (const auto& a : targets) stages.push_back("calibrate " + a.id);
+    checkCommandWork(sized, stages, cfg.force);
+  }
 
   calib::CalibrationOptions opt = calib::CalibrationOptions::fromStudy(study);
   opt.threads = cfg.threads;
@@ -153,6 +162,7 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
       ->check(CLI::Range(0L, 1000L));
   addSeedOption(c, cfg->seed, "Seed of the design and the sampler (default: the study's seed)");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
+  addForceOption(c, cfg->force);
   CommandHandle handle{c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }, {}};
   // Library errors name CalibrationOptions fields ("calibration.gibbs_burn_in"); the fields whose
   // flag is not "--" + the field with '_' as '-':

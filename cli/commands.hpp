@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "twin/study.hpp"
+
 namespace dtwin::cli {
 
 /// A registered subcommand: `run` is called when `app` was chosen on the command line.
@@ -32,6 +34,15 @@ std::string joinArgs(int argc, char** argv);
 /// The `--seed` option of every command: an integer in [0, 2^64 - 1], written as digits (anything
 /// else, a sign or an overflow included, is a one-line parse error); unset means the study's seed.
 CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, const std::string& help);
+/// The `--force` flag of the commands that run many simulations (twin/work.hpp).
+void addForceOption(CLI::App* app, bool& force);
+/// A command-line size override (`--runs`, `--lhs-points`, ...; <= 0: not given) into
+/// study.sizes.<field>, checked against that size's limit; InputError naming `flag`.
+void overrideSize(Study& study, const std::string& field, long value, const std::string& flag);
+/// Refuses with an InputError naming the study file when the estimated work of the study's
+/// `stages` (prefixes: "lab", "field", "calibrate", "calibrate M1", "synthesize", ...), times
+/// `repeat`, exceeds the limits of twin/work.hpp, unless `force`.
+void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat = 1);
 /// True when stderr is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
 /// True on the rank that prints and writes (always, without MPI).

@@ -5,7 +5,9 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "common/errors.hpp"
 #include "twin/distributed.hpp"
+#include "twin/work.hpp"
 
 namespace fs = std::filesystem;
 
@@ -25,6 +27,28 @@ CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, co
           },
           help)
       ->type_name("UINT64");
+}
+
+void addForceOption(CLI::App* app, bool& force) {
+  app->add_flag("--force", force,
+                "Run even when the estimated work exceeds the limits (docs/study-file.md, Limits); the sizes' own limits still hold");
+}
+
+void overrideSize(Study& study, const std::string& field, long value, const std::string& flag) {
+  if (value <= 0) return;  // not given
+  const long most = StudySizes::maximum(field);
+  if (value > most)
+    throw InputError(flag, "must be at most " + std::to_string(most) + " (the limit of sizes." + field + "), got " + std::to_string(value));
+  study.sizes.at(field) = value;
+}
+
+void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat) {
+  auto work = selectStages(estimateStudyWork(study), stages);
+  for (auto& w : work) {
+    w.simulations *= repeat;
+    w.simulated_s *= repeat;
+  }
+  checkWork(work, study.path, force);
 }
 
 std::string defaultStudy() {

@@ -21,13 +21,23 @@ struct CoverageConfig {
   int seeds = 20, threads = 0;
   long long first_seed = 1001;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
-  bool quiet = false;
+  bool quiet = false, force = false;
 };
 
 int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
   for (const auto& id : cfg.assemblies) study.assembly(id);  // validates the ids
   if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
+  {
+    Study sized = study;
+    overrideSize(sized, "lhs_points", cfg.lhs_points, "--lhs-points");
+    overrideSize(sized, "gibbs_iterations", cfg.iterations, "--iterations");
+    overrideSize(sized, "optimizer_starts", cfg.starts, "--starts");
+    std::vector<std::string> stages;
+    for (const auto& id : cfg.assemblies) stages.push_back("calibrate " + id);
+    if (stages.empty()) stages.push_back("calibrate");
+    checkCommandWork(sized, stages, cfg.force, cfg.seeds);  // each seed is one calibration
+  }
   calib::CoverageOptions o;
   o.seeds = cfg.seeds;
   o.first_seed = static_cast<std::uint64_t>(cfg.first_seed);
@@ -99,6 +109,7 @@ CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line
   c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
   c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addForceOption(c, cfg->force);
   CommandHandle handle{c, [cfg, command_line] { return runCoverage(*cfg, command_line); }, {}};
   // Library errors name CoverageOptions and CalibrationOptions fields ("coverage.out_dir",
   // "calibration.gibbs_burn_in"); the fields whose flag is not "--" + the field with '_' as '-':

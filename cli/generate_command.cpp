@@ -31,6 +31,7 @@ struct GenerateConfig {
   std::vector<std::string> hidden_effects;  ///< --hidden-effect NAME[:param=value,...], repeatable
   std::string times = "auto";               ///< lab: --times auto|all
   double rate = 0;                          ///< lab: --rate HZ (0: not given)
+  bool force = false;
   std::vector<std::string> channels;        ///< lab: --channels a,b,c
   bool quiet = false;
   CLI::Option* rate_opt = nullptr;
@@ -84,6 +85,11 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   if (cfg.rate_opt && cfg.rate_opt->count()) opt.rate_hz = cfg.rate;
   opt.channels = cfg.channels;
   opt.repetitions = cfg.repetitions;
+  {
+    Study sized = study;
+    overrideSize(sized, "lab_repetitions", cfg.repetitions, "--repetitions");
+    checkCommandWork(sized, {"lab"}, cfg.force);
+  }
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.command = command;
   LabResult r;
@@ -127,6 +133,11 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
   }
   opt.hidden_effects = parseHidden(cfg.hidden_effects);
   opt.runs = cfg.runs;
+  {
+    Study sized = study;
+    overrideSize(sized, "field_runs", cfg.runs, "--runs");
+    checkCommandWork(sized, {"field"}, cfg.force);
+  }
   opt.threads = cfg.threads;
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.command = command;
@@ -161,6 +172,7 @@ void commonOptions(CLI::App* s, GenerateConfig& cfg, const char* default_scenari
                 "NAME[:param=value,...], e.g. bump_stop:stiffness=2e6,gap_m=0.02; repeatable; recorded in the sidecar")
       ->allow_extra_args(false);
   s->add_flag("--quiet", cfg.quiet, "Print nothing on success (no progress line)");
+  addForceOption(s, cfg.force);
 }
 
 }  // namespace
@@ -176,7 +188,7 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
                               "repetitions, at a few significant times (tidy CSV repetition,time_s,channel,value; docs/data-files.md)");
   commonOptions(l, *lab, "lab");
   l->add_option("--repetitions", lab->repetitions, "Repetitions (default: the study's sizes.lab_repetitions)")
-      ->check(CLI::Range(1L, 1000000L));
+      ->check(CLI::Range(1L, StudySizes::maximum("lab_repetitions")));
   l->add_option("--times", lab->times,
                 "auto: the study's [lab] times_s, else the automatic times (default); all: every output sample of the "
                 "noise-free run in --window at --rate")
@@ -193,7 +205,7 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
                               "Field data: N runs on independent random roads of the field scenario, a window of one channel at "
                               "the output rate, plus noise (CSV matrix run,road_seed,t_10.000,...; docs/data-files.md)");
   commonOptions(f, *field, "field");
-  f->add_option("--runs", field->runs, "Runs (default: the study's sizes.field_runs)")->check(CLI::Range(1L, 100000000L));
+  f->add_option("--runs", field->runs, "Runs (default: the study's sizes.field_runs)")->check(CLI::Range(1L, StudySizes::maximum("field_runs")));
   f->add_option("--threads", field->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
   f->add_option("--channel", field->channel, "Channel to keep")->capture_default_str();
   f->add_option("--window", field->window, "Time window kept, T0,T1 [s] (default 10,15)")->delimiter(',')->expected(2);

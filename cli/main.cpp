@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "dtwin/version.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/names.hpp"
 #include "twin/distributed.hpp"
 
@@ -51,10 +52,7 @@ std::string parseErrorLine(const CLI::App& root, const CLI::ParseError& e) {
     app = app->get_subcommands().front();
     path += " " + app->get_name();
   }
-  std::string what = e.what();
-  for (char& c : what)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!what.empty() && what.back() == ' ') what.pop_back();
+  std::string what = oneLine(e.what());
   if (what == "A subcommand is required") {
     what = "a subcommand is required (";
     for (const auto& n : subcommandNames(*app)) what += n + ", ";
@@ -111,11 +109,11 @@ int runTwin(int argc, char** argv, std::string& error) {
       return c.run();
     }
   } catch (const InputError& e) {
-    error = std::string("error: ") + (chosen ? messageForCommand(*chosen, e.where(), e.rule()) : std::string(e.what()));
+    error = oneLine(std::string("error: ") + (chosen ? messageForCommand(*chosen, e.where(), e.rule()) : std::string(e.what())));
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 2;
   } catch (const std::exception& e) {
-    error = std::string("internal error: ") + e.what();
+    error = oneLine(std::string("internal error: ") + e.what());
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 1;
   }

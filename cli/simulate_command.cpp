@@ -93,14 +93,18 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
     RunResult r = sim.run(values, *road, sc);
     const std::string csv = all ? (fs::path(cfg.out) / (a.id + "_" + sc.name + ".csv")).string() : cfg.out;
     const double t_lo = cfg.window.empty() ? -1e300 : cfg.window[0], t_hi = cfg.window.empty() ? 1e300 : cfg.window[1];
-    writeFileAtomic(csv, r.trace.toCsv(channels, t_lo, t_hi));
-    const auto rec = runRecord(study, *model, sc, road->describe(), seed, values, opt, r.stats, Simulator::channels(), command);
-    writeFileAtomic(sidecarPath(csv), rec.dump(2) + "\n");
+    // A failed run writes no trace (a partial trace would pass for a result): only the summary
+    // of --assembly all records it.
+    if (r.stats.ok) {
+      writeFileAtomic(csv, r.trace.toCsv(channels, t_lo, t_hi));
+      const auto rec = runRecord(study, *model, sc, road->describe(), seed, values, opt, r.stats, Simulator::channels(), command);
+      writeFileAtomic(sidecarPath(csv), rec.dump(2) + "\n");
+    }
     const double peak = peakOf(r.trace, "hub_force_fl_N");
     if (!cfg.quiet)
       std::printf("%-4s %-34s %s  peak FL hub force %8.0f N  %6ld steps  %7.1f ms  -> %s\n", a.id.c_str(),
                   model->assembly().label().c_str(), r.stats.ok ? "ok    " : "FAILED", peak, r.stats.steps,
-                  1e3 * r.stats.wall_s, csv.c_str());
+                  1e3 * r.stats.wall_s, r.stats.ok ? csv.c_str() : "(no trace written)");
     if (!r.stats.ok) {
       ++failures;
       std::cerr << "twin: " << a.id << ": " << r.stats.message << "\n";
@@ -108,7 +112,8 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
     summary["runs"].push_back({{"assembly", a.id}, {"label", model->assembly().label()}, {"ok", r.stats.ok},
                                {"message", r.stats.message}, {"peak_hub_force_fl_N", peak},
                                {"static_hub_force_fl_N", r.trace.column("hub_force_fl_N").front()},
-                               {"integrator_steps", r.stats.steps}, {"wall_s", r.stats.wall_s}, {"trace", csv}});
+                               {"integrator_steps", r.stats.steps}, {"wall_s", r.stats.wall_s},
+                               {"trace", r.stats.ok ? nlohmann::json(csv) : nlohmann::json()}});
   }
   if (all) writeFileAtomic((fs::path(cfg.out) / "summary.json").string(), summary.dump(2) + "\n");
   return failures ? 1 : 0;

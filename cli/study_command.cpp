@@ -14,11 +14,15 @@ namespace {
 struct StudyConfig {
   std::string study = defaultStudy(), out = "out/study", lab, field;
   int threads = 0;
-  bool quiet = false;
+  bool quiet = false, force = false;
 };
 
 int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
+  std::vector<std::string> stages = {"calibrate", "synthesize"};
+  if (cfg.lab.empty()) stages.push_back("lab");
+  if (cfg.field.empty()) stages.push_back("field");
+  checkCommandWork(study, stages, cfg.force);
   study::StudyRunOptions o;
   o.threads = cfg.threads;
   o.lab_file = cfg.lab;
@@ -39,7 +43,6 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
-  if (!cfg.quiet) std::printf("study %s -> %s (rerun the same command to resume)\n", study.path.c_str(), cfg.out.c_str());
   const auto s = study::runStudy(study, o, cfg.out, progress, log);
   bar.finish();
   if (!cfg.quiet && isRootRank()) {  // under MPI the other ranks do not run the classification
@@ -65,6 +68,7 @@ CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line) {
   c->add_option("--field", cfg->field, "Use these field records (CSV matrix) instead of generating them");
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores; never changes the numbers)")->check(CLI::Range(0, 1024));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
+  addForceOption(c, cfg->force);
   return {c, [cfg, command_line] { return runStudyCommand(*cfg, command_line); }};
 }
 

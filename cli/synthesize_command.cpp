@@ -23,7 +23,7 @@ struct SynthesizeConfig {
   int threads = 0;
   std::optional<std::uint64_t> seed;  ///< unset: the study's
   std::vector<double> window;
-  bool no_branch = false, no_fourth = false, quiet = false;
+  bool no_branch = false, no_fourth = false, quiet = false, force = false;
 };
 
 int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
@@ -34,6 +34,15 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   else targets.push_back(study.assembly(cfg.assembly));
   if (!fs::is_directory(cfg.calibration)) throw InputError(cfg.calibration, "calibration folder not found (--calibration)");
   if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
+  {
+    Study sized = study;
+    overrideSize(sized, "posterior_draws", cfg.draws, "--draws");
+    overrideSize(sized, "roads_per_draw", cfg.roads, "--roads");
+    overrideSize(sized, "road_library", cfg.library, "--library");
+    std::vector<std::string> stages;
+    for (const auto& a : targets) stages.push_back("synthesize " + a.id);
+    checkCommandWork(sized, stages, cfg.force);
+  }
   // Read every posterior first: a missing or malformed one stops before any simulation.
   std::vector<calib::PosteriorSample> posteriors;
   for (const auto& a : targets) {
@@ -123,6 +132,7 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
   c->add_flag("--no-branch", cfg->no_branch, "Simulate every road from t = 0 (default: the smooth start once per draw)");
   c->add_flag("--no-fourth-moment", cfg->no_fourth, "Do not accumulate the moments Ledoit-Wolf needs");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
+  addForceOption(c, cfg->force);
   CommandHandle handle{c, [cfg, command_line] { return runSynthesize(*cfg, command_line); }, {}};
   // Library errors name SynthesisOptions fields ("synthesis.road_library"); the fields whose flag
   // is not "--" + the field with '_' as '-':

@@ -8,13 +8,30 @@
 
 namespace dtwin {
 
+/// `text` with every control byte (line ends, tabs, NUL, DEL) written as an escape (\r, \n, \t,
+/// \x00): a message that quotes a user's bytes stays on one line. Other bytes (UTF-8) are kept.
+inline std::string printable(const std::string& text) {
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (unsigned char c : text) {
+    if (c >= 0x20 && c != 0x7f) out += static_cast<char>(c);
+    else if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+  }
+  return out;
+}
+
 class InputError : public std::runtime_error {
  public:
   /// `where` names the file and the field or line ("study.toml: scenarios.lab.road.height_m"),
-  /// `rule` the rule that was broken ("must be > 0, got -0.2").
+  /// `rule` the rule that was broken ("must be > 0, got -0.2"). Both are kept on one line
+  /// (printable above): a quoted field that holds a line end cannot split the message.
   InputError(std::string where, std::string rule)
-      : std::runtime_error(where.empty() ? rule : where + ": " + rule),
-        where_(std::move(where)), rule_(std::move(rule)) {}
+      : std::runtime_error(where.empty() ? printable(rule) : printable(where) + ": " + printable(rule)),
+        where_(printable(where)), rule_(printable(rule)) {}
   const std::string& where() const { return where_; }
   const std::string& rule() const { return rule_; }
 

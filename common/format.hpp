@@ -8,4 +8,8 @@ namespace dtwin {
 /// the non-finite values). 17 digits round-trip a double.
 std::string formatNumber(double v, int digits = 6);
 
+/// `text` on one line: every run of white space (line ends included) becomes one space, and the
+/// ends are trimmed. Messages from other libraries (Simbody's span several lines) go through it.
+std::string oneLine(const std::string& text);
+
 }  // namespace dtwin

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project needs (only those that are missing).
-# Safe to run repeatedly. Needs root (or sudo) for apt-get. `setup.sh demo`: the demo's only.
+# Safe to run repeatedly. Needs root (or sudo) for apt-get. `setup.sh demo`: the demo's only;
+# `setup.sh fuzz`: also clang and its sanitizer/libFuzzer runtimes (scripts/fuzz.sh).
 set -euo pipefail
 PKGS=(build-essential cmake pkg-config git
       libsimbody-dev libeigen3-dev libnlopt-cxx-dev libnlopt-dev
@@ -15,6 +16,9 @@ if [ "${1:-}" = "demo" ]; then
     case "$p" in googletest|libgtest-dev|libgmock-dev|chromium) ;; *) keep+=("$p") ;; esac
   done
   PKGS=("${keep[@]}")
+fi
+if [ "${1:-}" = "fuzz" ]; then
+  PKGS+=(clang libclang-rt-dev)
 fi
 missing=()
 for p in "${PKGS[@]}"; do

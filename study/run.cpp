@@ -199,6 +199,12 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   const auto t_all = std::chrono::steady_clock::now();
   const fs::path out(out_dir);
   const bool root = Distributed::instance().isRoot();  // only the root writes files and runs stage 5
+  // The user's files are read and checked before anything is written: a bad --lab or --field
+  // leaves no study folder behind.
+  if (!options.lab_file.empty()) (void)readLabCsv(options.lab_file);
+  if (!options.field_file.empty()) (void)readFieldCsv(options.field_file);
+  if (fs::exists(out) && !fs::is_directory(out)) throw InputError(out_dir, "exists and is not a folder (--out)");
+  news.say("study " + study.path + " -> " + out_dir + " (rerun the same command to resume)");
   rootWrites([&] { fs::create_directories(out); });
   const auto assemblies = study.assemblies();
   if (assemblies.empty()) throw InputError(study.path, "the study defines no assemblies");

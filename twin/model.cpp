@@ -1,11 +1,14 @@
 #include "twin/model.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <functional>
 
 #include <limits>
 #include <toml++/toml.h>
 
 #include "common/errors.hpp"
+#include "twin/trace.hpp"
 
 namespace dtwin {
 namespace {
@@ -121,9 +124,12 @@ ParameterTable declareVehicleParameters() {
 }
 
 void loadVehicleFile(ParameterTable& table, const std::string& path) {
+  namespace fs = std::filesystem;
+  if (!fs::exists(path)) throw InputError(path, "vehicle file not found");
+  if (fs::is_directory(path)) throw InputError(path, "is a folder, not a vehicle file");
   toml::table root;
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(readFileBytes(path), path);
   } catch (const toml::parse_error& e) {
     throw InputError(path + ":" + std::to_string(e.source().begin.line), std::string("malformed TOML: ") + std::string(e.description()));
   }

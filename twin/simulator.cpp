@@ -8,6 +8,7 @@
 #include <Simbody.h>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/validate.hpp"
 #include "twin/rosenbrock.hpp"
 
@@ -27,13 +28,17 @@ void SimulationOptions::validate() const {
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
     check.require(false, "integrator", "must be one of " + list + ", got '" + integrator + "'");
   }
-  check.open01("accuracy", accuracy);
-  check.positive("max_step_s", max_step_s);
-  check.positive("obstacle_max_step_s", obstacle_max_step_s);
+  // Lower limits keep the work bounded: below them a run would take millions of steps (or, at a
+  // step of 1e-320 s, divide by a denormal) before it failed (docs/study-file.md).
+  check.require(accuracy >= 1e-10 && accuracy < 1, "accuracy", "must lie in [1e-10, 1), got " + formatNumber(accuracy));
+  check.require(max_step_s >= 1e-6 && max_step_s <= 10, "max_step_s", "must lie in [1e-6, 10] s, got " + formatNumber(max_step_s));
+  check.require(obstacle_max_step_s >= 1e-6 && obstacle_max_step_s <= 10, "obstacle_max_step_s",
+                "must lie in [1e-6, 10] s, got " + formatNumber(obstacle_max_step_s));
   check.nonNegative("obstacle_margin_before_s", obstacle_margin_before_s);
   check.nonNegative("obstacle_margin_after_s", obstacle_margin_after_s);
   check.require(output_rate_hz > 0 && output_rate_hz <= 1e6, "output_rate_hz", "must lie in (0, 1e6], got " + formatNumber(output_rate_hz));
   check.atLeast("max_internal_steps", max_internal_steps, 1);
+  check.require(max_wall_s > 0 && max_wall_s <= 1e6, "max_wall_s", "must lie in (0, 1e6] s, got " + formatNumber(max_wall_s));
 }
 
 nlohmann::json SimulationOptions::toJson() const {
@@ -626,9 +631,14 @@ struct Simulator::Impl {
                      std::vector<double>& times, State* end) {
     RunStats st;
     const std::string& method = opt.integrator;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(opt.max_wall_s);
+    long checks = 0;
     auto checkFinite = [&](double time) {
       for (double v : knots.back())
         if (!std::isfinite(v)) throw std::runtime_error("state became non-finite at t = " + std::to_string(time) + " s");
+      if (++checks % 256 == 0 && std::chrono::steady_clock::now() > deadline)
+        throw std::runtime_error("the run took longer than " + formatNumber(opt.max_wall_s) +
+                                 " s of wall time (simulation.max_wall_s) at t = " + std::to_string(time) + " s");
     };
     if (method == "rosenbrock") {
       RosenbrockOptions ro;
@@ -651,7 +661,7 @@ struct Simulator::Impl {
         if (end) *end = integ.getState();
       } catch (const std::exception& e) {
         st.ok = false;
-        st.message = std::string("simulation failed: ") + e.what();
+        st.message = oneLine(std::string("simulation failed: ") + e.what());
       }
       st.steps = integ.steps();
       st.steps_attempted = integ.attempts();
@@ -684,7 +694,7 @@ struct Simulator::Impl {
         if (end) *end = integ->getState();
       } catch (const std::exception& e) {
         st.ok = false;
-        st.message = std::string("simulation failed: ") + e.what();
+        st.message = oneLine(std::string("simulation failed: ") + e.what());
       }
       st.steps = integ->getNumStepsTaken();
       st.steps_attempted = integ->getNumStepsAttempted();

@@ -27,6 +27,7 @@ struct SimulationOptions {
   double obstacle_margin_after_s = 0.05;
   double output_rate_hz = 1000.0;
   long max_internal_steps = 2000000;     ///< a run taking more steps is reported as failed
+  double max_wall_s = 600.0;             ///< a run taking longer (wall clock) is reported as failed
   /// InputError "simulation.<field>: <rule>" (common/validate.hpp) when a field is out of range.
   void validate() const;
   nlohmann::json toJson() const;

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "twin/road_setting.hpp"
 #include "twin/toml_reader.hpp"
 
@@ -31,6 +32,15 @@ long StudySizes::* StudySizes::member(const std::string& name) {
   for (const auto& [n, m] : fields())
     if (n == name) return m;
   throw std::out_of_range("unknown study size '" + name + "'");
+}
+
+long StudySizes::maximum(const std::string& name) {
+  static const std::map<std::string, long> most = {
+      {"lab_repetitions", 10000},  {"field_runs", 100000},     {"lhs_points", 1000000},
+      {"gibbs_iterations", 20000000}, {"gibbs_burn_in", 20000000}, {"posterior_draws", 1000000},
+      {"roads_per_draw", 1000},    {"road_library", 10000000}, {"optimizer_starts", 1000}};
+  (void)member(name);  // DTWIN_CHECK on an unknown name
+  return most.at(name);
 }
 
 long StudySizes::at(const std::string& name) const { return this->*member(name); }
@@ -84,8 +94,11 @@ void readSubsystems(TableReader& top, Study& s) {
       }
       auto opts = r.strings(sub);
       if (opts.empty()) throw InputError(r.where(sub), "must list at least one option");
-      for (auto& o : opts) {
+      for (std::size_t i = 0; i < opts.size(); ++i) {
+        const auto& o = opts[i];
         const auto& ko = known.at(sub);
+        if (std::find(opts.begin(), opts.begin() + static_cast<long>(i), o) != opts.begin() + static_cast<long>(i))
+          throw InputError(r.where(sub), "option '" + o + "' is listed twice");
         if (std::find(ko.begin(), ko.end(), o) == ko.end()) throw InputError(r.where(sub), unknownNameRule(sub + " option", o, ko));
       }
       s.subsystems.push_back({sub, opts});
@@ -187,11 +200,13 @@ void readScenarios(TableReader& top, Study& s) {
       ScenarioSpec sc;
       sc.name = key;
       sc.duration_s = r.positive("duration_s", 15.0);
+      if (sc.duration_s > 86400) throw InputError(r.where("duration_s"), "must be at most 86400 s, got " + formatNumber(sc.duration_s));
       if (auto* sp = r.table("speed")) {
         TableReader rs(*sp, path, r.field("speed"));
         sc.speed.v_final_mps = rs.number("v_final_mps", 8.9408);
         sc.speed.ramp_s = rs.number("ramp_s", 5.0);
-        if (sc.speed.v_final_mps < 0) throw InputError(rs.where("v_final_mps"), "must be >= 0");
+        if (sc.speed.v_final_mps < 0 || sc.speed.v_final_mps > 100)
+          throw InputError(rs.where("v_final_mps"), "must lie in [0, 100] m/s, got " + formatNumber(sc.speed.v_final_mps));
         if (sc.speed.ramp_s < 0) throw InputError(rs.where("ramp_s"), "must be >= 0");
         rs.finish();
       }
@@ -217,6 +232,8 @@ void readSimulation(TableReader& top, Study& s) {
     o.obstacle_margin_before_s = r.number("obstacle_margin_before_s", o.obstacle_margin_before_s);
     o.obstacle_margin_after_s = r.number("obstacle_margin_after_s", o.obstacle_margin_after_s);
     o.output_rate_hz = r.number("output_rate_hz", o.output_rate_hz);
+    o.max_wall_s = r.number("max_wall_s", o.max_wall_s);
+    if (auto n = r.integer("max_internal_steps")) o.max_internal_steps = static_cast<long>(*n);
     r.finish();
     try {
       o.validate();
@@ -247,6 +264,9 @@ void readSizes(TableReader& top, Study& s) {
       if (!StudySizes{}.asMap().count(key)) continue;  // reported by finish()
       const long v = *r.integer(key);
       if (v <= 0) throw InputError(r.where(key), "must be a positive integer, got " + std::to_string(v));
+      const long most = StudySizes::maximum(key);
+      if (v > most)
+        throw InputError(r.where(key), "must be at most " + std::to_string(most) + " (docs/study-file.md, Limits), got " + std::to_string(v));
       s.sizes.at(key) = v;
     }
     r.finish();
@@ -375,6 +395,17 @@ void checkCalibratedAgainstVehicle(const Study& s) {
 
 }  // namespace
 
+/// Every scenario's output trace must fit in memory: duration x output rate at most 1e7 samples.
+void checkScenarioSamples(const Study& s) {
+  for (const auto& sc : s.scenarios) {
+    const double samples = sc.duration_s * s.simulation.output_rate_hz;
+    if (samples > 1e7)
+      throw InputError(s.path + ": scenarios." + sc.name + ".duration_s",
+                       "gives " + formatNumber(samples, 3) + " output samples at simulation.output_rate_hz = " +
+                           formatNumber(s.simulation.output_rate_hz) + " Hz; at most 1e7 (docs/study-file.md, Limits)");
+  }
+}
+
 /// The study file, table by table (each reader checks its own fields and reports unknown ones),
 /// then the cross-checks that need the whole study.
 Study loadStudy(const std::string& path) {
@@ -404,6 +435,7 @@ Study loadStudy(const std::string& path) {
   readLab(top, s);  // after [simulation]: lab times lie on its output grid
   readCalibrationSettings(top, s);
   top.finish();
+  checkScenarioSamples(s);
   checkCalibratedAgainstVehicle(s);
   for (const auto& a : s.assemblies()) s.makeModel(a);  // validates every assembly now
   return s;

@@ -82,6 +82,8 @@ struct StudySizes {
   /// The size called `name`; std::out_of_range for an unknown name.
   long at(const std::string& name) const;
   long& at(const std::string& name);
+  /// The largest value the study file may give `name` (docs/study-file.md, Limits).
+  static long maximum(const std::string& name);
   /// name -> value, as study.json records them.
   std::map<std::string, long> asMap() const;
 

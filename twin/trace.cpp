@@ -12,6 +12,8 @@
 namespace dtwin {
 
 std::string readFileBytes(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot be read");
   std::ostringstream s;

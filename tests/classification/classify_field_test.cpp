@@ -159,6 +159,16 @@ TEST(ClassifyField, PriorsSampleCovarianceAndMismatchedWindows) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is not the field data's"), std::string::npos) << e.what();
   }
+  // The same ends and count, one time moved inside: the message names the first differing sample
+  // (the two windows would otherwise read identically).
+  FieldData shifted = f;
+  shifted.times_s[7] += 0.0004;
+  try {
+    classifyField(w.study, shifted, "hub_force_fl_N", (w.dir / "synth").string(), FieldClassifyOptions{});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("differ first at sample 8"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(classifyField(w.study, f, "susp_defl_fl_m", (w.dir / "synth").string(), FieldClassifyOptions{}), InputError);
 }
 

@@ -183,6 +183,99 @@ TEST(BrokenInputs, LabCsvBrokenAsLoggersAndEditorsBreakThem) {
   }
 }
 
+// Values that are numbers of the right type, but would make the work unbounded (a grid of 1e-320 m,
+// billions of repetitions) or a file that is a folder: refused when the study is read, before any
+// work, with the field named.
+TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
+  const fs::path dir = freshDir("broken_unbounded");
+  const std::string base = std::regex_replace(slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
+                                              "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  struct Case {
+    std::string from, to, field;
+  };
+  const std::vector<Case> cases = {
+      {"dx_m = 0.01, tracks", "dx_m = 1e-320, tracks", "dx_m"},
+      // 8000 s at 15 m/s on a 0.01 m grid: each value fine alone, but 1.2e7 grid points a track
+      {"duration_s = 3.0\nspeed = { v_final_mps = 15.0", "duration_s = 8000.0\nspeed = { v_final_mps = 15.0", "dx_m"},
+      {"max_step_s = 0.2", "max_step_s = 1e-320", "max_step_s"},
+      {"obstacle_max_step_s = 2e-3", "obstacle_max_step_s = 1e-9", "obstacle_max_step_s"},
+      {"accuracy = 3e-4", "accuracy = 1e-300", "accuracy"},
+      {"lab_repetitions = 10", "lab_repetitions = 5000000000", "lab_repetitions"},
+      {"gibbs_iterations = 20000", "gibbs_iterations = 900000000", "gibbs_iterations"},
+      {"duration_s = 3.0", "duration_s = 1e9", "duration_s"},
+      {"v_final_mps = 4.0", "v_final_mps = 1e9", "v_final_mps"},
+      {"output_rate_hz = 1000.0", "output_rate_hz = 900000.0", "duration_s"},  // 15 s x 9e5 Hz > 1e7 samples
+      {R"(tire = ["pac2002", "fiala"])", R"(tire = ["pac2002", "fiala", "pac2002"])", "tire"},
+      {"[noise]", "[simulation.extra]\nx = 1\n[noise]", "simulation"},
+  };
+  int n = 0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.to);
+    const std::size_t at = base.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    std::string text = base;
+    text.replace(at, c.from.size(), c.to);
+    const fs::path study = dir / ("study_" + std::to_string(n++) + ".toml");
+    writeText(study, text);
+    // generate lab runs one short simulation when a study is accepted: a case that slips through
+    // fails the test quickly instead of running a study.
+    const Result r = twin("generate lab --quiet --study " + study.string() + " --out " + (dir / "out" / "lab.csv").string(), dir);
+    expectRejected(r, study.string(), c.field, dir / "out");
+  }
+  // Sizes that are each inside their limits but multiply up past the work limit: refused by the
+  // commands that would run them, naming the study and --force.
+  std::string big = base;
+  big.replace(big.find("posterior_draws = 150"), 21, "posterior_draws = 900000");
+  writeText(dir / "big.toml", big);
+  Result r = twin("study " + (dir / "big.toml").string() + " --quiet --out " + (dir / "out").string(), dir);
+  expectRejected(r, (dir / "big.toml").string(), "estimated work", dir / "out");
+  EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+  r = twin("calibrate --study " + (dir / "big.toml").string() + " --data " + kSrc + "/tests/fuzz/seeds/lab/two_channels.csv" +
+               " --assembly M1 --lhs-points 2000000 --out " + (dir / "out").string(),
+           dir);
+  expectRejected(r, "--lhs-points", "at most", dir / "out");
+  // A vehicle path that is a folder, and a study path that is a folder.
+  std::string folder = base;
+  folder = std::regex_replace(folder, std::regex(R"(vehicle = "[^"]*")"), "vehicle = \"" + dir.string() + "\"");
+  writeText(dir / "folder_vehicle.toml", folder);
+  r = twin("generate lab --quiet --study " + (dir / "folder_vehicle.toml").string() + " --out " + (dir / "out" / "l.csv").string(), dir);
+  expectRejected(r, dir.string(), "is a folder", dir / "out");
+  r = twin("list --study " + dir.string(), dir);
+  expectRejected(r, dir.string(), "is a folder", dir / "out");
+}
+
+// Files are written only after every input was read and checked, and a run that fails leaves no
+// trace behind.
+TEST(BrokenInputs, FailuresWriteNothing) {
+  const fs::path dir = freshDir("broken_nothing_written");
+  const std::string base = std::regex_replace(slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
+                                              "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  writeText(dir / "bad_lab.csv", "repetition,time_s,channel,value\n1,6,hub_force_fl_N,1\n\n1,5,hub_force_fl_N,2\n");
+  Result r = twin("study --quiet --lab " + (dir / "bad_lab.csv").string() + " --out " + (dir / "out").string(), dir);
+  expectRejected(r, "bad_lab.csv:4", "time_s", dir / "out");  // line 4: the blank line 3 is counted
+  r = twin("study --quiet --lab " + (dir / "missing.csv").string() + " --out " + (dir / "out").string(), dir);
+  expectRejected(r, "missing.csv", "", dir / "out");
+  r = twin("study --quiet --field " + (dir / "bad_lab.csv").string() + " --out " + (dir / "out").string(), dir);
+  expectRejected(r, "bad_lab.csv", "", dir / "out");
+
+  // A simulation that fails (step budget, wall-clock budget): exit 1, one line, no trace file.
+  for (const std::string budget : {"max_internal_steps = 20", "max_wall_s = 1e-9"}) {
+    SCOPED_TRACE(budget);
+    std::string text = base;
+    text.replace(text.find("[noise]"), 7, "[noise]");
+    text.replace(text.find("output_rate_hz = 1000.0"), 23, "output_rate_hz = 1000.0\n" + budget);
+    writeText(dir / "budget.toml", text);
+    r = twin("simulate --quiet --study " + (dir / "budget.toml").string() + " --assembly M1 --scenario lab --out " +
+                 (dir / "out" / "trace.csv").string(),
+             dir);
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+    EXPECT_NE(r.err.find("simulation failed"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out" / "trace.csv"));
+    EXPECT_FALSE(fs::exists(dir / "out" / "trace.json"));
+  }
+}
+
 TEST(BrokenInputs, CommandLinesGetOneLineNamingTheCommand) {
   const fs::path dir = freshDir("broken_cli");
   struct Case {

@@ -1,6 +1,7 @@
 #include "twin/roads/iso8608.hpp"
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "twin/scenario.hpp"
 #include "twin/toml_reader.hpp"
 
@@ -20,6 +21,7 @@ std::shared_ptr<const RoadSetting> IsoRoadSetting::parse(TableReader& rr) {
     if (!(rs->n_min > 0 && rs->n_max > rs->n_min)) throw InputError(rr.where("band_cycles_per_m"), "needs 0 < n_min < n_max");
   }
   rs->dx_m = rr.positive("dx_m", 0.01);
+  if (rs->dx_m < 1e-4) throw InputError(rr.where("dx_m"), "must be at least 1e-4 m (docs/study-file.md, Limits), got " + formatNumber(rs->dx_m));
   if (rs->n_max >= 0.25 / rs->dx_m) throw InputError(rr.where("dx_m"), "must give >= 4 points per shortest wavelength (dx < 0.25/n_max)");
   rs->taper_m = rr.positive("taper_m", 1.0);
   const std::string tracks = rr.string("tracks").value_or("independent");
@@ -27,6 +29,15 @@ std::shared_ptr<const RoadSetting> IsoRoadSetting::parse(TableReader& rr) {
   else if (tracks == "identical") rs->coherence = IsoRoadSpec::Coherence::Identical;
   else throw InputError(rr.where("tracks"), "must be \"independent\" or \"identical\", got \"" + tracks + "\"");
   return rs;
+}
+
+void IsoRoadSetting::check(const ScenarioSpec& s, const std::string& where) const {
+  // The grid covers the distance travelled plus margins (make() below); at most 1e7 points a track.
+  const double points = (s.speed.distance(s.duration_s) + 20.0) / dx_m;
+  if (points > 1e7)
+    throw InputError(where + ".dx_m", "gives " + formatNumber(points, 3) + " grid points over the " +
+                                          formatNumber(s.speed.distance(s.duration_s), 4) +
+                                          " m the scenario travels; at most 1e7 (docs/study-file.md, Limits)");
 }
 
 nlohmann::json IsoRoadSetting::toJson() const {

@@ -22,6 +22,7 @@ class IsoRoadSetting final : public RoadSetting {
   double featureTime_s() const override { return smooth_until_s > 0.0 ? smooth_until_s : 0.0; }
   double roughStart_s() const override { return smooth_until_s > 0.0 ? smooth_until_s : -1.0; }
   bool random() const override { return true; }
+  void check(const ScenarioSpec& s, const std::string& where) const override;
 };
 
 }  // namespace dtwin

@@ -1,0 +1,33 @@
+// One-line messages: printable() escapes the control bytes of quoted user text, InputError applies
+// it to both parts, and oneLine() folds another library's multi-line message.
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
+namespace {
+
+TEST(Messages, PrintableEscapesEveryControlByteAndKeepsUtf8) {
+  EXPECT_EQ(dtwin::printable("a\rb\nc\td"), "a\\rb\\nc\\td");
+  EXPECT_EQ(dtwin::printable(std::string("x\0y", 3)), "x\\x00y");
+  EXPECT_EQ(dtwin::printable("\x1b[31m\x7f"), "\\x1b[31m\\x7f");
+  EXPECT_EQ(dtwin::printable("Grüße, 95 %"), "Grüße, 95 %");
+}
+
+TEST(Messages, InputErrorIsOneLineWhateverItQuotes) {
+  const dtwin::InputError e("lab.csv:1", "header: unexpected column 'time\r\n_s'");
+  const std::string what = e.what();
+  EXPECT_EQ(what.find('\n'), std::string::npos);
+  EXPECT_EQ(what.find('\r'), std::string::npos);
+  EXPECT_EQ(what, "lab.csv:1: header: unexpected column 'time\\r\\n_s'");
+  EXPECT_EQ(e.rule(), "header: unexpected column 'time\\r\\n_s'");
+}
+
+TEST(Messages, OneLineFoldsWhiteSpaceRuns) {
+  EXPECT_EQ(dtwin::oneLine("SimTK Exception thrown at X.h:524:\n  Error detected\n  (Required.)\n"),
+            "SimTK Exception thrown at X.h:524: Error detected (Required.)");
+  EXPECT_EQ(dtwin::oneLine("  \n\t "), "");
+  EXPECT_EQ(dtwin::oneLine("one line"), "one line");
+}
+
+}  // namespace

@@ -1,0 +1,11 @@
+// Fuzz harness: the field CSV reader (twin/measurement.hpp parseFieldCsv).
+#include <string>
+
+#include "tests/fuzz/fuzz_common.hpp"
+#include "twin/measurement.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  dtwin::fuzz::guarded([&] { (void)dtwin::parseFieldCsv(text, "fuzz_field.csv"); });
+  return 0;
+}

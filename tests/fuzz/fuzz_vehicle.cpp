@@ -1,0 +1,15 @@
+// Fuzz harness: the vehicle data file reader (twin/model.hpp loadVehicleFile) into a fresh
+// declaration of every vehicle parameter.
+#include "tests/fuzz/fuzz_common.hpp"
+#include "twin/model.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace dtwin::fuzz;
+  static const auto path = scratch() / "vehicle.toml";
+  writeBytes(path, data, size);
+  guarded([&] {
+    dtwin::ParameterTable table = dtwin::declareVehicleParameters();
+    dtwin::loadVehicleFile(table, path.string());
+  });
+  return 0;
+}

@@ -1,0 +1,41 @@
+#pragma once
+// Bounded work: before a command starts, the work of each stage it will run is estimated from the
+// study's sizes (simulations, simulated seconds, memory), and a command whose estimate exceeds the
+// documented limits is refused with one line unless the user passes --force
+// (docs/study-file.md, "Limits"). Per-value limits (a size, a step, a grid) are checked when the
+// study file is read; these limits bound what the sizes multiply up to.
+#include <string>
+#include <vector>
+
+#include "twin/study.hpp"
+
+namespace dtwin {
+
+/// The estimated work of one stage of the method.
+struct StageWork {
+  std::string stage;         ///< "lab", "field", "calibrate M1", "synthesize M1", ...
+  double simulations = 0;    ///< simulations run (an upper estimate)
+  double simulated_s = 0;    ///< simulated seconds over all of them
+  double memory_bytes = 0;   ///< the largest data the stage holds at once
+};
+
+/// The limits a command may not exceed without --force.
+struct WorkLimits {
+  double simulated_s = 2e7;    ///< ~4x the paper-size study (4.8e6 s): days on 2 cores
+  double memory_bytes = 8e9;   ///< 8 GB
+};
+
+/// The stages of the whole method on `study` (`twin study`): lab, field, then calibrate and
+/// synthesize per assembly. Upper estimates: every adaptive round is counted, and the optimiser and
+/// the profile search at their budgets.
+std::vector<StageWork> estimateStudyWork(const Study& study);
+
+/// The stages of `all` named by one of `prefixes`: the whole name, or its first words ("calibrate"
+/// takes every assembly's, "calibrate M1" only M1's).
+std::vector<StageWork> selectStages(const std::vector<StageWork>& all, const std::vector<std::string>& prefixes);
+
+/// InputError naming `where` (the study file) when the sum over `stages` exceeds `limits`, unless
+/// `force`: "estimated work 3.1e+08 simulated s (calibrate M1 ...) exceeds the limit 2e+07 s; ...".
+void checkWork(const std::vector<StageWork>& stages, const std::string& where, bool force, const WorkLimits& limits = {});
+
+}  // namespace dtwin

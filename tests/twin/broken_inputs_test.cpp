@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -273,6 +274,63 @@ TEST(BrokenInputs, FailuresWriteNothing) {
     EXPECT_NE(r.err.find("simulation failed"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out" / "trace.csv"));
     EXPECT_FALSE(fs::exists(dir / "out" / "trace.json"));
+  }
+}
+
+/// Every file under `dir`, path -> bytes.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> m;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    m[fs::relative(e.path(), dir).string()] = e.is_regular_file() ? slurp(e.path()) : std::string("<dir>");
+  return m;
+}
+
+// Every command that writes, failing on a broken input, leaves an output folder that already holds
+// files byte-identical (nothing added, nothing changed, nothing removed).
+TEST(BrokenInputs, EveryCommandLeavesItsOutputFolderByteIdenticalOnFailure) {
+  const fs::path dir = freshDir("broken_identical");
+  const fs::path out = dir / "out";
+  fs::create_directories(out / "M1");
+  writeText(out / "previous.csv", "a,b\n1,2\n");
+  writeText(out / "M1" / "summary.json", "{\"assembly\": \"M1\"}\n");
+  writeText(out / "report.html", "<html>earlier</html>\n");
+  const std::string demo = std::regex_replace(slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
+                                              "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  std::string broken = demo;
+  broken.replace(broken.find("variance_N2 = 18000.0"), 21, "variance_N2 = nan");
+  writeText(dir / "broken.toml", broken);
+  writeText(dir / "good.toml", demo);
+  writeText(dir / "bad_lab.csv", "repetition,time_s,channel,value\n1,6,hub_force_fl_N,1e308\n");
+  writeText(dir / "bad_field.csv", "run,t_10.000\n1,x\n");
+  const std::string b = " --study " + (dir / "broken.toml").string();
+  const std::string g = " --study " + (dir / "good.toml").string();
+  const std::string o = out.string();
+  const std::vector<std::string> commands = {
+      "simulate" + b + " --out " + o + "/t.csv",
+      "simulate" + b + " --assembly all --out " + o,
+      "generate lab" + b + " --out " + o + "/lab.csv",
+      "generate field" + b + " --out " + o + "/field.csv",
+      "calibrate" + b + " --data " + (dir / "bad_lab.csv").string() + " --out " + o,
+      "calibrate" + g + " --data " + (dir / "bad_lab.csv").string() + " --out " + o,
+      "coverage" + b + " --out " + o,
+      "synthesize" + b + " --calibration " + o + " --out " + o,
+      "synthesize" + g + " --calibration " + o + " --out " + o,  // no posterior.csv in out/M1
+      "classify" + g + " --field " + (dir / "bad_field.csv").string() + " --synthetic " + o + " --out " + o,
+      "study " + (dir / "broken.toml").string() + " --out " + o,
+      "study " + (dir / "good.toml").string() + " --lab " + (dir / "bad_lab.csv").string() + " --out " + o,
+      "study " + (dir / "good.toml").string() + " --field " + (dir / "bad_field.csv").string() + " --out " + o,
+      "compare" + g + " --calibration " + o + "/M1 --data " + (dir / "bad_lab.csv").string() + " --out " + o,
+      "diagnose" + g + " --data " + (dir / "bad_lab.csv").string() + " --out " + o,
+      "report " + o + " --out " + o + "/report.html",  // not a study folder
+  };
+  const auto before = snapshot(dir);
+  for (const auto& c : commands) {
+    SCOPED_TRACE(c);
+    const Result r = twin(c + " --quiet", dir / "..");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+    EXPECT_EQ(r.err.find("--help)"), std::string::npos) << "an input error, not a command-line one: " << r.err;
+    EXPECT_EQ(snapshot(dir), before) << "the folder changed";
   }
 }
 

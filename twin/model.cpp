@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <functional>
-
 #include <limits>
 #include <toml++/toml.h>
 

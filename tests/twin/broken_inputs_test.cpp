@@ -263,7 +263,6 @@ TEST(BrokenInputs, FailuresWriteNothing) {
   for (const std::string budget : {"max_internal_steps = 20", "max_wall_s = 1e-9"}) {
     SCOPED_TRACE(budget);
     std::string text = base;
-    text.replace(text.find("[noise]"), 7, "[noise]");
     text.replace(text.find("output_rate_hz = 1000.0"), 23, "output_rate_hz = 1000.0\n" + budget);
     writeText(dir / "budget.toml", text);
     r = twin("simulate --quiet --study " + (dir / "budget.toml").string() + " --assembly M1 --scenario lab --out " +

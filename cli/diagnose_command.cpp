@@ -40,7 +40,7 @@ struct CompareConfig {
   std::string study = defaultStudy(), calibration, out;
   std::vector<std::string> data;
   int draws = 30, threads = 0;
-  bool quiet = false;
+  bool quiet = false, force = false;
 };
 
 int runCompare(const CompareConfig& cfg, const std::string& command) {
@@ -53,6 +53,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   const calib::PosteriorSample& sample = folder.posterior;
   calib::LabObjective obj(study, assembly, sets, setup);
   const auto rows = diag::posteriorRows(sample.names, sample.theta, obj.names(), cfg.draws, sample.path);
+  checkWork({diag::estimateCompareWork(sets, rows.size())}, "--data", cfg.force);
   const auto noise = diag::estimateChannelNoise(study, sets);
   if (!cfg.quiet)
     std::printf("comparing %s (%s) from %s with %zu measurement file%s at %zu posterior draws\n", assembly.id.c_str(),
@@ -104,7 +105,7 @@ struct DiagnoseConfig {
   std::vector<std::string> data, holdout, effects, apply;
   int threads = 0, candidates = 3, draws = 20;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
-  bool quiet = false;
+  bool quiet = false, force = false;
 };
 
 std::vector<std::string> splitCommas(const std::vector<std::string>& v) {
@@ -143,6 +144,8 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   o.apply = splitCommas(cfg.apply);
   o.threads = cfg.threads;
   o.command = command;
+  o.validate();
+  checkWork(diag::estimateDiagnoseWork(study, assembly, fit, hold, o), "--data", cfg.force);
   const std::string out = cfg.out.empty() ? (fs::temp_directory_path() / ("twin-diagnose-" + std::to_string(::getpid()))).string() : cfg.out;
   const bool bar_on = !cfg.quiet && stderrIsTerminal();
   if (!cfg.quiet) {
@@ -220,6 +223,7 @@ CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line)
   c->add_option("--draws", cfg->draws, "Posterior rows (evenly spaced) for the predictive band")->capture_default_str()->check(CLI::Range(1, 100000));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
   c->add_option("--out", cfg->out, "Folder for compare.json (figures and the overlay series)");
+  addForceOption(c, cfg->force);
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
   return {c, [cfg, command_line] { return runCompare(*cfg, command_line); }};
 }
@@ -244,6 +248,7 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
   c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
   c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
   c->add_option("--out", cfg->out, "Folder: diagnosis.json, comparisons/, calibrations/ (resumable)");
+  addForceOption(c, cfg->force);
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
   CommandHandle handle{c, [cfg, command_line] { return runDiagnose(*cfg, command_line); }, {}};
   // Library errors name DiagnoseOptions fields and diagnose()'s arguments ("diagnose.compare_draws");

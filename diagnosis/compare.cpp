@@ -410,4 +410,15 @@ std::string comparisonTable(const Comparison& c) {
   return s;
 }
 
+StageWork estimateCompareWork(const std::vector<calib::DataSet>& sets, std::size_t draws) {
+  StageWork w{"compare", 0, 0, 0};
+  const double runs = static_cast<double>(draws) + 1;  // the draws and the run at their mean
+  for (const auto& s : sets) {
+    w.simulations += runs;
+    w.simulated_s += runs * dataSpan(s.data);
+    w.memory_bytes += 8.0 * runs * static_cast<double>(s.data.records.size());  // one prediction per record and draw
+  }
+  return w;
+}
+
 }  // namespace dtwin::diag

@@ -14,6 +14,7 @@
 #include "calibration/calibrate.hpp"
 #include "diagnosis/measurements.hpp"
 #include "diagnosis/signal.hpp"
+#include "twin/work.hpp"
 
 namespace dtwin::diag {
 
@@ -96,6 +97,10 @@ struct CompareOptions {
 Comparison compareModel(const calib::LabObjective& objective, const std::vector<calib::DataSet>& sets,
                         const std::vector<std::vector<double>>& draws,
                         const std::map<std::string, ChannelNoise>& noise, const CompareOptions& options = {});
+
+/// The work of compareModel() (twin/work.hpp): `draws` posterior rows (plus the run at their
+/// mean) over every data set, each simulated up to its last record.
+StageWork estimateCompareWork(const std::vector<calib::DataSet>& sets, std::size_t draws);
 
 /// What the vehicle is doing in [t0, t1] of a scenario (obstacle crossings of each axle, rough
 /// section, smooth road), e.g. "front wheels on the bump".

@@ -837,6 +837,45 @@ void apply(Diagnosis& d) {
 
 }  // namespace
 
+std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySpec& assembly, const std::vector<calib::DataSet>& fit,
+                                            const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options) {
+  double fit_span = 0, hold_span = 0, fit_records = 0;
+  for (const auto& s : fit) {
+    fit_span += dataSpan(s.data);
+    fit_records += static_cast<double>(s.data.records.size());
+  }
+  for (const auto& s : holdout) hold_span += dataSpan(s.data);
+  const auto& c = options.calibration;
+  const auto design = c.designOptions();
+  const double design_points = design.first_points + (design.adaptive ? static_cast<double>(design.max_rounds) * design.round_points : 0.0);
+  const double base_params = static_cast<double>(study.calibrated.size());
+  // Screening: a linearisation (two runs per parameter) and every probe column of every effect.
+  double probe_runs = 2 * base_params, most_effect_params = 0;
+  for (const auto& e : catalogueOf(study, assembly, options)) {
+    const auto eff = makeEffect(e, "effect");
+    const auto groups = probesOf(0, *eff);
+    for (const auto& g : groups) probe_runs += static_cast<double>(g.cols.size());
+    most_effect_params = std::max(most_effect_params, static_cast<double>(diagnosedParameters(*eff).size()));
+  }
+  double applied_params = 0;
+  for (const auto& e : options.apply) applied_params += static_cast<double>(diagnosedParameters(*makeEffect(e, "apply")).size());
+  const double starts = static_cast<double>(c.optimizer_starts) + 2;  // the screening's and the nested optimum's starts
+  auto calibration = [&](const std::string& stage, double count, double params) {
+    const double sims = count * calibrationSimulations(design_points, starts, params);
+    return StageWork{stage, sims, sims * fit_span,
+                     8.0 * static_cast<double>(c.gibbs_iterations) * (params + 2) + 8.0 * design_points * fit_records};
+  };
+  std::vector<StageWork> out;
+  out.push_back(calibration("diagnose base", 2, base_params));  // the base and its refinement
+  out.push_back({"diagnose screening", probe_runs, probe_runs * fit_span, 8.0 * probe_runs * fit_records});
+  out.push_back(calibration("diagnose confirm", options.candidates, base_params + most_effect_params));
+  out.push_back(calibration("diagnose apply", static_cast<double>(options.apply.size()), base_params + applied_params));
+  const double models = 2 + options.candidates + static_cast<double>(options.apply.size());
+  const double runs = models * (options.compare_draws + 1);
+  out.push_back({"diagnose compare", runs, runs * (fit_span + hold_span), 8.0 * (options.compare_draws + 1) * fit_records});
+  return out;
+}
+
 DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const std::vector<calib::DataSet>& fit,
                          const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options,
                          const std::string& out_dir, const DiagnoseProgress& progress) {

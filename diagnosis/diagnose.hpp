@@ -115,6 +115,14 @@ struct DiagnosisResult {
   std::string text() const;
 };
 
+/// The work of diagnose() (twin/work.hpp), upper estimates: the base calibration and its
+/// refinement, the screening probes of every catalogue effect, `candidates` confirmations and every
+/// applied effect, each a calibration on `fit`, and a comparison of each calibrated model on `fit`
+/// and `holdout`. Names the stages "diagnose base", "diagnose screening", "diagnose confirm",
+/// "diagnose apply", "diagnose compare".
+std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySpec& assembly, const std::vector<calib::DataSet>& fit,
+                                            const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options);
+
 /// Runs the diagnosis of `assembly` on `fit` (and, when not empty, the held-out data `holdout`),
 /// persisting every calibration under out_dir/calibrations/<effects> (resumable: a rerun reuses
 /// them). Throws InputError for bad input: options.validate(), no fit data ("diagnose.fit"), no

@@ -21,6 +21,16 @@ double duration(const Study& s, const std::string& scenario) {
 
 }  // namespace
 
+double calibrationSimulations(double design_points, double optimizer_starts, double parameters) {
+  return design_points + optimizer_starts * kOptimizerEvaluationsPerStart + parameters * kProfileEvaluationsPerParameter;
+}
+
+double dataSpan(const LabData& data) {
+  double t = 0.0;
+  for (const auto& r : data.records) t = std::max(t, r.time_s);
+  return t;
+}
+
 std::vector<StageWork> estimateStudyWork(const Study& s) {
   const auto& z = s.sizes;
   const double lab_s = duration(s, "lab"), field_s = duration(s, "field");
@@ -37,8 +47,7 @@ std::vector<StageWork> estimateStudyWork(const Study& s) {
   const double round_points = static_cast<double>(s.calibration.round_points > 0 ? s.calibration.round_points : z.lhs_points);
   const double rounds = s.calibration.designOrDefault() == "adaptive" ? static_cast<double>(s.calibration.max_rounds) : 0.0;
   const double design = static_cast<double>(z.lhs_points) + rounds * round_points;
-  const double calib_sims = design + static_cast<double>(z.optimizer_starts) * kOptimizerEvaluationsPerStart +
-                            n_params * kProfileEvaluationsPerParameter;
+  const double calib_sims = calibrationSimulations(design, static_cast<double>(z.optimizer_starts), n_params);
   // The kept Gibbs draws (θ, τ, design index) and the design's outputs at the lab times.
   const double calib_mem = 8.0 * static_cast<double>(z.gibbs_iterations) * (n_params + 2) + 8.0 * design * lab_times * channels;
   const double synth_sims = static_cast<double>(z.posterior_draws) * static_cast<double>(z.roads_per_draw);
@@ -70,7 +79,7 @@ void checkWork(const std::vector<StageWork>& stages, const std::string& where, b
     mem = std::max(mem, w.memory_bytes);
     if (!biggest || w.simulated_s > biggest->simulated_s) biggest = &w;
   }
-  const std::string hint = "; reduce the [sizes] or pass --force to run it anyway (docs/study-file.md, Limits)";
+  const std::string hint = "; reduce the sizes or pass --force to run it anyway (docs/study-file.md, Limits)";
   if (sim_s > limits.simulated_s)
     throw InputError(where, "estimated work " + formatNumber(sim_s, 3) + " simulated s (largest stage: " + biggest->stage + ", " +
                                 formatNumber(biggest->simulations, 3) + " simulations) exceeds the limit " +

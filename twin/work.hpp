@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "twin/measurement.hpp"
 #include "twin/study.hpp"
 
 namespace dtwin {
@@ -29,6 +30,14 @@ struct WorkLimits {
 /// synthesize per assembly. Upper estimates: every adaptive round is counted, and the optimiser and
 /// the profile search at their budgets.
 std::vector<StageWork> estimateStudyWork(const Study& study);
+
+/// Upper estimate of the simulations of one calibration (calibration/calibrate.hpp) of
+/// `parameters` parameters: its design (`design_points`: the first Latin hypercube and every
+/// adaptive round), the multi-start optimiser and the profile search, at their budgets.
+double calibrationSimulations(double design_points, double optimizer_starts, double parameters);
+
+/// The simulated seconds one simulation of `data` needs: up to its last record's time.
+double dataSpan(const LabData& data);
 
 /// The stages of `all` named by one of `prefixes`: the whole name, or its first words ("calibrate"
 /// takes every assembly's, "calibrate M1" only M1's).

@@ -7,13 +7,16 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <string>
 
 #include "common/errors.hpp"
 #include "diagnosis/compare.hpp"
 #include "diagnosis/diagnose.hpp"
+#include "twin/work.hpp"
 
 using namespace dtwin;
 using namespace dtwin::diag;
@@ -115,4 +118,80 @@ TEST(Diagnose, TheCliNamesTheFlagOfABadField) {
   EXPECT_EQ(WEXITSTATUS(st), 2);
   const std::string text = dtwin_test::slurp(err);
   EXPECT_NE(text.find("twin: error: --effects: unknown effect 'warp_drive' (known: bump_stop, "), std::string::npos) << text;
+}
+
+namespace {
+/// A data set of `reps` repetitions of one channel, sampled at `rate` Hz up to `span` s.
+calib::DataSet flatSet(double span, double rate, long reps) {
+  calib::DataSet s;
+  s.name = "flat";
+  s.scenario = "diag_bump";
+  for (long r = 1; r <= reps; ++r)
+    for (double t = 0; t <= span + 1e-9; t += 1.0 / rate) s.data.records.push_back({r, t, "hub_force_fl_N", 0.0});
+  return s;
+}
+}  // namespace
+
+// The work estimates (twin/work.hpp) of compare and diagnose follow the sizes that drive them:
+// draws × data span for compare; calibrations × (design + optimiser + profile) × span for diagnose.
+TEST(DiagnoseWork, EstimatesScaleWithTheSizesThatDriveThem) {
+  const auto set = flatSet(2.0, 10.0, 3);
+  const StageWork c = estimateCompareWork({set, set}, 30);
+  EXPECT_DOUBLE_EQ(c.simulations, 2 * 31.0);
+  EXPECT_NEAR(c.simulated_s, 2 * 31.0 * 2.0, 1e-9);
+  EXPECT_DOUBLE_EQ(c.memory_bytes, 8.0 * 2 * 31 * static_cast<double>(set.data.records.size()));
+
+  const Study s = loadStudy(kDemo);
+  const AssemblySpec a = s.assemblies().front();
+  DiagnoseOptions o;
+  o.calibration = calib::CalibrationOptions::fromStudy(s);
+  auto total = [](const std::vector<StageWork>& w) {
+    double t = 0;
+    for (const auto& x : w) t += x.simulated_s;
+    return t;
+  };
+  auto stage = [](const std::vector<StageWork>& w, const std::string& name) {
+    for (const auto& x : w)
+      if (x.stage == name) return x;
+    ADD_FAILURE() << "no stage " << name;
+    return StageWork{};
+  };
+  const auto w = estimateDiagnoseWork(s, a, {set}, {}, o);
+  ASSERT_EQ(w.size(), 5u);
+  EXPECT_GT(stage(w, "diagnose screening").simulations, 0.0);
+  // The demo's diagnosis runs without --force; twice the data span, twice the work.
+  EXPECT_LT(total(w), WorkLimits().simulated_s);
+  EXPECT_NEAR(total(estimateDiagnoseWork(s, a, {flatSet(4.0, 10.0, 3)}, {}, o)), 2 * total(w), 1e-6 * total(w));
+  // No candidates, no confirmations; each applied effect one more calibration.
+  o.candidates = 0;
+  EXPECT_EQ(stage(estimateDiagnoseWork(s, a, {set}, {}, o), "diagnose confirm").simulations, 0.0);
+  o.apply = {"bump_stop", "strut_friction"};
+  EXPECT_GT(stage(estimateDiagnoseWork(s, a, {set}, {}, o), "diagnose apply").simulations,
+            stage(w, "diagnose base").simulations / 2);
+  // Ten million design points: refused, naming the data and --force.
+  o.calibration.lhs_points = 10000000;
+  const auto [where, rule] = inputError([&] { checkWork(estimateDiagnoseWork(s, a, {set}, {}, o), "--data", false); });
+  EXPECT_EQ(where, "--data");
+  EXPECT_NE(rule.find("estimated work"), std::string::npos) << rule;
+  EXPECT_NE(rule.find("--force"), std::string::npos) << rule;
+  EXPECT_NO_THROW(checkWork(estimateDiagnoseWork(s, a, {set}, {}, o), "--data", true));
+}
+
+// The CLI refuses such a diagnosis before it starts, and --force lets it pass the check.
+TEST(DiagnoseWork, TheCliRefusesUnboundedWorkBeforeItStarts) {
+  const std::string dir = dtwin_test::freshDir("diag_work_cli").string();
+  const std::string twin = DTWIN_TWIN_EXE;
+  const std::string data = dir + "/bump.csv";
+  ASSERT_EQ(std::system((twin + " generate lab --scenario diag_bump --times all --rate 50 --repetitions 2 --channels hub_force_fl_N"
+                                " --out " + data + " --quiet").c_str()),
+            0);
+  const std::string err = dir + "/err.txt";
+  const int st = std::system((twin + " diagnose --data " + data + " --lhs-points 9000000 --out " + dir + "/out --quiet 2> " + err).c_str());
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), 2);
+  const std::string text = dtwin_test::slurp(err);
+  EXPECT_EQ(text.rfind("twin: error: --data: estimated work ", 0), 0u) << text;
+  EXPECT_NE(text.find("pass --force"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out"));
 }

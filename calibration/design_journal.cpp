@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 
 namespace dtwin::calib {
 namespace {
@@ -32,15 +33,6 @@ void appendDouble(std::string& out, double v) {
   const auto res = std::to_chars(buf, buf + sizeof buf, v);  // shortest round-trip form
   DTWIN_CHECK(res.ec == std::errc(), "to_chars failed");
   out.append(buf, res.ptr);
-}
-
-bool parseDouble(const std::string& s, double& v) {
-  if (s.empty()) return false;
-  const char* b = s.data();
-  const char* e = b + s.size();
-  if (*b == '+') ++b;  // from_chars does not accept a leading '+'
-  const auto res = std::from_chars(b, e, v);
-  return res.ec == std::errc() && res.ptr == e;
 }
 
 std::string headerLine(int dim, const std::string& fingerprint) {

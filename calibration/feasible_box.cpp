@@ -12,8 +12,6 @@
 namespace dtwin::calib {
 namespace {
 
-std::string fmt(double v) { return formatNumber(v, 17); }
-
 }  // namespace
 
 void FeasibleBoxOptions::validate() const {
@@ -35,12 +33,12 @@ void BoxProblem::validate() const {
                                 " values, the bounds have " + std::to_string(lower.size()));
   for (std::size_t j = 0; j < theta_hat.size(); ++j)
     if (!(theta_hat[j] >= lower[j] && theta_hat[j] <= upper[j]))
-      throw InputError(where, "theta_hat[" + std::to_string(j) + "] = " + fmt(theta_hat[j]) +
-                                  " is outside [" + fmt(lower[j]) + ", " + fmt(upper[j]) + "]");
+      throw InputError(where, "theta_hat[" + std::to_string(j) + "] = " + formatNumber(theta_hat[j], 17) +
+                                  " is outside [" + formatNumber(lower[j], 17) + ", " + formatNumber(upper[j], 17) + "]");
   if (n_data < 1)
     throw InputError(where, "number of data points n must be >= 1, got " + std::to_string(n_data));
   if (!std::isfinite(sse_min) || sse_min < 0.0)
-    throw InputError(where, "SSE_min must be finite and >= 0, got " + fmt(sse_min));
+    throw InputError(where, "SSE_min must be finite and >= 0, got " + formatNumber(sse_min, 17));
   if (sse_min == 0.0)
     throw InputError(where,
                      "SSE_min is 0 (the model fits the data exactly, e.g. noise-free data): "

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -35,15 +36,6 @@ std::vector<std::string> splitFields(const std::string& line) {
     start = c + 1;
   }
   return out;
-}
-
-bool parseDouble(const std::string& s, double& v) {
-  if (s.empty()) return false;
-  const char* b = s.data();
-  const char* e = b + s.size();
-  if (*b == '+') ++b;
-  const auto r = std::from_chars(b, e, v);
-  return r.ec == std::errc() && r.ptr == e;
 }
 
 }  // namespace

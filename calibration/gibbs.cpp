@@ -12,8 +12,6 @@
 namespace dtwin::calib {
 namespace {
 
-std::string fmt(double v) { return formatNumber(v, 17); }
-
 /// exp(−x) is exactly 0 in double precision for x > 745.14 (below the smallest subnormal).
 constexpr double kUnderflow = 746.0;
 
@@ -53,7 +51,7 @@ void GibbsOptions::validate() const {
   check.nonNegative("b", b);
   if (!std::isnan(initial_tau))
     check.require(initial_tau > 0.0 && std::isfinite(initial_tau), "initial_tau",
-                  "must be a finite number > 0 (or NaN for the default n/SSE_min), got " + fmt(initial_tau));
+                  "must be a finite number > 0 (or NaN for the default n/SSE_min), got " + formatNumber(initial_tau, 17));
 }
 
 namespace {
@@ -80,7 +78,7 @@ SortedDesign sortDesign(const std::vector<double>& sse, const GibbsOptions& opti
     if (std::isfinite(sse[k])) {
       if (sse[k] < 0.0)
         throw InputError(where, "SSE of design point " + std::to_string(k) +
-                                    " is negative: " + fmt(sse[k]));
+                                    " is negative: " + formatNumber(sse[k], 17));
       s.order.push_back(static_cast<int>(k));
     } else if (std::isnan(sse[k]) || sse[k] > 0.0) {
       ++s.failed;

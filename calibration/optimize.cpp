@@ -24,8 +24,6 @@ std::string allowedList() {
   return s;
 }
 
-std::string fmt(double v) { return formatNumber(v, 17); }
-
 /// State of one local run, reached from the C callback through `void* data`.
 struct RunContext {
   const SseFunction* sse = nullptr;
@@ -178,8 +176,8 @@ StartResult minimiseFrom(const SseFunction& sse, const std::vector<double>& lowe
   std::vector<double> z(d);
   for (std::size_t j = 0; j < d; ++j) {
     if (!(start[j] >= lower[j] && start[j] <= upper[j]))
-      throw InputError("optimizer", "start value " + std::to_string(j) + " = " + fmt(start[j]) +
-                                        " is outside [" + fmt(lower[j]) + ", " + fmt(upper[j]) +
+      throw InputError("optimizer", "start value " + std::to_string(j) + " = " + formatNumber(start[j], 17) +
+                                        " is outside [" + formatNumber(lower[j], 17) + ", " + formatNumber(upper[j], 17) +
                                         "]");
     z[j] = (start[j] - lower[j]) / (upper[j] - lower[j]);
   }

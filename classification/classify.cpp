@@ -14,8 +14,6 @@ namespace dtwin::classify {
 
 namespace {
 
-std::string num(double v, int precision = 6) { return formatNumber(v, precision); }
-
 // Type-7 quantile of sorted (ascending, non-empty) data.
 double quantile7(const std::vector<double>& sorted, double q) {
   const double h = (static_cast<double>(sorted.size()) - 1.0) * q;
@@ -66,7 +64,7 @@ void ClassifyOptions::validate() const {
     check.positive("prior[" + std::to_string(m) + "]", prior[m]);
     sum += prior[m];
   }
-  check.require(std::abs(sum - 1.0) <= 1e-9, "prior", "must sum to 1 within 1e-9, got " + num(sum, 17));
+  check.require(std::abs(sum - 1.0) <= 1e-9, "prior", "must sum to 1 within 1e-9, got " + formatNumber(sum, 17));
 }
 
 void ClassifyOptions::validate(int models) const {
@@ -112,7 +110,7 @@ ClassificationResult classifyRecords(const Eigen::MatrixXd& ll, const ClassifyOp
       const double v = ll(r, m);
       if (std::isnan(v) || v == std::numeric_limits<double>::infinity())
         throw InputError(where, "entry (record " + std::to_string(r) + ", model " +
-                                    std::to_string(m) + ") is " + num(v) +
+                                    std::to_string(m) + ") is " + formatNumber(v) +
                                     " (must be finite or -inf)");
       any_finite = any_finite || v != kNegInf;
     }
@@ -211,7 +209,7 @@ std::string ClassificationResult::briefReport() const {
   for (int m = 1; m < models; ++m)
     if (total_log_likelihood[m] > total_log_likelihood[best]) best = m;
   s << "\nJoint evidence: " << model_ids[static_cast<std::size_t>(best)]
-    << " has the largest total log-likelihood (" << num(total_log_likelihood[best], 8) << ").\n";
+    << " has the largest total log-likelihood (" << formatNumber(total_log_likelihood[best], 8) << ").\n";
   return s.str();
 }
 
@@ -228,7 +226,7 @@ std::string ClassificationResult::fullReport() const {
   s << "Pairwise Bayes factors over all records (Kass-Raftery scale of 2 ln B):\n";
   for (const PairwiseEvidence& e : pairs) {
     s << "  " << model_ids[static_cast<std::size_t>(e.a)] << " vs "
-      << model_ids[static_cast<std::size_t>(e.b)] << ": 2 ln B = " << num(e.two_ln_b, 6);
+      << model_ids[static_cast<std::size_t>(e.b)] << ": 2 ln B = " << formatNumber(e.two_ln_b, 6);
     if (e.favoured >= 0)
       s << ", " << e.category << " (favours " << model_ids[static_cast<std::size_t>(e.favoured)]
         << ")";

@@ -16,12 +16,10 @@ namespace dtwin::classify {
 
 namespace {
 
-constexpr const char* kWhere = "moment accumulator";
+constexpr const char* kMomentsWhere = "moment accumulator";
 constexpr double kFormatVersion = 1.0;
 constexpr std::size_t kHeader = 5;
 constexpr char kFileTag[8] = {'D', 'T', 'W', 'M', 'O', 'M', '0', '1'};
-
-std::string num(double v) { return formatNumber(v, 17); }
 
 std::size_t flatSize(std::size_t p, bool track) {
   return kHeader + p + p * (p + 1) / 2 + (track ? p + 1 : 0);
@@ -36,7 +34,7 @@ MomentAccumulator::MomentAccumulator(int dimension, const MomentOptions& options
     : p_(dimension), track_(options.track_fourth_moment) {
   options.validate();
   if (dimension < 1)
-    throw InputError(kWhere, "dimension must be >= 1, got " + std::to_string(dimension));
+    throw InputError(kMomentsWhere, "dimension must be >= 1, got " + std::to_string(dimension));
   mean_ = Eigen::VectorXd::Zero(p_);
   m2_ = Eigen::MatrixXd::Zero(p_, p_);
   if (track_) t_ = Eigen::VectorXd::Zero(p_);
@@ -47,12 +45,12 @@ void MomentAccumulator::checkVector(const Eigen::Ref<const Eigen::VectorXd>& x, 
   const std::string name =
       column < 0 ? std::string(what) : std::string(what) + " column " + std::to_string(column);
   if (x.size() != p_)
-    throw InputError(kWhere, name + " has length " + std::to_string(x.size()) + ", expected " +
+    throw InputError(kMomentsWhere, name + " has length " + std::to_string(x.size()) + ", expected " +
                                  std::to_string(p_));
   if (!x.allFinite()) {
     Eigen::Index i = 0;
     while (std::isfinite(x[i])) ++i;
-    throw InputError(kWhere, name + " entry " + std::to_string(i) + " is " + num(x[i]) +
+    throw InputError(kMomentsWhere, name + " entry " + std::to_string(i) + " is " + formatNumber(x[i], 17) +
                                  " (must be finite)");
   }
 }
@@ -121,9 +119,9 @@ void MomentAccumulator::add(const Eigen::VectorXd& x) {
 
 void MomentAccumulator::addBlock(const Eigen::MatrixXd& X) {
   if (X.rows() != p_)
-    throw InputError(kWhere, "block has " + std::to_string(X.rows()) + " rows, expected " +
+    throw InputError(kMomentsWhere, "block has " + std::to_string(X.rows()) + " rows, expected " +
                                  std::to_string(p_));
-  if (X.cols() < 1) throw InputError(kWhere, "block has no columns");
+  if (X.cols() < 1) throw InputError(kMomentsWhere, "block has no columns");
   for (Eigen::Index j = 0; j < X.cols(); ++j) checkVector(X.col(j), "block", j);
   const Eigen::Index k = X.cols();
   // B = the columns of X: μ_B = X 1 / k, C = X − μ_B 1ᵀ, M2_B = C Cᵀ.
@@ -144,11 +142,11 @@ void MomentAccumulator::addBlock(const Eigen::MatrixXd& X) {
 
 void MomentAccumulator::merge(const MomentAccumulator& other) {
   if (other.p_ != p_)
-    throw InputError(kWhere, "cannot merge an accumulator of dimension " +
+    throw InputError(kMomentsWhere, "cannot merge an accumulator of dimension " +
                                  std::to_string(other.p_) + " into one of dimension " +
                                  std::to_string(p_));
   if (other.track_ != track_)
-    throw InputError(kWhere, std::string("cannot merge accumulators with different "
+    throw InputError(kMomentsWhere, std::string("cannot merge accumulators with different "
                                          "track_fourth_moment (") +
                                  (track_ ? "true" : "false") + " vs " +
                                  (other.track_ ? "true" : "false") + ")");
@@ -168,7 +166,7 @@ void MomentAccumulator::merge(const MomentAccumulator& other) {
 
 Eigen::MatrixXd MomentAccumulator::covariance() const {
   if (n_ < 2)
-    throw InputError(kWhere, "covariance needs at least 2 vectors, got " + std::to_string(n_));
+    throw InputError(kMomentsWhere, "covariance needs at least 2 vectors, got " + std::to_string(n_));
   Eigen::MatrixXd s = m2_.selfadjointView<Eigen::Upper>();
   s /= static_cast<double>(n_ - 1);
   return s;
@@ -176,13 +174,13 @@ Eigen::MatrixXd MomentAccumulator::covariance() const {
 
 const Eigen::VectorXd& MomentAccumulator::getThirdMoment() const {
   if (!track_)
-    throw InputError(kWhere, "third moment not tracked (set MomentOptions::track_fourth_moment)");
+    throw InputError(kMomentsWhere, "third moment not tracked (set MomentOptions::track_fourth_moment)");
   return t_;
 }
 
 double MomentAccumulator::getFourthMoment() const {
   if (!track_)
-    throw InputError(kWhere, "fourth moment not tracked (set MomentOptions::track_fourth_moment)");
+    throw InputError(kMomentsWhere, "fourth moment not tracked (set MomentOptions::track_fourth_moment)");
   return q_;
 }
 
@@ -213,17 +211,17 @@ MomentAccumulator MomentAccumulator::fromVector(const std::vector<double>& v) {
     throw InputError(where, "has " + std::to_string(v.size()) + " values, fewer than the " +
                                 std::to_string(kHeader) + "-value header");
   if (v[0] != kFlatMagic)
-    throw InputError(where, "header[0] (magic) is " + num(v[0]) + ", expected " + num(kFlatMagic));
+    throw InputError(where, "header[0] (magic) is " + formatNumber(v[0], 17) + ", expected " + formatNumber(kFlatMagic, 17));
   if (v[1] != kFormatVersion)
-    throw InputError(where, "header[1] (format version) is " + num(v[1]) + ", expected 1");
+    throw InputError(where, "header[1] (format version) is " + formatNumber(v[1], 17) + ", expected 1");
   if (!isCount(v[2]) || v[2] < 1 || v[2] > 1e6)
-    throw InputError(where, "header[2] (dimension) is " + num(v[2]) +
+    throw InputError(where, "header[2] (dimension) is " + formatNumber(v[2], 17) +
                                 ", expected an integer in [1, 1e6]");
   if (!isCount(v[3]))
-    throw InputError(where, "header[3] (count) is " + num(v[3]) +
+    throw InputError(where, "header[3] (count) is " + formatNumber(v[3], 17) +
                                 ", expected a non-negative integer");
   if (v[4] != 0.0 && v[4] != 1.0)
-    throw InputError(where, "header[4] (track flag) is " + num(v[4]) + ", expected 0 or 1");
+    throw InputError(where, "header[4] (track flag) is " + formatNumber(v[4], 17) + ", expected 0 or 1");
   const std::size_t p = static_cast<std::size_t>(v[2]);
   const bool track = v[4] == 1.0;
   if (v.size() != flatSize(p, track))
@@ -232,7 +230,7 @@ MomentAccumulator MomentAccumulator::fromVector(const std::vector<double>& v) {
                                 std::to_string(p));
   for (std::size_t i = kHeader; i < v.size(); ++i)
     if (!std::isfinite(v[i]))
-      throw InputError(where, "value " + std::to_string(i) + " is " + num(v[i]) +
+      throw InputError(where, "value " + std::to_string(i) + " is " + formatNumber(v[i], 17) +
                                   " (must be finite)");
   MomentOptions options;
   options.track_fourth_moment = track;

@@ -15,15 +15,7 @@ namespace dtwin::classify {
 namespace {
 
 constexpr double kLn2Pi = 1.83787706640934548356065947281123527;  // ln(2π)
-constexpr const char* kWhere = "Gaussian model";
-
-std::string num(double v) { return formatNumber(v, 6); }
-
-std::string formatG(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+constexpr const char* kGaussianWhere = "Gaussian model";
 
 }  // namespace
 
@@ -32,37 +24,37 @@ void FactorOptions::validate() const {
   check.finite("pivot_tolerance", pivot_tolerance);  // negative: the default p · 2.2e-16
   check.positive("jitter_initial", jitter_initial);
   check.require(std::isfinite(jitter_growth) && jitter_growth > 1.0, "jitter_growth",
-                "must be a finite number > 1, got " + num(jitter_growth));
+                "must be a finite number > 1, got " + formatNumber(jitter_growth));
   check.require(std::isfinite(jitter_max) && jitter_max >= jitter_initial, "jitter_max",
-                "must be a finite number >= jitter_initial (" + num(jitter_initial) + "), got " + num(jitter_max));
+                "must be a finite number >= jitter_initial (" + formatNumber(jitter_initial) + "), got " + formatNumber(jitter_max));
 }
 
 GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov,
                              const FactorOptions& options) {
   options.validate();
   const Eigen::Index p = mean.size();
-  if (p < 1) throw InputError(kWhere, "mean is empty");
+  if (p < 1) throw InputError(kGaussianWhere, "mean is empty");
   if (cov.rows() != p || cov.cols() != p)
-    throw InputError(kWhere, "covariance is " + std::to_string(cov.rows()) + "x" +
+    throw InputError(kGaussianWhere, "covariance is " + std::to_string(cov.rows()) + "x" +
                                  std::to_string(cov.cols()) + ", expected " + std::to_string(p) +
                                  "x" + std::to_string(p) + " (the length of the mean)");
-  if (!mean.allFinite()) throw InputError(kWhere, "mean has a non-finite entry");
-  if (!cov.allFinite()) throw InputError(kWhere, "covariance has a non-finite entry");
+  if (!mean.allFinite()) throw InputError(kGaussianWhere, "mean has a non-finite entry");
+  if (!cov.allFinite()) throw InputError(kGaussianWhere, "covariance has a non-finite entry");
   const double max_abs = cov.cwiseAbs().maxCoeff();
   for (Eigen::Index j = 0; j < p; ++j) {
     if (cov(j, j) < 0.0)
-      throw InputError(kWhere, "covariance diagonal entry " + std::to_string(j) + " is " +
-                                   num(cov(j, j)) + " (a variance must be >= 0)");
+      throw InputError(kGaussianWhere, "covariance diagonal entry " + std::to_string(j) + " is " +
+                                   formatNumber(cov(j, j)) + " (a variance must be >= 0)");
     for (Eigen::Index i = 0; i < j; ++i)
       if (std::abs(cov(i, j) - cov(j, i)) > 1e-10 * max_abs)
-        throw InputError(kWhere, "covariance is not symmetric: entry (" + std::to_string(i) +
-                                     ", " + std::to_string(j) + ") = " + num(cov(i, j)) +
+        throw InputError(kGaussianWhere, "covariance is not symmetric: entry (" + std::to_string(i) +
+                                     ", " + std::to_string(j) + ") = " + formatNumber(cov(i, j)) +
                                      " but (" + std::to_string(j) + ", " + std::to_string(i) +
-                                     ") = " + num(cov(j, i)));
+                                     ") = " + formatNumber(cov(j, i)));
   }
   const double max_diag = cov.diagonal().maxCoeff();
   const double mean_diag = cov.diagonal().mean();
-  if (!(max_diag > 0.0)) throw InputError(kWhere, "covariance is zero on its whole diagonal");
+  if (!(max_diag > 0.0)) throw InputError(kGaussianWhere, "covariance is zero on its whole diagonal");
   const double rel_tol =
       options.pivot_tolerance < 0.0 ? static_cast<double>(p) * DBL_EPSILON : options.pivot_tolerance;
   const double tol = rel_tol * max_diag;
@@ -106,7 +98,7 @@ GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd&
       factorization_ = "ldlt";
       done = true;
     } else {
-      tried += "LDLT has a non-positive pivot (smallest D = " + num(ldlt.vectorD().minCoeff()) +
+      tried += "LDLT has a non-positive pivot (smallest D = " + formatNumber(ldlt.vectorD().minCoeff()) +
                "); ";
     }
   }
@@ -117,17 +109,17 @@ GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd&
       if (tryCholesky(eps * mean_diag)) {
         jitter_ = eps;
         jitter_abs_ = eps * mean_diag;
-        factorization_ = "cholesky+jitter(" + formatG(eps) + ")";
+        factorization_ = "cholesky+jitter(" + formatNumber(eps) + ")";
         done = true;
         break;
       }
     }
     if (!done) {
       factor_.resize(0, 0);
-      throw InputError(kWhere, "covariance is not positive definite: " + tried +
-                                   "Cholesky with jitter up to " + formatG(options.jitter_max) +
-                                   " x mean(diag) = " + num(options.jitter_max * mean_diag) +
-                                   " also failed (relative pivot tolerance " + formatG(rel_tol) +
+      throw InputError(kGaussianWhere, "covariance is not positive definite: " + tried +
+                                   "Cholesky with jitter up to " + formatNumber(options.jitter_max) +
+                                   " x mean(diag) = " + formatNumber(options.jitter_max * mean_diag) +
+                                   " also failed (relative pivot tolerance " + formatNumber(rel_tol) +
                                    ")");
     }
   }
@@ -137,7 +129,7 @@ GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd&
 double GaussianModel::logPdf(const Eigen::VectorXd& y) const {
   const Eigen::Index p = mean_.size();
   if (y.size() != p)
-    throw InputError(kWhere, "record has length " + std::to_string(y.size()) + ", expected " +
+    throw InputError(kGaussianWhere, "record has length " + std::to_string(y.size()) + ", expected " +
                                  std::to_string(p));
   Eigen::VectorXd z(p);
   if (perm_.size() == 0)
@@ -151,7 +143,7 @@ double GaussianModel::logPdf(const Eigen::VectorXd& y) const {
 Eigen::VectorXd GaussianModel::logPdfBatch(const Eigen::MatrixXd& Y) const {
   const Eigen::Index p = mean_.size();
   if (Y.rows() != p)
-    throw InputError(kWhere, "record matrix has " + std::to_string(Y.rows()) +
+    throw InputError(kGaussianWhere, "record matrix has " + std::to_string(Y.rows()) +
                                  " rows, expected " + std::to_string(p) +
                                  " (one record per column)");
   Eigen::MatrixXd Z(p, Y.cols());

@@ -15,8 +15,6 @@ namespace dtwin::classify {
 
 namespace {
 
-std::string num(double v) { return formatNumber(v, 6); }
-
 // `v` with 1 decimal, or with more until the printed value still satisfies `ok`.
 template <class Ok>
 std::string decimals(double v, Ok ok) {
@@ -26,12 +24,6 @@ std::string decimals(double v, Ok ok) {
     if (ok(std::strtod(buf, nullptr))) return buf;
   }
   std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string formatG(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
 
@@ -54,9 +46,9 @@ Recommendation recommendAssembly(const std::vector<ModelCost>& models,
     if (mc.id.empty()) throw InputError(where + ": model " + std::to_string(m), "id is empty");
     if (!ids.insert(mc.id).second) throw InputError(field, "duplicate id");
     if (std::isnan(mc.log_evidence) || mc.log_evidence == std::numeric_limits<double>::infinity())
-      throw InputError(field, "log_evidence must be finite or -inf, got " + num(mc.log_evidence));
+      throw InputError(field, "log_evidence must be finite or -inf, got " + formatNumber(mc.log_evidence));
     if (!(std::isfinite(mc.cost) && mc.cost > 0.0))
-      throw InputError(field, "cost must be > 0 and finite, got " + num(mc.cost));
+      throw InputError(field, "cost must be > 0 and finite, got " + formatNumber(mc.cost));
   }
 
   Recommendation r;
@@ -89,7 +81,7 @@ Recommendation recommendAssembly(const std::vector<ModelCost>& models,
   r.best = best.id;
   r.cost_ratio = best.cost / rec.cost;
 
-  const std::string thr = formatG(options.threshold);
+  const std::string thr = formatNumber(options.threshold);
   if (r.recommended_index != r.best_index) {
     const double t = r.two_ln_b[r.recommended_index];
     r.explanation = rec.id + " is recommended: it is " +

@@ -26,15 +26,17 @@ function(dtwin_library name)
   endif()
 endfunction()
 
-# Precompiled headers (DTWIN_PCH, on by default): nlohmann/json.hpp and the standard headers that
-# nearly every file includes are parsed once, in dtwin_common, and every other library, the `twin`
-# program and the tests reuse that result (docs/performance.md, "Build time").
+# Precompiled headers (DTWIN_PCH, on by default): nlohmann/json.hpp, Eigen/Dense and the standard
+# headers that nearly every file includes (calibration/calibrate.hpp brings in Eigen) are parsed
+# once, in dtwin_common, and every other library, the `twin` program and the tests reuse that
+# result (docs/performance.md, "Build time").
 function(dtwin_use_pch target)
   if(NOT DTWIN_PCH)
     return()
   endif()
   if(target STREQUAL "dtwin_common")
-    target_precompile_headers(dtwin_common PRIVATE <nlohmann/json.hpp> <string> <vector> <map> <memory> <functional>)
+    target_link_libraries(dtwin_common PRIVATE Eigen3::Eigen)
+    target_precompile_headers(dtwin_common PRIVATE <nlohmann/json.hpp> <Eigen/Dense> <string> <vector> <map> <memory> <functional>)
   else()
     target_precompile_headers(${target} REUSE_FROM dtwin_common)
   endif()

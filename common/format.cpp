@@ -1,5 +1,6 @@
 #include "common/format.hpp"
 
+#include <charconv>
 #include <sstream>
 
 namespace dtwin {
@@ -25,6 +26,21 @@ std::string oneLine(const std::string& text) {
     out += c;
   }
   return out;
+}
+
+bool parseDouble(const std::string& s, double& v) {
+  const char* b = s.data();
+  const char* e = s.data() + s.size();
+  if (b != e && *b == '+') ++b;  // from_chars does not accept a leading '+'
+  if (b == e) return false;
+  const auto r = std::from_chars(b, e, v);
+  return r.ec == std::errc() && r.ptr == e;
+}
+
+std::string formatExact(double v) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 }  // namespace dtwin

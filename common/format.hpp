@@ -8,6 +8,13 @@ namespace dtwin {
 /// the non-finite values). 17 digits round-trip a double.
 std::string formatNumber(double v, int digits = 6);
 
+/// Shortest decimal text that reads back as exactly `v` (std::to_chars).
+std::string formatExact(double v);
+
+/// Parses the whole of `s` as a double (locale-independent; accepts a leading '+', inf and nan).
+/// False when `s` is empty or has anything after the number.
+bool parseDouble(const std::string& s, double& v);
+
 /// `text` on one line: every run of white space (line ends included) becomes one space, and the
 /// ends are trimmed. Messages from other libraries (Simbody's span several lines) go through it.
 std::string oneLine(const std::string& text);

@@ -15,8 +15,6 @@
 namespace dtwin::diag {
 namespace {
 
-double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
-
 /// The normal deviate of F = (X/d1) against F(d1, d2) (Paulson 1942; d2 = inf: Wilson–Hilferty
 /// for χ²_d1/d1). Accurate to ~1e-3 in p for d1, d2 >= 10.
 double fDeviate(double f, double d1, double d2) {

@@ -22,7 +22,6 @@ namespace fs = std::filesystem;
 namespace dtwin::diag {
 namespace {
 
-double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 /// P(χ²_k > x) for k = 1, 2 exactly, else Wilson–Hilferty.
 double chi2Upper(double x, int k) {
   if (x <= 0) return 1.0;

@@ -11,6 +11,9 @@
 #include <unsupported/Eigen/FFT>
 
 namespace dtwin::diag {
+
+double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -81,11 +84,11 @@ bool inBand(const Spectrum& s, size_t k, double f_lo, double f_hi) {
   return f >= f_lo && (f < f_hi || (k + 1 == s.freq_hz.size() && f_hi >= f));
 }
 
-double normalQuantile(double p) {  // bisection on Φ(z) = erfc(−z/√2)/2
+double normalQuantile(double p) {  // bisection on Φ(z)
   double lo = -40, hi = 40;
   for (int i = 0; i < 200; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+    (normalCdf(mid) < p ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }

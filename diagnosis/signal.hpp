@@ -26,6 +26,9 @@ struct Spectrum {
   std::vector<double> value;
 };
 
+/// Φ(x), the standard normal distribution function.
+double normalCdf(double x);
+
 /// One-sided Welch power spectral density [unit²/Hz] of x sampled at fs_hz [W67].
 ///
 /// x is cut into K segments of L samples with 50 % overlap (hop L/2; K = 1 + ⌊(N − L)/(L/2)⌋,

@@ -9,11 +9,12 @@ PKGS=(build-essential cmake pkg-config git
       libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
       gnuplot-nox chromium    # gnuplot: `twin report`; chromium: its rendering test
       libopenmpi-dev openmpi-bin)   # MPI: `mpirun -n K twin ...` (docs/cluster.md)
-# `setup.sh demo`: only what the demo needs (no test framework, no browser for the report test).
+# `setup.sh demo`: only what the demo needs (no test framework, no browser for the report test, no
+# MPI: the demo runs in one process, and MPI's 80 packages, gfortran among them, add about 105 MB).
 if [ "${1:-}" = "demo" ]; then
   keep=()
   for p in "${PKGS[@]}"; do
-    case "$p" in googletest|libgtest-dev|libgmock-dev|chromium) ;; *) keep+=("$p") ;; esac
+    case "$p" in googletest|libgtest-dev|libgmock-dev|chromium|libopenmpi-dev|openmpi-bin) ;; *) keep+=("$p") ;; esac
   done
   PKGS=("${keep[@]}")
 fi

@@ -63,16 +63,6 @@ std::vector<std::string> splitFields(std::string_view l) {
   return out;
 }
 
-/// Parses a whole field as a double (locale-independent; accepts a leading '+', inf and nan).
-bool parseDouble(const std::string& s, double& v) {
-  const char* b = s.data();
-  const char* e = s.data() + s.size();
-  if (b != e && *b == '+') ++b;
-  if (b == e) return false;
-  auto r = std::from_chars(b, e, v);
-  return r.ec == std::errc() && r.ptr == e;
-}
-
 /// Parses a whole field of decimal digits as an unsigned integer.
 bool parseUnsigned(const std::string& s, std::uint64_t& v) {
   if (s.empty() || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
@@ -117,12 +107,6 @@ class LabChecker {
 };
 
 }  // namespace
-
-std::string formatExact(double v) {
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
 
 std::vector<std::string> LabData::channels() const {
   std::vector<std::string> out;

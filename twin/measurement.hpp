@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/format.hpp"  // formatExact
 #include "twin/trace.hpp"
 
 namespace dtwin {
@@ -85,8 +86,5 @@ void writeFieldCsv(const std::string& path, const FieldData& data);
 /// positive integer, unique; road_seed an integer in [0, 2^64); values finite, |v| <= 1e12.
 FieldData parseFieldCsv(const std::string& text, const std::string& name);
 FieldData readFieldCsv(const std::string& path);
-
-/// Shortest decimal text that reads back as exactly `v` (std::to_chars).
-std::string formatExact(double v);
 
 }  // namespace dtwin

@@ -226,7 +226,7 @@ TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
   // Sizes that are each inside their limits but multiply up past the work limit: refused by the
   // commands that would run them, naming the study and --force.
   std::string big = base;
-  big.replace(big.find("posterior_draws = 150"), 21, "posterior_draws = 900000");
+  big.replace(big.find("posterior_draws = 100"), 21, "posterior_draws = 900000");
   writeText(dir / "big.toml", big);
   Result r = twin("study " + (dir / "big.toml").string() + " --quiet --out " + (dir / "out").string(), dir);
   expectRejected(r, (dir / "big.toml").string(), "estimated work", dir / "out");

@@ -1,6 +1,7 @@
 #include "common/json.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -10,6 +11,8 @@
 namespace dtwin {
 
 std::string readTextFile(const std::string& path, const std::string& hint) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a folder, not a file" + hint);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot be read" + hint);
   std::ostringstream s;

@@ -9,7 +9,8 @@
 
 namespace dtwin {
 
-/// The bytes of `path`; InputError(path, "cannot be read" + hint) when it cannot be opened.
+/// The bytes of `path`; InputError(path, "cannot be read" + hint) when it cannot be opened, and
+/// InputError(path, "is a folder, not a file" + hint) for a folder.
 /// `hint` is appended as is (e.g. " (is this a `twin study` folder?)").
 std::string readTextFile(const std::string& path, const std::string& hint = "");
 

@@ -48,7 +48,14 @@ int welchSegment(std::size_t n) {
 
 std::string describeScenarioWindow(const ScenarioSpec& sc, const VehicleData& v, double t0, double t1) {
   std::vector<std::string> parts = sc.road->describeWindow(sc, v, t0, t1);
-  if (sc.speed.ramp_s > 0 && t0 < sc.speed.ramp_s) parts.push_back("accelerating");
+  if (sc.speed.trace) {  // a measured speed: the mean acceleration over the window, if it is marked
+    const double a = t1 > t0 ? (sc.speed.speed(t1) - sc.speed.speed(t0)) / (t1 - t0) : sc.speed.accel(t0);
+    if (a > 0.5) parts.push_back("accelerating");
+    if (a < -0.5) parts.push_back("braking");
+    if (sc.speed.speed(t0) < 0.1 && sc.speed.speed(t1) < 0.1) parts.push_back("at rest");
+  } else if (sc.speed.ramp_s > 0 && t0 < sc.speed.ramp_s) {
+    parts.push_back("accelerating");
+  }
   std::string s;
   for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? "; " : "") + parts[i];
   return s;

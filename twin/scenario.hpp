@@ -8,19 +8,27 @@
 #include <nlohmann/json.hpp>
 
 #include "subsystems/road.hpp"
+#include "subsystems/speed_trace.hpp"
 #include "twin/model.hpp"
 #include "twin/road_setting.hpp"
 
 namespace dtwin {
 
-/// Straight line: 0 -> v_final linearly in t_ramp, then constant (paper: 0 -> 20 mph in 5 s).
+/// The vehicle's speed. By default a straight line: 0 -> v_final linearly in ramp_s, then constant
+/// (paper: 0 -> 20 mph in 5 s). When `trace` is set, a measured speed trace instead
+/// (subsystems/speed_trace.hpp: monotone cubic between the samples, distance its exact integral),
+/// and v_final_mps and ramp_s are not used.
 struct SpeedProfile {
   double v_final_mps = 8.9408;
   double ramp_s = 5.0;
+  std::shared_ptr<const SpeedTrace> trace;  ///< shared, never modified after reading
   double speed(double t) const;
   double accel(double t) const;
   double distance(double t) const;
-  double timeAtDistance(double x) const;  ///< inverse of distance (x >= 0)
+  double timeAtDistance(double x) const;  ///< inverse of distance (x >= 0); +inf if never reached
+  /// {"v_final_mps", "ramp_s"}, or for a trace {"csv", "samples", "content"} (a hash of the samples,
+  /// so fingerprints change with the file's numbers).
+  nlohmann::json toJson() const;
 };
 
 struct ScenarioSpec {

@@ -186,6 +186,26 @@ void readEffects(TableReader& top, Study& s) {
   }
 }
 
+/// speed = { csv = "FILE" }: a measured speed trace (path relative to the study file), which must
+/// cover the scenario from time 0 to its duration, at most 100 m/s; the ramp's fields may not be given too.
+void readSpeedTrace(TableReader& rs, const std::string& csv, ScenarioSpec& sc) {
+  namespace fs = std::filesystem;
+  for (const char* f : {"v_final_mps", "ramp_s"})
+    if (rs.has(f)) throw InputError(rs.where(f), "give either csv (a measured speed trace) or v_final_mps and ramp_s, not both");
+  const std::string file = fs::path(csv).is_absolute() ? csv : (fs::path(rs.file()).parent_path() / csv).lexically_normal().string();
+  auto trace = std::make_shared<const SpeedTrace>(readSpeedTraceCsv(file));
+  if (trace->startTime() > 0 || trace->endTime() < sc.duration_s)
+    throw InputError(rs.where("csv"), "the speed trace " + file + " covers " + formatNumber(trace->startTime()) + ".." +
+                                          formatNumber(trace->endTime()) + " s but the scenario needs 0.." +
+                                          formatNumber(sc.duration_s) + " s");
+  const auto& v = trace->speeds();
+  const auto top = std::max_element(v.begin(), v.end());
+  if (*top > 100)
+    throw InputError(rs.where("csv"), "the speed trace " + file + " reaches " + formatNumber(*top) + " m/s at sample " +
+                                          std::to_string(top - v.begin()) + "; at most 100 m/s");
+  sc.speed.trace = std::move(trace);
+}
+
 /// [scenarios.NAME]: duration, speed profile and road (one of the registered road types), in the file's order.
 void readScenarios(TableReader& top, Study& s) {
   const std::string& path = top.file();
@@ -203,11 +223,15 @@ void readScenarios(TableReader& top, Study& s) {
       if (sc.duration_s > 86400) throw InputError(r.where("duration_s"), "must be at most 86400 s, got " + formatNumber(sc.duration_s));
       if (auto* sp = r.table("speed")) {
         TableReader rs(*sp, path, r.field("speed"));
-        sc.speed.v_final_mps = rs.number("v_final_mps", 8.9408);
-        sc.speed.ramp_s = rs.number("ramp_s", 5.0);
-        if (sc.speed.v_final_mps < 0 || sc.speed.v_final_mps > 100)
-          throw InputError(rs.where("v_final_mps"), "must lie in [0, 100] m/s, got " + formatNumber(sc.speed.v_final_mps));
-        if (sc.speed.ramp_s < 0) throw InputError(rs.where("ramp_s"), "must be >= 0");
+        if (auto csv = rs.string("csv")) {
+          readSpeedTrace(rs, *csv, sc);
+        } else {
+          sc.speed.v_final_mps = rs.number("v_final_mps", 8.9408);
+          sc.speed.ramp_s = rs.number("ramp_s", 5.0);
+          if (sc.speed.v_final_mps < 0 || sc.speed.v_final_mps > 100)
+            throw InputError(rs.where("v_final_mps"), "must lie in [0, 100] m/s, got " + formatNumber(sc.speed.v_final_mps));
+          if (sc.speed.ramp_s < 0) throw InputError(rs.where("ramp_s"), "must be >= 0");
+        }
         rs.finish();
       }
       sc.road = parseRoadSetting(r);

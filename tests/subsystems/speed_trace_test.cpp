@@ -23,13 +23,18 @@ double simpson(const std::function<double(double)>& f, double a, double b, int n
   return s * h / 3;
 }
 
-std::string errorOf(std::vector<double> t, std::vector<double> v) {
+/// The message of the InputError `f` throws ("" if none).
+std::string messageOf(const std::function<void()>& f) {
   try {
-    SpeedTrace(std::move(t), std::move(v), "speed.csv");
+    f();
   } catch (const InputError& e) {
     return e.what();
   }
   return "";
+}
+
+std::string errorOf(std::vector<double> t, std::vector<double> v) {
+  return messageOf([&] { SpeedTrace(std::move(t), std::move(v), "speed.csv"); });
 }
 }  // namespace
 
@@ -125,12 +130,7 @@ TEST(SpeedTrace, StartsAfterTimeZeroAndEndsAtRest) {
 
 namespace {
 std::string csvError(const std::string& text) {
-  try {
-    dtwin::parseSpeedTraceCsv(text, "drive.csv");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return messageOf([&] { dtwin::parseSpeedTraceCsv(text, "drive.csv"); });
 }
 }  // namespace
 

@@ -165,13 +165,8 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
       throw InputError(prefix + std::to_string(i + 1),
                        "time_s " + formatExact(r.time_s) + " lies outside scenario '" + set.scenario.name + "' (0.." +
                            formatExact(set.scenario.duration_s) + " s)");
-    const double row = std::round(r.time_s * rate);
-    if (std::abs(row - r.time_s * rate) > 1e-6)
-      throw InputError(prefix + std::to_string(i + 1),
-                       "time_s " + formatExact(r.time_s) + " is not on the " + formatExact(rate) +
-                           " Hz output grid of the simulation (set [simulation] output_rate_hz to match the data)");
     y_.push_back(r.value);
-    where_.push_back({col, static_cast<std::size_t>(row)});
+    where_.push_back({col, false, 0});
     t_max = std::max(t_max, r.time_s);
   }
   if (ds.data.records.empty()) throw InputError(ds.name, "holds no records");
@@ -179,6 +174,23 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
   // Nothing after the last measured time matters: stop the simulation shortly after it (the
   // step sequence before that point does not depend on where the run ends).
   set.scenario.duration_s = std::min(set.scenario.duration_s, t_max + 0.05);
+  // A time on the output grid reads its row; any other time is an extra output time of the run,
+  // from the same dense output (twin/simulator.hpp RunResult::samples).
+  std::vector<double>& extra = set.scenario.sample_times_s;
+  for (std::size_t i = 0; i < set.count; ++i)
+    if (!onGrid(ds.data.records[i].time_s, rate)) extra.push_back(ds.data.records[i].time_s);
+  std::sort(extra.begin(), extra.end());
+  extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+  for (std::size_t i = 0; i < set.count; ++i) {
+    RecordRead& w = where_[set.first + i];
+    const double t = ds.data.records[i].time_s;
+    if (onGrid(t, rate)) {
+      w.index = static_cast<std::size_t>(std::llround(t * rate));
+    } else {
+      w.at_sample = true;
+      w.index = static_cast<std::size_t>(std::lower_bound(extra.begin(), extra.end(), t) - extra.begin());
+    }
+  }
   sets_.push_back(std::move(set));
 }
 
@@ -227,25 +239,35 @@ std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta) co
   return out;
 }
 
+std::vector<RunResult> LabObjective::runs(const std::vector<double>& theta) const {
+  auto r = runAll(theta);
+  if (r.size() != sets_.size() || !r.back().stats.ok) return {};
+  return r;
+}
+
 std::vector<Trace> LabObjective::traces(const std::vector<double>& theta) const {
-  auto runs = runAll(theta);
   std::vector<Trace> t;
-  for (auto& r : runs) {
-    if (!r.stats.ok) return {};
-    t.push_back(std::move(r.trace));
-  }
+  for (auto& r : runs(theta)) t.push_back(std::move(r.trace));
   return t;
 }
 
+double LabObjective::read(const RunResult& run, std::size_t record, std::size_t column) const {
+  const RecordRead& w = where_[record];
+  const Trace& tr = w.at_sample ? run.samples : run.trace;
+  DTWIN_CHECK(column < tr.channels().size() && w.index < tr.rows(), "read: record outside its run's output");
+  return tr.column(column)[w.index];
+}
+
 std::vector<double> LabObjective::predict(const std::vector<double>& theta) const {
-  const auto runs = runAll(theta);
-  if (runs.size() != sets_.size() || !runs.back().stats.ok) return {};
+  const auto rs = runAll(theta);
+  if (rs.size() != sets_.size() || !rs.back().stats.ok) return {};
   std::vector<double> eta(y_.size());
   for (std::size_t k = 0; k < sets_.size(); ++k)
     for (std::size_t i = sets_[k].first; i < sets_[k].first + sets_[k].count; ++i) {
-      const auto& col = runs[k].trace.column(static_cast<std::size_t>(where_[i].first));
-      if (where_[i].second >= col.size()) return {};
-      eta[i] = col[where_[i].second];
+      const RecordRead& w = where_[i];
+      const Trace& tr = w.at_sample ? rs[k].samples : rs[k].trace;
+      if (w.index >= tr.rows()) return {};
+      eta[i] = tr.column(static_cast<std::size_t>(w.column))[w.index];
     }
   return eta;
 }

@@ -43,7 +43,8 @@
 namespace dtwin::calib {
 
 /// One set of measurements tied to the scenario it was measured on (a file of the tidy lab
-/// layout: several channels, times on the simulation's output grid, any number of repetitions).
+/// layout: several channels, any times inside the scenario (off the output grid the run adds
+/// them as extra output times), any number of repetitions).
 struct DataSet {
   std::string name;      ///< names the data in errors and reports (e.g. the file path)
   std::string scenario;  ///< a scenario of the study
@@ -112,6 +113,11 @@ class LabObjective {
   std::vector<double> residuals(const std::vector<double>& theta) const;
   /// The full traces of each data set's run at θ (empty vector on failure).
   std::vector<Trace> traces(const std::vector<double>& theta) const;
+  /// Each data set's run at θ, with its output at the data's off-grid times (empty on failure).
+  std::vector<RunResult> runs(const std::vector<double>& theta) const;
+  /// Channel `column` (Simulator::channels() order) of `run` (the run of record's data set) at
+  /// record `record`'s time: its output-grid row, or its row of run.samples when off the grid.
+  double read(const RunResult& run, std::size_t record, std::size_t column) const;
   /// The run vector (model().runParameterNames() layout) θ maps to.
   std::vector<double> runValues(const std::vector<double>& theta) const;
   long failures() const;
@@ -137,7 +143,12 @@ class LabObjective {
   std::vector<double> base_values_;
   std::vector<double> y_, w_;
   std::vector<int> set_of_;
-  std::vector<std::pair<int, std::size_t>> where_;  ///< (channel column, output row) per record
+  struct RecordRead {
+    int column = -1;         ///< channel column
+    bool at_sample = false;  ///< off the output grid: a row of RunResult::samples
+    std::size_t index = 0;   ///< the row (of the grid, or of the samples)
+  };
+  std::vector<RecordRead> where_;  ///< per record
   std::unique_ptr<Pool> pool_;
 };
 

@@ -109,42 +109,63 @@ struct SeriesContext {
   const std::map<std::string, ChannelNoise>& noise;
   const CompareOptions& options;
   const VehicleData& vehicle;
-  double rate;  ///< output rate of the traces [rows/s]
 };
 
-/// The row of a trace at time t, clamped to its last row.
-double valueAt(const Trace& tr, const std::string& column, std::size_t row) {
-  const auto& col = tr.column(column);
-  return row < col.size() ? col[row] : col.back();
-}
+/// Where a record reads a run: the run of its data set and the record's index in the objective.
+struct At {
+  const calib::LabObjective& objective;
+  const RunResult& run;
+  std::size_t record;
+  /// The column `name` at the record's time (on the grid or at the run's extra output time).
+  double operator()(const std::string& name) const {
+    const int c = run.trace.index(name);
+    DTWIN_CHECK(c >= 0, "no channel " + name);
+    return objective.read(run, record, static_cast<std::size_t>(c));
+  }
+};
 
-/// Adds the residual of channel `ch` at trace row `row` and the model's states there (the
-/// channel's corner, "fl" for chassis channels) to `pl`.
-void poolStates(Pooled& pl, const Trace& tr, const std::string& ch, std::size_t row, double residual) {
+/// Adds the residual of channel `ch` at a record's time (`at`: where it reads the run) and the
+/// model's states there (the channel's corner, "fl" for chassis channels) to `pl`.
+void poolStates(Pooled& pl, const std::string& ch, const At& at, double residual) {
   pl.residual.push_back(residual);
   std::string c = cornerOf(ch);
   if (c.empty()) c = "fl";
   const bool front = c[0] == 'f';
-  pl.state["susp_defl_" + c + "_m"].push_back(valueAt(tr, "susp_defl_" + c + "_m", row));
-  pl.state["susp_rate_" + c + "_mps"].push_back(valueAt(tr, "susp_rate_" + c + "_mps", row));
-  pl.state["tire_defl_" + c + "_m"].push_back(valueAt(tr, "tire_defl_" + c + "_m", row));
-  pl.state["speed_mps"].push_back(valueAt(tr, "speed_mps", row));
+  pl.state["susp_defl_" + c + "_m"].push_back(at("susp_defl_" + c + "_m"));
+  pl.state["susp_rate_" + c + "_mps"].push_back(at("susp_rate_" + c + "_mps"));
+  pl.state["tire_defl_" + c + "_m"].push_back(at("tire_defl_" + c + "_m"));
+  pl.state["speed_mps"].push_back(at("speed_mps"));
   const std::string l = front ? "fl" : "rl", r = front ? "fr" : "rr";
-  pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(valueAt(tr, "susp_defl_" + l + "_m", row) -
-                                                                                   valueAt(tr, "susp_defl_" + r + "_m", row));
+  pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(at("susp_defl_" + l + "_m") -
+                                                                                   at("susp_defl_" + r + "_m"));
 }
 
-/// The residual of a fitted series in frequency (needs a uniform time base of >= 64 times), with
-/// the road under the channel's wheel as the coherence input; else why not, in bands_note.
-void addBands(SeriesComparison& sc, const Trace& tr, double rate) {
-  bool uniform = sc.t.size() >= 64;
-  const double dt = sc.t.size() > 1 ? sc.t[1] - sc.t[0] : 0.0;
-  for (std::size_t i = 1; uniform && i < sc.t.size(); ++i)
-    if (std::abs(sc.t[i] - sc.t[i - 1] - dt) > 1e-6 * dt) uniform = false;
-  if (!uniform) {
-    sc.bands_note = "no spectrum: fewer than 64 times or a non-uniform time base";
+/// The residual of a fitted series in frequency, with the road under the channel's wheel as the
+/// coherence input; else why not, in bands_note. Needs >= 64 times on a uniform base: every time
+/// within 0.4 of a step of the nominal grid t0 + i dt (dt the mean step, t0 the median offset):
+/// a logger's jittered clock. The spectrum then takes the times as uniform, and bands_note says
+/// how far they strayed. A gap or a change of rate gives no spectrum.
+void addBands(SeriesComparison& sc, const std::vector<At>& at) {
+  const std::size_t n = sc.t.size();
+  if (n < 64) {
+    sc.bands_note = "no spectrum: fewer than 64 times";
     return;
   }
+  const double dt = (sc.t.back() - sc.t.front()) / static_cast<double>(n - 1);
+  std::vector<double> offsets(n);
+  for (std::size_t i = 0; i < n; ++i) offsets[i] = sc.t[i] - static_cast<double>(i) * dt;
+  std::nth_element(offsets.begin(), offsets.begin() + static_cast<long>(n / 2), offsets.end());
+  const double t0 = offsets[n / 2];
+  for (std::size_t i = 0; i < n; ++i) offsets[i] = sc.t[i] - static_cast<double>(i) * dt;
+  double stray = 0.0;
+  for (std::size_t i = 0; i < n; ++i) stray = std::max(stray, std::abs(offsets[i] - t0) / dt);
+  if (stray > 0.4) {
+    sc.bands_note = "no spectrum: a non-uniform time base (a time " + formatNumber(stray, 3) + " steps of " +
+                    formatNumber(dt, 4) + " s off the nominal grid; gaps or mixed rates)";
+    return;
+  }
+  if (stray > 1e-6) sc.bands_note = "sample times jitter up to " + formatNumber(100.0 * stray, 3) +
+                                    " % of the step " + formatNumber(dt, 4) + " s: the spectrum treats them as uniform";
   if (!sc.fitted) {
     sc.bands_note = "no spectrum: no noise estimate for this channel";
     return;
@@ -153,12 +174,10 @@ void addBands(SeriesComparison& sc, const Trace& tr, double rate) {
   double rbar = 0.0;
   std::string c = cornerOf(sc.channel);
   if (c.empty()) c = "fl";
-  const auto& rc = tr.column("road_" + c + "_m");
   for (std::size_t i = 0; i < sc.t.size(); ++i) {
     res[i] = sc.measured_mean[i] - sc.predicted_mean[i];
     rbar += sc.repetitions[i];
-    const std::size_t row = static_cast<std::size_t>(std::llround(sc.t[i] * rate));
-    road[i] = row < rc.size() ? rc[row] : rc.back();
+    road[i] = at[i]("road_" + c + "_m");
   }
   rbar /= static_cast<double>(sc.t.size());
   sc.bands = bandAnalysis(res, 1.0 / dt, sc.noise_variance / rbar, &road, welchSegment(res.size()));
@@ -168,7 +187,7 @@ void addBands(SeriesComparison& sc, const Trace& tr, double rate) {
 /// figures, the windows of large residual (fitted series) and the bands; the residual is pooled
 /// into `pl` for the force-state maps. `offset`: the data set's first record in the objective.
 SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds, const std::string& ch, std::size_t offset,
-                               const Trace& tr, const ScenarioSpec& scenario, Pooled& pl) {
+                               const RunResult& run, const ScenarioSpec& scenario, Pooled& pl) {
   const auto& measured = cx.objective.measured();
   SeriesComparison sc;
   sc.data_set = ds.name;
@@ -189,6 +208,7 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
     if (ds.data.records[k].channel == ch) by_time[ds.data.records[k].time_s].push_back(offset + k);
   double ss = 0, ss_sys = 0, ss_noise = 0, ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
   long n_rec = 0, covered = 0;
+  std::vector<At> samples;  // where each measured time reads the run
   for (const auto& [t, idx] : by_time) {
     double ym = 0.0;
     for (auto i : idx) ym += measured[i];
@@ -222,7 +242,8 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
     ymin = std::min(ymin, ym);
     ymax = std::max(ymax, ym);
     if (sc.fitted) sc.lack_of_fit += static_cast<double>(idx.size()) * (ym - pm) * (ym - pm) / sc.noise_variance;
-    poolStates(pl, tr, ch, static_cast<std::size_t>(std::llround(t * cx.rate)), ym - pm);
+    samples.push_back(At{cx.objective, run, idx[0]});
+    poolStates(pl, ch, samples.back(), ym - pm);
   }
   const double nt = static_cast<double>(sc.t.size());
   sc.rms = std::sqrt(ss / static_cast<double>(n_rec));
@@ -240,7 +261,7 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
       sc.windows.push_back(lw);
     }
   }
-  addBands(sc, tr, cx.rate);
+  addBands(sc, samples);
   return sc;
 }
 
@@ -309,23 +330,18 @@ Comparison compareModel(const calib::LabObjective& objective, const std::vector<
   std::vector<double> centre(draws[0].size(), 0.0);
   for (const auto& d : draws)
     for (std::size_t k = 0; k < d.size(); ++k) centre[k] += d[k] / static_cast<double>(draws.size());
-  std::vector<Trace> traces = objective.traces(centre);
-  if (traces.empty()) traces = objective.traces(draws[0]);
-  if (traces.empty()) throw std::runtime_error("compare: the run at the posterior mean failed");
+  std::vector<RunResult> runs = objective.runs(centre);
+  if (runs.empty()) runs = objective.runs(draws[0]);
+  if (runs.empty()) throw std::runtime_error("compare: the run at the posterior mean failed");
   const auto scenarios = objective.scenarios();
-  const double rate = [&] {
-    // Output rate of the traces (rows per second).
-    const auto& tc = traces[0].column("time_s");
-    return tc.size() > 1 ? 1.0 / (tc[1] - tc[0]) : 1000.0;
-  }();
-  const SeriesContext cx{objective, ok, noise, options, objective.model().vehicle(), rate};
+  const SeriesContext cx{objective, ok, noise, options, objective.model().vehicle()};
 
   std::map<std::string, Pooled> pooled;
   std::vector<std::string> channel_order;
   std::size_t offset = 0;
   for (std::size_t s = 0; s < sets.size(); ++s) {
     for (const auto& ch : sets[s].data.channels()) {
-      out.series.push_back(compareSeries(cx, sets[s], ch, offset, traces[s], scenarios[s], pooled[ch]));
+      out.series.push_back(compareSeries(cx, sets[s], ch, offset, runs[s], scenarios[s], pooled[ch]));
       if (std::find(channel_order.begin(), channel_order.end(), ch) == channel_order.end()) channel_order.push_back(ch);
     }
     offset += sets[s].data.records.size();

@@ -2,7 +2,8 @@
 // Measurement files for comparison and diagnosis (docs/diagnosis.md): the tidy lab layout
 // (repetition,time_s,channel,value; several channels, any number of repetitions), each file tied
 // to a scenario of the study. A file may come from a real vehicle: channel names and unit suffixes
-// are validated, times must lie on the simulation's output grid inside the scenario.
+// are validated, times must lie inside the scenario; times off the simulation's output grid are
+// compared with the output interpolated there (twin/trace.hpp GridSample).
 #include <map>
 #include <string>
 #include <vector>
@@ -25,7 +26,7 @@ MeasurementSpec parseMeasurementArg(const std::string& text, const std::string& 
 /// with neither is refused. The random road's seed comes from the sidecar's road.seed (else the
 /// study's seed is used: a measurement on a real road needs a csv-road scenario). Errors (InputError, one line): unreadable or malformed file (the lab
 /// reader's rules: unknown channel, wrong unit suffix, NaN, non-monotone time, ...), unknown
-/// scenario, a time outside the scenario or off the output grid (file:line, the rule broken).
+/// scenario, a time after the end of the scenario (file:line, the rule broken).
 calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec);
 
 /// The noise of one channel of one data set: the pooled within-(channel, time) variance of the

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,9 @@ struct ScenarioSpec {
   SpeedProfile speed;
   /// The road type and its fields (twin/road_setting.hpp); shared, never modified after reading.
   std::shared_ptr<const RoadSetting> road = flatRoadSetting();
+  /// Extra output times a caller asks of a run (ascending, within duration_s): the times of
+  /// measurements off the output grid. Not part of the study file, nor of toJson().
+  std::vector<double> sample_times_s;
   nlohmann::json toJson() const;
 };
 

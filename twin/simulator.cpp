@@ -733,6 +733,12 @@ struct Simulator::Impl {
     res.stats.knots = static_cast<long>(knots.size());
     res.stats.sim_s = times.back();
     makeOutput(knots, times, sc, res.trace);
+    if (!sc.sample_times_s.empty() && res.stats.ok) {
+      DTWIN_CHECK(std::is_sorted(sc.sample_times_s.begin(), sc.sample_times_s.end()) && sc.sample_times_s.front() >= 0 &&
+                      sc.sample_times_s.back() <= times.back() + 1e-9,
+                  "sample_times_s must be ascending and within the run");
+      writeRows(knots, times, sc, sc.sample_times_s, res.samples);
+    }
   }
 
   std::vector<RunResult> runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
@@ -802,13 +808,23 @@ struct Simulator::Impl {
 
   void makeOutput(const std::vector<std::array<double, KNOT>>& knots, const std::vector<double>& times,
                   const ScenarioSpec& sc, Trace& tr) {
-    for (auto& ch : channels()) tr.addChannel(ch);
     const std::size_t n = static_cast<std::size_t>(std::floor(times.back() * opt.output_rate_hz + 1e-9)) + 1;
+    std::vector<double> ts(n);
+    for (std::size_t r = 0; r < n; ++r) ts[r] = std::min(static_cast<double>(r) / opt.output_rate_hz, times.back());
+    writeRows(knots, times, sc, ts, tr);
+  }
+
+  /// The output channels at the ascending times `ts` (within the knots' span), from the cubic
+  /// Hermite interpolant of the knots: the integrator's dense output, whatever the times.
+  void writeRows(const std::vector<std::array<double, KNOT>>& knots, const std::vector<double>& times,
+                 const ScenarioSpec& sc, const std::vector<double>& ts, Trace& tr) {
+    for (auto& ch : channels()) tr.addChannel(ch);
+    const std::size_t n = ts.size();
     for (std::size_t i = 0; i < tr.channels().size(); ++i) tr.column(i).resize(n);
     const auto& k0 = knots.front();
     std::size_t j = 0;
     for (std::size_t r = 0; r < n; ++r) {
-      const double t = std::min(static_cast<double>(r) / opt.output_rate_hz, times.back());
+      const double t = ts[r];
       while (j + 2 < times.size() && times[j + 1] < t) ++j;
       const std::size_t j1 = std::min(j + 1, times.size() - 1);
       const auto& a = knots[j];

@@ -45,7 +45,10 @@ struct RunStats {
 };
 
 struct RunResult {
-  Trace trace;
+  Trace trace;    ///< every channel on the output grid (rows at k / output_rate_hz)
+  /// Every channel at the scenario's sample_times_s (rows in that order), from the same dense
+  /// output as the grid; empty when there are none or the run failed.
+  Trace samples;
   RunStats stats;
 };
 

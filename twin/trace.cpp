@@ -1,6 +1,8 @@
 #include "twin/trace.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +21,41 @@ std::string readFileBytes(const std::string& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+bool onGrid(double t, double rate) {
+  const double x = t * rate;
+  return std::abs(x - std::round(x)) <= 1e-6;
+}
+
+GridSample gridSample(double t, double rate, std::size_t rows) {
+  DTWIN_CHECK(rate > 0 && rows >= 1 && t >= -1e-6 / rate, "gridSample: bad grid or negative time");
+  const double x = t * rate;
+  const double last = static_cast<double>(rows - 1);
+  DTWIN_CHECK(x <= last + 1e-6, "gridSample: time after the end of the grid");
+  GridSample g;
+  if (onGrid(t, rate)) {
+    g.row = static_cast<std::size_t>(std::min(std::max(std::round(x), 0.0), last));
+    return g;
+  }
+  if (rows < 4) {  // too short for a cubic: linear between the two rows around t
+    const double k = std::floor(x);
+    g.row = static_cast<std::size_t>(k);
+    g.count = 2;
+    g.weight = {1.0 - (x - k), x - k, 0.0, 0.0};
+    return g;
+  }
+  const double start = std::clamp(std::floor(x) - 1.0, 0.0, static_cast<double>(rows - 4));
+  g.row = static_cast<std::size_t>(start);
+  g.count = 4;
+  const double s = x - start;  // the time in rows from the stencil's first row, in (0, 3)
+  for (int i = 0; i < 4; ++i) {
+    double w = 1.0;
+    for (int j = 0; j < 4; ++j)
+      if (j != i) w *= (s - j) / static_cast<double>(i - j);
+    g.weight[static_cast<std::size_t>(i)] = w;
+  }
+  return g;
 }
 
 int Trace::index(const std::string& name) const {

@@ -5,7 +5,9 @@
 
 #include "test_util.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "diagnosis/compare.hpp"
 #include "subsystems/effect.hpp"
@@ -54,6 +56,57 @@ TEST(Compare, ModelDataAreCoveredAndShowNoLackOfFit) {
   for (const auto& x : c.series)
     for (const auto& b : x.bands) flagged += b.significant;
   EXPECT_LE(flagged, 2);
+}
+
+// A logger's clock: one repetition at 100 Hz with up to ±2 ms of jitter, so no time is on the
+// 1 kHz output grid. Data made by the model at their own times are covered and show no lack of
+// fit; the same values stamped 20 ms late (a clock offset of two samples, on a bump) are flagged.
+// The spectrum is still drawn, with a note on the jitter.
+TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
+  const Study s = loadStudy(kDemo);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.002, 0.002);
+  std::normal_distribution<double> noise(0.0, std::sqrt(s.noise_variance_N2));
+  calib::DataSet at_own{"jitter.csv", "diag_bump", {}};
+  for (int k = 1; k < 280; ++k) {
+    const double t = 0.01 * k + jitter(rng);
+    for (const char* ch : {"hub_force_fl_N", "hub_force_rl_N"}) at_own.data.records.push_back({1, t, ch, 0.0});
+  }
+  {  // the model's values at the jittered times, plus noise
+    calib::LabObjective truth(s, s.assemblies().front(), {at_own}, {});
+    const auto eta = truth.predict(truthOf(s));
+    ASSERT_EQ(eta.size(), at_own.data.records.size());
+    for (std::size_t i = 0; i < eta.size(); ++i) at_own.data.records[i].value = eta[i] + noise(rng);
+  }
+  calib::LabObjective obj(s, s.assemblies().front(), {at_own}, {});
+  const auto c = compareModel(obj, {at_own}, {truthOf(s)}, estimateChannelNoise(s, {at_own}));
+  ASSERT_EQ(c.series.size(), 2u);
+  for (const auto& x : c.series) {
+    EXPECT_EQ(x.noise_source, "study [noise]") << x.channel;
+    EXPECT_NEAR(x.coverage, 0.95, 0.04) << x.channel;
+    EXPECT_NE(x.bands_note.find("jitter"), std::string::npos) << x.bands_note;
+    EXPECT_FALSE(x.bands.empty()) << x.channel;
+  }
+  EXPECT_GT(c.lack_of_fit_p, 1e-3) << "z = " << c.lack_of_fit_z;
+
+  calib::DataSet nominal = at_own;
+  for (std::size_t i = 0; i < nominal.data.records.size(); ++i)
+    nominal.data.records[i].time_s += 0.02;
+  calib::LabObjective obj_nominal(s, s.assemblies().front(), {nominal}, {});
+  const auto bad = compareModel(obj_nominal, {nominal}, {truthOf(s)}, estimateChannelNoise(s, {nominal}));
+  EXPECT_LT(bad.lack_of_fit_p, 1e-6) << "z = " << bad.lack_of_fit_z;
+
+  // A gap of 0.2 s in the log: compared all the same, but no spectrum (and the note says why).
+  calib::DataSet gap = at_own;
+  auto& recs = gap.data.records;
+  recs.erase(std::remove_if(recs.begin(), recs.end(), [](const LabRecord& r) { return r.time_s > 1.0 && r.time_s < 1.2; }),
+             recs.end());
+  calib::LabObjective obj_gap(s, s.assemblies().front(), {gap}, {});
+  const auto g = compareModel(obj_gap, {gap}, {truthOf(s)}, estimateChannelNoise(s, {gap}));
+  for (const auto& x : g.series) {
+    EXPECT_TRUE(x.bands.empty()) << x.channel;
+    EXPECT_NE(x.bands_note.find("non-uniform time base"), std::string::npos) << x.bands_note;
+  }
 }
 
 TEST(Compare, InjectedBurstIsLocatedAndLabelled) {

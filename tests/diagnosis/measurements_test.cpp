@@ -75,11 +75,9 @@ TEST(Measurements, BadInputsGiveOneLineErrorsNamingTheProblem) {
   const auto nan = writeFile("nan.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,nan\n");
   e = errorOf(s, nan.string() + "@diag_bump");
   EXPECT_NE(e.find("nan.csv:2"), std::string::npos) << e;
-  // Time base mismatch: 1.0003 s is not on the 1 kHz output grid.
+  // A time off the 1 kHz output grid is accepted (compared with the output interpolated there).
   const auto grid = writeFile("grid.csv", "repetition,time_s,channel,value\n1,1.0003,hub_force_fl_N,3700\n");
-  e = errorOf(s, grid.string() + "@diag_bump");
-  EXPECT_NE(e.find("grid.csv:2: time_s"), std::string::npos) << e;
-  EXPECT_NE(e.find("output grid"), std::string::npos) << e;
+  EXPECT_NO_THROW(loadMeasurement(s, parseMeasurementArg(grid.string() + "@diag_bump", "--data")));
   // A time after the end of the scenario (diag_bump lasts 3 s).
   const auto late = writeFile("late.csv", "repetition,time_s,channel,value\n1,3.5,hub_force_fl_N,3700\n");
   e = errorOf(s, late.string() + "@diag_bump");

@@ -151,7 +151,7 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
   set.scenario = study.scenario(ds.scenario);
   set.road = makeRoad(set.scenario, model_->vehicle(), ds.road_seed.value_or(study.seed));
   set.first = y_.size();
-  const auto channels = Simulator::channels();
+  const auto channels = Simulator::channels(model_->sensors());
   const double rate = study.simulation.output_rate_hz;
   double t_max = 0.0;
   const std::string prefix = single ? ds.name + " record " : ds.name + ": record ";

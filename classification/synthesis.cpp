@@ -170,7 +170,7 @@ SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, co
   plan.sc = &sc;
   if (!sc.road->random())
     throw InputError("scenario " + sc.name, "synthetic field data need a random (iso8608) road to draw a road library from");
-  for (const auto& c : measurableChannels())
+  for (const auto& c : measurableChannels(study.sensors))
     if (c.name == opt.channel) plan.unit = c.unit;
   plan.noisy = plan.unit == "N";
   plan.rate = study.simulation.output_rate_hz;

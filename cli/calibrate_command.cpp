@@ -31,7 +31,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
   study.scenario(cfg.scenario);  // validates the name
   if (!fs::exists(cfg.data)) throw InputError(cfg.data, "lab data file not found (--data)");
-  const LabData data = readLabCsv(cfg.data);
+  const LabData data = readLabCsv(cfg.data, measurableChannels(study.sensors));
   std::vector<AssemblySpec> targets;
   if (cfg.assembly == "all") targets = study.assemblies();
   else targets.push_back(study.assembly(cfg.assembly));

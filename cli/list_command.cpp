@@ -50,7 +50,7 @@ int runList(const std::string& study_path, bool params) {
     std::printf("\n");
   }
   std::printf("\noutput channels:\n");
-  for (const auto& c : Simulator::channels()) std::printf("  %-26s %s\n", c.name.c_str(), c.description.c_str());
+  for (const auto& c : Simulator::channels(study.sensors)) std::printf("  %-26s %s\n", c.name.c_str(), c.description.c_str());
   if (params) {
     std::printf("\nparameters (value, unit, source):\n");
     const auto t = study.parameterTable();

@@ -50,7 +50,7 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
     throw InputError("--window", "expects T0,T1 with T0 < T1");
   for (auto& c : cfg.channels) {
     bool ok = false;
-    for (auto& ch : Simulator::channels()) ok |= ch.name == c;
+    for (auto& ch : Simulator::channels(study.sensors)) ok |= ch.name == c;
     if (!ok) throw InputError("--channels", "unknown channel '" + c + "' (see `twin list --channels`)");
   }
   std::vector<std::string> channels = cfg.channels;
@@ -97,7 +97,7 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
     // of --assembly all records it.
     if (r.stats.ok) {
       writeFileAtomic(csv, r.trace.toCsv(channels, t_lo, t_hi));
-      const auto rec = runRecord(study, *model, sc, road->describe(), seed, values, opt, r.stats, Simulator::channels(), command);
+      const auto rec = runRecord(study, *model, sc, road->describe(), seed, values, opt, r.stats, Simulator::channels(study.sensors), command);
       writeFileAtomic(sidecarPath(csv), rec.dump(2) + "\n");
     }
     const double peak = peakOf(r.trace, "hub_force_fl_N");

@@ -30,7 +30,7 @@ calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec) 
   if (!fs::exists(spec.path)) throw InputError(spec.path, "no such file");
   calib::DataSet ds;
   ds.name = spec.path;
-  ds.data = readLabCsv(spec.path);
+  ds.data = readLabCsv(spec.path, measurableChannels(study.sensors));
   ds.scenario = spec.scenario;
   // The sidecar (when there is one) names the scenario and the random road's seed.
   const std::string side = sidecarPath(spec.path);
@@ -85,6 +85,12 @@ void addPureError(const LabData& data, const std::string& channel, Accum& acc) {
   }
 }
 bool isForce(const std::string& channel) { return channel.size() > 2 && channel.compare(channel.size() - 2, 2, "_N") == 0; }
+/// The noise_sd of the study's sensor with this channel (0: none given, or no such sensor).
+double sensorNoiseSd(const Study& study, const std::string& channel) {
+  for (const auto& x : study.sensors)
+    if (x.channel() == channel) return x.noise_sd;
+  return 0.0;
+}
 }  // namespace
 
 ChannelNoise estimateNoise(const Study& study, const LabData& data, const std::string& channel) {
@@ -95,6 +101,9 @@ ChannelNoise estimateNoise(const Study& study, const LabData& data, const std::s
     n.variance = a.ss / static_cast<double>(a.dof);
     n.dof = a.dof;
     n.source = "repetitions";
+  } else if (const double sd = sensorNoiseSd(study, channel); sd > 0) {
+    n.variance = sd * sd;
+    n.source = "sensor noise_sd";
   } else if (isForce(channel)) {
     n.variance = study.noise_variance_N2;
     n.source = "study [noise]";
@@ -120,13 +129,16 @@ std::map<std::string, ChannelNoise> estimateChannelNoise(const Study& study, con
       n.variance = acc[c].ss / static_cast<double>(acc[c].dof);
       n.dof = acc[c].dof;
       n.source = "repetitions";
+    } else if (const double sd = sensorNoiseSd(study, c); acc[c].dof == 0 && sd > 0) {
+      n.variance = sd * sd;
+      n.source = "sensor noise_sd";
     } else if (acc[c].dof == 0 && isForce(c)) {
       n.variance = study.noise_variance_N2;
       n.source = "study [noise]";
     } else {
       if (left_out)
         left_out->push_back(c + (acc[c].dof > 0 ? " (its repetitions agree exactly: no noise to weigh it by)"
-                                                 : " (one repetition and no [noise] variance for its unit)"));
+                                                 : " (one repetition, and no [noise] variance for its unit nor a sensor noise_sd)"));
       continue;
     }
     out[c] = n;

@@ -30,8 +30,9 @@ MeasurementSpec parseMeasurementArg(const std::string& text, const std::string& 
 calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec);
 
 /// The noise of one channel of one data set: the pooled within-(channel, time) variance of the
-/// repetitions ("pure error", dof = Σ (R_t − 1)), or, with a single repetition, the study's
-/// [noise] variance for force channels (unit N). dof = 0 and variance = 0 when neither exists.
+/// repetitions ("pure error", dof = Σ (R_t − 1)), or, with a single repetition, the noise_sd² of
+/// the study's sensor with this channel, else the study's [noise] variance for force channels
+/// (unit N). dof = 0 and variance = 0 when none exists.
 struct ChannelNoise {
   double variance = 0.0;
   long dof = 0;

@@ -113,7 +113,7 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
                            " changed after the study was run: the predictive bands use its current content");
   out.lab_path = summary.contains("paths") ? summary["paths"].value("lab", "") : "";
   if (out.lab_path.empty() || !fs::exists(out.lab_path)) out.lab_path = (dir / "lab" / "lab.csv").string();
-  out.lab = readLabCsv(out.lab_path);
+  out.lab = readLabCsv(out.lab_path, measurableChannels(out.study.sensors));
 
   std::vector<std::unique_ptr<calib::LabObjective>> objectives;
   std::vector<std::vector<std::size_t>> rows;

@@ -201,7 +201,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   const bool root = Distributed::instance().isRoot();  // only the root writes files and runs stage 5
   // The user's files are read and checked before anything is written: a bad --lab or --field
   // leaves no study folder behind.
-  if (!options.lab_file.empty()) (void)readLabCsv(options.lab_file);
+  if (!options.lab_file.empty()) (void)readLabCsv(options.lab_file, measurableChannels(study.sensors));
   if (!options.field_file.empty()) (void)readFieldCsv(options.field_file);
   if (fs::exists(out) && !fs::is_directory(out)) throw InputError(out_dir, "exists and is not a folder (--out)");
   news.say("study " + study.path + " -> " + out_dir + " (rerun the same command to resume)");

@@ -25,8 +25,9 @@ double noiseVariance(const Study& study, const std::optional<double>& override_v
   return v;
 }
 
-const Channel& channelInfo(const std::string& name, const std::string& where) {
-  static const std::vector<Channel> known = measurableChannels();
+/// A channel of the study's runs (the twin's and its [sensors]').
+Channel channelInfo(const Study& study, const std::string& name, const std::string& where) {
+  const std::vector<Channel> known = measurableChannels(study.sensors);
   const std::string rule = checkChannelName(name, known);
   if (!rule.empty()) throw InputError(where, rule);
   for (const auto& c : known)
@@ -180,7 +181,7 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   const std::vector<std::string> names = opt.channels.empty() ? study.lab.channelsOrDefault() : opt.channels;
   std::vector<Channel> channels;
   for (const auto& n : names) {
-    channels.push_back(channelInfo(n, opt.channels.empty() ? study.path + ": lab.channels" : check.where("channels")));
+    channels.push_back(channelInfo(study, n, opt.channels.empty() ? study.path + ": lab.channels" : check.where("channels")));
     for (std::size_t i = 0; i + 1 < channels.size(); ++i)
       if (channels[i].name == n) throw InputError(check.where("channels"), "channel '" + n + "' listed twice");
   }
@@ -325,7 +326,7 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
   const std::uint64_t seed = opt.seed.value_or(study.seed);
   const double variance = noiseVariance(study, opt.noise_variance_N2);
   const double sigma = std::sqrt(variance);
-  const Channel channel = channelInfo(opt.channel, "field channel");
+  const Channel channel = channelInfo(study, opt.channel, "field channel");
   const bool noisy = channel.unit == "N";
   const double rate = study.simulation.output_rate_hz;
   if (!(opt.t_begin_s <= opt.t_end_s))

@@ -142,9 +142,11 @@ double plausibleLimit(const std::string& unit) {
   return it == limits.end() ? 1e12 : it->second;
 }
 
-std::vector<Channel> measurableChannels() {
+std::vector<Channel> measurableChannels() { return measurableChannels({}); }
+
+std::vector<Channel> measurableChannels(const std::vector<SensorSpec>& sensors) {
   std::vector<Channel> out;
-  for (auto& c : Simulator::channels())
+  for (auto& c : Simulator::channels(sensors))
     if (c.name != "time_s") out.push_back(c);
   return out;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/format.hpp"  // formatExact
+#include "subsystems/sensor.hpp"
 #include "twin/trace.hpp"
 
 namespace dtwin {
@@ -31,8 +32,10 @@ struct LabData {
   std::vector<double> times(const std::string& channel) const;
 };
 
-/// The channels a measurement may name: every simulator output channel except time_s.
+/// The channels a measurement may name: every simulator output channel except time_s, then the
+/// channels of `sensors` (a study's [sensors]).
 std::vector<Channel> measurableChannels();
+std::vector<Channel> measurableChannels(const std::vector<SensorSpec>& sensors);
 
 /// The header of the lab layout.
 inline constexpr const char* kLabHeader = "repetition,time_s,channel,value";

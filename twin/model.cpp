@@ -161,8 +161,8 @@ void loadVehicleFile(ParameterTable& table, const std::string& path) {
 }
 
 // ------------------------------------------------------------------ Model
-Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where)
-    : assembly_(std::move(assembly)), table_(std::move(table)) {
+Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors)
+    : assembly_(std::move(assembly)), table_(std::move(table)), sensors_(std::move(sensors)) {
   const std::string tire = assembly_.option("tire"), susp = assembly_.option("suspension");
   if (tire.empty()) throw InputError(where, "assembly " + assembly_.id + " has no tire option");
   if (susp.empty()) throw InputError(where, "assembly " + assembly_.id + " has no suspension option");

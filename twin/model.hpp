@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "subsystems/sensor.hpp"
 #include "subsystems/effect.hpp"
 #include "subsystems/strut_law.hpp"
 #include "subsystems/tire_law.hpp"
@@ -60,7 +61,8 @@ class Model {
  public:
   /// Validates the options and that every parameter this assembly needs has a value.
   /// `where` names the source (study file) for error messages.
-  Model(AssemblySpec assembly, ParameterTable table, const std::string& where);
+  /// `sensors` (the study's [sensors], validated there) add output channels to every run.
+  Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors = {});
 
   const AssemblySpec& assembly() const { return assembly_; }
   const ParameterTable& table() const { return table_; }
@@ -72,6 +74,7 @@ class Model {
   /// The solid axle's wheel/axle interface law (paper eq. 5): always linear, fixed data.
   const StrutLaw& interfaceLaw() const { return interface_law_; }
   const std::vector<std::shared_ptr<const Effect>>& effects() const { return effects_; }
+  const std::vector<SensorSpec>& sensors() const { return sensors_; }
 
   /// Names of the per-run parameters (the run vector's layout).
   const std::vector<std::string>& runParameterNames() const { return run_names_; }
@@ -104,6 +107,7 @@ class Model {
   std::unique_ptr<StrutLaw> strut_;
   LinearStrut interface_law_;
   std::vector<std::shared_ptr<const Effect>> effects_;
+  std::vector<SensorSpec> sensors_;
   std::vector<std::string> run_names_;
   std::map<std::string, int> slots_;
   std::vector<int> tire_slots_, susp_slots_, iface_slots_;

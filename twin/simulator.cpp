@@ -727,7 +727,7 @@ struct Simulator::Impl {
   /// Fills knot count, simulated time and the output trace of `res` from the recorded knots.
   void finish(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, RunResult& res) {
     if (times.empty()) {  // the integrator could not even start: an empty trace with its channels
-      for (auto& ch : channels()) res.trace.addChannel(ch);
+      for (auto& ch : channels(model->sensors())) res.trace.addChannel(ch);
       return;
     }
     res.stats.knots = static_cast<long>(knots.size());
@@ -738,6 +738,7 @@ struct Simulator::Impl {
                       sc.sample_times_s.back() <= times.back() + 1e-9,
                   "sample_times_s must be ascending and within the run");
       writeRows(knots, times, sc, sc.sample_times_s, res.samples);
+      resampleFilteredSensors(res.trace, sc.sample_times_s, res.samples);
     }
   }
 
@@ -812,13 +813,14 @@ struct Simulator::Impl {
     std::vector<double> ts(n);
     for (std::size_t r = 0; r < n; ++r) ts[r] = std::min(static_cast<double>(r) / opt.output_rate_hz, times.back());
     writeRows(knots, times, sc, ts, tr);
+    filterSensors(tr);
   }
 
   /// The output channels at the ascending times `ts` (within the knots' span), from the cubic
   /// Hermite interpolant of the knots: the integrator's dense output, whatever the times.
   void writeRows(const std::vector<std::array<double, KNOT>>& knots, const std::vector<double>& times,
                  const ScenarioSpec& sc, const std::vector<double>& ts, Trace& tr) {
-    for (auto& ch : channels()) tr.addChannel(ch);
+    for (auto& ch : channels(model->sensors())) tr.addChannel(ch);
     const std::size_t n = ts.size();
     for (std::size_t i = 0; i < tr.channels().size(); ++i) tr.column(i).resize(n);
     const auto& k0 = knots.front();
@@ -852,9 +854,58 @@ struct Simulator::Impl {
       tr.column(col++)[r] = acc(BODY + 1, BODY + 2);
       tr.column(col++)[r] = acc(BODY + 4, BODY + 5);
       tr.column(col++)[r] = acc(BODY + 7, BODY + 8);
+      for (const auto& x : model->sensors()) {  // before any filter (filterSensors)
+        Motion m;
+        if (x.corner() >= 0) {
+          const std::size_t c = static_cast<std::size_t>(x.corner());
+          m = {pos(HZ + c, HZD + c) - k0[HZ + c], pos(HZD + c, HZDD + c), acc(HZD + c, HZDD + c)};
+        } else {
+          const Motion heave{pos(BODY + 0, BODY + 1), pos(BODY + 1, BODY + 2), acc(BODY + 1, BODY + 2)};
+          const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), acc(BODY + 4, BODY + 5)};
+          const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), acc(BODY + 7, BODY + 8)};
+          const Motion at0{k0[BODY + 0], 0.0, 0.0};
+          m = chassisPointMotion(heave, pitch, roll, x.position_m);
+          m.q -= chassisPointMotion(at0, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, x.position_m).q;
+        }
+        tr.column(col++)[r] = x.quantity == SensorQuantity::DisplacementZ ? m.q : x.quantity == SensorQuantity::VelocityZ ? m.qd : m.qdd;
+      }
+    }
+  }
+
+  /// The filtered sensors' columns of a grid trace (makeOutput), filtered as the logger did.
+  void filterSensors(Trace& grid) {
+    const auto& sensors = model->sensors();
+    const std::size_t first = channels().size();
+    for (std::size_t i = 0; i < sensors.size(); ++i)
+      if (sensors[i].filter.order > 0) grid.column(first + i) = lowPass(grid.column(first + i), opt.output_rate_hz, sensors[i].filter);
+  }
+
+  /// A filtered sensor at extra output times: the filtered grid column read there (its filter
+  /// state lives on the grid; twin/trace.hpp GridSample, the four-point cubic).
+  void resampleFilteredSensors(const Trace& grid, const std::vector<double>& ts, Trace& samples) {
+    const auto& sensors = model->sensors();
+    const std::size_t first = channels().size();
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      if (sensors[i].filter.order == 0) continue;
+      const auto& g = grid.column(first + i);
+      auto& s = samples.column(first + i);
+      const double last = static_cast<double>(g.size() - 1) / opt.output_rate_hz;
+      for (std::size_t r = 0; r < ts.size(); ++r) s[r] = gridSample(std::min(ts[r], last), opt.output_rate_hz, g.size()).of(g);
     }
   }
 };
+
+std::vector<Channel> Simulator::channels(const std::vector<SensorSpec>& sensors) {
+  std::vector<Channel> ch = channels();
+  for (const auto& x : sensors) {
+    std::string d = sensorQuantityName(x.quantity) + " of " +
+                    (x.corner() >= 0 ? "the " + x.mount + " centre" : "the chassis point " + formatNumber(x.position_m[0]) + ", " +
+                                                                    formatNumber(x.position_m[1]) + ", " + formatNumber(x.position_m[2]) + " m");
+    if (x.filter.order > 0) d += ", low-pass order " + std::to_string(x.filter.order) + " at " + formatNumber(x.filter.cutoff_hz) + " Hz";
+    ch.push_back({x.channel(), x.unit(), "sensor " + x.name + ": " + d});
+  }
+  return ch;
+}
 
 std::vector<Channel> Simulator::channels() {
   std::vector<Channel> ch = {{"time_s", "s", "time"}, {"speed_mps", "m/s", "forward speed"}};

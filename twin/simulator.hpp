@@ -97,6 +97,9 @@ class Simulator {
 
   /// Channel names and units every run produces.
   static std::vector<Channel> channels();
+  /// channels(), then one channel per sensor (SensorSpec::channel()): what a run of a model with
+  /// these sensors produces.
+  static std::vector<Channel> channels(const std::vector<SensorSpec>& sensors);
 
  private:
   struct Impl;

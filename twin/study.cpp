@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "twin/measurement.hpp"
 #include "twin/road_setting.hpp"
 #include "twin/toml_reader.hpp"
 
@@ -297,6 +298,57 @@ void readSizes(TableReader& top, Study& s) {
   }
 }
 
+/// [sensors.NAME]: where a sensor is mounted, what it measures and how the logger filtered it.
+void readSensors(TableReader& top, Study& s) {
+  const std::string& path = top.file();
+  auto* t = top.table("sensors");
+  if (!t) return;
+  std::vector<std::string> taken;
+  for (const auto& c : Simulator::channels()) taken.push_back(c.name);
+  for (auto&& [key, node] : *t) {
+    const std::string name(key.str());
+    const std::string field = "sensors." + name;
+    auto* st = node.as_table();
+    if (!st) throw InputError(path + ":" + std::to_string(node.source().begin.line) + ": " + field, "must be a table");
+    TableReader r(*st, path, field);
+    const std::string where = path + ":" + std::to_string(st->source().begin.line) + ": " + field;
+    SensorSpec x;
+    x.name = name;
+    x.mount = r.string("body").value_or("chassis");
+    const auto q = r.string("quantity");
+    if (!q) throw InputError(r.where("quantity"), "is required (\"displacement_z\", \"velocity_z\" or \"acceleration_z\")");
+    x.quantity = parseSensorQuantity(*q, r.where("quantity"));
+    if (auto* a = r.array("position_m")) {
+      if (a->size() != 3) throw InputError(r.where("position_m"), "must be [x, y, z] in metres (3 numbers), got " + std::to_string(a->size()));
+      for (std::size_t i = 0; i < 3; ++i) {
+        const auto v = (*a)[i].value<double>();
+        if (!v) throw InputError(r.where("position_m"), "must be [x, y, z] in metres (3 numbers)");
+        x.position_m[i] = *v;
+      }
+    }
+    if (auto* f = r.table("filter")) {
+      TableReader fr(*f, path, field + ".filter");
+      const auto order = fr.integer("order");
+      if (!order) throw InputError(fr.where("order"), "is required (1 or 2; leave filter out for none)");
+      x.filter.order = static_cast<int>(*order);
+      x.filter.cutoff_hz = fr.number("cutoff_hz", 0.0);
+      x.filter.damping = fr.number("damping", x.filter.damping);
+      fr.finish();
+    }
+    x.noise_sd = r.number("noise_sd", 0.0);
+    r.finish();
+    try {
+      x.validate(field);
+    } catch (const InputError& e) {  // the line of the sensor's table
+      throw InputError(path + ":" + std::to_string(st->source().begin.line) + ": " + e.where(), e.rule());
+    }
+    if (std::find(taken.begin(), taken.end(), x.channel()) != taken.end())
+      throw InputError(where, "its channel " + x.channel() + " is already a channel of the twin: choose another sensor name");
+    taken.push_back(x.channel());
+    s.sensors.push_back(x);
+  }
+}
+
 /// [lab]: lab times (given, or automatic), channels.
 void readLab(TableReader& top, Study& s) {
   const std::string& path = top.file();
@@ -324,8 +376,7 @@ void readLab(TableReader& top, Study& s) {
     }
     lab.channels = r.strings("channels");
     std::vector<std::string> known;
-    for (const auto& c : Simulator::channels())
-      if (c.name != "time_s") known.push_back(c.name);
+    for (const auto& c : measurableChannels(s.sensors)) known.push_back(c.name);
     for (std::size_t i = 0; i < lab.channels.size(); ++i) {
       const auto& c = lab.channels[i];
       if (std::find(known.begin(), known.end(), c) == known.end()) {
@@ -455,6 +506,7 @@ Study loadStudy(const std::string& path) {
   readScenarios(top, s);
   readSimulation(top, s);
   readNoise(top, s);
+  readSensors(top, s);
   readSizes(top, s);
   readLab(top, s);  // after [simulation]: lab times lie on its output grid
   readCalibrationSettings(top, s);
@@ -527,7 +579,7 @@ std::shared_ptr<const Model> Study::makeModel(const AssemblySpec& a, const std::
     all.insert(all.end(), e.values.begin(), e.values.end());
   }
   all.insert(all.end(), overrides.begin(), overrides.end());
-  return std::make_shared<const Model>(spec, parameterTable(all), path);
+  return std::make_shared<const Model>(spec, parameterTable(all), path, sensors);
 }
 
 std::vector<std::string> LabSettings::channelsOrDefault() const {
@@ -558,6 +610,7 @@ nlohmann::json Study::toJson() const {
     j["calibrated"].push_back(cj);
   }
   j["noise_variance_N2"] = noise_variance_N2;
+  for (const auto& x : sensors) j["sensors"].push_back(x.toJson());
   j["sizes"] = sizes.asMap();
   j["lab"] = lab.toJson();
   j["calibration"] = calibration.toJson();

@@ -104,6 +104,7 @@ struct Study {
   std::vector<ScenarioSpec> scenarios;
   SimulationOptions simulation;
   double noise_variance_N2 = 18000.0;
+  std::vector<SensorSpec> sensors;  ///< [sensors.NAME], by name
   StudySizes sizes;
   LabSettings lab;
   CalibrationSettings calibration;

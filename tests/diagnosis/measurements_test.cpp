@@ -120,3 +120,34 @@ TEST(Measurements, NoiseFromRepetitionsIsThePooledPureError) {
   EXPECT_DOUBLE_EQ(n1.variance, s.noise_variance_N2);
   EXPECT_EQ(n1.source, "study [noise]");
 }
+
+// A sensor channel with one repetition is weighed by its sensor's noise_sd; repetitions, when
+// there are some, still win; a sensor without noise_sd is left out with the reason; a file may
+// name the sensor's channel.
+TEST(Measurements, SensorNoiseWeighsASingleRepetition) {
+  const fs::path dir = dtwin_test::freshDir("meas_sensor_noise");
+  const Study s = loadStudy(dtwin_test::writeDemoStudy(dir / "study.toml",
+                                                       "lab_repetitions = 2\n[sensors.seat]\nquantity = \"acceleration_z\"\n"
+                                                       "noise_sd = 0.05\n[sensors.bare]\nquantity = \"acceleration_z\"\n")
+                                .string());
+  LabData one;
+  for (int k = 0; k < 10; ++k) {
+    one.records.push_back({1, 0.1 * k, "seat_mps2", 0.01 * k});
+    one.records.push_back({1, 0.1 * k, "bare_mps2", 0.01 * k});
+  }
+  const ChannelNoise n = estimateNoise(s, one, "seat_mps2");
+  EXPECT_EQ(n.source, "sensor noise_sd");
+  EXPECT_DOUBLE_EQ(n.variance, 0.0025);
+  std::vector<std::string> left_out;
+  const auto all = estimateChannelNoise(s, {{"one.csv", "diag_rough", one}}, &left_out);
+  EXPECT_EQ(all.count("seat_mps2"), 1u);
+  EXPECT_EQ(all.count("bare_mps2"), 0u);
+  ASSERT_EQ(left_out.size(), 1u);
+  EXPECT_NE(left_out[0].find("noise_sd"), std::string::npos) << left_out[0];
+  LabData two = one;
+  for (int k = 0; k < 10; ++k) two.records.push_back({2, 0.1 * k, "seat_mps2", 0.01 * k + (k % 2 ? 0.1 : -0.1)});
+  EXPECT_EQ(estimateNoise(s, two, "seat_mps2").source, "repetitions");
+  const auto f = writeFile("sensor.csv", "repetition,time_s,channel,value\n1,0.5,seat_mps2,0.2\n");
+  EXPECT_NO_THROW(loadMeasurement(s, parseMeasurementArg(f.string() + "@diag_rough", "--data")));
+  EXPECT_NE(errorOf(loadStudy(kDemo), f.string() + "@diag_rough").find("seat_mps2"), std::string::npos);
+}

@@ -1,0 +1,145 @@
+#include "subsystems/sensor.hpp"
+
+#include <cmath>
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
+namespace dtwin {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+const char* kWheelMounts[4] = {"wheel_fl", "wheel_fr", "wheel_rl", "wheel_rr"};
+}  // namespace
+
+nlohmann::json SensorFilter::toJson() const {
+  nlohmann::json j = {{"order", order}};
+  if (order > 0) j["cutoff_hz"] = cutoff_hz;
+  if (order == 2) j["damping"] = damping;
+  return j;
+}
+
+std::string SensorSpec::channel() const {
+  switch (quantity) {
+    case SensorQuantity::DisplacementZ: return name + "_m";
+    case SensorQuantity::VelocityZ: return name + "_mps";
+    case SensorQuantity::AccelerationZ: return name + "_mps2";
+  }
+  return name;
+}
+
+std::string SensorSpec::unit() const {
+  switch (quantity) {
+    case SensorQuantity::DisplacementZ: return "m";
+    case SensorQuantity::VelocityZ: return "m/s";
+    case SensorQuantity::AccelerationZ: return "m/s^2";
+  }
+  return "";
+}
+
+int SensorSpec::corner() const {
+  for (int c = 0; c < 4; ++c)
+    if (mount == kWheelMounts[c]) return c;
+  return -1;
+}
+
+void SensorSpec::validate(const std::string& where) const {
+  bool name_ok = !name.empty() && name.size() <= 40 && name[0] >= 'a' && name[0] <= 'z';
+  for (char c : name) name_ok = name_ok && ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_');
+  if (!name_ok)
+    throw InputError(where, "sensor name '" + name + "' must be 1-40 characters of a-z, 0-9 and _, starting with a letter");
+  if (mount != "chassis" && corner() < 0)
+    throw InputError(where + ".body", "must be \"chassis\", \"wheel_fl\", \"wheel_fr\", \"wheel_rl\" or \"wheel_rr\", got \"" + mount + "\"");
+  for (double x : position_m)
+    if (!(std::isfinite(x) && std::abs(x) <= 10.0))
+      throw InputError(where + ".position_m", "each coordinate must be a finite number of at most 10 m, got " + formatNumber(x));
+  if (corner() >= 0 && (position_m[0] != 0 || position_m[1] != 0 || position_m[2] != 0))
+    throw InputError(where + ".position_m", "a wheel sensor measures at the wheel centre: leave position_m out (or [0, 0, 0])");
+  if (filter.order < 0 || filter.order > 2)
+    throw InputError(where + ".filter.order", "must be 0 (none), 1 or 2, got " + std::to_string(filter.order));
+  if (filter.order > 0 && !(std::isfinite(filter.cutoff_hz) && filter.cutoff_hz > 0 && filter.cutoff_hz <= 1e4))
+    throw InputError(where + ".filter.cutoff_hz", "must lie in (0, 1e4] Hz, got " + formatNumber(filter.cutoff_hz));
+  if (filter.order == 2 && !(std::isfinite(filter.damping) && filter.damping > 0 && filter.damping <= 10))
+    throw InputError(where + ".filter.damping", "must lie in (0, 10], got " + formatNumber(filter.damping));
+  if (!(std::isfinite(noise_sd) && noise_sd >= 0))
+    throw InputError(where + ".noise_sd", "must be a finite number >= 0, got " + formatNumber(noise_sd));
+}
+
+nlohmann::json SensorSpec::toJson() const {
+  nlohmann::json j = {{"name", name},     {"channel", channel()}, {"body", mount},
+                      {"quantity", sensorQuantityName(quantity)}, {"filter", filter.toJson()}};
+  if (corner() < 0) j["position_m"] = position_m;
+  if (noise_sd > 0) j["noise_sd"] = noise_sd;
+  return j;
+}
+
+SensorQuantity parseSensorQuantity(const std::string& text, const std::string& where) {
+  if (text == "displacement_z") return SensorQuantity::DisplacementZ;
+  if (text == "velocity_z") return SensorQuantity::VelocityZ;
+  if (text == "acceleration_z") return SensorQuantity::AccelerationZ;
+  throw InputError(where, "must be \"displacement_z\", \"velocity_z\" or \"acceleration_z\", got \"" + text + "\"");
+}
+
+std::string sensorQuantityName(SensorQuantity q) {
+  switch (q) {
+    case SensorQuantity::DisplacementZ: return "displacement_z";
+    case SensorQuantity::VelocityZ: return "velocity_z";
+    case SensorQuantity::AccelerationZ: return "acceleration_z";
+  }
+  return "";
+}
+
+Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion& roll, const std::array<double, 3>& p) {
+  const double x = p[0], y = p[1], z = p[2];
+  const double st = std::sin(pitch.q), ct = std::cos(pitch.q), sf = std::sin(roll.q), cf = std::cos(roll.q);
+  const double w = z * ct - x * st;  // the pitched point's height before the roll
+  const double g = y * sf + w * cf;
+  const double g_t = (-x * ct - z * st) * cf;
+  const double g_f = y * cf - w * sf;
+  const double g_tt = -w * cf;
+  const double g_ff = -y * sf - w * cf;
+  const double g_tf = (x * ct + z * st) * sf;
+  Motion m;
+  m.q = heave.q + g;
+  m.qd = heave.qd + g_t * pitch.qd + g_f * roll.qd;
+  m.qdd = heave.qdd + g_t * pitch.qdd + g_f * roll.qdd + g_tt * pitch.qd * pitch.qd + 2.0 * g_tf * pitch.qd * roll.qd +
+          g_ff * roll.qd * roll.qd;
+  return m;
+}
+
+std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const SensorFilter& f) {
+  if (f.order == 0 || u.empty()) return u;
+  DTWIN_CHECK(f.order <= 2 && rate_hz > 0 && f.cutoff_hz > 0, "lowPass: bad filter or rate");
+  const double wc = 2.0 * kPi * f.cutoff_hz, h = 1.0 / rate_hz;
+  const int n = f.order;
+  // The filter x' = A x + B u, y = x_0, augmented with the input u and its slope s (constant over a
+  // step): [x; u; s]' = M [x; u; s]. One step is exp(M h).
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 2, n + 2);
+  if (n == 1) {
+    M(0, 0) = -wc;
+    M(0, 1) = wc;
+  } else {
+    M(0, 1) = 1.0;
+    M(1, 0) = -wc * wc;
+    M(1, 1) = -2.0 * f.damping * wc;
+    M(1, 2) = wc * wc;
+  }
+  M(n, n + 1) = 1.0;
+  const Eigen::MatrixXd E = (M * h).exp();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  x(0) = u[0];
+  std::vector<double> y(u.size());
+  y[0] = u[0];
+  for (std::size_t k = 0; k + 1 < u.size(); ++k) {
+    const double slope = (u[k + 1] - u[k]) * rate_hz;
+    Eigen::VectorXd next = E.topLeftCorner(n, n) * x + E.block(0, n, n, 1) * u[k] + E.block(0, n + 1, n, 1) * slope;
+    x = next;
+    y[k + 1] = x(0);
+  }
+  return y;
+}
+
+}  // namespace dtwin

@@ -1,0 +1,71 @@
+#pragma once
+// Sensors where they are mounted (docs/measurements.md, "Sensors"): the vertical motion of a point
+// on the chassis or of a wheel centre, as displacement, velocity or acceleration, optionally
+// low-pass filtered as the logger did. Pure signal physics: the kinematics of a point on a body
+// that heaves, pitches and rolls, and the filters, exact for the sampled input.
+#include <array>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace dtwin {
+
+/// What a sensor measures: the vertical (world z, up positive) motion of its point.
+enum class SensorQuantity { DisplacementZ, VelocityZ, AccelerationZ };
+
+/// The logger's low-pass filter. order 0: none; 1: H(s) = 1 / (1 + s/ωc); 2: H(s) = ωc² / (s² +
+/// 2ζωc s + ωc²) (ζ = 1/√2: Butterworth). ωc = 2π cutoff_hz.
+struct SensorFilter {
+  int order = 0;
+  double cutoff_hz = 0.0;
+  double damping = 0.70710678118654752;  ///< ζ of the second-order filter
+  nlohmann::json toJson() const;
+};
+
+struct SensorSpec {
+  std::string name;                       ///< the study's [sensors.NAME]
+  std::string mount = "chassis";          ///< "chassis" or a wheel centre: "wheel_fl", "wheel_fr", "wheel_rl", "wheel_rr"
+  std::array<double, 3> position_m{0, 0, 0};  ///< chassis: from the centre of mass in chassis axes (x forward, y left, z up)
+  SensorQuantity quantity = SensorQuantity::AccelerationZ;
+  SensorFilter filter;
+  /// Standard deviation of the sensor's noise in its unit (0: unknown). Weighs the channel when
+  /// the data have a single repetition (docs/diagnosis.md, "Noise").
+  double noise_sd = 0.0;
+
+  /// The output channel: NAME plus the unit suffix (_m, _mps, _mps2), e.g. "seat_mps2".
+  std::string channel() const;
+  /// "m", "m/s" or "m/s^2".
+  std::string unit() const;
+  /// The wheel's corner (0 fl, 1 fr, 2 rl, 3 rr), or -1 on the chassis.
+  int corner() const;
+  /// InputError(where + ".<field>", rule) for a bad name, mount, position (a wheel sensor sits at
+  /// the wheel centre: position must be 0), filter (order 0-2; 0 < cutoff_hz <= 1e4; 0 < ζ <= 10)
+  /// or noise_sd (finite, >= 0).
+  void validate(const std::string& where) const;
+  nlohmann::json toJson() const;
+};
+
+/// "displacement_z" | "velocity_z" | "acceleration_z"; InputError(where, rule) for any other.
+SensorQuantity parseSensorQuantity(const std::string& text, const std::string& where);
+std::string sensorQuantityName(SensorQuantity q);
+
+/// One coordinate with its first two time derivatives.
+struct Motion {
+  double q = 0.0, qd = 0.0, qdd = 0.0;
+};
+
+/// The world-vertical motion of the chassis point p (chassis axes, from the centre of mass) when
+/// the centre of mass is at height `heave` and the chassis is rolled by `roll` about x, then
+/// pitched by `pitch` about the rolled y axis (R = Rx(roll) Ry(pitch): pitch positive nose down,
+/// roll positive right side down). Exact, not small-angle: z = heave + y sin φ + (z_p cos θ −
+/// x sin θ) cos φ, and its first and second derivatives by the chain rule.
+Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion& roll, const std::array<double, 3>& p);
+
+/// `u` sampled at `rate_hz` filtered by `f`, starting at rest at u[0] (y(0) = u[0], y'(0) = 0).
+/// Exact for an input that is linear between samples: each step is the matrix exponential of the
+/// filter augmented with the input and its slope. For a sampled sinusoid of angular frequency ω
+/// the error is at most max|H| (ω/rate_hz)²/8 (the linear reading's). Order 0 returns u.
+std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const SensorFilter& f);
+
+}  // namespace dtwin

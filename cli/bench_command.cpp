@@ -64,7 +64,7 @@ int runBench(const std::string& study_path, int runs, bool markdown, const std::
 }  // namespace
 
 CommandHandle addBenchCommand(CLI::App& root) {
-  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; };
+  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; };
   auto cfg = std::make_shared<Cfg>();
   std::string& bench_study = cfg->study;
   int& bench_runs = cfg->runs;
@@ -75,8 +75,18 @@ CommandHandle addBenchCommand(CLI::App& root) {
   b->add_option("--runs", bench_runs, "Timed runs per case (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
   b->add_option("--assembly", bench_ids, "Only these assemblies")->delimiter(',');
   b->add_flag("--markdown", bench_md, "Print a markdown table (for docs/performance.md)");
+  b->add_option("--import", cfg->import_rows, "Instead: time `twin import` on a synthetic 100 Hz log of this many rows (360000: one hour)")
+      ->check(CLI::Range(2L, 100000000L));
 
-  return {b, [cfg] { return runBench(cfg->study, cfg->runs, cfg->md, cfg->ids); }};
+  return {b, [cfg] {
+            if (cfg->import_rows > 0) {
+              const BenchImport r = benchImport(cfg->study, cfg->import_rows, cfg->runs);
+              std::printf("twin import: %ld rows (%.1f MB), %d runs: median %.2f s (%.2f..%.2f s), %.0f rows/s\n", r.rows, r.bytes / 1e6,
+                          cfg->runs, r.median_s, r.min_s, r.max_s, static_cast<double>(r.rows) / r.median_s);
+              return 0;
+            }
+            return runBench(cfg->study, cfg->runs, cfg->md, cfg->ids);
+          }};
 }
 
 }  // namespace dtwin::cli

@@ -67,6 +67,8 @@ CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line);
 CommandHandle addReportCommand(CLI::App& root, const std::string& command_line);
 /// `twin compare`: a calibrated assembly against measurements, where it fails (diagnosis/compare.hpp).
 CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line);
+/// `twin import`: a logger's CSV into measurements, speed, road and a study (twin/log_import.hpp).
+CommandHandle addImportCommand(CLI::App& root, const std::string& command_line);
 /// `twin diagnose`: which catalogue effect the assembly misses; --apply adds effects (diagnosis/diagnose.hpp).
 CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line);
 

@@ -81,6 +81,7 @@ int runTwin(int argc, char** argv, std::string& error) {
   commands.push_back(addReportCommand(app, command));
   commands.push_back(addCompareCommand(app, command));
   commands.push_back(addDiagnoseCommand(app, command));
+  commands.push_back(addImportCommand(app, command));
 
   if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
     error = "error: " + unknown;

@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-30}
 filter=${2:-}
 # The unit tests of what the harnesses read (the whole suite under sanitizers: scripts/sanitize.sh).
-SAN_TESTS=(messages_test study_test measurement_test road_test speed_trace_test work_test calib_folder_test)
+SAN_TESTS=(messages_test study_test measurement_test road_test speed_trace_test time_road_test sensor_test grid_sample_test work_test calib_folder_test)
 bash scripts/setup.sh fuzz
 t0=$(date +%s)
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \

@@ -11,7 +11,6 @@
 namespace dtwin {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 const char* kWheelMounts[4] = {"wheel_fl", "wheel_fr", "wheel_rl", "wheel_rr"};
 }  // namespace
 

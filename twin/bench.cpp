@@ -1,8 +1,14 @@
 #include "twin/bench.hpp"
 
 #include <algorithm>
+#include <unistd.h>
+#include <filesystem>
+#include <cstdio>
+#include <cmath>
+#include <chrono>
 
 #include "common/errors.hpp"
+#include "twin/log_import.hpp"
 
 namespace dtwin {
 namespace {
@@ -46,6 +52,49 @@ BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const Scenario
     row.reference_peak_fl_N = peak(ref.run(values, *road, sc).trace);
   }
   return row;
+}
+
+BenchImport benchImport(const std::string& study_path, long rows, int runs) {
+  DTWIN_CHECK(rows >= 2 && runs >= 1, "benchImport: rows >= 2, runs >= 1");
+  std::string log = "time,speed_kmh,road_l_mm,road_r_mm,seat_g,hub_g,counter,note\n";
+  log.reserve(static_cast<std::size_t>(rows) * 64);
+  char line[256];
+  std::uint64_t state = 12345;
+  for (long k = 0; k < rows; ++k) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;  // a fixed LCG: the same log every time
+    const double jitter = (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 0.004;
+    const double t = 0.01 * static_cast<double>(k) + jitter;
+    std::snprintf(line, sizeof line, "%.4f,%.2f,%.3f,%.3f,%.5f,%.5f,%ld,ok\n", t, 40 + 20 * std::sin(t / 30), 3 * std::sin(1.1 * t),
+                  3 * std::cos(1.3 * t), 1 + 0.05 * std::sin(7 * t), 0.3 * std::sin(11 * t), k);
+    log += line;
+  }
+  ImportMapping m;
+  m.source = "bench";
+  m.time = {"time", "s", 0, 1, "time"};
+  m.speed = ImportColumn{"speed_kmh", "km/h", 0, 1, "speed"};
+  m.road_left = ImportColumn{"road_l_mm", "mm", 0, 1, "road_left"};
+  m.road_right = ImportColumn{"road_r_mm", "mm", 0, 1, "road_right"};
+  m.channels.push_back({{"seat_g", "g", 1, 1, "seat"}, "chassis_heave_acc_mps2"});
+  m.channels.push_back({{"hub_g", "g", 0, 1, "hub"}, "chassis_pitch_acc_radps2"});
+  m.channels.back().source.unit = "deg/s^2";  // any channel will do: the reading is what is timed
+  BenchImport b;
+  b.rows = rows;
+  b.bytes = static_cast<double>(log.size());
+  std::vector<double> walls;
+  const auto tmp = std::filesystem::temp_directory_path() / ("dtwin_bench_import_" + std::to_string(::getpid()));
+  for (int r = 0; r < runs; ++r) {
+    std::filesystem::remove_all(tmp);
+    const auto t0 = std::chrono::steady_clock::now();
+    const ImportResult res = importLog(log, "bench.csv", m, study_path, "drive");
+    writeImport(res, tmp.string());
+    walls.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::filesystem::remove_all(tmp);
+  std::sort(walls.begin(), walls.end());
+  b.median_s = walls[walls.size() / 2];
+  b.min_s = walls.front();
+  b.max_s = walls.back();
+  return b;
 }
 
 }  // namespace dtwin

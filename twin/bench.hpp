@@ -23,4 +23,14 @@ struct BenchRow {
 /// near obstacles) to compare the peak front-left force.
 BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario, int runs, bool reference);
 
+/// `twin import` on a synthetic logger CSV of `rows` rows at 100 Hz (time with clock jitter,
+/// speed in km/h, left and right road heights in mm, two accelerometers in g, two unused
+/// columns), read, converted and written into a fresh temporary folder `runs` times.
+struct BenchImport {
+  long rows = 0;
+  double bytes = 0;             ///< size of the log
+  double median_s = 0, min_s = 0, max_s = 0;  ///< importLog + writeImport, wall
+};
+BenchImport benchImport(const std::string& study_path, long rows, int runs);
+
 }  // namespace dtwin

@@ -4,6 +4,7 @@
 #include "common/names.hpp"
 #include "twin/roads/bump.hpp"
 #include "twin/roads/csv.hpp"
+#include "twin/roads/csv_time.hpp"
 #include "twin/roads/flat.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/toml_reader.hpp"
@@ -17,6 +18,7 @@ const std::vector<RoadType>& roadTypes() {
       {"bump", "a one-cosine bump across both tracks, reached at time_s", &BumpRoadSetting::parse},
       {"iso8608", "an ISO 8608 random road of a class A..H, smooth until smooth_until_s", &IsoRoadSetting::parse},
       {"csv", "a measured profile: distance_m,left_m,right_m", &CsvRoadSetting::parse},
+      {"csv_time", "a road logged against time (height or road velocity), mapped to distance through the speed", &CsvTimeRoadSetting::parse},
   };
   return r;
 }

@@ -299,12 +299,16 @@ void readSizes(TableReader& top, Study& s) {
 }
 
 /// [sensors.NAME]: where a sensor is mounted, what it measures and how the logger filtered it.
-void readSensors(TableReader& top, Study& s) {
+void readSensors(TableReader& top, Study& s) { s.sensors = readSensorTables(top); }
+}  // namespace
+
+std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<SensorSpec>& existing) {
+  std::vector<SensorSpec> out;
   const std::string& path = top.file();
   auto* t = top.table("sensors");
-  if (!t) return;
+  if (!t) return out;
   std::vector<std::string> taken;
-  for (const auto& c : Simulator::channels()) taken.push_back(c.name);
+  for (const auto& c : Simulator::channels(existing)) taken.push_back(c.name);
   for (auto&& [key, node] : *t) {
     const std::string name(key.str());
     const std::string field = "sensors." + name;
@@ -345,9 +349,12 @@ void readSensors(TableReader& top, Study& s) {
     if (std::find(taken.begin(), taken.end(), x.channel()) != taken.end())
       throw InputError(where, "its channel " + x.channel() + " is already a channel of the twin: choose another sensor name");
     taken.push_back(x.channel());
-    s.sensors.push_back(x);
+    out.push_back(x);
   }
+  return out;
 }
+
+namespace {
 
 /// [lab]: lab times (given, or automatic), channels.
 void readLab(TableReader& top, Study& s) {

@@ -18,6 +18,8 @@
 
 namespace dtwin {
 
+class TableReader;
+
 struct CalibratedParameter {
   std::string name, unit;
   double lower = 0, upper = 0;
@@ -121,6 +123,11 @@ struct Study {
   nlohmann::json toJson() const;
 };
 
+
+/// The [sensors.NAME] tables of a TOML file (a study, or an import mapping), validated: InputError
+/// naming file:line: sensors.NAME.field. Their channels may not repeat the twin's own nor those of
+/// `existing`.
+std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<SensorSpec>& existing = {});
 
 /// Parses and validates a study file. Every error is an InputError naming the file, the line and
 /// the field, and the rule broken.

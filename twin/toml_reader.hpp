@@ -31,6 +31,11 @@ class TableReader {
   }
   std::string field(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
   bool has(const std::string& key) const { return t_.contains(key); }
+  /// True when `key` holds a table (an inline { ... } or a [section]).
+  bool isTable(const std::string& key) const {
+    const toml::node* n = t_.get(key);
+    return n && n->is_table();
+  }
 
   std::optional<double> number(const std::string& key) {
     used_.insert(key);

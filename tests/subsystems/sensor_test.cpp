@@ -14,7 +14,6 @@
 using namespace dtwin;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // A smooth test motion: heave, pitch and roll as sinusoids of time.
 struct Path {

@@ -4,6 +4,7 @@
 // kRequiredFields (when it has required fields).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 
 #include "common/errors.hpp"
@@ -37,7 +38,11 @@ TEST(RoadTypes, EveryRegisteredTypeReadsNamesRecordsAndMakesItself) {
   std::string csv = "distance_m,left_m,right_m\n";
   for (int k = -100; k <= 400; ++k) csv += std::to_string(0.1 * k) + ",0.001,0.002\n";
   dtwin_test::writeText(dir / "profile.csv", csv);
-  const std::map<std::string, std::string> kRequiredFields = {{"csv", "path = \"profile.csv\"\n"}};
+  std::string log = "time_s,height_m\n";
+  for (int k = 0; k <= 900; ++k) log += std::to_string(0.01 * k) + ",0.001\n";
+  dtwin_test::writeText(dir / "log.csv", log);
+  const std::map<std::string, std::string> kRequiredFields = {{"csv", "path = \"profile.csv\"\n"},
+                                                              {"csv_time", "path = \"log.csv\"\n"}};
   ASSERT_GE(roadTypes().size(), 4u);
   for (const auto& type : roadTypes()) {
     SCOPED_TRACE(type.name);
@@ -71,7 +76,7 @@ TEST(RoadTypes, UnknownTypesAndFieldsAreNamed) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("scenarios.s.road.type: must be one of flat, bump, iso8608, csv, got \"bumb\" (did you mean 'bump'?)"),
+    EXPECT_NE(what.find("scenarios.s.road.type: must be one of flat, bump, iso8608, csv, csv_time, got \"bumb\" (did you mean 'bump'?)"),
               std::string::npos)
         << what;
   }
@@ -101,4 +106,49 @@ TEST(RoadTypes, EveryRegisteredTypeIsDocumentedInTheStudyFileReference) {
   for (const auto& type : roadTypes())
     EXPECT_NE(doc.find("road `type = \"" + type.name + "\""), std::string::npos)
         << "docs/study-file.md has no row for road type '" << type.name << "'";
+}
+
+// A road logged against time under the front axle: the front wheels see the logged heights at
+// the logged times, and the rear wheels the same profile one wheelbase later; a log that does
+// not cover the scenario, or a drift filter on a height log, is refused at the field.
+TEST(RoadTypes, ARoadLoggedAgainstTimeReachesTheRearAxleAWheelbaseLater) {
+  const auto dir = dtwin_test::freshDir("dtwin_road_time");
+  std::string log = "time_s,left_mm,right_mm\n";
+  auto height = [](double t, double phase) { return 8.0 * std::sin(2 * 3.14159265358979 * 1.3 * t + phase); };
+  for (int k = 0; k <= 810; ++k) log += std::to_string(0.01 * k) + "," + std::to_string(height(0.01 * k, 0.0)) + "," +
+                                        std::to_string(height(0.01 * k, 1.0)) + "\n";
+  dtwin_test::writeText(dir / "log.csv", log);
+  const auto setting = parseText("[road]\ntype = \"csv_time\"\npath = \"log.csv\"\n", (dir / "s.toml").string());
+  ScenarioSpec sc;
+  sc.name = "s";
+  sc.duration_s = 8.0;
+  sc.speed.v_final_mps = 4.0;
+  sc.speed.ramp_s = 0.0;
+  sc.road = setting;
+  setting->check(sc, "s.toml: scenarios.s.road");
+  const VehicleData v = demoVehicle();
+  const auto road = makeRoad(sc, v, 1);
+  const double wb = v.wheelbase();
+  for (double t = 0.2; t < 7.9; t += 0.173) {
+    EXPECT_NEAR(road->sample(Track::Left, 4.0 * t).height_m, 1e-3 * height(t, 0.0), 2e-5) << t;
+    EXPECT_NEAR(road->sample(Track::Right, 4.0 * t).height_m, 1e-3 * height(t, 1.0), 2e-5) << t;
+    // The rear axle, at distance 4 t - wb, is where the front axle was at t - wb / 4.
+    if (t > wb / 4.0 + 0.05) {
+      EXPECT_NEAR(road->sample(Track::Left, 4.0 * t - wb).height_m, 1e-3 * height(t - wb / 4.0, 0.0), 2e-5) << t;
+    }
+  }
+  ScenarioSpec longer = sc;
+  longer.duration_s = 9.0;
+  try {
+    setting->check(longer, "s.toml:3: scenarios.s.road");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("covers 0 .. 8.1 s, but the scenario runs 0 .. 9 s"), std::string::npos) << e.what();
+  }
+  try {
+    parseText("[road]\ntype = \"csv_time\"\npath = \"log.csv\"\nhighpass_hz = 0.2\n", (dir / "s.toml").string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("road.highpass_hz: applies to a road-velocity log only"), std::string::npos) << e.what();
+  }
 }

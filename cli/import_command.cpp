@@ -1,0 +1,105 @@
+// `twin import`: a logger's wide CSV into the twin's files and a study holding the drive
+// (twin/log_import.hpp, docs/measurements.md).
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/json.hpp"
+#include "twin/log_import.hpp"
+
+namespace dtwin::cli {
+namespace {
+
+struct ImportConfig {
+  std::string log, map, out, study = defaultStudy(), scenario = "drive";
+  std::string time, speed, road, road_left, road_right, separator;
+  std::vector<std::string> channels;
+  double highpass_hz = 0.0;
+  bool quiet = false;
+};
+
+/// The mapping from the command line: --time, --speed, --road | --road-left/--road-right,
+/// --channel COL:CHANNEL:UNIT[:OFFSET[:SCALE]] (repeatable).
+ImportMapping mappingFromFlags(const ImportConfig& cfg) {
+  ImportMapping m;
+  m.source = "command line";
+  if (cfg.time.empty()) throw InputError("--time", "is required without --map (the log's time column, COLUMN[:UNIT], unit s or ms)");
+  m.time = parseImportColumn(cfg.time, "--time", "s");
+  if (cfg.speed.empty()) throw InputError("--speed", "is required without --map (COLUMN:UNIT, unit km/h, m/s or mph)");
+  m.speed = parseImportColumn(cfg.speed, "--speed");
+  if (!cfg.road.empty()) m.road = parseImportColumn(cfg.road, "--road");
+  if (!cfg.road_left.empty() || !cfg.road_right.empty()) {
+    if (m.road) throw InputError("--road-left", "give either --road (both tracks) or --road-left and --road-right");
+    if (cfg.road_left.empty() || cfg.road_right.empty()) throw InputError(cfg.road_left.empty() ? "--road-left" : "--road-right", "is required with the other track");
+    m.road_left = parseImportColumn(cfg.road_left, "--road-left");
+    m.road_right = parseImportColumn(cfg.road_right, "--road-right");
+  }
+  if (cfg.highpass_hz > 0) m.highpass_hz = cfg.highpass_hz;
+  if (!cfg.separator.empty()) m.separator = cfg.separator == "tab" ? '\t' : cfg.separator[0];
+  if (cfg.channels.empty()) throw InputError("--channel", "is required without --map (COLUMN:CHANNEL:UNIT, repeatable)");
+  for (const auto& text : cfg.channels) {
+    const auto a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
+    if (b == std::string::npos) throw InputError("--channel", "expects COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]], got '" + text + "'");
+    ImportChannel c;
+    c.channel = text.substr(a + 1, b - a - 1);
+    c.source = parseImportColumn(text.substr(0, a) + ":" + text.substr(b + 1), "--channel " + text);
+    m.channels.push_back(c);
+  }
+  return m;
+}
+
+int runImport(const ImportConfig& cfg, const std::string& command) {
+  const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() || !cfg.road_left.empty() ||
+                     !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || !cfg.separator.empty();
+  if (!cfg.map.empty() && flags) throw InputError("--map", "give the mapping either in the file or as flags (--time, --speed, --road, --channel), not both");
+  if (cfg.map.empty() && !flags) throw InputError("--map", "is required (or the flags --time, --speed, --channel)");
+  const ImportMapping mapping = cfg.map.empty() ? mappingFromFlags(cfg) : readImportMapping(cfg.map);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string text = readTextFile(cfg.log, " (a logger's CSV)");
+  ProgressBar bar("import " + cfg.log, !cfg.quiet && stderrIsTerminal());
+  ImportResult r = importLog(text, cfg.log, mapping, cfg.study, cfg.scenario,
+                             [&bar](const std::string&, std::size_t done, std::size_t total) { bar.update(done, total); });
+  r.sidecar["command"] = command;
+  writeImport(r, cfg.out);
+  bar.finish();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!cfg.quiet) {
+    std::printf("imported %ld rows (%s s of driving, %zu records, %ld empty cells skipped) in %.2f s\n", r.rows,
+                formatNumber(r.duration_s, 6).c_str(), r.data.records.size(), r.dropped_cells, wall);
+    std::printf("wrote %s/: measurements.csv (+ .json), speed.csv, %sstudy.toml (scenario '%s')\n", cfg.out.c_str(),
+                r.road_csv.empty() ? "" : "road.csv, ", r.scenario.c_str());
+    if (r.road_csv.empty()) std::printf("note: no road column was mapped: the drive's scenario has a flat road\n");
+    std::printf("next: twin compare --study %s/study.toml --calibration CAL_DIR --data %s/measurements.csv\n", cfg.out.c_str(), cfg.out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) {
+  auto cfg = std::make_shared<ImportConfig>();
+  auto* c = root.add_subcommand("import",
+                                "Turn a logger's CSV (one row per time, one column per signal) into measurements, a speed trace, a road "
+                                "logged against time and a study holding the drive as a scenario (docs/measurements.md)");
+  c->add_option("log", cfg->log, "The logger's CSV file")->required();
+  c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv, study.toml")->required();
+  c->add_option("--map", cfg->map, "Mapping file (TOML, [import] table); or give the mapping as the flags below");
+  c->add_option("--study", cfg->study, "The study the drive joins (its vehicle, assemblies, sensors)")->capture_default_str();
+  c->add_option("--scenario", cfg->scenario, "Name of the drive's scenario in the written study")->capture_default_str();
+  c->add_option("--time", cfg->time, "Time column, COLUMN[:UNIT] (s or ms)");
+  c->add_option("--speed", cfg->speed, "Speed column, COLUMN:UNIT[:OFFSET[:SCALE]] (km/h, m/s, mph)");
+  c->add_option("--road", cfg->road, "Road under the front axle, both tracks, COLUMN:UNIT (m, mm: height; m/s, mm/s: road velocity)");
+  c->add_option("--road-left", cfg->road_left, "Left track's road column, COLUMN:UNIT");
+  c->add_option("--road-right", cfg->road_right, "Right track's road column, COLUMN:UNIT");
+  c->add_option("--channel", cfg->channels, "A measured channel, COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]] (repeatable), e.g. az:seat_mps2:g:1");
+  c->add_option("--highpass-hz", cfg->highpass_hz, "Drift removal of a road velocity [Hz] (default 0.1)")->check(CLI::Range(1e-3, 10.0));
+  c->add_option("--separator", cfg->separator, "Field separator of the log: one character, or 'tab' (default ',')");
+  c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  return {c, [cfg, command_line] { return runImport(*cfg, command_line); }, {}};
+}
+
+}  // namespace dtwin::cli

@@ -1,0 +1,163 @@
+#include "subsystems/time_road.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/csv.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/json.hpp"
+#include "subsystems/sensor.hpp"  // kPi
+
+namespace dtwin {
+
+namespace {
+
+struct Layout {
+  const char* columns[2];  // one or two value columns
+  int count;
+  TimeRoadLog::Form form;
+  double scale;  // to m or m/s
+};
+const Layout kLayouts[] = {
+    {{"height_m", nullptr}, 1, TimeRoadLog::Form::Height, 1.0},
+    {{"height_mm", nullptr}, 1, TimeRoadLog::Form::Height, 1e-3},
+    {{"left_m", "right_m"}, 2, TimeRoadLog::Form::Height, 1.0},
+    {{"left_mm", "right_mm"}, 2, TimeRoadLog::Form::Height, 1e-3},
+    {{"velocity_mps", nullptr}, 1, TimeRoadLog::Form::Velocity, 1.0},
+    {{"left_mps", "right_mps"}, 2, TimeRoadLog::Form::Velocity, 1.0},
+};
+const char* kHeaders = "time_s,height_m | time_s,left_m,right_m | time_s,velocity_mps | time_s,left_mps,right_mps (or _mm for heights)";
+}  // namespace
+
+TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
+  CsvReader csv(text, name);
+  if (!csv.next()) throw InputError(name + ":1", std::string("empty file; expected a header ") + kHeaders);
+  const auto& h = csv.fields();
+  const Layout* layout = nullptr;
+  for (const auto& l : kLayouts)
+    if (h.size() == static_cast<std::size_t>(l.count) + 1 && h[0] == "time_s" && h[1] == l.columns[0] &&
+        (l.count == 1 || h[2] == l.columns[1]))
+      layout = &l;
+  if (!layout) {
+    std::string got;
+    for (auto f : h) got += (got.empty() ? "" : ",") + std::string(f);
+    throw InputError(csv.where(), "header must be " + std::string(kHeaders) + ", got '" + got + "'");
+  }
+  TimeRoadLog log;
+  log.form = layout->form;
+  log.identical_tracks = layout->count == 1;
+  log.name = name;
+  const std::size_t n = static_cast<std::size_t>(layout->count) + 1;
+  while (csv.next()) {
+    const auto& f = csv.fields();
+    if (f.size() != n)
+      throw InputError(csv.where(), "expected " + std::to_string(n) + " columns, got " + std::to_string(f.size()));
+    double v[3] = {0, 0, 0};
+    for (std::size_t c = 0; c < n; ++c)
+      if (!parseNumber(f[c], v[c]) || !std::isfinite(v[c]))
+        throw InputError(csv.where(), std::string(c == 0 ? "time_s" : layout->columns[c - 1]) + ": '" + std::string(f[c]) +
+                                          "' is not a finite number");
+    if (!log.t_s.empty() && !(v[0] > log.t_s.back()))
+      throw InputError(csv.where(), "time_s: must increase, got " + std::string(f[0]) + " after " + formatNumber(log.t_s.back(), 17));
+    log.t_s.push_back(v[0]);
+    log.left.push_back(v[1] * layout->scale);
+    log.right.push_back((layout->count == 1 ? v[1] : v[2]) * layout->scale);
+  }
+  if (log.t_s.size() < 2) throw InputError(name, "a road log needs at least 2 rows, got " + std::to_string(log.t_s.size()));
+  return log;
+}
+
+TimeRoadLog readTimeRoadCsv(const std::string& path) {
+  return parseTimeRoadCsv(readTextFile(path, " (a road against time)"), path);
+}
+
+std::vector<double> zeroPhaseHighPass(const std::vector<double>& t, const std::vector<double>& u, double cutoff_hz) {
+  DTWIN_CHECK(t.size() == u.size() && cutoff_hz > 0, "zeroPhaseHighPass: sizes or cut-off");
+  if (u.empty()) return u;
+  const double wc = 2.0 * kPi * cutoff_hz;
+  std::vector<double> y(u.size());
+  y[0] = u[0];
+  for (std::size_t k = 1; k < u.size(); ++k) y[k] = y[k - 1] + (1.0 - std::exp(-wc * (t[k] - t[k - 1]))) * (u[k] - y[k - 1]);
+  for (std::size_t k = u.size() - 1; k-- > 0;) y[k] = y[k + 1] + (1.0 - std::exp(-wc * (t[k + 1] - t[k]))) * (y[k] - y[k + 1]);
+  for (std::size_t k = 0; k < u.size(); ++k) y[k] = u[k] - y[k];
+  return y;
+}
+
+std::vector<double> roadHeightFromVelocity(const std::vector<double>& t, const std::vector<double>& v, double highpass_hz) {
+  std::vector<double> h(v.size(), 0.0);
+  for (std::size_t k = 1; k < v.size(); ++k) h[k] = h[k - 1] + 0.5 * (v[k] + v[k - 1]) * (t[k] - t[k - 1]);
+  return zeroPhaseHighPass(t, h, highpass_hz);
+}
+
+std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const std::function<double(double)>& distance,
+                                                const TimeRoadOptions& o, nlohmann::json description) {
+  DTWIN_CHECK(o.dx_m > 0 && o.highpass_hz > 0, "roadFromTimeLog: options");
+  std::vector<double> left = log.left, right = log.right;
+  if (log.form == TimeRoadLog::Form::Velocity) {
+    left = roadHeightFromVelocity(log.t_s, log.left, o.highpass_hz);
+    right = log.identical_tracks ? left : roadHeightFromVelocity(log.t_s, log.right, o.highpass_hz);
+  }
+  // Heights a road can have: a wrong unit (mm read as m, a velocity's bias integrated without
+  // its drift removed) is refused here, not met as a failed simulation.
+  for (const auto* h : {&left, &right})
+    for (std::size_t k = 0; k < h->size(); ++k)
+      if (!(std::abs((*h)[k]) <= 10.0))
+        throw InputError(log.name, std::string("the road height at time_s = ") + formatNumber(log.t_s[k]) + " is " + formatNumber((*h)[k]) +
+                                       " m, beyond the 10 m a road can rise or fall here: check the unit" +
+                                       (log.form == TimeRoadLog::Form::Velocity ? " and highpass_hz" : ""));
+  std::vector<double> x, hl, hr;
+  for (std::size_t k = 0; k < log.t_s.size(); ++k) {
+    const double d = distance(log.t_s[k]);
+    if (!x.empty() && !(d > x.back() + 1e-6)) continue;
+    x.push_back(d);
+    hl.push_back(left[k]);
+    hr.push_back(right[k]);
+  }
+  if (x.size() < 2)
+    throw InputError(log.name, "the vehicle moves past fewer than two of its samples: no profile against distance");
+  const double x_lo = std::min(o.x_from_m, x.front()), x_hi = x.back();
+  const double points = (x_hi - x_lo) / o.dx_m + 1;
+  if (!(points <= 1e7))
+    throw InputError(log.name, "the profile would need " + formatNumber(points, 3) + " grid points of dx_m = " + formatNumber(o.dx_m) +
+                                   " m (at most 1e7): raise dx_m");
+  // Three-point (parabola) slopes at the kept samples; one-sided at the ends.
+  auto slopes = [&](const std::vector<double>& h) {
+    const std::size_t n = x.size();
+    std::vector<double> m(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i == 0) m[i] = (h[1] - h[0]) / (x[1] - x[0]);
+      else if (i + 1 == n) m[i] = (h[n - 1] - h[n - 2]) / (x[n - 1] - x[n - 2]);
+      else {
+        const double a = x[i] - x[i - 1], b = x[i + 1] - x[i];
+        m[i] = (b * (h[i] - h[i - 1]) / a + a * (h[i + 1] - h[i]) / b) / (a + b);
+      }
+    }
+    return m;
+  };
+  const auto ml = slopes(hl), mr = slopes(hr);
+  const auto n = static_cast<std::size_t>(std::ceil((x_hi - x_lo) / o.dx_m)) + 1;
+  std::vector<double> gl(n), gr(n);
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xi = x_lo + static_cast<double>(i) * o.dx_m;
+    if (xi <= x.front()) {
+      gl[i] = hl.front();
+      gr[i] = hr.front();
+      continue;
+    }
+    if (xi >= x.back()) {
+      gl[i] = hl.back();
+      gr[i] = hr.back();
+      continue;
+    }
+    while (x[j + 1] < xi) ++j;
+    const double hseg = x[j + 1] - x[j], u = (xi - x[j]) / hseg;
+    const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+    gl[i] = h00 * hl[j] + h10 * hseg * ml[j] + h01 * hl[j + 1] + h11 * hseg * ml[j + 1];
+    gr[i] = h00 * hr[j] + h10 * hseg * mr[j] + h01 * hr[j + 1] + h11 * hseg * mr[j + 1];
+  }
+  return std::make_shared<GridRoad>(x_lo, o.dx_m, std::move(gl), std::move(gr), std::move(description));
+}
+
+}  // namespace dtwin

@@ -1,0 +1,136 @@
+// Roads logged against time: the CSV forms, the zero-phase drift removal against its closed-form
+// gain, and the mapping to distance (constant speed: a sinusoid in time is a sinusoid in space;
+// a stop leaves the profile unchanged).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/errors.hpp"
+#include "subsystems/time_road.hpp"
+
+using namespace dtwin;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+std::string errorOf(const std::string& text) {
+  try {
+    parseTimeRoadCsv(text, "road.csv");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(TimeRoad, ParsesEveryForm) {
+  auto a = parseTimeRoadCsv("\xEF\xBB\xBFtime_s,height_mm\r\n0,1\r\n\r\n0.01, 2\r\n", "a.csv");
+  EXPECT_EQ(a.form, TimeRoadLog::Form::Height);
+  EXPECT_TRUE(a.identical_tracks);
+  EXPECT_DOUBLE_EQ(a.left[1], 0.002);
+  EXPECT_EQ(a.left, a.right);
+  auto b = parseTimeRoadCsv("time_s,left_m,right_m\n0,0.1,0.2\n1,0.3,0.4\n", "b.csv");
+  EXPECT_FALSE(b.identical_tracks);
+  EXPECT_DOUBLE_EQ(b.right[1], 0.4);
+  auto c = parseTimeRoadCsv("time_s,velocity_mps\n0,0.1\n1,0.3\n", "c.csv");
+  EXPECT_EQ(c.form, TimeRoadLog::Form::Velocity);
+  auto d = parseTimeRoadCsv("\"time_s\",\"left_mps\",\"right_mps\"\n0,0.1,0.2\n1,0.3,0.4\n", "d.csv");
+  EXPECT_EQ(d.form, TimeRoadLog::Form::Velocity);
+  EXPECT_FALSE(d.identical_tracks);
+}
+
+TEST(TimeRoad, BadFilesNameTheLineAndColumn) {
+  EXPECT_NE(errorOf("").find("road.csv:1: empty file"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_cm\n0,1\n1,2\n").find("road.csv:1: header must be"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,x\n").find("road.csv:3: height_m: 'x' is not a finite number"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,nan\n").find("road.csv:3: height_m"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0,2\n").find("road.csv:3: time_s: must increase"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,left_m,right_m\n0,1\n").find("road.csv:2: expected 3 columns, got 2"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,1\n").find("at least 2 rows"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,\"1\n").find("road.csv:2: a double quote is not closed"), std::string::npos);
+}
+
+// The gain of the zero-phase high-pass is (f/fc)²/(1 + (f/fc)²) and its phase 0; a linear drift
+// is removed away from the ends.
+TEST(TimeRoad, ZeroPhaseHighPassHasItsClosedFormGain) {
+  const double fc = 0.2, dt = 0.01;
+  std::vector<double> t(20000);
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = dt * static_cast<double>(k);
+  for (double f : {0.05, 0.2, 1.0, 3.0}) {
+    std::vector<double> u(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) u[k] = std::sin(2 * kPi * f * t[k]);
+    const auto y = zeroPhaseHighPass(t, u, fc);
+    // In-phase and quadrature parts over the middle half (away from the ends' transients).
+    double s = 0, c = 0, n = 0;
+    for (std::size_t k = t.size() / 4; k < 3 * t.size() / 4; ++k) {
+      s += y[k] * std::sin(2 * kPi * f * t[k]);
+      c += y[k] * std::cos(2 * kPi * f * t[k]);
+      n += 1;
+    }
+    const double r = (f / fc) * (f / fc);
+    EXPECT_NEAR(2 * s / n, r / (1 + r), 0.01) << f;
+    EXPECT_NEAR(2 * c / n, 0.0, 0.01) << f;
+  }
+  std::vector<double> ramp(t.size());
+  for (std::size_t k = 0; k < t.size(); ++k) ramp[k] = 0.3 * t[k] + 1.0;
+  const auto y = zeroPhaseHighPass(t, ramp, fc);
+  for (std::size_t k = 5000; k < 15000; k += 100) EXPECT_NEAR(y[k], 0.0, 1e-6) << k;
+}
+
+// A road velocity with a sensor bias integrates to the road's height, the bias's drift removed.
+TEST(TimeRoad, VelocityIntegratesToHeightWithoutDrift) {
+  const double f = 1.5, A = 0.01, dt = 0.01;
+  std::vector<double> t(6000), v(6000);
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    t[k] = dt * static_cast<double>(k);
+    v[k] = A * 2 * kPi * f * std::cos(2 * kPi * f * t[k]) + 0.004;  // height A sin(2π f t), plus a bias
+  }
+  const auto h = roadHeightFromVelocity(t, v, 0.1);
+  const double r = (f / 0.1) * (f / 0.1), gain = r / (1 + r);
+  for (std::size_t k = 1500; k < 4500; k += 37) EXPECT_NEAR(h[k], gain * A * std::sin(2 * kPi * f * t[k]), 2e-3 * A + 1e-6) << t[k];
+}
+
+// At constant speed v a height sin(2π f t) is the profile sin(2π f x / v); a stop in between
+// (samples at one distance) leaves the profile as it was, and before the first sample the first
+// height is held.
+TEST(TimeRoad, MapsToDistanceThroughTheSpeed) {
+  const double f = 2.0, speed = 10.0, dt = 0.01;
+  TimeRoadLog log;
+  log.name = "x.csv";
+  log.identical_tracks = true;
+  auto dist = [&](double t) { return t < 2.0 ? speed * t : t < 3.0 ? 2.0 * speed : speed * (t - 1.0); };
+  for (int k = 0; k <= 600; ++k) {
+    const double t = dt * k, x = dist(t);
+    const double h = 0.02 * std::sin(2 * kPi * f * x / speed) + (t > 2.0 && t < 3.0 ? 0.5 : 0.0);  // junk while standing
+    log.t_s.push_back(t);
+    log.left.push_back(h);
+    log.right.push_back(h);
+  }
+  TimeRoadOptions o;
+  o.x_from_m = -4.0;
+  const auto road = roadFromTimeLog(log, dist, o, {{"type", "test"}});
+  double worst = 0;
+  for (double x = 0.05; x < 49.0; x += 0.0137) {
+    const double want = 0.02 * std::sin(2 * kPi * f * x / speed);
+    worst = std::max(worst, std::abs(road->sample(Track::Left, x).height_m - want));
+  }
+  EXPECT_LT(worst, 0.01 * 0.02);
+  EXPECT_NEAR(road->sample(Track::Right, -3.0).height_m, log.left.front(), 1e-15);
+  EXPECT_LE(road->extent().lo, -4.0);
+  EXPECT_GE(road->extent().hi, 49.0);
+  // A height beyond 10 m: a wrong unit.
+  TimeRoadLog tall = log;
+  tall.left[100] = 12.0;
+  try {
+    roadFromTimeLog(tall, dist, o, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("time_s = 1 is 12 m"), std::string::npos) << e.what();
+  }
+  // Never moving: no profile.
+  try {
+    roadFromTimeLog(log, [](double) { return 0.0; }, o, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.csv"), std::string::npos);
+  }
+}

@@ -1,0 +1,201 @@
+// `twin import`: a logger's wide CSV into measurements, a speed trace, a road against time and a
+// study holding the drive. Units and offsets convert exactly; every bad-log case is one line
+// naming the file, the line and the column, with exit code 2 and nothing written.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "test_util.hpp"
+#include "twin/log_import.hpp"
+#include "twin/study.hpp"
+
+using namespace dtwin;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
+
+const char* kMapping = R"([import]
+time = { column = "t", unit = "ms" }
+speed = { column = "v", unit = "km/h" }
+road = { column = "zr", unit = "mm" }
+
+[[import.channels]]
+column = "az"
+channel = "seat_mps2"
+unit = "g"
+offset = 1.0
+
+[[import.channels]]
+column = "defl"
+channel = "susp_defl_fl_m"
+unit = "mm"
+scale = -1.0
+
+[sensors.seat]
+position_m = [0.5, 0.3, 0.1]
+quantity = "acceleration_z"
+noise_sd = 0.05
+)";
+
+/// A 4 s log at 100 Hz starting at logger time 5000 ms; `edit(k, line)` may spoil row k.
+std::string makeLog(const std::function<void(int, std::string&)>& edit = {}) {
+  std::string log = "t,v,zr,az,defl,unused\n";
+  for (int k = 0; k <= 400; ++k) {
+    std::string line = std::to_string(5000 + 10 * k) + ",36," + std::to_string(2.0 * std::sin(0.05 * k)) + "," +
+                       std::to_string(1.0 + 0.01 * k / 400.0) + ",3,x";
+    if (edit) edit(k, line);
+    log += line + "\n";
+  }
+  return log;
+}
+
+struct Cli {
+  int code;
+  std::string err;
+};
+Cli twin(const std::string& args) {
+  const std::string dir = ::testing::TempDir();
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + dir + "/imp_out.txt 2> " + dir + "/imp_err.txt";
+  const int st = std::system(cmd.c_str());
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, dtwin_test::slurp(dir + "/imp_err.txt")};
+}
+
+}  // namespace
+
+// Units, offsets and scales convert exactly; times start at 0; the study holds the drive with its
+// speed trace, its road and the mapping's sensor, and reads back.
+TEST(LogImport, ConvertsUnitsAndWritesAStudyThatReadsBack) {
+  const fs::path dir = dtwin_test::freshDir("import_ok");
+  dtwin_test::writeText(dir / "map.toml", kMapping);
+  const ImportMapping m = readImportMapping((dir / "map.toml").string());
+  const ImportResult r = importLog(makeLog(), "log.csv", m, kDemo, "drive");
+  EXPECT_EQ(r.rows, 401);
+  EXPECT_DOUBLE_EQ(r.t0_s, 5.0);
+  EXPECT_DOUBLE_EQ(r.duration_s, 4.0);
+  ASSERT_EQ(r.data.records.size(), 802u);
+  EXPECT_EQ(r.data.records[0].channel, "seat_mps2");
+  EXPECT_EQ(r.data.records[0].time_s, 0.0);
+  EXPECT_NEAR(r.data.records[800].value, 0.01 * 9.80665, 1e-12);   // (1.01 g − 1 g) in m/s²
+  EXPECT_DOUBLE_EQ(r.data.records[801].value, -0.003);               // 3 mm, scale −1
+  EXPECT_DOUBLE_EQ(r.data.records[801].time_s, 4.0);
+  EXPECT_NE(r.speed_csv.find("\n0.01,10\n"), std::string::npos);      // 36 km/h = 10 m/s, at 10 ms
+  EXPECT_EQ(r.road_csv.substr(0, 16), "time_s,height_m\n");
+  writeImport(r, (dir / "out").string());
+  const Study s = loadStudy((dir / "out" / "study.toml").string());
+  const ScenarioSpec& sc = s.scenario("drive");
+  EXPECT_DOUBLE_EQ(sc.duration_s, 4.0);
+  EXPECT_DOUBLE_EQ(sc.speed.speed(2.0), 10.0);
+  EXPECT_EQ(sc.road->type(), "csv_time");
+  ASSERT_EQ(s.sensors.size(), 1u);
+  EXPECT_EQ(s.sensors[0].channel(), "seat_mps2");
+  EXPECT_EQ(s.assemblies().size(), loadStudy(kDemo).assemblies().size());
+  const LabData back = readLabCsv((dir / "out" / "measurements.csv").string(), measurableChannels(s.sensors));
+  EXPECT_EQ(back.records.size(), 802u);
+  const auto side = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "measurements.json"));
+  EXPECT_EQ(side["scenario"]["name"], "drive");
+  EXPECT_EQ(side["source"]["rows"], 401);
+  EXPECT_FALSE(fs::exists(dir / "out.import-tmp"));
+}
+
+// A few empty or NaN cells in a channel are skipped and counted; more in a row than
+// max_dropout_rows is an error at the first of them.
+TEST(LogImport, ShortDropoutsAreSkippedLongOnesRefused) {
+  const fs::path dir = dtwin_test::freshDir("import_dropouts");
+  dtwin_test::writeText(dir / "map.toml", kMapping);
+  const ImportMapping m = readImportMapping((dir / "map.toml").string());
+  const auto gap = [](int from, int to) {
+    return [from, to](int k, std::string& line) {
+      if (k < from || k >= to) return;
+      std::size_t at = 0;
+      for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;  // the az field
+      line = line.substr(0, at) + "NaN" + line.substr(line.find(',', at));
+    };
+  };
+  const ImportResult r = importLog(makeLog(gap(10, 15)), "log.csv", m, kDemo, "drive");
+  EXPECT_EQ(r.dropped_cells, 5);
+  EXPECT_EQ(r.data.records.size(), 797u);
+  try {
+    importLog(makeLog(gap(10, 16)), "log.csv", m, kDemo, "drive");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("log.csv:17: column 'az': empty or NaN from line 12 on"), std::string::npos) << e.what();
+  }
+}
+
+// Every bad log and bad mapping from the command line: exit 2, one line naming the file, the
+// line and the column (or the mapping field), and no output folder.
+TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
+  const fs::path dir = dtwin_test::freshDir("import_bad");
+  dtwin_test::writeText(dir / "map.toml", kMapping);
+  struct Case {
+    std::string name, log, map, expect;
+  };
+  const std::string map = (dir / "map.toml").string();
+  auto spoil = [](int row, const std::string& with) {
+    return makeLog([row, with](int k, std::string& line) {
+      if (k == row) line = with;
+    });
+  };
+  std::string renamed = makeLog();
+  renamed.replace(0, 4, "tt,v");
+  std::string bad_unit = kMapping;
+  bad_unit.replace(bad_unit.find("\"km/h\""), 6, "\"kph\"");
+  std::string wrong_unit = kMapping;
+  wrong_unit.replace(wrong_unit.find("unit = \"mm\"\nscale"), 11, "unit = \"g\"");
+  dtwin_test::writeText(dir / "bad_unit.toml", bad_unit);
+  dtwin_test::writeText(dir / "wrong_unit.toml", wrong_unit);
+  const std::vector<Case> cases = {
+      {"missing_column", renamed, map, "log.csv:1: no column 't' ("},
+      {"non_numeric", spoil(7, "5070,36,0.1,1.0,abc,x"), map, "log.csv:9: column 'defl': 'abc' is not a number"},
+      {"backwards", spoil(7, "5055,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': time goes backwards: 5055 after 5060"},
+      {"duplicated", spoil(7, "5060,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': time 5060 repeats the row before (line 8)"},
+      {"nan_time", spoil(7, "nan,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': 'nan' is not a finite number"},
+      {"empty_speed", spoil(7, "5070,,0.1,1.0,3,x"), map, "log.csv:9: column 'v': is empty or NaN"},
+      {"columns", spoil(7, "5070,36,0.1,1.0,3"), map, "log.csv:9: expected 6 columns (as the header), got 5"},
+      {"unknown_unit", makeLog(), (dir / "bad_unit.toml").string(), "bad_unit.toml:3: import.speed: unknown unit 'kph'"},
+      {"wrong_unit", makeLog(), (dir / "wrong_unit.toml").string(), "unit 'g' is in m/s^2, but this needs m"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const fs::path log = dir / "log.csv";
+    dtwin_test::writeText(log, c.log);
+    const fs::path out = dir / ("out_" + c.name);
+    const Cli r = twin("import " + log.string() + " --map " + c.map + " --out " + out.string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // one line
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(dir / ("out_" + c.name + ".import-tmp")));
+  }
+}
+
+// The mapping can be given as flags instead of a file; an existing folder is not overwritten.
+TEST(LogImport, FlagsMapTheLogAndAnExistingFolderIsKept) {
+  const fs::path dir = dtwin_test::freshDir("import_flags");
+  dtwin_test::writeText(dir / "log.csv", makeLog());
+  const std::string base = "import " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --road zr:mm --channel defl:susp_defl_fl_m:mm";
+  Cli r = twin(base + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Study s = loadStudy((dir / "out" / "study.toml").string());
+  EXPECT_EQ(s.scenario("drive").road->type(), "csv_time");
+  const std::string before = dtwin_test::slurp(dir / "out" / "measurements.csv");
+  r = twin(base + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("exists and is not an empty folder"), std::string::npos) << r.err;
+  EXPECT_EQ(dtwin_test::slurp(dir / "out" / "measurements.csv"), before);
+  r = twin(base + " --map x.toml --out " + (dir / "out2").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--map: give the mapping either in the file or as flags"), std::string::npos) << r.err;
+  r = twin("import " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --channel defl:susp_defl_fl_m:furlong --out " +
+           (dir / "out3").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown unit 'furlong'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out3"));
+}

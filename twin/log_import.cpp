@@ -1,0 +1,453 @@
+#include "twin/log_import.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <cctype>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "common/csv.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/json.hpp"
+#include "common/names.hpp"
+#include "twin/provenance.hpp"
+#include "twin/study.hpp"
+#include "twin/toml_reader.hpp"
+#include "twin/trace.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin {
+
+namespace {
+
+struct Unit {
+  const char* name;
+  const char* si;
+  double factor;
+};
+// Every unit a log may give, with the SI unit it converts to.
+const Unit kUnits[] = {
+    {"s", "s", 1.0},           {"ms", "s", 1e-3},
+    {"m/s", "m/s", 1.0},       {"mps", "m/s", 1.0},        {"km/h", "m/s", 1.0 / 3.6}, {"kmh", "m/s", 1.0 / 3.6},
+    {"mph", "m/s", 0.44704},   {"mm/s", "m/s", 1e-3},
+    {"m", "m", 1.0},           {"mm", "m", 1e-3},          {"cm", "m", 1e-2},
+    {"m/s^2", "m/s^2", 1.0},   {"m/s2", "m/s^2", 1.0},     {"mps2", "m/s^2", 1.0},    {"g", "m/s^2", 9.80665},
+    {"N", "N", 1.0},           {"kN", "N", 1e3},
+    {"rad", "rad", 1.0},       {"deg", "rad", 3.14159265358979323846 / 180.0},
+    {"rad/s^2", "rad/s^2", 1.0}, {"deg/s^2", "rad/s^2", 3.14159265358979323846 / 180.0},
+};
+
+std::string unitList(const std::string& si) {
+  std::string out;
+  for (const auto& u : kUnits)
+    if (si.empty() || u.si == si) out += (out.empty() ? "" : ", ") + std::string(u.name);
+  return out;
+}
+
+ImportColumn readColumn(TableReader& r, const std::string& key, const std::string& default_unit) {
+  ImportColumn c;
+  c.where = r.where(key);
+  if (const toml::table* t = r.isTable(key) ? r.table(key) : nullptr) {
+    TableReader cr(*t, r.file(), r.field(key));
+    const auto col = cr.string("column");
+    if (!col || col->empty()) throw InputError(cr.where("column"), "is required (the log's column name)");
+    c.column = *col;
+    c.unit = cr.string("unit").value_or(default_unit);
+    if (c.unit.empty()) throw InputError(cr.where("unit"), "is required (" + unitList("") + ")");
+    c.offset = cr.number("offset", 0.0);
+    c.scale = cr.number("scale", 1.0);
+    if (c.scale == 0) throw InputError(cr.where("scale"), "must not be 0");
+    cr.finish();
+    return c;
+  }
+  const auto s = r.string(key);  // the short form: just the column name
+  c.column = s.value_or("");
+  c.unit = default_unit;
+  if (c.column.empty()) throw InputError(r.where(key), "must be a column name or { column, unit, offset, scale }");
+  if (c.unit.empty()) throw InputError(r.where(key), "needs a unit: write { column = \"" + c.column + "\", unit = \"...\" }");
+  return c;
+}
+
+/// The index of `c`'s column in the header, or an InputError naming the log and the mapping field.
+std::size_t columnIndex(const std::vector<std::string>& header, const ImportColumn& c, const std::string& log_name) {
+  std::size_t found = header.size();
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == c.column) {
+      if (found != header.size())
+        throw InputError(log_name + ":1", "column '" + c.column + "' appears twice in the header (" + c.where + ")");
+      found = i;
+    }
+  if (found == header.size()) {
+    const std::string hint = closestName(c.column, header);
+    throw InputError(log_name + ":1", "no column '" + c.column + "' (" + c.where + ")" +
+                                          (hint.empty() ? std::string() : "; did you mean '" + hint + "'?"));
+  }
+  return found;
+}
+
+bool isMissing(std::string_view f) {
+  if (f.empty()) return true;
+  std::string s(f);
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return s == "nan" || s == "na" || s == "n/a" || s == "null" || s == "-nan";
+}
+
+/// Makes every relative path of a study table absolute (against the study file's folder).
+void absolutize(toml::table& root, const fs::path& folder) {
+  auto fix = [&](toml::node* n) {
+    if (!n || !n->is_string()) return;
+    const fs::path p(n->value<std::string>().value());
+    if (p.is_relative()) *n->as_string() = (folder / p).lexically_normal().string();
+  };
+  if (auto* st = root["study"].as_table()) fix(st->get("vehicle"));
+  if (auto* sc = root["scenarios"].as_table())
+    for (auto&& [name, node] : *sc)
+      if (auto* t = node.as_table()) {
+        if (auto* sp = (*t)["speed"].as_table()) fix(sp->get("csv"));
+        if (auto* rd = (*t)["road"].as_table()) fix(rd->get("path"));
+      }
+}
+
+
+}  // namespace
+
+double unitFactor(const std::string& unit, const std::string& si, const std::string& where) {
+  for (const auto& u : kUnits)
+    if (unit == u.name) {
+      if (si != u.si) throw InputError(where, "unit '" + unit + "' is in " + u.si + ", but this needs " + si + " (" + unitList(si) + ")");
+      return u.factor;
+    }
+  throw InputError(where, "unknown unit '" + unit + "' (known for " + si + ": " + unitList(si) + ")");
+}
+
+ImportColumn parseImportColumn(const std::string& text, const std::string& flag, const std::string& default_unit) {
+  std::vector<std::string> parts;
+  std::stringstream ss(text);
+  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+  if (parts.empty() || parts[0].empty() || parts.size() > 4)
+    throw InputError(flag, "expects COLUMN[:UNIT[:OFFSET[:SCALE]]], got '" + text + "'");
+  ImportColumn c;
+  c.where = flag;
+  c.column = parts[0];
+  c.unit = parts.size() > 1 ? parts[1] : default_unit;
+  if (c.unit.empty()) throw InputError(flag, "'" + text + "' needs a unit: COLUMN:UNIT");
+  auto num = [&](std::size_t i, double& v) {
+    if (parts.size() > i && (!parseDouble(parts[i], v) || !std::isfinite(v)))
+      throw InputError(flag, "'" + parts[i] + "' in '" + text + "' is not a finite number");
+  };
+  num(2, c.offset);
+  num(3, c.scale);
+  if (c.scale == 0) throw InputError(flag, "the scale in '" + text + "' must not be 0");
+  return c;
+}
+
+ImportMapping readImportMapping(const std::string& path) {
+  const std::string text = readTextFile(path, " (an import mapping)");
+  toml::table root;
+  try {
+    root = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
+  }
+  TableReader top(root, path, "");
+  ImportMapping m;
+  m.source = path;
+  auto* it = top.table("import");
+  if (!it) throw InputError(path, "has no [import] table (time, speed, road, [[import.channels]])");
+  TableReader r(*it, path, "import");
+  if (!r.has("time")) throw InputError(r.where("time"), "is required (the log's time column)");
+  m.time = readColumn(r, "time", "s");
+  if (!r.has("speed")) throw InputError(r.where("speed"), "is required (the log's speed column, e.g. { column = \"speed\", unit = \"km/h\" })");
+  m.speed = readColumn(r, "speed", "");
+  if (r.has("road")) m.road = readColumn(r, "road", "");
+  if (r.has("road_left") || r.has("road_right")) {
+    if (m.road) throw InputError(r.where("road_left"), "give either road (both tracks) or road_left and road_right");
+    if (!r.has("road_left") || !r.has("road_right"))
+      throw InputError(r.where(r.has("road_left") ? "road_right" : "road_left"), "is required with the other track's column");
+    m.road_left = readColumn(r, "road_left", "");
+    m.road_right = readColumn(r, "road_right", "");
+  }
+  if (r.has("highpass_hz")) {
+    m.highpass_hz = *r.number("highpass_hz");
+    if (!(m.highpass_hz >= 1e-3 && m.highpass_hz <= 10))
+      throw InputError(r.where("highpass_hz"), "must lie in [1e-3, 10] Hz, got " + formatNumber(m.highpass_hz));
+  }
+  if (auto sep = r.string("separator")) {
+    if (sep->size() != 1 || *sep == "\"" || *sep == "\n")
+      throw InputError(r.where("separator"), "must be one character (\",\", \";\", \"\\t\"), got \"" + *sep + "\"");
+    m.separator = (*sep)[0];
+  }
+  if (auto k = r.integer("max_dropout_rows")) {
+    if (*k < 0 || *k > 1000000) throw InputError(r.where("max_dropout_rows"), "must lie in [0, 1e6], got " + std::to_string(*k));
+    m.max_dropout_rows = *k;
+  }
+  const toml::array* chans = r.array("channels");
+  if (!chans || chans->empty()) throw InputError(r.where("channels"), "needs at least one [[import.channels]] (column, channel, unit)");
+  for (std::size_t i = 0; i < chans->size(); ++i) {
+    const auto* t = (*chans)[i].as_table();
+    const std::string field = "import.channels[" + std::to_string(i) + "]";
+    if (!t) throw InputError(r.where("channels"), field + " must be a table (column, channel, unit)");
+    TableReader cr(*t, path, field);
+    ImportChannel c;
+    const auto ch = cr.string("channel");
+    if (!ch || ch->empty()) throw InputError(cr.where("channel"), "is required (a channel of the twin or of a sensor, e.g. seat_mps2)");
+    c.channel = *ch;
+    c.source.where = cr.where("column");
+    const auto col = cr.string("column");
+    if (!col || col->empty()) throw InputError(cr.where("column"), "is required (the log's column name)");
+    c.source.column = *col;
+    const auto unit = cr.string("unit");
+    if (!unit) throw InputError(cr.where("unit"), "is required (" + unitList("") + ")");
+    c.source.unit = *unit;
+    c.source.offset = cr.number("offset", 0.0);
+    c.source.scale = cr.number("scale", 1.0);
+    if (c.source.scale == 0) throw InputError(cr.where("scale"), "must not be 0");
+    cr.finish();
+    m.channels.push_back(c);
+  }
+  r.finish();
+  m.sensors = readSensorTables(top);
+  top.finish();
+  return m;
+}
+
+ImportResult importLog(const std::string& log_text, const std::string& log_name, const ImportMapping& m,
+                       const std::string& base_study, const std::string& scenario, const StageProgress& progress) {
+  ImportResult res;
+  res.scenario = scenario;
+  // The study the drive joins: its sensors and the mapping's give the channels a log may fill.
+  const Study base = loadStudy(base_study);
+  std::vector<SensorSpec> sensors = base.sensors;
+  for (const auto& x : m.sensors) {
+    for (const auto& y : sensors)
+      if (y.name == x.name) throw InputError(m.source + ": sensors." + x.name, "the study " + base_study + " already has this sensor");
+    sensors.push_back(x);
+  }
+  const std::vector<Channel> known = measurableChannels(sensors);
+  for (const auto& sc : base.scenarios)
+    if (sc.name == scenario) throw InputError("--scenario " + scenario, "the study " + base_study + " already has a scenario of this name");
+  bool name_ok = !scenario.empty();
+  for (char ch : scenario) name_ok = name_ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-');
+  if (!name_ok) throw InputError("--scenario " + scenario, "must be letters, digits, '_' and '-'");
+
+  // Units first: a wrong unit is named before a million rows are read.
+  const double t_factor = unitFactor(m.time.unit, "s", m.time.where);
+  if (!m.speed) throw InputError(m.source + ": import.speed", "is required");
+  const double v_factor = unitFactor(m.speed->unit, "m/s", m.speed->where);
+  std::vector<const ImportColumn*> road_cols;
+  if (m.road) road_cols = {&*m.road};
+  if (m.road_left) road_cols = {&*m.road_left, &*m.road_right};
+  bool road_velocity = false;
+  std::vector<double> road_factor;
+  for (const auto* c : road_cols) {
+    bool velocity = false;
+    for (const auto& u : kUnits)
+      if (c->unit == u.name && std::string(u.si) == "m/s") velocity = true;
+    road_factor.push_back(unitFactor(c->unit, velocity ? "m/s" : "m", c->where));
+    if (c != road_cols.front() && velocity != road_velocity)
+      throw InputError(c->where, "both tracks must be heights (m, mm) or both road velocities (m/s, mm/s)");
+    road_velocity = velocity;
+  }
+  std::vector<double> ch_factor;
+  for (const auto& c : m.channels) {
+    const std::string rule = checkChannelName(c.channel, known);
+    if (!rule.empty()) throw InputError(c.source.where, "channel '" + c.channel + "' " + rule);
+    std::string si;
+    for (const auto& k : known)
+      if (k.name == c.channel) si = k.unit;
+    ch_factor.push_back(unitFactor(c.source.unit, si, c.source.where));
+  }
+
+  CsvReader csv(log_text, log_name, m.separator);
+  if (!csv.next()) throw InputError(log_name + ":1", "empty file; expected a header row of column names");
+  std::vector<std::string> header;
+  for (auto f : csv.fields()) header.emplace_back(f);
+  const std::size_t i_time = columnIndex(header, m.time, log_name), i_speed = columnIndex(header, *m.speed, log_name);
+  std::vector<std::size_t> i_road, i_ch;
+  for (const auto* c : road_cols) i_road.push_back(columnIndex(header, *c, log_name));
+  for (const auto& c : m.channels) i_ch.push_back(columnIndex(header, c.source, log_name));
+
+  std::vector<double> t, v;
+  std::vector<std::vector<double>> road(road_cols.size());
+  std::vector<std::vector<double>> values(m.channels.size());  // NaN: a dropout
+  std::vector<long> run(m.channels.size(), 0), run_start(m.channels.size(), 0);
+  std::vector<long> lines;
+  auto cellError = [&](std::size_t col, const std::string& rule) {
+    return InputError(csv.where(), "column '" + header[col] + "': " + rule);
+  };
+  auto number = [&](std::size_t col) {
+    double x = 0;
+    const auto f = csv.fields()[col];
+    if (!parseNumber(f, x)) throw cellError(col, isMissing(f) ? "is empty or NaN (a required column has no gaps)" : "'" + std::string(f) + "' is not a number");
+    if (!std::isfinite(x)) throw cellError(col, "'" + std::string(f) + "' is not a finite number");
+    return x;
+  };
+  while (csv.next()) {
+    const auto& f = csv.fields();
+    if (f.size() != header.size())
+      throw InputError(csv.where(), "expected " + std::to_string(header.size()) + " columns (as the header), got " + std::to_string(f.size()));
+    const double ti = number(i_time) * t_factor;
+    if (!t.empty() && ti == t.back())
+      throw cellError(i_time, "time " + std::string(f[i_time]) + " repeats the row before (line " + std::to_string(lines.back()) + ")");
+    if (!t.empty() && ti < t.back())
+      throw cellError(i_time, "time goes backwards: " + std::string(f[i_time]) + " after " + formatNumber(t.back() / t_factor, 12) +
+                                  " (line " + std::to_string(lines.back()) + ")");
+    double vi = (number(i_speed) - m.speed->offset) * m.speed->scale * v_factor;
+    if (vi < 0 && vi >= -0.2) vi = 0.0;  // a logger's noise about standstill
+    if (vi < 0) throw cellError(i_speed, "speed " + std::string(f[i_speed]) + " " + m.speed->unit + " is negative (beyond the 0.2 m/s of noise at rest)");
+    if (vi > 100) throw cellError(i_speed, "speed " + std::string(f[i_speed]) + " " + m.speed->unit + " exceeds 100 m/s");
+    t.push_back(ti);
+    v.push_back(vi);
+    lines.push_back(csv.line());
+    for (std::size_t k = 0; k < road_cols.size(); ++k)
+      road[k].push_back((number(i_road[k]) - road_cols[k]->offset) * road_cols[k]->scale * road_factor[k]);
+    for (std::size_t k = 0; k < m.channels.size(); ++k) {
+      const auto cell = f[i_ch[k]];
+      double x = 0;
+      if (isMissing(cell) || (parseNumber(cell, x) && std::isnan(x))) {
+        if (run[k]++ == 0) run_start[k] = csv.line();
+        if (run[k] > m.max_dropout_rows)
+          throw cellError(i_ch[k], "empty or NaN from line " + std::to_string(run_start[k]) + " on: more than max_dropout_rows = " +
+                                        std::to_string(m.max_dropout_rows) + " rows in a row");
+        values[k].push_back(std::numeric_limits<double>::quiet_NaN());
+        ++res.dropped_cells;
+        continue;
+      }
+      if (!parseNumber(cell, x)) throw cellError(i_ch[k], "'" + std::string(cell) + "' is not a number");
+      if (!std::isfinite(x)) throw cellError(i_ch[k], "'" + std::string(cell) + "' is not a finite number");
+      run[k] = 0;
+      values[k].push_back((x - m.channels[k].source.offset) * m.channels[k].source.scale * ch_factor[k]);
+    }
+    if (progress && (t.size() & 4095) == 0) progress("import", csv.offset(), csv.size());
+  }
+  if (progress) progress("import", csv.size(), csv.size());
+  if (t.size() < 2) throw InputError(log_name, "holds " + std::to_string(t.size()) + " data rows; a drive needs at least 2");
+  res.rows = static_cast<long>(t.size());
+  res.t0_s = t.front();
+  // Times from the first row, rounded to 1 ns (so 100.0129 - 100 is written 0.0129).
+  for (double& x : t) x = std::round((x - res.t0_s) * 1e9) / 1e9;
+  res.duration_s = t.back();
+
+  // The measurements, times from the first row.
+  for (std::size_t i = 0; i < t.size(); ++i)
+    for (std::size_t k = 0; k < m.channels.size(); ++k)
+      if (!std::isnan(values[k][i])) res.data.records.push_back({1, t[i], m.channels[k].channel, values[k][i]});
+  res.lab_csv = labCsvText(res.data, known);  // validates (plausible ranges, ...) with the log's lines lost: name the log
+  std::string s = "time_s,speed_mps\n";
+  s.reserve(t.size() * 24);
+  for (std::size_t i = 0; i < t.size(); ++i) s += formatExact(t[i]) + "," + formatExact(v[i]) + "\n";
+  res.speed_csv = std::move(s);
+  if (!road_cols.empty()) {
+    const bool two = road_cols.size() == 2;
+    std::string r = road_velocity ? (two ? "time_s,left_mps,right_mps\n" : "time_s,velocity_mps\n")
+                                  : (two ? "time_s,left_m,right_m\n" : "time_s,height_m\n");
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      r += formatExact(t[i]) + "," + formatExact(road[0][i]);
+      if (two) r += "," + formatExact(road[1][i]);
+      r += "\n";
+    }
+    res.road_csv = std::move(r);
+  }
+
+  // The study: the base, paths made absolute, plus the drive and the mapping's sensors.
+  toml::table root;
+  try {
+    root = toml::parse(readTextFile(base_study), base_study);
+  } catch (const toml::parse_error& e) {
+    throw InputError(base_study + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
+  }
+  absolutize(root, fs::absolute(base_study).parent_path());
+  toml::table sc;
+  sc.insert("duration_s", res.duration_s);
+  sc.insert("speed", toml::table{{"csv", "speed.csv"}});
+  if (!road_cols.empty()) {
+    toml::table rd{{"type", "csv_time"}, {"path", "road.csv"}};
+    if (road_velocity) rd.insert("highpass_hz", m.highpass_hz);
+    sc.insert("road", std::move(rd));
+  } else {
+    sc.insert("road", toml::table{{"type", "flat"}});
+  }
+  if (!root.contains("scenarios")) root.insert("scenarios", toml::table{});
+  root["scenarios"].as_table()->insert(scenario, std::move(sc));
+  if (!m.sensors.empty()) {
+    if (!root.contains("sensors")) root.insert("sensors", toml::table{});
+    for (const auto& x : m.sensors) {
+      toml::table st{{"body", x.mount}, {"quantity", sensorQuantityName(x.quantity)}};
+      if (x.corner() < 0) st.insert("position_m", toml::array{x.position_m[0], x.position_m[1], x.position_m[2]});
+      if (x.filter.order > 0) {
+        toml::table ft{{"order", x.filter.order}, {"cutoff_hz", x.filter.cutoff_hz}};
+        if (x.filter.order == 2) ft.insert("damping", x.filter.damping);
+        st.insert("filter", std::move(ft));
+      }
+      if (x.noise_sd > 0) st.insert("noise_sd", x.noise_sd);
+      root["sensors"].as_table()->insert(x.name, std::move(st));
+    }
+  }
+  std::ostringstream study;
+  study << "# Written by `twin import` from " << log_name << " (mapping " << m.source << ") on the study " << base_study
+        << ";\n# the drive is scenario '" << scenario << "'. Paths are absolute or relative to this file.\n"
+        << root << "\n";
+  res.study_toml = study.str();
+
+  nlohmann::json cols = nlohmann::json::array();
+  for (const auto& c : m.channels)
+    cols.push_back({{"column", c.source.column}, {"channel", c.channel}, {"unit", c.source.unit}, {"offset", c.source.offset}, {"scale", c.source.scale}});
+  nlohmann::json rj = nullptr;
+  if (!road_cols.empty()) {
+    rj = {{"form", road_velocity ? "velocity" : "height"}, {"tracks", road_cols.size() == 2 ? "left and right" : "identical"}};
+    rj["columns"] = nlohmann::json::array();
+    for (const auto* c : road_cols) rj["columns"].push_back({{"column", c->column}, {"unit", c->unit}});
+    if (road_velocity) rj["highpass_hz"] = m.highpass_hz;
+  }
+  res.sidecar = {{"made_by", "twin import"},
+                 {"program", programInfo()},
+                 {"created_utc", utcNow()},
+                 {"scenario", {{"name", scenario}, {"duration_s", res.duration_s}}},
+                 {"source", {{"file", log_name}, {"content", hexId(fnv1a64(log_text))}, {"rows", res.rows}, {"t0_s", res.t0_s}}},
+                 {"mapping", {{"file", m.source},
+                              {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
+                              {"speed", {{"column", m.speed->column}, {"unit", m.speed->unit}}},
+                              {"road", rj},
+                              {"channels", cols},
+                              {"max_dropout_rows", m.max_dropout_rows}}},
+                 {"dropped_cells", res.dropped_cells},
+                 {"records", res.data.records.size()},
+                 {"study", base_study}};
+  return res;
+}
+
+void writeImport(const ImportResult& r, const std::string& out_dir) {
+  const fs::path out(out_dir);
+  std::error_code ec;
+  if (fs::exists(out) && (!fs::is_directory(out) || !fs::is_empty(out, ec)))
+    throw InputError(out_dir, "exists and is not an empty folder (--out): choose a new folder");
+  const fs::path tmp = out.parent_path() / (out.filename().string() + ".import-tmp");
+  fs::remove_all(tmp, ec);
+  try {
+    fs::create_directories(tmp);
+    writeFileAtomic((tmp / "measurements.csv").string(), r.lab_csv);
+    writeFileAtomic((tmp / "measurements.json").string(), r.sidecar.dump(2) + "\n");
+    writeFileAtomic((tmp / "speed.csv").string(), r.speed_csv);
+    if (!r.road_csv.empty()) writeFileAtomic((tmp / "road.csv").string(), r.road_csv);
+    writeFileAtomic((tmp / "study.toml").string(), r.study_toml);
+    (void)loadStudy((tmp / "study.toml").string());  // the study reads back (the drive's scenario included)
+    if (fs::exists(out)) fs::remove(out);            // an empty folder
+    fs::rename(tmp, out);
+  } catch (const InputError& e) {
+    fs::remove_all(tmp, ec);
+    std::string where = e.where();
+    for (std::size_t at; (at = where.find(tmp.string())) != std::string::npos;) where.replace(at, tmp.string().size(), out.string());
+    throw InputError(where, e.rule());
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+}
+
+}  // namespace dtwin

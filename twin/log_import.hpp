@@ -1,0 +1,83 @@
+#pragma once
+// `twin import`: a logger's wide CSV (one row per sample time, one column per signal) turned into
+// what the twin reads (docs/measurements.md, "Importing a log"): the tidy measurement file with
+// its sidecar, the speed trace, the road logged against time, and a study file holding the drive
+// as a scenario, so that `twin compare` and `twin diagnose` run on it with no hand editing.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/progress.hpp"
+#include "subsystems/sensor.hpp"
+#include "twin/measurement.hpp"
+
+namespace dtwin {
+
+/// One source column and how to read it: SI value = (raw − offset) × scale × unit factor.
+struct ImportColumn {
+  std::string column;      ///< the header name in the log
+  std::string unit;        ///< as the log gives it: "g", "m/s^2", "km/h", "mm", "ms", ...
+  double offset = 0.0;     ///< in the log's unit (e.g. 1 for an accelerometer in g that reads 1 g at rest)
+  double scale = 1.0;      ///< e.g. -1 for a sensor mounted upside down
+  std::string where;       ///< names it in errors (mapping file:line: field, or the flag)
+};
+
+struct ImportChannel {
+  ImportColumn source;
+  std::string channel;     ///< a channel of the twin or of a sensor ("seat_mps2")
+};
+
+struct ImportMapping {
+  ImportColumn time;                      ///< unit s or ms
+  std::optional<ImportColumn> speed;      ///< unit km/h, m/s or mph (required)
+  /// The road under the front axle, against time: one column for both tracks or left and right;
+  /// unit m or mm (height) or m/s or mm/s (vertical road velocity). None: a flat road.
+  std::optional<ImportColumn> road, road_left, road_right;
+  double highpass_hz = 0.1;               ///< drift removal of a road velocity (docs/measurements.md)
+  std::vector<ImportChannel> channels;    ///< at least one
+  std::vector<SensorSpec> sensors;        ///< sensors the channels may name, added to the study
+  char separator = ',';
+  long max_dropout_rows = 5;              ///< longest run of empty/NaN cells a channel may have (skipped)
+  std::string source;                     ///< the mapping file, or "command line"
+};
+
+/// Reads a mapping TOML ([import] table: time, speed, road | road_left + road_right, highpass_hz,
+/// separator, max_dropout_rows, [[import.channels]]; optional [sensors.NAME] as in a study).
+/// Unknown keys and bad values: InputError naming file:line: field.
+ImportMapping readImportMapping(const std::string& path);
+/// "COL[:UNIT[:OFFSET[:SCALE]]]" from the command line (`flag` names it in errors).
+ImportColumn parseImportColumn(const std::string& text, const std::string& flag, const std::string& default_unit = "");
+
+/// The factor from `unit` to SI for a target of SI unit `si` ("m/s^2", "m", "m/s", "N", "rad",
+/// "rad/s^2", "s", "m/s (speed)"); InputError(where, ...) for a unit it does not know or that
+/// does not fit (g for a channel in m).
+double unitFactor(const std::string& unit, const std::string& si, const std::string& where);
+
+struct ImportResult {
+  std::string scenario;            ///< the scenario name of the drive
+  double t0_s = 0.0;               ///< the log's time of its first row (scenario time 0)
+  double duration_s = 0.0;
+  long rows = 0, dropped_cells = 0;
+  LabData data;                    ///< the measurements (repetition 1), times from 0
+  std::string lab_csv, speed_csv, road_csv;  ///< file texts (road_csv empty: flat road)
+  std::string study_toml;          ///< the study with the drive's scenario and the mapping's sensors
+  nlohmann::json sidecar;          ///< how the files were made
+};
+
+/// Converts the log text. `base_study` is the study file the drive is added to (its scenarios,
+/// vehicle and sensors are kept; relative paths become absolute). Every check is done here,
+/// before anything is written: missing columns, non-numeric cells, NaN runs longer than
+/// max_dropout_rows, time going backwards or repeating, unknown units, a scenario name already
+/// in the study. Errors: InputError(log:line, "column 'X': rule"). `progress` sees bytes read.
+ImportResult importLog(const std::string& log_text, const std::string& log_name, const ImportMapping& mapping,
+                       const std::string& base_study, const std::string& scenario, const StageProgress& progress = {});
+
+/// Writes `r` into the new folder `out_dir` (measurements.csv + .json, speed.csv, road.csv,
+/// study.toml): all files go into a temporary sibling folder, the study written there is read
+/// back with loadStudy (so it is known to work), and the folder is renamed into place. On any
+/// error nothing is left behind. `out_dir` must not exist, or be an empty folder.
+void writeImport(const ImportResult& r, const std::string& out_dir);
+
+}  // namespace dtwin

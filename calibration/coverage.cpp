@@ -109,7 +109,7 @@ CalibrationResult calibrateSeed(const Study& study, const AssemblySpec& a, const
   const LabResult lab = generateLab(study, a, lo);
   const std::string lab_path = (adir / ("lab_" + std::to_string(seed) + ".csv")).string();
   rootWrites([&] {
-    writeLabCsv(lab_path, lab.data);
+    writeLabCsv(lab_path, lab.data, measurableChannels(study.sensors));
     writeFileAtomic(fs::path(lab_path).replace_extension(".json").string(), lab.provenance.dump(2) + "\n");
   });
   CalibrationOptions co = options.calibration;

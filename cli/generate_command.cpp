@@ -98,7 +98,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
     r = generateLab(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
   rootWrites([&] {
-    writeLabCsv(cfg.out, r.data);
+    writeLabCsv(cfg.out, r.data, measurableChannels(study.sensors));
     writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
   });
   if (!cfg.quiet) {

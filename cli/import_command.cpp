@@ -18,7 +18,7 @@ struct ImportConfig {
   std::string log, map, out, study = defaultStudy(), scenario = "drive";
   std::string time, speed, road, road_left, road_right, separator;
   std::vector<std::string> channels;
-  double highpass_hz = 0.0;
+  double highpass_hz = 0.0, speed_lowpass_hz = 0.0;
   bool quiet = false;
 };
 
@@ -39,6 +39,7 @@ ImportMapping mappingFromFlags(const ImportConfig& cfg) {
     m.road_right = parseImportColumn(cfg.road_right, "--road-right");
   }
   if (cfg.highpass_hz > 0) m.highpass_hz = cfg.highpass_hz;
+  m.speed_lowpass_hz = cfg.speed_lowpass_hz;
   if (!cfg.separator.empty()) m.separator = cfg.separator == "tab" ? '\t' : cfg.separator[0];
   if (cfg.channels.empty()) throw InputError("--channel", "is required without --map (COLUMN:CHANNEL:UNIT, repeatable)");
   for (const auto& text : cfg.channels) {
@@ -54,7 +55,7 @@ ImportMapping mappingFromFlags(const ImportConfig& cfg) {
 
 int runImport(const ImportConfig& cfg, const std::string& command) {
   const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() || !cfg.road_left.empty() ||
-                     !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || !cfg.separator.empty();
+                     !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
   if (!cfg.map.empty() && flags) throw InputError("--map", "give the mapping either in the file or as flags (--time, --speed, --road, --channel), not both");
   if (cfg.map.empty() && !flags) throw InputError("--map", "is required (or the flags --time, --speed, --channel)");
   const ImportMapping mapping = cfg.map.empty() ? mappingFromFlags(cfg) : readImportMapping(cfg.map);
@@ -97,6 +98,8 @@ CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) 
   c->add_option("--road-right", cfg->road_right, "Right track's road column, COLUMN:UNIT");
   c->add_option("--channel", cfg->channels, "A measured channel, COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]] (repeatable), e.g. az:seat_mps2:g:1");
   c->add_option("--highpass-hz", cfg->highpass_hz, "Drift removal of a road velocity [Hz] (default 0.1)")->check(CLI::Range(1e-3, 10.0));
+  c->add_option("--speed-lowpass-hz", cfg->speed_lowpass_hz, "Smooth the speed by a zero-phase low-pass at this cut-off [Hz] (default: none)")
+      ->check(CLI::Range(0.01, 100.0));
   c->add_option("--separator", cfg->separator, "Field separator of the log: one character, or 'tab' (default ',')");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
   return {c, [cfg, command_line] { return runImport(*cfg, command_line); }, {}};

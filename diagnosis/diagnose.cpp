@@ -384,7 +384,8 @@ void prepareData(Diagnosis& d, const std::vector<calib::DataSet>& fit, const std
   };
   d.fit_sets = fittedOnly(fit);
   d.hold_sets = fittedOnly(holdout);
-  for (const auto& s : d.fit_sets) d.data_hash += s.scenario + ":" + hexId(fnv1a64(labCsvText(s.data))) + ";";
+  for (const auto& s : d.fit_sets)
+    d.data_hash += s.scenario + ":" + hexId(fnv1a64(labCsvText(s.data, measurableChannels(d.study.sensors)))) + ";";
 }
 
 // ------------------------------------------------------------------ screen

@@ -81,7 +81,7 @@ std::string labStage(const Study& study, const AssemblySpec& truth, const StudyR
     LabOptions lo;
     lo.command = options.command;
     const LabResult r = generateLab(study, truth, lo);
-    writeLabCsv(lab_path, r.data);
+    writeLabCsv(lab_path, r.data, measurableChannels(study.sensors));
     writeFileAtomic(sidecarPath(lab_path), r.provenance.dump(2) + "\n");  // last: marks the stage done
     news.report("lab", 1, 1);
     news.say("lab: " + truth.id + " at the truth, " + std::to_string(r.data.records.size()) + " records -> " + lab_path);
@@ -215,7 +215,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   auto t0 = std::chrono::steady_clock::now();
   const std::string lab_path = labStage(study, truth_assembly, options, out, news);
   const std::string lab_bytes = rootFileBytes(lab_path);
-  const LabData lab = parseLabCsv(lab_bytes, lab_path);
+  const LabData lab = parseLabCsv(lab_bytes, lab_path, measurableChannels(study.sensors));
   stages["lab"] = since(t0);
 
   t0 = std::chrono::steady_clock::now();

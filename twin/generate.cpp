@@ -289,7 +289,7 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
       for (std::size_t r : rows) res.data.records.push_back({rep, time_col[r], c.name, col[r] + (noisy ? sigma * rs.normal() : 0.0)});
     }
   }
-  validateLabData(res.data, "generated lab data");
+  validateLabData(res.data, "generated lab data", measurableChannels(study.sensors));
 
   nlohmann::json j = runRecord(study, *model, sc, road->describe(), seed, values, study.simulation, run.stats, channels, opt.command);
   j["kind"] = "lab";

@@ -15,6 +15,7 @@
 #include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/names.hpp"
+#include "subsystems/time_road.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"
 #include "twin/toml_reader.hpp"
@@ -98,22 +99,51 @@ bool isMissing(std::string_view f) {
   return s == "nan" || s == "na" || s == "n/a" || s == "null" || s == "-nan";
 }
 
-/// Makes every relative path of a study table absolute (against the study file's folder).
-void absolutize(toml::table& root, const fs::path& folder) {
-  auto fix = [&](toml::node* n) {
+/// The base study's text with every relative path (the vehicle, a scenario's speed trace or road
+/// file) made absolute in place: the rest of the file (its order, which sets the assemblies, and
+/// its comments) is kept byte for byte.
+std::string absolutizedStudyText(const std::string& text, const toml::table& root, const fs::path& folder, const std::string& name) {
+  struct Patch {
+    std::size_t line, begin, end;  // 1-based line, [begin, end) 1-based columns
+    std::string with;
+  };
+  std::vector<Patch> patches;
+  auto fix = [&](const toml::node* n) {
     if (!n || !n->is_string()) return;
     const fs::path p(n->value<std::string>().value());
-    if (p.is_relative()) *n->as_string() = (folder / p).lexically_normal().string();
+    if (!p.is_relative()) return;
+    const auto& src = n->source();
+    if (src.begin.line != src.end.line)
+      throw InputError(name + ":" + std::to_string(src.begin.line), "a path written over several lines cannot be rewritten: write it on one line");
+    std::string quoted = "\"";
+    for (char c : (folder / p).lexically_normal().string()) {
+      if (c == '\\' || c == '"') quoted += '\\';
+      quoted += c;
+    }
+    patches.push_back({src.begin.line, src.begin.column, src.end.column, quoted + "\""});
   };
-  if (auto* st = root["study"].as_table()) fix(st->get("vehicle"));
-  if (auto* sc = root["scenarios"].as_table())
-    for (auto&& [name, node] : *sc)
-      if (auto* t = node.as_table()) {
-        if (auto* sp = (*t)["speed"].as_table()) fix(sp->get("csv"));
-        if (auto* rd = (*t)["road"].as_table()) fix(rd->get("path"));
+  if (const auto* st = root["study"].as_table()) fix(st->get("vehicle"));
+  if (const auto* sc = root["scenarios"].as_table())
+    for (auto&& [key, node] : *sc)
+      if (const auto* t = node.as_table()) {
+        if (const auto* sp = t->get("speed"); sp && sp->is_table()) fix(sp->as_table()->get("csv"));
+        if (const auto* rd = t->get("road"); rd && rd->is_table()) fix(rd->as_table()->get("path"));
       }
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) { return a.line != b.line ? a.line > b.line : a.begin > b.begin; });
+  for (const auto& pt : patches) {
+    std::string& l = lines.at(pt.line - 1);
+    const std::size_t b = pt.begin - 1, e = pt.end - 1;
+    if (e > l.size() || e <= b || (l[b] != '"' && l[b] != '\'') || (l[e - 1] != '"' && l[e - 1] != '\''))
+      throw InputError(name + ":" + std::to_string(pt.line), "cannot locate the path on this line to make it absolute: write it as an absolute path");
+    l.replace(b, e - b, pt.with);
+  }
+  std::string out;
+  for (const auto& l : lines) out += l + "\n";
+  return out;
 }
-
 
 }  // namespace
 
@@ -177,6 +207,11 @@ ImportMapping readImportMapping(const std::string& path) {
     m.highpass_hz = *r.number("highpass_hz");
     if (!(m.highpass_hz >= 1e-3 && m.highpass_hz <= 10))
       throw InputError(r.where("highpass_hz"), "must lie in [1e-3, 10] Hz, got " + formatNumber(m.highpass_hz));
+  }
+  if (r.has("speed_lowpass_hz")) {
+    m.speed_lowpass_hz = *r.number("speed_lowpass_hz");
+    if (!(m.speed_lowpass_hz >= 0.01 && m.speed_lowpass_hz <= 100))
+      throw InputError(r.where("speed_lowpass_hz"), "must lie in [0.01, 100] Hz, got " + formatNumber(m.speed_lowpass_hz));
   }
   if (auto sep = r.string("separator")) {
     if (sep->size() != 1 || *sep == "\"" || *sep == "\n")
@@ -339,6 +374,10 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     for (std::size_t k = 0; k < m.channels.size(); ++k)
       if (!std::isnan(values[k][i])) res.data.records.push_back({1, t[i], m.channels[k].channel, values[k][i]});
   res.lab_csv = labCsvText(res.data, known);  // validates (plausible ranges, ...) with the log's lines lost: name the log
+  if (m.speed_lowpass_hz > 0) {  // zero phase: the input minus its zero-phase high-pass
+    const auto high = zeroPhaseHighPass(t, v, m.speed_lowpass_hz);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = std::max(0.0, v[i] - high[i]);
+  }
   std::string s = "time_s,speed_mps\n";
   s.reserve(t.size() * 24);
   for (std::size_t i = 0; i < t.size(); ++i) s += formatExact(t[i]) + "," + formatExact(v[i]) + "\n";
@@ -355,44 +394,39 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     res.road_csv = std::move(r);
   }
 
-  // The study: the base, paths made absolute, plus the drive and the mapping's sensors.
+  // The study: the base file's text (paths made absolute), then the drive and the mapping's
+  // sensors as new tables at its end.
+  const std::string base_text = readTextFile(base_study);
   toml::table root;
   try {
-    root = toml::parse(readTextFile(base_study), base_study);
+    root = toml::parse(base_text, base_study);
   } catch (const toml::parse_error& e) {
     throw InputError(base_study + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
   }
-  absolutize(root, fs::absolute(base_study).parent_path());
-  toml::table sc;
-  sc.insert("duration_s", res.duration_s);
-  sc.insert("speed", toml::table{{"csv", "speed.csv"}});
-  if (!road_cols.empty()) {
-    toml::table rd{{"type", "csv_time"}, {"path", "road.csv"}};
-    if (road_velocity) rd.insert("highpass_hz", m.highpass_hz);
-    sc.insert("road", std::move(rd));
-  } else {
-    sc.insert("road", toml::table{{"type", "flat"}});
-  }
-  if (!root.contains("scenarios")) root.insert("scenarios", toml::table{});
-  root["scenarios"].as_table()->insert(scenario, std::move(sc));
-  if (!m.sensors.empty()) {
-    if (!root.contains("sensors")) root.insert("sensors", toml::table{});
-    for (const auto& x : m.sensors) {
-      toml::table st{{"body", x.mount}, {"quantity", sensorQuantityName(x.quantity)}};
-      if (x.corner() < 0) st.insert("position_m", toml::array{x.position_m[0], x.position_m[1], x.position_m[2]});
-      if (x.filter.order > 0) {
-        toml::table ft{{"order", x.filter.order}, {"cutoff_hz", x.filter.cutoff_hz}};
-        if (x.filter.order == 2) ft.insert("damping", x.filter.damping);
-        st.insert("filter", std::move(ft));
-      }
-      if (x.noise_sd > 0) st.insert("noise_sd", x.noise_sd);
-      root["sensors"].as_table()->insert(x.name, std::move(st));
-    }
-  }
   std::ostringstream study;
-  study << "# Written by `twin import` from " << log_name << " (mapping " << m.source << ") on the study " << base_study
-        << ";\n# the drive is scenario '" << scenario << "'. Paths are absolute or relative to this file.\n"
-        << root << "\n";
+  study << "# Written by `twin import` from " << log_name << " (mapping " << m.source << "): the study " << base_study
+        << "\n# with its relative paths made absolute, and the drive added at the end as scenario '" << scenario << "'.\n"
+        << absolutizedStudyText(base_text, root, fs::absolute(base_study).parent_path(), base_study) << "\n"
+        << "# ---- added by twin import ----\n[scenarios." << scenario << "]\nduration_s = " << formatExact(res.duration_s)
+        << "\nspeed = { csv = \"speed.csv\" }\n";
+  if (!road_cols.empty()) {
+    study << "road = { type = \"csv_time\", path = \"road.csv\"";
+    if (road_velocity) study << ", highpass_hz = " << formatExact(m.highpass_hz);
+    study << " }\n";
+  } else {
+    study << "road = { type = \"flat\" }  # no road column was mapped\n";
+  }
+  for (const auto& x : m.sensors) {
+    study << "\n[sensors." << x.name << "]\nbody = \"" << x.mount << "\"\nquantity = \"" << sensorQuantityName(x.quantity) << "\"\n";
+    if (x.corner() < 0)
+      study << "position_m = [" << formatExact(x.position_m[0]) << ", " << formatExact(x.position_m[1]) << ", " << formatExact(x.position_m[2]) << "]\n";
+    if (x.filter.order > 0) {
+      study << "filter = { order = " << x.filter.order << ", cutoff_hz = " << formatExact(x.filter.cutoff_hz);
+      if (x.filter.order == 2) study << ", damping = " << formatExact(x.filter.damping);
+      study << " }\n";
+    }
+    if (x.noise_sd > 0) study << "noise_sd = " << formatExact(x.noise_sd) << "\n";
+  }
   res.study_toml = study.str();
 
   nlohmann::json cols = nlohmann::json::array();
@@ -412,7 +446,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
                  {"source", {{"file", log_name}, {"content", hexId(fnv1a64(log_text))}, {"rows", res.rows}, {"t0_s", res.t0_s}}},
                  {"mapping", {{"file", m.source},
                               {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
-                              {"speed", {{"column", m.speed->column}, {"unit", m.speed->unit}}},
+                              {"speed", {{"column", m.speed->column}, {"unit", m.speed->unit}, {"lowpass_hz", m.speed_lowpass_hz}}},
                               {"road", rj},
                               {"channels", cols},
                               {"max_dropout_rows", m.max_dropout_rows}}},

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 #include "common/errors.hpp"
 #include "test_util.hpp"
@@ -95,7 +96,12 @@ TEST(LogImport, ConvertsUnitsAndWritesAStudyThatReadsBack) {
   EXPECT_EQ(sc.road->type(), "csv_time");
   ASSERT_EQ(s.sensors.size(), 1u);
   EXPECT_EQ(s.sensors[0].channel(), "seat_mps2");
-  EXPECT_EQ(s.assemblies().size(), loadStudy(kDemo).assemblies().size());
+  // The base study's text is kept: the same assemblies under the same ids (the subsystems'
+  // order sets them), and its comments.
+  const auto base = loadStudy(kDemo).assemblies(), now = s.assemblies();
+  ASSERT_EQ(now.size(), base.size());
+  for (std::size_t i = 0; i < base.size(); ++i) EXPECT_EQ(now[i].id + " " + now[i].label(), base[i].id + " " + base[i].label());
+  EXPECT_NE(dtwin_test::slurp(dir / "out" / "study.toml").find("# The paper's demonstration study"), std::string::npos);
   const LabData back = readLabCsv((dir / "out" / "measurements.csv").string(), measurableChannels(s.sensors));
   EXPECT_EQ(back.records.size(), 802u);
   const auto side = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "measurements.json"));
@@ -198,4 +204,35 @@ TEST(LogImport, FlagsMapTheLogAndAnExistingFolderIsKept) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("unknown unit 'furlong'"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out3"));
+}
+
+// A GPS speed in 0.1 km/h steps is smoothed by speed_lowpass_hz: zero phase (a ramp passes
+// through unchanged away from the ends), never negative, and the sidecar records it.
+TEST(LogImport, SpeedLowPassSmoothsAQuantisedSpeed) {
+  std::string log = "t,v,defl\n";
+  for (int k = 0; k <= 1000; ++k) {
+    const double v = k < 200 ? 0.0 : 0.02 * (k - 200);  // km/h: rest, then a ramp of 2 km/h/s
+    char line[64];
+    std::snprintf(line, sizeof line, "%d,%.1f,3\n", 10 * k, std::round(v * 10) / 10);
+    log += line;
+  }
+  ImportMapping m;
+  m.source = "test";
+  m.time = {"t", "ms", 0, 1, "time"};
+  m.speed = ImportColumn{"v", "km/h", 0, 1, "speed"};
+  m.channels.push_back({{"defl", "mm", 0, 1, "defl"}, "susp_defl_fl_m"});
+  m.speed_lowpass_hz = 1.0;
+  const ImportResult r = importLog(log, "log.csv", m, kDemo, "drive");
+  std::vector<double> v;
+  std::istringstream in(r.speed_csv);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) v.push_back(std::stod(line.substr(line.find(',') + 1)));
+  ASSERT_EQ(v.size(), 1001u);
+  for (double x : v) EXPECT_GE(x, 0.0);
+  for (int k = 500; k <= 900; k += 50) EXPECT_NEAR(v[static_cast<std::size_t>(k)], 0.02 * (k - 200) / 3.6, 0.01) << k;
+  // The steps of 0.1 km/h (0.028 m/s every 5th sample) are gone: neighbouring samples differ by
+  // about the ramp's 0.0056 m/s per sample.
+  for (int k = 500; k < 900; ++k) EXPECT_LT(std::abs(v[static_cast<std::size_t>(k) + 1] - v[static_cast<std::size_t>(k)]), 0.008) << k;
+  EXPECT_EQ(r.sidecar["mapping"]["speed"]["lowpass_hz"], 1.0);
 }

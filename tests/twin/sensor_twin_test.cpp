@@ -8,6 +8,7 @@
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
 #include "test_util.hpp"
+#include "twin/generate.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
 
@@ -190,4 +191,21 @@ TEST(SensorTwin, MeasurementsMayNameSensorChannels) {
   ASSERT_NE(it, chans.end());
   EXPECT_EQ(it->unit, "m/s^2");
   EXPECT_NE(it->description.find("wheel_rl"), std::string::npos) << it->description;
+}
+
+// Synthetic lab data can be made on a sensor channel (the generator validates against the
+// study's channels, sensors included).
+TEST(SensorTwin, LabDataCanBeGeneratedOnASensorChannel) {
+  const Study s = sensorStudy("sensor_generate");
+  LabOptions o;
+  o.scenario = "diag_rough";
+  o.times_mode = LabTimesMode::All;
+  o.window = std::make_pair(0.5, 1.0);
+  o.rate_hz = 100.0;
+  o.repetitions = 2;
+  o.channels = {"seat_mps2"};
+  const LabResult r = generateLab(s, s.assemblies().front(), o);
+  ASSERT_EQ(r.data.records.size(), 2u * 51u);
+  EXPECT_EQ(r.data.records.front().channel, "seat_mps2");
+  EXPECT_NO_THROW(labCsvText(r.data, measurableChannels(s.sensors)));
 }

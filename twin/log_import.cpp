@@ -218,10 +218,21 @@ ImportMapping readImportMapping(const std::string& path) {
       throw InputError(r.where("separator"), "must be one character (\",\", \";\", \"\\t\"), got \"" + *sep + "\"");
     m.separator = (*sep)[0];
   }
+  m.decimal_comma = r.boolean("decimal_comma").value_or(false);
+  if (auto k = r.integer("header_line")) {
+    if (*k < 1 || *k > 1000) throw InputError(r.where("header_line"), "must lie in [1, 1000], got " + std::to_string(*k));
+    m.header_line = *k;
+  }
+  if (auto k = r.integer("skip_rows")) {
+    if (*k < 0 || *k > 1000) throw InputError(r.where("skip_rows"), "must lie in [0, 1000], got " + std::to_string(*k));
+    m.skip_rows = *k;
+  }
   if (auto k = r.integer("max_dropout_rows")) {
     if (*k < 0 || *k > 1000000) throw InputError(r.where("max_dropout_rows"), "must lie in [0, 1e6], got " + std::to_string(*k));
     m.max_dropout_rows = *k;
   }
+  if (m.decimal_comma && m.separator == ',')
+    throw InputError(r.where("decimal_comma"), "needs a separator other than ',' (e.g. separator = \";\")");
   const toml::array* chans = r.array("channels");
   if (!chans || chans->empty()) throw InputError(r.where("channels"), "needs at least one [[import.channels]] (column, channel, unit)");
   for (std::size_t i = 0; i < chans->size(); ++i) {
@@ -300,13 +311,25 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   }
 
   CsvReader csv(log_text, log_name, m.separator);
-  if (!csv.next()) throw InputError(log_name + ":1", "empty file; expected a header row of column names");
+  bool any = csv.next();
+  while (any && csv.line() < m.header_line) any = csv.next();  // a logger's preamble
+  if (!any) throw InputError(log_name + ":" + std::to_string(m.header_line), "no header row of column names at or after this line (header_line)");
   std::vector<std::string> header;
   for (auto f : csv.fields()) header.emplace_back(f);
   const std::size_t i_time = columnIndex(header, m.time, log_name), i_speed = columnIndex(header, *m.speed, log_name);
   std::vector<std::size_t> i_road, i_ch;
   for (const auto* c : road_cols) i_road.push_back(columnIndex(header, *c, log_name));
   for (const auto& c : m.channels) i_ch.push_back(columnIndex(header, c.source, log_name));
+  for (long k = 0; k < m.skip_rows; ++k)
+    if (!csv.next()) break;  // a row of units, say
+  // A number as the log writes it (1,25 with decimal_comma).
+  std::string buffer;
+  auto parse = [&](std::string_view f, double& x) {
+    if (!m.decimal_comma) return parseNumber(f, x);
+    buffer.assign(f);
+    std::replace(buffer.begin(), buffer.end(), ',', '.');
+    return parseNumber(buffer, x);
+  };
 
   std::vector<double> t, v;
   std::vector<std::vector<double>> road(road_cols.size());
@@ -319,7 +342,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   auto number = [&](std::size_t col) {
     double x = 0;
     const auto f = csv.fields()[col];
-    if (!parseNumber(f, x)) throw cellError(col, isMissing(f) ? "is empty or NaN (a required column has no gaps)" : "'" + std::string(f) + "' is not a number");
+    if (!parse(f, x)) throw cellError(col, isMissing(f) ? "is empty or NaN (a required column has no gaps)" : "'" + std::string(f) + "' is not a number");
     if (!std::isfinite(x)) throw cellError(col, "'" + std::string(f) + "' is not a finite number");
     return x;
   };
@@ -345,7 +368,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     for (std::size_t k = 0; k < m.channels.size(); ++k) {
       const auto cell = f[i_ch[k]];
       double x = 0;
-      if (isMissing(cell) || (parseNumber(cell, x) && std::isnan(x))) {
+      if (isMissing(cell) || (parse(cell, x) && std::isnan(x))) {
         if (run[k]++ == 0) run_start[k] = csv.line();
         if (run[k] > m.max_dropout_rows)
           throw cellError(i_ch[k], "empty or NaN from line " + std::to_string(run_start[k]) + " on: more than max_dropout_rows = " +
@@ -354,7 +377,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
         ++res.dropped_cells;
         continue;
       }
-      if (!parseNumber(cell, x)) throw cellError(i_ch[k], "'" + std::string(cell) + "' is not a number");
+      if (!parse(cell, x)) throw cellError(i_ch[k], "'" + std::string(cell) + "' is not a number");
       if (!std::isfinite(x)) throw cellError(i_ch[k], "'" + std::string(cell) + "' is not a finite number");
       run[k] = 0;
       values[k].push_back((x - m.channels[k].source.offset) * m.channels[k].source.scale * ch_factor[k]);
@@ -449,7 +472,10 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
                               {"speed", {{"column", m.speed->column}, {"unit", m.speed->unit}, {"lowpass_hz", m.speed_lowpass_hz}}},
                               {"road", rj},
                               {"channels", cols},
-                              {"max_dropout_rows", m.max_dropout_rows}}},
+                              {"max_dropout_rows", m.max_dropout_rows},
+                              {"header_line", m.header_line},
+                              {"skip_rows", m.skip_rows},
+                              {"decimal_comma", m.decimal_comma}}},
                  {"dropped_cells", res.dropped_cells},
                  {"records", res.data.records.size()},
                  {"study", base_study}};

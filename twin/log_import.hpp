@@ -42,6 +42,9 @@ struct ImportMapping {
   std::vector<ImportChannel> channels;    ///< at least one
   std::vector<SensorSpec> sensors;        ///< sensors the channels may name, added to the study
   char separator = ',';
+  bool decimal_comma = false;             ///< numbers written 1,25 (then the separator may not be ',')
+  long header_line = 1;                   ///< the line holding the column names (a logger's preamble comes before)
+  long skip_rows = 0;                     ///< rows after the header that are not data (e.g. a row of units)
   long max_dropout_rows = 5;              ///< longest run of empty/NaN cells a channel may have (skipped)
   std::string source;                     ///< the mapping file, or "command line"
 };

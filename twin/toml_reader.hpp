@@ -65,6 +65,13 @@ class TableReader {
     if (auto v = n->value<std::string>()) return *v;
     throw InputError(where(key), "must be a string");
   }
+  std::optional<bool> boolean(const std::string& key) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) return std::nullopt;
+    if (auto v = n->value_exact<bool>()) return *v;
+    throw InputError(where(key), "must be true or false");
+  }
   std::optional<long> integer(const std::string& key) {
     used_.insert(key);
     const toml::node* n = t_.get(key);

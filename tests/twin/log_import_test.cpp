@@ -236,3 +236,43 @@ TEST(LogImport, SpeedLowPassSmoothsAQuantisedSpeed) {
   for (int k = 500; k < 900; ++k) EXPECT_LT(std::abs(v[static_cast<std::size_t>(k) + 1] - v[static_cast<std::size_t>(k)]), 0.008) << k;
   EXPECT_EQ(r.sidecar["mapping"]["speed"]["lowpass_hz"], 1.0);
 }
+
+// A log as some loggers write it: a preamble before the header, a row of units after it,
+// semicolons between fields and decimal commas.
+TEST(LogImport, PreambleUnitsRowSemicolonsAndDecimalCommas) {
+  const fs::path dir = dtwin_test::freshDir("import_european");
+  std::string log = "Logger;XY-200\nDate;2026-11-26\n\nZeit;Geschw;Beschl\ns;km/h;g\n";
+  for (int k = 0; k <= 200; ++k) log += std::to_string(k / 100) + "," + (k % 100 < 10 ? "0" : "") + std::to_string(k % 100) + ";36,0;1,0" + std::to_string(k % 10) + "\n";
+  dtwin_test::writeText(dir / "log.csv", log);
+  dtwin_test::writeText(dir / "map.toml", R"([import]
+time = "Zeit"
+speed = { column = "Geschw", unit = "km/h" }
+separator = ";"
+decimal_comma = true
+header_line = 4
+skip_rows = 1
+
+[[import.channels]]
+column = "Beschl"
+channel = "chassis_heave_acc_mps2"
+unit = "g"
+offset = 1.0
+)");
+  const ImportMapping m = readImportMapping((dir / "map.toml").string());
+  const ImportResult r = importLog(dtwin_test::slurp(dir / "log.csv"), "log.csv", m, kDemo, "drive");
+  EXPECT_EQ(r.rows, 201);
+  EXPECT_DOUBLE_EQ(r.duration_s, 2.0);
+  EXPECT_NEAR(r.data.records[3].value, 0.03 * 9.80665, 1e-12);
+  EXPECT_DOUBLE_EQ(r.data.records[3].time_s, 0.03);
+  EXPECT_NE(r.speed_csv.find("\n0.03,10\n"), std::string::npos);
+  // A comma separator with decimal commas is refused at the field.
+  std::string bad = dtwin_test::slurp(dir / "map.toml");
+  bad.replace(bad.find("separator = \";\"\n"), 16, "");
+  dtwin_test::writeText(dir / "bad.toml", bad);
+  try {
+    readImportMapping((dir / "bad.toml").string());
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("import.decimal_comma: needs a separator other than ','"), std::string::npos) << e.what();
+  }
+}

@@ -2,6 +2,7 @@
 // (twin/log_import.hpp, docs/measurements.md).
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "cli/commands.hpp"
@@ -60,6 +61,11 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
   if (cfg.map.empty() && !flags) throw InputError("--map", "is required (or the flags --time, --speed, --channel)");
   const ImportMapping mapping = cfg.map.empty() ? mappingFromFlags(cfg) : readImportMapping(cfg.map);
   const auto t0 = std::chrono::steady_clock::now();
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(cfg.log, ec);
+  if (!ec && bytes > 4000000000ULL)
+    throw InputError(cfg.log, "is " + formatNumber(static_cast<double>(bytes) / 1e9, 3) +
+                                  " GB; twin import holds a log in memory, at most 4 GB: split it into drives");
   const std::string text = readTextFile(cfg.log, " (a logger's CSV)");
   ProgressBar bar("import " + cfg.log, !cfg.quiet && stderrIsTerminal());
   ImportResult r = importLog(text, cfg.log, mapping, cfg.study, cfg.scenario,

@@ -241,8 +241,12 @@ struct Diagnosis {
 /// The off values of the diagnosed (non-shape) parameters of `effects`, in order.
 std::vector<double> offValues(const std::vector<std::string>& effects) {
   std::vector<double> v;
-  for (const auto& e : effects)
-    for (const auto* p : diagnosedParameters(*makeEffect(e, "effect"))) v.push_back(p->default_value);
+  for (const auto& e : effects) {
+    // The effect must outlive the loop: diagnosedParameters points into it (a temporary in the
+    // range expression died before the loop body; AddressSanitizer found it).
+    const auto effect = makeEffect(e, "effect");
+    for (const auto* p : diagnosedParameters(*effect)) v.push_back(p->default_value);
+  }
   return v;
 }
 

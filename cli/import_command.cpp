@@ -39,9 +39,16 @@ ImportMapping mappingFromFlags(const ImportConfig& cfg) {
     m.road_left = parseImportColumn(cfg.road_left, "--road-left");
     m.road_right = parseImportColumn(cfg.road_right, "--road-right");
   }
-  if (cfg.highpass_hz > 0) m.highpass_hz = cfg.highpass_hz;
+  if (cfg.highpass_hz > 0) {
+    m.highpass_hz = cfg.highpass_hz;
+    m.highpass_given = true;
+  }
   m.speed_lowpass_hz = cfg.speed_lowpass_hz;
-  if (!cfg.separator.empty()) m.separator = cfg.separator == "tab" ? '\t' : cfg.separator[0];
+  if (!cfg.separator.empty()) {
+    if (cfg.separator != "tab" && (cfg.separator.size() != 1 || cfg.separator == "\""))
+      throw InputError("--separator", "must be one character or 'tab', got '" + cfg.separator + "'");
+    m.separator = cfg.separator == "tab" ? '\t' : cfg.separator[0];
+  }
   if (cfg.channels.empty()) throw InputError("--channel", "is required without --map (COLUMN:CHANNEL:UNIT, repeatable)");
   for (const auto& text : cfg.channels) {
     const auto a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);

@@ -204,6 +204,7 @@ ImportMapping readImportMapping(const std::string& path) {
     m.road_right = readColumn(r, "road_right", "");
   }
   if (r.has("highpass_hz")) {
+    m.highpass_given = true;
     m.highpass_hz = *r.number("highpass_hz");
     if (!(m.highpass_hz >= 1e-3 && m.highpass_hz <= 10))
       throw InputError(r.where("highpass_hz"), "must lie in [1e-3, 10] Hz, got " + formatNumber(m.highpass_hz));
@@ -300,6 +301,9 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
       throw InputError(c->where, "both tracks must be heights (m, mm) or both road velocities (m/s, mm/s)");
     road_velocity = velocity;
   }
+  if (m.highpass_given && !road_velocity)
+    throw InputError(m.source == "command line" ? std::string("--highpass-hz") : m.source + ": import.highpass_hz", "applies to a road velocity (m/s, mm/s) only; the road here is " +
+                                                          (road_cols.empty() ? std::string("not mapped") : "a height"));
   std::vector<double> ch_factor;
   for (const auto& c : m.channels) {
     const std::string rule = checkChannelName(c.channel, known);

@@ -36,6 +36,7 @@ struct ImportMapping {
   /// unit m or mm (height) or m/s or mm/s (vertical road velocity). None: a flat road.
   std::optional<ImportColumn> road, road_left, road_right;
   double highpass_hz = 0.1;               ///< drift removal of a road velocity (docs/measurements.md)
+  bool highpass_given = false;            ///< set explicitly: then the road must be a velocity
   /// > 0: the speed is smoothed by a zero-phase low-pass at this cut-off before it becomes the
   /// trace (a GPS speed in 0.1 km/h steps otherwise gives the model acceleration spikes).
   double speed_lowpass_hz = 0.0;

@@ -204,6 +204,15 @@ TEST(LogImport, FlagsMapTheLogAndAnExistingFolderIsKept) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("unknown unit 'furlong'"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out3"));
+  // A drift filter for a road that is a height, and a separator of two characters: refused.
+  r = twin(base + " --highpass-hz 0.2 --out " + (dir / "out4").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--highpass-hz: applies to a road velocity"), std::string::npos) << r.err;
+  r = twin(base + " --separator ';;' --out " + (dir / "out5").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--separator: must be one character"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out4"));
+  EXPECT_FALSE(fs::exists(dir / "out5"));
 }
 
 // A GPS speed in 0.1 km/h steps is smoothed by speed_lowpass_hz: zero phase (a ramp passes

@@ -70,7 +70,7 @@ void readStudyTable(TableReader& top, Study& s) {
     }
     auto v = r.string("vehicle");
     if (!v) throw InputError(r.where("vehicle"), "is required (path to a vehicle data file)");
-    s.vehicle_path = fs::path(*v).is_absolute() ? *v : (fs::path(path).parent_path() / *v).lexically_normal().string();
+    s.vehicle_path = r.resolvePath(*v);
     r.finish();
   } else {
     throw InputError(path, "missing [study] table");
@@ -193,7 +193,7 @@ void readSpeedTrace(TableReader& rs, const std::string& csv, ScenarioSpec& sc) {
   namespace fs = std::filesystem;
   for (const char* f : {"v_final_mps", "ramp_s"})
     if (rs.has(f)) throw InputError(rs.where(f), "give either csv (a measured speed trace) or v_final_mps and ramp_s, not both");
-  const std::string file = fs::path(csv).is_absolute() ? csv : (fs::path(rs.file()).parent_path() / csv).lexically_normal().string();
+  const std::string file = rs.resolvePath(csv);
   auto trace = std::make_shared<const SpeedTrace>(readSpeedTraceCsv(file));
   if (trace->startTime() > 0 || trace->endTime() < sc.duration_s)
     throw InputError(rs.where("csv"), "the speed trace " + file + " covers " + formatNumber(trace->startTime()) + ".." +

@@ -4,6 +4,7 @@
 // Errors name the file, the line and the dotted field (InputError). Internal to twin/.
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <set>
 #include <string>
@@ -31,6 +32,11 @@ class TableReader {
   }
   std::string field(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
   bool has(const std::string& key) const { return t_.contains(key); }
+  /// A path as the file gives it, resolved against the file's folder unless absolute.
+  std::string resolvePath(const std::string& p) const {
+    namespace fs = std::filesystem;
+    return fs::path(p).is_absolute() ? p : (fs::path(file_).parent_path() / p).lexically_normal().string();
+  }
   /// True when `key` holds a table (an inline { ... } or a [section]).
   bool isTable(const std::string& key) const {
     const toml::node* n = t_.get(key);

@@ -12,8 +12,7 @@ std::shared_ptr<const RoadSetting> CsvRoadSetting::parse(TableReader& rr) {
   auto rs = std::make_shared<CsvRoadSetting>();
   auto p = rr.string("path");
   if (!p) throw InputError(rr.where("path"), "is required for a csv road");
-  namespace fs = std::filesystem;
-  rs->path = fs::path(*p).is_absolute() ? *p : (fs::path(rr.file()).parent_path() / *p).lexically_normal().string();
+  rs->path = rr.resolvePath(*p);
   return rs;
 }
 

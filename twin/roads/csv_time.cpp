@@ -15,8 +15,7 @@ std::shared_ptr<const RoadSetting> CsvTimeRoadSetting::parse(TableReader& rr) {
   auto rs = std::make_shared<CsvTimeRoadSetting>();
   auto p = rr.string("path");
   if (!p) throw InputError(rr.where("path"), "is required for a csv_time road");
-  namespace fs = std::filesystem;
-  rs->path = fs::path(*p).is_absolute() ? *p : (fs::path(rr.file()).parent_path() / *p).lexically_normal().string();
+  rs->path = rr.resolvePath(*p);
   rs->dx_m = rr.number("dx_m", rs->dx_m);
   if (!(rs->dx_m >= 1e-3 && rs->dx_m <= 1.0)) throw InputError(rr.where("dx_m"), "must lie in [1e-3, 1] m, got " + formatNumber(rs->dx_m));
   rs->log = std::make_shared<const TimeRoadLog>(readTimeRoadCsv(rs->path));

@@ -66,7 +66,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   opt.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
   const std::string data_hash = std::to_string(calib::fnv1a64(readFileBytes(cfg.data)));
 
-  const bool bar_on = !cfg.quiet && stderrIsTerminal();
+  const bool bar_on = progressOn(cfg.quiet);
   if (!cfg.quiet) {
     const std::string rounds = opt.design.adaptive ? " + up to " + std::to_string(opt.design.max_rounds) + " adaptive rounds of " +
                                                          std::to_string(opt.designOptions().round_points)
@@ -82,7 +82,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   index["study"] = study.path;
   index["data"] = cfg.data;
   for (const auto& a : targets) {
-    ProgressBar bar(a.id, bar_on);
+    ProgressBar bar(a.id, bar_on, stderrIsTerminal());
     std::string current;
     auto progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
       if (stage != current) {

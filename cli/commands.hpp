@@ -45,6 +45,8 @@ void overrideSize(Study& study, const std::string& field, long value, const std:
 void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat = 1);
 /// True when stderr is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
+/// Progress is shown unless --quiet, and only by the root rank under MPI (cli/progress.hpp).
+bool progressOn(bool quiet);
 /// True on the rank that prints and writes (always, without MPI).
 bool isRootRank();
 

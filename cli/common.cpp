@@ -69,6 +69,8 @@ bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
 
 bool isRootRank() { return Distributed::instance().isRoot(); }
 
+bool progressOn(bool quiet) { return !quiet && isRootRank(); }
+
 }  // namespace dtwin::cli
 
 namespace dtwin::cli {

@@ -62,8 +62,8 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
     std::printf("coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n", n_asm, n_asm == 1 ? "y" : "ies",
                 cfg.seeds, cfg.first_seed, cfg.first_seed + cfg.seeds - 1, o.calibration.region.c_str(),
                 o.calibration.design.adaptive ? "adaptive" : "lhs", cfg.out.c_str());
-  const bool bar_on = !cfg.quiet && stderrIsTerminal();
-  ProgressBar bar("coverage", bar_on);
+  const bool bar_on = progressOn(cfg.quiet);
+  ProgressBar bar("coverage", bar_on, stderrIsTerminal());
   std::string current;
   const calib::CoverageResult r = calib::runCoverage(
       study, o, [&](const std::string& a, std::uint64_t seed, int index, int count, const std::string& stage, std::size_t done, std::size_t total) {
@@ -71,7 +71,7 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
         if (label != current) {
           current = label;
           bar.restart(label);
-          if (!bar_on && !cfg.quiet && stage == "lab data") std::printf("  %s\n", label.c_str()), std::fflush(stdout);
+          if (!stderrIsTerminal() && !cfg.quiet && stage == "lab data") std::printf("  %s\n", label.c_str()), std::fflush(stdout);
         }
         bar.update(done, total);
       });

@@ -147,7 +147,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   o.validate();
   checkWork(diag::estimateDiagnoseWork(study, assembly, fit, hold, o), "--data", cfg.force);
   const std::string out = cfg.out.empty() ? (fs::temp_directory_path() / ("twin-diagnose-" + std::to_string(::getpid()))).string() : cfg.out;
-  const bool bar_on = !cfg.quiet && stderrIsTerminal();
+  const bool bar_on = progressOn(cfg.quiet);
   if (!cfg.quiet) {
     std::size_t records = 0;
     for (const auto& s : fit) records += s.data.records.size();
@@ -155,7 +155,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
                 assembly.label().c_str(), fit.size(), fit.size() == 1 ? "" : "s", records,
                 hold.empty() ? "" : (", " + std::to_string(hold.size()) + " held out").c_str(), (fs::path(out) / "calibrations").string().c_str());
   }
-  ProgressBar bar("diagnose", bar_on);
+  ProgressBar bar("diagnose", bar_on, stderrIsTerminal());
   std::string current;
   const auto r = diag::diagnose(study, assembly, fit, hold, o, out, [&](const std::string& stage, std::size_t d, std::size_t t) {
     if (stage != current) {

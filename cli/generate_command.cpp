@@ -94,7 +94,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   opt.command = command;
   LabResult r;
   {
-    ProgressBar bar("generate lab", !cfg.quiet && stderrIsTerminal());
+    ProgressBar bar("generate lab", progressOn(cfg.quiet), stderrIsTerminal());
     r = generateLab(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
   rootWrites([&] {
@@ -143,7 +143,7 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
   opt.command = command;
   FieldResult r;
   {
-    ProgressBar bar("generate field", !cfg.quiet && stderrIsTerminal());
+    ProgressBar bar("generate field", progressOn(cfg.quiet), stderrIsTerminal());
     r = generateField(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
   rootWrites([&] {

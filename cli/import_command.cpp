@@ -74,7 +74,7 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
     throw InputError(cfg.log, "is " + formatNumber(static_cast<double>(bytes) / 1e9, 3) +
                                   " GB; twin import holds a log in memory, at most 4 GB: split it into drives");
   const std::string text = readTextFile(cfg.log, " (a logger's CSV)");
-  ProgressBar bar("import " + cfg.log, !cfg.quiet && stderrIsTerminal());
+  ProgressBar bar("import " + cfg.log, progressOn(cfg.quiet), stderrIsTerminal());
   ImportResult r = importLog(text, cfg.log, mapping, cfg.study, cfg.scenario,
                              [&bar](const std::string&, std::size_t done, std::size_t total) { bar.update(done, total); });
   r.sidecar["command"] = command;

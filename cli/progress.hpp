@@ -1,7 +1,8 @@
 #pragma once
-// A progress bar with an ETA on stderr, drawn only when stderr is a terminal (quiet in CI, in
-// pipes and with --quiet). Thread-safe: workers call update() as tasks finish; redraws are
-// limited to ten per second.
+// Progress with an ETA on stderr. On a terminal it is a bar redrawn at most ten times a second.
+// Elsewhere (a batch job's log, a pipe) it is a plain line at most every 30 s, so
+// a run shorter than that prints nothing and a long one is never silent. --quiet turns both off.
+// Thread-safe: workers call update() as tasks finish.
 #include <chrono>
 #include <cstdio>
 #include <mutex>
@@ -11,7 +12,16 @@ namespace dtwin::cli {
 
 class ProgressBar {
  public:
-  ProgressBar(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
+  enum class Mode { Off, Bar, Lines };
+
+  /// `enabled` false: nothing; true: a bar on a terminal, else lines (see the header note).
+  /// `line_every` and `out` are for tests.
+  ProgressBar(std::string label, bool enabled, bool terminal,
+              std::chrono::milliseconds line_every = std::chrono::seconds(30), std::FILE* out = stderr)
+      : label_(std::move(label)),
+        mode_(!enabled ? Mode::Off : terminal ? Mode::Bar : Mode::Lines),
+        line_every_(line_every),
+        out_(out) {}
   ~ProgressBar() { finish(); }
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
@@ -23,16 +33,31 @@ class ProgressBar {
     label_ = std::move(label);
     start_ = Clock::now();
     last_ = {};
+    last_line_ = start_;
+    lines_in_stage_ = 0;
     first_done_ = npos;
   }
 
   void update(std::size_t done, std::size_t total) {
-    if (!enabled_) return;
+    if (mode_ == Mode::Off) return;
     std::lock_guard<std::mutex> lock(m_);
     const auto now = Clock::now();
     if (first_done_ == npos) {
       first_done_ = done;  // resumed work does not count towards the rate
       start_ = now;
+    }
+    if (mode_ == Mode::Lines) {
+      // A line when the interval has passed, and a closing line for a stage that printed one.
+      const bool due = now - last_line_ >= line_every_;
+      const bool closing = done >= total && lines_in_stage_ > 0;
+      if (!due && !closing) return;
+      if (closing) lines_in_stage_ = 0; else ++lines_in_stage_;
+      last_line_ = now;
+      std::fprintf(out_, "%s: %zu/%zu %.0f%% %s\n", label_.c_str(), done, total,
+                   100 * (total ? static_cast<double>(done) / static_cast<double>(total) : 1.0),
+                   eta(now, done, total).c_str());
+      std::fflush(out_);
+      return;
     }
     if (done < total && now - last_ < std::chrono::milliseconds(100)) return;
     last_ = now;
@@ -40,18 +65,9 @@ class ProgressBar {
     const int width = 30, fill = static_cast<int>(frac * width + 0.5);
     std::string bar(static_cast<std::size_t>(fill), '#');
     bar.resize(width, '.');
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const std::size_t fresh = done > first_done_ ? done - first_done_ : 0;
-    char eta[32] = "--";
-    if (fresh > 0 && done < total) {
-      const double rest = elapsed / static_cast<double>(fresh) * static_cast<double>(total - done);
-      std::snprintf(eta, sizeof eta, "%dm%02ds", static_cast<int>(rest) / 60, static_cast<int>(rest) % 60);
-    } else if (done >= total) {
-      std::snprintf(eta, sizeof eta, "done in %.1fs", elapsed);
-    }
-    std::fprintf(stderr, "\r%-22s [%s] %zu/%zu %3.0f%% ETA %s   ", label_.c_str(), bar.c_str(), done, total, 100 * frac,
-                 eta);
-    std::fflush(stderr);
+    std::fprintf(out_, "\r%-22s [%s] %zu/%zu %3.0f%% ETA %s   ", label_.c_str(), bar.c_str(), done, total, 100 * frac,
+                 eta(now, done, total).c_str());
+    std::fflush(out_);
     drawn_ = true;
   }
 
@@ -63,12 +79,30 @@ class ProgressBar {
  private:
   using Clock = std::chrono::steady_clock;
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+  std::string eta(Clock::time_point now, std::size_t done, std::size_t total) const {
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const std::size_t fresh = done > first_done_ ? done - first_done_ : 0;
+    char text[48] = "ETA --";
+    if (fresh > 0 && done < total) {
+      const double rest = elapsed / static_cast<double>(fresh) * static_cast<double>(total - done);
+      std::snprintf(text, sizeof text, "ETA %dm%02ds", static_cast<int>(rest) / 60, static_cast<int>(rest) % 60);
+    } else if (done >= total) {
+      std::snprintf(text, sizeof text, "done in %.1fs", elapsed);
+    }
+    return text;
+  }
+
   void endLine() {
-    if (drawn_) std::fprintf(stderr, "\n");
+    if (drawn_) std::fprintf(out_, "\n");
     drawn_ = false;
   }
   std::string label_;
-  bool enabled_;
+  Mode mode_;
+  std::chrono::milliseconds line_every_;
+  std::FILE* out_;
+  int lines_in_stage_ = 0;
+  Clock::time_point last_line_ = Clock::now();
   bool drawn_ = false;
   std::mutex m_;
   Clock::time_point start_ = Clock::now(), last_{};

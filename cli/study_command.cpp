@@ -28,7 +28,7 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
   o.lab_file = cfg.lab;
   o.field_file = cfg.field;
   o.command = command;
-  ProgressBar bar("study", !cfg.quiet && stderrIsTerminal());
+  ProgressBar bar("study", progressOn(cfg.quiet), stderrIsTerminal());
   std::string current;
   auto progress = [&](const std::string& stage, std::size_t d, std::size_t t) {
     if (stage != current) {

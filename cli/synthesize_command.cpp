@@ -69,7 +69,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   opt.track_fourth_moment = !cfg.no_fourth;
   opt.command = command;
 
-  const bool bar_on = !cfg.quiet && stderrIsTerminal();
+  const bool bar_on = progressOn(cfg.quiet);
   nlohmann::json index;
   index["program"] = programInfo();
   index["command"] = command;
@@ -81,7 +81,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
     const std::string dir = (fs::path(cfg.out) / a.id).string();
     classify::SynthesisResult r;
     {
-      ProgressBar bar(a.id + " synthesize", bar_on);
+      ProgressBar bar(a.id + " synthesize", bar_on, stderrIsTerminal());
       r = classify::synthesizeAssembly(study, a, posteriors[i], opt, dir,
                                        [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     }

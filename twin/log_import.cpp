@@ -34,11 +34,14 @@ struct Unit {
 };
 // Every unit a log may give, with the SI unit it converts to.
 const Unit kUnits[] = {
-    {"s", "s", 1.0},           {"ms", "s", 1e-3},
+    {"s", "s", 1.0},           {"ms", "s", 1e-3},          {"us", "s", 1e-6},         {"ns", "s", 1e-9},
+    {"clock", "s", 1.0},  // HH:MM:SS[.fff], optionally after a date (parseClockTime)
     {"m/s", "m/s", 1.0},       {"mps", "m/s", 1.0},        {"km/h", "m/s", 1.0 / 3.6}, {"kmh", "m/s", 1.0 / 3.6},
-    {"mph", "m/s", 0.44704},   {"mm/s", "m/s", 1e-3},
-    {"m", "m", 1.0},           {"mm", "m", 1e-3},          {"cm", "m", 1e-2},
+    {"kph", "m/s", 1.0 / 3.6}, {"mph", "m/s", 0.44704},    {"kn", "m/s", 1852.0 / 3600.0}, {"ft/s", "m/s", 0.3048},
+    {"mm/s", "m/s", 1e-3},
+    {"m", "m", 1.0},           {"mm", "m", 1e-3},          {"cm", "m", 1e-2},         {"in", "m", 0.0254},
     {"m/s^2", "m/s^2", 1.0},   {"m/s2", "m/s^2", 1.0},     {"mps2", "m/s^2", 1.0},    {"g", "m/s^2", 9.80665},
+    {"ft/s^2", "m/s^2", 0.3048},
     {"N", "N", 1.0},           {"kN", "N", 1e3},
     {"rad", "rad", 1.0},       {"deg", "rad", 3.14159265358979323846 / 180.0},
     {"rad/s^2", "rad/s^2", 1.0}, {"deg/s^2", "rad/s^2", 3.14159265358979323846 / 180.0},
@@ -146,6 +149,84 @@ std::string absolutizedStudyText(const std::string& text, const toml::table& roo
 }
 
 }  // namespace
+
+namespace {
+
+/// Days from 1970-01-01 to y-m-d, proleptic Gregorian (H. Hinnant's days_from_civil).
+long daysFromCivil(long y, unsigned m, unsigned d) {
+  y -= m <= 2;
+  const long era = (y >= 0 ? y : y - 399) / 400;
+  const auto yoe = static_cast<unsigned>(y - era * 400);
+  const unsigned doy = (153 * (m > 2 ? m - 3 : m + 9) + 2) / 5 + d - 1;
+  const unsigned doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+  return era * 146097 + static_cast<long>(doe) - 719468;
+}
+
+unsigned daysInMonth(long y, unsigned m) {
+  static const unsigned k[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+  return m == 2 && leap ? 29 : k[m - 1];
+}
+
+}  // namespace
+
+bool parseClockTime(std::string_view text, ClockTime& out) {
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  std::size_t i = 0;
+  // Exactly `n` digits (n > 0) or, with n == 0, one or two.
+  auto digits = [&](int n, long& v) {
+    const std::size_t begin = i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && (n == 0 ? i - begin < 2 : static_cast<int>(i - begin) < n))
+      ++i;
+    const std::size_t len = i - begin;
+    if (len == 0 || (n > 0 && static_cast<int>(len) != n)) return false;
+    v = std::stol(std::string(text.substr(begin, len)));
+    return true;
+  };
+  auto take = [&](char c) {
+    if (i < text.size() && text[i] == c) return ++i, true;
+    return false;
+  };
+  ClockTime r;
+  long y = 0, mo = 0, d = 0;
+  if (text.size() >= 10 && (text[4] == '-' || text[4] == '/')) {
+    const char sep = text[4];
+    if (!digits(4, y) || !take(sep) || !digits(2, mo) || !take(sep) || !digits(2, d)) return false;
+    if (mo < 1 || mo > 12 || d < 1 || d > static_cast<long>(daysInMonth(y, static_cast<unsigned>(mo)))) return false;
+    if (!take('T') && !take(' ')) return false;
+    r.has_date = true;
+    r.day = daysFromCivil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d));
+  }
+  long h = 0, mi = 0, sec = 0;
+  if (!digits(0, h) || !take(':') || !digits(2, mi) || !take(':') || !digits(2, sec)) return false;
+  if (h > 23 || mi > 59 || sec > 60) return false;  // 60: a leap second
+  double frac = 0.0;
+  if (i < text.size() && (text[i] == '.' || text[i] == ',')) {
+    ++i;
+    double scale = 0.1;
+    const std::size_t begin = i;
+    for (; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i, scale *= 0.1) frac += (text[i] - '0') * scale;
+    if (i == begin) return false;
+  }
+  double offset_s = 0.0;
+  if (take('Z')) {
+  } else if (i < text.size() && (text[i] == '+' || text[i] == '-')) {
+    const double sign = text[i++] == '+' ? 1.0 : -1.0;
+    long oh = 0, om = 0;
+    if (!digits(2, oh)) return false;
+    take(':');
+    if (!digits(2, om) || oh > 23 || om > 59) return false;
+    offset_s = sign * static_cast<double>(oh * 3600 + om * 60);
+  }
+  if (i != text.size()) return false;
+  double s = static_cast<double>(h * 3600 + mi * 60 + sec) + frac - offset_s;  // UTC
+  const double day_shift = std::floor(s / 86400.0);
+  r.day += static_cast<long>(day_shift);
+  r.seconds = s - day_shift * 86400.0;
+  out = r;
+  return true;
+}
 
 double unitFactor(const std::string& unit, const std::string& si, const std::string& where) {
   for (const auto& u : kUnits)
@@ -350,16 +431,38 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     if (!std::isfinite(x)) throw cellError(col, "'" + std::string(f) + "' is not a finite number");
     return x;
   };
+  // Clock times (unit "clock") count from the first row's day. Without a date, a time that falls
+  // back by more than 12 hours is the next day (a drive past midnight).
+  const bool clock = m.time.unit == "clock";
+  long day0 = 0, day = 0;
+  bool first_clock = true;
+  std::string previous_time;
+  double previous_seconds = 0.0;
+  auto clockSeconds = [&](std::string_view cell) {
+    ClockTime c;
+    if (!parseClockTime(cell, c))
+      throw cellError(i_time, "'" + std::string(cell) + "' is not a clock time (HH:MM:SS[.fff], optionally after a date YYYY-MM-DD and 'T' or a space)");
+    if (first_clock) {
+      day0 = c.day;
+      first_clock = false;
+    } else if (!c.has_date && c.seconds < previous_seconds - 43200.0) {
+      ++day;
+    }
+    if (c.has_date) day = c.day - day0;
+    previous_seconds = c.seconds;
+    return static_cast<double>(day) * 86400.0 + c.seconds;
+  };
   while (csv.next()) {
     const auto& f = csv.fields();
     if (f.size() != header.size())
       throw InputError(csv.where(), "expected " + std::to_string(header.size()) + " columns (as the header), got " + std::to_string(f.size()));
-    const double ti = number(i_time) * t_factor;
+    const double ti = clock ? clockSeconds(f[i_time]) : number(i_time) * t_factor;
     if (!t.empty() && ti == t.back())
       throw cellError(i_time, "time " + std::string(f[i_time]) + " repeats the row before (line " + std::to_string(lines.back()) + ")");
     if (!t.empty() && ti < t.back())
-      throw cellError(i_time, "time goes backwards: " + std::string(f[i_time]) + " after " + formatNumber(t.back() / t_factor, 12) +
-                                  " (line " + std::to_string(lines.back()) + ")");
+      throw cellError(i_time, "time goes backwards: " + std::string(f[i_time]) + " after " +
+                                  (clock ? previous_time : formatNumber(t.back() / t_factor, 12)) + " (line " + std::to_string(lines.back()) + ")");
+    if (clock) previous_time.assign(f[i_time]);
     double vi = (number(i_speed) - m.speed->offset) * m.speed->scale * v_factor;
     if (vi < 0 && vi >= -0.2) vi = 0.0;  // a logger's noise about standstill
     if (vi < 0) throw cellError(i_speed, "speed " + std::string(f[i_speed]) + " " + m.speed->unit + " is negative (beyond the 0.2 m/s of noise at rest)");

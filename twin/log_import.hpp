@@ -62,9 +62,21 @@ ImportColumn parseImportColumn(const std::string& text, const std::string& flag,
 /// does not fit (g for a channel in m).
 double unitFactor(const std::string& unit, const std::string& si, const std::string& where);
 
+/// A time of day as loggers write it: `HH:MM:SS[.fff]`, optionally after a date `YYYY-MM-DD`
+/// (or `YYYY/MM/DD`) and 'T' or a space, optionally followed by 'Z' or a UTC offset ±HH:MM or
+/// ±HHMM. The fraction may be written with '.' or ','. `has_date` false: day is 0.
+struct ClockTime {
+  long day = 0;          ///< days since 1970-01-01 (proleptic Gregorian), with the offset applied
+  double seconds = 0.0;  ///< seconds since that day's midnight, UTC when an offset is given, [0, 86401)
+  bool has_date = false;
+};
+/// Parses `text` (surrounding spaces allowed); false when it is not such a time or a field is out
+/// of range (month 13, 25:00:00, 30 February).
+bool parseClockTime(std::string_view text, ClockTime& out);
+
 struct ImportResult {
   std::string scenario;            ///< the scenario name of the drive
-  double t0_s = 0.0;               ///< the log's time of its first row (scenario time 0)
+  double t0_s = 0.0;               ///< the log's time of its first row (scenario time 0); a clock time: seconds of its day
   double duration_s = 0.0;
   long rows = 0, dropped_cells = 0;
   LabData data;                    ///< the measurements (repetition 1), times from 0

@@ -152,7 +152,7 @@ TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
   std::string renamed = makeLog();
   renamed.replace(0, 4, "tt,v");
   std::string bad_unit = kMapping;
-  bad_unit.replace(bad_unit.find("\"km/h\""), 6, "\"kph\"");
+  bad_unit.replace(bad_unit.find("\"km/h\""), 6, "\"km/s\"");
   std::string wrong_unit = kMapping;
   wrong_unit.replace(wrong_unit.find("unit = \"mm\"\nscale"), 11, "unit = \"g\"");
   dtwin_test::writeText(dir / "bad_unit.toml", bad_unit);
@@ -165,7 +165,7 @@ TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
       {"nan_time", spoil(7, "nan,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': 'nan' is not a finite number"},
       {"empty_speed", spoil(7, "5070,,0.1,1.0,3,x"), map, "log.csv:9: column 'v': is empty or NaN"},
       {"columns", spoil(7, "5070,36,0.1,1.0,3"), map, "log.csv:9: expected 6 columns (as the header), got 5"},
-      {"unknown_unit", makeLog(), (dir / "bad_unit.toml").string(), "bad_unit.toml:3: import.speed: unknown unit 'kph'"},
+      {"unknown_unit", makeLog(), (dir / "bad_unit.toml").string(), "bad_unit.toml:3: import.speed: unknown unit 'km/s'"},
       {"wrong_unit", makeLog(), (dir / "wrong_unit.toml").string(), "unit 'g' is in m/s^2, but this needs m"},
   };
   for (const auto& c : cases) {
@@ -283,5 +283,84 @@ offset = 1.0
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("import.decimal_comma: needs a separator other than ','"), std::string::npos) << e.what();
+  }
+}
+
+// Clock times as loggers write them, checked against days and seconds counted by hand.
+TEST(LogImport, ClockTimesParseWithDatesFractionsAndOffsets) {
+  ClockTime c;
+  ASSERT_TRUE(parseClockTime("14:03:07.25", c));
+  EXPECT_FALSE(c.has_date);
+  EXPECT_EQ(c.day, 0);
+  EXPECT_DOUBLE_EQ(c.seconds, 14 * 3600 + 3 * 60 + 7.25);
+  ASSERT_TRUE(parseClockTime(" 9:00:00,5 ", c));  // one-digit hour, decimal comma, spaces
+  EXPECT_DOUBLE_EQ(c.seconds, 9 * 3600 + 0.5);
+  ASSERT_TRUE(parseClockTime("1970-01-02T00:00:01Z", c));
+  EXPECT_TRUE(c.has_date);
+  EXPECT_EQ(c.day, 1);
+  EXPECT_DOUBLE_EQ(c.seconds, 1.0);
+  // 2000-03-01: 30 years of 365 days, 7 leap days (1972..1996), and 2000's Jan + Feb (31 + 29).
+  ASSERT_TRUE(parseClockTime("2000/03/01 12:00:00", c));
+  EXPECT_EQ(c.day, 30 * 365 + 7 + 31 + 29);
+  // An offset moves the time to UTC, across midnight when it must.
+  ASSERT_TRUE(parseClockTime("2000-03-01T01:30:00+02:00", c));
+  EXPECT_EQ(c.day, 30 * 365 + 7 + 31 + 29 - 1);
+  EXPECT_DOUBLE_EQ(c.seconds, 23.5 * 3600);
+  ASSERT_TRUE(parseClockTime("2000-03-01T23:30:00-0100", c));
+  EXPECT_EQ(c.day, 30 * 365 + 7 + 31 + 29 + 1);
+  EXPECT_DOUBLE_EQ(c.seconds, 0.5 * 3600);
+  for (const char* bad : {"", "12:00", "25:00:00", "12:60:00", "12:00:00.", "12:00:00x", "2001-02-29 12:00:00", "2000-13-01 00:00:00",
+                          "2000-01-01T12:00:00+2", "1.5", "12:0:00"})
+    EXPECT_FALSE(parseClockTime(bad, c)) << bad;
+}
+
+// A log whose time column is a date and clock time runs from its first row; a drive past midnight
+// without a date goes on the next day; a cell that is not a clock time is one line naming it.
+TEST(LogImport, ATimeColumnOfClockTimes) {
+  const fs::path dir = dtwin_test::freshDir("import_clock");
+  dtwin_test::writeText(dir / "map.toml", R"([import]
+time = { column = "stamp", unit = "clock" }
+speed = { column = "v", unit = "kph" }
+
+[[import.channels]]
+column = "az"
+channel = "chassis_heave_acc_mps2"
+unit = "m/s^2"
+)");
+  const ImportMapping m = readImportMapping((dir / "map.toml").string());
+  auto log = [](const std::function<std::string(int)>& stamp) {
+    std::string s = "stamp,v,az\n";
+    for (int k = 0; k <= 300; ++k) s += stamp(k) + ",36," + std::to_string(0.001 * k) + "\n";
+    return s;
+  };
+  auto hms = [](double t) {  // seconds of the day as HH:MM:SS.ss
+    char b[32];
+    const int h = static_cast<int>(t / 3600) % 24, mi = static_cast<int>(t / 60) % 60;
+    std::snprintf(b, sizeof b, "%02d:%02d:%05.2f", h, mi, t - 60.0 * std::floor(t / 60));
+    return std::string(b);
+  };
+  // 23:59:58.50 for 3 s at 100 Hz, with a date, then without one.
+  const ImportResult dated = importLog(log([&](int k) { return (k < 150 ? "2026-11-26T" : "2026-11-27T") + hms(86398.5 + 0.01 * k); }),
+                                       "dated.csv", m, kDemo, "drive");
+  const ImportResult bare = importLog(log([&](int k) { return hms(86398.5 + 0.01 * k); }), "bare.csv", m, kDemo, "drive");
+  for (const auto* r : {&dated, &bare}) {
+    EXPECT_EQ(r->rows, 301);
+    EXPECT_DOUBLE_EQ(r->t0_s, 86398.5);
+    EXPECT_NEAR(r->duration_s, 3.0, 1e-9);
+    EXPECT_NEAR(r->data.records[200].time_s, 2.0, 1e-9);
+    EXPECT_DOUBLE_EQ(r->data.records[200].value, 0.2);
+  }
+  try {
+    importLog(log([&](int k) { return k == 7 ? std::string("12:00:0x") : hms(100 + 0.01 * k); }), "odd.csv", m, kDemo, "drive");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("odd.csv:9: column 'stamp': '12:00:0x' is not a clock time"), std::string::npos) << e.what();
+  }
+  try {
+    importLog(log([&](int k) { return hms(100 + 0.01 * (k == 7 ? 5 : k)); }), "back.csv", m, kDemo, "drive");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("back.csv:9: column 'stamp': time goes backwards: 00:01:40.05 after 00:01:40.06"), std::string::npos)
+        << e.what();
   }
 }

@@ -45,9 +45,7 @@ ImportMapping mappingFromFlags(const ImportConfig& cfg) {
   }
   m.speed_lowpass_hz = cfg.speed_lowpass_hz;
   if (!cfg.separator.empty()) {
-    if (cfg.separator != "tab" && (cfg.separator.size() != 1 || cfg.separator == "\""))
-      throw InputError("--separator", "must be one character or 'tab', got '" + cfg.separator + "'");
-    m.separator = cfg.separator == "tab" ? '\t' : cfg.separator[0];
+    m.separator = parseSeparator(cfg.separator, "--separator");
   }
   if (cfg.channels.empty()) throw InputError("--channel", "is required without --map (COLUMN:CHANNEL:UNIT, repeatable)");
   for (const auto& text : cfg.channels) {
@@ -113,7 +111,7 @@ CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) 
   c->add_option("--highpass-hz", cfg->highpass_hz, "Drift removal of a road velocity [Hz] (default 0.1)")->check(CLI::Range(1e-3, 10.0));
   c->add_option("--speed-lowpass-hz", cfg->speed_lowpass_hz, "Smooth the speed by a zero-phase low-pass at this cut-off [Hz] (default: none)")
       ->check(CLI::Range(0.01, 100.0));
-  c->add_option("--separator", cfg->separator, "Field separator of the log: one character, or 'tab' (default ',')");
+  c->add_option("--separator", cfg->separator, "Field separator of the log: one character, 'tab', or 'whitespace' (a run of spaces and tabs; default ',')");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
   return {c, [cfg, command_line] { return runImport(*cfg, command_line); }, {}};
 }

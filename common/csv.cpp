@@ -54,7 +54,8 @@ bool CsvReader::next() {
         }
         std::size_t after = k + 1;
         while (after < line.size() && (line[after] == ' ' || line[after] == '\t')) ++after;
-        if (after < line.size() && line[after] != sep_) throw InputError(where(), "text after a closing double quote");
+        if (sep_ != ' ' && after < line.size() && line[after] != sep_) throw InputError(where(), "text after a closing double quote");
+        if (sep_ == ' ' && after == k + 1 && after < line.size()) throw InputError(where(), "text after a closing double quote");
         if (escaped) {
           unquoted_.push_back(std::move(value));
           fields_.push_back(unquoted_.back());  // a deque: earlier fields stay where they are
@@ -62,7 +63,15 @@ bool CsvReader::next() {
           fields_.push_back(line.substr(j + 1, k - j - 1));
         }
         if (after >= line.size()) break;
-        i = after + 1;
+        i = sep_ == ' ' ? after : after + 1;
+      } else if (sep_ == ' ') {
+        // Whitespace: a run of spaces and tabs is one separator (a column-aligned log).
+        std::size_t s = j;
+        while (s < line.size() && line[s] != ' ' && line[s] != '\t') ++s;
+        fields_.push_back(line.substr(j, s - j));
+        while (s < line.size() && (line[s] == ' ' || line[s] == '\t')) ++s;
+        if (s >= line.size()) break;
+        i = s;
       } else {
         const std::size_t s = line.find(sep_, i);
         fields_.push_back(trim(line.substr(i, s == std::string_view::npos ? std::string_view::npos : s - i)));

@@ -13,6 +13,8 @@ namespace dtwin {
 class CsvReader {
  public:
   /// `text` must outlive the reader; `name` (the file) prefixes where(); `sep` the field separator.
+  /// `sep` = ' ' means whitespace: a run of spaces and tabs is one separator (a column-aligned
+  /// log; an empty cell cannot be written there, a missing value is NaN).
   CsvReader(const std::string& text, std::string name, char sep = ',');
   /// Advances to the next non-blank line and splits it; false at the end of the text. Throws
   /// InputError(where(), ...) for a quote left open.

@@ -228,6 +228,16 @@ bool parseClockTime(std::string_view text, ClockTime& out) {
   return true;
 }
 
+char parseSeparator(const std::string& text, const std::string& where) {
+  if (text == "tab" || text == "\t") return '\t';
+  if (text == "whitespace" || text == " ") return ' ';
+  if (text.size() != 1 || text == "\"" || text == "\n" || text == "\r" || std::isalnum(static_cast<unsigned char>(text[0])) ||
+      text == "." || text == "-" || text == "+")
+    throw InputError(where, "must be one character such as \",\", \";\" or \"|\", or \"tab\" or \"whitespace\" (a run of spaces and tabs), got \"" +
+                                text + "\"");
+  return text[0];
+}
+
 double unitFactor(const std::string& unit, const std::string& si, const std::string& where) {
   for (const auto& u : kUnits)
     if (unit == u.name) {
@@ -295,11 +305,7 @@ ImportMapping readImportMapping(const std::string& path) {
     if (!(m.speed_lowpass_hz >= 0.01 && m.speed_lowpass_hz <= 100))
       throw InputError(r.where("speed_lowpass_hz"), "must lie in [0.01, 100] Hz, got " + formatNumber(m.speed_lowpass_hz));
   }
-  if (auto sep = r.string("separator")) {
-    if (sep->size() != 1 || *sep == "\"" || *sep == "\n")
-      throw InputError(r.where("separator"), "must be one character (\",\", \";\", \"\\t\"), got \"" + *sep + "\"");
-    m.separator = (*sep)[0];
-  }
+  if (auto sep = r.string("separator")) m.separator = parseSeparator(*sep, r.where("separator"));
   m.decimal_comma = r.boolean("decimal_comma").value_or(false);
   if (auto k = r.integer("header_line")) {
     if (*k < 1 || *k > 1000) throw InputError(r.where("header_line"), "must lie in [1, 1000], got " + std::to_string(*k));

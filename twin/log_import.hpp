@@ -42,7 +42,7 @@ struct ImportMapping {
   double speed_lowpass_hz = 0.0;
   std::vector<ImportChannel> channels;    ///< at least one
   std::vector<SensorSpec> sensors;        ///< sensors the channels may name, added to the study
-  char separator = ',';
+  char separator = ',';                   ///< ' ': whitespace (a run of spaces and tabs)
   bool decimal_comma = false;             ///< numbers written 1,25 (then the separator may not be ',')
   long header_line = 1;                   ///< the line holding the column names (a logger's preamble comes before)
   long skip_rows = 0;                     ///< rows after the header that are not data (e.g. a row of units)
@@ -56,6 +56,10 @@ struct ImportMapping {
 ImportMapping readImportMapping(const std::string& path);
 /// "COL[:UNIT[:OFFSET[:SCALE]]]" from the command line (`flag` names it in errors).
 ImportColumn parseImportColumn(const std::string& text, const std::string& flag, const std::string& default_unit = "");
+
+/// A log's field separator as a mapping or a flag gives it: one character (not a letter, digit,
+/// quote, '.', '-' or '+'), "tab", or "whitespace" / " " (a run of spaces and tabs, returned as ' ').
+char parseSeparator(const std::string& text, const std::string& where);
 
 /// The factor from `unit` to SI for a target of SI unit `si` ("m/s^2", "m", "m/s", "N", "rad",
 /// "rad/s^2", "s", "m/s (speed)"); InputError(where, ...) for a unit it does not know or that

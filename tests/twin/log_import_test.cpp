@@ -364,3 +364,30 @@ unit = "m/s^2"
         << e.what();
   }
 }
+
+// A column-aligned log (runs of spaces and tabs between fields), read with separator "whitespace".
+TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
+  const fs::path dir = dtwin_test::freshDir("import_aligned");
+  std::string log = "  time_ms     speed_kph    acc\n";
+  for (int k = 0; k <= 200; ++k) {
+    char row[96];
+    std::snprintf(row, sizeof row, "%8d  %10.1f \t %8.4f\n", 10 * k, 54.0, 0.001 * k);
+    log += row;
+  }
+  dtwin_test::writeText(dir / "log.txt", log);
+  const Cli r = twin("import " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
+                     " --separator whitespace --quiet --out " + (dir / "out").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const LabData back = readLabCsv((dir / "out" / "measurements.csv").string());
+  ASSERT_EQ(back.records.size(), 201u);
+  EXPECT_DOUBLE_EQ(back.records[150].time_s, 1.5);
+  EXPECT_DOUBLE_EQ(back.records[150].value, 0.15);
+  EXPECT_NE(dtwin_test::slurp(dir / "out" / "speed.csv").find("\n1.5,15\n"), std::string::npos);  // 54 km/h
+  for (const char* bad : {"'a'", "'.'", "'\"'"}) {
+    const Cli b = twin("import " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
+                       " --separator " + bad + " --out " + (dir / "bad").string());
+    EXPECT_EQ(b.code, 2) << bad;
+    EXPECT_NE(b.err.find("--separator: must be one character such as"), std::string::npos) << b.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "bad"));
+}

@@ -2,9 +2,11 @@
 // docs/diagnosis.md): the model against measurements, where it fails, which effect is missing.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <numeric>
 
 #include "calibration/calibrate.hpp"
 #include "calibration/folder.hpp"
@@ -65,11 +67,26 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   const auto c = diag::compareModel(obj, sets, rows, noise, co);
   if (!cfg.quiet) {
     std::printf("%s", diag::comparisonTable(c).c_str());
+    constexpr std::size_t kWindowsShown = 8;  // the rest are in compare.json
     for (const auto& s : c.series) {
-      for (const auto& w : s.windows)
+      // The windows that hold the most of the residual, in time order; a long drive may have hundreds.
+      std::vector<std::size_t> order(s.windows.size());
+      std::iota(order.begin(), order.end(), std::size_t{0});
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.windows[a].window.share > s.windows[b].window.share; });
+      const std::size_t shown = std::min(order.size(), kWindowsShown);
+      std::sort(order.begin(), order.begin() + static_cast<long>(shown));
+      for (std::size_t k = 0; k < shown; ++k) {
+        const auto& w = s.windows[order[k]];
         std::printf("  fails: %s %s %.3f-%.3f s, peak |z| %.1f, %.0f %% of its residual: %s (%.1f m/s)\n", s.scenario.c_str(),
                     s.channel.c_str(), w.window.t_begin, w.window.t_end, w.window.peak_z, 100 * w.window.share, w.label.c_str(),
                     w.speed_mps);
+      }
+      if (order.size() > shown) {
+        double rest = 0.0;
+        for (std::size_t k = shown; k < order.size(); ++k) rest += s.windows[order[k]].window.share;
+        std::printf("  fails: %s %s in %zu more windows holding %.0f %% of its residual (--out: compare.json lists every window)\n",
+                    s.scenario.c_str(), s.channel.c_str(), order.size() - shown, 100 * rest);
+      }
       for (const auto& b : s.bands)
         if (b.significant)
           std::printf("  fails: %s %s band %s (%.1f-%.1f Hz): residual %.3g x the noise floor, coherence with the road %.2f\n",

@@ -5,6 +5,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -390,4 +391,40 @@ TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
     EXPECT_NE(b.err.find("--separator: must be one character such as"), std::string::npos) << b.err;
   }
   EXPECT_FALSE(fs::exists(dir / "bad"));
+}
+
+// The issue's promise: import -> compare with no hand editing. The shipped demonstration drive is
+// imported and compared with a calibration at the truth without its hidden effect. The twin fails
+// all along the drive, and compare prints the eight windows holding the most of the residual, in
+// time order, then one line for the rest.
+TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
+  const fs::path dir = dtwin_test::freshDir("import_compare");
+  const std::string drive = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
+  Cli r = twin("import " + drive + "stop_and_go.csv --map " + drive + "stop_and_go_map.toml --quiet --out " + (dir / "drive").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  fs::create_directories(dir / "cal");
+  dtwin_test::writeText(dir / "cal" / "summary.json", R"({"assembly": "M1"})");
+  dtwin_test::writeText(dir / "cal" / "posterior.csv",
+                        "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
+                        "180000,3000,30000,2500,1,0\n");
+  const std::string out = (dir / "out.txt").string();
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " compare --study " + (dir / "drive" / "study.toml").string() + " --calibration " +
+                          (dir / "cal").string() + " --data " + (dir / "drive" / "measurements.csv").string() + " --draws 1 > " + out + " 2>&1";
+  const int st = std::system(cmd.c_str());
+  ASSERT_EQ(WEXITSTATUS(st), 0) << dtwin_test::slurp(out);
+  std::istringstream text(dtwin_test::slurp(out));
+  std::vector<double> starts;
+  int rest = 0;
+  for (std::string line; std::getline(text, line);) {
+    if (line.find("  fails: drive seat_mps2 ") != 0) continue;
+    if (line.find(" more windows holding ") != std::string::npos) {
+      ++rest;
+      continue;
+    }
+    starts.push_back(std::stod(line.substr(std::string("  fails: drive seat_mps2 ").size())));
+  }
+  EXPECT_EQ(starts.size(), 8u) << dtwin_test::slurp(out);
+  EXPECT_EQ(rest, 1) << dtwin_test::slurp(out);
+  EXPECT_TRUE(std::is_sorted(starts.begin(), starts.end())) << dtwin_test::slurp(out);
+  EXPECT_NE(dtwin_test::slurp(out).find("lack of fit: chi2 = "), std::string::npos);
 }

@@ -724,6 +724,38 @@ StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double
 }
 
 // ------------------------------------------------------------------ result JSON
+IntegratorCheck assessIntegrator(const std::vector<double>& eta, const std::vector<double>& eta_fine, const std::vector<double>& y,
+                                 const std::vector<double>& w, double accuracy, double threshold) {
+  DTWIN_CHECK(eta.size() == y.size() && eta_fine.size() == y.size() && w.size() == y.size(), "assessIntegrator: sizes differ");
+  IntegratorCheck c;
+  c.accuracy = accuracy;
+  c.accuracy_check = accuracy / 10;
+  c.threshold = threshold;
+  double ee = 0.0, dd = 0.0, ff = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    ee += w[i] * (eta[i] - y[i]) * (eta[i] - y[i]);
+    ff += w[i] * (eta_fine[i] - y[i]) * (eta_fine[i] - y[i]);
+    dd += w[i] * (eta[i] - eta_fine[i]) * (eta[i] - eta_fine[i]);
+  }
+  c.sse = ee;
+  c.sse_check = ff;
+  c.prediction_change = std::sqrt(dd);
+  c.jitter = y.empty() ? 0.0 : std::max(std::abs(ee - ff), 2.0 * std::sqrt(ee) * std::sqrt(dd) / std::sqrt(static_cast<double>(y.size())));
+  c.ok = !(c.threshold > 0) || c.jitter < 0.5 * c.threshold;
+  if (!c.ok)
+    c.message = "the integrator's error moves the SSE by about " + formatNumber(c.jitter, 3) + " at the optimum (accuracy " +
+                formatNumber(c.accuracy, 3) + " against " + formatNumber(c.accuracy_check, 3) + "), against the 95 % intervals' threshold of " +
+                formatNumber(c.threshold, 3) + ": the optimum and the intervals follow the integrator, not the data; tighten [simulation] accuracy "
+                "(to " + formatNumber(c.accuracy_check, 3) + " or less) and rerun";
+  return c;
+}
+
+nlohmann::json IntegratorCheck::toJson() const {
+  return {{"accuracy", accuracy},           {"accuracy_check", accuracy_check}, {"sse", jsonNumber(sse)},
+          {"sse_check", jsonNumber(sse_check)}, {"prediction_change", jsonNumber(prediction_change)},
+          {"jitter", jsonNumber(jitter)},     {"threshold", jsonNumber(threshold)}, {"ok", ok}, {"message", message}};
+}
+
 nlohmann::json CalibrationResult::toJson() const {
   nlohmann::json j;
   j["assembly"] = assembly;
@@ -763,6 +795,7 @@ nlohmann::json CalibrationResult::toJson() const {
               {"ess", jsonNumber(posterior.tau.ess)},
               {"noise_variance_mean_N2", posterior.tau.mean > 0 ? 1.0 / posterior.tau.mean : 0.0}};
   j["optimum"] = optimumJson(optimum);
+  j["integrator_check"] = integrator.toJson();
   j["region"] = region.toJson();
   j["interval"] = interval;
   if (!profile.lower.empty()) j["profile"] = profile.toJson();
@@ -824,6 +857,7 @@ class CalibrationRun {
   void design();
   void profile();
   void sampler();
+  void integratorCheck();
   void summary();
   CalibrationResult take() { return std::move(res_); }
 
@@ -1246,7 +1280,28 @@ void CalibrationRun::sampler() {
   res_.stage_wall_s.push_back({"gibbs", secondsSince(t0)});
 }
 
-/// Stage 6, summary (summary.json): the result (CalibrationResult::toJson) with how it was made:
+/// Stage 6, the integrator check (IntegratorCheck): two simulations at the optimum, one at a tenth
+/// of the study's accuracy. Cheap and deterministic: never persisted, always rerun.
+void CalibrationRun::integratorCheck() {
+  const auto t0 = Clock::now();
+  IntegratorCheck& c = res_.integrator;
+  c.accuracy = study_.simulation.accuracy;
+  c.accuracy_check = c.accuracy / 10;
+  c.threshold = res_.profile.threshold - res_.profile.sse_best;
+  const std::vector<double>& theta = res_.optimum.theta;
+  if (!std::isfinite(res_.optimum.sse) || theta.size() != d_) return;
+  report("integrator check", 0, 1);
+  Study tight = study_;
+  tight.simulation.accuracy = c.accuracy_check;
+  const LabObjective fine(tight, assembly_, data_, setup_);
+  const std::vector<double> eta = objective_->predict(theta), eta_fine = fine.predict(theta);
+  report("integrator check", 1, 1);
+  if (eta.empty() || eta_fine.empty()) return;
+  c = assessIntegrator(eta, eta_fine, objective_->measured(), objective_->weights(), c.accuracy, c.threshold);
+  res_.stage_wall_s.push_back({"integrator check", secondsSince(t0)});
+}
+
+/// Stage 7, summary (summary.json): the result (CalibrationResult::toJson) with how it was made:
 /// program, command, study, data sets, setup and options.
 void CalibrationRun::summary() {
   res_.stage_wall_s.push_back({"total", secondsSince(t_all_)});
@@ -1295,6 +1350,7 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   run.design();     // design_journal.csv, design.csv
   run.profile();    // profile.json
   run.sampler();    // posterior.csv
+  run.integratorCheck();
   run.summary();    // summary.json
   return run.take();
 }

@@ -204,6 +204,29 @@ struct CalibrationOptions {
 /// Progress: stage name, points done, points in the stage.
 using ::dtwin::StageProgress;  // common/progress.hpp
 
+/// Is the integrator accurate enough for these data? The SSE is re-evaluated at the optimum with
+/// the study's accuracy divided by 10. Each simulation's integrator error changes in jumps with θ
+/// (the adaptive steps change), so it puts a jitter of about 2 ‖e‖ ‖δ‖ / √n into the SSE (e:
+/// the weighted residuals, δ: the weighted change of the predictions). When that jitter, or the
+/// change of the SSE itself, reaches half the 95 % intervals' threshold above the minimum
+/// (c s²), the optimum and the intervals follow the integrator rather than the data: `ok` is
+/// false and `message` says what to tighten.
+struct IntegratorCheck {
+  double accuracy = 0.0, accuracy_check = 0.0;  ///< the study's, and the check's (one tenth)
+  double sse = 0.0, sse_check = 0.0;            ///< at the optimum, with each
+  double prediction_change = 0.0;               ///< ‖δ‖ (weighted: in noise sd when the weights are 1/σ²)
+  double jitter = 0.0;                          ///< max(|sse − sse_check|, 2 ‖e‖ ‖δ‖ / √n)
+  double threshold = 0.0;                       ///< the intervals' threshold above the minimum, c s²
+  bool ok = true;
+  std::string message;                          ///< empty when ok
+  nlohmann::json toJson() const;
+};
+
+/// The check from the predictions at the optimum with the study's accuracy (`eta`) and a tenth of
+/// it (`eta_fine`), the data `y`, their weights `w` and the intervals' threshold above the minimum.
+IntegratorCheck assessIntegrator(const std::vector<double>& eta, const std::vector<double>& eta_fine, const std::vector<double>& y,
+                                 const std::vector<double>& w, double accuracy, double threshold);
+
 struct CalibrationResult {
   std::string assembly, label;
   std::vector<std::string> names;
@@ -221,6 +244,7 @@ struct CalibrationResult {
   long resumed_points = 0;  ///< design points found in the journal
   GibbsChains chains;
   PosteriorSummary posterior;
+  IntegratorCheck integrator;  ///< stage 6: is the integrator accurate enough for these data?
   std::vector<std::pair<std::string, double>> stage_wall_s;
   double median_run_wall_s = 0.0;  ///< wall time of one simulation (median)
   nlohmann::json toJson() const;

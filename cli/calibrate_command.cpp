@@ -118,6 +118,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
       for (const auto& w : r.rounds.warnings) std::printf("       note: %s\n", w.c_str());
       for (const auto& m : r.region.messages) std::printf("       note: %s\n", m.c_str());
       if (r.design_failures) std::printf("       note: %ld design simulations failed (SSE = inf, weight 0)\n", r.design_failures);
+      if (!r.integrator.ok) std::printf("       note: %s\n", r.integrator.message.c_str());
     }
   }
   rootWrites([&] { writeFileAtomic((fs::path(cfg.out) / "calibration.json").string(), index.dump(2) + "\n"); });

@@ -64,7 +64,7 @@ int runBench(const std::string& study_path, int runs, bool markdown, const std::
 }  // namespace
 
 CommandHandle addBenchCommand(CLI::App& root) {
-  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; };
+  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; };
   auto cfg = std::make_shared<Cfg>();
   std::string& bench_study = cfg->study;
   int& bench_runs = cfg->runs;
@@ -77,12 +77,21 @@ CommandHandle addBenchCommand(CLI::App& root) {
   b->add_flag("--markdown", bench_md, "Print a markdown table (for docs/performance.md)");
   b->add_option("--import", cfg->import_rows, "Instead: time `twin import` on a synthetic 100 Hz log of this many rows (360000: one hour)")
       ->check(CLI::Range(2L, 100000000L));
+  b->add_option("--user-effect", cfg->user_effect, "Instead: time a user-defined strut effect against the built-in one of the same form, over this many evaluations")
+      ->check(CLI::Range(1000L, 1000000000L));
 
   return {b, [cfg] {
             if (cfg->import_rows > 0) {
               const BenchImport r = benchImport(cfg->study, cfg->import_rows, cfg->runs);
               std::printf("twin import: %ld rows (%.1f MB), %d runs: median %.2f s (%.2f..%.2f s), %.0f rows/s\n", r.rows, r.bytes / 1e6,
                           cfg->runs, r.median_s, r.min_s, r.max_s, static_cast<double>(r.rows) / r.median_s);
+              return 0;
+            }
+            if (cfg->user_effect > 0) {
+              const BenchUserEffect r = benchUserEffect(cfg->user_effect, cfg->runs);
+              std::printf("strut force, %ld evaluations, %d runs (median): built-in damper_asymmetry %.1f ns, user-defined \"v < 0 ? (ratio - 1) * c * v : 0\" %.1f ns "
+                          "(%.1fx); largest difference %.3g N\n",
+                          r.evaluations, cfg->runs, r.builtin_ns, r.user_ns, r.user_ns / r.builtin_ns, r.max_abs_difference);
               return 0;
             }
             return runBench(cfg->study, cfg->runs, cfg->md, cfg->ids);

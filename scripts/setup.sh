@@ -7,6 +7,7 @@ PKGS=(build-essential cmake pkg-config git
       libsimbody-dev libeigen3-dev libnlopt-cxx-dev libnlopt-dev
       googletest libgtest-dev libgmock-dev
       libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+      libmuparser-dev         # user-defined effects: force expressions in the study file
       gnuplot-nox chromium    # gnuplot: `twin report`; chromium: its rendering test
       libopenmpi-dev openmpi-bin)   # MPI: `mpirun -n K twin ...` (docs/cluster.md)
 # `setup.sh demo`: only what the demo needs (no test framework, no browser for the report test, no

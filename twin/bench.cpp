@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "common/errors.hpp"
+#include "subsystems/user_effect.hpp"
 #include "twin/log_import.hpp"
 
 namespace dtwin {
@@ -95,6 +96,49 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs) {
   b.min_s = walls.front();
   b.max_s = walls.back();
   return b;
+}
+
+BenchUserEffect benchUserEffect(long evaluations, int runs) {
+  UserEffectSpec spec;
+  spec.name = "user_damper_asymmetry";
+  spec.element = "strut";
+  spec.force = "v < 0 ? (ratio - 1) * c * v : 0";
+  spec.parameters = {{"ratio", "1", 1.0, 0.5, 3.0}};
+  spec.where = "twin bench";
+  const auto user = makeUserEffect(spec);
+  const auto builtin = makeEffect("damper_asymmetry", "twin bench");
+  const std::vector<double> p = {2.2};
+  StrutState s;
+  s.base_stiffness = 3e4;
+  s.base_damping = 2500;
+  BenchUserEffect r;
+  r.evaluations = evaluations;
+  std::vector<double> rates(4096);  // both signs, never the same twice in a row; read, not computed, in the timed loop
+  for (std::size_t i = 0; i < rates.size(); ++i) rates[i] = std::sin(1e-3 * static_cast<double>(i * 7919 % 6283));
+  auto time = [&](const Effect& e, double& sink) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long i = 0; i < evaluations; ++i) {
+      s.rate_mps = rates[static_cast<std::size_t>(i) & 4095];
+      sink += e.calcStrutForce(s, p);
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e9 / static_cast<double>(evaluations);
+  };
+  std::vector<double> tb, tu;
+  double sink_b = 0, sink_u = 0;
+  for (int k = 0; k < runs; ++k) {
+    tb.push_back(time(*builtin, sink_b));
+    tu.push_back(time(*user, sink_u));
+  }
+  std::sort(tb.begin(), tb.end());
+  std::sort(tu.begin(), tu.end());
+  r.builtin_ns = tb[tb.size() / 2];
+  r.user_ns = tu[tu.size() / 2];
+  for (double v = -2.0; v <= 2.0; v += 1e-3) {
+    s.rate_mps = v;
+    r.max_abs_difference = std::max(r.max_abs_difference, std::abs(user->calcStrutForce(s, p) - builtin->calcStrutForce(s, p)));
+  }
+  if (sink_b != sink_u) r.max_abs_difference = std::max(r.max_abs_difference, std::abs(sink_b - sink_u) / static_cast<double>(evaluations));
+  return r;
 }
 
 }  // namespace dtwin

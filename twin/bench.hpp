@@ -33,4 +33,15 @@ struct BenchImport {
 };
 BenchImport benchImport(const std::string& study_path, long rows, int runs);
 
+/// The cost of a user-defined strut effect (subsystems/user_effect.hpp) against the built-in
+/// effect of the same form: damper_asymmetry, and "v < 0 ? (ratio - 1) * c * v : 0", each
+/// evaluated `evaluations` times over a sweep of strut states (median of `runs`). Also checks that
+/// the two agree at every state (max_abs_difference).
+struct BenchUserEffect {
+  long evaluations = 0;
+  double builtin_ns = 0, user_ns = 0;  ///< median wall per evaluation
+  double max_abs_difference = 0;       ///< [N]
+};
+BenchUserEffect benchUserEffect(long evaluations, int runs);
+
 }  // namespace dtwin

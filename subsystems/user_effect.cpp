@@ -1,0 +1,153 @@
+#include "subsystems/user_effect.hpp"
+
+#include <muParser.h>
+
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <unordered_map>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
+namespace dtwin {
+
+namespace {
+
+/// One thread's compiled expression: a muparser Parser bound to its own variables. A Parser binds
+/// variables by address and is not to be shared between threads, so each thread compiles its own
+/// copy on first use (UserStrutEffect::local).
+struct Compiled {
+  mu::Parser parser;
+  std::vector<double> vars;  ///< the state variables, then the parameters
+};
+
+/// Compiles `expr` with `names` bound to `c.vars`; rethrows muparser's error as one line.
+void compile(Compiled& c, const std::string& expr, const std::vector<std::string>& names, const std::string& where) {
+  c.vars.assign(names.size(), 0.0);
+  try {
+    for (std::size_t i = 0; i < names.size(); ++i) c.parser.DefineVar(names[i], &c.vars[i]);
+    c.parser.SetExpr(expr);
+    (void)c.parser.Eval();  // parses now: an unknown symbol or a syntax error is found here
+  } catch (const mu::Parser::exception_type& e) {
+    std::string msg = e.GetMsg();
+    for (char& ch : msg)
+      if (ch == '\n' || ch == '\r') ch = ' ';
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw InputError(where + ": force", "'" + expr + "': " + msg + " (symbols: " + known + ")");
+  }
+}
+
+class UserStrutEffect final : public Effect {
+ public:
+  explicit UserStrutEffect(UserEffectSpec spec) : spec_(std::move(spec)) {
+    static std::atomic<std::uint64_t> next{1};
+    id_ = next++;
+    names_ = userEffectVariables("strut");
+    for (const auto& p : spec_.parameters) {
+      names_.push_back(p.name);
+      ParameterSpec s = effectParameter(p.name, p.unit, "user-defined (" + spec_.force + ")", p.value, p.lower, p.upper, p.lower, p.upper);
+      specs_.push_back(s);
+    }
+  }
+  std::string name() const override { return spec_.name; }
+  std::string description() const override { return "user-defined strut force " + spec_.force; }
+  std::string signature() const override { return "a strut force " + spec_.force + " (user-defined)"; }
+  EffectKind kind() const override { return EffectKind::Strut; }
+  const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  double calcStrutForce(const StrutState& s, ParamValues p) const override {
+    Compiled& c = local();
+    c.vars[0] = s.deflection_m;
+    c.vars[1] = s.rate_mps;
+    c.vars[2] = s.base_stiffness;
+    c.vars[3] = s.base_damping;
+    for (std::size_t i = 0; i < p.size(); ++i) c.vars[4 + i] = p[i];
+    return c.parser.Eval();
+  }
+  /// Compiles once on this thread (checks the expression; throws InputError).
+  void check() const { (void)local(); }
+
+ private:
+  Compiled& local() const {
+    // Per thread and per effect object (by a unique id, not an address that may be reused).
+    thread_local std::unordered_map<std::uint64_t, std::unique_ptr<Compiled>> cache;
+    auto& slot = cache[id_];
+    if (!slot) {
+      auto c = std::make_unique<Compiled>();
+      compile(*c, spec_.force, names_, spec_.where);
+      slot = std::move(c);
+    }
+    return *slot;
+  }
+  UserEffectSpec spec_;
+  std::uint64_t id_ = 0;
+  std::vector<std::string> names_;
+  std::vector<ParameterSpec> specs_;
+};
+
+bool isIdentifier(const std::string& s) {
+  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  for (char ch : s)
+    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_')) return false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::string> userEffectVariables(const std::string& element) {
+  if (element == "strut") return {"q", "v", "k", "c"};
+  return {};
+}
+
+std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec) {
+  const std::string& w = spec.where;
+  if (spec.element != "strut")
+    throw InputError(w + ": element", "unknown element '" + spec.element + "' (known: strut)");
+  if (spec.force.empty()) throw InputError(w + ": force", "is required (an expression in q, v, k, c and the parameters)");
+  const auto state = userEffectVariables(spec.element);
+  std::vector<std::string> seen = state;
+  for (const auto& p : spec.parameters) {
+    const std::string pw = w + ": parameters." + p.name;
+    if (!isIdentifier(p.name)) throw InputError(pw, "a parameter's name must be letters, digits and '_', starting with a letter");
+    for (const auto& s : seen)
+      if (s == p.name) throw InputError(pw, "the name is taken (state variables: q, v, k, c; or another parameter)");
+    seen.push_back(p.name);
+    if (p.unit.empty()) throw InputError(pw + ".unit", "is required (\"1\" for none)");
+    if (!std::isfinite(p.lower) || !std::isfinite(p.upper) || !(p.lower < p.upper))
+      throw InputError(pw, "needs a prior range with finite lower < upper, got [" + formatNumber(p.lower) + ", " + formatNumber(p.upper) + "]");
+    if (!std::isfinite(p.value) || p.value < p.lower || p.value > p.upper)
+      throw InputError(pw + ".value", "must lie in [lower, upper] = [" + formatNumber(p.lower) + ", " + formatNumber(p.upper) + "], got " +
+                                          formatNumber(p.value));
+  }
+  auto effect = std::make_unique<UserStrutEffect>(spec);
+  effect->check();
+  // Off at the values, and finite across the prior ranges, over a grid of strut states.
+  std::vector<double> off, probe;
+  for (const auto& p : spec.parameters) off.push_back(p.value);
+  const double qs[] = {-0.08, -0.02, 0.0, 0.02, 0.08}, vs[] = {-1.0, -0.1, 0.0, 0.1, 1.0};
+  for (double q : qs)
+    for (double v : vs) {
+      StrutState s;
+      s.deflection_m = q;
+      s.rate_mps = v;
+      s.base_stiffness = 3e4;
+      s.base_damping = 2.5e3;
+      const double f = effect->calcStrutForce(s, off);
+      if (!std::isfinite(f) || f != 0.0)
+        throw InputError(w + ": force", "must be 0 with every parameter at its value (the effect off); at q = " + formatNumber(q) +
+                                            " m, v = " + formatNumber(v) + " m/s it is " + formatNumber(f) + " N");
+      for (int corner = 0; corner < (1 << std::min<std::size_t>(spec.parameters.size(), 10)); ++corner) {
+        probe = off;
+        for (std::size_t i = 0; i < spec.parameters.size() && i < 10; ++i)
+          probe[i] = (corner >> i) & 1 ? spec.parameters[i].upper : spec.parameters[i].lower;
+        const double g = effect->calcStrutForce(s, probe);
+        if (!std::isfinite(g))
+          throw InputError(w + ": force", "is not finite (" + formatNumber(g) + ") at q = " + formatNumber(q) + " m, v = " + formatNumber(v) +
+                                              " m/s with the parameters at the corners of their prior ranges");
+      }
+    }
+  return effect;
+}
+
+}  // namespace dtwin

@@ -17,6 +17,7 @@
 #include "subsystems/effects/speed_dependent_tire_stiffness.hpp"
 #include "subsystems/effects/anti_roll_bar.hpp"
 #include "subsystems/effects/top_mount_compliance.hpp"
+#include "subsystems/user_effect.hpp"
 
 namespace dtwin {
 
@@ -82,12 +83,14 @@ const std::vector<EffectEntry>& effectRegistry() {
 std::vector<std::string> effectNames() {
   std::vector<std::string> names;
   for (const auto& e : effectRegistry()) names.push_back(e.name);
+  for (auto& n : userEffectNames()) names.push_back(std::move(n));
   return names;
 }
 
 std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& where) {
   for (const auto& e : effectRegistry())
     if (e.name == name) return e.make();
+  if (auto user = makeRegisteredUserEffect(name)) return user;
   throw InputError(where, unknownNameRule("effect", name, effectNames()));
 }
 

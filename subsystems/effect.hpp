@@ -100,10 +100,11 @@ struct EffectEntry {
 /// table in effect.cpp (names unique). A new effect is one line there (docs/extending.md).
 const std::vector<EffectEntry>& effectRegistry();
 
-/// The registered effect `name`. Throws InputError(where, "unknown effect 'x' (known: ...; did you
+/// The registered effect `name`: a built-in one, else a user-defined one a study registered
+/// (subsystems/user_effect.hpp). Throws InputError(where, "unknown effect 'x' (known: ...; did you
 /// mean 'y'?)") (common/names.hpp unknownNameRule).
 std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& where);
-/// The registered names, in registry order.
+/// The registered names: the built-in effects in registry order, then the user-defined ones.
 std::vector<std::string> effectNames();
 
 }  // namespace dtwin

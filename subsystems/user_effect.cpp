@@ -3,6 +3,8 @@
 #include <muParser.h>
 
 #include <atomic>
+#include <map>
+#include <mutex>
 #include <cctype>
 #include <cmath>
 #include <unordered_map>
@@ -41,13 +43,14 @@ void compile(Compiled& c, const std::string& expr, const std::vector<std::string
 
 class UserStrutEffect final : public Effect {
  public:
-  explicit UserStrutEffect(UserEffectSpec spec) : spec_(std::move(spec)) {
-    static std::atomic<std::uint64_t> next{1};
-    id_ = next++;
+  /// `id` keys each thread's compiled copy: one per registered definition (shared by every
+  /// object made from it), a fresh one otherwise (newId()).
+  UserStrutEffect(UserEffectSpec spec, std::uint64_t id) : spec_(std::move(spec)), id_(id) {
     names_ = userEffectVariables("strut");
     for (const auto& p : spec_.parameters) {
       names_.push_back(p.name);
       ParameterSpec s = effectParameter(p.name, p.unit, "user-defined (" + spec_.force + ")", p.value, p.lower, p.upper, p.lower, p.upper);
+      s.shape = p.shape;
       specs_.push_back(s);
     }
   }
@@ -86,6 +89,11 @@ class UserStrutEffect final : public Effect {
   std::vector<ParameterSpec> specs_;
 };
 
+std::uint64_t newId() {
+  static std::atomic<std::uint64_t> next{1};
+  return next++;
+}
+
 bool isIdentifier(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
   for (char ch : s)
@@ -120,7 +128,7 @@ std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec) {
       throw InputError(pw + ".value", "must lie in [lower, upper] = [" + formatNumber(p.lower) + ", " + formatNumber(p.upper) + "], got " +
                                           formatNumber(p.value));
   }
-  auto effect = std::make_unique<UserStrutEffect>(spec);
+  auto effect = std::make_unique<UserStrutEffect>(spec, newId());
   effect->check();
   // Off at the values, and finite across the prior ranges, over a grid of strut states.
   std::vector<double> off, probe;
@@ -148,6 +156,70 @@ std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec) {
       }
     }
   return effect;
+}
+
+namespace {
+
+struct UserRegistry {
+  std::mutex m;
+  std::vector<std::shared_ptr<const UserEffectSpec>> specs;  ///< in registration order
+  std::vector<std::uint64_t> ids;                            ///< each definition's compiled-copy key
+};
+UserRegistry& userRegistry() {
+  static UserRegistry r;
+  return r;
+}
+
+bool sameDefinition(const UserEffectSpec& a, const UserEffectSpec& b) {
+  if (a.element != b.element || a.force != b.force || a.parameters.size() != b.parameters.size()) return false;
+  for (std::size_t i = 0; i < a.parameters.size(); ++i) {
+    const auto &x = a.parameters[i], &y = b.parameters[i];
+    if (x.name != y.name || x.unit != y.unit || x.value != y.value || x.lower != y.lower || x.upper != y.upper || x.shape != y.shape)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void registerUserEffect(const UserEffectSpec& spec) {
+  for (const auto& e : effectRegistry())
+    if (e.name == spec.name) throw InputError(spec.where, "'" + spec.name + "' is a built-in effect's name; give the user-defined one another");
+  (void)makeUserEffect(spec);  // every check, before it becomes known
+  auto& r = userRegistry();
+  std::lock_guard<std::mutex> lock(r.m);
+  for (const auto& s : r.specs)
+    if (s->name == spec.name) {
+      if (sameDefinition(*s, spec)) return;
+      throw InputError(spec.where, "another definition of '" + spec.name + "' is in use (" + s->where +
+                                       "): one process holds one definition per name");
+    }
+  r.specs.push_back(std::make_shared<const UserEffectSpec>(spec));
+  r.ids.push_back(newId());
+}
+
+std::unique_ptr<Effect> makeRegisteredUserEffect(const std::string& name) {
+  auto& r = userRegistry();
+  std::lock_guard<std::mutex> lock(r.m);
+  for (std::size_t i = 0; i < r.specs.size(); ++i)
+    if (r.specs[i]->name == name) return std::make_unique<UserStrutEffect>(*r.specs[i], r.ids[i]);  // checked when registered
+  return nullptr;
+}
+
+std::shared_ptr<const UserEffectSpec> findUserEffect(const std::string& name) {
+  auto& r = userRegistry();
+  std::lock_guard<std::mutex> lock(r.m);
+  for (const auto& s : r.specs)
+    if (s->name == name) return s;
+  return nullptr;
+}
+
+std::vector<std::string> userEffectNames() {
+  auto& r = userRegistry();
+  std::lock_guard<std::mutex> lock(r.m);
+  std::vector<std::string> out;
+  for (const auto& s : r.specs) out.push_back(s->name);
+  return out;
 }
 
 }  // namespace dtwin

@@ -25,6 +25,7 @@ struct UserEffectParameter {
   std::string name, unit;
   double value = 0.0;                 ///< the off value
   double lower = 0.0, upper = 0.0;    ///< the prior range (and the valid range), lower < upper
+  bool shape = false;                 ///< held at its value while a diagnosis calibrates the others
 };
 
 struct UserEffectSpec {
@@ -43,5 +44,19 @@ std::vector<std::string> userEffectVariables(const std::string& element);
 /// outside it, an expression that does not parse or names an unknown symbol, a force that is not
 /// finite, or one that is not 0 with every parameter at its value.
 std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec);
+
+/// Makes `spec` known by name to makeEffect and effectNames (subsystems/effect.hpp), after the
+/// built-in effects, for the rest of the process: a study file's [user_effects.NAME] tables are
+/// registered when the study is read. Registering the same definition again does nothing.
+/// InputError(spec.where, ...) when the name is a built-in effect's, or another definition of it
+/// is registered already (two studies in one process that disagree).
+void registerUserEffect(const UserEffectSpec& spec);
+/// The effect of the registered definition `name` (no checks: they were made when it was
+/// registered), or nullptr.
+std::unique_ptr<Effect> makeRegisteredUserEffect(const std::string& name);
+/// The registered definition `name`, or nullptr.
+std::shared_ptr<const UserEffectSpec> findUserEffect(const std::string& name);
+/// The registered names, in the order they were registered.
+std::vector<std::string> userEffectNames();
 
 }  // namespace dtwin

@@ -165,6 +165,50 @@ void readFixed(TableReader& top, Study& s) {
   }
 }
 
+/// [user_effects.NAME]: an effect whose force is an expression (subsystems/user_effect.hpp), checked
+/// and registered by name so [effects], --effect, --hidden-effect and the diagnosis can name it.
+void readUserEffects(TableReader& top, Study& s) {
+  const std::string& path = top.file();
+  auto* t = top.table("user_effects");
+  if (!t) return;
+  for (auto&& [key, node] : *t) {
+    const std::string name(key.str());
+    const std::string field = "user_effects." + name;
+    auto* ut = node.as_table();
+    if (!ut) throw InputError(path + ":" + std::to_string(node.source().begin.line) + ": " + field, "must be a table (element, force, parameters)");
+    TableReader r(*ut, path, field);
+    UserEffectSpec u;
+    u.name = name;
+    u.where = path + ":" + std::to_string(ut->source().begin.line) + ": " + field;
+    u.element = r.string("element").value_or("");
+    if (u.element.empty()) throw InputError(r.where("element"), "is required (\"strut\")");
+    u.force = r.string("force").value_or("");
+    if (auto* pt = r.table("parameters")) {
+      TableReader pr(*pt, path, field + ".parameters");
+      for (auto&& [pk, pn] : *pt) {
+        const std::string pname(pk.str());
+        const toml::table* one = pr.table(pname);
+        if (!one) throw InputError(pr.where(pname), "must be { value, unit, lower, upper } (optionally shape = true)");
+        TableReader vr(*one, path, field + ".parameters." + pname);
+        UserEffectParameter p;
+        p.name = pname;
+        p.unit = vr.string("unit").value_or("");
+        if (p.unit.empty()) throw InputError(vr.where("unit"), "is required (\"1\" for none)");
+        p.value = vr.required("value");
+        p.lower = vr.required("lower");
+        p.upper = vr.required("upper");
+        p.shape = vr.boolean("shape").value_or(false);
+        vr.finish();
+        u.parameters.push_back(p);
+      }
+      pr.finish();
+    }
+    r.finish();
+    registerUserEffect(u);  // every check of the definition (InputError naming file:line and field)
+    s.user_effects.push_back(u);
+  }
+}
+
 /// [effects.NAME]: effects installed in every assembly, with their parameter values.
 void readEffects(TableReader& top, Study& s) {
   const std::string& path = top.file();
@@ -509,6 +553,7 @@ Study loadStudy(const std::string& path) {
   readAssemblies(top, s);
   readCalibrated(top, s);
   readFixed(top, s);
+  readUserEffects(top, s);  // before [effects] and the assemblies, which may name them
   readEffects(top, s);
   readScenarios(top, s);
   readSimulation(top, s);
@@ -618,6 +663,12 @@ nlohmann::json Study::toJson() const {
   }
   j["noise_variance_N2"] = noise_variance_N2;
   for (const auto& x : sensors) j["sensors"].push_back(x.toJson());
+  for (const auto& u : user_effects) {
+    nlohmann::json uj{{"name", u.name}, {"element", u.element}, {"force", u.force}};
+    for (const auto& p : u.parameters)
+      uj["parameters"][p.name] = {{"value", p.value}, {"unit", p.unit}, {"lower", p.lower}, {"upper", p.upper}, {"shape", p.shape}};
+    j["user_effects"].push_back(uj);
+  }
   j["sizes"] = sizes.asMap();
   j["lab"] = lab.toJson();
   j["calibration"] = calibration.toJson();

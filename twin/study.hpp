@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "subsystems/user_effect.hpp"
 #include "twin/model.hpp"
 #include "twin/scenario.hpp"
 #include "twin/simulator.hpp"
@@ -107,6 +108,9 @@ struct Study {
   SimulationOptions simulation;
   double noise_variance_N2 = 18000.0;
   std::vector<SensorSpec> sensors;  ///< [sensors.NAME], by name
+  /// [user_effects.NAME]: effects whose force is an expression (subsystems/user_effect.hpp),
+  /// registered with the effect registry when the study is read, by name.
+  std::vector<UserEffectSpec> user_effects;
   StudySizes sizes;
   LabSettings lab;
   CalibrationSettings calibration;

@@ -1284,20 +1284,17 @@ void CalibrationRun::sampler() {
 /// of the study's accuracy. Cheap and deterministic: never persisted, always rerun.
 void CalibrationRun::integratorCheck() {
   const auto t0 = Clock::now();
-  IntegratorCheck& c = res_.integrator;
-  c.accuracy = study_.simulation.accuracy;
-  c.accuracy_check = c.accuracy / 10;
-  c.threshold = res_.profile.threshold - res_.profile.sse_best;
+  const double accuracy = study_.simulation.accuracy, threshold = res_.profile.threshold - res_.profile.sse_best;
   const std::vector<double>& theta = res_.optimum.theta;
   if (!std::isfinite(res_.optimum.sse) || theta.size() != d_) return;
   report("integrator check", 0, 1);
   Study tight = study_;
-  tight.simulation.accuracy = c.accuracy_check;
+  tight.simulation.accuracy = accuracy / 10;
   const LabObjective fine(tight, assembly_, data_, setup_);
   const std::vector<double> eta = objective_->predict(theta), eta_fine = fine.predict(theta);
   report("integrator check", 1, 1);
-  if (eta.empty() || eta_fine.empty()) return;
-  c = assessIntegrator(eta, eta_fine, objective_->measured(), objective_->weights(), c.accuracy, c.threshold);
+  if (eta.empty() || eta_fine.empty()) return;  // a failed run: no check (ok, zero figures)
+  res_.integrator = assessIntegrator(eta, eta_fine, objective_->measured(), objective_->weights(), accuracy, threshold);
   res_.stage_wall_s.push_back({"integrator check", secondsSince(t0)});
 }
 

@@ -44,9 +44,7 @@ ImportMapping mappingFromFlags(const ImportConfig& cfg) {
     m.highpass_given = true;
   }
   m.speed_lowpass_hz = cfg.speed_lowpass_hz;
-  if (!cfg.separator.empty()) {
-    m.separator = parseSeparator(cfg.separator, "--separator");
-  }
+  if (!cfg.separator.empty()) m.separator = parseSeparator(cfg.separator, "--separator");
   if (cfg.channels.empty()) throw InputError("--channel", "is required without --map (COLUMN:CHANNEL:UNIT, repeatable)");
   for (const auto& text : cfg.channels) {
     const auto a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);

@@ -54,8 +54,9 @@ bool CsvReader::next() {
         }
         std::size_t after = k + 1;
         while (after < line.size() && (line[after] == ' ' || line[after] == '\t')) ++after;
-        if (sep_ != ' ' && after < line.size() && line[after] != sep_) throw InputError(where(), "text after a closing double quote");
-        if (sep_ == ' ' && after == k + 1 && after < line.size()) throw InputError(where(), "text after a closing double quote");
+        // The next character must be the separator; with whitespace, some space must come first.
+        if (after < line.size() && (sep_ == ' ' ? after == k + 1 : line[after] != sep_))
+          throw InputError(where(), "text after a closing double quote");
         if (escaped) {
           unquoted_.push_back(std::move(value));
           fields_.push_back(unquoted_.back());  // a deque: earlier fields stay where they are

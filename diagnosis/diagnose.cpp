@@ -161,9 +161,7 @@ nlohmann::json Figures::toJson() const {
   nlohmann::json j{{"label", label},          {"effects", effects}, {"sse_min_weighted", sse_min}, {"bic", bic},
                    {"log_evidence", log_evidence}, {"parameters", parameters}, {"folder", folder}};
   j["effect_parameters"] = paramsJson(effect_parameters);
-  j["integrator_ok"] = integrator_note.empty();
-  j["integrator_sse_jitter"] = integrator_jitter;
-  if (!integrator_note.empty()) j["integrator_note"] = integrator_note;
+  j["integrator_check"] = integrator.toJson();
   j["lack_of_fit_z"] = comparison.lack_of_fit_z;
   j["lack_of_fit_p"] = comparison.lack_of_fit_p;
   j["systematic_rms_noise_sd"] = comparison.systematic_rms_sd;
@@ -301,8 +299,7 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   optima[joinEffects(effects)] = r.optimum.theta;
   f.parameters = static_cast<int>(r.names.size());
   f.sse_min = r.optimum.sse;
-  f.integrator_note = r.integrator.message;
-  f.integrator_jitter = r.integrator.jitter;
+  f.integrator = r.integrator;
   f.bic = r.optimum.sse + f.parameters * std::log(static_cast<double>(r.n_data));
   f.log_evidence = -0.5 * f.bic;
   for (std::size_t k = n_fit_params; k < r.names.size(); ++k) {
@@ -806,8 +803,8 @@ void verdict(Diagnosis& d) {
   res.summary = "Missing effect: " + best.effect + " (ΔBIC " + fmt("%.1f", best.delta_bic) + ", explains " +
                 fmt("%.0f", 100 * best.explained) + " % of the excess residual).";
   // The evidence is a difference of two minimised SSEs, each as uncertain as the integrator's jitter.
-  const double jitter = res.base.integrator_jitter + best.fit->integrator_jitter;
-  if (!best.fit->integrator_note.empty() || !res.base.integrator_note.empty())
+  const double jitter = res.base.integrator.jitter + best.fit->integrator.jitter;
+  if (!best.fit->integrator.ok || !res.base.integrator.ok)
     res.summary += -best.delta_bic > options.bic_strong + 2 * jitter
                        ? " The integrator's jitter in the SSE (" + fmt("%.3g", jitter) + ") is far below this evidence, so the verdict stands, but the intervals do not (note below)."
                        : " Caution: the integrator's jitter in the SSE (" + fmt("%.3g", jitter) +
@@ -968,7 +965,7 @@ std::string DiagnosisResult::text() const {
       for (const auto& p : c.fit->effect_parameters)
         s += "    " + p.name + " = " + fmt("%.4g", p.mean) + " ± " + fmt("%.2g", p.sd) + " " + p.unit + "  (95 % " +
              (p.interval == "profile" ? "profile likelihood" : "posterior") + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) +
-             "])" + (c.fit->integrator_note.empty() ? "" : "  NOT TO BE TRUSTED: the integrator limits it (note below)") + "\n";
+             "])" + (c.fit->integrator.ok ? "" : "  NOT TO BE TRUSTED: the integrator limits it (note below)") + "\n";
     }
   // Every calibration whose integrator check failed (the base, the confirmed candidates, the steps).
   std::vector<const Figures*> fits{&base};
@@ -977,8 +974,8 @@ std::string DiagnosisResult::text() const {
   for (const auto& st : steps) fits.push_back(&st);
   std::set<std::string> noted;
   for (const auto* f : fits)
-    if (!f->integrator_note.empty() && noted.insert(f->folder).second)
-      s += "\n  note (" + f->label + ", " + f->folder + "): " + f->integrator_note + "\n";
+    if (!f->integrator.ok && noted.insert(f->folder).second)
+      s += "\n  note (" + f->label + ", " + f->folder + "): " + f->integrator.message + "\n";
   if (!left_out_channels.empty()) {
     s += "\n  Compared but not fitted: ";
     for (std::size_t i = 0; i < left_out_channels.size(); ++i) s += (i ? "; " : "") + left_out_channels[i];

@@ -73,10 +73,9 @@ struct Figures {
   std::optional<Comparison> holdout;  ///< on the held-out data, when given
   std::string folder;                 ///< the calibration's folder
   std::vector<EffectParameter> effect_parameters;
-  /// The calibration's integrator check (calib::IntegratorCheck): empty when the integrator is
-  /// accurate enough for these data; else why the optimum and the intervals are not to be trusted.
-  std::string integrator_note;
-  double integrator_jitter = 0;  ///< the SSE jitter the check measured at the optimum (calib::IntegratorCheck::jitter)
+  /// The calibration's integrator check: !ok when the optimum and the intervals follow the
+  /// integrator rather than the data (its message says what to tighten).
+  calib::IntegratorCheck integrator;
   nlohmann::json toJson() const;
 };
 

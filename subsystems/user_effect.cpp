@@ -3,10 +3,9 @@
 #include <muParser.h>
 
 #include <atomic>
-#include <map>
-#include <mutex>
 #include <cctype>
 #include <cmath>
+#include <mutex>
 #include <unordered_map>
 
 #include "common/errors.hpp"
@@ -73,14 +72,20 @@ class UserStrutEffect final : public Effect {
 
  private:
   Compiled& local() const {
-    // Per thread and per effect object (by a unique id, not an address that may be reused).
+    // Per thread and per definition (by a unique id, not an address that may be reused). The last
+    // one used is kept apart: a run evaluates one effect many times, so the hot path skips the map.
     thread_local std::unordered_map<std::uint64_t, std::unique_ptr<Compiled>> cache;
+    thread_local std::uint64_t last_id = 0;
+    thread_local Compiled* last = nullptr;
+    if (last_id == id_) return *last;
     auto& slot = cache[id_];
     if (!slot) {
       auto c = std::make_unique<Compiled>();
       compile(*c, spec_.force, names_, spec_.where);
       slot = std::move(c);
     }
+    last_id = id_;
+    last = slot.get();
     return *slot;
   }
   UserEffectSpec spec_;
@@ -112,14 +117,16 @@ std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec) {
   const std::string& w = spec.where;
   if (spec.element != "strut")
     throw InputError(w + ": element", "unknown element '" + spec.element + "' (known: strut)");
-  if (spec.force.empty()) throw InputError(w + ": force", "is required (an expression in q, v, k, c and the parameters)");
   const auto state = userEffectVariables(spec.element);
+  std::string state_list;
+  for (const auto& n : state) state_list += (state_list.empty() ? "" : ", ") + n;
+  if (spec.force.empty()) throw InputError(w + ": force", "is required (an expression in " + state_list + " and the parameters)");
   std::vector<std::string> seen = state;
   for (const auto& p : spec.parameters) {
     const std::string pw = w + ": parameters." + p.name;
     if (!isIdentifier(p.name)) throw InputError(pw, "a parameter's name must be letters, digits and '_', starting with a letter");
     for (const auto& s : seen)
-      if (s == p.name) throw InputError(pw, "the name is taken (state variables: q, v, k, c; or another parameter)");
+      if (s == p.name) throw InputError(pw, "the name is taken (state variables: " + state_list + "; or another parameter)");
     seen.push_back(p.name);
     if (p.unit.empty()) throw InputError(pw + ".unit", "is required (\"1\" for none)");
     if (!std::isfinite(p.lower) || !std::isfinite(p.upper) || !(p.lower < p.upper))
@@ -145,6 +152,7 @@ std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec) {
       if (!std::isfinite(f) || f != 0.0)
         throw InputError(w + ": force", "must be 0 with every parameter at its value (the effect off); at q = " + formatNumber(q) +
                                             " m, v = " + formatNumber(v) + " m/s it is " + formatNumber(f) + " N");
+      // The corners of the first 10 parameters' ranges (the others at their values): at most 1024.
       for (int corner = 0; corner < (1 << std::min<std::size_t>(spec.parameters.size(), 10)); ++corner) {
         probe = off;
         for (std::size_t i = 0; i < spec.parameters.size() && i < 10; ++i)
@@ -161,9 +169,12 @@ std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec) {
 namespace {
 
 struct UserRegistry {
+  struct Entry {
+    UserEffectSpec spec;
+    std::uint64_t id = 0;  ///< the key of the definition's compiled copies
+  };
   std::mutex m;
-  std::vector<std::shared_ptr<const UserEffectSpec>> specs;  ///< in registration order
-  std::vector<std::uint64_t> ids;                            ///< each definition's compiled-copy key
+  std::vector<Entry> entries;  ///< in registration order
 };
 UserRegistry& userRegistry() {
   static UserRegistry r;
@@ -188,29 +199,20 @@ void registerUserEffect(const UserEffectSpec& spec) {
   (void)makeUserEffect(spec);  // every check, before it becomes known
   auto& r = userRegistry();
   std::lock_guard<std::mutex> lock(r.m);
-  for (const auto& s : r.specs)
-    if (s->name == spec.name) {
-      if (sameDefinition(*s, spec)) return;
-      throw InputError(spec.where, "another definition of '" + spec.name + "' is in use (" + s->where +
+  for (const auto& e : r.entries)
+    if (e.spec.name == spec.name) {
+      if (sameDefinition(e.spec, spec)) return;
+      throw InputError(spec.where, "another definition of '" + spec.name + "' is in use (" + e.spec.where +
                                        "): one process holds one definition per name");
     }
-  r.specs.push_back(std::make_shared<const UserEffectSpec>(spec));
-  r.ids.push_back(newId());
+  r.entries.push_back({spec, newId()});
 }
 
 std::unique_ptr<Effect> makeRegisteredUserEffect(const std::string& name) {
   auto& r = userRegistry();
   std::lock_guard<std::mutex> lock(r.m);
-  for (std::size_t i = 0; i < r.specs.size(); ++i)
-    if (r.specs[i]->name == name) return std::make_unique<UserStrutEffect>(*r.specs[i], r.ids[i]);  // checked when registered
-  return nullptr;
-}
-
-std::shared_ptr<const UserEffectSpec> findUserEffect(const std::string& name) {
-  auto& r = userRegistry();
-  std::lock_guard<std::mutex> lock(r.m);
-  for (const auto& s : r.specs)
-    if (s->name == name) return s;
+  for (const auto& e : r.entries)
+    if (e.spec.name == name) return std::make_unique<UserStrutEffect>(e.spec, e.id);  // checked when registered
   return nullptr;
 }
 
@@ -218,7 +220,7 @@ std::vector<std::string> userEffectNames() {
   auto& r = userRegistry();
   std::lock_guard<std::mutex> lock(r.m);
   std::vector<std::string> out;
-  for (const auto& s : r.specs) out.push_back(s->name);
+  for (const auto& e : r.entries) out.push_back(e.spec.name);
   return out;
 }
 

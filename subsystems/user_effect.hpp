@@ -54,8 +54,6 @@ void registerUserEffect(const UserEffectSpec& spec);
 /// The effect of the registered definition `name` (no checks: they were made when it was
 /// registered), or nullptr.
 std::unique_ptr<Effect> makeRegisteredUserEffect(const std::string& name);
-/// The registered definition `name`, or nullptr.
-std::shared_ptr<const UserEffectSpec> findUserEffect(const std::string& name);
 /// The registered names, in the order they were registered.
 std::vector<std::string> userEffectNames();
 

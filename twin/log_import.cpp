@@ -148,10 +148,6 @@ std::string absolutizedStudyText(const std::string& text, const toml::table& roo
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 /// Days from 1970-01-01 to y-m-d, proleptic Gregorian (H. Hinnant's days_from_civil).
 long daysFromCivil(long y, unsigned m, unsigned d) {
   y -= m <= 2;
@@ -441,16 +437,14 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   // back by more than 12 hours is the next day (a drive past midnight).
   const bool clock = m.time.unit == "clock";
   long day0 = 0, day = 0;
-  bool first_clock = true;
   std::string previous_time;
   double previous_seconds = 0.0;
   auto clockSeconds = [&](std::string_view cell) {
     ClockTime c;
     if (!parseClockTime(cell, c))
       throw cellError(i_time, "'" + std::string(cell) + "' is not a clock time (HH:MM:SS[.fff], optionally after a date YYYY-MM-DD and 'T' or a space)");
-    if (first_clock) {
+    if (t.empty()) {  // the first row
       day0 = c.day;
-      first_clock = false;
     } else if (!c.has_date && c.seconds < previous_seconds - 43200.0) {
       ++day;
     }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <sstream>
 
@@ -70,6 +71,10 @@ nlohmann::json CalibrationSetup::toJson() const {
   }
   j["channel_weights"] = nlohmann::json::object();
   for (const auto& [c, w] : channel_weights) j["channel_weights"][c] = w;
+  // Written only when used: the fingerprint of every setup without them is as before.
+  if (!freed.empty()) j["freed"] = freed;
+  for (const auto& m : sensor_models)
+    j["sensor_models"].push_back({{"name", m.name}, {"kind", m.kind}, {"channels", m.channels}});
   return j;
 }
 
@@ -98,29 +103,56 @@ CalibrationSetup CalibrationSetup::fromJson(const nlohmann::json& j) {
     s.extra_calibrated.push_back(c);
   }
   for (const auto& [k, v] : j.at("channel_weights").items()) s.channel_weights[k] = v.get<double>();
+  if (j.contains("freed")) s.freed = j.at("freed").get<std::vector<std::string>>();
+  if (j.contains("sensor_models"))
+    for (const auto& m : j.at("sensor_models"))
+      s.sensor_models.push_back(
+          {m.at("name").get<std::string>(), m.at("kind").get<std::string>(), m.at("channels").get<std::vector<std::string>>()});
   return s;
 }
 
 // ------------------------------------------------------------------ LabObjective
 LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, const LabData& data,
                            const std::string& scenario, const std::vector<EffectSetting>& extra_effects)
-    : LabObjective(study, assembly, std::vector<DataSet>{DataSet{"lab data", scenario, data}},
-                   CalibrationSetup{extra_effects, {}, {}}) {}
+    : LabObjective(study, assembly, std::vector<DataSet>{DataSet{"lab data", scenario, data}}, [&] {
+        CalibrationSetup s;
+        s.extra_effects = extra_effects;
+        return s;
+      }()) {}
 
 LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
                            const CalibrationSetup& setup)
     : pool_(std::make_unique<Pool>()) {
-  model_ = study.makeModel(assembly, setup.extra_effects);
+  AssemblySpec spec = assembly;
+  spec.freed.insert(spec.freed.end(), setup.freed.begin(), setup.freed.end());
+  model_ = study.makeModel(spec, setup.extra_effects);
   if (study.calibrated.empty()) throw InputError(study.path + ": calibrated", "the study names no calibrated parameters");
   if (data.empty()) throw InputError("calibration", "no data sets given");
+  const auto channels = Simulator::channels(model_->sensors());
+  // A sensor model's parameter distorts the predictions (distort); it is no run parameter.
+  auto sensorModelOf = [&](const std::string& name, const std::string& where) -> std::optional<SensorModelUse> {
+    for (const auto& m : setup.sensor_models) {
+      if (name != m.name + "." + sensorModelParameter(m.kind, where).name) continue;
+      SensorModelUse use{m.kind, {}, names_.size()};
+      for (const auto& ch : m.channels) {
+        const auto it = std::find_if(channels.begin(), channels.end(), [&](const Channel& k) { return k.name == ch; });
+        if (it == channels.end()) throw InputError(where, "sensor model " + m.name + ": unknown channel '" + ch + "'");
+        use.columns.push_back(static_cast<int>(it - channels.begin()));
+      }
+      return use;
+    }
+    return std::nullopt;
+  };
   auto add = [&](const CalibratedParameter& c, const std::string& where) {
-    const int slot = model_->slot(c.name);
-    if (slot < 0)
+    const auto sensor_model = sensorModelOf(c.name, where);
+    const int slot = sensor_model ? -1 : model_->slot(c.name);
+    if (!sensor_model && slot < 0)
       throw InputError(where, "'" + c.name + "' is not a parameter of assembly " + assembly.id + " (" +
                                   model_->assembly().label() + ")");
     if (std::find(names_.begin(), names_.end(), c.name) != names_.end())
       throw InputError(where, "'" + c.name + "' is calibrated twice");
     if (!(c.lower < c.upper)) throw InputError(where, "'" + c.name + "' needs lower < upper");
+    if (sensor_model) sensor_models_.push_back(*sensor_model);
     names_.push_back(c.name);
     lower_.push_back(c.lower);
     upper_.push_back(c.upper);
@@ -129,6 +161,10 @@ LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, con
   };
   for (const auto& c : study.calibrated) add(c, study.path + ": calibrated");
   for (const auto& c : setup.extra_calibrated) add(c, "calibrated effect parameter");
+  for (const auto& m : setup.sensor_models)
+    if (std::none_of(sensor_models_.begin(), sensor_models_.end(), [&](const SensorModelUse& u) { return names_[u.theta_index].rfind(m.name + ".", 0) == 0; }))
+      throw InputError("sensor model " + m.name, "its parameter is not calibrated (add it to extra_calibrated)");
+  rate_hz_ = study.simulation.output_rate_hz;
   base_values_ = model_->defaultRunValues();
   for (const auto& [c, w] : setup.channel_weights)
     if (!(std::isfinite(w) && w > 0)) throw InputError("channel weight of " + c, "must be finite and > 0");
@@ -166,6 +202,7 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
                        "time_s " + formatExact(r.time_s) + " lies outside scenario '" + set.scenario.name + "' (0.." +
                            formatExact(set.scenario.duration_s) + " s)");
     y_.push_back(r.value);
+    t_.push_back(r.time_s);
     where_.push_back({col, false, 0});
     t_max = std::max(t_max, r.time_s);
   }
@@ -205,7 +242,8 @@ std::vector<ScenarioSpec> LabObjective::scenarios() const {
 std::vector<double> LabObjective::runValues(const std::vector<double>& theta) const {
   DTWIN_CHECK(theta.size() == slots_.size(), "theta has the wrong size");
   std::vector<double> values = base_values_;
-  for (std::size_t j = 0; j < slots_.size(); ++j) values[static_cast<std::size_t>(slots_[j])] = theta[j];
+  for (std::size_t j = 0; j < slots_.size(); ++j)
+    if (slots_[j] >= 0) values[static_cast<std::size_t>(slots_[j])] = theta[j];
   return values;
 }
 
@@ -269,7 +307,29 @@ std::vector<double> LabObjective::predict(const std::vector<double>& theta) cons
       if (w.index >= tr.rows()) return {};
       eta[i] = tr.column(static_cast<std::size_t>(w.column))[w.index];
     }
+  if (!sensor_models_.empty()) distort(theta, rs, eta);
   return eta;
+}
+
+void LabObjective::distort(const std::vector<double>& theta, const std::vector<RunResult>& runs, std::vector<double>& eta) const {
+  std::map<int, SensorDistortion> by_column;
+  for (const auto& m : sensor_models_)
+    for (int c : m.columns) by_column[c].set(m.kind, theta[m.theta_index]);
+  for (const auto& [column, d] : by_column) {
+    if (d.identity()) continue;
+    for (std::size_t k = 0; k < sets_.size(); ++k) {
+      std::vector<std::size_t> records;
+      std::vector<double> times;
+      for (std::size_t i = sets_[k].first; i < sets_[k].first + sets_[k].count; ++i)
+        if (where_[i].column == column) {
+          records.push_back(i);
+          times.push_back(t_[i]);
+        }
+      if (records.empty()) continue;
+      const auto v = distortChannel(runs[k].trace.column(static_cast<std::size_t>(column)), rate_hz_, times, d);
+      for (std::size_t j = 0; j < records.size(); ++j) eta[records[j]] = v[j];
+    }
+  }
 }
 
 std::vector<double> LabObjective::residuals(const std::vector<double>& theta) const {

@@ -58,13 +58,28 @@ struct DataSet {
 /// assembly (their values fixed, e.g. shape parameters), effect parameters calibrated along with
 /// θ (bounds: the effect's prior range), and weights of the channels in the SSE. Empty: the plain
 /// calibration of docs/method.md §4 (bit for bit as before these existed).
+/// A model of how the logger distorted some channels (subsystems/sensor.hpp, sensorModelKinds()):
+/// applied to the predictions of those channels, its parameter calibrated as
+/// "<name>.<parameter>" (an entry of extra_calibrated).
+struct SensorModelSetting {
+  std::string name;                   ///< e.g. "lowpass:hub_force"
+  std::string kind;                   ///< lowpass | lowpass2 | gain | delay
+  std::vector<std::string> channels;  ///< the channels it distorts
+};
+
 struct CalibrationSetup {
   std::vector<EffectSetting> extra_effects;
   std::vector<CalibratedParameter> extra_calibrated;
+  /// Fixed vehicle values made run parameters (AssemblySpec::freed), calibrated by the entry of
+  /// extra_calibrated of the same name.
+  std::vector<std::string> freed;
+  std::vector<SensorModelSetting> sensor_models;
   /// SSE = Σ w_c (y − η)², w_c = channel_weights[channel] (1 when absent). With w_c = 1/σ_c² the
   /// SSE is a χ² in standard units, so channels of different units can be fitted together.
   std::map<std::string, double> channel_weights;
-  bool empty() const { return extra_effects.empty() && extra_calibrated.empty() && channel_weights.empty(); }
+  bool empty() const {
+    return extra_effects.empty() && extra_calibrated.empty() && channel_weights.empty() && freed.empty() && sensor_models.empty();
+  }
   /// Everything that changes the numbers (part of the resume fingerprint when not empty).
   nlohmann::json toJson() const;
   /// Inverse of toJson (reads summary.json's "setup"); null gives an empty setup.
@@ -149,6 +164,17 @@ class LabObjective {
     std::size_t index = 0;   ///< the row (of the grid, or of the samples)
   };
   std::vector<RecordRead> where_;  ///< per record
+  std::vector<double> t_;          ///< per record: its time [s]
+  /// The setup's sensor models: the channel columns each distorts and its parameter's index in θ.
+  struct SensorModelUse {
+    std::string kind;
+    std::vector<int> columns;
+    std::size_t theta_index = 0;
+  };
+  std::vector<SensorModelUse> sensor_models_;
+  double rate_hz_ = 0.0;  ///< the output grid's rate
+  /// Applies the sensor models at θ to eta (the predictions of every record).
+  void distort(const std::vector<double>& theta, const std::vector<RunResult>& runs, std::vector<double>& eta) const;
   std::unique_ptr<Pool> pool_;
 };
 

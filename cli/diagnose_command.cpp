@@ -255,8 +255,11 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...)")->capture_default_str();
   c->add_option("--data", cfg->data, "Measurement file FILE[@SCENARIO] to fit (tidy lab layout); repeatable")->required();
   c->add_option("--holdout", cfg->holdout, "Held-out measurement file FILE[@SCENARIO] (not fitted; error reported); repeatable");
-  c->add_option("--effects", cfg->effects, "Only rank these catalogue effects (comma separated; default: all not installed)");
-  c->add_option("--apply", cfg->apply, "Add these effects in turn (comma separated) and print the before/after table");
+  c->add_option("--effects", cfg->effects,
+                "Only rank these candidates (comma separated): effects, free:<vehicle value> (e.g. free:wheel.mass_kg) or "
+                "<lowpass|lowpass2|gain|delay>:<channel group> (e.g. lowpass:hub_force); default: every effect not installed, "
+                "every freeable vehicle value and every sensor model (docs/diagnosis.md)");
+  c->add_option("--apply", cfg->apply, "Add these candidates in turn (comma separated) and print the before/after table");
   c->add_option("--candidates", cfg->candidates, "Screened effects confirmed by re-calibration (at most)")->capture_default_str()->check(CLI::Range(0, 100));
   c->add_option("--draws", cfg->draws, "Posterior rows per comparison")->capture_default_str()->check(CLI::Range(1, 100000));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));

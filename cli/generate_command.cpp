@@ -29,6 +29,8 @@ struct GenerateConfig {
   int threads = 0;
   std::vector<double> window;
   std::vector<std::string> hidden_effects;  ///< --hidden-effect NAME[:param=value,...], repeatable
+  std::vector<std::string> hidden_values;   ///< lab: --hidden-value NAME=VALUE, repeatable
+  std::vector<std::string> hidden_sensor;   ///< lab: --hidden-sensor KIND=VALUE, repeatable
   std::string times = "auto";               ///< lab: --times auto|all
   double rate = 0;                          ///< lab: --rate HZ (0: not given)
   bool force = false;
@@ -64,10 +66,31 @@ std::vector<EffectSetting> parseHidden(const std::vector<std::string>& texts) {
   return out;
 }
 
+/// NAME=VALUE texts of `flag` (a finite number after the first '=').
+std::vector<std::pair<std::string, double>> parseAssignments(const std::vector<std::string>& texts, const std::string& flag) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& t : texts) {
+    const auto eq = t.find('=');
+    double v = 0;
+    if (eq == std::string::npos || eq == 0 || !parseDouble(t.substr(eq + 1), v) || !std::isfinite(v))
+      throw InputError(flag, "expects NAME=VALUE with a finite number, got '" + t + "'");
+    for (const auto& [name, _] : out)
+      if (name == t.substr(0, eq)) throw InputError(flag, "'" + name + "' given twice");
+    out.push_back({t.substr(0, eq), v});
+  }
+  return out;
+}
+
 /// "twin: hidden effect: ..." on stdout (one line), unless quiet or none.
 void printHidden(const nlohmann::json& provenance) {
   if (provenance.contains("hidden_effects"))
     std::printf("hidden effect used to make the data: %s\n", hiddenEffectsSummary(provenance["hidden_effects"]).c_str());
+  if (provenance.contains("hidden_values"))
+    for (const auto& [name, v] : provenance["hidden_values"].items())
+      std::printf("hidden vehicle value used to make the data: %s = %s\n", name.c_str(), formatExact(v.get<double>()).c_str());
+  if (provenance.contains("hidden_sensor"))
+    for (const auto& [kind, v] : provenance["hidden_sensor"].items())
+      std::printf("hidden sensor model applied to the data: %s %s\n", kind.c_str(), v.dump().c_str());
 }
 
 int runLab(const GenerateConfig& cfg, const std::string& command) {
@@ -77,6 +100,8 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   LabOptions opt;
   if (!cfg.scenario.empty()) opt.scenario = cfg.scenario;
   opt.hidden_effects = parseHidden(cfg.hidden_effects);
+  for (const auto& [name, v] : parseAssignments(cfg.hidden_values, "--hidden-value")) opt.hidden_values.push_back({name, v, "--hidden-value", "--hidden-value"});
+  opt.hidden_sensor = parseAssignments(cfg.hidden_sensor, "--hidden-sensor");
   opt.times_mode = cfg.times == "all" ? LabTimesMode::All : LabTimesMode::Study;
   if (!cfg.window.empty()) {
     if (cfg.window.size() != 2) throw InputError("--window", "expects T0,T1 with T0 < T1");
@@ -200,6 +225,14 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
   lab->rate_opt = l->add_option("--rate", lab->rate,
                 "With --times all: samples per second kept [Hz] (default: the output rate; must divide it into an integer step)");
   l->add_option("--channels", lab->channels, "Channels, a,b,c (default: the study's [lab] channels)")->delimiter(',');
+  l->add_option("--hidden-value", lab->hidden_values,
+                "Make the data with this fixed vehicle value changed (for testing a diagnosis): NAME=VALUE, e.g. "
+                "wheel.mass_kg=35.35; repeatable; recorded in the sidecar")
+      ->allow_extra_args(false);
+  l->add_option("--hidden-sensor", lab->hidden_sensor,
+                "Distort every data channel by this sensor model before the noise (for testing a diagnosis): KIND=VALUE with "
+                "KIND lowpass|lowpass2 (time constant [s]), gain or delay [s], e.g. lowpass=0.0064 (25 Hz); repeatable")
+      ->allow_extra_args(false);
 
   auto* f = g->add_subcommand("field",
                               "Field data: N runs on independent random roads of the field scenario, a window of one channel at "
@@ -212,7 +245,8 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
 
   CommandHandle h;
   h.app = g;
-  h.field_flags = {{"channels", "--channels"}, {"window", "--window"}, {"rate_hz", "--rate"}, {"hidden_effects", "--hidden-effect"}};
+  h.field_flags = {{"channels", "--channels"}, {"window", "--window"}, {"rate_hz", "--rate"}, {"hidden_effects", "--hidden-effect"},
+                   {"hidden_values", "--hidden-value"}, {"hidden_sensor", "--hidden-sensor"}};
   h.run = [=]() -> int {
     try {
       if (*l) return runLab(*lab, command_line);

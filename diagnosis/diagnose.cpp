@@ -13,6 +13,7 @@
 
 #include "common/errors.hpp"
 #include "common/validate.hpp"
+#include "diagnosis/candidates.hpp"
 #include "subsystems/effect.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
@@ -55,12 +56,6 @@ double towardFar(const ParameterSpec& p, double f) {
 /// value lies inside the prior only shapes the effect of the others (a gap) and is scanned.
 bool isStrength(const ParameterSpec& p) { return p.default_value <= p.prior_lower || p.default_value >= p.prior_upper; }
 
-std::vector<const ParameterSpec*> diagnosedParameters(const Effect& e) {
-  std::vector<const ParameterSpec*> v;
-  for (const auto& p : e.parameters())
-    if (!p.shape) v.push_back(&p);
-  return v;
-}
 
 /// The fraction of Σ z² in [t0, t1] of a series.
 double chi2In(const SeriesComparison& s, double t0, double t1) {
@@ -137,23 +132,10 @@ nlohmann::json paramsJson(const std::vector<EffectParameter>& ps) {
 
 }  // namespace
 
-calib::CalibrationSetup effectSetup(const std::vector<std::string>& effects, const std::map<std::string, double>& weights) {
+calib::CalibrationSetup candidatesSetup(const std::vector<CandidateSpec>& candidates, const std::map<std::string, double>& weights) {
   calib::CalibrationSetup s;
   s.channel_weights = weights;
-  for (const auto& name : effects) {
-    const auto e = makeEffect(name, "effect");
-    EffectSetting es;
-    es.name = name;
-    s.extra_effects.push_back(es);
-    for (const auto* p : diagnosedParameters(*e)) {
-      CalibratedParameter c;
-      c.name = name + "." + p->name;
-      c.unit = p->unit;
-      c.lower = p->prior_lower;
-      c.upper = p->prior_upper;
-      s.extra_calibrated.push_back(c);
-    }
-  }
+  for (const auto& c : candidates) c.install(s);
   return s;
 }
 
@@ -192,7 +174,11 @@ void DiagnoseOptions::validate() const {
     const auto& names = std::string(field) == "effects" ? effects : apply;
     std::set<std::string> seen;
     for (const auto& e : names) {
-      makeEffect(e, check.where(field));  // InputError naming the nearest and every known effect
+      // An effect's name: InputError naming the nearest and every known effect. A freed value or a
+      // sensor model is checked against the study and the data (catalogueOf).
+      if (e.find(':') == std::string::npos) makeEffect(e, check.where(field));
+      check.require(isCandidateName(e), field,
+                    "'" + e + "' is not a candidate: an effect, free:<vehicle value> or <lowpass|lowpass2|gain|delay>:<channel group>");
       check.require(seen.insert(e).second, field, "names '" + e + "' twice");
     }
   }
@@ -215,13 +201,21 @@ struct Diagnosis {
   std::map<std::string, double> weights;              ///< 1/σ_c² per fitted channel
   std::vector<calib::DataSet> fit_sets, hold_sets;    ///< the fitted channels of the fit and held-out data
   std::string data_hash;                              ///< of fit_sets: a calibration folder's identity
-  std::vector<std::string> catalogue;                 ///< the effects ranked (none installed)
+  std::vector<std::string> catalogue;                 ///< the candidates ranked (no installed effect)
+  std::map<std::string, CandidateSpec> specs;         ///< every candidate of the catalogue and of options.apply
   std::map<std::string, std::vector<double>> optima;  ///< every calibration's optimum, by joinEffects(effects)
   std::unique_ptr<calib::LabObjective> base_obj;      ///< the base model on fit_sets (screening, refinement)
   DiagnosisResult res;
 
   void report(const std::string& stage, std::size_t done, std::size_t total) const {
     if (progress) progress(stage, done, total);
+  }
+  const CandidateSpec& spec(const std::string& name) const { return specs.at(name); }
+  /// The calibration setup with `names` installed, weighted by `weights`.
+  calib::CalibrationSetup setupOf(const std::vector<std::string>& names) const {
+    std::vector<CandidateSpec> cs;
+    for (const auto& n : names) cs.push_back(spec(n));
+    return candidatesSetup(cs, weights);
   }
   /// One calibration with `effects` installed (persisted under out_dir/calibrations, resumable),
   /// compared on the fit and held-out data. effect_start, theta_start: the screening's estimate of
@@ -239,15 +233,10 @@ struct Diagnosis {
                       const std::string& stage) const;
 };
 
-/// The off values of the diagnosed (non-shape) parameters of `effects`, in order.
-std::vector<double> offValues(const std::vector<std::string>& effects) {
+/// The off values of the diagnosed parameters of a candidate, in order.
+std::vector<double> offValues(const CandidateSpec& c) {
   std::vector<double> v;
-  for (const auto& e : effects) {
-    // The effect must outlive the loop: diagnosedParameters points into it (a temporary in the
-    // range expression died before the loop body; AddressSanitizer found it).
-    const auto effect = makeEffect(e, "effect");
-    for (const auto* p : diagnosedParameters(*effect)) v.push_back(p->default_value);
-  }
+  for (const auto& p : c.parameters) v.push_back(p.default_value);
   return v;
 }
 
@@ -263,7 +252,7 @@ std::vector<std::vector<double>> Diagnosis::extraStarts(const std::vector<std::s
   const auto it = optima.find(joinEffects(nested));
   if (it == optima.end()) return starts;
   auto x = it->second;
-  for (double v : offValues({effects.back()})) x.push_back(v);
+  for (double v : offValues(spec(effects.back()))) x.push_back(v);
   starts.push_back(x);
   if (effect_start.empty()) return starts;
   auto y = it->second;
@@ -286,7 +275,7 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   // A base started from a better point than its own optimum (see refine) has its own folder.
   f.folder = (fs::path(out_dir) / "calibrations" / (joinEffects(effects) + (effects.empty() && !theta_start.empty() ? ".refined" : "")))
                  .string();
-  const auto setup = effectSetup(effects, weights);
+  const auto setup = setupOf(effects);
   auto copt = options.calibration;
   copt.threads = options.threads;
   copt.command = options.command;
@@ -350,18 +339,24 @@ void Diagnosis::compareFigures(Figures& f, const calib::CalibrationResult& r, co
 
 // ------------------------------------------------------------------ inputs
 
-/// The effects to rank: options.effects, or every registered effect not installed in the assembly
-/// or the study. Throws InputError when options.effects or options.apply names an installed one.
-std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& assembly, const DiagnoseOptions& options) {
+/// The candidates to rank: options.effects, or the default catalogue (candidates.hpp) without the
+/// effects installed in the assembly or the study, on data with the fitted `channels`. Their specs
+/// and those of options.apply go into `specs`. Throws InputError when options.effects or
+/// options.apply names an installed effect or a candidate these study and data do not have.
+std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& assembly, const DiagnoseOptions& options,
+                                     const std::vector<std::string>& channels, std::map<std::string, CandidateSpec>& specs) {
   const OptionCheck check("diagnose");
   std::set<std::string> installed(assembly.effects.begin(), assembly.effects.end());
   for (const auto& e : study.effects) installed.insert(e.name);
   const std::string rule = " is already installed in assembly " + assembly.id + " or the study's [effects]";
   for (const auto& e : options.effects) check.require(!installed.count(e), "effects", "'" + e + "'" + rule);
   for (const auto& e : options.apply) check.require(!installed.count(e), "apply", "'" + e + "'" + rule);
-  std::vector<std::string> catalogue = options.effects.empty() ? effectNames() : options.effects;
+  std::vector<std::string> catalogue = options.effects.empty() ? defaultCandidates(assembly, channels) : options.effects;
   catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const std::string& e) { return installed.count(e) > 0; }),
                   catalogue.end());
+  for (const char* field : {"effects", "apply"})
+    for (const auto& e : std::string(field) == "effects" ? catalogue : options.apply)
+      if (!specs.count(e)) specs.emplace(e, candidateSpec(e, study, assembly, channels, check.where(field)));
   return catalogue;
 }
 
@@ -450,19 +445,18 @@ struct ProbeGroup {
 /// The probes of effect `e` (docs/diagnosis.md, screening): every strength parameter at 5, 20 and
 /// 60 % of the way to its far prior end, for every point of the scan (10, 30, 60 % of the prior)
 /// of the parameters whose off value lies inside their prior.
-std::vector<ProbeGroup> probesOf(std::size_t e, const Effect& effect) {
-  const auto ps = diagnosedParameters(effect);
-  std::vector<double> off;
-  for (const auto* p : ps) off.push_back(p->default_value);
+std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate) {
+  const auto& ps = candidate.parameters;
+  const std::vector<double> off = offValues(candidate);
   std::vector<std::size_t> strength, scan;
-  for (std::size_t k = 0; k < ps.size(); ++k) (k == 0 || isStrength(*ps[k]) ? strength : scan).push_back(k);
+  for (std::size_t k = 0; k < ps.size(); ++k) (k == 0 || isStrength(ps[k]) ? strength : scan).push_back(k);
   std::vector<std::vector<double>> scans{off};
   for (std::size_t k : scan) {
     std::vector<std::vector<double>> next;
     for (const auto& base_v : scans)
       for (double f : {0.1, 0.3, 0.6}) {
         auto v = base_v;
-        v[k] = ps[k]->prior_lower + f * (ps[k]->prior_upper - ps[k]->prior_lower);
+        v[k] = ps[k].prior_lower + f * (ps[k].prior_upper - ps[k].prior_lower);
         next.push_back(v);
       }
     scans = next;
@@ -473,7 +467,7 @@ std::vector<ProbeGroup> probesOf(std::size_t e, const Effect& effect) {
       ProbeGroup g{e, {}};
       for (std::size_t k : strength) {
         auto v = sv;
-        v[k] = towardFar(*ps[k], level);
+        v[k] = towardFar(ps[k], level);
         g.cols.push_back(v);
       }
       groups.push_back(g);
@@ -486,7 +480,7 @@ std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::v
                                                 const std::vector<double>& theta_hat) {
   std::vector<std::unique_ptr<calib::LabObjective>> eff_obj;
   for (const auto& e : d.catalogue)
-    eff_obj.push_back(std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, effectSetup({e}, d.weights)));
+    eff_obj.push_back(std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({e})));
   std::vector<std::pair<std::size_t, std::size_t>> jobs;  // (group, column)
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t c = 0; c < groups[g].cols.size(); ++c) jobs.push_back({g, c});
@@ -541,14 +535,13 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
     cand.score_dof = static_cast<int>(rank);
     // Column c probes one strength parameter at value v_c (the others off): the linearised
     // fit says the parameter is off + coef_c (v_c − off), clipped to the prior.
-    const auto eff = makeEffect(d.catalogue[e], "effect");
-    const auto ps = diagnosedParameters(*eff);
+    const auto& ps = d.spec(d.catalogue[e]).parameters;
     std::vector<double> est = groups[g].cols[0];
     for (std::size_t col = 0; col < groups[g].cols.size(); ++col)
       for (std::size_t k = 0; k < ps.size(); ++k)
-        if (groups[g].cols[col][k] != ps[k]->default_value && (k == 0 || isStrength(*ps[k]))) {
-          const double v = ps[k]->default_value + coef[static_cast<long>(col)] * (groups[g].cols[col][k] - ps[k]->default_value);
-          est[k] = std::clamp(v, ps[k]->prior_lower, ps[k]->prior_upper);
+        if (groups[g].cols[col][k] != ps[k].default_value && (k == 0 || isStrength(ps[k]))) {
+          const double v = ps[k].default_value + coef[static_cast<long>(col)] * (groups[g].cols[col][k] - ps[k].default_value);
+          est[k] = std::clamp(v, ps[k].prior_lower, ps[k].prior_upper);
         }
     cand.screening_estimate = est;
     // The base parameters of the joint linearised fit r ≈ J δθ + G c: δθ = J⁺ (r − G c).
@@ -580,15 +573,16 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
     auto& c = d.res.candidates[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
     if (c.max_signal == 0.0) {
-      const auto eff = makeEffect(c.effect, "effect");
-      const std::string threshold = eff->engagementThreshold();
+      const auto& spec = d.spec(c.effect);
+      const std::string& threshold = spec.engagement_threshold;
       if (!threshold.empty()) {
         if (!max_compression) max_compression = maxCompression(d, theta_hat);
-        const double smallest = eff->parameters()[parameterIndex(eff->parameters(), threshold)].prior_lower;
+        const double smallest = spec.parameters[parameterIndex(spec.parameters, threshold)].prior_lower;
         c.gate = "the suspension never compresses beyond the smallest plausible " + withoutUnit(threshold) + " (" +
                  fmt("%.3g", *max_compression) + " m < " + fmt("%.3g", smallest) + " m): " + inWords(c.effect) + " cannot act here";
       } else {
-        c.gate = "exerts no force in these runs at any plausible value";
+        c.gate = spec.kind == "effect" ? "exerts no force in these runs at any plausible value"
+                                       : "changes nothing in these data at any plausible value";
       }
     } else if (c.max_signal < 1.0) {
       c.gate = "its largest plausible contribution, after re-calibrating the base parameters, is below the noise (" +
@@ -603,15 +597,16 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
 /// contribution at a few probe values, with what re-calibrating θ could absorb projected out,
 /// scored against the residual; fills res.candidates (score, p-value, gate, screening estimates).
 void screen(Diagnosis& d) {
-  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, effectSetup({}, d.weights));
+  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
   const Linearisation lin = linearise(d);
   std::vector<ProbeGroup> groups;
   d.res.candidates.resize(d.catalogue.size());
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
-    const auto eff = makeEffect(d.catalogue[e], "effect");
-    for (auto& g : probesOf(e, *eff)) groups.push_back(std::move(g));
+    const auto& spec = d.spec(d.catalogue[e]);
+    for (auto& g : probesOf(e, spec)) groups.push_back(std::move(g));
     d.res.candidates[e].effect = d.catalogue[e];
-    d.res.candidates[e].signature = eff->signature();
+    d.res.candidates[e].kind = spec.kind;
+    d.res.candidates[e].signature = spec.signature;
   }
   const auto probe_eta = simulateProbes(d, groups, lin.theta_hat);
   const auto any_failed = scoreProbes(d, lin, groups, probe_eta);
@@ -638,6 +633,9 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
     c.confirmed = true;
     const std::string stage = "confirm " + c.effect + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
     c.fit = d.calibrateWith({c.effect}, stage, c.screening_estimate, c.screening_theta);
+    std::vector<double> values;
+    for (const auto& p : c.fit->effect_parameters) values.push_back(p.mean);
+    c.finding = d.spec(c.effect).finding(values);
   }
   return to_confirm;
 }
@@ -726,8 +724,8 @@ std::string bandFixed(const Comparison& base, const Comparison& with) {
 
 /// The effect's residual signature (Effect::residualSignature) as the base residual shows it, in
 /// words ("" if the effect names none or it explains <= 10 % of its map).
-std::string signatureSeen(const Comparison& base, const std::string& effect) {
-  const ResidualSignature sig = makeEffect(effect, "effect")->residualSignature();
+std::string signatureSeen(const Comparison& base, const CandidateSpec& candidate) {
+  const ResidualSignature& sig = candidate.residual_signature;
   if (sig.state_map.empty()) return "";
   double ef = 0.0;
   std::string txt;
@@ -744,7 +742,7 @@ std::string signatureSeen(const Comparison& base, const std::string& effect) {
 }
 
 /// One plain sentence per candidate: why it is ranked where it is.
-std::string whyOf(const Candidate& c, const Comparison& base, const DiagnoseOptions& options) {
+std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Comparison& base, const DiagnoseOptions& options) {
   if (!c.gate.empty()) return c.effect + ": not a candidate: " + c.gate + ".";
   if (!c.confirmed)
     return c.effect + ": screening score " + fmt("%.3g", c.score) + " (p = " + fmt("%.2g", c.p_value) + ")" +
@@ -755,7 +753,8 @@ std::string whyOf(const Candidate& c, const Comparison& base, const DiagnoseOpti
   if (!where.empty()) s += "; " + where;
   const std::string band = bandFixed(base, c.fit->comparison);
   if (!band.empty()) s += "; lowers the " + band;
-  const std::string sig = signatureSeen(base, c.effect);
+  if (!c.finding.empty()) s += "; " + c.finding;
+  const std::string sig = signatureSeen(base, spec);
   if (!sig.empty()) s += "; its signature is in the data: " + sig;
   if (c.holdout_change) s += "; held-out systematic error x" + fmt("%.2f", *c.holdout_change);
   return s + ".";
@@ -768,7 +767,7 @@ void verdict(Diagnosis& d) {
   auto& res = d.res;
   const auto& options = d.options;
   const Comparison& base = res.base.comparison;
-  for (auto& c : res.candidates) c.why = whyOf(c, base, options);
+  for (auto& c : res.candidates) c.why = whyOf(c, d.spec(c.effect), base, options);
   const double alpha = options.lack_of_fit_alpha;
   const bool base_bad = base.lack_of_fit_p < alpha;
   std::vector<const Candidate*> named;
@@ -800,8 +799,15 @@ void verdict(Diagnosis& d) {
   }
   res.verdict = "effect";
   res.named_effect = best.effect;
-  res.summary = "Missing effect: " + best.effect + " (ΔBIC " + fmt("%.1f", best.delta_bic) + ", explains " +
-                fmt("%.0f", 100 * best.explained) + " % of the excess residual).";
+  res.named_kind = best.kind;
+  res.finding = best.finding;
+  const std::string evidence = "ΔBIC " + fmt("%.1f", best.delta_bic) + ", explains " + fmt("%.0f", 100 * best.explained) + " % of the excess residual";
+  if (best.kind == "parameter")
+    res.summary = "Wrong vehicle value: " + best.finding + " (" + best.effect + ", " + evidence + ").";
+  else if (best.kind == "sensor")
+    res.summary = "Sensor distortion: " + best.finding + " (" + best.effect + ", " + evidence + ").";
+  else
+    res.summary = "Missing effect: " + best.effect + " (" + evidence + ").";
   // The evidence is a difference of two minimised SSEs, each as uncertain as the integrator's jitter.
   const double jitter = res.base.integrator.jitter + best.fit->integrator.jitter;
   if (!best.fit->integrator.ok || !res.base.integrator.ok)
@@ -864,14 +870,18 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
   const double base_params = static_cast<double>(study.calibrated.size());
   // Screening: a linearisation (two runs per parameter) and every probe column of every effect.
   double probe_runs = 2 * base_params, most_effect_params = 0;
-  for (const auto& e : catalogueOf(study, assembly, options)) {
-    const auto eff = makeEffect(e, "effect");
-    const auto groups = probesOf(0, *eff);
+  std::vector<std::string> channels;
+  for (const auto& s : fit)
+    for (const auto& ch : s.data.channels())
+      if (std::find(channels.begin(), channels.end(), ch) == channels.end()) channels.push_back(ch);
+  std::map<std::string, CandidateSpec> specs;
+  for (const auto& e : catalogueOf(study, assembly, options, channels, specs)) {
+    const auto groups = probesOf(0, specs.at(e));
     for (const auto& g : groups) probe_runs += static_cast<double>(g.cols.size());
-    most_effect_params = std::max(most_effect_params, static_cast<double>(diagnosedParameters(*eff).size()));
+    most_effect_params = std::max(most_effect_params, static_cast<double>(specs.at(e).parameters.size()));
   }
   double applied_params = 0;
-  for (const auto& e : options.apply) applied_params += static_cast<double>(diagnosedParameters(*makeEffect(e, "apply")).size());
+  for (const auto& e : options.apply) applied_params += static_cast<double>(specs.at(e).parameters.size());
   const double starts = static_cast<double>(c.optimizer_starts) + 2;  // the screening's and the nested optimum's starts
   auto calibration = [&](const std::string& stage, double count, double params) {
     const double sims = count * calibrationSimulations(design_points, starts, params);
@@ -895,9 +905,9 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
   options.validate();
   if (fit.empty()) throw InputError(OptionCheck("diagnose").where("fit"), "needs at least one measurement data set");
   Diagnosis d(study, assembly, options, out_dir, progress);
-  d.catalogue = catalogueOf(study, assembly, options);
   d.res.assembly = assembly.id;
   prepareData(d, fit, holdout);
+  d.catalogue = catalogueOf(study, assembly, options, d.res.fitted_channels, d.specs);
   d.res.base = d.calibrateWith({}, "base");
   screen(d);
   const auto confirmed = confirm(d);
@@ -912,7 +922,11 @@ nlohmann::json DiagnosisResult::toJson() const {
   j["assembly"] = assembly;
   j["verdict"] = verdict;
   j["summary"] = summary;
-  if (!named_effect.empty()) j["effect"] = named_effect;
+  if (!named_effect.empty()) {
+    j["effect"] = named_effect;
+    j["kind"] = named_kind;
+    j["finding"] = finding;
+  }
   j["ambiguous_with"] = ambiguous_with;
   if (verdict != "none") j["unexplained_location"] = unexplained_location;
   j["fitted_channels"] = fitted_channels;
@@ -923,7 +937,7 @@ nlohmann::json DiagnosisResult::toJson() const {
   j["ranked"] = nlohmann::json::array();
   j["screening"] = nlohmann::json::array();
   for (const auto& c : candidates) {
-    nlohmann::json s{{"effect", c.effect},     {"score", c.score},         {"score_dof", c.score_dof}, {"p_value", c.p_value},
+    nlohmann::json s{{"effect", c.effect},     {"kind", c.kind},           {"score", c.score},         {"score_dof", c.score_dof}, {"p_value", c.p_value},
                      {"max_signal", c.max_signal}, {"gate", c.gate},       {"confirmed", c.confirmed}, {"why", c.why},
                      {"signature", c.signature}};
     j["screening"].push_back(s);
@@ -933,6 +947,8 @@ nlohmann::json DiagnosisResult::toJson() const {
                      {"log_evidence_vs_base", c.fit->log_evidence - base.log_evidence},
                      {"delta_bic", c.delta_bic},
                      {"explained_fraction", c.explained},
+                     {"kind", c.kind},
+                     {"finding", c.finding},
                      {"parameters", paramsJson(c.fit->effect_parameters)},
                      {"why", c.why},
                      {"fit", c.fit->toJson()}};

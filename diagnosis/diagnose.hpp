@@ -29,6 +29,7 @@
 
 #include "common/progress.hpp"
 #include "calibration/calibrate.hpp"
+#include "diagnosis/candidates.hpp"
 #include "diagnosis/compare.hpp"
 #include "diagnosis/measurements.hpp"
 
@@ -80,7 +81,10 @@ struct Figures {
 };
 
 struct Candidate {
-  std::string effect, signature;
+  std::string effect;        ///< the candidate's name (an effect, free:<value> or <sensor model>:<group>)
+  std::string kind;          ///< "effect" | "parameter" | "sensor" (candidates.hpp)
+  std::string signature;
+  std::string finding;       ///< confirmed: what the calibrated candidate says, in words (CandidateSpec::finding)
   std::string gate;          ///< empty: passed the gate; else why it cannot matter here
   double score = 0;          ///< max over probes of rᵀ P r
   int score_dof = 1;
@@ -102,7 +106,9 @@ struct Candidate {
 struct DiagnosisResult {
   std::string assembly, verdict;  ///< verdict: "effect" | "none" | "unexplained"
   std::string summary;            ///< plain sentences
-  std::string named_effect;       ///< when verdict == "effect"
+  std::string named_effect;       ///< when verdict == "effect": the candidate named (an effect, a freed value or a sensor model)
+  std::string named_kind;         ///< its kind: "effect" | "parameter" | "sensor"
+  std::string finding;            ///< a freed value or a sensor model: what it found, in words
   std::vector<std::string> ambiguous_with;
   std::string unexplained_location;
   Figures base;
@@ -134,8 +140,8 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
                          const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options,
                          const std::string& out_dir, const DiagnoseProgress& progress = {});
 
-/// The calibration setup of `effects` (each installed, its non-shape parameters calibrated over
-/// its prior range) with the channel weights.
-calib::CalibrationSetup effectSetup(const std::vector<std::string>& effects, const std::map<std::string, double>& weights);
+/// The calibration setup of `candidates` (each installed, its diagnosed parameters calibrated over
+/// their prior range) with the channel weights.
+calib::CalibrationSetup candidatesSetup(const std::vector<CandidateSpec>& candidates, const std::map<std::string, double>& weights);
 
 }  // namespace dtwin::diag

@@ -1,5 +1,6 @@
 #include "subsystems/sensor.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -7,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/names.hpp"
 
 namespace dtwin {
 
@@ -139,6 +141,73 @@ std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const 
     y[k + 1] = x(0);
   }
   return y;
+}
+
+const std::vector<std::string>& sensorModelKinds() {
+  static const std::vector<std::string> kinds = {"lowpass", "lowpass2", "gain", "delay"};
+  return kinds;
+}
+
+ParameterSpec sensorModelParameter(const std::string& kind, const std::string& where) {
+  ParameterSpec p;
+  if (kind == "lowpass" || kind == "lowpass2") {
+    p = {"time_constant_s", "s", std::string(kind == "lowpass" ? "first-order" : "second-order Butterworth") +
+                                     " low-pass time constant 1/(2 pi f_c) (off: 0; 0.05 s is 3.2 Hz)",
+         0.0, 0.0};
+    p.prior_lower = 0.0;
+    p.prior_upper = 0.05;
+  } else if (kind == "gain") {
+    p = {"gain", "1", "gain of the channel (off: 1)", 1.0, 0.0};
+    p.min_inclusive = false;
+    p.prior_lower = 0.5;
+    p.prior_upper = 1.5;
+  } else if (kind == "delay") {
+    p = {"delay_s", "s", "time offset: the record at t is the signal at t - delay_s (off: 0)", 0.0};
+    p.prior_lower = -0.05;
+    p.prior_upper = 0.05;
+  } else {
+    throw InputError(where, unknownNameRule("sensor model", kind, sensorModelKinds()));
+  }
+  return p;
+}
+
+void SensorDistortion::set(const std::string& kind, double value) {
+  if (kind == "gain") {
+    gain = value;
+  } else if (kind == "delay") {
+    delay_s = value;
+  } else {
+    DTWIN_CHECK(kind == "lowpass" || kind == "lowpass2", "SensorDistortion: unknown kind " + kind);
+    filter.order = value > 0 ? (kind == "lowpass" ? 1 : 2) : 0;
+    filter.cutoff_hz = value > 0 ? 1.0 / (2.0 * kPi * value) : 0.0;
+  }
+}
+
+std::vector<double> distortChannel(const std::vector<double>& grid, double rate_hz, const std::vector<double>& times,
+                                   const SensorDistortion& d) {
+  DTWIN_CHECK(!grid.empty() && rate_hz > 0, "distortChannel: empty grid");
+  const std::vector<double> y = lowPass(grid, rate_hz, d.filter);
+  const long n = static_cast<long>(y.size());
+  auto at = [&](long k) { return y[static_cast<std::size_t>(std::clamp(k, 0L, n - 1))]; };
+  std::vector<double> out;
+  out.reserve(times.size());
+  for (double t : times) {
+    double s = std::clamp((t - d.delay_s) * rate_hz, 0.0, static_cast<double>(n - 1));
+    if (std::abs(s - std::round(s)) < 1e-9 * std::max(1.0, s)) s = std::round(s);  // a grid time, up to rounding
+    const long k = static_cast<long>(std::floor(s));
+    const double u = s - static_cast<double>(k);
+    double v;
+    if (u == 0.0) {
+      v = at(k);
+    } else {
+      // Lagrange through k−1, k, k+1, k+2 at offset u in [0, 1).
+      const double wm = -u * (u - 1) * (u - 2) / 6, w0 = (u + 1) * (u - 1) * (u - 2) / 2, w1 = -(u + 1) * u * (u - 2) / 2,
+                   w2 = (u + 1) * u * (u - 1) / 6;
+      v = wm * at(k - 1) + w0 * at(k) + w1 * at(k + 1) + w2 * at(k + 2);
+    }
+    out.push_back(d.gain * v);
+  }
+  return out;
 }
 
 }  // namespace dtwin

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "subsystems/parameter.hpp"
+
 namespace dtwin {
 
 /// π (C++17 has no std::numbers).
@@ -70,5 +72,31 @@ Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion
 /// filter augmented with the input and its slope. For a sampled sinusoid of angular frequency ω
 /// the error is at most max|H| (ω/rate_hz)²/8 (the linear reading's). Order 0 returns u.
 std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const SensorFilter& f);
+
+/// How a logger may have distorted a channel (twin diagnose's sensor candidates, docs/diagnosis.md):
+///   lowpass   a first-order low-pass,           parameter time_constant_s τ = 1/ωc (off: 0)
+///   lowpass2  a second-order Butterworth,       parameter time_constant_s τ = 1/ωc (off: 0)
+///   gain      a gain error y = g u,             parameter gain g (off: 1)
+///   delay     a time offset y(t) = u(t − d),    parameter delay_s d (off: 0; > 0 the record lags)
+const std::vector<std::string>& sensorModelKinds();
+
+/// The parameter of a sensor model `kind` (name, unit, off value, prior range); InputError(where,
+/// rule) for an unknown kind.
+ParameterSpec sensorModelParameter(const std::string& kind, const std::string& where);
+
+/// What every sensor model of one channel does together: y(t) = gain · (H u)(t − delay_s).
+struct SensorDistortion {
+  double gain = 1.0, delay_s = 0.0;
+  SensorFilter filter;  ///< order 0: none
+  /// Sets the parameter of one model `kind` to `value` (time constant, gain or delay).
+  void set(const std::string& kind, double value);
+  bool identity() const { return gain == 1.0 && delay_s == 0.0 && filter.order == 0; }
+};
+
+/// `grid` (a channel sampled at `rate_hz` from t = 0, starting at rest) distorted by `d`, read at
+/// `times`: filtered exactly (lowPass), then read at t − delay_s by the four-point Lagrange cubic
+/// of the grid (exact at a grid time; clamped to the grid's ends), then scaled.
+std::vector<double> distortChannel(const std::vector<double>& grid, double rate_hz, const std::vector<double>& times,
+                                   const SensorDistortion& d);
 
 }  // namespace dtwin

@@ -9,6 +9,7 @@
 
 #include "subsystems/effect.hpp"
 #include "common/errors.hpp"
+#include "common/names.hpp"
 #include "common/validate.hpp"
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
@@ -217,6 +218,20 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
                                      formatExact(w1) + " s");
 
   auto model = modelWithHidden(study, assembly, opt.hidden_effects, check.where("hidden_effects"));
+  if (!opt.hidden_values.empty()) {
+    const auto& freeable = freeableVehicleParameters();
+    for (const auto& v : opt.hidden_values)
+      if (std::find(freeable.begin(), freeable.end(), v.name) == freeable.end())
+        throw InputError(check.where("hidden_values"), unknownNameRule("vehicle value that can be changed", v.name, freeable));
+    model = study.makeModel(assembly, opt.hidden_effects, opt.hidden_values);
+  }
+  SensorDistortion distortion;
+  for (const auto& [kind, value] : opt.hidden_sensor) {
+    const ParameterSpec p = sensorModelParameter(kind, check.where("hidden_sensor"));
+    const std::string rule = checkParameterValue(p, value);
+    if (!rule.empty()) throw InputError(check.where("hidden_sensor"), kind + "." + p.name + " " + rule);
+    distortion.set(kind, value);
+  }
   auto road = makeRoad(sc, model->vehicle(), seed);
   Simulator sim(model, study.simulation);
   const auto values = model->defaultRunValues();
@@ -227,6 +242,13 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
                              ") failed: " + run.stats.message,
                          0, seed);
   if (progress) progress(1, 1);
+  if (!distortion.identity()) {
+    const auto& t = run.trace.column("time_s");
+    for (const auto& c : channels) {
+      const auto i = static_cast<std::size_t>(run.trace.index(c.name));
+      run.trace.column(i) = distortChannel(run.trace.column(i), rate, t, distortion);
+    }
+  }
 
   LabResult res;
   const double t_obstacle = obstacleTime(sc);
@@ -296,6 +318,9 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   j["format"] = "tidy CSV: repetition,time_s,channel,value (docs/data-files.md)";
   j["truth"] = truthJson(study, *model);
   if (!opt.hidden_effects.empty()) j["hidden_effects"] = hiddenEffectsJson(*model, opt.hidden_effects);
+  for (const auto& v : opt.hidden_values) j["hidden_values"][v.name] = v.value;
+  for (const auto& [kind, value] : opt.hidden_sensor)
+    j["hidden_sensor"][kind] = {{sensorModelParameter(kind, "").name, value}, {"applied_to", names}};
   std::vector<std::string> noisy, clean;
   for (const auto& c : channels) (c.unit == "N" ? noisy : clean).push_back(c.name);
   j["noise"] = {{"distribution", "independent normal N(0, variance) added to every value of a channel in N"},

@@ -72,6 +72,12 @@ struct LabOptions {
   std::optional<std::uint64_t> seed;          ///< default: the study's seed
   std::optional<double> noise_variance_N2;    ///< default: the study's [noise] variance_N2
   std::vector<EffectSetting> hidden_effects;  ///< effects switched on in the assembly that makes the data
+  /// Fixed vehicle values changed in the model that makes the data (a wheel mass 20 % heavier than
+  /// the vehicle file's): names from freeableVehicleParameters().
+  std::vector<ParameterSetting> hidden_values;
+  /// Sensor models (subsystems/sensor.hpp: kind, parameter value) applied to every data channel
+  /// before the noise, e.g. {"lowpass", 0.0064} for a 25 Hz first-order low-pass.
+  std::vector<std::pair<std::string, double>> hidden_sensor;
   LabTimesMode times_mode = LabTimesMode::Study;
   /// times_mode All: the window [T0, T1] in s (inclusive; default: [0, duration]); must lie in
   /// the scenario. Ignored (must be unset) otherwise.
@@ -110,6 +116,12 @@ struct FieldOptions {
   std::optional<std::uint64_t> seed;          ///< default: the study's seed
   std::optional<double> noise_variance_N2;    ///< default: the study's [noise] variance_N2
   std::vector<EffectSetting> hidden_effects;  ///< effects switched on in the assembly that makes the data
+  /// Fixed vehicle values changed in the model that makes the data (a wheel mass 20 % heavier than
+  /// the vehicle file's): names from freeableVehicleParameters().
+  std::vector<ParameterSetting> hidden_values;
+  /// Sensor models (subsystems/sensor.hpp: kind, parameter value) applied to every data channel
+  /// before the noise, e.g. {"lowpass", 0.0064} for a 25 Hz first-order low-pass.
+  std::vector<std::pair<std::string, double>> hidden_sensor;
   int threads = 0;                            ///< <= 0: all cores
   std::string command;
 };

@@ -44,7 +44,16 @@ std::string AssemblySpec::label() const {
   std::string out;
   for (auto& [s, o] : options) out += (out.empty() ? "" : " + ") + o;
   for (auto& e : effects) out += " + " + e;
+  for (auto& f : freed) out += " + free " + f;
   return out;
+}
+
+const std::vector<std::string>& freeableVehicleParameters() {
+  static const std::vector<std::string> names = {
+      "wheel.mass_kg",          "chassis.mass_kg",         "chassis.roll_inertia_kgm2", "chassis.pitch_inertia_kgm2",
+      "chassis.cg_height_m",    "geometry.track_m",        "solid_axle.mass_kg",        "solid_axle.roll_inertia_kgm2",
+      "solid_axle.spring_track_m"};
+  return names;
 }
 
 namespace {
@@ -162,7 +171,7 @@ void loadVehicleFile(ParameterTable& table, const std::string& path) {
 
 // ------------------------------------------------------------------ Model
 Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors)
-    : assembly_(std::move(assembly)), table_(std::move(table)), sensors_(std::move(sensors)) {
+    : assembly_(std::move(assembly)), table_(std::move(table)), sensors_(std::move(sensors)), where_(where) {
   const std::string tire = assembly_.option("tire"), susp = assembly_.option("suspension");
   if (tire.empty()) throw InputError(where, "assembly " + assembly_.id + " has no tire option");
   if (susp.empty()) throw InputError(where, "assembly " + assembly_.id + " has no suspension option");
@@ -211,6 +220,15 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
     effects_.push_back(std::move(eff));
     effect_slots_.push_back(std::move(slots));
   }
+  for (const auto& f : assembly_.freed) {
+    const auto& freeable = freeableVehicleParameters();
+    if (std::find(freeable.begin(), freeable.end(), f) == freeable.end())
+      throw InputError(where, unknownNameRule("freeable vehicle value", f, freeable));
+    if (f.rfind("solid_axle.", 0) == 0 && topology_ != SuspensionTopology::SolidAxle)
+      throw InputError(where, "'" + f + "' cannot be freed in assembly " + assembly_.id + ": it has no solid axle");
+    if (slot(f) >= 0) throw InputError(where, "'" + f + "' is freed twice");
+    freed_slots_.push_back(addRunParameter(f));
+  }
   for (const auto& n : run_names_) need(n);
   const std::string rule = checkRunValues(defaultRunValues());
   if (!rule.empty()) throw InputError(where, rule);
@@ -245,6 +263,24 @@ std::string Model::checkRunValues(const std::vector<double>& v) const {
   std::vector<double> tp;
   for (int s : tire_slots_) tp.push_back(v[static_cast<std::size_t>(s)]);
   return tire_->checkCombination(tp);
+}
+
+bool Model::builtFor(const std::vector<double>& values) const {
+  for (int s : freed_slots_) {
+    const auto i = static_cast<std::size_t>(s);
+    if (i >= values.size() || values[i] != table_.value(run_names_[i])) return false;
+  }
+  return true;
+}
+
+std::shared_ptr<const Model> Model::withFreedValues(const std::vector<double>& values) const {
+  DTWIN_CHECK(values.size() == run_names_.size(), "run vector size");
+  ParameterTable t = table_;
+  for (int s : freed_slots_) {
+    const auto i = static_cast<std::size_t>(s);
+    t.set(run_names_[i], values[i], "freed (run value)", where_ + ": " + run_names_[i]);
+  }
+  return std::make_shared<const Model>(assembly_, std::move(t), where_, sensors_);
 }
 
 double Model::staticTireLoad(int corner) const {

@@ -28,9 +28,18 @@ struct AssemblySpec {
   std::string id;                                ///< "M1"
   std::vector<std::pair<std::string, std::string>> options;  ///< (subsystem, option), study order
   std::vector<std::string> effects;              ///< installed effect names
+  /// Fixed vehicle values made run parameters (freeableVehicleParameters(); twin diagnose's
+  /// "free:" candidates): a run whose value differs rebuilds its multibody system.
+  std::vector<std::string> freed;
   std::string option(const std::string& subsystem) const;
-  std::string label() const;                     ///< "pac2002 + macpherson [+ bump_stop]"
+  std::string label() const;                     ///< "pac2002 + macpherson [+ bump_stop] [+ free wheel.mass_kg]"
 };
+
+/// The fixed vehicle values that can be freed (AssemblySpec::freed): the masses, inertias, CG
+/// height and track the multibody system is built from. The axle positions are not among them
+/// (the rear wheels meet the road one wheelbase later: the road depends on them). The solid
+/// axle's values are listed too and refused for a MacPherson assembly.
+const std::vector<std::string>& freeableVehicleParameters();
 
 /// Subsystems and options the twin knows.
 const std::map<std::string, std::vector<std::string>>& knownSubsystems();
@@ -92,6 +101,16 @@ class Model {
   int interfacePreloadSlot() const { return iface_preload_slot_; }
   const std::vector<std::vector<int>>& effectSlots() const { return effect_slots_; }
 
+  /// Run slots of the freed vehicle values (AssemblySpec::freed), in that order.
+  const std::vector<int>& freedSlots() const { return freed_slots_; }
+  /// True when `values` (a run vector) holds this model's own freed vehicle values (always true
+  /// without freed values): a system built from this model runs them.
+  bool builtFor(const std::vector<double>& values) const;
+  /// This model with the freed vehicle values of `values` written into its table (the same run
+  /// layout): what a run of `values` must be built from. InputError for a value outside its
+  /// valid range.
+  std::shared_ptr<const Model> withFreedValues(const std::vector<double>& values) const;
+
   /// Static tire load [N] and main-strut static force [N] per corner (from masses and geometry).
   double staticTireLoad(int corner) const;
   double staticStrutForce(int corner) const;
@@ -113,6 +132,8 @@ class Model {
   std::vector<int> tire_slots_, susp_slots_, iface_slots_;
   int iface_preload_slot_ = -1;
   std::vector<std::vector<int>> effect_slots_;
+  std::vector<int> freed_slots_;
+  std::string where_;
 };
 
 }  // namespace dtwin

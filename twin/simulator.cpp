@@ -933,8 +933,13 @@ Simulator::~Simulator() = default;
 const Model& Simulator::model() const { return *impl_->model; }
 const SimulationOptions& Simulator::options() const { return impl_->opt; }
 Simulator::Impl& Simulator::pick(const std::vector<double>& values) {
+  if (values.size() != impl_->model->runParameterNames().size()) return *impl_;  // begin() reports it
+  if (!impl_->model->builtFor(values)) {
+    // A freed vehicle value (a mass, an inertia) is part of the multibody system: rebuild it.
+    impl_ = std::make_unique<Impl>(impl_->model->withFreedValues(values), impl_->opt);
+    impl_filter_.reset();
+  }
   const Model& M = *impl_->model;
-  if (values.size() != M.runParameterNames().size()) return *impl_;  // begin() reports it
   bool active = false;
   for (std::size_t i = 0; i < M.effects().size(); ++i)
     if (M.effects()[i]->kind() == EffectKind::StrutFilter)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -146,4 +147,66 @@ TEST(Sensor, ChannelsAndValidation) {
   EXPECT_EQ(whereOf(b), "sensors.x.noise_sd");
   EXPECT_THROW(parseSensorQuantity("acceleration_x", "q"), InputError);
   EXPECT_EQ(parseSensorQuantity("velocity_z", "q"), SensorQuantity::VelocityZ);
+}
+
+// ------------------------------------------------------------------ sensor models (twin diagnose)
+
+namespace {
+std::vector<double> sampled(double (*f)(double), double rate, double t_end) {
+  std::vector<double> v;
+  for (int k = 0; k <= static_cast<int>(std::lround(t_end * rate)); ++k) v.push_back(f(k / rate));
+  return v;
+}
+double wave(double t) { return std::sin(2 * kPi * 3.0 * t) + 0.3 * std::cos(2 * kPi * 7.0 * t); }
+}  // namespace
+
+TEST(SensorModel, OffIsTheIdentityExactlyOnTheGrid) {
+  const double rate = 1000;
+  const auto u = sampled(wave, rate, 2.0);
+  std::vector<double> times;
+  for (int k = 0; k < 2000; k += 5) times.push_back(k / rate);
+  SensorDistortion d;
+  for (const auto& kind : sensorModelKinds()) d.set(kind, sensorModelParameter(kind, "t").default_value);
+  EXPECT_TRUE(d.identity());
+  const auto y = distortChannel(u, rate, times, d);
+  for (std::size_t i = 0; i < times.size(); ++i) EXPECT_EQ(y[i], u[static_cast<std::size_t>(5 * i)]);
+}
+
+TEST(SensorModel, GainAndDelayAreTheScaledShiftedSignal) {
+  const double rate = 1000, delay = 0.0123, gain = 1.17;  // the delay is off the grid
+  const auto u = sampled(wave, rate, 2.0);
+  SensorDistortion d;
+  d.set("gain", gain);
+  d.set("delay", delay);
+  std::vector<double> times;
+  for (double t = 0.1; t < 1.9; t += 0.0317) times.push_back(t);
+  const auto y = distortChannel(u, rate, times, d);
+  // Four-point cubic error bound: h⁴ max|u''''| 3/128 with |u''''| ≤ (2π·3)⁴ + 0.3 (2π·7)⁴.
+  const double bound = std::pow(1 / rate, 4) * (std::pow(2 * kPi * 3, 4) + 0.3 * std::pow(2 * kPi * 7, 4)) * 3.0 / 128.0;
+  for (std::size_t i = 0; i < times.size(); ++i) EXPECT_NEAR(y[i], gain * wave(times[i] - delay), gain * bound + 1e-12) << times[i];
+}
+
+TEST(SensorModel, FirstOrderLowPassHasItsClosedFormSteadyState) {
+  // u = sin ωt through 1/(1 + sτ): amplitude 1/√(1 + (ωτ)²), phase −atan(ωτ), after the transient e^{−t/τ}.
+  const double rate = 1000, f = 5.0, w = 2 * kPi * f, tau = 1.0 / (2 * kPi * 25.0);  // 25 Hz
+  std::vector<double> u;
+  for (int k = 0; k <= 3000; ++k) u.push_back(std::sin(w * k / rate));
+  SensorDistortion d;
+  d.set("lowpass", tau);
+  EXPECT_EQ(d.filter.order, 1);
+  EXPECT_NEAR(d.filter.cutoff_hz, 25.0, 1e-12);
+  std::vector<double> times;
+  for (int k = 2000; k <= 3000; k += 7) times.push_back(k / rate);
+  const auto y = distortChannel(u, rate, times, d);
+  const double amp = 1 / std::sqrt(1 + w * w * tau * tau), ph = -std::atan(w * tau);
+  for (std::size_t i = 0; i < times.size(); ++i) EXPECT_NEAR(y[i], amp * std::sin(w * times[i] + ph), 1e-4);
+}
+
+TEST(SensorModel, UnknownKindIsAnInputErrorNamingTheKnownOnes) {
+  try {
+    sensorModelParameter("highpass", "here");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lowpass"), std::string::npos) << e.what();
+  }
 }

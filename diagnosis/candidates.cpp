@@ -1,0 +1,188 @@
+#include "diagnosis/candidates.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "common/errors.hpp"
+#include "common/names.hpp"
+#include "subsystems/sensor.hpp"
+
+namespace dtwin::diag {
+namespace {
+
+constexpr const char* kFree = "free:";
+
+std::string num(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+/// The unit suffix of a channel name ("hub_force_fl_N" -> "N"), "" when it has none.
+std::string unitSuffix(const std::string& channel) {
+  const auto u = channel.rfind('_');
+  return u == std::string::npos ? "" : channel.substr(u + 1);
+}
+
+/// The freeable vehicle values `assembly` has (the solid axle's only with a solid axle).
+std::vector<std::string> freeableOf(const AssemblySpec& assembly) {
+  std::vector<std::string> out;
+  for (const auto& f : freeableVehicleParameters())
+    if (f.rfind("solid_axle.", 0) != 0 || assembly.option("suspension") == "solid_axle") out.push_back(f);
+  return out;
+}
+
+/// "wheel.mass_kg" -> "wheel mass"; "chassis.roll_inertia_kgm2" -> "chassis roll inertia".
+std::string valueInWords(const std::string& name) {
+  std::string w = name;
+  for (const char* unit : {"_kgm2", "_kg", "_m"}) {
+    const std::string u = unit;
+    if (w.size() > u.size() && w.compare(w.size() - u.size(), u.size(), u) == 0) {
+      w.resize(w.size() - u.size());
+      break;
+    }
+  }
+  std::replace(w.begin(), w.end(), '.', ' ');
+  std::replace(w.begin(), w.end(), '_', ' ');
+  return w;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(const std::vector<std::string>& channels) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> groups;
+  std::vector<std::string> units;
+  for (const auto& c : channels)
+    if (std::find(units.begin(), units.end(), unitSuffix(c)) == units.end()) units.push_back(unitSuffix(c));
+  for (const auto& u : units) {
+    std::vector<std::string> members;
+    for (const auto& c : channels)
+      if (unitSuffix(c) == u) members.push_back(c);
+    std::string name;
+    if (members.size() == 1) {
+      name = members[0].substr(0, members[0].size() - (u.empty() ? 0 : u.size() + 1));
+    } else {
+      std::string prefix = members[0];
+      for (const auto& m : members) {
+        std::size_t k = 0;
+        while (k < prefix.size() && k < m.size() && prefix[k] == m[k]) ++k;
+        prefix.resize(k);
+      }
+      const auto cut = prefix.rfind('_');
+      name = cut == std::string::npos ? "" : prefix.substr(0, cut);
+      if (name.empty()) name = u.empty() ? "channels" : u;  // nothing in common: the unit names the group
+    }
+    groups.push_back({name, members});
+  }
+  return groups;
+}
+
+bool isCandidateName(const std::string& name) {
+  if (name.rfind(kFree, 0) == 0) return name.size() > std::string(kFree).size();
+  const auto colon = name.find(':');
+  if (colon != std::string::npos) {
+    const auto& kinds = sensorModelKinds();
+    return std::find(kinds.begin(), kinds.end(), name.substr(0, colon)) != kinds.end() && colon + 1 < name.size();
+  }
+  const auto names = effectNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::vector<std::string> defaultCandidates(const AssemblySpec& assembly, const std::vector<std::string>& channels) {
+  std::vector<std::string> out = effectNames();
+  for (const auto& f : freeableOf(assembly)) out.push_back(kFree + f);
+  for (const auto& [group, members] : channelGroups(channels))
+    for (const auto& k : sensorModelKinds()) out.push_back(k + ":" + group);
+  return out;
+}
+
+CandidateSpec candidateSpec(const std::string& name, const Study& study, const AssemblySpec& assembly,
+                            const std::vector<std::string>& channels, const std::string& where) {
+  CandidateSpec c;
+  c.name = name;
+  if (name.rfind(kFree, 0) == 0) {
+    const std::string value = name.substr(std::string(kFree).size());
+    const auto freeable = freeableOf(assembly);
+    if (std::find(freeable.begin(), freeable.end(), value) == freeable.end())
+      throw InputError(where, unknownNameRule("vehicle value that can be freed in assembly " + assembly.id, value, freeable));
+    const auto table = study.parameterTable();
+    ParameterSpec p = table.at(value).spec;
+    const double v = table.value(value);
+    p.default_value = v;
+    p.prior_lower = std::max(0.5 * v, p.min_value);
+    p.prior_upper = std::min(1.5 * v, p.max_value);
+    c.kind = "parameter";
+    c.parameters = {p};
+    c.calibrated_names = {value};
+    c.signature = "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
+    return c;
+  }
+  const auto colon = name.find(':');
+  if (colon != std::string::npos) {
+    c.sensor_kind = name.substr(0, colon);
+    const std::string group = name.substr(colon + 1);
+    ParameterSpec p = sensorModelParameter(c.sensor_kind, where);
+    std::vector<std::string> known;
+    for (const auto& [g, members] : channelGroups(channels)) {
+      known.push_back(g);
+      if (g == group) c.channels = members;
+    }
+    // A single fitted channel may also be named by itself.
+    if (c.channels.empty() && std::find(channels.begin(), channels.end(), group) != channels.end()) c.channels = {group};
+    if (c.channels.empty()) throw InputError(where, unknownNameRule("channel group of the fitted data", group, known));
+    c.kind = "sensor";
+    c.parameters = {p};
+    c.calibrated_names = {name + "." + p.name};
+    c.signature = "the " + group + " channels were distorted by the logger (" + c.sensor_kind + ")";
+    return c;
+  }
+  const auto effect = makeEffect(name, where);  // InputError naming the known effects
+  c.kind = "effect";
+  for (const auto& p : effect->parameters())
+    if (!p.shape) {
+      c.parameters.push_back(p);
+      c.calibrated_names.push_back(name + "." + p.name);
+    }
+  c.signature = effect->signature();
+  c.residual_signature = effect->residualSignature();
+  c.engagement_threshold = effect->engagementThreshold();
+  return c;
+}
+
+void CandidateSpec::install(calib::CalibrationSetup& setup) const {
+  if (kind == "effect") {
+    EffectSetting es;
+    es.name = name;
+    setup.extra_effects.push_back(es);
+  } else if (kind == "parameter") {
+    setup.freed.push_back(calibrated_names[0]);
+  } else {
+    setup.sensor_models.push_back({name, sensor_kind, channels});
+  }
+  for (std::size_t k = 0; k < parameters.size(); ++k) {
+    CalibratedParameter cp;
+    cp.name = calibrated_names[k];
+    cp.unit = parameters[k].unit;
+    cp.lower = parameters[k].prior_lower;
+    cp.upper = parameters[k].prior_upper;
+    setup.extra_calibrated.push_back(cp);
+  }
+}
+
+std::string CandidateSpec::finding(const std::vector<double>& values) const {
+  if (values.size() != parameters.size() || values.empty()) return "";
+  const double v = values[0];
+  if (kind == "parameter")
+    return "the " + valueInWords(calibrated_names[0]) + " is about " + num("%.4g", v) + " " + parameters[0].unit + ", not " +
+           num("%.4g", parameters[0].default_value) + " " + parameters[0].unit;
+  if (kind != "sensor") return "";
+  const std::string group = name.substr(name.find(':') + 1);
+  if (sensor_kind == "gain") return "the " + group + " channels look scaled by " + num("%.3g", v);
+  if (sensor_kind == "delay")
+    return "the " + group + " channels look " + (v >= 0 ? "delayed" : "early") + " by " + num("%.3g", 1e3 * std::abs(v)) + " ms";
+  return "the " + group + " channels look filtered at about " + num("%.3g", v > 0 ? 1.0 / (2.0 * kPi * v) : 0.0) +
+         " Hz (" + (sensor_kind == "lowpass" ? "first" : "second") + "-order low-pass)";
+}
+
+}  // namespace dtwin::diag

@@ -1,0 +1,58 @@
+#pragma once
+// What `twin diagnose` can propose (docs/diagnosis.md, "Candidates"). Three kinds, all screened,
+// confirmed and applied the same way:
+//   effect     a force element of the catalogue (subsystems/effect.hpp), built in or user-defined:
+//              "bump_stop", "my_damper"
+//   parameter  a fixed vehicle value freed with a prior range of ±50 % about the vehicle file's
+//              value (twin/model.hpp freeableVehicleParameters): "free:wheel.mass_kg"
+//   sensor     a model of how the logger distorted a group of channels (subsystems/sensor.hpp
+//              sensorModelKinds): "lowpass:hub_force" (every fitted channel hub_force_*_N)
+// Each has diagnosed parameters with an "off" value (the nested base model) and a prior range,
+// and installs itself into a calibration setup.
+#include <string>
+#include <vector>
+
+#include "calibration/calibrate.hpp"
+#include "subsystems/effect.hpp"
+
+namespace dtwin::diag {
+
+struct CandidateSpec {
+  std::string name;                        ///< as the user writes it (--effects, --apply)
+  std::string kind;                        ///< "effect" | "parameter" | "sensor"
+  /// The diagnosed parameters (effects: the non-shape ones): default_value is the off value;
+  /// prior_lower/upper the range a calibration searches.
+  std::vector<ParameterSpec> parameters;
+  std::vector<std::string> calibrated_names;  ///< each parameter's name in a calibration ("bump_stop.gap_m", "wheel.mass_kg")
+  std::string signature;                   ///< the expected residual, in words
+  ResidualSignature residual_signature;    ///< effects only
+  std::string engagement_threshold;        ///< effects only (Effect::engagementThreshold)
+  std::string sensor_kind;                 ///< sensors: lowpass | lowpass2 | gain | delay
+  std::vector<std::string> channels;       ///< sensors: the channels distorted
+  /// Adds this candidate (installed, its diagnosed parameters calibrated over their prior range).
+  void install(calib::CalibrationSetup& setup) const;
+  /// The finding in plain words at calibrated `values` (one per parameter): "the wheel mass is
+  /// about 35.3 kg, not 29.46 kg"; "the hub_force channels look filtered at about 25 Hz".
+  std::string finding(const std::vector<double>& values) const;
+};
+
+/// The sensor-model groups of `channels`: channels of one unit suffix ("_N", "_mps2") share a
+/// group, named by their longest common prefix up to an underscore ("hub_force" for
+/// hub_force_fl_N ... hub_force_rr_N); a lone channel is named by itself without its unit.
+std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(const std::vector<std::string>& channels);
+
+/// The candidate `name` for `assembly` of `study` on data with the fitted `channels`.
+/// InputError(where, rule) for an unknown effect, a value that cannot be freed, an unknown sensor
+/// model or a channel group not in the data (each names what is known).
+CandidateSpec candidateSpec(const std::string& name, const Study& study, const AssemblySpec& assembly,
+                            const std::vector<std::string>& channels, const std::string& where);
+
+/// Every candidate of the default catalogue: each registered effect, each freeable vehicle value
+/// the assembly has, and each sensor model on each channel group.
+std::vector<std::string> defaultCandidates(const AssemblySpec& assembly, const std::vector<std::string>& channels);
+
+/// True when `name` has the form of a candidate (an effect name, "free:<value>" or
+/// "<sensor model>:<group>"): the options' check before the data are known.
+bool isCandidateName(const std::string& name);
+
+}  // namespace dtwin::diag

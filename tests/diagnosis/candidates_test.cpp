@@ -1,0 +1,101 @@
+// twin diagnose's candidates (diagnosis/candidates.hpp): effects, freed vehicle values and sensor
+// models, their names, groups, parameters, setups and findings; a sensor model inside the
+// calibration objective is the channel read through subsystems/sensor.hpp's distortChannel.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "common/errors.hpp"
+#include "diagnosis/candidates.hpp"
+#include "test_util.hpp"
+
+using namespace dtwin;
+using namespace dtwin::diag;
+
+namespace {
+Study demo() { return loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("cands") / "study.toml", "").string()); }
+const std::vector<std::string> kHub = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
+}  // namespace
+
+TEST(Candidates, ChannelGroupsAreNamedByUnitAndCommonPrefix) {
+  auto g = channelGroups({"hub_force_fl_N", "hub_force_fr_N", "seat_mps2"});
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(g[0].first, "hub_force");
+  EXPECT_EQ(g[0].second.size(), 2u);
+  EXPECT_EQ(g[1].first, "seat");
+  g = channelGroups({"a_mps2", "b_mps2"});
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_EQ(g[0].first, "mps2");  // nothing in common: the unit names the group
+}
+
+TEST(Candidates, DefaultCatalogueHoldsEffectsFreedValuesAndSensorModels) {
+  const Study s = demo();
+  const auto names = defaultCandidates(s.assemblies().front(), kHub);
+  auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
+  EXPECT_TRUE(has("bump_stop"));
+  EXPECT_TRUE(has("free:wheel.mass_kg"));
+  EXPECT_FALSE(has("free:solid_axle.mass_kg"));  // M1 is MacPherson
+  EXPECT_TRUE(has("lowpass:hub_force"));
+  EXPECT_TRUE(has("delay:hub_force"));
+  for (const auto& n : names) EXPECT_TRUE(isCandidateName(n)) << n;
+  EXPECT_FALSE(isCandidateName("highpass:hub_force"));
+  EXPECT_FALSE(isCandidateName("free:"));
+}
+
+TEST(Candidates, SpecsCarryOffValuesPriorsAndSetups) {
+  const Study s = demo();
+  const auto a = s.assemblies().front();
+  const auto m = candidateSpec("free:wheel.mass_kg", s, a, kHub, "t");
+  EXPECT_EQ(m.kind, "parameter");
+  ASSERT_EQ(m.parameters.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.parameters[0].default_value, 29.46);
+  EXPECT_DOUBLE_EQ(m.parameters[0].prior_lower, 0.5 * 29.46);
+  EXPECT_DOUBLE_EQ(m.parameters[0].prior_upper, 1.5 * 29.46);
+  EXPECT_EQ(m.finding({35.3}), "the wheel mass is about 35.3 kg, not 29.46 kg");
+  calib::CalibrationSetup setup;
+  m.install(setup);
+  EXPECT_EQ(setup.freed, std::vector<std::string>{"wheel.mass_kg"});
+  EXPECT_EQ(setup.extra_calibrated.at(0).name, "wheel.mass_kg");
+
+  const auto lp = candidateSpec("lowpass:hub_force", s, a, kHub, "t");
+  EXPECT_EQ(lp.kind, "sensor");
+  EXPECT_EQ(lp.channels, kHub);
+  EXPECT_EQ(lp.finding({1.0 / (2 * kPi * 25.0)}), "the hub_force channels look filtered at about 25 Hz (first-order low-pass)");
+  EXPECT_EQ(candidateSpec("delay:hub_force_fl_N", s, a, kHub, "t").channels, std::vector<std::string>{"hub_force_fl_N"});
+
+  const auto bs = candidateSpec("bump_stop", s, a, kHub, "t");
+  EXPECT_EQ(bs.kind, "effect");
+  EXPECT_FALSE(bs.engagement_threshold.empty());
+  for (const char* bad : {"free:wheel.mas_kg", "free:solid_axle.mass_kg", "lowpass:seat", "highpass:hub_force", "bump_stopp"})
+    EXPECT_THROW(candidateSpec(bad, s, a, kHub, "t"), InputError) << bad;
+}
+
+TEST(Candidates, ASensorModelInTheObjectiveIsTheChannelThroughDistortChannel) {
+  const Study s = demo();
+  LabData data;
+  for (int k = 200; k <= 2800; k += 5) data.records.push_back({1, k / 1000.0, "hub_force_fl_N", 0.0});
+  data.records.push_back({1, 1.2345, "hub_force_fl_N", 0.0});  // off the grid
+  std::vector<calib::DataSet> sets{{"d", "diag_bump", data}};
+  const auto spec = candidateSpec("lowpass:hub_force", s, s.assemblies().front(), kHub, "t");
+  calib::CalibrationSetup setup;
+  spec.install(setup);
+  const calib::LabObjective with(s, s.assemblies().front(), sets, setup), without(s, s.assemblies().front(), sets, {});
+  std::vector<double> th;
+  for (const auto& p : s.calibrated) th.push_back(*p.truth);
+  const auto raw = without.predict(th);
+  th.push_back(0.0);
+  EXPECT_EQ(with.predict(th), raw);  // off: the base model's predictions exactly
+  th.back() = 0.01;
+  const auto filtered = with.predict(th);
+  const auto runs = without.runs(std::vector<double>(th.begin(), th.end() - 1));
+  ASSERT_EQ(runs.size(), 1u);
+  SensorDistortion d;
+  d.set("lowpass", 0.01);
+  std::vector<double> times;
+  for (const auto& r : data.records) times.push_back(r.time_s);
+  const auto expect = distortChannel(runs[0].trace.column("hub_force_fl_N"), s.simulation.output_rate_hz, times, d);
+  for (std::size_t i = 0; i < times.size(); ++i) EXPECT_EQ(filtered[i], expect[i]) << times[i];
+  double most = 0;
+  for (std::size_t i = 0; i < raw.size(); ++i) most = std::max(most, std::abs(filtered[i] - raw[i]));
+  EXPECT_GT(most, 10.0);  // the bump's hub force is filtered visibly
+}

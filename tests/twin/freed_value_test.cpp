@@ -1,0 +1,112 @@
+// Freed vehicle values (AssemblySpec::freed, twin diagnose's "free:" candidates): a fixed value of
+// the vehicle file made a run parameter. A run at the file's value is the base model's run bit for
+// bit; a run at another value is the run of a model built with that value, bit for bit, whatever
+// the Simulator ran before; the static hub forces carry the whole weight with the freed mass.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "calibration/calibrate.hpp"
+#include "common/errors.hpp"
+#include "test_util.hpp"
+#include "twin/simulator.hpp"
+#include "twin/study.hpp"
+
+using namespace dtwin;
+namespace fs = std::filesystem;
+
+namespace {
+
+Study demo() { return loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("freed") / "study.toml", "").string()); }
+
+Trace runOf(Simulator& sim, const std::vector<double>& values, const Study& s) {
+  const auto& sc = s.scenario("diag_bump");
+  const auto road = makeRoad(sc, sim.model().vehicle(), s.seed);
+  auto r = sim.run(values, *road, sc);
+  EXPECT_TRUE(r.stats.ok) << r.stats.message;
+  return r.trace;
+}
+
+void expectSame(const Trace& a, const Trace& b) {
+  ASSERT_EQ(a.rows(), b.rows());
+  for (const char* ch : {"hub_force_fl_N", "hub_force_rr_N", "susp_defl_fl_m", "chassis_heave_m"})
+    for (std::size_t i = 0; i < a.rows(); ++i) ASSERT_EQ(a.column(ch)[i], b.column(ch)[i]) << ch << " row " << i;
+}
+
+}  // namespace
+
+TEST(FreedValue, RunsAreThoseOfAModelBuiltWithTheValue) {
+  const Study s = demo();
+  AssemblySpec a = s.assemblies().front();
+  const auto base = s.makeModel(a);
+  a.freed = {"wheel.mass_kg"};
+  const auto freed = s.makeModel(a);
+  const int slot = freed->slot("wheel.mass_kg");
+  ASSERT_GE(slot, 0);
+  EXPECT_EQ(freed->runParameterNames().size(), base->runParameterNames().size() + 1);
+  Simulator sim_base(base, s.simulation), sim(freed, s.simulation);
+  auto values = freed->defaultRunValues();
+  const double file = values[static_cast<std::size_t>(slot)];
+  EXPECT_DOUBLE_EQ(file, 29.46);
+  const Trace at_file = runOf(sim, values, s);
+  expectSame(at_file, runOf(sim_base, base->defaultRunValues(), s));
+
+  values[static_cast<std::size_t>(slot)] = 1.2 * file;
+  const Trace heavier = runOf(sim, values, s);
+  const auto built = s.makeModel(s.assemblies().front(), {}, {{"wheel.mass_kg", 1.2 * file, "test", "test"}});
+  Simulator sim_built(built, s.simulation);
+  expectSame(heavier, runOf(sim_built, built->defaultRunValues(), s));
+  EXPECT_NE(heavier.column("hub_force_fl_N")[0], at_file.column("hub_force_fl_N")[0]);
+
+  // Static equilibrium: the four hub forces carry the chassis and the four (heavier) wheels.
+  const auto& v = built->vehicle();
+  double sum = 0;
+  for (const char* c : {"fl", "fr", "rl", "rr"}) sum += heavier.column(std::string("hub_force_") + c + "_N")[0];
+  EXPECT_NEAR(sum, (v.chassis_mass + 4 * 1.2 * file) * v.gravity, 1e-6 * sum);
+
+  // Back to the file's value: the same numbers as the first run (the system is rebuilt again).
+  values[static_cast<std::size_t>(slot)] = file;
+  expectSame(runOf(sim, values, s), at_file);
+}
+
+TEST(FreedValue, LabObjectiveCalibratesAFreedValue) {
+  const Study s = demo();
+  calib::CalibrationSetup setup;
+  setup.freed = {"wheel.mass_kg"};
+  CalibratedParameter c;
+  c.name = "wheel.mass_kg";
+  c.unit = "kg";
+  c.lower = 15;
+  c.upper = 45;
+  setup.extra_calibrated = {c};
+  LabData data;
+  data.records.push_back({1, 1.0, "hub_force_fl_N", 3000.0});
+  const calib::LabObjective obj(s, s.assemblies().front(), {{"d", "diag_bump", data}}, setup);
+  ASSERT_EQ(obj.names().back(), "wheel.mass_kg");
+  std::vector<double> th;
+  for (const auto& p : s.calibrated) th.push_back(*p.truth);
+  th.push_back(29.46);
+  const double a = obj.predict(th)[0];
+  th.back() = 40.0;
+  EXPECT_GT(std::abs(obj.predict(th)[0] - a), 1.0);
+  // The setup round-trips through summary.json (a calibration folder resumes with it).
+  const auto back = calib::CalibrationSetup::fromJson(setup.toJson());
+  EXPECT_EQ(back.freed, setup.freed);
+  EXPECT_EQ(back.toJson(), setup.toJson());
+}
+
+TEST(FreedValue, OnlyFreeableValuesOfTheAssemblyCanBeFreed) {
+  const Study s = demo();
+  AssemblySpec a = s.assemblies().front();  // MacPherson
+  a.freed = {"wheel.mas_kg"};
+  try {
+    s.makeModel(a);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("wheel.mass_kg"), std::string::npos) << e.what();
+  }
+  a.freed = {"solid_axle.mass_kg"};
+  EXPECT_THROW(s.makeModel(a), InputError);
+  a.freed = {"wheel.mass_kg", "wheel.mass_kg"};
+  EXPECT_THROW(s.makeModel(a), InputError);
+}

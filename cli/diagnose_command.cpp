@@ -120,7 +120,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
 struct DiagnoseConfig {
   std::string study = defaultStudy(), assembly = "M1", out;
   std::vector<std::string> data, holdout, effects, apply;
-  int threads = 0, candidates = 3, draws = 20;
+  int threads = 0, candidates = 3, draws = 20, propose = 3;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
   bool quiet = false, force = false;
 };
@@ -156,9 +156,18 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
     throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
   o.calibration.validate();
   o.candidates = cfg.candidates;
+  o.propose_terms = cfg.propose;
   o.compare_draws = cfg.draws;
   o.effects = splitCommas(cfg.effects);
-  o.apply = splitCommas(cfg.apply);
+  // An --apply item that is a .toml file (e.g. a diagnosis's proposal.toml): its [user_effects]
+  // are registered and applied in their order.
+  for (const auto& a : splitCommas(cfg.apply)) {
+    if (a.size() > 5 && a.compare(a.size() - 5, 5, ".toml") == 0) {
+      for (const auto& u : loadUserEffects(a)) o.apply.push_back(u.name);
+    } else {
+      o.apply.push_back(a);
+    }
+  }
   o.threads = cfg.threads;
   o.command = command;
   o.validate();
@@ -194,9 +203,13 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
     j["options"] = {{"calibration", o.calibration.toJson()}, {"candidates", o.candidates}, {"screen_alpha", o.screen_alpha},
                     {"bic_strong", o.bic_strong}, {"ambiguity_log_evidence", o.ambiguity_log_evidence},
                     {"explained_min", o.explained_min}, {"lack_of_fit_alpha", o.lack_of_fit_alpha}, {"compare_draws", o.compare_draws},
-                    {"effects", o.effects}, {"apply", o.apply}};
+                    {"effects", o.effects}, {"apply", o.apply}, {"propose_terms", o.propose_terms}};
     rootWrites([&] {
       writeFileAtomic((fs::path(cfg.out) / "diagnosis.json").string(), j.dump(2) + "\n");
+      if (!r.proposal.empty())
+        writeFileAtomic((fs::path(cfg.out) / "proposal.toml").string(),
+                        "# Proposed by twin diagnose (" + command + "): paste into the study file, or pass this file to --apply.\n" +
+                            r.proposalToml());
       // Full comparisons (series data for plots): the base, every confirmed candidate, every step.
       writeFileAtomic((fs::path(cfg.out) / "comparisons" / "base.json").string(), r.base.comparison.toJson(true).dump() + "\n");
       for (const auto& c : r.candidates)
@@ -259,8 +272,13 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
                 "Only rank these candidates (comma separated): effects, free:<vehicle value> (e.g. free:wheel.mass_kg) or "
                 "<lowpass|lowpass2|gain|delay>:<channel group> (e.g. lowpass:hub_force); default: every effect not installed, "
                 "every freeable vehicle value and every sensor model (docs/diagnosis.md)");
-  c->add_option("--apply", cfg->apply, "Add these candidates in turn (comma separated) and print the before/after table");
+  c->add_option("--apply", cfg->apply,
+                "Add these candidates in turn (comma separated) and print the before/after table; a .toml file (e.g. a diagnosis's "
+                "proposal.toml) adds its [user_effects]");
   c->add_option("--candidates", cfg->candidates, "Screened effects confirmed by re-calibration (at most)")->capture_default_str()->check(CLI::Range(0, 100));
+  c->add_option("--propose", cfg->propose, "When unexplained: propose at most this many library terms (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 3));
   c->add_option("--draws", cfg->draws, "Posterior rows per comparison")->capture_default_str()->check(CLI::Range(1, 100000));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
   c->add_option("--lhs-points", cfg->lhs_points, "Design points per calibration (default: sizes.lhs_points)")->check(CLI::Range(2L, 10000000L));

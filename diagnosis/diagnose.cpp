@@ -170,6 +170,7 @@ void DiagnoseOptions::validate() const {
   check.open01("lack_of_fit_alpha", lack_of_fit_alpha);
   check.atLeast("compare_draws", compare_draws, 1);
   check.atLeast("threads", threads, 0);
+  check.inRange("propose_terms", propose_terms, 0, 3);
   for (const char* field : {"effects", "apply"}) {
     const auto& names = std::string(field) == "effects" ? effects : apply;
     std::set<std::string> seen;
@@ -830,6 +831,105 @@ void verdict(Diagnosis& d) {
                    "): " + locate(best.fit->comparison) + ".";
 }
 
+// ------------------------------------------------------------------ propose
+
+/// Propose (verdict "unexplained"; docs/diagnosis.md): every library term (proposal.hpp) simulated
+/// as a small strut force at θ̂ (its peak 200 N over the base run's states), its contribution
+/// projected off span(J), and the best subset of at most options.propose_terms terms by BIC. A
+/// subset is proposed only when it beats the empty model by more than bic_strong.
+void propose(Diagnosis& d) {
+  auto& res = d.res;
+  const Linearisation lin = linearise(d);
+  double q_comp = 0, q_reb = 0;
+  const auto traces = d.base_obj->traces(lin.theta_hat);
+  for (const auto& t : traces)
+    for (const char* c : {"fl", "fr", "rl", "rr"})
+      for (double q : t.column(std::string("susp_defl_") + c + "_m")) {
+        q_comp = std::max(q_comp, q);
+        q_reb = std::max(q_reb, -q);
+      }
+  const auto library = termLibrary(q_comp, q_reb);
+  std::vector<double> amplitude(library.size(), 0.0);
+  for (std::size_t j = 0; j < library.size(); ++j) {
+    double peak = 0;
+    for (const auto& t : traces)
+      for (const char* c : {"fl", "fr", "rl", "rr"}) {
+        const auto& q = t.column(std::string("susp_defl_") + c + "_m");
+        const auto& v = t.column(std::string("susp_rate_") + c + "_mps");
+        for (std::size_t i = 0; i < q.size(); ++i) peak = std::max(peak, std::abs(library[j].f(q[i], v[i])));
+      }
+    if (peak > 0) amplitude[j] = 200.0 / peak;
+  }
+  std::vector<std::unique_ptr<calib::LabObjective>> objs(library.size());
+  for (std::size_t j = 0; j < library.size(); ++j) {
+    if (amplitude[j] == 0) continue;
+    calib::CalibrationSetup setup;
+    setup.channel_weights = d.weights;
+    EffectSetting es;
+    es.name = kTermPrefix + library[j].expr;
+    setup.extra_effects.push_back(es);
+    CalibratedParameter a;
+    a.name = es.name + ".a";
+    a.unit = library[j].unit;
+    a.lower = -1e12;
+    a.upper = 1e12;
+    setup.extra_calibrated.push_back(a);
+    objs[j] = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, setup);
+  }
+  std::vector<std::vector<double>> eta(library.size());
+  d.report("propose: library terms", 0, library.size());
+  parallelFor(library.size(), d.options.threads, [&](std::size_t j, int) {
+    if (!objs[j]) return;
+    auto th = lin.theta_hat;
+    th.push_back(amplitude[j]);
+    eta[j] = objs[j]->predict(th);
+  });
+  d.report("propose: library terms", library.size(), library.size());
+  const auto& w = d.base_obj->weights();
+  const long n = lin.r.size();
+  std::vector<std::size_t> used;
+  for (std::size_t j = 0; j < library.size(); ++j)
+    if (!eta[j].empty()) used.push_back(j);
+  Eigen::MatrixXd G(n, static_cast<long>(used.size()));
+  for (std::size_t k = 0; k < used.size(); ++k)
+    for (long i = 0; i < n; ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      G(i, static_cast<long>(k)) = std::sqrt(w[ii]) * (eta[used[k]][ii] - lin.eta_hat[ii]) / amplitude[used[k]];
+    }
+  Eigen::MatrixXd Gp = lin.project(G);
+  std::vector<double> norm(used.size(), 0.0);
+  for (std::size_t k = 0; k < used.size(); ++k) {
+    norm[k] = Gp.col(static_cast<long>(k)).norm();
+    if (norm[k] > 0) Gp.col(static_cast<long>(k)) /= norm[k];
+  }
+  const auto fit = bestSubsetByBic(Gp, lin.r, d.options.propose_terms);
+  const double gain = fit.bic_empty - fit.bic;
+  const std::string lib_words = std::to_string(used.size()) + " strut-force terms";
+  if (fit.chosen.empty() || gain <= d.options.bic_strong) {
+    res.proposal_note = "No proposal: no subset of the " + lib_words + " explains the residual (best BIC gain " + fmt("%.1f", gain) + ").";
+    return;
+  }
+  const double excess = std::max(fit.sse_empty - static_cast<double>(n - static_cast<long>(lin.theta_hat.size())), 1e-12);
+  const double ln_n = std::log(static_cast<double>(n));
+  for (std::size_t i = 0; i < fit.chosen.size(); ++i) {
+    const std::size_t k = fit.chosen[i], j = used[k];
+    ProposedTerm t;
+    t.force = "a * (" + library[j].expr + ")";
+    t.unit = library[j].unit;
+    t.coefficient = fit.coef[i] / norm[k];
+    t.delta_bic = -(fit.drop_sse[i] - fit.sse - ln_n);
+    t.explained = std::clamp((fit.drop_sse[i] - fit.sse) / excess, 0.0, 1.0);
+    res.proposal.push_back(t);
+  }
+  std::sort(res.proposal.begin(), res.proposal.end(), [](const ProposedTerm& a, const ProposedTerm& b) { return a.delta_bic < b.delta_bic; });
+  for (std::size_t i = 0; i < res.proposal.size(); ++i) res.proposal[i].name = "proposed_" + std::to_string(i + 1);
+  res.proposal_note = "A sparse regression of the residual on " + lib_words + " (best subset by BIC, linearised at the base optimum) proposes " +
+                      std::to_string(res.proposal.size()) + " term" + (res.proposal.size() > 1 ? "s" : "") + " (BIC gain " +
+                      fmt("%.1f", gain) + ", explaining " + fmt("%.0f", 100 * std::clamp((fit.sse_empty - fit.sse) / excess, 0.0, 1.0)) +
+                      " % of the excess residual); paste it into the study file (or pass proposal.toml to --apply) and apply it.";
+  res.summary += " " + res.proposal_note;
+}
+
 // ------------------------------------------------------------------ apply
 
 /// Apply (step 5): options.apply's effects added in turn, each model re-calibrated (a lone effect
@@ -869,7 +969,9 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
   const double design_points = design.first_points + (design.adaptive ? static_cast<double>(design.max_rounds) * design.round_points : 0.0);
   const double base_params = static_cast<double>(study.calibrated.size());
   // Screening: a linearisation (two runs per parameter) and every probe column of every effect.
-  double probe_runs = 2 * base_params, most_effect_params = 0;
+  // ... and, when the verdict is unexplained, a proposal: a linearisation and every library term.
+  double probe_runs = 2 * base_params + (options.propose_terms > 0 ? 2 * base_params + static_cast<double>(termLibrary(1, 1).size()) : 0.0),
+         most_effect_params = 0;
   std::vector<std::string> channels;
   for (const auto& s : fit)
     for (const auto& ch : s.data.channels())
@@ -913,6 +1015,7 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
   const auto confirmed = confirm(d);
   refine(d, confirmed);
   verdict(d);
+  if (d.res.verdict == "unexplained" && options.propose_terms > 0) propose(d);
   apply(d);
   return std::move(d.res);
 }
@@ -957,6 +1060,10 @@ nlohmann::json DiagnosisResult::toJson() const {
   }
   j["evidence_estimator"] =
       "BIC = SSE_w,min + k ln n with SSE_w = sum of (y - eta)^2 / sigma_c^2 (sigma_c^2 from the repetitions); log evidence ~ -BIC/2";
+  if (!proposal.empty() || !proposal_note.empty()) {
+    j["proposal"] = {{"note", proposal_note}, {"terms", nlohmann::json::array()}};
+    for (const auto& t : proposal) j["proposal"]["terms"].push_back(t.toJson());
+  }
   if (!steps.empty()) {
     j["before"] = steps.front().toJson();
     j["after"] = steps.back().toJson();
@@ -964,6 +1071,12 @@ nlohmann::json DiagnosisResult::toJson() const {
     for (const auto& s : steps) j["steps"].push_back(s.toJson());
   }
   return j;
+}
+
+std::string DiagnosisResult::proposalToml() const {
+  std::string s;
+  for (const auto& t : proposal) s += (s.empty() ? "" : "\n") + t.toml();
+  return s;
 }
 
 std::string DiagnosisResult::text() const {
@@ -992,6 +1105,13 @@ std::string DiagnosisResult::text() const {
   for (const auto* f : fits)
     if (!f->integrator.ok && noted.insert(f->folder).second)
       s += "\n  note (" + f->label + ", " + f->folder + "): " + f->integrator.message + "\n";
+  if (!proposal.empty()) {
+    s += "\nProposed terms (strut force a * TERM at every strut; ready to paste into the study file):\n";
+    for (const auto& t : proposal)
+      s += "  " + t.name + ": " + t.force + ", a ≈ " + fmt("%.3g", t.coefficient) + " " + t.unit + ", ΔBIC " + fmt("%.1f", t.delta_bic) +
+           ", explains " + fmt("%.0f", 100 * t.explained) + " % of the excess residual\n";
+    s += "\n" + proposalToml();
+  }
   if (!left_out_channels.empty()) {
     s += "\n  Compared but not fitted: ";
     for (std::size_t i = 0; i < left_out_channels.size(); ++i) s += (i ? "; " : "") + left_out_channels[i];

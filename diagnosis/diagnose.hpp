@@ -31,6 +31,7 @@
 #include "calibration/calibrate.hpp"
 #include "diagnosis/candidates.hpp"
 #include "diagnosis/compare.hpp"
+#include "diagnosis/proposal.hpp"
 #include "diagnosis/measurements.hpp"
 
 namespace dtwin::diag {
@@ -47,6 +48,9 @@ struct DiagnoseOptions {
   std::vector<std::string> effects;  ///< the catalogue to rank (empty: every effect not already installed)
   std::vector<std::string> apply;    ///< effects added in turn after the verdict (`twin diagnose --apply`)
   int threads = 0;                   ///< worker threads (0: all cores)
+  /// When the verdict is "unexplained": at most this many library terms proposed (proposal.hpp;
+  /// 0: no proposal; at most 3, the exhaustive subset search's limit).
+  int propose_terms = 3;
   std::string command;               ///< recorded in every calibration folder
   /// Throws InputError("diagnose.<field>", rule) for a field out of range, an unknown or repeated
   /// effect in effects or apply (common/validate.hpp); checks calibration too. diagnose() calls it.
@@ -118,6 +122,12 @@ struct DiagnosisResult {
   double base_unrefined_sse = 0;
   std::vector<Candidate> candidates;  ///< every effect: confirmed ones first (by evidence), then by score, gated last
   std::vector<Figures> steps;         ///< options.apply: base, + e1, + e1 + e2, ...
+  /// Verdict "unexplained": the terms the sparse regression proposes (proposal.hpp), best first,
+  /// and what it found in words (also when it proposes nothing).
+  std::vector<ProposedTerm> proposal;
+  std::string proposal_note;
+  /// The proposal as ready-to-paste [user_effects] tables ("" when there is none).
+  std::string proposalToml() const;
   std::vector<std::string> fitted_channels, left_out_channels;
   nlohmann::json toJson() const;
   /// The report printed by the CLI.

@@ -91,6 +91,16 @@ std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& w
   for (const auto& e : effectRegistry())
     if (e.name == name) return e.make();
   if (auto user = makeRegisteredUserEffect(name)) return user;
+  if (name.rfind(kTermPrefix, 0) == 0) {
+    // A library term of twin diagnose's proposal: strut force a * (TERM), a unregistered user effect.
+    UserEffectSpec u;
+    u.name = name;
+    u.element = "strut";
+    u.force = "a * (" + name.substr(std::string(kTermPrefix).size()) + ")";
+    u.parameters = {{"a", "1", 0.0, -1e12, 1e12, false}};
+    u.where = where + ": " + name;
+    return makeUserEffect(u);
+  }
   throw InputError(where, unknownNameRule("effect", name, effectNames()));
 }
 

@@ -100,6 +100,11 @@ struct EffectEntry {
 /// table in effect.cpp (names unique). A new effect is one line there (docs/extending.md).
 const std::vector<EffectEntry>& effectRegistry();
 
+/// The prefix of a library term (twin diagnose's proposal, docs/diagnosis.md): makeEffect("term:EXPR")
+/// is the strut force a * (EXPR), EXPR in the user-effect variables q and v, with one parameter a
+/// (off: 0). Such effects are made on demand and never listed by effectNames().
+inline constexpr const char* kTermPrefix = "term:";
+
 /// The registered effect `name`: a built-in one, else a user-defined one a study registered
 /// (subsystems/user_effect.hpp). Throws InputError(where, "unknown effect 'x' (known: ...; did you
 /// mean 'y'?)") (common/names.hpp unknownNameRule).

@@ -216,7 +216,15 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   for (const auto& e : assembly_.effects) {
     std::shared_ptr<const Effect> eff = makeEffect(e, where);
     std::vector<int> slots;
-    for (const auto& s : eff->parameters()) slots.push_back(addRunParameter(e + "." + s.name));
+    for (auto s : eff->parameters()) {
+      s.name = e + "." + s.name;
+      if (!table_.contains(s.name)) {  // an effect made on demand (a library term): at its off value
+        const double off = s.default_value;
+        table_.declare(s);
+        table_.set(s.name, off, "effect default (off)", where);
+      }
+      slots.push_back(addRunParameter(s.name));
+    }
     effects_.push_back(std::move(eff));
     effect_slots_.push_back(std::move(slots));
   }

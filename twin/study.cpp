@@ -534,6 +534,24 @@ void checkScenarioSamples(const Study& s) {
 
 /// The study file, table by table (each reader checks its own fields and reports unknown ones),
 /// then the cross-checks that need the whole study.
+std::vector<UserEffectSpec> loadUserEffects(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (!fs::exists(path)) throw InputError(path, "file of user-defined effects not found");
+  if (fs::is_directory(path)) throw InputError(path, "is a folder, not a file of user-defined effects");
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
+  }
+  TableReader top(root, path, "");
+  Study s;
+  readUserEffects(top, s);
+  top.finish();  // nothing but [user_effects] tables
+  if (s.user_effects.empty()) throw InputError(path, "holds no [user_effects.NAME] table");
+  return s.user_effects;
+}
+
 Study loadStudy(const std::string& path) {
   namespace fs = std::filesystem;
   if (!fs::exists(path)) throw InputError(path, "study file not found");

@@ -133,6 +133,11 @@ struct Study {
 /// `existing`.
 std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<SensorSpec>& existing = {});
 
+/// The [user_effects.NAME] tables of a TOML file that holds nothing else (e.g. the proposal
+/// `twin diagnose` writes), each checked and registered as the study file's are. InputError
+/// naming file:line and field for a bad one, for any other table, or for none.
+std::vector<UserEffectSpec> loadUserEffects(const std::string& path);
+
 /// Parses and validates a study file. Every error is an InputError naming the file, the line and
 /// the field, and the rule broken.
 Study loadStudy(const std::string& path);

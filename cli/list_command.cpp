@@ -44,6 +44,15 @@ int runList(const std::string& study_path, bool params) {
                   p.prior_lower, p.prior_upper, p.description.c_str());
     std::printf("      signature: %s\n", e->signature().c_str());
   }
+  std::printf("\nother twin diagnose candidates (docs/diagnosis.md):\n");
+  std::string freeable;
+  for (const auto& f : freeableVehicleParameters()) freeable += (freeable.empty() ? "" : ", ") + f;
+  std::printf("  free:VALUE          a fixed vehicle value freed over +-50 %% of the file's: %s\n", freeable.c_str());
+  for (const auto& k : sensorModelKinds()) {
+    const auto p = sensorModelParameter(k, "");
+    std::printf("  %-19s %s [%s] off = %g  prior [%g, %g]\n", (k + ":GROUP").c_str(), p.description.c_str(), p.unit.c_str(), p.default_value,
+                p.prior_lower, p.prior_upper);
+  }
   if (!study.effects.empty()) {
     std::printf("\neffects installed by this study:");
     for (const auto& e : study.effects) std::printf(" %s", e.name.c_str());

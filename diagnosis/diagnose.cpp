@@ -500,12 +500,14 @@ std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::v
 /// Scores every probe group: S = rᵀ P r, P the projection on span(g⊥) (g⊥ the group's
 /// contributions with span(J) projected out), rank(g⊥) degrees of freedom. Each candidate keeps its
 /// largest S, its largest ‖g⊥‖², and the linearised estimate of the effect's and the base
-/// parameters at its best probe. Returns, per catalogue effect, whether a probe run failed.
+/// parameters at its best probe. Returns, per catalogue effect, whether every probe group failed.
 std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std::vector<ProbeGroup>& groups,
                               const std::vector<std::vector<double>>& probe_eta) {
   const auto& w = d.base_obj->weights();
   const std::size_t n = lin.eta_hat.size(), dim = lin.theta_hat.size();
-  std::vector<bool> any_failed(d.catalogue.size(), false);
+  // Per effect: every probe group failed (a failed group, e.g. the strongest probe of a force
+  // that destabilises the vehicle, is left out of the score; the others still count).
+  std::vector<bool> all_failed(d.catalogue.size(), true);
   for (std::size_t g = 0, j = 0; g < groups.size(); ++g) {
     const std::size_t e = groups[g].effect;
     Eigen::MatrixXd G(static_cast<long>(n), static_cast<long>(groups[g].cols.size()));
@@ -518,10 +520,8 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
       for (std::size_t i = 0; i < n; ++i)
         G(static_cast<long>(i), static_cast<long>(c)) = std::sqrt(w[i]) * (probe_eta[j][i] - lin.eta_hat[i]);
     }
-    if (failed) {
-      any_failed[e] = true;
-      continue;
-    }
+    if (failed) continue;
+    all_failed[e] = false;
     const Eigen::MatrixXd Gp = lin.project(G);
     auto& cand = d.res.candidates[e];
     cand.max_signal = std::max(cand.max_signal, Gp.squaredNorm());
@@ -552,7 +552,7 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
       cand.screening_theta[k] =
           std::clamp(lin.theta_hat[k] + dtheta[static_cast<long>(k)], d.base_obj->lower()[k], d.base_obj->upper()[k]);
   }
-  return any_failed;
+  return all_failed;
 }
 
 /// The model's largest suspension compression [m] over the fit data at θ̂ (every corner).
@@ -567,13 +567,15 @@ double maxCompression(const Diagnosis& d, const std::vector<double>& theta_hat) 
 /// The p-value of every candidate (Bonferroni over `probes`) and its gate: why an effect cannot
 /// matter in these data (no plausible value changes them; an engagement threshold the travel
 /// never reaches; a contribution below the noise; a failed probe).
-void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::size_t probes, const std::vector<bool>& any_failed) {
+void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::size_t probes, const std::vector<bool>& all_failed) {
   const double bonferroni = static_cast<double>(probes);
   std::optional<double> max_compression;  // one more run, only when a threshold gate needs it
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     auto& c = d.res.candidates[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
-    if (c.max_signal == 0.0) {
+    if (all_failed[e]) {
+      c.gate = "every probe simulation failed";
+    } else if (c.max_signal == 0.0) {
       const auto& spec = d.spec(c.effect);
       const std::string& threshold = spec.engagement_threshold;
       if (!threshold.empty()) {
@@ -588,8 +590,6 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
     } else if (c.max_signal < 1.0) {
       c.gate = "its largest plausible contribution, after re-calibrating the base parameters, is below the noise (" +
                fmt("%.2g", c.max_signal) + " noise variances in total): these data cannot show it";
-    } else if (any_failed[e]) {
-      c.gate = "a probe simulation failed";
     }
   }
 }
@@ -610,8 +610,8 @@ void screen(Diagnosis& d) {
     d.res.candidates[e].signature = spec.signature;
   }
   const auto probe_eta = simulateProbes(d, groups, lin.theta_hat);
-  const auto any_failed = scoreProbes(d, lin, groups, probe_eta);
-  gateCandidates(d, lin.theta_hat, groups.size(), any_failed);
+  const auto all_failed = scoreProbes(d, lin, groups, probe_eta);
+  gateCandidates(d, lin.theta_hat, groups.size(), all_failed);
 }
 
 // ------------------------------------------------------------------ confirm, refine
@@ -754,7 +754,7 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
   if (!where.empty()) s += "; " + where;
   const std::string band = bandFixed(base, c.fit->comparison);
   if (!band.empty()) s += "; lowers the " + band;
-  if (!c.finding.empty()) s += "; " + c.finding;
+  if (!c.finding.empty() && c.delta_bic < 0) s += "; " + c.finding;
   const std::string sig = signatureSeen(base, spec);
   if (!sig.empty()) s += "; its signature is in the data: " + sig;
   if (c.holdout_change) s += "; held-out systematic error x" + fmt("%.2f", *c.holdout_change);
@@ -922,11 +922,28 @@ void propose(Diagnosis& d) {
     res.proposal.push_back(t);
   }
   std::sort(res.proposal.begin(), res.proposal.end(), [](const ProposedTerm& a, const ProposedTerm& b) { return a.delta_bic < b.delta_bic; });
+  // A term the subset keeps for a small BIC gain (between ln n and bic_strong) is not worth a
+  // user's effect: only the strongly supported ones are proposed.
+  const auto weak = std::find_if(res.proposal.begin(), res.proposal.end(),
+                                 [&](const ProposedTerm& t) { return t.delta_bic >= -d.options.bic_strong; });
+  const std::size_t dropped = static_cast<std::size_t>(res.proposal.end() - weak);
+  res.proposal.erase(weak, res.proposal.end());
+  if (res.proposal.empty()) {
+    res.proposal_note = "No proposal: no term of the " + lib_words + " explains the residual strongly (ΔBIC below −" +
+                        fmt("%.0f", d.options.bic_strong) + ").";
+    return;
+  }
   for (std::size_t i = 0; i < res.proposal.size(); ++i) res.proposal[i].name = "proposed_" + std::to_string(i + 1);
+  double kept_share = 0;
+  for (const auto& t : res.proposal) kept_share += t.explained;
   res.proposal_note = "A sparse regression of the residual on " + lib_words + " (best subset by BIC, linearised at the base optimum) proposes " +
-                      std::to_string(res.proposal.size()) + " term" + (res.proposal.size() > 1 ? "s" : "") + " (BIC gain " +
-                      fmt("%.1f", gain) + ", explaining " + fmt("%.0f", 100 * std::clamp((fit.sse_empty - fit.sse) / excess, 0.0, 1.0)) +
-                      " % of the excess residual); paste it into the study file (or pass proposal.toml to --apply) and apply it.";
+                      std::to_string(res.proposal.size()) + " term" + (res.proposal.size() > 1 ? "s" : "") + " (ΔBIC " +
+                      fmt("%.1f", res.proposal.front().delta_bic) + " for the first; together about " +
+                      fmt("%.0f", 100 * std::min(1.0, kept_share)) + " % of the excess residual" +
+                      (dropped ? "; " + std::to_string(dropped) + " weaker term" + (dropped > 1 ? "s" : "") + " with ΔBIC above −" +
+                                     fmt("%.0f", d.options.bic_strong) + " left out"
+                               : std::string()) +
+                      "): paste it into the study file, or pass proposal.toml to --apply, and apply it.";
   res.summary += " " + res.proposal_note;
 }
 

@@ -231,3 +231,33 @@ TEST(Diagnose16, AHiddenUserDefinedEffectIsNamed) {
   const auto r = diagnose(s, s.assemblies().front(), makeData(s, "digressive_damper:c2=1500", 1), {}, o, freshDir("diag16_user"));
   expectNamed(r, "digressive_damper", "effect", 1500.0, 0.2);
 }
+
+TEST(Diagnose16, ATermOnlyTheRegressionFindsIsProposedAppliedAndCutsTheError) {
+  // A position-dependent damper, F = 3e4 q v N, which no candidate has: hidden as a library term
+  // (an on-demand effect, never in the catalogue).
+  const Study s = study();
+  EffectSetting hidden;
+  hidden.name = std::string(kTermPrefix) + "q * v";
+  hidden.values = {{hidden.name + ".a", 3e4, "test", "test"}};
+  const auto data = makeData(s, "", 1, [&](LabOptions& l) { l.hidden_effects = {hidden}; });
+  auto o = smallOptions(s);
+  const std::string dir = freshDir("diag16_term");
+  const auto r = diagnose(s, s.assemblies().front(), data, {}, o, dir);
+  ASSERT_EQ(r.verdict, "unexplained") << r.text();
+  ASSERT_FALSE(r.proposal.empty()) << r.text();
+  const auto& best = r.proposal.front();
+  EXPECT_EQ(best.force, "a * (q * v)") << r.text();
+  EXPECT_NEAR(best.coefficient / 3e4, 1.0, 0.3) << r.text();  // linearised at the base optimum
+  EXPECT_LT(best.delta_bic, -o.bic_strong) << r.text();
+  // Pasted as a user-defined effect (a name of its own in this process) and applied.
+  ProposedTerm pasted = best;
+  pasted.name = "diag16_proposed_term";
+  const fs::path toml = fs::path(dir) / "pasted.toml";
+  dtwin_test::writeText(toml, pasted.toml());
+  ASSERT_EQ(loadUserEffects(toml.string()).size(), 1u);
+  o.apply = {pasted.name};
+  o.effects = {pasted.name};  // the catalogue: only the pasted term (the rest were screened above)
+  const auto a = diagnose(s, s.assemblies().front(), data, {}, o, dir);
+  ASSERT_EQ(a.steps.size(), 2u) << a.text();
+  EXPECT_LE(a.steps[1].comparison.systematic_rms_sd, 0.5 * a.steps[0].comparison.systematic_rms_sd) << a.text();
+}

@@ -169,6 +169,16 @@ void loadVehicleFile(ParameterTable& table, const std::string& path) {
   walk(root, "");
 }
 
+void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name, const std::string& where) {
+  for (auto s : effect.parameters()) {
+    s.name = name + "." + s.name;
+    if (table.contains(s.name)) continue;
+    const double off = s.default_value;
+    table.declare(s);
+    table.set(s.name, off, "effect default (off)", where);
+  }
+}
+
 // ------------------------------------------------------------------ Model
 Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors)
     : assembly_(std::move(assembly)), table_(std::move(table)), sensors_(std::move(sensors)), where_(where) {
@@ -215,16 +225,9 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   }
   for (const auto& e : assembly_.effects) {
     std::shared_ptr<const Effect> eff = makeEffect(e, where);
+    declareEffectParameters(table_, *eff, e, where);
     std::vector<int> slots;
-    for (auto s : eff->parameters()) {
-      s.name = e + "." + s.name;
-      if (!table_.contains(s.name)) {  // an effect made on demand (a library term): at its off value
-        const double off = s.default_value;
-        table_.declare(s);
-        table_.set(s.name, off, "effect default (off)", where);
-      }
-      slots.push_back(addRunParameter(s.name));
-    }
+    for (const auto& s : eff->parameters()) slots.push_back(addRunParameter(e + "." + s.name));
     effects_.push_back(std::move(eff));
     effect_slots_.push_back(std::move(slots));
   }

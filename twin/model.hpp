@@ -48,6 +48,11 @@ const std::map<std::string, std::vector<std::string>>& knownSubsystems();
 /// parameters of every tire and suspension option, and every effect (pre-set to "off").
 ParameterTable declareVehicleParameters();
 
+/// Declares the parameters of `effect` (installed as `name`) not yet in `table`, at their off
+/// values: an effect made on demand (a library term, subsystems/effect.hpp kTermPrefix) is not
+/// among declareVehicleParameters()'s.
+void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name, const std::string& where);
+
 /// Reads a vehicle data file (TOML; each leaf `name = { value = .., unit = "..", source = ".." }`)
 /// into `table`. Errors name the file, the line and the field.
 void loadVehicleFile(ParameterTable& table, const std::string& path);

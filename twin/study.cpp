@@ -642,14 +642,16 @@ ParameterTable Study::parameterTable(const std::vector<ParameterSetting>& overri
 std::shared_ptr<const Model> Study::makeModel(const AssemblySpec& a, const std::vector<EffectSetting>& extra,
                                               const std::vector<ParameterSetting>& overrides) const {
   AssemblySpec spec = a;
-  std::vector<ParameterSetting> all;
+  ParameterTable table = parameterTable();
   for (const auto& e : extra) {
-    makeEffect(e.name, "model.effects");
+    declareEffectParameters(table, *makeEffect(e.name, "model.effects"), e.name, "model.effects");
     if (std::find(spec.effects.begin(), spec.effects.end(), e.name) == spec.effects.end()) spec.effects.push_back(e.name);
-    all.insert(all.end(), e.values.begin(), e.values.end());
   }
-  all.insert(all.end(), overrides.begin(), overrides.end());
-  return std::make_shared<const Model>(spec, parameterTable(all), path, sensors);
+  // Then the extra effects' values and the overrides, in that order of precedence (as parameterTable's).
+  for (const auto& e : extra)
+    for (const auto& v : e.values) table.set(v.name, v.value, v.source, v.where);
+  for (const auto& o : overrides) table.set(o.name, o.value, o.source, o.where);
+  return std::make_shared<const Model>(spec, std::move(table), path, sensors);
 }
 
 std::vector<std::string> LabSettings::channelsOrDefault() const {
@@ -704,7 +706,10 @@ ParameterSetting parseSetting(const std::string& text, const std::string& where)
 }
 
 EffectSetting parseEffectSetting(const std::string& text, const std::string& where) {
-  const auto colon = text.find(':');
+  // A library term's name holds a colon itself ("term:q * v:a=3e4"): its settings follow the last.
+  const bool term = text.rfind(kTermPrefix, 0) == 0;
+  const auto colon = term ? (text.find(':', std::string(kTermPrefix).size()) == std::string::npos ? std::string::npos : text.rfind(':'))
+                          : text.find(':');
   EffectSetting e;
   e.name = text.substr(0, colon);
   makeEffect(e.name, where);

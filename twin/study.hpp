@@ -144,7 +144,8 @@ Study loadStudy(const std::string& path);
 
 /// Parses "name=value" (CLI --set). `where` prefixes errors.
 ParameterSetting parseSetting(const std::string& text, const std::string& where);
-/// Parses "effect[:param=value,...]" (CLI --effect).
+/// Parses "effect[:param=value,...]" (CLI --effect, --hidden-effect); a library term
+/// "term:EXPR[:a=value]" (subsystems/effect.hpp kTermPrefix) takes its settings after the last colon.
 EffectSetting parseEffectSetting(const std::string& text, const std::string& where);
 
 }  // namespace dtwin

@@ -344,14 +344,22 @@ void Diagnosis::compareFigures(Figures& f, const calib::CalibrationResult& r, co
 /// effects installed in the assembly or the study, on data with the fitted `channels`. Their specs
 /// and those of options.apply go into `specs`. Throws InputError when options.effects or
 /// options.apply names an installed effect or a candidate these study and data do not have.
-std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& assembly, const DiagnoseOptions& options,
-                                     const std::vector<std::string>& channels, std::map<std::string, CandidateSpec>& specs) {
+/// The effects installed in `assembly` or the study; InputError when options.effects or
+/// options.apply names one (checked before any data are read).
+std::set<std::string> refuseInstalled(const Study& study, const AssemblySpec& assembly, const DiagnoseOptions& options) {
   const OptionCheck check("diagnose");
   std::set<std::string> installed(assembly.effects.begin(), assembly.effects.end());
   for (const auto& e : study.effects) installed.insert(e.name);
   const std::string rule = " is already installed in assembly " + assembly.id + " or the study's [effects]";
   for (const auto& e : options.effects) check.require(!installed.count(e), "effects", "'" + e + "'" + rule);
   for (const auto& e : options.apply) check.require(!installed.count(e), "apply", "'" + e + "'" + rule);
+  return installed;
+}
+
+std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& assembly, const DiagnoseOptions& options,
+                                     const std::vector<std::string>& channels, std::map<std::string, CandidateSpec>& specs) {
+  const OptionCheck check("diagnose");
+  const auto installed = refuseInstalled(study, assembly, options);
   std::vector<std::string> catalogue = options.effects.empty() ? defaultCandidates(assembly, channels) : options.effects;
   catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const std::string& e) { return installed.count(e) > 0; }),
                   catalogue.end());
@@ -1025,6 +1033,7 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
   if (fit.empty()) throw InputError(OptionCheck("diagnose").where("fit"), "needs at least one measurement data set");
   Diagnosis d(study, assembly, options, out_dir, progress);
   d.res.assembly = assembly.id;
+  refuseInstalled(study, assembly, options);  // before the data are read
   prepareData(d, fit, holdout);
   d.catalogue = catalogueOf(study, assembly, options, d.res.fitted_channels, d.specs);
   d.res.base = d.calibrateWith({}, "base");

@@ -106,6 +106,8 @@ class Simulator {
   /// The system the run vector `values` needs: impl_, or (built on first use) impl_filter_, which
   /// also integrates the auxiliary states of StrutFilter effects (top_mount_compliance) for runs
   /// where one is switched on. At their off values no extra state exists: exactly the base model.
+  /// A run whose freed vehicle values (AssemblySpec::freed: a mass, an inertia) differ from those
+  /// the system was built from first rebuilds it from Model::withFreedValues.
   Impl& pick(const std::vector<double>& values);
   std::unique_ptr<Impl> impl_;
   std::unique_ptr<Impl> impl_filter_;

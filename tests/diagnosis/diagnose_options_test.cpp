@@ -67,6 +67,14 @@ TEST(DiagnoseOptions, EffectsMustBeKnownAndNamedOnce) {
   const auto [where2, rule2] = inputError([&] { o.validate(); });
   EXPECT_EQ(where2, "diagnose.apply");
   EXPECT_EQ(rule2, "names 'strut_friction' twice");
+  // Freed values and sensor models have their own form; what the study and data hold is checked
+  // by diagnose (below).
+  o.apply = {"free:wheel.mass_kg", "lowpass:hub_force", "delay:hub_force_fl_N"};
+  EXPECT_NO_THROW(o.validate());
+  o.apply = {"highpass:hub_force"};
+  const auto [where3, rule3] = inputError([&] { o.validate(); });
+  EXPECT_EQ(where3, "diagnose.apply");
+  EXPECT_NE(rule3.find("free:<vehicle value>"), std::string::npos) << rule3;
 }
 
 TEST(CompareOptions, DefaultsAreValidAndEveryFieldIsChecked) {
@@ -121,6 +129,17 @@ std::string failingDiagnose(const std::string& name, const std::string& args) {
   return dtwin_test::slurp(err);
 }
 }  // namespace
+
+// A candidate the study or the data do not have is refused before any calibration, naming the flag
+// and what is known.
+TEST(Diagnose, TheCliRefusesAFreedValueOrChannelGroupItDoesNotHave) {
+  std::string text = failingDiagnose("diag_options_free", "--apply free:wheel.mas_kg");
+  EXPECT_NE(text.find("twin: error: --apply: unknown vehicle value that can be freed in assembly M1 'wheel.mas_kg'"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("wheel.mass_kg"), std::string::npos) << text;
+  text = failingDiagnose("diag_options_group", "--effects lowpass:seat");
+  EXPECT_NE(text.find("--effects: unknown channel group of the fitted data 'seat'"), std::string::npos) << text;
+}
 
 // The CLI shows the field as its flag.
 TEST(Diagnose, TheCliNamesTheFlagOfABadField) {

@@ -637,16 +637,27 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
     if (cands[i].gate.empty() && cands[i].p_value < d.options.screen_alpha &&
         static_cast<int>(to_confirm.size()) < d.options.candidates)
       to_confirm.push_back(i);
+  std::vector<std::size_t> confirmed;
   for (std::size_t k = 0; k < to_confirm.size(); ++k) {
     auto& c = cands[to_confirm[k]];
-    c.confirmed = true;
     const std::string stage = "confirm " + c.effect + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
-    c.fit = d.calibrateWith({c.effect}, stage, c.screening_estimate, c.screening_theta);
+    try {
+      c.fit = d.calibrateWith({c.effect}, stage, c.screening_estimate, c.screening_theta);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      // One candidate's calibration failing (e.g. its region found no point inside the bounds) is
+      // reported with the candidate; the diagnosis goes on with the others.
+      c.gate = std::string("its confirming calibration failed (") + e.what() + ")";
+      continue;
+    }
+    c.confirmed = true;
     std::vector<double> values;
     for (const auto& p : c.fit->effect_parameters) values.push_back(p.mean);
     c.finding = d.spec(c.effect).finding(values);
+    confirmed.push_back(to_confirm[k]);
   }
-  return to_confirm;
+  return confirmed;
 }
 
 /// Refine (the end of step 3): the evidence for an effect must not come from a base optimum the optimiser

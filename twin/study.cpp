@@ -532,18 +532,21 @@ void checkScenarioSamples(const Study& s) {
   }
 }
 
-/// The study file, table by table (each reader checks its own fields and reports unknown ones),
-/// then the cross-checks that need the whole study.
-std::vector<UserEffectSpec> loadUserEffects(const std::string& path) {
+/// The TOML file `path` parsed; InputError naming the file (a `kind`, e.g. "study file") when it is
+/// missing or a folder, or the line when it is malformed.
+toml::table parseTomlFile(const std::string& path, const std::string& kind) {
   namespace fs = std::filesystem;
-  if (!fs::exists(path)) throw InputError(path, "file of user-defined effects not found");
-  if (fs::is_directory(path)) throw InputError(path, "is a folder, not a file of user-defined effects");
-  toml::table root;
+  if (!fs::exists(path)) throw InputError(path, kind + " not found");
+  if (fs::is_directory(path)) throw InputError(path, "is a folder, not a " + kind);
   try {
-    root = toml::parse_file(path);
+    return toml::parse_file(path);
   } catch (const toml::parse_error& e) {
     throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
   }
+}
+
+std::vector<UserEffectSpec> loadUserEffects(const std::string& path) {
+  const toml::table root = parseTomlFile(path, "file of user-defined effects");
   TableReader top(root, path, "");
   Study s;
   readUserEffects(top, s);
@@ -552,16 +555,10 @@ std::vector<UserEffectSpec> loadUserEffects(const std::string& path) {
   return s.user_effects;
 }
 
+/// The study file, table by table (each reader checks its own fields and reports unknown ones),
+/// then the cross-checks that need the whole study.
 Study loadStudy(const std::string& path) {
-  namespace fs = std::filesystem;
-  if (!fs::exists(path)) throw InputError(path, "study file not found");
-  if (fs::is_directory(path)) throw InputError(path, "is a folder, not a study file");
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
-  }
+  const toml::table root = parseTomlFile(path, "study file");
   Study s;
   s.path = path;
   TableReader top(root, path, "");

@@ -871,11 +871,15 @@ void propose(Diagnosis& d) {
   std::vector<double> amplitude(library.size(), 0.0);
   for (std::size_t j = 0; j < library.size(); ++j) {
     double peak = 0;
+    const char* corners[] = {"fl", "fr", "rl", "rr"};
     for (const auto& t : traces)
-      for (const char* c : {"fl", "fr", "rl", "rr"}) {
-        const auto& q = t.column(std::string("susp_defl_") + c + "_m");
-        const auto& v = t.column(std::string("susp_rate_") + c + "_mps");
-        for (std::size_t i = 0; i < q.size(); ++i) peak = std::max(peak, std::abs(library[j].f(q[i], v[i])));
+      for (int c = 0; c < 4; ++c) {
+        const auto& q = t.column(std::string("susp_defl_") + corners[c] + "_m");
+        const auto& v = t.column(std::string("susp_rate_") + corners[c] + "_mps");
+        const auto& qo = t.column(std::string("susp_defl_") + corners[c ^ 1] + "_m");  // the other side of the axle
+        const auto& vo = t.column(std::string("susp_rate_") + corners[c ^ 1] + "_mps");
+        for (std::size_t i = 0; i < q.size(); ++i)
+          peak = std::max(peak, std::abs(library[j].f({q[i], v[i], q[i] - qo[i], v[i] - vo[i]})));
       }
     if (peak > 0) amplitude[j] = 200.0 / peak;
   }
@@ -933,8 +937,9 @@ void propose(Diagnosis& d) {
   for (std::size_t i = 0; i < fit.chosen.size(); ++i) {
     const std::size_t k = fit.chosen[i], j = used[k];
     ProposedTerm t;
-    t.force = "a * (" + library[j].expr + ")";
+    t.force = "a * (" + (library[j].gap > 0 ? library[j].g_expr : library[j].expr) + ")";
     t.unit = library[j].unit;
+    t.gap = library[j].gap;
     t.coefficient = fit.coef[i] / norm[k];
     t.delta_bic = -(fit.drop_sse[i] - fit.sse - ln_n);
     t.explained = std::clamp((fit.drop_sse[i] - fit.sse) / excess, 0.0, 1.0);
@@ -1145,7 +1150,8 @@ std::string DiagnosisResult::text() const {
   if (!proposal.empty()) {
     s += "\nProposed terms (strut force a * TERM at every strut; ready to paste into the study file):\n";
     for (const auto& t : proposal)
-      s += "  " + t.name + ": " + t.force + ", a ≈ " + fmt("%.3g", t.coefficient) + " " + t.unit + ", ΔBIC " + fmt("%.1f", t.delta_bic) +
+      s += "  " + t.name + ": " + t.force + ", a ≈ " + fmt("%.3g", t.coefficient) + " " + t.unit +
+           (t.gap > 0 ? ", g = " + fmt("%.3g", t.gap) + " m" : "") + ", ΔBIC " + fmt("%.1f", t.delta_bic) +
            ", explains " + fmt("%.0f", 100 * t.explained) + " % of the excess residual\n";
     s += "\n" + proposalToml();
   }

@@ -19,27 +19,34 @@ double sgn(double x) { return (x > 0) - (x < 0); }
 }  // namespace
 
 std::vector<LibraryTerm> termLibrary(double q_comp, double q_reb) {
+  using S = StrutSample;
   std::vector<LibraryTerm> lib = {
-      {"q * abs(q)", "N/m^2", [](double q, double) { return q * std::abs(q); }},
-      {"q^2", "N/m^2", [](double q, double) { return q * q; }},
-      {"q^3", "N/m^3", [](double q, double) { return q * q * q; }},
-      {"v * abs(v)", "N*s^2/m^2", [](double, double v) { return v * std::abs(v); }},
-      {"v^3", "N*s^3/m^3", [](double, double v) { return v * v * v; }},
-      {"q * v", "N*s/m^2", [](double q, double v) { return q * v; }},
-      {"sign(v)", "N", [](double, double v) { return sgn(v); }},
-      {"sign(v) * sqrt(abs(v))", "N*s^0.5/m^0.5", [](double, double v) { return sgn(v) * std::sqrt(std::abs(v)); }},
-      {"(v < 0 ? v : 0)", "N*s/m", [](double, double v) { return v < 0 ? v : 0.0; }},
+      {"q * abs(q)", "N/m^2", [](const S& s) { return s.q * std::abs(s.q); }, 0, {}},
+      {"q^2", "N/m^2", [](const S& s) { return s.q * s.q; }, 0, {}},
+      {"q^3", "N/m^3", [](const S& s) { return s.q * s.q * s.q; }, 0, {}},
+      {"v * abs(v)", "N*s^2/m^2", [](const S& s) { return s.v * std::abs(s.v); }, 0, {}},
+      {"v^3", "N*s^3/m^3", [](const S& s) { return s.v * s.v * s.v; }, 0, {}},
+      {"q * v", "N*s/m^2", [](const S& s) { return s.q * s.v; }, 0, {}},
+      {"sign(v)", "N", [](const S& s) { return sgn(s.v); }, 0, {}},
+      {"sign(v) * sqrt(abs(v))", "N*s^0.5/m^0.5", [](const S& s) { return sgn(s.v) * std::sqrt(std::abs(s.v)); }, 0, {}},
+      {"(v < 0 ? v : 0)", "N*s/m", [](const S& s) { return s.v < 0 ? s.v : 0.0; }, 0, {}},
+      {"dq * abs(dq)", "N/m^2", [](const S& s) { return s.dq * std::abs(s.dq); }, 0, {}},
+      {"dq^3", "N/m^3", [](const S& s) { return s.dq * s.dq * s.dq; }, 0, {}},
+      {"dv", "N*s/m", [](const S& s) { return s.dv; }, 0, {}},
+      {"q * dq", "N/m^2", [](const S& s) { return s.q * s.dq; }, 0, {}},
   };
   for (double frac : {0.2, 0.4, 0.6, 0.8}) {
     if (q_comp > 0) {
       const double g = std::stod(num(frac * q_comp));  // as printed, so the proposal is the term simulated
-      lib.push_back({"max(q - " + num(g) + ", 0)", "N/m", [g](double q, double) { return std::max(q - g, 0.0); }});
-      lib.push_back({"max(q - " + num(g) + ", 0)^2", "N/m^2", [g](double q, double) { return std::pow(std::max(q - g, 0.0), 2); }});
+      lib.push_back({"max(q - " + num(g) + ", 0)", "N/m", [g](const S& s) { return std::max(s.q - g, 0.0); }, g, "max(q - g, 0)"});
+      lib.push_back({"max(q - " + num(g) + ", 0)^2", "N/m^2", [g](const S& s) { return std::pow(std::max(s.q - g, 0.0), 2); }, g,
+                     "max(q - g, 0)^2"});
     }
     if (q_reb > 0) {
       const double g = std::stod(num(frac * q_reb));
-      lib.push_back({"max(-q - " + num(g) + ", 0)", "N/m", [g](double q, double) { return std::max(-q - g, 0.0); }});
-      lib.push_back({"max(-q - " + num(g) + ", 0)^2", "N/m^2", [g](double q, double) { return std::pow(std::max(-q - g, 0.0), 2); }});
+      lib.push_back({"max(-q - " + num(g) + ", 0)", "N/m", [g](const S& s) { return std::max(-s.q - g, 0.0); }, g, "max(-q - g, 0)"});
+      lib.push_back({"max(-q - " + num(g) + ", 0)^2", "N/m^2", [g](const S& s) { return std::pow(std::max(-s.q - g, 0.0), 2); }, g,
+                     "max(-q - g, 0)^2"});
     }
   }
   return lib;
@@ -102,12 +109,15 @@ SubsetFit bestSubsetByBic(const Eigen::MatrixXd& G, const Eigen::VectorXd& r, in
 
 std::string ProposedTerm::toml() const {
   const double far = 5.0 * coefficient;
+  std::string g;
+  if (gap > 0)
+    g = ", g = { value = " + num(gap) + ", unit = \"m\", lower = " + num(0.5 * gap) + ", upper = " + num(2 * gap) + ", shape = true }";
   return "[user_effects." + name + "]\nelement = \"strut\"\nforce = \"" + force + "\"\nparameters = { a = { value = 0, unit = \"" + unit +
-         "\", lower = " + num(std::min(0.0, far)) + ", upper = " + num(std::max(0.0, far)) + " } }\n";
+         "\", lower = " + num(std::min(0.0, far)) + ", upper = " + num(std::max(0.0, far)) + " }" + g + " }\n";
 }
 
 nlohmann::json ProposedTerm::toJson() const {
-  return {{"name", name}, {"force", force}, {"unit", unit}, {"coefficient", coefficient}, {"delta_bic", delta_bic},
+  return {{"name", name}, {"force", force}, {"unit", unit}, {"gap_m", gap}, {"coefficient", coefficient}, {"delta_bic", delta_bic},
           {"explained_fraction", explained}, {"toml", toml()}};
 }
 

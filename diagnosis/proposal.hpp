@@ -14,16 +14,27 @@
 
 namespace dtwin::diag {
 
+/// The strut's state a term is sized on: its deflection and rate, and the differences from the
+/// other strut on its axle (the user-effect variables q, v, dq, dv).
+struct StrutSample {
+  double q = 0, v = 0, dq = 0, dv = 0;
+};
+
 struct LibraryTerm {
-  std::string expr;  ///< in the strut variables q (compression +, m) and v (m/s), e.g. "max(q - 0.012, 0)^2"
+  std::string expr;  ///< in the strut variables q, v, dq, dv (subsystems/user_effect.hpp), e.g. "max(q - 0.012, 0)^2"
   std::string unit;  ///< of its coefficient a (the force a·TERM is in N)
-  std::function<double(double q, double v)> f;  ///< the same term, to size its probe
+  std::function<double(const StrutSample&)> f;  ///< the same term, to size its probe
+  /// Knees: the gap g [m] the expression writes as a number; the pasted table writes `g_expr`
+  /// with g a shape parameter (so the units check: a bare number is dimensionless). 0: none.
+  double gap = 0;
+  std::string g_expr;
 };
 
 /// The library: odd and even polynomials in q and v (q|q|, q², q³, v|v|, v³, q v), friction-like
-/// sign(v) and sign(v)√|v|, one-sided damping (rebound only), and knees max(q − g, 0)^p
+/// sign(v) and sign(v)√|v|, one-sided damping (rebound only), knees max(q − g, 0)^p
 /// (compression) and max(−q − g, 0)^p (rebound) for p = 1, 2 at g = 20, 40, 60, 80 % of the
-/// largest compression `q_comp` and rebound `q_reb` [m] the base model reaches.
+/// largest compression `q_comp` and rebound `q_reb` [m] the base model reaches, and terms across
+/// an axle's corners: dq|dq|, dq³ (a progressive roll stiffness), dv (a roll damper) and q·dq.
 std::vector<LibraryTerm> termLibrary(double q_comp, double q_reb);
 
 /// The best subset S (|S| ≤ max_terms) of the columns of G for the residual r by BIC = ‖r − G_S c‖²
@@ -40,12 +51,14 @@ SubsetFit bestSubsetByBic(const Eigen::MatrixXd& G, const Eigen::VectorXd& r, in
 /// One proposed term, ready to paste.
 struct ProposedTerm {
   std::string name;          ///< proposed_1, ...
-  std::string force;         ///< "a * (TERM)"
+  std::string force;         ///< "a * (TERM)", a knee's gap written g
   std::string unit;          ///< of a
+  double gap = 0;            ///< a knee's g [m] (a shape parameter in the table); 0: none
   double coefficient = 0;    ///< the linearised estimate of a
   double delta_bic = 0;      ///< BIC without this term − BIC with it, negated: < 0 favours the term
   double explained = 0;      ///< share of the residual's excess over the noise it removes (alone, given the others)
-  /// The [user_effects.NAME] table: a = { value = 0, unit, prior [0, 5 â] (or [5 â, 0]) }.
+  /// The [user_effects.NAME] table: a = { value = 0, unit, prior [0, 5 â] (or [5 â, 0]) }, and a
+  /// knee's g = { value = gap, unit = "m", range [gap / 2, 2 gap], shape = true }.
   std::string toml() const;
   nlohmann::json toJson() const;
 };

@@ -43,6 +43,8 @@ const char* kindName(EffectKind kind) {
     case EffectKind::TireForce: return "TireForce";
     case EffectKind::AxleCoupling: return "AxleCoupling";
     case EffectKind::StrutFilter: return "StrutFilter";
+    case EffectKind::TireLoad: return "TireLoad";
+    case EffectKind::ChassisForce: return "ChassisForce";
   }
   return "?";
 }
@@ -98,6 +100,7 @@ std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& w
     u.element = "strut";
     u.force = "a * (" + name.substr(std::string(kTermPrefix).size()) + ")";
     u.parameters = {{"a", "1", 0.0, -1e12, 1e12, false}};
+    u.check_units = false;  // the coefficient's unit follows from the term (diagnosis/proposal.hpp)
     u.where = where + ": " + name;
     return makeUserEffect(u);
   }

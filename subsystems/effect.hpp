@@ -23,6 +23,24 @@ enum class EffectKind {
   TireForce,     ///< multiplies the tire law's normal force by a factor (1 when off)
   AxleCoupling,  ///< a force pair between the left and right struts of an axle, from both deflections
   StrutFilter,   ///< a series element with one auxiliary state z [N] per strut (see calcFilterRate)
+  TireLoad,      ///< adds a vertical force to the tire law's, at every wheel in contact (calcTireLoad)
+  ChassisForce,  ///< a vertical force between ground and the chassis at its mass centre (calcChassisForce)
+};
+
+/// Both main struts of one axle, for AxleCoupling effects (deflections compression positive).
+struct AxleState {
+  double q_left = 0.0, q_right = 0.0;  ///< deflections [m]
+  double v_left = 0.0, v_right = 0.0;  ///< their rates [m/s]
+  bool front = true;
+  double time_s = 0.0, speed_mps = 0.0;
+};
+
+/// The chassis's motion from its start, for ChassisForce effects.
+struct ChassisState {
+  double heave_m = 0.0;         ///< mass-centre height above its height at t = 0 [m]
+  double heave_rate_mps = 0.0;  ///< its rate [m/s]
+  double pitch_rad = 0.0, roll_rad = 0.0;  ///< from their values at t = 0
+  double time_s = 0.0, speed_mps = 0.0;
 };
 
 /// The name of a kind as docs/model.md writes it ("Strut", "TireInput", ...).
@@ -71,6 +89,17 @@ class Effect {
   /// positive pushes the wheel down and the chassis up); the right strut gets its negative.
   /// q_left, q_right: suspension deflections (compression positive); front: front axle.
   virtual double calcAxleCouplingForce(double q_left, double q_right, bool front, ParamValues p) const { return 0.0; }
+  /// AxleCoupling effects, what the simulator calls: by default calcAxleCouplingForce of the
+  /// deflections; an effect that reads rates, time or speed overrides this.
+  virtual double calcAxleForce(const AxleState& a, ParamValues p) const {
+    return calcAxleCouplingForce(a.q_left, a.q_right, a.front, p);
+  }
+  /// TireLoad effects: the force [N] added to the tire law's normal force (s.normal_force_N) at a
+  /// wheel in contact (s.deflection_m > 0); the sum is clamped at >= 0 (a tire cannot pull).
+  virtual double calcTireLoad(const TireState& s, ParamValues p) const { return 0.0; }
+  /// ChassisForce effects: the vertical force [N, up positive] on the chassis at its mass centre
+  /// (reacted by the ground: an aerodynamic lift, a test rig's actuator).
+  virtual double calcChassisForce(const ChassisState& s, ParamValues p) const { return 0.0; }
   /// StrutFilter effects. Whether the auxiliary state is needed at all for parameters p (false
   /// at the off values: the simulator then integrates no extra state, so "off" is exactly the
   /// base model).

@@ -17,6 +17,12 @@ struct StrutState {
   double preload_N = 0.0;     ///< static force at q = 0 (set by the assembly from equilibrium)
   double base_stiffness = 0.0;  ///< k of the main spring [N/m] (effects such as asymmetry read it)
   double base_damping = 0.0;    ///< c of the main damper [N*s/m]
+  // The run's context on a main strut, for effects (the laws ignore it; 0 elsewhere):
+  double time_s = 0.0;              ///< simulation time
+  double speed_mps = 0.0;           ///< vehicle forward speed
+  double other_deflection_m = 0.0;  ///< q of the other main strut on the same axle
+  double other_rate_mps = 0.0;      ///< its dq/dt
+  bool front = true;                ///< on the front axle
 };
 
 /// The law of a suspension's main strut. The contract every registered law keeps (checked over

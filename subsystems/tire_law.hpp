@@ -24,6 +24,11 @@ struct TireState {
   double fx_N = 0.0;                 ///< longitudinal force (PAC2002 load-response term)
   double fy_N = 0.0;                 ///< lateral force
   double camber_rad = 0.0;           ///< inclination angle gamma
+  // Read by effects only (the laws ignore them):
+  double road_height_m = 0.0;        ///< road height under the wheel (before tire-input effects)
+  double time_s = 0.0;               ///< simulation time
+  bool front = true;                 ///< on the front axle
+  double normal_force_N = 0.0;       ///< the law's normal force (set before TireLoad effects run)
 };
 
 class TireLaw {

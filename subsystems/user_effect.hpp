@@ -1,17 +1,26 @@
 #pragma once
-// User-defined effects (issue 16, first part): a force element whose force is an expression in the
-// study file, parsed once with muparser and evaluated from bytecode. No rebuild is needed.
+// User-defined effects: a force element whose force is an expression in the study file, parsed
+// once with muparser and evaluated from bytecode. No rebuild is needed.
 //
-// This part builds the strut element: an extra force along every suspension strut, with the same
-// sign as the built-in strut effects (positive pushes the wheel down and the chassis up). Its
-// expression may use the strut's state and the effect's own parameters:
-//   q  deflection [m], compression positive, 0 at design ride height
-//   v  deflection rate dq/dt [m/s]
-//   k  the main spring's stiffness [N/m], c  the main damper's damping [N*s/m]
+// Four elements, each with the state variables its expression may use (userEffectVariables; the
+// table in docs/study-file.md, "User-defined effects"):
+//   strut      a force along every main suspension strut, the built-in strut effects' sign
+//              (positive pushes the wheel down and the chassis up): q, v, dq, dv, k, c, t, u, front
+//   tire       a vertical force added to the tire law's at every wheel in contact (the sum is kept
+//              >= 0): qt, vt, fz, zr, t, u, front
+//   axle_roll  a force pair on each axle's main struts, F on the left and -F on the right:
+//              dq, dv, t, u, front
+//   chassis    a vertical force (up positive) between ground and the chassis at its mass centre:
+//              z, w, pitch, roll, t, u
 // and muparser's operators and functions (+ - * / ^, comparisons, ?:, sin, exp, sqrt, abs, sign,
 // min, max, ...). Each parameter has a unit, a value and a prior range [lower, upper]. The value
 // is the effect's "off" setting: with every parameter at its value the force must be 0, so adding
 // the effect never changes a model until a parameter moves (what the diagnosis relies on).
+//
+// Units are checked: the expression, with every variable and parameter in its unit, must give a
+// force in N. The check is the scaling test of dimensional homogeneity (common/units.hpp): measured
+// in other units of mass, length and time, a homogeneous expression scales as a force does. A bare
+// number in the expression counts as dimensionless.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -30,19 +39,32 @@ struct UserEffectParameter {
 
 struct UserEffectSpec {
   std::string name;      ///< the effect's name (a study's [user_effects.NAME])
-  std::string element;   ///< where the force acts: "strut"
+  std::string element;   ///< where the force acts: "strut", "tire", "axle_roll" or "chassis"
   std::string force;     ///< the expression
   std::vector<UserEffectParameter> parameters;
   std::string where;     ///< names the definition in errors, e.g. "study.toml:12: user_effects.soft_stop"
+  /// Whether makeUserEffect checks the units (off only for the diagnosis's own library terms,
+  /// whose coefficient's unit follows from the term).
+  bool check_units = true;
 };
 
-/// The state variables an element's expression may use, in the order the evaluator binds them.
-std::vector<std::string> userEffectVariables(const std::string& element);
+/// One state variable of an element's expression.
+struct UserEffectVariable {
+  std::string name, unit, meaning;
+  double lo = 0.0, hi = 0.0;  ///< a plausible range, where the checks evaluate the expression
+};
+
+/// The elements, in the order the documentation lists them.
+std::vector<std::string> userEffectElements();
+/// The state variables an element's expression may use, in the order the evaluator binds them
+/// (empty for an unknown element).
+const std::vector<UserEffectVariable>& userEffectVariables(const std::string& element);
 
 /// Builds the effect; InputError(spec.where + "...", rule) for an element it does not know, a
-/// parameter whose name is taken or not an identifier, a missing or empty prior range, a value
-/// outside it, an expression that does not parse or names an unknown symbol, a force that is not
-/// finite, or one that is not 0 with every parameter at its value.
+/// parameter whose name is taken or not an identifier, a unit that does not parse, a missing or
+/// empty prior range, a value outside it, an expression that does not parse or names an unknown
+/// symbol, a force that is not finite, one that is not 0 with every parameter at its value, or
+/// one whose units are not N.
 std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec);
 
 /// Makes `spec` known by name to makeEffect and effectNames (subsystems/effect.hpp), after the

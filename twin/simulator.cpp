@@ -63,6 +63,9 @@ struct RunContext {
   const Road* road = nullptr;
   SpeedProfile speed;
   double traction_per_wheel_per_accel = 0.0;  ///< M/4: traction share per unit acceleration
+  /// The chassis's heave, pitch and roll coordinates at the start (setEquilibrium): ChassisForce
+  /// effects read the motion from there.
+  double heave0 = 0.0, pitch0 = 0.0, roll0 = 0.0;
 };
 
 struct TireEval {
@@ -78,6 +81,7 @@ struct TireCorner {
   std::size_t r0 = 0;          // index of unloaded_radius_m within the tire's parameters
   std::vector<std::pair<const Effect*, std::size_t>> filters;  // tire-input effects, first slot
   std::vector<std::pair<const Effect*, std::size_t>> scalers;  // tire-force effects, first slot
+  std::vector<std::pair<const Effect*, std::size_t>> loads;    // tire-load effects, first slot
 
   TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
     TireEval e;
@@ -102,8 +106,17 @@ struct TireCorner {
     ts.wheel_speed_radps = v / (R0 - std::max(0.0, e.rho) / 3.0);
     ts.forward_speed_mps = v;
     ts.fx_N = c.traction_per_wheel_per_accel * c.speed.accel(t);
+    ts.road_height_m = e.road_h;
+    ts.time_s = t;
+    ts.front = isFront(corner);
     e.fz = model->tire().calcNormalForce(ts, p);
     for (auto& [eff, s] : scalers) e.fz *= eff->tireForceFactor(ts, ParamValues(c.p + s, eff->parameters().size()));
+    if (!loads.empty() && e.rho > 0) {  // added at a wheel in contact; the tire cannot pull
+      ts.normal_force_N = e.fz;
+      double add = 0.0;
+      for (auto& [eff, s] : loads) add += eff->calcTireLoad(ts, ParamValues(c.p + s, eff->parameters().size()));
+      e.fz = std::max(0.0, e.fz + add);
+    }
     return e;
   }
 };
@@ -212,12 +225,14 @@ class StrutElement : public Force::Custom::Implementation {
     if (with_effects && filter_states)
       for (std::size_t i = 0; i < m->effects().size(); ++i)
         if (m->effects()[i]->kind() == EffectKind::StrutFilter) filter_effects_.push_back(i);
+    if (with_effects)
+      for (const auto& e : m->effects()) context_ = context_ || e->kind() == EffectKind::Strut || e->kind() == EffectKind::StrutFilter;
   }
   void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
     const auto k = g_.kin(s);
-    double F = force(k.q, k.qd);
+    const StrutState ss = strutState(s, k);
+    double F = force(ss);
     if (!filter_effects_.empty()) {
-      const StrutState ss = strutState(k.q, k.qd);
       const Vector& z = s.getZ(sub_);
       for (std::size_t j = 0; j < filter_effects_.size(); ++j) {
         const std::size_t i = filter_effects_[j];
@@ -233,8 +248,7 @@ class StrutElement : public Force::Custom::Implementation {
   /// The auxiliary states' derivatives (z = 0 at rest: the equilibrium start needs no setting).
   void realizeAcceleration(const State& s) const override {
     if (filter_effects_.empty()) return;
-    const auto k = g_.kin(s);
-    const StrutState ss = strutState(k.q, k.qd);
+    const StrutState ss = strutState(s, g_.kin(s));
     const Vector& z = s.getZ(sub_);
     Vector& zd = s.updZDot(sub_);
     for (std::size_t j = 0; j < filter_effects_.size(); ++j) {
@@ -250,23 +264,34 @@ class StrutElement : public Force::Custom::Implementation {
   bool bind_slider_ = false;
   MobilizedBody seat_slider_, seat_pin_;
   double seat_y_ = 0;
-  StrutState strutState(double q, double qd) const {
+  /// A main strut's axle partner (the other main strut on its axle) and axle: the context its
+  /// effects read (StrutState's time, speed and other_*). Unset on interface elements.
+  const StrutGeometry* partner_ = nullptr;
+  bool front_ = true;
+  StrutState strutState(const State& s, const StrutGeometry::Kin& k) const {
     const double* p = ctx_->p;
     StrutState ss;
-    ss.deflection_m = q;
-    ss.rate_mps = qd;
+    ss.deflection_m = k.q;
+    ss.rate_mps = k.qd;
     ss.preload_N = preload_slot_ >= 0 ? p[preload_slot_] : preload_;
     ss.base_stiffness = p[p0_];
     ss.base_damping = p[p0_ + 1];
+    if (context_ && partner_) {
+      const auto o = partner_->kin(s);
+      ss.other_deflection_m = o.q;
+      ss.other_rate_mps = o.qd;
+      ss.time_s = s.getTime();
+      ss.speed_mps = ctx_->speed.speed(ss.time_s);
+      ss.front = front_;
+    }
     return ss;
   }
   ParamValues effectValues(std::size_t i) const {
     return ParamValues(ctx_->p + m_->effectSlots()[i][0], m_->effects()[i]->parameters().size());
   }
   /// Strut force without the StrutFilter effects (they need the State's auxiliary variables).
-  double force(double q, double qd) const {
+  double force(const StrutState& ss) const {
     const double* p = ctx_->p;
-    const StrutState ss = strutState(q, qd);
     double F = law_->calcForce(ss, ParamValues(p + p0_, law_->parameters().size()));
     if (effects_) {
       const auto& effs = m_->effects();
@@ -287,6 +312,7 @@ class StrutElement : public Force::Custom::Implementation {
   int preload_slot_;
   double preload_;
   bool effects_;
+  bool context_ = false;  ///< a strut effect is installed: fill StrutState's context
   SubsystemIndex sub_;
   std::vector<std::size_t> filter_effects_;  // indices into the model's effects
   mutable std::vector<ZIndex> zi_;           // their auxiliary states (set in realizeTopology)
@@ -301,8 +327,16 @@ class AxleCouplingElement : public Force::Custom::Implementation {
                       const StrutGeometry* right, bool front)
       : ctx_(ctx), eff_(eff), slot_(slot), left_(left), right_(right), front_(front) {}
   void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
-    const double F = eff_->calcAxleCouplingForce(left_->kin(s).q, right_->kin(s).q, front_,
-                                                 ParamValues(ctx_->p + slot_, eff_->parameters().size()));
+    const auto l = left_->kin(s), r = right_->kin(s);
+    AxleState a;
+    a.q_left = l.q;
+    a.q_right = r.q;
+    a.v_left = l.qd;
+    a.v_right = r.qd;
+    a.front = front_;
+    a.time_s = s.getTime();
+    a.speed_mps = ctx_->speed.speed(a.time_s);
+    const double F = eff_->calcAxleForce(a, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
     if (F == 0.0) return;
     left_->apply(s, F, bodyForces, mobilityForces);
     right_->apply(s, -F, bodyForces, mobilityForces);
@@ -315,6 +349,34 @@ class AxleCouplingElement : public Force::Custom::Implementation {
   std::size_t slot_;
   const StrutGeometry *left_, *right_;  // the Impl's struts (bound after realizeTopology)
   bool front_;
+};
+
+/// A ChassisForce effect: a vertical force on the chassis at its mass centre (its body origin),
+/// from the heave, pitch and roll coordinates relative to the start. Installed only when such an
+/// effect is.
+class ChassisForceElement : public Force::Custom::Implementation {
+ public:
+  /// `heave`: the chassis's vertical Slider; `chassis`: its Universal (q0 roll, q1 pitch).
+  ChassisForceElement(const RunContext* ctx, const Effect* eff, std::size_t slot, MobilizedBody heave, MobilizedBody chassis)
+      : ctx_(ctx), eff_(eff), slot_(slot), heave_(heave), chassis_(chassis) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    ChassisState c;
+    c.heave_m = heave_.getOneQ(s, 0) - ctx_->heave0;
+    c.heave_rate_mps = heave_.getOneU(s, 0);
+    c.pitch_rad = chassis_.getOneQ(s, 1) - ctx_->pitch0;
+    c.roll_rad = chassis_.getOneQ(s, 0) - ctx_->roll0;
+    c.time_s = s.getTime();
+    c.speed_mps = ctx_->speed.speed(c.time_s);
+    const double F = eff_->calcChassisForce(c, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
+    if (F != 0.0) bodyForces[chassis_.getMobilizedBodyIndex()][1] += Vec3(0, 0, F);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  const Effect* eff_;
+  std::size_t slot_;
+  MobilizedBody heave_, chassis_;
 };
 
 /// Gravity plus the d'Alembert load of the accelerating vehicle frame: m (-g z - a(t) x) at every
@@ -442,6 +504,8 @@ struct Simulator::Impl {
         se->seat_pin_ = axle[ax];
         se->seat_y_ = struts[c].st_lower[1];
       }
+      se->partner_ = &struts[c ^ 1];  // corners 2 ax + side: the other side of the axle
+      se->front_ = isFront(c);
       slider_elems.push_back(se);
       Force::Custom(forces, se);
       TireCorner tc;
@@ -455,6 +519,8 @@ struct Simulator::Impl {
           tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
         else if (M.effects()[i]->kind() == EffectKind::TireForce)
           tc.scalers.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
+        else if (M.effects()[i]->kind() == EffectKind::TireLoad)
+          tc.loads.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
       tires[c] = tc;
       Force::Custom(forces, new TireElement(&ctx, tc, wheels[c]));
     }
@@ -463,6 +529,9 @@ struct Simulator::Impl {
         for (int ax = 0; ax < 2; ++ax)
           Force::Custom(forces, new AxleCouplingElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]),
                                                         &struts[2 * ax], &struts[2 * ax + 1], ax == 0));
+    for (std::size_t i = 0; i < M.effects().size(); ++i)
+      if (M.effects()[i]->kind() == EffectKind::ChassisForce)
+        Force::Custom(forces, new ChassisForceElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), heave, chassis));
     Force::Custom(forces, new BodyLoadElement(&ctx, massive, d.gravity));
     ctx.traction_per_wheel_per_accel = d.total_mass(M.topology()) / 4.0;
     system.realizeTopology();
@@ -520,6 +589,9 @@ struct Simulator::Impl {
     residual(x);
     s.updU() = 0;
     system.realize(s, Stage::Velocity);
+    ctx.heave0 = x[0];
+    ctx.pitch0 = x[1];
+    ctx.roll0 = x[2];
   }
 
   void record(const State& s, std::vector<std::array<double, KNOT>>& knots, std::vector<double>& times) {

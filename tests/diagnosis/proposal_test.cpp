@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "diagnosis/proposal.hpp"
 #include "subsystems/effect.hpp"
+#include "subsystems/user_effect.hpp"
 #include "test_util.hpp"
 #include "twin/study.hpp"
 
@@ -52,7 +53,8 @@ TEST(Proposal, LibraryKneesSitOnTheStatesReached) {
   for (const auto& t : lib)
     if (t.expr.rfind("max(", 0) == 0) {
       ++knees;
-      EXPECT_EQ(t.f(-1.0, 0.0) == 0.0, t.expr.rfind("max(q", 0) == 0) << t.expr;  // a compression knee is 0 in rebound
+      EXPECT_EQ(t.f({-1.0, 0.0, 0.0, 0.0}) == 0.0, t.expr.rfind("max(q", 0) == 0) << t.expr;  // a compression knee is 0 in rebound
+      EXPECT_GT(t.gap, 0.0) << t.expr;
     }
   EXPECT_EQ(knees, 16);
   bool has = false;
@@ -69,8 +71,9 @@ TEST(Proposal, ALibraryTermIsAnEffectAndTheTableReadsBack) {
   EXPECT_EQ(std::find(names.begin(), names.end(), std::string(kTermPrefix) + "max(-q - 0.03, 0)^2"), names.end());
   ProposedTerm t;
   t.name = "proposed_test_1";
-  t.force = "a * (max(-q - 0.03, 0)^2)";
+  t.force = "a * (max(-q - g, 0)^2)";
   t.unit = "N/m^2";
+  t.gap = 0.03;
   t.coefficient = -9.7e5;
   const auto dir = dtwin_test::freshDir("proposal_toml");
   dtwin_test::writeText(dir / "p.toml", t.toml());
@@ -79,6 +82,29 @@ TEST(Proposal, ALibraryTermIsAnEffectAndTheTableReadsBack) {
   EXPECT_EQ(specs[0].force, t.force);
   EXPECT_DOUBLE_EQ(specs[0].parameters[0].lower, -4.85e6);
   EXPECT_DOUBLE_EQ(specs[0].parameters[0].upper, 0.0);
+  // The knee's gap is a shape parameter in metres (the units check needs it: a bare number is
+  // dimensionless), at the value the term was simulated with.
+  ASSERT_EQ(specs[0].parameters.size(), 2u);
+  EXPECT_EQ(specs[0].parameters[1].name, "g");
+  EXPECT_EQ(specs[0].parameters[1].unit, "m");
+  EXPECT_DOUBLE_EQ(specs[0].parameters[1].value, 0.03);
+  EXPECT_TRUE(specs[0].parameters[1].shape);
+  // Every library term's pasted form passes the units check.
+  for (const auto& term : termLibrary(0.05, 0.04)) {
+    ProposedTerm p;
+    p.force = "a * (" + (term.gap > 0 ? term.g_expr : term.expr) + ")";
+    p.unit = term.unit;
+    p.gap = term.gap;
+    p.coefficient = 1.0;
+    UserEffectSpec u;
+    u.name = "lib";
+    u.element = "strut";
+    u.force = p.force;
+    u.parameters = {{"a", p.unit, 0.0, 0.0, 5.0}};
+    if (p.gap > 0) u.parameters.push_back({"g", "m", p.gap, 0.5 * p.gap, 2 * p.gap, true});
+    u.where = "lib";
+    EXPECT_NO_THROW(makeUserEffect(u)) << p.force;
+  }
   dtwin_test::writeText(dir / "q.toml", t.toml() + "\n[effects.bump_stop]\n");
   EXPECT_THROW(loadUserEffects((dir / "q.toml").string()), InputError);
 }

@@ -103,15 +103,31 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
   c.name = name;
   if (name.rfind(kFree, 0) == 0) {
     const std::string value = name.substr(std::string(kFree).size());
-    const auto freeable = freeableOf(assembly);
-    if (std::find(freeable.begin(), freeable.end(), value) == freeable.end())
-      throw InputError(where, unknownNameRule("vehicle value that can be freed in assembly " + assembly.id, value, freeable));
+    auto freeable = freeableOf(assembly);
+    if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
+      // A fixed value of the assembly's laws (the tire radius, a strut-law constant): a run
+      // parameter already, so it is calibrated without a rebuild. Not a calibrated one.
+      const auto model = study.makeModel(assembly, {});
+      for (const auto& n : model->runParameterNames()) {
+        bool calibrated = false;
+        for (const auto& cp : study.calibrated) calibrated = calibrated || cp.name == n;
+        if (!calibrated && n.find("preload") == std::string::npos) freeable.push_back(n);
+      }
+      if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
+        for (const auto& cp : study.calibrated)
+          if (cp.name == value) throw InputError(where, "'" + value + "' is calibrated already: only a fixed value can be freed");
+        throw InputError(where, unknownNameRule("fixed value that can be freed in assembly " + assembly.id, value, freeable));
+      }
+      c.law_value = true;
+    }
     const auto table = study.parameterTable();
     ParameterSpec p = table.at(value).spec;
     const double v = table.value(value);
     p.default_value = v;
     p.prior_lower = std::max(0.5 * v, p.min_value);
     p.prior_upper = std::min(1.5 * v, p.max_value);
+    if (!(p.prior_lower < p.prior_upper))
+      throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of ±50 % about it to search");
     c.kind = "parameter";
     c.parameters = {p};
     c.calibrated_names = {value};
@@ -156,7 +172,7 @@ void CandidateSpec::install(calib::CalibrationSetup& setup) const {
     es.name = name;
     setup.extra_effects.push_back(es);
   } else if (kind == "parameter") {
-    setup.freed.push_back(calibrated_names[0]);
+    if (!law_value) setup.freed.push_back(calibrated_names[0]);
   } else {
     setup.sensor_models.push_back({name, sensor_kind, channels});
   }

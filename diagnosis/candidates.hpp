@@ -4,7 +4,8 @@
 //   effect     a force element of the catalogue (subsystems/effect.hpp), built in or user-defined:
 //              "bump_stop", "my_damper"
 //   parameter  a fixed vehicle value freed with a prior range of ±50 % about the vehicle file's
-//              value (twin/model.hpp freeableVehicleParameters): "free:wheel.mass_kg"
+//              value (twin/model.hpp freeableVehicleParameters): "free:wheel.mass_kg"; or, when
+//              named, any fixed value of the assembly's laws: "free:tire.unloaded_radius_m"
 //   sensor     a model of how the logger distorted a group of channels (subsystems/sensor.hpp
 //              sensorModelKinds): "lowpass:hub_force" (every fitted channel hub_force_*_N)
 // Each has diagnosed parameters with an "off" value (the nested base model) and a prior range,
@@ -29,6 +30,9 @@ struct CandidateSpec {
   std::string engagement_threshold;        ///< effects only (Effect::engagementThreshold)
   std::string sensor_kind;                 ///< sensors: lowpass | lowpass2 | gain | delay
   std::vector<std::string> channels;       ///< sensors: the channels distorted
+  /// parameter: a fixed value of the assembly's laws, a run parameter already (calibrated
+  /// without AssemblySpec::freed and without a rebuild); false for a freeable vehicle value.
+  bool law_value = false;
   /// Adds this candidate (installed, its diagnosed parameters calibrated over their prior range).
   void install(calib::CalibrationSetup& setup) const;
   /// The finding in plain words at calibrated `values` (one per parameter): "the wheel mass is

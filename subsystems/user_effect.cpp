@@ -272,7 +272,7 @@ void checkUnits(const UserEffect& e, const UserEffectSpec& spec, const std::vect
       const double expected = f0 * scaleFactor(d, 1.7, 2.3, 0.6);
       one_unit = std::isfinite(f[3]) && std::abs(f[3] - expected) <= 1e-6 * std::max(std::abs(f[3]), std::abs(expected));
     }
-    const std::string given = "with the variables' units (docs/study-file.md) and the parameters' own";
+    const std::string given = "with the variables' units (docs/extending.md) and the parameters' own";
     if (one_unit)
       throw InputError(spec.where + ": force", "'" + spec.force + "' gives " + formatUnit(d) + ", not N, " + given +
                                                    " (a bare number counts as dimensionless: make a dimensional constant a parameter with its unit)");

@@ -3,7 +3,7 @@
 // once with muparser and evaluated from bytecode. No rebuild is needed.
 //
 // Four elements, each with the state variables its expression may use (userEffectVariables; the
-// table in docs/study-file.md, "User-defined effects"):
+// table in docs/extending.md, "Effects written as expressions"):
 //   strut      a force along every main suspension strut, the built-in strut effects' sign
 //              (positive pushes the wheel down and the chassis up): q, v, dq, dv, k, c, t, u, front
 //   tire       a vertical force added to the tire law's at every wheel in contact (the sum is kept

@@ -57,6 +57,24 @@ TEST(Candidates, SpecsCarryOffValuesPriorsAndSetups) {
   EXPECT_EQ(setup.freed, std::vector<std::string>{"wheel.mass_kg"});
   EXPECT_EQ(setup.extra_calibrated.at(0).name, "wheel.mass_kg");
 
+  // A fixed value of the assembly's laws (the tire radius) is a run parameter already: calibrated
+  // without a rebuild, so it is not among the freed; a calibrated value cannot be freed.
+  const auto r0 = candidateSpec("free:tire.unloaded_radius_m", s, a, kHub, "t");
+  EXPECT_EQ(r0.kind, "parameter");
+  EXPECT_TRUE(r0.law_value);
+  EXPECT_DOUBLE_EQ(r0.parameters.at(0).default_value, 0.31);
+  EXPECT_DOUBLE_EQ(r0.parameters.at(0).prior_upper, 1.5 * 0.31);
+  calib::CalibrationSetup setup_r0;
+  r0.install(setup_r0);
+  EXPECT_TRUE(setup_r0.freed.empty());
+  EXPECT_EQ(setup_r0.extra_calibrated.at(0).name, "tire.unloaded_radius_m");
+  try {
+    candidateSpec("free:" + s.calibrated.at(0).name, s, a, kHub, "--effects");
+    ADD_FAILURE() << "a calibrated value was freed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is calibrated already"), std::string::npos) << e.what();
+  }
+
   const auto lp = candidateSpec("lowpass:hub_force", s, a, kHub, "t");
   EXPECT_EQ(lp.kind, "sensor");
   EXPECT_EQ(lp.channels, kHub);
@@ -98,4 +116,26 @@ TEST(Candidates, ASensorModelInTheObjectiveIsTheChannelThroughDistortChannel) {
   double most = 0;
   for (std::size_t i = 0; i < raw.size(); ++i) most = std::max(most, std::abs(filtered[i] - raw[i]));
   EXPECT_GT(most, 10.0);  // the bump's hub force is filtered visibly
+}
+
+// A fixed law value (the tire radius) freed as a candidate enters the objective as a run
+// parameter: at the file's value the predictions are the base model's exactly.
+TEST(Candidates, AFreedLawValueIsARunParameterOfTheObjective) {
+  const Study s = demo();
+  LabData data;
+  for (int k = 200; k <= 2800; k += 50) data.records.push_back({1, k / 1000.0, "hub_force_fl_N", 0.0});
+  std::vector<calib::DataSet> sets{{"d", "diag_bump", data}};
+  const auto spec = candidateSpec("free:tire.unloaded_radius_m", s, s.assemblies().front(), kHub, "t");
+  calib::CalibrationSetup setup;
+  spec.install(setup);
+  const calib::LabObjective with(s, s.assemblies().front(), sets, setup), without(s, s.assemblies().front(), sets, {});
+  std::vector<double> th;
+  for (const auto& p : s.calibrated) th.push_back(*p.truth);
+  const auto raw = without.predict(th);
+  th.push_back(0.31);
+  EXPECT_EQ(with.predict(th), raw);
+  th.back() = 0.36;
+  const auto moved = with.predict(th);
+  ASSERT_EQ(moved.size(), raw.size());
+  for (double v : moved) EXPECT_TRUE(std::isfinite(v));
 }

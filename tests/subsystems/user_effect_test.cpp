@@ -111,7 +111,7 @@ TEST(UserEffect, BadDefinitionsAreOneLineErrors) {
       {[](UserEffectSpec& s) { s.parameters[0].unit = "N/m"; }, "force: 'c2 * sign(v) * sqrt(abs(v) * v0)' gives N/s, not N"},
       {[](UserEffectSpec& s) { s.force = "c2 * v * v"; }, "force: 'c2 * v * v' gives N*m/s, not N"},
       {[](UserEffectSpec& s) { s.force = "c2 * sign(v) * sqrt(abs(v) * 0.1)"; },
-       "force: 'c2 * sign(v) * sqrt(abs(v) * 0.1)' gives N*s^0.5/m^0.5, not N, with the variables' units (docs/study-file.md) and the parameters' own (a bare number counts as dimensionless"},
+       "force: 'c2 * sign(v) * sqrt(abs(v) * 0.1)' gives N*s^0.5/m^0.5, not N, with the variables' units (docs/extending.md) and the parameters' own (a bare number counts as dimensionless"},
       {[](UserEffectSpec& s) { s.force = "c2 * v + c2 * q"; }, "force: 'c2 * v + c2 * q' mixes units"},
       {[](UserEffectSpec& s) { s.force = "c2 * v * exp(q)"; }, "mixes units"},
       {[](UserEffectSpec& s) { s.parameters[1].upper = s.parameters[1].lower; }, "parameters.v0: needs a prior range with finite lower < upper"},

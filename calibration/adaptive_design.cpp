@@ -292,14 +292,25 @@ double logMixtureDensity(const std::vector<DesignRound>& rounds, const Eigen::Ve
   return m + std::log(s);
 }
 
+namespace {
+/// How many of the kPilot pilot points (no simulation) of `round` lie inside the bounds.
+int pilotInside(const DesignRound& round, std::uint64_t seed) {
+  const int d = round.kind == "uniform" ? round.region.dim() : static_cast<int>(round.centres.cols());
+  const std::vector<double> zero(static_cast<std::size_t>(d), 0.0), one(static_cast<std::size_t>(d), 1.0);
+  const Eigen::MatrixXd pilot = mapUnit(round, latinHypercube(kPilot, zero, one, derivedSeed(seed, kStreamDesignPilot, round.index)));
+  int in = 0;
+  for (Eigen::Index i = 0; i < pilot.rows(); ++i) in += insideUnitCube(pilot.row(i).transpose()) ? 1 : 0;
+  return in;
+}
+double pilotInsideShare(const DesignRound& round, std::uint64_t seed) { return static_cast<double>(pilotInside(round, seed)) / kPilot; }
+}  // namespace
+
 Eigen::MatrixXd drawRound(const DesignRound& round, int inside, std::uint64_t seed, long& drawn) {
   DTWIN_CHECK(inside >= 1, "a round needs at least one point");
   const int d = round.kind == "uniform" ? round.region.dim() : static_cast<int>(round.centres.cols());
   const std::vector<double> zero(static_cast<std::size_t>(d), 0.0), one(static_cast<std::size_t>(d), 1.0);
   // Inside fraction from a pilot sample (no simulation).
-  const Eigen::MatrixXd pilot = mapUnit(round, latinHypercube(kPilot, zero, one, derivedSeed(seed, kStreamDesignPilot, round.index)));
-  int in = 0;
-  for (Eigen::Index i = 0; i < pilot.rows(); ++i) in += insideUnitCube(pilot.row(i).transpose()) ? 1 : 0;
+  const int in = pilotInside(round, seed);
   const long cap = 64L * inside;
   long m = in > 0 ? static_cast<long>(std::ceil(static_cast<double>(inside) * kPilot / in)) : cap;
   m = std::clamp(m, static_cast<long>(inside), cap);
@@ -362,6 +373,21 @@ AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const Adaptiv
   r0.index = 0;
   r0.kind = "uniform";
   r0.region = region;
+  {
+    // A region mostly outside the bounds (an optimum on a bound, with a tilted axis whose clipped
+    // sweep took the bounds' whole reach) draws from its part inside them instead: the same
+    // P ∩ [0, 1]^d, a smaller box around it (region.hpp narrowedToCube). Regions inside the
+    // bounds for the most part are drawn from as they are.
+    r0.prepare();
+    const double inside = pilotInsideShare(r0, options.seed);
+    if (inside < 1.0 / 16.0) {
+      r0.region = narrowedToCube(region);
+      r0.prepare();
+      out.warnings.push_back("the calibration region lay mostly outside the parameter bounds (" + formatNumber(100.0 * inside, 3) +
+                             " % of it inside): the first round drew from its part inside them (" +
+                             formatNumber(100.0 * pilotInsideShare(r0, options.seed), 3) + " % of the narrowed region)");
+    }
+  }
   Diagnostics now = runRound(r0, options.first_points);
   out.stop_reason = options.adaptive ? "" : "one Latin hypercube (design = \"lhs\")";
   for (int r = 1; options.adaptive && r <= options.max_rounds; ++r) {

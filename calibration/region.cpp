@@ -34,6 +34,43 @@ bool insideUnitCube(const Eigen::VectorXd& z) {
   return true;
 }
 
+Region narrowedToCube(const Region& r) {
+  Region out = r;
+  const Eigen::Index d = r.centre.size();
+  Eigen::VectorXd& lo = out.t_lower;
+  Eigen::VectorXd& hi = out.t_upper;
+  for (int pass = 0; pass < 50; ++pass) {
+    double moved = 0.0;
+    for (Eigen::Index j = 0; j < d; ++j) {
+      // z_j = c_j + sum_i A(j, i) t_i must lie in [0, 1].
+      double sum_min = 0.0, sum_max = 0.0;
+      for (Eigen::Index i = 0; i < d; ++i) {
+        const double a = r.axes(j, i);
+        sum_min += std::min(a * lo(i), a * hi(i));
+        sum_max += std::max(a * lo(i), a * hi(i));
+      }
+      for (Eigen::Index i = 0; i < d; ++i) {
+        const double a = r.axes(j, i);
+        if (std::abs(a) < 1e-12) continue;
+        const double rest_min = sum_min - std::min(a * lo(i), a * hi(i));
+        const double rest_max = sum_max - std::max(a * lo(i), a * hi(i));
+        // a t_i in [-c_j - rest_max, 1 - c_j - rest_min]
+        double t0 = (-r.centre(j) - rest_max) / a, t1 = (1.0 - r.centre(j) - rest_min) / a;
+        if (a < 0) std::swap(t0, t1);
+        const double new_lo = std::min(std::max(lo(i), t0), 0.0), new_hi = std::max(std::min(hi(i), t1), 0.0);
+        moved = std::max({moved, new_lo - lo(i), hi(i) - new_hi});
+        // Keep the running sums in step with the narrowed interval.
+        sum_min += std::min(a * new_lo, a * new_hi) - std::min(a * lo(i), a * hi(i));
+        sum_max += std::max(a * new_lo, a * new_hi) - std::max(a * lo(i), a * hi(i));
+        lo(i) = new_lo;
+        hi(i) = new_hi;
+      }
+    }
+    if (moved <= 1e-12) break;
+  }
+  return out;
+}
+
 double Region::logVolume() const {
   double v = 0.0;
   for (Eigen::Index i = 0; i < t_lower.size(); ++i) v += std::log(t_upper(i) - t_lower(i));

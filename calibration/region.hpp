@@ -128,6 +128,15 @@ struct Region {
 /// z lies in [0, 1]^d (inclusive).
 bool insideUnitCube(const Eigen::VectorXd& z);
 
+/// `r` with its extents [t_lower, t_upper] narrowed to the smallest box in region coordinates
+/// that still holds every point of P ∩ [0, 1]^d, by interval propagation of the cube's 2d faces
+/// through z = c + A t (each pass bounds t_i by the others' current intervals; repeated until no
+/// extent moves). P ∩ [0, 1]^d is unchanged, only the part of P outside the bounds shrinks. The
+/// extents keep 0 (the centre). Where a sweep was clipped by a bound, an extent is the bounds'
+/// reach along its axis, far beyond the cube for an axis that leaves it steeply: the narrowed
+/// region is what the first design round draws from then (adaptive_design.cpp).
+Region narrowedToCube(const Region& r);
+
 /// The paper's box as a region (A = I, extents from its sweeps).
 Region regionFromBox(const FeasibleBox& box, const BoxProblem& problem);
 

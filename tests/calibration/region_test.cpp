@@ -4,6 +4,8 @@
 // Gaussian guess, clipping at the bounds, failed stencil runs and the JSON round trip.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <limits>
@@ -196,4 +198,65 @@ TEST(Region, BadOptionsAreNamed) {
     EXPECT_EQ(e.where(), "joint_region.margin");
     EXPECT_EQ(e.rule(), "must be a finite number >= 1, got 0.5");
   }
+}
+
+// The region of a first-order low-pass candidate on null data (τ's optimum on its lower bound,
+// 0): a clipped sweep took the bounds' whole reach along an axis that leaves the cube steeply, so
+// only 4e-5 of P lay inside the bounds and the first design round drew none of 2560 points there.
+// Narrowed, P ∩ [0, 1]^d is unchanged (every inside point of P is in the narrowed region) and
+// enough of the narrowed region is inside for a round to fill (3 % here, not 0.004 %).
+TEST(Region, NarrowingToTheCubeKeepsEveryInsidePointAndDropsTheOutside) {
+  Region r;
+  r.kind = "joint";
+  r.lower.assign(5, 0.0);
+  r.upper.assign(5, 1.0);
+  r.centre = (Eigen::VectorXd(5) << 0.08877413463783913, 0.38435170252447104, 0.11754107502685072, 0.06774368808923359, 0.0009445007594765247).finished();
+  const double cols[5][5] = {{0.26712290933346494, 0.9600538513766921, 0.01713319610429118, -0.010802052682654106, 0.08081907581195638},
+                             {0.8423096274602613, -0.26991726337730676, -0.11872599186803139, -0.14046622896892394, 0.4287569705472597},
+                             {-0.41548832031108046, 0.03895161274766554, 0.1099822071752355, 0.08263521582057747, 0.8982914687119005},
+                             {0.14085767965724175, -0.05305123259782617, 0.9865800955220901, -0.03911709300107349, -0.0497418230083927},
+                             {0.16336588555643028, -0.03331083865490487, 0.013199305689742693, 0.985796037889443, -0.015294622429337526}};
+  r.axes.resize(5, 5);
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) r.axes(j, i) = cols[i][j];
+  r.t_lower = (Eigen::VectorXd(5) << -0.4048724071720531, -0.4770757129335271, -0.4129487010243425, -0.0019234446530410594, -0.0009849412048386773).finished();
+  r.t_upper = (Eigen::VectorXd(5) << 0.059416519268255495, 0.006026251066001799, 0.003488107629418721, 0.35931745146947547, 0.11092731175566213).finished();
+  const Region n = narrowedToCube(r);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_LE(n.t_lower(i), 0.0);
+    EXPECT_GE(n.t_upper(i), 0.0);
+    EXPECT_GE(n.t_lower(i), r.t_lower(i));
+    EXPECT_LE(n.t_upper(i), r.t_upper(i));
+  }
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto share = [&](const Region& g, int draws, int* kept_outside) {
+    int in = 0;
+    for (int k = 0; k < draws; ++k) {
+      Eigen::VectorXd t(5);
+      for (int i = 0; i < 5; ++i) t(i) = g.t_lower(i) + u(rng) * (g.t_upper(i) - g.t_lower(i));
+      const Eigen::VectorXd z = g.at(t);
+      if (!insideUnitCube(z)) continue;
+      ++in;
+      if (kept_outside && !n.contains(z)) ++*kept_outside;
+    }
+    return static_cast<double>(in) / draws;
+  };
+  int lost = 0;
+  const double before = share(r, 400000, &lost);
+  EXPECT_EQ(lost, 0) << "an inside point of P fell outside the narrowed region";
+  EXPECT_LT(before, 1e-3);
+  // drawRound draws at most 64 points for each it needs inside: a share above 1/64 fills a round.
+  const double after = share(n, 20000, nullptr);
+  EXPECT_GT(after, 1.0 / 64.0);
+  EXPECT_GT(n.logVolume(), -1e9);
+  // A region inside the cube is left as it is.
+  Region inner = r;
+  inner.centre = Eigen::VectorXd::Constant(5, 0.5);
+  inner.axes = Eigen::MatrixXd::Identity(5, 5);
+  inner.t_lower = Eigen::VectorXd::Constant(5, -0.1);
+  inner.t_upper = Eigen::VectorXd::Constant(5, 0.2);
+  const Region same = narrowedToCube(inner);
+  EXPECT_EQ(same.t_lower, inner.t_lower);
+  EXPECT_EQ(same.t_upper, inner.t_upper);
 }

@@ -64,7 +64,7 @@ int runBench(const std::string& study_path, int runs, bool markdown, const std::
 }  // namespace
 
 CommandHandle addBenchCommand(CLI::App& root) {
-  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; };
+  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; std::string scenario = "field"; };
   auto cfg = std::make_shared<Cfg>();
   std::string& bench_study = cfg->study;
   int& bench_runs = cfg->runs;
@@ -79,6 +79,8 @@ CommandHandle addBenchCommand(CLI::App& root) {
       ->check(CLI::Range(2L, 100000000L));
   b->add_option("--user-effect", cfg->user_effect, "Instead: time a user-defined strut effect against the built-in one of the same form, over this many evaluations")
       ->check(CLI::Range(1000L, 1000000000L));
+  auto* scen = b->add_option("--scenario", cfg->scenario, "With --user-effect: the study's scenario of the whole runs timed")->capture_default_str();
+  scen->needs("--user-effect");
 
   return {b, [cfg] {
             if (cfg->import_rows > 0) {
@@ -88,10 +90,14 @@ CommandHandle addBenchCommand(CLI::App& root) {
               return 0;
             }
             if (cfg->user_effect > 0) {
-              const BenchUserEffect r = benchUserEffect(cfg->user_effect, cfg->runs);
+              const Study study = loadStudy(cfg->study);
+              const BenchUserEffect r = benchUserEffect(study, cfg->scenario, cfg->user_effect, cfg->runs);
               std::printf("strut force, %ld evaluations, %d runs (median): built-in damper_asymmetry %.1f ns, user-defined \"v < 0 ? (ratio - 1) * c * v : 0\" %.1f ns "
                           "(%.1fx); largest difference %.3g N\n",
                           r.evaluations, cfg->runs, r.builtin_ns, r.user_ns, r.user_ns / r.builtin_ns, r.max_abs_difference);
+              std::printf("whole runs of %s on '%s' (%ld steps), %d runs each (median): built-in %.3f s, user-defined %.3f s (%.2fx); traces %s\n",
+                          study.assemblies().front().id.c_str(), r.scenario.c_str(), r.steps, cfg->runs, r.builtin_run_s, r.user_run_s,
+                          r.user_run_s / r.builtin_run_s, r.identical_traces ? "identical" : "DIFFER");
               return 0;
             }
             return runBench(cfg->study, cfg->runs, cfg->md, cfg->ids);

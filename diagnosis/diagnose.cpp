@@ -144,6 +144,7 @@ nlohmann::json Figures::toJson() const {
                    {"log_evidence", log_evidence}, {"parameters", parameters}, {"folder", folder}};
   j["effect_parameters"] = paramsJson(effect_parameters);
   j["integrator_check"] = integrator.toJson();
+  j["importance_ess"] = importance_ess;
   j["lack_of_fit_z"] = comparison.lack_of_fit_z;
   j["lack_of_fit_p"] = comparison.lack_of_fit_p;
   j["systematic_rms_noise_sd"] = comparison.systematic_rms_sd;
@@ -290,6 +291,7 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   f.parameters = static_cast<int>(r.names.size());
   f.sse_min = r.optimum.sse;
   f.integrator = r.integrator;
+  f.importance_ess = r.rounds.ess;
   f.bic = r.optimum.sse + f.parameters * std::log(static_cast<double>(r.n_data));
   f.log_evidence = -0.5 * f.bic;
   for (std::size_t k = n_fit_params; k < r.names.size(); ++k) {
@@ -1133,10 +1135,19 @@ std::string DiagnosisResult::text() const {
   for (const auto& c : candidates)
     if (c.confirmed && !c.fit->effect_parameters.empty()) {
       s += "\n  " + c.effect + " posterior:\n";
-      for (const auto& p : c.fit->effect_parameters)
-        s += "    " + p.name + " = " + fmt("%.4g", p.mean) + " ± " + fmt("%.2g", p.sd) + " " + p.unit + "  (95 % " +
-             (p.interval == "profile" ? "profile likelihood" : "posterior") + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) +
-             "])" + (c.fit->integrator.ok ? "" : "  NOT TO BE TRUSTED: the integrator limits it (note below)") + "\n";
+      const bool resolved = c.fit->importance_ess >= Figures::kResolvedEss;
+      for (const auto& p : c.fit->effect_parameters) {
+        // An unresolved design (a posterior on a handful of points) gives a mean and an sd that
+        // mean nothing: the optimum is printed instead, with the profile interval.
+        s += "    " + p.name + (resolved ? " = " + fmt("%.4g", p.mean) + " ± " + fmt("%.2g", p.sd) : ": optimum " + fmt("%.4g", p.optimum)) +
+             " " + p.unit + "  (95 % " + (p.interval == "profile" ? "profile likelihood" : "posterior") + " [" + fmt("%.4g", p.q025) + ", " +
+             fmt("%.4g", p.q975) + "])" + (c.fit->integrator.ok ? "" : "  NOT TO BE TRUSTED: the integrator limits it (note below)") +
+             (resolved || p.interval == "profile" ? "" : "  NOT TO BE TRUSTED: the posterior is not resolved") + "\n";
+      }
+      if (!resolved)
+        s += "    (the posterior is not resolved: importance ESS " + fmt("%.1f", c.fit->importance_ess) + " < " +
+             fmt("%.0f", Figures::kResolvedEss) + ", so no mean ± sd; raise --lhs-points, or [calibration] round_points or max_rounds in the study; see " + c.fit->folder +
+             "/summary.json)\n";
     }
   // Every calibration whose integrator check failed (the base, the confirmed candidates, the steps).
   std::vector<const Figures*> fits{&base};

@@ -81,6 +81,11 @@ struct Figures {
   /// The calibration's integrator check: !ok when the optimum and the intervals follow the
   /// integrator rather than the data (its message says what to tighten).
   calib::IntegratorCheck integrator;
+  /// The design's importance ESS: below kResolvedEss the posterior's mean ± sd stand on a
+  /// handful of design points and are not printed as figures (the optimum and the profile
+  /// interval are).
+  double importance_ess = 0;
+  static constexpr double kResolvedEss = 10.0;
   nlohmann::json toJson() const;
 };
 

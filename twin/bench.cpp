@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "subsystems/user_effect.hpp"
 #include "twin/log_import.hpp"
+#include "twin/simulator.hpp"
 
 namespace dtwin {
 namespace {
@@ -98,7 +99,7 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs) {
   return b;
 }
 
-BenchUserEffect benchUserEffect(long evaluations, int runs) {
+BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario, long evaluations, int runs) {
   UserEffectSpec spec;
   spec.name = "user_damper_asymmetry";
   spec.element = "strut";
@@ -138,6 +139,38 @@ BenchUserEffect benchUserEffect(long evaluations, int runs) {
     r.max_abs_difference = std::max(r.max_abs_difference, std::abs(user->calcStrutForce(s, p) - builtin->calcStrutForce(s, p)));
   }
   if (sink_b != sink_u) r.max_abs_difference = std::max(r.max_abs_difference, std::abs(sink_b - sink_u) / static_cast<double>(evaluations));
+  // Inside the twin: whole runs with each effect.
+  registerUserEffect(spec);
+  const ScenarioSpec& sc = study.scenario(scenario);
+  r.scenario = scenario;
+  const AssemblySpec a = study.assemblies().front();
+  auto runOnce = [&](const std::string& name, RunResult* keep) {
+    auto model = study.makeModel(a, {EffectSetting{name, {{name + ".ratio", 2.2, "twin bench", "twin bench"}}}});
+    Simulator sim(model, study.simulation);
+    auto road = makeRoad(sc, model->vehicle(), study.seed);
+    const auto t0 = std::chrono::steady_clock::now();
+    RunResult res = sim.run(model->defaultRunValues(), *road, sc);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!res.stats.ok) throw std::runtime_error("twin bench: the run with " + name + " failed: " + res.stats.message);
+    if (keep) *keep = std::move(res);
+    return wall;
+  };
+  RunResult rb, ru;
+  runOnce("damper_asymmetry", &rb);  // warm-up, and the traces compared
+  runOnce(spec.name, &ru);
+  r.steps = rb.stats.steps;
+  r.identical_traces = rb.trace.channels().size() == ru.trace.channels().size();
+  for (std::size_t c = 0; r.identical_traces && c < rb.trace.channels().size(); ++c)
+    r.identical_traces = rb.trace.column(c) == ru.trace.column(c);
+  std::vector<double> wb, wu;
+  for (int k = 0; k < runs; ++k) {
+    wb.push_back(runOnce("damper_asymmetry", nullptr));
+    wu.push_back(runOnce(spec.name, nullptr));
+  }
+  std::sort(wb.begin(), wb.end());
+  std::sort(wu.begin(), wu.end());
+  r.builtin_run_s = wb[wb.size() / 2];
+  r.user_run_s = wu[wu.size() / 2];
   return r;
 }
 

@@ -37,11 +37,18 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs);
 /// effect of the same form: damper_asymmetry, and "v < 0 ? (ratio - 1) * c * v : 0", each
 /// evaluated `evaluations` times over a sweep of strut states (median of `runs`). Also checks that
 /// the two agree at every state (max_abs_difference).
+/// Then, inside the twin: the study's first assembly on `scenario` with each effect (ratio 2.2),
+/// `runs` runs each after a warm-up, alternating: the median wall per run, and whether the two
+/// traces are identical.
 struct BenchUserEffect {
   long evaluations = 0;
   double builtin_ns = 0, user_ns = 0;  ///< median wall per evaluation
   double max_abs_difference = 0;       ///< [N]
+  std::string scenario;
+  double builtin_run_s = 0, user_run_s = 0;  ///< median wall per run
+  long steps = 0;                            ///< integrator steps of the built-in run
+  bool identical_traces = false;
 };
-BenchUserEffect benchUserEffect(long evaluations, int runs);
+BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario, long evaluations, int runs);
 
 }  // namespace dtwin

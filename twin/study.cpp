@@ -181,7 +181,7 @@ void readUserEffects(TableReader& top, Study& s) {
     u.name = name;
     u.where = path + ":" + std::to_string(ut->source().begin.line) + ": " + field;
     u.element = r.string("element").value_or("");
-    if (u.element.empty()) throw InputError(r.where("element"), "is required (\"strut\")");
+    if (u.element.empty()) throw InputError(r.where("element"), "is required (\"strut\", \"tire\", \"axle_roll\" or \"chassis\")");
     u.force = r.string("force").value_or("");
     if (auto* pt = r.table("parameters")) {
       TableReader pr(*pt, path, field + ".parameters");

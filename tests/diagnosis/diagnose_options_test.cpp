@@ -134,7 +134,7 @@ std::string failingDiagnose(const std::string& name, const std::string& args) {
 // and what is known.
 TEST(Diagnose, TheCliRefusesAFreedValueOrChannelGroupItDoesNotHave) {
   std::string text = failingDiagnose("diag_options_free", "--apply free:wheel.mas_kg");
-  EXPECT_NE(text.find("twin: error: --apply: unknown vehicle value that can be freed in assembly M1 'wheel.mas_kg'"), std::string::npos)
+  EXPECT_NE(text.find("twin: error: --apply: unknown fixed value that can be freed in assembly M1 'wheel.mas_kg'"), std::string::npos)
       << text;
   EXPECT_NE(text.find("wheel.mass_kg"), std::string::npos) << text;
   text = failingDiagnose("diag_options_group", "--effects lowpass:seat");
@@ -212,4 +212,39 @@ TEST(DiagnoseWork, TheCliRefusesUnboundedWorkBeforeItStarts) {
   EXPECT_NE(text.find("pass --force"), std::string::npos) << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// A confirmed candidate whose design did not resolve the posterior (importance ESS 1) prints its
+// optimum and the profile interval, never a mean ± sd drawn from one design point.
+TEST(DiagnoseText, AnUnresolvedPosteriorPrintsTheOptimumNotAMeanAndSd) {
+  DiagnosisResult r;
+  r.assembly = "M1";
+  r.verdict = "none";
+  Candidate c;
+  c.effect = "lowpass:hub_force";
+  c.confirmed = true;
+  c.why = "ΔBIC +9.3";
+  Figures f;
+  f.folder = "out/calibrations/lowpass:hub_force";
+  f.integrator.ok = true;
+  EffectParameter p;
+  p.name = "lowpass:hub_force.time_constant_s";
+  p.unit = "s";
+  p.mean = 1.005e-4;
+  p.sd = 2.6e-18;
+  p.optimum = 4.723e-5;
+  p.q025 = 0;
+  p.q975 = 1.969e-4;
+  f.effect_parameters = {p};
+  f.importance_ess = 1.0;
+  c.fit = f;
+  r.candidates = {c};
+  std::string t = r.text();
+  EXPECT_NE(t.find("time_constant_s: optimum 4.723e-05 s  (95 % profile likelihood [0, 0.0001969])"), std::string::npos) << t;
+  EXPECT_NE(t.find("the posterior is not resolved: importance ESS 1.0 < 10"), std::string::npos) << t;
+  EXPECT_EQ(t.find("2.6e-18"), std::string::npos) << t;  // the meaningless sd is not printed
+  r.candidates[0].fit->importance_ess = 250.0;
+  t = r.text();
+  EXPECT_NE(t.find("time_constant_s = 0.0001005 ± 2.6e-18 s"), std::string::npos) << t;
+  EXPECT_EQ(t.find("not resolved"), std::string::npos) << t;
 }

@@ -2,6 +2,7 @@
 // at tiny sizes: M3 (the cheapest assembly), a 0.5 s window (p = 501), a handful of draws.
 #include <gtest/gtest.h>
 
+#include "shipped_study.hpp"
 #include "test_util.hpp"
 
 #include <filesystem>
@@ -18,12 +19,8 @@ using namespace dtwin::classify;
 using dtwin::calib::readPosteriorCsv;
 
 namespace {
-const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
 
-const Study& demo() {
-  static const Study s = loadStudy(kDemo);
-  return s;
-}
+const Study& demo() { return dtwin_test::shippedStudy("demo"); }
 
 using dtwin_test::slurp;
 

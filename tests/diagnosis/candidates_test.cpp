@@ -15,6 +15,20 @@ using namespace dtwin::diag;
 namespace {
 Study demo() { return loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("cands") / "study.toml", "").string()); }
 const std::vector<std::string> kHub = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
+
+/// The objective of the candidate `name` installed in the study's first assembly, on `data`
+/// (diag_bump), and the study's true base parameters.
+struct WithCandidate {
+  std::vector<calib::DataSet> sets;
+  calib::CalibrationSetup setup;
+  std::vector<double> truth;
+  WithCandidate(const Study& s, const std::string& name, const LabData& data) : sets{{"d", "diag_bump", data}} {
+    candidateSpec(name, s, s.assemblies().front(), kHub, "t").install(setup);
+    for (const auto& p : s.calibrated) truth.push_back(*p.truth);
+  }
+  calib::LabObjective objective(const Study& s) const { return calib::LabObjective(s, s.assemblies().front(), sets, setup); }
+  calib::LabObjective base(const Study& s) const { return calib::LabObjective(s, s.assemblies().front(), sets, {}); }
+};
 }  // namespace
 
 TEST(Candidates, ChannelGroupsAreNamedByUnitAndCommonPrefix) {
@@ -93,13 +107,9 @@ TEST(Candidates, ASensorModelInTheObjectiveIsTheChannelThroughDistortChannel) {
   LabData data;
   for (int k = 200; k <= 2800; k += 5) data.records.push_back({1, k / 1000.0, "hub_force_fl_N", 0.0});
   data.records.push_back({1, 1.2345, "hub_force_fl_N", 0.0});  // off the grid
-  std::vector<calib::DataSet> sets{{"d", "diag_bump", data}};
-  const auto spec = candidateSpec("lowpass:hub_force", s, s.assemblies().front(), kHub, "t");
-  calib::CalibrationSetup setup;
-  spec.install(setup);
-  const calib::LabObjective with(s, s.assemblies().front(), sets, setup), without(s, s.assemblies().front(), sets, {});
-  std::vector<double> th;
-  for (const auto& p : s.calibrated) th.push_back(*p.truth);
+  const WithCandidate wc(s, "lowpass:hub_force", data);
+  const auto with = wc.objective(s), without = wc.base(s);
+  std::vector<double> th = wc.truth;
   const auto raw = without.predict(th);
   th.push_back(0.0);
   EXPECT_EQ(with.predict(th), raw);  // off: the base model's predictions exactly
@@ -124,13 +134,9 @@ TEST(Candidates, AFreedLawValueIsARunParameterOfTheObjective) {
   const Study s = demo();
   LabData data;
   for (int k = 200; k <= 2800; k += 50) data.records.push_back({1, k / 1000.0, "hub_force_fl_N", 0.0});
-  std::vector<calib::DataSet> sets{{"d", "diag_bump", data}};
-  const auto spec = candidateSpec("free:tire.unloaded_radius_m", s, s.assemblies().front(), kHub, "t");
-  calib::CalibrationSetup setup;
-  spec.install(setup);
-  const calib::LabObjective with(s, s.assemblies().front(), sets, setup), without(s, s.assemblies().front(), sets, {});
-  std::vector<double> th;
-  for (const auto& p : s.calibrated) th.push_back(*p.truth);
+  const WithCandidate wc(s, "free:tire.unloaded_radius_m", data);
+  const auto with = wc.objective(s), without = wc.base(s);
+  std::vector<double> th = wc.truth;
   const auto raw = without.predict(th);
   th.push_back(0.31);
   EXPECT_EQ(with.predict(th), raw);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "shipped_study.hpp"
 #include "common/errors.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/simulator.hpp"
@@ -14,12 +15,8 @@
 using namespace dtwin;
 
 namespace {
-const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
 
-const Study& demo() {
-  static const Study s = loadStudy(kDemo);
-  return s;
-}
+const Study& demo() { return dtwin_test::shippedStudy("demo"); }
 
 double rmsDiff(const std::vector<double>& t, const std::vector<double>& a, const std::vector<double>& b, double lo, double hi) {
   double s = 0;

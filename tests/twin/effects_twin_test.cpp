@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "shipped_study.hpp"
 #include "subsystems/effect.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
@@ -16,12 +17,8 @@
 using namespace dtwin;
 
 namespace {
-const std::string kPaper = std::string(DTWIN_SOURCE_DIR) + "/data/studies/paper.toml";
 
-const Study& paper() {
-  static const Study s = loadStudy(kPaper);
-  return s;
-}
+const Study& paper() { return dtwin_test::shippedStudy("paper"); }
 
 double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 double maxAbsDiff(const std::vector<double>& a, const std::vector<double>& b) {

@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 
+#include "shipped_study.hpp"
 #include "common/errors.hpp"
 #include "twin/generate.hpp"
 #include "twin/parallel.hpp"
@@ -44,10 +45,7 @@ std::string studyError(const std::string& path) {
   return "(no error)";
 }
 
-const Study& demo() {
-  static const Study s = loadStudy(kSrc + "/data/studies/demo.toml");
-  return s;
-}
+const Study& demo() { return dtwin_test::shippedStudy("demo"); }
 
 Trace syntheticTrace(const std::vector<double>& x, double rate = 1000.0) {
   Trace t;

@@ -7,18 +7,15 @@
 #include <numeric>
 #include <sstream>
 
+#include "shipped_study.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
 
 using namespace dtwin;
 
 namespace {
-const std::string kPaper = std::string(DTWIN_SOURCE_DIR) + "/data/studies/paper.toml";
 
-const Study& paper() {
-  static const Study s = loadStudy(kPaper);
-  return s;
-}
+const Study& paper() { return dtwin_test::shippedStudy("paper"); }
 
 double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 

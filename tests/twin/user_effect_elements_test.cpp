@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "shipped_study.hpp"
 #include "subsystems/effect.hpp"
 #include "subsystems/user_effect.hpp"
 #include "twin/simulator.hpp"
@@ -21,12 +22,8 @@
 using namespace dtwin;
 
 namespace {
-const std::string kPaper = std::string(DTWIN_SOURCE_DIR) + "/data/studies/paper.toml";
 
-const Study& paper() {
-  static const Study s = loadStudy(kPaper);
-  return s;
-}
+const Study& paper() { return dtwin_test::shippedStudy("paper"); }
 
 /// The first MacPherson assembly of the paper study (the closed forms below need independent struts).
 AssemblySpec macpherson() {

@@ -33,13 +33,7 @@ double rms(const std::vector<double>& v) {
   return std::sqrt(s / static_cast<double>(v.size()));
 }
 
-ScenarioSpec standstill(double duration) {
-  ScenarioSpec s;
-  s.name = "standstill";
-  s.duration_s = duration;
-  s.speed.v_final_mps = 0.0;
-  return s;
-}
+using dtwin_test::standstill;
 
 /// Runs assembly `id` with `effects` (empty: the base model) on `sc` / road seed `seed`.
 RunResult runWith(const std::string& id, const std::vector<EffectSetting>& effects, const ScenarioSpec& sc, std::uint64_t seed = 1) {

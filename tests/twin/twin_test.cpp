@@ -19,13 +19,7 @@ const Study& paper() { return dtwin_test::shippedStudy("paper"); }
 
 double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 
-ScenarioSpec standstill(double duration) {
-  ScenarioSpec s;
-  s.name = "standstill";
-  s.duration_s = duration;
-  s.speed.v_final_mps = 0.0;
-  return s;
-}
+using dtwin_test::standstill;
 }  // namespace
 
 TEST(Twin, AssembliesAreTheCartesianProductInStudyOrder) {

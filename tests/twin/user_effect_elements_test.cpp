@@ -57,13 +57,7 @@ EffectSetting setting(const std::string& name, const std::string& param, double 
   return EffectSetting{name, {{name + "." + param, value, "test", "test"}}};
 }
 
-ScenarioSpec standstill(double duration) {
-  ScenarioSpec s;
-  s.name = "standstill";
-  s.duration_s = duration;
-  s.speed.v_final_mps = 0.0;
-  return s;
-}
+using dtwin_test::standstill;
 
 double last(const RunResult& r, const std::string& channel) { return r.trace.column(channel).back(); }
 

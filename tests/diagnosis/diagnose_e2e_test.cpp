@@ -234,6 +234,21 @@ TEST(Diagnose16, AHiddenUserDefinedEffectIsNamed) {
   expectNamed(r, "digressive_damper", "effect", 3000.0, 0.2);
 }
 
+TEST(Diagnose16, AHiddenChassisElementWrittenAsAnExpressionIsNamed) {
+  // A skyhook damper, a force on the chassis against its absolute vertical velocity (what an
+  // active suspension adds): F = -cs w, a user-defined `chassis` element that no strut effect is.
+  static const fs::path p = dtwin_test::writeDemoStudy(
+      fs::temp_directory_path() / ("diag16_skyhook_" + std::to_string(::getpid()) + ".toml"),
+      "lab_repetitions = 3\noptimizer_starts = 2\n\n[user_effects.skyhook]\nelement = \"chassis\"\n"
+      "force = \"-cs * w\"\n"
+      "parameters = { cs = { value = 0, unit = \"N*s/m\", lower = 0, upper = 8000 } }\n");
+  const Study s = loadStudy(p.string());
+  auto o = smallOptions(s);
+  o.apply = {"skyhook"};
+  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "skyhook:cs=2500", 1), {}, o, freshDir("diag16_skyhook"));
+  expectNamed(r, "skyhook", "effect", 2500.0, 0.2);
+}
+
 TEST(Diagnose16, ATermOnlyTheRegressionFindsIsProposedAppliedAndCutsTheError) {
   // A position-dependent damper, F = 3e4 q v N, which no candidate has: hidden as a library term
   // (an on-demand effect, never in the catalogue).

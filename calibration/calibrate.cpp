@@ -47,10 +47,11 @@ struct LabObjective::Pool {
     }
     return std::make_unique<Simulator>(model, options);
   }
-  void release(std::unique_ptr<Simulator> s, double wall) {
+  /// Gives a simulator back; `wall` (one evaluation's wall time) is recorded when given.
+  void release(std::unique_ptr<Simulator> s, std::optional<double> wall) {
     std::lock_guard<std::mutex> lock(m);
     free.push_back(std::move(s));
-    walls.push_back(wall);
+    if (wall) walls.push_back(*wall);
   }
 };
 
@@ -256,7 +257,9 @@ std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta) co
   for (const auto& set : sets_) {
     RunResult r;
     try {
-      r = sim->run(values, *set.road, set.scenario);
+      StepControl steps;
+      if (!plans_.empty()) steps.replay = plans_[static_cast<std::size_t>(&set - sets_.data())].get();
+      r = sim->run(values, *set.road, set.scenario, steps);
     } catch (const InputError& e) {
       // A combination of in-bound values the laws reject (e.g. PAC2002 with an impossible shape):
       // a failed point, not a failed calibration.
@@ -275,6 +278,39 @@ std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta) co
   }
   pool_->release(std::move(sim), wall / static_cast<double>(sets_.size()));
   return out;
+}
+
+bool LabObjective::freezeSteps(const std::vector<double>& theta) {
+  plans_.clear();
+  frozen_at_.clear();
+  if (pool_->options.integrator != "rosenbrock") return false;
+  const std::vector<double> values = runValues(theta);
+  auto sim = pool_->acquire();
+  std::vector<std::shared_ptr<const StepPlan>> plans;
+  bool ok = true;
+  for (const auto& set : sets_) {
+    auto plan = std::make_shared<StepPlan>();
+    StepControl steps;
+    steps.record = plan.get();
+    try {
+      ok = sim->run(values, *set.road, set.scenario, steps).stats.ok;
+    } catch (const InputError&) {
+      ok = false;
+    }
+    if (!ok) break;
+    plans.push_back(std::move(plan));
+  }
+  pool_->release(std::move(sim), std::nullopt);  // not an evaluation: no wall time recorded
+  if (!ok) return false;
+  plans_ = std::move(plans);
+  frozen_at_ = theta;
+  return true;
+}
+
+std::vector<std::size_t> LabObjective::frozenStepCounts() const {
+  std::vector<std::size_t> n;
+  for (const auto& p : plans_) n.push_back(p->size());
+  return n;
 }
 
 std::vector<RunResult> LabObjective::runs(const std::vector<double>& theta) const {
@@ -372,6 +408,7 @@ CalibrationOptions CalibrationOptions::fromStudy(const Study& study) {
   o.joint.margin = study.calibration.margin;
   o.joint.ridge_steps = static_cast<int>(study.calibration.ridge_steps);
   o.interval = study.calibration.interval;
+  o.steps = study.calibration.steps;
   return o;
 }
 
@@ -411,6 +448,7 @@ void CalibrationOptions::validate() const {
   check.require(interval == "profile" || interval == "posterior", "interval",
                 "must be \"profile\" or \"posterior\", got \"" + interval + "\"");
   check.inRange("polish_step", polish_step, 0.0, 0.5);
+  check.require(steps == "frozen" || steps == "adaptive", "steps", "must be \"frozen\" or \"adaptive\", got \"" + steps + "\"");
   profile.validate();
   optimizer.validate();
   box.validate();
@@ -450,6 +488,7 @@ nlohmann::json CalibrationOptions::toJson() const {
   j["interval"] = interval;
   if (!extra_starts.empty()) j["extra_starts"] = extra_starts;
   if (polish_step > 0) j["polish_step"] = polish_step;
+  j["steps"] = steps;
   return j;
 }
 
@@ -810,8 +849,56 @@ IntegratorCheck assessIntegrator(const std::vector<double>& eta, const std::vect
   return c;
 }
 
+double quadraticRoughness(const std::vector<double>& x, const std::vector<double>& f) {
+  DTWIN_CHECK(x.size() == f.size() && x.size() >= 4, "quadraticRoughness: needs at least 4 points");
+  const long m = static_cast<long>(x.size());
+  Eigen::MatrixXd A(m, 3);
+  Eigen::VectorXd b(m);
+  const double x0 = x[x.size() / 2];
+  double scale = 0.0;
+  for (double v : x) scale = std::max(scale, std::abs(v - x0));
+  if (!(scale > 0)) scale = 1.0;
+  for (long i = 0; i < m; ++i) {
+    const double u = (x[static_cast<std::size_t>(i)] - x0) / scale;
+    A(i, 0) = 1.0;
+    A(i, 1) = u;
+    A(i, 2) = u * u;
+    b[i] = f[static_cast<std::size_t>(i)];
+  }
+  const Eigen::VectorXd c = A.colPivHouseholderQr().solve(b);
+  return (A * c - b).cwiseAbs().maxCoeff();
+}
+
+double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g) {
+  DTWIN_CHECK(J.cols() == g.size(), "integratorOptimumShift: J and g disagree");
+  const Eigen::MatrixXd H = 2.0 * J.transpose() * J;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
+  const Eigen::VectorXd ev = es.eigenvalues();
+  const double tol = std::max(ev.cwiseAbs().maxCoeff(), 1e-300) * 1e-12;
+  const Eigen::VectorXd p = es.eigenvectors().transpose() * g;
+  double s = 0.0;
+  for (long i = 0; i < ev.size(); ++i)
+    if (ev[i] > tol) s += p[i] * p[i] / ev[i];
+  return 0.5 * s;
+}
+
+void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift) {
+  c.steps = "frozen";
+  c.roughness = roughness;
+  c.optimum_shift = optimum_shift;
+  c.jitter = std::max(roughness, optimum_shift);
+  c.ok = !(c.threshold > 0) || c.jitter < 0.5 * c.threshold;
+  c.message.clear();
+  if (!c.ok)
+    c.message = "with its steps frozen the integrator's error still moves the optimum by about " + formatNumber(optimum_shift, 3) +
+                " (SSE units; the SSE departs from a quadratic by " + formatNumber(roughness, 3) + "), against the 95 % intervals' "
+                "threshold of " + formatNumber(c.threshold, 3) + ": the optimum and the intervals follow the integrator, not the data; "
+                "tighten [simulation] accuracy (to " + formatNumber(c.accuracy_check, 3) + " or less) and rerun";
+}
+
 nlohmann::json IntegratorCheck::toJson() const {
-  return {{"accuracy", accuracy},           {"accuracy_check", accuracy_check}, {"sse", jsonNumber(sse)},
+  return {{"steps", steps}, {"roughness", jsonNumber(roughness)}, {"optimum_shift", jsonNumber(optimum_shift)},
+          {"accuracy", accuracy},           {"accuracy_check", accuracy_check}, {"sse", jsonNumber(sse)},
           {"sse_check", jsonNumber(sse_check)}, {"prediction_change", jsonNumber(prediction_change)},
           {"jitter", jsonNumber(jitter)},     {"threshold", jsonNumber(threshold)}, {"ok", ok}, {"message", message}};
 }
@@ -868,6 +955,7 @@ nlohmann::json CalibrationResult::toJson() const {
                                 "Griddy Gibbs with deterministic-mixture design weights"
                               : "Latin hypercube in the region, one point per stratum per dimension";
   for (const auto& w : rounds.warnings) j["warnings"].push_back(w);
+  for (const auto& w : warnings) j["warnings"].push_back(w);
   double best = std::numeric_limits<double>::infinity();
   for (double s : sse) best = std::min(best, s);
   j["design"]["sse_min"] = jsonNumber(best);
@@ -918,6 +1006,7 @@ class CalibrationRun {
   void profile();
   void sampler();
   void integratorCheck();
+  void probeSmoothness(const LabObjective& fine);
   void summary();
   CalibrationResult take() { return std::move(res_); }
 
@@ -932,6 +1021,8 @@ class CalibrationRun {
   std::string resumeFingerprint() const;
   std::vector<std::vector<double>> optimiserStarts(nlohmann::json& screening) const;
   void polish(std::vector<StartResult>& starts) const;
+  void polishOnOwnSteps();
+  nlohmann::json stepsJson() const;
   BoxProblem boxProblem() const;
   void paperBox(const BoxProblem& bp, nlohmann::json& stage);
   void jointRegion(const BoxProblem& bp, nlohmann::json& stage);
@@ -996,6 +1087,19 @@ void CalibrationRun::objective() {
   res_.n_data = n_;
   fingerprint_ = resumeFingerprint();
   sse_ = [this](const std::vector<double>& th) { return objective_->sse(th); };
+  if (options_.steps == "frozen") {
+    // The screening and the optimiser's starts replay the steps of one reference point: the first
+    // extra start (e.g. a nested model's optimum) or the box centre.
+    std::vector<double> ref(d_);
+    for (std::size_t k = 0; k < d_; ++k) {
+      const double lo = objective_->lower()[k], up = objective_->upper()[k];
+      ref[k] = options_.extra_starts.empty() || options_.extra_starts[0].size() != d_ ? 0.5 * (lo + up)
+                                                                                     : std::clamp(options_.extra_starts[0][k], lo, up);
+    }
+    if (!objective_->freezeSteps(ref))
+      res_.warnings.push_back("the integrator's steps could not be frozen at the reference point (its run failed); the optimiser's "
+                              "starts chose their steps adaptively");
+  }
 }
 
 /// The optimiser's starting points: the best screening points (or a plain spread of starts when
@@ -1043,6 +1147,44 @@ void CalibrationRun::polish(std::vector<StartResult>& starts) const {
   starts.push_back(polishLeastSquares(objective, second.theta, options_.threads, kPolishStep));
 }
 
+/// Steps frozen: the starts ran on the steps of the reference point (objective()). Freezes the
+/// steps again at the best start's θ and polishes it by Levenberg–Marquardt on them (appended to
+/// the starts); that is the optimum, and the later stages replay the same steps. If the run at
+/// the best start fails adaptively, the steps go back to adaptive and the optimum stays.
+void CalibrationRun::polishOnOwnSteps() {
+  if (!std::isfinite(res_.optimum.sse)) return;
+  const std::vector<double> at = res_.optimum.theta;
+  if (!objective_->freezeSteps(at)) {
+    objective_->thawSteps();
+    res_.warnings.push_back("the integrator's steps could not be frozen at the optimiser's best point (its run failed); the later "
+                            "stages chose their steps adaptively");
+    return;
+  }
+  report("optimum: polish on its own steps", 0, 1);
+  std::vector<StartResult> starts = std::move(res_.optimum.starts);
+  StartResult lm = polishLeastSquares(*objective_, at, options_.threads, kPolishStepFrozen);
+  lm.status = "LM_POLISH_FROZEN_STEPS";
+  starts.push_back(std::move(lm));
+  const int evaluations = res_.optimum.evaluations + starts.back().evaluations;
+  res_.optimum.starts = std::move(starts);
+  res_.optimum.evaluations = evaluations;
+  // Only this start's SSE is on the steps the later stages use: it is the optimum.
+  res_.optimum.best_start = static_cast<int>(res_.optimum.starts.size()) - 1;
+  res_.optimum.theta = res_.optimum.starts.back().theta;
+  res_.optimum.sse = res_.optimum.starts.back().sse;
+  report("optimum: polish on its own steps", 1, 1);
+}
+
+/// How the objective chose its steps, for optimum.json (the θ they are frozen at, to resume).
+nlohmann::json CalibrationRun::stepsJson() const {
+  nlohmann::json j{{"mode", options_.steps}, {"frozen", objective_->stepsFrozen()}};
+  if (objective_->stepsFrozen()) {
+    j["frozen_at"] = jsonNumbers(objective_->stepsFrozenAt());
+    j["steps_per_data_set"] = objective_->frozenStepCounts();
+  }
+  return j;
+}
+
 /// Stage 1, optimum (optimum.json): as minimiseSse, with the screening and the starts spread over
 /// ranks and threads, then the optional polish. Throws when every simulation of it failed.
 void CalibrationRun::optimum() {
@@ -1050,6 +1192,11 @@ void CalibrationRun::optimum() {
   const fs::path opt_path = file("optimum.json");
   if (auto j = readStage(opt_path, fingerprint_); !j.is_null()) {
     res_.optimum = optimumFrom(j.at("optimum"));
+    // The later stages replay the steps the optimum's polish was made on: frozen again at the same θ.
+    if (options_.steps == "frozen") {
+      if (j.contains("steps") && j.at("steps").value("frozen", false)) objective_->freezeSteps(numbersFromJson(j.at("steps").at("frozen_at")));
+      else objective_->thawSteps();
+    }
   } else {
     nlohmann::json screening;
     const std::vector<std::vector<double>> x0 = optimiserStarts(screening);
@@ -1062,8 +1209,9 @@ void CalibrationRun::optimum() {
     for (const auto& v : packed) starts.push_back(unpackStart(v));
     if (options_.polish_step > 0) polish(starts);
     res_.optimum = collectOptimum(std::move(starts));
+    if (options_.steps == "frozen") polishOnOwnSteps();
     rootWrites([&] {
-      nlohmann::json stage{{"fingerprint", fingerprint_}, {"optimum", optimumJson(res_.optimum)}};
+      nlohmann::json stage{{"fingerprint", fingerprint_}, {"optimum", optimumJson(res_.optimum)}, {"steps", stepsJson()}};
       if (!screening.is_null()) stage["screening"] = screening;
       writeFileAtomic(opt_path.string(), stage.dump(2) + "\n");
     });
@@ -1355,7 +1503,63 @@ void CalibrationRun::integratorCheck() {
   report("integrator check", 1, 1);
   if (eta.empty() || eta_fine.empty()) return;  // a failed run: no check (ok, zero figures)
   res_.integrator = assessIntegrator(eta, eta_fine, objective_->measured(), objective_->weights(), accuracy, threshold);
+  if (objective_->stepsFrozen()) probeSmoothness(fine);
   res_.stage_wall_s.push_back({"integrator check", secondsSince(t0)});
+}
+
+/// The frozen-steps part of the integrator check (IntegratorCheck): along each parameter's axis,
+/// five frozen-step runs h apart (h: a tenth of the profile half-width, in [1e-4, 1e-2] of the
+/// bounds' range, the five points moved inside the bounds) and two adaptive runs of `fine` at the
+/// middle three's ends. The roughness is the largest departure of an axis's five SSEs from their
+/// quadratic; the residuals' Jacobian and the gradient of SSE − SSE_fine come from the middle
+/// three by central differences.
+void CalibrationRun::probeSmoothness(const LabObjective& fine) {
+  const std::size_t d = d_;
+  const auto& lo = objective_->lower();
+  const auto& up = objective_->upper();
+  std::vector<double> h(d), centre(d);
+  for (std::size_t k = 0; k < d; ++k) {
+    const double range = up[k] - lo[k];
+    const double half = k < res_.profile.lower.size() && std::isfinite(res_.profile.upper[k] - res_.profile.lower[k])
+                            ? 0.5 * (res_.profile.upper[k] - res_.profile.lower[k]) / range
+                            : 1e-1;
+    h[k] = std::clamp(half / 10, 1e-4, 1e-2);
+    centre[k] = std::clamp((res_.optimum.theta[k] - lo[k]) / range, 2 * h[k], 1 - 2 * h[k]);
+  }
+  constexpr int kFrozen = 5, kPer = kFrozen + 2;  // offsets -2..2 frozen, then -1 and +1 adaptive
+  auto point = [&](std::size_t k, int offset) {
+    std::vector<double> th(d);
+    for (std::size_t j = 0; j < d; ++j) th[j] = lo[j] + (j == k ? centre[j] + offset * h[j] : centre[j]) * (up[j] - lo[j]);
+    return th;
+  };
+  const auto out = distributedMap(
+      kPer * d, options_.threads,
+      [&](std::size_t t, int) -> std::vector<double> {
+        const std::size_t k = t / kPer;
+        const int which = static_cast<int>(t % kPer);
+        if (which < kFrozen) return objective_->residuals(point(k, which - 2));
+        return {fine.sse(point(k, which == kFrozen ? -1 : 1))};
+      },
+      [&](std::size_t done, std::size_t total) { report("integrator check: probes", done, total); });
+  Eigen::MatrixXd J(n_, static_cast<long>(d));
+  Eigen::VectorXd g(static_cast<long>(d));
+  double roughness = 0.0;
+  for (std::size_t k = 0; k < d; ++k) {
+    std::vector<double> x, f;
+    for (int o = 0; o < kFrozen; ++o) {
+      const auto& r = out[k * kPer + static_cast<std::size_t>(o)];
+      if (r.size() != static_cast<std::size_t>(n_)) return;  // a failed run: the adaptive-style figures stand
+      x.push_back(o - 2);
+      f.push_back(Eigen::Map<const Eigen::VectorXd>(r.data(), n_).squaredNorm());
+    }
+    const double fine_minus = out[k * kPer + kFrozen][0], fine_plus = out[k * kPer + kFrozen + 1][0];
+    if (!std::isfinite(fine_minus) || !std::isfinite(fine_plus)) return;
+    roughness = std::max(roughness, quadraticRoughness(x, f));
+    const Eigen::Map<const Eigen::VectorXd> rm(out[k * kPer + 1].data(), n_), rp(out[k * kPer + 3].data(), n_);
+    J.col(static_cast<long>(k)) = (rp - rm) / (2 * h[k]);
+    g[static_cast<long>(k)] = ((f[3] - f[1]) - (fine_plus - fine_minus)) / (2 * h[k]);
+  }
+  applyProbes(res_.integrator, roughness, integratorOptimumShift(J, g));
 }
 
 /// Stage 7, summary (summary.json): the result (CalibrationResult::toJson) with how it was made:

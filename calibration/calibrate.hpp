@@ -135,6 +135,19 @@ class LabObjective {
   double read(const RunResult& run, std::size_t record, std::size_t column) const;
   /// The run vector (model().runParameterNames() layout) θ maps to.
   std::vector<double> runValues(const std::vector<double>& theta) const;
+  /// Freezes the integrator's steps (docs/calibration.md, "A smooth objective"): each data set's
+  /// run at θ is made adaptively and its steps recorded; every later evaluation replays them, so
+  /// the SSE is a smooth function of θ. Returns false (and leaves the steps adaptive) when a run
+  /// at θ fails, or when the study's integrator is not rosenbrock. Not thread-safe: call it
+  /// between stages, while no evaluation runs.
+  bool freezeSteps(const std::vector<double>& theta);
+  /// Back to adaptive steps.
+  void thawSteps() { plans_.clear(); }
+  /// Whether the steps are frozen, and the θ they were frozen at (empty when not).
+  bool stepsFrozen() const { return !plans_.empty(); }
+  const std::vector<double>& stepsFrozenAt() const { return frozen_at_; }
+  /// Steps per data set of the frozen sequences (empty when not frozen).
+  std::vector<std::size_t> frozenStepCounts() const;
   long failures() const;
   long evaluations() const;
   /// Median wall time of the simulations so far [s] (one data set's run).
@@ -176,6 +189,8 @@ class LabObjective {
   /// Applies the sensor models at θ to eta (the predictions of every record).
   void distort(const std::vector<double>& theta, const std::vector<RunResult>& runs, std::vector<double>& eta) const;
   std::unique_ptr<Pool> pool_;
+  std::vector<std::shared_ptr<const StepPlan>> plans_;  ///< per data set, when the steps are frozen
+  std::vector<double> frozen_at_;
 };
 
 /// The settings of one calibration. The sizes default to the paper's (calibration/common.hpp);
@@ -202,6 +217,12 @@ struct CalibrationOptions {
   /// Which 95 % interval summaries print as ci95: "profile" (default) or "posterior" (the
   /// posterior's central interval, the paper's). Both are always in summary.json.
   std::string interval = "profile";
+  /// "frozen" (default): the objective replays one step sequence per stage (LabObjective::
+  /// freezeSteps): the box centre's (or the first extra start's) for the screening and the starts,
+  /// then the best start's for the final Levenberg–Marquardt polish and every later stage, so the
+  /// SSE the optimum, the region, the design and the profile see is smooth in θ. "adaptive": each
+  /// run chooses its steps (the SSE of dense, quiet data is then jagged). docs/calibration.md.
+  std::string steps = "frozen";
   /// Extra optimiser starts (physical units, θ order), run before the usual ones; e.g. a nested
   /// model's optimum with the added parameters at their off values, so the larger model's
   /// optimum is never worse than the nested one's. Part of the fingerprint when not empty.
@@ -230,18 +251,30 @@ struct CalibrationOptions {
 /// Progress: stage name, points done, points in the stage.
 using ::dtwin::StageProgress;  // common/progress.hpp
 
-/// Is the integrator accurate enough for these data? The SSE is re-evaluated at the optimum with
-/// the study's accuracy divided by 10. Each simulation's integrator error changes in jumps with θ
-/// (the adaptive steps change), so it puts a jitter of about 2 ‖e‖ ‖δ‖ / √n into the SSE (e:
-/// the weighted residuals, δ: the weighted change of the predictions). When that jitter, or the
-/// change of the SSE itself, reaches half the 95 % intervals' threshold above the minimum
-/// (c s²), the optimum and the intervals follow the integrator rather than the data: `ok` is
-/// false and `message` says what to tighten.
+/// Is the integrator accurate enough for these data? (docs/calibration.md, step 7.) The SSE is
+/// re-evaluated at the optimum with adaptive steps at the study's accuracy divided by 10.
+///
+/// Adaptive steps: each simulation's integrator error changes in jumps with θ (the steps change),
+/// so it puts a jitter of about 2 ‖e‖ ‖δ‖ / √n into the SSE (e: the weighted residuals, δ: the
+/// weighted change of the predictions); jitter = max(|sse − sse_check|, that).
+///
+/// Frozen steps: the SSE is smooth by construction and its error a smooth bias, so both are
+/// measured instead (applyProbes), along each parameter's axis at five points a tenth of its
+/// profile half-width apart: the roughness, the largest departure of the SSE from its
+/// least-squares quadratic along an axis; and the optimum shift, how far the integrator's bias
+/// moves the optimum in SSE units (integratorOptimumShift); jitter = max(roughness, shift).
+///
+/// When the jitter reaches half the 95 % intervals' threshold above the minimum (c s²), the
+/// optimum and the intervals follow the integrator rather than the data: `ok` is false and
+/// `message` says what to tighten.
 struct IntegratorCheck {
+  std::string steps = "adaptive";               ///< how the calibration's runs chose their steps
   double accuracy = 0.0, accuracy_check = 0.0;  ///< the study's, and the check's (one tenth)
   double sse = 0.0, sse_check = 0.0;            ///< at the optimum, with each
   double prediction_change = 0.0;               ///< ‖δ‖ (weighted: in noise sd when the weights are 1/σ²)
-  double jitter = 0.0;                          ///< max(|sse − sse_check|, 2 ‖e‖ ‖δ‖ / √n)
+  double roughness = 0.0;                       ///< frozen steps: the SSE's largest departure from a quadratic
+  double optimum_shift = 0.0;                   ///< frozen steps: ½ gᵀ H⁺ g (integratorOptimumShift)
+  double jitter = 0.0;                          ///< what moves the optimum and the intervals (see above)
   double threshold = 0.0;                       ///< the intervals' threshold above the minimum, c s²
   bool ok = true;
   std::string message;                          ///< empty when ok
@@ -252,6 +285,21 @@ struct IntegratorCheck {
 /// it (`eta_fine`), the data `y`, their weights `w` and the intervals' threshold above the minimum.
 IntegratorCheck assessIntegrator(const std::vector<double>& eta, const std::vector<double>& eta_fine, const std::vector<double>& y,
                                  const std::vector<double>& w, double accuracy, double threshold);
+
+/// The largest absolute residual of the least-squares quadratic through (x_i, f_i) (at least 4
+/// points): 0 for a quadratic, about the size of a jump for a jagged f.
+double quadraticRoughness(const std::vector<double>& x, const std::vector<double>& f);
+
+/// How much a smooth bias b(θ) of the SSE (here the integrator's: SSE − SSE_fine) moves the
+/// optimum, in SSE units: ½ gᵀ H⁺ g, with g = ∇b at the optimum and H = 2 JᵀJ the Gauss–Newton
+/// Hessian of the SSE (J: the weighted residuals' Jacobian, n × d, in the same coordinates as g;
+/// H⁺ its pseudo-inverse). For residuals r + δ of a linear model it is ‖P δ‖², P the projection
+/// onto J's columns: the exact model's SSE at the biased optimum exceeds its minimum by this much.
+double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g);
+
+/// Turns an adaptive-steps check into the frozen-steps one: sets roughness and optimum_shift, the
+/// jitter as their maximum, `ok` and the message.
+void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift);
 
 struct CalibrationResult {
   std::string assembly, label;
@@ -273,6 +321,7 @@ struct CalibrationResult {
   IntegratorCheck integrator;  ///< stage 6: is the integrator accurate enough for these data?
   std::vector<std::pair<std::string, double>> stage_wall_s;
   double median_run_wall_s = 0.0;  ///< wall time of one simulation (median)
+  std::vector<std::string> warnings;  ///< besides the design's (e.g. steps that could not be frozen)
   nlohmann::json toJson() const;
 };
 
@@ -296,6 +345,9 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
 /// The finite-difference step (scaled units) of polishLeastSquares used by calibrateAssembly's
 /// polish: well above the integrator's noise in the residuals (see calibrate.cpp).
 inline constexpr double kPolishStep = 1e-2;
+/// The same with frozen steps (CalibrationOptions::steps): the SSE is smooth, so a finer step
+/// gives a truer Jacobian.
+inline constexpr double kPolishStepFrozen = 1e-3;
 
 /// Levenberg–Marquardt on the weighted residuals sqrt(w) (η(θ) − y) of `obj` from `theta0`, in the
 /// scaled coordinates [0,1]^d with central differences of step `h` (2d runs per iteration, on

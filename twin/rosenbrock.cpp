@@ -128,6 +128,7 @@ struct RosenbrockIntegrator::Impl {
   Eigen::MatrixXd J, W;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
   bool have_jac = false, jac_fresh = false;
+  bool step_new_jac = false;  ///< a Jacobian was computed during the current (last) step
   int jac_age = 0;
   double h_factored = -1;
 
@@ -252,6 +253,7 @@ struct RosenbrockIntegrator::Impl {
       throw std::runtime_error("RosenbrockIntegrator: the finite-difference Jacobian is not finite at t = " + fmt(t) +
                                " s (NaN/Inf from a force next to the current state?)");
     ++n_jacs;
+    step_new_jac = true;
     have_jac = true;
     jac_fresh = true;
     jac_age = 0;
@@ -327,6 +329,7 @@ struct RosenbrockIntegrator::Impl {
       throw std::runtime_error("RosenbrockIntegrator: more than " + std::to_string(opt.max_steps) + " steps (t = " + fmt(t) + " s)");
     const bool fixed = opt.fixed_step_s > 0;
     int rejections = 0;  // of this step
+    step_new_jac = false;
     for (;;) {
       double h = fixed ? opt.fixed_step_s : std::min(h_prop, hmax);
       const double remaining = t_stop - t;
@@ -388,6 +391,31 @@ struct RosenbrockIntegrator::Impl {
       if (!jac_fresh && (rejections >= opt.jacobian_refresh_rejections || nonfinite)) computeJacobian();
     }
   }
+
+  void stepTo(double t_next, bool new_jacobian) {
+    if (!initialized) throw std::logic_error("RosenbrockIntegrator: stepTo() before initialize()");
+    if (!(t_next > t))
+      throw std::invalid_argument("RosenbrockIntegrator: t_next = " + fmt(t_next) + " is not after the current time " + fmt(t));
+    if (n_steps >= opt.max_steps)
+      throw std::runtime_error("RosenbrockIntegrator: more than " + std::to_string(opt.max_steps) + " steps (t = " + fmt(t) + " s)");
+    step_new_jac = false;
+    ++n_attempts;
+    if (n > 0) {
+      if (new_jacobian || !have_jac) computeJacobian();
+      const double h = t_next - t;
+      if (!attempt(h) || !commit(t_next))
+        throw std::runtime_error("RosenbrockIntegrator: non-finite state or derivative in the frozen step from t = " + fmt(t) +
+                                 " s to " + fmt(t_next) + " s");
+      y0.swap(ynew);
+    } else {
+      state.setTime(t_next);
+      realize(state);
+    }
+    t = t_next;
+    ++n_steps;
+    ++jac_age;
+    jac_fresh = false;
+  }
 };
 
 // ----------------------------------------------------------------------------- forwarding
@@ -403,6 +431,8 @@ void RosenbrockIntegrator::setMaximumStepSize(double h) {
   impl_->hmax = h;
 }
 void RosenbrockIntegrator::step(double t_stop) { impl_->step(t_stop); }
+void RosenbrockIntegrator::stepTo(double t_next, bool new_jacobian) { impl_->stepTo(t_next, new_jacobian); }
+bool RosenbrockIntegrator::lastStepNewJacobian() const { return impl_->step_new_jac; }
 const SimTK::State& RosenbrockIntegrator::getState() const { return impl_->state; }
 double RosenbrockIntegrator::getTime() const { return impl_->t; }
 long RosenbrockIntegrator::steps() const { return impl_->n_steps; }

@@ -87,6 +87,14 @@ class RosenbrockIntegrator {
   /// Throws std::runtime_error with a clear message on failure (step-size underflow,
   /// non-finite state, too many steps); std::invalid_argument if t_stop <= getTime().
   void step(double t_stop);
+  /// One step to exactly `t_next` with no error control: a replayed step of a frozen sequence
+  /// (twin/simulator.hpp StepPlan). A Jacobian is computed first when `new_jacobian` is set or none
+  /// exists yet. Throws std::invalid_argument if t_next <= getTime(), std::runtime_error when the
+  /// step or its end derivative is not finite (the state is then left at the step's start).
+  void stepTo(double t_next, bool new_jacobian);
+  /// Whether the last accepted step computed a Jacobian (at its start state) before its accepted
+  /// attempt: recorded with the step's end time, it lets stepTo() replay the step exactly.
+  bool lastStepNewJacobian() const;
   const SimTK::State& getState() const;  ///< realized through Stage::Acceleration at the step end
   double getTime() const;
 

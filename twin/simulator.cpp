@@ -700,7 +700,7 @@ struct Simulator::Impl {
   /// for `s0` itself when `record_start`). Never throws for a diverging run: ok = false and the
   /// message say why. On success `end` (if given) receives the final State.
   RunStats integrate(const State& s0, const Segments& segs, std::size_t i0, std::size_t i1, bool record_start, Knots& knots,
-                     std::vector<double>& times, State* end) {
+                     std::vector<double>& times, State* end, StepControl steps = {}) {
     RunStats st;
     const std::string& method = opt.integrator;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(opt.max_wall_s);
@@ -721,11 +721,31 @@ struct Simulator::Impl {
       try {
         integ.initialize(s0);
         if (record_start) record(integ.getState(), knots, times);
+        if (steps.record) *steps.record = StepPlan{};
+        std::size_t k = 0;  // next step of a replayed plan
+        const StepPlan* plan = steps.replay;
+        if (plan) {  // skip the plan's steps before s0 (never the case for a whole run)
+          while (k < plan->size() && plan->times[k] <= s0.getTime() + 1e-12) ++k;
+        }
         for (std::size_t i = i0; i < i1; ++i) {
           const auto [t_end, hmax] = segs[i];
           integ.setMaximumStepSize(hmax);
           while (integ.getTime() < t_end - 1e-12) {
-            integ.step(t_end);
+            if (plan) {
+              if (k >= plan->size() || plan->times[k] > t_end + 1e-12)
+                throw std::runtime_error("the frozen step sequence does not fit this scenario (" +
+                                         (k >= plan->size() ? std::string("it ends at t = ") + formatNumber(integ.getTime()) + " s"
+                                                            : "no step ends at the segment end t = " + formatNumber(t_end) + " s") +
+                                         "); it was recorded on another scenario or road");
+              integ.stepTo(plan->times[k], plan->new_jacobian[k] != 0);
+              ++k;
+            } else {
+              integ.step(t_end);
+            }
+            if (steps.record) {
+              steps.record->times.push_back(integ.getTime());
+              steps.record->new_jacobian.push_back(integ.lastStepNewJacobian() ? 1 : 0);
+            }
             record(integ.getState(), knots, times);
             checkFinite(integ.getTime());
           }
@@ -782,15 +802,17 @@ struct Simulator::Impl {
     return s;
   }
 
-  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
+  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc, StepControl steps) {
     const auto t_start = std::chrono::steady_clock::now();
     begin(values, road, sc);
+    if ((steps.replay || steps.record) && opt.integrator != "rosenbrock")
+      throw InputError("simulation.integrator", "a frozen step sequence needs the rosenbrock integrator, not '" + opt.integrator + "'");
     RunResult res;
     Knots knots;
     std::vector<double> times;
     const State s = startState();
     const Segments segs = segments(road, sc);
-    res.stats = integrate(s, segs, 0, segs.size(), true, knots, times, nullptr);
+    res.stats = integrate(s, segs, 0, segs.size(), true, knots, times, nullptr, steps);
     finish(knots, times, sc, res);
     res.stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
     return res;
@@ -1021,8 +1043,8 @@ Simulator::Impl& Simulator::pick(const std::vector<double>& values) {
   if (!impl_filter_) impl_filter_ = std::make_unique<Impl>(impl_->model, impl_->opt, true);
   return *impl_filter_;
 }
-RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc) {
-  return pick(values).run(values, road, sc);
+RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc, StepControl steps) {
+  return pick(values).run(values, road, sc, steps);
 }
 std::vector<RunResult> Simulator::runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
                                               const ScenarioSpec& sc) {

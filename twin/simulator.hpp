@@ -44,6 +44,27 @@ struct RunStats {
   double sim_s = 0.0;      ///< simulated time
 };
 
+/// A frozen step sequence (docs/calibration.md, "A smooth objective"): the end time of every step
+/// of one run of the rosenbrock integrator and whether the step began with a new Jacobian. An
+/// adaptive integrator chooses its steps from the error of the run at hand, so its error changes
+/// in jumps as the parameters move and the SSE of dense, quiet data is jagged. Replayed for other
+/// parameters, one sequence makes every output a smooth function of them: the same arithmetic on
+/// other numbers.
+struct StepPlan {
+  std::vector<double> times;                ///< end time of every step, ascending
+  std::vector<unsigned char> new_jacobian;  ///< per step: 1 when a Jacobian was computed at its start
+  std::size_t size() const { return times.size(); }
+};
+
+/// How a run chooses its integrator steps. Default: adaptively (SimulationOptions::accuracy).
+/// `replay`: exactly the steps of that plan, with no error control (rosenbrock only; the plan must
+/// come from a run of the same scenario and road, as its segment ends are steps of it).
+/// `record`: receives the steps the run took (rosenbrock only; cleared first).
+struct StepControl {
+  const StepPlan* replay = nullptr;
+  StepPlan* record = nullptr;
+};
+
 struct RunResult {
   Trace trace;    ///< every channel on the output grid (rows at k / output_rate_hz)
   /// Every channel at the scenario's sample_times_s (rows in that order), from the same dense
@@ -65,7 +86,10 @@ class Simulator {
   /// Simulates `scenario` on `road` with run parameters `values` (layout: model().runParameterNames()).
   /// Never throws for a diverging simulation: stats.ok = false and stats.message say why.
   /// Throws InputError for invalid `values`.
-  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario);
+  /// `steps` replays or records a step sequence (StepControl); InputError when one is given and
+  /// the integrator is not rosenbrock. A replayed plan that does not fit the scenario (a segment
+  /// end that is not one of its steps, too few steps) fails the run (stats.ok = false).
+  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario, StepControl steps = {});
 
   /// Runs `scenario` once per road, sharing the smooth start (docs/method.md §5: "the 0-6 s smooth
   /// part is identical for every road of one θ: simulate it once").

@@ -16,7 +16,8 @@
 namespace dtwin {
 nlohmann::json CalibrationSettings::toJson() const {
   return {{"region", region}, {"design", designOrDefault()}, {"round_points", round_points}, {"max_rounds", max_rounds},
-          {"target_ess", target_ess}, {"margin", margin}, {"ridge_steps", ridge_steps}, {"interval", interval}};
+          {"target_ess", target_ess}, {"margin", margin}, {"ridge_steps", ridge_steps}, {"interval", interval},
+          {"steps", steps}};
 }
 
 const std::vector<std::pair<std::string, long StudySizes::*>>& StudySizes::fields() {
@@ -488,6 +489,12 @@ void readCalibrationSettings(TableReader& top, Study& s) {
         throw InputError(r.where("interval"), "must be \"profile\" (the profile-likelihood interval, default) or \"posterior\" "
                                               "(the posterior's central interval), got \"" + *v + "\"");
       c.interval = *v;
+    }
+    if (auto v = r.string("steps")) {
+      if (*v != "frozen" && *v != "adaptive")
+        throw InputError(r.where("steps"), "must be \"frozen\" (one step sequence per stage, a smooth SSE; default) or \"adaptive\" "
+                                           "(each run chooses its own steps), got \"" + *v + "\"");
+      c.steps = *v;
     }
     if (auto v = r.number("margin")) {
       c.margin = *v;

@@ -62,6 +62,9 @@ struct CalibrationSettings {
   double margin = 1.25;          ///< joint region: extents = margin x the contour's, >= 1
   long ridge_steps = 30;         ///< joint region: steps per ridge trace (0: no traces)
   std::string interval = "profile";  ///< the 95 % interval summaries print as ci95: "profile" or "posterior"
+  /// "frozen" (default): the integrator's steps are chosen once per stage and replayed, so the SSE
+  /// is smooth in θ; "adaptive": every run chooses its own (docs/calibration.md).
+  std::string steps = "frozen";
   /// "adaptive" or "lhs", the default resolved.
   std::string designOrDefault() const { return design.empty() ? (region == "paper" ? "lhs" : "adaptive") : design; }
   nlohmann::json toJson() const;

@@ -36,3 +36,57 @@ TEST(IntegratorCheck, FailsWhenTheJitterReachesHalfTheThreshold) {
   // No interval threshold (no profile): nothing to compare with.
   EXPECT_TRUE(assessIntegrator(eta, fine, y, w, 3e-4, 0.0).ok);
 }
+
+// The frozen-steps figures. quadraticRoughness: 0 for points on a quadratic, and for a jump of
+// size J at the middle of five points the least-squares quadratic leaves a residual of 18/35 J
+// there (the hat matrix of the quadratic fit at x = 0 of -2..2 has diagonal 17/35).
+TEST(IntegratorCheck, QuadraticRoughnessIsZeroOnAQuadraticAndSeesAJump) {
+  const std::vector<double> x = {-2, -1, 0, 1, 2};
+  std::vector<double> f;
+  for (double v : x) f.push_back(3.0 - 0.5 * v + 2.0 * v * v);
+  EXPECT_LT(dtwin::calib::quadraticRoughness(x, f), 1e-12);
+  f[2] += 1.0;
+  EXPECT_NEAR(dtwin::calib::quadraticRoughness(x, f), 18.0 / 35.0, 1e-12);
+  EXPECT_THROW(dtwin::calib::quadraticRoughness({0, 1, 2}, {0, 1, 4}), std::exception);
+}
+
+// integratorOptimumShift against its closed form for a linear model: residuals r(z) = r0 + J z,
+// the integrator's bias a fixed δ, so g = 2 Jᵀδ and the shift is ‖P δ‖², P = J (JᵀJ)⁻¹ Jᵀ; this is
+// also how much the exact SSE at the biased optimum exceeds the exact minimum, computed directly.
+TEST(IntegratorCheck, OptimumShiftIsTheProjectedBiasOfALinearModel) {
+  Eigen::MatrixXd J(6, 2);
+  J << 1, 0, 1, 1, 1, 2, 1, 3, 1, 4, 1, 5;
+  Eigen::VectorXd r0(6), delta(6);
+  r0 << 0.3, -0.2, 0.1, 0.4, -0.5, 0.2;
+  delta << 0.05, -0.01, 0.02, 0.03, 0.0, -0.04;
+  const Eigen::VectorXd g = 2.0 * J.transpose() * delta;
+  const double shift = dtwin::calib::integratorOptimumShift(J, g);
+  const Eigen::MatrixXd P = J * (J.transpose() * J).inverse() * J.transpose();
+  EXPECT_NEAR(shift, (P * delta).squaredNorm(), 1e-14);
+  const Eigen::VectorXd z_exact = -(J.transpose() * J).ldlt().solve(J.transpose() * r0);
+  const Eigen::VectorXd z_biased = -(J.transpose() * J).ldlt().solve(J.transpose() * (r0 + delta));
+  EXPECT_NEAR(shift, (r0 + J * z_biased).squaredNorm() - (r0 + J * z_exact).squaredNorm(), 1e-14);
+  // A rank-deficient J (a parameter the data do not see): the unseen direction adds nothing.
+  Eigen::MatrixXd J3(6, 3);
+  J3 << J, Eigen::VectorXd::Zero(6);
+  Eigen::VectorXd g3(3);
+  g3 << g, 0.0;
+  EXPECT_NEAR(dtwin::calib::integratorOptimumShift(J3, g3), shift, 1e-12);
+}
+
+TEST(IntegratorCheck, FrozenStepsJudgeByRoughnessAndShift) {
+  const std::vector<double> y = {0, 0, 0, 0}, w = {4, 4, 4, 4};
+  const std::vector<double> eta = {0.5, -0.5, 0.5, -0.5}, fine = {0.55, -0.45, 0.55, -0.45};
+  auto c = assessIntegrator(eta, fine, y, w, 3e-4, 0.79);
+  ASSERT_FALSE(c.ok);  // the adaptive-steps jitter, 0.4
+  dtwin::calib::applyProbes(c, 0.01, 0.2);
+  EXPECT_EQ(c.steps, "frozen");
+  EXPECT_DOUBLE_EQ(c.jitter, 0.2);
+  EXPECT_TRUE(c.ok);
+  EXPECT_TRUE(c.message.empty());
+  dtwin::calib::applyProbes(c, 0.5, 0.2);
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.message.find("with its steps frozen"), std::string::npos) << c.message;
+  EXPECT_EQ(c.toJson().at("steps"), "frozen");
+  EXPECT_DOUBLE_EQ(c.toJson().at("roughness").get<double>(), 0.5);
+}

@@ -280,12 +280,21 @@ std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta) co
   return out;
 }
 
-bool LabObjective::freezeSteps(const std::vector<double>& theta) {
+bool LabObjective::freezeSteps(const std::vector<double>& theta, double accuracy) {
   plans_.clear();
   frozen_at_.clear();
+  frozen_accuracy_ = 0.0;
   if (pool_->options.integrator != "rosenbrock") return false;
   const std::vector<double> values = runValues(theta);
-  auto sim = pool_->acquire();
+  const bool own = accuracy > 0 && accuracy != pool_->options.accuracy;
+  std::unique_ptr<Simulator> sim;
+  if (own) {
+    SimulationOptions o = pool_->options;
+    o.accuracy = accuracy;
+    sim = std::make_unique<Simulator>(model_, o);
+  } else {
+    sim = pool_->acquire();
+  }
   std::vector<std::shared_ptr<const StepPlan>> plans;
   bool ok = true;
   for (const auto& set : sets_) {
@@ -300,10 +309,11 @@ bool LabObjective::freezeSteps(const std::vector<double>& theta) {
     if (!ok) break;
     plans.push_back(std::move(plan));
   }
-  pool_->release(std::move(sim), std::nullopt);  // not an evaluation: no wall time recorded
+  if (!own) pool_->release(std::move(sim), std::nullopt);  // not an evaluation: no wall time recorded
   if (!ok) return false;
   plans_ = std::move(plans);
   frozen_at_ = theta;
+  frozen_accuracy_ = own ? accuracy : pool_->options.accuracy;
   return true;
 }
 
@@ -745,7 +755,7 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 /// noise: at 2e-3 scaled units the residual differences of a damping rate were comparable with
 /// it and the polish stalled 280 SSE units above the truth (dense diag_bump + diag_rough data);
 /// 1e-2 reaches it.
-StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h) {
+StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h, double rel_gain) {
   const std::size_t d = theta0.size();
   const auto& lo = obj.lower();
   const auto& up = obj.upper();
@@ -810,7 +820,7 @@ StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double
         sse = en.squaredNorm();
         lambda = std::max(lambda / 10, 1e-9);
         improved = true;
-        if (rel < 1e-9) it = 1000;  // converged
+        if (rel < rel_gain) it = 1000;  // converged
       } else {
         lambda *= 10;
       }
@@ -1006,7 +1016,15 @@ class CalibrationRun {
   void profile();
   void sampler();
   void integratorCheck();
-  void probeSmoothness(const LabObjective& fine);
+  /// What probeBias measured: ok false when a run failed.
+  struct BiasProbe {
+    bool ok = false;
+    double roughness = 0.0, shift = 0.0;
+  };
+  LabObjective fineObjective(double accuracy) const;
+  BiasProbe probeBias(const LabObjective& fine, const std::vector<double>& theta, const std::vector<double>& h, bool five,
+                      const std::string& stage) const;
+  void chooseStepAccuracy();
   void summary();
   CalibrationResult take() { return std::move(res_); }
 
@@ -1022,6 +1040,7 @@ class CalibrationRun {
   std::vector<std::vector<double>> optimiserStarts(nlohmann::json& screening) const;
   void polish(std::vector<StartResult>& starts) const;
   void polishOnOwnSteps();
+  void polishFrozen();
   nlohmann::json stepsJson() const;
   BoxProblem boxProblem() const;
   void paperBox(const BoxProblem& bp, nlohmann::json& stage);
@@ -1048,6 +1067,7 @@ class CalibrationRun {
   int n_ = 0;                ///< scalar residuals
   std::string fingerprint_;  ///< of everything that changes the numbers; every stage file carries it
   CalibrationResult res_;
+  nlohmann::json steps_log_ = nlohmann::json::array();  ///< chooseStepAccuracy's tries
 };
 
 /// The resume fingerprint: everything that changes the numbers.
@@ -1153,26 +1173,58 @@ void CalibrationRun::polish(std::vector<StartResult>& starts) const {
 /// the best start fails adaptively, the steps go back to adaptive and the optimum stays.
 void CalibrationRun::polishOnOwnSteps() {
   if (!std::isfinite(res_.optimum.sse)) return;
-  const std::vector<double> at = res_.optimum.theta;
-  if (!objective_->freezeSteps(at)) {
+  if (!objective_->freezeSteps(res_.optimum.theta)) {
     objective_->thawSteps();
     res_.warnings.push_back("the integrator's steps could not be frozen at the optimiser's best point (its run failed); the later "
                             "stages chose their steps adaptively");
     return;
   }
+  polishFrozen();
+  chooseStepAccuracy();
+}
+
+/// One Levenberg–Marquardt polish from the optimum on the steps frozen now; it becomes the optimum
+/// (only its SSE is on those steps).
+void CalibrationRun::polishFrozen() {
   report("optimum: polish on its own steps", 0, 1);
-  std::vector<StartResult> starts = std::move(res_.optimum.starts);
-  StartResult lm = polishLeastSquares(*objective_, at, options_.threads, kPolishStepFrozen);
+  StartResult lm = polishLeastSquares(*objective_, res_.optimum.theta, options_.threads, kPolishStepFrozen);
   lm.status = "LM_POLISH_FROZEN_STEPS";
-  starts.push_back(std::move(lm));
-  const int evaluations = res_.optimum.evaluations + starts.back().evaluations;
-  res_.optimum.starts = std::move(starts);
-  res_.optimum.evaluations = evaluations;
-  // Only this start's SSE is on the steps the later stages use: it is the optimum.
+  res_.optimum.evaluations += lm.evaluations;
+  res_.optimum.starts.push_back(std::move(lm));
   res_.optimum.best_start = static_cast<int>(res_.optimum.starts.size()) - 1;
   res_.optimum.theta = res_.optimum.starts.back().theta;
   res_.optimum.sse = res_.optimum.starts.back().sse;
   report("optimum: polish on its own steps", 1, 1);
+}
+
+/// Steps frozen: is the accuracy they were chosen at enough for these data? The integrator's bias
+/// moves the optimum by the shift of probeBias (steps h = kPolishStepFrozen); the intervals'
+/// threshold is c s² (profile.hpp, from the optimum's SSE). While the shift exceeds an eighth of
+/// the threshold (so that the final check, with its own probe, stays below a quarter), the steps
+/// are chosen again at a tighter accuracy, accuracy × (threshold / 8 / shift)^(2/3), between a
+/// tenth and 0.7 of the last, and the optimum polished on them; at most twice. (The shift would go
+/// with the tolerance squared if the error were proportional to it; on the demonstration drive it
+/// went as the tolerance^1.6, hence the exponent 1/1.5.) Each try is recorded (steps_log_, optimum.json "steps").
+void CalibrationRun::chooseStepAccuracy() {
+  const double dof = n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : n_;
+  const double t = studentQuantile(0.5 + 0.5 * options_.profile.level, dof);
+  std::vector<double> h(d_, kPolishStepFrozen);
+  for (int round = 0; round < 3; ++round) {
+    const double accuracy = objective_->stepsFrozenAccuracy();
+    const double threshold = t * t * res_.optimum.sse / dof;
+    LabObjective fine = fineObjective(accuracy);
+    if (!fine.freezeSteps(res_.optimum.theta)) return;
+    const BiasProbe p = probeBias(fine, res_.optimum.theta, h, false, "optimum: integrator bias");
+    if (!p.ok) return;
+    steps_log_.push_back({{"accuracy", accuracy}, {"optimum_shift", jsonNumber(p.shift)}, {"threshold", jsonNumber(threshold)}});
+    if (!(p.shift > threshold / 8) || round == 2) return;
+    const double tighter = accuracy * std::clamp(std::pow(threshold / 8 / p.shift, 2.0 / 3.0), 0.1, 0.7);
+    if (!objective_->freezeSteps(res_.optimum.theta, tighter)) {
+      objective_->freezeSteps(res_.optimum.theta, accuracy);
+      return;
+    }
+    polishFrozen();
+  }
 }
 
 /// How the objective chose its steps, for optimum.json (the θ they are frozen at, to resume).
@@ -1180,7 +1232,9 @@ nlohmann::json CalibrationRun::stepsJson() const {
   nlohmann::json j{{"mode", options_.steps}, {"frozen", objective_->stepsFrozen()}};
   if (objective_->stepsFrozen()) {
     j["frozen_at"] = jsonNumbers(objective_->stepsFrozenAt());
+    j["accuracy"] = objective_->stepsFrozenAccuracy();
     j["steps_per_data_set"] = objective_->frozenStepCounts();
+    j["accuracy_choice"] = steps_log_;
   }
   return j;
 }
@@ -1194,16 +1248,27 @@ void CalibrationRun::optimum() {
     res_.optimum = optimumFrom(j.at("optimum"));
     // The later stages replay the steps the optimum's polish was made on: frozen again at the same θ.
     if (options_.steps == "frozen") {
-      if (j.contains("steps") && j.at("steps").value("frozen", false)) objective_->freezeSteps(numbersFromJson(j.at("steps").at("frozen_at")));
+      if (j.contains("steps") && j.at("steps").value("frozen", false))
+        objective_->freezeSteps(numbersFromJson(j.at("steps").at("frozen_at")), j.at("steps").value("accuracy", 0.0));
       else objective_->thawSteps();
     }
   } else {
     nlohmann::json screening;
     const std::vector<std::vector<double>> x0 = optimiserStarts(screening);
     const LabObjective& objective = *objective_;
+    // Frozen steps: the SSE is a smooth sum of squares, so each start is a Levenberg–Marquardt run
+    // (one thread each; the starts share the workers), stopped when a step gains less than a
+    // thousandth of the intervals' threshold c s² ≈ 4 SSE / (n − d).
+    const bool lm = objective.stepsFrozen();
+    const double dof = n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : std::max(n_, 1);
     const auto packed = distributedMap(
         x0.size(), options_.threads,
-        [&](std::size_t i, int) { return packStart(minimiseFrom(sse_, objective.lower(), objective.upper(), x0[i], options_.optimizer)); },
+        [&](std::size_t i, int) {
+          if (!lm) return packStart(minimiseFrom(sse_, objective.lower(), objective.upper(), x0[i], options_.optimizer));
+          StartResult r = polishLeastSquares(objective, x0[i], 1, kPolishStepFrozen, 4e-3 / dof);
+          r.status = "LM";
+          return packStart(r);
+        },
         [&](std::size_t done, std::size_t total) { report("optimum", done, total); });
     std::vector<StartResult> starts;
     for (const auto& v : packed) starts.push_back(unpackStart(v));
@@ -1489,77 +1554,101 @@ void CalibrationRun::sampler() {
 }
 
 /// Stage 6, the integrator check (IntegratorCheck): two simulations at the optimum, one at a tenth
-/// of the study's accuracy. Cheap and deterministic: never persisted, always rerun.
+/// of the accuracy the steps were chosen at; with frozen steps, the probes of probeBias along
+/// every axis as well. Deterministic: never persisted, always rerun.
 void CalibrationRun::integratorCheck() {
   const auto t0 = Clock::now();
-  const double accuracy = study_.simulation.accuracy, threshold = res_.profile.threshold - res_.profile.sse_best;
+  const double threshold = res_.profile.threshold - res_.profile.sse_best;
   const std::vector<double>& theta = res_.optimum.theta;
   if (!std::isfinite(res_.optimum.sse) || theta.size() != d_) return;
+  const double accuracy = objective_->stepsFrozen() ? objective_->stepsFrozenAccuracy() : study_.simulation.accuracy;
   report("integrator check", 0, 1);
-  Study tight = study_;
-  tight.simulation.accuracy = accuracy / 10;
-  const LabObjective fine(tight, assembly_, data_, setup_);
+  LabObjective fine = fineObjective(accuracy);
   const std::vector<double> eta = objective_->predict(theta), eta_fine = fine.predict(theta);
   report("integrator check", 1, 1);
   if (eta.empty() || eta_fine.empty()) return;  // a failed run: no check (ok, zero figures)
   res_.integrator = assessIntegrator(eta, eta_fine, objective_->measured(), objective_->weights(), accuracy, threshold);
-  if (objective_->stepsFrozen()) probeSmoothness(fine);
+  if (objective_->stepsFrozen() && fine.freezeSteps(theta)) {
+    // Probe steps: a tenth of each profile half-width, in [1e-4, 1e-2] of the bounds' range.
+    std::vector<double> h(d_);
+    for (std::size_t k = 0; k < d_; ++k) {
+      const double range = objective_->upper()[k] - objective_->lower()[k];
+      const double half = k < res_.profile.lower.size() && std::isfinite(res_.profile.upper[k] - res_.profile.lower[k])
+                              ? 0.5 * (res_.profile.upper[k] - res_.profile.lower[k]) / range
+                              : 1e-1;
+      h[k] = std::clamp(half / 10, 1e-4, 1e-2);
+    }
+    const BiasProbe p = probeBias(fine, theta, h, true, "integrator check: probes");
+    if (p.ok) applyProbes(res_.integrator, p.roughness, p.shift);
+  }
   res_.stage_wall_s.push_back({"integrator check", secondsSince(t0)});
 }
 
-/// The frozen-steps part of the integrator check (IntegratorCheck): along each parameter's axis,
-/// five frozen-step runs h apart (h: a tenth of the profile half-width, in [1e-4, 1e-2] of the
-/// bounds' range, the five points moved inside the bounds) and two adaptive runs of `fine` at the
-/// middle three's ends. The roughness is the largest departure of an axis's five SSEs from their
-/// quadratic; the residuals' Jacobian and the gradient of SSE − SSE_fine come from the middle
-/// three by central differences.
-void CalibrationRun::probeSmoothness(const LabObjective& fine) {
+/// The objective of the study with adaptive steps at `accuracy` / 10: the integrator check's reference.
+LabObjective CalibrationRun::fineObjective(double accuracy) const {
+  Study tight = study_;
+  tight.simulation.accuracy = accuracy / 10;
+  return LabObjective(tight, assembly_, data_, setup_);
+}
+
+/// The integrator's bias at θ on frozen steps (IntegratorCheck): along each parameter's axis k,
+/// frozen-step runs of the objective at offsets −2..2 (`five`) or −1, +1 times h_k (scaled units;
+/// the points moved inside the bounds) and runs of `fine` (steps frozen at a tenth of the accuracy)
+/// at −1 and +1. The roughness is the largest departure of an axis's five SSEs from their
+/// quadratic (NaN with three points); the residuals' Jacobian and the gradient of SSE − SSE_fine
+/// come from the runs at ±1 by central differences, and give the shift (integratorOptimumShift).
+CalibrationRun::BiasProbe CalibrationRun::probeBias(const LabObjective& fine, const std::vector<double>& theta,
+                                                    const std::vector<double>& h, bool five, const std::string& stage) const {
   const std::size_t d = d_;
   const auto& lo = objective_->lower();
   const auto& up = objective_->upper();
-  std::vector<double> h(d), centre(d);
-  for (std::size_t k = 0; k < d; ++k) {
-    const double range = up[k] - lo[k];
-    const double half = k < res_.profile.lower.size() && std::isfinite(res_.profile.upper[k] - res_.profile.lower[k])
-                            ? 0.5 * (res_.profile.upper[k] - res_.profile.lower[k]) / range
-                            : 1e-1;
-    h[k] = std::clamp(half / 10, 1e-4, 1e-2);
-    centre[k] = std::clamp((res_.optimum.theta[k] - lo[k]) / range, 2 * h[k], 1 - 2 * h[k]);
-  }
-  constexpr int kFrozen = 5, kPer = kFrozen + 2;  // offsets -2..2 frozen, then -1 and +1 adaptive
+  const int reach = five ? 2 : 1;
+  std::vector<int> offsets;
+  for (int o = -reach; o <= reach; ++o)
+    if (o != 0 || five) offsets.push_back(o);
+  const std::size_t frozen = offsets.size(), per = frozen + 2;  // then -1 and +1 on `fine`
+  std::vector<double> centre(d);
+  for (std::size_t k = 0; k < d; ++k) centre[k] = std::clamp((theta[k] - lo[k]) / (up[k] - lo[k]), reach * h[k], 1 - reach * h[k]);
   auto point = [&](std::size_t k, int offset) {
     std::vector<double> th(d);
     for (std::size_t j = 0; j < d; ++j) th[j] = lo[j] + (j == k ? centre[j] + offset * h[j] : centre[j]) * (up[j] - lo[j]);
     return th;
   };
   const auto out = distributedMap(
-      kPer * d, options_.threads,
+      per * d, options_.threads,
       [&](std::size_t t, int) -> std::vector<double> {
-        const std::size_t k = t / kPer;
-        const int which = static_cast<int>(t % kPer);
-        if (which < kFrozen) return objective_->residuals(point(k, which - 2));
-        return {fine.sse(point(k, which == kFrozen ? -1 : 1))};
+        const std::size_t k = t / per, which = t % per;
+        if (which < frozen) return objective_->residuals(point(k, offsets[which]));
+        return {fine.sse(point(k, which == frozen ? -1 : 1))};
       },
-      [&](std::size_t done, std::size_t total) { report("integrator check: probes", done, total); });
+      [&](std::size_t done, std::size_t total) { report(stage, done, total); });
+  BiasProbe p;
   Eigen::MatrixXd J(n_, static_cast<long>(d));
   Eigen::VectorXd g(static_cast<long>(d));
-  double roughness = 0.0;
+  p.roughness = five ? 0.0 : std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < d; ++k) {
     std::vector<double> x, f;
-    for (int o = 0; o < kFrozen; ++o) {
-      const auto& r = out[k * kPer + static_cast<std::size_t>(o)];
-      if (r.size() != static_cast<std::size_t>(n_)) return;  // a failed run: the adaptive-style figures stand
-      x.push_back(o - 2);
-      f.push_back(Eigen::Map<const Eigen::VectorXd>(r.data(), n_).squaredNorm());
+    const Eigen::VectorXd* rm = nullptr;
+    const Eigen::VectorXd* rp = nullptr;
+    std::vector<Eigen::VectorXd> r(frozen);
+    for (std::size_t o = 0; o < frozen; ++o) {
+      const auto& v = out[k * per + o];
+      if (v.size() != static_cast<std::size_t>(n_)) return p;  // a failed run: no figures (p.ok false)
+      r[o] = Eigen::Map<const Eigen::VectorXd>(v.data(), n_);
+      x.push_back(offsets[o]);
+      f.push_back(r[o].squaredNorm());
+      if (offsets[o] == -1) rm = &r[o];
+      if (offsets[o] == 1) rp = &r[o];
     }
-    const double fine_minus = out[k * kPer + kFrozen][0], fine_plus = out[k * kPer + kFrozen + 1][0];
-    if (!std::isfinite(fine_minus) || !std::isfinite(fine_plus)) return;
-    roughness = std::max(roughness, quadraticRoughness(x, f));
-    const Eigen::Map<const Eigen::VectorXd> rm(out[k * kPer + 1].data(), n_), rp(out[k * kPer + 3].data(), n_);
-    J.col(static_cast<long>(k)) = (rp - rm) / (2 * h[k]);
-    g[static_cast<long>(k)] = ((f[3] - f[1]) - (fine_plus - fine_minus)) / (2 * h[k]);
+    const double fine_minus = out[k * per + frozen][0], fine_plus = out[k * per + frozen + 1][0];
+    if (!std::isfinite(fine_minus) || !std::isfinite(fine_plus)) return p;
+    if (five) p.roughness = std::max(p.roughness, quadraticRoughness(x, f));
+    J.col(static_cast<long>(k)) = (*rp - *rm) / (2 * h[k]);
+    g[static_cast<long>(k)] = ((rp->squaredNorm() - rm->squaredNorm()) - (fine_plus - fine_minus)) / (2 * h[k]);
   }
-  applyProbes(res_.integrator, roughness, integratorOptimumShift(J, g));
+  p.shift = integratorOptimumShift(J, g);
+  p.ok = true;
+  return p;
 }
 
 /// Stage 7, summary (summary.json): the result (CalibrationResult::toJson) with how it was made:

@@ -140,9 +140,12 @@ class LabObjective {
   /// the SSE is a smooth function of θ. Returns false (and leaves the steps adaptive) when a run
   /// at θ fails, or when the study's integrator is not rosenbrock. Not thread-safe: call it
   /// between stages, while no evaluation runs.
-  bool freezeSteps(const std::vector<double>& theta);
+  /// `accuracy` > 0: the steps are chosen at that accuracy instead of the study's.
+  bool freezeSteps(const std::vector<double>& theta, double accuracy = 0.0);
   /// Back to adaptive steps.
-  void thawSteps() { plans_.clear(); }
+  void thawSteps() { plans_.clear(); frozen_at_.clear(); frozen_accuracy_ = 0.0; }
+  /// The accuracy the frozen steps were chosen at (0 when not frozen).
+  double stepsFrozenAccuracy() const { return frozen_accuracy_; }
   /// Whether the steps are frozen, and the θ they were frozen at (empty when not).
   bool stepsFrozen() const { return !plans_.empty(); }
   const std::vector<double>& stepsFrozenAt() const { return frozen_at_; }
@@ -191,6 +194,7 @@ class LabObjective {
   std::unique_ptr<Pool> pool_;
   std::vector<std::shared_ptr<const StepPlan>> plans_;  ///< per data set, when the steps are frozen
   std::vector<double> frozen_at_;
+  double frozen_accuracy_ = 0.0;
 };
 
 /// The settings of one calibration. The sizes default to the paper's (calibration/common.hpp);
@@ -351,9 +355,11 @@ inline constexpr double kPolishStepFrozen = 1e-3;
 
 /// Levenberg–Marquardt on the weighted residuals sqrt(w) (η(θ) − y) of `obj` from `theta0`, in the
 /// scaled coordinates [0,1]^d with central differences of step `h` (2d runs per iteration, on
-/// `threads` workers), steps clipped to the box; at most 30 iterations. Returns the best point
-/// seen (status "LM_POLISH"); sse is infinite when the run at theta0 fails.
-StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h = kPolishStep);
+/// `threads` workers), steps clipped to the box; at most 30 iterations, and it stops when an
+/// accepted step gains less than `rel_gain` × SSE. Returns the best point seen (status
+/// "LM_POLISH"); sse is infinite when the run at theta0 fails.
+StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h = kPolishStep,
+                               double rel_gain = 1e-9);
 
 using ::dtwin::fnv1a64;  // twin/provenance.hpp
 

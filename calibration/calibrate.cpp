@@ -892,11 +892,12 @@ double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g
   return 0.5 * s;
 }
 
-void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift) {
+void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift, double shift_floor) {
   c.steps = "frozen";
   c.roughness = roughness;
   c.optimum_shift = optimum_shift;
-  c.jitter = std::max(roughness, optimum_shift);
+  c.shift_floor = shift_floor;
+  c.jitter = optimum_shift > 4 * shift_floor ? std::max(roughness, optimum_shift) : roughness;
   c.ok = !(c.threshold > 0) || c.jitter < 0.5 * c.threshold;
   c.message.clear();
   if (!c.ok)
@@ -908,6 +909,7 @@ void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift) {
 
 nlohmann::json IntegratorCheck::toJson() const {
   return {{"steps", steps}, {"roughness", jsonNumber(roughness)}, {"optimum_shift", jsonNumber(optimum_shift)},
+          {"shift_floor", jsonNumber(shift_floor)},
           {"accuracy", accuracy},           {"accuracy_check", accuracy_check}, {"sse", jsonNumber(sse)},
           {"sse_check", jsonNumber(sse_check)}, {"prediction_change", jsonNumber(prediction_change)},
           {"jitter", jsonNumber(jitter)},     {"threshold", jsonNumber(threshold)}, {"ok", ok}, {"message", message}};
@@ -1020,6 +1022,9 @@ class CalibrationRun {
   struct BiasProbe {
     bool ok = false;
     double roughness = 0.0, shift = 0.0;
+    /// The shift central differences would show from the roughness alone (gradient errors of
+    /// roughness_k / h_k per axis): below it a shift is not resolved. 0 with three points.
+    double shift_floor = 0.0;
   };
   LabObjective fineObjective(double accuracy) const;
   BiasProbe probeBias(const LabObjective& fine, const std::vector<double>& theta, const std::vector<double>& h, bool five,
@@ -1204,20 +1209,50 @@ void CalibrationRun::polishFrozen() {
 /// are chosen again at a tighter accuracy, accuracy × (threshold / 8 / shift)^(2/3), between a
 /// tenth and 0.7 of the last, and the optimum polished on them; at most twice. (The shift would go
 /// with the tolerance squared if the error were proportional to it; on the demonstration drive it
-/// went as the tolerance^1.6, hence the exponent 1/1.5.) Each try is recorded (steps_log_, optimum.json "steps").
+/// went as the tolerance^1.6, hence the exponent 1/1.5.) When a tighter accuracy does not halve
+/// the shift, the shift is not the integrator's: the last accuracy and its optimum are kept. Each try is recorded (steps_log_, optimum.json "steps").
 void CalibrationRun::chooseStepAccuracy() {
   const double dof = n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : n_;
   const double t = studentQuantile(0.5 + 0.5 * options_.profile.level, dof);
   std::vector<double> h(d_, kPolishStepFrozen);
+  double last_shift = 0.0, last_accuracy = 0.0;
+  std::vector<double> last_theta;
+  Optimum last_optimum;
   for (int round = 0; round < 3; ++round) {
     const double accuracy = objective_->stepsFrozenAccuracy();
     const double threshold = t * t * res_.optimum.sse / dof;
     LabObjective fine = fineObjective(accuracy);
     if (!fine.freezeSteps(res_.optimum.theta)) return;
-    const BiasProbe p = probeBias(fine, res_.optimum.theta, h, false, "optimum: integrator bias");
+    const BiasProbe p = probeBias(fine, res_.optimum.theta, h, true, "optimum: integrator bias");
     if (!p.ok) return;
-    steps_log_.push_back({{"accuracy", accuracy}, {"optimum_shift", jsonNumber(p.shift)}, {"threshold", jsonNumber(threshold)}});
+    steps_log_.push_back({{"accuracy", accuracy}, {"optimum_shift", jsonNumber(p.shift)}, {"threshold", jsonNumber(threshold)},
+                          {"roughness", jsonNumber(p.roughness)}, {"shift_floor", jsonNumber(p.shift_floor)}});
+    if (!(p.shift > 4 * p.shift_floor)) {
+      // The shift is within what the SSE's roughness lets central differences see (jumps of the
+      // model itself, e.g. a tire force that jumps at touch-down between two stage times): a
+      // tighter accuracy cannot be shown to help, so it stays.
+      steps_log_.back()["note"] = "the shift is within the roughness floor: accuracy kept";
+      if (round > 0) {
+        objective_->freezeSteps(last_theta, last_accuracy);
+        res_.optimum = last_optimum;
+        steps_log_.back()["kept"] = false;
+      }
+      return;
+    }
+    if (round > 0 && !(p.shift < 0.5 * last_shift)) {
+      // Tighter steps did not halve the shift: it is not the integrator's bias but a jump of the
+      // model itself (a tire law whose force jumps when a wheel touches down between two samples).
+      // Back to the last accuracy and its optimum.
+      objective_->freezeSteps(last_theta, last_accuracy);
+      res_.optimum = last_optimum;
+      steps_log_.back()["kept"] = false;
+      return;
+    }
     if (!(p.shift > threshold / 8) || round == 2) return;
+    last_shift = p.shift;
+    last_accuracy = accuracy;
+    last_theta = objective_->stepsFrozenAt();
+    last_optimum = res_.optimum;
     const double tighter = accuracy * std::clamp(std::pow(threshold / 8 / p.shift, 2.0 / 3.0), 0.1, 0.7);
     if (!objective_->freezeSteps(res_.optimum.theta, tighter)) {
       objective_->freezeSteps(res_.optimum.theta, accuracy);
@@ -1579,7 +1614,7 @@ void CalibrationRun::integratorCheck() {
       h[k] = std::clamp(half / 10, 1e-4, 1e-2);
     }
     const BiasProbe p = probeBias(fine, theta, h, true, "integrator check: probes");
-    if (p.ok) applyProbes(res_.integrator, p.roughness, p.shift);
+    if (p.ok) applyProbes(res_.integrator, p.roughness, p.shift, p.shift_floor);
   }
   res_.stage_wall_s.push_back({"integrator check", secondsSince(t0)});
 }
@@ -1624,7 +1659,7 @@ CalibrationRun::BiasProbe CalibrationRun::probeBias(const LabObjective& fine, co
       [&](std::size_t done, std::size_t total) { report(stage, done, total); });
   BiasProbe p;
   Eigen::MatrixXd J(n_, static_cast<long>(d));
-  Eigen::VectorXd g(static_cast<long>(d));
+  Eigen::VectorXd g(static_cast<long>(d)), g_floor = Eigen::VectorXd::Zero(static_cast<long>(d));
   p.roughness = five ? 0.0 : std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < d; ++k) {
     std::vector<double> x, f;
@@ -1642,11 +1677,16 @@ CalibrationRun::BiasProbe CalibrationRun::probeBias(const LabObjective& fine, co
     }
     const double fine_minus = out[k * per + frozen][0], fine_plus = out[k * per + frozen + 1][0];
     if (!std::isfinite(fine_minus) || !std::isfinite(fine_plus)) return p;
-    if (five) p.roughness = std::max(p.roughness, quadraticRoughness(x, f));
+    if (five) {
+      const double r_k = quadraticRoughness(x, f);
+      p.roughness = std::max(p.roughness, r_k);
+      g_floor[static_cast<long>(k)] = r_k / h[k];
+    }
     J.col(static_cast<long>(k)) = (*rp - *rm) / (2 * h[k]);
     g[static_cast<long>(k)] = ((rp->squaredNorm() - rm->squaredNorm()) - (fine_plus - fine_minus)) / (2 * h[k]);
   }
   p.shift = integratorOptimumShift(J, g);
+  p.shift_floor = integratorOptimumShift(J, g_floor);
   p.ok = true;
   return p;
 }

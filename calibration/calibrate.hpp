@@ -266,7 +266,8 @@ using ::dtwin::StageProgress;  // common/progress.hpp
 /// measured instead (applyProbes), along each parameter's axis at five points a tenth of its
 /// profile half-width apart: the roughness, the largest departure of the SSE from its
 /// least-squares quadratic along an axis; and the optimum shift, how far the integrator's bias
-/// moves the optimum in SSE units (integratorOptimumShift); jitter = max(roughness, shift).
+/// moves the optimum in SSE units (integratorOptimumShift); jitter = max(roughness, shift), the
+/// shift counted only when it stands above what the roughness alone would make it (4 × shift_floor).
 ///
 /// When the jitter reaches half the 95 % intervals' threshold above the minimum (c s²), the
 /// optimum and the intervals follow the integrator rather than the data: `ok` is false and
@@ -278,6 +279,9 @@ struct IntegratorCheck {
   double prediction_change = 0.0;               ///< ‖δ‖ (weighted: in noise sd when the weights are 1/σ²)
   double roughness = 0.0;                       ///< frozen steps: the SSE's largest departure from a quadratic
   double optimum_shift = 0.0;                   ///< frozen steps: ½ gᵀ H⁺ g (integratorOptimumShift)
+  /// Frozen steps: the shift the roughness alone would show (gradient errors roughness/h per
+  /// axis); a shift below 4 times it is not resolved and does not count in the jitter.
+  double shift_floor = 0.0;
   double jitter = 0.0;                          ///< what moves the optimum and the intervals (see above)
   double threshold = 0.0;                       ///< the intervals' threshold above the minimum, c s²
   bool ok = true;
@@ -301,9 +305,9 @@ double quadraticRoughness(const std::vector<double>& x, const std::vector<double
 /// onto J's columns: the exact model's SSE at the biased optimum exceeds its minimum by this much.
 double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g);
 
-/// Turns an adaptive-steps check into the frozen-steps one: sets roughness and optimum_shift, the
-/// jitter as their maximum, `ok` and the message.
-void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift);
+/// Turns an adaptive-steps check into the frozen-steps one: sets roughness, optimum_shift and
+/// shift_floor, the jitter (the roughness, or the shift when it exceeds 4 × shift_floor), `ok` and the message.
+void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift, double shift_floor = 0.0);
 
 struct CalibrationResult {
   std::string assembly, label;

@@ -20,7 +20,7 @@ namespace dtwin::cli {
 namespace {
 
 struct CalibrateConfig {
-  std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out, region, design, interval;
+  std::string study = defaultStudy(), data, assembly = "all", scenario = "lab", out, region, design, interval, steps;
   int threads = 0;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1, max_rounds = -1, ridge_steps = -1;
   std::optional<std::uint64_t> seed;  ///< unset: the study's
@@ -59,6 +59,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   }
   if (!cfg.design.empty()) opt.design.adaptive = cfg.design == "adaptive";
   if (!cfg.interval.empty()) opt.interval = cfg.interval;
+  if (!cfg.steps.empty()) opt.steps = cfg.steps;
   if (cfg.max_rounds >= 0) opt.design.max_rounds = static_cast<int>(cfg.max_rounds);
   if (cfg.ridge_steps >= 0) opt.joint.ridge_steps = static_cast<int>(cfg.ridge_steps);
   opt.command = command;
@@ -158,6 +159,10 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
   c->add_option("--max-rounds", cfg->max_rounds, "Adaptive design rounds after the first Latin hypercube (default: the study's "
                                                  "[calibration] max_rounds)")
       ->check(CLI::Range(0L, 100L));
+  c->add_option("--steps", cfg->steps,
+                "frozen (one integrator step sequence per stage: a smooth SSE, the accuracy chosen from the data) or adaptive "
+                "(each run chooses its steps); default: the study's [calibration] steps")
+      ->check(CLI::IsMember({"frozen", "adaptive"}));
   c->add_option("--ridge-steps", cfg->ridge_steps, "Steps per ridge trace of the joint region, 0: none (default: the study's "
                                                    "[calibration] ridge_steps)")
       ->check(CLI::Range(0L, 1000L));

@@ -122,6 +122,7 @@ struct DiagnoseConfig {
   std::vector<std::string> data, holdout, effects, apply;
   int threads = 0, candidates = 3, draws = 20, propose = 3;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
+  std::string steps;
   bool quiet = false, force = false;
 };
 
@@ -152,6 +153,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   if (cfg.iterations > 0) o.calibration.gibbs_iterations = static_cast<int>(cfg.iterations);
   if (cfg.burn_in >= 0) o.calibration.gibbs_burn_in = static_cast<int>(cfg.burn_in);
   if (cfg.starts > 0) o.calibration.optimizer_starts = static_cast<int>(cfg.starts);
+  if (!cfg.steps.empty()) o.calibration.steps = cfg.steps;
   if (o.calibration.gibbs_burn_in >= o.calibration.gibbs_iterations)
     throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
   o.calibration.validate();
@@ -285,6 +287,10 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
   c->add_option("--iterations", cfg->iterations, "Gibbs iterations (default: sizes.gibbs_iterations)")->check(CLI::Range(1L, 100000000L));
   c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
   c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
+  c->add_option("--steps", cfg->steps,
+                "Integrator steps of every calibration: frozen (a smooth SSE, the accuracy chosen from the data) or adaptive; "
+                "default: the study's [calibration] steps")
+      ->check(CLI::IsMember({"frozen", "adaptive"}));
   c->add_option("--out", cfg->out, "Folder: diagnosis.json, comparisons/, calibrations/ (resumable)");
   addForceOption(c, cfg->force);
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");

@@ -392,6 +392,30 @@ struct RosenbrockIntegrator::Impl {
     }
   }
 
+  double stepToIfAccurate(double t_next, bool new_jacobian, double max_error) {
+    if (!initialized) throw std::logic_error("RosenbrockIntegrator: stepToIfAccurate() before initialize()");
+    if (!(t_next > t))
+      throw std::invalid_argument("RosenbrockIntegrator: t_next = " + fmt(t_next) + " is not after the current time " + fmt(t));
+    if (n_steps >= opt.max_steps)
+      throw std::runtime_error("RosenbrockIntegrator: more than " + std::to_string(opt.max_steps) + " steps (t = " + fmt(t) + " s)");
+    step_new_jac = false;
+    if (n == 0) {
+      stepTo(t_next, false);
+      return 0.0;
+    }
+    if (new_jacobian || !have_jac) computeJacobian();
+    ++n_attempts;
+    const bool ok = attempt(t_next - t);
+    const double e = ok ? errorNorm() : std::numeric_limits<double>::infinity();
+    if (!(std::isfinite(e) && e <= max_error) || !commit(t_next)) return std::isfinite(e) && e <= max_error ? std::numeric_limits<double>::infinity() : e;
+    y0.swap(ynew);
+    t = t_next;
+    ++n_steps;
+    ++jac_age;
+    jac_fresh = false;
+    return e;
+  }
+
   void stepTo(double t_next, bool new_jacobian) {
     if (!initialized) throw std::logic_error("RosenbrockIntegrator: stepTo() before initialize()");
     if (!(t_next > t))
@@ -432,6 +456,9 @@ void RosenbrockIntegrator::setMaximumStepSize(double h) {
 }
 void RosenbrockIntegrator::step(double t_stop) { impl_->step(t_stop); }
 void RosenbrockIntegrator::stepTo(double t_next, bool new_jacobian) { impl_->stepTo(t_next, new_jacobian); }
+double RosenbrockIntegrator::stepToIfAccurate(double t_next, bool new_jacobian, double max_error) {
+  return impl_->stepToIfAccurate(t_next, new_jacobian, max_error);
+}
 bool RosenbrockIntegrator::lastStepNewJacobian() const { return impl_->step_new_jac; }
 const SimTK::State& RosenbrockIntegrator::getState() const { return impl_->state; }
 double RosenbrockIntegrator::getTime() const { return impl_->t; }

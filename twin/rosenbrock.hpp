@@ -92,6 +92,12 @@ class RosenbrockIntegrator {
   /// exists yet. Throws std::invalid_argument if t_next <= getTime(), std::runtime_error when the
   /// step or its end derivative is not finite (the state is then left at the step's start).
   void stepTo(double t_next, bool new_jacobian);
+  /// The same step, taken only when it passes the error test: returns the error norm of the
+  /// attempt (the step is committed when it is <= 1; +inf when something was not finite), and
+  /// leaves the state at the step's start otherwise (with the Jacobian computed, if it was).
+  /// A replay that meets a step far too large for these parameters splits it into equal parts
+  /// taken with stepTo().
+  double stepToIfAccurate(double t_next, bool new_jacobian, double max_error = 1.0);
   /// Whether the last accepted step computed a Jacobian (at its start state) before its accepted
   /// attempt: recorded with the step's end time, it lets stepTo() replay the step exactly.
   bool lastStepNewJacobian() const;

@@ -405,6 +405,14 @@ std::size_t contiguous(const std::vector<int>& slots) {
   return static_cast<std::size_t>(slots[0]);
 }
 
+/// A replayed step whose error norm exceeds this is split (Impl::integrate).
+/// A replayed step whose error norm (RosenbrockOptions::accuracy) exceeds this is split into
+/// equal parts (Impl::integrate): a safety net for parameters far from those the steps were
+/// chosen at. Near them the error norms stay below it (the controller aims at about 0.7), so a
+/// replay there is a smooth function of the parameters; a lower value (1) split steps at
+/// neighbouring parameters and made the SSE as jagged as an adaptive one.
+constexpr double kReplayRefine = 8.0;
+
 // Knot layout (one recorded integrator state).
 enum : std::size_t { HX = 0, HXD = 4, HZ = 8, HZD = 12, HZDD = 16, Q = 20, QD = 24, QDD = 28,
                      BODY = 32 /* heave, pitch, roll: value, rate, accel (3 each) */, KNOT = 41 };
@@ -737,8 +745,22 @@ struct Simulator::Impl {
                                          (k >= plan->size() ? std::string("it ends at t = ") + formatNumber(integ.getTime()) + " s"
                                                             : "no step ends at the segment end t = " + formatNumber(t_end) + " s") +
                                          "); it was recorded on another scenario or road");
-              integ.stepTo(plan->times[k], plan->new_jacobian[k] != 0);
+              // A planned step far too large for these parameters (its error norm above
+              // kReplayRefine) is split into m equal parts, m from the error's third-order growth;
+              // the rest are replayed as they are.
+              const double t_k = plan->times[k];
+              const double e = integ.stepToIfAccurate(t_k, plan->new_jacobian[k] != 0, kReplayRefine);
               ++k;
+              if (!(e <= kReplayRefine)) {
+                const int m = std::isfinite(e) ? std::clamp(static_cast<int>(std::ceil(1.25 * std::cbrt(e))), 2, 64) : 16;
+                const double t0 = integ.getTime();
+                for (int j = 1; j < m; ++j) {
+                  integ.stepTo(t0 + (t_k - t0) * j / m, false);
+                  record(integ.getState(), knots, times);
+                  checkFinite(integ.getTime());
+                }
+                integ.stepTo(t_k, false);
+              }
             } else {
               integ.step(t_end);
             }

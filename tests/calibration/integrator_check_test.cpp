@@ -86,6 +86,13 @@ TEST(IntegratorCheck, FrozenStepsJudgeByRoughnessAndShift) {
   EXPECT_TRUE(c.message.empty());
   dtwin::calib::applyProbes(c, 0.5, 0.2);
   EXPECT_FALSE(c.ok);
+  // A shift within 4 times the floor the roughness sets is not resolved: the roughness decides.
+  dtwin::calib::applyProbes(c, 0.01, 0.6, 0.2);
+  EXPECT_DOUBLE_EQ(c.jitter, 0.01);
+  EXPECT_TRUE(c.ok);
+  dtwin::calib::applyProbes(c, 0.01, 0.6, 0.1);
+  EXPECT_DOUBLE_EQ(c.jitter, 0.6);
+  dtwin::calib::applyProbes(c, 0.5, 0.2);
   EXPECT_NE(c.message.find("with its steps frozen"), std::string::npos) << c.message;
   EXPECT_EQ(c.toJson().at("steps"), "frozen");
   EXPECT_DOUBLE_EQ(c.toJson().at("roughness").get<double>(), 0.5);

@@ -107,13 +107,15 @@ TEST(Study, CalibrationSettings) {
   EXPECT_EQ(p.calibration.designOrDefault(), "lhs");
   const Study q = loadStudy(variant("cal_all", "[noise]",
                                     "[calibration]\nregion = \"paper\"\ndesign = \"adaptive\"\nround_points = 50\nmax_rounds = 3\n"
-                                    "target_ess = 250.5\nmargin = 1.5\nridge_steps = 5\n\n[noise]"));
+                                    "target_ess = 250.5\nmargin = 1.5\nridge_steps = 5\nsteps = \"adaptive\"\n\n[noise]"));
   EXPECT_EQ(q.calibration.designOrDefault(), "adaptive");
   EXPECT_EQ(q.calibration.round_points, 50);
   EXPECT_EQ(q.calibration.max_rounds, 3);
   EXPECT_DOUBLE_EQ(q.calibration.target_ess, 250.5);
   EXPECT_DOUBLE_EQ(q.calibration.margin, 1.5);
   EXPECT_EQ(q.calibration.ridge_steps, 5);
+  EXPECT_EQ(q.calibration.steps, "adaptive");
+  EXPECT_EQ(d.calibration.steps, "frozen");
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"region = \"box\"", "calibration.region: must be \"joint\""},
       {"design = \"grid\"", "calibration.design: must be \"adaptive\""},
@@ -123,6 +125,7 @@ TEST(Study, CalibrationSettings) {
       {"target_ess = nan", "calibration.target_ess: must be a finite number"},
       {"margin = 0.5", "calibration.margin: must be a number in [1, 10]"},
       {"ridge_steps = -2", "calibration.ridge_steps: must be an integer in [0, 1000], got -2"},
+      {"steps = \"fixed\"", "calibration.steps: must be \"frozen\""},
       {"max_round = 3", "calibration.max_round: unknown field (did you mean 'max_rounds'?)"},
   };
   for (const auto& [line, want] : bad) {

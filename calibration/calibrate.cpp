@@ -1307,7 +1307,9 @@ void CalibrationRun::optimum() {
         [&](std::size_t done, std::size_t total) { report("optimum", done, total); });
     std::vector<StartResult> starts;
     for (const auto& v : packed) starts.push_back(unpackStart(v));
-    if (options_.polish_step > 0) polish(starts);
+    // With frozen steps the starts are least-squares runs already and polishOnOwnSteps polishes
+    // the best on its own steps: the derivative-free polish would add nothing.
+    if (options_.polish_step > 0 && !lm) polish(starts);
     res_.optimum = collectOptimum(std::move(starts));
     if (options_.steps == "frozen") polishOnOwnSteps();
     rootWrites([&] {

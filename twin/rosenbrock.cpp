@@ -358,11 +358,7 @@ struct RosenbrockIntegrator::Impl {
       const bool passed = ok && std::isfinite(e) && e <= 1.0;
       const bool committed = passed && commit(t_new);
       if (committed) {
-        t = t_new;
-        y0.swap(ynew);
-        ++n_steps;
-        ++jac_age;
-        jac_fresh = false;
+        accept(t_new);
         if (!fixed) {
           double fac = e == 0 ? 5.0 : std::min(5.0, std::max(0.2, 0.9 * std::pow(e, -1.0 / 3.0)));
           if (last_rejected) fac = std::min(fac, 1.0);
@@ -392,12 +388,26 @@ struct RosenbrockIntegrator::Impl {
     }
   }
 
-  double stepToIfAccurate(double t_next, bool new_jacobian, double max_error) {
-    if (!initialized) throw std::logic_error("RosenbrockIntegrator: stepToIfAccurate() before initialize()");
+  /// The preconditions of a step to `t_next` chosen by the caller (stepTo, stepToIfAccurate).
+  void checkPlannedStep(const char* who, double t_next) const {
+    if (!initialized) throw std::logic_error(std::string("RosenbrockIntegrator: ") + who + " before initialize()");
     if (!(t_next > t))
       throw std::invalid_argument("RosenbrockIntegrator: t_next = " + fmt(t_next) + " is not after the current time " + fmt(t));
     if (n_steps >= opt.max_steps)
       throw std::runtime_error("RosenbrockIntegrator: more than " + std::to_string(opt.max_steps) + " steps (t = " + fmt(t) + " s)");
+  }
+
+  /// Bookkeeping of an accepted step to `t_next` whose result ynew was committed.
+  void accept(double t_next) {
+    y0.swap(ynew);
+    t = t_next;
+    ++n_steps;
+    ++jac_age;
+    jac_fresh = false;
+  }
+
+  double stepToIfAccurate(double t_next, bool new_jacobian, double max_error) {
+    checkPlannedStep("stepToIfAccurate()", t_next);
     step_new_jac = false;
     if (n == 0) {
       stepTo(t_next, false);
@@ -405,40 +415,28 @@ struct RosenbrockIntegrator::Impl {
     }
     if (new_jacobian || !have_jac) computeJacobian();
     ++n_attempts;
-    const bool ok = attempt(t_next - t);
-    const double e = ok ? errorNorm() : std::numeric_limits<double>::infinity();
-    if (!(std::isfinite(e) && e <= max_error) || !commit(t_next)) return std::isfinite(e) && e <= max_error ? std::numeric_limits<double>::infinity() : e;
-    y0.swap(ynew);
-    t = t_next;
-    ++n_steps;
-    ++jac_age;
-    jac_fresh = false;
+    const double e = attempt(t_next - t) ? errorNorm() : std::numeric_limits<double>::infinity();
+    if (!(std::isfinite(e) && e <= max_error)) return e;
+    if (!commit(t_next)) return std::numeric_limits<double>::infinity();  // f at the end not finite
+    accept(t_next);
     return e;
   }
 
   void stepTo(double t_next, bool new_jacobian) {
-    if (!initialized) throw std::logic_error("RosenbrockIntegrator: stepTo() before initialize()");
-    if (!(t_next > t))
-      throw std::invalid_argument("RosenbrockIntegrator: t_next = " + fmt(t_next) + " is not after the current time " + fmt(t));
-    if (n_steps >= opt.max_steps)
-      throw std::runtime_error("RosenbrockIntegrator: more than " + std::to_string(opt.max_steps) + " steps (t = " + fmt(t) + " s)");
+    checkPlannedStep("stepTo()", t_next);
     step_new_jac = false;
     ++n_attempts;
-    if (n > 0) {
-      if (new_jacobian || !have_jac) computeJacobian();
-      const double h = t_next - t;
-      if (!attempt(h) || !commit(t_next))
-        throw std::runtime_error("RosenbrockIntegrator: non-finite state or derivative in the frozen step from t = " + fmt(t) +
-                                 " s to " + fmt(t_next) + " s");
-      y0.swap(ynew);
-    } else {
+    if (n == 0) {
       state.setTime(t_next);
       realize(state);
+      accept(t_next);  // n = 0: the swap in accept() exchanges two empty vectors
+      return;
     }
-    t = t_next;
-    ++n_steps;
-    ++jac_age;
-    jac_fresh = false;
+    if (new_jacobian || !have_jac) computeJacobian();
+    if (!attempt(t_next - t) || !commit(t_next))
+      throw std::runtime_error("RosenbrockIntegrator: non-finite state or derivative in the frozen step from t = " + fmt(t) +
+                               " s to " + fmt(t_next) + " s");
+    accept(t_next);
   }
 };
 

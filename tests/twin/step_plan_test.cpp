@@ -41,6 +41,13 @@ double relativeRoughness(const std::vector<double>& f) {
   return calib::quadraticRoughness(x, f) / std::max(*hi - *lo, 1e-300);
 }
 
+/// A run of `values` that records its steps in `plan`.
+RunResult recordedRun(Simulator& sim, const Lab& s, const std::vector<double>& values, StepPlan& plan) {
+  StepControl record;
+  record.record = &plan;
+  return sim.run(values, *s.road, s.scenario, record);
+}
+
 }  // namespace
 
 // Replaying the steps a run chose, at the same parameters, gives that run again: the same knots
@@ -51,9 +58,7 @@ TEST(StepPlan, ReplayAtTheSameParametersReproducesTheRun) {
   Simulator sim(s.model, demo().simulation);
   const auto values = s.model->defaultRunValues();
   StepPlan plan;
-  StepControl record;
-  record.record = &plan;
-  const RunResult a = sim.run(values, *s.road, s.scenario, record);
+  const RunResult a = recordedRun(sim, s, values, plan);
   ASSERT_TRUE(a.stats.ok) << a.stats.message;
   ASSERT_EQ(static_cast<long>(plan.size()), a.stats.steps);
   ASSERT_EQ(plan.times.size(), plan.new_jacobian.size());
@@ -89,9 +94,7 @@ TEST(StepPlan, AReplayedRunIsASmoothFunctionOfTheParameters) {
   const std::size_t k = s.slot("tire.stiffness");
   ASSERT_LT(k, values.size());
   StepPlan plan;
-  StepControl record;
-  record.record = &plan;
-  const RunResult base = sim.run(values, *s.road, s.scenario, record);
+  const RunResult base = recordedRun(sim, s, values, plan);
   ASSERT_TRUE(base.stats.ok);
   const auto& f0 = base.trace.column("hub_force_fl_N");
   const std::size_t peak = static_cast<std::size_t>(std::max_element(f0.begin(), f0.end()) - f0.begin());
@@ -120,9 +123,7 @@ TEST(StepPlan, APlanThatDoesNotFitFailsTheRunWithAReason) {
   Simulator sim(s.model, demo().simulation);
   const auto values = s.model->defaultRunValues();
   StepPlan plan;
-  StepControl record;
-  record.record = &plan;
-  ASSERT_TRUE(sim.run(values, *s.road, s.scenario, record).stats.ok);
+  ASSERT_TRUE(recordedRun(sim, s, values, plan).stats.ok);
   StepPlan short_plan = plan;
   short_plan.times.resize(plan.size() / 2);
   short_plan.new_jacobian.resize(plan.size() / 2);

@@ -1229,14 +1229,9 @@ void CalibrationRun::chooseStepAccuracy() {
                           {"roughness", jsonNumber(p.roughness)}, {"shift_floor", jsonNumber(p.shift_floor)}});
     if (!(p.shift > 4 * p.shift_floor)) {
       // The shift is within what the SSE's roughness lets central differences see (jumps of the
-      // model itself, e.g. a tire force that jumps at touch-down between two stage times): a
-      // tighter accuracy cannot be shown to help, so it stays.
+      // model itself, e.g. a tire force that jumps at touch-down between two stage times): no
+      // tighter accuracy can be shown to help, so this one stays.
       steps_log_.back()["note"] = "the shift is within the roughness floor: accuracy kept";
-      if (round > 0) {
-        objective_->freezeSteps(last_theta, last_accuracy);
-        res_.optimum = last_optimum;
-        steps_log_.back()["kept"] = false;
-      }
       return;
     }
     if (round > 0 && !(p.shift < 0.5 * last_shift)) {

@@ -237,6 +237,7 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     }
     return out;
   };
+  SubspaceJacobian jac;  // carried from one profile point to the next (subspace_lm.hpp)
   for (int step = 0; step < options.steps; ++step) {
     double target;
     if (!have_out) {
@@ -254,12 +255,14 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     z0(j) = target;
     Eigen::VectorXd un = u, r;
     double f = 0.0;
-    bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, un, r, f);
-    // Outside after the warm start: a curved valley may need more iterations than a straight one.
+    bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, un, r, f, &jac);
+    // Outside after the warm start: a curved valley may need more iterations than a straight one,
+    // and the carried Jacobian may be stale; fresh differences for these.
     if (ok && f > plan.threshold && options.polish_iterations > 0) {
       Eigen::VectorXd up = un, rp;
       double fp = 0.0;
-      if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp) && fp < f) {
+      jac.clear();
+      if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp, &jac) && fp < f) {
         f = fp;
         un = up;
       }

@@ -479,8 +479,24 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
   // The floor at t: Levenberg–Marquardt on u from `un` (at most 4 iterations). False when the
   // simulation at the start point fails.
   const ScaledResiduals scaled = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) { return res(z, r); };
+  // The Jacobian is carried along the trace, seeded from the plan's (subspace_lm.hpp); a floor
+  // point that lands outside the contour is re-minimised with fresh differences before it counts.
+  SubspaceJacobian jac;
+  if (plan.jacobian.cols() == d && plan.jacobian.allFinite()) jac.J = plan.jacobian * B;
   auto floorAt = [&](double tt, Eigen::VectorXd& un, Eigen::VectorXd& r, double& f) {
-    return minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, un, r, f);
+    const int computed = jac.computed;
+    if (!minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, un, r, f, &jac)) return false;
+    if (f > T && jac.computed == computed) {
+      jac.clear();
+      Eigen::VectorXd uf = un, rf;
+      double ff = 0.0;
+      if (minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, uf, rf, ff, &jac) && ff < f) {
+        un = uf;
+        r = rf;
+        f = ff;
+      }
+    }
+    return true;
   };
   for (int k = 0; k < options.ridge_steps; ++k) {
     if (t > reach) {

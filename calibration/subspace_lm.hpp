@@ -10,13 +10,27 @@ namespace dtwin::calib {
 /// Residuals at a scaled point z; false for a failed simulation.
 using ScaledResiduals = std::function<bool(const Eigen::VectorXd& z, Eigen::VectorXd& r)>;
 
+/// A Jacobian ∂r/∂u carried from one call to the next on the same subspace B (the steps of one
+/// ridge trace or one profile end, where z0 moves a little between calls). The steps of a trace
+/// or an end are close, and on a smooth objective (frozen steps, docs/calibration.md) the
+/// Jacobian changes slowly along them, so finite differences once and Broyden's rank-one update
+/// after every trial point (J += (Δr − J s) sᵀ / sᵀs) replace the 2m runs of each iteration.
+/// An iteration whose carried Jacobian gives no improving step recomputes it by finite
+/// differences and tries again; clear() forces that at the next call.
+struct SubspaceJacobian {
+  Eigen::MatrixXd J;      ///< n x m; empty: none yet
+  int computed = 0;       ///< finite-difference Jacobians evaluated (2m runs each)
+  int reused = 0;         ///< iterations that took the carried Jacobian
+  void clear() { J.resize(0, 0); }
+};
+
 /// From u: at most `iterations` Levenberg–Marquardt iterations on |r(z0 + B u)|² (Jacobian by
-/// central differences of step h_c along column c of B; damping λ·diag(JᵀJ), λ from 1e-3,
-/// ÷10 after an accepted step, ×10 after a rejected one, 3 tries per iteration). Stops early when
-/// an accepted step gains less than `min_gain`. On return u, r and f = |r|² are the best point
-/// seen. Returns false when the simulation at the start point fails.
+/// central differences of step h_c along column c of B, or the carried one; damping
+/// λ·diag(JᵀJ), λ from 1e-3, ÷10 after an accepted step, ×10 after a rejected one, 3 tries per
+/// iteration). Stops early when an accepted step gains less than `min_gain`. On return u, r and
+/// f = |r|² are the best point seen. Returns false when the simulation at the start point fails.
 bool minimiseOnSubspace(const ScaledResiduals& residuals, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B,
                         const Eigen::VectorXd& h, int iterations, double min_gain, Eigen::VectorXd& u, Eigen::VectorXd& r,
-                        double& f);
+                        double& f, SubspaceJacobian* carried = nullptr);
 
 }  // namespace dtwin::calib

@@ -53,7 +53,7 @@ FialaTire::FialaTire() {
 
 double FialaTire::calcNormalForce(const TireState& s, ParamValues p) const {
   if (s.deflection_m <= 0.0) return 0.0;
-  return std::max(0.0, p[0] * s.deflection_m + p[1] * s.deflection_rate_mps);
+  return std::max(0.0, p[0] * s.deflection_m + contactDampingForce(p[1], s));
 }
 
 // ---------------------------------------------------------------- PAC2002
@@ -103,7 +103,7 @@ double Pac2002Tire::calcNormalForce(const TireState& s, ParamValues p) const {
   const double dpi = (p[pac::P] - p[pac::P0]) / p[pac::P0];
   const double stiff = ((qfz1(p) + p[pac::QFZ3] * g2) * x + p[pac::QFZ2] * x * x);
   const double fz = (speed - fx * fx - fy * fy) * stiff * (1.0 + p[pac::PPFZ1] * dpi) * Fz0 +
-                    p[pac::C] * s.deflection_rate_mps;
+                    contactDampingForce(p[pac::C], s);
   return std::max(0.0, fz);
 }
 

@@ -5,6 +5,14 @@
 // centre. Deflection rho_z = R0 - (z_hub - h_road(x_contact)); the law is evaluated only for
 // rho_z > 0 and the force is clamped at >= 0, so the wheel may leave the ground. A short-obstacle
 // enveloping filter can be added as an effect (see effect.hpp, "tire_enveloping").
+//
+// Touch-down: the damping term b d(rho_z)/dt ramps in over the first kContactDampingRamp_m of
+// deflection (b d(rho_z)/dt min(1, rho_z / ramp), the penetration depth of full damping of
+// ADAMS's IMPACT function), so that the normal force is a continuous function of the state. With
+// the damping at full strength from rho_z = 0+, the force jumped from 0 to b d(rho_z)/dt at
+// touch-down, and a hub force sampled just after a wheel's touch-down jumped by up to its static
+// load when a parameter moved that touch-down across the sample time: the calibration's SSE was
+// discontinuous in θ (docs/model.md, "Tire contact").
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +39,15 @@ struct TireState {
   double normal_force_N = 0.0;       ///< the law's normal force (set before TireLoad effects run)
 };
 
+/// Deflection [m] over which the tire damping ramps in at touch-down (see the header comment).
+inline constexpr double kContactDampingRamp_m = 1e-3;
+
+/// The damping force b d(rho_z)/dt with its touch-down ramp: b rate min(1, rho_z / ramp).
+inline double contactDampingForce(double b, const TireState& s) {
+  const double ramp = s.deflection_m < kContactDampingRamp_m ? s.deflection_m / kContactDampingRamp_m : 1.0;
+  return b * s.deflection_rate_mps * ramp;
+}
+
 class TireLaw {
  public:
   virtual ~TireLaw() = default;
@@ -55,7 +72,7 @@ class TireLaw {
 };
 
 /// Fiala ("Fiala Wheel 2DOF", vertical motion mapped as linear stiffness and damping), paper eq. 2:
-///   Fz = k rho_z + b d(rho_z)/dt,  clamped >= 0.
+///   Fz = k rho_z + b d(rho_z)/dt,  clamped >= 0 (the damping with its touch-down ramp).
 /// The paper writes "- b z'" with z the hub height; on a flat road d(rho_z)/dt = -z'. The twin
 /// passes -z' as the rate (TireState::deflection_rate_mps). Parameters are in N/m and N s/m and share the calibrated bounds of PAC2002
 /// (docs/method.md §1 explains why the paper's Simulink bounds are not used).

@@ -112,6 +112,15 @@ void checkTireLawContract(const TireLaw& law, const std::vector<double>& p) {
     for (double rate : {-3.0, -0.3, 0.0, 0.3, 3.0}) EXPECT_GE(law.calcNormalForce(at(rho, rate), p), 0.0);
   }
 
+  // Continuous at touch-down: the damping ramps in (kContactDampingRamp_m), so a wheel landing
+  // fast meets a force that starts from zero, not a jump to c * rate.
+  for (double rate : {0.3, 3.0}) {
+    EXPECT_LT(law.calcNormalForce(at(1e-9, rate), p), 1e-6 * k + 1e-3 * c * rate * 1e-3) << "rate " << rate;
+    const double half = law.calcNormalForce(at(0.5 * kContactDampingRamp_m, rate), p);
+    const double full_damping = law.calcNormalForce(at(0.5 * kContactDampingRamp_m), p) + c * rate;
+    EXPECT_NEAR(half, law.calcNormalForce(at(0.5 * kContactDampingRamp_m), p) + 0.5 * c * rate, 1e-9 * full_damping) << "rate " << rate;
+  }
+
   // Monotone non-decreasing in deflection, at several rates; positive in contact at zero rate.
   for (double rate : {0.0, -0.2, 0.5}) {
     double prev = law.calcNormalForce(at(0.0, rate), p);

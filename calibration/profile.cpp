@@ -271,7 +271,7 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
       for (const Eigen::VectorXd& start : restartsNear(target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un)) {
         Eigen::VectorXd ur = start, rr;
         double fr = 0.0;
-        if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr) && (!ok || fr < f)) {
+        if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr, &jac) && (!ok || fr < f)) {
           ok = true;
           f = fr;
           un = ur;

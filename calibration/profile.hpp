@@ -21,7 +21,9 @@
 //    SSE <= SSE* + c s².
 // 2. Each end is pushed outwards by profile points: θ_j set to v with the other parameters
 //    re-optimised (Levenberg–Marquardt, subspace_lm.hpp, `lm_iterations` iterations, warm-started
-//    from the end's values; central differences of 5 % of each parameter's interval). The search
+//    from the end's values; central differences of 5 % of each parameter's interval, once per
+//    end: the Jacobian is then carried from point to point with Broyden updates, and computed
+//    afresh for a point that ends outside the threshold before it counts as outside). The search
 //    uses g(v) = sqrt(SSE_p(v) − SSE*), linear in v for a quadratic profile, and the target
 //    g_T = sqrt(c s²): secant steps through the last two inside points (at first the best fit and
 //    the end) while no outside point is known, at most 4 times the distance covered so far, then

@@ -46,8 +46,10 @@
 // down the ridge but 2.6 crossings off the straight line in the stiffest direction. The weak axes
 // (the weakest, and every axis with λ_i <= ridge_ratio · λ_min) are therefore traced as profiles:
 // step t along ±v_i and re-optimise the other coordinates u (z = ẑ ± t v_i + B u, B the other
-// axes) by Levenberg–Marquardt on the residuals (Jacobian by central differences of 10 % of each
-// axis's crossing, at most 3 iterations, warm-started by extrapolating the last two floor points),
+// axes) by Levenberg–Marquardt on the residuals (at most 3 iterations, warm-started by
+// extrapolating the last two floor points; the Jacobian starts as the plan's J·B and is carried
+// along the trace with Broyden updates, subspace_lm.hpp; a floor point that lands outside the
+// contour is re-minimised with central differences of 10 % of each axis's crossing first),
 // until the profile SSE exceeds T (the crossing is interpolated between the last two floor points,
 // linearly in sqrt(SSE − SSE_min), exact for a quadratic profile), the bounds' reach is passed,
 // or 30 steps (halvings included) are used. Steps start

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# Times the user-facing jobs of docs/performance.md ("Jobs, end to end"), one row each, on this
+# machine, and prints a markdown table. Each job runs from scratch in a fresh folder under
+# ${BENCH_DIR:-/tmp/dtwin_bench} (outputs kept for inspection). Not a test: timing targets live
+# here, never in CTest.
+#
+#   bash scripts/bench_jobs.sh                 # every row but the paper-scale study
+#   bash scripts/bench_jobs.sh readme drive_calibrate   # only these rows
+#   bash scripts/bench_jobs.sh paper           # the paper-scale study (hours: run it alone)
+#
+# Rows: readme (the README's diagnose walkthrough), drive_calibrate (`twin calibrate` of M1 on the
+# demonstration drive), drive_diagnose (the drive's diagnose walkthrough of docs/measurements.md),
+# demo_study (scripts/demo.sh's study), run (one 15 s run per assembly: `twin bench`), paper.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+B="$PWD/build/cli/twin"
+[[ -x "$B" ]] || { echo "bench_jobs.sh: build first (bash scripts/build.sh)" >&2; exit 2; }
+D="${BENCH_DIR:-/tmp/dtwin_bench}"
+mkdir -p "$D"
+rows=("$@")
+[[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
+for r in "${rows[@]}"; do
+  case "$r" in readme | drive_calibrate | drive_diagnose | demo_study | run | paper) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_diagnose demo_study run paper)" >&2; exit 2 ;;
+  esac
+done
+
+declare -A secs
+timed() {  # timed NAME LOG COMMAND...: wall seconds of COMMAND into secs[NAME]
+  local name=$1 log=$2 t0
+  shift 2
+  t0=$(date +%s.%N)
+  if ! "$@" >"$log" 2>&1; then
+    echo "bench_jobs.sh: $name failed; see $log" >&2
+    exit 1
+  fi
+  secs[$name]=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+  printf '%s: %.0f s\n' "$name" "${secs[$name]}" >&2
+}
+
+drive() {  # the demonstration drive, imported once
+  if [[ ! -f "$D/drive/study.toml" ]]; then
+    rm -rf "$D/drive"
+    "$B" import data/drives/stop_and_go.csv --map data/drives/stop_and_go_map.toml --out "$D/drive" >/dev/null
+  fi
+}
+
+for r in "${rows[@]}"; do
+  case "$r" in
+    run)
+      "$B" bench --runs 3 --markdown >"$D/run.md"
+      secs[run]=0
+      ;;
+    readme)
+      rm -rf "$D/readme" && mkdir -p "$D/readme"
+      for sc in diag_bump diag_rough; do
+        "$B" generate lab --scenario "$sc" --times all --rate 200 --repetitions 3 \
+          --channels hub_force_fl_N,hub_force_fr_N,hub_force_rl_N,hub_force_rr_N \
+          --hidden-effect bump_stop:stiffness=5e6,gap_m=0.02 --out "$D/readme/$sc.csv" >/dev/null
+      done
+      timed readme "$D/readme/diagnose.log" "$B" diagnose --data "$D/readme/diag_bump.csv" --data "$D/readme/diag_rough.csv" \
+        --out "$D/readme/run" --lhs-points 60 --iterations 4000 --burn-in 1000 --starts 2 --apply bump_stop --quiet
+      ;;
+    drive_calibrate)
+      drive
+      rm -rf "$D/drive_calibrate"
+      timed drive_calibrate "$D/drive_calibrate.log" "$B" calibrate --study "$D/drive/study.toml" --assembly M1 --scenario drive \
+        --data "$D/drive/measurements.csv" --out "$D/drive_calibrate" --quiet
+      ;;
+    drive_diagnose)
+      drive
+      rm -rf "$D/drive_diagnose"
+      timed drive_diagnose "$D/drive_diagnose.log" "$B" diagnose --study "$D/drive/study.toml" --assembly M1 \
+        --data "$D/drive/measurements.csv" --out "$D/drive_diagnose" --lhs-points 60 --iterations 4000 --burn-in 1000 \
+        --starts 2 --candidates 1 --apply damper_asymmetry
+      ;;
+    demo_study)
+      rm -rf "$D/demo_study"
+      timed demo_study "$D/demo_study.log" "$B" study data/studies/demo.toml --out "$D/demo_study" --quiet
+      ;;
+    paper)
+      rm -rf "$D/paper"
+      timed paper "$D/paper.log" "$B" study data/studies/paper.toml --out "$D/paper" --quiet
+      ;;
+  esac
+done
+
+echo "| job | wall time (s) | output |"
+echo "|---|---|---|"
+for r in "${rows[@]}"; do
+  case "$r" in
+    run) echo "| one 15 s run per assembly (\`twin bench --runs 3\`) | see $D/run.md | $D/run.md |" ;;
+    *) printf '| %s | %.0f | %s |\n' "$r" "${secs[$r]}" "$D/$r" ;;
+  esac
+done
+echo "($(nproc) cores, $(date -u +%Y-%m-%d), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown))"

@@ -703,7 +703,7 @@ RidgeTrace unpackTrace(const std::vector<double>& v, int d) {
 }
 
 std::vector<double> packProfileEnd(const ProfileEnd& e) {
-  return Packer().put(e.theta).put(e.sse).put(e.at_bound ? 1.0 : 0.0).put(e.evaluations).put(e.steps_taken).take();
+  return Packer().put(e.theta).put(e.sse).put(e.at_bound ? 1.0 : 0.0).put(e.evaluations).put(e.steps_taken).put(e.jacobians).take();
 }
 ProfileEnd unpackProfileEnd(const std::vector<double>& v) {
   Unpacker u(v);
@@ -713,6 +713,7 @@ ProfileEnd unpackProfileEnd(const std::vector<double>& v) {
   e.at_bound = u.num() != 0.0;
   e.evaluations = static_cast<int>(u.integer());
   e.steps_taken = static_cast<int>(u.integer());
+  e.jacobians = static_cast<int>(u.integer());
   return e;
 }
 

@@ -299,6 +299,7 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
       if (!std::isfinite(g_out)) g_out = 10.0 * g_T;
     }
   }
+  end.jacobians = jac.computed;
   return end;
 }
 
@@ -322,6 +323,11 @@ ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<Profi
     out.upper_at_bound.push_back(hi.at_bound);
     out.evaluations += lo.evaluations + hi.evaluations;
   }
+  for (const ProfileEnd& e : ends) {
+    out.end_evaluations.push_back(e.evaluations);
+    out.end_steps.push_back(e.steps_taken);
+    out.end_jacobians.push_back(e.jacobians);
+  }
   return out;
 }
 
@@ -331,7 +337,8 @@ nlohmann::json ProfileIntervals::toJson() const {
           {"sse_best", sse_best}, {"threshold", threshold},
           {"lower", lower},       {"upper", upper},
           {"lower_at_bound", lower_at_bound}, {"upper_at_bound", upper_at_bound},
-          {"evaluations", evaluations}};
+          {"evaluations", evaluations}, {"end_evaluations", end_evaluations},
+          {"end_points", end_steps},    {"end_jacobians", end_jacobians}};
 }
 
 ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
@@ -347,6 +354,9 @@ ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
   p.lower_at_bound = j.at("lower_at_bound").get<std::vector<bool>>();
   p.upper_at_bound = j.at("upper_at_bound").get<std::vector<bool>>();
   p.evaluations = j.at("evaluations").get<int>();
+  p.end_evaluations = j.value("end_evaluations", std::vector<int>{});
+  p.end_steps = j.value("end_points", std::vector<int>{});
+  p.end_jacobians = j.value("end_jacobians", std::vector<int>{});
   return p;
 }
 

@@ -84,6 +84,7 @@ struct ProfileEnd {
   bool at_bound = false;       ///< the profile stays inside up to the calibration bound
   int evaluations = 0;
   int steps_taken = 0;         ///< profile points that moved the end
+  int jacobians = 0;           ///< finite-difference Jacobians computed (the rest carried, subspace_lm.hpp)
 };
 
 /// Step 2 for end `index` in [0, 2d): parameter index / 2, lower end for even indices.
@@ -94,6 +95,9 @@ struct ProfileIntervals {
   std::vector<bool> lower_at_bound, upper_at_bound;
   double level = 0.95, c = 0.0, s2 = 0.0, sse_best = 0.0, threshold = 0.0;
   int dof = 0, evaluations = 0;
+  /// Per end, in index order (parameter j's lower end at 2j): simulations, profile points that
+  /// moved the end, finite-difference Jacobians. Empty when read from an older profile.json.
+  std::vector<int> end_evaluations, end_steps, end_jacobians;
   nlohmann::json toJson() const;
   static ProfileIntervals fromJson(const nlohmann::json& j);
 };

@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
 #include "twin/bench.hpp"
+#include "twin/hand_ode.hpp"
 #include "twin/provenance.hpp"
 #include "twin/simulator.hpp"
 #include "twin/study.hpp"
@@ -61,10 +62,65 @@ int runBench(const std::string& study_path, int runs, bool markdown, const std::
 }
 
 
+/// `--hand-ode`: the Simbody twin against the hand-written 7-DOF ODE on the study's bump
+/// (twin/hand_ode.hpp), both integrated by ROS34PW2 at the study's accuracy.
+int runHandOdeBench(const std::string& study_path, int runs, bool markdown, std::vector<std::string> ids) {
+  const Study study = loadStudy(study_path);
+  const ScenarioSpec* bump = nullptr;
+  for (const auto& s : study.scenarios)
+    if (!bump && s.road->obstacle()) bump = &s;
+  if (!bump) throw InputError(study_path, "twin bench --hand-ode needs a scenario with an obstacle (a bump)");
+  if (ids.empty()) ids = {"M3"};
+  for (const auto& id : ids) {
+    std::fprintf(stderr, "twin bench --hand-ode: %s on '%s', %d timed runs each (after one warm-up), median reported\n", id.c_str(),
+                 bump->name.c_str(), runs);
+    const HandOdeBench r = benchHandOde(study, study.assembly(id), *bump, runs);
+    struct Row {
+      const char* name;
+      double med, lo, hi;
+      long steps, attempts, evals, jacs;
+    };
+    const Row rows[] = {
+        {"Simbody twin", r.simbody_median_s, r.simbody_min_s, r.simbody_max_s, r.simbody_steps, r.simbody_attempts, r.simbody_evaluations, r.simbody_jacobians},
+        {"Simbody twin, output at 0.1 Hz", r.simbody_integration_s, -1, -1, r.simbody_steps, r.simbody_attempts, r.simbody_evaluations, r.simbody_jacobians},
+        {"hand-written 7-DOF ODE", r.hand_median_s, r.hand_min_s, r.hand_max_s, r.hand_steps, r.hand_attempts, r.hand_evaluations, r.hand_jacobians},
+        {"hand ODE, output at 0.1 Hz", r.hand_integration_s, -1, -1, r.hand_steps, r.hand_attempts, r.hand_evaluations, r.hand_jacobians}};
+    std::printf(markdown ? "%s (%s) on '%s', ROS34PW2 at accuracy %g, %d runs each (median)\n\n"
+                         : "%s (%s) on '%s', ROS34PW2 at accuracy %g, %d runs each (median)\n",
+                r.assembly.c_str(), r.label.c_str(), r.scenario.c_str(), r.accuracy, r.runs);
+    if (markdown) {
+      std::printf("| model | median wall per run [ms] | min..max [ms] | steps | rejected | f evaluations | Jacobians | wall per evaluation [us] |\n");
+      std::printf("|---|---|---|---|---|---|---|---|\n");
+    } else {
+      std::printf("%-31s %10s %16s %7s %8s %7s %5s %9s\n", "model", "median_ms", "min..max_ms", "steps", "rejected", "evals", "jacs", "us/eval");
+    }
+    for (const Row& w : rows) {
+      char range[48] = "-";
+      if (w.lo >= 0) std::snprintf(range, sizeof range, "%.1f..%.1f", 1e3 * w.lo, 1e3 * w.hi);
+      const double per = 1e6 * w.med / static_cast<double>(w.evals);
+      if (markdown)
+        std::printf("| %s | %.2f | %s | %ld | %ld | %ld | %ld | %.2f |\n", w.name, 1e3 * w.med, range, w.steps, w.attempts - w.steps,
+                    w.evals, w.jacs, per);
+      else
+        std::printf("%-31s %10.2f %16s %7ld %8ld %7ld %5ld %9.2f\n", w.name, 1e3 * w.med, range, w.steps, w.attempts - w.steps, w.evals,
+                    w.jacs, per);
+    }
+    if (markdown) std::printf("\n");
+    std::printf("ratio Simbody / hand ODE: %.1fx (issue 29's target: <= 3x); with the output at 0.1 Hz: %.1fx\n", r.ratio(),
+                r.simbody_integration_s / r.hand_integration_s);
+    std::printf("one hand right-hand side alone: %.2f us\n", 1e6 * r.hand_rhs_s);
+    std::printf("front-left hub force: peak %.0f N; max |Simbody - hand| %.2g N (%.2g %% of the peak) at t = %.3f s; "
+                "both at accuracy 1e-8: %.2g N (%.2g %%)\n",
+                r.peak_fl_N, r.max_diff_fl_N, 100 * r.max_diff_fl_N / r.peak_fl_N, r.max_diff_time_s, r.tight_max_diff_fl_N,
+                100 * r.tight_max_diff_fl_N / r.peak_fl_N);
+  }
+  return 0;
+}
+
 }  // namespace
 
 CommandHandle addBenchCommand(CLI::App& root) {
-  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; std::string scenario = "field"; };
+  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; std::string scenario = "field"; bool hand_ode = false; };
   auto cfg = std::make_shared<Cfg>();
   std::string& bench_study = cfg->study;
   int& bench_runs = cfg->runs;
@@ -79,6 +135,11 @@ CommandHandle addBenchCommand(CLI::App& root) {
       ->check(CLI::Range(2L, 100000000L));
   b->add_option("--user-effect", cfg->user_effect, "Instead: time a user-defined strut effect against the built-in one of the same form, over this many evaluations")
       ->check(CLI::Range(1000L, 1000000000L));
+  b->add_flag("--hand-ode", cfg->hand_ode,
+              "Instead: the bump run of one assembly (--assembly, default M3) against a hand-written 7-DOF ODE of the same vehicle, "
+              "both integrated by ROS34PW2")
+      ->excludes("--import")
+      ->excludes("--user-effect");
   auto* scen = b->add_option("--scenario", cfg->scenario, "With --user-effect: the study's scenario of the whole runs timed")->capture_default_str();
   scen->needs("--user-effect");
 
@@ -100,6 +161,7 @@ CommandHandle addBenchCommand(CLI::App& root) {
                           r.user_run_s / r.builtin_run_s, r.identical_traces ? "identical" : "DIFFER");
               return 0;
             }
+            if (cfg->hand_ode) return runHandOdeBench(cfg->study, cfg->runs, cfg->md, cfg->ids);
             return runBench(cfg->study, cfg->runs, cfg->md, cfg->ids);
           }};
 }

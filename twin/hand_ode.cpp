@@ -1,0 +1,659 @@
+#include "twin/hand_ode.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <tuple>
+
+#include <Eigen/Dense>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
+namespace dtwin {
+
+// ----------------------------------------------------------------------------- the stepper
+namespace {
+
+constexpr int kHandStages = rosenbrock_detail::Tableau::kStages;
+
+/// The tableau in the transformed variables u_i = sum_{j<=i} gamma_ij k_j: the same
+/// transformation as rosenbrock.cpp's `Transformed` (Hairer & Wanner II, Sec. IV.7, (7.25)), of
+/// the same coefficients, rosenbrock_detail::ros34pw2() (Rang & Angermann 2005, ROS34PW2; the
+/// 17-digit values of PETSc's TSROSWRA34PW2, cited in rosenbrock.cpp). Taken from that function
+/// rather than copied, so that the two integrators cannot drift apart.
+struct HandRosTableau {
+  double gamma = 0;
+  double alpha[kHandStages] = {}, gsum[kHandStages] = {}, at[kHandStages][kHandStages] = {}, c[kHandStages][kHandStages] = {};
+  double m[kHandStages] = {}, e[kHandStages] = {};
+  explicit HandRosTableau(const rosenbrock_detail::Tableau& t) {
+    constexpr int S = kHandStages;
+    double gi[S][S] = {};  // inverse of the lower-triangular gamma matrix
+    for (int i = 0; i < S; ++i) {
+      gi[i][i] = 1.0 / t.gamma[i][i];
+      for (int j = 0; j < i; ++j) {
+        double s = 0;
+        for (int k = j; k < i; ++k) s += t.gamma[i][k] * gi[k][j];
+        gi[i][j] = -s / t.gamma[i][i];
+      }
+    }
+    gamma = t.gamma[0][0];
+    for (int i = 0; i < S; ++i)
+      for (int j = 0; j < S; ++j) {
+        alpha[i] += t.a[i][j];
+        if (j <= i) gsum[i] += t.gamma[i][j];
+        for (int k = 0; k < S; ++k) at[i][j] += t.a[i][k] * gi[k][j];
+        if (j < i) c[i][j] = -gi[i][j];
+        m[j] += t.b[i] * gi[i][j];
+        e[j] += (t.b[i] - t.b_hat[i]) * gi[i][j];
+      }
+  }
+};
+
+std::string handFmt(double v) { return formatNumber(v, 10); }
+
+}  // namespace
+
+/// The algorithm of RosenbrockIntegrator::Impl (rosenbrock.cpp), line for line where it matters:
+/// the stage equations, the weighted RMS error norm, the step-size rule (factor in [0.2, 5],
+/// 0.9 err^(-1/3), no growth after a rejection, two equal steps before t_stop), the forward-
+/// difference Jacobian (increment sqrt(eps) max(|y_j|, 1)) reused for jacobian_max_age accepted
+/// steps and refreshed after jacobian_refresh_rejections rejections of one step.
+struct Ros34pw2Stepper::Impl {
+  Rhs f;
+  RosenbrockOptions opt;
+  HandRosTableau tab{rosenbrock_detail::ros34pw2()};
+  bool initialized = false;
+  int n = 0;
+  double t = 0, hmax = 0, h_prop = 0;
+  bool last_rejected = false;
+  Eigen::VectorXd y0, f0, fprev, ynew, err, tmp, rhs, fs, ft;
+  std::array<Eigen::VectorXd, kHandStages> u;
+  Eigen::MatrixXd J, W;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  bool have_jac = false, jac_fresh = false;
+  int jac_age = 0;
+  double h_factored = -1;
+  long n_steps = 0, n_attempts = 0, n_evals = 0, n_jacs = 0;
+
+  Impl(Rhs fn, RosenbrockOptions o) : f(std::move(fn)), opt(o) {
+    if (!f) throw std::invalid_argument("Ros34pw2Stepper: no right-hand side");
+    if (!(opt.accuracy > 0 && opt.accuracy < 1))
+      throw std::invalid_argument("Ros34pw2Stepper: accuracy must be in (0, 1), got " + handFmt(opt.accuracy));
+    if (!(opt.max_step_s > 0)) throw std::invalid_argument("Ros34pw2Stepper: max_step_s must be > 0");
+    if (!(opt.initial_step_s > 0)) throw std::invalid_argument("Ros34pw2Stepper: initial_step_s must be > 0");
+    if (opt.jacobian_max_age < 0 || opt.jacobian_refresh_rejections < 1 || opt.max_steps <= 0 || !(opt.fixed_step_s >= 0))
+      throw std::invalid_argument("Ros34pw2Stepper: jacobian_max_age >= 0, jacobian_refresh_rejections >= 1, max_steps > 0, "
+                                  "fixed_step_s >= 0");
+    hmax = opt.max_step_s;
+  }
+
+  void evaluate(double tt, const Eigen::VectorXd& y, Eigen::VectorXd& out) {
+    ++n_evals;
+    f(tt, y, out);
+  }
+
+  void initialize(double t0, const Eigen::VectorXd& y) {
+    n = static_cast<int>(y.size());
+    t = t0;
+    for (Eigen::VectorXd* v : {&y0, &f0, &fprev, &ynew, &err, &tmp, &rhs, &fs, &ft}) v->setZero(n);
+    for (auto& v : u) v.setZero(n);
+    J.setZero(n, n);
+    W.setZero(n, n);
+    lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+    n_steps = n_attempts = n_evals = n_jacs = 0;
+    have_jac = jac_fresh = false;
+    jac_age = 0;
+    h_factored = -1;
+    last_rejected = false;
+    h_prop = opt.fixed_step_s > 0 ? opt.fixed_step_s : opt.initial_step_s;
+    y0 = y;
+    if (!y0.allFinite()) throw std::runtime_error("Ros34pw2Stepper: initial state is not finite at t = " + handFmt(t) + " s");
+    evaluate(t, y0, f0);
+    if (!f0.allFinite()) throw std::runtime_error("Ros34pw2Stepper: non-finite derivative at the initial state, t = " + handFmt(t) + " s");
+    initialized = true;
+  }
+
+  void computeJacobian() {
+    const double sq = std::sqrt(std::numeric_limits<double>::epsilon());
+    tmp = y0;
+    for (int j = 0; j < n; ++j) {
+      const double yj = y0[j];
+      const double yp = yj + sq * std::max(std::abs(yj), 1.0);  // unit 1 (see the header)
+      const double d = yp - yj;
+      tmp[j] = yp;
+      evaluate(t, tmp, fs);
+      J.col(j) = (fs - f0) / d;
+      tmp[j] = yj;
+    }
+    if (opt.time_derivative) {
+      const double tp = t + sq * std::max(std::abs(t), 1.0);
+      evaluate(tp, y0, fs);
+      ft = (fs - f0) / (tp - t);
+    }
+    if (!J.allFinite() || !ft.allFinite())
+      throw std::runtime_error("Ros34pw2Stepper: the finite-difference Jacobian is not finite at t = " + handFmt(t) + " s");
+    ++n_jacs;
+    have_jac = jac_fresh = true;
+    jac_age = 0;
+    h_factored = -1;
+  }
+
+  bool attempt(double h) {
+    if (h != h_factored) {
+      W.noalias() = (-h * tab.gamma) * J;
+      W.diagonal().array() += 1.0;
+      lu.compute(W);
+      h_factored = h;
+    }
+    const double hg = h * tab.gamma;
+    for (int i = 0; i < kHandStages; ++i) {
+      const Eigen::VectorXd* fi = &f0;
+      if (i > 0) {
+        tmp = y0;
+        for (int j = 0; j < i; ++j) tmp.noalias() += tab.at[i][j] * u[j];
+        evaluate(t + tab.alpha[i] * h, tmp, fs);
+        if (!fs.allFinite()) return false;
+        fi = &fs;
+      }
+      rhs = *fi;
+      for (int j = 0; j < i; ++j) rhs.noalias() += (tab.c[i][j] / h) * u[j];
+      if (opt.time_derivative && have_jac) rhs.noalias() += (tab.gsum[i] * h) * ft;
+      rhs *= hg;
+      u[i].noalias() = lu.solve(rhs);
+    }
+    ynew = y0;
+    err.setZero();
+    for (int i = 0; i < kHandStages; ++i) {
+      ynew.noalias() += tab.m[i] * u[i];
+      err.noalias() += tab.e[i] * u[i];
+    }
+    return ynew.allFinite() && err.allFinite();
+  }
+
+  double errorNorm() const {
+    const double rtol = opt.accuracy;
+    double s = 0;
+    for (int i = 0; i < n; ++i) {
+      const double sc = rtol + rtol * std::max(std::abs(y0[i]), std::abs(ynew[i]));
+      const double r = err[i] / sc;
+      s += r * r;
+    }
+    return n > 0 ? std::sqrt(s / n) : 0.0;
+  }
+
+  /// Evaluates f at the step end; false (f0 restored) when it is not finite.
+  bool commit(double t_new) {
+    fprev.swap(f0);
+    evaluate(t_new, ynew, f0);
+    if (f0.allFinite()) return true;
+    f0.swap(fprev);
+    return false;
+  }
+
+  void step(double t_stop);
+};
+
+void Ros34pw2Stepper::Impl::step(double t_stop) {
+  if (!initialized) throw std::logic_error("Ros34pw2Stepper: step() before initialize()");
+  if (!(t_stop > t)) throw std::invalid_argument("Ros34pw2Stepper: t_stop = " + handFmt(t_stop) + " is not after " + handFmt(t));
+  if (n_steps >= opt.max_steps) throw std::runtime_error("Ros34pw2Stepper: more than " + std::to_string(opt.max_steps) + " steps");
+  const bool fixed = opt.fixed_step_s > 0;
+  int rejections = 0;
+  for (;;) {
+    double h = fixed ? opt.fixed_step_s : std::min(h_prop, hmax);
+    const double remaining = t_stop - t;
+    bool land = false, limited = false;
+    if (remaining <= h * (1 + 1e-12)) {
+      land = true;
+      limited = remaining < h;
+      h = remaining;
+    } else if (!fixed && remaining < 2 * h) {
+      h = 0.5 * remaining;  // two equal steps rather than a long one and a sliver
+      limited = true;
+    }
+    if (!have_jac || (jac_age >= opt.jacobian_max_age && !jac_fresh)) computeJacobian();
+    ++n_attempts;
+    const bool ok = attempt(h);
+    const double e = ok ? (fixed ? 0.0 : errorNorm()) : std::numeric_limits<double>::infinity();
+    const double t_new = land ? t_stop : t + h;
+    const bool passed = ok && std::isfinite(e) && e <= 1.0;
+    if (passed && commit(t_new)) {
+      y0.swap(ynew);
+      t = t_new;
+      ++n_steps;
+      ++jac_age;
+      jac_fresh = false;
+      if (!fixed) {
+        double fac = e == 0 ? 5.0 : std::min(5.0, std::max(0.2, 0.9 * std::pow(e, -1.0 / 3.0)));
+        if (last_rejected) fac = std::min(fac, 1.0);
+        h_prop = limited ? std::max(h_prop, h * fac) : h * fac;
+      }
+      last_rejected = false;
+      return;
+    }
+    if (fixed) throw std::runtime_error("Ros34pw2Stepper: non-finite state or derivative at t = " + handFmt(t) + " s (fixed step)");
+    const bool nonfinite = !ok || !std::isfinite(e) || passed;
+    h_prop = h * (nonfinite ? 0.2 : std::min(0.9, std::max(0.2, 0.9 * std::pow(e, -1.0 / 3.0))));
+    last_rejected = true;
+    if (h_prop < 64 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t)))
+      throw std::runtime_error("Ros34pw2Stepper: step size underflow at t = " + handFmt(t) + " s" +
+                               (nonfinite ? " (non-finite derivative)" : " (error norm " + handFmt(e) + ")"));
+    ++rejections;
+    if (!jac_fresh && (rejections >= opt.jacobian_refresh_rejections || nonfinite)) computeJacobian();
+  }
+}
+
+Ros34pw2Stepper::Ros34pw2Stepper(Rhs f, RosenbrockOptions options) : impl_(std::make_unique<Impl>(std::move(f), options)) {}
+Ros34pw2Stepper::~Ros34pw2Stepper() = default;
+Ros34pw2Stepper::Ros34pw2Stepper(Ros34pw2Stepper&&) noexcept = default;
+Ros34pw2Stepper& Ros34pw2Stepper::operator=(Ros34pw2Stepper&&) noexcept = default;
+void Ros34pw2Stepper::initialize(double t0, const Eigen::VectorXd& y0) { impl_->initialize(t0, y0); }
+void Ros34pw2Stepper::setMaximumStepSize(double h) {
+  if (!(h > 0)) throw std::invalid_argument("Ros34pw2Stepper: maximum step size must be > 0, got " + handFmt(h));
+  impl_->hmax = h;
+}
+void Ros34pw2Stepper::step(double t_stop) { impl_->step(t_stop); }
+double Ros34pw2Stepper::time() const { return impl_->t; }
+const Eigen::VectorXd& Ros34pw2Stepper::state() const { return impl_->y0; }
+const Eigen::VectorXd& Ros34pw2Stepper::derivative() const { return impl_->f0; }
+long Ros34pw2Stepper::steps() const { return impl_->n_steps; }
+long Ros34pw2Stepper::attempts() const { return impl_->n_attempts; }
+long Ros34pw2Stepper::evaluations() const { return impl_->n_evals; }
+long Ros34pw2Stepper::jacobians() const { return impl_->n_jacs; }
+
+// ----------------------------------------------------------------------------- the vehicle
+//
+// Kinematics (those of Simulator::Impl::build): the chassis frame sits at the CG, height z, with
+// rotation R = Rx(phi) Ry(theta) (Simbody's Universal: about x, then about the new y). Wheel i's
+// centre, body and strut slide along the chassis z through (x_i, y_i, w) in the chassis, w the
+// wheel centre below the CG (R0 - cg_height): s_i = R (x_i, y_i, w + u_i) from the CG. The
+// wheel bodies turn with the chassis (inertia 1e-3 kg m^2 about every axis, as in the simulator).
+//
+// Equations of motion (Kane's form, no simplification: full rotation, every velocity product):
+//   sum_b [ Jv_b^T m_b (Jv_b qdd + a_b) + Jw_b^T (I_b (Jw_b qdd + wd_b) + w x I_b w) ] = Q,
+// with the partial velocities, for q = (z, phi, theta, u_1..u_4):
+//   angular velocity w = phid e_x + thetad e_y',  e_y' = Rx(phi) e_y,  so Jw = [0, e_x, e_y', 0...],
+//   and its velocity-product part wd = phid thetad (e_x x e_y');
+//   wheel i: v_i = zd e_z + w x s_i + ud_i e_z',  e_z' = R e_z, so Jv_i = [e_z, e_x x s_i,
+//   e_y' x s_i, e_z' (column 3 + i)], a_i = wd x s_i + w x (w x s_i) + 2 ud_i w x e_z';
+//   chassis: v = zd e_z (the heave slider), its rotation Jw above, I_b = R diag(ixx, iyy, izz) R^T.
+// A wheel's isotropic inertia only adds iw to the roll and pitch diagonal (e_x . e_y' = 0, and
+// its velocity-product terms vanish). Applied loads (simulator.cpp's force elements): gravity and
+// the d'Alembert load -m a(t) e_x at every mass centre; at each hub the tire (traction, 0, Fz)
+// and the traction's moment (0, -(z_hub - h_road) F_x, 0) about it; the strut as the generalised
+// force -F on u_i (a mobility force, as StrutGeometry::apply does for a slider).
+HandOde::HandOde(const Model& m, std::vector<double> values, const Road& road, const SpeedProfile& speed)
+    : model_(m), values_(std::move(values)), road_(road), speed_(speed) {
+  if (m.topology() != SuspensionTopology::MacPherson)
+    throw InputError("assembly " + m.assembly().id, "the hand-written ODE models a MacPherson suspension only");
+  if (!m.effects().empty())
+    throw InputError("assembly " + m.assembly().id, "the hand-written ODE models no effects (it has " +
+                                                        std::to_string(m.effects().size()) + ")");
+  if (values_.size() != m.runParameterNames().size())
+    throw InputError("run parameters", "expected " + std::to_string(m.runParameterNames().size()) + " values");
+  const VehicleData& d = m.vehicle();
+  mc_ = d.chassis_mass;
+  mw_ = d.wheel_mass;
+  g_ = d.gravity;
+  a_ = d.a;
+  inertia_ = Eigen::Vector3d(d.ixx, d.iyy, d.izz);
+  R0_ = m.table().value("tire.unloaded_radius_m");
+  w_ = -(d.cg_height - R0_);
+  traction_per_accel_ = d.total_mass(m.topology()) / 4.0;
+  tire0_ = static_cast<std::size_t>(m.tireSlots().front());
+  ntire_ = m.tireSlots().size();
+  strut0_ = static_cast<std::size_t>(m.suspensionSlots().front());
+  nstrut_ = m.suspensionSlots().size();
+  for (int c = 0; c < 4; ++c) {
+    Corner& k = corners_[static_cast<std::size_t>(c)];
+    k.front = isFront(c);
+    k.track = cornerTrack(c);
+    k.x = k.front ? d.a : -d.b;
+    k.y = (k.track == Track::Left ? 0.5 : -0.5) * d.track;
+    k.preload = m.staticStrutForce(c);
+  }
+}
+
+double HandOde::tireForce(int corner, double t, double hub_x, double hub_z, double hub_zd, double* hub_above_road) const {
+  const ParamValues p(values_.data() + tire0_, ntire_);
+  const double v = speed_.speed(t);
+  const double x_road = speed_.distance(t) + hub_x - a_;  // docs/model.md, "Forward motion"
+  const RoadSample rs = road_.sample(corners_[static_cast<std::size_t>(corner)].track, x_road);
+  const double rho = R0_ - (hub_z - rs.height_m);
+  if (hub_above_road) *hub_above_road = hub_z - rs.height_m;
+  TireState ts;
+  ts.deflection_m = rho;
+  ts.deflection_rate_mps = -hub_zd;  // the hub's vertical velocity (docs/model.md, "tire damping")
+  ts.wheel_speed_radps = v / (R0_ - std::max(0.0, rho) / 3.0);
+  ts.forward_speed_mps = v;
+  ts.fx_N = traction_per_accel_ * speed_.accel(t);
+  ts.road_height_m = rs.height_m;
+  ts.time_s = t;
+  ts.front = isFront(corner);
+  return model_.tire().calcNormalForce(ts, p);
+}
+
+double HandOde::strutForce(int corner, double q, double qd) const {
+  StrutState ss;
+  ss.deflection_m = q;
+  ss.rate_mps = qd;
+  ss.preload_N = corners_[static_cast<std::size_t>(corner)].preload;
+  ss.base_stiffness = values_[strut0_];
+  ss.base_damping = values_[strut0_ + 1];
+  return model_.strut().calcForce(ss, ParamValues(values_.data() + strut0_, nstrut_));
+}
+
+namespace {
+/// R = Rx(phi) Ry(theta) and the rotation's partial angular velocities.
+struct HandFrame {
+  Eigen::Matrix3d R;
+  Eigen::Vector3d ex{1, 0, 0}, eyp, ezc, w, wd;
+  HandFrame(double phi, double theta, double phid, double thetad) {
+    const double cp = std::cos(phi), sp = std::sin(phi), ct = std::cos(theta), st = std::sin(theta);
+    R << ct, 0, st, sp * st, cp, -sp * ct, -cp * st, sp, cp * ct;
+    eyp = Eigen::Vector3d(0, cp, sp);
+    ezc = R.col(2);
+    w = phid * ex + thetad * eyp;
+    wd = phid * thetad * Eigen::Vector3d(0, -sp, cp);  // e_x x e_y'
+  }
+};
+}  // namespace
+
+void HandOde::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) const {
+  using Mat7 = Eigen::Matrix<double, kDof, kDof>;
+  using Vec7 = Eigen::Matrix<double, kDof, 1>;
+  const HandFrame fr(y[1], y[2], y[8], y[9]);
+  const double acc = speed_.accel(t), fx = traction_per_accel_ * acc;
+  Mat7 M = Mat7::Zero();
+  Vec7 Q = Vec7::Zero();
+  // Chassis: heave mass, rotational inertia in ground, gyroscopic and velocity-product terms.
+  M(0, 0) = mc_;
+  Q(0) = -mc_ * g_;
+  const Eigen::Matrix3d Ig = fr.R * inertia_.asDiagonal() * fr.R.transpose();
+  Eigen::Matrix<double, 3, 2> Jw;
+  Jw << fr.ex, fr.eyp;
+  M.block<2, 2>(1, 1) = Jw.transpose() * Ig * Jw;
+  Q.segment<2>(1) = -Jw.transpose() * (Ig * fr.wd + fr.w.cross(Ig * fr.w));
+  const Eigen::Vector3d ez(0, 0, 1);
+  for (int c = 0; c < 4; ++c) {
+    const Corner& k = corners_[static_cast<std::size_t>(c)];
+    const double u = y[3 + c], ud = y[10 + c];
+    const Eigen::Vector3d s = fr.R * Eigen::Vector3d(k.x, k.y, w_ + u);
+    const Eigen::Vector3d cols[4] = {ez, fr.ex.cross(s), fr.eyp.cross(s), fr.ezc};
+    const int idx[4] = {0, 1, 2, 3 + c};
+    const Eigen::Vector3d v = y[7] * ez + fr.w.cross(s) + ud * fr.ezc;
+    const Eigen::Vector3d a_bias = fr.wd.cross(s) + fr.w.cross(fr.w.cross(s)) + 2.0 * ud * fr.w.cross(fr.ezc);
+    const double hub_z = y[0] + s.z();
+    double above = 0;  // hub height above the road: the traction's lever arm
+    const double fz = tireForce(c, t, s.x(), hub_z, v.z(), &above);
+    // Tire (traction at the contact point: its moment about the hub), gravity, d'Alembert load.
+    const Eigen::Vector3d F(fx - mw_ * acc, 0.0, fz - mw_ * g_);
+    const Eigen::Vector3d load = F - mw_ * a_bias;
+    for (int i = 0; i < 4; ++i) {
+      Q(idx[i]) += cols[i].dot(load);
+      for (int j = 0; j < 4; ++j) M(idx[i], idx[j]) += mw_ * cols[i].dot(cols[j]);
+    }
+    Q(2) += fr.eyp.y() * (-above * fx);  // e_y' . (0, -h fx, 0)
+    M(1, 1) += iw_;
+    M(2, 2) += iw_;
+    Q(3 + c) -= strutForce(c, u, ud);
+  }
+  ydot.resize(kStates);
+  ydot.head<kDof>() = y.segment<kDof>(kDof);
+  ydot.tail<kDof>() = M.llt().solve(Q);
+}
+
+HandOde::Hub HandOde::hub(int corner, const Eigen::VectorXd& y, const Eigen::VectorXd& ydot) const {
+  const Corner& k = corners_[static_cast<std::size_t>(corner)];
+  const HandFrame fr(y[1], y[2], y[8], y[9]);
+  const double ud = y[10 + corner];
+  const Eigen::Vector3d s = fr.R * Eigen::Vector3d(k.x, k.y, w_ + y[3 + corner]);
+  const Eigen::Vector3d ez(0, 0, 1);
+  const Eigen::Vector3d v = y[7] * ez + fr.w.cross(s) + ud * fr.ezc;
+  const Eigen::Vector3d a_bias = fr.wd.cross(s) + fr.w.cross(fr.w.cross(s)) + 2.0 * ud * fr.w.cross(fr.ezc);
+  const Eigen::Vector3d a = ydot[7] * ez + ydot[8] * fr.ex.cross(s) + ydot[9] * fr.eyp.cross(s) + ydot[10 + corner] * fr.ezc + a_bias;
+  return {s.x(), v.x(), y[0] + s.z(), v.z(), a.z()};
+}
+
+Eigen::VectorXd HandOde::equilibrium() const {
+  const ParamValues tp(values_.data() + tire0_, ntire_);
+  const double wb = model_.vehicle().wheelbase();
+  std::array<double, 3> target{};
+  for (int c = 0; c < 3; ++c) {
+    const double rho = model_.tire().calcStaticDeflection(model_.staticTireLoad(c), tp);
+    target[static_cast<std::size_t>(c)] = road_.sample(cornerTrack(c), isFront(c) ? 0.0 : -wb).height_m + R0_ - rho;
+  }
+  // Newton on (heave, pitch, roll) for the FL, FR, RL hub heights: Simulator::Impl::setEquilibrium's
+  // iteration (start, difference step and tolerance), so both runs start from the same state.
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(kStates);
+  auto residual = [&](const Eigen::Vector3d& x) {
+    const HandFrame fr(x[2], x[1], 0.0, 0.0);
+    Eigen::Vector3d r;
+    for (int c = 0; c < 3; ++c) {
+      const Corner& k = corners_[static_cast<std::size_t>(c)];
+      r[c] = x[0] + (fr.R * Eigen::Vector3d(k.x, k.y, w_)).z() - target[static_cast<std::size_t>(c)];
+    }
+    return r;
+  };
+  Eigen::Vector3d x(model_.vehicle().cg_height, 0, 0);
+  for (int it = 0; it < 6; ++it) {
+    const Eigen::Vector3d r = residual(x);
+    if (r.norm() < 1e-12) break;
+    Eigen::Matrix3d Jr;
+    for (int j = 0; j < 3; ++j) {
+      Eigen::Vector3d xp = x;
+      xp[j] += 1e-7;
+      Jr.col(j) = (residual(xp) - r) / 1e-7;
+    }
+    x -= Jr.inverse() * r;
+  }
+  y[0] = x[0];
+  y[1] = x[2];
+  y[2] = x[1];
+  return y;
+}
+
+// ----------------------------------------------------------------------------- a run
+namespace {
+
+/// The simulator's integration segments (Simulator::Impl::segments and obstacleWindows): (end
+/// time, step bound), the bound obstacle_max_step_s while a wheel is near an obstacle, and a
+/// segment end at a random road's branch time.
+std::vector<std::pair<double, double>> handSegments(const Road& road, const ScenarioSpec& sc, const SimulationOptions& o, double wb) {
+  std::vector<Interval> w;
+  for (const auto& ob : road.obstacles())
+    for (double offset : {0.0, wb}) {
+      const double t0 = sc.speed.timeAtDistance(ob.lo + offset) - o.obstacle_margin_before_s;
+      const double t1 = sc.speed.timeAtDistance(ob.hi + offset) + o.obstacle_margin_after_s;
+      if (t1 > 0 && t0 < sc.duration_s) w.push_back({std::max(0.0, t0), std::min(sc.duration_s, t1)});
+    }
+  std::sort(w.begin(), w.end(), [](const Interval& p, const Interval& q) { return p.lo < q.lo; });
+  std::vector<Interval> merged;
+  for (const auto& i : w) {
+    if (!merged.empty() && i.lo <= merged.back().hi) merged.back().hi = std::max(merged.back().hi, i.hi);
+    else merged.push_back(i);
+  }
+  std::vector<std::pair<double, double>> segs;
+  double t = 0;
+  for (const auto& i : merged) {
+    if (i.lo > t) segs.push_back({i.lo, o.max_step_s});
+    segs.push_back({i.hi, std::min(o.max_step_s, o.obstacle_max_step_s)});
+    t = i.hi;
+  }
+  if (t < sc.duration_s) segs.push_back({sc.duration_s, o.max_step_s});
+  if (const double rough = sc.road->roughStart_s(); rough > 0) {
+    const double tb = rough - o.obstacle_margin_before_s;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      const double lo = i == 0 ? 0.0 : segs[i - 1].first;
+      if (tb > lo + 1e-9 && tb < segs[i].first - 1e-9) {
+        segs.insert(segs.begin() + static_cast<long>(i), {tb, segs[i].second});
+        break;
+      }
+    }
+  }
+  return segs;
+}
+
+double handHermite(double h, double u, double y0, double m0, double y1, double m1) {
+  const double u2 = u * u, u3 = u2 * u;
+  return (2 * u3 - 3 * u2 + 1) * y0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * y1 + (u3 - u2) * h * m1;
+}
+
+}  // namespace
+
+HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const Road& road, const ScenarioSpec& sc,
+                      const SimulationOptions& o) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const HandOde ode(m, values, road, sc.speed);
+  RosenbrockOptions ro;  // as Simulator::Impl::integrate sets them
+  ro.accuracy = o.accuracy;
+  ro.max_step_s = o.max_step_s;
+  ro.max_steps = o.max_internal_steps;
+  Ros34pw2Stepper st([&ode](double t, const Eigen::VectorXd& y, Eigen::VectorXd& yd) { ode.rhs(t, y, yd); }, ro);
+  st.initialize(0.0, ode.equilibrium());
+  // Knots: per step and corner the hub's (x, xd, z, zd, zdd), as Simulator::Impl::record.
+  std::vector<double> times;
+  std::vector<std::array<HandOde::Hub, 4>> knots;
+  auto record = [&] {
+    std::array<HandOde::Hub, 4> k;
+    for (int c = 0; c < 4; ++c) k[static_cast<std::size_t>(c)] = ode.hub(c, st.state(), st.derivative());
+    knots.push_back(k);
+    times.push_back(st.time());
+  };
+  record();
+  for (const auto& [t_end, hmax] : handSegments(road, sc, o, m.vehicle().wheelbase())) {
+    st.setMaximumStepSize(hmax);
+    while (st.time() < t_end - 1e-12) {
+      st.step(t_end);
+      record();
+    }
+  }
+  // The output grid and its dense output (Simulator::Impl::makeOutput / writeRows).
+  HandOdeRun r;
+  const std::size_t n = static_cast<std::size_t>(std::floor(times.back() * o.output_rate_hz + 1e-9)) + 1;
+  r.time_s.resize(n);
+  for (auto& col : r.hub_force_N) col.resize(n);
+  std::size_t j = 0;
+  for (std::size_t row = 0; row < n; ++row) {
+    const double t = std::min(static_cast<double>(row) / o.output_rate_hz, times.back());
+    while (j + 2 < times.size() && times[j + 1] < t) ++j;
+    const std::size_t j1 = std::min(j + 1, times.size() - 1);
+    const double h = times[j1] - times[j];
+    const double u = h > 0 ? std::clamp((t - times[j]) / h, 0.0, 1.0) : 0.0;
+    r.time_s[row] = t;
+    for (std::size_t c = 0; c < 4; ++c) {
+      const HandOde::Hub &a = knots[j][c], &b = knots[j1][c];
+      const double hx = h > 0 ? handHermite(h, u, a.x, a.xd, b.x, b.xd) : a.x;
+      const double hz = h > 0 ? handHermite(h, u, a.z, a.zd, b.z, b.zd) : a.z;
+      const double hzd = h > 0 ? handHermite(h, u, a.zd, a.zdd, b.zd, b.zdd) : a.zd;
+      r.hub_force_N[c][row] = ode.tireForce(static_cast<int>(c), t, hx, hz, hzd);
+    }
+  }
+  r.steps = st.steps();
+  r.attempts = st.attempts();
+  r.evaluations = st.evaluations();
+  r.jacobians = st.jacobians();
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return r;
+}
+
+// ----------------------------------------------------------------------------- the benchmark
+namespace {
+double handMedian(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t k = v.size() / 2;
+  return v.size() % 2 ? v[k] : 0.5 * (v[k - 1] + v[k]);
+}
+
+/// max |simbody - hand| of the front-left hub force over the common grid, and where.
+std::pair<double, double> handMaxDiff(const Trace& simbody, const HandOdeRun& hand) {
+  const auto& ts = simbody.column("time_s");
+  const auto& fs = simbody.column("hub_force_fl_N");
+  DTWIN_CHECK(ts.size() == hand.time_s.size(), "benchHandOde: the two output grids differ in length");
+  double worst = 0, at = 0;
+  for (std::size_t i = 0; i < ts.size(); ++i)
+    if (const double d = std::abs(fs[i] - hand.hub_force_N[0][i]); d > worst) {
+      worst = d;
+      at = ts[i];
+    }
+  return {worst, at};
+}
+}  // namespace
+
+HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& sc, int runs) {
+  if (runs < 1) throw InputError("twin bench --hand-ode", "--runs must be >= 1");
+  const auto model = study.makeModel(a);
+  const auto road = makeRoad(sc, model->vehicle(), study.seed);
+  const auto values = model->defaultRunValues();
+  const HandOde probe(*model, values, *road, sc.speed);  // InputError for an assembly it does not model
+  HandOdeBench b;
+  b.assembly = a.id;
+  b.label = a.label();
+  b.scenario = sc.name;
+  b.runs = runs;
+  b.accuracy = study.simulation.accuracy;
+  Simulator sim(model, study.simulation);
+  SimulationOptions quiet = study.simulation;
+  quiet.output_rate_hz = 0.1;  // two output rows: what is left is the equilibrium and the integration
+  Simulator sim_quiet(model, quiet);
+  // Warm-up, counts and agreement (the Simbody run records its steps to count its Jacobians).
+  StepPlan plan;
+  const RunResult ref = sim.run(values, *road, sc, StepControl{nullptr, &plan});
+  if (!ref.stats.ok) throw std::runtime_error("twin bench --hand-ode: the Simbody run failed: " + ref.stats.message);
+  sim_quiet.run(values, *road, sc);
+  const HandOdeRun hand = runHandOde(*model, values, *road, sc, study.simulation);
+  b.simbody_steps = ref.stats.steps;
+  b.simbody_attempts = ref.stats.steps_attempted;
+  b.simbody_jacobians = static_cast<long>(std::count(plan.new_jacobian.begin(), plan.new_jacobian.end(), 1));
+  b.simbody_evaluations = 1 + 4 * b.simbody_steps + 3 * (b.simbody_attempts - b.simbody_steps) + HandOde::kStates * b.simbody_jacobians;
+  b.hand_steps = hand.steps;
+  b.hand_attempts = hand.attempts;
+  b.hand_evaluations = hand.evaluations;
+  b.hand_jacobians = hand.jacobians;
+  const auto& fl = ref.trace.column("hub_force_fl_N");
+  b.peak_fl_N = *std::max_element(fl.begin(), fl.end());
+  std::tie(b.max_diff_fl_N, b.max_diff_time_s) = handMaxDiff(ref.trace, hand);
+  // Timed runs, alternating so that a change of the machine's load hits both alike.
+  std::vector<double> ws, wq, wh, whq;
+  for (int k = 0; k < runs; ++k) {
+    ws.push_back(sim.run(values, *road, sc).stats.wall_s);
+    wq.push_back(sim_quiet.run(values, *road, sc).stats.wall_s);
+    wh.push_back(runHandOde(*model, values, *road, sc, study.simulation).wall_s);
+    whq.push_back(runHandOde(*model, values, *road, sc, quiet).wall_s);
+  }
+  b.simbody_median_s = handMedian(ws);
+  b.simbody_min_s = *std::min_element(ws.begin(), ws.end());
+  b.simbody_max_s = *std::max_element(ws.begin(), ws.end());
+  b.simbody_integration_s = handMedian(wq);
+  b.hand_median_s = handMedian(wh);
+  b.hand_min_s = *std::min_element(wh.begin(), wh.end());
+  b.hand_max_s = *std::max_element(wh.begin(), wh.end());
+  b.hand_integration_s = handMedian(whq);
+  // One right-hand side alone, at the state the run starts from, in a loop.
+  {
+    const Eigen::VectorXd y = probe.equilibrium();
+    Eigen::VectorXd yd(HandOde::kStates);
+    const int reps = 20000;
+    double sink = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < reps; ++i) {
+      probe.rhs(6.0 + 1e-6 * i, y, yd);
+      sink += yd[7];
+    }
+    b.hand_rhs_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
+    if (!std::isfinite(sink)) throw std::runtime_error("twin bench --hand-ode: non-finite right-hand side");
+  }
+  // Both at tight tolerance (untimed): the difference of the models themselves.
+  SimulationOptions tight = study.simulation;
+  tight.accuracy = 1e-8;
+  tight.max_step_s = 1e-3;
+  tight.obstacle_max_step_s = 2.5e-5;
+  const RunResult ref_tight = Simulator(model, tight).run(values, *road, sc);
+  b.tight_max_diff_fl_N = handMaxDiff(ref_tight.trace, runHandOde(*model, values, *road, sc, tight)).first;
+  return b;
+}
+
+}  // namespace dtwin

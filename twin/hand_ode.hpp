@@ -1,0 +1,157 @@
+#pragma once
+// The Simbody twin against a hand-written ODE of the same vehicle (issue 29: "one 15 s bump run
+// against the hand-written 7-DOF ODE of the same model: <= 3x, or the measured reason why not").
+//
+// Three parts:
+//  * Ros34pw2Stepper: the ROS34PW2 Rosenbrock-W scheme of twin/rosenbrock.hpp (same tableau, same
+//    error norm, step control and Jacobian reuse) over a plain right-hand side f(t, y, ydot), so
+//    that both models are integrated by the same method at the same tolerance.
+//  * HandOde: the nonlinear equations of motion of a MacPherson assembly (chassis heave z, roll
+//    phi, pitch theta, four wheel travels u_i along the chassis z), derived by hand from the
+//    kinematics the simulator builds in Simbody (twin/simulator.cpp), with the project's own force
+//    laws (the model's tire law, its strut law) and the scenario's road and speed.
+//  * benchHandOde: the wall time of one run of each, their step and evaluation counts, and how
+//    closely their front-left hub forces agree (`twin bench --hand-ode`, docs/performance.md).
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "subsystems/road.hpp"
+#include "twin/model.hpp"
+#include "twin/rosenbrock.hpp"
+#include "twin/scenario.hpp"
+#include "twin/simulator.hpp"
+#include "twin/study.hpp"
+
+namespace dtwin {
+
+/// ROS34PW2 over y' = f(t, y): the algorithm of RosenbrockIntegrator (twin/rosenbrock.hpp) with
+/// every option of RosenbrockOptions, for a right-hand side that is a function, not a
+/// SimTK::System. Unit changes ("atol_i = accuracy * unit_i") are all 1, which is what Simbody's
+/// weights are for the vehicle's system (State::getUWeights() is 1 for every mobility), so the
+/// error norm is the same. Counts: an evaluation is one call of f; an accepted step costs 4, a
+/// rejected one 3, a Jacobian n (+ 1 with time_derivative), initialize() 1.
+class Ros34pw2Stepper {
+ public:
+  using Rhs = std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot)>;
+  /// std::invalid_argument for options RosenbrockIntegrator refuses as well.
+  Ros34pw2Stepper(Rhs f, RosenbrockOptions options);
+  ~Ros34pw2Stepper();
+  Ros34pw2Stepper(Ros34pw2Stepper&&) noexcept;
+  Ros34pw2Stepper& operator=(Ros34pw2Stepper&&) noexcept;
+
+  /// Sets the initial state and evaluates f there; resets counters, Jacobian and step size.
+  /// std::runtime_error if y0 or f(t0, y0) is not finite.
+  void initialize(double t0, const Eigen::VectorXd& y0);
+  void setMaximumStepSize(double h);
+  /// One accepted step, never beyond t_stop (lands on it when within reach); the exceptions of
+  /// RosenbrockIntegrator::step().
+  void step(double t_stop);
+
+  double time() const;
+  const Eigen::VectorXd& state() const;       ///< y at time()
+  const Eigen::VectorXd& derivative() const;  ///< f(time(), state())
+  long steps() const;
+  long attempts() const;
+  long evaluations() const;
+  long jacobians() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The 7-DOF vehicle of a MacPherson assembly without effects. State y (14): q = (z, phi, theta,
+/// u_fl, u_fr, u_rl, u_rr), then their rates: z the CG height above ground, phi roll (about x,
+/// positive right side down), theta pitch (about the rolled y, positive nose down), u_i the
+/// wheel's travel along the chassis z (the strut deflection, compression positive). The layout,
+/// the rotation R = Rx(phi) Ry(theta) and the absolute heave are those of the simulator's Simbody
+/// State (heave slider, Universal joint, one slider per wheel), so the error norms agree too.
+class HandOde {
+ public:
+  static constexpr int kDof = 7, kStates = 14;
+  /// InputError when the assembly is not MacPherson or has effects (neither is modelled here).
+  /// `values` is a run vector of `m` (m.defaultRunValues()); `road` must outlive this object.
+  HandOde(const Model& m, std::vector<double> values, const Road& road, const SpeedProfile& speed);
+
+  /// The simulator's start state (Simulator::Impl::setEquilibrium): wheels at zero travel and
+  /// rest, and heave, pitch and roll such that the FL, FR and RL hubs sit at the road height plus
+  /// R0 minus the static deflection under their static tire loads.
+  Eigen::VectorXd equilibrium() const;
+  /// ydot = f(t, y) (sizes kStates).
+  void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) const;
+
+  struct Hub {
+    double x = 0, xd = 0, z = 0, zd = 0, zdd = 0;  ///< hub centre in ground [m, m/s, m/s^2]
+  };
+  /// The hub of `corner` (0 fl, 1 fr, 2 rl, 3 rr) for state y; zdd from ydot = f(t, y).
+  Hub hub(int corner, const Eigen::VectorXd& y, const Eigen::VectorXd& ydot) const;
+  /// The tire's normal force [N] for a hub at (x, z) moving at zd: TireCorner::eval of the
+  /// simulator. `hub_above_road` (if given) receives z minus the road height under the hub.
+  double tireForce(int corner, double t, double hub_x, double hub_z, double hub_zd, double* hub_above_road = nullptr) const;
+  /// The main strut's force [N] at travel q and rate qd (its preload: Model::staticStrutForce).
+  double strutForce(int corner, double q, double qd) const;
+
+ private:
+  struct Corner {
+    double x = 0, y = 0;  ///< strut (and wheel centre) position in the chassis, at height w
+    double preload = 0;
+    bool front = true;
+    Track track = Track::Left;
+  };
+  const Model& model_;
+  std::vector<double> values_;
+  const Road& road_;
+  SpeedProfile speed_;
+  double mc_ = 0, mw_ = 0, iw_ = 1e-3, g_ = 0, w_ = 0, R0_ = 0, a_ = 0, traction_per_accel_ = 0;
+  Eigen::Vector3d inertia_;  ///< chassis principal inertias (ixx, iyy, izz)
+  std::array<Corner, 4> corners_;
+  std::size_t tire0_ = 0, ntire_ = 0, strut0_ = 0, nstrut_ = 0;
+};
+
+/// One run of the hand ODE over a scenario: the integrator segments of the simulator (a step
+/// bound of obstacle_max_step_s while a wheel crosses an obstacle), ROS34PW2 at the options'
+/// accuracy and maximum step, and the four hub forces on the simulator's output grid (cubic
+/// Hermite of the hub motion recorded at every step, as Simulator's dense output).
+struct HandOdeRun {
+  std::vector<double> time_s;
+  std::array<std::vector<double>, 4> hub_force_N;  ///< fl, fr, rl, rr
+  long steps = 0, attempts = 0, evaluations = 0, jacobians = 0;
+  double wall_s = 0;  ///< equilibrium, integration and output
+};
+HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario,
+                      const SimulationOptions& options);
+
+/// `twin bench --hand-ode`: the study's simulator and the hand ODE on `scenario` for assembly `a`,
+/// `runs` timed runs each (after one warm-up), alternating, medians reported.
+struct HandOdeBench {
+  std::string assembly, label, scenario;
+  int runs = 0;
+  double accuracy = 0;
+  double simbody_median_s = 0, simbody_min_s = 0, simbody_max_s = 0;
+  /// The simulator with its output grid at 0.1 Hz: equilibrium and integration without the
+  /// 1 kHz reconstruction of every output channel (median of `runs`).
+  double simbody_integration_s = 0;
+  long simbody_steps = 0, simbody_attempts = 0, simbody_jacobians = 0;
+  /// 1 + 4 accepted + 3 rejected steps + 14 per Jacobian (the integrator's cost model; the
+  /// Jacobians counted from the run's recorded step plan).
+  long simbody_evaluations = 0;
+  double hand_median_s = 0, hand_min_s = 0, hand_max_s = 0;
+  double hand_integration_s = 0;  ///< the hand ODE with its output grid at 0.1 Hz (median)
+  long hand_steps = 0, hand_attempts = 0, hand_evaluations = 0, hand_jacobians = 0;
+  double hand_rhs_s = 0;  ///< wall time of one hand right-hand side evaluation alone (a loop)
+  double peak_fl_N = 0;   ///< peak front-left hub force of the Simbody run
+  double max_diff_fl_N = 0, max_diff_time_s = 0;  ///< max |Simbody - hand| over the output grid
+  /// The same comparison with both integrated at accuracy 1e-8 (steps <= 2.5e-5 s at the obstacle):
+  /// what remains is the difference between the models, not between the integration errors.
+  double tight_max_diff_fl_N = 0;
+  double ratio() const { return simbody_median_s / hand_median_s; }
+};
+/// InputError for an assembly the hand ODE does not model (HandOde), or `runs` < 1.
+HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario, int runs);
+
+}  // namespace dtwin

@@ -19,39 +19,6 @@ namespace {
 
 constexpr int kHandStages = rosenbrock_detail::Tableau::kStages;
 
-/// The tableau in the transformed variables u_i = sum_{j<=i} gamma_ij k_j: the same
-/// transformation as rosenbrock.cpp's `Transformed` (Hairer & Wanner II, Sec. IV.7, (7.25)), of
-/// the same coefficients, rosenbrock_detail::ros34pw2() (Rang & Angermann 2005, ROS34PW2; the
-/// 17-digit values of PETSc's TSROSWRA34PW2, cited in rosenbrock.cpp). Taken from that function
-/// rather than copied, so that the two integrators cannot drift apart.
-struct HandRosTableau {
-  double gamma = 0;
-  double alpha[kHandStages] = {}, gsum[kHandStages] = {}, at[kHandStages][kHandStages] = {}, c[kHandStages][kHandStages] = {};
-  double m[kHandStages] = {}, e[kHandStages] = {};
-  explicit HandRosTableau(const rosenbrock_detail::Tableau& t) {
-    constexpr int S = kHandStages;
-    double gi[S][S] = {};  // inverse of the lower-triangular gamma matrix
-    for (int i = 0; i < S; ++i) {
-      gi[i][i] = 1.0 / t.gamma[i][i];
-      for (int j = 0; j < i; ++j) {
-        double s = 0;
-        for (int k = j; k < i; ++k) s += t.gamma[i][k] * gi[k][j];
-        gi[i][j] = -s / t.gamma[i][i];
-      }
-    }
-    gamma = t.gamma[0][0];
-    for (int i = 0; i < S; ++i)
-      for (int j = 0; j < S; ++j) {
-        alpha[i] += t.a[i][j];
-        if (j <= i) gsum[i] += t.gamma[i][j];
-        for (int k = 0; k < S; ++k) at[i][j] += t.a[i][k] * gi[k][j];
-        if (j < i) c[i][j] = -gi[i][j];
-        m[j] += t.b[i] * gi[i][j];
-        e[j] += (t.b[i] - t.b_hat[i]) * gi[i][j];
-      }
-  }
-};
-
 std::string handFmt(double v) { return formatNumber(v, 10); }
 
 }  // namespace
@@ -64,7 +31,9 @@ std::string handFmt(double v) { return formatNumber(v, 10); }
 struct Ros34pw2Stepper::Impl {
   Rhs f;
   RosenbrockOptions opt;
-  HandRosTableau tab{rosenbrock_detail::ros34pw2()};
+  /// The same transformed tableau as RosenbrockIntegrator (rosenbrock_detail::Transformed of
+  /// ros34pw2()), so that the two steppers cannot drift apart.
+  rosenbrock_detail::Transformed tab{rosenbrock_detail::ros34pw2()};
   bool initialized = false;
   int n = 0;
   double t = 0, hmax = 0, h_prop = 0;
@@ -459,44 +428,6 @@ Eigen::VectorXd HandOde::equilibrium() const {
 // ----------------------------------------------------------------------------- a run
 namespace {
 
-/// The simulator's integration segments (Simulator::Impl::segments and obstacleWindows): (end
-/// time, step bound), the bound obstacle_max_step_s while a wheel is near an obstacle, and a
-/// segment end at a random road's branch time.
-std::vector<std::pair<double, double>> handSegments(const Road& road, const ScenarioSpec& sc, const SimulationOptions& o, double wb) {
-  std::vector<Interval> w;
-  for (const auto& ob : road.obstacles())
-    for (double offset : {0.0, wb}) {
-      const double t0 = sc.speed.timeAtDistance(ob.lo + offset) - o.obstacle_margin_before_s;
-      const double t1 = sc.speed.timeAtDistance(ob.hi + offset) + o.obstacle_margin_after_s;
-      if (t1 > 0 && t0 < sc.duration_s) w.push_back({std::max(0.0, t0), std::min(sc.duration_s, t1)});
-    }
-  std::sort(w.begin(), w.end(), [](const Interval& p, const Interval& q) { return p.lo < q.lo; });
-  std::vector<Interval> merged;
-  for (const auto& i : w) {
-    if (!merged.empty() && i.lo <= merged.back().hi) merged.back().hi = std::max(merged.back().hi, i.hi);
-    else merged.push_back(i);
-  }
-  std::vector<std::pair<double, double>> segs;
-  double t = 0;
-  for (const auto& i : merged) {
-    if (i.lo > t) segs.push_back({i.lo, o.max_step_s});
-    segs.push_back({i.hi, std::min(o.max_step_s, o.obstacle_max_step_s)});
-    t = i.hi;
-  }
-  if (t < sc.duration_s) segs.push_back({sc.duration_s, o.max_step_s});
-  if (const double rough = sc.road->roughStart_s(); rough > 0) {
-    const double tb = rough - o.obstacle_margin_before_s;
-    for (std::size_t i = 0; i < segs.size(); ++i) {
-      const double lo = i == 0 ? 0.0 : segs[i - 1].first;
-      if (tb > lo + 1e-9 && tb < segs[i].first - 1e-9) {
-        segs.insert(segs.begin() + static_cast<long>(i), {tb, segs[i].second});
-        break;
-      }
-    }
-  }
-  return segs;
-}
-
 double handHermite(double h, double u, double y0, double m0, double y1, double m1) {
   const double u2 = u * u, u3 = u2 * u;
   return (2 * u3 - 3 * u2 + 1) * y0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * y1 + (u3 - u2) * h * m1;
@@ -524,7 +455,7 @@ HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const R
     times.push_back(st.time());
   };
   record();
-  for (const auto& [t_end, hmax] : handSegments(road, sc, o, m.vehicle().wheelbase())) {
+  for (const auto& [t_end, hmax] : integrationSegments(road, sc, o, m.vehicle().wheelbase())) {
     st.setMaximumStepSize(hmax);
     while (st.time() < t_end - 1e-12) {
       st.step(t_end);

@@ -77,34 +77,6 @@ const Tableau& ros34pw2() {
 namespace {
 constexpr int S = rosenbrock_detail::Tableau::kStages;
 
-/// The tableau in transformed variables (see the header comment of this file).
-struct Transformed {
-  double gamma = 0;
-  double alpha[S] = {}, gsum[S] = {}, at[S][S] = {}, c[S][S] = {}, m[S] = {}, e[S] = {};
-  explicit Transformed(const rosenbrock_detail::Tableau& t) {
-    double gi[S][S] = {};  // inverse of the lower-triangular gamma matrix
-    for (int i = 0; i < S; ++i) {
-      gi[i][i] = 1.0 / t.gamma[i][i];
-      for (int j = 0; j < i; ++j) {
-        double s = 0;
-        for (int k = j; k < i; ++k) s += t.gamma[i][k] * gi[k][j];
-        gi[i][j] = -s / t.gamma[i][i];
-      }
-    }
-    gamma = t.gamma[0][0];
-    for (int i = 0; i < S; ++i) {
-      for (int j = 0; j < S; ++j) {
-        alpha[i] += t.a[i][j];
-        if (j <= i) gsum[i] += t.gamma[i][j];
-        for (int k = 0; k < S; ++k) at[i][j] += t.a[i][k] * gi[k][j];
-        if (j < i) c[i][j] = -gi[i][j];
-        m[j] += t.b[i] * gi[i][j];
-        e[j] += (t.b[i] - t.b_hat[i]) * gi[i][j];
-      }
-    }
-  }
-};
-
 std::string fmt(double v) { return formatNumber(v, 10); }
 }  // namespace
 
@@ -112,7 +84,7 @@ std::string fmt(double v) { return formatNumber(v, 10); }
 struct RosenbrockIntegrator::Impl {
   const SimTK::System& system;
   RosenbrockOptions opt;
-  Transformed tab{rosenbrock_detail::ros34pw2()};
+  rosenbrock_detail::Transformed tab{rosenbrock_detail::ros34pw2()};
 
   SimTK::State state;  ///< accepted state, realized through Acceleration
   SimTK::State work;   ///< scratch for stage and Jacobian evaluations
@@ -464,5 +436,31 @@ long RosenbrockIntegrator::steps() const { return impl_->n_steps; }
 long RosenbrockIntegrator::attempts() const { return impl_->n_attempts; }
 long RosenbrockIntegrator::evaluations() const { return impl_->n_evals; }
 long RosenbrockIntegrator::jacobians() const { return impl_->n_jacs; }
+
+
+namespace rosenbrock_detail {
+Transformed::Transformed(const Tableau& t) {
+  double gi[S][S] = {};  // inverse of the lower-triangular gamma matrix
+  for (int i = 0; i < S; ++i) {
+    gi[i][i] = 1.0 / t.gamma[i][i];
+    for (int j = 0; j < i; ++j) {
+      double s = 0;
+      for (int k = j; k < i; ++k) s += t.gamma[i][k] * gi[k][j];
+      gi[i][j] = -s / t.gamma[i][i];
+    }
+  }
+  gamma = t.gamma[0][0];
+  for (int i = 0; i < S; ++i) {
+    for (int j = 0; j < S; ++j) {
+      alpha[i] += t.a[i][j];
+      if (j <= i) gsum[i] += t.gamma[i][j];
+      for (int k = 0; k < S; ++k) at[i][j] += t.a[i][k] * gi[k][j];
+      if (j < i) c[i][j] = -gi[i][j];
+      m[j] += t.b[i] * gi[i][j];
+      e[j] += (t.b[i] - t.b_hat[i]) * gi[i][j];
+    }
+  }
+}
+}  // namespace rosenbrock_detail
 
 }  // namespace dtwin

@@ -128,6 +128,16 @@ struct Tableau {
 };
 /// ROS34PW2 (Rang & Angermann 2005), exposed for the order-condition test.
 const Tableau& ros34pw2();
+/// The tableau in the transformed variables u_i = sum_j gamma_ij k_j that the steppers use
+/// (rosenbrock.cpp's header comment): stage i solves (I/(h gamma) - J) u_i = f(t + alpha_i h,
+/// y + sum_j at_ij u_j) + sum_j (c_ij / h) u_j (+ gsum_i h f_t); y_new = y + sum m_i u_i, error
+/// = sum e_i u_i. Shared by RosenbrockIntegrator and the hand-ODE stepper (hand_ode.hpp).
+struct Transformed {
+  static constexpr int S = Tableau::kStages;
+  double gamma = 0;
+  double alpha[S] = {}, gsum[S] = {}, at[S][S] = {}, c[S][S] = {}, m[S] = {}, e[S] = {};
+  explicit Transformed(const Tableau& t);
+};
 }  // namespace rosenbrock_detail
 
 }  // namespace dtwin

@@ -637,24 +637,6 @@ struct Simulator::Impl {
   }
 
   /// Time windows in which a wheel crosses an obstacle (merged, clipped).
-  std::vector<Interval> obstacleWindows(const Road& road, const ScenarioSpec& sc) const {
-    std::vector<Interval> w;
-    const double wb = model->vehicle().wheelbase();
-    for (const auto& ob : road.obstacles())
-      for (double offset : {0.0, wb}) {
-        const double t0 = sc.speed.timeAtDistance(ob.lo + offset) - opt.obstacle_margin_before_s;
-        const double t1 = sc.speed.timeAtDistance(ob.hi + offset) + opt.obstacle_margin_after_s;
-        if (t1 > 0 && t0 < sc.duration_s) w.push_back({std::max(0.0, t0), std::min(sc.duration_s, t1)});
-      }
-    std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.lo < b.lo; });
-    std::vector<Interval> merged;
-    for (auto& i : w) {
-      if (!merged.empty() && i.lo <= merged.back().hi) merged.back().hi = std::max(merged.back().hi, i.hi);
-      else merged.push_back(i);
-    }
-    return merged;
-  }
-
   using Knots = std::vector<std::array<double, KNOT>>;
   using Segments = std::vector<std::pair<double, double>>;  // (end time, max step)
 
@@ -678,30 +660,9 @@ struct Simulator::Impl {
     return -1.0;
   }
 
-  /// Integration segments with their step bound.
+  /// Integration segments with their step bound (integrationSegments, simulator.hpp).
   Segments segments(const Road& road, const ScenarioSpec& sc) const {
-    Segments segs;
-    double t = 0;
-    for (const auto& w : obstacleWindows(road, sc)) {
-      if (w.lo > t) segs.push_back({w.lo, opt.max_step_s});
-      segs.push_back({w.hi, std::min(opt.max_step_s, opt.obstacle_max_step_s)});
-      t = w.hi;
-    }
-    if (t < sc.duration_s) segs.push_back({sc.duration_s, opt.max_step_s});
-    // A rough section that starts at a known time: the integrator lands on a knot just before it,
-    // so nothing before that knot depends on the rough road (every road of one theta shares the
-    // smooth part bit for bit; runBranched integrates it once).
-    const double tb = branchTime(sc);
-    if (tb > 0) {
-      for (std::size_t i = 0; i < segs.size(); ++i) {
-        const double lo = i == 0 ? 0.0 : segs[i - 1].first;
-        if (tb > lo + 1e-9 && tb < segs[i].first - 1e-9) {
-          segs.insert(segs.begin() + static_cast<long>(i), {tb, segs[i].second});
-          break;
-        }
-      }
-    }
-    return segs;
+    return integrationSegments(road, sc, opt, model->vehicle().wheelbase());
   }
 
   /// Integrates from `s0` through segments [i0, i1) of `segs`, appending a knot per step (and one
@@ -1073,5 +1034,45 @@ std::vector<RunResult> Simulator::runBranched(const std::vector<double>& values,
   return pick(values).runBranched(values, roads, sc);
 }
 double Simulator::branchTime(const ScenarioSpec& sc) const { return impl_->branchTime(sc); }
+
+std::vector<std::pair<double, double>> integrationSegments(const Road& road, const ScenarioSpec& sc, const SimulationOptions& opt,
+                                                           double wheelbase) {
+  // The windows in time while a wheel (front: offset 0, rear: the wheelbase) is near an obstacle.
+  std::vector<Interval> w;
+  for (const auto& ob : road.obstacles())
+    for (double offset : {0.0, wheelbase}) {
+      const double t0 = sc.speed.timeAtDistance(ob.lo + offset) - opt.obstacle_margin_before_s;
+      const double t1 = sc.speed.timeAtDistance(ob.hi + offset) + opt.obstacle_margin_after_s;
+      if (t1 > 0 && t0 < sc.duration_s) w.push_back({std::max(0.0, t0), std::min(sc.duration_s, t1)});
+    }
+  std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.lo < b.lo; });
+  std::vector<Interval> merged;
+  for (auto& i : w) {
+    if (!merged.empty() && i.lo <= merged.back().hi) merged.back().hi = std::max(merged.back().hi, i.hi);
+    else merged.push_back(i);
+  }
+  std::vector<std::pair<double, double>> segs;
+  double t = 0;
+  for (const auto& m : merged) {
+    if (m.lo > t) segs.push_back({m.lo, opt.max_step_s});
+    segs.push_back({m.hi, std::min(opt.max_step_s, opt.obstacle_max_step_s)});
+    t = m.hi;
+  }
+  if (t < sc.duration_s) segs.push_back({sc.duration_s, opt.max_step_s});
+  // A rough section that starts at a known time: the integrator lands on a knot just before it,
+  // so nothing before that knot depends on the rough road (every road of one theta shares the
+  // smooth part bit for bit; runBranched integrates it once).
+  if (const double rough = sc.road->roughStart_s(); rough > 0) {
+    const double tb = rough - opt.obstacle_margin_before_s;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      const double lo = i == 0 ? 0.0 : segs[i - 1].first;
+      if (tb > lo + 1e-9 && tb < segs[i].first - 1e-9) {
+        segs.insert(segs.begin() + static_cast<long>(i), {tb, segs[i].second});
+        break;
+      }
+    }
+  }
+  return segs;
+}
 
 }  // namespace dtwin

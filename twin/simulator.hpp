@@ -137,4 +137,11 @@ class Simulator {
   std::unique_ptr<Impl> impl_filter_;
 };
 
+/// The integration segments of a run on `road` (end time, step bound): the step is bounded by
+/// obstacle_max_step_s while a front or rear wheel (`wheelbase` behind) is within the margins of
+/// an obstacle, and a segment ends at a random road's branch time (its rough start less
+/// obstacle_margin_before_s), so that the smooth lead-in is shared bit for bit.
+std::vector<std::pair<double, double>> integrationSegments(const Road& road, const ScenarioSpec& sc, const SimulationOptions& opt,
+                                                           double wheelbase);
+
 }  // namespace dtwin

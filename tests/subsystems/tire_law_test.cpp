@@ -216,7 +216,8 @@ TEST(FialaTire, IsExactlyLinearSpringAndDamper) {
   const double k = 180000.0, b = 3000.0;
   for (double rho : {1e-4, 0.004, 0.0123, 0.03, 0.1})
     for (double rate : {-0.5, -0.01, 0.0, 0.2, 1.5}) {
-      const double expected = std::max(0.0, k * rho + b * rate);
+      // The damping ramps in over the first kContactDampingRamp_m of deflection (tire_law.hpp).
+      const double expected = std::max(0.0, k * rho + b * rate * std::min(1.0, rho / kContactDampingRamp_m));
       EXPECT_NEAR(law->calcNormalForce(at(rho, rate), p), expected, 1e-12 * (1.0 + expected))
           << "rho " << rho << " rate " << rate;
     }
@@ -248,7 +249,7 @@ TEST_F(Pac2002, WithoutQuadraticAndSpeedTermsIsLinearSpring) {
   const double k = 180000.0, c = 3000.0;
   for (double rho : {1e-4, 0.005, 0.0222, 0.05, 0.12})
     for (double rate : {-0.3, 0.0, 0.7}) {
-      const double expected = std::max(0.0, k * rho + c * rate);
+      const double expected = std::max(0.0, k * rho + c * rate * std::min(1.0, rho / kContactDampingRamp_m));
       EXPECT_NEAR(force(at(rho, rate)), expected, 1e-12 * expected) << "rho " << rho << " rate " << rate;
     }
   // ... and then the operating point is where the nominal load is carried.

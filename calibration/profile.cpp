@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 
@@ -133,7 +134,43 @@ ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>
   return p;
 }
 
-// About 160 lines, kept whole on purpose: the secant / regula falsi search shares its bracket
+namespace {
+
+/// One profile point at z0: the other coordinates u re-minimised from the warm start `u` with the
+/// end's carried Jacobian; a point that ends outside the threshold gets `polish_iterations` more
+/// with a fresh Jacobian (a curved valley, or a stale Jacobian), then the restarts `starts()`
+/// (another basin), the lowest fit counting. False when no simulation of it succeeded.
+bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B, const Eigen::VectorXd& h,
+                  const ProfilePlan& plan, const ProfileOptions& options, SubspaceJacobian& jac, Eigen::VectorXd& u, double& f,
+                  const std::function<std::vector<Eigen::VectorXd>()>& starts) {
+  Eigen::VectorXd r;
+  bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, u, r, f, &jac);
+  if (ok && f > plan.threshold && options.polish_iterations > 0) {
+    Eigen::VectorXd up = u, rp;
+    double fp = 0.0;
+    jac.clear();
+    if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp, &jac) && fp < f) {
+      f = fp;
+      u = up;
+    }
+  }
+  if (ok && f <= plan.threshold) return true;
+  for (const Eigen::VectorXd& start : starts()) {
+    Eigen::VectorXd ur = start, rr;
+    double fr = 0.0;
+    if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr, &jac) && (!ok || fr < f)) {
+      ok = true;
+      f = fr;
+      u = ur;
+    }
+    if (ok && f <= plan.threshold) break;
+  }
+  return ok;
+}
+
+}  // namespace
+
+// About 130 lines, kept whole on purpose: the secant / regula falsi search shares its bracket
 // (v_in, g_in, v_prev, g_prev, v_out, g_out) and the subspace coordinates with the restarts of
 // each step; the scaling helpers and the restart choice are the lambdas above the loop.
 ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index, const ProfileOptions& options) {
@@ -253,31 +290,11 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     if (std::abs(target - v_in) < 1e-12) break;
     Eigen::VectorXd z0 = Eigen::VectorXd::Zero(d);
     z0(j) = target;
-    Eigen::VectorXd un = u, r;
+    Eigen::VectorXd un = u;
     double f = 0.0;
-    bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, un, r, f, &jac);
-    // Outside after the warm start: a curved valley may need more iterations than a straight one,
-    // and the carried Jacobian may be stale; fresh differences for these.
-    if (ok && f > plan.threshold && options.polish_iterations > 0) {
-      Eigen::VectorXd up = un, rp;
-      double fp = 0.0;
-      jac.clear();
-      if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp, &jac) && fp < f) {
-        f = fp;
-        un = up;
-      }
-    }
-    if (!(ok && f <= plan.threshold))
-      for (const Eigen::VectorXd& start : restartsNear(target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un)) {
-        Eigen::VectorXd ur = start, rr;
-        double fr = 0.0;
-        if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr, &jac) && (!ok || fr < f)) {
-          ok = true;
-          f = fr;
-          un = ur;
-        }
-        if (ok && f <= plan.threshold) break;
-      }
+    const bool ok = profilePoint(res, z0, B, h, plan, options, jac, un, f, [&] {
+      return restartsNear(target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un);
+    });
     if (ok && f <= plan.threshold) {
       v_prev = v_in;
       g_prev = g_in;

@@ -48,7 +48,11 @@ bool minimiseOnSubspace(const ScaledResiduals& residuals, const Eigen::VectorXd&
     bool improved = false;
     for (int round = 0; round < 2 && !improved; ++round) {
       if (round == 1) {  // the carried Jacobian found no better point: differences, and again
-        if (fresh || !differenceJacobian(residuals, z0, B, h, u, r.size(), jac.J)) break;
+        if (fresh) break;
+        if (!differenceJacobian(residuals, z0, B, h, u, r.size(), jac.J)) {
+          jac.clear();  // half overwritten: never carried on
+          break;
+        }
         ++jac.computed;
         fresh = true;
         mu = 1e-3;

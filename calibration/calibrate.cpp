@@ -1,4 +1,6 @@
 #include "calibration/calibrate.hpp"
+
+#include "calibration/subspace_lm.hpp"
 #include "calibration/folder.hpp"
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 
 #include "calibration/design_journal.hpp"
 #include "calibration/lhs.hpp"
+#include "calibration/subspace_lm.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
@@ -749,15 +752,17 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 /// Levenberg–Marquardt on the weighted residuals e = sqrt(w) (η(θ) − y) in the scaled
-/// coordinates z ∈ [0,1]^d, from θ0: central-difference Jacobian (step `h` scaled units, 2d
-/// simulations per iteration, in parallel), damping λ·diag(JᵀJ), steps clipped to the box.
-/// A least-squares polish for sharp minima of dense data, where a derivative-free quadratic
-/// model stalls. Returns the best point seen. The step must stay well above the integrator's
-/// noise: at 2e-3 scaled units the residual differences of a damping rate were comparable with
-/// it and the polish stalled 280 SSE units above the truth (dense diag_bump + diag_rough data);
-/// 1e-2 reaches it.
+/// coordinates z ∈ [0,1]^d, from θ0 (minimiseOnSubspace on the whole box): a central-difference
+/// Jacobian (step `h` scaled units, 2d simulations, in parallel), then Broyden updates after
+/// every trial point until the carried Jacobian finds no better point or only a small gain
+/// (fresh differences then); damping λ·diag(JᵀJ), steps clipped to the box. A least-squares
+/// polish for sharp minima of dense data, where a derivative-free quadratic model stalls. Returns
+/// the best point seen. The step must stay well above the integrator's noise: at 2e-3 scaled
+/// units the residual differences of a damping rate were comparable with it and the polish
+/// stalled 280 SSE units above the truth (dense diag_bump + diag_rough data); 1e-2 reaches it.
 StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h, double rel_gain) {
   const std::size_t d = theta0.size();
+  const long dl = static_cast<long>(d);
   const auto& lo = obj.lower();
   const auto& up = obj.upper();
   const auto& y = obj.measured();
@@ -767,8 +772,10 @@ StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double
     for (std::size_t k = 0; k < d; ++k) th[k] = lo[k] + std::clamp(z[static_cast<long>(k)], 0.0, 1.0) * (up[k] - lo[k]);
     return th;
   };
-  auto residual = [&](const std::vector<double>& th, Eigen::VectorXd& e) {
-    const auto eta = obj.predict(th);
+  std::atomic<int> runs{0};
+  const ScaledResiduals residual = [&](const Eigen::VectorXd& z, Eigen::VectorXd& e) {
+    ++runs;
+    const auto eta = obj.predict(toTheta(z));
     if (eta.empty()) return false;
     e.resize(static_cast<long>(y.size()));
     for (std::size_t i = 0; i < y.size(); ++i) e[static_cast<long>(i)] = std::sqrt(w[i]) * (eta[i] - y[i]);
@@ -778,58 +785,22 @@ StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double
   res.start = theta0;
   res.theta = theta0;
   res.status = "LM_POLISH";
-  Eigen::VectorXd z(static_cast<long>(d));
-  for (std::size_t k = 0; k < d; ++k) z[static_cast<long>(k)] = (theta0[k] - lo[k]) / (up[k] - lo[k]);
-  Eigen::VectorXd e;
-  if (!residual(theta0, e)) {
-    res.sse = std::numeric_limits<double>::infinity();
-    return res;
-  }
-  res.evaluations = 1;
-  double sse = e.squaredNorm(), lambda = 1e-3;
-  for (int it = 0; it < 30; ++it) {
-    Eigen::MatrixXd J(e.size(), static_cast<long>(d));
-    std::vector<Eigen::VectorXd> ep(2 * d);
-    std::vector<char> ok(2 * d, 0);
-    parallelFor(2 * d, threads, [&](std::size_t t, int) {
-      Eigen::VectorXd zz = z;
-      const long k = static_cast<long>(t / 2);
-      zz[k] += (t % 2 == 0 ? h : -h);
-      ok[t] = residual(toTheta(zz), ep[t]);
-    });
-    res.evaluations += static_cast<int>(2 * d);
-    bool good = true;
-    for (std::size_t k = 0; k < d && good; ++k) {
-      if (!ok[2 * k] || !ok[2 * k + 1]) good = false;
-      else J.col(static_cast<long>(k)) = (ep[2 * k] - ep[2 * k + 1]) / (2 * h);
-    }
-    if (!good) break;
-    const Eigen::MatrixXd A = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * e;
-    bool improved = false;
-    for (int tries = 0; tries < 8 && !improved; ++tries) {
-      Eigen::MatrixXd Al = A;
-      for (long k = 0; k < Al.rows(); ++k) Al(k, k) += lambda * std::max(A(k, k), 1e-12);
-      const Eigen::VectorXd step = Al.ldlt().solve(-g);
-      Eigen::VectorXd zn = (z + step).cwiseMax(0.0).cwiseMin(1.0);
-      Eigen::VectorXd en;
-      ++res.evaluations;
-      if (residual(toTheta(zn), en) && en.squaredNorm() < sse) {
-        const double rel = (sse - en.squaredNorm()) / sse;
-        z = zn;
-        e = en;
-        sse = en.squaredNorm();
-        lambda = std::max(lambda / 10, 1e-9);
-        improved = true;
-        if (rel < rel_gain) it = 1000;  // converged
-      } else {
-        lambda *= 10;
-      }
-    }
-    if (!improved) break;
-  }
-  res.theta = toTheta(z);
-  res.sse = sse;
+  Eigen::VectorXd z(dl), e;
+  for (std::size_t k = 0; k < d; ++k) z[static_cast<long>(k)] = std::clamp((theta0[k] - lo[k]) / (up[k] - lo[k]), 0.0, 1.0);
+  SubspaceLmSettings set;
+  set.tries = 8;
+  set.min_rel_gain = rel_gain;
+  set.converge_on_fresh = true;
+  set.lower = Eigen::VectorXd::Zero(dl);
+  set.upper = Eigen::VectorXd::Ones(dl);
+  set.threads = threads;
+  double sse = 0.0;
+  SubspaceJacobian jac;
+  const bool ok = minimiseOnSubspace(residual, Eigen::VectorXd::Zero(dl), Eigen::MatrixXd::Identity(dl, dl),
+                                     Eigen::VectorXd::Constant(dl, h), 30, 0.0, z, e, sse, &jac, set);
+  res.evaluations = runs.load();
+  res.sse = ok ? sse : std::numeric_limits<double>::infinity();
+  if (ok) res.theta = toTheta(z);
   return res;
 }
 
@@ -1361,11 +1332,15 @@ void CalibrationRun::jointRegion(const BoxProblem& bp, nlohmann::json& stage) {
       [&](std::size_t done, std::size_t total) { report("region: sweeps", done, total); });
   std::vector<RaySweep> sweeps;
   for (const auto& v : packed) sweeps.push_back(unpackRay(v));
+  // A smooth SSE (frozen steps): forward differences are enough for the traces' Jacobians.
+  JointRegionOptions traceOptions = options_.joint;
+  traceOptions.forward_differences = objective.stepsFrozen();
+  stage["ridge_differences"] = traceOptions.forward_differences ? "forward" : "central";
   const auto packed_traces = distributedMap(
       2 * ridgeAxes(plan, options_.joint).size(), options_.threads,
       [&](std::size_t i, int) {
         return packTrace(calcRidgeTrace([&](const std::vector<double>& th) { return objective.residuals(th); }, plan, sweeps,
-                                        static_cast<int>(i), options_.joint));
+                                        static_cast<int>(i), traceOptions));
       },
       [&](std::size_t done, std::size_t total) { report("region: ridges", done, total); });
   std::vector<RidgeTrace> traces;
@@ -1540,18 +1515,23 @@ void CalibrationRun::profile() {
     evaluatedPoints(pts, f);
     const LabObjective& objective = *objective_;
     const ProfilePlan plan = planProfile(pts, f, n_, objective.lower(), objective.upper(), options_.profile);
+    // A smooth SSE (frozen steps): forward differences are enough for the profile points' Jacobians.
+    ProfileOptions po = options_.profile;
+    po.forward_differences = objective.stepsFrozen();
     const auto packed = distributedMap(
         2 * d_, options_.threads,
         [&](std::size_t i, int) {
           return packProfileEnd(refineProfileEnd([&](const std::vector<double>& th) { return objective.residuals(th); }, plan,
-                                                 static_cast<int>(i), options_.profile));
+                                                 static_cast<int>(i), po));
         },
         [&](std::size_t done, std::size_t total) { report("profile", done, total); });
     std::vector<ProfileEnd> ends;
     for (const auto& v : packed) ends.push_back(unpackProfileEnd(v));
     res_.profile = collectProfile(plan, ends, options_.profile);
     rootWrites([&] {
-      writeFileAtomic(profile_path.string(), nlohmann::json{{"fingerprint", fingerprint_}, {"profile", res_.profile.toJson()}}.dump(2) + "\n");
+      writeFileAtomic(profile_path.string(),
+                      nlohmann::json{{"fingerprint", fingerprint_}, {"profile", res_.profile.toJson()}, {"differences", po.forward_differences ? "forward" : "central"}}
+                              .dump(2) + "\n");
     });
   }
   res_.stage_wall_s.push_back({"profile", secondsSince(t0)});

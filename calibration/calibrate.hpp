@@ -358,9 +358,10 @@ inline constexpr double kPolishStep = 1e-2;
 inline constexpr double kPolishStepFrozen = 1e-3;
 
 /// Levenberg–Marquardt on the weighted residuals sqrt(w) (η(θ) − y) of `obj` from `theta0`, in the
-/// scaled coordinates [0,1]^d with central differences of step `h` (2d runs per iteration, on
-/// `threads` workers), steps clipped to the box; at most 30 iterations, and it stops when an
-/// accepted step gains less than `rel_gain` × SSE. Returns the best point seen (status
+/// scaled coordinates [0,1]^d: central differences of step `h` (2d runs, on `threads` workers),
+/// then Broyden updates after every trial point, fresh differences when the carried Jacobian
+/// finds no better point (minimiseOnSubspace); steps clipped to the box; at most 30 iterations,
+/// and it stops when a step from a fresh Jacobian gains less than `rel_gain` × SSE. Returns the best point seen (status
 /// "LM_POLISH"); sse is infinite when the run at theta0 fails.
 StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h = kPolishStep,
                                double rel_gain = 1e-9);

@@ -144,12 +144,14 @@ bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const E
                   const ProfilePlan& plan, const ProfileOptions& options, SubspaceJacobian& jac, Eigen::VectorXd& u, double& f,
                   const std::function<std::vector<Eigen::VectorXd>()>& starts) {
   Eigen::VectorXd r;
-  bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, u, r, f, &jac);
+  SubspaceLmSettings lm;
+  lm.forward = options.forward_differences;
+  bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, u, r, f, &jac, lm);
   if (ok && f > plan.threshold && options.polish_iterations > 0) {
     Eigen::VectorXd up = u, rp;
     double fp = 0.0;
     jac.clear();
-    if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp, &jac) && fp < f) {
+    if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp, &jac, lm) && fp < f) {
       f = fp;
       u = up;
     }
@@ -158,7 +160,7 @@ bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const E
   for (const Eigen::VectorXd& start : starts()) {
     Eigen::VectorXd ur = start, rr;
     double fr = 0.0;
-    if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr, &jac) && (!ok || fr < f)) {
+    if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr, &jac, lm) && (!ok || fr < f)) {
       ok = true;
       f = fr;
       u = ur;

@@ -59,6 +59,10 @@ struct ProfileOptions {
   int lm_iterations = 2;  ///< Levenberg–Marquardt iterations per profile point, >= 1
   int restarts = 2;       ///< extra starts of a profile point whose warm start ends outside, >= 0
   int polish_iterations = 2;  ///< further LM iterations, from the warm start's end, when it ends outside, >= 0
+  /// Forward differences (d − 1 runs per Jacobian, not 2(d − 1)): for a smooth SSE (frozen steps;
+  /// calibrateAssembly sets it then, and records it in profile.json, not in the options: it
+  /// follows from the steps).
+  bool forward_differences = false;
   void validate() const;
   nlohmann::json toJson() const;
 };

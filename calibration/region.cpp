@@ -483,20 +483,34 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
   // point that lands outside the contour is re-minimised with fresh differences before it counts.
   SubspaceJacobian jac;
   if (plan.jacobian.cols() == d && plan.jacobian.allFinite()) jac.J = plan.jacobian * B;
+  SubspaceLmSettings lm;
+  lm.forward = options.forward_differences;
   auto floorAt = [&](double tt, Eigen::VectorXd& un, Eigen::VectorXd& r, double& f) {
     const int computed = jac.computed;
-    if (!minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, un, r, f, &jac)) return false;
+    if (!minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, un, r, f, &jac, lm)) return false;
     if (f > T && jac.computed == computed) {
       jac.clear();
       Eigen::VectorXd uf = un, rf;
       double ff = 0.0;
-      if (minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, uf, rf, ff, &jac) && ff < f) {
+      if (minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, uf, rf, ff, &jac, lm) && ff < f) {
         un = uf;
         r = rf;
         f = ff;
       }
     }
     return true;
+  };
+  // Whether a floor point outside the contour at t_out continues the rise of the floor so far: its
+  // √(SSE − SSE_min) at most twice as far above the last floor point's as the line through the
+  // last two (or through the optimum, where it is 0) predicts. Then the trace has reached the
+  // contour's end, and the crossing is interpolated; a point far above that line may have left a
+  // bending ridge, and the step is halved instead.
+  double t_before = 0.0, f_before = p.sse_min;  // the floor point before the last one
+  auto continuesTheRise = [&](double f_out, double t_out) {
+    const double g_last = std::sqrt(std::max(prev_sse - p.sse_min, 0.0)), g_before = std::sqrt(std::max(f_before - p.sse_min, 0.0));
+    if (!(t > t_before)) return false;
+    const double slope = std::max((g_last - g_before) / (t - t_before), 0.0);
+    return std::sqrt(f_out - p.sse_min) <= g_last + 2.0 * slope * (t_out - t);
   };
   for (int k = 0; k < options.ridge_steps; ++k) {
     if (t > reach) {
@@ -514,16 +528,18 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
         return tr;
       }
     }
-    if (f > T && step > min_step) {
-      // A step that lands outside may have jumped off a thin, bending ridge rather than reached
-      // the contour's end: halve it, from the last floor point, before concluding (down to 1/16
-      // of the first step).
+    if (f > T && step > min_step && !continuesTheRise(f, t_next)) {
+      // A step that lands far outside may have jumped off a thin, bending ridge rather than
+      // reached the contour's end: halve it, from the last floor point, before concluding (down
+      // to 1/16 of the first step).
       step *= 0.5;
       continue;
     }
     u_prev = u;
     u = un;
     prev_step = step;
+    t_before = t;
+    f_before = prev_sse;
     t = t_next;
     tr.t.push_back(t);
     tr.z.push_back(point(t, u));
@@ -541,6 +557,12 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
     prev_sse = f;
     if (rise < 0.5 * sigma2) step *= 1.5;
     else if (rise > 3.0 * sigma2) step *= 0.6;
+    // Near the end, aim just past the crossing that the line through the last two floor points
+    // (in √(SSE − SSE_min)) predicts, so that the next point closes the trace.
+    const double g_last = std::sqrt(std::max(f - p.sse_min, 0.0)), g_before = std::sqrt(std::max(f_before - p.sse_min, 0.0));
+    const double slope = (g_last - g_before) / (t - t_before), g_T = std::sqrt(T - p.sse_min);
+    if (slope > 0 && (g_T - g_last) / slope < 1.5 * step)
+      step = std::max(1.15 * (g_T - g_last) / slope, min_step);
   }
   if (t > reach) tr.clipped = true;
   else tr.message = "the ridge trace used its " + std::to_string(options.ridge_steps) + " steps inside the contour";

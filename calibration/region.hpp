@@ -150,6 +150,10 @@ struct JointRegionOptions {
   int max_evaluations = 40;     ///< per sweep, >= 2
   double ridge_ratio = 100.0;   ///< trace every axis with λ_i <= ridge_ratio · λ_min, >= 1
   int ridge_steps = 30;         ///< steps per ridge trace, halvings included (0: no traces), >= 0
+  /// Forward differences in the ridge traces (d − 1 runs per Jacobian, not 2(d − 1)): for a smooth
+  /// SSE (frozen steps; calibrateAssembly sets it then, and records it in the stage file, not
+  /// in the options: it follows from the steps).
+  bool forward_differences = false;
   /// Throws InputError whose where() is "joint_region.<field>" (common/validate.hpp).
   void validate() const;
   nlohmann::json toJson() const;

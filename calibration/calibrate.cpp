@@ -706,7 +706,7 @@ RidgeTrace unpackTrace(const std::vector<double>& v, int d) {
 }
 
 std::vector<double> packProfileEnd(const ProfileEnd& e) {
-  return Packer().put(e.theta).put(e.sse).put(e.at_bound ? 1.0 : 0.0).put(e.evaluations).put(e.steps_taken).put(e.jacobians).take();
+  return Packer().put(e.theta).put(e.sse).put(e.at_bound ? 1.0 : 0.0).put(e.evaluations).put(e.steps_taken).put(e.jacobians).put(e.outside_points).take();
 }
 ProfileEnd unpackProfileEnd(const std::vector<double>& v) {
   Unpacker u(v);
@@ -717,6 +717,7 @@ ProfileEnd unpackProfileEnd(const std::vector<double>& v) {
   e.evaluations = static_cast<int>(u.integer());
   e.steps_taken = static_cast<int>(u.integer());
   e.jacobians = static_cast<int>(u.integer());
+  e.outside_points = static_cast<int>(u.integer());
   return e;
 }
 

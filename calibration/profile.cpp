@@ -233,16 +233,19 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   // the end is where g = g_T = sqrt(threshold − SSE*). Secant steps on the last two inside points
   // while nothing outside is known (at most 4 times the distance covered, and to the bound), then
   // regula falsi in the bracket, kept 10 % inside it; stop when the bracket is below 1 % of the
-  // interval's width.
+  // interval's width, or, before anything outside is known, when the secant puts the end within
+  // that distance of the last inside point.
   const double g_T = std::sqrt(plan.threshold - plan.sse_best);
   auto gOf = [&](double f) { return std::sqrt(std::max(f - plan.sse_best, 0.0)); };
-  double best_v = 0.0;  // v at the best fit: the other end of the secant to start with
+  // v at the best fit (the evaluated point of lowest SSE; it holds the optimum), where g = 0: the
+  // other end of the secant to start with.
+  double best_v = 0.0;
   {
-    const auto& lo = plan.low_point[jj];
-    const auto& hi = plan.high_point[jj];
-    best_v = 0.5 * ((lo[jj] - plan.lower[jj]) / (plan.upper[jj] - plan.lower[jj]) + (hi[jj] - plan.lower[jj]) / (plan.upper[jj] - plan.lower[jj]));
+    const auto best = std::min_element(plan.sse.begin(), plan.sse.end()) - plan.sse.begin();
+    best_v = (plan.points(best, j) - plan.lower[jj]) / (plan.upper[jj] - plan.lower[jj]);
   }
   double v_in = z(j), g_in = gOf(end.sse), v_prev = best_v, g_prev = 0.0;
+  bool in_is_floor = false;  // v_in is a profile point (not the evaluated point the end starts from)
   bool have_out = false;
   double v_out = bound, g_out = 0.0;
   const double tol = std::max(0.01 * std::max(width(j), 1e-3), 1e-9);
@@ -281,8 +284,15 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     double target;
     if (!have_out) {
       const double dist = std::abs(v_in - v_prev);
-      double reach = dist > 0.0 && g_in > g_prev ? (g_T - g_in) * dist / (g_in - g_prev) : 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08));
-      reach = std::clamp(reach, 0.05 * std::max(width(j), 0.02), 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08)));
+      // The last inside point is within the tolerance of where the secant puts the end: it is the
+      // end (an outside point to bracket it would cost a polish and restarts, for < 1 % of the width).
+      if (dist > 0.0 && g_in > g_prev && step > 0 && (g_T - g_in) * dist / (g_in - g_prev) < tol) break;
+      const bool secant = dist > 0.0 && g_in > g_prev;
+      double reach = secant ? (g_T - g_in) * dist / (g_in - g_prev) : 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08));
+      // A secant that puts the end close ahead is followed (down to the tolerance): a step
+      // stretched to a minimum length would land outside, and an outside point costs a polish
+      // and restarts.
+      reach = std::clamp(reach, secant ? tol : 0.05 * std::max(width(j), 0.02), 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08)));
       target = std::clamp(v_in + s * reach, 0.0, 1.0);
     } else {
       if (std::abs(v_out - v_in) < tol) break;
@@ -298,8 +308,12 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
       return restartsNear(target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un);
     });
     if (ok && f <= plan.threshold) {
-      v_prev = v_in;
-      g_prev = g_in;
+      // The secant's other point: the last profile point, or, after the first, the best fit (g =
+      // 0), not the evaluated point the end started from, whose SSE is above the profile's there
+      // and would flatten the secant into overshooting.
+      v_prev = in_is_floor ? v_in : best_v;
+      g_prev = in_is_floor ? g_in : 0.0;
+      in_is_floor = true;
       v_in = target;
       g_in = gOf(f);
       u = un;
@@ -312,6 +326,7 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
         break;
       }
     } else {
+      ++end.outside_points;
       have_out = true;
       v_out = target;
       g_out = ok ? gOf(f) : std::numeric_limits<double>::infinity();
@@ -346,6 +361,7 @@ ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<Profi
     out.end_evaluations.push_back(e.evaluations);
     out.end_steps.push_back(e.steps_taken);
     out.end_jacobians.push_back(e.jacobians);
+    out.end_outside.push_back(e.outside_points);
   }
   return out;
 }
@@ -357,7 +373,8 @@ nlohmann::json ProfileIntervals::toJson() const {
           {"lower", lower},       {"upper", upper},
           {"lower_at_bound", lower_at_bound}, {"upper_at_bound", upper_at_bound},
           {"evaluations", evaluations}, {"end_evaluations", end_evaluations},
-          {"end_points", end_steps},    {"end_jacobians", end_jacobians}};
+          {"end_points", end_steps},    {"end_jacobians", end_jacobians},
+          {"end_outside_points", end_outside}};
 }
 
 ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
@@ -376,6 +393,7 @@ ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
   p.end_evaluations = j.value("end_evaluations", std::vector<int>{});
   p.end_steps = j.value("end_points", std::vector<int>{});
   p.end_jacobians = j.value("end_jacobians", std::vector<int>{});
+  p.end_outside = j.value("end_outside_points", std::vector<int>{});
   return p;
 }
 

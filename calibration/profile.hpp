@@ -89,6 +89,7 @@ struct ProfileEnd {
   int evaluations = 0;
   int steps_taken = 0;         ///< profile points that moved the end
   int jacobians = 0;           ///< finite-difference Jacobians computed (the rest carried, subspace_lm.hpp)
+  int outside_points = 0;      ///< profile points that landed outside the threshold (brackets of the end)
 };
 
 /// Step 2 for end `index` in [0, 2d): parameter index / 2, lower end for even indices.
@@ -101,7 +102,7 @@ struct ProfileIntervals {
   int dof = 0, evaluations = 0;
   /// Per end, in index order (parameter j's lower end at 2j): simulations, profile points that
   /// moved the end, finite-difference Jacobians. Empty when read from an older profile.json.
-  std::vector<int> end_evaluations, end_steps, end_jacobians;
+  std::vector<int> end_evaluations, end_steps, end_jacobians, end_outside;
   nlohmann::json toJson() const;
   static ProfileIntervals fromJson(const nlohmann::json& j);
 };

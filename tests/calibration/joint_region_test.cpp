@@ -173,9 +173,10 @@ TEST(JointRegion, LinearGaussianRidgeIntervalsWithinTenPercentOfExact) {
       EXPECT_NEAR(profile.lower[static_cast<std::size_t>(j)], t_exact[j].lo, 0.02 * width) << "seed " << seed << " theta" << j + 1;
       EXPECT_NEAR(profile.upper[static_cast<std::size_t>(j)], t_exact[j].hi, 0.02 * width) << "seed " << seed << " theta" << j + 1;
       // Never beyond the exact ends (every end is a point inside the threshold; the threshold rests
-      // on the best evaluated SSE, a hair above the exact minimum, hence the 1e-4 of slack).
-      EXPECT_GE(profile.lower[static_cast<std::size_t>(j)], t_exact[j].lo - 1e-4 * width);
-      EXPECT_LE(profile.upper[static_cast<std::size_t>(j)], t_exact[j].hi + 1e-4 * width);
+      // on the best evaluated SSE, a hair above the exact minimum, and an end the secant puts on
+      // the crossing lies on that threshold, hence the 1e-3 of slack).
+      EXPECT_GE(profile.lower[static_cast<std::size_t>(j)], t_exact[j].lo - 1e-3 * width);
+      EXPECT_LE(profile.upper[static_cast<std::size_t>(j)], t_exact[j].hi + 1e-3 * width);
     }
     for (int j = 0; j < 2; ++j) {
       const double width = exact[j].hi - exact[j].lo;

@@ -166,3 +166,38 @@ TEST(Profile, CarriedJacobianReachesTheSameFloorForFewerRuns) {
   EXPECT_GE(jac.computed, 1);
   EXPECT_GT(jac.reused, jac.computed);
 }
+
+// On a quadratic profile the secant through two profile points lands on the crossing: the end
+// stops there, within 1 % of the width, without an outside point to bracket it (whose polish and
+// restarts would cost more than the end's other points together).
+TEST(Profile, AnEndTheSecantPutsOnTheCrossingStopsWithoutAnOutsidePoint) {
+  Eigen::Matrix2d H;
+  H << 1e4, 0.6e4, 0.6e4, 1e4;
+  const Eigen::Vector2d m(0.5, 0.5);
+  const Eigen::Matrix2d R = H.llt().matrixU();
+  auto res = [&](const std::vector<double>& z) {
+    const Eigen::Vector2d e = R * (Eigen::Vector2d(z[0], z[1]) - m);
+    return std::vector<double>{e(0), e(1), std::sqrt(46.0)};
+  };
+  // The design and the optimum, as a calibration's evaluated points hold it.
+  Eigen::MatrixXd x(61, 2);
+  x.topRows(60) = latinHypercube(60, {0.45, 0.45}, {0.55, 0.55}, 4);
+  x.row(60) << m(0), m(1);
+  std::vector<double> sse;
+  for (Eigen::Index k = 0; k < x.rows(); ++k) {
+    const auto r = res({x(k, 0), x(k, 1)});
+    sse.push_back(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  }
+  const ProfileOptions po;
+  const ProfilePlan plan = planProfile(x, sse, kN, {0.0, 0.0}, {1.0, 1.0}, po);
+  const double exact_half = std::sqrt((plan.threshold - 46.0) * H.inverse()(0, 0));
+  for (int i = 0; i < 4; ++i) {
+    const ProfileEnd e = refineProfileEnd(res, plan, i, po);
+    const int j = i / 2;
+    const double exact = 0.5 + (i % 2 == 0 ? -exact_half : exact_half);
+    EXPECT_NEAR(e.theta[static_cast<std::size_t>(j)], exact, 0.01 * 2 * exact_half) << "end " << i;
+    EXPECT_LE(std::abs(e.theta[static_cast<std::size_t>(j)] - 0.5), exact_half + 1e-9) << "end " << i << " overshoots";
+    EXPECT_GE(e.steps_taken, 1) << "end " << i;
+    EXPECT_EQ(e.outside_points, 0) << "end " << i << " (" << e.evaluations << " runs)";
+  }
+}

@@ -7,13 +7,11 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "calibration/adaptive_design.hpp"
 #include "calibration/gibbs.hpp"
 #include "calibration/lhs.hpp"
 #include "calibration/profile.hpp"
-#include "calibration/subspace_lm.hpp"
 #include "calibration/summary.hpp"
 #include "common/errors.hpp"
 
@@ -119,52 +117,6 @@ TEST(Profile, RefinementReachesTheEndsTheDesignMissed) {
   const auto back = ProfileIntervals::fromJson(nlohmann::json::parse(prof.toJson().dump()));
   EXPECT_EQ(back.lower, prof.lower);
   EXPECT_EQ(back.upper_at_bound, prof.upper_at_bound);
-}
-
-// The Jacobian carried along a profile's points (subspace_lm.hpp): on a smooth nonlinear fit,
-// each point of a sequence, with the profile's few iterations, ends as close to the true floor
-// as with fresh differences at every iteration, for far fewer simulations.
-TEST(Profile, CarriedJacobianReachesTheSameFloorForFewerRuns) {
-  // r_i = y_i − u1 exp(−u2 t_i) − v sin(3 t_i), the profile parameter v in z(0), u = z(1), z(2).
-  std::vector<double> t, y;
-  for (int i = 0; i < 40; ++i) {
-    t.push_back(0.1 * i);
-    y.push_back(2.0 * std::exp(-0.7 * t.back()) + 0.3 * std::sin(3.0 * t.back()) + 0.01 * std::cos(17.0 * i));
-  }
-  int runs = 0;
-  const ScaledResiduals res = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) {
-    ++runs;
-    r.resize(static_cast<Eigen::Index>(t.size()));
-    for (std::size_t i = 0; i < t.size(); ++i)
-      r(static_cast<Eigen::Index>(i)) = y[i] - z(1) * std::exp(-z(2) * t[i]) - z(0) * std::sin(3.0 * t[i]);
-    return true;
-  };
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(3, 2);
-  B(1, 0) = B(2, 1) = 1.0;
-  const Eigen::VectorXd h = Eigen::VectorXd::Constant(2, 1e-4);
-  Eigen::VectorXd u_fresh(2), u_carry(2), u_true(2);
-  u_fresh << 2.0, 0.7;
-  u_carry = u_true = u_fresh;
-  SubspaceJacobian jac;
-  int runs_fresh = 0, runs_carry = 0;
-  for (double v = 0.3; v <= 0.6001; v += 0.025) {
-    Eigen::VectorXd z0 = Eigen::VectorXd::Zero(3), r;
-    z0(0) = v;
-    double f_fresh = 0.0, f_carry = 0.0, f_true = 0.0;
-    ASSERT_TRUE(minimiseOnSubspace(res, z0, B, h, 50, 0.0, u_true, r, f_true));
-    runs = 0;
-    ASSERT_TRUE(minimiseOnSubspace(res, z0, B, h, 2, 1e-6, u_fresh, r, f_fresh));
-    runs_fresh += runs;
-    runs = 0;
-    ASSERT_TRUE(minimiseOnSubspace(res, z0, B, h, 2, 1e-6, u_carry, r, f_carry, &jac));
-    runs_carry += runs;
-    const double tol = std::max(2.0 * (f_fresh - f_true), 1e-4 * f_true);
-    EXPECT_LE(f_carry - f_true, tol) << "v = " << v << ": carried " << f_carry << ", fresh " << f_fresh << ", floor " << f_true;
-  }
-  std::printf("carried %d runs, fresh %d\n", runs_carry, runs_fresh);
-  EXPECT_LT(runs_carry, runs_fresh / 2) << runs_carry << " runs carried, " << runs_fresh << " fresh";
-  EXPECT_GE(jac.computed, 1);
-  EXPECT_GT(jac.reused, jac.computed);
 }
 
 // On a quadratic profile the secant through two profile points lands on the crossing: the end

@@ -429,6 +429,32 @@ double crossingOf(const JointRegionPlan& plan, const std::vector<RaySweep>& swee
   return (w.clipped || w.budget_out) ? reach : std::max(w.t_edge, 1e-12);
 }
 
+/// The rise of a ridge trace's floor, followed as a line in g = √(SSE − SSE_min) (exact for a
+/// quadratic profile) through its last two floor points; the optimum (t = 0, g = 0) is the first.
+struct RiseLine {
+  double sse_min = 0.0, threshold = 0.0;
+  double t_before = 0.0, f_before = 0.0, t_last = 0.0, f_last = 0.0;
+  RiseLine(double sse_min_, double threshold_)
+      : sse_min(sse_min_), threshold(threshold_), f_before(sse_min_), f_last(sse_min_) {}
+  double g(double f) const { return std::sqrt(std::max(f - sse_min, 0.0)); }
+  /// dg/dt through the last two floor points (0 before there are two).
+  double slope() const { return t_last > t_before ? (g(f_last) - g(f_before)) / (t_last - t_before) : 0.0; }
+  void push(double t, double f) {
+    t_before = t_last;
+    f_before = f_last;
+    t_last = t;
+    f_last = f;
+  }
+  /// Whether a floor point outside the contour at t_out continues the rise: its g at most twice as
+  /// far above the last point's as the line predicts. A point far above it may have left a
+  /// bending ridge.
+  bool continues(double f_out, double t_out) const {
+    return t_last > t_before && g(f_out) <= g(f_last) + 2.0 * std::max(slope(), 0.0) * (t_out - t_last);
+  }
+  /// How far ahead of the last point the line reaches the threshold (+inf when it does not rise).
+  double reach() const { return slope() > 0 ? (g(threshold) - g(f_last)) / slope() : std::numeric_limits<double>::infinity(); }
+};
+
 }  // namespace
 
 RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
@@ -474,7 +500,7 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
   }
   double step = 0.25 * crossingOf(plan, sweeps, i, s);
   const double min_step = step / 16.0;
-  double t = 0.0, prev_sse = p.sse_min, prev_step = step;
+  double t = 0.0, prev_step = step;
   Eigen::VectorXd u = Eigen::VectorXd::Zero(d - 1), u_prev = u;
   // The floor at t: Levenberg–Marquardt on u from `un` (at most 4 iterations). False when the
   // simulation at the start point fails.
@@ -500,18 +526,7 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
     }
     return true;
   };
-  // Whether a floor point outside the contour at t_out continues the rise of the floor so far: its
-  // √(SSE − SSE_min) at most twice as far above the last floor point's as the line through the
-  // last two (or through the optimum, where it is 0) predicts. Then the trace has reached the
-  // contour's end, and the crossing is interpolated; a point far above that line may have left a
-  // bending ridge, and the step is halved instead.
-  double t_before = 0.0, f_before = p.sse_min;  // the floor point before the last one
-  auto continuesTheRise = [&](double f_out, double t_out) {
-    const double g_last = std::sqrt(std::max(prev_sse - p.sse_min, 0.0)), g_before = std::sqrt(std::max(f_before - p.sse_min, 0.0));
-    if (!(t > t_before)) return false;
-    const double slope = std::max((g_last - g_before) / (t - t_before), 0.0);
-    return std::sqrt(f_out - p.sse_min) <= g_last + 2.0 * slope * (t_out - t);
-  };
+  RiseLine rise(p.sse_min, T);
   for (int k = 0; k < options.ridge_steps; ++k) {
     if (t > reach) {
       tr.clipped = true;
@@ -528,41 +543,32 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
         return tr;
       }
     }
-    if (f > T && step > min_step && !continuesTheRise(f, t_next)) {
-      // A step that lands far outside may have jumped off a thin, bending ridge rather than
-      // reached the contour's end: halve it, from the last floor point, before concluding (down
-      // to 1/16 of the first step).
+    if (f > T && step > min_step && !rise.continues(f, t_next)) {
+      // A step that lands far above the floor's rise may have jumped off a thin, bending ridge
+      // rather than reached the contour's end: halve it, from the last floor point, before
+      // concluding (down to 1/16 of the first step). One that continues the rise closes the trace.
       step *= 0.5;
       continue;
     }
     u_prev = u;
     u = un;
     prev_step = step;
-    t_before = t;
-    f_before = prev_sse;
     t = t_next;
+    rise.push(t, f);
     tr.t.push_back(t);
     tr.z.push_back(point(t, u));
     tr.sse.push_back(f);
-    if (f > T) {
+    if (f > T) {  // the crossing, interpolated between the last two floor points
       tr.closed = true;
-      const double t_in = tr.t.size() >= 2 ? tr.t[tr.t.size() - 2] : 0.0;
-      const double f_in = tr.t.size() >= 2 ? tr.sse[tr.sse.size() - 2] : p.sse_min;
-      const double g_in = std::sqrt(std::max(f_in - p.sse_min, 0.0)), g_out = std::sqrt(f - p.sse_min),
-                   g_T = std::sqrt(T - p.sse_min);
-      tr.crossing = g_out > g_in ? t_in + (g_T - g_in) / (g_out - g_in) * (t - t_in) : t;
+      const double g_in = rise.g(rise.f_before), g_out = rise.g(f);
+      tr.crossing = g_out > g_in ? rise.t_before + (rise.g(T) - g_in) / (g_out - g_in) * (t - rise.t_before) : t;
       return tr;
     }
-    const double rise = f - prev_sse;
-    prev_sse = f;
-    if (rise < 0.5 * sigma2) step *= 1.5;
-    else if (rise > 3.0 * sigma2) step *= 0.6;
-    // Near the end, aim just past the crossing that the line through the last two floor points
-    // (in √(SSE − SSE_min)) predicts, so that the next point closes the trace.
-    const double g_last = std::sqrt(std::max(f - p.sse_min, 0.0)), g_before = std::sqrt(std::max(f_before - p.sse_min, 0.0));
-    const double slope = (g_last - g_before) / (t - t_before), g_T = std::sqrt(T - p.sse_min);
-    if (slope > 0 && (g_T - g_last) / slope < 1.5 * step)
-      step = std::max(1.15 * (g_T - g_last) / slope, min_step);
+    const double risen = f - rise.f_before;
+    if (risen < 0.5 * sigma2) step *= 1.5;
+    else if (risen > 3.0 * sigma2) step *= 0.6;
+    // Near the end, aim just past the crossing the rise predicts, so that the next point closes the trace.
+    if (rise.reach() < 1.5 * step) step = std::max(1.15 * rise.reach(), min_step);
   }
   if (t > reach) tr.clipped = true;
   else tr.message = "the ridge trace used its " + std::to_string(options.ridge_steps) + " steps inside the contour";

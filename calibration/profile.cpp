@@ -136,6 +136,55 @@ ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>
 
 namespace {
 
+/// θ (physical) in the plan's scaled coordinates z = (θ − lower) / (upper − lower).
+Eigen::VectorXd scaledOf(const ProfilePlan& plan, const std::vector<double>& th) {
+  Eigen::VectorXd z(static_cast<Eigen::Index>(plan.lower.size()));
+  for (std::size_t k = 0; k < plan.lower.size(); ++k)
+    z(static_cast<Eigen::Index>(k)) = (th[k] - plan.lower[k]) / (plan.upper[k] - plan.lower[k]);
+  return z;
+}
+
+/// A scaled point back in physical units, clamped to the bounds (the upper bound exactly at z = 1).
+std::vector<double> physicalOf(const ProfilePlan& plan, const Eigen::VectorXd& z) {
+  std::vector<double> th(plan.lower.size());
+  for (std::size_t k = 0; k < th.size(); ++k) {
+    const double zk = std::clamp(z(static_cast<Eigen::Index>(k)), 0.0, 1.0);
+    th[k] = zk >= 1.0 ? plan.upper[k] : plan.lower[k] + zk * (plan.upper[k] - plan.lower[k]);
+  }
+  return th;
+}
+
+/// Restart points for a profile point of parameter j at v (scaled): the evaluated points of lowest
+/// SSE with |z_j − v| <= band, their other coordinates (not the warm start's own, nor each
+/// other's), best first, at most `count`.
+std::vector<Eigen::VectorXd> restartsNear(const ProfilePlan& plan, int j, double v, double band, const Eigen::VectorXd& warm,
+                                          int count) {
+  const auto d = static_cast<int>(plan.lower.size());
+  std::vector<std::pair<double, Eigen::VectorXd>> cand;
+  for (Eigen::Index q = 0; q < plan.points.rows(); ++q) {
+    const double f = plan.sse[static_cast<std::size_t>(q)];
+    if (!std::isfinite(f)) continue;
+    std::vector<double> th(static_cast<std::size_t>(d));
+    for (int k = 0; k < d; ++k) th[static_cast<std::size_t>(k)] = plan.points(q, k);
+    const Eigen::VectorXd zq = scaledOf(plan, th);
+    if (std::abs(zq(j) - v) > band) continue;
+    Eigen::VectorXd uq(d - 1);
+    for (int k = 0, c = 0; k < d; ++k)
+      if (k != j) uq(c++) = zq(k);
+    if ((uq - warm).norm() < 1e-3) continue;
+    cand.emplace_back(f, uq);
+  }
+  std::stable_sort(cand.begin(), cand.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Eigen::VectorXd> out;
+  for (const auto& c : cand) {
+    if (static_cast<int>(out.size()) >= count) break;
+    bool distinct = true;
+    for (const auto& o : out) distinct = distinct && (o - c.second).norm() >= 1e-3;
+    if (distinct) out.push_back(c.second);
+  }
+  return out;
+}
+
 /// One profile point at z0: the other coordinates u re-minimised from the warm start `u` with the
 /// end's carried Jacobian; a point that ends outside the threshold gets `polish_iterations` more
 /// with a fresh Jacobian (a curved valley, or a stale Jacobian), then the restarts `starts()`
@@ -172,9 +221,9 @@ bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const E
 
 }  // namespace
 
-// About 130 lines, kept whole on purpose: the secant / regula falsi search shares its bracket
-// (v_in, g_in, v_prev, g_prev, v_out, g_out) and the subspace coordinates with the restarts of
-// each step; the scaling helpers and the restart choice are the lambdas above the loop.
+// Kept whole on purpose: the secant / regula falsi search shares its bracket (v_in, g_in, v_prev,
+// g_prev, v_out, g_out) and the subspace coordinates with the restarts of each step; the scaling,
+// the restart choice and one profile point are the functions above.
 ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index, const ProfileOptions& options) {
   options.validate();
   const int d = static_cast<int>(plan.lower.size());
@@ -184,24 +233,8 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   ProfileEnd end;
   end.theta = s < 0 ? plan.low_point[jj] : plan.high_point[jj];
   end.sse = s < 0 ? plan.low_sse[jj] : plan.high_sse[jj];
-  auto scaled = [&](const std::vector<double>& th) {
-    Eigen::VectorXd z(d);
-    for (int k = 0; k < d; ++k) {
-      const auto kk = static_cast<std::size_t>(k);
-      z(k) = (th[kk] - plan.lower[kk]) / (plan.upper[kk] - plan.lower[kk]);
-    }
-    return z;
-  };
-  auto physical = [&](const Eigen::VectorXd& z) {
-    std::vector<double> th(static_cast<std::size_t>(d));
-    for (int k = 0; k < d; ++k) {
-      const auto kk = static_cast<std::size_t>(k);
-      const double zk = std::clamp(z(k), 0.0, 1.0);
-      th[kk] = zk >= 1.0 ? plan.upper[kk] : plan.lower[kk] + zk * (plan.upper[kk] - plan.lower[kk]);
-    }
-    return th;
-  };
-  Eigen::VectorXd z = scaled(end.theta);
+  auto physical = [&](const Eigen::VectorXd& zz) { return physicalOf(plan, zz); };
+  Eigen::VectorXd z = scaledOf(plan, end.theta);
   const double bound = s < 0 ? 0.0 : 1.0;
   if (std::abs(z(j) - bound) < 1e-12) {
     end.at_bound = true;
@@ -252,33 +285,6 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   Eigen::VectorXd u(d - 1);
   for (int k = 0, c = 0; k < d; ++k)
     if (k != j) u(c++) = z(k);
-  // Restart points for a profile point at v: the evaluated points of lowest SSE with |z_j − v| <=
-  // band, their other coordinates (not the warm start's own), best first.
-  auto restartsNear = [&](double v, double band, const Eigen::VectorXd& warm) {
-    std::vector<std::pair<double, Eigen::VectorXd>> cand;
-    for (Eigen::Index q = 0; q < plan.points.rows(); ++q) {
-      const double f = plan.sse[static_cast<std::size_t>(q)];
-      if (!std::isfinite(f)) continue;
-      std::vector<double> th(static_cast<std::size_t>(d));
-      for (int k = 0; k < d; ++k) th[static_cast<std::size_t>(k)] = plan.points(q, k);
-      const Eigen::VectorXd zq = scaled(th);
-      if (std::abs(zq(j) - v) > band) continue;
-      Eigen::VectorXd uq(d - 1);
-      for (int k = 0, c = 0; k < d; ++k)
-        if (k != j) uq(c++) = zq(k);
-      if ((uq - warm).norm() < 1e-3) continue;
-      cand.emplace_back(f, uq);
-    }
-    std::stable_sort(cand.begin(), cand.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<Eigen::VectorXd> out;
-    for (const auto& c : cand) {
-      if (static_cast<int>(out.size()) >= options.restarts) break;
-      bool distinct = true;
-      for (const auto& o : out) distinct = distinct && (o - c.second).norm() >= 1e-3;
-      if (distinct) out.push_back(c.second);
-    }
-    return out;
-  };
   SubspaceJacobian jac;  // carried from one profile point to the next (subspace_lm.hpp)
   for (int step = 0; step < options.steps; ++step) {
     double target;
@@ -305,7 +311,7 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     Eigen::VectorXd un = u;
     double f = 0.0;
     const bool ok = profilePoint(res, z0, B, h, plan, options, jac, un, f, [&] {
-      return restartsNear(target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un);
+      return restartsNear(plan, j, target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un, options.restarts);
     });
     if (ok && f <= plan.threshold) {
       // The secant's other point: the last profile point, or, after the first, the best fit (g =

@@ -1,6 +1,4 @@
 #include "calibration/calibrate.hpp"
-
-#include "calibration/subspace_lm.hpp"
 #include "calibration/folder.hpp"
 
 #include <algorithm>
@@ -756,7 +754,7 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 /// coordinates z ∈ [0,1]^d, from θ0 (minimiseOnSubspace on the whole box): a central-difference
 /// Jacobian (step `h` scaled units, 2d simulations, in parallel), then Broyden updates after
 /// every trial point until the carried Jacobian finds no better point or only a small gain
-/// (fresh differences then); damping λ·diag(JᵀJ), steps clipped to the box. A least-squares
+/// (fresh differences then); damping λ·diag(JᵀJ), a parameter on a bound held there. A least-squares
 /// polish for sharp minima of dense data, where a derivative-free quadratic model stalls. Returns
 /// the best point seen. The step must stay well above the integrator's noise: at 2e-3 scaled
 /// units the residual differences of a damping rate were comparable with it and the polish
@@ -796,9 +794,8 @@ StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double
   set.upper = Eigen::VectorXd::Ones(dl);
   set.threads = threads;
   double sse = 0.0;
-  SubspaceJacobian jac;
   const bool ok = minimiseOnSubspace(residual, Eigen::VectorXd::Zero(dl), Eigen::MatrixXd::Identity(dl, dl),
-                                     Eigen::VectorXd::Constant(dl, h), 30, 0.0, z, e, sse, &jac, set);
+                                     Eigen::VectorXd::Constant(dl, h), 30, 0.0, z, e, sse, nullptr, set);
   res.evaluations = runs.load();
   res.sse = ok ? sse : std::numeric_limits<double>::infinity();
   if (ok) res.theta = toTheta(z);

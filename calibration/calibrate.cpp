@@ -759,7 +759,8 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 /// the best point seen. The step must stay well above the integrator's noise: at 2e-3 scaled
 /// units the residual differences of a damping rate were comparable with it and the polish
 /// stalled 280 SSE units above the truth (dense diag_bump + diag_rough data); 1e-2 reaches it.
-StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h, double rel_gain) {
+StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h, double rel_gain,
+                               SubspaceJacobian* carried) {
   const std::size_t d = theta0.size();
   const long dl = static_cast<long>(d);
   const auto& lo = obj.lower();
@@ -795,7 +796,7 @@ StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double
   set.threads = threads;
   double sse = 0.0;
   const bool ok = minimiseOnSubspace(residual, Eigen::VectorXd::Zero(dl), Eigen::MatrixXd::Identity(dl, dl),
-                                     Eigen::VectorXd::Constant(dl, h), 30, 0.0, z, e, sse, nullptr, set);
+                                     Eigen::VectorXd::Constant(dl, h), 30, 0.0, z, e, sse, carried, set);
   res.evaluations = runs.load();
   res.sse = ok ? sse : std::numeric_limits<double>::infinity();
   if (ok) res.theta = toTheta(z);
@@ -860,6 +861,24 @@ double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g
   for (long i = 0; i < ev.size(); ++i)
     if (ev[i] > tol) s += p[i] * p[i] / ev[i];
   return 0.5 * s;
+}
+
+std::vector<double> probeStepsFromJacobian(const Eigen::MatrixXd& J, double threshold) {
+  const long d = J.cols();
+  std::vector<double> h(static_cast<std::size_t>(d), 1e-2);
+  if (d == 0 || !(threshold > 0) || !J.allFinite()) return h;
+  const Eigen::MatrixXd H = J.transpose() * J;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
+  const Eigen::VectorXd ev = es.eigenvalues();
+  const double tol = std::max(ev.cwiseAbs().maxCoeff(), 1e-300) * 1e-12;
+  for (long k = 0; k < d; ++k) {
+    double c = 0.0;  // (JᵀJ)⁺_kk
+    for (long i = 0; i < d; ++i)
+      if (ev[i] > tol) c += es.eigenvectors()(k, i) * es.eigenvectors()(k, i) / ev[i];
+    const double half = c > 0 ? std::sqrt(threshold * c) : 1.0;
+    h[static_cast<std::size_t>(k)] = std::clamp(half / 10, 1e-4, 1e-2);
+  }
+  return h;
 }
 
 void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift, double shift_floor) {
@@ -995,6 +1014,7 @@ class CalibrationRun {
     /// The shift central differences would show from the roughness alone (gradient errors of
     /// roughness_k / h_k per axis): below it a shift is not resolved. 0 with three points.
     double shift_floor = 0.0;
+    Eigen::MatrixXd jacobian;  ///< the residuals' Jacobian in scaled units (central differences at ±h)
   };
   LabObjective fineObjective(double accuracy) const;
   BiasProbe probeBias(const LabObjective& fine, const std::vector<double>& theta, const std::vector<double>& h, bool five,
@@ -1043,6 +1063,9 @@ class CalibrationRun {
   std::string fingerprint_;  ///< of everything that changes the numbers; every stage file carries it
   CalibrationResult res_;
   nlohmann::json steps_log_ = nlohmann::json::array();  ///< chooseStepAccuracy's tries
+  /// The Jacobian of the last polish on frozen steps (scaled units): the next polish's first, and
+  /// the source of the integrator probes' steps (probeStepsFromJacobian).
+  SubspaceJacobian polish_jacobian_;
 };
 
 /// The resume fingerprint: everything that changes the numbers.
@@ -1162,7 +1185,7 @@ void CalibrationRun::polishOnOwnSteps() {
 /// (only its SSE is on those steps).
 void CalibrationRun::polishFrozen() {
   report("optimum: polish on its own steps", 0, 1);
-  StartResult lm = polishLeastSquares(*objective_, res_.optimum.theta, options_.threads, kPolishStepFrozen);
+  StartResult lm = polishLeastSquares(*objective_, res_.optimum.theta, options_.threads, kPolishStepFrozen, 1e-9, &polish_jacobian_);
   lm.status = "LM_POLISH_FROZEN_STEPS";
   res_.optimum.evaluations += lm.evaluations;
   res_.optimum.starts.push_back(std::move(lm));
@@ -1173,7 +1196,8 @@ void CalibrationRun::polishFrozen() {
 }
 
 /// Steps frozen: is the accuracy they were chosen at enough for these data? The integrator's bias
-/// moves the optimum by the shift of probeBias (steps h = kPolishStepFrozen); the intervals'
+/// moves the optimum by the shift of probeBias (steps h a tenth of the Gauss–Newton half-widths
+/// of the polish's Jacobian, as the final check's are of the profile's); the intervals'
 /// threshold is c s² (profile.hpp, from the optimum's SSE). While the shift exceeds an eighth of
 /// the threshold (so that the final check, with its own probe, stays below a quarter), the steps
 /// are chosen again at a tighter accuracy, accuracy × (threshold / 8 / shift)^(2/3), between a
@@ -1184,7 +1208,12 @@ void CalibrationRun::polishFrozen() {
 void CalibrationRun::chooseStepAccuracy() {
   const double dof = n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : n_;
   const double t = studentQuantile(0.5 + 0.5 * options_.profile.level, dof);
-  std::vector<double> h(d_, kPolishStepFrozen);
+  // The final check (integratorCheck) probes at a tenth of each interval's half-width; so do these
+  // probes, the half-widths from the polish's Jacobian (Gauss–Newton), since the roughness and
+  // the shift depend on the probe's step.
+  const bool have_j = polish_jacobian_.J.rows() == n_ && polish_jacobian_.J.cols() == static_cast<long>(d_);
+  const std::vector<double> h =
+      have_j ? probeStepsFromJacobian(polish_jacobian_.J, t * t * res_.optimum.sse / dof) : std::vector<double>(d_, kPolishStepFrozen);
   double last_shift = 0.0, last_accuracy = 0.0;
   std::vector<double> last_theta;
   Optimum last_optimum;
@@ -1196,7 +1225,8 @@ void CalibrationRun::chooseStepAccuracy() {
     const BiasProbe p = probeBias(fine, res_.optimum.theta, h, true, "optimum: integrator bias");
     if (!p.ok) return;
     steps_log_.push_back({{"accuracy", accuracy}, {"optimum_shift", jsonNumber(p.shift)}, {"threshold", jsonNumber(threshold)},
-                          {"roughness", jsonNumber(p.roughness)}, {"shift_floor", jsonNumber(p.shift_floor)}});
+                          {"roughness", jsonNumber(p.roughness)}, {"shift_floor", jsonNumber(p.shift_floor)},
+                          {"probe_step", jsonNumbers(h)}});
     if (!(p.shift > 4 * p.shift_floor)) {
       // The shift is within what the SSE's roughness lets central differences see (jumps of the
       // model itself, e.g. a tire force that jumps at touch-down between two stage times): no
@@ -1663,6 +1693,7 @@ CalibrationRun::BiasProbe CalibrationRun::probeBias(const LabObjective& fine, co
   }
   p.shift = integratorOptimumShift(J, g);
   p.shift_floor = integratorOptimumShift(J, g_floor);
+  p.jacobian = std::move(J);
   p.ok = true;
   return p;
 }

@@ -42,6 +42,8 @@
 
 namespace dtwin::calib {
 
+struct SubspaceJacobian;  // subspace_lm.hpp
+
 /// One set of measurements tied to the scenario it was measured on (a file of the tidy lab
 /// layout: several channels, any times inside the scenario (off the output grid the run adds
 /// them as extra output times), any number of repetitions).
@@ -309,6 +311,12 @@ double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g
 /// shift_floor, the jitter (the roughness, or the shift when it exceeds 4 × shift_floor), `ok` and the message.
 void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift, double shift_floor = 0.0);
 
+/// Probe steps for probeBias from a residual Jacobian J (n x d, scaled units): a tenth of each
+/// parameter's Gauss–Newton half-width √(threshold · (JᵀJ)⁺_kk), in [1e-4, 1e-2] (1e-2 when J is
+/// empty, not finite or the threshold not positive), the steps the final integrator check takes
+/// from the profile's half-widths.
+std::vector<double> probeStepsFromJacobian(const Eigen::MatrixXd& J, double threshold);
+
 struct CalibrationResult {
   std::string assembly, label;
   std::vector<std::string> names;
@@ -362,9 +370,12 @@ inline constexpr double kPolishStepFrozen = 1e-3;
 /// then Broyden updates after every trial point, fresh differences when the carried Jacobian
 /// finds no better point (minimiseOnSubspace); steps clipped to the box; at most 30 iterations,
 /// and it stops when a step from a fresh Jacobian gains less than `rel_gain` × SSE. Returns the best point seen (status
-/// "LM_POLISH"); sse is infinite when the run at theta0 fails.
+/// "LM_POLISH"); sse is infinite when the run at theta0 fails. With `carried`, its Jacobian (n x d,
+/// scaled units) is the first iteration's and the last one is left in it (subspace_lm.hpp): a second
+/// polish from nearly the same point (e.g. on steps chosen at a tighter accuracy) skips the first
+/// differences, and the probes of the integrator check take their steps from it.
 StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h = kPolishStep,
-                               double rel_gain = 1e-9);
+                               double rel_gain = 1e-9, SubspaceJacobian* carried = nullptr);
 
 using ::dtwin::fnv1a64;  // twin/provenance.hpp
 

@@ -74,6 +74,25 @@ TEST(IntegratorCheck, OptimumShiftIsTheProjectedBiasOfALinearModel) {
   EXPECT_NEAR(dtwin::calib::integratorOptimumShift(J3, g3), shift, 1e-12);
 }
 
+// probeStepsFromJacobian against the closed form for a linear model: the SSE |r0 + J z|² rises by
+// the threshold c along parameter k's profile at z_k = ±√(c (JᵀJ)⁻¹_kk) from the minimum, so the
+// probe step is a tenth of that, clamped to [1e-4, 1e-2]; a parameter the data do not see (a zero
+// column) gets the widest step.
+TEST(IntegratorCheck, ProbeStepsAreATenthOfTheGaussNewtonHalfWidths) {
+  Eigen::MatrixXd J(6, 3);
+  J << 1, 0, 0, 1, 1, 0, 1, 2, 0, 1, 3, 0, 1, 4, 0, 1, 5, 0;
+  J.leftCols(2) *= 400.0;
+  const double c = 4.0;
+  const Eigen::MatrixXd cov = (J.leftCols(2).transpose() * J.leftCols(2)).inverse();
+  const std::vector<double> h = dtwin::calib::probeStepsFromJacobian(J, c);
+  ASSERT_EQ(h.size(), 3u);
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(h[k], std::sqrt(c * cov(k, k)) / 10, 1e-12) << k;
+  EXPECT_DOUBLE_EQ(h[2], 1e-2);
+  // Clamped: a very sharp parameter gets 1e-4, and no threshold gives the widest steps.
+  EXPECT_DOUBLE_EQ(dtwin::calib::probeStepsFromJacobian(J * 1e4, c)[0], 1e-4);
+  EXPECT_DOUBLE_EQ(dtwin::calib::probeStepsFromJacobian(J, 0.0)[1], 1e-2);
+}
+
 TEST(IntegratorCheck, FrozenStepsJudgeByRoughnessAndShift) {
   const std::vector<double> y = {0, 0, 0, 0}, w = {4, 4, 4, 4};
   const std::vector<double> eta = {0.5, -0.5, 0.5, -0.5}, fine = {0.55, -0.45, 0.55, -0.45};

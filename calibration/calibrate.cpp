@@ -759,8 +759,7 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 /// the best point seen. The step must stay well above the integrator's noise: at 2e-3 scaled
 /// units the residual differences of a damping rate were comparable with it and the polish
 /// stalled 280 SSE units above the truth (dense diag_bump + diag_rough data); 1e-2 reaches it.
-StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h, double rel_gain,
-                               SubspaceJacobian* carried) {
+StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, const PolishOptions& options) {
   const std::size_t d = theta0.size();
   const long dl = static_cast<long>(d);
   const auto& lo = obj.lower();
@@ -789,14 +788,15 @@ StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double
   for (std::size_t k = 0; k < d; ++k) z[static_cast<long>(k)] = std::clamp((theta0[k] - lo[k]) / (up[k] - lo[k]), 0.0, 1.0);
   SubspaceLmSettings set;
   set.tries = 8;
-  set.min_rel_gain = rel_gain;
+  set.min_rel_gain = options.rel_gain;
+  set.forward = options.forward;
   set.converge_on_fresh = true;
   set.lower = Eigen::VectorXd::Zero(dl);
   set.upper = Eigen::VectorXd::Ones(dl);
-  set.threads = threads;
+  set.threads = options.threads;
   double sse = 0.0;
   const bool ok = minimiseOnSubspace(residual, Eigen::VectorXd::Zero(dl), Eigen::MatrixXd::Identity(dl, dl),
-                                     Eigen::VectorXd::Constant(dl, h), 30, 0.0, z, e, sse, carried, set);
+                                     Eigen::VectorXd::Constant(dl, options.h), 30, 0.0, z, e, sse, options.carried, set);
   res.evaluations = runs.load();
   res.sse = ok ? sse : std::numeric_limits<double>::infinity();
   if (ok) res.theta = toTheta(z);
@@ -1066,6 +1066,7 @@ class CalibrationRun {
   /// The Jacobian of the last polish on frozen steps (scaled units): the next polish's first, and
   /// the source of the integrator probes' steps (probeStepsFromJacobian).
   SubspaceJacobian polish_jacobian_;
+  std::vector<double> reference_;  ///< the θ the screening's and the starts' steps were frozen at
 };
 
 /// The resume fingerprint: everything that changes the numbers.
@@ -1106,14 +1107,27 @@ void CalibrationRun::objective() {
   fingerprint_ = resumeFingerprint();
   sse_ = [this](const std::vector<double>& th) { return objective_->sse(th); };
   if (options_.steps == "frozen") {
-    // The screening and the optimiser's starts replay the steps of one reference point: the first
-    // extra start (e.g. a nested model's optimum) or the box centre.
+    // The screening and the optimiser's starts replay the steps of one reference point: the extra
+    // start (e.g. a nested model's optimum) that fits best, or the box centre.
     std::vector<double> ref(d_);
-    for (std::size_t k = 0; k < d_; ++k) {
-      const double lo = objective_->lower()[k], up = objective_->upper()[k];
-      ref[k] = options_.extra_starts.empty() || options_.extra_starts[0].size() != d_ ? 0.5 * (lo + up)
-                                                                                     : std::clamp(options_.extra_starts[0][k], lo, up);
+    for (std::size_t k = 0; k < d_; ++k) ref[k] = 0.5 * (objective_->lower()[k] + objective_->upper()[k]);
+    std::vector<std::vector<double>> extra;
+    for (const auto& x : options_.extra_starts)
+      if (x.size() == d_) {
+        extra.push_back(x);
+        for (std::size_t k = 0; k < d_; ++k) extra.back()[k] = std::clamp(x[k], objective_->lower()[k], objective_->upper()[k]);
+      }
+    if (extra.size() == 1) ref = extra[0];
+    if (extra.size() > 1) {
+      const auto f = distributedMap(
+          extra.size(), options_.threads, [&](std::size_t i, int) { return std::vector<double>{objective_->sse(extra[i])}; },
+          [&](std::size_t done, std::size_t total) { report("optimum: reference", done, total); });
+      std::size_t best = 0;
+      for (std::size_t i = 1; i < f.size(); ++i)
+        if (std::isfinite(f[i][0]) && !(f[i][0] >= f[best][0])) best = i;  // a failed run never wins
+      ref = extra[best];
     }
+    reference_ = ref;
     if (!objective_->freezeSteps(ref))
       res_.warnings.push_back("the integrator's steps could not be frozen at the reference point (its run failed); the optimiser's "
                               "starts chose their steps adaptively");
@@ -1162,7 +1176,7 @@ void CalibrationRun::polish(std::vector<StartResult>& starts) const {
   starts.push_back(minimiseFrom(sse_, objective.lower(), objective.upper(), first.theta, po));
   const Optimum second = collectOptimum(starts);
   report("optimum: polish", 0, 1);
-  starts.push_back(polishLeastSquares(objective, second.theta, options_.threads, kPolishStep));
+  starts.push_back(polishLeastSquares(objective, second.theta, {options_.threads, kPolishStep}));
 }
 
 /// Steps frozen: the starts ran on the steps of the reference point (objective()). Freezes the
@@ -1185,7 +1199,11 @@ void CalibrationRun::polishOnOwnSteps() {
 /// (only its SSE is on those steps).
 void CalibrationRun::polishFrozen() {
   report("optimum: polish on its own steps", 0, 1);
-  StartResult lm = polishLeastSquares(*objective_, res_.optimum.theta, options_.threads, kPolishStepFrozen, 1e-9, &polish_jacobian_);
+  PolishOptions po;
+  po.threads = options_.threads;
+  po.h = kPolishStepFrozen;
+  po.carried = &polish_jacobian_;
+  StartResult lm = polishLeastSquares(*objective_, res_.optimum.theta, po);
   lm.status = "LM_POLISH_FROZEN_STEPS";
   res_.optimum.evaluations += lm.evaluations;
   res_.optimum.starts.push_back(std::move(lm));
@@ -1266,6 +1284,7 @@ nlohmann::json CalibrationRun::stepsJson() const {
     j["steps_per_data_set"] = objective_->frozenStepCounts();
     j["accuracy_choice"] = steps_log_;
   }
+  if (!reference_.empty()) j["starts_frozen_at"] = jsonNumbers(reference_);
   return j;
 }
 
@@ -1287,7 +1306,8 @@ void CalibrationRun::optimum() {
     const std::vector<std::vector<double>> x0 = optimiserStarts(screening);
     const LabObjective& objective = *objective_;
     // Frozen steps: the SSE is a smooth sum of squares, so each start is a Levenberg–Marquardt run
-    // (one thread each; the starts share the workers), stopped when a step gains less than a
+    // (one thread each; the starts share the workers) on forward differences (the polish on the
+    // best start's own steps settles it with central ones), stopped when a step gains less than a
     // thousandth of the intervals' threshold c s² ≈ 4 SSE / (n − d).
     const bool lm = objective.stepsFrozen();
     const double dof = n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : std::max(n_, 1);
@@ -1295,7 +1315,11 @@ void CalibrationRun::optimum() {
         x0.size(), options_.threads,
         [&](std::size_t i, int) {
           if (!lm) return packStart(minimiseFrom(sse_, objective.lower(), objective.upper(), x0[i], options_.optimizer));
-          StartResult r = polishLeastSquares(objective, x0[i], 1, kPolishStepFrozen, 4e-3 / dof);
+          PolishOptions po;
+          po.h = kPolishStepFrozen;
+          po.rel_gain = 4e-3 / dof;
+          po.forward = true;
+          StartResult r = polishLeastSquares(objective, x0[i], po);
           r.status = "LM";
           return packStart(r);
         },

@@ -365,17 +365,27 @@ inline constexpr double kPolishStep = 1e-2;
 /// gives a truer Jacobian.
 inline constexpr double kPolishStepFrozen = 1e-3;
 
+/// How polishLeastSquares differentiates and when it stops.
+struct PolishOptions {
+  int threads = 1;            ///< workers for the runs of one difference Jacobian
+  double h = kPolishStep;     ///< difference step, scaled units
+  double rel_gain = 1e-9;     ///< converged when a step from a fresh Jacobian gains less than rel_gain × SSE
+  /// Forward differences (d runs, not 2d): for a start far from the optimum on frozen steps, where
+  /// the Jacobian only has to point downhill and a later polish with central differences settles.
+  bool forward = false;
+  /// With a Jacobian (n x d, scaled units), the first iteration's, and the last one is left in it
+  /// (subspace_lm.hpp): a second polish from nearly the same point (e.g. on steps chosen at a
+  /// tighter accuracy) skips the first differences, and the integrator probes take their steps from it.
+  SubspaceJacobian* carried = nullptr;
+};
+
 /// Levenberg–Marquardt on the weighted residuals sqrt(w) (η(θ) − y) of `obj` from `theta0`, in the
-/// scaled coordinates [0,1]^d: central differences of step `h` (2d runs, on `threads` workers),
-/// then Broyden updates after every trial point, fresh differences when the carried Jacobian
-/// finds no better point (minimiseOnSubspace); steps clipped to the box; at most 30 iterations,
-/// and it stops when a step from a fresh Jacobian gains less than `rel_gain` × SSE. Returns the best point seen (status
-/// "LM_POLISH"); sse is infinite when the run at theta0 fails. With `carried`, its Jacobian (n x d,
-/// scaled units) is the first iteration's and the last one is left in it (subspace_lm.hpp): a second
-/// polish from nearly the same point (e.g. on steps chosen at a tighter accuracy) skips the first
-/// differences, and the probes of the integrator check take their steps from it.
-StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, int threads, double h = kPolishStep,
-                               double rel_gain = 1e-9, SubspaceJacobian* carried = nullptr);
+/// scaled coordinates [0,1]^d: central (or forward) differences of step h, then Broyden updates
+/// after every trial point, fresh differences when the carried Jacobian finds no better point
+/// (minimiseOnSubspace); an active set at the box's faces; at most 30 iterations, and it stops when
+/// a step from a fresh Jacobian gains less than rel_gain × SSE. Returns the best point seen
+/// (status "LM_POLISH"); sse is infinite when the run at theta0 fails.
+StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, const PolishOptions& options = {});
 
 using ::dtwin::fnv1a64;  // twin/provenance.hpp
 

@@ -265,9 +265,9 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   // The search in v = z_j: g(v) = sqrt(SSE_p(v) − SSE*) is linear in v for a quadratic profile;
   // the end is where g = g_T = sqrt(threshold − SSE*). Secant steps on the last two inside points
   // while nothing outside is known (at most 4 times the distance covered, and to the bound), then
-  // regula falsi in the bracket, kept 10 % inside it; stop when the bracket is below 1 % of the
-  // interval's width, or, before anything outside is known, when the secant puts the end within
-  // that distance of the last inside point.
+  // regula falsi in the bracket, kept 10 % inside it, each aimed half a tolerance short of the
+  // predicted crossing; stop when the bracket is below the tolerance (1 % of the interval's
+  // width), or when the secant or the bracket puts the end within it of the last inside point.
   const double g_T = std::sqrt(plan.threshold - plan.sse_best);
   auto gOf = [&](double f) { return std::sqrt(std::max(f - plan.sse_best, 0.0)); };
   // v at the best fit (the evaluated point of lowest SSE; it holds the optimum), where g = 0: the
@@ -294,15 +294,23 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
       // end (an outside point to bracket it would cost a polish and restarts, for < 1 % of the width).
       if (dist > 0.0 && g_in > g_prev && step > 0 && (g_T - g_in) * dist / (g_in - g_prev) < tol) break;
       const bool secant = dist > 0.0 && g_in > g_prev;
-      double reach = secant ? (g_T - g_in) * dist / (g_in - g_prev) : 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08));
+      // Aimed half a tolerance short of the predicted crossing: a point landing there is inside
+      // and ends the search (above); one landing just past it would be an outside point.
+      double reach = secant ? (g_T - g_in) * dist / (g_in - g_prev) - 0.5 * tol : 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08));
       // A secant that puts the end close ahead is followed (down to the tolerance): a step
       // stretched to a minimum length would land outside, and an outside point costs a polish
       // and restarts.
       reach = std::clamp(reach, secant ? tol : 0.05 * std::max(width(j), 0.02), 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08)));
       target = std::clamp(v_in + s * reach, 0.0, 1.0);
     } else {
-      if (std::abs(v_out - v_in) < tol) break;
-      const double frac = g_out > g_in ? std::clamp((g_T - g_in) / (g_out - g_in), 0.1, 0.9) : 0.5;
+      const double span = std::abs(v_out - v_in);
+      if (span < tol) break;
+      // Linear interpolation of g in the bracket; as on the secant, the last inside point is the
+      // end when the crossing is predicted within the tolerance of it, and the next point is aimed
+      // half a tolerance short of the crossing.
+      const double ahead = g_out > g_in ? span * (g_T - g_in) / (g_out - g_in) : 0.5 * span;
+      if (g_out > g_in && ahead < tol) break;
+      const double frac = std::clamp((ahead - 0.5 * tol) / span, 0.1, 0.9);
       target = v_in + frac * (v_out - v_in);
     }
     if (std::abs(target - v_in) < 1e-12) break;

@@ -679,7 +679,7 @@ void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
     auto th = d.optima.at(joinEffects({c.effect}));
     th.resize(d.optima.at("base").size());
     d.report("refine base from " + c.effect, 0, 1);
-    const auto p = calib::polishLeastSquares(*d.base_obj, th, d.options.threads);
+    const auto p = calib::polishLeastSquares(*d.base_obj, th, {d.options.threads});
     d.report("refine base from " + c.effect, 1, 1);
     if (p.sse < better_sse) {
       better_sse = p.sse;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "calibration/subspace_lm.hpp"
@@ -219,6 +220,40 @@ bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const E
   return ok;
 }
 
+/// Where a profile end's search (refineProfileEnd) looks next, in v = z_j, from what it knows:
+/// the last inside point (v_in, g_in), the secant's other point (v_prev, g_prev) and, once a point
+/// was outside, that point (v_out, g_out); g = √(SSE_p − SSE*), the end where g = g_T.
+struct EndBracket {
+  double v_in, g_in, v_prev, g_prev;
+  bool have_out;
+  double v_out, g_out;
+};
+
+/// The next v of a profile end (direction s = ±1), or none when the last inside point is the end:
+/// before anything outside is known, a secant step (aimed half a tolerance short of the crossing
+/// it predicts; a point landing there is inside and ends the search, one just past it would be
+/// an outside point, which costs a polish and restarts), or, without a secant, a growing step;
+/// in a bracket, linear interpolation of g, kept 10 % inside it and aimed the same way. It stops
+/// when the predicted crossing is within `tol` of v_in, or the bracket is narrower than that.
+std::optional<double> nextEndTarget(const EndBracket& b, double g_T, double tol, double width_j, int s, int step) {
+  if (!b.have_out) {
+    const double dist = std::abs(b.v_in - b.v_prev);
+    const bool secant = dist > 0.0 && b.g_in > b.g_prev;
+    const double ahead = secant ? (g_T - b.g_in) * dist / (b.g_in - b.g_prev) : 0.0;
+    if (secant && step > 0 && ahead < tol) return std::nullopt;
+    const double grow = 4.0 * std::max(dist, 0.25 * std::max(width_j, 0.08));
+    // A secant that puts the end close ahead is followed (down to the tolerance): a step
+    // stretched to a minimum length would land outside.
+    const double reach = std::clamp(secant ? ahead - 0.5 * tol : grow, secant ? tol : 0.05 * std::max(width_j, 0.02), grow);
+    return std::clamp(b.v_in + s * reach, 0.0, 1.0);
+  }
+  const double span = std::abs(b.v_out - b.v_in);
+  if (span < tol) return std::nullopt;
+  const double ahead = b.g_out > b.g_in ? span * (g_T - b.g_in) / (b.g_out - b.g_in) : 0.5 * span;
+  if (b.g_out > b.g_in && ahead < tol) return std::nullopt;
+  return b.v_in + std::clamp((ahead - 0.5 * tol) / span, 0.1, 0.9) * (b.v_out - b.v_in);
+}
+
 }  // namespace
 
 // Kept whole on purpose: the secant / regula falsi search shares its bracket (v_in, g_in, v_prev,
@@ -265,9 +300,7 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   // The search in v = z_j: g(v) = sqrt(SSE_p(v) − SSE*) is linear in v for a quadratic profile;
   // the end is where g = g_T = sqrt(threshold − SSE*). Secant steps on the last two inside points
   // while nothing outside is known (at most 4 times the distance covered, and to the bound), then
-  // regula falsi in the bracket, kept 10 % inside it, each aimed half a tolerance short of the
-  // predicted crossing; stop when the bracket is below the tolerance (1 % of the interval's
-  // width), or when the secant or the bracket puts the end within it of the last inside point.
+  // regula falsi in the bracket (nextEndTarget); the tolerance is 1 % of the interval's width.
   const double g_T = std::sqrt(plan.threshold - plan.sse_best);
   auto gOf = [&](double f) { return std::sqrt(std::max(f - plan.sse_best, 0.0)); };
   // v at the best fit (the evaluated point of lowest SSE; it holds the optimum), where g = 0: the
@@ -287,32 +320,10 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     if (k != j) u(c++) = z(k);
   SubspaceJacobian jac;  // carried from one profile point to the next (subspace_lm.hpp)
   for (int step = 0; step < options.steps; ++step) {
-    double target;
-    if (!have_out) {
-      const double dist = std::abs(v_in - v_prev);
-      // The last inside point is within the tolerance of where the secant puts the end: it is the
-      // end (an outside point to bracket it would cost a polish and restarts, for < 1 % of the width).
-      if (dist > 0.0 && g_in > g_prev && step > 0 && (g_T - g_in) * dist / (g_in - g_prev) < tol) break;
-      const bool secant = dist > 0.0 && g_in > g_prev;
-      // Aimed half a tolerance short of the predicted crossing: a point landing there is inside
-      // and ends the search (above); one landing just past it would be an outside point.
-      double reach = secant ? (g_T - g_in) * dist / (g_in - g_prev) - 0.5 * tol : 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08));
-      // A secant that puts the end close ahead is followed (down to the tolerance): a step
-      // stretched to a minimum length would land outside, and an outside point costs a polish
-      // and restarts.
-      reach = std::clamp(reach, secant ? tol : 0.05 * std::max(width(j), 0.02), 4.0 * std::max(dist, 0.25 * std::max(width(j), 0.08)));
-      target = std::clamp(v_in + s * reach, 0.0, 1.0);
-    } else {
-      const double span = std::abs(v_out - v_in);
-      if (span < tol) break;
-      // Linear interpolation of g in the bracket; as on the secant, the last inside point is the
-      // end when the crossing is predicted within the tolerance of it, and the next point is aimed
-      // half a tolerance short of the crossing.
-      const double ahead = g_out > g_in ? span * (g_T - g_in) / (g_out - g_in) : 0.5 * span;
-      if (g_out > g_in && ahead < tol) break;
-      const double frac = std::clamp((ahead - 0.5 * tol) / span, 0.1, 0.9);
-      target = v_in + frac * (v_out - v_in);
-    }
+    const std::optional<double> next = nextEndTarget(
+        {v_in, g_in, v_prev, g_prev, have_out, v_out, g_out}, g_T, tol, width(j), s, step);
+    if (!next) break;
+    const double target = *next;
     if (std::abs(target - v_in) < 1e-12) break;
     Eigen::VectorXd z0 = Eigen::VectorXd::Zero(d);
     z0(j) = target;

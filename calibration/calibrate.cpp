@@ -1045,6 +1045,8 @@ class CalibrationRun {
                                     const std::string& journal_path, ResumedPoints& resumed);
   void writeDesignTable() const;
   void evaluatedPoints(Eigen::MatrixXd& pts, std::vector<double>& f) const;
+  void appendStartEnds(Eigen::MatrixXd& pts, std::vector<double>& f) const;
+  void warnOtherBasins(const nlohmann::json& basins);
   void writePosterior() const;
 
   const Study& study_;
@@ -1553,20 +1555,68 @@ void CalibrationRun::evaluatedPoints(Eigen::MatrixXd& pts, std::vector<double>& 
   }
 }
 
+/// The optimiser's start ends other than the optimum, with their SSEs on the steps the later stages
+/// replay, appended to the evaluated points: a second basin that the data cannot tell from the
+/// optimum's lies inside the threshold, and the profile's intervals must span it (the design,
+/// drawn around the optimum, never sees it).
+void CalibrationRun::appendStartEnds(Eigen::MatrixXd& pts, std::vector<double>& f) const {
+  std::vector<std::vector<double>> ends;
+  for (const auto& st : res_.optimum.starts)
+    if (st.theta.size() == d_ && std::isfinite(st.sse) && st.theta != res_.optimum.theta) ends.push_back(st.theta);
+  if (ends.empty()) return;
+  const auto out = distributedMap(
+      ends.size(), options_.threads, [&](std::size_t i, int) { return std::vector<double>{objective_->sse(ends[i])}; },
+      [&](std::size_t done, std::size_t total) { report("profile: optimiser ends", done, total); });
+  const Eigen::Index r0 = pts.rows();
+  pts.conservativeResize(r0 + static_cast<Eigen::Index>(ends.size()), Eigen::NoChange);
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    for (std::size_t k = 0; k < d_; ++k) pts(r0 + static_cast<Eigen::Index>(i), static_cast<long>(k)) = ends[i][k];
+    f.push_back(out[i][0]);
+  }
+}
+
+/// The warning for the other basins profile() found (profile.json "other_basins").
+void CalibrationRun::warnOtherBasins(const nlohmann::json& basins) {
+  if (!basins.is_array() || basins.empty()) return;
+  std::string where;
+  for (std::size_t k = 0; k < d_ && k < basins[0].at("theta").size(); ++k)
+    where += (k ? ", " : "") + res_.names[k] + " = " + formatNumber(basins[0].at("theta")[k].get<double>(), 4);
+  res_.warnings.push_back(std::to_string(basins.size()) + " optimiser start(s) ended in another basin that the data cannot reject (e.g. " +
+                          where + "): the 95 % profile intervals span it and the optimum's basin; the posterior and the design see only the optimum's");
+}
+
 /// Stage 4, profile (profile.json): the profile-likelihood intervals, from every evaluated point
 /// (the design, the ridge floor, the optimum), each end pushed out by profile steps.
 void CalibrationRun::profile() {
   const auto t0 = Clock::now();
   res_.interval = options_.interval;
   const fs::path profile_path = file("profile.json");
+  nlohmann::json basins;
   if (auto j = readStage(profile_path, fingerprint_); !j.is_null()) {
     res_.profile = ProfileIntervals::fromJson(j.at("profile"));
+    basins = j.value("other_basins", nlohmann::json::array());
   } else {
     Eigen::MatrixXd pts;
     std::vector<double> f;
     evaluatedPoints(pts, f);
+    const Eigen::Index first_end = pts.rows();
+    appendStartEnds(pts, f);
     const LabObjective& objective = *objective_;
     const ProfilePlan plan = planProfile(pts, f, n_, objective.lower(), objective.upper(), options_.profile);
+    // An optimiser start that ended in another basin the data cannot reject (inside the threshold,
+    // a parameter more than a tenth of its range from the optimum): the intervals span both.
+    basins = nlohmann::json::array();
+    for (Eigen::Index q = first_end; q < pts.rows(); ++q) {
+      if (!(f[static_cast<std::size_t>(q)] <= plan.threshold)) continue;
+      bool far = false;
+      for (std::size_t k = 0; k < d_; ++k)
+        far = far || std::abs(pts(q, static_cast<long>(k)) - res_.optimum.theta[k]) > 0.1 * (objective.upper()[k] - objective.lower()[k]);
+      if (far) {
+        std::vector<double> th(d_);
+        for (std::size_t k = 0; k < d_; ++k) th[k] = pts(q, static_cast<long>(k));
+        basins.push_back({{"theta", jsonNumbers(th)}, {"sse", jsonNumber(f[static_cast<std::size_t>(q)])}});
+      }
+    }
     // A smooth SSE (frozen steps): forward differences are enough for the profile points' Jacobians.
     ProfileOptions po = options_.profile;
     po.forward_differences = objective.stepsFrozen();
@@ -1582,10 +1632,14 @@ void CalibrationRun::profile() {
     res_.profile = collectProfile(plan, ends, options_.profile);
     rootWrites([&] {
       writeFileAtomic(profile_path.string(),
-                      nlohmann::json{{"fingerprint", fingerprint_}, {"profile", res_.profile.toJson()}, {"differences", po.forward_differences ? "forward" : "central"}}
+                      nlohmann::json{{"fingerprint", fingerprint_},
+                                     {"profile", res_.profile.toJson()},
+                                     {"differences", po.forward_differences ? "forward" : "central"},
+                                     {"other_basins", basins}}
                               .dump(2) + "\n");
     });
   }
+  warnOtherBasins(basins);
   res_.stage_wall_s.push_back({"profile", secondsSince(t0)});
 }
 

@@ -1014,7 +1014,6 @@ class CalibrationRun {
     /// The shift central differences would show from the roughness alone (gradient errors of
     /// roughness_k / h_k per axis): below it a shift is not resolved. 0 with three points.
     double shift_floor = 0.0;
-    Eigen::MatrixXd jacobian;  ///< the residuals' Jacobian in scaled units (central differences at ±h)
   };
   LabObjective fineObjective(double accuracy) const;
   BiasProbe probeBias(const LabObjective& fine, const std::vector<double>& theta, const std::vector<double>& h, bool five,
@@ -1771,7 +1770,6 @@ CalibrationRun::BiasProbe CalibrationRun::probeBias(const LabObjective& fine, co
   }
   p.shift = integratorOptimumShift(J, g);
   p.shift_floor = integratorOptimumShift(J, g_floor);
-  p.jacobian = std::move(J);
   p.ok = true;
   return p;
 }

@@ -1021,6 +1021,12 @@ class CalibrationRun {
   void chooseStepAccuracy();
   void summary();
   CalibrationResult take() { return std::move(res_); }
+  /// After optimum() alone: the result with the optimum, the stages' wall times and the run cost.
+  CalibrationResult takeOptimum() {
+    res_.stage_wall_s.push_back({"total", secondsSince(t_all_)});
+    res_.median_run_wall_s = objective_->medianWallSeconds();
+    return take();
+  }
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -1826,6 +1832,17 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
   run.integratorCheck();
   run.summary();    // summary.json
   return run.take();
+}
+
+CalibrationResult calibrateOptimum(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
+                                   const CalibrationSetup& setup, const CalibrationOptions& options,
+                                   const std::string& out_dir, const std::string& fingerprint_extra,
+                                   const StageProgress& progress) {
+  options.validate();
+  CalibrationRun run(study, assembly, data, setup, options, out_dir, fingerprint_extra, progress);
+  run.objective();
+  run.optimum();  // optimum.json: a later calibrateAssembly of the same folder resumes from it
+  return run.takeOptimum();
 }
 
 }  // namespace dtwin::calib

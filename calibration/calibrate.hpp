@@ -358,6 +358,17 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
                                     const std::string& out_dir, const std::string& fingerprint_extra,
                                     const StageProgress& progress = {});
 
+/// Stage 1 of calibrateAssembly alone (the screening, the optimiser's starts and the polish):
+/// the result holds the optimum (and the steps it was found with), nothing of the later stages
+/// (no region, design, profile, posterior or integrator check). optimum.json is written in
+/// `out_dir`, so a calibrateAssembly with the same inputs and options later resumes from it and
+/// runs only the stages after it. twin diagnose uses it to weigh a candidate before deciding
+/// whether its intervals are worth computing (docs/diagnosis.md).
+CalibrationResult calibrateOptimum(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
+                                   const CalibrationSetup& setup, const CalibrationOptions& options,
+                                   const std::string& out_dir, const std::string& fingerprint_extra,
+                                   const StageProgress& progress = {});
+
 /// The finite-difference step (scaled units) of polishLeastSquares used by calibrateAssembly's
 /// polish: well above the integrator's noise in the residuals (see calibrate.cpp).
 inline constexpr double kPolishStep = 1e-2;

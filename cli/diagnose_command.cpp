@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -123,7 +125,7 @@ struct DiagnoseConfig {
   int threads = 0, candidates = 3, draws = 20, propose = 3;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
   std::string steps;
-  bool quiet = false, force = false;
+  bool quiet = false, force = false, all_intervals = false;
 };
 
 std::vector<std::string> splitCommas(const std::vector<std::string>& v) {
@@ -158,6 +160,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
     throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
   o.calibration.validate();
   o.candidates = cfg.candidates;
+  if (cfg.all_intervals) o.full_within = std::numeric_limits<double>::infinity();
   o.propose_terms = cfg.propose;
   o.compare_draws = cfg.draws;
   o.effects = splitCommas(cfg.effects);
@@ -204,6 +207,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
     j["holdout"] = cfg.holdout;
     j["options"] = {{"calibration", o.calibration.toJson()}, {"candidates", o.candidates}, {"screen_alpha", o.screen_alpha},
                     {"bic_strong", o.bic_strong}, {"ambiguity_log_evidence", o.ambiguity_log_evidence},
+                    {"full_within", std::isinf(o.full_within) ? nlohmann::json("all") : nlohmann::json(o.full_within)},
                     {"explained_min", o.explained_min}, {"lack_of_fit_alpha", o.lack_of_fit_alpha}, {"compare_draws", o.compare_draws},
                     {"effects", o.effects}, {"apply", o.apply}, {"propose_terms", o.propose_terms}};
     rootWrites([&] {
@@ -278,6 +282,9 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
                 "Add these candidates in turn (comma separated) and print the before/after table; a .toml file (e.g. a diagnosis's "
                 "proposal.toml) adds its [user_effects]");
   c->add_option("--candidates", cfg->candidates, "Screened effects confirmed by re-calibration (at most)")->capture_default_str()->check(CLI::Range(0, 100));
+  c->add_flag("--all-intervals", cfg->all_intervals,
+             "Calibrate every confirmed candidate in full (intervals, posterior comparison); by default only those within 10 of "
+             "the best candidate's log evidence are, the others stop at their optimum");
   c->add_option("--propose", cfg->propose, "When unexplained: propose at most this many library terms (0: none)")
       ->capture_default_str()
       ->check(CLI::Range(0, 3));

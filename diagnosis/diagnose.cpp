@@ -143,7 +143,8 @@ nlohmann::json Figures::toJson() const {
   nlohmann::json j{{"label", label},          {"effects", effects}, {"sse_min_weighted", sse_min}, {"bic", bic},
                    {"log_evidence", log_evidence}, {"parameters", parameters}, {"folder", folder}};
   j["effect_parameters"] = paramsJson(effect_parameters);
-  j["integrator_check"] = integrator.toJson();
+  j["calibration"] = full ? "full" : "optimum only";
+  if (full) j["integrator_check"] = integrator.toJson();
   j["importance_ess"] = importance_ess;
   j["lack_of_fit_z"] = comparison.lack_of_fit_z;
   j["lack_of_fit_p"] = comparison.lack_of_fit_p;
@@ -167,6 +168,7 @@ void DiagnoseOptions::validate() const {
   check.open01("screen_alpha", screen_alpha);
   check.nonNegative("bic_strong", bic_strong);
   check.nonNegative("ambiguity_log_evidence", ambiguity_log_evidence);
+  check.require(full_within >= 0, "full_within", "must be >= 0 (infinity: every confirmed candidate calibrated in full)");
   check.inRange("explained_min", explained_min, 0.0, 1.0);
   check.open01("lack_of_fit_alpha", lack_of_fit_alpha);
   check.atLeast("compare_draws", compare_draws, 1);
@@ -222,9 +224,11 @@ struct Diagnosis {
   /// One calibration with `effects` installed (persisted under out_dir/calibrations, resumable),
   /// compared on the fit and held-out data. effect_start, theta_start: the screening's estimate of
   /// the effects' and the base parameters (extra optimiser starts); a base given theta_start is
-  /// the refined base and has its own folder.
+  /// the refined base and has its own folder. full = false: the optimum alone
+  /// (calib::calibrateOptimum), compared at the optimum; a later full call resumes from it.
   Figures calibrateWith(const std::vector<std::string>& effects, const std::string& stage,
-                        const std::vector<double>& effect_start = {}, const std::vector<double>& theta_start = {});
+                        const std::vector<double>& effect_start = {}, const std::vector<double>& theta_start = {},
+                        bool full = true);
 
  private:
   /// The optimiser's extra starts of a calibration with `effects` (see calibrateWith).
@@ -269,7 +273,7 @@ std::vector<std::vector<double>> Diagnosis::extraStarts(const std::vector<std::s
 }
 
 Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const std::string& stage,
-                                 const std::vector<double>& effect_start, const std::vector<double>& theta_start) {
+                                 const std::vector<double>& effect_start, const std::vector<double>& theta_start, bool full) {
   const std::size_t n_fit_params = study.calibrated.size();
   Figures f;
   f.effects = effects;
@@ -283,11 +287,11 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   copt.command = options.command;
   copt.polish_step = 0.01;
   for (auto& s : extraStarts(effects, effect_start, theta_start)) copt.extra_starts.push_back(std::move(s));
-  const auto r = calib::calibrateAssembly(study, assembly, fit_sets, setup, copt, f.folder, data_hash,
-                                          [&](const std::string& s, std::size_t d, std::size_t t) {
-                                            report(stage + ": " + s, d, t);
-                                          });
+  const auto progress_of = [&](const std::string& s, std::size_t d, std::size_t t) { report(stage + ": " + s, d, t); };
+  const auto r = full ? calib::calibrateAssembly(study, assembly, fit_sets, setup, copt, f.folder, data_hash, progress_of)
+                      : calib::calibrateOptimum(study, assembly, fit_sets, setup, copt, f.folder, data_hash, progress_of);
   optima[joinEffects(effects)] = r.optimum.theta;
+  f.full = full;
   f.parameters = static_cast<int>(r.names.size());
   f.sse_min = r.optimum.sse;
   f.integrator = r.integrator;
@@ -295,10 +299,18 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   f.bic = r.optimum.sse + f.parameters * std::log(static_cast<double>(r.n_data));
   f.log_evidence = -0.5 * f.bic;
   for (std::size_t k = n_fit_params; k < r.names.size(); ++k) {
-    const auto& p = r.posterior.parameters[k];
     EffectParameter ep;
     ep.name = r.names[k];
     ep.unit = setup.extra_calibrated[k - n_fit_params].unit;
+    ep.optimum = r.optimum.theta[k];
+    if (!full) {  // the optimum alone: no posterior, no interval
+      ep.mean = ep.optimum;
+      ep.sd = ep.q025 = ep.q975 = ep.post_q025 = ep.post_q975 = std::numeric_limits<double>::quiet_NaN();
+      ep.interval = "none";
+      f.effect_parameters.push_back(ep);
+      continue;
+    }
+    const auto& p = r.posterior.parameters[k];
     ep.mean = p.mean;
     ep.sd = p.sd;
     ep.post_q025 = p.q025;
@@ -307,7 +319,6 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
     ep.interval = prof ? "profile" : "posterior";
     ep.q025 = prof ? r.profile.lower[k] : p.q025;
     ep.q975 = prof ? r.profile.upper[k] : p.q975;
-    ep.optimum = r.optimum.theta[k];
     f.effect_parameters.push_back(ep);
   }
   compareFigures(f, r, setup, stage);
@@ -317,7 +328,8 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
 void Diagnosis::compareFigures(Figures& f, const calib::CalibrationResult& r, const calib::CalibrationSetup& setup,
                                const std::string& stage) const {
   std::vector<std::vector<double>> rows;
-  const std::size_t m = r.chains.index.size();
+  if (!f.full) rows.push_back(r.optimum.theta);  // the optimum alone: no posterior rows
+  const std::size_t m = f.full ? r.chains.index.size() : 0;
   const std::size_t want = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, options.compare_draws)), m);
   for (std::size_t k = 0; k < want; ++k) {
     const std::size_t i = want == 1 ? m / 2 : k * (m - 1) / (want - 1);
@@ -639,25 +651,41 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
     if (cands[i].gate.empty() && cands[i].p_value < d.options.screen_alpha &&
         static_cast<int>(to_confirm.size()) < d.options.candidates)
       to_confirm.push_back(i);
-  std::vector<std::size_t> confirmed;
-  for (std::size_t k = 0; k < to_confirm.size(); ++k) {
-    auto& c = cands[to_confirm[k]];
-    const std::string stage = "confirm " + c.effect + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
+  // One candidate's calibration failing (e.g. its region found no point inside the bounds) is
+  // reported with the candidate; the diagnosis goes on with the others.
+  auto calibrate = [&](Candidate& c, const std::string& stage, bool full) {
     try {
-      c.fit = d.calibrateWith({c.effect}, stage, c.screening_estimate, c.screening_theta);
+      c.fit = d.calibrateWith({c.effect}, stage, c.screening_estimate, c.screening_theta, full);
+      return true;
     } catch (const InputError&) {
       throw;
     } catch (const std::exception& e) {
-      // One candidate's calibration failing (e.g. its region found no point inside the bounds) is
-      // reported with the candidate; the diagnosis goes on with the others.
+      c.fit.reset();
       c.gate = std::string("its confirming calibration failed (") + e.what() + ")";
-      continue;
+      return false;
     }
+  };
+  // First every candidate's optimum (its evidence), then the full calibration (intervals, the
+  // posterior's comparison) of those that could be the verdict or ambiguous with it.
+  std::vector<std::size_t> optimised;
+  for (std::size_t k = 0; k < to_confirm.size(); ++k) {
+    auto& c = cands[to_confirm[k]];
+    const std::string stage = "confirm " + c.effect + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
+    if (calibrate(c, stage, false)) optimised.push_back(to_confirm[k]);
+  }
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t i : optimised) best = std::max(best, cands[i].fit->log_evidence);
+  const double margin = std::max(d.options.full_within, d.options.ambiguity_log_evidence);
+  std::vector<std::size_t> confirmed;
+  for (std::size_t i : optimised) {
+    auto& c = cands[i];
+    c.evidence_gap = best - c.fit->log_evidence;
+    if (c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + " in full", true)) continue;
     c.confirmed = true;
     std::vector<double> values;
     for (const auto& p : c.fit->effect_parameters) values.push_back(p.mean);
     c.finding = d.spec(c.effect).finding(values);
-    confirmed.push_back(to_confirm[k]);
+    confirmed.push_back(i);
   }
   return confirmed;
 }
@@ -776,6 +804,9 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
   const std::string band = bandFixed(base, c.fit->comparison);
   if (!band.empty()) s += "; lowers the " + band;
   if (!c.finding.empty() && c.delta_bic < 0) s += "; " + c.finding;
+  if (!c.fit->full)
+    s += "; calibrated to its optimum only (log evidence " + fmt("%.1f", c.evidence_gap) +
+         " below the best candidate's: it can be neither the verdict nor ambiguous with it, so no intervals)";
   const std::string sig = signatureSeen(base, spec);
   if (!sig.empty()) s += "; its signature is in the data: " + sig;
   if (c.holdout_change) s += "; held-out systematic error x" + fmt("%.2f", *c.holdout_change);
@@ -991,7 +1022,7 @@ void apply(Diagnosis& d) {
       if (c.effect == effect) {
         start = c.screening_estimate;
         theta = c.screening_theta;
-        if (acc.size() == 1 && c.fit) confirmed = &*c.fit;  // already calibrated with this effect alone
+        if (acc.size() == 1 && c.fit && c.fit->full) confirmed = &*c.fit;  // already calibrated with this effect alone
       }
     res.steps.push_back(confirmed ? *confirmed : d.calibrateWith(acc, "apply " + joinEffects(acc), start, theta));
   }
@@ -1133,7 +1164,7 @@ std::string DiagnosisResult::text() const {
   int k = 0;
   for (const auto& c : candidates) s += "  " + std::to_string(++k) + ". " + c.why + "\n";
   for (const auto& c : candidates)
-    if (c.confirmed && !c.fit->effect_parameters.empty()) {
+    if (c.confirmed && c.fit->full && !c.fit->effect_parameters.empty()) {
       s += "\n  " + c.effect + " posterior:\n";
       const bool resolved = c.fit->importance_ess >= Figures::kResolvedEss;
       for (const auto& p : c.fit->effect_parameters) {

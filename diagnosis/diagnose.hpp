@@ -13,6 +13,8 @@
 //  3. Confirm the best candidates by re-calibrating with the effect's parameters added (the
 //     same machinery; bounds = the effect's prior range) and compare evidence by BIC:
 //     BIC = SSE_w,min + k ln n (σ known: −2 ln L = SSE_w + const), log evidence ≈ −BIC/2.
+//     The evidence needs the optimum alone: every candidate is first calibrated to its optimum,
+//     then those within options.full_within of the best log evidence in full (intervals).
 //  4. Verdict: "effect" (a confirmed effect with ΔBIC < −10 that leaves no significant lack of
 //     fit, or explains most of the excess), "none" (no lack of fit and no candidate), or
 //     "unexplained" (significant residual that no catalogue effect explains), with ambiguity
@@ -42,6 +44,11 @@ struct DiagnoseOptions {
   double screen_alpha = 0.01;        ///< family-wise level of the screening (Bonferroni over every probe)
   double bic_strong = 10.0;          ///< ΔBIC below −bic_strong names an effect (Kass & Raftery 1995: strong)
   double ambiguity_log_evidence = 3.0;  ///< two effects closer than this in log evidence: ambiguous
+  /// Confirmed candidates whose log evidence at their optimum is within this (and at least within
+  /// ambiguity_log_evidence) of the best confirmed one are calibrated in full (region, design,
+  /// profile: their intervals and posterior comparison); the others, which cannot be the verdict
+  /// nor ambiguous with it, stop at their optimum. Infinity: every confirmed candidate in full.
+  double full_within = 10.0;
   double explained_min = 0.8;        ///< share of the excess residual a named effect must explain when a lack of fit remains
   double lack_of_fit_alpha = 1e-3;   ///< level of the lack-of-fit test
   int compare_draws = 20;            ///< posterior rows per comparison
@@ -86,6 +93,9 @@ struct Figures {
   /// interval are).
   double importance_ess = 0;
   static constexpr double kResolvedEss = 10.0;
+  /// false: the calibration stopped at its optimum (DiagnoseOptions::full_within): effect
+  /// parameters carry the optimum only, the comparison is at the optimum, no integrator check ran.
+  bool full = true;
   nlohmann::json toJson() const;
 };
 
@@ -106,6 +116,7 @@ struct Candidate {
   std::vector<double> screening_theta;
   bool confirmed = false;
   std::optional<Figures> fit;  ///< the re-calibration with the effect (confirmed candidates)
+  double evidence_gap = 0;   ///< confirmed: log evidence below the best confirmed candidate's (>= 0)
   double delta_bic = 0;      ///< BIC(with effect) − BIC(base)
   double explained = 0;      ///< share of the base's excess residual (χ² − dof) it removes
   std::optional<double> holdout_change;  ///< held-out systematic RMS after / before

@@ -190,6 +190,11 @@ std::string paramsHtml(const json& params) {
   for (auto it = params.begin(); it != params.end(); ++it) {
     const json& p = it.value();
     const json& ci = at(p, "ci95");
+    if (str(at(p, "interval")) == "none") {  // a candidate calibrated to its optimum only
+      s += (s.empty() ? "" : "<br>") + htmlEscape(it.key() + ": optimum " + num(dbl(at(p, "optimum"))) + " " + str(at(p, "unit")) +
+                                                  " (optimum only: no interval)");
+      continue;
+    }
     s += (s.empty() ? "" : "<br>") + htmlEscape(it.key() + " = " + num(dbl(at(p, "mean"))) + " ± " + num(dbl(at(p, "sd")), 2) + " " +
                                                 str(at(p, "unit")));
     if (ci.is_array() && ci.size() == 2) s += htmlEscape(" [" + num(dbl(ci[0])) + ", " + num(dbl(ci[1])) + "]");

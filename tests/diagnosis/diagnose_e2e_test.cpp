@@ -8,6 +8,7 @@
 
 #include "test_util.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -117,6 +118,15 @@ TEST_P(HiddenEffect, IsNamedRecoveredAndAddingItCutsTheError) {
   for (const auto& p : named->fit->effect_parameters)
     if (p.name == effect + "." + c.main_parameter) estimate = p.mean;
   EXPECT_NEAR(estimate / c.main_value, 1.0, 0.2) << r.text();
+  // The named candidate has its intervals; a confirmed candidate stops at its optimum exactly
+  // when its log evidence is further than full_within below the best one's.
+  EXPECT_TRUE(named->fit->full);
+  EXPECT_EQ(named->fit->effect_parameters.front().interval == "none", false);
+  for (const auto& k : r.candidates)
+    if (k.confirmed) {
+      EXPECT_EQ(k.fit->full, k.evidence_gap <= std::max(o.full_within, o.ambiguity_log_evidence)) << k.effect << "\n" << r.text();
+      EXPECT_EQ(k.fit->effect_parameters.front().interval == "none", !k.fit->full) << k.effect;
+    }
   ASSERT_EQ(r.steps.size(), 2u);
   // The systematic RMS (noise sd) falls by half, or to what noise alone leaves: its estimator
   // sqrt(max(0, X - dof) / N) has a floor of about (2/N)^(1/4) = 0.14 at N = 4808 times, so an

@@ -43,6 +43,8 @@ TEST(DiagnoseOptions, DefaultsAreValidAndEveryFieldIsChecked) {
       {"screen_alpha", [](DiagnoseOptions& o) { o.screen_alpha = 1.0; }},
       {"bic_strong", [](DiagnoseOptions& o) { o.bic_strong = -1.0; }},
       {"ambiguity_log_evidence", [](DiagnoseOptions& o) { o.ambiguity_log_evidence = std::nan(""); }},
+      {"full_within", [](DiagnoseOptions& o) { o.full_within = -1.0; }},
+      {"full_within", [](DiagnoseOptions& o) { o.full_within = std::nan(""); }},
       {"explained_min", [](DiagnoseOptions& o) { o.explained_min = 1.5; }},
       {"lack_of_fit_alpha", [](DiagnoseOptions& o) { o.lack_of_fit_alpha = -0.1; }},
       {"compare_draws", [](DiagnoseOptions& o) { o.compare_draws = 0; }},

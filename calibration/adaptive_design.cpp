@@ -171,7 +171,7 @@ DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs
   // drive the first adaptive round's ESS rose from 67 to 131 with these centres, and the design
   // settled (ESS 422 >= 400) in the three rounds that had left it at 354 (docs/performance.md).
   const int K = options.kernels;
-  const int from_guess = static_cast<int>(std::lround(K * nu0 / (now.ess + nu0)));
+  const int from_guess = std::getenv("DTWIN_EXP_OLD") ? 0 : static_cast<int>(std::lround(K * nu0 / (now.ess + nu0)));
   const Eigen::VectorXd m = (now.ess * now.mean + nu0 * region.guess_mean) / (now.ess + nu0);
   next.centres.resize(K, d);
   if (from_guess > 0) {

@@ -15,6 +15,7 @@
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
+#include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -54,6 +55,7 @@ void FieldClassifyOptions::validate() const {
     check.require(std::isfinite(p) && p > 0, "prior", "the prior of " + id + " must be a finite number > 0, got " + formatNumber(p));
   check.positive("threshold", threshold);
   check.nonNegative("tie_tolerance", tie_tolerance);
+  check.atLeast("threads", threads, 0);
   factor.validate();
 }
 
@@ -372,9 +374,13 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
   chooseCovariance(infos, p, opt.covariance, out);
   const Eigen::MatrixXd Y = recordsAsColumns(field);
   out.log_likelihood.resize(static_cast<long>(field.rowCount()), M);
-  for (int m = 0; m < M; ++m)
-    out.models.push_back(fitAssembly(targets[static_cast<std::size_t>(m)], infos[static_cast<std::size_t>(m)], sdir,
-                                     out.covariance_method, opt.factor, Y, out.log_likelihood.col(m)));
+  out.models.resize(static_cast<std::size_t>(M));
+  // Each assembly's model on its own worker, into its own column (the lowest failing assembly's
+  // error is the one thrown, whatever the thread count).
+  parallelFor(static_cast<std::size_t>(M), opt.threads, [&](std::size_t m, int) {
+    out.models[m] = fitAssembly(targets[m], infos[m], sdir, out.covariance_method, opt.factor, Y,
+                                out.log_likelihood.col(static_cast<Eigen::Index>(m)));
+  });
   for (Eigen::Index r = 0; r < out.log_likelihood.rows(); ++r)
     for (int m = 0; m < M; ++m)
       if (std::isnan(out.log_likelihood(r, m)))

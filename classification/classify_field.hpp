@@ -49,6 +49,9 @@ struct FieldClassifyOptions {
   double threshold = 10.0;  ///< on 2 ln B for the recommendation (recommend.hpp)
   double tie_tolerance = 1e-12;
   FactorOptions factor;
+  /// Assemblies whose models are built at once (0: all cores); each holds its p×p matrices
+  /// (about 0.6 GB at p = 5001). Never changes the numbers.
+  int threads = 0;
   std::string command;      ///< recorded in summary.json
   /// InputError whose where() is "field_classify.<field>" (common/validate.hpp): no assembly twice,
   /// a known covariance, each prior finite and > 0, threshold finite and > 0, tie_tolerance

@@ -236,6 +236,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   news.report("classify", 0, 1);
   classify::FieldClassifyOptions fo;
   fo.command = options.command;
+  fo.threads = options.threads;
   const classify::FieldClassification c = classifyFieldFile(study, field_path, (out / "synthetic").string(), fo);
   classify::writeFieldClassification(c, (out / "classification").string());
   news.report("classify", 1, 1);

@@ -109,6 +109,14 @@ TEST(ClassifyField, FieldRecordsOfM3AgainstM3AndM4) {
     for (Eigen::Index m = 0; m < 2; ++m) EXPECT_TRUE(std::isfinite(c.log_likelihood(r, m)));
   }
   EXPECT_TRUE(c.recommendation.recommended == "M3" || c.recommendation.recommended == "M4");
+  // The assemblies' models built one at a time give the same numbers bit for bit.
+  FieldClassifyOptions one = o;
+  one.threads = 1;
+  o.threads = 2;
+  const auto c1 = classifyFieldFile(w.study, w.field_csv, (w.dir / "synth").string(), one);
+  const auto c2 = classifyFieldFile(w.study, w.field_csv, (w.dir / "synth").string(), o);
+  EXPECT_TRUE((c1.log_likelihood.array() == c2.log_likelihood.array()).all());
+  EXPECT_TRUE((c1.log_likelihood.array() == c.log_likelihood.array()).all());
 
   writeFieldClassification(c, (w.dir / "cls").string());
   const auto s = nlohmann::json::parse(slurp(w.dir / "cls" / "summary.json"));
@@ -225,4 +233,7 @@ TEST(ClassifyField, OptionsNameTheField) {
   o = {};
   o.factor.jitter_initial = 0.0;
   EXPECT_EQ(where(o), "factor.jitter_initial");
+  o = {};
+  o.threads = -1;
+  EXPECT_EQ(where(o), "field_classify.threads");
 }

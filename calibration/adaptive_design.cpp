@@ -19,6 +19,11 @@ constexpr std::uint64_t kStreamDesignPilot = 0x4144'5000'0000'0005ULL;  // "ADP"
 constexpr std::uint64_t kStreamResample = 0x4144'4b00'0000'0006ULL;     // "ADK"
 constexpr std::uint64_t kStreamGuessCentres = 0x4144'4700'0000'0007ULL; // "ADG"
 constexpr int kPilot = 4096;
+/// A ridge kernel's sd over its local Gaussian's: real SSEs rise slower than quadratically across
+/// a ridge (on the demo's lab data 1.5 gave the four assemblies a final ESS of 85, 231, 51 and 102
+/// against 28, 128, 81 and 102 with 1.2).
+constexpr double kRidgeWiden = 1.5;
+constexpr double kBendSlack = 1.5;   ///< ridgeBends: the guess's 1 % contour widened by this in sd
 constexpr double kLog2Pi = 1.8378770664093454836;
 
 
@@ -53,7 +58,10 @@ Eigen::MatrixXd mapUnit(const DesignRound& round, const Eigen::MatrixXd& u) {
       for (Eigen::Index j = 0; j < d; ++j) x(j) = normalQuantile(std::clamp(u(i, j), 1e-12, 1.0 - 1e-12));
       const long nb = round.broadCount(u.rows());
       if (i < nb) z.row(i) = (round.broad_mean + round.broad_chol * x).transpose();
-      else z.row(i) = round.centres.row((i - nb) % round.centres.rows()) + (round.chol * x).transpose();
+      else {
+        const Eigen::Index c = (i - nb) % round.centres.rows();
+        z.row(i) = round.centres.row(c) + (round.cholOf(c) * x).transpose();
+      }
     }
   }
   return z;
@@ -150,9 +158,33 @@ bool settled(const Diagnostics& now, const Diagnostics& before, double settle) {
   return true;
 }
 
+/// Ridge rows with a local Gaussian (Region::ridge_cov).
+std::vector<Eigen::Index> localKernels(const Region& region) {
+  std::vector<Eigen::Index> local;
+  for (Eigen::Index q = 0; q < region.ridge.rows(); ++q) {
+    const auto k = static_cast<std::size_t>(q);
+    if (k < region.ridge_cov.size() && region.ridge_cov[k].size() > 0 && k < region.ridge_sse.size()) local.push_back(q);
+  }
+  return local;
+}
+
+/// Some traced floor point lies outside the Gaussian guess's own 1 % contour (Mahalanobis²
+/// 2 ln 100) widened by kBendSlack in sd: the ridge bends away from the straight axes.
+bool ridgeBends(const Region& region) {
+  const double limit = kBendSlack * kBendSlack * 2.0 * std::log(100.0);
+  for (Eigen::Index q = 0; q < region.ridge.rows(); ++q) {
+    const Eigen::VectorXd t = region.axes.transpose() * (region.ridge.row(q).transpose() - region.guess_mean);
+    double m2 = 0.0;
+    for (Eigen::Index i = 0; i < t.size(); ++i)
+      if (region.guess_sd(i) > 0.0) m2 += (t(i) / region.guess_sd(i)) * (t(i) / region.guess_sd(i));
+    if (m2 > limit) return true;
+  }
+  return false;
+}
+
 /// Adaptive round r >= 1: a Gaussian mixture with kernels on the heavy points of the design so far
 /// (scaled points `zs`, diagnostics `now`) and a defensive broad component.
-DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs, const Region& region,
+DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs, const Region& region, int n_data,
                         const AdaptiveDesignOptions& options) {
   const int d = region.dim();
   DesignRound next;
@@ -164,29 +196,55 @@ DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs
   const double dd = static_cast<double>(d), nu0 = 10.0 * (dd + 1.0);
   const Eigen::MatrixXd blend = (now.ess * now.cov + nu0 * region.guessCovariance()) / (now.ess + nu0);
   const double h = std::max(options.kernel_min, std::pow(4.0 / (dd + 2.0), 1.0 / (dd + 4.0)) * std::pow(now.ess, -1.0 / (dd + 4.0)));
-  // The centres are shrunk the same way: a share nu0 / (ESS + nu0) of them is a stratified sample
-  // of the Gaussian N(m, blend), m = (ESS·mean + nu0·guess mean)/(ESS + nu0), the rest resampled
-  // from the heavy points. After a uniform round 0 whose ESS is a dozen, resampling alone puts
-  // every kernel on one of a dozen points and the round's mixture is lumpy: on the demonstration
-  // drive the first adaptive round's ESS rose from 67 to 131 with these centres, and the design
-  // settled (ESS 422 >= 400) in the three rounds that had left it at 354 (docs/performance.md).
+  // The centres are shrunk the same way: a share nu0 / (ESS + nu0) of them comes from what the
+  // region knows, the rest is resampled from the heavy points (after a uniform round 0 whose ESS is
+  // a dozen, resampling alone puts every kernel on one of a dozen points: a lumpy mixture).
+  //  * A straight ridge (every traced floor point inside the Gaussian guess's own 1 % contour,
+  //    with slack): a stratified sample of N(m, blend), m = (ESS·mean + nu0·guess mean)/(ESS +
+  //    nu0), kernels with the common covariance.
+  //  * A bent ridge (a thin curved tube, as on the demo's lab data, where no common covariance
+  //    follows the posterior): the ridge floor points, each kernel with its own local Gaussian
+  //    (Region::ridge_cov, widened by kRidgeWiden in sd), allotted in proportion to
+  //    posterior(z_q)·sqrt(det Σ_q), so that the mixture's density along the ridge follows the
+  //    posterior's.
   const int K = options.kernels;
-  const int from_guess = std::getenv("DTWIN_EXP_OLD") ? 0 : static_cast<int>(std::lround(K * nu0 / (now.ess + nu0)));
-  const Eigen::VectorXd m = (now.ess * now.mean + nu0 * region.guess_mean) / (now.ess + nu0);
+  const int from_prior = static_cast<int>(std::lround(K * nu0 / (now.ess + nu0)));
+  const std::vector<Eigen::Index> local = ridgeBends(region) ? localKernels(region) : std::vector<Eigen::Index>{};
   next.centres.resize(K, d);
-  if (from_guess > 0) {
+  if (!local.empty() && from_prior > 0) {
+    next.own_cov.assign(static_cast<std::size_t>(K), Eigen::MatrixXd());
+    std::vector<double> lw(local.size());
+    for (std::size_t k = 0; k < local.size(); ++k) {
+      const auto q = static_cast<std::size_t>(local[k]);
+      lw[k] = -(options.tau_a + 0.5 * n_data) * std::log(options.tau_b + 0.5 * region.ridge_sse[q]) +
+              choleskyOf(region.ridge_cov[q]).diagonal().array().log().sum();
+    }
+    const double top = *std::max_element(lw.begin(), lw.end());
+    std::vector<double> cum(local.size());
+    double total = 0.0;
+    for (std::size_t k = 0; k < local.size(); ++k) cum[k] = (total += std::exp(lw[k] - top));
+    std::size_t k = 0;
+    for (int i = 0; i < from_prior; ++i) {  // systematic allotment, offset 1/2
+      const double target = (i + 0.5) / from_prior * total;
+      while (k + 1 < local.size() && cum[k] < target) ++k;
+      const auto q = static_cast<std::size_t>(local[k]);
+      next.centres.row(i) = region.ridge.row(local[k]);
+      next.own_cov[static_cast<std::size_t>(i)] = kRidgeWiden * kRidgeWiden * region.ridge_cov[q];
+    }
+  } else if (from_prior > 0) {
+    const Eigen::VectorXd m = (now.ess * now.mean + nu0 * region.guess_mean) / (now.ess + nu0);
     const std::vector<double> zero(static_cast<std::size_t>(d), 0.0), one(static_cast<std::size_t>(d), 1.0);
-    const Eigen::MatrixXd u = latinHypercube(from_guess, zero, one, derivedSeed(options.seed, kStreamGuessCentres, r));
+    const Eigen::MatrixXd u = latinHypercube(from_prior, zero, one, derivedSeed(options.seed, kStreamGuessCentres, r));
     const Eigen::MatrixXd L = choleskyOf(blend);
-    for (int i = 0; i < from_guess; ++i) {
+    for (int i = 0; i < from_prior; ++i) {
       Eigen::VectorXd x(d);
       for (int j = 0; j < d; ++j) x(j) = normalQuantile(std::clamp(u(i, j), 1e-12, 1.0 - 1e-12));
       next.centres.row(i) = (m + L * x).transpose();
     }
   }
-  if (from_guess < K)
-    next.centres.bottomRows(K - from_guess) = resampleCentres(zs, now.weights, K - from_guess, derivedSeed(options.seed, kStreamResample, r));
-  if (r == 1 && region.ridge.rows() > 0) {
+  if (from_prior < K)
+    next.centres.bottomRows(K - from_prior) = resampleCentres(zs, now.weights, K - from_prior, derivedSeed(options.seed, kStreamResample, r));
+  if (r == 1 && local.empty() && region.ridge.rows() > 0) {
     // The first adaptive round also puts kernels on the traced ridge floor (region.hpp), so a
     // curved ridge that round 0 sampled thinly is covered from the start.
     Eigen::MatrixXd both(next.centres.rows() + region.ridge.rows(), d);
@@ -210,6 +268,8 @@ DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs
 void DesignRound::prepare() {
   if (kind != "gaussian") return;
   chol = choleskyOf(cov);
+  own_chol.clear();
+  for (const auto& c : own_cov) own_chol.push_back(c.size() == 0 ? Eigen::MatrixXd() : choleskyOf(c));
   if (broad_share > 0.0) broad_chol = choleskyOf(broad_cov);
 }
 
@@ -265,6 +325,13 @@ nlohmann::json DesignRound::toJson(const std::vector<std::string>& names) const 
     for (Eigen::Index i = 0; i < centres.rows(); ++i) j["centres_scaled"].push_back(vectorJson(centres.row(i).transpose()));
     j["covariance_scaled"] = nlohmann::json::array();
     for (Eigen::Index i = 0; i < cov.rows(); ++i) j["covariance_scaled"].push_back(vectorJson(cov.row(i).transpose()));
+    // Kernels with their own covariance (ridge kernels): index -> covariance, row by row.
+    for (std::size_t c = 0; c < own_cov.size(); ++c)
+      if (own_cov[c].size() > 0) {
+        nlohmann::json m = nlohmann::json::array();
+        for (Eigen::Index i = 0; i < own_cov[c].rows(); ++i) m.push_back(vectorJson(own_cov[c].row(i).transpose()));
+        j["own_covariances_scaled"][std::to_string(c)] = m;
+      }
     if (broad_share > 0.0) {
       j["broad"] = {{"share", broad_share}, {"mean_scaled", vectorJson(broad_mean)}, {"covariance_scaled", nlohmann::json::array()}};
       for (Eigen::Index i = 0; i < broad_cov.rows(); ++i) j["broad"]["covariance_scaled"].push_back(vectorJson(broad_cov.row(i).transpose()));
@@ -302,8 +369,10 @@ double logMixtureDensity(const std::vector<DesignRound>& rounds, const Eigen::Ve
       for (long c = 0; c < K; ++c) {
         const long count = rest / K + (c < rest % K ? 1 : 0);
         if (count == 0) continue;
-        const Eigen::VectorXd x = r.chol.triangularView<Eigen::Lower>().solve(z - r.centres.row(c).transpose());
-        terms.push_back(std::log(static_cast<double>(count)) - 0.5 * d * kLog2Pi - logdet - 0.5 * x.squaredNorm());
+        const Eigen::MatrixXd& L = r.cholOf(c);
+        const double ld = &L == &r.chol ? logdet : L.diagonal().array().log().sum();
+        const Eigen::VectorXd x = L.triangularView<Eigen::Lower>().solve(z - r.centres.row(c).transpose());
+        terms.push_back(std::log(static_cast<double>(count)) - 0.5 * d * kLog2Pi - ld - 0.5 * x.squaredNorm());
       }
     }
   }
@@ -418,7 +487,7 @@ AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const Adaptiv
       break;
     }
     before = now;
-    now = runRound(kernelRound(r, now, zs, region, options), options.round_points);
+    now = runRound(kernelRound(r, now, zs, region, n_data, options), options.round_points);
     if (now.ess >= options.target_ess && settled(now, before, options.settle)) {
       out.stop_reason = "settled after round " + std::to_string(r) + ": importance ESS " + formatNumber(now.ess, 4) + " >= " +
                         formatNumber(options.target_ess, 4) + ", means and sds changed by less than " + formatNumber(options.settle, 4) + " sd";

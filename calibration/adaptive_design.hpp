@@ -97,6 +97,15 @@ struct DesignRound {
   Eigen::MatrixXd centres;   ///< gaussian rounds: K x d kernel centres, scaled
   Eigen::MatrixXd cov;       ///< gaussian rounds: the kernels' covariance, scaled
   Eigen::MatrixXd chol;      ///< its lower Cholesky factor (set by prepare())
+  /// Gaussian rounds: empty, or one entry per centre: that kernel's own covariance (a ridge
+  /// kernel's local Gaussian, Region::ridge_cov), or an empty matrix for `cov`.
+  std::vector<Eigen::MatrixXd> own_cov;
+  std::vector<Eigen::MatrixXd> own_chol;  ///< their Cholesky factors (set by prepare())
+  /// The lower Cholesky factor of centre c's kernel.
+  const Eigen::MatrixXd& cholOf(Eigen::Index c) const {
+    const auto k = static_cast<std::size_t>(c);
+    return k < own_chol.size() && own_chol[k].size() > 0 ? own_chol[k] : chol;
+  }
   /// Gaussian rounds: the defensive component, taking the first round(broad_share · M) points.
   double broad_share = 0.0;
   Eigen::VectorXd broad_mean;

@@ -670,14 +670,19 @@ RaySweep unpackRay(const std::vector<double>& v) {
 }
 
 std::vector<double> packTrace(const RidgeTrace& r) {
-  std::vector<double> z;
+  std::vector<double> z, cross;
   for (const auto& p : r.z) z.insert(z.end(), p.data(), p.data() + p.size());
+  for (const auto& c : r.cross) {  // d·d values, or one NaN for an unknown cross-section
+    if (c.size() == 0) cross.push_back(std::numeric_limits<double>::quiet_NaN());
+    else cross.insert(cross.end(), c.data(), c.data() + c.size());
+  }
   return Packer()
       .put(r.axis)
       .put(r.direction)
       .put(r.t)
       .put(z)
       .put(r.sse)
+      .put(cross)
       .put(r.closed ? 1.0 : 0.0)
       .put(r.crossing)
       .put(r.clipped ? 1.0 : 0.0)
@@ -695,6 +700,16 @@ RidgeTrace unpackTrace(const std::vector<double>& v, int d) {
   for (std::size_t k = 0; k + static_cast<std::size_t>(d) <= z.size(); k += static_cast<std::size_t>(d))
     r.z.push_back(Eigen::Map<const Eigen::VectorXd>(z.data() + k, d));
   r.sse = u.vec();
+  const std::vector<double> cross = u.vec();
+  for (std::size_t k = 0; k < cross.size();) {
+    if (std::isnan(cross[k])) {
+      r.cross.emplace_back();
+      ++k;
+      continue;
+    }
+    r.cross.push_back(Eigen::Map<const Eigen::MatrixXd>(cross.data() + k, d, d));
+    k += static_cast<std::size_t>(d * d);
+  }
   r.closed = u.num() != 0.0;
   r.crossing = u.num();
   r.clipped = u.num() != 0.0;

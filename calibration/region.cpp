@@ -153,6 +153,12 @@ nlohmann::json Region::toJson() const {
   j["ridge"] = nlohmann::json::array();  // traced floor points inside the contour, scaled
   for (Eigen::Index i = 0; i < ridge.rows(); ++i) j["ridge"].push_back(vectorJson(ridge.row(i).transpose()));
   j["ridge_sse"] = ridge_sse;
+  j["ridge_cov"] = nlohmann::json::array();  // per ridge row: the local Gaussian's covariance, row by row (null: unknown)
+  for (const auto& c : ridge_cov) {
+    nlohmann::json m = c.size() == 0 ? nlohmann::json() : nlohmann::json::array();
+    for (Eigen::Index i = 0; i < c.rows(); ++i) m.push_back(vectorJson(c.row(i).transpose()));
+    j["ridge_cov"].push_back(m);
+  }
   std::vector<double> lo, hi;
   boundingBox(lo, hi);
   j["bounding_box_lower"] = lo;
@@ -184,6 +190,15 @@ Region Region::fromJson(const nlohmann::json& j) {
   r.ridge.resize(static_cast<Eigen::Index>(rg.size()), d);
   for (std::size_t i = 0; i < rg.size(); ++i) r.ridge.row(static_cast<Eigen::Index>(i)) = vectorFromJson(rg[i]).transpose();
   r.ridge_sse = j.at("ridge_sse").get<std::vector<double>>();
+  if (j.contains("ridge_cov"))
+    for (const auto& m : j.at("ridge_cov")) {
+      Eigen::MatrixXd c;
+      if (!m.is_null()) {
+        c.resize(d, d);
+        for (Eigen::Index i = 0; i < d; ++i) c.row(i) = vectorFromJson(m[static_cast<std::size_t>(i)]).transpose();
+      }
+      r.ridge_cov.push_back(c);
+    }
   return r;
 }
 
@@ -457,6 +472,33 @@ struct RiseLine {
 
 }  // namespace
 
+namespace {
+/// σ² B (JᵀJ)⁻¹ Bᵀ (the posterior's cross-section at a floor point), or an empty matrix when J
+/// is missing, not finite or JᵀJ is not positive definite.
+Eigen::MatrixXd crossSection(const Eigen::MatrixXd& J, const Eigen::MatrixXd& B, double sigma2) {
+  if (J.cols() != B.cols() || J.rows() == 0 || !J.allFinite()) return {};
+  const Eigen::LLT<Eigen::MatrixXd> llt(J.transpose() * J);
+  if (llt.info() != Eigen::Success) return {};
+  const Eigen::MatrixXd inv = llt.solve(Eigen::MatrixXd::Identity(B.cols(), B.cols()));
+  if (!inv.allFinite()) return {};
+  return sigma2 * B * inv * B.transpose();
+}
+
+/// Region::ridge_cov of floor point q of `tr` (see region.hpp); empty when its cross-section is.
+Eigen::MatrixXd ridgeKernel(const RidgeTrace& tr, std::size_t q, const Eigen::VectorXd& start) {
+  if (q >= tr.cross.size() || tr.cross[q].size() == 0) return {};
+  const double t_prev = q == 0 ? 0.0 : tr.t[q - 1];
+  const Eigen::VectorXd z_prev = q == 0 ? start : tr.z[q - 1];
+  const bool has_next = q + 1 < tr.z.size();
+  const double t_next = has_next ? tr.t[q + 1] : tr.t[q];
+  const Eigen::VectorXd z_next = has_next ? tr.z[q + 1] : tr.z[q];
+  if (!(t_next > t_prev)) return {};
+  const Eigen::VectorXd g = (z_next - z_prev) / (t_next - t_prev);
+  const double ell = 0.5 * std::max(tr.t[q] - t_prev, t_next - tr.t[q]);
+  return ell * ell * g * g.transpose() + tr.cross[q];
+}
+}  // namespace
+
 RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
                           int index, const JointRegionOptions& options) {
   options.validate();
@@ -558,6 +600,7 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
     tr.t.push_back(t);
     tr.z.push_back(point(t, u));
     tr.sse.push_back(f);
+    tr.cross.push_back(crossSection(jac.J, B, sigma2));
     if (f > T) {  // the crossing, interpolated between the last two floor points
       tr.closed = true;
       const double g_in = rise.g(rise.f_before), g_out = rise.g(f);
@@ -624,6 +667,7 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
       if (tr.sse[q] <= r.threshold) {
         floor.push_back(tr.z[q]);
         floor_sse.push_back(tr.sse[q]);
+        r.ridge_cov.push_back(ridgeKernel(tr, q, r.centre));
       }
   }
   for (int i = 0; i < d; ++i) {

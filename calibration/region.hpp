@@ -99,6 +99,14 @@ struct Region {
   /// paper's box.
   Eigen::MatrixXd ridge;
   std::vector<double> ridge_sse;
+  /// Per ridge row: a local Gaussian of the posterior there (scaled), the floor's cross-section
+  /// (RidgeTrace::cross) plus its tangent dz/dt times ℓ, half the larger gap to the neighbouring
+  /// floor points of its trace (the trace's start counts as one at t = 0):
+  ///     Σ_q = ℓ² g gᵀ + cross_q,   g = the floor's tangent per unit t (central difference).
+  /// Where the posterior is a thin bent tube these follow it, which no common covariance does
+  /// (adaptive_design.hpp). Empty matrices where the cross-section is unknown; the whole vector
+  /// is empty for the paper's box and for a box.json written before it existed.
+  std::vector<Eigen::MatrixXd> ridge_cov;
   double threshold = 0.0;           ///< T of the 1 % contour
   double sse_min = 0.0;
   int evaluations = 0;              ///< simulations spent building the region
@@ -190,6 +198,10 @@ struct RidgeTrace {
   std::vector<double> t;             ///< distance along the axis (scaled), one per floor point
   std::vector<Eigen::VectorXd> z;    ///< the floor points (scaled)
   std::vector<double> sse;           ///< the profile SSE there
+  /// At each floor point, the posterior's cross-section there (scaled, d x d, rank d − 1):
+  /// σ² B (JᵀJ)⁻¹ Bᵀ from the trace's carried Jacobian J = ∂r/∂u across the traced axis,
+  /// σ² = SSE_min / n. An empty matrix where J was unknown or singular.
+  std::vector<Eigen::MatrixXd> cross;
   bool closed = false;               ///< the profile crossed T (the last point lies outside)
   /// Where the profile crosses T: interpolated between the last two floor points, linearly in
   /// sqrt(SSE − SSE_min) (exact for a quadratic profile). Set when closed.

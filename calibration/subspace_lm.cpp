@@ -132,7 +132,10 @@ bool minimiseOnSubspace(const ScaledResiduals& residuals, const Eigen::VectorXd&
         const Eigen::VectorXd step = cand - u;
         Eigen::VectorXd rc;
         const bool ok = residuals(point(cand), rc) && rc.size() == r.size() && rc.allFinite();
-        if (ok && step.squaredNorm() > 0.0)  // Broyden: the secant condition along the step
+        // Broyden: the secant condition along the step, unless the step is so short (below a
+        // millionth of the difference steps h) that rc − r is rounding noise: divided by |step|²
+        // it would wreck the Jacobian (at a floor point, where the gradient is ~0, it did).
+        if (ok && step.cwiseQuotient(h).norm() > 1e-6)
           jac.J += ((rc - r) - jac.J * step) * (step.transpose() / step.squaredNorm());
         if (ok && rc.squaredNorm() < f) {
           const double gain = f - rc.squaredNorm();

@@ -10,8 +10,12 @@
 //     q_r(z) = (1/K) Σ_c N(z; z_c, h² C),
 // the centres z_c drawn from the design so far in proportion to the posterior weights (systematic
 // resampling; round 1 adds the region's traced ridge floor points, region.hpp), except a share
-// ν0/(ESS + ν0) of them, a stratified sample of N(m, C) with m the weighted mean shrunk towards the
-// region's guess mean with the same weight; C the weighted posterior covariance shrunk towards the region's Gaussian guess
+// ν0/(ESS + ν0) of them taken from what the region knows: where the traced ridge is straight (every
+// floor point inside the Gaussian guess's own 1 % contour, widened 1.5 times), a stratified sample
+// of N(m, C) with m the weighted mean shrunk towards the region's guess mean with the same weight;
+// where it bends (a thin curved tube, which no common covariance follows), the floor points
+// themselves, each kernel with its own local Gaussian (Region::ridge_cov, sd widened 1.5 times),
+// allotted in proportion to posterior(z_q)·sqrt(det Σ_q); C the weighted posterior covariance shrunk towards the region's Gaussian guess
 // with the weight of ν0 = 10 (d + 1) points, C = (ESS·C_w + ν0·C_guess)/(ESS + ν0), so that a round
 // resting on a handful of heavy points still explores around them with a sensible shape; and
 // h = max(h_min, Silverman's factor (4/(d+2))^{1/(d+4)} ESS^{−1/(d+4)}). Kernels on the heavy

@@ -182,6 +182,47 @@ bool ridgeBends(const Region& region) {
   return false;
 }
 
+/// Rows 0 .. count−1 of round.centres: the ridge floor points `local` with their own widened
+/// local Gaussians (round.own_cov), allotted by systematic allotment (offset 1/2) in proportion to
+/// posterior(z_q)·sqrt(det Σ_q), τ integrated out as in diagnose().
+void ridgeCentres(DesignRound& round, const Region& region, const std::vector<Eigen::Index>& local, int count, int n_data,
+                  const AdaptiveDesignOptions& options) {
+  round.own_cov.assign(static_cast<std::size_t>(round.centres.rows()), Eigen::MatrixXd());
+  std::vector<double> lw(local.size());
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    const auto q = static_cast<std::size_t>(local[k]);
+    lw[k] = -(options.tau_a + 0.5 * n_data) * std::log(options.tau_b + 0.5 * region.ridge_sse[q]) +
+            choleskyOf(region.ridge_cov[q]).diagonal().array().log().sum();
+  }
+  const double top = *std::max_element(lw.begin(), lw.end());
+  std::vector<double> cum(local.size());
+  double total = 0.0;
+  for (std::size_t k = 0; k < local.size(); ++k) cum[k] = (total += std::exp(lw[k] - top));
+  std::size_t k = 0;
+  for (int i = 0; i < count; ++i) {
+    const double target = (i + 0.5) / count * total;
+    while (k + 1 < local.size() && cum[k] < target) ++k;
+    round.centres.row(i) = region.ridge.row(local[k]);
+    round.own_cov[static_cast<std::size_t>(i)] = kRidgeWiden * kRidgeWiden * region.ridge_cov[static_cast<std::size_t>(local[k])];
+  }
+}
+
+/// Rows 0 .. count−1 of round.centres: a stratified sample of N(m, blend), m the weighted mean
+/// shrunk towards the region's guess mean with the weight nu0.
+void guessCentres(DesignRound& round, const Region& region, const Diagnostics& now, const Eigen::MatrixXd& blend, double nu0,
+                  int count, std::uint64_t seed) {
+  const auto d = static_cast<int>(blend.rows());
+  const Eigen::VectorXd m = (now.ess * now.mean + nu0 * region.guess_mean) / (now.ess + nu0);
+  const std::vector<double> zero(static_cast<std::size_t>(d), 0.0), one(static_cast<std::size_t>(d), 1.0);
+  const Eigen::MatrixXd u = latinHypercube(count, zero, one, seed);
+  const Eigen::MatrixXd L = choleskyOf(blend);
+  for (int i = 0; i < count; ++i) {
+    Eigen::VectorXd x(d);
+    for (int j = 0; j < d; ++j) x(j) = normalQuantile(std::clamp(u(i, j), 1e-12, 1.0 - 1e-12));
+    round.centres.row(i) = (m + L * x).transpose();
+  }
+}
+
 /// Adaptive round r >= 1: a Gaussian mixture with kernels on the heavy points of the design so far
 /// (scaled points `zs`, diagnostics `now`) and a defensive broad component.
 DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs, const Region& region, int n_data,
@@ -211,37 +252,8 @@ DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs
   const int from_prior = static_cast<int>(std::lround(K * nu0 / (now.ess + nu0)));
   const std::vector<Eigen::Index> local = ridgeBends(region) ? localKernels(region) : std::vector<Eigen::Index>{};
   next.centres.resize(K, d);
-  if (!local.empty() && from_prior > 0) {
-    next.own_cov.assign(static_cast<std::size_t>(K), Eigen::MatrixXd());
-    std::vector<double> lw(local.size());
-    for (std::size_t k = 0; k < local.size(); ++k) {
-      const auto q = static_cast<std::size_t>(local[k]);
-      lw[k] = -(options.tau_a + 0.5 * n_data) * std::log(options.tau_b + 0.5 * region.ridge_sse[q]) +
-              choleskyOf(region.ridge_cov[q]).diagonal().array().log().sum();
-    }
-    const double top = *std::max_element(lw.begin(), lw.end());
-    std::vector<double> cum(local.size());
-    double total = 0.0;
-    for (std::size_t k = 0; k < local.size(); ++k) cum[k] = (total += std::exp(lw[k] - top));
-    std::size_t k = 0;
-    for (int i = 0; i < from_prior; ++i) {  // systematic allotment, offset 1/2
-      const double target = (i + 0.5) / from_prior * total;
-      while (k + 1 < local.size() && cum[k] < target) ++k;
-      const auto q = static_cast<std::size_t>(local[k]);
-      next.centres.row(i) = region.ridge.row(local[k]);
-      next.own_cov[static_cast<std::size_t>(i)] = kRidgeWiden * kRidgeWiden * region.ridge_cov[q];
-    }
-  } else if (from_prior > 0) {
-    const Eigen::VectorXd m = (now.ess * now.mean + nu0 * region.guess_mean) / (now.ess + nu0);
-    const std::vector<double> zero(static_cast<std::size_t>(d), 0.0), one(static_cast<std::size_t>(d), 1.0);
-    const Eigen::MatrixXd u = latinHypercube(from_prior, zero, one, derivedSeed(options.seed, kStreamGuessCentres, r));
-    const Eigen::MatrixXd L = choleskyOf(blend);
-    for (int i = 0; i < from_prior; ++i) {
-      Eigen::VectorXd x(d);
-      for (int j = 0; j < d; ++j) x(j) = normalQuantile(std::clamp(u(i, j), 1e-12, 1.0 - 1e-12));
-      next.centres.row(i) = (m + L * x).transpose();
-    }
-  }
+  if (!local.empty() && from_prior > 0) ridgeCentres(next, region, local, from_prior, n_data, options);
+  else if (from_prior > 0) guessCentres(next, region, now, blend, nu0, from_prior, derivedSeed(options.seed, kStreamGuessCentres, r));
   if (from_prior < K)
     next.centres.bottomRows(K - from_prior) = resampleCentres(zs, now.weights, K - from_prior, derivedSeed(options.seed, kStreamResample, r));
   if (r == 1 && local.empty() && region.ridge.rows() > 0) {

@@ -121,6 +121,9 @@ CalibrationFolder readCalibrationFolder(const std::string& dir) {
   CalibrationFolder f;
   f.dir = dir;
   const fs::path summary_path = d / "summary.json";
+  if (!fs::exists(summary_path) && fs::exists(d / "optimum.json"))
+    throw InputError(dir, "holds only an optimum (a `twin diagnose` candidate that could not be the verdict stops there); "
+                          "rerun that diagnosis with --all-intervals to calibrate it in full");
   if (!fs::exists(summary_path))
     throw InputError(dir, "has no summary.json (give a folder written by `twin calibrate` or `twin diagnose`)");
   const std::string where = summary_path.string();

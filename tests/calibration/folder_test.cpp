@@ -96,6 +96,9 @@ TEST(CalibrationFolder, EveryBrokenPartIsNamed) {
   EXPECT_EQ(folderError(dir / "missing"), (dir / "missing").string() +
                                               ": is not a folder (give one written by `twin calibrate` or `twin diagnose`)");
   EXPECT_EQ(folderError(dir), dir.string() + ": has no summary.json (give a folder written by `twin calibrate` or `twin diagnose`)");
+  writeText(dir / "optimum.json", "{}");  // a diagnosis candidate calibrated to its optimum only
+  EXPECT_NE(folderError(dir).find("holds only an optimum"), std::string::npos) << folderError(dir);
+  fs::remove(dir / "optimum.json");
   writeText(dir / "summary.json", "{\"assembly\": ");
   EXPECT_NE(folderError(dir).find((dir / "summary.json").string() + ": is not valid JSON"), std::string::npos);
   writeText(dir / "summary.json", "[1, 2]");

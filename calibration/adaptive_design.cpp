@@ -280,8 +280,13 @@ DesignRound kernelRound(int r, const Diagnostics& now, const Eigen::MatrixXd& zs
 void DesignRound::prepare() {
   if (kind != "gaussian") return;
   chol = choleskyOf(cov);
+  logdet = chol.diagonal().array().log().sum();
   own_chol.clear();
-  for (const auto& c : own_cov) own_chol.push_back(c.size() == 0 ? Eigen::MatrixXd() : choleskyOf(c));
+  own_logdet.clear();
+  for (const auto& c : own_cov) {
+    own_chol.push_back(c.size() == 0 ? Eigen::MatrixXd() : choleskyOf(c));
+    own_logdet.push_back(c.size() == 0 ? 0.0 : own_chol.back().diagonal().array().log().sum());
+  }
   if (broad_share > 0.0) broad_chol = choleskyOf(broad_cov);
 }
 
@@ -377,14 +382,11 @@ double logMixtureDensity(const std::vector<DesignRound>& rounds, const Eigen::Ve
         terms.push_back(std::log(static_cast<double>(nb)) - 0.5 * d * kLog2Pi - r.broad_chol.diagonal().array().log().sum() -
                         0.5 * x.squaredNorm());
       }
-      const double logdet = r.chol.diagonal().array().log().sum();
       for (long c = 0; c < K; ++c) {
         const long count = rest / K + (c < rest % K ? 1 : 0);
         if (count == 0) continue;
-        const Eigen::MatrixXd& L = r.cholOf(c);
-        const double ld = &L == &r.chol ? logdet : L.diagonal().array().log().sum();
-        const Eigen::VectorXd x = L.triangularView<Eigen::Lower>().solve(z - r.centres.row(c).transpose());
-        terms.push_back(std::log(static_cast<double>(count)) - 0.5 * d * kLog2Pi - ld - 0.5 * x.squaredNorm());
+        const Eigen::VectorXd x = r.cholOf(c).triangularView<Eigen::Lower>().solve(z - r.centres.row(c).transpose());
+        terms.push_back(std::log(static_cast<double>(count)) - 0.5 * d * kLog2Pi - r.logdetOf(c) - 0.5 * x.squaredNorm());
       }
     }
   }

@@ -105,11 +105,15 @@ struct DesignRound {
   /// kernel's local Gaussian, Region::ridge_cov), or an empty matrix for `cov`.
   std::vector<Eigen::MatrixXd> own_cov;
   std::vector<Eigen::MatrixXd> own_chol;  ///< their Cholesky factors (set by prepare())
-  /// The lower Cholesky factor of centre c's kernel.
-  const Eigen::MatrixXd& cholOf(Eigen::Index c) const {
+  std::vector<double> own_logdet;         ///< log det of each own_chol (0 where the kernel uses `cov`)
+  double logdet = 0.0;                    ///< log det of `chol` (set by prepare())
+  /// The lower Cholesky factor of centre c's kernel, and its log determinant.
+  bool ownKernel(Eigen::Index c) const {
     const auto k = static_cast<std::size_t>(c);
-    return k < own_chol.size() && own_chol[k].size() > 0 ? own_chol[k] : chol;
+    return k < own_chol.size() && own_chol[k].size() > 0;
   }
+  const Eigen::MatrixXd& cholOf(Eigen::Index c) const { return ownKernel(c) ? own_chol[static_cast<std::size_t>(c)] : chol; }
+  double logdetOf(Eigen::Index c) const { return ownKernel(c) ? own_logdet[static_cast<std::size_t>(c)] : logdet; }
   /// Gaussian rounds: the defensive component, taking the first round(broad_share · M) points.
   double broad_share = 0.0;
   Eigen::VectorXd broad_mean;

@@ -470,9 +470,6 @@ struct RiseLine {
   double reach() const { return slope() > 0 ? (g(threshold) - g(f_last)) / slope() : std::numeric_limits<double>::infinity(); }
 };
 
-}  // namespace
-
-namespace {
 /// σ² B (JᵀJ)⁻¹ Bᵀ (the posterior's cross-section at a floor point), or an empty matrix when J
 /// is missing, not finite or JᵀJ is not positive definite.
 Eigen::MatrixXd crossSection(const Eigen::MatrixXd& J, const Eigen::MatrixXd& B, double sigma2) {

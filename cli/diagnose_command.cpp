@@ -144,7 +144,7 @@ std::vector<std::string> splitCommas(const std::vector<std::string>& v) {
 }
 
 int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
-  const Study study = loadStudy(cfg.study);
+  Study study = loadStudy(cfg.study);
   checkOutFolder(cfg.out);
   const AssemblySpec assembly = study.assembly(cfg.assembly);
   const auto fit = loadSets(study, cfg.data, "--data");
@@ -165,10 +165,12 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   o.compare_draws = cfg.draws;
   o.effects = splitCommas(cfg.effects);
   // An --apply item that is a .toml file (e.g. a diagnosis's proposal.toml): its [user_effects]
-  // are registered and applied in their order.
+  // join the study's effects and are applied in their order.
   for (const auto& a : splitCommas(cfg.apply)) {
     if (a.size() > 5 && a.compare(a.size() - 5, 5, ".toml") == 0) {
-      for (const auto& u : loadUserEffects(a)) o.apply.push_back(u.name);
+      const auto specs = loadUserEffects(a);
+      study.addUserEffects(specs);
+      for (const auto& u : specs) o.apply.push_back(u.name);
     } else {
       o.apply.push_back(a);
     }

@@ -60,9 +60,9 @@ void checkOut(const std::string& out) {
     throw InputError("--out", "cannot write into folder '" + dir.string() + "'");
 }
 
-std::vector<EffectSetting> parseHidden(const std::vector<std::string>& texts) {
+std::vector<EffectSetting> parseHidden(const std::vector<std::string>& texts, const EffectCatalog& catalog) {
   std::vector<EffectSetting> out;
-  for (const auto& t : texts) out.push_back(parseEffectSetting(t, "--hidden-effect"));
+  for (const auto& t : texts) out.push_back(parseEffectSetting(t, "--hidden-effect", catalog));
   return out;
 }
 
@@ -82,9 +82,9 @@ std::vector<std::pair<std::string, double>> parseAssignments(const std::vector<s
 }
 
 /// "twin: hidden effect: ..." on stdout (one line), unless quiet or none.
-void printHidden(const nlohmann::json& provenance) {
+void printHidden(const nlohmann::json& provenance, const EffectCatalog& catalog) {
   if (provenance.contains("hidden_effects"))
-    std::printf("hidden effect used to make the data: %s\n", hiddenEffectsSummary(provenance["hidden_effects"]).c_str());
+    std::printf("hidden effect used to make the data: %s\n", hiddenEffectsSummary(provenance["hidden_effects"], catalog).c_str());
   if (provenance.contains("hidden_values"))
     for (const auto& [name, v] : provenance["hidden_values"].items())
       std::printf("hidden vehicle value used to make the data: %s = %s\n", name.c_str(), formatExact(v.get<double>()).c_str());
@@ -99,7 +99,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   const AssemblySpec a = chooseAssembly(study, cfg.assembly);
   LabOptions opt;
   if (!cfg.scenario.empty()) opt.scenario = cfg.scenario;
-  opt.hidden_effects = parseHidden(cfg.hidden_effects);
+  opt.hidden_effects = parseHidden(cfg.hidden_effects, study.effectCatalog());
   for (const auto& [name, v] : parseAssignments(cfg.hidden_values, "--hidden-value")) opt.hidden_values.push_back({name, v, "--hidden-value", "--hidden-value"});
   opt.hidden_sensor = parseAssignments(cfg.hidden_sensor, "--hidden-sensor");
   opt.times_mode = cfg.times == "all" ? LabTimesMode::All : LabTimesMode::Study;
@@ -139,7 +139,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
     std::printf("%s (%s): %ld repetitions x %zu times x %zu channel(s), %s -> %s, %s\n", a.id.c_str(), a.label().c_str(),
                 r.provenance["lab"]["repetitions"].get<long>(), r.times_s.size(), r.provenance["lab"]["channels"].size(),
                 times.c_str(), cfg.out.c_str(), sidecarPath(cfg.out).c_str());
-    printHidden(r.provenance);
+    printHidden(r.provenance, study.effectCatalog());
   }
   return 0;
 }
@@ -156,7 +156,7 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
     opt.t_begin_s = cfg.window[0];
     opt.t_end_s = cfg.window[1];
   }
-  opt.hidden_effects = parseHidden(cfg.hidden_effects);
+  opt.hidden_effects = parseHidden(cfg.hidden_effects, study.effectCatalog());
   opt.runs = cfg.runs;
   {
     Study sized = study;
@@ -182,7 +182,7 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
                 a.label().c_str(), r.data.rowCount(), r.data.columnCount(), opt.channel.c_str(), r.data.times_s.front(),
                 r.data.times_s.back(), r.provenance["field"]["threads"].get<int>(),
                 r.provenance["stats"]["wall_s"].get<double>(), cfg.out.c_str(), sidecarPath(cfg.out).c_str());
-  if (!cfg.quiet) printHidden(r.provenance);
+  if (!cfg.quiet) printHidden(r.provenance, study.effectCatalog());
   return 0;
 }
 

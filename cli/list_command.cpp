@@ -36,8 +36,8 @@ int runList(const std::string& study_path, bool params) {
     std::printf("  %-24s [%g, %g] %s%s\n", c.name.c_str(), c.lower, c.upper, c.unit.c_str(),
                 c.truth ? (" truth " + std::to_string(*c.truth)).c_str() : "");
   std::printf("\neffects (add with --effect NAME:param=value,...; all default to off):\n");
-  for (const auto& n : effectNames()) {
-    auto e = makeEffect(n, "");
+  for (const auto& n : study.effectCatalog().names()) {
+    auto e = study.effectCatalog().make(n, "");
     std::printf("  %-18s %s\n", n.c_str(), e->description().c_str());
     for (const auto& p : e->parameters())
       std::printf("      %-24s [%s] off = %g  prior [%g, %g]  %s\n", (n + "." + p.name).c_str(), p.unit.c_str(), p.default_value,

@@ -38,7 +38,7 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
   std::vector<ParameterSetting> sets;
   for (auto& s : cfg.sets) sets.push_back(parseSetting(s, "--set"));
   std::vector<EffectSetting> effects;
-  for (auto& e : cfg.effects) effects.push_back(parseEffectSetting(e, "--effect"));
+  for (auto& e : cfg.effects) effects.push_back(parseEffectSetting(e, "--effect", study.effectCatalog()));
   SimulationOptions opt = study.simulation;
   if (!cfg.integrator.empty()) opt.integrator = cfg.integrator;
   opt.accuracy = cfg.accuracy.value_or(opt.accuracy);

@@ -78,19 +78,23 @@ std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(cons
   return groups;
 }
 
-bool isCandidateName(const std::string& name) {
+bool hasCandidateForm(const std::string& name) {
   if (name.rfind(kFree, 0) == 0) return name.size() > std::string(kFree).size();
   const auto colon = name.find(':');
   if (colon != std::string::npos) {
     const auto& kinds = sensorModelKinds();
     return std::find(kinds.begin(), kinds.end(), name.substr(0, colon)) != kinds.end() && colon + 1 < name.size();
   }
-  const auto names = effectNames();
-  return std::find(names.begin(), names.end(), name) != names.end();
+  return !name.empty();
 }
 
-std::vector<std::string> defaultCandidates(const AssemblySpec& assembly, const std::vector<std::string>& channels) {
-  std::vector<std::string> out = effectNames();
+bool isCandidateName(const std::string& name, const EffectCatalog& catalog) {
+  if (!hasCandidateForm(name)) return false;
+  return name.find(':') != std::string::npos || catalog.contains(name);
+}
+
+std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const AssemblySpec& assembly, const std::vector<std::string>& channels) {
+  std::vector<std::string> out = catalog.names();
   for (const auto& f : freeableOf(assembly)) out.push_back(kFree + f);
   for (const auto& [group, members] : channelGroups(channels))
     for (const auto& k : sensorModelKinds()) out.push_back(k + ":" + group);
@@ -153,7 +157,7 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
     c.signature = "the " + group + " channels were distorted by the logger (" + c.sensor_kind + ")";
     return c;
   }
-  const auto effect = makeEffect(name, where);  // InputError naming the known effects
+  const auto effect = study.effectCatalog().make(name, where);  // InputError naming the known effects
   c.kind = "effect";
   for (const auto& p : effect->parameters())
     if (!p.shape) {

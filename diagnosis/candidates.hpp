@@ -15,6 +15,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "subsystems/effect.hpp"
+#include "subsystems/effect_catalog.hpp"
 
 namespace dtwin::diag {
 
@@ -51,12 +52,15 @@ std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(cons
 CandidateSpec candidateSpec(const std::string& name, const Study& study, const AssemblySpec& assembly,
                             const std::vector<std::string>& channels, const std::string& where);
 
-/// Every candidate of the default catalogue: each registered effect, each freeable vehicle value
-/// the assembly has, and each sensor model on each channel group.
-std::vector<std::string> defaultCandidates(const AssemblySpec& assembly, const std::vector<std::string>& channels);
+/// Every candidate of the default catalogue: each effect of `catalog` (the study's), each freeable
+/// vehicle value the assembly has, and each sensor model on each channel group.
+std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const AssemblySpec& assembly,
+                                           const std::vector<std::string>& channels);
 
-/// True when `name` has the form of a candidate (an effect name, "free:<value>" or
-/// "<sensor model>:<group>"): the options' check before the data are known.
-bool isCandidateName(const std::string& name);
+/// True when `name` has the form of a candidate ("free:<value>", "<sensor model>:<group>" or a
+/// non-empty effect name): the options' check before the study and the data are known.
+bool hasCandidateForm(const std::string& name);
+/// hasCandidateForm, and an effect's name is one of `catalog`'s.
+bool isCandidateName(const std::string& name, const EffectCatalog& catalog);
 
 }  // namespace dtwin::diag

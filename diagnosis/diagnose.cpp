@@ -178,10 +178,10 @@ void DiagnoseOptions::validate() const {
     const auto& names = std::string(field) == "effects" ? effects : apply;
     std::set<std::string> seen;
     for (const auto& e : names) {
-      // An effect's name: InputError naming the nearest and every known effect. A freed value or a
-      // sensor model is checked against the study and the data (catalogueOf).
-      if (e.find(':') == std::string::npos) makeEffect(e, check.where(field));
-      check.require(isCandidateName(e), field,
+      // The form only: an effect's name is checked against the study's catalogue (diagnose(), naming
+      // the nearest and every known effect), a freed value or a sensor model against the study and
+      // the data (catalogueOf).
+      check.require(hasCandidateForm(e), field,
                     "'" + e + "' is not a candidate: an effect, free:<vehicle value> or <lowpass|lowpass2|gain|delay>:<channel group>");
       check.require(seen.insert(e).second, field, "names '" + e + "' twice");
     }
@@ -374,7 +374,8 @@ std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& ass
                                      const std::vector<std::string>& channels, std::map<std::string, CandidateSpec>& specs) {
   const OptionCheck check("diagnose");
   const auto installed = refuseInstalled(study, assembly, options);
-  std::vector<std::string> catalogue = options.effects.empty() ? defaultCandidates(assembly, channels) : options.effects;
+  std::vector<std::string> catalogue =
+      options.effects.empty() ? defaultCandidates(study.effectCatalog(), assembly, channels) : options.effects;
   catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const std::string& e) { return installed.count(e) > 0; }),
                   catalogue.end());
   for (const char* field : {"effects", "apply"})
@@ -1079,6 +1080,9 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
                          const std::vector<calib::DataSet>& holdout, const DiagnoseOptions& options,
                          const std::string& out_dir, const DiagnoseProgress& progress) {
   options.validate();
+  for (const char* field : {"effects", "apply"})  // an effect's name, before the data are read
+    for (const auto& e : std::string(field) == "effects" ? options.effects : options.apply)
+      if (e.find(':') == std::string::npos) (void)study.effectCatalog().make(e, OptionCheck("diagnose").where(field));
   if (fit.empty()) throw InputError(OptionCheck("diagnose").where("fit"), "needs at least one measurement data set");
   Diagnosis d(study, assembly, options, out_dir, progress);
   d.res.assembly = assembly.id;

@@ -85,14 +85,12 @@ const std::vector<EffectEntry>& effectRegistry() {
 std::vector<std::string> effectNames() {
   std::vector<std::string> names;
   for (const auto& e : effectRegistry()) names.push_back(e.name);
-  for (auto& n : userEffectNames()) names.push_back(std::move(n));
   return names;
 }
 
 std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& where) {
   for (const auto& e : effectRegistry())
     if (e.name == name) return e.make();
-  if (auto user = makeRegisteredUserEffect(name)) return user;
   if (name.rfind(kTermPrefix, 0) == 0) {
     // A library term of twin diagnose's proposal: strut force a * (TERM), a unregistered user effect.
     UserEffectSpec u;

@@ -134,11 +134,11 @@ const std::vector<EffectEntry>& effectRegistry();
 /// (off: 0). Such effects are made on demand and never listed by effectNames().
 inline constexpr const char* kTermPrefix = "term:";
 
-/// The registered effect `name`: a built-in one, else a user-defined one a study registered
-/// (subsystems/user_effect.hpp). Throws InputError(where, "unknown effect 'x' (known: ...; did you
-/// mean 'y'?)") (common/names.hpp unknownNameRule).
+/// The built-in effect `name`, or a library term. Throws InputError(where, "unknown effect 'x'
+/// (known: ...; did you mean 'y'?)") (common/names.hpp unknownNameRule). A study's user-defined
+/// effects are made by its EffectCatalog (subsystems/effect_catalog.hpp), which calls this.
 std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& where);
-/// The registered names: the built-in effects in registry order, then the user-defined ones.
+/// The built-in effects' names, in registry order.
 std::vector<std::string> effectNames();
 
 }  // namespace dtwin

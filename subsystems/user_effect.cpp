@@ -2,11 +2,13 @@
 
 #include <muParser.h>
 
+#include <array>
 #include <atomic>
 #include <limits>
 #include <cctype>
 #include <cmath>
 #include <mutex>
+#include <thread>
 #include <unordered_map>
 
 #include "common/errors.hpp"
@@ -92,8 +94,7 @@ bool elementOf(const std::string& name, Element& e) {
 
 class UserEffect final : public Effect {
  public:
-  /// `id` keys each thread's compiled copy: one per registered definition (shared by every
-  /// object made from it), a fresh one otherwise (newId()).
+  /// `id` (newId()) names this object in each thread's list of recent compiled copies.
   UserEffect(UserEffectSpec spec, std::uint64_t id) : spec_(std::move(spec)), id_(id) {
     (void)elementOf(spec_.element, element_);
     for (const auto& v : userEffectVariables(spec_.element)) names_.push_back(v.name);
@@ -153,24 +154,41 @@ class UserEffect final : public Effect {
 
  private:
   Compiled& local() const {
-    // Per thread and per definition (by a unique id, not an address that may be reused). The last
-    // one used is kept apart: a run evaluates one effect many times, so the hot path skips the map.
-    thread_local std::unordered_map<std::uint64_t, std::unique_ptr<Compiled>> cache;
-    thread_local std::uint64_t last_id = 0;
-    thread_local Compiled* last = nullptr;
-    if (last_id == id_) return *last;
-    auto& slot = cache[id_];
-    if (!slot) {
-      auto c = std::make_unique<Compiled>();
-      compile(*c, spec_.force, names_, spec_.where);
-      slot = std::move(c);
+    // The copies are this object's, one per thread that evaluates it, made on first use and freed
+    // with the object. A thread remembers its last few (object id, copy) pairs, so the hot path is
+    // a short scan and no lock; ids are unique for the process's life, so a remembered pair of an
+    // object since destroyed never matches a live one.
+    struct Recent {
+      std::uint64_t id = 0;
+      Compiled* copy = nullptr;
+    };
+    thread_local std::array<Recent, 8> recent{};
+    thread_local std::size_t next = 0, last = 0;
+    if (recent[last].id == id_) return *recent[last].copy;  // a run evaluates one effect many times
+    for (std::size_t i = 0; i < recent.size(); ++i)
+      if (recent[i].id == id_) {
+        last = i;
+        return *recent[i].copy;
+      }
+    Compiled* c = nullptr;
+    {
+      std::lock_guard<std::mutex> lock(copies_mutex_);
+      auto& slot = copies_[std::this_thread::get_id()];
+      if (!slot) {
+        auto fresh = std::make_unique<Compiled>();
+        compile(*fresh, spec_.force, names_, spec_.where);
+        slot = std::move(fresh);
+      }
+      c = slot.get();
     }
-    last_id = id_;
-    last = slot.get();
-    return *slot;
+    last = next++ % recent.size();
+    recent[last] = {id_, c};
+    return *c;
   }
   UserEffectSpec spec_;
   std::uint64_t id_ = 0;
+  mutable std::mutex copies_mutex_;
+  mutable std::unordered_map<std::thread::id, std::unique_ptr<Compiled>> copies_;
   Element element_ = Element::Strut;
   std::vector<std::string> names_;  ///< the state variables, then the parameters
   std::size_t nstate_ = 0;
@@ -358,20 +376,7 @@ std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec) {
   return effect;
 }
 
-namespace {
-
-struct UserRegistry {
-  struct Entry {
-    UserEffectSpec spec;
-    std::uint64_t id = 0;  ///< the key of the definition's compiled copies
-  };
-  std::mutex m;
-  std::vector<Entry> entries;  ///< in registration order
-};
-UserRegistry& userRegistry() {
-  static UserRegistry r;
-  return r;
-}
+std::unique_ptr<Effect> remakeUserEffect(const UserEffectSpec& spec) { return std::make_unique<UserEffect>(spec, newId()); }
 
 bool sameDefinition(const UserEffectSpec& a, const UserEffectSpec& b) {
   if (a.element != b.element || a.force != b.force || a.parameters.size() != b.parameters.size()) return false;
@@ -381,39 +386,6 @@ bool sameDefinition(const UserEffectSpec& a, const UserEffectSpec& b) {
       return false;
   }
   return true;
-}
-
-}  // namespace
-
-void registerUserEffect(const UserEffectSpec& spec) {
-  for (const auto& e : effectRegistry())
-    if (e.name == spec.name) throw InputError(spec.where, "'" + spec.name + "' is a built-in effect's name; give the user-defined one another");
-  (void)makeUserEffect(spec);  // every check, before it becomes known
-  auto& r = userRegistry();
-  std::lock_guard<std::mutex> lock(r.m);
-  for (const auto& e : r.entries)
-    if (e.spec.name == spec.name) {
-      if (sameDefinition(e.spec, spec)) return;
-      throw InputError(spec.where, "another definition of '" + spec.name + "' is in use (" + e.spec.where +
-                                       "): one process holds one definition per name");
-    }
-  r.entries.push_back({spec, newId()});
-}
-
-std::unique_ptr<Effect> makeRegisteredUserEffect(const std::string& name) {
-  auto& r = userRegistry();
-  std::lock_guard<std::mutex> lock(r.m);
-  for (const auto& e : r.entries)
-    if (e.spec.name == name) return std::make_unique<UserEffect>(e.spec, e.id);  // checked when registered
-  return nullptr;
-}
-
-std::vector<std::string> userEffectNames() {
-  auto& r = userRegistry();
-  std::lock_guard<std::mutex> lock(r.m);
-  std::vector<std::string> out;
-  for (const auto& e : r.entries) out.push_back(e.spec.name);
-  return out;
 }
 
 }  // namespace dtwin

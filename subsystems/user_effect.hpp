@@ -67,16 +67,11 @@ const std::vector<UserEffectVariable>& userEffectVariables(const std::string& el
 /// one whose units are not N.
 std::unique_ptr<Effect> makeUserEffect(const UserEffectSpec& spec);
 
-/// Makes `spec` known by name to makeEffect and effectNames (subsystems/effect.hpp), after the
-/// built-in effects, for the rest of the process: a study file's [user_effects.NAME] tables are
-/// registered when the study is read. Registering the same definition again does nothing.
-/// InputError(spec.where, ...) when the name is a built-in effect's, or another definition of it
-/// is registered already (two studies in one process that disagree).
-void registerUserEffect(const UserEffectSpec& spec);
-/// The effect of the registered definition `name` (no checks: they were made when it was
-/// registered), or nullptr.
-std::unique_ptr<Effect> makeRegisteredUserEffect(const std::string& name);
-/// The registered names, in the order they were registered.
-std::vector<std::string> userEffectNames();
+/// The effect of a definition makeUserEffect accepted, without its checks (what an EffectCatalog
+/// makes each time a model installs the effect).
+std::unique_ptr<Effect> remakeUserEffect(const UserEffectSpec& spec);
+/// Whether two definitions give the same effect (element, force and parameters; names and
+/// `where` aside).
+bool sameDefinition(const UserEffectSpec& a, const UserEffectSpec& b);
 
 }  // namespace dtwin

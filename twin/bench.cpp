@@ -139,15 +139,16 @@ BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario,
     r.max_abs_difference = std::max(r.max_abs_difference, std::abs(user->calcStrutForce(s, p) - builtin->calcStrutForce(s, p)));
   }
   if (sink_b != sink_u) r.max_abs_difference = std::max(r.max_abs_difference, std::abs(sink_b - sink_u) / static_cast<double>(evaluations));
-  // Inside the twin: whole runs with each effect.
-  registerUserEffect(spec);
-  const ScenarioSpec& sc = study.scenario(scenario);
+  // Inside the twin: whole runs with each effect, the user one added to a copy of the study.
+  Study with = study;
+  with.addUserEffects({spec});
+  const ScenarioSpec& sc = with.scenario(scenario);
   r.scenario = scenario;
-  const AssemblySpec a = study.assemblies().front();
+  const AssemblySpec a = with.assemblies().front();
   auto runOnce = [&](const std::string& name, RunResult* keep) {
-    auto model = study.makeModel(a, {EffectSetting{name, {{name + ".ratio", 2.2, "twin bench", "twin bench"}}}});
-    Simulator sim(model, study.simulation);
-    auto road = makeRoad(sc, model->vehicle(), study.seed);
+    auto model = with.makeModel(a, {EffectSetting{name, {{name + ".ratio", 2.2, "twin bench", "twin bench"}}}});
+    Simulator sim(model, with.simulation);
+    auto road = makeRoad(sc, model->vehicle(), with.seed);
     const auto t0 = std::chrono::steady_clock::now();
     RunResult res = sim.run(model->defaultRunValues(), *road, sc);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

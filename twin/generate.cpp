@@ -64,7 +64,7 @@ std::shared_ptr<const Model> modelWithHidden(const Study& study, const AssemblyS
                                              const std::vector<EffectSetting>& hidden, const std::string& where) {
   for (std::size_t i = 0; i < hidden.size(); ++i) {
     const auto& e = hidden[i];
-    makeEffect(e.name, where);
+    study.effectCatalog().make(e.name, where);
     for (std::size_t j = 0; j < i; ++j)
       if (hidden[j].name == e.name) throw InputError(where, "effect " + e.name + " given twice");
     for (const auto& v : e.values)
@@ -102,11 +102,11 @@ nlohmann::json hiddenEffectsJson(const Model& model, const std::vector<EffectSet
   return out;
 }
 
-std::string hiddenEffectsSummary(const nlohmann::json& hidden) {
+std::string hiddenEffectsSummary(const nlohmann::json& hidden, const EffectCatalog& catalog) {
   std::string s;
   for (const auto& h : hidden) {
     const std::string name = h["name"].get<std::string>();
-    const auto effect = makeEffect(name, "hidden effect");
+    const auto effect = catalog.make(name, "hidden effect");
     std::string p;
     for (const auto& [k, v] : h["parameters"].items()) {
       p += (p.empty() ? "" : ", ") + k + "=" + formatExact(v.get<double>());

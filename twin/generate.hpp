@@ -64,7 +64,7 @@ enum class LabTimesMode {
 nlohmann::json hiddenEffectsJson(const Model& model, const std::vector<EffectSetting>& hidden);
 /// One line from hiddenEffectsJson: "bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)";
 /// effects separated by "; ".
-std::string hiddenEffectsSummary(const nlohmann::json& hidden_effects_json);
+std::string hiddenEffectsSummary(const nlohmann::json& hidden_effects_json, const EffectCatalog& catalog);
 
 struct LabOptions {
   std::string scenario = "lab";

@@ -76,7 +76,7 @@ const std::map<std::string, std::vector<std::string>>& knownSubsystems() {
   return k;
 }
 
-ParameterTable declareVehicleParameters() {
+ParameterTable declareVehicleParameters(const EffectCatalog& catalog) {
   ParameterTable t;
   auto fixed = [&](const char* n, const char* u, const char* d, double lo = 0.0, bool incl = false) {
     t.declare(fixedSpec(n, u, d, lo, incl));
@@ -119,8 +119,8 @@ ParameterTable declareVehicleParameters() {
   fixed("suspension.solid_axle.interface_travel_limit_m", "m", "wheel/axle interface travel before its hardstop");
   fixed("suspension.solid_axle.interface_hardstop_stiffness", "N/m", "wheel/axle interface hardstop stiffness", 0.0, true);
   // Effects: pre-set to their "off" values.
-  for (const auto& e : effectNames()) {
-    auto eff = makeEffect(e, "");
+  for (const auto& e : catalog.names()) {
+    auto eff = catalog.make(e, "");
     for (auto s : eff->parameters()) {
       s.name = e + "." + s.name;
       const double off = s.default_value;
@@ -180,8 +180,10 @@ void declareEffectParameters(ParameterTable& table, const Effect& effect, const 
 }
 
 // ------------------------------------------------------------------ Model
-Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors)
-    : assembly_(std::move(assembly)), table_(std::move(table)), sensors_(std::move(sensors)), where_(where) {
+Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors,
+             std::shared_ptr<const EffectCatalog> catalog)
+    : assembly_(std::move(assembly)), table_(std::move(table)), sensors_(std::move(sensors)), catalog_(std::move(catalog)), where_(where) {
+  if (!catalog_) throw std::invalid_argument("Model: no effect catalogue");
   const std::string tire = assembly_.option("tire"), susp = assembly_.option("suspension");
   if (tire.empty()) throw InputError(where, "assembly " + assembly_.id + " has no tire option");
   if (susp.empty()) throw InputError(where, "assembly " + assembly_.id + " has no suspension option");
@@ -224,7 +226,7 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
     iface_preload_slot_ = addRunParameter("suspension.solid_axle.interface_preload_N");
   }
   for (const auto& e : assembly_.effects) {
-    std::shared_ptr<const Effect> eff = makeEffect(e, where);
+    std::shared_ptr<const Effect> eff = catalog_->make(e, where);
     declareEffectParameters(table_, *eff, e, where);
     std::vector<int> slots;
     for (const auto& s : eff->parameters()) slots.push_back(addRunParameter(e + "." + s.name));
@@ -291,7 +293,7 @@ std::shared_ptr<const Model> Model::withFreedValues(const std::vector<double>& v
     const auto i = static_cast<std::size_t>(s);
     t.set(run_names_[i], values[i], "freed (run value)", where_ + ": " + run_names_[i]);
   }
-  return std::make_shared<const Model>(assembly_, std::move(t), where_, sensors_);
+  return std::make_shared<const Model>(assembly_, std::move(t), where_, sensors_, catalog_);
 }
 
 double Model::staticTireLoad(int corner) const {

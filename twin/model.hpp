@@ -10,6 +10,7 @@
 
 #include "subsystems/sensor.hpp"
 #include "subsystems/effect.hpp"
+#include "subsystems/effect_catalog.hpp"
 #include "subsystems/strut_law.hpp"
 #include "subsystems/tire_law.hpp"
 #include "twin/parameters.hpp"
@@ -45,12 +46,12 @@ const std::vector<std::string>& freeableVehicleParameters();
 const std::map<std::string, std::vector<std::string>>& knownSubsystems();
 
 /// A table declaring every parameter a vehicle can have: fixed data (masses, geometry), the
-/// parameters of every tire and suspension option, and every effect (pre-set to "off").
-ParameterTable declareVehicleParameters();
+/// parameters of every tire and suspension option, and every effect of `catalog` (pre-set to "off").
+ParameterTable declareVehicleParameters(const EffectCatalog& catalog);
 
 /// Declares the parameters of `effect` (installed as `name`) not yet in `table`, at their off
 /// values: an effect made on demand (a library term, subsystems/effect.hpp kTermPrefix) is not
-/// among declareVehicleParameters()'s.
+/// among declareVehicleParameters's.
 void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name, const std::string& where);
 
 /// Reads a vehicle data file (TOML; each leaf `name = { value = .., unit = "..", source = ".." }`)
@@ -75,8 +76,10 @@ class Model {
  public:
   /// Validates the options and that every parameter this assembly needs has a value.
   /// `where` names the source (study file) for error messages.
-  /// `sensors` (the study's [sensors], validated there) add output channels to every run.
-  Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors = {});
+  /// `sensors` (the study's [sensors], validated there) add output channels to every run;
+  /// `catalog` (the study's) makes the assembly's effects.
+  Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors = {},
+        std::shared_ptr<const EffectCatalog> catalog = std::make_shared<const EffectCatalog>());
 
   const AssemblySpec& assembly() const { return assembly_; }
   const ParameterTable& table() const { return table_; }
@@ -132,6 +135,7 @@ class Model {
   LinearStrut interface_law_;
   std::vector<std::shared_ptr<const Effect>> effects_;
   std::vector<SensorSpec> sensors_;
+  std::shared_ptr<const EffectCatalog> catalog_;
   std::vector<std::string> run_names_;
   std::map<std::string, int> slots_;
   std::vector<int> tire_slots_, susp_slots_, iface_slots_;

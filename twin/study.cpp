@@ -166,9 +166,10 @@ void readFixed(TableReader& top, Study& s) {
   }
 }
 
-/// [user_effects.NAME]: an effect whose force is an expression (subsystems/user_effect.hpp), checked
-/// and registered by name so [effects], --effect, --hidden-effect and the diagnosis can name it.
-void readUserEffects(TableReader& top, Study& s) {
+/// [user_effects.NAME]: an effect whose force is an expression (subsystems/user_effect.hpp), each
+/// checked and added to `catalog` by name, so [effects], --effect, --hidden-effect and the
+/// diagnosis can name it.
+void readUserEffects(TableReader& top, EffectCatalog& catalog) {
   const std::string& path = top.file();
   auto* t = top.table("user_effects");
   if (!t) return;
@@ -205,8 +206,7 @@ void readUserEffects(TableReader& top, Study& s) {
       pr.finish();
     }
     r.finish();
-    registerUserEffect(u);  // every check of the definition (InputError naming file:line and field)
-    s.user_effects.push_back(u);
+    catalog.add(u);  // every check of the definition (InputError naming file:line and field)
   }
 }
 
@@ -217,7 +217,7 @@ void readEffects(TableReader& top, Study& s) {
     TableReader r(*t, path, "effects");
     for (auto&& [k, n] : *t) {
       const std::string eff(k.str());
-      makeEffect(eff, r.where(eff));  // validates the name
+      s.effectCatalog().make(eff, r.where(eff));  // validates the name
       const toml::table* et = r.table(eff);
       EffectSetting es{eff, {}};
       TableReader er(*et, path, "effects." + eff);
@@ -555,11 +555,11 @@ toml::table parseTomlFile(const std::string& path, const std::string& kind) {
 std::vector<UserEffectSpec> loadUserEffects(const std::string& path) {
   const toml::table root = parseTomlFile(path, "file of user-defined effects");
   TableReader top(root, path, "");
-  Study s;
-  readUserEffects(top, s);
+  EffectCatalog catalog;
+  readUserEffects(top, catalog);
   top.finish();  // nothing but [user_effects] tables
-  if (s.user_effects.empty()) throw InputError(path, "holds no [user_effects.NAME] table");
-  return s.user_effects;
+  if (catalog.userEffects().empty()) throw InputError(path, "holds no [user_effects.NAME] table");
+  return catalog.userEffects();
 }
 
 /// The study file, table by table (each reader checks its own fields and reports unknown ones),
@@ -575,7 +575,11 @@ Study loadStudy(const std::string& path) {
   readAssemblies(top, s);
   readCalibrated(top, s);
   readFixed(top, s);
-  readUserEffects(top, s);  // before [effects] and the assemblies, which may name them
+  {
+    auto catalog = std::make_shared<EffectCatalog>();
+    readUserEffects(top, *catalog);  // before [effects] and the assemblies, which may name them
+    s.catalog = std::move(catalog);
+  }
   readEffects(top, s);
   readScenarios(top, s);
   readSimulation(top, s);
@@ -589,6 +593,12 @@ Study loadStudy(const std::string& path) {
   checkCalibratedAgainstVehicle(s);
   for (const auto& a : s.assemblies()) s.makeModel(a);  // validates every assembly now
   return s;
+}
+
+void Study::addUserEffects(const std::vector<UserEffectSpec>& specs) {
+  auto next = std::make_shared<EffectCatalog>(*catalog);
+  for (const auto& u : specs) next->add(u);
+  catalog = std::move(next);
 }
 
 std::vector<AssemblySpec> Study::assemblies() const {
@@ -631,7 +641,7 @@ const ScenarioSpec& Study::scenario(const std::string& n) const {
 }
 
 ParameterTable Study::parameterTable(const std::vector<ParameterSetting>& overrides) const {
-  ParameterTable t = declareVehicleParameters();
+  ParameterTable t = declareVehicleParameters(*catalog);
   loadVehicleFile(t, vehicle_path);
   for (const auto& f : fixed) t.set(f.name, f.value, f.source, f.where);
   for (std::size_t i = 0; i < calibrated.size(); ++i)
@@ -648,14 +658,14 @@ std::shared_ptr<const Model> Study::makeModel(const AssemblySpec& a, const std::
   AssemblySpec spec = a;
   ParameterTable table = parameterTable();
   for (const auto& e : extra) {
-    declareEffectParameters(table, *makeEffect(e.name, "model.effects"), e.name, "model.effects");
+    declareEffectParameters(table, *catalog->make(e.name, "model.effects"), e.name, "model.effects");
     if (std::find(spec.effects.begin(), spec.effects.end(), e.name) == spec.effects.end()) spec.effects.push_back(e.name);
   }
   // Then the extra effects' values and the overrides, in that order of precedence (as parameterTable's).
   for (const auto& e : extra)
     for (const auto& v : e.values) table.set(v.name, v.value, v.source, v.where);
   for (const auto& o : overrides) table.set(o.name, o.value, o.source, o.where);
-  return std::make_shared<const Model>(spec, std::move(table), path, sensors);
+  return std::make_shared<const Model>(spec, std::move(table), path, sensors, catalog);
 }
 
 std::vector<std::string> LabSettings::channelsOrDefault() const {
@@ -687,7 +697,7 @@ nlohmann::json Study::toJson() const {
   }
   j["noise_variance_N2"] = noise_variance_N2;
   for (const auto& x : sensors) j["sensors"].push_back(x.toJson());
-  for (const auto& u : user_effects) {
+  for (const auto& u : catalog->userEffects()) {
     nlohmann::json uj{{"name", u.name}, {"element", u.element}, {"force", u.force}};
     for (const auto& p : u.parameters)
       uj["parameters"][p.name] = {{"value", p.value}, {"unit", p.unit}, {"lower", p.lower}, {"upper", p.upper}, {"shape", p.shape}};
@@ -709,14 +719,14 @@ ParameterSetting parseSetting(const std::string& text, const std::string& where)
   return {name, v, where + " " + name, where};
 }
 
-EffectSetting parseEffectSetting(const std::string& text, const std::string& where) {
+EffectSetting parseEffectSetting(const std::string& text, const std::string& where, const EffectCatalog& catalog) {
   // A library term's name holds a colon itself ("term:q * v:a=3e4"): its settings follow the last.
   const bool term = text.rfind(kTermPrefix, 0) == 0;
   const auto colon = term ? (text.find(':', std::string(kTermPrefix).size()) == std::string::npos ? std::string::npos : text.rfind(':'))
                           : text.find(':');
   EffectSetting e;
   e.name = text.substr(0, colon);
-  makeEffect(e.name, where);
+  catalog.make(e.name, where);
   if (colon != std::string::npos) {
     std::stringstream ss(text.substr(colon + 1));
     std::string item;

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "subsystems/user_effect.hpp"
+#include "subsystems/effect_catalog.hpp"
 #include "twin/model.hpp"
 #include "twin/scenario.hpp"
 #include "twin/simulator.hpp"
@@ -111,12 +111,19 @@ struct Study {
   SimulationOptions simulation;
   double noise_variance_N2 = 18000.0;
   std::vector<SensorSpec> sensors;  ///< [sensors.NAME], by name
-  /// [user_effects.NAME]: effects whose force is an expression (subsystems/user_effect.hpp),
-  /// registered with the effect registry when the study is read, by name.
-  std::vector<UserEffectSpec> user_effects;
+  /// The effects this study knows: the built-in ones and its [user_effects.NAME] definitions
+  /// (effects whose force is an expression, subsystems/user_effect.hpp), by name. Shared by the
+  /// study's copies and never changed once read: addUserEffects makes a new one.
+  std::shared_ptr<const EffectCatalog> catalog = std::make_shared<const EffectCatalog>();
   StudySizes sizes;
   LabSettings lab;
   CalibrationSettings calibration;
+
+  /// The effects this study knows (built-in and its own).
+  const EffectCatalog& effectCatalog() const { return *catalog; }
+  /// Adds user-defined effects (e.g. a diagnosis's proposal.toml) to this study's catalogue, each
+  /// checked (EffectCatalog::add). Copies of the study made before keep the catalogue they had.
+  void addUserEffects(const std::vector<UserEffectSpec>& specs);
 
   std::vector<AssemblySpec> assemblies() const;
   AssemblySpec assembly(const std::string& id) const;  ///< InputError if unknown
@@ -137,8 +144,9 @@ struct Study {
 std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<SensorSpec>& existing = {});
 
 /// The [user_effects.NAME] tables of a TOML file that holds nothing else (e.g. the proposal
-/// `twin diagnose` writes), each checked and registered as the study file's are. InputError
-/// naming file:line and field for a bad one, for any other table, or for none.
+/// `twin diagnose` writes), each checked as the study file's are (Study::addUserEffects adds
+/// them to a study). InputError naming file:line and field for a bad one, for any other table,
+/// or for none.
 std::vector<UserEffectSpec> loadUserEffects(const std::string& path);
 
 /// Parses and validates a study file. Every error is an InputError naming the file, the line and
@@ -147,8 +155,9 @@ Study loadStudy(const std::string& path);
 
 /// Parses "name=value" (CLI --set). `where` prefixes errors.
 ParameterSetting parseSetting(const std::string& text, const std::string& where);
-/// Parses "effect[:param=value,...]" (CLI --effect, --hidden-effect); a library term
-/// "term:EXPR[:a=value]" (subsystems/effect.hpp kTermPrefix) takes its settings after the last colon.
-EffectSetting parseEffectSetting(const std::string& text, const std::string& where);
+/// Parses "effect[:param=value,...]" (CLI --effect, --hidden-effect), the effect's name checked
+/// against `catalog`; a library term "term:EXPR[:a=value]" (subsystems/effect.hpp kTermPrefix)
+/// takes its settings after the last colon.
+EffectSetting parseEffectSetting(const std::string& text, const std::string& where, const EffectCatalog& catalog);
 
 }  // namespace dtwin

@@ -44,16 +44,16 @@ TEST(Candidates, ChannelGroupsAreNamedByUnitAndCommonPrefix) {
 
 TEST(Candidates, DefaultCatalogueHoldsEffectsFreedValuesAndSensorModels) {
   const Study s = demo();
-  const auto names = defaultCandidates(s.assemblies().front(), kHub);
+  const auto names = defaultCandidates(s.effectCatalog(), s.assemblies().front(), kHub);
   auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
   EXPECT_TRUE(has("bump_stop"));
   EXPECT_TRUE(has("free:wheel.mass_kg"));
   EXPECT_FALSE(has("free:solid_axle.mass_kg"));  // M1 is MacPherson
   EXPECT_TRUE(has("lowpass:hub_force"));
   EXPECT_TRUE(has("delay:hub_force"));
-  for (const auto& n : names) EXPECT_TRUE(isCandidateName(n)) << n;
-  EXPECT_FALSE(isCandidateName("highpass:hub_force"));
-  EXPECT_FALSE(isCandidateName("free:"));
+  for (const auto& n : names) EXPECT_TRUE(isCandidateName(n, s.effectCatalog())) << n;
+  EXPECT_FALSE(isCandidateName("highpass:hub_force", s.effectCatalog()));
+  EXPECT_FALSE(isCandidateName("free:", s.effectCatalog()));
 }
 
 TEST(Candidates, SpecsCarryOffValuesPriorsAndSetups) {

@@ -50,7 +50,7 @@ std::vector<calib::DataSet> makeData(const Study& s, const std::string& hidden, 
     o.repetitions = 3;
     o.seed = seed;
     o.channels = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
-    if (!hidden.empty()) o.hidden_effects.push_back(parseEffectSetting(hidden, "test"));
+    if (!hidden.empty()) o.hidden_effects.push_back(parseEffectSetting(hidden, "test", s.effectCatalog()));
     if (more) more(o);
     const auto lab = generateLab(s, s.assemblies().front(), o);
     sets.push_back({sc + ".csv", sc, lab.data, seed});  // the rough road was made with `seed`

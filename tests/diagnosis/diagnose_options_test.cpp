@@ -60,7 +60,11 @@ TEST(DiagnoseOptions, DefaultsAreValidAndEveryFieldIsChecked) {
 TEST(DiagnoseOptions, EffectsMustBeKnownAndNamedOnce) {
   DiagnoseOptions o;
   o.effects = {"bump_stop", "bumpstop"};
-  const auto [where, rule] = inputError([&] { o.validate(); });
+  EXPECT_NO_THROW(o.validate()) << "an effect's name is the study's to judge";
+  // diagnose() judges it against the study's catalogue, before the data are read.
+  const Study s = loadStudy(kDemo);
+  const std::vector<calib::DataSet> fit(1);
+  const auto [where, rule] = inputError([&] { diagnose(s, s.assemblies().front(), fit, {}, o, dtwin_test::freshDir("diag_names").string()); });
   EXPECT_EQ(where, "diagnose.effects");
   EXPECT_EQ(rule.rfind("unknown effect 'bumpstop' (known: ", 0), 0u) << rule;
   EXPECT_NE(rule.find("did you mean 'bump_stop'?"), std::string::npos) << rule;

@@ -333,7 +333,7 @@ TEST(ParallelFor, EveryIndexOnceAndLowestErrorRethrown) {
 // --- hidden effects and dense lab data (diagnosis) ---
 
 namespace {
-EffectSetting hidden(const std::string& text) { return parseEffectSetting(text, "--hidden-effect"); }
+EffectSetting hidden(const std::string& text) { return parseEffectSetting(text, "--hidden-effect", EffectCatalog{}); }
 
 LabOptions denseBump() {
   LabOptions opt;
@@ -398,7 +398,7 @@ TEST(GenerateLabHidden, BumpStopChangesTheBumpAndNothingBefore) {
   EXPECT_EQ(h[0]["parameters"]["stiffness"].get<double>(), 2e6);
   EXPECT_EQ(h[0]["parameters"]["gap_m"].get<double>(), 0.02);
   EXPECT_EQ(h[0]["parameters"]["exponent"].get<double>(), 2.0) << "the default of a parameter not given";
-  EXPECT_EQ(hiddenEffectsSummary(h), "bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)");
+  EXPECT_EQ(hiddenEffectsSummary(h, EffectCatalog{}), "bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)");
 }
 
 TEST(GenerateLabHidden, EffectAtItsOffValuesGivesTheBaseDataBitForBit) {

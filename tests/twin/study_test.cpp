@@ -172,7 +172,7 @@ TEST(Study, SettingsFromTheCommandLine) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("suspension.damping must be >= 0"), std::string::npos) << e.what();
   }
-  auto m = s.makeModel(s.assembly("M1"), {parseEffectSetting("bump_stop:stiffness=1e6,gap_m=0.03", "--effect")});
+  auto m = s.makeModel(s.assembly("M1"), {parseEffectSetting("bump_stop:stiffness=1e6,gap_m=0.03", "--effect", s.effectCatalog())});
   EXPECT_DOUBLE_EQ(m->table().value("bump_stop.gap_m"), 0.03);
   EXPECT_GE(m->slot("bump_stop.stiffness"), 0);
 }

@@ -23,7 +23,11 @@ using namespace dtwin;
 
 namespace {
 
-const Study& paper() { return dtwin_test::shippedStudy("paper"); }
+/// The paper study, with this file's user-defined effects added as the tests define them.
+Study& paper() {
+  static Study s = dtwin_test::shippedStudy("paper");
+  return s;
+}
 
 /// The first MacPherson assembly of the paper study (the closed forms below need independent struts).
 AssemblySpec macpherson() {
@@ -33,7 +37,7 @@ AssemblySpec macpherson() {
   return paper().assemblies().front();
 }
 
-/// Registers `spec` (once per process; the same definition again is a no-op).
+/// Adds the definition to the study's catalogue (the same definition again is a no-op).
 void define(const std::string& name, const std::string& element, const std::string& force, std::vector<UserEffectParameter> params) {
   UserEffectSpec u;
   u.name = name;
@@ -41,7 +45,7 @@ void define(const std::string& name, const std::string& element, const std::stri
   u.force = force;
   u.parameters = std::move(params);
   u.where = "user_effect_elements_test: " + name;
-  registerUserEffect(u);
+  paper().addUserEffects({u});
 }
 
 RunResult run(const std::vector<EffectSetting>& effects, const ScenarioSpec& sc, std::uint64_t seed = 1) {

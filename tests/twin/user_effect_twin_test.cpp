@@ -1,6 +1,8 @@
 // User-defined effects in a study file ([user_effects.NAME], subsystems/user_effect.hpp) through
 // the whole twin: the damper asymmetry written as an expression gives the built-in effect's trace
 // bit for bit, and bad definitions are one-line errors naming the file, the line and the field.
+// Each study's definitions are its own (its EffectCatalog): two studies in one process, one after
+// the other or in parallel threads, never see each other's.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -8,8 +10,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <thread>
+#include <vector>
 
+#include "common/errors.hpp"
 #include "test_util.hpp"
+#include "twin/simulator.hpp"
+#include "twin/study.hpp"
 
 namespace fs = std::filesystem;
 
@@ -92,4 +99,86 @@ TEST(UserEffectTwin, BadDefinitionsInTheStudyFileAreOneLineErrors) {
                                                "parameters = { a = { value = 0, unit = \"N/m\", lower = 0, upper = 1e5 } }\n");
   const Cli r = twin("list --study " + study, dir);
   EXPECT_NE(r.err.find(": user_effects.soft: force: 'a * q * w': Unexpected token \"w\""), std::string::npos) << r.err;
+}
+
+namespace {
+
+/// Two studies that define `extra` differently (a strut force in q, one in v), and one more
+/// effect only the second knows.
+struct TwoStudies {
+  fs::path dir_a = dtwin_test::freshDir("user_effect_two_a"), dir_b = dtwin_test::freshDir("user_effect_two_b");
+  dtwin::Study a = dtwin::loadStudy(studyWith(dir_a, R"([user_effects.extra]
+element = "strut"
+force = "a * q"
+parameters = { a = { value = 0, unit = "N/m", lower = 0, upper = 1e5 } }
+)"));
+  dtwin::Study b = dtwin::loadStudy(studyWith(dir_b, R"([user_effects.extra]
+element = "strut"
+force = "a * v"
+parameters = { a = { value = 0, unit = "N*s/m", lower = 0, upper = 1e4 } }
+
+[user_effects.only_b]
+element = "chassis"
+force = "f"
+parameters = { f = { value = 0, unit = "N", lower = -1000, upper = 1000 } }
+)"));
+};
+
+/// The front-left hub force of the lab run of `study`'s first assembly with `extra` at a = value.
+std::vector<double> hubForce(const dtwin::Study& study, double value) {
+  using namespace dtwin;
+  const auto model = study.makeModel(study.assemblies().front(), {EffectSetting{"extra", {{"extra.a", value, "test", "test"}}}});
+  Simulator sim(model, study.simulation);
+  const ScenarioSpec& sc = study.scenario("lab");
+  auto road = makeRoad(sc, model->vehicle(), study.seed);
+  const RunResult r = sim.run(model->defaultRunValues(), *road, sc);
+  EXPECT_TRUE(r.stats.ok) << r.stats.message;
+  return r.trace.column("hub_force_fl_N");
+}
+
+}  // namespace
+
+TEST(UserEffectTwin, TwoStudiesInOneProcessSeeOnlyTheirOwnDefinitions) {
+  const TwoStudies s;
+  auto has = [](const dtwin::Study& st, const std::string& n) { return st.effectCatalog().contains(n); };
+  EXPECT_TRUE(has(s.a, "extra"));
+  EXPECT_FALSE(has(s.a, "only_b"));
+  EXPECT_TRUE(has(s.b, "only_b"));
+  EXPECT_NE(s.a.effectCatalog().make("extra", "t")->description().find("a * q"), std::string::npos);
+  EXPECT_NE(s.b.effectCatalog().make("extra", "t")->description().find("a * v"), std::string::npos);
+  EXPECT_FALSE(s.a.parameterTable().contains("only_b.f"));
+  EXPECT_TRUE(s.b.parameterTable().contains("only_b.f"));
+  EXPECT_EQ(s.a.parameterTable().at("extra.a").spec.unit, "N/m");
+  EXPECT_EQ(s.b.parameterTable().at("extra.a").spec.unit, "N*s/m");
+  try {
+    (void)s.a.makeModel(s.a.assemblies().front(), {dtwin::EffectSetting{"only_b", {}}});
+    ADD_FAILURE() << "the first study knows only_b";
+  } catch (const dtwin::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown effect 'only_b'"), std::string::npos) << e.what();
+  }
+  // The same name runs each study's own law: a spring in q and a damper in v give other traces,
+  // and the first study's trace is the same before and after the second was used.
+  const auto first = hubForce(s.a, 2e4);
+  const auto other = hubForce(s.b, 2e3);
+  EXPECT_NE(first, other);
+  EXPECT_EQ(hubForce(s.a, 2e4), first);
+  // Adding to a copy leaves the original's catalogue alone.
+  dtwin::Study copy = s.a;
+  ASSERT_EQ(s.b.effectCatalog().userEffects().size(), 2u);
+  copy.addUserEffects({s.b.effectCatalog().userEffects()[1]});
+  EXPECT_TRUE(has(copy, "only_b"));
+  EXPECT_FALSE(has(s.a, "only_b"));
+}
+
+TEST(UserEffectTwin, TwoStudiesRunInParallelThreadsAsTheyDoAlone) {
+  const TwoStudies s;
+  const auto alone_a = hubForce(s.a, 2e4), alone_b = hubForce(s.b, 2e3);
+  std::vector<double> par_a, par_b;
+  std::thread ta([&] { par_a = hubForce(s.a, 2e4); });
+  std::thread tb([&] { par_b = hubForce(s.b, 2e3); });
+  ta.join();
+  tb.join();
+  EXPECT_EQ(par_a, alone_a);
+  EXPECT_EQ(par_b, alone_b);
+  EXPECT_NE(par_a, par_b);
 }

@@ -123,6 +123,18 @@ void readAssemblies(TableReader& top, Study& s) {
     TableReader r(*t, path, "assemblies");
     s.include = r.strings("include");
     r.finish();
+    // Each id names an assembly of the [subsystems] product (M1 .. Mn), once.
+    std::size_t n = 1;
+    for (const auto& [name, options] : s.subsystems) n *= options.size();
+    std::set<std::string> seen;
+    for (const auto& id : s.include) {
+      bool known = false;
+      for (std::size_t k = 1; k <= n && !known; ++k) known = id == "M" + std::to_string(k);
+      if (!known)
+        throw InputError(r.where("include"), "names assembly '" + id + "', which [subsystems] does not define (it defines M1.." +
+                                                 "M" + std::to_string(n) + ")");
+      if (!seen.insert(id).second) throw InputError(r.where("include"), "names assembly '" + id + "' twice");
+    }
   }
 }
 
@@ -339,6 +351,10 @@ void readSizes(TableReader& top, Study& s) {
         throw InputError(r.where(key), "must be at most " + std::to_string(most) + " (docs/study-file.md, Limits), got " + std::to_string(v));
       s.sizes.at(key) = v;
     }
+    if (s.sizes.gibbs_burn_in >= s.sizes.gibbs_iterations)
+      throw InputError(r.where(t->contains("gibbs_burn_in") ? "gibbs_burn_in" : "gibbs_iterations"),
+                       "gibbs_burn_in (" + std::to_string(s.sizes.gibbs_burn_in) + ") must be below gibbs_iterations (" +
+                           std::to_string(s.sizes.gibbs_iterations) + ")");
     r.finish();
   }
 }

@@ -97,6 +97,22 @@ TEST(Study, BoundsAndSigns) {
   EXPECT_NE(e4.find("calibrated[1].truth: must lie within [lower, upper]"), std::string::npos) << e4;
 }
 
+// What the catalogue and the sizes can judge is judged when the file is read, not at first use.
+TEST(Study, AssembliesRoadsAndSizesAreCheckedWhenRead) {
+  const std::string e1 = errorOf(variant("m9", "[subsystems]", "[assemblies]\ninclude = [\"M1\", \"M9\"]\n\n[subsystems]"));
+  EXPECT_NE(e1.find(".toml:9: assemblies.include: names assembly 'M9', which [subsystems] does not define (it defines M1..M4)"),
+            std::string::npos) << e1;
+  const std::string e2 = errorOf(variant("twice", "[subsystems]", "[assemblies]\ninclude = [\"M2\", \"M2\"]\n\n[subsystems]"));
+  EXPECT_NE(e2.find("assemblies.include: names assembly 'M2' twice"), std::string::npos) << e2;
+  const std::string e3 = errorOf(variant("smooth", "smooth_until_s = 6.0", "smooth_until_s = -1.0"));
+  EXPECT_NE(e3.find("scenarios.field.road.smooth_until_s: must be >= 0 s (0: rough from the start), got -1"), std::string::npos) << e3;
+  const std::string e4 = errorOf(variant("burn", "gibbs_burn_in = 15000", "gibbs_burn_in = 50000"));
+  EXPECT_NE(e4.find("sizes.gibbs_burn_in: gibbs_burn_in (50000) must be below gibbs_iterations (50000)"), std::string::npos) << e4;
+  const std::string e5 = errorOf(variant("iters", "gibbs_iterations = 50000\ngibbs_burn_in = 15000", "gibbs_iterations = 10000"));
+  EXPECT_NE(e5.find("sizes.gibbs_iterations: gibbs_burn_in (15000) must be below gibbs_iterations (10000)"), std::string::npos) << e5;
+  EXPECT_EQ(loadStudy(variant("m2", "[subsystems]", "[assemblies]\ninclude = [\"M2\"]\n\n[subsystems]")).assemblies().size(), 1u);
+}
+
 // The [calibration] table: defaults, the paper's procedure, and every bad value named.
 TEST(Study, CalibrationSettings) {
   const Study d = loadStudy(kSrc + "/data/studies/demo.toml");

@@ -1,5 +1,7 @@
 #include "twin/roads/iso8608.hpp"
 
+#include <cmath>
+
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "twin/scenario.hpp"
@@ -13,6 +15,8 @@ std::shared_ptr<const RoadSetting> IsoRoadSetting::parse(TableReader& rr) {
   if (cls.size() != 1 || cls[0] < 'A' || cls[0] > 'H') throw InputError(rr.where("class"), "must be one of A..H, got '" + cls + "'");
   rs->iso_class = cls[0];
   rs->smooth_until_s = rr.number("smooth_until_s", rs->smooth_until_s);
+  if (!std::isfinite(rs->smooth_until_s) || rs->smooth_until_s < 0)
+    throw InputError(rr.where("smooth_until_s"), "must be >= 0 s (0: rough from the start), got " + formatNumber(rs->smooth_until_s));
   if (auto* band = rr.array("band_cycles_per_m")) {
     if (band->size() != 2 || !band->get(0)->value<double>() || !band->get(1)->value<double>())
       throw InputError(rr.where("band_cycles_per_m"), "must be two numbers [n_min, n_max]");

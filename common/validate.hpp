@@ -5,7 +5,8 @@
 // "<options>.<field>" (e.g. "diagnose.effects") and whose rule says what was broken ("must be
 // >= 1, got 0"). It is called once, at the library boundary (the public function that takes the
 // struct). Library messages name fields, never command-line flags: the CLI maps a field to its
-// flag with cli/option_flags.hpp, so that a user reads "--candidates: must be >= 1, got 0".
+// flag (CommandHandle::field_flags, cli/commands.hpp), so that a user reads "--candidates: must be
+// >= 1, got 0".
 //
 //   void DiagnoseOptions::validate() const {
 //     const OptionCheck check("diagnose");

@@ -347,163 +347,212 @@ ImportMapping readImportMapping(const std::string& path) {
   return m;
 }
 
-ImportResult importLog(const std::string& log_text, const std::string& log_name, const ImportMapping& m,
-                       const std::string& base_study, const std::string& scenario, const StageProgress& progress) {
-  ImportResult res;
-  res.scenario = scenario;
-  // The study the drive joins: its sensors and the mapping's give the channels a log may fill.
-  const Study base = loadStudy(base_study);
+namespace {
+
+/// The channels a log may fill: the study's sensors and the mapping's (new names only), and a
+/// check of the scenario's name against the study.
+std::vector<Channel> checkTarget(const Study& base, const ImportMapping& m, const std::string& base_study, const std::string& scenario) {
   std::vector<SensorSpec> sensors = base.sensors;
   for (const auto& x : m.sensors) {
     for (const auto& y : sensors)
       if (y.name == x.name) throw InputError(m.source + ": sensors." + x.name, "the study " + base_study + " already has this sensor");
     sensors.push_back(x);
   }
-  const std::vector<Channel> known = measurableChannels(sensors);
   for (const auto& sc : base.scenarios)
     if (sc.name == scenario) throw InputError("--scenario " + scenario, "the study " + base_study + " already has a scenario of this name");
   bool name_ok = !scenario.empty();
   for (char ch : scenario) name_ok = name_ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-');
   if (!name_ok) throw InputError("--scenario " + scenario, "must be letters, digits, '_' and '-'");
+  return measurableChannels(sensors);
+}
 
-  // Units first: a wrong unit is named before a million rows are read.
-  const double t_factor = unitFactor(m.time.unit, "s", m.time.where);
+/// Every mapped column's factor to SI, resolved before a row is read (a wrong unit is named
+/// before a million rows are read).
+struct ImportUnits {
+  double time = 1.0, speed = 1.0;
+  std::vector<const ImportColumn*> road_cols;  ///< none, one (both tracks) or left and right
+  bool road_velocity = false;                  ///< the road columns are velocities, not heights
+  std::vector<double> road, channel;
+};
+
+ImportUnits resolveUnits(const ImportMapping& m, const std::vector<Channel>& known) {
+  ImportUnits u;
+  u.time = unitFactor(m.time.unit, "s", m.time.where);
   if (!m.speed) throw InputError(m.source + ": import.speed", "is required");
-  const double v_factor = unitFactor(m.speed->unit, "m/s", m.speed->where);
-  std::vector<const ImportColumn*> road_cols;
-  if (m.road) road_cols = {&*m.road};
-  if (m.road_left) road_cols = {&*m.road_left, &*m.road_right};
-  bool road_velocity = false;
-  std::vector<double> road_factor;
-  for (const auto* c : road_cols) {
+  u.speed = unitFactor(m.speed->unit, "m/s", m.speed->where);
+  if (m.road) u.road_cols = {&*m.road};
+  if (m.road_left) u.road_cols = {&*m.road_left, &*m.road_right};
+  for (const auto* c : u.road_cols) {
     bool velocity = false;
-    for (const auto& u : kUnits)
-      if (c->unit == u.name && std::string(u.si) == "m/s") velocity = true;
-    road_factor.push_back(unitFactor(c->unit, velocity ? "m/s" : "m", c->where));
-    if (c != road_cols.front() && velocity != road_velocity)
+    for (const auto& k : kUnits)
+      if (c->unit == k.name && std::string(k.si) == "m/s") velocity = true;
+    u.road.push_back(unitFactor(c->unit, velocity ? "m/s" : "m", c->where));
+    if (c != u.road_cols.front() && velocity != u.road_velocity)
       throw InputError(c->where, "both tracks must be heights (m, mm) or both road velocities (m/s, mm/s)");
-    road_velocity = velocity;
+    u.road_velocity = velocity;
   }
-  if (m.highpass_given && !road_velocity)
-    throw InputError(m.source == "command line" ? std::string("--highpass-hz") : m.source + ": import.highpass_hz", "applies to a road velocity (m/s, mm/s) only; the road here is " +
-                                                          (road_cols.empty() ? std::string("not mapped") : "a height"));
-  std::vector<double> ch_factor;
+  if (m.highpass_given && !u.road_velocity)
+    throw InputError(m.source == "command line" ? std::string("--highpass-hz") : m.source + ": import.highpass_hz",
+                     "applies to a road velocity (m/s, mm/s) only; the road here is " +
+                         (u.road_cols.empty() ? std::string("not mapped") : "a height"));
   for (const auto& c : m.channels) {
     const std::string rule = checkChannelName(c.channel, known);
     if (!rule.empty()) throw InputError(c.source.where, "channel '" + c.channel + "' " + rule);
     std::string si;
     for (const auto& k : known)
       if (k.name == c.channel) si = k.unit;
-    ch_factor.push_back(unitFactor(c.source.unit, si, c.source.where));
+    u.channel.push_back(unitFactor(c.source.unit, si, c.source.where));
+  }
+  return u;
+}
+
+/// Clock times (unit "clock") count from the first row's day. Without a date, a time that falls
+/// back by more than 12 hours is the next day (a drive past midnight).
+class ClockCounter {
+ public:
+  /// Seconds since the first row's midnight; false if `cell` is not a clock time.
+  bool seconds(std::string_view cell, bool first, double& out) {
+    ClockTime c;
+    if (!parseClockTime(cell, c)) return false;
+    if (first) day0_ = c.day;
+    else if (!c.has_date && c.seconds < previous_ - 43200.0) ++day_;
+    if (c.has_date) day_ = c.day - day0_;
+    previous_ = c.seconds;
+    out = static_cast<double>(day_) * 86400.0 + c.seconds;
+    return true;
   }
 
-  CsvReader csv(log_text, log_name, m.separator);
-  bool any = csv.next();
-  while (any && csv.line() < m.header_line) any = csv.next();  // a logger's preamble
-  if (!any) throw InputError(log_name + ":" + std::to_string(m.header_line), "no header row of column names at or after this line (header_line)");
-  std::vector<std::string> header;
-  for (auto f : csv.fields()) header.emplace_back(f);
-  const std::size_t i_time = columnIndex(header, m.time, log_name), i_speed = columnIndex(header, *m.speed, log_name);
-  std::vector<std::size_t> i_road, i_ch;
-  for (const auto* c : road_cols) i_road.push_back(columnIndex(header, *c, log_name));
-  for (const auto& c : m.channels) i_ch.push_back(columnIndex(header, c.source, log_name));
-  for (long k = 0; k < m.skip_rows; ++k)
-    if (!csv.next()) break;  // a row of units, say
-  // A number as the log writes it (1,25 with decimal_comma).
-  std::string buffer;
-  auto parse = [&](std::string_view f, double& x) {
-    if (!m.decimal_comma) return parseNumber(f, x);
-    buffer.assign(f);
-    std::replace(buffer.begin(), buffer.end(), ',', '.');
-    return parseNumber(buffer, x);
-  };
+ private:
+  long day0_ = 0, day_ = 0;
+  double previous_ = 0.0;
+};
 
+/// The log's rows in SI units: times (as logged), speeds, road columns, and the channels (NaN: a
+/// dropout).
+struct LogRows {
   std::vector<double> t, v;
-  std::vector<std::vector<double>> road(road_cols.size());
-  std::vector<std::vector<double>> values(m.channels.size());  // NaN: a dropout
-  std::vector<long> run(m.channels.size(), 0), run_start(m.channels.size(), 0);
-  std::vector<long> lines;
-  auto cellError = [&](std::size_t col, const std::string& rule) {
-    return InputError(csv.where(), "column '" + header[col] + "': " + rule);
-  };
-  auto number = [&](std::size_t col) {
+  std::vector<std::vector<double>> road, values;
+  long dropped_cells = 0;
+};
+
+/// Reads the log row by row with every check of importLog (twin/log_import.hpp).
+class LogRowReader {
+ public:
+  LogRowReader(const std::string& text, const std::string& name, const ImportMapping& m, const ImportUnits& u)
+      : csv_(text, name, m.separator), name_(name), m_(m), u_(u) {}
+
+  LogRows read(const StageProgress& progress) {
+    header();
+    rows_.road.resize(u_.road_cols.size());
+    rows_.values.resize(m_.channels.size());
+    run_.assign(m_.channels.size(), 0);
+    run_start_.assign(m_.channels.size(), 0);
+    while (csv_.next()) {
+      row();
+      if (progress && (rows_.t.size() & 4095) == 0) progress("import", csv_.offset(), csv_.size());
+    }
+    if (progress) progress("import", csv_.size(), csv_.size());
+    return std::move(rows_);
+  }
+
+ private:
+  /// The header row (after a logger's preamble), the mapped columns' indices, then skip_rows.
+  void header() {
+    bool any = csv_.next();
+    while (any && csv_.line() < m_.header_line) any = csv_.next();
+    if (!any) throw InputError(name_ + ":" + std::to_string(m_.header_line), "no header row of column names at or after this line (header_line)");
+    for (auto f : csv_.fields()) header_.emplace_back(f);
+    i_time_ = columnIndex(header_, m_.time, name_);
+    i_speed_ = columnIndex(header_, *m_.speed, name_);
+    for (const auto* c : u_.road_cols) i_road_.push_back(columnIndex(header_, *c, name_));
+    for (const auto& c : m_.channels) i_ch_.push_back(columnIndex(header_, c.source, name_));
+    for (long k = 0; k < m_.skip_rows; ++k)
+      if (!csv_.next()) break;  // a row of units, say
+  }
+
+  /// A number as the log writes it (1,25 with decimal_comma).
+  bool parse(std::string_view f, double& x) {
+    if (!m_.decimal_comma) return parseNumber(f, x);
+    buffer_.assign(f);
+    std::replace(buffer_.begin(), buffer_.end(), ',', '.');
+    return parseNumber(buffer_, x);
+  }
+  InputError cellError(std::size_t col, const std::string& rule) const {
+    return InputError(csv_.where(), "column '" + header_[col] + "': " + rule);
+  }
+  /// A required cell's finite number.
+  double number(std::size_t col) {
     double x = 0;
-    const auto f = csv.fields()[col];
+    const auto f = csv_.fields()[col];
     if (!parse(f, x)) throw cellError(col, isMissing(f) ? "is empty or NaN (a required column has no gaps)" : "'" + std::string(f) + "' is not a number");
     if (!std::isfinite(x)) throw cellError(col, "'" + std::string(f) + "' is not a finite number");
     return x;
-  };
-  // Clock times (unit "clock") count from the first row's day. Without a date, a time that falls
-  // back by more than 12 hours is the next day (a drive past midnight).
-  const bool clock = m.time.unit == "clock";
-  long day0 = 0, day = 0;
-  std::string previous_time;
-  double previous_seconds = 0.0;
-  auto clockSeconds = [&](std::string_view cell) {
-    ClockTime c;
-    if (!parseClockTime(cell, c))
-      throw cellError(i_time, "'" + std::string(cell) + "' is not a clock time (HH:MM:SS[.fff], optionally after a date YYYY-MM-DD and 'T' or a space)");
-    if (t.empty()) {  // the first row
-      day0 = c.day;
-    } else if (!c.has_date && c.seconds < previous_seconds - 43200.0) {
-      ++day;
-    }
-    if (c.has_date) day = c.day - day0;
-    previous_seconds = c.seconds;
-    return static_cast<double>(day) * 86400.0 + c.seconds;
-  };
-  while (csv.next()) {
-    const auto& f = csv.fields();
-    if (f.size() != header.size())
-      throw InputError(csv.where(), "expected " + std::to_string(header.size()) + " columns (as the header), got " + std::to_string(f.size()));
-    const double ti = clock ? clockSeconds(f[i_time]) : number(i_time) * t_factor;
-    if (!t.empty() && ti == t.back())
-      throw cellError(i_time, "time " + std::string(f[i_time]) + " repeats the row before (line " + std::to_string(lines.back()) + ")");
-    if (!t.empty() && ti < t.back())
-      throw cellError(i_time, "time goes backwards: " + std::string(f[i_time]) + " after " +
-                                  (clock ? previous_time : formatNumber(t.back() / t_factor, 12)) + " (line " + std::to_string(lines.back()) + ")");
-    if (clock) previous_time.assign(f[i_time]);
-    double vi = (number(i_speed) - m.speed->offset) * m.speed->scale * v_factor;
-    if (vi < 0 && vi >= -0.2) vi = 0.0;  // a logger's noise about standstill
-    if (vi < 0) throw cellError(i_speed, "speed " + std::string(f[i_speed]) + " " + m.speed->unit + " is negative (beyond the 0.2 m/s of noise at rest)");
-    if (vi > 100) throw cellError(i_speed, "speed " + std::string(f[i_speed]) + " " + m.speed->unit + " exceeds 100 m/s");
-    t.push_back(ti);
-    v.push_back(vi);
-    lines.push_back(csv.line());
-    for (std::size_t k = 0; k < road_cols.size(); ++k)
-      road[k].push_back((number(i_road[k]) - road_cols[k]->offset) * road_cols[k]->scale * road_factor[k]);
-    for (std::size_t k = 0; k < m.channels.size(); ++k) {
-      const auto cell = f[i_ch[k]];
-      double x = 0;
-      if (isMissing(cell) || (parse(cell, x) && std::isnan(x))) {
-        if (run[k]++ == 0) run_start[k] = csv.line();
-        if (run[k] > m.max_dropout_rows)
-          throw cellError(i_ch[k], "empty or NaN from line " + std::to_string(run_start[k]) + " on: more than max_dropout_rows = " +
-                                        std::to_string(m.max_dropout_rows) + " rows in a row");
-        values[k].push_back(std::numeric_limits<double>::quiet_NaN());
-        ++res.dropped_cells;
-        continue;
-      }
-      if (!parse(cell, x)) throw cellError(i_ch[k], "'" + std::string(cell) + "' is not a number");
-      if (!std::isfinite(x)) throw cellError(i_ch[k], "'" + std::string(cell) + "' is not a finite number");
-      run[k] = 0;
-      values[k].push_back((x - m.channels[k].source.offset) * m.channels[k].source.scale * ch_factor[k]);
-    }
-    if (progress && (t.size() & 4095) == 0) progress("import", csv.offset(), csv.size());
   }
-  if (progress) progress("import", csv.size(), csv.size());
-  if (t.size() < 2) throw InputError(log_name, "holds " + std::to_string(t.size()) + " data rows; a drive needs at least 2");
-  res.rows = static_cast<long>(t.size());
-  res.t0_s = t.front();
-  // Times from the first row, rounded to 1 ns (so 100.0129 - 100 is written 0.0129).
-  for (double& x : t) x = std::round((x - res.t0_s) * 1e9) / 1e9;
-  res.duration_s = t.back();
 
-  // The measurements, times from the first row.
-  for (std::size_t i = 0; i < t.size(); ++i)
-    for (std::size_t k = 0; k < m.channels.size(); ++k)
-      if (!std::isnan(values[k][i])) res.data.records.push_back({1, t[i], m.channels[k].channel, values[k][i]});
-  res.lab_csv = labCsvText(res.data, known);  // validates (plausible ranges, ...) with the log's lines lost: name the log
+  void row() {
+    const auto& f = csv_.fields();
+    if (f.size() != header_.size())
+      throw InputError(csv_.where(), "expected " + std::to_string(header_.size()) + " columns (as the header), got " + std::to_string(f.size()));
+    auto& t = rows_.t;
+    const bool clock = m_.time.unit == "clock";
+    double ti = 0;
+    if (!clock) ti = number(i_time_) * u_.time;
+    else if (!clock_.seconds(f[i_time_], t.empty(), ti))
+      throw cellError(i_time_, "'" + std::string(f[i_time_]) +
+                                   "' is not a clock time (HH:MM:SS[.fff], optionally after a date YYYY-MM-DD and 'T' or a space)");
+    if (!t.empty() && ti == t.back())
+      throw cellError(i_time_, "time " + std::string(f[i_time_]) + " repeats the row before (line " + std::to_string(lines_.back()) + ")");
+    if (!t.empty() && ti < t.back())
+      throw cellError(i_time_, "time goes backwards: " + std::string(f[i_time_]) + " after " +
+                                   (clock ? previous_time_ : formatNumber(t.back() / u_.time, 12)) + " (line " + std::to_string(lines_.back()) + ")");
+    if (clock) previous_time_.assign(f[i_time_]);
+    double vi = (number(i_speed_) - m_.speed->offset) * m_.speed->scale * u_.speed;
+    if (vi < 0 && vi >= -0.2) vi = 0.0;  // a logger's noise about standstill
+    if (vi < 0) throw cellError(i_speed_, "speed " + std::string(f[i_speed_]) + " " + m_.speed->unit + " is negative (beyond the 0.2 m/s of noise at rest)");
+    if (vi > 100) throw cellError(i_speed_, "speed " + std::string(f[i_speed_]) + " " + m_.speed->unit + " exceeds 100 m/s");
+    t.push_back(ti);
+    rows_.v.push_back(vi);
+    lines_.push_back(csv_.line());
+    for (std::size_t k = 0; k < u_.road_cols.size(); ++k)
+      rows_.road[k].push_back((number(i_road_[k]) - u_.road_cols[k]->offset) * u_.road_cols[k]->scale * u_.road[k]);
+    for (std::size_t k = 0; k < m_.channels.size(); ++k) channelCell(k);
+  }
+
+  /// Channel k's cell of this row: a number, or a dropout (at most max_dropout_rows in a row).
+  void channelCell(std::size_t k) {
+    const auto cell = csv_.fields()[i_ch_[k]];
+    double x = 0;
+    if (isMissing(cell) || (parse(cell, x) && std::isnan(x))) {
+      if (run_[k]++ == 0) run_start_[k] = csv_.line();
+      if (run_[k] > m_.max_dropout_rows)
+        throw cellError(i_ch_[k], "empty or NaN from line " + std::to_string(run_start_[k]) + " on: more than max_dropout_rows = " +
+                                      std::to_string(m_.max_dropout_rows) + " rows in a row");
+      rows_.values[k].push_back(std::numeric_limits<double>::quiet_NaN());
+      ++rows_.dropped_cells;
+      return;
+    }
+    if (!parse(cell, x)) throw cellError(i_ch_[k], "'" + std::string(cell) + "' is not a number");
+    if (!std::isfinite(x)) throw cellError(i_ch_[k], "'" + std::string(cell) + "' is not a finite number");
+    run_[k] = 0;
+    rows_.values[k].push_back((x - m_.channels[k].source.offset) * m_.channels[k].source.scale * u_.channel[k]);
+  }
+
+  CsvReader csv_;
+  const std::string& name_;
+  const ImportMapping& m_;
+  const ImportUnits& u_;
+  std::vector<std::string> header_;
+  std::size_t i_time_ = 0, i_speed_ = 0;
+  std::vector<std::size_t> i_road_, i_ch_;
+  std::string buffer_, previous_time_;
+  ClockCounter clock_;
+  std::vector<long> run_, run_start_, lines_;
+  LogRows rows_;
+};
+
+/// speed.csv and road.csv ("" without a mapped road) from the rows, times from 0.
+void writeInputs(ImportResult& res, const ImportMapping& m, const ImportUnits& u, const std::vector<double>& t, std::vector<double> v,
+                 const std::vector<std::vector<double>>& road) {
   if (m.speed_lowpass_hz > 0) {  // zero phase: the input minus its zero-phase high-pass
     const auto high = zeroPhaseHighPass(t, v, m.speed_lowpass_hz);
     for (std::size_t i = 0; i < v.size(); ++i) v[i] = std::max(0.0, v[i] - high[i]);
@@ -512,20 +561,22 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   s.reserve(t.size() * 24);
   for (std::size_t i = 0; i < t.size(); ++i) s += formatExact(t[i]) + "," + formatExact(v[i]) + "\n";
   res.speed_csv = std::move(s);
-  if (!road_cols.empty()) {
-    const bool two = road_cols.size() == 2;
-    std::string r = road_velocity ? (two ? "time_s,left_mps,right_mps\n" : "time_s,velocity_mps\n")
+  if (u.road_cols.empty()) return;
+  const bool two = u.road_cols.size() == 2;
+  std::string r = u.road_velocity ? (two ? "time_s,left_mps,right_mps\n" : "time_s,velocity_mps\n")
                                   : (two ? "time_s,left_m,right_m\n" : "time_s,height_m\n");
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      r += formatExact(t[i]) + "," + formatExact(road[0][i]);
-      if (two) r += "," + formatExact(road[1][i]);
-      r += "\n";
-    }
-    res.road_csv = std::move(r);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    r += formatExact(t[i]) + "," + formatExact(road[0][i]);
+    if (two) r += "," + formatExact(road[1][i]);
+    r += "\n";
   }
+  res.road_csv = std::move(r);
+}
 
-  // The study: the base file's text (paths made absolute), then the drive and the mapping's
-  // sensors as new tables at its end.
+/// The study: the base file's text (paths made absolute), then the drive and the mapping's
+/// sensors as new tables at its end.
+std::string importedStudyText(const std::string& log_name, const ImportMapping& m, const ImportUnits& u, const std::string& base_study,
+                              const std::string& scenario, double duration_s) {
   const std::string base_text = readTextFile(base_study);
   toml::table root;
   try {
@@ -537,11 +588,11 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   study << "# Written by `twin import` from " << log_name << " (mapping " << m.source << "): the study " << base_study
         << "\n# with its relative paths made absolute, and the drive added at the end as scenario '" << scenario << "'.\n"
         << absolutizedStudyText(base_text, root, fs::absolute(base_study).parent_path(), base_study) << "\n"
-        << "# ---- added by twin import ----\n[scenarios." << scenario << "]\nduration_s = " << formatExact(res.duration_s)
+        << "# ---- added by twin import ----\n[scenarios." << scenario << "]\nduration_s = " << formatExact(duration_s)
         << "\nspeed = { csv = \"speed.csv\" }\n";
-  if (!road_cols.empty()) {
+  if (!u.road_cols.empty()) {
     study << "road = { type = \"csv_time\", path = \"road.csv\"";
-    if (road_velocity) study << ", highpass_hz = " << formatExact(m.highpass_hz);
+    if (u.road_velocity) study << ", highpass_hz = " << formatExact(m.highpass_hz);
     study << " }\n";
   } else {
     study << "road = { type = \"flat\" }  # no road column was mapped\n";
@@ -557,35 +608,65 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     }
     if (x.noise_sd > 0) study << "noise_sd = " << formatExact(x.noise_sd) << "\n";
   }
-  res.study_toml = study.str();
+  return study.str();
+}
 
+/// How the files were made: the log, the mapping in full, the counts.
+nlohmann::json importSidecar(const ImportResult& res, const std::string& log_text, const std::string& log_name, const ImportMapping& m,
+                             const ImportUnits& u, const std::string& base_study) {
   nlohmann::json cols = nlohmann::json::array();
   for (const auto& c : m.channels)
     cols.push_back({{"column", c.source.column}, {"channel", c.channel}, {"unit", c.source.unit}, {"offset", c.source.offset}, {"scale", c.source.scale}});
   nlohmann::json rj = nullptr;
-  if (!road_cols.empty()) {
-    rj = {{"form", road_velocity ? "velocity" : "height"}, {"tracks", road_cols.size() == 2 ? "left and right" : "identical"}};
+  if (!u.road_cols.empty()) {
+    rj = {{"form", u.road_velocity ? "velocity" : "height"}, {"tracks", u.road_cols.size() == 2 ? "left and right" : "identical"}};
     rj["columns"] = nlohmann::json::array();
-    for (const auto* c : road_cols) rj["columns"].push_back({{"column", c->column}, {"unit", c->unit}});
-    if (road_velocity) rj["highpass_hz"] = m.highpass_hz;
+    for (const auto* c : u.road_cols) rj["columns"].push_back({{"column", c->column}, {"unit", c->unit}});
+    if (u.road_velocity) rj["highpass_hz"] = m.highpass_hz;
   }
-  res.sidecar = {{"made_by", "twin import"},
-                 {"program", programInfo()},
-                 {"created_utc", utcNow()},
-                 {"scenario", {{"name", scenario}, {"duration_s", res.duration_s}}},
-                 {"source", {{"file", log_name}, {"content", hexId(fnv1a64(log_text))}, {"rows", res.rows}, {"t0_s", res.t0_s}}},
-                 {"mapping", {{"file", m.source},
-                              {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
-                              {"speed", {{"column", m.speed->column}, {"unit", m.speed->unit}, {"lowpass_hz", m.speed_lowpass_hz}}},
-                              {"road", rj},
-                              {"channels", cols},
-                              {"max_dropout_rows", m.max_dropout_rows},
-                              {"header_line", m.header_line},
-                              {"skip_rows", m.skip_rows},
-                              {"decimal_comma", m.decimal_comma}}},
-                 {"dropped_cells", res.dropped_cells},
-                 {"records", res.data.records.size()},
-                 {"study", base_study}};
+  return {{"made_by", "twin import"},
+          {"program", programInfo()},
+          {"created_utc", utcNow()},
+          {"scenario", {{"name", res.scenario}, {"duration_s", res.duration_s}}},
+          {"source", {{"file", log_name}, {"content", hexId(fnv1a64(log_text))}, {"rows", res.rows}, {"t0_s", res.t0_s}}},
+          {"mapping", {{"file", m.source},
+                       {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
+                       {"speed", {{"column", m.speed->column}, {"unit", m.speed->unit}, {"lowpass_hz", m.speed_lowpass_hz}}},
+                       {"road", rj},
+                       {"channels", cols},
+                       {"max_dropout_rows", m.max_dropout_rows},
+                       {"header_line", m.header_line},
+                       {"skip_rows", m.skip_rows},
+                       {"decimal_comma", m.decimal_comma}}},
+          {"dropped_cells", res.dropped_cells},
+          {"records", res.data.records.size()},
+          {"study", base_study}};
+}
+
+}  // namespace
+
+ImportResult importLog(const std::string& log_text, const std::string& log_name, const ImportMapping& m,
+                       const std::string& base_study, const std::string& scenario, const StageProgress& progress) {
+  ImportResult res;
+  res.scenario = scenario;
+  const std::vector<Channel> known = checkTarget(loadStudy(base_study), m, base_study, scenario);
+  const ImportUnits units = resolveUnits(m, known);
+  LogRows rows = LogRowReader(log_text, log_name, m, units).read(progress);
+  auto& t = rows.t;
+  if (t.size() < 2) throw InputError(log_name, "holds " + std::to_string(t.size()) + " data rows; a drive needs at least 2");
+  res.rows = static_cast<long>(t.size());
+  res.dropped_cells = rows.dropped_cells;
+  res.t0_s = t.front();
+  // Times from the first row, rounded to 1 ns (so 100.0129 - 100 is written 0.0129).
+  for (double& x : t) x = std::round((x - res.t0_s) * 1e9) / 1e9;
+  res.duration_s = t.back();
+  for (std::size_t i = 0; i < t.size(); ++i)
+    for (std::size_t k = 0; k < m.channels.size(); ++k)
+      if (!std::isnan(rows.values[k][i])) res.data.records.push_back({1, t[i], m.channels[k].channel, rows.values[k][i]});
+  res.lab_csv = labCsvText(res.data, known);  // validates (plausible ranges, ...) with the log's lines lost: name the log
+  writeInputs(res, m, units, t, std::move(rows.v), rows.road);
+  res.study_toml = importedStudyText(log_name, m, units, base_study, scenario, res.duration_s);
+  res.sidecar = importSidecar(res, log_text, log_name, m, units, base_study);
   return res;
 }
 

@@ -172,6 +172,150 @@ std::uint64_t labNoiseStream(const std::string& scenario) { return kLabNoiseStre
 // About 150 lines, kept whole on purpose: the checks of the options (each naming its field), the
 // one run, the noise draws in record order and the sidecar form one straight sequence whose
 // order fixes the random streams; split into pieces it would pass a dozen locals between them.
+namespace {
+
+/// Which samples of the lab run are kept when every sample is (times mode all): the window and
+/// the kept rate, checked; empty rows otherwise.
+struct LabSampling {
+  bool all_times = false;
+  double w0 = 0.0, w1 = 0.0, rate = 0.0, keep_rate = 0.0;
+  std::size_t step = 1;
+  std::vector<std::size_t> rows;
+};
+
+LabSampling labSampling(const Study& study, const ScenarioSpec& sc, const LabOptions& opt, const OptionCheck& check) {
+  LabSampling s;
+  s.rate = s.keep_rate = study.simulation.output_rate_hz;
+  s.w1 = sc.duration_s;
+  s.all_times = opt.times_mode == LabTimesMode::All;
+  check.require(s.all_times || !opt.window, "window", "needs every sample kept (times mode all)");
+  check.require(s.all_times || !opt.rate_hz, "rate_hz", "needs every sample kept (times mode all)");
+  if (!s.all_times) return s;
+  if (opt.window) {
+    s.w0 = opt.window->first;
+    s.w1 = opt.window->second;
+    if (!(std::isfinite(s.w0) && std::isfinite(s.w1) && s.w0 < s.w1))
+      throw InputError(check.where("window"), "expects T0,T1 with T0 < T1, got " + formatExact(s.w0) + "," + formatExact(s.w1));
+    if (s.w0 < 0 || s.w1 > sc.duration_s + 1e-9)
+      throw InputError(check.where("window"), formatExact(s.w0) + " .. " + formatExact(s.w1) + " s lies outside the scenario '" + sc.name +
+                                                  "' (0 .. " + formatExact(sc.duration_s) + " s)");
+  }
+  if (opt.rate_hz) {
+    s.keep_rate = *opt.rate_hz;
+    const double q = s.rate / s.keep_rate;
+    if (!(std::isfinite(s.keep_rate) && s.keep_rate > 0) || !(q >= 1 - 1e-9) || std::abs(q - std::round(q)) > 1e-9 * q)
+      throw InputError(check.where("rate_hz"), "must divide the output rate " + formatExact(s.rate) + " Hz into an integer step (e.g. " +
+                                                   formatExact(s.rate / 2) + ", " + formatExact(s.rate / 5) + ", " + formatExact(s.rate / 10) +
+                                                   " Hz), got " + formatExact(s.keep_rate) + " Hz");
+    s.step = static_cast<std::size_t>(std::llround(q));
+  }
+  s.rows = windowRows(s.w0, s.w1, s.rate, s.step);
+  if (s.rows.empty())
+    throw InputError(check.where("window"), "no output sample at " + formatExact(s.keep_rate) + " Hz in " + formatExact(s.w0) + " .. " +
+                                                formatExact(s.w1) + " s");
+  return s;
+}
+
+/// The lab channels, each once.
+std::vector<Channel> labChannels(const Study& study, const LabOptions& opt, const std::vector<std::string>& names, const OptionCheck& check) {
+  std::vector<Channel> channels;
+  for (const auto& n : names) {
+    channels.push_back(channelInfo(study, n, opt.channels.empty() ? study.path + ": lab.channels" : check.where("channels")));
+    for (std::size_t i = 0; i + 1 < channels.size(); ++i)
+      if (channels[i].name == n) throw InputError(check.where("channels"), "channel '" + n + "' listed twice");
+  }
+  return channels;
+}
+
+/// The model that makes the data: the hidden effects installed, the hidden vehicle values set.
+std::shared_ptr<const Model> labModel(const Study& study, const AssemblySpec& assembly, const LabOptions& opt, const OptionCheck& check) {
+  auto model = modelWithHidden(study, assembly, opt.hidden_effects, check.where("hidden_effects"));
+  if (opt.hidden_values.empty()) return model;
+  const auto& freeable = freeableVehicleParameters();
+  for (const auto& v : opt.hidden_values)
+    if (std::find(freeable.begin(), freeable.end(), v.name) == freeable.end())
+      throw InputError(check.where("hidden_values"), unknownNameRule("vehicle value that can be changed", v.name, freeable));
+  return study.makeModel(assembly, opt.hidden_effects, opt.hidden_values);
+}
+
+/// The hidden sensor models, checked.
+SensorDistortion hiddenDistortion(const LabOptions& opt, const OptionCheck& check) {
+  SensorDistortion distortion;
+  for (const auto& [kind, value] : opt.hidden_sensor) {
+    const ParameterSpec p = sensorModelParameter(kind, check.where("hidden_sensor"));
+    const std::string rule = checkParameterValue(p, value);
+    if (!rule.empty()) throw InputError(check.where("hidden_sensor"), kind + "." + p.name + " " + rule);
+    distortion.set(kind, value);
+  }
+  return distortion;
+}
+
+/// The lab times (res.times_s, res.times_rule) with their provenance, and the trace rows they are.
+nlohmann::json chooseLabTimes(const Study& study, const ScenarioSpec& sc, const Trace& trace, const std::string& first_channel,
+                              const LabSampling& s, LabResult& res, std::vector<std::size_t>& rows) {
+  nlohmann::json times_json;
+  rows = s.rows;
+  if (s.all_times) {
+    for (std::size_t r : rows) res.times_s.push_back(trace.column("time_s").at(r));
+    res.times_rule = "all samples in [" + formatExact(s.w0) + "," + formatExact(s.w1) + "] at " + formatExact(s.keep_rate) + " Hz";
+    return {{"source", "all"},
+            {"rule", res.times_rule + ": the noise-free " + formatExact(s.rate) + " Hz output samples k (time k / " + formatExact(s.rate) +
+                         " s) in the window with k a multiple of " + std::to_string(s.step)},
+            {"window_s", {s.w0, s.w1}},
+            {"rate_hz", s.keep_rate},
+            {"output_rate_hz", s.rate},
+            {"step", s.step},
+            {"count", rows.size()}};
+  }
+  const double t_obstacle = obstacleTime(sc);
+  if (!study.lab.times_s.empty()) {
+    res.times_s = study.lab.times_s;
+    res.times_rule = "explicit: [lab] times_s of " + study.path;
+    times_json = {{"source", "explicit"}, {"rule", res.times_rule}};
+  } else {
+    res.times_s = automaticLabTimes(trace, first_channel, t_obstacle, static_cast<std::size_t>(study.lab.auto_times), study.lab.min_separation_s);
+    if (res.times_s.empty())
+      throw InputError(study.path + ": lab", "no local extremum of " + first_channel + " at or after t = " + formatExact(t_obstacle) +
+                                                 " s in scenario '" + sc.name + "'; give the times with [lab] times_s");
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "automatic: local extrema (sign changes of the discrete derivative; a flat run counts once, at its middle "
+                  "sample) of the noise-free %s at or after the obstacle time %g s, ranked by |value - static value at t = 0|, "
+                  "the %ld largest at least %g s apart, in time order, on the %g Hz output grid",
+                  first_channel.c_str(), t_obstacle, study.lab.auto_times, study.lab.min_separation_s, s.rate);
+    res.times_rule = buf;
+    times_json = {{"source", "automatic"},
+                  {"rule", res.times_rule},
+                  {"channel", first_channel},
+                  {"obstacle_time_s", t_obstacle},
+                  {"requested", study.lab.auto_times},
+                  {"found", res.times_s.size()},
+                  {"min_separation_s", study.lab.min_separation_s},
+                  {"static_value", trace.column(first_channel).front()}};
+  }
+  for (std::size_t i = 0; i < res.times_s.size(); ++i)
+    rows.push_back(gridIndex(res.times_s[i], s.rate, sc.duration_s, study.path + ": lab.times_s[" + std::to_string(i) + "]"));
+  return times_json;
+}
+
+/// The noise record of the lab file's provenance.
+nlohmann::json labNoiseJson(const std::vector<Channel>& channels, double variance, std::uint64_t seed, const std::string& scenario) {
+  std::vector<std::string> noisy, clean;
+  for (const auto& c : channels) (c.unit == "N" ? noisy : clean).push_back(c.name);
+  return {{"distribution", "independent normal N(0, variance) added to every value of a channel in N"},
+          {"variance_N2", variance},
+          {"sigma_N", std::sqrt(variance)},
+          {"applied_to", noisy},
+          {"not_applied_to", clean},
+          {"seed", seed},
+          {"stream", hexId(labNoiseStream(scenario))},
+          {"rule", "repetition r draws from RandomStream(seed, stream, r - 1) (mt19937_64 seeded by SplitMix64, "
+                   "Box-Muller), in the order of the channels, then of the times; stream = " + hexId(kLabNoiseStream) +
+                       " xor FNV-1a 64 of the scenario name (files of two scenarios made with one seed have independent noise)"}};
+}
+
+}  // namespace
+
 LabResult generateLab(const Study& study, const AssemblySpec& assembly, const LabOptions& opt, const ProgressFn& progress) {
   const OptionCheck check("lab");
   const ScenarioSpec& sc = study.scenario(opt.scenario);
@@ -180,58 +324,11 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   const double variance = noiseVariance(study, opt.noise_variance_N2);
   const double sigma = std::sqrt(variance);
   const std::vector<std::string> names = opt.channels.empty() ? study.lab.channelsOrDefault() : opt.channels;
-  std::vector<Channel> channels;
-  for (const auto& n : names) {
-    channels.push_back(channelInfo(study, n, opt.channels.empty() ? study.path + ": lab.channels" : check.where("channels")));
-    for (std::size_t i = 0; i + 1 < channels.size(); ++i)
-      if (channels[i].name == n) throw InputError(check.where("channels"), "channel '" + n + "' listed twice");
-  }
-  const double rate = study.simulation.output_rate_hz;
-  const bool all_times = opt.times_mode == LabTimesMode::All;
-  check.require(all_times || !opt.window, "window", "needs every sample kept (times mode all)");
-  check.require(all_times || !opt.rate_hz, "rate_hz", "needs every sample kept (times mode all)");
-  double w0 = 0.0, w1 = sc.duration_s, keep_rate = rate;
-  std::size_t step = 1;
-  if (all_times) {
-    if (opt.window) {
-      w0 = opt.window->first;
-      w1 = opt.window->second;
-      if (!(std::isfinite(w0) && std::isfinite(w1) && w0 < w1))
-        throw InputError(check.where("window"), "expects T0,T1 with T0 < T1, got " + formatExact(w0) + "," + formatExact(w1));
-      if (w0 < 0 || w1 > sc.duration_s + 1e-9)
-        throw InputError(check.where("window"), formatExact(w0) + " .. " + formatExact(w1) + " s lies outside the scenario '" + sc.name +
-                                         "' (0 .. " + formatExact(sc.duration_s) + " s)");
-    }
-    if (opt.rate_hz) {
-      keep_rate = *opt.rate_hz;
-      const double q = rate / keep_rate;
-      if (!(std::isfinite(keep_rate) && keep_rate > 0) || !(q >= 1 - 1e-9) || std::abs(q - std::round(q)) > 1e-9 * q)
-        throw InputError(check.where("rate_hz"), "must divide the output rate " + formatExact(rate) + " Hz into an integer step (e.g. " +
-                                       formatExact(rate / 2) + ", " + formatExact(rate / 5) + ", " + formatExact(rate / 10) +
-                                       " Hz), got " + formatExact(keep_rate) + " Hz");
-      step = static_cast<std::size_t>(std::llround(q));
-    }
-  }
-  const std::vector<std::size_t> all_rows = all_times ? windowRows(w0, w1, rate, step) : std::vector<std::size_t>{};
-  if (all_times && all_rows.empty())
-    throw InputError(check.where("window"), "no output sample at " + formatExact(keep_rate) + " Hz in " + formatExact(w0) + " .. " +
-                                     formatExact(w1) + " s");
+  const std::vector<Channel> channels = labChannels(study, opt, names, check);
+  const LabSampling sampling = labSampling(study, sc, opt, check);
+  const auto model = labModel(study, assembly, opt, check);
+  const SensorDistortion distortion = hiddenDistortion(opt, check);
 
-  auto model = modelWithHidden(study, assembly, opt.hidden_effects, check.where("hidden_effects"));
-  if (!opt.hidden_values.empty()) {
-    const auto& freeable = freeableVehicleParameters();
-    for (const auto& v : opt.hidden_values)
-      if (std::find(freeable.begin(), freeable.end(), v.name) == freeable.end())
-        throw InputError(check.where("hidden_values"), unknownNameRule("vehicle value that can be changed", v.name, freeable));
-    model = study.makeModel(assembly, opt.hidden_effects, opt.hidden_values);
-  }
-  SensorDistortion distortion;
-  for (const auto& [kind, value] : opt.hidden_sensor) {
-    const ParameterSpec p = sensorModelParameter(kind, check.where("hidden_sensor"));
-    const std::string rule = checkParameterValue(p, value);
-    if (!rule.empty()) throw InputError(check.where("hidden_sensor"), kind + "." + p.name + " " + rule);
-    distortion.set(kind, value);
-  }
   auto road = makeRoad(sc, model->vehicle(), seed);
   Simulator sim(model, study.simulation);
   const auto values = model->defaultRunValues();
@@ -246,56 +343,14 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
     const auto& t = run.trace.column("time_s");
     for (const auto& c : channels) {
       const auto i = static_cast<std::size_t>(run.trace.index(c.name));
-      run.trace.column(i) = distortChannel(run.trace.column(i), rate, t, distortion);
+      run.trace.column(i) = distortChannel(run.trace.column(i), sampling.rate, t, distortion);
     }
   }
 
   LabResult res;
-  const double t_obstacle = obstacleTime(sc);
-  nlohmann::json times_json;
-  std::vector<std::size_t> rows = all_rows;
-  if (all_times) {
-    for (std::size_t r : rows) res.times_s.push_back(run.trace.column("time_s").at(r));
-    res.times_rule = "all samples in [" + formatExact(w0) + "," + formatExact(w1) + "] at " + formatExact(keep_rate) + " Hz";
-    times_json = {{"source", "all"},
-                  {"rule", res.times_rule + ": the noise-free " + formatExact(rate) + " Hz output samples k (time k / " +
-                               formatExact(rate) + " s) in the window with k a multiple of " + std::to_string(step)},
-                  {"window_s", {w0, w1}},
-                  {"rate_hz", keep_rate},
-                  {"output_rate_hz", rate},
-                  {"step", step},
-                  {"count", rows.size()}};
-  } else if (!study.lab.times_s.empty()) {
-    res.times_s = study.lab.times_s;
-    res.times_rule = "explicit: [lab] times_s of " + study.path;
-    times_json = {{"source", "explicit"}, {"rule", res.times_rule}};
-  } else {
-    res.times_s = automaticLabTimes(run.trace, names.front(), t_obstacle, static_cast<std::size_t>(study.lab.auto_times),
-                                    study.lab.min_separation_s);
-    if (res.times_s.empty())
-      throw InputError(study.path + ": lab", "no local extremum of " + names.front() + " at or after t = " + formatExact(t_obstacle) +
-                                                 " s in scenario '" + sc.name + "'; give the times with [lab] times_s");
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "automatic: local extrema (sign changes of the discrete derivative; a flat run counts once, at its middle "
-                  "sample) of the noise-free %s at or after the obstacle time %g s, ranked by |value - static value at t = 0|, "
-                  "the %ld largest at least %g s apart, in time order, on the %g Hz output grid",
-                  names.front().c_str(), t_obstacle, study.lab.auto_times, study.lab.min_separation_s, rate);
-    res.times_rule = buf;
-    times_json = {{"source", "automatic"},
-                  {"rule", res.times_rule},
-                  {"channel", names.front()},
-                  {"obstacle_time_s", t_obstacle},
-                  {"requested", study.lab.auto_times},
-                  {"found", res.times_s.size()},
-                  {"min_separation_s", study.lab.min_separation_s},
-                  {"static_value", run.trace.column(names.front()).front()}};
-  }
-  if (!all_times)
-    for (std::size_t i = 0; i < res.times_s.size(); ++i)
-      rows.push_back(gridIndex(res.times_s[i], rate, sc.duration_s, study.path + ": lab.times_s[" + std::to_string(i) + "]"));
+  std::vector<std::size_t> rows;
+  const nlohmann::json times_json = chooseLabTimes(study, sc, run.trace, names.front(), sampling, res, rows);
   for (std::size_t r : rows) DTWIN_CHECK(r < run.trace.rows(), "lab time beyond the trace");
-
   nlohmann::json noise_free = nlohmann::json::object();
   for (const auto& c : channels) {
     std::vector<double> v;
@@ -321,25 +376,9 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   for (const auto& v : opt.hidden_values) j["hidden_values"][v.name] = v.value;
   for (const auto& [kind, value] : opt.hidden_sensor)
     j["hidden_sensor"][kind] = {{sensorModelParameter(kind, "").name, value}, {"applied_to", names}};
-  std::vector<std::string> noisy, clean;
-  for (const auto& c : channels) (c.unit == "N" ? noisy : clean).push_back(c.name);
-  j["noise"] = {{"distribution", "independent normal N(0, variance) added to every value of a channel in N"},
-                {"variance_N2", variance},
-                {"sigma_N", sigma},
-                {"applied_to", noisy},
-                {"not_applied_to", clean},
-                {"seed", seed},
-                {"stream", hexId(labNoiseStream(sc.name))},
-                {"rule", "repetition r draws from RandomStream(seed, stream, r - 1) (mt19937_64 seeded by SplitMix64, "
-                         "Box-Muller), in the order of the channels, then of the times; stream = " + hexId(kLabNoiseStream) +
-                             " xor FNV-1a 64 of the scenario name (files of two scenarios made with one seed have independent noise)"}};
-  j["lab"] = {{"repetitions", reps},
-              {"times_s", res.times_s},
-              {"times", times_json},
-              {"channels", nlohmann::json::array()},
-              {"noise_free_values", noise_free}};
-  for (const auto& c : channels)
-    j["lab"]["channels"].push_back({{"name", c.name}, {"unit", c.unit}, {"description", c.description}});
+  j["noise"] = labNoiseJson(channels, variance, seed, sc.name);
+  j["lab"] = {{"repetitions", reps}, {"times_s", res.times_s}, {"times", times_json}, {"channels", nlohmann::json::array()}, {"noise_free_values", noise_free}};
+  for (const auto& c : channels) j["lab"]["channels"].push_back({{"name", c.name}, {"unit", c.unit}, {"description", c.description}});
   res.provenance = std::move(j);
   res.noise_free = std::move(run.trace);
   return res;

@@ -119,14 +119,14 @@ int runHandOdeBench(const std::string& study_path, int runs, bool markdown, std:
 
 }  // namespace
 
-CommandHandle addBenchCommand(CLI::App& root) {
+CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*/) {
   struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; std::string scenario = "field"; bool hand_ode = false; };
   auto cfg = std::make_shared<Cfg>();
   std::string& bench_study = cfg->study;
   int& bench_runs = cfg->runs;
   bool& bench_md = cfg->md;
   std::vector<std::string>& bench_ids = cfg->ids;
-  auto* b = root.add_subcommand("bench", "Measure wall time per 15 s run for every assembly on the bump and the rough road");
+  auto* b = addSubcommand(root, "bench");
   b->add_option("--study", bench_study, "Study file (TOML)")->capture_default_str();
   b->add_option("--runs", bench_runs, "Timed runs per case (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
   b->add_option("--assembly", bench_ids, "Only these assemblies")->delimiter(',');

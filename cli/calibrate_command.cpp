@@ -130,9 +130,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
 
 CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<CalibrateConfig>();
-  auto* c = root.add_subcommand("calibrate",
-                                "Calibrate assemblies against lab data: NLopt optimum, feasible box, Latin hypercube design, "
-                                "two-block Griddy Gibbs (resumable: rerun the same command to continue)");
+  auto* c = addSubcommand(root, "calibrate");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--data", cfg->data, "Lab data CSV (repetition,time_s,channel,value), e.g. from `twin generate lab`")->required();
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...) or 'all'")->capture_default_str();

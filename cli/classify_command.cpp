@@ -60,9 +60,7 @@ int runClassify(const ClassifyConfig& cfg, const std::string& command) {
 
 CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<ClassifyConfig>();
-  auto* c = root.add_subcommand("classify",
-                                "Classify field records among synthesized assemblies (Gaussian likelihood per assembly, posterior "
-                                "probabilities, Bayes factors) and recommend the cheapest assembly not decisively worse");
+  auto* c = addSubcommand(root, "classify");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--field", cfg->field, "Field data CSV (run,road_seed,t_...), e.g. from twin generate field")->required();
   c->add_option("--synthetic", cfg->synthetic, "Folder written by twin synthesize (DIR/<id>/moments.bin, synthesis.json)")->required();

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "common/registry.hpp"
 #include "twin/study.hpp"
 
 namespace dtwin::cli {
@@ -22,6 +23,18 @@ struct CommandHandle {
   std::function<int()> run;
   std::map<std::string, std::string> field_flags = {};
 };
+
+/// A registry entry of a subcommand: what adds it to the root application (its options and what it
+/// runs), and whether it runs on every MPI rank (the commands that spread simulations,
+/// twin/distributed.hpp) rather than on the root alone.
+struct CommandEntry {
+  CommandHandle (*add)(CLI::App& root, const std::string& command_line);
+  bool distributed = false;
+};
+/// Every subcommand, in the order `twin --help` lists them (cli/command_registry.cpp).
+const Registry<CommandEntry>& commandRegistry();
+/// The subcommand `name` on `root`, with its registry description.
+CLI::App* addSubcommand(CLI::App& root, const std::string& name);
 
 /// The message of an InputError as the user of command `handle` should read it: where() of the
 /// form "<options>.<field>" becomes the flag that sets the field, when there is one.
@@ -51,8 +64,8 @@ bool progressOn(bool quiet);
 bool isRootRank();
 
 CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line);
-CommandHandle addListCommand(CLI::App& root);
-CommandHandle addBenchCommand(CLI::App& root);
+CommandHandle addListCommand(CLI::App& root, const std::string& command_line);
+CommandHandle addBenchCommand(CLI::App& root, const std::string& command_line);
 /// `twin generate lab|field`: synthetic measurements (twin/generate.hpp, docs/data-files.md).
 CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line);
 /// `twin calibrate`: Griddy Gibbs calibration of assemblies against lab data (calibration/calibrate.hpp).

@@ -87,9 +87,7 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
 
 CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<CoverageConfig>();
-  auto* c = root.add_subcommand("coverage",
-                                "Measure how often the calibration's 95 % intervals hold the truth: each assembly's own lab data over N "
-                                "noise seeds, calibrated as `twin calibrate` would (resumable: rerun the same command to continue)");
+  auto* c = addSubcommand(root, "coverage");
   c->add_option("--study", cfg->study, "Study file (TOML); its calibrated truths are what is covered")->capture_default_str();
   c->add_option("--out", cfg->out, "Output folder: <id>/lab_<seed>.csv, <id>/seed_<seed>/, coverage.json, coverage.md")->required();
   c->add_option("--assembly", cfg->assemblies, "Assembly ids (repeatable; default: all)");

@@ -248,10 +248,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
 
 CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<CompareConfig>();
-  auto* c = root.add_subcommand("compare",
-                                "Compare a calibrated assembly with measurements: posterior predictive mean and 95 % band per "
-                                "channel, RMS, NRMSE, max error, coverage, and where it fails (time windows, frequency bands, "
-                                "force-state maps)");
+  auto* c = addSubcommand(root, "compare");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--calibration", cfg->calibration,
                 "Calibration folder (summary.json + posterior.csv) from `twin calibrate` (OUT/<id>) or `twin diagnose` "
@@ -268,10 +265,7 @@ CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line)
 
 CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<DiagnoseConfig>();
-  auto* c = root.add_subcommand("diagnose",
-                                "Name the physical effect the assembly is missing: calibrate the base on the measurements, screen "
-                                "the effect catalogue (score test), confirm the best by re-calibration and evidence (BIC); "
-                                "--apply adds effects in turn and shows the error fall (resumable)");
+  auto* c = addSubcommand(root, "diagnose");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...)")->capture_default_str();
   c->add_option("--data", cfg->data, "Measurement file FILE[@SCENARIO] to fit (tidy lab layout); repeatable")->required();

@@ -203,7 +203,7 @@ void commonOptions(CLI::App* s, GenerateConfig& cfg, const char* default_scenari
 }  // namespace
 
 CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line) {
-  auto* g = root.add_subcommand("generate", "Make synthetic measurements: lab data (condensed, repeated) or field data (random roads)");
+  auto* g = addSubcommand(root, "generate");
   g->require_subcommand(1);
   auto lab = std::make_shared<GenerateConfig>();
   auto field = std::make_shared<GenerateConfig>();

@@ -92,9 +92,7 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
 
 CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<ImportConfig>();
-  auto* c = root.add_subcommand("import",
-                                "Turn a logger's CSV (one row per time, one column per signal) into measurements, a speed trace, a road "
-                                "logged against time and a study holding the drive as a scenario (docs/measurements.md)");
+  auto* c = addSubcommand(root, "import");
   c->add_option("log", cfg->log, "The logger's CSV file")->required();
   c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv, study.toml")->required();
   c->add_option("--map", cfg->map, "Mapping file (TOML, [import] table); or give the mapping as the flags below");

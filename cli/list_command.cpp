@@ -73,12 +73,12 @@ int runList(const std::string& study_path, bool params) {
 
 }  // namespace
 
-CommandHandle addListCommand(CLI::App& root) {
+CommandHandle addListCommand(CLI::App& root, const std::string& /*command_line*/) {
   struct Cfg { std::string study = defaultStudy(); bool params = false; };
   auto cfg = std::make_shared<Cfg>();
   std::string& list_study = cfg->study;
   bool& list_params = cfg->params;
-  auto* l = root.add_subcommand("list", "Show the assemblies, scenarios, calibrated parameters, effects and channels a study defines");
+  auto* l = addSubcommand(root, "list");
   l->add_option("--study", list_study, "Study file (TOML)")->capture_default_str();
   l->add_flag("--parameters", list_params, "Also list every parameter with its value, unit and source");
 

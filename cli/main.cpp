@@ -1,8 +1,10 @@
 // twin: the command-line front end. Parses, validates, calls the libraries. Nothing else.
-// Each subcommand lives in its own <name>_command.cpp and registers itself here.
+// Each subcommand lives in its own <name>_command.cpp and has one line in commandRegistry()
+// (cli/command_registry.cpp).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <stdexcept>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -69,19 +71,13 @@ int runTwin(int argc, char** argv, std::string& error) {
   app.set_version_flag("--version", std::string(kVersion) + " (" + kGitDescribe + ")");
 
   std::vector<CommandHandle> commands;
-  commands.push_back(addSimulateCommand(app, command));
-  commands.push_back(addListCommand(app));
-  commands.push_back(addBenchCommand(app));
-  commands.push_back(addGenerateCommand(app, command));
-  commands.push_back(addCalibrateCommand(app, command));
-  commands.push_back(addCoverageCommand(app, command));
-  commands.push_back(addSynthesizeCommand(app, command));
-  commands.push_back(addClassifyCommand(app, command));
-  commands.push_back(addStudyCommand(app, command));
-  commands.push_back(addReportCommand(app, command));
-  commands.push_back(addCompareCommand(app, command));
-  commands.push_back(addDiagnoseCommand(app, command));
-  commands.push_back(addImportCommand(app, command));
+  std::vector<bool> distributed;
+  for (const auto& e : commandRegistry()) {
+    commands.push_back(e.value.add(app, command));
+    distributed.push_back(e.value.distributed);
+    if (commands.back().app->get_name() != e.name)
+      throw std::logic_error("command registry: the entry '" + e.name + "' adds '" + commands.back().app->get_name() + "'");
+  }
 
   if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
     error = "error: " + unknown;
@@ -101,13 +97,11 @@ int runTwin(int argc, char** argv, std::string& error) {
   const Distributed& dist = Distributed::instance();
   const CommandHandle* chosen = nullptr;
   try {
-    for (auto& c : commands) {
-      if (!c.app->parsed()) continue;
-      chosen = &c;
-      const std::string name = c.app->get_name();
-      const bool distributed = name == "calibrate" || name == "synthesize" || name == "study" || name == "generate";
-      if (!distributed && !dist.isRoot()) return 0;
-      return c.run();
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+      if (!commands[i].app->parsed()) continue;
+      chosen = &commands[i];
+      if (!distributed[i] && !dist.isRoot()) return 0;
+      return commands[i].run();
     }
   } catch (const InputError& e) {
     error = oneLine(std::string("error: ") + (chosen ? messageForCommand(*chosen, e.where(), e.rule()) : std::string(e.what())));

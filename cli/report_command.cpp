@@ -64,10 +64,7 @@ int runReportCommand(const ReportConfig& cfg, const std::string& command) {
 
 CommandHandle addReportCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<ReportConfig>();
-  auto* c = root.add_subcommand("report",
-                                "Write a self-contained HTML report of a study folder (lab data vs posterior predictive bands, "
-                                "posteriors, field-record selection, evidence vs cost, provenance) and/or of diagnosis folders; "
-                                "needs gnuplot");
+  auto* c = addSubcommand(root, "report");
   c->add_option("study_dir", cfg->dir, "Study folder written by `twin study` (optional with --diagnosis)")->check(CLI::ExistingDirectory);
   c->add_option("--diagnosis", cfg->diagnoses,
                 "Folder written by `twin diagnose --out` (repeatable): its section is appended to the study report, or, "

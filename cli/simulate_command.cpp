@@ -124,7 +124,7 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
 CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<SimulateConfig>();
   SimulateConfig& sim = *cfg;
-  auto* s = root.add_subcommand("simulate", "Simulate one assembly (or all) over one scenario; writes a CSV trace and a JSON sidecar");
+  auto* s = addSubcommand(root, "simulate");
   s->add_option("--study", sim.study, "Study file (TOML)")->capture_default_str();
   s->add_option("--assembly", sim.assembly, "Assembly id from `twin list` (M1, M2, ...), or 'all'")->capture_default_str();
   s->add_option("--scenario", sim.scenario, "Scenario name from the study (e.g. lab, field)")->capture_default_str();

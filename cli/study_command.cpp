@@ -59,9 +59,7 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
 
 CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<StudyConfig>();
-  auto* c = root.add_subcommand("study",
-                                "Run the whole method: lab and field data, calibrate every assembly, synthesise field data, "
-                                "classify, recommend (resumable: rerun the same command to continue)");
+  auto* c = addSubcommand(root, "study");
   c->add_option("study", cfg->study, "Study file (TOML); default: the embedded demo study")->capture_default_str();
   c->add_option("--out", cfg->out, "Study folder (created; a rerun into it resumes)")->capture_default_str();
   c->add_option("--lab", cfg->lab, "Use these lab data (CSV) instead of generating them");

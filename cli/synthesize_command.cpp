@@ -110,10 +110,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
 
 CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<SynthesizeConfig>();
-  auto* c = root.add_subcommand(
-      "synthesize",
-      "Synthetic field data per calibrated assembly: posterior draws, each on R roads of a seeded road library, plus noise "
-      "N(0, 1/tau); the window's mean and covariance are accumulated (resumable: rerun the same command to continue)");
+  auto* c = addSubcommand(root, "synthesize");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--calibration", cfg->calibration, "Folder written by twin calibrate (reads DIR/<id>/posterior.csv)")->required();
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...) or 'all'")->capture_default_str();

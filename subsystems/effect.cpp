@@ -55,16 +55,15 @@ namespace {
 /// The registry entry of effect class E: its name from E itself, and a factory.
 template <class E>
 EffectEntry entry() {
-  return {E().name(), [] { return std::unique_ptr<Effect>(std::make_unique<E>()); }};
+  return {E().name(), E().description(), [] { return std::unique_ptr<Effect>(std::make_unique<E>()); }};
 }
 
 }  // namespace
 
-const std::vector<EffectEntry>& effectRegistry() {
+const Registry<EffectFactory>& effectRegistry() {
   // The one list of effects. A new effect: its class (subsystems/effects/<name>.hpp, #included
   // above) and one line here (docs/extending.md). The order is the order of `twin list`.
-  static const std::vector<EffectEntry> registry = [] {
-    std::vector<EffectEntry> r = {
+  static const Registry<EffectFactory> registry("effect", {
         entry<BumpStopEffect>(),
         entry<DamperAsymmetryEffect>(),
         entry<StrutFrictionEffect>(),
@@ -73,24 +72,14 @@ const std::vector<EffectEntry>& effectRegistry() {
         entry<SpeedDependentTireStiffnessEffect>(),
         entry<AntiRollBarEffect>(),
         entry<TopMountComplianceEffect>(),
-    };
-    std::set<std::string> seen;
-    for (const auto& e : r)
-      if (!seen.insert(e.name).second) throw std::logic_error("effectRegistry: effect '" + e.name + "' registered twice");
-    return r;
-  }();
+  });
   return registry;
 }
 
-std::vector<std::string> effectNames() {
-  std::vector<std::string> names;
-  for (const auto& e : effectRegistry()) names.push_back(e.name);
-  return names;
-}
+std::vector<std::string> effectNames() { return effectRegistry().names(); }
 
 std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& where) {
-  for (const auto& e : effectRegistry())
-    if (e.name == name) return e.make();
+  if (const auto* e = effectRegistry().find(name)) return e->value();
   if (name.rfind(kTermPrefix, 0) == 0) {
     // A library term of twin diagnose's proposal: strut force a * (TERM), a unregistered user effect.
     UserEffectSpec u;

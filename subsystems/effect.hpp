@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/registry.hpp"
 #include "subsystems/parameter.hpp"
 #include "subsystems/road.hpp"
 #include "subsystems/strut_law.hpp"
@@ -119,15 +120,14 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 ParameterSpec effectParameter(std::string name, std::string unit, std::string description, double off, double lo, double hi,
                               double prior_lo, double prior_hi, bool lo_inclusive = true);
 
-/// One entry of the effect registry: the effect's name (its own name()) and its factory.
-struct EffectEntry {
-  std::string name;
-  std::function<std::unique_ptr<Effect>()> make;
-};
+/// What the effect registry holds of an effect: its factory.
+using EffectFactory = std::function<std::unique_ptr<Effect>()>;
+/// One entry: the effect's name and description (its own name() and description()), its factory.
+using EffectEntry = RegistryEntry<EffectFactory>;
 
 /// Every effect, in the order `twin list`, the study file and the diagnosis know them: the one
 /// table in effect.cpp (names unique). A new effect is one line there (docs/extending.md).
-const std::vector<EffectEntry>& effectRegistry();
+const Registry<EffectFactory>& effectRegistry();
 
 /// The prefix of a library term (twin diagnose's proposal, docs/diagnosis.md): makeEffect("term:EXPR")
 /// is the strut force a * (EXPR), EXPR in the user-effect variables q and v, with one parameter a

@@ -23,7 +23,7 @@ std::unique_ptr<Effect> EffectCatalog::make(const std::string& name, const std::
   for (const auto& u : user_)
     if (u.name == name) return remakeUserEffect(u);  // checked when added
   for (const auto& e : effectRegistry())
-    if (e.name == name) return e.make();
+    if (e.name == name) return e.value();
   if (name.rfind(kTermPrefix, 0) == 0) return makeEffect(name, where);
   throw InputError(where, unknownNameRule("effect", name, names()));
 }

@@ -1,33 +1,21 @@
 #pragma once
-// The shape every subsystem registry shares (tire laws, strut laws): an ordered list of factories,
-// each making one law that knows its own name.
+// The law registries' entries (tire laws, strut laws): common/registry.hpp's Registry of
+// factories, each entry named by the law it makes.
 #include <memory>
 #include <string>
-#include <vector>
 
-#include "common/errors.hpp"
-#include "common/names.hpp"
+#include "common/registry.hpp"
 
 namespace dtwin {
 
 template <class T>
 using Factory = std::unique_ptr<T> (*)();
 
-/// The names of the registered entries, in registry order.
-template <class T>
-std::vector<std::string> registeredNames(const std::vector<Factory<T>>& registry) {
-  std::vector<std::string> out;
-  for (const auto& make : registry) out.push_back(make()->name());
-  return out;
-}
-
-/// The entry called `name`; InputError(where, "unknown <what> 'x' (known: ...; did you mean ...)").
-template <class T>
-std::unique_ptr<T> makeRegistered(const std::vector<Factory<T>>& registry, const std::string& name, const std::string& what,
-                                  const std::string& where) {
-  for (const auto& make : registry)
-    if (auto entry = make(); entry->name() == name) return entry;
-  throw InputError(where, unknownNameRule(what, name, registeredNames(registry)));
+/// The registry entry of law class L (a subclass of Base): its name from L itself, the
+/// description given, and a factory.
+template <class L, class Base>
+RegistryEntry<Factory<Base>> lawEntry(std::string description) {
+  return {L().name(), std::move(description), [] { return std::unique_ptr<Base>(std::make_unique<L>()); }};
 }
 
 }  // namespace dtwin

@@ -1,5 +1,7 @@
 #include "subsystems/sensor.hpp"
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 
@@ -77,19 +79,21 @@ nlohmann::json SensorSpec::toJson() const {
   return j;
 }
 
-SensorQuantity parseSensorQuantity(const std::string& text, const std::string& where) {
-  if (text == "displacement_z") return SensorQuantity::DisplacementZ;
-  if (text == "velocity_z") return SensorQuantity::VelocityZ;
-  if (text == "acceleration_z") return SensorQuantity::AccelerationZ;
-  throw InputError(where, "must be \"displacement_z\", \"velocity_z\" or \"acceleration_z\", got \"" + text + "\"");
+const Registry<SensorQuantity>& sensorQuantities() {
+  static const Registry<SensorQuantity> r(
+      "sensor quantity", {
+                             {"displacement_z", "the point's world-vertical displacement from its start (channel NAME_m)", SensorQuantity::DisplacementZ},
+                             {"velocity_z", "the point's world-vertical velocity (channel NAME_mps)", SensorQuantity::VelocityZ},
+                             {"acceleration_z", "the point's world-vertical acceleration, gravity excluded (channel NAME_mps2)", SensorQuantity::AccelerationZ},
+                         });
+  return r;
 }
 
+SensorQuantity parseSensorQuantity(const std::string& text, const std::string& where) { return sensorQuantities().at(text, where).value; }
+
 std::string sensorQuantityName(SensorQuantity q) {
-  switch (q) {
-    case SensorQuantity::DisplacementZ: return "displacement_z";
-    case SensorQuantity::VelocityZ: return "velocity_z";
-    case SensorQuantity::AccelerationZ: return "acceleration_z";
-  }
+  for (const auto& e : sensorQuantities())
+    if (e.value == q) return e.name;
   return "";
 }
 
@@ -143,33 +147,36 @@ std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const 
   return y;
 }
 
-const std::vector<std::string>& sensorModelKinds() {
-  static const std::vector<std::string> kinds = {"lowpass", "lowpass2", "gain", "delay"};
-  return kinds;
-}
-
-ParameterSpec sensorModelParameter(const std::string& kind, const std::string& where) {
-  ParameterSpec p;
-  if (kind == "lowpass" || kind == "lowpass2") {
-    p = {"time_constant_s", "s", std::string(kind == "lowpass" ? "first-order" : "second-order Butterworth") +
-                                     " low-pass time constant 1/(2 pi f_c) (off: 0; 0.05 s is 3.2 Hz)",
-         0.0, 0.0};
-    p.prior_lower = 0.0;
-    p.prior_upper = 0.05;
-  } else if (kind == "gain") {
-    p = {"gain", "1", "gain of the channel (off: 1)", 1.0, 0.0};
-    p.min_inclusive = false;
-    p.prior_lower = 0.5;
-    p.prior_upper = 1.5;
-  } else if (kind == "delay") {
-    p = {"delay_s", "s", "time offset: the record at t is the signal at t - delay_s (off: 0)", 0.0};
-    p.prior_lower = -0.05;
-    p.prior_upper = 0.05;
-  } else {
-    throw InputError(where, unknownNameRule("sensor model", kind, sensorModelKinds()));
-  }
+namespace {
+ParameterSpec sensorParameter(std::string name, std::string unit, std::string description, double off, double lo, bool lo_inclusive,
+                              double prior_lo, double prior_hi) {
+  ParameterSpec p{std::move(name), std::move(unit), std::move(description), off, lo};
+  p.min_inclusive = lo_inclusive;
+  p.prior_lower = prior_lo;
+  p.prior_upper = prior_hi;
   return p;
 }
+}  // namespace
+
+const Registry<ParameterSpec>& sensorModels() {
+  static const Registry<ParameterSpec> r(
+      "sensor model",
+      {
+          {"lowpass", "a first-order low-pass filter on the channel",
+           sensorParameter("time_constant_s", "s", "first-order low-pass time constant 1/(2 pi f_c) (off: 0; 0.05 s is 3.2 Hz)", 0.0, 0.0, true, 0.0, 0.05)},
+          {"lowpass2", "a second-order Butterworth low-pass filter on the channel",
+           sensorParameter("time_constant_s", "s", "second-order Butterworth low-pass time constant 1/(2 pi f_c) (off: 0; 0.05 s is 3.2 Hz)", 0.0, 0.0,
+                           true, 0.0, 0.05)},
+          {"gain", "a gain error of the channel", sensorParameter("gain", "1", "gain of the channel (off: 1)", 1.0, 0.0, false, 0.5, 1.5)},
+          {"delay", "a time offset of the channel",
+           sensorParameter("delay_s", "s", "time offset: the record at t is the signal at t - delay_s (off: 0)", 0.0, -std::numeric_limits<double>::infinity(), true, -0.05, 0.05)},
+      });
+  return r;
+}
+
+std::vector<std::string> sensorModelKinds() { return sensorModels().names(); }
+
+ParameterSpec sensorModelParameter(const std::string& kind, const std::string& where) { return sensorModels().at(kind, where).value; }
 
 void SensorDistortion::set(const std::string& kind, double value) {
   if (kind == "gain") {

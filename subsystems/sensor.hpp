@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/registry.hpp"
 #include "subsystems/parameter.hpp"
 
 namespace dtwin {
@@ -51,6 +52,8 @@ struct SensorSpec {
   nlohmann::json toJson() const;
 };
 
+/// The quantities a [sensors] table may measure, by their study-file names.
+const Registry<SensorQuantity>& sensorQuantities();
 /// "displacement_z" | "velocity_z" | "acceleration_z"; InputError(where, rule) for any other.
 SensorQuantity parseSensorQuantity(const std::string& text, const std::string& where);
 std::string sensorQuantityName(SensorQuantity q);
@@ -78,7 +81,10 @@ std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const 
 ///   lowpass2  a second-order Butterworth,       parameter time_constant_s τ = 1/ωc (off: 0)
 ///   gain      a gain error y = g u,             parameter gain g (off: 1)
 ///   delay     a time offset y(t) = u(t − d),    parameter delay_s d (off: 0; > 0 the record lags)
-const std::vector<std::string>& sensorModelKinds();
+/// The registry's value is the model's one parameter.
+const Registry<ParameterSpec>& sensorModels();
+/// sensorModels()'s names.
+std::vector<std::string> sensorModelKinds();
 
 /// The parameter of a sensor model `kind` (name, unit, off value, prior range); InputError(where,
 /// rule) for an unknown kind.

@@ -29,19 +29,18 @@ double LinearStrut::calcForce(const StrutState& s, ParamValues p) const {
 // ---------------------------------------------------------------- registry
 // The one list of strut laws: each entry makes a law, which names itself. Adding a law is its
 // class and one line here (docs/extending.md).
-namespace {
-const std::vector<Factory<StrutLaw>>& strutRegistry() {
-  static const std::vector<Factory<StrutLaw>> r = {
-      [] { return std::unique_ptr<StrutLaw>(std::make_unique<LinearStrut>()); },
-  };
+const Registry<Factory<StrutLaw>>& strutLawRegistry() {
+  static const Registry<Factory<StrutLaw>> r(
+      "strut option", {
+                          lawEntry<LinearStrut, StrutLaw>("a linear spring and damper about the static preload, with hardstops beyond the travel limit (paper eq. 4)"),
+                      });
   return r;
 }
-}  // namespace
 
-std::vector<std::string> strutLawNames() { return registeredNames(strutRegistry()); }
+std::vector<std::string> strutLawNames() { return strutLawRegistry().names(); }
 
 std::unique_ptr<StrutLaw> makeStrutLaw(const std::string& name, const std::string& where) {
-  return makeRegistered(strutRegistry(), name, "strut option", where);
+  return strutLawRegistry().at(name, where).value();
 }
 
 }  // namespace dtwin

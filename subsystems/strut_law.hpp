@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "subsystems/parameter.hpp"
+#include "subsystems/registry.hpp"
 
 namespace dtwin {
 
@@ -67,6 +68,8 @@ class LinearStrut final : public StrutLaw {
   std::vector<ParameterSpec> specs_;
 };
 
+/// Every strut law, in the order `twin list` shows them (docs: the "strut law" table of docs/model.md).
+const Registry<Factory<StrutLaw>>& strutLawRegistry();
 /// Factory keyed by study-file option name. Throws InputError listing the known names.
 std::unique_ptr<StrutLaw> makeStrutLaw(const std::string& name, const std::string& where);
 /// The registered strut laws, in registry order; the first is the default when a study does

@@ -122,20 +122,19 @@ double Pac2002Tire::operatingDeflection(ParamValues p) const {
 // ---------------------------------------------------------------- registry
 // The one list of tire laws: each entry makes a law, which names itself. Adding a law is its
 // class and one line here (docs/extending.md).
-namespace {
-const std::vector<Factory<TireLaw>>& tireRegistry() {
-  static const std::vector<Factory<TireLaw>> r = {
-      [] { return std::unique_ptr<TireLaw>(std::make_unique<FialaTire>()); },
-      [] { return std::unique_ptr<TireLaw>(std::make_unique<Pac2002Tire>()); },
-  };
+const Registry<Factory<TireLaw>>& tireLawRegistry() {
+  static const Registry<Factory<TireLaw>> r(
+      "tire option", {
+                         lawEntry<FialaTire, TireLaw>("Fiala's vertical law: linear stiffness on the deflection, contact damping (paper eq. 2)"),
+                         lawEntry<Pac2002Tire, TireLaw>("PAC2002's vertical law (MFeval): quadratic in the deflection, speed, pressure and camber terms (paper eq. 3)"),
+                     });
   return r;
 }
-}  // namespace
 
-std::vector<std::string> tireLawNames() { return registeredNames(tireRegistry()); }
+std::vector<std::string> tireLawNames() { return tireLawRegistry().names(); }
 
 std::unique_ptr<TireLaw> makeTireLaw(const std::string& name, const std::string& where) {
-  return makeRegistered(tireRegistry(), name, "tire option", where);
+  return tireLawRegistry().at(name, where).value();
 }
 
 }  // namespace dtwin

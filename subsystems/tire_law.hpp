@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "subsystems/parameter.hpp"
+#include "subsystems/registry.hpp"
 
 namespace dtwin {
 
@@ -111,6 +112,8 @@ class Pac2002Tire final : public TireLaw {
   std::vector<ParameterSpec> specs_;
 };
 
+/// Every tire law, in the order `twin list` shows them (docs: the "tire law" table of docs/model.md).
+const Registry<Factory<TireLaw>>& tireLawRegistry();
 /// Factory keyed by study-file option name. Throws InputError listing the known names.
 std::unique_ptr<TireLaw> makeTireLaw(const std::string& name, const std::string& where);
 std::vector<std::string> tireLawNames();

@@ -57,19 +57,22 @@ const std::vector<std::string>& freeableVehicleParameters() {
 }
 
 namespace {
-/// The suspension options: each is a mobilizer layout of the simulator (twin/simulator.cpp), so a
-/// new one needs simulator code, not only an entry here.
-const std::vector<std::pair<std::string, SuspensionTopology>>& suspensionOptions() {
-  static const std::vector<std::pair<std::string, SuspensionTopology>> r = {{"macpherson", SuspensionTopology::MacPherson},
-                                                                             {"solid_axle", SuspensionTopology::SolidAxle}};
+}  // namespace
+
+const Registry<SuspensionTopology>& suspensionOptions() {
+  // Each is a mobilizer layout of the simulator (twin/simulator.cpp), so a new one needs simulator
+  // code, not only an entry here.
+  static const Registry<SuspensionTopology> r(
+      "suspension option", {
+                               {"macpherson", "independent struts: each wheel carrier slides along the chassis z axis (paper eq. 4)", SuspensionTopology::MacPherson},
+                               {"solid_axle", "a rigid axle per axle (heave and roll), each wheel on it through a compliant interface (paper eq. 5)", SuspensionTopology::SolidAxle},
+                           });
   return r;
 }
-}  // namespace
 
 const std::map<std::string, std::vector<std::string>>& knownSubsystems() {
   static const std::map<std::string, std::vector<std::string>> k = [] {
-    std::vector<std::string> susp;
-    for (const auto& [name, topology] : suspensionOptions()) susp.push_back(name);
+    const std::vector<std::string> susp = suspensionOptions().names();
     // `strut` is optional in a study: without it every assembly uses the first registered law.
     return std::map<std::string, std::vector<std::string>>{{"tire", tireLawNames()}, {"suspension", susp}, {"strut", strutLawNames()}};
   }();
@@ -190,10 +193,7 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   tire_ = makeTireLaw(tire, where);
   const std::string strut = assembly_.option("strut");
   strut_ = makeStrutLaw(strut.empty() ? strutLawNames().front() : strut, where);
-  const auto& topologies = suspensionOptions();
-  const auto found = std::find_if(topologies.begin(), topologies.end(), [&](const auto& o) { return o.first == susp; });
-  if (found == topologies.end()) throw InputError(where, unknownNameRule("suspension option", susp, knownSubsystems().at("suspension")));
-  topology_ = found->second;
+  topology_ = suspensionOptions().at(susp, where).value;
 
   auto need = [&](const std::string& n) {
     const auto& e = table_.at(n);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/registry.hpp"
 #include "subsystems/sensor.hpp"
 #include "subsystems/effect.hpp"
 #include "subsystems/effect_catalog.hpp"
@@ -41,6 +42,9 @@ struct AssemblySpec {
 /// (the rear wheels meet the road one wheelbase later: the road depends on them). The solid
 /// axle's values are listed too and refused for a MacPherson assembly.
 const std::vector<std::string>& freeableVehicleParameters();
+
+/// The suspension options (the `suspension` subsystem's), each a mobilizer layout.
+const Registry<SuspensionTopology>& suspensionOptions();
 
 /// Subsystems and options the twin knows.
 const std::map<std::string, std::vector<std::string>>& knownSubsystems();

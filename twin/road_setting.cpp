@@ -11,40 +11,29 @@
 
 namespace dtwin {
 
-const std::vector<RoadType>& roadTypes() {
+const Registry<RoadParser>& roadTypes() {
   // The registry: one line per road type.
-  static const std::vector<RoadType> r = {
+  static const Registry<RoadParser> r("road type", {
       {"flat", "a flat road", &FlatRoadSetting::parse},
       {"bump", "a one-cosine bump across both tracks, reached at time_s", &BumpRoadSetting::parse},
       {"iso8608", "an ISO 8608 random road of a class A..H, smooth until smooth_until_s", &IsoRoadSetting::parse},
       {"csv", "a measured profile: distance_m,left_m,right_m", &CsvRoadSetting::parse},
       {"csv_time", "a road logged against time (height or road velocity), mapped to distance through the speed", &CsvTimeRoadSetting::parse},
-  };
+  });
   return r;
 }
 
-std::vector<std::string> roadTypeNames() {
-  std::vector<std::string> out;
-  for (const auto& t : roadTypes()) out.push_back(t.name);
-  return out;
-}
+std::vector<std::string> roadTypeNames() { return roadTypes().names(); }
 
 std::shared_ptr<const RoadSetting> parseRoadSetting(TableReader& r) {
   const toml::table* t = r.table("road");
   if (!t) throw InputError(r.where("road"), "is required (a table with a 'type')");
   TableReader rr(*t, r.file(), r.field("road"));
   const std::string type = rr.string("type").value_or("");
-  for (const auto& entry : roadTypes())
-    if (entry.name == type) {
-      auto setting = entry.parse(rr);
-      rr.finish();
-      return setting;
-    }
-  std::string list;
-  for (const auto& n : roadTypeNames()) list += (list.empty() ? "" : ", ") + n;
-  const std::string hint = type.empty() ? std::string() : closestName(type, roadTypeNames());
-  throw InputError(rr.where("type"), "must be one of " + list + ", got \"" + type + "\"" +
-                                         (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
+  if (type.empty()) throw InputError(rr.where("type"), unknownNameRule(roadTypes().what(), type, roadTypes().names()));
+  auto setting = roadTypes().at(type, rr.where("type")).value(rr);
+  rr.finish();
+  return setting;
 }
 
 std::shared_ptr<const RoadSetting> flatRoadSetting() {

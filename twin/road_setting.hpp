@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/registry.hpp"
 #include "subsystems/road.hpp"
 
 namespace dtwin {
@@ -48,13 +49,12 @@ class RoadSetting {
 
 /// One registered road type: its study-file name, a sentence for `twin list`, and how it reads
 /// its table (every field it knows, except `type`).
-struct RoadType {
-  std::string name, description;
-  std::shared_ptr<const RoadSetting> (*parse)(TableReader& table);
-};
+/// What the road registry holds of a type: the parser of its fields.
+using RoadParser = std::shared_ptr<const RoadSetting> (*)(TableReader& table);
+using RoadType = RegistryEntry<RoadParser>;
 
 /// Every road type, in the order `twin list` shows them.
-const std::vector<RoadType>& roadTypes();
+const Registry<RoadParser>& roadTypes();
 std::vector<std::string> roadTypeNames();
 /// Reads the `road` table of a scenario table: its `type`, then the type's own fields. Unknown
 /// fields and types are InputErrors naming file:line and field.

@@ -16,18 +16,28 @@ namespace dtwin {
 using namespace SimTK;
 
 // ----------------------------------------------------------------------- options
-std::vector<std::string> SimulationOptions::integratorNames() {
-  return {"rosenbrock", "rk-merson", "rk3", "rk-feldberg", "cpodes", "semi-explicit-euler2"};
+const Registry<IntegratorMaker>& integrators() {
+  using P = std::unique_ptr<Integrator>;
+  static const Registry<IntegratorMaker> r(
+      "integrator",
+      {
+          {"rosenbrock", "ROS34PW2, an L-stable Rosenbrock-W method of order 3 (the project's own; the default)", nullptr},
+          {"rk-merson", "Simbody's Runge-Kutta-Merson, explicit, order 4", [](System& s) { return P(std::make_unique<RungeKuttaMersonIntegrator>(s)); }},
+          {"rk3", "Simbody's Runge-Kutta 3, explicit, order 3", [](System& s) { return P(std::make_unique<RungeKutta3Integrator>(s)); }},
+          {"rk-feldberg", "Simbody's Runge-Kutta-Feldberg, explicit, order 5", [](System& s) { return P(std::make_unique<RungeKuttaFeldbergIntegrator>(s)); }},
+          {"cpodes", "Simbody's CPodes (SUNDIALS CVODE): BDF with Newton iterations, implicit",
+           [](System& s) { return P(std::make_unique<CPodesIntegrator>(s, CPodes::BDF, CPodes::Newton)); }},
+          {"semi-explicit-euler2", "Simbody's semi-explicit Euler with error control, order 2",
+           [](System& s) { return P(std::make_unique<SemiExplicitEuler2Integrator>(s)); }},
+      });
+  return r;
 }
+
+std::vector<std::string> SimulationOptions::integratorNames() { return integrators().names(); }
 
 void SimulationOptions::validate() const {
   const OptionCheck check("simulation");
-  const auto names = integratorNames();
-  if (std::find(names.begin(), names.end(), integrator) == names.end()) {
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    check.require(false, "integrator", "must be one of " + list + ", got '" + integrator + "'");
-  }
+  check.require(integrators().contains(integrator), "integrator", unknownNameRule(integrators().what(), integrator, integratorNames()));
   // Lower limits keep the work bounded: below them a run would take millions of steps (or, at a
   // step of 1e-320 s, divide by a denormal) before it failed (docs/study-file.md).
   check.require(accuracy >= 1e-10 && accuracy < 1, "accuracy", "must lie in [1e-10, 1), got " + formatNumber(accuracy));
@@ -628,13 +638,7 @@ struct Simulator::Impl {
     times.push_back(s.getTime());
   }
 
-  std::unique_ptr<Integrator> makeIntegrator(const std::string& method) {
-    if (method == "rk-merson") return std::make_unique<RungeKuttaMersonIntegrator>(system);
-    if (method == "rk3") return std::make_unique<RungeKutta3Integrator>(system);
-    if (method == "rk-feldberg") return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
-    if (method == "cpodes") return std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
-    return std::make_unique<SemiExplicitEuler2Integrator>(system);
-  }
+  std::unique_ptr<Integrator> makeIntegrator(const std::string& method) { return integrators().at(method, "simulation.integrator").value(system); }
 
   /// Time windows in which a wheel crosses an obstacle (merged, clipped).
   using Knots = std::vector<std::array<double, KNOT>>;

@@ -9,12 +9,25 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/registry.hpp"
 #include "subsystems/road.hpp"
 #include "twin/model.hpp"
 #include "twin/scenario.hpp"
 #include "twin/trace.hpp"
 
+namespace SimTK {
+class Integrator;
+class System;
+}  // namespace SimTK
+
 namespace dtwin {
+
+/// Makes a Simbody integrator for a system (nullptr for the project's own Rosenbrock-W, which the
+/// simulator drives itself, twin/rosenbrock.hpp).
+using IntegratorMaker = std::unique_ptr<SimTK::Integrator> (*)(SimTK::System& system);
+/// The integrators a study's [simulation] integrator may name (docs/performance.md explains the
+/// default).
+const Registry<IntegratorMaker>& integrators();
 
 struct SimulationOptions {
   /// rosenbrock (ROS34PW2, L-stable: the solid axle's wheel/axle interface is stiff) | rk-merson |
@@ -31,6 +44,7 @@ struct SimulationOptions {
   /// InputError "simulation.<field>: <rule>" (common/validate.hpp) when a field is out of range.
   void validate() const;
   nlohmann::json toJson() const;
+  /// integrators()'s names.
   static std::vector<std::string> integratorNames();
 };
 

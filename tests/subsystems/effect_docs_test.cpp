@@ -84,7 +84,7 @@ TEST(EffectDocs, ModelMdListsEveryEffectAndParameterAsTheRegistrySays) {
   auto params = table(doc, "| parameter | unit | off | prior range | shape |");
   for (const auto& entry : effectRegistry()) {
     SCOPED_TRACE("effect " + entry.name);
-    const auto e = entry.make();
+    const auto e = entry.value();
     const auto it = effects.find(entry.name);
     if (it == effects.end()) {
       ADD_FAILURE() << "docs/model.md: no row for effect " << entry.name;
@@ -120,7 +120,7 @@ TEST(EffectDocs, DiagnosisMdListsEverySignatureAsTheRegistrySays) {
   auto rows = table(readDoc("diagnosis.md"), "| effect | state map | feature | engagement threshold |");
   for (const auto& entry : effectRegistry()) {
     SCOPED_TRACE("effect " + entry.name);
-    const auto e = entry.make();
+    const auto e = entry.value();
     const auto it = rows.find(entry.name);
     if (it == rows.end()) {
       ADD_FAILURE() << "docs/diagnosis.md: no row for effect " << entry.name;

@@ -139,10 +139,10 @@ TEST(EffectRegistry, NamesAreUniqueAndEachEntryMakesItsEffect) {
   ASSERT_EQ(effectNames().size(), registry.size());
   std::set<std::string> seen;
   for (std::size_t i = 0; i < registry.size(); ++i) {
-    EXPECT_TRUE(seen.insert(registry[i].name).second) << registry[i].name;
-    EXPECT_EQ(effectNames()[i], registry[i].name);
-    EXPECT_EQ(registry[i].make()->name(), registry[i].name);
-    EXPECT_EQ(makeEffect(registry[i].name, "t")->name(), registry[i].name);
+    EXPECT_TRUE(seen.insert(registry.entries()[i].name).second) << registry.entries()[i].name;
+    EXPECT_EQ(effectNames()[i], registry.entries()[i].name);
+    EXPECT_EQ(registry.entries()[i].value()->name(), registry.entries()[i].name);
+    EXPECT_EQ(makeEffect(registry.entries()[i].name, "t")->name(), registry.entries()[i].name);
   }
 }
 

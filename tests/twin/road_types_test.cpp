@@ -76,7 +76,7 @@ TEST(RoadTypes, UnknownTypesAndFieldsAreNamed) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("scenarios.s.road.type: must be one of flat, bump, iso8608, csv, csv_time, got \"bumb\" (did you mean 'bump'?)"),
+    EXPECT_NE(what.find("scenarios.s.road.type: unknown road type 'bumb' (known: flat, bump, iso8608, csv, csv_time; did you mean 'bump'?)"),
               std::string::npos)
         << what;
   }

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -6,6 +7,8 @@
 
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
+#include "subsystems/user_effect.hpp"
 #include "twin/bench.hpp"
 #include "twin/provenance.hpp"
 #include "twin/road_setting.hpp"
@@ -16,6 +19,64 @@ namespace fs = std::filesystem;
 
 namespace dtwin::cli {
 namespace {
+
+/// "[lo, hi]" of a parameter's valid range: "(" when the lower end is excluded, "∞" with a round
+/// bracket for no bound.
+std::string validRange(const ParameterSpec& p) {
+  auto end = [](double v) { return std::isinf(v) ? std::string(v < 0 ? "−∞" : "∞") : formatNumber(v); };
+  return std::string(p.min_inclusive && std::isfinite(p.min_value) ? "[" : "(") + end(p.min_value) + ", " + end(p.max_value) +
+         (std::isfinite(p.max_value) ? "]" : ")");
+}
+
+/// A parameter list for a table cell: "`name` [unit] valid range, ...".
+std::string parameterCell(const std::vector<ParameterSpec>& params, bool with_prior) {
+  std::string out;
+  for (const auto& p : params) {
+    out += (out.empty() ? "" : "; ") + ("`" + p.name + "` [" + p.unit + "] " + validRange(p));
+    if (with_prior) out += ", off " + formatNumber(p.default_value) + ", prior [" + formatNumber(p.prior_lower) + ", " + formatNumber(p.prior_upper) + "]";
+  }
+  return out.empty() ? "–" : out;
+}
+
+/// One registry as a Markdown table between markers (docs/registries.md is this output).
+template <class Value, class Extra>
+void printRegistry(const Registry<Value>& r, const std::string& title, const std::string& extra_header, Extra extra) {
+  std::printf("\n## %s\n\n| %s | description |%s\n|---|---|%s\n", title.c_str(), r.what().c_str(),
+              extra_header.empty() ? "" : (" " + extra_header + " |").c_str(), extra_header.empty() ? "" : "---|");
+  for (const auto& e : r) {
+    std::printf("| `%s` | %s |", e.name.c_str(), e.description.c_str());
+    if (!extra_header.empty()) std::printf(" %s |", extra(e.value).c_str());
+    std::printf("\n");
+  }
+}
+
+/// Every registry of the twin as Markdown: what docs/registries.md holds, checked by a test.
+int runRegistries() {
+  std::printf("# Registries\n\nEvery extension point of the twin, as its registry holds it (common/registry.hpp). This page is\n"
+              "written by `twin list --registries > docs/registries.md`, and a test fails when it and the\n"
+              "registries differ (tests/docs/registry_docs_test.cpp): edit the registry, then regenerate.\n");
+  const auto none = [](const auto&) { return std::string(); };
+  printRegistry(tireLawRegistry(), "Tire laws (`[subsystems] tire`)", "parameters (`tire.NAME` or `tire.LAW.NAME`)",
+                [](const Factory<TireLaw>& make) { return parameterCell(make()->parameters(), false); });
+  printRegistry(strutLawRegistry(), "Strut laws (`[subsystems] strut`)", "parameters (`suspension.NAME` or `suspension.OPTION.NAME`)",
+                [](const Factory<StrutLaw>& make) { return parameterCell(make()->parameters(), false); });
+  printRegistry(suspensionOptions(), "Suspension options (`[subsystems] suspension`)", "", none);
+  printRegistry(effectRegistry(), "Effects (`[effects.NAME]`, `--effect`, the diagnosis catalogue)", "parameters (`EFFECT.NAME`)",
+                [](const EffectFactory& make) { return parameterCell(make()->parameters(), true); });
+  printRegistry(roadTypes(), "Road types (`scenarios.NAME.road.type`)", "", none);
+  printRegistry(sensorQuantities(), "Sensor quantities (`[sensors.NAME] quantity`)", "", none);
+  printRegistry(sensorModels(), "Sensor models (diagnosis candidates `MODEL:GROUP`, `--hidden-sensor`)", "parameter",
+                [](const ParameterSpec& p) { return parameterCell({p}, true); });
+  printRegistry(integrators(), "Integrators (`[simulation] integrator`)", "", none);
+  printRegistry(commandRegistry(), "Commands (`twin COMMAND`)", "runs on every MPI rank",
+                [](const CommandEntry& c) { return std::string(c.distributed ? "yes" : "no"); });
+  std::printf("\n## Variables of user-defined effects (`[user_effects.NAME] element`)\n\n| element | variable | unit | meaning | checked over |\n|---|---|---|---|---|\n");
+  for (const auto& el : userEffectElements())
+    for (const auto& v : userEffectVariables(el))
+      std::printf("| `%s` | `%s` | %s | %s | [%s, %s] |\n", el.c_str(), v.name.c_str(), v.unit.c_str(), v.meaning.c_str(),
+                  formatNumber(v.lo).c_str(), formatNumber(v.hi).c_str());
+  return 0;
+}
 
 int runList(const std::string& study_path, bool params) {
   const Study study = loadStudy(study_path);
@@ -74,15 +135,17 @@ int runList(const std::string& study_path, bool params) {
 }  // namespace
 
 CommandHandle addListCommand(CLI::App& root, const std::string& /*command_line*/) {
-  struct Cfg { std::string study = defaultStudy(); bool params = false; };
+  struct Cfg { std::string study = defaultStudy(); bool params = false; bool registries = false; };
   auto cfg = std::make_shared<Cfg>();
   std::string& list_study = cfg->study;
   bool& list_params = cfg->params;
   auto* l = addSubcommand(root, "list");
   l->add_option("--study", list_study, "Study file (TOML)")->capture_default_str();
   l->add_flag("--parameters", list_params, "Also list every parameter with its value, unit and source");
+  l->add_flag("--registries", cfg->registries, "Instead: every registry of the twin (laws, effects, roads, sensors, integrators, commands) as Markdown "
+                                                "tables, as docs/registries.md holds them");
 
-  return {l, [cfg] { return runList(cfg->study, cfg->params); }};
+  return {l, [cfg] { return cfg->registries ? runRegistries() : runList(cfg->study, cfg->params); }};
 }
 
 }  // namespace dtwin::cli

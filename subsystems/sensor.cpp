@@ -82,9 +82,9 @@ nlohmann::json SensorSpec::toJson() const {
 const Registry<SensorQuantity>& sensorQuantities() {
   static const Registry<SensorQuantity> r(
       "sensor quantity", {
-                             {"displacement_z", "the point's world-vertical displacement from its start (channel NAME_m)", SensorQuantity::DisplacementZ},
+                             {"displacement_z", "the point's world-vertical displacement from its start (channel NAME_m); the point: on the chassis, or a wheel centre", SensorQuantity::DisplacementZ},
                              {"velocity_z", "the point's world-vertical velocity (channel NAME_mps)", SensorQuantity::VelocityZ},
-                             {"acceleration_z", "the point's world-vertical acceleration, gravity excluded (channel NAME_mps2)", SensorQuantity::AccelerationZ},
+                             {"acceleration_z", "the point's world-vertical acceleration d²z/dt², 0 at rest (channel NAME_mps2)", SensorQuantity::AccelerationZ},
                          });
   return r;
 }

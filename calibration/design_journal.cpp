@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/files.hpp"
 #include "common/format.hpp"
 
 namespace dtwin::calib {
@@ -37,32 +38,6 @@ void appendDouble(std::string& out, double v) {
 
 std::string headerLine(int dim, const std::string& fingerprint) {
   return kHeaderPrefix + std::to_string(dim) + kFingerprintKey + fingerprint + "\n";
-}
-
-std::string systemError(const std::string& what) { return what + ": " + std::strerror(errno); }
-
-/// Writes all of `data` to fd (retrying short writes and EINTR).
-void writeAll(int fd, const std::string& data, const std::string& path) {
-  std::size_t done = 0;
-  while (done < data.size()) {
-    const ssize_t w = ::write(fd, data.data() + done, data.size() - done);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(systemError(path + ": cannot write"));
-    }
-    done += static_cast<std::size_t>(w);
-  }
-}
-
-/// Best effort: fsync the directory holding `path`, so a new or renamed entry survives a crash.
-void syncParentDirectory(const std::string& path) {
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  if (dir.empty()) dir = ".";
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd >= 0) {
-    ::fsync(fd);
-    ::close(fd);
-  }
 }
 
 bool readWholeFile(const std::string& path, std::string& text) {
@@ -131,12 +106,12 @@ bool parseJournal(const std::string& text, const std::string& path, JournalConte
     e.theta.resize(static_cast<std::size_t>(out.dim));
     for (int j = 0; j < out.dim; ++j) {
       const std::string& f = fields[static_cast<std::size_t>(j) + 1];
-      if (!parseDouble(f, e.theta[static_cast<std::size_t>(j)]) ||
+      if (!parseNumber(f, e.theta[static_cast<std::size_t>(j)]) ||
           !std::isfinite(e.theta[static_cast<std::size_t>(j)]))
         throw InputError(where, "parameter " + std::to_string(j + 1) +
                                     " must be a finite number, got '" + f + "'");
     }
-    if (!parseDouble(fields.back(), e.sse))
+    if (!parseNumber(fields.back(), e.sse))
       throw InputError(where, "sse must be a number or 'inf', got '" + fields.back() + "'");
     if (std::isnan(e.sse)) e.sse = std::numeric_limits<double>::infinity();
     out.entries.push_back(std::move(e));
@@ -273,24 +248,7 @@ void writeDesignTableCsv(const std::string& path, const std::vector<std::string>
     text += '\n';
   }
 
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(path, systemError("cannot create temporary file " + tmp));
-  try {
-    writeAll(fd, text, tmp);
-    if (::fsync(fd) != 0) throw std::runtime_error(systemError(tmp + ": fsync"));
-  } catch (...) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    throw;
-  }
-  ::close(fd);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string msg = systemError("cannot rename " + tmp + " to " + path);
-    ::unlink(tmp.c_str());
-    throw InputError(path, msg);
-  }
-  syncParentDirectory(path);
+  writeFileAtomic(path, text);
 }
 
 }  // namespace dtwin::calib

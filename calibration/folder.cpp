@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "twin/provenance.hpp"
@@ -72,12 +73,12 @@ PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& na
       throw InputError(at, "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
     std::vector<double> th(ps.names.size());
     for (std::size_t c = 0; c < ps.names.size(); ++c) {
-      if (!parseDouble(f[c], th[c])) throw InputError(at + ": " + ps.names[c], "must be a number, got '" + f[c] + "'");
+      if (!parseNumber(f[c], th[c])) throw InputError(at + ": " + ps.names[c], "must be a number, got '" + f[c] + "'");
       if (!std::isfinite(th[c])) throw InputError(at + ": " + ps.names[c], "must be finite, got " + f[c]);
     }
     double tau = 0;
     const std::string& ft = f[ps.names.size()];
-    if (!parseDouble(ft, tau)) throw InputError(at + ": tau", "must be a number, got '" + ft + "'");
+    if (!parseNumber(ft, tau)) throw InputError(at + ": tau", "must be a number, got '" + ft + "'");
     if (!(std::isfinite(tau) && tau > 0)) throw InputError(at + ": tau", "must be a finite number > 0 (a precision), got " + ft);
     const std::string& fd = f.back();
     long k = -1;
@@ -95,7 +96,7 @@ PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& na
 
 PosteriorSample readPosteriorCsv(const std::string& path) {
   if (!fs::exists(path)) throw InputError(path, "posterior file not found");
-  return parsePosteriorCsv(readFileBytes(path), path);
+  return parsePosteriorCsv(readTextFile(path), path);
 }
 
 std::string posteriorCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& theta,
@@ -128,7 +129,7 @@ CalibrationFolder readCalibrationFolder(const std::string& dir) {
     throw InputError(dir, "has no summary.json (give a folder written by `twin calibrate` or `twin diagnose`)");
   const std::string where = summary_path.string();
   try {
-    f.summary = nlohmann::json::parse(readFileBytes(where));
+    f.summary = nlohmann::json::parse(readTextFile(where));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(where, std::string("is not valid JSON: ") + e.what());
   }

@@ -14,6 +14,7 @@
 #include "classification/shrinkage.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/validate.hpp"
 #include "twin/parallel.hpp"
 #include "twin/provenance.hpp"
@@ -69,9 +70,8 @@ std::vector<std::pair<std::string, double>> parsePriorList(const std::string& te
     if (eq == std::string::npos || eq == 0)
       throw InputError(where, "expects ID=PROBABILITY,... (e.g. M1=0.4,M2=0.2,M3=0.2,M4=0.2), got '" + item + "'");
     const std::string id = item.substr(0, eq), v = item.substr(eq + 1);
-    char* end = nullptr;
-    const double p = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || !std::isfinite(p) || !(p > 0))
+    double p = 0;
+    if (!parseNumber(v, p) || !std::isfinite(p) || !(p > 0))
       throw InputError(where, "prior of " + id + " must be a number > 0, got '" + v + "'");
     if (!seen.insert(id).second) throw InputError(where, id + " appears twice");
     out.push_back({id, p});
@@ -405,7 +405,7 @@ FieldClassification classifyFieldFile(const Study& study, const std::string& fie
   if (!fs::exists(field_csv)) throw InputError(field_csv, "field data file not found");
   const FieldData field = readFieldCsv(field_csv);
   std::string channel;
-  nlohmann::json info{{"path", field_csv}, {"fnv1a64", hexId(calib::fnv1a64(readFileBytes(field_csv)))}};
+  nlohmann::json info{{"path", field_csv}, {"fnv1a64", hexId(calib::fnv1a64(readTextFile(field_csv)))}};
   const std::string side = sidecarPath(field_csv);
   if (fs::exists(side)) {
     try {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/files.hpp"
 
 namespace dtwin::classify {
 
@@ -271,22 +272,9 @@ MomentAccumulator MomentAccumulator::fromBytes(const std::vector<std::uint8_t>& 
 
 void MomentAccumulator::save(const std::string& path) const {
   const std::vector<double> v = toVector();
-  const std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw InputError(path, "cannot open " + tmp + " for writing");
-  bool ok = std::fwrite(kFileTag, 1, sizeof kFileTag, f) == sizeof kFileTag &&
-            std::fwrite(v.data(), sizeof(double), v.size(), f) == v.size();
-  ok = std::fflush(f) == 0 && ok;
-  ok = ::fsync(fileno(f)) == 0 && ok;
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok) {
-    std::remove(tmp.c_str());
-    throw InputError(path, "cannot write " + tmp);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(path, "cannot rename " + tmp + " to " + path);
-  }
+  std::string bytes(kFileTag, sizeof kFileTag);
+  bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+  writeFileAtomic(path, bytes);
 }
 
 MomentAccumulator MomentAccumulator::load(const std::string& path) {

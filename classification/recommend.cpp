@@ -21,7 +21,8 @@ std::string decimals(double v, Ok ok) {
   char buf[64];
   for (int d = 1; d <= 12; ++d) {
     std::snprintf(buf, sizeof buf, "%.*f", d, v);
-    if (ok(std::strtod(buf, nullptr))) return buf;
+    double back = 0;
+    if (parseNumber(buf, back) && ok(back)) return buf;
   }
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "calibration/calibrate.hpp"
+#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
 #include "subsystems/random.hpp"
@@ -198,7 +199,7 @@ struct SynthesisIdentity {
 SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
                                     const SynthesisOptions& opt, const SynthesisPlan& plan, bool root) {
   SynthesisIdentity id;
-  id.post_text = root && fs::exists(post.path) ? readFileBytes(post.path) : std::string();
+  id.post_text = root && fs::exists(post.path) ? readTextFile(post.path) : std::string();
   std::string post_rows;
   for (std::size_t i = 0; i < post.size(); ++i) {
     for (double v : post.theta[i]) post_rows += formatExact(v) + ",";
@@ -238,7 +239,7 @@ struct SynthesisFiles {
 /// "F" + the bytes of `path` as the root reads them, "" when it does not exist: resume decisions
 /// are taken on what the root reads (the same bytes on every MPI rank).
 std::string rootRead(const fs::path& path) {
-  return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + readFileBytes(path.string()) : std::string(); });
+  return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + readTextFile(path.string()) : std::string(); });
 }
 
 /// The JSON of a rootRead() text; null when it is not JSON (written atomically: a foreign file).

@@ -8,6 +8,7 @@
 #include "calibration/calibrate.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
+#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "twin/distributed.hpp"
 #include "twin/measurement.hpp"
@@ -65,7 +66,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   opt.command = command;
   opt.data_path = cfg.data;
   opt.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
-  const std::string data_hash = std::to_string(calib::fnv1a64(readFileBytes(cfg.data)));
+  const std::string data_hash = std::to_string(calib::fnv1a64(readTextFile(cfg.data)));
 
   const bool bar_on = progressOn(cfg.quiet);
   if (!cfg.quiet) {

@@ -72,7 +72,7 @@ std::vector<std::pair<std::string, double>> parseAssignments(const std::vector<s
   for (const auto& t : texts) {
     const auto eq = t.find('=');
     double v = 0;
-    if (eq == std::string::npos || eq == 0 || !parseDouble(t.substr(eq + 1), v) || !std::isfinite(v))
+    if (eq == std::string::npos || eq == 0 || !parseNumber(t.substr(eq + 1), v) || !std::isfinite(v))
       throw InputError(flag, "expects NAME=VALUE with a finite number, got '" + t + "'");
     for (const auto& [name, _] : out)
       if (name == t.substr(0, eq)) throw InputError(flag, "'" + name + "' given twice");

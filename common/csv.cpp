@@ -85,13 +85,4 @@ bool CsvReader::next() {
   return false;
 }
 
-bool parseNumber(std::string_view s, double& v) {
-  const char* b = s.data();
-  const char* e = s.data() + s.size();
-  if (b != e && *b == '+') ++b;
-  if (b == e) return false;
-  const auto r = std::from_chars(b, e, v);
-  return r.ec == std::errc() && r.ptr == e;
-}
-
 }  // namespace dtwin

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/format.hpp"  // parseNumber, for the fields
+
 namespace dtwin {
 
 class CsvReader {
@@ -38,9 +40,5 @@ class CsvReader {
   std::vector<std::string_view> fields_;
   std::deque<std::string> unquoted_;  // fields that held "" (rare): their unescaped text (stable addresses)
 };
-
-/// Parses a whole field as a finite or non-finite double (a leading '+' allowed); false if it is
-/// not a number. Spaces must already be trimmed.
-bool parseNumber(std::string_view s, double& v);
 
 }  // namespace dtwin

@@ -28,7 +28,7 @@ std::string oneLine(const std::string& text) {
   return out;
 }
 
-bool parseDouble(const std::string& s, double& v) {
+bool parseNumber(std::string_view s, double& v) {
   const char* b = s.data();
   const char* e = s.data() + s.size();
   if (b != e && *b == '+') ++b;  // from_chars does not accept a leading '+'

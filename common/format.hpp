@@ -1,6 +1,7 @@
 #pragma once
 // Numbers as text for messages, tables and logs (one convention for the whole project).
 #include <string>
+#include <string_view>
 
 namespace dtwin {
 
@@ -11,9 +12,10 @@ std::string formatNumber(double v, int digits = 6);
 /// Shortest decimal text that reads back as exactly `v` (std::to_chars).
 std::string formatExact(double v);
 
-/// Parses the whole of `s` as a double (locale-independent; accepts a leading '+', inf and nan).
-/// False when `s` is empty or has anything after the number.
-bool parseDouble(const std::string& s, double& v);
+/// Parses the whole of `s` as a double, whatever the process's locale (std::from_chars; a leading
+/// '+', inf and nan accepted). False when `s` is empty or has anything around the number (trim
+/// spaces first). The one number parser of the project: text from users' files and flags.
+bool parseNumber(std::string_view s, double& v);
 
 /// `text` on one line: every run of white space (line ends included) becomes one space, and the
 /// ends are trimmed. Messages from other libraries (Simbody's span several lines) go through it.

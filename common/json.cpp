@@ -10,16 +10,6 @@
 
 namespace dtwin {
 
-std::string readTextFile(const std::string& path, const std::string& hint) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a folder, not a file" + hint);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot be read" + hint);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 nlohmann::json readJsonFile(const std::string& path, const std::string& hint) {
   const std::string text = readTextFile(path, hint);
   try {

@@ -7,12 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace dtwin {
+#include "common/files.hpp"  // readTextFile
 
-/// The bytes of `path`; InputError(path, "cannot be read" + hint) when it cannot be opened, and
-/// InputError(path, "is a folder, not a file" + hint) for a folder.
-/// `hint` is appended as is (e.g. " (is this a `twin study` folder?)").
-std::string readTextFile(const std::string& path, const std::string& hint = "");
+namespace dtwin {
 
 /// `path` parsed as JSON; InputError naming the file when it cannot be read (with `hint`) or is not
 /// valid JSON.

@@ -1,5 +1,7 @@
 #include "common/units.hpp"
 
+#include <charconv>
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -95,13 +97,15 @@ class UnitParser {
       ++i_;
       skip();
       const char* start = t_.c_str() + i_;
-      char* end = nullptr;
-      const double e = std::strtod(start, &end);
-      if (end == start || !std::isfinite(e)) {
+      const char* stop = t_.c_str() + t_.size();
+      if (start != stop && *start == '+') ++start;  // as strtod, which this replaced, accepted
+      double e = 0;
+      const auto r = std::from_chars(start, stop, e);  // whatever the locale
+      if (r.ec != std::errc() || r.ptr == start || !std::isfinite(e)) {
         fail("'^' must be followed by a number");
         return std::nullopt;
       }
-      i_ += static_cast<std::size_t>(end - start);
+      i_ = static_cast<std::size_t>(r.ptr - t_.c_str());
       d = d->pow(e);
     }
     return d;

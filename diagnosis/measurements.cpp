@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "twin/provenance.hpp"
 #include "twin/trace.hpp"
@@ -37,7 +38,7 @@ calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec) 
   std::string side_scenario;
   if (fs::exists(side)) {
     try {
-      const auto j = nlohmann::json::parse(readFileBytes(side));
+      const auto j = nlohmann::json::parse(readTextFile(side));
       if (j.contains("scenario") && j["scenario"].is_object() && j["scenario"].contains("name"))
         side_scenario = j["scenario"]["name"].get<std::string>();
       else if (j.contains("scenario") && j["scenario"].is_string())

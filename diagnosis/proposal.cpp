@@ -5,13 +5,20 @@
 #include <cstdio>
 #include <limits>
 
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
 namespace dtwin::diag {
 namespace {
 
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
+/// Three significant digits: how a term's constants are printed.
+std::string num(double v) { return formatNumber(v, 3); }
+
+/// `v` as num() prints it, read back: the constant of the term that is simulated.
+double asPrinted(double v) {
+  double back = 0;
+  DTWIN_CHECK(parseNumber(num(v), back), "a printed number reads back");
+  return back;
 }
 
 double sgn(double x) { return (x > 0) - (x < 0); }
@@ -37,13 +44,13 @@ std::vector<LibraryTerm> termLibrary(double q_comp, double q_reb) {
   };
   for (double frac : {0.2, 0.4, 0.6, 0.8}) {
     if (q_comp > 0) {
-      const double g = std::stod(num(frac * q_comp));  // as printed, so the proposal is the term simulated
+      const double g = asPrinted(frac * q_comp);  // so the proposal is the term simulated
       lib.push_back({"max(q - " + num(g) + ", 0)", "N/m", [g](const S& s) { return std::max(s.q - g, 0.0); }, g, "max(q - g, 0)"});
       lib.push_back({"max(q - " + num(g) + ", 0)^2", "N/m^2", [g](const S& s) { return std::pow(std::max(s.q - g, 0.0), 2); }, g,
                      "max(q - g, 0)^2"});
     }
     if (q_reb > 0) {
-      const double g = std::stod(num(frac * q_reb));
+      const double g = asPrinted(frac * q_reb);
       lib.push_back({"max(-q - " + num(g) + ", 0)", "N/m", [g](const S& s) { return std::max(-s.q - g, 0.0); }, g, "max(-q - g, 0)"});
       lib.push_back({"max(-q - " + num(g) + ", 0)^2", "N/m^2", [g](const S& s) { return std::pow(std::max(-s.q - g, 0.0), 2); }, g,
                      "max(-q - g, 0)^2"});

@@ -300,10 +300,9 @@ void selectionBoxplot(ReportPage& pg, const fs::path& dir, const std::vector<std
     if (line.empty()) continue;
     const auto cells = splitCsv(line);
     for (std::size_t c = 0; c < col.size(); ++c) {
-      char* end = nullptr;
       const std::string cell = col[c] < cells.size() ? cells[col[c]] : "";
-      const double v = std::strtod(cell.c_str(), &end);
-      if (cell.empty() || *end != '\0' || !std::isfinite(v))
+      double v = 0;
+      if (!parseNumber(cell, v) || !std::isfinite(v))
         throw InputError(rec_path.string() + ":" + std::to_string(lineno), "prob_" + ids[c] + " is not a number: '" + cell + "'");
       d << (c ? " " : "") << full(v);
     }

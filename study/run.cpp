@@ -8,6 +8,7 @@
 #include "calibration/calibrate.hpp"
 #include "classification/classify_field.hpp"
 #include "classification/synthesis.hpp"
+#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
 #include "twin/generate.hpp"
@@ -46,10 +47,10 @@ struct StageNews {
 /// vehicle and data files), else InputError.
 void checkStudyRecord(const Study& study, const StudyRunOptions& options, const fs::path& out) {
   rootWrites([&] {
-    nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(readFileBytes(study.path)))},
-                      {"vehicle_file", std::to_string(calib::fnv1a64(readFileBytes(study.vehicle_path)))},
-                      {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(readFileBytes(options.lab_file)))},
-                      {"field_file", options.field_file.empty() ? "" : std::to_string(calib::fnv1a64(readFileBytes(options.field_file)))}};
+    nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(readTextFile(study.path)))},
+                      {"vehicle_file", std::to_string(calib::fnv1a64(readTextFile(study.vehicle_path)))},
+                      {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(readTextFile(options.lab_file)))},
+                      {"field_file", options.field_file.empty() ? "" : std::to_string(calib::fnv1a64(readTextFile(options.field_file)))}};
     const fs::path record = out / "study.json";
     if (fs::exists(record)) {
       nlohmann::json j;
@@ -149,7 +150,7 @@ void synthesizeStage(const Study& study, const std::vector<AssemblySpec>& assemb
     const std::string post_path = (out / "calibration" / a.id / "posterior.csv").string();
     const auto post = calib::parsePosteriorCsv(onRoot([&] {
                                           if (!fs::exists(post_path)) throw InputError(post_path, "posterior file not found");
-                                          return readFileBytes(post_path);
+                                          return readTextFile(post_path);
                                         }),
                                         post_path);
     const auto r = classify::synthesizeAssembly(study, a, post, so, (out / "synthetic" / a.id).string(),

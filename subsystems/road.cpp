@@ -9,7 +9,9 @@
 
 #include <unsupported/Eigen/FFT>
 
+#include "common/csv.hpp"
 #include "common/errors.hpp"
+#include "common/json.hpp"
 #include "subsystems/random.hpp"
 
 namespace dtwin {
@@ -190,39 +192,36 @@ std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& s) {
 
 // ------------------------------------------------------------------ CSV
 std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open road profile");
-  std::string line;
-  if (!std::getline(in, line)) throw InputError(path + ":1", "empty file; expected header 'distance_m,left_m,right_m'");
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  if (line != "distance_m,left_m,right_m")
-    throw InputError(path + ":1", "header must be 'distance_m,left_m,right_m', got '" + line + "'");
+  const std::string text = readTextFile(path, " (a road profile)");
+  CsvReader csv(text, path);
+  // The heights in m, mm or cm (the same unit on both tracks).
+  static const std::pair<const char*, double> kUnits[] = {{"m", 1.0}, {"mm", 1e-3}, {"cm", 1e-2}};
+  const char* kHeader = "'distance_m,left_m,right_m' (or left_mm,right_mm or left_cm,right_cm)";
+  if (!csv.next()) throw InputError(path + ":1", std::string("empty file; expected header ") + kHeader);
+  double scale = 0;
+  if (const auto& h = csv.fields(); h.size() == 3 && h[0] == "distance_m")
+    for (const auto& [unit, factor] : kUnits)
+      if (h[1] == std::string("left_") + unit && h[2] == std::string("right_") + unit) scale = factor;
+  if (scale == 0) {
+    std::string got;
+    for (auto f : csv.fields()) got += (got.empty() ? "" : ",") + std::string(f);
+    throw InputError(csv.where(), std::string("header must be ") + kHeader + ", got '" + got + "'");
+  }
   std::vector<double> x, l, r;
-  std::vector<int> lines;
-  int lineno = 1;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
+  std::vector<long> lines;
+  while (csv.next()) {
+    const auto& f = csv.fields();
+    if (f.size() > 3) throw InputError(csv.where(), "expected 3 columns, got more");
+    if (f.size() < 3) throw InputError(csv.where(), "expected 3 columns, got " + std::to_string(f.size()));
     double v[3];
-    std::stringstream ss(line);
-    std::string cell;
-    int c = 0;
-    while (std::getline(ss, cell, ',')) {
-      if (c >= 3) throw InputError(path + ":" + std::to_string(lineno), "expected 3 columns, got more");
-      char* end = nullptr;
-      v[c] = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || *end != '\0' || !std::isfinite(v[c]))
-        throw InputError(path + ":" + std::to_string(lineno), "value '" + cell + "' is not a finite number");
-      ++c;
-    }
-    if (c != 3) throw InputError(path + ":" + std::to_string(lineno), "expected 3 columns, got " + std::to_string(c));
-    if (!x.empty() && !(v[0] > x.back()))
-      throw InputError(path + ":" + std::to_string(lineno), "distance_m must increase strictly");
+    for (std::size_t c = 0; c < 3; ++c)
+      if (!parseNumber(f[c], v[c]) || !std::isfinite(v[c]))
+        throw InputError(csv.where(), "value '" + std::string(f[c]) + "' is not a finite number");
+    if (!x.empty() && !(v[0] > x.back())) throw InputError(csv.where(), "distance_m must increase strictly");
     x.push_back(v[0]);
-    l.push_back(v[1]);
-    r.push_back(v[2]);
-    lines.push_back(lineno);
+    l.push_back(v[1] * scale);
+    r.push_back(v[2] * scale);
+    lines.push_back(csv.line());
   }
   if (x.size() < 2) throw InputError(path, "a road profile needs at least 2 rows");
   // Uniform spacing: every step must equal the first one (the first irregular line is named).

@@ -180,8 +180,8 @@ SpeedTrace parseSpeedTraceCsv(const std::string& text, const std::string& name) 
       throw InputError(at(lineno), "expected 2 columns (time_s," + c1 + "), got '" + line + "'");
     double tv = 0, sv = 0;
     const std::string a = line.substr(0, k), b = line.substr(k + 1);
-    if (!parseDouble(a, tv) || !std::isfinite(tv)) throw InputError(at(lineno), "time_s: '" + a + "' is not a finite number");
-    if (!parseDouble(b, sv) || !std::isfinite(sv)) throw InputError(at(lineno), c1 + ": '" + b + "' is not a finite number");
+    if (!parseNumber(a, tv) || !std::isfinite(tv)) throw InputError(at(lineno), "time_s: '" + a + "' is not a finite number");
+    if (!parseNumber(b, sv) || !std::isfinite(sv)) throw InputError(at(lineno), c1 + ": '" + b + "' is not a finite number");
     if (sv < 0) throw InputError(at(lineno), c1 + ": must be >= 0, got " + b);
     if (!t.empty() && !(tv > t.back()))
       throw InputError(at(lineno), "time_s: must increase, got " + a + " after " + formatNumber(t.back(), 17));

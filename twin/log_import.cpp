@@ -255,7 +255,7 @@ ImportColumn parseImportColumn(const std::string& text, const std::string& flag,
   c.unit = parts.size() > 1 ? parts[1] : default_unit;
   if (c.unit.empty()) throw InputError(flag, "'" + text + "' needs a unit: COLUMN:UNIT");
   auto num = [&](std::size_t i, double& v) {
-    if (parts.size() > i && (!parseDouble(parts[i], v) || !std::isfinite(v)))
+    if (parts.size() > i && (!parseNumber(parts[i], v) || !std::isfinite(v)))
       throw InputError(flag, "'" + parts[i] + "' in '" + text + "' is not a finite number");
   };
   num(2, c.offset);

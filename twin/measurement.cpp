@@ -242,10 +242,10 @@ LabData parseLabCsv(const std::string& text, const std::string& name, const std:
       throw InputError(at + ": repetition", "must be a positive integer, got " + quoted(rep));
     r.repetition = static_cast<long>(u);
     const std::string& ts = f[static_cast<std::size_t>(col[1])];
-    if (!parseDouble(ts, r.time_s)) throw InputError(at + ": time_s", "must be a number (seconds), got " + quoted(ts));
+    if (!parseNumber(ts, r.time_s)) throw InputError(at + ": time_s", "must be a number (seconds), got " + quoted(ts));
     r.channel = f[static_cast<std::size_t>(col[2])];
     const std::string& vs = f[static_cast<std::size_t>(col[3])];
-    if (!parseDouble(vs, r.value)) throw InputError(at + ": value", "must be a number, got " + quoted(vs));
+    if (!parseNumber(vs, r.value)) throw InputError(at + ": value", "must be a number, got " + quoted(vs));
     checker.check(r, at);
     data.records.push_back(std::move(r));
   }
@@ -313,7 +313,7 @@ FieldData parseFieldCsv(const std::string& text, const std::string& name) {
   for (std::size_t i = first; i < header.size(); ++i) {
     const std::string& h = header[i];
     double t = 0;
-    if (h.size() < 3 || h.compare(0, 2, "t_") != 0 || !parseDouble(h.substr(2), t))
+    if (h.size() < 3 || h.compare(0, 2, "t_") != 0 || !parseNumber(h.substr(2), t))
       throw InputError(hwhere, "column " + std::to_string(i + 1) + " must be a time column 't_<seconds>' (e.g. t_10.000), got " + quoted(h));
     if (!std::isfinite(t) || t < 0) throw InputError(hwhere, "column " + quoted(h) + ": time must be finite and >= 0");
     if (!d.times_s.empty() && !(t > d.times_s.back()))
@@ -340,7 +340,7 @@ FieldData parseFieldCsv(const std::string& text, const std::string& name) {
     }
     for (std::size_t i = first; i < f.size(); ++i) {
       double v = 0;
-      if (!parseDouble(f[i], v)) throw InputError(at + ": " + header[i], "must be a number, got " + quoted(f[i]));
+      if (!parseNumber(f[i], v)) throw InputError(at + ": " + header[i], "must be a number, got " + quoted(f[i]));
       if (!std::isfinite(v)) throw InputError(at + ": " + header[i], "must be finite, got " + f[i]);
       // The file does not name its channel: the widest plausible range of any unit.
       if (std::abs(v) > plausibleLimit(""))

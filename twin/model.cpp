@@ -6,6 +6,7 @@
 #include <limits>
 #include <toml++/toml.h>
 
+#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "twin/trace.hpp"
 
@@ -140,7 +141,7 @@ void loadVehicleFile(ParameterTable& table, const std::string& path) {
   if (fs::is_directory(path)) throw InputError(path, "is a folder, not a vehicle file");
   toml::table root;
   try {
-    root = toml::parse(readFileBytes(path), path);
+    root = toml::parse(readTextFile(path), path);
   } catch (const toml::parse_error& e) {
     throw InputError(path + ":" + std::to_string(e.source().begin.line), std::string("malformed TOML: ") + std::string(e.description()));
   }

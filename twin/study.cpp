@@ -729,9 +729,8 @@ ParameterSetting parseSetting(const std::string& text, const std::string& where)
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) throw InputError(where, "expected NAME=VALUE, got '" + text + "'");
   const std::string name = text.substr(0, eq), val = text.substr(eq + 1);
-  char* end = nullptr;
-  const double v = std::strtod(val.c_str(), &end);
-  if (val.empty() || *end != '\0') throw InputError(where, "value of " + name + " must be a number, got '" + val + "'");
+  double v = 0;
+  if (!parseNumber(val, v)) throw InputError(where, "value of " + name + " must be a number, got '" + val + "'");
   return {name, v, where + " " + name, where};
 }
 

@@ -9,19 +9,10 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "common/json.hpp"
 #include "common/errors.hpp"
 
 namespace dtwin {
-
-std::string readFileBytes(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 bool onGrid(double t, double rate) {
   const double x = t * rate;
@@ -99,30 +90,6 @@ std::string Trace::toCsv(const std::vector<std::string>& selected, double t_lo, 
     out += '\n';
   }
   return out;
-}
-
-void writeFileAtomic(const std::string& path, const std::string& content) {
-  namespace fs = std::filesystem;
-  const fs::path p(path);
-  std::error_code ec;
-  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-  if (ec) throw InputError(path, "cannot create folder " + p.parent_path().string() + ": " + ec.message());
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path, "cannot write (is the folder writable?)");
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw InputError(path, "write failed (disk full?)");
-    }
-  }
-  fs::rename(tmp, p, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw InputError(path, "cannot replace file: " + ec.message());
-  }
 }
 
 }  // namespace dtwin

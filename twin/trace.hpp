@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "common/files.hpp"
+
 namespace dtwin {
 
 struct Channel {
@@ -63,10 +65,5 @@ GridSample gridSample(double t, double rate, std::size_t rows);
 /// True when `t` lies on the grid of `rate` Hz (within 1e-6 rows).
 bool onGrid(double t, double rate);
 
-/// Writes `content` to `path` atomically: a temporary file in the same folder, then rename.
-/// Creates parent folders. Throws InputError naming the path on failure.
-void writeFileAtomic(const std::string& path, const std::string& content);
-/// The bytes of a file. Throws InputError naming the path if it cannot be read.
-std::string readFileBytes(const std::string& path);
 
 }  // namespace dtwin

@@ -656,6 +656,18 @@ TEST_F(RoadCsv, AcceptsCrlfAndBlankLines) {
   EXPECT_NEAR(road->sample(Track::Left, 0.75).height_m, 0.15, 1e-12);
 }
 
+TEST_F(RoadCsv, HeightsInMillimetresOrCentimetresAreConverted) {
+  const std::string mm = write("mm", "distance_m,left_mm,right_mm\n0,0,10\n0.5,25,10\n1.0,50,10\n");
+  auto road = loadRoadCsv(mm);
+  EXPECT_DOUBLE_EQ(road->sample(Track::Left, 0.5).height_m, 0.025);
+  EXPECT_DOUBLE_EQ(road->sample(Track::Right, 0.75).height_m, 0.01);
+  const std::string cm = write("cm", "distance_m,left_cm,right_cm\n0,0,1\n0.5,2.5,1\n1.0,5,1\n");
+  EXPECT_DOUBLE_EQ(loadRoadCsv(cm)->sample(Track::Left, 1.0).height_m, 0.05);
+  // One unit for both tracks.
+  const std::string mixed = write("mixed", "distance_m,left_mm,right_m\n0,0,0\n1,0,0\n");
+  expectError(mixed, mixed + ":1", "header must be 'distance_m,left_m,right_m' (or left_mm,right_mm or left_cm,right_cm)");
+}
+
 TEST_F(RoadCsv, WrongHeader) {
   const std::string path = write("header", "x,left,right\n0,0,0\n1,0,0\n");
   expectError(path, path + ":1", "header must be 'distance_m,left_m,right_m'");
@@ -711,7 +723,7 @@ TEST_F(RoadCsv, TooFewRows) {
 
 TEST_F(RoadCsv, MissingFile) {
   const std::string path = ::testing::TempDir() + "dtwin_road_test_does_not_exist.csv";
-  expectError(path, path, "cannot open");
+  expectError(path, path, "cannot be read (a road profile)");
 }
 
 }  // namespace

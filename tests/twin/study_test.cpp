@@ -162,7 +162,7 @@ TEST(Study, CsvRoadMustExistAndCoverTheRun) {
     makeRoad(s.scenario("lab"), model->vehicle(), 1);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("no_such_road.csv: cannot open road profile"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no_such_road.csv: cannot be read (a road profile)"), std::string::npos) << e.what();
   }
   std::ofstream(short_road) << "distance_m,left_m,right_m\n0,0,0\n1,0,0\n2,0,0\n";
   try {

@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/statistics.hpp"  // normalQuantile
+
 #include "subsystems/random.hpp"
 
 namespace dtwin::calib {
@@ -35,10 +37,5 @@ std::vector<int> randomPermutation(RandomStream& rng, int n);
 Eigen::MatrixXd latinHypercube(int n, const std::vector<double>& lower,
                                const std::vector<double>& upper, std::uint64_t seed);
 
-/// The standard normal quantile Φ⁻¹(p), p in (0, 1): Wichura (1988), "Algorithm AS 241: the
-/// percentage points of the normal distribution", Appl. Statist. 37(3) (PPND16, relative error
-/// about 1e-16). Used to map a Latin hypercube in (0,1)^d to a stratified normal sample.
-/// Throws InputError for p outside (0, 1).
-double normalQuantile(double p);
 
 }  // namespace dtwin::calib

@@ -20,15 +20,6 @@ void SummaryOptions::validate() const {
                 "must lie in (0, 1], got " + formatNumber(dominance_threshold));
 }
 
-double quantileSorted(const std::vector<double>& sorted, double p) {
-  DTWIN_CHECK(!sorted.empty(), "quantile of an empty sample");
-  DTWIN_CHECK(p >= 0.0 && p <= 1.0, "quantile probability outside [0, 1]");
-  const double h = (static_cast<double>(sorted.size()) - 1.0) * p;
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  if (lo + 1 >= sorted.size()) return sorted.back();
-  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[lo + 1] - sorted[lo]);
-}
-
 double effectiveSampleSize(const std::vector<double>& x) {
   DTWIN_CHECK(!x.empty(), "ESS of an empty chain");
   const std::size_t S = x.size();

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "calibration/gibbs.hpp"
+#include "common/statistics.hpp"
 
 namespace dtwin::calib {
 
@@ -54,8 +55,6 @@ struct PosteriorSummary {
   std::string fullReport() const;
 };
 
-/// Type-7 quantile of `sorted` (ascending, non-empty) at p ∈ [0, 1].
-double quantileSorted(const std::vector<double>& sorted, double p);
 
 /// Geyer initial-monotone-sequence ESS of one chain (S >= 1). NaN for a constant chain.
 double effectiveSampleSize(const std::vector<double>& x);

@@ -8,19 +8,12 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/statistics.hpp"
 #include "common/validate.hpp"
 
 namespace dtwin::classify {
 
 namespace {
-
-// Type-7 quantile of sorted (ascending, non-empty) data.
-double quantile7(const std::vector<double>& sorted, double q) {
-  const double h = (static_cast<double>(sorted.size()) - 1.0) * q;
-  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
-  if (lo + 1 >= sorted.size()) return sorted.back();
-  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[lo + 1] - sorted[lo]);
-}
 
 // Posterior probabilities softmax(ℓ + ln π) into `prob`; returns LSE(ℓ + ln π). The differences to
 // the largest λ are formed from ℓ and ln π separately: λ itself is rounded at the magnitude of ℓ
@@ -166,9 +159,9 @@ ClassificationResult classifyRecords(const Eigen::MatrixXd& ll, const ClassifyOp
     std::sort(col.begin(), col.end());
     ProbabilitySpread s;
     s.min = col.front();
-    s.q1 = quantile7(col, 0.25);
-    s.median = quantile7(col, 0.5);
-    s.q3 = quantile7(col, 0.75);
+    s.q1 = quantileSorted(col, 0.25);
+    s.median = quantileSorted(col, 0.5);
+    s.q3 = quantileSorted(col, 0.75);
     s.max = col.back();
     s.mean = res.probability.col(m).mean();
     res.spread.push_back(s);

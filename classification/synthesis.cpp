@@ -17,6 +17,7 @@
 #include "calibration/calibrate.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
+#include "common/statistics.hpp"
 #include "common/validate.hpp"
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
@@ -29,23 +30,10 @@ namespace fs = std::filesystem;
 namespace dtwin::classify {
 namespace {
 
-/// Grid index of time t at `rate`; InputError if t is not on the grid or outside [0, duration].
-std::size_t gridIndex(double t, double rate, double duration, const std::string& where) {
-  const double k = t * rate;
-  if (!std::isfinite(t) || std::abs(k - std::round(k)) > 1e-6)
-    throw InputError(where, formatExact(t) + " s is not on the output grid (multiples of " + formatExact(1.0 / rate) + " s)");
-  if (t < 0 || t > duration + 1e-9)
-    throw InputError(where, formatExact(t) + " s lies outside the scenario (0 .. " + formatExact(duration) + " s)");
-  return static_cast<std::size_t>(std::llround(k));
-}
-
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
-  const std::size_t m = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(m), v.end());
-  const double hi = v[m];
-  if (v.size() % 2) return hi;
-  return 0.5 * (hi + *std::max_element(v.begin(), v.begin() + static_cast<long>(m)));
+  std::sort(v.begin(), v.end());
+  return quantileSorted(v, 0.5);
 }
 
 nlohmann::json failureJson(const SynthesisFailure& f) {

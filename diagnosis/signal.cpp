@@ -12,7 +12,6 @@
 
 namespace dtwin::diag {
 
-double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
 namespace {
 
@@ -84,14 +83,6 @@ bool inBand(const Spectrum& s, size_t k, double f_lo, double f_hi) {
   return f >= f_lo && (f < f_hi || (k + 1 == s.freq_hz.size() && f_hi >= f));
 }
 
-double normalQuantile(double p) {  // bisection on Φ(z)
-  double lo = -40, hi = 40;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (normalCdf(mid) < p ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
 double chiSquareQuantile(double p, double nu) {  // Wilson–Hilferty
   const double z = normalQuantile(p), c = 2.0 / (9.0 * nu);
   return nu * std::pow(std::max(0.0, 1.0 - c + z * std::sqrt(c)), 3);

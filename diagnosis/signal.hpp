@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "common/statistics.hpp"
+
 namespace dtwin::diag {
 
 /// A one-sided spectrum: value[k] at freq_hz[k], freq_hz[k] = k·Δf, k = 0..M (see welchPsd).
@@ -26,8 +28,6 @@ struct Spectrum {
   std::vector<double> value;
 };
 
-/// Φ(x), the standard normal distribution function.
-double normalCdf(double x);
 
 /// One-sided Welch power spectral density [unit²/Hz] of x sampled at fs_hz [W67].
 ///

@@ -163,7 +163,7 @@ std::string histogramPanel(GnuplotSvg& gp, const std::string& name, const std::v
   double lo = *mn_it, hi = *mx_it;
   std::vector<double> sorted = v;
   std::sort(sorted.begin(), sorted.end());
-  const double q025 = calib::quantileSorted(sorted, 0.025), q975 = calib::quantileSorted(sorted, 0.975);
+  const double q025 = quantileSorted(sorted, 0.025), q975 = quantileSorted(sorted, 0.975);
   // The profile interval and which interval ci95 is, from the calibration's summary.json.
   std::optional<std::pair<double, double>> prof;
   std::string ci_kind = "posterior";

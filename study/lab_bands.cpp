@@ -49,7 +49,7 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
   for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(a.posterior.tau[rows[k]]));
   std::vector<double> sd_sorted = sd;
   std::sort(sd_sorted.begin(), sd_sorted.end());
-  a.noise_sd = calib::quantileSorted(sd_sorted, 0.5);
+  a.noise_sd = quantileSorted(sd_sorted, 0.5);
   for (const auto& ch : lab.channels()) {
     ChannelBand p;
     p.channel = ch;
@@ -61,9 +61,9 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
       const std::vector<double> eta_unsorted = eta;
       std::sort(eta.begin(), eta.end());
       p.times.push_back(t);
-      p.lo.push_back(calib::quantileSorted(eta, 0.025));
-      p.med.push_back(calib::quantileSorted(eta, 0.5));
-      p.hi.push_back(calib::quantileSorted(eta, 0.975));
+      p.lo.push_back(quantileSorted(eta, 0.025));
+      p.med.push_back(quantileSorted(eta, 0.5));
+      p.hi.push_back(quantileSorted(eta, 0.975));
       p.plo.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.025));
       p.phi.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.975));
     }

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <random>
 
+#include "common/statistics.hpp"
+
 namespace dtwin {
 
 /// SplitMix64 finaliser: a well-mixed 64-bit hash used to derive independent stream seeds.
@@ -33,9 +35,9 @@ class RandomStream {
     do u1 = uniform(); while (u1 <= 0.0);
     const double u2 = uniform();
     const double r = std::sqrt(-2.0 * std::log(u1));
-    spare_ = r * std::sin(2.0 * M_PI * u2);
+    spare_ = r * std::sin(2.0 * kPi * u2);
     has_spare_ = true;
-    return r * std::cos(2.0 * M_PI * u2);
+    return r * std::cos(2.0 * kPi * u2);
   }
   std::uint64_t bits() { return engine_(); }
 

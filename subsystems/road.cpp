@@ -12,6 +12,7 @@
 #include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/json.hpp"
+#include "common/statistics.hpp"
 #include "subsystems/random.hpp"
 
 namespace dtwin {
@@ -34,14 +35,14 @@ BumpRoad::BumpRoad(double start_x_m, double height_m, double length_m)
 
 RoadSample BumpRoad::sample(Track, double x) const {
   if (x <= x0_ || x >= x0_ + L_) return {};
-  const double w = 2.0 * M_PI / L_;
+  const double w = 2.0 * kPi / L_;
   return {0.5 * H_ * (1.0 - std::cos(w * (x - x0_))), 0.5 * H_ * w * std::sin(w * (x - x0_))};
 }
 
 double BumpRoad::integral(Track, double x) const {
   if (x <= x0_) return 0.0;
   if (x >= x0_ + L_) return 0.5 * H_ * L_;
-  const double w = 2.0 * M_PI / L_;
+  const double w = 2.0 * kPi / L_;
   return 0.5 * H_ * ((x - x0_) - std::sin(w * (x - x0_)) / w);
 }
 
@@ -133,7 +134,7 @@ std::vector<double> isoTrack(const IsoRoadSpec& s, std::size_t N, std::uint64_t 
   RandomStream rng(s.seed, 0x150'8608ULL, stream_id);
   std::vector<std::complex<double>> spec(N, 0.0);
   for (std::size_t k = 1; k < N / 2; ++k) {
-    const double phase = 2.0 * M_PI * rng.uniform();  // drawn for every bin: band changes keep phases
+    const double phase = 2.0 * kPi * rng.uniform();  // drawn for every bin: band changes keep phases
     const double a = std::max(s.n_min, (k - 0.5) * dn), b = std::min(s.n_max, (k + 0.5) * dn);
     const double var = gdIntegral(gd0, s.waviness, a, b);
     if (var <= 0.0) continue;
@@ -167,7 +168,7 @@ std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& s) {
     const double x = s.x_begin_m + s.dx_m * static_cast<double>(j);
     double w = 1.0;
     if (x < s.smooth_until_m) w = 0.0;
-    else if (x < s.smooth_until_m + s.taper_m) w = 0.5 * (1.0 - std::cos(M_PI * (x - s.smooth_until_m) / s.taper_m));
+    else if (x < s.smooth_until_m + s.taper_m) w = 0.5 * (1.0 - std::cos(kPi * (x - s.smooth_until_m) / s.taper_m));
     left[j] *= w;
     right[j] *= w;
   }

@@ -10,12 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "common/registry.hpp"
+#include "common/statistics.hpp"
 #include "subsystems/parameter.hpp"
 
 namespace dtwin {
-
-/// π (C++17 has no std::numbers).
-inline constexpr double kPi = 3.14159265358979323846;
 
 /// What a sensor measures: the vertical (world z, up positive) motion of its point.
 enum class SensorQuantity { DisplacementZ, VelocityZ, AccelerationZ };

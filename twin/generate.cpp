@@ -48,16 +48,6 @@ nlohmann::json truthJson(const Study& study, const Model& model) {
   return j;
 }
 
-/// Grid index of time t at `rate`; InputError if t is not on the grid or outside [0, duration].
-std::size_t gridIndex(double t, double rate, double duration, const std::string& where) {
-  const double k = t * rate;
-  if (!std::isfinite(t) || std::abs(k - std::round(k)) > 1e-6)
-    throw InputError(where, formatExact(t) + " s is not on the output grid (multiples of " + formatExact(1.0 / rate) + " s)");
-  if (t < 0 || t > duration + 1e-9)
-    throw InputError(where, formatExact(t) + " s lies outside the scenario (0 .. " + formatExact(duration) + " s)");
-  return static_cast<std::size_t>(std::llround(k));
-}
-
 /// Validates the hidden effects' names (errors name the options field `where`, e.g.
 /// "lab.hidden_effects") and builds the model with them.
 std::shared_ptr<const Model> modelWithHidden(const Study& study, const AssemblySpec& assembly,

@@ -15,6 +15,7 @@
 #include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/names.hpp"
+#include "common/statistics.hpp"
 #include "subsystems/time_road.hpp"
 #include "twin/provenance.hpp"
 #include "twin/study.hpp"
@@ -43,8 +44,8 @@ const Unit kUnits[] = {
     {"m/s^2", "m/s^2", 1.0},   {"m/s2", "m/s^2", 1.0},     {"mps2", "m/s^2", 1.0},    {"g", "m/s^2", 9.80665},
     {"ft/s^2", "m/s^2", 0.3048},
     {"N", "N", 1.0},           {"kN", "N", 1e3},
-    {"rad", "rad", 1.0},       {"deg", "rad", 3.14159265358979323846 / 180.0},
-    {"rad/s^2", "rad/s^2", 1.0}, {"deg/s^2", "rad/s^2", 3.14159265358979323846 / 180.0},
+    {"rad", "rad", 1.0},       {"deg", "rad", kPi / 180.0},
+    {"rad/s^2", "rad/s^2", 1.0}, {"deg/s^2", "rad/s^2", kPi / 180.0},
 };
 
 std::string unitList(const std::string& si) {

@@ -14,6 +14,15 @@
 
 namespace dtwin {
 
+std::size_t gridIndex(double t, double rate, double duration, const std::string& where) {
+  const double k = t * rate;
+  if (!std::isfinite(t) || std::abs(k - std::round(k)) > 1e-6)
+    throw InputError(where, formatExact(t) + " s is not on the output grid (multiples of " + formatExact(1.0 / rate) + " s)");
+  if (t < 0 || t > duration + 1e-9)
+    throw InputError(where, formatExact(t) + " s lies outside the scenario (0 .. " + formatExact(duration) + " s)");
+  return static_cast<std::size_t>(std::llround(k));
+}
+
 bool onGrid(double t, double rate) {
   const double x = t * rate;
   return std::abs(x - std::round(x)) <= 1e-6;

@@ -64,6 +64,9 @@ struct GridSample {
 GridSample gridSample(double t, double rate, std::size_t rows);
 /// True when `t` lies on the grid of `rate` Hz (within 1e-6 rows).
 bool onGrid(double t, double rate);
+/// The row of time `t` on the grid of `rate` Hz over [0, duration]; InputError(where, ...) when
+/// `t` is not on the grid or lies outside.
+std::size_t gridIndex(double t, double rate, double duration, const std::string& where);
 
 
 }  // namespace dtwin

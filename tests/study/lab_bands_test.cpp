@@ -13,7 +13,7 @@
 #include "common/errors.hpp"
 
 using dtwin::study::normalMixtureQuantile;
-using dtwin::calib::quantileSorted;
+using dtwin::quantileSorted;
 
 // The bands use the calibration's type-7 quantile (calibration/summary.hpp).
 TEST(LabBands, BandQuantilesAreType7) {

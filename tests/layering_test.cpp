@@ -61,3 +61,33 @@ TEST(Layering, NoLibraryIncludesAFolderAboveIt) {
   }
   EXPECT_GT(files, 50);  // the walk found the sources
 }
+
+namespace {
+
+/// The project headers `header` includes, directly or through others (paths from the source root).
+void includesOf(const fs::path& root, const std::string& header, std::set<std::string>& seen) {
+  if (!seen.insert(header).second || !fs::exists(root / header)) return;
+  std::ifstream in(root / header);
+  const std::regex inc(R"(^\s*#\s*include\s*"([^"]+)")");
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, inc)) includesOf(root, m[1], seen);
+  }
+}
+
+}  // namespace
+
+// The calibration's mathematics (docs/architecture.md: it sees the simulations only through an
+// SSE callback) compiles without the simulator, the model and the study reader: its headers reach
+// no twin/ header but the study's sizes.
+TEST(Layering, TheCalibrationsMathematicsDoesNotIncludeTheSimulator) {
+  const fs::path root(DTWIN_SOURCE_DIR);
+  for (const char* h : {"common.hpp", "gibbs.hpp", "region.hpp", "optimize.hpp", "profile.hpp", "summary.hpp", "adaptive_design.hpp",
+                        "feasible_box.hpp", "lhs.hpp", "subspace_lm.hpp", "design_journal.hpp"}) {
+    std::set<std::string> seen;
+    includesOf(root, std::string("calibration/") + h, seen);
+    ASSERT_GT(seen.size(), 1u) << h;
+    for (const auto& s : seen)
+      EXPECT_TRUE(s.rfind("twin/", 0) != 0 || s == "twin/study_sizes.hpp") << "calibration/" << h << " reaches " << s;
+  }
+}

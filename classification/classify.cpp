@@ -40,12 +40,6 @@ double posteriorSoftmax(const Eigen::VectorXd& ll, const Eigen::VectorXd& log_pr
   return mx + lse;
 }
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
 }  // namespace
 
 void ClassifyOptions::validate() const {
@@ -196,7 +190,7 @@ std::string ClassificationResult::briefReport() const {
   s << ".\nWins:";
   for (int m = 0; m < models; ++m)
     s << " " << model_ids[static_cast<std::size_t>(m)] << " " << wins[static_cast<std::size_t>(m)]
-      << " (" << fixed(100.0 * wins[static_cast<std::size_t>(m)] / records, 1) << " %)"
+      << " (" << formatFixed(100.0 * wins[static_cast<std::size_t>(m)] / records, 1) << " %)"
       << (m + 1 < models ? "," : ".");
   int best = 0;
   for (int m = 1; m < models; ++m)
@@ -212,9 +206,9 @@ std::string ClassificationResult::fullReport() const {
   s << "Posterior probability per record (min / q1 / median / q3 / max, mean):\n";
   for (int m = 0; m < models; ++m) {
     const ProbabilitySpread& p = spread[static_cast<std::size_t>(m)];
-    s << "  " << model_ids[static_cast<std::size_t>(m)] << ": " << fixed(p.min, 4) << " / "
-      << fixed(p.q1, 4) << " / " << fixed(p.median, 4) << " / " << fixed(p.q3, 4) << " / "
-      << fixed(p.max, 4) << ", mean " << fixed(p.mean, 4) << "\n";
+    s << "  " << model_ids[static_cast<std::size_t>(m)] << ": " << formatFixed(p.min, 4) << " / "
+      << formatFixed(p.q1, 4) << " / " << formatFixed(p.median, 4) << " / " << formatFixed(p.q3, 4) << " / "
+      << formatFixed(p.max, 4) << ", mean " << formatFixed(p.mean, 4) << "\n";
   }
   s << "Pairwise Bayes factors over all records (Kass-Raftery scale of 2 ln B):\n";
   for (const PairwiseEvidence& e : pairs) {

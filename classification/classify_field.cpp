@@ -26,12 +26,6 @@ namespace dtwin::classify {
 namespace {
 
 
-std::string exact(double v) {
-  if (std::isfinite(v)) return formatExact(v);
-  if (std::isnan(v)) return "nan";
-  return v > 0 ? "inf" : "-inf";
-}
-
 nlohmann::json readJsonFile(const fs::path& p) {
   std::ifstream in(p);
   if (!in) throw InputError(p.string(), "cannot open");
@@ -89,9 +83,9 @@ std::string FieldClassification::recordsCsv() const {
   for (std::size_t r = 0; r < records.size(); ++r) {
     s += std::to_string(records[r]);
     const auto ri = static_cast<Eigen::Index>(r);
-    for (Eigen::Index m = 0; m < log_likelihood.cols(); ++m) s += "," + exact(log_likelihood(ri, m));
-    for (Eigen::Index m = 0; m < result.log_posterior.cols(); ++m) s += "," + exact(result.log_posterior(ri, m));
-    for (Eigen::Index m = 0; m < result.probability.cols(); ++m) s += "," + exact(result.probability(ri, m));
+    for (Eigen::Index m = 0; m < log_likelihood.cols(); ++m) s += "," + formatExact(log_likelihood(ri, m));
+    for (Eigen::Index m = 0; m < result.log_posterior.cols(); ++m) s += "," + formatExact(result.log_posterior(ri, m));
+    for (Eigen::Index m = 0; m < result.probability.cols(); ++m) s += "," + formatExact(result.probability(ri, m));
     s += "," + models[static_cast<std::size_t>(result.winner[r])].id + "," + (result.tie[r] ? "1" : "0") + "\n";
   }
   return s;

@@ -1,6 +1,8 @@
 #include "common/format.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace dtwin {
@@ -38,9 +40,19 @@ bool parseNumber(std::string_view s, double& v) {
 }
 
 std::string formatExact(double v) {
+  if (std::isnan(v)) return "nan";  // to_chars would write "-nan" for a negative NaN
   char buf[64];
   auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
+}
+
+std::string formatFixed(double v, int decimals) { return formatPrintf("%.*f", v, decimals); }
+
+std::string formatPrintf(const char* format, double v, int width_or_precision) {
+  char buf[128];
+  if (width_or_precision >= 0) std::snprintf(buf, sizeof buf, format, width_or_precision, v);
+  else std::snprintf(buf, sizeof buf, format, v);
+  return buf;
 }
 
 }  // namespace dtwin

@@ -9,8 +9,13 @@ namespace dtwin {
 /// the non-finite values). 17 digits round-trip a double.
 std::string formatNumber(double v, int digits = 6);
 
-/// Shortest decimal text that reads back as exactly `v` (std::to_chars).
+/// Shortest decimal text that reads back as exactly `v` (std::to_chars); "inf", "-inf", "nan".
 std::string formatExact(double v);
+/// `v` with `decimals` digits after the point, as printf's "%.*f".
+std::string formatFixed(double v, int decimals);
+/// `v` through a printf format for one double ("%.3g", "%+.2f"); a format with a '*' takes
+/// `width_or_precision` first ("%.*f"). At most 127 characters.
+std::string formatPrintf(const char* format, double v, int width_or_precision = -1);
 
 /// Parses the whole of `s` as a double, whatever the process's locale (std::from_chars; a leading
 /// '+', inf and nan accepted). False when `s` is empty or has anything around the number (trim

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/format.hpp"
 #include "common/errors.hpp"
 #include "common/names.hpp"
 #include "subsystems/sensor.hpp"
@@ -13,11 +14,7 @@ namespace {
 
 constexpr const char* kFree = "free:";
 
-std::string num(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+std::string num(const char* f, double v) { return formatPrintf(f, v); }
 
 /// The unit suffix of a channel name ("hub_force_fl_N" -> "N"), "" when it has none.
 std::string unitSuffix(const std::string& channel) {

@@ -11,6 +11,7 @@
 
 #include <Eigen/Dense>
 
+#include "common/format.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
 #include "diagnosis/candidates.hpp"
@@ -32,11 +33,7 @@ double chi2Upper(double x, int k) {
   return 1.0 - normalCdf((std::cbrt(x / k) - (1.0 - a)) / std::sqrt(a));
 }
 
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+std::string fmt(const char* f, double v) { return formatPrintf(f, v); }
 
 std::string joinEffects(const std::vector<std::string>& e) {
   if (e.empty()) return "base";

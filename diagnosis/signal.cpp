@@ -10,6 +10,8 @@
 
 #include <unsupported/Eigen/FFT>
 
+#include "common/format.hpp"
+
 namespace dtwin::diag {
 
 
@@ -22,11 +24,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   throw std::invalid_argument(where + ": " + rule);
 }
 
-std::string str(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
+std::string str(double v) { return formatNumber(v); }
 
 void requireSameSize(const char* where, size_t a, size_t b) {
   if (a != b) bad(where, "the two series must have the same length, got " + std::to_string(a) + " and " + std::to_string(b));

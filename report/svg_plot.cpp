@@ -12,7 +12,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/format.hpp"
 #include "report/study_report.hpp"
+#include "common/format.hpp"
 #include "common/errors.hpp"
 #include "common/json.hpp"
 
@@ -105,11 +107,7 @@ std::string gnuplotQuote(const std::string& s) {
   return r + "'";
 }
 
-std::string plotNumber(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
+std::string plotNumber(double v) { return formatPrintf("%.17g", v); }
 
 const char* reportCss() { return kCss; }
 

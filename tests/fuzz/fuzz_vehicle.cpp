@@ -8,7 +8,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const auto path = scratch() / "vehicle.toml";
   writeBytes(path, data, size);
   guarded([&] {
-    dtwin::ParameterTable table = dtwin::declareVehicleParameters();
+    dtwin::ParameterTable table = dtwin::declareVehicleParameters(dtwin::EffectCatalog{});
     dtwin::loadVehicleFile(table, path.string());
   });
   return 0;

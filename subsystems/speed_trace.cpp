@@ -6,6 +6,7 @@
 #include <sstream>
 #include <utility>
 
+#include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
@@ -150,41 +151,34 @@ const std::vector<std::pair<std::string, double>>& speedUnits() {
 }  // namespace
 
 SpeedTrace parseSpeedTraceCsv(const std::string& text, const std::string& name) {
-  std::istringstream in(text);
-  std::string line;
-  int lineno = 0;
-  auto at = [&](int l) { return name + ":" + std::to_string(l); };
-  auto next = [&]() {
-    if (!std::getline(in, line)) return false;
-    ++lineno;
-    if (lineno == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    return true;
+  CsvReader csv(text, name);
+  auto joined = [&] {
+    std::string out;
+    for (auto f : csv.fields()) out += (out.empty() ? "" : ",") + std::string(f);
+    return out;
   };
   std::string known;
   for (const auto& [u, f] : speedUnits()) known += (known.empty() ? "" : ", ") + ("speed_" + u);
-  if (!next()) throw InputError(at(1), "empty file; expected the header 'time_s,speed_<unit>' (" + known + ")");
-  const auto comma = line.find(',');
-  const std::string c0 = line.substr(0, comma), c1 = comma == std::string::npos ? "" : line.substr(comma + 1);
-  if (c0 != "time_s" || c1.find(',') != std::string::npos)
-    throw InputError(at(1), "header must be 'time_s,speed_<unit>' (" + known + "), got '" + line + "'");
+  if (!csv.next()) throw InputError(name + ":1", "empty file; expected the header 'time_s,speed_<unit>' (" + known + ")");
+  const auto& h = csv.fields();
+  if (h.empty() || h[0] != "time_s" || h.size() > 2)
+    throw InputError(csv.where(), "header must be 'time_s,speed_<unit>' (" + known + "), got '" + joined() + "'");
+  const std::string c1 = h.size() == 2 ? std::string(h[1]) : "";
   double to_mps = 0;
   for (const auto& [u, f] : speedUnits())
     if (c1 == "speed_" + u) to_mps = f;
-  if (to_mps == 0) throw InputError(at(1), "unknown speed column '" + c1 + "'; known: " + known);
+  if (to_mps == 0) throw InputError(csv.where(), "unknown speed column '" + c1 + "'; known: " + known);
   std::vector<double> t, v;
-  while (next()) {
-    if (line.empty()) continue;
-    const auto k = line.find(',');
-    if (k == std::string::npos || line.find(',', k + 1) != std::string::npos)
-      throw InputError(at(lineno), "expected 2 columns (time_s," + c1 + "), got '" + line + "'");
+  while (csv.next()) {
+    const auto& f = csv.fields();
+    if (f.size() != 2) throw InputError(csv.where(), "expected 2 columns (time_s," + c1 + "), got '" + joined() + "'");
     double tv = 0, sv = 0;
-    const std::string a = line.substr(0, k), b = line.substr(k + 1);
-    if (!parseNumber(a, tv) || !std::isfinite(tv)) throw InputError(at(lineno), "time_s: '" + a + "' is not a finite number");
-    if (!parseNumber(b, sv) || !std::isfinite(sv)) throw InputError(at(lineno), c1 + ": '" + b + "' is not a finite number");
-    if (sv < 0) throw InputError(at(lineno), c1 + ": must be >= 0, got " + b);
+    const std::string a(f[0]), b(f[1]);
+    if (!parseNumber(a, tv) || !std::isfinite(tv)) throw InputError(csv.where(), "time_s: '" + a + "' is not a finite number");
+    if (!parseNumber(b, sv) || !std::isfinite(sv)) throw InputError(csv.where(), c1 + ": '" + b + "' is not a finite number");
+    if (sv < 0) throw InputError(csv.where(), c1 + ": must be >= 0, got " + b);
     if (!t.empty() && !(tv > t.back()))
-      throw InputError(at(lineno), "time_s: must increase, got " + a + " after " + formatNumber(t.back(), 17));
+      throw InputError(csv.where(), "time_s: must increase, got " + a + " after " + formatNumber(t.back(), 17));
     t.push_back(tv);
     v.push_back(sv * to_mps);
   }

@@ -21,7 +21,7 @@
 #include "common/validate.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
 

@@ -35,10 +35,10 @@
 #include "calibration/profile.hpp"
 #include "calibration/region.hpp"
 #include "calibration/summary.hpp"
-#include "twin/measurement.hpp"
-#include "twin/provenance.hpp"
+#include "io/measurement.hpp"
+#include "io/provenance.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::calib {
 
@@ -398,6 +398,6 @@ struct PolishOptions {
 /// (status "LM_POLISH"); sse is infinite when the run at theta0 fails.
 StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, const PolishOptions& options = {});
 
-using ::dtwin::fnv1a64;  // twin/provenance.hpp
+using ::dtwin::fnv1a64;  // io/provenance.hpp
 
 }  // namespace dtwin::calib

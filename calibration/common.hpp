@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "common/format.hpp"
-#include "twin/study_sizes.hpp"
+#include "io/study_sizes.hpp"
 
 namespace dtwin::calib {
 
@@ -41,7 +41,7 @@ void checkBounds(const std::vector<double>& lower, const std::vector<double>& up
                  const std::string& where, bool allow_degenerate = false);
 
 /// The default sizes of a calibration (docs/method.md §4: the paper's), read from the one set
-/// of study-size defaults (twin/study_sizes.hpp StudySizes). GibbsOptions, CalibrationOptions and
+/// of study-size defaults (io/study_sizes.hpp StudySizes). GibbsOptions, CalibrationOptions and
 /// AdaptiveDesignOptions take their defaults from them.
 inline constexpr int kDefaultOptimizerStarts = static_cast<int>(StudySizes{}.optimizer_starts);  ///< multi-start optimiser starts
 inline constexpr int kDefaultLhsPoints = static_cast<int>(StudySizes{}.lhs_points);  ///< design points of the first Latin hypercube

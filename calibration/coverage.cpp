@@ -13,8 +13,8 @@
 #include "common/errors.hpp"
 #include "common/validate.hpp"
 #include "twin/distributed.hpp"
-#include "twin/generate.hpp"
-#include "twin/provenance.hpp"
+#include "io/generate.hpp"
+#include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
 

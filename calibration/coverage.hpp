@@ -31,7 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calibration/calibrate.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::calib {
 

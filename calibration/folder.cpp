@@ -10,7 +10,7 @@
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;

@@ -17,7 +17,7 @@
 #include "common/format.hpp"
 #include "common/validate.hpp"
 #include "twin/parallel.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;

@@ -34,8 +34,8 @@
 #include "classification/classify.hpp"
 #include "classification/mvn.hpp"
 #include "classification/recommend.hpp"
-#include "twin/measurement.hpp"
-#include "twin/study.hpp"
+#include "io/measurement.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::classify {
 

@@ -22,7 +22,7 @@
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 #include "twin/simulator.hpp"
 
 namespace fs = std::filesystem;

@@ -55,8 +55,8 @@
 
 #include "calibration/folder.hpp"
 #include "classification/moments.hpp"
-#include "twin/generate.hpp"
-#include "twin/study.hpp"
+#include "io/generate.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::classify {
 

@@ -6,11 +6,11 @@
 
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
-#include "twin/bench.hpp"
+#include "study/bench.hpp"
 #include "twin/hand_ode.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 

@@ -11,9 +11,9 @@
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "twin/distributed.hpp"
-#include "twin/measurement.hpp"
-#include "twin/provenance.hpp"
-#include "twin/study.hpp"
+#include "io/measurement.hpp"
+#include "io/provenance.hpp"
+#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include "classification/classify_field.hpp"
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 

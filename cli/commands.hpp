@@ -10,7 +10,7 @@
 #include <string>
 
 #include "common/registry.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::cli {
 
@@ -47,14 +47,14 @@ std::string joinArgs(int argc, char** argv);
 /// The `--seed` option of every command: an integer in [0, 2^64 - 1], written as digits (anything
 /// else, a sign or an overflow included, is a one-line parse error); unset means the study's seed.
 CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, const std::string& help);
-/// The `--force` flag of the commands that run many simulations (twin/work.hpp).
+/// The `--force` flag of the commands that run many simulations (io/work.hpp).
 void addForceOption(CLI::App* app, bool& force);
 /// A command-line size override (`--runs`, `--lhs-points`, ...; <= 0: not given) into
 /// study.sizes.<field>, checked against that size's limit; InputError naming `flag`.
 void overrideSize(Study& study, const std::string& field, long value, const std::string& flag);
 /// Refuses with an InputError naming the study file when the estimated work of the study's
 /// `stages` (prefixes: "lab", "field", "calibrate", "calibrate M1", "synthesize", ...), times
-/// `repeat`, exceeds the limits of twin/work.hpp, unless `force`.
+/// `repeat`, exceeds the limits of io/work.hpp, unless `force`.
 void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat = 1);
 /// True when stderr is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
@@ -66,7 +66,7 @@ bool isRootRank();
 CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line);
 CommandHandle addListCommand(CLI::App& root, const std::string& command_line);
 CommandHandle addBenchCommand(CLI::App& root, const std::string& command_line);
-/// `twin generate lab|field`: synthetic measurements (twin/generate.hpp, docs/data-files.md).
+/// `twin generate lab|field`: synthetic measurements (io/generate.hpp, docs/data-files.md).
 CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line);
 /// `twin calibrate`: Griddy Gibbs calibration of assemblies against lab data (calibration/calibrate.hpp).
 CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_line);
@@ -82,7 +82,7 @@ CommandHandle addStudyCommand(CLI::App& root, const std::string& command_line);
 CommandHandle addReportCommand(CLI::App& root, const std::string& command_line);
 /// `twin compare`: a calibrated assembly against measurements, where it fails (diagnosis/compare.hpp).
 CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line);
-/// `twin import`: a logger's CSV into measurements, speed, road and a study (twin/log_import.hpp).
+/// `twin import`: a logger's CSV into measurements, speed, road and a study (io/log_import.hpp).
 CommandHandle addImportCommand(CLI::App& root, const std::string& command_line);
 /// `twin diagnose`: which catalogue effect the assembly misses; --apply adds effects (diagnosis/diagnose.hpp).
 CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line);

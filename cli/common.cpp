@@ -7,7 +7,7 @@
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
 #include "twin/distributed.hpp"
-#include "twin/work.hpp"
+#include "io/work.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 

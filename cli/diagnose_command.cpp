@@ -21,8 +21,8 @@
 #include "diagnosis/measurements.hpp"
 #include "common/errors.hpp"
 #include "twin/distributed.hpp"
-#include "twin/provenance.hpp"
-#include "twin/study.hpp"
+#include "io/provenance.hpp"
+#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,5 +1,5 @@
 // `twin generate lab|field`: synthetic measurements made by one assembly at the study's true
-// parameters, plus noise. Thin: parse, validate, call twin/generate.hpp, write atomically.
+// parameters, plus noise. Thin: parse, validate, call io/generate.hpp, write atomically.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -13,8 +13,8 @@
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "twin/distributed.hpp"
-#include "twin/generate.hpp"
-#include "twin/provenance.hpp"
+#include "io/generate.hpp"
+#include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
 namespace dtwin::cli {

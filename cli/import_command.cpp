@@ -1,5 +1,5 @@
 // `twin import`: a logger's wide CSV into the twin's files and a study holding the drive
-// (twin/log_import.hpp, docs/measurements.md).
+// (io/log_import.hpp, docs/measurements.md).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -10,7 +10,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
-#include "twin/log_import.hpp"
+#include "io/log_import.hpp"
 
 namespace dtwin::cli {
 namespace {

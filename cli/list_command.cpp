@@ -9,11 +9,11 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "subsystems/user_effect.hpp"
-#include "twin/bench.hpp"
-#include "twin/provenance.hpp"
+#include "study/bench.hpp"
+#include "io/provenance.hpp"
 #include "twin/road_setting.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 

@@ -6,7 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "calibration/calibrate.hpp"
 #include "diagnosis/measurements.hpp"
 #include "diagnosis/signal.hpp"
-#include "twin/work.hpp"
+#include "io/work.hpp"
 
 namespace dtwin::diag {
 
@@ -98,7 +98,7 @@ Comparison compareModel(const calib::LabObjective& objective, const std::vector<
                         const std::vector<std::vector<double>>& draws,
                         const std::map<std::string, ChannelNoise>& noise, const CompareOptions& options = {});
 
-/// The work of compareModel() (twin/work.hpp): `draws` posterior rows (plus the run at their
+/// The work of compareModel() (io/work.hpp): `draws` posterior rows (plus the run at their
 /// mean) over every data set, each simulated up to its last record.
 StageWork estimateCompareWork(const std::vector<calib::DataSet>& sets, std::size_t draws);
 

@@ -17,7 +17,7 @@
 #include "diagnosis/candidates.hpp"
 #include "subsystems/effect.hpp"
 #include "twin/parallel.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
 

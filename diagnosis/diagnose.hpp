@@ -150,7 +150,7 @@ struct DiagnosisResult {
   std::string text() const;
 };
 
-/// The work of diagnose() (twin/work.hpp), upper estimates: the base calibration and its
+/// The work of diagnose() (io/work.hpp), upper estimates: the base calibration and its
 /// refinement, the screening probes of every catalogue effect, `candidates` confirmations and every
 /// applied effect, each a calibration on `fit`, and a comparison of each calibrated model on `fit`
 /// and `holdout`. Names the stages "diagnose base", "diagnose screening", "diagnose confirm",

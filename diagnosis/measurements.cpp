@@ -6,7 +6,7 @@
 
 #include "common/json.hpp"
 #include "common/errors.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;

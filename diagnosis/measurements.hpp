@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "calibration/calibrate.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::diag {
 

@@ -16,7 +16,7 @@
 #include "common/errors.hpp"
 #include "common/json.hpp"
 #include "common/validate.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;

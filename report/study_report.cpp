@@ -18,9 +18,9 @@
 #include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/validate.hpp"
-#include "twin/measurement.hpp"
-#include "twin/provenance.hpp"
-#include "twin/study.hpp"
+#include "io/measurement.hpp"
+#include "io/provenance.hpp"
+#include "io/study.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;

@@ -13,7 +13,7 @@
 #include "common/json.hpp"
 #include "common/validate.hpp"
 #include "twin/parallel.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "classification/synthesis.hpp"
-#include "twin/measurement.hpp"
-#include "twin/study.hpp"
+#include "io/measurement.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::study {
 

@@ -11,10 +11,10 @@
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
-#include "twin/generate.hpp"
-#include "twin/measurement.hpp"
+#include "io/generate.hpp"
+#include "io/measurement.hpp"
 #include "twin/distributed.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
 

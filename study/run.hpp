@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/progress.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin::study {
 

@@ -6,7 +6,7 @@
 #include "common/errors.hpp"
 #include "common/files.hpp"
 #include "common/validate.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin {
 

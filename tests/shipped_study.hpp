@@ -5,7 +5,7 @@
 #include <mutex>
 #include <string>
 
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin_test {
 

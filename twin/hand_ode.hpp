@@ -25,7 +25,6 @@
 #include "twin/rosenbrock.hpp"
 #include "twin/scenario.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
 
 namespace dtwin {
 
@@ -125,33 +124,5 @@ struct HandOdeRun {
 };
 HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario,
                       const SimulationOptions& options);
-
-/// `twin bench --hand-ode`: the study's simulator and the hand ODE on `scenario` for assembly `a`,
-/// `runs` timed runs each (after one warm-up), alternating, medians reported.
-struct HandOdeBench {
-  std::string assembly, label, scenario;
-  int runs = 0;
-  double accuracy = 0;
-  double simbody_median_s = 0, simbody_min_s = 0, simbody_max_s = 0;
-  /// The simulator with its output grid at 0.1 Hz: equilibrium and integration without the
-  /// 1 kHz reconstruction of every output channel (median of `runs`).
-  double simbody_integration_s = 0;
-  long simbody_steps = 0, simbody_attempts = 0, simbody_jacobians = 0;
-  /// 1 + 4 accepted + 3 rejected steps + 14 per Jacobian (the integrator's cost model; the
-  /// Jacobians counted from the run's recorded step plan).
-  long simbody_evaluations = 0;
-  double hand_median_s = 0, hand_min_s = 0, hand_max_s = 0;
-  double hand_integration_s = 0;  ///< the hand ODE with its output grid at 0.1 Hz (median)
-  long hand_steps = 0, hand_attempts = 0, hand_evaluations = 0, hand_jacobians = 0;
-  double hand_rhs_s = 0;  ///< wall time of one hand right-hand side evaluation alone (a loop)
-  double peak_fl_N = 0;   ///< peak front-left hub force of the Simbody run
-  double max_diff_fl_N = 0, max_diff_time_s = 0;  ///< max |Simbody - hand| over the output grid
-  /// The same comparison with both integrated at accuracy 1e-8 (steps <= 2.5e-5 s at the obstacle):
-  /// what remains is the difference between the models, not between the integration errors.
-  double tight_max_diff_fl_N = 0;
-  double ratio() const { return simbody_median_s / hand_median_s; }
-};
-/// InputError for an assembly the hand ODE does not model (HandOde), or `runs` < 1.
-HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario, int runs);
 
 }  // namespace dtwin

@@ -7,7 +7,7 @@
 #include "twin/roads/csv_time.hpp"
 #include "twin/roads/flat.hpp"
 #include "twin/roads/iso8608.hpp"
-#include "twin/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace dtwin {
 

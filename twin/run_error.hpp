@@ -1,5 +1,5 @@
 #pragma once
-// RunFailedError: a simulation that failed while generating data (twin/generate.hpp). In its own
+// RunFailedError: a simulation that failed while generating data (io/generate.hpp). In its own
 // header so that the distributed layer (twin/distributed.hpp) can carry it from one MPI rank to
 // every other without depending on the simulator.
 #include <cstddef>

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
-#include "twin/provenance.hpp"  // fnv1a64, hexId
+#include "common/hash.hpp"
 
 namespace dtwin {
 

@@ -17,7 +17,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
-#include "twin/generate.hpp"
+#include "io/generate.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

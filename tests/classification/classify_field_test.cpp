@@ -19,8 +19,8 @@
 #include "classification/classify_field.hpp"
 #include "classification/synthesis.hpp"
 #include "common/errors.hpp"
-#include "twin/generate.hpp"
-#include "twin/provenance.hpp"
+#include "io/generate.hpp"
+#include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;

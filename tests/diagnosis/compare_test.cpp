@@ -11,7 +11,7 @@
 
 #include "diagnosis/compare.hpp"
 #include "subsystems/effect.hpp"
-#include "twin/generate.hpp"
+#include "io/generate.hpp"
 
 using namespace dtwin;
 using namespace dtwin::diag;

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "diagnosis/diagnose.hpp"
-#include "twin/generate.hpp"
+#include "io/generate.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

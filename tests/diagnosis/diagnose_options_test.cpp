@@ -16,7 +16,7 @@
 #include "common/errors.hpp"
 #include "diagnosis/compare.hpp"
 #include "diagnosis/diagnose.hpp"
-#include "twin/work.hpp"
+#include "io/work.hpp"
 
 using namespace dtwin;
 using namespace dtwin::diag;
@@ -165,7 +165,7 @@ calib::DataSet flatSet(double span, double rate, long reps) {
 }
 }  // namespace
 
-// The work estimates (twin/work.hpp) of compare and diagnose follow the sizes that drive them:
+// The work estimates (io/work.hpp) of compare and diagnose follow the sizes that drive them:
 // draws × data span for compare; calibrations × (design + optimiser + profile) × span for diagnose.
 TEST(DiagnoseWork, EstimatesScaleWithTheSizesThatDriveThem) {
   const auto set = flatSet(2.0, 10.0, 3);

@@ -13,7 +13,7 @@
 #include "subsystems/effect.hpp"
 #include "subsystems/user_effect.hpp"
 #include "test_util.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 using namespace dtwin::diag;

@@ -6,7 +6,7 @@
 
 #include "calibration/folder.hpp"
 #include "tests/fuzz/fuzz_common.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace fs = std::filesystem;

@@ -1,9 +1,9 @@
-// Fuzz harness: the lab CSV reader (twin/measurement.hpp parseLabCsv), then what readers of lab
+// Fuzz harness: the lab CSV reader (io/measurement.hpp parseLabCsv), then what readers of lab
 // data do with an accepted file (channels, repetitions, times).
 #include <string>
 
 #include "tests/fuzz/fuzz_common.hpp"
-#include "twin/measurement.hpp"
+#include "io/measurement.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

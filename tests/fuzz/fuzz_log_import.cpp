@@ -1,4 +1,4 @@
-// Fuzz harness: `twin import` (twin/log_import.hpp) on a logger's CSV. The first byte picks one of
+// Fuzz harness: `twin import` (io/log_import.hpp) on a logger's CSV. The first byte picks one of
 // two mappings (seconds with two road-height tracks; clock times with a road velocity and a
 // preamble); the rest is the log. An accepted log is written and its study read back, as the
 // command does, so the road and speed files it makes are read too.
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "tests/fuzz/fuzz_common.hpp"
-#include "twin/log_import.hpp"
+#include "io/log_import.hpp"
 
 namespace {
 

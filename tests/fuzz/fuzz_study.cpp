@@ -1,10 +1,10 @@
-// Fuzz harness: the study file reader (twin/study.hpp loadStudy). The input is the study TOML,
+// Fuzz harness: the study file reader (io/study.hpp loadStudy). The input is the study TOML,
 // written as studies/fuzz.toml beside a copy of the project's vehicle folder, so that a study
 // naming "../vehicle/midsize_sedan.toml" (as data/studies/*.toml do) finds it.
 #include <filesystem>
 
 #include "tests/fuzz/fuzz_common.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace fs = std::filesystem;

@@ -10,7 +10,7 @@
 #include "common/errors.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 

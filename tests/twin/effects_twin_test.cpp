@@ -12,7 +12,7 @@
 #include "shipped_study.hpp"
 #include "subsystems/effect.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 

@@ -12,9 +12,9 @@
 
 #include "calibration/calibrate.hpp"
 #include "test_util.hpp"
-#include "twin/log_import.hpp"
+#include "io/log_import.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 using cd = std::complex<double>;

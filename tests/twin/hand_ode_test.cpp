@@ -9,7 +9,7 @@
 #include "test_util.hpp"
 #include "twin/hand_ode.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 

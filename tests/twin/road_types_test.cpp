@@ -12,8 +12,8 @@
 #include "twin/road_setting.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/scenario.hpp"
-#include "twin/study.hpp"
-#include "twin/toml_reader.hpp"
+#include "io/study.hpp"
+#include "common/toml_reader.hpp"
 
 using namespace dtwin;
 

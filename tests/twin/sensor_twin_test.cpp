@@ -8,9 +8,9 @@
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
 #include "test_util.hpp"
-#include "twin/generate.hpp"
+#include "io/generate.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;

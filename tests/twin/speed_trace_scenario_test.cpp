@@ -9,7 +9,7 @@
 #include "common/errors.hpp"
 #include "test_util.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;

@@ -11,10 +11,10 @@
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
 #include "shipped_study.hpp"
-#include "twin/generate.hpp"
+#include "io/generate.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 

@@ -9,7 +9,7 @@
 
 #include "shipped_study.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 

@@ -17,7 +17,7 @@
 #include "subsystems/effect.hpp"
 #include "subsystems/user_effect.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 

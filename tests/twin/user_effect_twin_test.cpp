@@ -16,7 +16,7 @@
 #include "common/errors.hpp"
 #include "test_util.hpp"
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 

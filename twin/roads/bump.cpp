@@ -2,7 +2,7 @@
 
 #include "common/errors.hpp"
 #include "twin/scenario.hpp"
-#include "twin/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace dtwin {
 

@@ -5,9 +5,9 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "twin/model.hpp"
-#include "twin/provenance.hpp"
+#include "common/hash.hpp"
 #include "twin/scenario.hpp"
-#include "twin/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace dtwin {
 

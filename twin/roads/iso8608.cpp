@@ -5,7 +5,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "twin/scenario.hpp"
-#include "twin/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace dtwin {
 

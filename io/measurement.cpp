@@ -1,4 +1,4 @@
-#include "twin/measurement.hpp"
+#include "io/measurement.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,4 +1,4 @@
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "twin/measurement.hpp"
+#include "io/measurement.hpp"
 #include "twin/road_setting.hpp"
-#include "twin/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace dtwin {
 nlohmann::json CalibrationSettings::toJson() const {

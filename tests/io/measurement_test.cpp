@@ -1,4 +1,4 @@
-// Measurement files (twin/measurement.hpp): the tidy lab layout and the field matrix. Round trips
+// Measurement files (io/measurement.hpp): the tidy lab layout and the field matrix. Round trips
 // are exact; every rule of the readers gives one line naming file:line, the field and the rule.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "common/errors.hpp"
-#include "twin/measurement.hpp"
+#include "io/measurement.hpp"
 
 using namespace dtwin;
 

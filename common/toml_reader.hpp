@@ -1,7 +1,8 @@
 #pragma once
 // Reading one table of a TOML file (the study file) so that nothing is silently ignored: every
 // key read is remembered and finish() reports the rest as unknown fields, with a "did you mean".
-// Errors name the file, the line and the dotted field (InputError). Internal to twin/.
+// Errors name the file, the line and the dotted field (InputError). Used by the study reader
+// (io/study.cpp) and by each road type, which reads its own table (twin/roads/).
 #include <cmath>
 #include <cstdint>
 #include <filesystem>

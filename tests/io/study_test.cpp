@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "common/errors.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 

@@ -11,7 +11,7 @@
 
 #include "common/progress.hpp"
 #include "subsystems/sensor.hpp"
-#include "twin/measurement.hpp"
+#include "io/measurement.hpp"
 
 namespace dtwin {
 

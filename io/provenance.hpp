@@ -7,18 +7,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/hash.hpp"  // fnv1a64, hexId
 #include "twin/simulator.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin {
 
 nlohmann::json programInfo();
 std::string utcNow();
 
-/// 64-bit FNV-1a of a byte string (portable content fingerprint).
-std::uint64_t fnv1a64(const std::string& bytes);
-/// "0x0123456789ABCDEF": how stream constants and content hashes are written in outputs.
-std::string hexId(std::uint64_t v);
 
 /// The sidecar of one simulation run (or of a set of runs); `road` describes the road(s)
 /// (Road::describe() for one road).

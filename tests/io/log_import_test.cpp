@@ -13,8 +13,8 @@
 
 #include "common/errors.hpp"
 #include "test_util.hpp"
-#include "twin/log_import.hpp"
-#include "twin/study.hpp"
+#include "io/log_import.hpp"
+#include "io/study.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-#include "twin/generate.hpp"
+#include "io/generate.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,7 +14,7 @@
 #include "subsystems/random.hpp"
 #include "twin/distributed.hpp"
 #include "twin/parallel.hpp"
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 #include "twin/simulator.hpp"
 
 namespace dtwin {

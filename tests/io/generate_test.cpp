@@ -1,4 +1,4 @@
-// Synthetic measurements (twin/generate.hpp): automatic lab times, noise statistics, [lab]
+// Synthetic measurements (io/generate.hpp): automatic lab times, noise statistics, [lab]
 // settings, determinism whatever the thread count, independent roads per field run with a common
 // smooth part, failed runs named with their seed, and parallelFor's error propagation.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 
 #include "shipped_study.hpp"
 #include "common/errors.hpp"
-#include "twin/generate.hpp"
+#include "io/generate.hpp"
 #include "twin/parallel.hpp"
 #include "twin/simulator.hpp"
 

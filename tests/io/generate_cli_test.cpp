@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "twin/measurement.hpp"
+#include "io/measurement.hpp"
 
 using namespace dtwin;
 

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "subsystems/effect_catalog.hpp"
-#include "twin/study_sizes.hpp"
+#include "io/study_sizes.hpp"
 #include "twin/model.hpp"
 #include "twin/scenario.hpp"
 #include "twin/simulator.hpp"

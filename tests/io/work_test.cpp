@@ -1,9 +1,9 @@
-// The work estimate (twin/work.hpp): closed-form counts from the sizes, the stage selection, and
+// The work estimate (io/work.hpp): closed-form counts from the sizes, the stage selection, and
 // the refusal above the limits unless forced.
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
-#include "twin/work.hpp"
+#include "io/work.hpp"
 
 namespace {
 

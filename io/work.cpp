@@ -1,4 +1,4 @@
-#include "twin/work.hpp"
+#include "io/work.hpp"
 
 #include <algorithm>
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "twin/measurement.hpp"
-#include "twin/study.hpp"
+#include "io/measurement.hpp"
+#include "io/study.hpp"
 
 namespace dtwin {
 

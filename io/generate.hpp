@@ -15,9 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "twin/measurement.hpp"
+#include "io/measurement.hpp"
 #include "twin/run_error.hpp"
-#include "twin/study.hpp"
+#include "io/study.hpp"
 
 namespace dtwin {
 

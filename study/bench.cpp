@@ -1,4 +1,4 @@
-#include "twin/bench.hpp"
+#include "study/bench.hpp"
 
 #include <algorithm>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 
 #include "common/errors.hpp"
 #include "subsystems/user_effect.hpp"
-#include "twin/log_import.hpp"
+#include "io/log_import.hpp"
 #include "twin/simulator.hpp"
 
 namespace dtwin {
@@ -173,6 +173,101 @@ BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario,
   r.builtin_run_s = wb[wb.size() / 2];
   r.user_run_s = wu[wu.size() / 2];
   return r;
+}
+
+namespace {
+double handMedian(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t k = v.size() / 2;
+  return v.size() % 2 ? v[k] : 0.5 * (v[k - 1] + v[k]);
+}
+
+/// max |simbody - hand| of the front-left hub force over the common grid, and where.
+std::pair<double, double> handMaxDiff(const Trace& simbody, const HandOdeRun& hand) {
+  const auto& ts = simbody.column("time_s");
+  const auto& fs = simbody.column("hub_force_fl_N");
+  DTWIN_CHECK(ts.size() == hand.time_s.size(), "benchHandOde: the two output grids differ in length");
+  double worst = 0, at = 0;
+  for (std::size_t i = 0; i < ts.size(); ++i)
+    if (const double d = std::abs(fs[i] - hand.hub_force_N[0][i]); d > worst) {
+      worst = d;
+      at = ts[i];
+    }
+  return {worst, at};
+}
+}  // namespace
+
+HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& sc, int runs) {
+  if (runs < 1) throw InputError("twin bench --hand-ode", "--runs must be >= 1");
+  const auto model = study.makeModel(a);
+  const auto road = makeRoad(sc, model->vehicle(), study.seed);
+  const auto values = model->defaultRunValues();
+  const HandOde probe(*model, values, *road, sc.speed);  // InputError for an assembly it does not model
+  HandOdeBench b;
+  b.assembly = a.id;
+  b.label = a.label();
+  b.scenario = sc.name;
+  b.runs = runs;
+  b.accuracy = study.simulation.accuracy;
+  Simulator sim(model, study.simulation);
+  SimulationOptions quiet = study.simulation;
+  quiet.output_rate_hz = 0.1;  // two output rows: what is left is the equilibrium and the integration
+  Simulator sim_quiet(model, quiet);
+  // Warm-up, counts and agreement (the Simbody run records its steps to count its Jacobians).
+  StepPlan plan;
+  const RunResult ref = sim.run(values, *road, sc, StepControl{nullptr, &plan});
+  if (!ref.stats.ok) throw std::runtime_error("twin bench --hand-ode: the Simbody run failed: " + ref.stats.message);
+  sim_quiet.run(values, *road, sc);
+  const HandOdeRun hand = runHandOde(*model, values, *road, sc, study.simulation);
+  b.simbody_steps = ref.stats.steps;
+  b.simbody_attempts = ref.stats.steps_attempted;
+  b.simbody_jacobians = static_cast<long>(std::count(plan.new_jacobian.begin(), plan.new_jacobian.end(), 1));
+  b.simbody_evaluations = 1 + 4 * b.simbody_steps + 3 * (b.simbody_attempts - b.simbody_steps) + HandOde::kStates * b.simbody_jacobians;
+  b.hand_steps = hand.steps;
+  b.hand_attempts = hand.attempts;
+  b.hand_evaluations = hand.evaluations;
+  b.hand_jacobians = hand.jacobians;
+  const auto& fl = ref.trace.column("hub_force_fl_N");
+  b.peak_fl_N = *std::max_element(fl.begin(), fl.end());
+  std::tie(b.max_diff_fl_N, b.max_diff_time_s) = handMaxDiff(ref.trace, hand);
+  // Timed runs, alternating so that a change of the machine's load hits both alike.
+  std::vector<double> ws, wq, wh, whq;
+  for (int k = 0; k < runs; ++k) {
+    ws.push_back(sim.run(values, *road, sc).stats.wall_s);
+    wq.push_back(sim_quiet.run(values, *road, sc).stats.wall_s);
+    wh.push_back(runHandOde(*model, values, *road, sc, study.simulation).wall_s);
+    whq.push_back(runHandOde(*model, values, *road, sc, quiet).wall_s);
+  }
+  b.simbody_median_s = handMedian(ws);
+  b.simbody_min_s = *std::min_element(ws.begin(), ws.end());
+  b.simbody_max_s = *std::max_element(ws.begin(), ws.end());
+  b.simbody_integration_s = handMedian(wq);
+  b.hand_median_s = handMedian(wh);
+  b.hand_min_s = *std::min_element(wh.begin(), wh.end());
+  b.hand_max_s = *std::max_element(wh.begin(), wh.end());
+  b.hand_integration_s = handMedian(whq);
+  // One right-hand side alone, at the state the run starts from, in a loop.
+  {
+    const Eigen::VectorXd y = probe.equilibrium();
+    Eigen::VectorXd yd(HandOde::kStates);
+    const int reps = 20000;
+    double sink = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < reps; ++i) {
+      probe.rhs(6.0 + 1e-6 * i, y, yd);
+      sink += yd[7];
+    }
+    b.hand_rhs_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
+    if (!std::isfinite(sink)) throw std::runtime_error("twin bench --hand-ode: non-finite right-hand side");
+  }
+  // Both at tight tolerance (untimed): the difference of the models themselves.
+  SimulationOptions tight = study.simulation;
+  tight.accuracy = 1e-8;
+  tight.max_step_s = 1e-3;
+  tight.obstacle_max_step_s = 2.5e-5;
+  const RunResult ref_tight = Simulator(model, tight).run(values, *road, sc);
+  b.tight_max_diff_fl_N = handMaxDiff(ref_tight.trace, runHandOde(*model, values, *road, sc, tight)).first;
+  return b;
 }
 
 }  // namespace dtwin

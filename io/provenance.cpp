@@ -1,4 +1,4 @@
-#include "twin/provenance.hpp"
+#include "io/provenance.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -10,21 +10,6 @@
 namespace dtwin {
 
 nlohmann::json programInfo() { return {{"name", "twin"}, {"version", kVersion}, {"git", kGitDescribe}}; }
-
-std::uint64_t fnv1a64(const std::string& bytes) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
-
-std::string hexId(std::uint64_t v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "0x%016llX", static_cast<unsigned long long>(v));
-  return b;
-}
 
 std::string utcNow() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());

@@ -43,7 +43,7 @@ inline constexpr const char* kLabHeader = "repetition,time_s,channel,value";
 /// CSV text of lab data: header `repetition,time_s,channel,value`, one record per line, numbers
 /// in the shortest form that reads back exactly. Validates first (same rules as the reader).
 std::string labCsvText(const LabData& data, const std::vector<Channel>& known = measurableChannels());
-/// Writes labCsvText atomically (twin/trace.hpp writeFileAtomic).
+/// Writes labCsvText atomically (common/files.hpp writeFileAtomic).
 void writeLabCsv(const std::string& path, const LabData& data, const std::vector<Channel>& known = measurableChannels());
 
 /// Parses lab CSV text; `name` (the file name) prefixes errors. Rules: the header names exactly

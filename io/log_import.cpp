@@ -1,4 +1,4 @@
-#include "twin/log_import.hpp"
+#include "io/log_import.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,9 +17,9 @@
 #include "common/names.hpp"
 #include "common/statistics.hpp"
 #include "subsystems/time_road.hpp"
-#include "twin/provenance.hpp"
-#include "twin/study.hpp"
-#include "twin/toml_reader.hpp"
+#include "io/provenance.hpp"
+#include "io/study.hpp"
+#include "common/toml_reader.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;
@@ -436,7 +436,7 @@ struct LogRows {
   long dropped_cells = 0;
 };
 
-/// Reads the log row by row with every check of importLog (twin/log_import.hpp).
+/// Reads the log row by row with every check of importLog (io/log_import.hpp).
 class LogRowReader {
  public:
   LogRowReader(const std::string& text, const std::string& name, const ImportMapping& m, const ImportUnits& u)

@@ -1,21 +1,10 @@
 // `twin calibrate`: Griddy Gibbs calibration of one or every assembly against a lab data file.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
-#include "calibration/calibrate.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "common/json.hpp"
-#include "common/errors.hpp"
-#include "twin/distributed.hpp"
-#include "io/measurement.hpp"
-#include "io/provenance.hpp"
-#include "io/study.hpp"
-
-namespace fs = std::filesystem;
+#include "study/calibrate.hpp"
 
 namespace dtwin::cli {
 namespace {
@@ -30,24 +19,14 @@ struct CalibrateConfig {
 
 int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
-  study.scenario(cfg.scenario);  // validates the name
-  if (!fs::exists(cfg.data)) throw InputError(cfg.data, "lab data file not found (--data)");
-  const LabData data = readLabCsv(cfg.data, measurableChannels(study.sensors));
-  std::vector<AssemblySpec> targets;
-  if (cfg.assembly == "all") targets = study.assemblies();
-  else targets.push_back(study.assembly(cfg.assembly));
-  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
-  {
-    Study sized = study;
-    overrideSize(sized, "lhs_points", cfg.lhs_points, "--lhs-points");
-    overrideSize(sized, "gibbs_iterations", cfg.iterations, "--iterations");
-    overrideSize(sized, "optimizer_starts", cfg.starts, "--starts");
-    std::vector<std::string> stages;
-    for (const auto& a : targets) stages.push_back("calibrate " + a.id);
-    checkCommandWork(sized, stages, cfg.force);
-  }
-
-  calib::CalibrationOptions opt = calib::CalibrationOptions::fromStudy(study);
+  CalibrateRequest req;
+  req.data = cfg.data;
+  if (cfg.assembly != "all") req.assemblies = {cfg.assembly};
+  req.scenario = cfg.scenario;
+  req.out = cfg.out;
+  req.command = command;
+  calib::CalibrationOptions& opt = req.options;
+  opt = calib::CalibrationOptions::fromStudy(study);
   opt.threads = cfg.threads;
   if (cfg.lhs_points > 0) opt.lhs_points = static_cast<int>(cfg.lhs_points);
   if (cfg.iterations > 0) opt.gibbs_iterations = static_cast<int>(cfg.iterations);
@@ -63,67 +42,36 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   if (!cfg.steps.empty()) opt.steps = cfg.steps;
   if (cfg.max_rounds >= 0) opt.design.max_rounds = static_cast<int>(cfg.max_rounds);
   if (cfg.ridge_steps >= 0) opt.joint.ridge_steps = static_cast<int>(cfg.ridge_steps);
-  opt.command = command;
-  opt.data_path = cfg.data;
-  opt.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
-  const std::string data_hash = std::to_string(calib::fnv1a64(readTextFile(cfg.data)));
-
-  const bool bar_on = progressOn(cfg.quiet);
-  if (!cfg.quiet) {
-    const std::string rounds = opt.design.adaptive ? " + up to " + std::to_string(opt.design.max_rounds) + " adaptive rounds of " +
-                                                         std::to_string(opt.designOptions().round_points)
-                                                   : std::string();
-    std::printf("calibrating %zu assembl%s against %s (%zu records): %d starts, %s region, %d design points%s, %d Gibbs iterations (%d burn-in)\n",
-                targets.size(), targets.size() == 1 ? "y" : "ies", cfg.data.c_str(), data.records.size(), opt.optimizer_starts,
-                opt.region.c_str(), opt.lhs_points, rounds.c_str(), opt.gibbs_iterations, opt.gibbs_burn_in);
+  req.validate(study);  // before anything is printed; main() shows a field as its flag (field_flags below)
+  {
+    Study sized = study;
+    overrideSize(sized, "lhs_points", cfg.lhs_points, "--lhs-points");
+    overrideSize(sized, "gibbs_iterations", cfg.iterations, "--iterations");
+    overrideSize(sized, "optimizer_starts", cfg.starts, "--starts");
+    std::vector<std::string> stages;
+    for (const auto& a : calibrationTargets(study, req)) stages.push_back("calibrate " + a.id);
+    checkCommandWork(sized, stages, cfg.force);
   }
-  nlohmann::json index;
-  index["program"] = programInfo();
-  index["command"] = command;
-  index["created_utc"] = utcNow();
-  index["study"] = study.path;
-  index["data"] = cfg.data;
-  for (const auto& a : targets) {
-    ProgressBar bar(a.id, bar_on, stderrIsTerminal());
-    std::string current;
-    auto progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
+  const std::string plan = calibrationPlan(study, req);
+  if (!cfg.quiet) std::printf("%s\n", plan.c_str());
+  const bool bar_on = progressOn(cfg.quiet);
+  std::unique_ptr<ProgressBar> bar;
+  std::string current;
+  const auto progress_of = [&](const AssemblySpec& a) -> StageProgress {
+    bar = std::make_unique<ProgressBar>(a.id, bar_on, stderrIsTerminal());
+    current.clear();
+    return [&, id = a.id](const std::string& stage, std::size_t done, std::size_t total) {
       if (stage != current) {
         current = stage;
-        bar.restart(a.id + " " + stage);
+        bar->restart(id + " " + stage);
       }
-      bar.update(done, total);
+      bar->update(done, total);
     };
-    const std::string dir = (fs::path(cfg.out) / a.id).string();
-    const calib::CalibrationResult r = calibrateAssembly(study, a, data, cfg.scenario, opt, dir, data_hash, progress);
-    bar.finish();
-    index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
-    if (!cfg.quiet) {
-      std::printf("%-4s %-26s SSE_min %.4g  tau %.3g (noise var %.0f N^2)  design %ld points in %zu round%s (importance ESS %.0f)  "
-                  "distinct points %d  top share %.2f  failures %ld  %.1f s\n",
-                  a.id.c_str(), a.label().c_str(), r.optimum.sse, r.posterior.tau.mean,
-                  r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0, static_cast<long>(r.design.rows()),
-                  r.rounds.rounds.size(), r.rounds.rounds.size() == 1 ? "" : "s", r.rounds.ess, r.posterior.distinct_points,
-                  r.posterior.top_share, r.design_failures, r.stage_wall_s.back().second);
-      for (std::size_t k = 0; k < r.names.size(); ++k) {
-        const auto& p = r.posterior.parameters[k];
-        const std::string truth = r.truth[k] ? " truth " + formatExact(*r.truth[k]) : std::string();
-        if (k < r.profile.lower.size())
-          std::printf("       %-22s mean %-11.5g sd %-10.4g 95%% %s [%.5g, %.5g], %s [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd,
-                      r.interval == "profile" ? "profile" : "posterior", r.interval == "profile" ? r.profile.lower[k] : p.q025,
-                      r.interval == "profile" ? r.profile.upper[k] : p.q975, r.interval == "profile" ? "posterior" : "profile",
-                      r.interval == "profile" ? p.q025 : r.profile.lower[k], r.interval == "profile" ? p.q975 : r.profile.upper[k],
-                      truth.c_str());
-        else
-          std::printf("       %-22s mean %-11.5g sd %-10.4g 95%% [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd, p.q025, p.q975, truth.c_str());
-      }
-      if (r.posterior.design_too_coarse) std::printf("       note: %s\n", r.posterior.message.c_str());
-      for (const auto& w : r.rounds.warnings) std::printf("       note: %s\n", w.c_str());
-      for (const auto& m : r.region.messages) std::printf("       note: %s\n", m.c_str());
-      if (r.design_failures) std::printf("       note: %ld design simulations failed (SSE = inf, weight 0)\n", r.design_failures);
-      if (!r.integrator.ok) std::printf("       note: %s\n", r.integrator.message.c_str());
-    }
-  }
-  rootWrites([&] { writeFileAtomic((fs::path(cfg.out) / "calibration.json").string(), index.dump(2) + "\n"); });
+  };
+  calibrateAssemblies(study, req, progress_of, [&](const CalibrateRun& run) {
+    bar->finish();
+    if (!cfg.quiet) std::printf("%s", run.text().c_str());
+  });
   return 0;
 }
 

@@ -1,5 +1,6 @@
 #include "common/format.hpp"
 
+#include <cstdarg>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -46,13 +47,19 @@ std::string formatExact(double v) {
   return std::string(buf, r.ptr);
 }
 
-std::string formatFixed(double v, int decimals) { return formatPrintf("%.*f", v, decimals); }
+std::string formatFixed(double v, int decimals) { return formatPrintf("%.*f", decimals, v); }
 
-std::string formatPrintf(const char* format, double v, int width_or_precision) {
-  char buf[128];
-  if (width_or_precision >= 0) std::snprintf(buf, sizeof buf, format, width_or_precision, v);
-  else std::snprintf(buf, sizeof buf, format, v);
-  return buf;
+std::string formatPrintf(const char* format, ...) {
+  std::va_list args;
+  va_start(args, format);
+  std::va_list again;
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+  va_end(again);
+  return out;
 }
 
 }  // namespace dtwin

@@ -13,9 +13,9 @@ std::string formatNumber(double v, int digits = 6);
 std::string formatExact(double v);
 /// `v` with `decimals` digits after the point, as printf's "%.*f".
 std::string formatFixed(double v, int decimals);
-/// `v` through a printf format for one double ("%.3g", "%+.2f"); a format with a '*' takes
-/// `width_or_precision` first ("%.*f"). At most 127 characters.
-std::string formatPrintf(const char* format, double v, int width_or_precision = -1);
+/// printf into a std::string, of any length ("%.3g", "%-28s %10.4g\n"): the one way a line of a
+/// table or report is formatted. The compiler checks the arguments against the format.
+std::string formatPrintf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 /// Parses the whole of `s` as a double, whatever the process's locale (std::from_chars; a leading
 /// '+', inf and nan accepted). False when `s` is empty or has anything around the number (trim

@@ -1,0 +1,106 @@
+#include "study/calibrate.hpp"
+
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "common/files.hpp"
+#include "common/format.hpp"
+#include "common/hash.hpp"
+#include "common/validate.hpp"
+#include "io/measurement.hpp"
+#include "io/provenance.hpp"
+#include "twin/distributed.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin {
+
+void CalibrateRequest::validate(const Study& study) const {
+  const OptionCheck check("calibrate");
+  (void)study.scenario(scenario);
+  for (const auto& id : assemblies) (void)study.assembly(id);
+  if (!fs::exists(data)) throw InputError(data, "lab data file not found (--data)");
+  check.require(!(fs::exists(out) && !fs::is_directory(out)), "out", "'" + out + "' exists and is not a folder");
+  options.validate();
+}
+
+std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request) {
+  if (request.assemblies.empty()) return study.assemblies();
+  std::vector<AssemblySpec> out;
+  for (const auto& id : request.assemblies) out.push_back(study.assembly(id));
+  return out;
+}
+
+std::string calibrationPlan(const Study& study, const CalibrateRequest& request) {
+  const auto targets = calibrationTargets(study, request);
+  const calib::CalibrationOptions& opt = request.options;
+  const LabData data = readLabCsv(request.data, measurableChannels(study.sensors));
+  const std::string rounds = opt.design.adaptive ? " + up to " + std::to_string(opt.design.max_rounds) + " adaptive rounds of " +
+                                                       std::to_string(opt.designOptions().round_points)
+                                                 : std::string();
+  return formatPrintf("calibrating %zu assembl%s against %s (%zu records): %d starts, %s region, %d design points%s, %d Gibbs "
+                      "iterations (%d burn-in)",
+                      targets.size(), targets.size() == 1 ? "y" : "ies", request.data.c_str(), data.records.size(), opt.optimizer_starts,
+                      opt.region.c_str(), opt.lhs_points, rounds.c_str(), opt.gibbs_iterations, opt.gibbs_burn_in);
+}
+
+std::string CalibrateRun::text() const {
+  const calib::CalibrationResult& r = result;
+  const AssemblySpec& a = assembly;
+  std::string s = formatPrintf(
+      "%-4s %-26s SSE_min %.4g  tau %.3g (noise var %.0f N^2)  design %ld points in %zu round%s (importance ESS %.0f)  "
+      "distinct points %d  top share %.2f  failures %ld  %.1f s\n",
+      a.id.c_str(), a.label().c_str(), r.optimum.sse, r.posterior.tau.mean, r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0,
+      static_cast<long>(r.design.rows()), r.rounds.rounds.size(), r.rounds.rounds.size() == 1 ? "" : "s", r.rounds.ess,
+      r.posterior.distinct_points, r.posterior.top_share, r.design_failures, r.stage_wall_s.back().second);
+  const bool profile_first = r.interval == "profile";
+  for (std::size_t k = 0; k < r.names.size(); ++k) {
+    const auto& p = r.posterior.parameters[k];
+    const std::string truth = r.truth[k] ? " truth " + formatExact(*r.truth[k]) : std::string();
+    if (k < r.profile.lower.size())
+      s += formatPrintf("       %-22s mean %-11.5g sd %-10.4g 95%% %s [%.5g, %.5g], %s [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd,
+                        profile_first ? "profile" : "posterior", profile_first ? r.profile.lower[k] : p.q025,
+                        profile_first ? r.profile.upper[k] : p.q975, profile_first ? "posterior" : "profile",
+                        profile_first ? p.q025 : r.profile.lower[k], profile_first ? p.q975 : r.profile.upper[k], truth.c_str());
+    else
+      s += formatPrintf("       %-22s mean %-11.5g sd %-10.4g 95%% [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd, p.q025, p.q975,
+                        truth.c_str());
+  }
+  if (r.posterior.design_too_coarse) s += "       note: " + r.posterior.message + "\n";
+  for (const auto& w : r.rounds.warnings) s += "       note: " + w + "\n";
+  for (const auto& m : r.region.messages) s += "       note: " + m + "\n";
+  if (r.design_failures) s += formatPrintf("       note: %ld design simulations failed (SSE = inf, weight 0)\n", r.design_failures);
+  if (!r.integrator.ok) s += "       note: " + r.integrator.message + "\n";
+  return s;
+}
+
+void calibrateAssemblies(const Study& study, const CalibrateRequest& request,
+                         const std::function<StageProgress(const AssemblySpec&)>& progress_of,
+                         const std::function<void(const CalibrateRun&)>& on_done) {
+  calib::CalibrationOptions opt = request.options;
+  opt.command = request.command;
+  opt.data_path = request.data;
+  CalibrateRequest checked = request;
+  checked.options = opt;
+  checked.validate(study);
+  const auto targets = calibrationTargets(study, request);
+  const LabData data = readLabCsv(request.data, measurableChannels(study.sensors));
+  const std::string data_hash = std::to_string(fnv1a64(readTextFile(request.data)));
+  nlohmann::json index;
+  index["program"] = programInfo();
+  index["command"] = request.command;
+  index["created_utc"] = utcNow();
+  index["study"] = study.path;
+  index["data"] = request.data;
+  for (const auto& a : targets) {
+    CalibrateRun run;
+    run.assembly = a;
+    const std::string dir = (fs::path(request.out) / a.id).string();
+    run.result = calibrateAssembly(study, a, data, request.scenario, opt, dir, data_hash, progress_of ? progress_of(a) : StageProgress{});
+    index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
+    if (on_done) on_done(run);
+  }
+  rootWrites([&] { writeFileAtomic((fs::path(request.out) / "calibration.json").string(), index.dump(2) + "\n"); });
+}
+
+}  // namespace dtwin

@@ -1,0 +1,49 @@
+#pragma once
+// `twin calibrate` as one library call: one or every assembly of a study calibrated against a lab
+// data file (calibration/calibrate.hpp), each into OUT/<id>/ (resumable), and OUT/calibration.json
+// indexing them with how they were made. The CLI parses its flags into the request, checks the
+// work, calls, and prints.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "calibration/calibrate.hpp"
+#include "common/progress.hpp"
+#include "io/study.hpp"
+
+namespace dtwin {
+
+struct CalibrateRequest {
+  std::string data;                     ///< the lab data CSV
+  std::vector<std::string> assemblies;  ///< assembly ids; empty: every assembly of the study
+  std::string scenario = "lab";         ///< the scenario the data were measured on
+  std::string out;                      ///< the folder; each assembly writes OUT/<id>/
+  calib::CalibrationOptions options;    ///< command and data_path are set from the request
+  std::string command;                  ///< recorded in every output
+  /// InputError naming the field ("calibrate.data", "calibrate.out", ...) or the options' own.
+  void validate(const Study& study) const;
+};
+
+/// One calibrated assembly.
+struct CalibrateRun {
+  AssemblySpec assembly;
+  calib::CalibrationResult result;
+  /// The lines `twin calibrate` prints: SSE, noise, design, then each parameter's mean, sd and
+  /// both 95 % intervals (the chosen one first), the truth when known, and the notes.
+  std::string text() const;
+};
+
+/// The targets of `request` (every assembly when none is named).
+std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request);
+
+/// The line printed before the work starts: what is calibrated against what, with which sizes.
+std::string calibrationPlan(const Study& study, const CalibrateRequest& request);
+
+/// Calibrates every target in turn. `progress_of(assembly)` gives the progress callback of that
+/// assembly's stages (may return an empty function); `on_done` is called after each assembly.
+/// OUT/calibration.json is written (atomically, on the root rank) when all are done.
+void calibrateAssemblies(const Study& study, const CalibrateRequest& request,
+                         const std::function<StageProgress(const AssemblySpec&)>& progress_of,
+                         const std::function<void(const CalibrateRun&)>& on_done);
+
+}  // namespace dtwin

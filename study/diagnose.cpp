@@ -1,0 +1,203 @@
+#include "study/diagnose.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numeric>
+
+#include "calibration/folder.hpp"
+#include "common/errors.hpp"
+#include "common/files.hpp"
+#include "common/format.hpp"
+#include "diagnosis/measurements.hpp"
+#include "io/provenance.hpp"
+#include "io/work.hpp"
+#include "twin/distributed.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dtwin {
+namespace {
+
+std::vector<calib::DataSet> loadSets(const Study& study, const std::vector<std::string>& args, const std::string& flag) {
+  std::vector<calib::DataSet> sets;
+  for (const auto& a : args) sets.push_back(diag::loadMeasurement(study, diag::parseMeasurementArg(a, flag)));
+  return sets;
+}
+
+void checkOutFolder(const std::string& out, const std::string& field) {
+  if (!out.empty() && fs::exists(out) && !fs::is_directory(out)) throw InputError(field, "'" + out + "' exists and is not a folder");
+}
+
+std::string plural(std::size_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
+
+/// The windows of one series that hold the most of its residual, in time order, then one line for the rest.
+void appendFailingWindows(const diag::SeriesComparison& s, std::string& out) {
+  constexpr std::size_t kWindowsShown = 8;  // the rest are in compare.json
+  std::vector<std::size_t> order(s.windows.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.windows[a].window.share > s.windows[b].window.share; });
+  const std::size_t shown = std::min(order.size(), kWindowsShown);
+  std::sort(order.begin(), order.begin() + static_cast<long>(shown));
+  for (std::size_t k = 0; k < shown; ++k) {
+    const auto& w = s.windows[order[k]];
+    out += formatPrintf("  fails: %s %s %.3f-%.3f s, peak |z| %.1f, %.0f %% of its residual: %s (%.1f m/s)\n", s.scenario.c_str(),
+                        s.channel.c_str(), w.window.t_begin, w.window.t_end, w.window.peak_z, 100 * w.window.share, w.label.c_str(),
+                        w.speed_mps);
+  }
+  if (order.size() > shown) {
+    double rest = 0.0;
+    for (std::size_t k = shown; k < order.size(); ++k) rest += s.windows[order[k]].window.share;
+    out += formatPrintf("  fails: %s %s in %zu more windows holding %.0f %% of its residual (--out: compare.json lists every window)\n",
+                        s.scenario.c_str(), s.channel.c_str(), order.size() - shown, 100 * rest);
+  }
+}
+
+}  // namespace
+
+std::string CompareRun::text() const {
+  const diag::Comparison& c = comparison;
+  std::string out = diag::comparisonTable(c);
+  for (const auto& s : c.series) {
+    appendFailingWindows(s, out);
+    for (const auto& b : s.bands)
+      if (b.significant)
+        out += formatPrintf("  fails: %s %s band %s (%.1f-%.1f Hz): residual %.3g x the noise floor, coherence with the road %.2f\n",
+                            s.scenario.c_str(), s.channel.c_str(), b.band.c_str(), b.lo_hz, b.hi_hz, b.ratio, b.coherence);
+  }
+  for (const auto& cm : c.maps)
+    for (const auto& m : cm.maps)
+      if (!m.fits.empty() && m.fits[0].explained_fraction > 0.3)
+        out += formatPrintf("  state: %s vs %s: %s explains %.0f %% of the map%s\n", cm.channel.c_str(), m.state.c_str(),
+                            m.fits[0].feature.c_str(), 100 * m.fits[0].explained_fraction,
+                            m.fits[0].feature == "knee" ? (" (knee at " + formatExact(m.fits[0].knee_at) + ")").c_str() : "");
+  for (const auto& n : c.notes) out += "  note: " + n + "\n";
+  return out;
+}
+
+CompareRun compareMeasurements(const Study& study, const CompareRequest& request, const SayFn& say) {
+  checkOutFolder(request.out, "compare.out");
+  const calib::CalibrationFolder folder = calib::readCalibrationFolder(request.calibration);
+  CompareRun run;
+  run.assembly = calib::calibratedAssembly(study, folder);
+  const calib::CalibrationSetup& setup = folder.setup;
+  const auto sets = loadSets(study, request.data, "--data");
+  const calib::PosteriorSample& sample = folder.posterior;
+  calib::LabObjective obj(study, run.assembly, sets, setup);
+  const auto rows = diag::posteriorRows(sample.names, sample.theta, obj.names(), request.draws, sample.path);
+  checkWork({diag::estimateCompareWork(sets, rows.size())}, "--data", request.force);
+  const auto noise = diag::estimateChannelNoise(study, sets);
+  if (say)
+    say("comparing " + run.assembly.id + " (" + obj.model().assembly().label() + ") from " + request.calibration + " with " +
+        plural(sets.size(), "measurement file") + " at " + std::to_string(rows.size()) + " posterior draws");
+  diag::CompareOptions co;
+  co.threads = request.threads;
+  co.fitted_parameters = static_cast<int>(obj.names().size());
+  run.comparison = diag::compareModel(obj, sets, rows, noise, co);
+  if (!request.out.empty()) {
+    nlohmann::json j = run.comparison.toJson(true);
+    j["program"] = programInfo();
+    j["command"] = request.command;
+    j["created_utc"] = utcNow();
+    j["study"] = study.path;
+    j["calibration"] = request.calibration;
+    j["assembly"] = run.assembly.id;
+    j["setup"] = setup.toJson();
+    j["data"] = request.data;
+    run.written = (fs::path(request.out) / "compare.json").string();
+    rootWrites([&] { writeFileAtomic(run.written, j.dump(2) + "\n"); });
+  }
+  return run;
+}
+
+namespace {
+
+/// The .toml items of `apply` replaced by the names of their [user_effects], which join `study`.
+std::vector<std::string> expandApply(Study& study, const std::vector<std::string>& apply) {
+  std::vector<std::string> out;
+  for (const auto& a : apply) {
+    if (a.size() > 5 && a.compare(a.size() - 5, 5, ".toml") == 0) {
+      const auto specs = loadUserEffects(a);
+      study.addUserEffects(specs);
+      for (const auto& u : specs) out.push_back(u.name);
+    } else {
+      out.push_back(a);
+    }
+  }
+  return out;
+}
+
+nlohmann::json optionsJson(const diag::DiagnoseOptions& o) {
+  return {{"calibration", o.calibration.toJson()}, {"candidates", o.candidates}, {"screen_alpha", o.screen_alpha},
+          {"bic_strong", o.bic_strong}, {"ambiguity_log_evidence", o.ambiguity_log_evidence},
+          {"full_within", std::isinf(o.full_within) ? nlohmann::json("all") : nlohmann::json(o.full_within)},
+          {"explained_min", o.explained_min}, {"lack_of_fit_alpha", o.lack_of_fit_alpha}, {"compare_draws", o.compare_draws},
+          {"effects", o.effects}, {"apply", o.apply}, {"propose_terms", o.propose_terms}};
+}
+
+/// diagnosis.json, proposal.toml and comparisons/*.json of a finished diagnosis, on the root rank.
+void writeDiagnosis(const Study& study, const DiagnoseRequest& request, const DiagnoseRun& run) {
+  const diag::DiagnosisResult& r = run.result;
+  const fs::path out(request.out);
+  nlohmann::json j = r.toJson();
+  j["program"] = programInfo();
+  j["command"] = run.options.command;
+  j["created_utc"] = utcNow();
+  j["study"] = study.path;
+  j["data"] = request.data;
+  j["holdout"] = request.holdout;
+  j["options"] = optionsJson(run.options);
+  rootWrites([&] {
+    writeFileAtomic((out / "diagnosis.json").string(), j.dump(2) + "\n");
+    if (!r.proposal.empty())
+      writeFileAtomic((out / "proposal.toml").string(), "# Proposed by twin diagnose (" + run.options.command +
+                                                            "): paste into the study file, or pass this file to --apply.\n" +
+                                                            r.proposalToml());
+    // Full comparisons (series data for plots): the base, every confirmed candidate, every step.
+    writeFileAtomic((out / "comparisons" / "base.json").string(), r.base.comparison.toJson(true).dump() + "\n");
+    for (const auto& c : r.candidates)
+      if (c.confirmed)
+        writeFileAtomic((out / "comparisons" / (c.effect + ".json")).string(), c.fit->comparison.toJson(true).dump() + "\n");
+    for (std::size_t k = 1; k < r.steps.size(); ++k) {
+      std::string name;
+      for (const auto& e : r.steps[k].effects) name += (name.empty() ? "" : "+") + e;
+      writeFileAtomic((out / "comparisons" / (name + ".json")).string(), r.steps[k].comparison.toJson(true).dump() + "\n");
+    }
+  });
+}
+
+}  // namespace
+
+DiagnoseRun diagnoseMeasurements(const Study& base_study, const DiagnoseRequest& request, const SayFn& say,
+                                 const diag::DiagnoseProgress& progress) {
+  Study study = base_study;
+  checkOutFolder(request.out, "diagnose.out");
+  const AssemblySpec assembly = study.assembly(request.assembly);
+  const auto fit = loadSets(study, request.data, "--data");
+  const auto hold = loadSets(study, request.holdout, "--holdout");
+  DiagnoseRun run;
+  run.options = request.options;
+  run.options.apply = expandApply(study, request.options.apply);
+  run.options.validate();
+  checkWork(diag::estimateDiagnoseWork(study, assembly, fit, hold, run.options), "--data", request.force);
+  const std::string out = request.out.empty()
+                              ? (fs::temp_directory_path() / ("twin-diagnose-" + std::to_string(::getpid()))).string()
+                              : request.out;
+  if (say) {
+    std::size_t records = 0;
+    for (const auto& s : fit) records += s.data.records.size();
+    say("diagnosing " + assembly.id + " (" + assembly.label() + ") on " + plural(fit.size(), "measurement file") + " (" +
+        std::to_string(records) + " records)" + (hold.empty() ? "" : ", " + std::to_string(hold.size()) + " held out") +
+        "; calibrations in " + (fs::path(out) / "calibrations").string());
+  }
+  run.result = diag::diagnose(study, assembly, fit, hold, run.options, out, progress);
+  if (!request.out.empty()) {
+    writeDiagnosis(study, request, run);
+    run.written = (fs::path(request.out) / "diagnosis.json").string();
+  }
+  return run;
+}
+
+}  // namespace dtwin

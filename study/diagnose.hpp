@@ -1,0 +1,68 @@
+#pragma once
+// `twin compare` and `twin diagnose` as one library call each: the measurements read, the work
+// checked against its limits, the model compared or diagnosed, and every output file written
+// atomically on the root rank with how it was made (program, command, study, data, options).
+// The CLI parses its flags into these requests, calls, and prints; the HTML report (report/) is
+// drawn from the files written here.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "calibration/calibrate.hpp"
+#include "diagnosis/compare.hpp"
+#include "diagnosis/diagnose.hpp"
+#include "io/study.hpp"
+
+namespace dtwin {
+
+/// A line of text for the user ("comparing ...", "diagnosing ..."), before the long work starts.
+using SayFn = std::function<void(const std::string&)>;
+
+struct CompareRequest {
+  std::string calibration;         ///< a calibration folder (summary.json + posterior.csv)
+  std::vector<std::string> data;   ///< measurement files FILE[@SCENARIO]
+  std::string out;                 ///< folder for compare.json; "" writes nothing
+  int draws = 30;                  ///< posterior rows (evenly spaced) for the predictive band
+  int threads = 0;                 ///< worker threads (0: all cores)
+  bool force = false;              ///< run even above the work limits (io/work.hpp)
+  std::string command;             ///< recorded in compare.json
+};
+
+struct CompareRun {
+  AssemblySpec assembly;
+  diag::Comparison comparison;
+  std::string written;  ///< the compare.json written ("" without --out)
+  /// The table, the windows and bands where the model fails, the state maps and the notes, as
+  /// `twin compare` prints them (at most 8 windows per series; compare.json lists every one).
+  std::string text() const;
+};
+
+/// Compares the calibrated model of `request.calibration` with `request.data` (InputError for a
+/// bad request or a file that cannot be read; the work is checked before anything runs).
+CompareRun compareMeasurements(const Study& study, const CompareRequest& request, const SayFn& say = {});
+
+struct DiagnoseRequest {
+  std::string assembly = "M1";
+  std::vector<std::string> data;     ///< measurement files FILE[@SCENARIO] to fit
+  std::vector<std::string> holdout;  ///< held out: not fitted, their error reported
+  /// The options; `options.apply` may hold .toml files (a diagnosis's proposal.toml): their
+  /// [user_effects] join the study's catalogue and are applied in their order.
+  diag::DiagnoseOptions options;
+  std::string out;     ///< the folder (resumable); "" runs in a temporary folder and writes no result files
+  bool force = false;  ///< run even above the work limits (io/work.hpp)
+};
+
+struct DiagnoseRun {
+  diag::DiagnosisResult result;
+  diag::DiagnoseOptions options;  ///< as run (the .toml items of apply replaced by their effects)
+  std::string written;            ///< the diagnosis.json written ("" without an out folder)
+};
+
+/// Diagnoses `request.assembly` of `study` on the measurements (docs/diagnosis.md): the work is
+/// checked first, then diagnose() runs with calibrations under OUT/calibrations, and
+/// OUT/diagnosis.json, OUT/proposal.toml (when the sparse regression proposes terms) and
+/// OUT/comparisons/*.json (base, every confirmed candidate, every applied step) are written.
+DiagnoseRun diagnoseMeasurements(const Study& study, const DiagnoseRequest& request, const SayFn& say = {},
+                                 const diag::DiagnoseProgress& progress = {});
+
+}  // namespace dtwin

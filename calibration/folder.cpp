@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/json.hpp"
+#include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "io/provenance.hpp"
@@ -16,49 +17,23 @@
 namespace fs = std::filesystem;
 
 namespace dtwin::calib {
-namespace {
-
-std::string trim(const std::string& s) {
-  std::size_t a = 0, b = s.size();
-  while (a < b && (s[a] == ' ' || s[a] == '\t')) ++a;
-  while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t')) --b;
-  std::string t = s.substr(a, b - a);
-  if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
-  return t;
-}
-
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t c = line.find(',', start);
-    out.push_back(trim(line.substr(start, c == std::string::npos ? std::string::npos : c - start)));
-    if (c == std::string::npos) break;
-    start = c + 1;
-  }
-  return out;
-}
-
-}  // namespace
 
 PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name) {
   PosteriorSample ps;
   ps.path = name;
-  std::istringstream in(text);
-  std::string line;
-  long line_no = 0;
+  CsvReader csv(text, name);
   std::vector<std::string> header;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line_no == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (trim(line).empty()) continue;
-    const std::string at = name + ":" + std::to_string(line_no);
+  while (csv.next()) {
+    const std::string at = csv.where();
+    const auto& f = csv.fields();
     if (header.empty()) {
-      header = splitFields(line);
-      if (header.size() < 3 || header[header.size() - 2] != "tau" || header.back() != "design_index")
+      header.assign(f.begin(), f.end());
+      if (header.size() < 3 || header[header.size() - 2] != "tau" || header.back() != "design_index") {
+        std::string got;
+        for (const auto& h : header) got += (got.empty() ? "" : ",") + h;
         throw InputError(at, "header must be the calibrated parameter names, then tau, then design_index "
-                             "(as `twin calibrate` writes posterior.csv), got '" + line + "'");
+                             "(as `twin calibrate` writes posterior.csv), got '" + got + "'");
+      }
       std::set<std::string> seen;
       for (std::size_t c = 0; c + 2 < header.size(); ++c) {
         if (header[c].empty()) throw InputError(at, "header: column " + std::to_string(c + 1) + " has no name");
@@ -68,23 +43,22 @@ PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& na
       }
       continue;
     }
-    const auto f = splitFields(line);
     if (f.size() != header.size())
       throw InputError(at, "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
     std::vector<double> th(ps.names.size());
     for (std::size_t c = 0; c < ps.names.size(); ++c) {
-      if (!parseNumber(f[c], th[c])) throw InputError(at + ": " + ps.names[c], "must be a number, got '" + f[c] + "'");
-      if (!std::isfinite(th[c])) throw InputError(at + ": " + ps.names[c], "must be finite, got " + f[c]);
+      if (!parseNumber(f[c], th[c])) throw InputError(at + ": " + ps.names[c], "must be a number, got '" + std::string(f[c]) + "'");
+      if (!std::isfinite(th[c])) throw InputError(at + ": " + ps.names[c], "must be finite, got " + std::string(f[c]));
     }
     double tau = 0;
-    const std::string& ft = f[ps.names.size()];
+    const std::string ft(f[ps.names.size()]);
     if (!parseNumber(ft, tau)) throw InputError(at + ": tau", "must be a number, got '" + ft + "'");
     if (!(std::isfinite(tau) && tau > 0)) throw InputError(at + ": tau", "must be a finite number > 0 (a precision), got " + ft);
-    const std::string& fd = f.back();
+    const std::string_view fd = f.back();
     long k = -1;
     const auto r = std::from_chars(fd.data(), fd.data() + fd.size(), k);
     if (r.ec != std::errc() || r.ptr != fd.data() + fd.size() || k < 0)
-      throw InputError(at + ": design_index", "must be an integer >= 0, got '" + fd + "'");
+      throw InputError(at + ": design_index", "must be an integer >= 0, got '" + std::string(fd) + "'");
     ps.theta.push_back(std::move(th));
     ps.tau.push_back(tau);
     ps.design_index.push_back(k);

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 
+#include "common/csv.hpp"
 #include "common/errors.hpp"
+#include "common/files.hpp"
 #include "twin/parameters.hpp"
 #include "twin/simulator.hpp"
 
@@ -17,60 +18,14 @@ namespace {
 
 constexpr const char* kLabColumns[4] = {"repetition", "time_s", "channel", "value"};
 
-std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open file (does it exist and is it readable?)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-/// Lines of `text` with their 1-based numbers; strips a UTF-8 BOM and CR line ends.
-std::vector<std::pair<std::size_t, std::string_view>> splitLines(const std::string& text) {
-  std::vector<std::pair<std::size_t, std::string_view>> out;
-  std::string_view all(text);
-  if (all.substr(0, 3) == "\xEF\xBB\xBF") all.remove_prefix(3);
-  std::size_t line = 0;
-  while (!all.empty()) {
-    ++line;
-    const auto nl = all.find('\n');
-    std::string_view l = all.substr(0, nl);
-    all = nl == std::string_view::npos ? std::string_view() : all.substr(nl + 1);
-    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-    out.push_back({line, l});
-  }
-  return out;
-}
-
-bool isBlank(std::string_view s) {
-  return std::all_of(s.begin(), s.end(), [](char c) { return c == ' ' || c == '\t'; });
-}
-
-/// Comma-separated fields, trimmed of spaces and of one pair of surrounding double quotes.
-std::vector<std::string> splitFields(std::string_view l) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto c = l.find(',', start);
-    std::string_view f = l.substr(start, c == std::string_view::npos ? std::string_view::npos : c - start);
-    while (!f.empty() && (f.front() == ' ' || f.front() == '\t')) f.remove_prefix(1);
-    while (!f.empty() && (f.back() == ' ' || f.back() == '\t')) f.remove_suffix(1);
-    if (f.size() >= 2 && f.front() == '"' && f.back() == '"') f = f.substr(1, f.size() - 2);
-    out.emplace_back(f);
-    if (c == std::string_view::npos) break;
-    start = c + 1;
-  }
-  return out;
-}
-
 /// Parses a whole field of decimal digits as an unsigned integer.
-bool parseUnsigned(const std::string& s, std::uint64_t& v) {
+bool parseUnsigned(std::string_view s, std::uint64_t& v) {
   if (s.empty() || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
   auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   return r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string inQuotes(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 /// The reader's semantic rules, applied record by record in file order.
 class LabChecker {
@@ -167,9 +122,9 @@ std::string checkChannelName(const std::string& channel, const std::vector<Chann
   std::vector<std::string> names;
   for (const auto& k : known) names.push_back(k.name);
   const std::string hint = closestName(channel, names);
-  return "unknown channel " + quoted(channel) +
+  return "unknown channel " + inQuotes(channel) +
          (hint.empty() ? std::string(" (`twin list` shows the channels; names end in their unit, e.g. hub_force_fl_N)")
-                       : " (did you mean " + quoted(hint) + "?)");
+                       : " (did you mean " + inQuotes(hint) + "?)");
 }
 
 void validateLabData(const LabData& data, const std::string& name, const std::vector<Channel>& known) {
@@ -201,14 +156,12 @@ void writeLabCsv(const std::string& path, const LabData& data, const std::vector
 }
 
 LabData parseLabCsv(const std::string& text, const std::string& name, const std::vector<Channel>& known) {
-  const auto lines = splitLines(text);
-  std::size_t k = 0;
-  while (k < lines.size() && isBlank(lines[k].second)) ++k;
-  if (k == lines.size()) throw InputError(name, std::string("empty file (expected the header ") + kLabHeader + ")");
+  CsvReader csv(text, name);
+  if (!csv.next()) throw InputError(name, std::string("empty file (expected the header ") + kLabHeader + ")");
   // Header: exactly the four columns, in any order.
-  const std::size_t header_line = lines[k].first;
-  const std::string hwhere = name + ":" + std::to_string(header_line) + ": header";
-  const auto header = splitFields(lines[k].second);
+  const long header_line = csv.line();
+  const std::string hwhere = csv.where() + ": header";
+  const std::vector<std::string> header(csv.fields().begin(), csv.fields().end());
   int col[4] = {-1, -1, -1, -1};
   for (std::size_t i = 0; i < header.size(); ++i) {
     int which = -1;
@@ -217,35 +170,34 @@ LabData parseLabCsv(const std::string& text, const std::string& name, const std:
     if (which < 0) {
       std::vector<std::string> names(std::begin(kLabColumns), std::end(kLabColumns));
       const std::string hint = closestName(header[i], names);
-      throw InputError(hwhere, "unexpected column " + quoted(header[i]) +
-                                   (hint.empty() ? std::string() : " (did you mean " + quoted(hint) + "?)") +
+      throw InputError(hwhere, "unexpected column " + inQuotes(header[i]) +
+                                   (hint.empty() ? std::string() : " (did you mean " + inQuotes(hint) + "?)") +
                                    "; expected exactly " + kLabHeader);
     }
-    if (col[which] >= 0) throw InputError(hwhere, "column " + quoted(header[i]) + " appears twice");
+    if (col[which] >= 0) throw InputError(hwhere, "column " + inQuotes(header[i]) + " appears twice");
     col[which] = static_cast<int>(i);
   }
   for (int c = 0; c < 4; ++c)
-    if (col[c] < 0) throw InputError(hwhere, "missing column " + quoted(kLabColumns[c]) + "; expected exactly " + kLabHeader);
+    if (col[c] < 0) throw InputError(hwhere, "missing column " + inQuotes(kLabColumns[c]) + "; expected exactly " + kLabHeader);
 
   LabData data;
   LabChecker checker(known);
-  for (++k; k < lines.size(); ++k) {
-    if (isBlank(lines[k].second)) continue;
-    const std::string at = name + ":" + std::to_string(lines[k].first);
-    const auto f = splitFields(lines[k].second);
+  while (csv.next()) {
+    const std::string at = csv.where();
+    const auto& f = csv.fields();
     if (f.size() != 4)
       throw InputError(at, "expected 4 fields (" + std::string(kLabHeader) + "), got " + std::to_string(f.size()));
     LabRecord r;
-    const std::string& rep = f[static_cast<std::size_t>(col[0])];
+    const std::string_view rep = f[static_cast<std::size_t>(col[0])];
     std::uint64_t u = 0;
     if (!parseUnsigned(rep, u) || u == 0 || u > 1000000000ULL)
-      throw InputError(at + ": repetition", "must be a positive integer, got " + quoted(rep));
+      throw InputError(at + ": repetition", "must be a positive integer, got " + inQuotes(rep));
     r.repetition = static_cast<long>(u);
-    const std::string& ts = f[static_cast<std::size_t>(col[1])];
-    if (!parseNumber(ts, r.time_s)) throw InputError(at + ": time_s", "must be a number (seconds), got " + quoted(ts));
-    r.channel = f[static_cast<std::size_t>(col[2])];
-    const std::string& vs = f[static_cast<std::size_t>(col[3])];
-    if (!parseNumber(vs, r.value)) throw InputError(at + ": value", "must be a number, got " + quoted(vs));
+    const std::string_view ts = f[static_cast<std::size_t>(col[1])];
+    if (!parseNumber(ts, r.time_s)) throw InputError(at + ": time_s", "must be a number (seconds), got " + inQuotes(ts));
+    r.channel = std::string(f[static_cast<std::size_t>(col[2])]);
+    const std::string_view vs = f[static_cast<std::size_t>(col[3])];
+    if (!parseNumber(vs, r.value)) throw InputError(at + ": value", "must be a number, got " + inQuotes(vs));
     checker.check(r, at);
     data.records.push_back(std::move(r));
   }
@@ -254,7 +206,7 @@ LabData parseLabCsv(const std::string& text, const std::string& name, const std:
 }
 
 LabData readLabCsv(const std::string& path, const std::vector<Channel>& known) {
-  return parseLabCsv(readWholeFile(path), path, known);
+  return parseLabCsv(readTextFile(path), path, known);
 }
 
 // ------------------------------------------------------------------------------------ field
@@ -298,14 +250,12 @@ std::string fieldCsvText(const FieldData& d) {
 void writeFieldCsv(const std::string& path, const FieldData& data) { writeFileAtomic(path, fieldCsvText(data)); }
 
 FieldData parseFieldCsv(const std::string& text, const std::string& name) {
-  const auto lines = splitLines(text);
-  std::size_t k = 0;
-  while (k < lines.size() && isBlank(lines[k].second)) ++k;
-  if (k == lines.size()) throw InputError(name, "empty file (expected the header run,road_seed,t_<seconds>,...)");
-  const std::string hwhere = name + ":" + std::to_string(lines[k].first) + ": header";
-  const auto header = splitFields(lines[k].second);
+  CsvReader csv(text, name);
+  if (!csv.next()) throw InputError(name, "empty file (expected the header run,road_seed,t_<seconds>,...)");
+  const std::string hwhere = csv.where() + ": header";
+  const std::vector<std::string> header(csv.fields().begin(), csv.fields().end());
   if (header.empty() || header[0] != "run")
-    throw InputError(hwhere, "first column must be 'run', got " + quoted(header.empty() ? "" : header[0]) +
+    throw InputError(hwhere, "first column must be 'run', got " + inQuotes(header.empty() ? "" : header[0]) +
                                  " (expected run,road_seed,t_<seconds>,...)");
   FieldData d;
   const bool has_seed = header.size() > 1 && header[1] == "road_seed";
@@ -314,37 +264,36 @@ FieldData parseFieldCsv(const std::string& text, const std::string& name) {
     const std::string& h = header[i];
     double t = 0;
     if (h.size() < 3 || h.compare(0, 2, "t_") != 0 || !parseNumber(h.substr(2), t))
-      throw InputError(hwhere, "column " + std::to_string(i + 1) + " must be a time column 't_<seconds>' (e.g. t_10.000), got " + quoted(h));
-    if (!std::isfinite(t) || t < 0) throw InputError(hwhere, "column " + quoted(h) + ": time must be finite and >= 0");
+      throw InputError(hwhere, "column " + std::to_string(i + 1) + " must be a time column 't_<seconds>' (e.g. t_10.000), got " + inQuotes(h));
+    if (!std::isfinite(t) || t < 0) throw InputError(hwhere, "column " + inQuotes(h) + ": time must be finite and >= 0");
     if (!d.times_s.empty() && !(t > d.times_s.back()))
-      throw InputError(hwhere, "column " + quoted(h) + ": times must increase from column to column (" + formatExact(t) +
+      throw InputError(hwhere, "column " + inQuotes(h) + ": times must increase from column to column (" + formatExact(t) +
                                    " after " + formatExact(d.times_s.back()) + ")");
     d.times_s.push_back(t);
   }
   if (d.times_s.empty()) throw InputError(hwhere, "no time columns 't_<seconds>' after " + std::string(has_seed ? "run,road_seed" : "run"));
   std::set<long> seen;
-  for (++k; k < lines.size(); ++k) {
-    if (isBlank(lines[k].second)) continue;
-    const std::string at = name + ":" + std::to_string(lines[k].first);
-    const auto f = splitFields(lines[k].second);
+  while (csv.next()) {
+    const std::string at = csv.where();
+    const auto& f = csv.fields();
     if (f.size() != header.size())
       throw InputError(at, "expected " + std::to_string(header.size()) + " fields (one per header column), got " + std::to_string(f.size()));
     std::uint64_t u = 0;
-    if (!parseUnsigned(f[0], u) || u == 0 || u > 1000000000ULL) throw InputError(at + ": run", "must be a positive integer, got " + quoted(f[0]));
-    if (!seen.insert(static_cast<long>(u)).second) throw InputError(at + ": run", "run " + f[0] + " appears twice");
+    if (!parseUnsigned(f[0], u) || u == 0 || u > 1000000000ULL) throw InputError(at + ": run", "must be a positive integer, got " + inQuotes(f[0]));
+    if (!seen.insert(static_cast<long>(u)).second) throw InputError(at + ": run", "run " + std::string(f[0]) + " appears twice");
     d.runs.push_back(static_cast<long>(u));
     if (has_seed) {
       std::uint64_t s = 0;
-      if (!parseUnsigned(f[1], s)) throw InputError(at + ": road_seed", "must be an integer in [0, 2^64), got " + quoted(f[1]));
+      if (!parseUnsigned(f[1], s)) throw InputError(at + ": road_seed", "must be an integer in [0, 2^64), got " + inQuotes(f[1]));
       d.road_seeds.push_back(s);
     }
     for (std::size_t i = first; i < f.size(); ++i) {
       double v = 0;
-      if (!parseNumber(f[i], v)) throw InputError(at + ": " + header[i], "must be a number, got " + quoted(f[i]));
-      if (!std::isfinite(v)) throw InputError(at + ": " + header[i], "must be finite, got " + f[i]);
+      if (!parseNumber(f[i], v)) throw InputError(at + ": " + header[i], "must be a number, got " + inQuotes(f[i]));
+      if (!std::isfinite(v)) throw InputError(at + ": " + header[i], "must be finite, got " + std::string(f[i]));
       // The file does not name its channel: the widest plausible range of any unit.
       if (std::abs(v) > plausibleLimit(""))
-        throw InputError(at + ": " + header[i], "must lie in [-1e12, 1e12] (the plausible range of any channel), got " + f[i]);
+        throw InputError(at + ": " + header[i], "must lie in [-1e12, 1e12] (the plausible range of any channel), got " + std::string(f[i]));
       d.values.push_back(v);
     }
   }
@@ -352,6 +301,6 @@ FieldData parseFieldCsv(const std::string& text, const std::string& name) {
   return d;
 }
 
-FieldData readFieldCsv(const std::string& path) { return parseFieldCsv(readWholeFile(path), path); }
+FieldData readFieldCsv(const std::string& path) { return parseFieldCsv(readTextFile(path), path); }
 
 }  // namespace dtwin

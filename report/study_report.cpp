@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -14,6 +13,8 @@
 #include "calibration/summary.hpp"
 #include "report/svg_plot.hpp"
 #include "classification/synthesis.hpp"
+#include "common/csv.hpp"
+#include "common/files.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
@@ -62,15 +63,6 @@ std::string text(const json& j) {
   if (j.is_string()) return j.get<std::string>();
   if (j.is_number_float()) return num(j.get<double>());
   return j.dump();
-}
-
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cell;
-  std::stringstream ss(line);
-  while (std::getline(ss, cell, ',')) out.push_back(cell);
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
 }
 
 /// What the sections of the study report draw into: the plotter, the page body (sections 1–5),
@@ -280,12 +272,11 @@ std::vector<std::string> comparedIds(const json& csum) {
 /// (classification/records.csv, columns prob_<id>).
 void selectionBoxplot(ReportPage& pg, const fs::path& dir, const std::vector<std::string>& ids) {
   const fs::path rec_path = dir / "classification" / "records.csv";
-  std::ifstream in(rec_path);
-  if (!in) throw InputError(rec_path.string(), "cannot be read (is this a `twin study` folder?)");
-  std::string line;
-  std::getline(in, line);
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  const auto header = splitCsv(line);
+  if (!fs::exists(rec_path)) throw InputError(rec_path.string(), "cannot be read (is this a `twin study` folder?)");
+  const std::string text = readTextFile(rec_path.string());
+  CsvReader csv(text, rec_path.string());
+  if (!csv.next()) throw InputError(rec_path.string(), "has no records");
+  const std::vector<std::string> header(csv.fields().begin(), csv.fields().end());
   std::vector<std::size_t> col;
   for (const auto& id : ids) {
     const auto it = std::find(header.begin(), header.end(), "prob_" + id);
@@ -293,17 +284,14 @@ void selectionBoxplot(ReportPage& pg, const fs::path& dir, const std::vector<std
     col.push_back(static_cast<std::size_t>(it - header.begin()));
   }
   std::ostringstream d;
-  std::size_t n_rec = 0, lineno = 1;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    const auto cells = splitCsv(line);
+  std::size_t n_rec = 0;
+  while (csv.next()) {
+    const auto& cells = csv.fields();
     for (std::size_t c = 0; c < col.size(); ++c) {
-      const std::string cell = col[c] < cells.size() ? cells[col[c]] : "";
+      const std::string_view cell = col[c] < cells.size() ? cells[col[c]] : std::string_view();
       double v = 0;
       if (!parseNumber(cell, v) || !std::isfinite(v))
-        throw InputError(rec_path.string() + ":" + std::to_string(lineno), "prob_" + ids[c] + " is not a number: '" + cell + "'");
+        throw InputError(csv.where(), "prob_" + ids[c] + " is not a number: '" + std::string(cell) + "'");
       d << (c ? " " : "") << full(v);
     }
     d << '\n';

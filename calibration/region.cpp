@@ -494,6 +494,32 @@ Eigen::MatrixXd ridgeKernel(const RidgeTrace& tr, std::size_t q, const Eigen::Ve
   const double ell = 0.5 * std::max(tr.t[q] - t_prev, t_next - tr.t[q]);
   return ell * ell * g * g.transpose() + tr.cross[q];
 }
+/// The frame of one ridge trace along axis `i`: the optimum in unit coordinates (z0), the traced
+/// axis (a), the other axes (B) and their central-difference steps (h, 10 % of their crossings).
+struct RidgeFrame {
+  Eigen::VectorXd z0, a, h;
+  Eigen::MatrixXd B;
+};
+RidgeFrame ridgeFrame(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps, int i) {
+  const auto& p = plan.problem;
+  const int d = static_cast<int>(p.theta_hat.size());
+  RidgeFrame f;
+  f.z0.resize(d);
+  for (int j = 0; j < d; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    f.z0(j) = (p.theta_hat[k] - p.lower[k]) / (p.upper[k] - p.lower[k]);
+  }
+  f.a = plan.axes.col(i);
+  f.B.resize(d, d - 1);
+  f.h.resize(d - 1);
+  for (int j = 0, c = 0; j < d; ++j) {
+    if (j == i) continue;
+    f.B.col(c) = plan.axes.col(j);
+    f.h(c) = std::max(0.05 * (crossingOf(plan, sweeps, j, -1) + crossingOf(plan, sweeps, j, +1)), 1e-9);
+    ++c;
+  }
+  return f;
+}
 }  // namespace
 
 RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
@@ -507,21 +533,11 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
   tr.axis = ridge[static_cast<std::size_t>(index / 2)];
   tr.direction = index % 2 == 0 ? -1 : +1;
   const int i = tr.axis, s = tr.direction;
-  Eigen::VectorXd z0(d);
-  for (int j = 0; j < d; ++j) {
-    const auto k = static_cast<std::size_t>(j);
-    z0(j) = (p.theta_hat[k] - p.lower[k]) / (p.upper[k] - p.lower[k]);
-  }
-  const Eigen::VectorXd a = plan.axes.col(i);
-  // B: the other axes; h: their central-difference steps (10 % of their crossings).
-  Eigen::MatrixXd B(d, d - 1);
-  Eigen::VectorXd h(d - 1);
-  for (int j = 0, c = 0; j < d; ++j) {
-    if (j == i) continue;
-    B.col(c) = plan.axes.col(j);
-    h(c) = std::max(0.05 * (crossingOf(plan, sweeps, j, -1) + crossingOf(plan, sweeps, j, +1)), 1e-9);
-    ++c;
-  }
+  const RidgeFrame frame = ridgeFrame(plan, sweeps, i);
+  const Eigen::VectorXd& z0 = frame.z0;
+  const Eigen::VectorXd& a = frame.a;
+  const Eigen::MatrixXd& B = frame.B;
+  const Eigen::VectorXd& h = frame.h;
   const double T = p.threshold();
   const double sigma2 = p.sse_min / p.n_data;
   const double reach = s > 0 ? plan.reach_upper(i) : plan.reach_lower(i);

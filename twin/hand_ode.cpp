@@ -1,5 +1,7 @@
 #include "twin/hand_ode.hpp"
 
+#include "twin/ros34pw2_core.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,215 +17,35 @@
 namespace dtwin {
 
 // ----------------------------------------------------------------------------- the stepper
-namespace {
+/// The ROS34PW2 core of RosenbrockIntegrator (twin/ros34pw2_core.hpp) over a function: the same
+/// stage equations, error norm (unit changes 1, as Simbody's weights are for the vehicle), step-
+/// size rule and Jacobian reuse, so that the two integrations differ only in how f is evaluated.
+struct Ros34pw2Stepper::Impl : rosenbrock_detail::Ros34pw2Core {
+  Rhs rhs_fn;
 
-constexpr int kHandStages = rosenbrock_detail::Tableau::kStages;
-
-std::string handFmt(double v) { return formatNumber(v, 10); }
-
-}  // namespace
-
-/// The algorithm of RosenbrockIntegrator::Impl (rosenbrock.cpp), line for line where it matters:
-/// the stage equations, the weighted RMS error norm, the step-size rule (factor in [0.2, 5],
-/// 0.9 err^(-1/3), no growth after a rejection, two equal steps before t_stop), the forward-
-/// difference Jacobian (increment sqrt(eps) max(|y_j|, 1)) reused for jacobian_max_age accepted
-/// steps and refreshed after jacobian_refresh_rejections rejections of one step.
-struct Ros34pw2Stepper::Impl {
-  Rhs f;
-  RosenbrockOptions opt;
-  /// The same transformed tableau as RosenbrockIntegrator (rosenbrock_detail::Transformed of
-  /// ros34pw2()), so that the two steppers cannot drift apart.
-  rosenbrock_detail::Transformed tab{rosenbrock_detail::ros34pw2()};
-  bool initialized = false;
-  int n = 0;
-  double t = 0, hmax = 0, h_prop = 0;
-  bool last_rejected = false;
-  Eigen::VectorXd y0, f0, fprev, ynew, err, tmp, rhs, fs, ft;
-  std::array<Eigen::VectorXd, kHandStages> u;
-  Eigen::MatrixXd J, W;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-  bool have_jac = false, jac_fresh = false;
-  int jac_age = 0;
-  double h_factored = -1;
-  long n_steps = 0, n_attempts = 0, n_evals = 0, n_jacs = 0;
-
-  Impl(Rhs fn, RosenbrockOptions o) : f(std::move(fn)), opt(o) {
-    if (!f) throw std::invalid_argument("Ros34pw2Stepper: no right-hand side");
-    if (!(opt.accuracy > 0 && opt.accuracy < 1))
-      throw std::invalid_argument("Ros34pw2Stepper: accuracy must be in (0, 1), got " + handFmt(opt.accuracy));
-    if (!(opt.max_step_s > 0)) throw std::invalid_argument("Ros34pw2Stepper: max_step_s must be > 0");
-    if (!(opt.initial_step_s > 0)) throw std::invalid_argument("Ros34pw2Stepper: initial_step_s must be > 0");
-    if (opt.jacobian_max_age < 0 || opt.jacobian_refresh_rejections < 1 || opt.max_steps <= 0 || !(opt.fixed_step_s >= 0))
-      throw std::invalid_argument("Ros34pw2Stepper: jacobian_max_age >= 0, jacobian_refresh_rejections >= 1, max_steps > 0, "
-                                  "fixed_step_s >= 0");
-    hmax = opt.max_step_s;
+  Impl(Rhs fn, RosenbrockOptions o) : Ros34pw2Core(o, "Ros34pw2Stepper"), rhs_fn(std::move(fn)) {
+    if (!rhs_fn) throw std::invalid_argument("Ros34pw2Stepper: no right-hand side");
   }
 
-  void evaluate(double tt, const Eigen::VectorXd& y, Eigen::VectorXd& out) {
+  void evaluate(double tt, const Eigen::VectorXd& y, Eigen::VectorXd& out) override {
     ++n_evals;
-    f(tt, y, out);
+    rhs_fn(tt, y, out);
   }
 
   void initialize(double t0, const Eigen::VectorXd& y) {
-    n = static_cast<int>(y.size());
-    t = t0;
-    for (Eigen::VectorXd* v : {&y0, &f0, &fprev, &ynew, &err, &tmp, &rhs, &fs, &ft}) v->setZero(n);
-    for (auto& v : u) v.setZero(n);
-    J.setZero(n, n);
-    W.setZero(n, n);
-    lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
-    n_steps = n_attempts = n_evals = n_jacs = 0;
-    have_jac = jac_fresh = false;
-    jac_age = 0;
-    h_factored = -1;
-    last_rejected = false;
-    h_prop = opt.fixed_step_s > 0 ? opt.fixed_step_s : opt.initial_step_s;
+    reset(static_cast<int>(y.size()), t0);
     y0 = y;
-    if (!y0.allFinite()) throw std::runtime_error("Ros34pw2Stepper: initial state is not finite at t = " + handFmt(t) + " s");
     evaluate(t, y0, f0);
-    if (!f0.allFinite()) throw std::runtime_error("Ros34pw2Stepper: non-finite derivative at the initial state, t = " + handFmt(t) + " s");
-    initialized = true;
+    checkStart();
   }
-
-  void computeJacobian() {
-    const double sq = std::sqrt(std::numeric_limits<double>::epsilon());
-    tmp = y0;
-    for (int j = 0; j < n; ++j) {
-      const double yj = y0[j];
-      const double yp = yj + sq * std::max(std::abs(yj), 1.0);  // unit 1 (see the header)
-      const double d = yp - yj;
-      tmp[j] = yp;
-      evaluate(t, tmp, fs);
-      J.col(j) = (fs - f0) / d;
-      tmp[j] = yj;
-    }
-    if (opt.time_derivative) {
-      const double tp = t + sq * std::max(std::abs(t), 1.0);
-      evaluate(tp, y0, fs);
-      ft = (fs - f0) / (tp - t);
-    }
-    if (!J.allFinite() || !ft.allFinite())
-      throw std::runtime_error("Ros34pw2Stepper: the finite-difference Jacobian is not finite at t = " + handFmt(t) + " s");
-    ++n_jacs;
-    have_jac = jac_fresh = true;
-    jac_age = 0;
-    h_factored = -1;
-  }
-
-  bool attempt(double h) {
-    if (h != h_factored) {
-      W.noalias() = (-h * tab.gamma) * J;
-      W.diagonal().array() += 1.0;
-      lu.compute(W);
-      h_factored = h;
-    }
-    const double hg = h * tab.gamma;
-    for (int i = 0; i < kHandStages; ++i) {
-      const Eigen::VectorXd* fi = &f0;
-      if (i > 0) {
-        tmp = y0;
-        for (int j = 0; j < i; ++j) tmp.noalias() += tab.at[i][j] * u[j];
-        evaluate(t + tab.alpha[i] * h, tmp, fs);
-        if (!fs.allFinite()) return false;
-        fi = &fs;
-      }
-      rhs = *fi;
-      for (int j = 0; j < i; ++j) rhs.noalias() += (tab.c[i][j] / h) * u[j];
-      if (opt.time_derivative && have_jac) rhs.noalias() += (tab.gsum[i] * h) * ft;
-      rhs *= hg;
-      u[i].noalias() = lu.solve(rhs);
-    }
-    ynew = y0;
-    err.setZero();
-    for (int i = 0; i < kHandStages; ++i) {
-      ynew.noalias() += tab.m[i] * u[i];
-      err.noalias() += tab.e[i] * u[i];
-    }
-    return ynew.allFinite() && err.allFinite();
-  }
-
-  double errorNorm() const {
-    const double rtol = opt.accuracy;
-    double s = 0;
-    for (int i = 0; i < n; ++i) {
-      const double sc = rtol + rtol * std::max(std::abs(y0[i]), std::abs(ynew[i]));
-      const double r = err[i] / sc;
-      s += r * r;
-    }
-    return n > 0 ? std::sqrt(s / n) : 0.0;
-  }
-
-  /// Evaluates f at the step end; false (f0 restored) when it is not finite.
-  bool commit(double t_new) {
-    fprev.swap(f0);
-    evaluate(t_new, ynew, f0);
-    if (f0.allFinite()) return true;
-    f0.swap(fprev);
-    return false;
-  }
-
-  void step(double t_stop);
 };
-
-void Ros34pw2Stepper::Impl::step(double t_stop) {
-  if (!initialized) throw std::logic_error("Ros34pw2Stepper: step() before initialize()");
-  if (!(t_stop > t)) throw std::invalid_argument("Ros34pw2Stepper: t_stop = " + handFmt(t_stop) + " is not after " + handFmt(t));
-  if (n_steps >= opt.max_steps) throw std::runtime_error("Ros34pw2Stepper: more than " + std::to_string(opt.max_steps) + " steps");
-  const bool fixed = opt.fixed_step_s > 0;
-  int rejections = 0;
-  for (;;) {
-    double h = fixed ? opt.fixed_step_s : std::min(h_prop, hmax);
-    const double remaining = t_stop - t;
-    bool land = false, limited = false;
-    if (remaining <= h * (1 + 1e-12)) {
-      land = true;
-      limited = remaining < h;
-      h = remaining;
-    } else if (!fixed && remaining < 2 * h) {
-      h = 0.5 * remaining;  // two equal steps rather than a long one and a sliver
-      limited = true;
-    }
-    if (!have_jac || (jac_age >= opt.jacobian_max_age && !jac_fresh)) computeJacobian();
-    ++n_attempts;
-    const bool ok = attempt(h);
-    const double e = ok ? (fixed ? 0.0 : errorNorm()) : std::numeric_limits<double>::infinity();
-    const double t_new = land ? t_stop : t + h;
-    const bool passed = ok && std::isfinite(e) && e <= 1.0;
-    if (passed && commit(t_new)) {
-      y0.swap(ynew);
-      t = t_new;
-      ++n_steps;
-      ++jac_age;
-      jac_fresh = false;
-      if (!fixed) {
-        double fac = e == 0 ? 5.0 : std::min(5.0, std::max(0.2, 0.9 * std::pow(e, -1.0 / 3.0)));
-        if (last_rejected) fac = std::min(fac, 1.0);
-        h_prop = limited ? std::max(h_prop, h * fac) : h * fac;
-      }
-      last_rejected = false;
-      return;
-    }
-    if (fixed) throw std::runtime_error("Ros34pw2Stepper: non-finite state or derivative at t = " + handFmt(t) + " s (fixed step)");
-    const bool nonfinite = !ok || !std::isfinite(e) || passed;
-    h_prop = h * (nonfinite ? 0.2 : std::min(0.9, std::max(0.2, 0.9 * std::pow(e, -1.0 / 3.0))));
-    last_rejected = true;
-    if (h_prop < 64 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t)))
-      throw std::runtime_error("Ros34pw2Stepper: step size underflow at t = " + handFmt(t) + " s" +
-                               (nonfinite ? " (non-finite derivative)" : " (error norm " + handFmt(e) + ")"));
-    ++rejections;
-    if (!jac_fresh && (rejections >= opt.jacobian_refresh_rejections || nonfinite)) computeJacobian();
-  }
-}
 
 Ros34pw2Stepper::Ros34pw2Stepper(Rhs f, RosenbrockOptions options) : impl_(std::make_unique<Impl>(std::move(f), options)) {}
 Ros34pw2Stepper::~Ros34pw2Stepper() = default;
 Ros34pw2Stepper::Ros34pw2Stepper(Ros34pw2Stepper&&) noexcept = default;
 Ros34pw2Stepper& Ros34pw2Stepper::operator=(Ros34pw2Stepper&&) noexcept = default;
 void Ros34pw2Stepper::initialize(double t0, const Eigen::VectorXd& y0) { impl_->initialize(t0, y0); }
-void Ros34pw2Stepper::setMaximumStepSize(double h) {
-  if (!(h > 0)) throw std::invalid_argument("Ros34pw2Stepper: maximum step size must be > 0, got " + handFmt(h));
-  impl_->hmax = h;
-}
+void Ros34pw2Stepper::setMaximumStepSize(double h) { impl_->setMaximumStepSize(h); }
 void Ros34pw2Stepper::step(double t_stop) { impl_->step(t_stop); }
 double Ros34pw2Stepper::time() const { return impl_->t; }
 const Eigen::VectorXd& Ros34pw2Stepper::state() const { return impl_->y0; }

@@ -28,12 +28,12 @@
 
 namespace dtwin {
 
-/// ROS34PW2 over y' = f(t, y): the algorithm of RosenbrockIntegrator (twin/rosenbrock.hpp) with
-/// every option of RosenbrockOptions, for a right-hand side that is a function, not a
-/// SimTK::System. Unit changes ("atol_i = accuracy * unit_i") are all 1, which is what Simbody's
-/// weights are for the vehicle's system (State::getUWeights() is 1 for every mobility), so the
-/// error norm is the same. Counts: an evaluation is one call of f; an accepted step costs 4, a
-/// rejected one 3, a Jacobian n (+ 1 with time_derivative), initialize() 1.
+/// ROS34PW2 over y' = f(t, y): RosenbrockIntegrator's own core (twin/ros34pw2_core.hpp, the
+/// same code) with every option of RosenbrockOptions, for a right-hand side that is a function,
+/// not a SimTK::System. Unit changes ("atol_i = accuracy * unit_i") are all 1, which is what
+/// Simbody's weights are for the vehicle's system (State::getUWeights() is 1 for every mobility),
+/// so the error norm is the same. Counts: an evaluation is one call of f; an accepted step costs
+/// 4, a rejected one 3, a Jacobian n (+ 1 with time_derivative), initialize() 1.
 class Ros34pw2Stepper {
  public:
   using Rhs = std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot)>;

@@ -276,15 +276,18 @@ TEST(Diagnose16, ATermOnlyTheRegressionFindsIsProposedAppliedAndCutsTheError) {
   EXPECT_EQ(best.force, "a * (q * v)") << r.text();
   EXPECT_NEAR(best.coefficient / 3e4, 1.0, 0.3) << r.text();  // linearised at the base optimum
   EXPECT_LT(best.delta_bic, -o.bic_strong) << r.text();
-  // Pasted as a user-defined effect (a name of its own in this process) and applied.
+  // Pasted as a user-defined effect of the study and applied.
   ProposedTerm pasted = best;
   pasted.name = "diag16_proposed_term";
   const fs::path toml = fs::path(dir) / "pasted.toml";
   dtwin_test::writeText(toml, pasted.toml());
-  ASSERT_EQ(loadUserEffects(toml.string()).size(), 1u);
+  const auto pasted_specs = loadUserEffects(toml.string());
+  ASSERT_EQ(pasted_specs.size(), 1u);
+  Study with = s;  // the pasted term joins this study's catalogue only
+  with.addUserEffects(pasted_specs);
   o.apply = {pasted.name};
   o.effects = {pasted.name};  // the catalogue: only the pasted term (the rest were screened above)
-  const auto a = diagnose(s, s.assemblies().front(), data, {}, o, dir);
+  const auto a = diagnose(with, with.assemblies().front(), data, {}, o, dir);
   ASSERT_EQ(a.steps.size(), 2u) << a.text();
   EXPECT_LE(a.steps[1].comparison.systematic_rms_sd, 0.5 * a.steps[0].comparison.systematic_rms_sd) << a.text();
 }

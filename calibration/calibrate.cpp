@@ -16,6 +16,7 @@
 #include "calibration/design_journal.hpp"
 #include "calibration/lhs.hpp"
 #include "calibration/subspace_lm.hpp"
+#include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
@@ -597,11 +598,7 @@ nlohmann::json readStage(const fs::path& p, const std::string& fingerprint) {
   return j;
 }
 
-std::string hex(std::uint64_t v) {
-  char b[17];
-  std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(v));
-  return b;
-}
+std::string hex(std::uint64_t v) { return formatPrintf("%016llx", static_cast<unsigned long long>(v)); }
 
 std::vector<double> packStart(const StartResult& r) {
   return Packer().put(r.start).put(r.theta).put(r.sse).put(r.evaluations).put(r.nonfinite_evaluations).put(r.status).take();

@@ -79,13 +79,11 @@ std::string posteriorCsv(const std::vector<std::string>& names, const std::vecto
   std::string csv;
   for (const auto& nm : names) csv += nm + ",";
   csv += "tau,design_index\n";
-  char buf[64];
   for (std::size_t t = 0; t < tau.size(); ++t) {
     DTWIN_CHECK(theta[t].size() == names.size(), "posterior row of the wrong length");
     for (double v : theta[t]) csv += formatExact(v) + ",";
     csv += formatExact(tau[t]);
-    std::snprintf(buf, sizeof buf, ",%ld\n", design_index[t]);
-    csv += buf;
+    csv += "," + std::to_string(design_index[t]) + "\n";
   }
   return csv;
 }

@@ -56,10 +56,8 @@ void FieldClassifyOptions::validate() const {
 
 std::vector<std::pair<std::string, double>> parsePriorList(const std::string& text, const std::string& where) {
   std::vector<std::pair<std::string, double>> out;
-  std::stringstream ss(text);
-  std::string item;
   std::set<std::string> seen;
-  while (std::getline(ss, item, ',')) {
+  for (const auto& item : splitOn(text, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string::npos || eq == 0)
       throw InputError(where, "expects ID=PROBABILITY,... (e.g. M1=0.4,M2=0.2,M3=0.2,M4=0.2), got '" + item + "'");

@@ -18,14 +18,12 @@ namespace {
 // `v` with 1 decimal, or with more until the printed value still satisfies `ok`.
 template <class Ok>
 std::string decimals(double v, Ok ok) {
-  char buf[64];
   for (int d = 1; d <= 12; ++d) {
-    std::snprintf(buf, sizeof buf, "%.*f", d, v);
+    const std::string text = formatFixed(v, d);
     double back = 0;
-    if (parseNumber(buf, back) && ok(back)) return buf;
+    if (parseNumber(text, back) && ok(back)) return text;
   }
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return formatNumber(v, 17);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "report/diagnosis_report.hpp"
 #include "study/diagnose.hpp"
 
@@ -55,16 +56,9 @@ struct DiagnoseConfig {
 
 std::vector<std::string> splitCommas(const std::vector<std::string>& v) {
   std::vector<std::string> out;
-  for (const auto& s : v) {
-    std::size_t a = 0;
-    while (a <= s.size()) {
-      const auto b = s.find(',', a);
-      const std::string part = s.substr(a, b == std::string::npos ? std::string::npos : b - a);
-      if (!part.empty()) out.push_back(part);
-      if (b == std::string::npos) break;
-      a = b + 1;
-    }
-  }
+  for (const auto& s : v)
+    for (auto& part : splitOn(s, ','))
+      if (!part.empty()) out.push_back(std::move(part));
   return out;
 }
 

@@ -40,6 +40,17 @@ bool parseNumber(std::string_view s, double& v) {
   return r.ec == std::errc() && r.ptr == e;
 }
 
+std::vector<std::string> splitOn(std::string_view text, char sep) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t at = text.find(sep, start);
+    parts.emplace_back(text.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start));
+    if (at == std::string_view::npos) return parts;
+    start = at + 1;
+  }
+}
+
 std::string formatExact(double v) {
   if (std::isnan(v)) return "nan";  // to_chars would write "-nan" for a negative NaN
   char buf[64];

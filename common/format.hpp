@@ -2,6 +2,7 @@
 // Numbers as text for messages, tables and logs (one convention for the whole project).
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace dtwin {
 
@@ -21,6 +22,11 @@ std::string formatPrintf(const char* format, ...) __attribute__((format(printf, 
 /// '+', inf and nan accepted). False when `s` is empty or has anything around the number (trim
 /// spaces first). The one number parser of the project: text from users' files and flags.
 bool parseNumber(std::string_view s, double& v);
+
+/// The parts of `text` between the separators `sep`, empty ones included ("a,,b" gives a, "", b;
+/// "a," gives a, ""; "" gives one empty part): a list from a flag or a field, never silently
+/// shortened. Callers trim or refuse empty parts as their rule says.
+std::vector<std::string> splitOn(std::string_view text, char sep);
 
 /// `text` on one line: every run of white space (line ends included) becomes one space, and the
 /// ends are trimmed. Messages from other libraries (Simbody's span several lines) go through it.

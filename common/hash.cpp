@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "common/format.hpp"
+
 namespace dtwin {
 
 std::uint64_t fnv1a64(const std::string& bytes) {
@@ -14,9 +16,7 @@ std::uint64_t fnv1a64(const std::string& bytes) {
 }
 
 std::string hexId(std::uint64_t v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "0x%016llX", static_cast<unsigned long long>(v));
-  return b;
+  return formatPrintf("0x%016llX", static_cast<unsigned long long>(v));
 }
 
 }  // namespace dtwin

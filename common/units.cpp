@@ -1,11 +1,11 @@
 #include "common/units.hpp"
 
-#include <charconv>
-
 #include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
+
+#include "common/format.hpp"
 
 namespace dtwin {
 
@@ -117,9 +117,7 @@ class UnitParser {
 
 std::string power(const char* sym, double e) {
   if (std::abs(e - 1.0) < 1e-9) return sym;
-  char b[48];
-  std::snprintf(b, sizeof b, "%s^%.6g", sym, e);
-  return b;
+  return formatPrintf("%s^%.6g", sym, e);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/validate.hpp"
 #include "twin/parallel.hpp"
 
@@ -413,21 +414,16 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
 }
 
 std::string comparisonTable(const Comparison& c) {
-  std::string s;
-  char buf[512];
-  std::snprintf(buf, sizeof buf, "%-28s %-12s %-20s %10s %8s %10s %9s %10s\n", "data set", "scenario", "channel", "RMS", "NRMSE",
-                "max |err|", "coverage", "syst. RMS");
-  s += buf;
+  std::string s = formatPrintf("%-28s %-12s %-20s %10s %8s %10s %9s %10s\n", "data set", "scenario", "channel", "RMS", "NRMSE",
+                               "max |err|", "coverage", "syst. RMS");
   for (const auto& x : c.series) {
     std::string name = x.data_set;
     if (name.size() > 28) name = "…" + name.substr(name.size() - 27);
-    std::snprintf(buf, sizeof buf, "%-28s %-12s %-20s %10.4g %8.4f %10.4g %8.1f%% %10.4g\n", name.c_str(), x.scenario.c_str(),
-                  x.channel.c_str(), x.rms, x.nrmse, x.max_abs, 100.0 * x.coverage, x.systematic_rms);
-    s += buf;
+    s += formatPrintf("%-28s %-12s %-20s %10.4g %8.4f %10.4g %8.1f%% %10.4g\n", name.c_str(), x.scenario.c_str(), x.channel.c_str(),
+                      x.rms, x.nrmse, x.max_abs, 100.0 * x.coverage, x.systematic_rms);
   }
-  std::snprintf(buf, sizeof buf, "lack of fit: chi2 = %.1f on %ld dof (z = %.1f, p = %.2g); systematic residual %.3f noise sd\n",
-                c.lack_of_fit, c.lack_of_fit_dof, c.lack_of_fit_z, c.lack_of_fit_p, c.systematic_rms_sd);
-  s += buf;
+  s += formatPrintf("lack of fit: chi2 = %.1f on %ld dof (z = %.1f, p = %.2g); systematic residual %.3f noise sd\n", c.lack_of_fit,
+                    c.lack_of_fit_dof, c.lack_of_fit_z, c.lack_of_fit_p, c.systematic_rms_sd);
   return s;
 }
 

@@ -1205,15 +1205,12 @@ std::string DiagnosisResult::text() const {
   }
   if (!steps.empty()) {
     s += "\nBefore/after (effects added in turn):\n";
-    char b[256];
-    std::snprintf(b, sizeof b, "  %-40s %12s %12s %10s %12s\n", "model", "syst. RMS/σ", "coverage", "log evid.", "Δ log evid.");
-    s += b;
+    s += formatPrintf("  %-40s %12s %12s %10s %12s\n", "model", "syst. RMS/σ", "coverage", "log evid.", "Δ log evid.");
     for (const auto& st : steps) {
       double cov = 0.0;
       for (const auto& x : st.comparison.series) cov += x.coverage / static_cast<double>(st.comparison.series.size());
-      std::snprintf(b, sizeof b, "  %-40s %12.3f %11.1f%% %10.1f %12.1f\n", st.label.c_str(), st.comparison.systematic_rms_sd,
-                    100 * cov, st.log_evidence, st.log_evidence - steps.front().log_evidence);
-      s += b;
+      s += formatPrintf("  %-40s %12.3f %11.1f%% %10.1f %12.1f\n", st.label.c_str(), st.comparison.systematic_rms_sd, 100 * cov,
+                        st.log_evidence, st.log_evidence - steps.front().log_evidence);
     }
     s += "\n  Per channel (RMS, NRMSE):\n";
     for (std::size_t i = 0; i < steps.front().comparison.series.size(); ++i) {

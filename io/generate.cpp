@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 
+#include "common/format.hpp"
 #include "subsystems/effect.hpp"
 #include "common/errors.hpp"
 #include "common/names.hpp"
@@ -267,13 +268,11 @@ nlohmann::json chooseLabTimes(const Study& study, const ScenarioSpec& sc, const 
     if (res.times_s.empty())
       throw InputError(study.path + ": lab", "no local extremum of " + first_channel + " at or after t = " + formatExact(t_obstacle) +
                                                  " s in scenario '" + sc.name + "'; give the times with [lab] times_s");
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
+    res.times_rule = formatPrintf(
                   "automatic: local extrema (sign changes of the discrete derivative; a flat run counts once, at its middle "
                   "sample) of the noise-free %s at or after the obstacle time %g s, ranked by |value - static value at t = 0|, "
                   "the %ld largest at least %g s apart, in time order, on the %g Hz output grid",
                   first_channel.c_str(), t_obstacle, study.lab.auto_times, study.lab.min_separation_s, s.rate);
-    res.times_rule = buf;
     times_json = {{"source", "automatic"},
                   {"rule", res.times_rule},
                   {"channel", first_channel},

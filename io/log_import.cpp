@@ -245,10 +245,8 @@ double unitFactor(const std::string& unit, const std::string& si, const std::str
 }
 
 ImportColumn parseImportColumn(const std::string& text, const std::string& flag, const std::string& default_unit) {
-  std::vector<std::string> parts;
-  std::stringstream ss(text);
-  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
-  if (parts.empty() || parts[0].empty() || parts.size() > 4)
+  const std::vector<std::string> parts = splitOn(text, ':');
+  if (parts[0].empty() || parts.size() > 4)
     throw InputError(flag, "expects COLUMN[:UNIT[:OFFSET[:SCALE]]], got '" + text + "'");
   ImportColumn c;
   c.where = flag;

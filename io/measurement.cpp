@@ -10,6 +10,7 @@
 #include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/files.hpp"
+#include "common/format.hpp"
 #include "twin/parameters.hpp"
 #include "twin/simulator.hpp"
 
@@ -224,13 +225,10 @@ std::string fieldCsvText(const FieldData& d) {
   }
   std::string out = "run";
   if (!d.road_seeds.empty()) out += ",road_seed";
-  char buf[64];
-  for (double t : d.times_s) {
-    std::snprintf(buf, sizeof buf, ",t_%.*f", dec, t);
-    out += buf;
-  }
+  for (double t : d.times_s) out += formatPrintf(",t_%.*f", dec, t);
   out += '\n';
   out.reserve(out.size() + d.values.size() * 19);
+  char buf[32];  // the shortest exact form of a double fits in 24 characters
   for (std::size_t i = 0; i < d.rowCount(); ++i) {
     out += std::to_string(d.runs[i]);
     if (!d.road_seeds.empty()) {

@@ -743,9 +743,7 @@ EffectSetting parseEffectSetting(const std::string& text, const std::string& whe
   e.name = text.substr(0, colon);
   catalog.make(e.name, where);
   if (colon != std::string::npos) {
-    std::stringstream ss(text.substr(colon + 1));
-    std::string item;
-    while (std::getline(ss, item, ',')) {
+    for (const auto& item : splitOn(text.substr(colon + 1), ',')) {
       auto s = parseSetting(item, where);
       s.name = e.name + "." + s.name;
       e.values.push_back(s);

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <vector>
 
+#include "common/format.hpp"
 #include "report/study_report.hpp"
 #include "report/svg_plot.hpp"
 #include "common/errors.hpp"
@@ -34,9 +35,7 @@ std::string full(double v) { return plotNumber(v); }
 
 std::string num(double v, int digits = 4) {
   if (!std::isfinite(v)) return "–";
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
+  return formatNumber(v, digits);
 }
 
 /// j[key], or null when j is not an object or has no such key.

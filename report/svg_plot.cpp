@@ -79,9 +79,7 @@ code{font-size:.95em;word-break:break-all})";
 
 std::string findOnPath(const std::string& exe) {
   const char* path = std::getenv("PATH");
-  std::stringstream ss(path ? path : "/usr/bin:/bin");
-  std::string dir;
-  while (std::getline(ss, dir, ':')) {
+  for (const auto& dir : splitOn(path ? path : "/usr/bin:/bin", ':')) {
     if (dir.empty()) continue;
     const fs::path p = fs::path(dir) / exe;
     if (::access(p.c_str(), X_OK) == 0 && !fs::is_directory(p)) return p.string();

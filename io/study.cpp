@@ -660,6 +660,7 @@ ParameterTable Study::parameterTable(const std::vector<ParameterSetting>& overri
   ParameterTable t = declareVehicleParameters(*catalog);
   loadVehicleFile(t, vehicle_path);
   for (const auto& f : fixed) t.set(f.name, f.value, f.source, f.where);
+  if (!fixed.empty()) checkChassisInertias(t, path + ": fixed");
   for (std::size_t i = 0; i < calibrated.size(); ++i)
     if (calibrated[i].truth && t.contains(calibrated[i].name))
       t.set(calibrated[i].name, *calibrated[i].truth, path + " [calibrated] truth", path + ": calibrated[" + std::to_string(i) + "].truth");

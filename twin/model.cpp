@@ -8,6 +8,7 @@
 
 #include "common/json.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "twin/trace.hpp"
 
 namespace dtwin {
@@ -171,7 +172,24 @@ void loadVehicleFile(ParameterTable& table, const std::string& path) {
     }
   };
   walk(root, "");
+  checkChassisInertias(table, path);
 }
+
+void checkChassisInertias(const ParameterTable& table, const std::string& where) {
+  const char* names[3] = {"chassis.roll_inertia_kgm2", "chassis.pitch_inertia_kgm2", "chassis.yaw_inertia_kgm2"};
+  double i[3];
+  for (int k = 0; k < 3; ++k) {
+    if (!table.contains(names[k]) || !table.at(names[k]).has_value) return;  // "no value" is reported by the Model
+    i[k] = table.value(names[k]);
+  }
+  if (!(i[0] > 0 && i[1] > 0 && i[2] > 0)) return;  // the parameters' own ranges refuse these
+  if (i[0] + i[1] >= i[2] && i[1] + i[2] >= i[0] && i[0] + i[2] >= i[1]) return;
+  throw InputError(where, "the chassis inertias roll " + formatNumber(i[0]) + ", pitch " + formatNumber(i[1]) + " and yaw " +
+                              formatNumber(i[2]) + " kg*m^2 break the triangle inequality (each at most the sum of the other "
+                              "two): no rigid body has them");
+}
+
+double yawInertiaInTriangle(double ixx, double iyy, double izz) { return std::clamp(izz, std::abs(ixx - iyy), ixx + iyy); }
 
 void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name, const std::string& where) {
   for (auto s : effect.parameters()) {
@@ -205,7 +223,10 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   vehicle_.chassis_mass = need("chassis.mass_kg");
   vehicle_.ixx = need("chassis.roll_inertia_kgm2");
   vehicle_.iyy = need("chassis.pitch_inertia_kgm2");
-  vehicle_.izz = need("chassis.yaw_inertia_kgm2");
+  // Yaw is not a degree of freedom of the model: the yaw inertia enters only through the roll-pitch
+  // coupling, and follows a roll or pitch inertia moved away from the vehicle file's (a freed or
+  // hidden value) into the triangle inequality, which the file's own three satisfy (checked when it is read).
+  vehicle_.izz = yawInertiaInTriangle(vehicle_.ixx, vehicle_.iyy, need("chassis.yaw_inertia_kgm2"));
   vehicle_.cg_height = need("chassis.cg_height_m");
   vehicle_.a = need("geometry.cg_to_front_axle_m");
   vehicle_.b = need("geometry.cg_to_rear_axle_m");

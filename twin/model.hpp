@@ -76,6 +76,16 @@ struct VehicleData {
   }
 };
 
+/// InputError(where, ...) when the chassis roll, pitch and yaw inertias of `table` (all three set
+/// and positive) break the triangle inequality: no rigid body has them. loadVehicleFile checks the
+/// file's values with it.
+void checkChassisInertias(const ParameterTable& table, const std::string& where);
+/// The yaw inertia a run uses: `izz` clamped into [|ixx - iyy|, ixx + iyy], the values for which
+/// the three satisfy the triangle inequality. Yaw is not a degree of freedom of the model, so a
+/// freed roll or pitch inertia may range over its whole prior and the yaw inertia follows it;
+/// the vehicle file's own three are kept as they are (they satisfy the inequality).
+double yawInertiaInTriangle(double ixx, double iyy, double izz);
+
 class Model {
  public:
   /// Validates the options and that every parameter this assembly needs has a value.

@@ -110,3 +110,58 @@ TEST(FreedValue, OnlyFreeableValuesOfTheAssemblyCanBeFreed) {
   a.freed = {"wheel.mass_kg", "wheel.mass_kg"};
   EXPECT_THROW(s.makeModel(a), InputError);
 }
+
+// Yaw is not a degree of freedom: a freed pitch inertia over its whole ±50 % prior range builds and
+// runs, the yaw inertia following it into the triangle inequality (docs/model.md), and the file's
+// own values are kept where they already satisfy it.
+TEST(FreedValue, APitchInertiaOverItsWholeRangeCarriesTheYawInertiaIntoTheTriangle) {
+  EXPECT_EQ(yawInertiaInTriangle(500, 2100, 2300), 2300);  // inside: unchanged
+  EXPECT_EQ(yawInertiaInTriangle(500, 3150, 2300), 2650);  // Izz >= Iyy - Ixx
+  EXPECT_EQ(yawInertiaInTriangle(500, 1050, 2300), 1550);  // Izz <= Ixx + Iyy
+  EXPECT_EQ(yawInertiaInTriangle(2000, 500, 100), 1500);   // Izz >= Ixx - Iyy
+
+  const Study s = demo();
+  AssemblySpec a = s.assemblies().front();
+  a.freed = {"chassis.pitch_inertia_kgm2"};
+  const auto freed = s.makeModel(a);
+  EXPECT_EQ(freed->vehicle().izz, 2300);  // the file's 500 / 2100 / 2300 satisfy the inequality
+  Simulator sim(freed, s.simulation);
+  auto values = freed->defaultRunValues();
+  const auto slot = static_cast<std::size_t>(freed->slot("chassis.pitch_inertia_kgm2"));
+  const Trace at_file = runOf(sim, values, s);
+  for (const double iyy : {1.5 * 2100, 0.5 * 2100}) {
+    SCOPED_TRACE(iyy);
+    values[slot] = iyy;
+    const Trace t = runOf(sim, values, s);  // Simbody refused 3150 with Ixx 500, Izz 2300 before
+    ASSERT_GT(t.rows(), 0u);
+    EXPECT_NE(t.column("chassis_pitch_rad")[t.rows() / 2], at_file.column("chassis_pitch_rad")[t.rows() / 2]);
+    EXPECT_EQ(freed->withFreedValues(values)->vehicle().izz, yawInertiaInTriangle(500, iyy, 2300));
+  }
+}
+
+TEST(FreedValue, InertiasThatNoRigidBodyHasAreRefusedWhereTheyAreWritten) {
+  const auto dir = dtwin_test::freshDir("inertia_triangle");
+  // In the vehicle file: the file is named.
+  std::string vehicle = dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml");
+  const std::string from = "yaw_inertia_kgm2 = { value = 2300.0";
+  ASSERT_NE(vehicle.find(from), std::string::npos);
+  vehicle.replace(vehicle.find(from), from.size(), "yaw_inertia_kgm2 = { value = 3000.0");
+  dtwin_test::writeText(dir / "vehicle.toml", vehicle);
+  ParameterTable t = declareVehicleParameters(EffectCatalog());
+  try {
+    loadVehicleFile(t, (dir / "vehicle.toml").string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind((dir / "vehicle.toml").string() + ": the chassis inertias roll 500, pitch 2100 and yaw 3000", 0), 0u) << m;
+    EXPECT_NE(m.find("triangle inequality"), std::string::npos) << m;
+  }
+  // In the study's [fixed]: the study and the table are named.
+  const auto study = dtwin_test::writeDemoStudy(dir / "study.toml", "\n[fixed]\n\"chassis.roll_inertia_kgm2\" = 100.0\n");
+  try {
+    (void)loadStudy(study.string()).parameterTable();
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("study.toml: fixed: the chassis inertias roll 100"), std::string::npos) << e.what();
+  }
+}

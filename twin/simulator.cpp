@@ -1030,12 +1030,45 @@ Simulator::Impl& Simulator::pick(const std::vector<double>& values) {
   if (!impl_filter_) impl_filter_ = std::make_unique<Impl>(impl_->model, impl_->opt, true);
   return *impl_filter_;
 }
+namespace {
+/// A run that could not start because the multibody system cannot be built with the run's freed
+/// values: a failed run (its SSE is infinite, as any failed run's), in plain words with the values.
+RunResult unbuildableRun(const Model& model, const std::vector<double>& values, const std::vector<Channel>& channels) {
+  RunResult r;
+  r.stats.ok = false;
+  std::string at;
+  for (int s : model.freedSlots())
+    at += (at.empty() ? "" : ", ") + model.runParameterNames()[static_cast<std::size_t>(s)] + " = " +
+          formatNumber(values[static_cast<std::size_t>(s)]);
+  r.stats.message = "the vehicle cannot be built with " + (at.empty() ? std::string("these values") : at) +
+                    ": the multibody model refuses these masses or inertias";
+  for (const auto& ch : channels) r.trace.addChannel(ch);
+  return r;
+}
+}  // namespace
+
 RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc, StepControl steps) {
-  return pick(values).run(values, road, sc, steps);
+  Impl* impl = nullptr;
+  try {
+    impl = &pick(values);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception&) {
+    return unbuildableRun(*impl_->model, values, channels(impl_->model->sensors()));
+  }
+  return impl->run(values, road, sc, steps);
 }
 std::vector<RunResult> Simulator::runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
                                               const ScenarioSpec& sc) {
-  return pick(values).runBranched(values, roads, sc);
+  Impl* impl = nullptr;
+  try {
+    impl = &pick(values);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception&) {
+    return std::vector<RunResult>(roads.size(), unbuildableRun(*impl_->model, values, channels(impl_->model->sensors())));
+  }
+  return impl->runBranched(values, roads, sc);
 }
 double Simulator::branchTime(const ScenarioSpec& sc) const { return impl_->branchTime(sc); }
 

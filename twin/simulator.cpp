@@ -1047,28 +1047,23 @@ RunResult unbuildableRun(const Model& model, const std::vector<double>& values, 
 }
 }  // namespace
 
-RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc, StepControl steps) {
-  Impl* impl = nullptr;
+Simulator::Impl* Simulator::pickBuildable(const std::vector<double>& values) {
   try {
-    impl = &pick(values);
+    return &pick(values);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception&) {
-    return unbuildableRun(*impl_->model, values, channels(impl_->model->sensors()));
+    return nullptr;  // the multibody library refused the rebuilt system
   }
-  return impl->run(values, road, sc, steps);
+}
+RunResult Simulator::run(const std::vector<double>& values, const Road& road, const ScenarioSpec& sc, StepControl steps) {
+  if (Impl* impl = pickBuildable(values)) return impl->run(values, road, sc, steps);
+  return unbuildableRun(*impl_->model, values, channels(impl_->model->sensors()));
 }
 std::vector<RunResult> Simulator::runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
                                               const ScenarioSpec& sc) {
-  Impl* impl = nullptr;
-  try {
-    impl = &pick(values);
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception&) {
-    return std::vector<RunResult>(roads.size(), unbuildableRun(*impl_->model, values, channels(impl_->model->sensors())));
-  }
-  return impl->runBranched(values, roads, sc);
+  if (Impl* impl = pickBuildable(values)) return impl->runBranched(values, roads, sc);
+  return std::vector<RunResult>(roads.size(), unbuildableRun(*impl_->model, values, channels(impl_->model->sensors())));
 }
 double Simulator::branchTime(const ScenarioSpec& sc) const { return impl_->branchTime(sc); }
 

@@ -147,6 +147,9 @@ class Simulator {
   /// A run whose freed vehicle values (AssemblySpec::freed: a mass, an inertia) differ from those
   /// the system was built from first rebuilds it from Model::withFreedValues.
   Impl& pick(const std::vector<double>& values);
+  /// pick(), or nullptr when the system cannot be built with the run's freed values (InputError,
+  /// a value outside its range, passes through).
+  Impl* pickBuildable(const std::vector<double>& values);
   std::unique_ptr<Impl> impl_;
   std::unique_ptr<Impl> impl_filter_;
 };

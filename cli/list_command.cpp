@@ -108,7 +108,8 @@ int runList(const std::string& study_path, bool params) {
   std::printf("\nother twin diagnose candidates (docs/diagnosis.md):\n");
   std::string freeable;
   for (const auto& f : freeableVehicleParameters()) freeable += (freeable.empty() ? "" : ", ") + f;
-  std::printf("  free:VALUE          a fixed vehicle value freed over +-50 %% of the file's: %s\n", freeable.c_str());
+  std::printf("  free:VALUE          a fixed vehicle value freed over +-50 %% of the file's (the CG shift chassis.cg_x_m over "
+              "+-10 %% of the wheelbase): %s\n", freeable.c_str());
   for (const auto& k : sensorModelKinds()) {
     const auto p = sensorModelParameter(k, "");
     std::printf("  %-19s %s [%s] off = %g  prior [%g, %g]\n", (k + ":GROUP").c_str(), p.description.c_str(), p.unit.c_str(), p.default_value,

@@ -31,6 +31,9 @@ std::vector<std::string> freeableOf(const AssemblySpec& assembly) {
 }
 
 /// "wheel.mass_kg" -> "wheel mass"; "chassis.roll_inertia_kgm2" -> "chassis roll inertia".
+/// The freeable CG shift at a fixed wheelbase (twin/model.hpp), 0 in the vehicle file.
+constexpr const char* kCgShift = "chassis.cg_x_m";
+
 std::string valueInWords(const std::string& name) {
   std::string w = name;
   for (const char* unit : {"_kgm2", "_kg", "_m"}) {
@@ -127,6 +130,11 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
     p.default_value = v;
     p.prior_lower = std::max(0.5 * v, p.min_value);
     p.prior_upper = std::min(1.5 * v, p.max_value);
+    if (value == kCgShift) {  // a shift from the file's CG (0): ±10 % of the wheelbase, the CG between the axles
+      const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
+      p.prior_lower = std::max(v - 0.1 * (a + b), -0.9 * b);
+      p.prior_upper = std::min(v + 0.1 * (a + b), 0.9 * a);
+    }
     if (!(p.prior_lower < p.prior_upper))
       throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of ±50 % about it to search");
     c.kind = "parameter";
@@ -190,6 +198,9 @@ void CandidateSpec::install(calib::CalibrationSetup& setup) const {
 std::string CandidateSpec::finding(const std::vector<double>& values) const {
   if (values.size() != parameters.size() || values.empty()) return "";
   const double v = values[0];
+  if (kind == "parameter" && calibrated_names[0] == kCgShift)
+    return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +
+           (v >= parameters[0].default_value ? "ahead of" : "behind") + " the vehicle file's position (the same wheelbase)";
   if (kind == "parameter")
     return "the " + valueInWords(calibrated_names[0]) + " is about " + num("%.4g", v) + " " + parameters[0].unit + ", not " +
            num("%.4g", parameters[0].default_value) + " " + parameters[0].unit;

@@ -53,8 +53,8 @@ std::string AssemblySpec::label() const {
 const std::vector<std::string>& freeableVehicleParameters() {
   static const std::vector<std::string> names = {
       "wheel.mass_kg",          "chassis.mass_kg",         "chassis.roll_inertia_kgm2", "chassis.pitch_inertia_kgm2",
-      "chassis.cg_height_m",    "geometry.track_m",        "solid_axle.mass_kg",        "solid_axle.roll_inertia_kgm2",
-      "solid_axle.spring_track_m"};
+      "chassis.cg_height_m",    "chassis.cg_x_m",          "geometry.track_m",          "solid_axle.mass_kg",
+      "solid_axle.roll_inertia_kgm2", "solid_axle.spring_track_m"};
   return names;
 }
 
@@ -95,6 +95,11 @@ ParameterTable declareVehicleParameters(const EffectCatalog& catalog) {
   fixed("geometry.cg_to_front_axle_m", "m", "longitudinal distance sprung CG to front axle");
   fixed("geometry.cg_to_rear_axle_m", "m", "longitudinal distance sprung CG to rear axle");
   fixed("geometry.track_m", "m", "track width (wheel centre to wheel centre)");
+  // Not in a vehicle file: a diagnosis frees it (free:chassis.cg_x_m) to move the weight
+  // distribution at a fixed wheelbase; 0 is the file's CG.
+  t.declare(fixedSpec("chassis.cg_x_m", "m",
+                      "forward shift of the sprung CG from the vehicle file's position at a fixed wheelbase (a - x, b + x)", -kInf, true));
+  t.set("chassis.cg_x_m", 0.0, "default (the vehicle file's CG)", "");
   fixed("wheel.mass_kg", "kg", "wheel (unsprung) mass, each");
   fixed("solid_axle.mass_kg", "kg", "axle beam mass (solid axle only), each axle");
   fixed("solid_axle.roll_inertia_kgm2", "kg*m^2", "axle roll inertia about its centre");
@@ -228,8 +233,15 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   // hidden value) into the triangle inequality, which the file's own three satisfy (checked when it is read).
   vehicle_.izz = yawInertiaInTriangle(vehicle_.ixx, vehicle_.iyy, need("chassis.yaw_inertia_kgm2"));
   vehicle_.cg_height = need("chassis.cg_height_m");
-  vehicle_.a = need("geometry.cg_to_front_axle_m");
-  vehicle_.b = need("geometry.cg_to_rear_axle_m");
+  // The CG moved forward by cg_x at a fixed wheelbase: the axles stay where they are on the road
+  // (every road and the wheel contact points are laid out by the wheelbase and the front axle).
+  const double cg_x = need("chassis.cg_x_m");
+  vehicle_.a = need("geometry.cg_to_front_axle_m") - cg_x;
+  vehicle_.b = need("geometry.cg_to_rear_axle_m") + cg_x;
+  if (!(vehicle_.a > 0 && vehicle_.b > 0))
+    throw InputError(where, "chassis.cg_x_m = " + formatNumber(cg_x) + " m puts the CG outside the wheelbase (it must lie in (" +
+                                formatNumber(-need("geometry.cg_to_rear_axle_m")) + ", " +
+                                formatNumber(need("geometry.cg_to_front_axle_m")) + ") m)");
   vehicle_.track = need("geometry.track_m");
   vehicle_.wheel_mass = need("wheel.mass_kg");
   if (topology_ == SuspensionTopology::SolidAxle) {

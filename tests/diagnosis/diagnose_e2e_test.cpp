@@ -229,6 +229,18 @@ TEST(Diagnose16, APitchInertiaThirtyFivePercentHighIsNamed) {
   expectNamed(r, "free:chassis.pitch_inertia_kgm2", "parameter", truth, 0.1);
 }
 
+TEST(Diagnose16, TheCgEightCentimetresForwardIsNamed) {
+  // Issue 31: the weight distribution moved at a fixed wheelbase (a 1.435, b 1.584 m in the
+  // issue's car); the axles, and so the road under them, stay where they are.
+  const Study s = study();
+  auto o = smallOptions(s);
+  o.apply = {"free:chassis.cg_x_m"};
+  const auto data = makeData(s, "", 1, [&](LabOptions& l) { l.hidden_values = {{"chassis.cg_x_m", 0.08, "test", "test"}}; });
+  const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_cg"));
+  expectNamed(r, "free:chassis.cg_x_m", "parameter", 0.08, 0.2);
+  EXPECT_NE(r.summary.find("ahead of the vehicle file's position"), std::string::npos) << r.summary;
+}
+
 TEST(Diagnose16, A25HzSensorLowPassIsNamed) {
   const Study s = study();
   auto o = smallOptions(s);

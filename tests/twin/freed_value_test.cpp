@@ -165,3 +165,42 @@ TEST(FreedValue, InertiasThatNoRigidBodyHasAreRefusedWhereTheyAreWritten) {
     EXPECT_NE(std::string(e.what()).find("study.toml: fixed: the chassis inertias roll 100"), std::string::npos) << e.what();
   }
 }
+
+// The CG's longitudinal position at a fixed wheelbase (free:chassis.cg_x_m): a and b move together,
+// so the static axle loads follow in closed form while the axles, and so the road under them, stay.
+TEST(FreedValue, TheCgMovesForwardAtAFixedWheelbaseAndTheStaticLoadsFollow) {
+  const Study s = demo();
+  AssemblySpec a = s.assemblies().front();
+  a.freed = {"chassis.cg_x_m"};
+  const auto freed = s.makeModel(a);
+  const auto base = s.makeModel(s.assemblies().front());
+  Simulator sim(freed, s.simulation), sim_base(base, s.simulation);
+  auto values = freed->defaultRunValues();
+  const auto slot = static_cast<std::size_t>(freed->slot("chassis.cg_x_m"));
+  EXPECT_EQ(values[slot], 0.0);
+  expectSame(runOf(sim, values, s), runOf(sim_base, base->defaultRunValues(), s));  // 0: the file's CG, bit for bit
+
+  values[slot] = 0.08;
+  const auto moved = freed->withFreedValues(values);
+  const VehicleData& v = moved->vehicle();
+  const VehicleData& v0 = base->vehicle();
+  EXPECT_DOUBLE_EQ(v.a, v0.a - 0.08);
+  EXPECT_DOUBLE_EQ(v.b, v0.b + 0.08);
+  EXPECT_DOUBLE_EQ(v.wheelbase(), v0.wheelbase());
+  const Trace t = runOf(sim, values, s);
+  // Static front axle load: the sprung weight's share b / L plus the two front wheels.
+  const double front = t.column("hub_force_fl_N")[0] + t.column("hub_force_fr_N")[0];
+  const double expected = v.gravity * (v.chassis_mass * v.b / v.wheelbase() + 2 * v.wheel_mass);
+  EXPECT_NEAR(front, expected, 1e-6 * expected);
+  const double front0 = v0.gravity * (v0.chassis_mass * v0.b / v0.wheelbase() + 2 * v0.wheel_mass);
+  EXPECT_GT(front - front0, 0.9 * v.gravity * v.chassis_mass * 0.08 / v.wheelbase());
+
+  // Outside the wheelbase: refused, naming the value and the rule.
+  values[slot] = 2.0;
+  try {
+    (void)freed->withFreedValues(values);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("puts the CG outside the wheelbase"), std::string::npos) << e.what();
+  }
+}

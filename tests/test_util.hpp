@@ -1,6 +1,9 @@
 #pragma once
 // Small helpers shared by the tests that drive files and the `twin` CLI.
 #include <filesystem>
+#include <sys/wait.h>
+
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <regex>
@@ -13,6 +16,21 @@ namespace dtwin_test {
 inline std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// What a run of the `twin` program gave: its exit code, standard error and standard output.
+struct TwinRun {
+  int code;
+  std::string err, out;
+};
+
+/// Runs `twin ARGS` (DTWIN_TWIN_EXE), its standard output and error captured in DIR/out.txt and
+/// DIR/err.txt; DIR defaults to the process's own temporary folder (tests/test_main.cpp).
+inline TwinRun runTwin(const std::string& args, const std::filesystem::path& dir = std::filesystem::temp_directory_path()) {
+  const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + out + " 2> " + err;
+  const int st = std::system(cmd.c_str());
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(err), slurp(out)};
 }
 
 /// An empty folder `name` in the test's temporary folder (removed first if it exists).

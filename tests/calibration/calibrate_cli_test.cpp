@@ -18,20 +18,12 @@ namespace fs = std::filesystem;
 namespace {
 using dtwin_test::slurp;
 
-struct Result {
-  int code;
-  std::string err;
-};
+using Result = dtwin_test::TwinRun;
 
 /// Evaluated at use, after main() has given this process its own TMPDIR (tests/test_main.cpp).
 fs::path kTmp() { return fs::temp_directory_path() / "dtwin_calibrate_cli"; }
 
-Result twin(const std::string& args) {
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + (kTmp() / "out.txt").string() + " 2> " +
-                          (kTmp() / "err.txt").string();
-  const int st = std::system(cmd.c_str());
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(kTmp() / "err.txt")};
-}
+Result twin(const std::string& args) { return dtwin_test::runTwin(args, kTmp()); }
 
 std::size_t lines(const fs::path& p) {
   const std::string s = slurp(p);

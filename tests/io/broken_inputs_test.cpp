@@ -27,17 +27,9 @@ using dtwin_test::writeText;
 
 const std::string kSrc = DTWIN_SOURCE_DIR;
 
-struct Result {
-  int code;
-  std::string err;
-};
+using Result = dtwin_test::TwinRun;
 
-Result twin(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + (dir / "out.txt").string() + " 2> " +
-                          (dir / "err.txt").string();
-  const int st = std::system(cmd.c_str());
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(dir / "err.txt")};
-}
+Result twin(const std::string& args, const fs::path& dir) { return dtwin_test::runTwin(args, dir); }
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> v;

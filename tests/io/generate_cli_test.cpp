@@ -20,22 +20,10 @@ using namespace dtwin;
 namespace {
 const std::string kSrc = DTWIN_SOURCE_DIR;
 
-struct Result {
-  int code;
-  std::string err, out;
-};
-
+using Result = dtwin_test::TwinRun;
 using dtwin_test::slurp;
 
-Result twin(const std::string& args) {
-  // One pair of files per test: ctest runs the tests of this file in parallel processes.
-  const std::string dir = ::testing::TempDir();
-  const std::string tag = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::string out = dir + "/gen_out_" + tag + ".txt", err = dir + "/gen_err_" + tag + ".txt";
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + out + " 2> " + err;
-  const int st = std::system(cmd.c_str());
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(err), slurp(out)};
-}
+Result twin(const std::string& args) { return dtwin_test::runTwin(args); }
 }  // namespace
 
 TEST(GenerateCli, LabWritesTidyCsvAndSidecar) {

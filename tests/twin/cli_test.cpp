@@ -14,19 +14,10 @@
 namespace {
 const std::string kSrc = DTWIN_SOURCE_DIR;
 
-struct Result {
-  int code;
-  std::string err, out;
-};
-
+using Result = dtwin_test::TwinRun;
 using dtwin_test::slurp;
 
-Result twin(const std::string& args) {
-  const std::string dir = ::testing::TempDir();
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + dir + "/cli_out.txt 2> " + dir + "/cli_err.txt";
-  const int st = std::system(cmd.c_str());
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(dir + "/cli_err.txt"), slurp(dir + "/cli_out.txt")};
-}
+Result twin(const std::string& args) { return dtwin_test::runTwin(args); }
 }  // namespace
 
 TEST(Cli, SimulateWritesTraceAndSidecar) {

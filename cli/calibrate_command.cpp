@@ -52,8 +52,6 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
     for (const auto& a : calibrationTargets(study, req)) stages.push_back("calibrate " + a.id);
     checkCommandWork(sized, stages, cfg.force);
   }
-  const std::string plan = calibrationPlan(study, req);
-  if (!cfg.quiet) std::printf("%s\n", plan.c_str());
   const bool bar_on = progressOn(cfg.quiet);
   std::unique_ptr<ProgressBar> bar;
   std::string current;
@@ -68,7 +66,10 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
       bar->update(done, total);
     };
   };
-  calibrateAssemblies(study, req, progress_of, [&](const CalibrateRun& run) {
+  const auto say = [&](const std::string& line) {
+    if (!cfg.quiet) std::printf("%s\n", line.c_str());
+  };
+  calibrateAssemblies(study, req, say, progress_of, [&](const CalibrateRun& run) {
     bar->finish();
     if (!cfg.quiet) std::printf("%s", run.text().c_str());
   });

@@ -7,6 +7,9 @@
 
 namespace dtwin {
 
+/// A line of text for the user (what a long call is about to do), before its work starts.
+using SayFn = std::function<void(const std::string&)>;
+
 using StageProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
 
 }  // namespace dtwin

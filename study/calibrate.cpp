@@ -24,24 +24,27 @@ void CalibrateRequest::validate(const Study& study) const {
   options.validate();
 }
 
-std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request) {
-  if (request.assemblies.empty()) return study.assemblies();
-  std::vector<AssemblySpec> out;
-  for (const auto& id : request.assemblies) out.push_back(study.assembly(id));
-  return out;
-}
+namespace {
 
-std::string calibrationPlan(const Study& study, const CalibrateRequest& request) {
-  const auto targets = calibrationTargets(study, request);
+/// The line said before the work starts: what is calibrated against what, with which sizes.
+std::string calibrationPlan(const CalibrateRequest& request, std::size_t targets, const LabData& data) {
   const calib::CalibrationOptions& opt = request.options;
-  const LabData data = readLabCsv(request.data, measurableChannels(study.sensors));
   const std::string rounds = opt.design.adaptive ? " + up to " + std::to_string(opt.design.max_rounds) + " adaptive rounds of " +
                                                        std::to_string(opt.designOptions().round_points)
                                                  : std::string();
   return formatPrintf("calibrating %zu assembl%s against %s (%zu records): %d starts, %s region, %d design points%s, %d Gibbs "
                       "iterations (%d burn-in)",
-                      targets.size(), targets.size() == 1 ? "y" : "ies", request.data.c_str(), data.records.size(), opt.optimizer_starts,
+                      targets, targets == 1 ? "y" : "ies", request.data.c_str(), data.records.size(), opt.optimizer_starts,
                       opt.region.c_str(), opt.lhs_points, rounds.c_str(), opt.gibbs_iterations, opt.gibbs_burn_in);
+}
+
+}  // namespace
+
+std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request) {
+  if (request.assemblies.empty()) return study.assemblies();
+  std::vector<AssemblySpec> out;
+  for (const auto& id : request.assemblies) out.push_back(study.assembly(id));
+  return out;
 }
 
 std::string CalibrateRun::text() const {
@@ -74,7 +77,7 @@ std::string CalibrateRun::text() const {
   return s;
 }
 
-void calibrateAssemblies(const Study& study, const CalibrateRequest& request,
+void calibrateAssemblies(const Study& study, const CalibrateRequest& request, const SayFn& say,
                          const std::function<StageProgress(const AssemblySpec&)>& progress_of,
                          const std::function<void(const CalibrateRun&)>& on_done) {
   calib::CalibrationOptions opt = request.options;
@@ -86,6 +89,7 @@ void calibrateAssemblies(const Study& study, const CalibrateRequest& request,
   const auto targets = calibrationTargets(study, request);
   const LabData data = readLabCsv(request.data, measurableChannels(study.sensors));
   const std::string data_hash = std::to_string(fnv1a64(readTextFile(request.data)));
+  if (say) say(calibrationPlan(request, targets.size(), data));
   nlohmann::json index;
   index["program"] = programInfo();
   index["command"] = request.command;

@@ -36,13 +36,12 @@ struct CalibrateRun {
 /// The targets of `request` (every assembly when none is named).
 std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request);
 
-/// The line printed before the work starts: what is calibrated against what, with which sizes.
-std::string calibrationPlan(const Study& study, const CalibrateRequest& request);
-
-/// Calibrates every target in turn. `progress_of(assembly)` gives the progress callback of that
-/// assembly's stages (may return an empty function); `on_done` is called after each assembly.
-/// OUT/calibration.json is written (atomically, on the root rank) when all are done.
-void calibrateAssemblies(const Study& study, const CalibrateRequest& request,
+/// Calibrates every target in turn. `say` receives the plan (what is calibrated against what,
+/// with which sizes) once the data are read, before the work; `progress_of(assembly)` gives the
+/// progress callback of that assembly's stages (may return an empty function); `on_done` is
+/// called after each assembly. OUT/calibration.json is written (atomically, on the root rank)
+/// when all are done.
+void calibrateAssemblies(const Study& study, const CalibrateRequest& request, const SayFn& say,
                          const std::function<StageProgress(const AssemblySpec&)>& progress_of,
                          const std::function<void(const CalibrateRun&)>& on_done);
 

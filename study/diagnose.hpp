@@ -15,9 +15,6 @@
 
 namespace dtwin {
 
-/// A line of text for the user ("comparing ...", "diagnosing ..."), before the long work starts.
-using SayFn = std::function<void(const std::string&)>;
-
 struct CompareRequest {
   std::string calibration;         ///< a calibration folder (summary.json + posterior.csv)
   std::vector<std::string> data;   ///< measurement files FILE[@SCENARIO]

@@ -48,7 +48,8 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
 struct DiagnoseConfig {
   std::string study = defaultStudy(), assembly = "M1", out;
   std::vector<std::string> data, holdout, effects, apply;
-  int threads = 0, candidates = 3, draws = 20, propose = 3;
+  int threads = 0, candidates = 6, causes = 3, draws = 20, propose = 3;
+  double confirm_within = 2.0;
   long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
   std::string steps;
   bool quiet = false, force = false, all_intervals = false;
@@ -80,6 +81,8 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   if (o.calibration.gibbs_burn_in >= o.calibration.gibbs_iterations)
     throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
   o.candidates = cfg.candidates;
+  o.confirm_within = cfg.confirm_within;
+  o.causes = cfg.causes;
   if (cfg.all_intervals) o.full_within = std::numeric_limits<double>::infinity();
   o.propose_terms = cfg.propose;
   o.compare_draws = cfg.draws;
@@ -150,7 +153,20 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
   c->add_option("--apply", cfg->apply,
                 "Add these candidates in turn (comma separated) and print the before/after table; a .toml file (e.g. a diagnosis's "
                 "proposal.toml) adds its [user_effects]");
-  c->add_option("--candidates", cfg->candidates, "Screened effects confirmed by re-calibration (at most)")->capture_default_str()->check(CLI::Range(0, 100));
+  c->add_option("--candidates", cfg->candidates,
+                "The confirmation's budget: at most this many screened candidates re-calibrated (those within --confirm-within of the best "
+                "screening score, then the best of each kind)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
+  c->add_option("--causes", cfg->causes,
+                "At most this many causes named: while a significant lack of fit remains, the best cause is installed and the others "
+                "screened and confirmed on top of it (1: the best candidate alone)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
+  c->add_option("--confirm-within", cfg->confirm_within,
+                "Confirm side by side every candidate whose screening score is within this factor of the best")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 1e6));
   c->add_flag("--all-intervals", cfg->all_intervals,
              "Calibrate every confirmed candidate in full (intervals, posterior comparison); by default only those within 10 of "
              "the best candidate's log evidence are, the others stop at their optimum");

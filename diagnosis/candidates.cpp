@@ -128,19 +128,35 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
     ParameterSpec p = table.at(value).spec;
     const double v = table.value(value);
     p.default_value = v;
-    p.prior_lower = std::max(0.5 * v, p.min_value);
-    p.prior_upper = std::min(1.5 * v, p.max_value);
+    // The search range: ±50 % about the file's value, inside the value's valid set.
+    std::string range = "±50 %", why_lower = "its smallest valid value", why_upper = "its largest valid value";
+    double lo = 0.5 * v, hi = 1.5 * v, valid_lo = p.min_value, valid_hi = p.max_value;
     if (value == kCgShift) {  // a shift from the file's CG (0): ±10 % of the wheelbase, the CG between the axles
       const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
-      p.prior_lower = std::max(v - 0.1 * (a + b), -0.9 * b);
-      p.prior_upper = std::min(v + 0.1 * (a + b), 0.9 * a);
+      range = "±10 % of the wheelbase";
+      lo = v - 0.1 * (a + b);
+      hi = v + 0.1 * (a + b);
+      valid_lo = std::max(valid_lo, -0.9 * b);
+      valid_hi = std::min(valid_hi, 0.9 * a);
+      why_lower = "90 % of the way to the rear axle";
+      why_upper = "90 % of the way to the front axle";
     }
+    p.prior_lower = std::max(lo, valid_lo);
+    p.prior_upper = std::min(hi, valid_hi);
     if (!(p.prior_lower < p.prior_upper))
-      throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of ±50 % about it to search");
+      throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of " + range + " about it to search");
     c.kind = "parameter";
     c.parameters = {p};
     c.calibrated_names = {value};
     c.signature = "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
+    if (p.prior_lower > lo) c.range_note = "searched from " + num("%.4g", p.prior_lower) + ", not " + num("%.4g", lo) + " (" + why_lower + ")";
+    if (p.prior_upper < hi)
+      c.range_note += (c.range_note.empty() ? "searched up to " : "; up to ") + num("%.4g", p.prior_upper) + ", not " + num("%.4g", hi) +
+                      " (" + why_upper + ")";
+    if (!c.range_note.empty()) {
+      c.range_note = "its " + range + " range was clipped to stay valid: " + c.range_note;
+      c.signature += "; " + c.range_note;
+    }
     return c;
   }
   const auto colon = name.find(':');

@@ -26,7 +26,10 @@ struct CandidateSpec {
   /// prior_lower/upper the range a calibration searches.
   std::vector<ParameterSpec> parameters;
   std::vector<std::string> calibrated_names;  ///< each parameter's name in a calibration ("bump_stop.gap_m", "wheel.mass_kg")
-  std::string signature;                   ///< the expected residual, in words
+  std::string signature;                   ///< the expected residual, in words (with range_note)
+  /// parameter: how its search range was clipped to the value's valid set (a mass stays
+  /// positive, the CG between the axles), in words; "" when the range was not clipped.
+  std::string range_note;
   ResidualSignature residual_signature;    ///< effects only
   std::string engagement_threshold;        ///< effects only (Effect::engagementThreshold)
   std::string sensor_kind;                 ///< sensors: lowpass | lowpass2 | gain | delay

@@ -162,6 +162,8 @@ void DiagnoseOptions::validate() const {
   const OptionCheck check("diagnose");
   calibration.validate();
   check.atLeast("candidates", candidates, 0);
+  check.require(confirm_within >= 1.0, "confirm_within", "must be >= 1 (a factor of the best screening score)");
+  check.atLeast("causes", causes, 1);
   check.open01("screen_alpha", screen_alpha);
   check.nonNegative("bic_strong", bic_strong);
   check.nonNegative("ambiguity_log_evidence", ambiguity_log_evidence);
@@ -205,8 +207,37 @@ struct Diagnosis {
   std::vector<std::string> catalogue;                 ///< the candidates ranked (no installed effect)
   std::map<std::string, CandidateSpec> specs;         ///< every candidate of the catalogue and of options.apply
   std::map<std::string, std::vector<double>> optima;  ///< every calibration's optimum, by joinEffects(effects)
-  std::unique_ptr<calib::LabObjective> base_obj;      ///< the base model on fit_sets (screening, refinement)
+  std::unique_ptr<calib::LabObjective> base_obj;      ///< the current stage's reference model on fit_sets (screening, refinement)
   DiagnosisResult res;
+  /// Forward stagewise (docs/diagnosis.md, "More than one cause"): the causes installed so far.
+  /// Empty in the first stage, whose reference is the base; later stages screen and confirm on
+  /// top of them, and their candidates are res.further.back().candidates.
+  std::vector<std::string> installed;
+  /// The current stage's reference model (res.base in the first stage).
+  const Figures* reference = nullptr;
+
+  /// The parameters of candidate `name` in the calibration `f` (which may hold other causes too).
+  std::vector<EffectParameter> parametersOf(const std::string& name, const Figures& f) const {
+    std::vector<EffectParameter> out;
+    for (const auto& n : spec(name).calibrated_names)
+      for (const auto& p : f.effect_parameters)
+        if (p.name == n) out.push_back(p);
+    return out;
+  }
+  /// What `f` says of candidate `name`, in words (CandidateSpec::finding at its mean values).
+  std::string findingOf(const std::string& name, const Figures& f) const {
+    std::vector<double> values;
+    for (const auto& p : parametersOf(name, f)) values.push_back(p.mean);
+    return spec(name).finding(values);
+  }
+  /// The candidates of the current stage.
+  std::vector<Candidate>& stage() { return installed.empty() ? res.candidates : res.further.back().candidates; }
+  /// `name` installed on top of the causes of the current stage.
+  std::vector<std::string> withInstalled(const std::string& name) const {
+    auto e = installed;
+    e.push_back(name);
+    return e;
+  }
 
   void report(const std::string& stage, std::size_t done, std::size_t total) const {
     if (progress) progress(stage, done, total);
@@ -261,7 +292,7 @@ std::vector<std::vector<double>> Diagnosis::extraStarts(const std::vector<std::s
   auto y = it->second;
   for (double v : effect_start) y.push_back(v);
   starts.push_back(y);
-  if (effects.size() == 1 && theta_start.size() == study.calibrated.size()) {
+  if (theta_start.size() == it->second.size()) {  // the screening's θ̂ + δθ of the nested model
     auto z = theta_start;
     for (double v : effect_start) z.push_back(v);
     starts.push_back(z);
@@ -426,7 +457,7 @@ struct Linearisation {
 Linearisation linearise(const Diagnosis& d) {
   const auto& obj = *d.base_obj;
   Linearisation lin;
-  lin.theta_hat = d.optima.at("base");
+  lin.theta_hat = d.optima.at(joinEffects(d.installed));
   lin.eta_hat = obj.predict(lin.theta_hat);
   if (lin.eta_hat.empty()) throw std::runtime_error("diagnose: the run at the base optimum failed");
   const auto& y = obj.measured();
@@ -501,7 +532,7 @@ std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::v
                                                 const std::vector<double>& theta_hat) {
   std::vector<std::unique_ptr<calib::LabObjective>> eff_obj;
   for (const auto& e : d.catalogue)
-    eff_obj.push_back(std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({e})));
+    eff_obj.push_back(std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(d.withInstalled(e))));
   std::vector<std::pair<std::size_t, std::size_t>> jobs;  // (group, column)
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t c = 0; c < groups[g].cols.size(); ++c) jobs.push_back({g, c});
@@ -543,7 +574,7 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
     if (failed) continue;
     all_failed[e] = false;
     const Eigen::MatrixXd Gp = lin.project(G);
-    auto& cand = d.res.candidates[e];
+    auto& cand = d.stage()[e];
     cand.max_signal = std::max(cand.max_signal, Gp.squaredNorm());
     // S = rᵀ Gp (Gpᵀ Gp)⁺ Gpᵀ r (rank-revealing: a column the base absorbs entirely drops out).
     Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(Gp);
@@ -591,7 +622,7 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
   const double bonferroni = static_cast<double>(probes);
   std::optional<double> max_compression;  // one more run, only when a threshold gate needs it
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
-    auto& c = d.res.candidates[e];
+    auto& c = d.stage()[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
     if (all_failed[e]) {
       c.gate = "every probe simulation failed";
@@ -618,16 +649,17 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
 /// contribution at a few probe values, with what re-calibrating θ could absorb projected out,
 /// scored against the residual; fills res.candidates (score, p-value, gate, screening estimates).
 void screen(Diagnosis& d) {
-  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
+  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(d.installed));
   const Linearisation lin = linearise(d);
   std::vector<ProbeGroup> groups;
-  d.res.candidates.resize(d.catalogue.size());
+  auto& cands = d.stage();
+  cands.resize(d.catalogue.size());
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     const auto& spec = d.spec(d.catalogue[e]);
     for (auto& g : probesOf(e, spec)) groups.push_back(std::move(g));
-    d.res.candidates[e].effect = d.catalogue[e];
-    d.res.candidates[e].kind = spec.kind;
-    d.res.candidates[e].signature = spec.signature;
+    cands[e].effect = d.catalogue[e];
+    cands[e].kind = spec.kind;
+    cands[e].signature = spec.signature;
   }
   const auto probe_eta = simulateProbes(d, groups, lin.theta_hat);
   const auto all_failed = scoreProbes(d, lin, groups, probe_eta);
@@ -636,30 +668,45 @@ void screen(Diagnosis& d) {
 
 // ------------------------------------------------------------------ confirm, refine
 
-/// Confirm (step 3): the best ungated candidates with p < screen_alpha (at most
-/// options.candidates, by score) re-calibrated with their effect. Returns their indices in
-/// res.candidates.
-std::vector<std::size_t> confirm(Diagnosis& d) {
-  auto& cands = d.res.candidates;
-  std::vector<std::size_t> order(cands.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cands[a].score > cands[b].score; });
-  std::vector<std::size_t> to_confirm;
+/// The candidates to confirm (docs/diagnosis.md, "Confirmation"), in order: among the ungated ones
+/// with p < screen_alpha, every one whose screening score is within a factor
+/// options.confirm_within of the best, by score; then the best of each kind (effect, parameter,
+/// sensor) not already in, by score; at most options.candidates in all (the work budget).
+std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (cands[i].gate.empty() && cands[i].p_value < options.screen_alpha) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cands[a].score > cands[b].score; });
+  std::vector<std::size_t> chosen;
+  if (order.empty()) return chosen;
+  const double best = cands[order.front()].score;
   for (std::size_t i : order)
-    if (cands[i].gate.empty() && cands[i].p_value < d.options.screen_alpha &&
-        static_cast<int>(to_confirm.size()) < d.options.candidates)
-      to_confirm.push_back(i);
+    if (cands[i].score * options.confirm_within >= best) chosen.push_back(i);
+  std::set<std::string> kinds;
+  for (std::size_t i : chosen) kinds.insert(cands[i].kind);
+  for (std::size_t i : order)
+    if (kinds.insert(cands[i].kind).second) chosen.push_back(i);
+  if (chosen.size() > static_cast<std::size_t>(options.candidates)) chosen.resize(static_cast<std::size_t>(options.candidates));
+  return chosen;
+}
+
+/// Confirm (step 3): the candidates chooseConfirmations picks, re-calibrated with their effect.
+/// Returns their indices in res.candidates.
+std::vector<std::size_t> confirm(Diagnosis& d) {
+  auto& cands = d.stage();
+  const std::vector<std::size_t> to_confirm = chooseConfirmations(cands, d.options);
+  const std::string on_top = d.installed.empty() ? "" : " on " + joinEffects(d.installed);
   // One candidate's calibration failing (e.g. its region found no point inside the bounds) is
   // reported with the candidate; the diagnosis goes on with the others.
   auto calibrate = [&](Candidate& c, const std::string& stage, bool full) {
     try {
-      c.fit = d.calibrateWith({c.effect}, stage, c.screening_estimate, c.screening_theta, full);
+      c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, c.screening_estimate, c.screening_theta, full);
       return true;
     } catch (const InputError&) {
       throw;
     } catch (const std::exception& e) {
       c.fit.reset();
-      c.gate = std::string("its confirming calibration failed (") + e.what() + ")";
+      c.gate = std::string("its confirming calibration failed: ") + e.what();
       return false;
     }
   };
@@ -668,7 +715,8 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   std::vector<std::size_t> optimised;
   for (std::size_t k = 0; k < to_confirm.size(); ++k) {
     auto& c = cands[to_confirm[k]];
-    const std::string stage = "confirm " + c.effect + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
+    const std::string stage =
+        "confirm " + c.effect + on_top + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
     if (calibrate(c, stage, false)) optimised.push_back(to_confirm[k]);
   }
   double best = -std::numeric_limits<double>::infinity();
@@ -678,24 +726,17 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   for (std::size_t i : optimised) {
     auto& c = cands[i];
     c.evidence_gap = best - c.fit->log_evidence;
-    if (c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + " in full", true)) continue;
+    if (c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + on_top + " in full", true)) continue;
     c.confirmed = true;
-    std::vector<double> values;
-    for (const auto& p : c.fit->effect_parameters) values.push_back(p.mean);
-    c.finding = d.spec(c.effect).finding(values);
+    c.finding = d.findingOf(c.effect, *c.fit);
     confirmed.push_back(i);
   }
   return confirmed;
 }
 
-/// Refine (the end of step 3): the evidence for an effect must not come from a base optimum the optimiser
-/// missed. The base is polished again from every strongly favoured candidate's base parameters
-/// (its effect switched off); when that fits better, the base is re-calibrated from there and
-/// becomes the reference of every ΔBIC and of the lack-of-fit figures. Then each confirmed
-/// candidate is weighed against the base (ΔBIC, share of the excess residual it explains,
-/// held-out change) and the candidates are ranked: confirmed by log evidence, then by score,
-/// gated last.
-void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
+/// The base polished again from every strongly favoured candidate's base parameters (its effect
+/// off); when that fits better than the base optimum, the base is re-calibrated from there.
+void refineBase(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
   auto& res = d.res;
   std::vector<double> better;
   double better_sse = res.base.sse_min - 1.0;  // below the integrator's noise in the SSE: no change
@@ -717,16 +758,32 @@ void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
     res.base_unrefined_sse = res.base.sse_min;
     res.base = d.calibrateWith({}, "base (refined)", {}, better);
   }
+}
+
+/// Refine (the end of step 3): the evidence for an effect must not come from a base optimum the optimiser
+/// missed. The base is polished again from every strongly favoured candidate's base parameters
+/// (its effect switched off); when that fits better, the base is re-calibrated from there and
+/// becomes the reference of every ΔBIC and of the lack-of-fit figures (first stage only: a later
+/// stage's reference is the previous stage's confirmed fit). Then each confirmed candidate is
+/// weighed against the stage's reference (ΔBIC, share of the base's excess residual it removes,
+/// held-out change) and the stage's candidates are ranked: confirmed by log evidence, then by
+/// score, gated last.
+void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
+  auto& res = d.res;
+  auto& cands = d.stage();
+  if (d.installed.empty()) refineBase(d, to_confirm);
+  const Figures& ref = d.installed.empty() ? res.base : *d.reference;
   const Comparison& base = res.base.comparison;
   const double base_excess = base.lack_of_fit - static_cast<double>(base.lack_of_fit_dof);
   for (std::size_t i : to_confirm) {
-    auto& c = res.candidates[i];
-    c.delta_bic = c.fit->bic - res.base.bic;
-    c.explained = base_excess > 0 ? std::clamp((base.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess, 0.0, 1.0) : 0.0;
-    if (c.fit->holdout && res.base.holdout && res.base.holdout->systematic_rms_sd > 0)
-      c.holdout_change = c.fit->holdout->systematic_rms_sd / res.base.holdout->systematic_rms_sd;
+    auto& c = cands[i];
+    c.delta_bic = c.fit->bic - ref.bic;
+    c.explained =
+        base_excess > 0 ? std::clamp((ref.comparison.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess, 0.0, 1.0) : 0.0;
+    if (c.fit->holdout && ref.holdout && ref.holdout->systematic_rms_sd > 0)
+      c.holdout_change = c.fit->holdout->systematic_rms_sd / ref.holdout->systematic_rms_sd;
   }
-  std::stable_sort(res.candidates.begin(), res.candidates.end(), [](const Candidate& a, const Candidate& b) {
+  std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
     auto cls = [](const Candidate& c) { return c.confirmed ? 0 : (c.gate.empty() ? 1 : 2); };
     if (cls(a) != cls(b)) return cls(a) < cls(b);
     if (a.confirmed) return a.fit->log_evidence > b.fit->log_evidence;
@@ -790,11 +847,20 @@ std::string signatureSeen(const Comparison& base, const CandidateSpec& candidate
 }
 
 /// One plain sentence per candidate: why it is ranked where it is.
-std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Comparison& base, const DiagnoseOptions& options) {
+/// `best_score`: the best screening score of the ungated candidates.
+std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Comparison& base, const DiagnoseOptions& options,
+                  double best_score) {
   if (!c.gate.empty()) return c.effect + ": not a candidate: " + c.gate + ".";
   if (!c.confirmed)
     return c.effect + ": screening score " + fmt("%.3g", c.score) + " (p = " + fmt("%.2g", c.p_value) + ")" +
-           (c.p_value < options.screen_alpha ? ", not among the best candidates confirmed" : ": explains nothing beyond noise") + ".";
+           (c.p_value < options.screen_alpha
+                ? (c.score * options.confirm_within >= best_score
+                       ? ", within a factor " + fmt("%.3g", options.confirm_within) + " of the best score but beyond the budget of " +
+                             std::to_string(options.candidates) + " confirmations (--candidates)"
+                       : ", more than a factor " + fmt("%.3g", options.confirm_within) +
+                             " below the best score and not the best of its kind: not confirmed")
+                : ": explains nothing beyond noise") +
+           ".";
   std::string s = c.effect + ": " + (c.delta_bic < 0 ? "ΔBIC " : "ΔBIC +") + fmt("%.1f", c.delta_bic) + ", explains " +
                   fmt("%.0f", 100 * c.explained) + " % of the excess residual";
   const std::string where = windowFixed(base, c.fit->comparison);
@@ -811,19 +877,169 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
   return s + ".";
 }
 
-/// Verdict (step 4): every candidate's why, then "effect" (the best confirmed
-/// effect with ΔBIC < −bic_strong that leaves no significant lack of fit or explains at least
-/// explained_min of the excess; ambiguity stated), "none" or "unexplained" (with where).
+/// A candidate's finding in words, or its name when it has none (an effect).
+std::string inWordsOf(const Candidate& c) { return c.finding.empty() ? inWords(c.effect) + " (" + c.effect + ")" : c.finding + " (" + c.effect + ")"; }
+
+/// What would tell `a` from `b` apart, in words.
+std::string separatedBy(const Candidate& a, const Candidate& b) {
+  auto timing = [](const Candidate& c) {
+    return c.effect.rfind("lowpass", 0) == 0 || c.effect.rfind("delay", 0) == 0;
+  };
+  if (timing(a) && timing(b))
+    return "a step input or the phase above 20 Hz would separate them (a delay shifts the phase in proportion to frequency "
+           "and keeps the amplitude; a low-pass lowers the amplitude too)";
+  if (a.kind != b.kind)
+    return "a scenario that excites one and not the other (another speed, a step, a sweep) would separate them";
+  return "more data (another scenario) would separate them";
+}
+
+/// The look-alikes of the named candidate `best` (within ambiguity_log_evidence), in words: "The
+/// data cannot yet tell it from: the hub_force channels look delayed by 8 ms (delay:hub_force);
+/// they differ by ΔBIC 3.1; a step input ... would separate them."
+std::string lookAlikes(const Candidate& best, const std::vector<const Candidate*>& alike, const DiagnoseOptions& options) {
+  std::string s = "Ambiguous: " + inWordsOf(best);
+  for (const Candidate* c : alike) s += " or " + inWordsOf(*c);
+  if (alike.size() == 1) {
+    s += ": they differ by ΔBIC " + fmt("%.1f", alike.front()->fit->bic - best.fit->bic);
+  } else {
+    s += ": behind the first by ΔBIC ";
+    for (std::size_t i = 0; i < alike.size(); ++i) s += (i ? ", " : "") + fmt("%.1f", alike[i]->fit->bic - best.fit->bic) + " (" + alike[i]->effect + ")";
+  }
+  s += ", less than " + fmt("%.0f", 2 * options.ambiguity_log_evidence) + "; " + separatedBy(best, *alike.front()) + ".";
+  return s;
+}
+
+/// Every candidate's why line of the current stage, against its reference comparison `ref`.
+void explainStage(Diagnosis& d, const Comparison& ref) {
+  auto& cands = d.stage();
+  double best_score = 0;
+  for (const auto& c : cands)
+    if (c.gate.empty()) best_score = std::max(best_score, c.score);
+  for (auto& c : cands) {
+    const auto& spec = d.spec(c.effect);
+    c.why = whyOf(c, spec, ref, d.options, best_score);
+    if (!spec.range_note.empty()) c.why.insert(c.why.size() - 1, " (" + spec.range_note + ")");  // before the full stop
+  }
+}
+
+/// The confirmed candidates with strong evidence (ΔBIC < −bic_strong against the stage's
+/// reference), best first.
+std::vector<const Candidate*> strongOf(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
+  std::vector<const Candidate*> named;
+  for (const auto& c : cands)
+    if (c.confirmed && c.delta_bic < -options.bic_strong) named.push_back(&c);
+  return named;
+}
+
+/// The strong candidates within ambiguity_log_evidence of the first.
+std::vector<const Candidate*> alikeOf(const std::vector<const Candidate*>& named, const DiagnoseOptions& options) {
+  std::vector<const Candidate*> alike;
+  for (std::size_t i = 1; i < named.size(); ++i)
+    if (named.front()->fit->log_evidence - named[i]->fit->log_evidence < options.ambiguity_log_evidence) alike.push_back(named[i]);
+  return alike;
+}
+
+/// The cause a stage names: its best strong candidate, with its look-alikes.
+Cause causeOf(const Candidate& c, const std::vector<const Candidate*>& alike) {
+  Cause k;
+  k.name = c.effect;
+  k.kind = c.kind;
+  k.finding = c.finding;
+  k.delta_bic = c.delta_bic;
+  k.explained = c.explained;
+  k.lack_of_fit_z = c.fit->comparison.lack_of_fit_z;
+  k.lack_of_fit_p = c.fit->comparison.lack_of_fit_p;
+  k.fit = *c.fit;
+  for (const Candidate* a : alike) k.ambiguous_with.push_back(a->effect);
+  return k;
+}
+
+/// More than one cause (docs/diagnosis.md, step 4): forward stagewise selection. While the model
+/// with the causes named so far leaves a significant lack of fit and fewer than options.causes
+/// are named, they are installed, every other candidate is screened and confirmed on top of them
+/// (ΔBIC against the model with them), and the best strong one becomes the next cause.
+void furtherCauses(Diagnosis& d) {
+  auto& res = d.res;
+  while (static_cast<int>(res.causes.size()) < d.options.causes && res.causes.back().lack_of_fit_p < d.options.lack_of_fit_alpha) {
+    d.installed.push_back(res.causes.back().name);
+    d.reference = &res.causes.back().fit;
+    std::vector<std::string> catalogue;
+    for (const auto& e : d.catalogue)
+      if (std::find(d.installed.begin(), d.installed.end(), e) == d.installed.end()) catalogue.push_back(e);
+    d.catalogue = catalogue;
+    res.further.push_back({d.installed, {}});
+    screen(d);
+    refine(d, confirm(d));
+    explainStage(d, d.reference->comparison);
+    const auto named = strongOf(d.stage(), d.options);
+    if (named.empty()) break;
+    res.causes.push_back(causeOf(*named.front(), alikeOf(named, d.options)));
+  }
+  // Every cause's parameters and finding from the model with all of them (a joint calibration).
+  const Figures& all = res.causes.back().fit;
+  for (auto& k : res.causes) {
+    k.parameters = d.parametersOf(k.name, all);
+    k.finding = d.findingOf(k.name, all);
+  }
+  // The proposal (an unexplained verdict) linearises the base model again.
+  d.installed.clear();
+  d.reference = nullptr;
+  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
+}
+
+/// A cause in one sentence: "Wrong vehicle value: the wheel mass is about 35 kg, not 29.46 kg
+/// (free:wheel.mass_kg, ΔBIC −512.3, explains 64 % of the excess residual)".
+std::string causeInWords(const Cause& k) {
+  const std::string evidence = "ΔBIC " + fmt("%.1f", k.delta_bic) + ", explains " + fmt("%.0f", 100 * k.explained) + " % of the excess residual";
+  if (k.kind == "parameter") return "Wrong vehicle value: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "sensor") return "Sensor distortion: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  return "Missing effect: " + k.name + " (" + evidence + ")";
+}
+
+/// The summary of a verdict "effect": the cause, or the causes strongest first, and how far the
+/// integrator's jitter limits the evidence.
+std::string effectSummary(const Diagnosis& d, const Candidate& best, const std::vector<const Candidate*>& alike) {
+  const auto& res = d.res;
+  const auto& options = d.options;
+  const Cause& first = res.causes.front();
+  std::string s;
+  if (res.causes.size() == 1) {
+    s = causeInWords(first) + ".";
+  } else {
+    double total = 0;
+    for (const auto& k : res.causes) total += k.explained;
+    s = std::to_string(res.causes.size()) + " causes, each strong against the model with those before it (together " +
+        fmt("%.0f", 100 * std::min(1.0, total)) + " % of the excess residual):";
+    std::string apply;
+    for (std::size_t i = 0; i < res.causes.size(); ++i) {
+      s += " " + std::to_string(i + 1) + ". " + causeInWords(res.causes[i]) + ".";
+      apply += (i ? "," : "") + res.causes[i].name;
+    }
+    s += " Apply them together with --apply " + apply + ".";
+  }
+  // The evidence is a difference of two minimised SSEs, each as uncertain as the integrator's jitter.
+  const double jitter = res.base.integrator.jitter + first.fit.integrator.jitter;
+  if (!first.fit.integrator.ok || !res.base.integrator.ok)
+    s += -first.delta_bic > options.bic_strong + 2 * jitter
+             ? " The integrator's jitter in the SSE (" + fmt("%.3g", jitter) + ") is far below this evidence, so the verdict stands, but the intervals do not (note below)."
+             : " Caution: the integrator's jitter in the SSE (" + fmt("%.3g", jitter) +
+                   ") is comparable with this evidence: tighten [simulation] accuracy and rerun before trusting the verdict (note below).";
+  if (!alike.empty()) s += " " + lookAlikes(best, alike, options);
+  return s;
+}
+
+/// Verdict (step 4): every candidate's why, then "effect" (the best confirmed candidate with
+/// ΔBIC < −bic_strong, and the causes stagewise selection adds on top of it, which together leave
+/// no significant lack of fit or explain at least explained_min of the excess; ambiguity
+/// stated), "none" or "unexplained" (with where).
 void verdict(Diagnosis& d) {
   auto& res = d.res;
   const auto& options = d.options;
   const Comparison& base = res.base.comparison;
-  for (auto& c : res.candidates) c.why = whyOf(c, d.spec(c.effect), base, options);
+  explainStage(d, base);
   const double alpha = options.lack_of_fit_alpha;
   const bool base_bad = base.lack_of_fit_p < alpha;
-  std::vector<const Candidate*> named;
-  for (const auto& c : res.candidates)
-    if (c.confirmed && c.delta_bic < -options.bic_strong) named.push_back(&c);
+  const auto named = strongOf(res.candidates, options);
   res.unexplained_location = locate(base);
   if (named.empty()) {
     if (base_bad) {
@@ -838,47 +1054,34 @@ void verdict(Diagnosis& d) {
     }
     return;
   }
-  const Candidate& best = *named.front();
-  const bool after_bad = best.fit->comparison.lack_of_fit_p < alpha;
-  if (after_bad && best.explained < options.explained_min) {
+  const auto alike = alikeOf(named, options);
+  res.causes.push_back(causeOf(*named.front(), alike));
+  furtherCauses(d);
+  const Cause& last = res.causes.back();
+  double total = 0;
+  for (const auto& k : res.causes) total += k.explained;
+  const bool after_bad = last.lack_of_fit_p < alpha;
+  if (after_bad && total < options.explained_min) {
     res.verdict = "unexplained";
-    res.unexplained_location = locate(best.fit->comparison);
-    res.summary = "Unexplained residual: the best catalogue effect, " + best.effect + ", explains only " +
-                  fmt("%.0f", 100 * best.explained) + " % of the excess residual and a significant lack of fit remains (z = " +
-                  fmt("%.1f", best.fit->comparison.lack_of_fit_z) + "); it is not named. Where: " + res.unexplained_location + ".";
+    res.unexplained_location = locate(last.fit.comparison);
+    std::string names;
+    for (std::size_t i = 0; i < res.causes.size(); ++i)
+      names += (i ? (i + 1 == res.causes.size() ? " and " : ", ") : "") + res.causes[i].name;
+    res.summary = std::string("Unexplained residual: the best catalogue ") + (res.causes.size() == 1 ? "effect, " : "causes, ") + names +
+                  ", explain" + (res.causes.size() == 1 ? "s" : "") + " only " + fmt("%.0f", 100 * total) +
+                  " % of the excess residual and a significant lack of fit remains (z = " + fmt("%.1f", last.lack_of_fit_z) + "); " +
+                  (res.causes.size() == 1 ? "it is" : "they are") + " not named. Where: " + res.unexplained_location + ".";
     return;
   }
   res.verdict = "effect";
-  res.named_effect = best.effect;
-  res.named_kind = best.kind;
-  res.finding = best.finding;
-  const std::string evidence = "ΔBIC " + fmt("%.1f", best.delta_bic) + ", explains " + fmt("%.0f", 100 * best.explained) + " % of the excess residual";
-  if (best.kind == "parameter")
-    res.summary = "Wrong vehicle value: " + best.finding + " (" + best.effect + ", " + evidence + ").";
-  else if (best.kind == "sensor")
-    res.summary = "Sensor distortion: " + best.finding + " (" + best.effect + ", " + evidence + ").";
-  else
-    res.summary = "Missing effect: " + best.effect + " (" + evidence + ").";
-  // The evidence is a difference of two minimised SSEs, each as uncertain as the integrator's jitter.
-  const double jitter = res.base.integrator.jitter + best.fit->integrator.jitter;
-  if (!best.fit->integrator.ok || !res.base.integrator.ok)
-    res.summary += -best.delta_bic > options.bic_strong + 2 * jitter
-                       ? " The integrator's jitter in the SSE (" + fmt("%.3g", jitter) + ") is far below this evidence, so the verdict stands, but the intervals do not (note below)."
-                       : " Caution: the integrator's jitter in the SSE (" + fmt("%.3g", jitter) +
-                             ") is comparable with this evidence: tighten [simulation] accuracy and rerun before trusting the verdict (note below).";
-  for (std::size_t i = 1; i < named.size(); ++i)
-    if (best.fit->log_evidence - named[i]->fit->log_evidence < options.ambiguity_log_evidence)
-      res.ambiguous_with.push_back(named[i]->effect);
-  if (!res.ambiguous_with.empty()) {
-    res.summary += " Ambiguous: ";
-    for (std::size_t i = 0; i < res.ambiguous_with.size(); ++i) res.summary += (i ? ", " : "") + res.ambiguous_with[i];
-    res.summary += " explain" + std::string(res.ambiguous_with.size() == 1 ? "s" : "") +
-                   " the data almost as well (log evidence within " + fmt("%.0f", options.ambiguity_log_evidence) +
-                   "); more data (another scenario) would separate them.";
-  }
+  const Cause& first = res.causes.front();
+  res.named_effect = first.name;
+  res.named_kind = first.kind;
+  res.finding = first.finding;
+  res.ambiguous_with = first.ambiguous_with;
+  res.summary = effectSummary(d, *named.front(), alike);
   if (after_bad)
-    res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", best.fit->comparison.lack_of_fit_z) +
-                   "): " + locate(best.fit->comparison) + ".";
+    res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", last.lack_of_fit_z) + "): " + locate(last.fit.comparison) + ".";
 }
 
 // ------------------------------------------------------------------ propose
@@ -1015,12 +1218,17 @@ void apply(Diagnosis& d) {
   for (const auto& effect : effects) {
     acc.push_back(effect);
     std::vector<double> start, theta;
-    const Figures* confirmed = nullptr;
+    const Figures* confirmed = nullptr;  // a calibration with exactly these effects, in full, already made
+    auto look = [&](const std::vector<Candidate>& cands) {
+      for (const auto& c : cands)
+        if (c.fit && c.fit->full && c.fit->effects == acc) confirmed = &*c.fit;
+    };
+    look(res.candidates);
+    for (const auto& st : res.further) look(st.candidates);
     for (const auto& c : res.candidates)
       if (c.effect == effect) {
         start = c.screening_estimate;
         theta = c.screening_theta;
-        if (acc.size() == 1 && c.fit && c.fit->full) confirmed = &*c.fit;  // already calibrated with this effect alone
       }
     res.steps.push_back(confirmed ? *confirmed : d.calibrateWith(acc, "apply " + joinEffects(acc), start, theta));
   }
@@ -1042,8 +1250,7 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
   const double base_params = static_cast<double>(study.calibrated.size());
   // Screening: a linearisation (two runs per parameter) and every probe column of every effect.
   // ... and, when the verdict is unexplained, a proposal: a linearisation and every library term.
-  double probe_runs = 2 * base_params + (options.propose_terms > 0 ? 2 * base_params + static_cast<double>(termLibrary(1, 1).size()) : 0.0),
-         most_effect_params = 0;
+  double catalogue_probes = 0, most_effect_params = 0;
   std::vector<std::string> channels;
   for (const auto& s : fit)
     for (const auto& ch : s.data.channels())
@@ -1051,9 +1258,12 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
   std::map<std::string, CandidateSpec> specs;
   for (const auto& e : catalogueOf(study, assembly, options, channels, specs)) {
     const auto groups = probesOf(0, specs.at(e));
-    for (const auto& g : groups) probe_runs += static_cast<double>(g.cols.size());
+    for (const auto& g : groups) catalogue_probes += static_cast<double>(g.cols.size());
     most_effect_params = std::max(most_effect_params, static_cast<double>(specs.at(e).parameters.size()));
   }
+  const double probe_runs =
+      2 * base_params + catalogue_probes +
+      (options.propose_terms > 0 ? 2 * base_params + static_cast<double>(termLibrary(1, 1).size()) : 0.0);
   double applied_params = 0;
   for (const auto& e : options.apply) applied_params += static_cast<double>(specs.at(e).parameters.size());
   const double starts = static_cast<double>(c.optimizer_starts) + 2;  // the screening's and the nested optimum's starts
@@ -1067,7 +1277,15 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
   out.push_back({"diagnose screening", probe_runs, probe_runs * fit_span, 8.0 * probe_runs * fit_records});
   out.push_back(calibration("diagnose confirm", options.candidates, base_params + most_effect_params));
   out.push_back(calibration("diagnose apply", static_cast<double>(options.apply.size()), base_params + applied_params));
-  const double models = 2 + options.candidates + static_cast<double>(options.apply.size());
+  // Forward stagewise: at most causes − 1 further stages, each a screening (a linearisation with
+  // the causes before it, and every probe) and a confirmation on top of them.
+  const double further = static_cast<double>(options.causes - 1);
+  auto more = calibration("diagnose further causes", further * options.candidates, base_params + static_cast<double>(options.causes) * most_effect_params);
+  const double further_probes = further * (2 * (base_params + further * most_effect_params) + catalogue_probes);
+  more.simulations += further_probes;
+  more.simulated_s += further_probes * fit_span;
+  out.push_back(more);
+  const double models = 2 + options.candidates * static_cast<double>(options.causes) + static_cast<double>(options.apply.size());
   const double runs = models * (options.compare_draws + 1);
   out.push_back({"diagnose compare", runs, runs * (fit_span + hold_span), 8.0 * (options.compare_draws + 1) * fit_records});
   return out;
@@ -1096,6 +1314,34 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
   return std::move(d.res);
 }
 
+namespace {
+/// The "screening" (every candidate) and "ranked" (the confirmed ones) arrays of one stage into
+/// `j`; `ref_log_evidence`: the stage's reference model's.
+void candidatesJson(const std::vector<Candidate>& candidates, double ref_log_evidence, nlohmann::json& j) {
+  j["ranked"] = nlohmann::json::array();
+  j["screening"] = nlohmann::json::array();
+  for (const auto& c : candidates) {
+    nlohmann::json s{{"effect", c.effect},     {"kind", c.kind},           {"score", c.score},         {"score_dof", c.score_dof}, {"p_value", c.p_value},
+                     {"max_signal", c.max_signal}, {"gate", c.gate},       {"confirmed", c.confirmed}, {"why", c.why},
+                     {"signature", c.signature}};
+    j["screening"].push_back(s);
+    if (!c.confirmed) continue;
+    nlohmann::json r{{"effect", c.effect},
+                     {"log_evidence", c.fit->log_evidence},
+                     {"log_evidence_vs_base", c.fit->log_evidence - ref_log_evidence},
+                     {"delta_bic", c.delta_bic},
+                     {"explained_fraction", c.explained},
+                     {"kind", c.kind},
+                     {"finding", c.finding},
+                     {"parameters", paramsJson(c.fit->effect_parameters)},
+                     {"why", c.why},
+                     {"fit", c.fit->toJson()}};
+    if (c.holdout_change) r["holdout_systematic_rms_ratio"] = *c.holdout_change;
+    j["ranked"].push_back(r);
+  }
+}
+}  // namespace
+
 nlohmann::json DiagnosisResult::toJson() const {
   nlohmann::json j;
   j["assembly"] = assembly;
@@ -1113,26 +1359,25 @@ nlohmann::json DiagnosisResult::toJson() const {
   j["base"] = base.toJson();
   if (!base_refined_from.empty())
     j["base_refined"] = {{"from", base_refined_from}, {"sse_min_weighted_before", base_unrefined_sse}};
-  j["ranked"] = nlohmann::json::array();
-  j["screening"] = nlohmann::json::array();
-  for (const auto& c : candidates) {
-    nlohmann::json s{{"effect", c.effect},     {"kind", c.kind},           {"score", c.score},         {"score_dof", c.score_dof}, {"p_value", c.p_value},
-                     {"max_signal", c.max_signal}, {"gate", c.gate},       {"confirmed", c.confirmed}, {"why", c.why},
-                     {"signature", c.signature}};
-    j["screening"].push_back(s);
-    if (!c.confirmed) continue;
-    nlohmann::json r{{"effect", c.effect},
-                     {"log_evidence", c.fit->log_evidence},
-                     {"log_evidence_vs_base", c.fit->log_evidence - base.log_evidence},
-                     {"delta_bic", c.delta_bic},
-                     {"explained_fraction", c.explained},
-                     {"kind", c.kind},
-                     {"finding", c.finding},
-                     {"parameters", paramsJson(c.fit->effect_parameters)},
-                     {"why", c.why},
-                     {"fit", c.fit->toJson()}};
-    if (c.holdout_change) r["holdout_systematic_rms_ratio"] = *c.holdout_change;
-    j["ranked"].push_back(r);
+  candidatesJson(candidates, base.log_evidence, j);
+  j["causes"] = nlohmann::json::array();
+  for (const auto& k : causes) {
+    nlohmann::json c{{"name", k.name},           {"kind", k.kind},
+                     {"finding", k.finding},     {"delta_bic", k.delta_bic},
+                     {"explained_fraction", k.explained}, {"lack_of_fit_z_after", k.lack_of_fit_z},
+                     {"parameters", paramsJson(k.parameters)}, {"ambiguous_with", k.ambiguous_with},
+                     {"folder", k.fit.folder}};
+    j["causes"].push_back(c);
+  }
+  j["further_stages"] = nlohmann::json::array();
+  for (const auto& st : further) {
+    nlohmann::json f{{"installed", st.installed}};
+    // The stage's reference: the model with its installed causes.
+    double ref = base.log_evidence;
+    for (const auto& k : causes)
+      if (k.fit.effects == st.installed) ref = k.fit.log_evidence;
+    candidatesJson(st.candidates, ref, f);
+    j["further_stages"].push_back(f);
   }
   j["evidence_estimator"] =
       "BIC = SSE_w,min + k ln n with SSE_w = sum of (y - eta)^2 / sigma_c^2 (sigma_c^2 from the repetitions); log evidence ~ -BIC/2";
@@ -1164,6 +1409,22 @@ std::string DiagnosisResult::text() const {
   s += "Ranked effects (confirmed by re-calibration first):\n";
   int k = 0;
   for (const auto& c : candidates) s += "  " + std::to_string(++k) + ". " + c.why + "\n";
+  for (const auto& st : further) {
+    s += "\nOn top of " + joinEffects(st.installed) + " (ΔBIC against the model with it):\n";
+    k = 0;
+    for (const auto& c : st.candidates)
+      if (c.confirmed || c.gate.empty()) s += "  " + std::to_string(++k) + ". " + c.why + "\n";
+  }
+  if (causes.size() > 1) {
+    s += "\nCauses (forward stagewise, strongest first; parameters from the joint fit " + causes.back().fit.folder + "):\n";
+    for (const auto& c : causes) {
+      s += "  " + c.name + ": explains " + fmt("%.0f", 100 * c.explained) + " % of the excess residual (ΔBIC " + fmt("%.1f", c.delta_bic) +
+           "; lack of fit z " + fmt("%.1f", c.lack_of_fit_z) + " after it)\n";
+      for (const auto& p : c.parameters)
+        s += "    " + p.name + ": optimum " + fmt("%.4g", p.optimum) + " " + p.unit +
+             (p.interval == "none" ? std::string() : "  (95 % " + p.interval + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) + "])") + "\n";
+    }
+  }
   for (const auto& c : candidates)
     if (c.confirmed && c.fit->full && !c.fit->effect_parameters.empty()) {
       s += "\n  " + c.effect + " posterior:\n";

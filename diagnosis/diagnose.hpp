@@ -10,7 +10,8 @@
 //     rank(g⊥) degrees of freedom when the effect is absent. Gate: an effect whose largest
 //     plausible contribution is invisible in these data (e.g. the travel never reaches a
 //     plausible bump-stop gap) is not a candidate.
-//  3. Confirm the best candidates by re-calibrating with the effect's parameters added (the
+//  3. Confirm the candidates whose screening score is within a factor of the best, and the best of
+//     each kind, within a budget, by re-calibrating with the effect's parameters added (the
 //     same machinery; bounds = the effect's prior range) and compare evidence by BIC:
 //     BIC = SSE_w,min + k ln n (σ known: −2 ln L = SSE_w + const), log evidence ≈ −BIC/2.
 //     The evidence needs the optimum alone: every candidate is first calibrated to its optimum,
@@ -40,7 +41,14 @@ namespace dtwin::diag {
 
 struct DiagnoseOptions {
   calib::CalibrationOptions calibration;  ///< sizes of every calibration (base, candidates, applied)
-  int candidates = 3;                ///< at most this many screened effects are confirmed
+  /// The work budget of the confirmation: at most this many screened candidates are re-calibrated.
+  /// Within it, every candidate whose screening score is within a factor confirm_within of the
+  /// best, then the best of each kind (effect, parameter, sensor) (docs/diagnosis.md, "Confirmation").
+  int candidates = 6;
+  double confirm_within = 2.0;       ///< screening scores within this factor of the best are confirmed side by side
+  /// At most this many causes named by forward stagewise selection (docs/diagnosis.md, "More
+  /// than one cause"); 1: the best candidate alone, as before.
+  int causes = 3;
   double screen_alpha = 0.01;        ///< family-wise level of the screening (Bonferroni over every probe)
   double bic_strong = 10.0;          ///< ΔBIC below −bic_strong names an effect (Kass & Raftery 1995: strong)
   double ambiguity_log_evidence = 3.0;  ///< two effects closer than this in log evidence: ambiguous
@@ -123,6 +131,25 @@ struct Candidate {
   std::string why;           ///< one plain sentence
 };
 
+/// A cause the verdict names (forward stagewise selection: each strong against the model with the
+/// causes before it).
+struct Cause {
+  std::string name, kind, finding;  ///< finding: at the joint fit of every cause named
+  double delta_bic = 0;             ///< against the model with the causes before it
+  double explained = 0;             ///< its share of the base's excess residual (the drop at its step)
+  double lack_of_fit_z = 0, lack_of_fit_p = 1;  ///< what remains with it and every cause before it
+  std::vector<EffectParameter> parameters;  ///< in the joint fit of every cause named
+  std::vector<std::string> ambiguous_with;  ///< candidates of its stage within ambiguity_log_evidence
+  Figures fit;                      ///< the model with it and every cause before it
+};
+
+/// A later stage of the stagewise selection: the causes installed and the candidates screened and
+/// confirmed on top of them.
+struct FurtherStage {
+  std::vector<std::string> installed;
+  std::vector<Candidate> candidates;
+};
+
 struct DiagnosisResult {
   std::string assembly, verdict;  ///< verdict: "effect" | "none" | "unexplained"
   std::string summary;            ///< plain sentences
@@ -137,6 +164,10 @@ struct DiagnosisResult {
   std::string base_refined_from;
   double base_unrefined_sse = 0;
   std::vector<Candidate> candidates;  ///< every effect: confirmed ones first (by evidence), then by score, gated last
+  /// The causes named, strongest first (verdict "effect"; with "unexplained", those that explain
+  /// too little together). causes.front() is named_effect.
+  std::vector<Cause> causes;
+  std::vector<FurtherStage> further;  ///< the stages after the first (one per cause after the first, and the last that found none)
   std::vector<Figures> steps;         ///< options.apply: base, + e1, + e1 + e2, ...
   /// Verdict "unexplained": the terms the sparse regression proposes (proposal.hpp), best first,
   /// and what it found in words (also when it proposes nothing).

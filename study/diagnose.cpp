@@ -130,7 +130,7 @@ std::vector<std::string> expandApply(Study& study, const std::vector<std::string
 }
 
 nlohmann::json optionsJson(const diag::DiagnoseOptions& o) {
-  return {{"calibration", o.calibration.toJson()}, {"candidates", o.candidates}, {"screen_alpha", o.screen_alpha},
+  return {{"calibration", o.calibration.toJson()}, {"candidates", o.candidates}, {"confirm_within", o.confirm_within}, {"causes", o.causes}, {"screen_alpha", o.screen_alpha},
           {"bic_strong", o.bic_strong}, {"ambiguity_log_evidence", o.ambiguity_log_evidence},
           {"full_within", std::isinf(o.full_within) ? nlohmann::json("all") : nlohmann::json(o.full_within)},
           {"explained_min", o.explained_min}, {"lack_of_fit_alpha", o.lack_of_fit_alpha}, {"compare_draws", o.compare_draws},
@@ -155,11 +155,16 @@ void writeDiagnosis(const Study& study, const DiagnoseRequest& request, const Di
       writeFileAtomic((out / "proposal.toml").string(), "# Proposed by twin diagnose (" + run.options.command +
                                                             "): paste into the study file, or pass this file to --apply.\n" +
                                                             r.proposalToml());
-    // Full comparisons (series data for plots): the base, every confirmed candidate, every step.
+    // Full comparisons (series data for plots): the base, every confirmed candidate, every cause, every step.
     writeFileAtomic((out / "comparisons" / "base.json").string(), r.base.comparison.toJson(true).dump() + "\n");
     for (const auto& c : r.candidates)
       if (c.confirmed)
         writeFileAtomic((out / "comparisons" / (c.effect + ".json")).string(), c.fit->comparison.toJson(true).dump() + "\n");
+    for (std::size_t k = 1; k < r.causes.size(); ++k) {  // the models with the causes found in turn
+      std::string name;
+      for (const auto& e : r.causes[k].fit.effects) name += (name.empty() ? "" : "+") + e;
+      writeFileAtomic((out / "comparisons" / (name + ".json")).string(), r.causes[k].fit.comparison.toJson(true).dump() + "\n");
+    }
     for (std::size_t k = 1; k < r.steps.size(); ++k) {
       std::string name;
       for (const auto& e : r.steps[k].effects) name += (name.empty() ? "" : "+") + e;
@@ -181,7 +186,8 @@ DiagnoseRun diagnoseMeasurements(const Study& base_study, const DiagnoseRequest&
   run.options = request.options;
   run.options.apply = expandApply(study, request.options.apply);
   run.options.validate();
-  checkWork(diag::estimateDiagnoseWork(study, assembly, fit, hold, run.options), "--data", request.force);
+  const auto work = diag::estimateDiagnoseWork(study, assembly, fit, hold, run.options);
+  checkWork(work, "--data", request.force);
   const std::string out = request.out.empty()
                               ? (fs::temp_directory_path() / ("twin-diagnose-" + std::to_string(::getpid()))).string()
                               : request.out;
@@ -191,6 +197,14 @@ DiagnoseRun diagnoseMeasurements(const Study& base_study, const DiagnoseRequest&
     say("diagnosing " + assembly.id + " (" + assembly.label() + ") on " + plural(fit.size(), "measurement file") + " (" +
         std::to_string(records) + " records)" + (hold.empty() ? "" : ", " + std::to_string(hold.size()) + " held out") +
         "; calibrations in " + (fs::path(out) / "calibrations").string());
+    double sims = 0, simulated = 0;
+    for (const auto& w : work) {
+      sims += w.simulations;
+      simulated += w.simulated_s;
+    }
+    say("budget: at most " + plural(static_cast<std::size_t>(run.options.candidates), "confirmation") + " per stage and " +
+        plural(static_cast<std::size_t>(run.options.causes), "cause") + " (--candidates, --causes); upper estimate " +
+        formatPrintf("%.3g simulations, %.3g simulated s", sims, simulated));
   }
   run.result = diag::diagnose(study, assembly, fit, hold, run.options, out, progress);
   if (!request.out.empty()) {

@@ -342,8 +342,12 @@ struct RosenbrockIntegrator::Impl : rosenbrock_detail::Ros34pw2Core {
     ++n_evals;
     try {
       system.realize(s, SimTK::Stage::Acceleration);
+    } catch (const SimTK::Exception::Base&) {
+      // Simbody's own text (file, line, method) means nothing to a user: plain words instead.
+      throw std::runtime_error("the multibody model could not be evaluated at t = " + fmt(s.getTime()) +
+                               " s (Simbody refused the state: non-finite forces or a configuration it cannot realise)");
     } catch (const std::exception& e) {
-      throw std::runtime_error("RosenbrockIntegrator: derivative evaluation failed at t = " + fmt(s.getTime()) + " s: " + e.what());
+      throw std::runtime_error("the multibody model could not be evaluated at t = " + fmt(s.getTime()) + " s: " + e.what());
     }
   }
 

@@ -67,6 +67,15 @@ nlohmann::json SimulationOptions::toJson() const {
 // ----------------------------------------------------------------------- run context
 namespace {
 
+/// Why a run failed, in words a user can act on: Simbody's own exception text (its source file,
+/// line and method) is replaced; the integrators' and the laws' messages are ours already.
+std::string failureInWords(const std::exception& e) {
+  if (dynamic_cast<const SimTK::Exception::Base*>(&e))
+    return "the multibody model could not be evaluated (Simbody refused the state: non-finite forces or a configuration it "
+           "cannot realise)";
+  return e.what();
+}
+
 /// Per-run data the force elements read (owned by the Simulator, set before each run).
 struct RunContext {
   const double* p = nullptr;
@@ -740,7 +749,7 @@ struct Simulator::Impl {
         if (end) *end = integ.getState();
       } catch (const std::exception& e) {
         st.ok = false;
-        st.message = oneLine(std::string("simulation failed: ") + e.what());
+        st.message = oneLine("simulation failed: " + failureInWords(e));
       }
       st.steps = integ.steps();
       st.steps_attempted = integ.attempts();
@@ -773,7 +782,7 @@ struct Simulator::Impl {
         if (end) *end = integ->getState();
       } catch (const std::exception& e) {
         st.ok = false;
-        st.message = oneLine(std::string("simulation failed: ") + e.what());
+        st.message = oneLine("simulation failed: " + failureInWords(e));
       }
       st.steps = integ->getNumStepsTaken();
       st.steps_attempted = integ->getNumStepsAttempted();

@@ -102,6 +102,23 @@ TEST(Candidates, SpecsCarryOffValuesPriorsAndSetups) {
     EXPECT_THROW(candidateSpec(bad, s, a, kHub, "t"), InputError) << bad;
 }
 
+TEST(Candidates, ARangeThatWouldLeaveTheValidSetIsClippedAndSaysSo) {
+  // The CG 0.1 m behind the front axle: +10 % of the 1.604 m wheelbase (0.16 m) forward would put
+  // it ahead of the axle; the range stops at 90 % of the way (0.09 m) and the text says why.
+  const Study s = loadStudy(
+      dtwin_test::writeDemoStudy(dtwin_test::freshDir("cands_clip") / "study.toml", "\n[fixed]\n\"geometry.cg_to_front_axle_m\" = 0.1\n").string());
+  const auto cg = candidateSpec("free:chassis.cg_x_m", s, s.assemblies().front(), kHub, "t");
+  ASSERT_EQ(cg.parameters.size(), 1u);
+  EXPECT_DOUBLE_EQ(cg.parameters[0].prior_upper, 0.9 * 0.1);
+  EXPECT_NEAR(cg.parameters[0].prior_lower, -0.1 * (0.1 + 1.504), 1e-12);  // the rear end is not clipped
+  EXPECT_NE(cg.range_note.find("clipped"), std::string::npos) << cg.range_note;
+  EXPECT_NE(cg.range_note.find("front axle"), std::string::npos) << cg.range_note;
+  EXPECT_EQ(cg.range_note.find("rear axle"), std::string::npos) << cg.range_note;
+  EXPECT_NE(cg.signature.find(cg.range_note), std::string::npos);
+  // A mass's ±50 % stays positive: nothing to clip, nothing said.
+  EXPECT_TRUE(candidateSpec("free:wheel.mass_kg", s, s.assemblies().front(), kHub, "t").range_note.empty());
+}
+
 TEST(Candidates, ASensorModelInTheObjectiveIsTheChannelThroughDistortChannel) {
   const Study s = demo();
   LabData data;

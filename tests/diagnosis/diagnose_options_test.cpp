@@ -190,11 +190,16 @@ TEST(DiagnoseWork, EstimatesScaleWithTheSizesThatDriveThem) {
     return StageWork{};
   };
   const auto w = estimateDiagnoseWork(s, a, {set}, {}, o);
-  ASSERT_EQ(w.size(), 5u);
+  ASSERT_EQ(w.size(), 6u);
   EXPECT_GT(stage(w, "diagnose screening").simulations, 0.0);
   // The demo's diagnosis runs without --force; twice the data span, twice the work.
   EXPECT_LT(total(w), WorkLimits().simulated_s);
   EXPECT_NEAR(total(estimateDiagnoseWork(s, a, {flatSet(4.0, 10.0, 3)}, {}, o)), 2 * total(w), 1e-6 * total(w));
+  // Further causes: one more screening and confirmation per cause after the first.
+  EXPECT_GT(stage(w, "diagnose further causes").simulations, stage(w, "diagnose screening").simulations);
+  auto one = o;
+  one.causes = 1;
+  EXPECT_EQ(stage(estimateDiagnoseWork(s, a, {set}, {}, one), "diagnose further causes").simulations, 0.0);
   // No candidates, no confirmations; each applied effect one more calibration.
   o.candidates = 0;
   EXPECT_EQ(stage(estimateDiagnoseWork(s, a, {set}, {}, o), "diagnose confirm").simulations, 0.0);

@@ -103,7 +103,7 @@ CalibrationFolder readCalibrationFolder(const std::string& dir) {
   try {
     f.summary = nlohmann::json::parse(readTextFile(where));
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(where, std::string("is not valid JSON: ") + e.what());
+    throw InputError(where, std::string("is not valid JSON: ") + jsonErrorInWords(e));
   }
   if (!f.summary.is_object()) throw InputError(where, "must hold a JSON object");
   if (!f.summary.contains("assembly")) throw InputError(where + ": assembly", "is missing");
@@ -116,7 +116,7 @@ CalibrationFolder readCalibrationFolder(const std::string& dir) {
     } catch (const InputError&) {
       throw;
     } catch (const std::exception& e) {
-      throw InputError(where + ": setup", std::string("is malformed: ") + e.what());
+      throw InputError(where + ": setup", std::string("is malformed: ") + jsonErrorInWords(e));
     }
   }
   f.posterior = readPosteriorCsv((d / "posterior.csv").string());

@@ -33,7 +33,7 @@ nlohmann::json readJsonFile(const fs::path& p) {
   try {
     in >> j;
   } catch (const std::exception& e) {
-    throw InputError(p.string(), std::string("not valid JSON: ") + e.what());
+    throw InputError(p.string(), std::string("not valid JSON: ") + jsonErrorInWords(e));
   }
   return j;
 }
@@ -150,7 +150,7 @@ std::vector<nlohmann::json> readSyntheses(const std::vector<AssemblySpec>& targe
       if (!(j.at("cost").at("wall_s_per_simulated_s_median").get<double>() > 0))
         throw InputError(where, "records no cost (no successful run?)");
     } catch (const nlohmann::json::exception& e) {
-      throw InputError(where, std::string("malformed synthesis.json: ") + e.what());
+      throw InputError(where, std::string("malformed synthesis.json: ") + jsonErrorInWords(e));
     }
     infos.push_back(j);
   }

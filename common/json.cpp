@@ -15,8 +15,17 @@ nlohmann::json readJsonFile(const std::string& path, const std::string& hint) {
   try {
     return nlohmann::json::parse(text);
   } catch (const std::exception& e) {
-    throw InputError(path, std::string("is not valid JSON: ") + e.what());
+    throw InputError(path, "is not valid JSON: " + jsonErrorInWords(e));
   }
+}
+
+std::string jsonErrorInWords(const std::exception& e) {
+  std::string w = e.what();
+  if (w.rfind("[json.exception.", 0) == 0) {
+    const auto close = w.find("] ");
+    if (close != std::string::npos) w = w.substr(close + 2);
+  }
+  return w;
 }
 
 nlohmann::json jsonNumber(double v) {

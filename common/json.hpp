@@ -15,6 +15,10 @@ namespace dtwin {
 /// valid JSON.
 nlohmann::json readJsonFile(const std::string& path, const std::string& hint = "");
 
+/// A JSON library error in words: nlohmann's "[json.exception.parse_error.101] parse error at line
+/// 1, column 1: syntax error ..." without its bracketed identifier ("parse error at line 1, ...").
+std::string jsonErrorInWords(const std::exception& e);
+
 /// `v` as a JSON number, or "inf" / "-inf" / "nan" when it is not finite.
 nlohmann::json jsonNumber(double v);
 /// The inverse of jsonNumber (any other string reads as NaN).

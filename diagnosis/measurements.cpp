@@ -46,7 +46,7 @@ calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec) 
       if (j.contains("road") && j["road"].is_object() && j["road"].contains("seed") && j["road"]["seed"].is_number_unsigned())
         ds.road_seed = j["road"]["seed"].get<std::uint64_t>();
     } catch (const nlohmann::json::exception& e) {
-      throw InputError(side, std::string("is not valid JSON: ") + e.what());
+      throw InputError(side, std::string("is not valid JSON: ") + jsonErrorInWords(e));
     }
   }
   if (!ds.scenario.empty() && !side_scenario.empty() && ds.scenario != side_scenario)

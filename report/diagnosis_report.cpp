@@ -167,7 +167,7 @@ Comparison readComparison(const fs::path& p) {
   } catch (const InputError& e) {
     throw InputError(p.string(), e.rule());
   } catch (const std::exception& e) {
-    throw InputError(p.string(), std::string("is malformed: ") + e.what());
+    throw InputError(p.string(), std::string("is malformed: ") + jsonErrorInWords(e));
   }
   return c;
 }

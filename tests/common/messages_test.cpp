@@ -1,9 +1,11 @@
 // One-line messages: printable() escapes the control bytes of quoted user text, InputError applies
-// it to both parts, and oneLine() folds another library's multi-line message.
+// it to both parts, oneLine() folds another library's multi-line message, and a JSON library's
+// error identifiers are dropped (jsonErrorInWords).
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/json.hpp"
 
 namespace {
 
@@ -28,6 +30,19 @@ TEST(Messages, OneLineFoldsWhiteSpaceRuns) {
             "SimTK Exception thrown at X.h:524: Error detected (Required.)");
   EXPECT_EQ(dtwin::oneLine("  \n\t "), "");
   EXPECT_EQ(dtwin::oneLine("one line"), "one line");
+}
+
+TEST(Messages, ALibrarysIdentifiersDoNotReachTheUser) {
+  // nlohmann's bracketed exception id is dropped; the position and the reason stay.
+  try {
+    (void)nlohmann::json::parse("{\"a\": ");
+    FAIL() << "parsed";
+  } catch (const nlohmann::json::exception& e) {
+    const std::string w = dtwin::jsonErrorInWords(e);
+    EXPECT_EQ(w.find("json.exception"), std::string::npos) << w;
+    EXPECT_NE(w.find("parse error"), std::string::npos) << w;
+  }
+  EXPECT_EQ(dtwin::jsonErrorInWords(std::runtime_error("plain")), "plain");
 }
 
 }  // namespace

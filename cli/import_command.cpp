@@ -20,8 +20,25 @@ struct ImportConfig {
   std::string time, speed, road, road_left, road_right, separator;
   std::vector<std::string> channels;
   double highpass_hz = 0.0, speed_lowpass_hz = 0.0;
+  std::vector<double> window;  ///< --window A,B
+  double run_in = -1;          ///< --run-in S (-1: the mapping's, or 10 s)
   bool quiet = false;
 };
+
+/// --window and --run-in over the mapping (given once: in the file or as the flag).
+void applyWindowFlags(const ImportConfig& cfg, ImportMapping& m) {
+  if (!cfg.window.empty()) {
+    if (m.window_s) throw InputError("--window", "the mapping file gives window_s already (" + m.window_where + "): give the window once");
+    if (cfg.window.size() != 2 || !(cfg.window[0] >= 0 && cfg.window[0] < cfg.window[1]))
+      throw InputError("--window", "expects START,END in seconds from the log's first row with 0 <= START < END");
+    m.window_s = std::array<double, 2>{cfg.window[0], cfg.window[1]};
+    m.window_where = "--window";
+  }
+  if (cfg.run_in >= 0) {
+    if (!m.window_s) throw InputError("--run-in", "needs a window (--window or the mapping's window_s)");
+    m.run_in_s = cfg.run_in;
+  }
+}
 
 /// The mapping from the command line: --time, --speed, --road | --road-left/--road-right,
 /// --channel COL:CHANNEL:UNIT[:OFFSET[:SCALE]] (repeatable).
@@ -62,7 +79,8 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
                      !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
   if (!cfg.map.empty() && flags) throw InputError("--map", "give the mapping either in the file or as flags (--time, --speed, --road, --channel), not both");
   if (cfg.map.empty() && !flags) throw InputError("--map", "is required (or the flags --time, --speed, --channel)");
-  const ImportMapping mapping = cfg.map.empty() ? mappingFromFlags(cfg) : readImportMapping(cfg.map);
+  ImportMapping mapping = cfg.map.empty() ? mappingFromFlags(cfg) : readImportMapping(cfg.map);
+  applyWindowFlags(cfg, mapping);
   const auto t0 = std::chrono::steady_clock::now();
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(cfg.log, ec);
@@ -83,6 +101,12 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
     std::printf("wrote %s/: measurements.csv (+ .json), speed.csv, %sstudy.toml (scenario '%s')\n", cfg.out.c_str(),
                 r.road_csv.empty() ? "" : "road.csv, ", r.scenario.c_str());
     if (r.road_csv.empty()) std::printf("note: no road column was mapped: the drive's scenario has a flat road\n");
+    if (r.outside_window > 0 || !r.masked.empty()) {
+      std::string dropped = std::to_string(r.outside_window) + " rows outside the window";
+      for (const auto& [text, count] : r.masked) dropped += ", " + std::to_string(count) + " masked by " + text;
+      std::printf("not measured (neither fitted nor scored; measurements.json says why): %s; the run starts at log time %s s, %s m down the road\n",
+                  dropped.c_str(), formatNumber(r.t0_s, 6).c_str(), formatNumber(r.start_m, 6).c_str());
+    }
     std::printf("next: twin compare --study %s/study.toml --calibration CAL_DIR --data %s/measurements.csv\n", cfg.out.c_str(), cfg.out.c_str());
   }
   return 0;
@@ -108,6 +132,12 @@ CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) 
   c->add_option("--speed-lowpass-hz", cfg->speed_lowpass_hz, "Smooth the speed by a zero-phase low-pass at this cut-off [Hz] (default: none)")
       ->check(CLI::Range(0.01, 100.0));
   c->add_option("--separator", cfg->separator, "Field separator of the log: one character, 'tab', or 'whitespace' (a run of spaces and tabs; default ',')");
+  c->add_option("--window", cfg->window,
+                "Only rows in START,END (s from the log's first row) are measurements; the run starts --run-in before START")
+      ->delimiter(',')
+      ->expected(2);
+  c->add_option("--run-in", cfg->run_in, "Seconds of the log simulated before the window, for the model to settle (default 10)")
+      ->check(CLI::Range(0.0, 3600.0));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
   return {c, [cfg, command_line] { return runImport(*cfg, command_line); }, {}};
 }

@@ -46,13 +46,49 @@ const Unit kUnits[] = {
     {"N", "N", 1.0},           {"kN", "N", 1e3},
     {"rad", "rad", 1.0},       {"deg", "rad", kPi / 180.0},
     {"rad/s^2", "rad/s^2", 1.0}, {"deg/s^2", "rad/s^2", kPi / 180.0},
+    {"rad/s", "rad/s", 1.0},   {"deg/s", "rad/s", kPi / 180.0},
 };
+
 
 std::string unitList(const std::string& si) {
   std::string out;
   for (const auto& u : kUnits)
     if (si.empty() || u.si == si) out += (out.empty() ? "" : ", ") + std::string(u.name);
   return out;
+}
+
+/// A mask's unit: its factor to SI and the SI unit, whatever the quantity (a yaw rate, a speed, a
+/// lateral acceleration); InputError(where) for a unit no log column may have.
+std::pair<double, std::string> anyUnit(const std::string& unit, const std::string& where) {
+  for (const auto& u : kUnits)
+    if (unit == u.name && unit != "clock") return {u.factor, u.si};
+  throw InputError(where, "unknown unit '" + unit + "' (known: " + unitList("") + ")");
+}
+
+/// One mask table { column, unit, above and/or below, offset, scale }.
+ImportMask readMask(const toml::table& t, const std::string& file, const std::string& field) {
+  TableReader r(t, file, field);
+  ImportMask k;
+  const auto col = r.string("column");
+  if (!col || col->empty()) throw InputError(r.where("column"), "is required (the log's column the mask reads)");
+  k.source.column = *col;
+  k.source.where = r.where("column");
+  const auto unit = r.string("unit");
+  if (!unit) throw InputError(r.where("unit"), "is required (the unit of the column and of the thresholds, e.g. \"rad/s\")");
+  k.source.unit = *unit;
+  const auto [factor, si] = anyUnit(*unit, r.where("unit"));
+  k.si = si;
+  k.source.offset = r.number("offset", 0.0);
+  k.source.scale = r.number("scale", 1.0);
+  if (k.source.scale == 0) throw InputError(r.where("scale"), "must not be 0");
+  for (const char* side : {"above", "below"})
+    if (auto v = r.number(side)) {
+      if (*v < 0) throw InputError(r.where(side), "must be >= 0 (a mask compares the magnitude |value|), got " + formatNumber(*v));
+      (std::string(side) == "above" ? k.above : k.below) = *v * factor;
+    }
+  if (!k.above && !k.below) throw InputError(r.where("above"), "a mask needs above or below (or both)");
+  r.finish();
+  return k;
 }
 
 ImportColumn readColumn(TableReader& r, const std::string& key, const std::string& default_unit) {
@@ -263,6 +299,13 @@ ImportColumn parseImportColumn(const std::string& text, const std::string& flag,
   return c;
 }
 
+std::string ImportMask::text() const {
+  std::string s;
+  if (above) s = "|" + source.column + "| > " + formatNumber(*above) + " " + si;
+  if (below) s += (s.empty() ? "" : " or ") + std::string("|") + source.column + "| < " + formatNumber(*below) + " " + si;
+  return s;
+}
+
 ImportMapping readImportMapping(const std::string& path) {
   const std::string text = readTextFile(path, " (an import mapping)");
   toml::table root;
@@ -316,6 +359,31 @@ ImportMapping readImportMapping(const std::string& path) {
   }
   if (m.decimal_comma && m.separator == ',')
     throw InputError(r.where("decimal_comma"), "needs a separator other than ',' (e.g. separator = \";\")");
+  if (const toml::array* w = r.array("window_s")) {
+    m.window_where = r.where("window_s");
+    if (w->size() != 2 || !(*w)[0].is_number() || !(*w)[1].is_number())
+      throw InputError(m.window_where, "must be [start, end] in seconds from the log's first row");
+    m.window_s = std::array<double, 2>{*(*w)[0].value<double>(), *(*w)[1].value<double>()};
+    if (!((*m.window_s)[0] >= 0 && (*m.window_s)[0] < (*m.window_s)[1]))
+      throw InputError(m.window_where, "must be [start, end] with 0 <= start < end, got [" + formatNumber((*m.window_s)[0]) + ", " +
+                                           formatNumber((*m.window_s)[1]) + "]");
+  }
+  if (r.has("run_in_s")) {
+    m.run_in_s = *r.number("run_in_s");
+    if (!(m.run_in_s >= 0 && m.run_in_s <= 3600))
+      throw InputError(r.where("run_in_s"), "must lie in [0, 3600] s, got " + formatNumber(m.run_in_s));
+    if (!m.window_s) throw InputError(r.where("run_in_s"), "needs window_s (the run-in is the log before the window)");
+  }
+  if (r.isTable("exclude")) {
+    m.exclude.push_back(readMask(*r.table("exclude"), path, r.field("exclude")));
+  } else if (const toml::array* ex = r.array("exclude")) {
+    for (std::size_t i = 0; i < ex->size(); ++i) {
+      const auto* t = (*ex)[i].as_table();
+      const std::string field = r.field("exclude") + "[" + std::to_string(i) + "]";
+      if (!t) throw InputError(r.where("exclude"), field + " must be a table { column, unit, above, below }");
+      m.exclude.push_back(readMask(*t, path, field));
+    }
+  }
   const toml::array* chans = r.array("channels");
   if (!chans || chans->empty()) throw InputError(r.where("channels"), "needs at least one [[import.channels]] (column, channel, unit)");
   for (std::size_t i = 0; i < chans->size(); ++i) {
@@ -431,6 +499,7 @@ class ClockCounter {
 struct LogRows {
   std::vector<double> t, v;
   std::vector<std::vector<double>> road, values;
+  std::vector<std::vector<double>> mask;  ///< per mask: |value| in SI, NaN for an empty cell
   long dropped_cells = 0;
 };
 
@@ -444,6 +513,7 @@ class LogRowReader {
     header();
     rows_.road.resize(u_.road_cols.size());
     rows_.values.resize(m_.channels.size());
+    rows_.mask.resize(m_.exclude.size());
     run_.assign(m_.channels.size(), 0);
     run_start_.assign(m_.channels.size(), 0);
     while (csv_.next()) {
@@ -465,6 +535,7 @@ class LogRowReader {
     i_speed_ = columnIndex(header_, *m_.speed, name_);
     for (const auto* c : u_.road_cols) i_road_.push_back(columnIndex(header_, *c, name_));
     for (const auto& c : m_.channels) i_ch_.push_back(columnIndex(header_, c.source, name_));
+    for (const auto& k : m_.exclude) i_mask_.push_back(columnIndex(header_, k.source, name_));
     for (long k = 0; k < m_.skip_rows; ++k)
       if (!csv_.next()) break;  // a row of units, say
   }
@@ -475,6 +546,11 @@ class LogRowReader {
     buffer_.assign(f);
     std::replace(buffer_.begin(), buffer_.end(), ',', '.');
     return parseNumber(buffer_, x);
+  }
+  std::vector<double> maskFactors() const {
+    std::vector<double> f;
+    for (const auto& k : m_.exclude) f.push_back(anyUnit(k.source.unit, k.source.where).first);
+    return f;
   }
   InputError cellError(std::size_t col, const std::string& rule) const {
     return InputError(csv_.where(), "column '" + header_[col] + "': " + rule);
@@ -515,6 +591,20 @@ class LogRowReader {
     for (std::size_t k = 0; k < u_.road_cols.size(); ++k)
       rows_.road[k].push_back((number(i_road_[k]) - u_.road_cols[k]->offset) * u_.road_cols[k]->scale * u_.road[k]);
     for (std::size_t k = 0; k < m_.channels.size(); ++k) channelCell(k);
+    for (std::size_t k = 0; k < m_.exclude.size(); ++k) maskCell(k);
+  }
+
+  /// Mask k's cell of this row: its magnitude in SI, NaN when empty.
+  void maskCell(std::size_t k) {
+    const auto cell = csv_.fields()[i_mask_[k]];
+    double x = 0;
+    if (isMissing(cell) || (parse(cell, x) && std::isnan(x))) {
+      rows_.mask[k].push_back(std::numeric_limits<double>::quiet_NaN());
+      return;
+    }
+    if (!parse(cell, x) || !std::isfinite(x)) throw cellError(i_mask_[k], "'" + std::string(cell) + "' is not a finite number (a mask's column)");
+    const auto& src = m_.exclude[k].source;
+    rows_.mask[k].push_back(std::abs((x - src.offset) * src.scale * mask_factor_[k]));
   }
 
   /// Channel k's cell of this row: a number, or a dropout (at most max_dropout_rows in a row).
@@ -542,20 +632,60 @@ class LogRowReader {
   const ImportUnits& u_;
   std::vector<std::string> header_;
   std::size_t i_time_ = 0, i_speed_ = 0;
-  std::vector<std::size_t> i_road_, i_ch_;
+  std::vector<std::size_t> i_road_, i_ch_, i_mask_;
+  std::vector<double> mask_factor_ = maskFactors();
   std::string buffer_, previous_time_;
   ClockCounter clock_;
   std::vector<long> run_, run_start_, lines_;
   LogRows rows_;
 };
 
-/// speed.csv and road.csv ("" without a mapped road) from the rows, times from 0.
-void writeInputs(ImportResult& res, const ImportMapping& m, const ImportUnits& u, const std::vector<double>& t, std::vector<double> v,
-                 const std::vector<std::vector<double>>& road) {
+/// The speed smoothed as the mapping asks (speed_lowpass_hz), in place.
+void smoothSpeed(const ImportMapping& m, const std::vector<double>& t, std::vector<double>& v) {
   if (m.speed_lowpass_hz > 0) {  // zero phase: the input minus its zero-phase high-pass
     const auto high = zeroPhaseHighPass(t, v, m.speed_lowpass_hz);
     for (std::size_t i = 0; i < v.size(); ++i) v[i] = std::max(0.0, v[i] - high[i]);
   }
+}
+
+/// The rows a run covers ([first, last]) and the window of measured times (s from the log's
+/// first row).
+constexpr double kRunOut_s = 0.5;
+
+struct RunSpan {
+  std::size_t first = 0, last = 0;
+  double window_begin = 0, window_end = 0;
+  /// The distance travelled from the log's first row to the run's first (trapezoid rule).
+  double start_m(const std::vector<double>& t, const std::vector<double>& v) const {
+    double x = 0;
+    for (std::size_t i = 1; i <= first; ++i) x += 0.5 * (v[i] + v[i - 1]) * (t[i] - t[i - 1]);
+    return x;
+  }
+};
+
+RunSpan runSpan(const ImportMapping& m, const std::vector<double>& t, const std::string& log_name) {
+  RunSpan s;
+  s.last = t.size() - 1;
+  s.window_end = t.back();
+  if (!m.window_s) return s;
+  const auto [a, b] = *m.window_s;
+  if (b > t.back() || a >= t.back())
+    throw InputError(m.window_where, "window [" + formatNumber(a) + ", " + formatNumber(b) + "] s ends after the log " + log_name +
+                                         " (its rows span 0.." + formatNumber(t.back()) + " s from its first row)");
+  s.window_begin = a;
+  s.window_end = b;
+  const double from = std::max(0.0, a - m.run_in_s);
+  while (s.first + 1 < t.size() && t[s.first + 1] <= from) ++s.first;
+  // The inputs run 0.5 s past the window (at most to the log's end), so the road's and the speed's
+  // interpolation at the window's end is the whole drive's there, not a one-sided end of its own.
+  while (s.last > s.first && t[s.last] > b + kRunOut_s) --s.last;
+  if (s.last == s.first) throw InputError(m.window_where, "holds fewer than 2 rows of " + log_name);
+  return s;
+}
+
+/// speed.csv and road.csv ("" without a mapped road) from the run's rows, times from 0.
+void writeInputs(ImportResult& res, const ImportUnits& u, const std::vector<double>& t, const std::vector<double>& v,
+                 const std::vector<std::vector<double>>& road) {
   std::string s = "time_s,speed_mps\n";
   s.reserve(t.size() * 24);
   for (std::size_t i = 0; i < t.size(); ++i) s += formatExact(t[i]) + "," + formatExact(v[i]) + "\n";
@@ -575,7 +705,7 @@ void writeInputs(ImportResult& res, const ImportMapping& m, const ImportUnits& u
 /// The study: the base file's text (paths made absolute), then the drive and the mapping's
 /// sensors as new tables at its end.
 std::string importedStudyText(const std::string& log_name, const ImportMapping& m, const ImportUnits& u, const std::string& base_study,
-                              const std::string& scenario, double duration_s) {
+                              const std::string& scenario, double duration_s, double start_m) {
   const std::string base_text = readTextFile(base_study);
   toml::table root;
   try {
@@ -588,7 +718,8 @@ std::string importedStudyText(const std::string& log_name, const ImportMapping& 
         << "\n# with its relative paths made absolute, and the drive added at the end as scenario '" << scenario << "'.\n"
         << absolutizedStudyText(base_text, root, fs::absolute(base_study).parent_path(), base_study) << "\n"
         << "# ---- added by twin import ----\n[scenarios." << scenario << "]\nduration_s = " << formatExact(duration_s)
-        << "\nspeed = { csv = \"speed.csv\" }\n";
+        << "\nspeed = { csv = \"speed.csv\"" << (start_m != 0 ? ", start_m = " + formatExact(start_m) : std::string())
+        << " }" << (start_m != 0 ? "  # start_m: the distance driven before the run's first row (a window of the log)" : "") << "\n";
   if (!u.road_cols.empty()) {
     study << "road = { type = \"csv_time\", path = \"road.csv\"";
     if (u.road_velocity) study << ", highpass_hz = " << formatExact(m.highpass_hz);
@@ -608,6 +739,23 @@ std::string importedStudyText(const std::string& log_name, const ImportMapping& 
     if (x.noise_sd > 0) study << "noise_sd = " << formatExact(x.noise_sd) << "\n";
   }
   return study.str();
+}
+
+/// The window and the masks: what was kept and what was dropped, and why.
+nlohmann::json windowJson(const ImportResult& res, const ImportMapping& m) {
+  nlohmann::json masks = nlohmann::json::array();
+  for (const auto& [text, count] : res.masked) masks.push_back({{"mask", text}, {"rows_dropped", count}});
+  nlohmann::json j = {{"rows_outside_window", res.outside_window}, {"masks", masks}};
+  if (m.window_s) {
+    j["window_s"] = *m.window_s;
+    j["run_in_s"] = m.run_in_s;
+    j["run_from_log_s"] = res.t0_s;
+    j["start_m"] = res.start_m;
+    j["rule"] = "measurements are the rows with times in window_s (s from the log's first row); the run starts run_in_s before it "
+                "(at the log's first row at the earliest), its speed and road are the log's from there, and start_m is the distance "
+                "driven before the run's first row";
+  }
+  return j;
 }
 
 /// How the files were made: the log, the mapping in full, the counts.
@@ -638,6 +786,7 @@ nlohmann::json importSidecar(const ImportResult& res, const std::string& log_tex
                        {"skip_rows", m.skip_rows},
                        {"decimal_comma", m.decimal_comma}}},
           {"dropped_cells", res.dropped_cells},
+          {"window", windowJson(res, m)},
           {"records", res.data.records.size()},
           {"study", base_study}};
 }
@@ -655,16 +804,47 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   if (t.size() < 2) throw InputError(log_name, "holds " + std::to_string(t.size()) + " data rows; a drive needs at least 2");
   res.rows = static_cast<long>(t.size());
   res.dropped_cells = rows.dropped_cells;
-  res.t0_s = t.front();
-  // Times from the first row, rounded to 1 ns (so 100.0129 - 100 is written 0.0129).
-  for (double& x : t) x = std::round((x - res.t0_s) * 1e9) / 1e9;
-  res.duration_s = t.back();
-  for (std::size_t i = 0; i < t.size(); ++i)
+  const double log_t0 = t.front();
+  for (double& x : t) x -= log_t0;  // from the first row
+  // The run: the whole log, or from run_in_s before the window to its end.
+  const RunSpan span = runSpan(m, t, log_name);
+  // The speed is smoothed over the whole log before it is cut, so a window's speed is the whole
+  // drive's there.
+  smoothSpeed(m, t, rows.v);
+  res.start_m = span.start_m(t, rows.v);
+  res.t0_s = log_t0 + t[span.first];
+  // Times from the run's first row, rounded to 1 ns (so 100.0129 - 100 is written 0.0129).
+  const double shift = t[span.first];
+  std::vector<double> tr(span.last + 1 - span.first), vr(tr.size());
+  std::vector<std::vector<double>> road(rows.road.size(), std::vector<double>(tr.size()));
+  for (std::size_t i = span.first; i <= span.last; ++i) {
+    tr[i - span.first] = std::round((t[i] - shift) * 1e9) / 1e9;
+    vr[i - span.first] = rows.v[i];
+    for (std::size_t k = 0; k < road.size(); ++k) road[k][i - span.first] = rows.road[k][i];
+  }
+  res.duration_s = tr.back();
+  res.masked.resize(m.exclude.size());
+  for (std::size_t k = 0; k < m.exclude.size(); ++k) res.masked[k].first = m.exclude[k].text();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (i < span.first || i > span.last || t[i] < span.window_begin || t[i] > span.window_end) {
+      ++res.outside_window;
+      continue;
+    }
+    bool masked = false;
+    for (std::size_t k = 0; k < m.exclude.size() && !masked; ++k) {
+      const double x = rows.mask[k][i];
+      masked = std::isnan(x) || (m.exclude[k].above && x > *m.exclude[k].above) || (m.exclude[k].below && x < *m.exclude[k].below);
+      if (masked) ++res.masked[k].second;
+    }
+    if (masked) continue;
     for (std::size_t k = 0; k < m.channels.size(); ++k)
-      if (!std::isnan(rows.values[k][i])) res.data.records.push_back({1, t[i], m.channels[k].channel, rows.values[k][i]});
+      if (!std::isnan(rows.values[k][i])) res.data.records.push_back({1, tr[i - span.first], m.channels[k].channel, rows.values[k][i]});
+  }
+  if (res.data.records.empty())
+    throw InputError(m.window_s ? m.window_where : log_name, "leaves no measurement: every row is outside the window or masked");
   res.lab_csv = labCsvText(res.data, known);  // validates (plausible ranges, ...) with the log's lines lost: name the log
-  writeInputs(res, m, units, t, std::move(rows.v), rows.road);
-  res.study_toml = importedStudyText(log_name, m, units, base_study, scenario, res.duration_s);
+  writeInputs(res, units, tr, vr, road);
+  res.study_toml = importedStudyText(log_name, m, units, base_study, scenario, res.duration_s, res.start_m);
   res.sidecar = importSidecar(res, log_text, log_name, m, units, base_study);
   return res;
 }

@@ -3,6 +3,7 @@
 // what the twin reads (docs/measurements.md, "Importing a log"): the tidy measurement file with
 // its sidecar, the speed trace, the road logged against time, and a study file holding the drive
 // as a scenario, so that `twin compare` and `twin diagnose` run on it with no hand editing.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,17 @@ struct ImportChannel {
   std::string channel;     ///< a channel of the twin or of a sensor ("seat_mps2")
 };
 
+/// A mask (docs/measurements.md, "Windows and masks"): a row whose magnitude |value| of `source`
+/// (converted to SI) is above `above` or below `below` is neither fitted nor scored; the run still
+/// goes through it. A row whose mask cell is empty is masked too (it cannot be told).
+struct ImportMask {
+  ImportColumn source;
+  std::optional<double> above, below;  ///< thresholds in SI (the mask's unit converted)
+  std::string si;                      ///< the SI unit of the thresholds
+  /// "|yaw_rate| > 0.1 rad/s" (SI thresholds).
+  std::string text() const;
+};
+
 struct ImportMapping {
   ImportColumn time;                      ///< unit s or ms
   std::optional<ImportColumn> speed;      ///< unit km/h, m/s or mph (required)
@@ -47,6 +59,14 @@ struct ImportMapping {
   long header_line = 1;                   ///< the line holding the column names (a logger's preamble comes before)
   long skip_rows = 0;                     ///< rows after the header that are not data (e.g. a row of units)
   long max_dropout_rows = 5;              ///< longest run of empty/NaN cells a channel may have (skipped)
+  /// Only rows with a time in [a, b] (s from the log's first row) are measurements. The run starts
+  /// run_in_s before a (at the log's start at the earliest), on the log's speed and road from
+  /// there, so the model has settled when the window opens; the distance travelled before the
+  /// run's start is the speed's start_m (a road measured against distance stays in place).
+  std::optional<std::array<double, 2>> window_s;
+  std::string window_where;               ///< names it in errors
+  double run_in_s = 10.0;
+  std::vector<ImportMask> exclude;        ///< masks, any of which drops a row
   std::string source;                     ///< the mapping file, or "command line"
 };
 
@@ -83,6 +103,10 @@ struct ImportResult {
   double t0_s = 0.0;               ///< the log's time of its first row (scenario time 0); a clock time: seconds of its day
   double duration_s = 0.0;
   long rows = 0, dropped_cells = 0;
+  /// Rows not measured: outside the window, and by each mask (its text), in the mapping's order.
+  long outside_window = 0;
+  std::vector<std::pair<std::string, long>> masked;
+  double start_m = 0.0;            ///< the distance travelled before the run's start (0 without a window)
   LabData data;                    ///< the measurements (repetition 1), times from 0
   std::string lab_csv, speed_csv, road_csv;  ///< file texts (road_csv empty: flat road)
   std::string study_toml;          ///< the study with the drive's scenario and the mapping's sensors

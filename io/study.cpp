@@ -281,6 +281,9 @@ void readScenarios(TableReader& top, Study& s) {
       if (sc.duration_s > 86400) throw InputError(r.where("duration_s"), "must be at most 86400 s, got " + formatNumber(sc.duration_s));
       if (auto* sp = r.table("speed")) {
         TableReader rs(*sp, path, r.field("speed"));
+        sc.speed.start_m = rs.number("start_m", 0.0);
+        if (!(std::isfinite(sc.speed.start_m) && std::abs(sc.speed.start_m) <= 1e7))
+          throw InputError(rs.where("start_m"), "must be a finite distance of at most 1e7 m, got " + formatNumber(sc.speed.start_m));
         if (auto csv = rs.string("csv")) {
           readSpeedTrace(rs, *csv, sc);
         } else {
@@ -539,6 +542,12 @@ void checkCalibratedAgainstVehicle(const Study& s) {
       const std::string rule = checkParameterValue(spec, b);
       if (!rule.empty()) throw InputError(where, "bound of " + c.name + " " + rule);
     }
+    if (c.name == "chassis.cg_x_m") {  // the CG stays between the axles at every value searched
+      const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
+      if (!(c.lower > -b && c.upper < a))
+        throw InputError(where, "bounds of chassis.cg_x_m must keep the CG between the axles: inside (" + formatNumber(-b) + ", " +
+                                    formatNumber(a) + ") m, got [" + formatNumber(c.lower) + ", " + formatNumber(c.upper) + "]");
+    }
   }
 }
 
@@ -673,6 +682,13 @@ ParameterTable Study::parameterTable(const std::vector<ParameterSetting>& overri
 std::shared_ptr<const Model> Study::makeModel(const AssemblySpec& a, const std::vector<EffectSetting>& extra,
                                               const std::vector<ParameterSetting>& overrides) const {
   AssemblySpec spec = a;
+  // A calibrated vehicle value (a mass, an inertia, the CG) builds the multibody system: it is
+  // freed, so each run is built with its own value (docs/calibration.md, "Vehicle values").
+  const auto& freeable = freeableVehicleParameters();
+  for (const auto& c : calibrated)
+    if (std::find(freeable.begin(), freeable.end(), c.name) != freeable.end() &&
+        std::find(spec.freed.begin(), spec.freed.end(), c.name) == spec.freed.end())
+      spec.freed.push_back(c.name);
   ParameterTable table = parameterTable();
   for (const auto& e : extra) {
     declareEffectParameters(table, *catalog->make(e.name, "model.effects"), e.name, "model.effects");

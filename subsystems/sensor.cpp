@@ -30,6 +30,8 @@ std::string SensorSpec::channel() const {
     case SensorQuantity::DisplacementZ: return name + "_m";
     case SensorQuantity::VelocityZ: return name + "_mps";
     case SensorQuantity::AccelerationZ: return name + "_mps2";
+    case SensorQuantity::Travel: return name + "_m";
+    case SensorQuantity::TravelRate: return name + "_mps";
   }
   return name;
 }
@@ -39,6 +41,8 @@ std::string SensorSpec::unit() const {
     case SensorQuantity::DisplacementZ: return "m";
     case SensorQuantity::VelocityZ: return "m/s";
     case SensorQuantity::AccelerationZ: return "m/s^2";
+    case SensorQuantity::Travel: return "m";
+    case SensorQuantity::TravelRate: return "m/s";
   }
   return "";
 }
@@ -61,6 +65,10 @@ void SensorSpec::validate(const std::string& where) const {
       throw InputError(where + ".position_m", "each coordinate must be a finite number of at most 10 m, got " + formatNumber(x));
   if (corner() >= 0 && (position_m[0] != 0 || position_m[1] != 0 || position_m[2] != 0))
     throw InputError(where + ".position_m", "a wheel sensor measures at the wheel centre: leave position_m out (or [0, 0, 0])");
+  if (relative() && corner() < 0)
+    throw InputError(where + ".body", "a " + sensorQuantityName(quantity) +
+                                          " sensor measures a wheel's travel relative to the chassis: body must be \"wheel_fl\", "
+                                          "\"wheel_fr\", \"wheel_rl\" or \"wheel_rr\", got \"" + mount + "\"");
   if (filter.order < 0 || filter.order > 2)
     throw InputError(where + ".filter.order", "must be 0 (none), 1 or 2, got " + std::to_string(filter.order));
   if (filter.order > 0 && !(std::isfinite(filter.cutoff_hz) && filter.cutoff_hz > 0 && filter.cutoff_hz <= 1e4))
@@ -85,6 +93,8 @@ const Registry<SensorQuantity>& sensorQuantities() {
                              {"displacement_z", "the point's world-vertical displacement from its start (channel NAME_m); the point: on the chassis, or a wheel centre", SensorQuantity::DisplacementZ},
                              {"velocity_z", "the point's world-vertical velocity (channel NAME_mps)", SensorQuantity::VelocityZ},
                              {"acceleration_z", "the point's world-vertical acceleration d²z/dt², 0 at rest (channel NAME_mps2)", SensorQuantity::AccelerationZ},
+                             {"travel", "a wheel's travel relative to the chassis along the chassis z axis, compression positive, from its start (a string potentiometer between body and wheel carrier; body = the wheel; channel NAME_m)", SensorQuantity::Travel},
+                             {"travel_rate", "the rate of that travel, compression positive (channel NAME_mps)", SensorQuantity::TravelRate},
                          });
   return r;
 }
@@ -112,6 +122,17 @@ Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion
   m.qd = heave.qd + g_t * pitch.qd + g_f * roll.qd;
   m.qdd = heave.qdd + g_t * pitch.qdd + g_f * roll.qdd + g_tt * pitch.qd * pitch.qd + 2.0 * g_tf * pitch.qd * roll.qd +
           g_ff * roll.qd * roll.qd;
+  return m;
+}
+
+Motion chassisAxisHeight(const Motion& world_z, const Motion& heave, const Motion& pitch, const Motion& roll, double x, double y) {
+  const double st = std::sin(pitch.q), ct = std::cos(pitch.q), sf = std::sin(roll.q), cf = std::cos(roll.q);
+  const double num = world_z.q - heave.q - y * sf;  // the height before the roll is undone
+  const double A = num / cf;
+  const double A_d = (world_z.qd - heave.qd - y * cf * roll.qd) / cf + num * sf * roll.qd / (cf * cf);
+  Motion m;
+  m.q = (A + x * st) / ct;
+  m.qd = (A_d + x * ct * pitch.qd) / ct + (A + x * st) * st * pitch.qd / (ct * ct);
   return m;
 }
 

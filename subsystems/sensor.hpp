@@ -1,7 +1,8 @@
 #pragma once
 // Sensors where they are mounted (docs/measurements.md, "Sensors"): the vertical motion of a point
-// on the chassis or of a wheel centre, as displacement, velocity or acceleration, optionally
-// low-pass filtered as the logger did. Pure signal physics: the kinematics of a point on a body
+// on the chassis or of a wheel centre, as displacement, velocity or acceleration, or a wheel's
+// travel relative to the chassis (a string potentiometer), optionally low-pass filtered as the
+// logger did. Pure signal physics: the kinematics of a point on a body
 // that heaves, pitches and rolls, and the filters, exact for the sampled input.
 #include <array>
 #include <string>
@@ -15,8 +16,9 @@
 
 namespace dtwin {
 
-/// What a sensor measures: the vertical (world z, up positive) motion of its point.
-enum class SensorQuantity { DisplacementZ, VelocityZ, AccelerationZ };
+/// What a sensor measures: the vertical (world z, up positive) motion of its point, or a wheel's
+/// travel relative to the chassis along the chassis z axis (compression positive) and its rate.
+enum class SensorQuantity { DisplacementZ, VelocityZ, AccelerationZ, Travel, TravelRate };
 
 /// The logger's low-pass filter. order 0: none; 1: H(s) = 1 / (1 + s/ωc); 2: H(s) = ωc² / (s² +
 /// 2ζωc s + ωc²) (ζ = 1/√2: Butterworth). ωc = 2π cutoff_hz.
@@ -37,6 +39,8 @@ struct SensorSpec {
   /// the data have a single repetition (docs/diagnosis.md, "Noise").
   double noise_sd = 0.0;
 
+  /// A relative sensor: travel or its rate (between the chassis and the wheel of `mount`).
+  bool relative() const { return quantity == SensorQuantity::Travel || quantity == SensorQuantity::TravelRate; }
   /// The output channel: NAME plus the unit suffix (_m, _mps, _mps2), e.g. "seat_mps2".
   std::string channel() const;
   /// "m", "m/s" or "m/s^2".
@@ -44,7 +48,7 @@ struct SensorSpec {
   /// The wheel's corner (0 fl, 1 fr, 2 rl, 3 rr), or -1 on the chassis.
   int corner() const;
   /// InputError(where + ".<field>", rule) for a bad name, mount, position (a wheel sensor sits at
-  /// the wheel centre: position must be 0), filter (order 0-2; 0 < cutoff_hz <= 1e4; 0 < ζ <= 10)
+  /// the wheel centre: position must be 0), a travel sensor not on a wheel, filter (order 0-2; 0 < cutoff_hz <= 1e4; 0 < ζ <= 10)
   /// or noise_sd (finite, >= 0).
   void validate(const std::string& where) const;
   nlohmann::json toJson() const;
@@ -52,7 +56,8 @@ struct SensorSpec {
 
 /// The quantities a [sensors] table may measure, by their study-file names.
 const Registry<SensorQuantity>& sensorQuantities();
-/// "displacement_z" | "velocity_z" | "acceleration_z"; InputError(where, rule) for any other.
+/// "displacement_z" | "velocity_z" | "acceleration_z" | "travel" | "travel_rate"; InputError(where,
+/// rule) for any other.
 SensorQuantity parseSensorQuantity(const std::string& text, const std::string& where);
 std::string sensorQuantityName(SensorQuantity q);
 
@@ -67,6 +72,15 @@ struct Motion {
 /// roll positive right side down). Exact, not small-angle: z = heave + y sin φ + (z_p cos θ −
 /// x sin θ) cos φ, and its first and second derivatives by the chain rule.
 Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion& roll, const std::array<double, 3>& p);
+
+/// The height in chassis axes (z up, from the centre of mass) of a point whose chassis-axis x and y
+/// are fixed (a MacPherson wheel centre slides along the chassis z axis; a solid axle's wheel
+/// centre stays at its x and, to second order in the axle's roll, its y), from its world height
+/// `world_z`: the inverse of chassisPointMotion in z,
+///   z = ((z_w − h − y sin φ) / cos φ + x sin θ) / cos θ,
+/// with its first derivative by the chain rule (qdd is not computed: 0). A travel sensor reads
+/// z − z(0) of the wheel centre: the wheel moving up toward the body is compression, positive.
+Motion chassisAxisHeight(const Motion& world_z, const Motion& heave, const Motion& pitch, const Motion& roll, double x, double y);
 
 /// `u` sampled at `rate_hz` filtered by `f`, starting at rest at u[0] (y(0) = u[0], y'(0) = 0).
 /// Exact for an input that is linear between samples: each step is the matrix exponential of the

@@ -24,10 +24,14 @@ const Layout kLayouts[] = {
     {{"height_mm", nullptr}, 1, TimeRoadLog::Form::Height, 1e-3},
     {{"left_m", "right_m"}, 2, TimeRoadLog::Form::Height, 1.0},
     {{"left_mm", "right_mm"}, 2, TimeRoadLog::Form::Height, 1e-3},
+    {{"height_cm", nullptr}, 1, TimeRoadLog::Form::Height, 1e-2},
+    {{"left_cm", "right_cm"}, 2, TimeRoadLog::Form::Height, 1e-2},
+    {{"velocity_mmps", nullptr}, 1, TimeRoadLog::Form::Velocity, 1e-3},
+    {{"left_mmps", "right_mmps"}, 2, TimeRoadLog::Form::Velocity, 1e-3},
     {{"velocity_mps", nullptr}, 1, TimeRoadLog::Form::Velocity, 1.0},
     {{"left_mps", "right_mps"}, 2, TimeRoadLog::Form::Velocity, 1.0},
 };
-const char* kHeaders = "time_s,height_m | time_s,left_m,right_m | time_s,velocity_mps | time_s,left_mps,right_mps (or _mm for heights)";
+const char* kHeaders = "time_s,height_m | time_s,left_m,right_m | time_s,velocity_mps | time_s,left_mps,right_mps (or _mm or _cm for heights, _mmps for velocities)";
 }  // namespace
 
 TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {

@@ -17,13 +17,14 @@ double SpeedProfile::accel(double t) const {
   return (t >= 0 && t < ramp_s) ? v_final_mps / ramp_s : 0.0;
 }
 double SpeedProfile::distance(double t) const {
-  if (trace) return trace->distance(t);
-  if (t <= 0) return 0.0;
-  if (ramp_s <= 0) return v_final_mps * t;
-  if (t < ramp_s) return 0.5 * v_final_mps / ramp_s * t * t;
-  return 0.5 * v_final_mps * ramp_s + v_final_mps * (t - ramp_s);
+  if (trace) return start_m + trace->distance(t);
+  if (t <= 0) return start_m;
+  if (ramp_s <= 0) return start_m + v_final_mps * t;
+  if (t < ramp_s) return start_m + 0.5 * v_final_mps / ramp_s * t * t;
+  return start_m + 0.5 * v_final_mps * ramp_s + v_final_mps * (t - ramp_s);
 }
-double SpeedProfile::timeAtDistance(double x) const {
+double SpeedProfile::timeAtDistance(double x_road) const {
+  const double x = x_road - start_m;
   if (trace) return trace->timeAtDistance(x);
   if (x <= 0) return 0.0;
   const double x_ramp = 0.5 * v_final_mps * ramp_s;
@@ -32,11 +33,17 @@ double SpeedProfile::timeAtDistance(double x) const {
 }
 
 nlohmann::json SpeedProfile::toJson() const {
-  if (!trace) return {{"v_final_mps", v_final_mps}, {"ramp_s", ramp_s}};
-  std::string bytes;
-  for (const auto* v : {&trace->times(), &trace->speeds()})
-    bytes.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
-  return {{"csv", trace->name()}, {"samples", trace->times().size()}, {"content", hexId(fnv1a64(bytes))}};
+  nlohmann::json j;
+  if (!trace) {
+    j = {{"v_final_mps", v_final_mps}, {"ramp_s", ramp_s}};
+  } else {
+    std::string bytes;
+    for (const auto* v : {&trace->times(), &trace->speeds()})
+      bytes.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
+    j = {{"csv", trace->name()}, {"samples", trace->times().size()}, {"content", hexId(fnv1a64(bytes))}};
+  }
+  if (start_m != 0.0) j["start_m"] = start_m;  // absent when 0: the fingerprints of every study before it stay
+  return j;
 }
 
 nlohmann::json ScenarioSpec::toJson() const {

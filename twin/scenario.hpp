@@ -23,10 +23,13 @@ struct SpeedProfile {
   double v_final_mps = 8.9408;
   double ramp_s = 5.0;
   std::shared_ptr<const SpeedTrace> trace;  ///< shared, never modified after reading
+  /// The distance the front axle has travelled before t = 0 (a window cut from a drive on a road
+  /// measured against distance: the window keeps its place on the road). distance(0) = start_m.
+  double start_m = 0.0;
   double speed(double t) const;
   double accel(double t) const;
   double distance(double t) const;
-  double timeAtDistance(double x) const;  ///< inverse of distance (x >= 0); +inf if never reached
+  double timeAtDistance(double x) const;  ///< inverse of distance (0 at or before start_m); +inf if never reached
   /// {"v_final_mps", "ramp_s"}, or for a trace {"csv", "samples", "content"} (a hash of the samples,
   /// so fingerprints change with the file's numbers).
   nlohmann::json toJson() const;

@@ -859,7 +859,7 @@ struct Simulator::Impl {
     for (std::size_t r = 1; r < roads.size(); ++r) {
       if (segments(*roads[r], sc) != segs)
         throw InputError("runBranched", "road " + std::to_string(r) + " has other obstacle windows than road 0");
-      const double x_hi = sc.speed.distance(tb) + 0.1, x_lo = -model->vehicle().wheelbase() - 1.0;
+      const double x_hi = sc.speed.distance(tb) + 0.1, x_lo = sc.speed.distance(0) - model->vehicle().wheelbase() - 1.0;
       for (double x = x_lo; x <= x_hi; x += 0.05)
         for (Track t : {Track::Left, Track::Right}) {
           const RoadSample a = roads[0]->sample(t, x), b = roads[r]->sample(t, x);
@@ -946,6 +946,20 @@ struct Simulator::Impl {
       tr.column(col++)[r] = acc(BODY + 7, BODY + 8);
       for (const auto& x : model->sensors()) {  // before any filter (filterSensors)
         Motion m;
+        if (x.relative()) {
+          // The wheel centre's height in chassis axes, from its start: the travel (compression
+          // positive) of a potentiometer parallel to the chassis z axis, wherever its body end is.
+          const auto c = static_cast<std::size_t>(x.corner());
+          const double cx = isFront(x.corner()) ? model->vehicle().a : -model->vehicle().b;
+          const double cy = (cornerTrack(x.corner()) == Track::Left ? 0.5 : -0.5) * model->vehicle().track;
+          const Motion heave{pos(BODY + 0, BODY + 1), pos(BODY + 1, BODY + 2), 0.0};
+          const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), 0.0};
+          const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), 0.0};
+          m = chassisAxisHeight({pos(HZ + c, HZD + c), pos(HZD + c, HZDD + c), 0.0}, heave, pitch, roll, cx, cy);
+          m.q -= chassisAxisHeight({k0[HZ + c], 0, 0}, {k0[BODY + 0], 0, 0}, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, cx, cy).q;
+          tr.column(col++)[r] = x.quantity == SensorQuantity::Travel ? m.q : m.qd;
+          continue;
+        }
         if (x.corner() >= 0) {
           const std::size_t c = static_cast<std::size_t>(x.corner());
           m = {pos(HZ + c, HZD + c) - k0[HZ + c], pos(HZD + c, HZDD + c), acc(HZD + c, HZDD + c)};
@@ -988,9 +1002,11 @@ struct Simulator::Impl {
 std::vector<Channel> Simulator::channels(const std::vector<SensorSpec>& sensors) {
   std::vector<Channel> ch = channels();
   for (const auto& x : sensors) {
-    std::string d = sensorQuantityName(x.quantity) + " of " +
-                    (x.corner() >= 0 ? "the " + x.mount + " centre" : "the chassis point " + formatNumber(x.position_m[0]) + ", " +
-                                                                    formatNumber(x.position_m[1]) + ", " + formatNumber(x.position_m[2]) + " m");
+    std::string d = x.relative() ? sensorQuantityName(x.quantity) + " of " + x.mount + " relative to the chassis (compression positive)"
+                                 : sensorQuantityName(x.quantity) + " of " +
+                                       (x.corner() >= 0 ? "the " + x.mount + " centre"
+                                                        : "the chassis point " + formatNumber(x.position_m[0]) + ", " +
+                                                              formatNumber(x.position_m[1]) + ", " + formatNumber(x.position_m[2]) + " m");
     if (x.filter.order > 0) d += ", low-pass order " + std::to_string(x.filter.order) + " at " + formatNumber(x.filter.cutoff_hz) + " Hz";
     ch.push_back({x.channel(), x.unit(), "sensor " + x.name + ": " + d});
   }

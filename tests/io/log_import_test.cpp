@@ -15,6 +15,7 @@
 #include "test_util.hpp"
 #include "io/log_import.hpp"
 #include "io/study.hpp"
+#include "twin/simulator.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;
@@ -427,4 +428,131 @@ TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
   EXPECT_EQ(rest, 1) << dtwin_test::slurp(out);
   EXPECT_TRUE(std::is_sorted(starts.begin(), starts.end())) << dtwin_test::slurp(out);
   EXPECT_NE(dtwin_test::slurp(out).find("lack of fit: chi2 = "), std::string::npos);
+}
+
+// Issue 32: a window keeps rows [a, b] as measurements, the run starts run_in_s before a with the
+// log's speed and road, and the distance driven before it becomes the speed's start_m; a mask
+// drops the rows where a column's magnitude is above (or below) its threshold. The sidecar says
+// how many rows were dropped and why.
+TEST(LogImport, AWindowAndAMaskChooseTheMeasuredRows) {
+  const fs::path dir = dtwin_test::freshDir("import_window");
+  dtwin_test::writeText(dir / "map.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
+                                                                          "\nwindow_s = [1.0, 3.0]\nrun_in_s = 0.5\n"
+                                                                          "exclude = { column = \"zr\", unit = \"mm\", above = 1.5 }"));
+  const ImportMapping m = readImportMapping((dir / "map.toml").string());
+  ASSERT_TRUE(m.window_s);
+  ASSERT_EQ(m.exclude.size(), 1u);
+  const ImportResult r = importLog(makeLog(), "log.csv", m, kDemo, "drive");
+  EXPECT_NEAR(r.t0_s, 5.5, 1e-12);       // logger time of the run's first row: 1.0 − 0.5 s in
+  EXPECT_NEAR(r.duration_s, 3.0, 1e-12);  // 0.5 s of run-in, the 2 s window, 0.5 s past it (the inputs)
+  EXPECT_NEAR(r.start_m, 5.0, 1e-9);      // 0.5 s at 10 m/s
+  long masked = 0, kept_rows = 0;
+  for (int k = 100; k <= 300; ++k) {  // the window's rows: |2 sin(0.05 k)| mm against 1.5 mm
+    const double zr = std::stod(std::to_string(2.0 * std::sin(0.05 * k)));
+    (std::abs(zr) > 1.5 ? masked : kept_rows) += 1;
+  }
+  EXPECT_EQ(r.outside_window, 401 - 201);  // the run-in and run-out rows are simulated, not measured
+  ASSERT_EQ(r.masked.size(), 1u);
+  EXPECT_EQ(r.masked[0].second, masked);
+  EXPECT_EQ(r.masked[0].first, "|zr| > 0.0015 m");
+  EXPECT_EQ(static_cast<long>(r.data.records.size()), 2 * kept_rows);
+  for (const auto& rec : r.data.records) {
+    EXPECT_GE(rec.time_s, 0.5 - 1e-12);
+    EXPECT_LE(rec.time_s, 2.5 + 1e-12);
+  }
+  EXPECT_EQ(r.speed_csv.substr(0, 22), "time_s,speed_mps\n0,10\n");
+  writeImport(r, (dir / "out").string());
+  const Study s = loadStudy((dir / "out" / "study.toml").string());
+  EXPECT_NEAR(s.scenario("drive").speed.start_m, 5.0, 1e-9);
+  EXPECT_NEAR(s.scenario("drive").speed.distance(1.0), 15.0, 1e-9);
+  const auto side = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "measurements.json"));
+  EXPECT_EQ(side["window"]["rows_outside_window"], 200);
+  EXPECT_EQ(side["window"]["masks"][0]["rows_dropped"], masked);
+}
+
+// A window outside the log, a mask on a column the log lacks, a mask without a threshold: one line
+// naming the mapping's field or the log, and nothing written.
+TEST(LogImport, BadWindowsAndMasksAreOneLineErrors) {
+  const fs::path dir = dtwin_test::freshDir("import_window_bad");
+  auto errorOf = [&](const std::string& extra) {
+    dtwin_test::writeText(dir / "map.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0, "\n" + extra));
+    try {
+      importLog(makeLog(), "log.csv", readImportMapping((dir / "map.toml").string()), kDemo, "drive");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string e = errorOf("window_s = [2.0, 9.0]");
+  EXPECT_NE(e.find("import.window_s"), std::string::npos) << e;
+  EXPECT_NE(e.find("ends after the log"), std::string::npos) << e;
+  e = errorOf("window_s = [3.0, 2.0]");
+  EXPECT_NE(e.find("0 <= start < end"), std::string::npos) << e;
+  e = errorOf("exclude = { column = \"yaw\", unit = \"rad/s\", above = 0.1 }");
+  EXPECT_NE(e.find("no column 'yaw'"), std::string::npos) << e;
+  e = errorOf("exclude = { column = \"zr\", unit = \"mm\" }");
+  EXPECT_NE(e.find("needs above or below"), std::string::npos) << e;
+  e = errorOf("exclude = { column = \"zr\", unit = \"furlong\", above = 1 }");
+  EXPECT_NE(e.find("unknown unit 'furlong'"), std::string::npos) << e;
+  e = errorOf("run_in_s = 3");
+  EXPECT_NE(e.find("needs window_s"), std::string::npos) << e;
+}
+
+// The done-when of issue 32: a window cut from a drive predicts what the whole drive predicts over
+// the same stretch, once the run-in has let the start's equilibrium transient die away.
+TEST(LogImport, AWindowPredictsWhatTheWholeDrivePredictsThere) {
+  const fs::path dir = dtwin_test::freshDir("import_window_same");
+  const std::string drive = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
+  const ImportMapping whole_m = readImportMapping(drive + "stop_and_go_map.toml");
+  ImportMapping win_m = whole_m;
+  win_m.window_s = std::array<double, 2>{30.0, 45.0};
+  win_m.window_where = "test";
+  const std::string log = dtwin_test::slurp(drive + "stop_and_go.csv");
+  const ImportResult whole = importLog(log, "stop_and_go.csv", whole_m, kDemo, "drive");
+  const ImportResult win = importLog(log, "stop_and_go.csv", win_m, kDemo, "drive");
+  writeImport(whole, (dir / "whole").string());
+  writeImport(win, (dir / "win").string());
+  // Both runs at a tight integrator accuracy: the comparison is of the inputs and the settling,
+  // not of two step sequences' truncation errors (about the accuracy, 1e-4 of the signal).
+  auto run = [](const fs::path& study, const std::vector<double>& at) {
+    Study s = loadStudy(study.string());
+    s.simulation.accuracy = 1e-9;
+    const auto model = s.makeModel(s.assemblies().front());
+    Simulator sim(model, s.simulation);
+    ScenarioSpec sc = s.scenario("drive");
+    sc.sample_times_s = at;
+    auto r = sim.run(model->defaultRunValues(), *makeRoad(sc, model->vehicle(), s.seed), sc);
+    EXPECT_TRUE(r.stats.ok) << r.stats.message;
+    return r;
+  };
+  const double shift = win.t0_s - whole.t0_s;  // the window's run starts this far into the drive
+  const RunResult b = run(dir / "win" / "study.toml", {});
+  const auto& tb = b.trace.column("time_s");
+  std::vector<double> at;  // the window's output times on the whole drive's clock
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < tb.size(); i += 5)
+    if (tb[i] + shift >= 30.0 && tb[i] + shift <= 45.0) {
+      at.push_back(tb[i] + shift);
+      rows.push_back(i);
+    }
+  const RunResult a = run(dir / "whole" / "study.toml", at);
+  // The state (pitch, roll, the struts; the heave channel counts from each run's start): within
+  // 1e-6 of its range. The accelerometer, read between integrator steps by the dense output (a
+  // cubic Hermite of the velocity), carries that interpolation's error, which differs between two
+  // step sequences: about 1e-5 of its range at a 1 ms step, so within 1e-4.
+  for (const auto& [channel, tol] : std::vector<std::pair<std::string, double>>{
+           {"chassis_pitch_rad", 1e-6}, {"chassis_roll_rad", 1e-6}, {"susp_defl_fl_m", 1e-6}, {"susp_defl_rl_m", 1e-6}, {"seat_mps2", 1e-4}}) {
+    const auto& ya = a.samples.column(channel);
+    const auto& yb = b.trace.column(channel);
+    ASSERT_EQ(ya.size(), at.size());
+    double worst = 0, lo = 1e300, hi = -1e300;
+    for (std::size_t k = 0; k < at.size(); ++k) {
+      worst = std::max(worst, std::abs(ya[k] - yb[rows[k]]));
+      lo = std::min(lo, ya[k]);
+      hi = std::max(hi, ya[k]);
+    }
+    EXPECT_GT(at.size(), 2000u);
+    EXPECT_GT(hi - lo, 0.0) << channel;
+    EXPECT_LT(worst, tol * (hi - lo)) << channel << ": worst " << worst << " of a range " << hi - lo;
+  }
 }

@@ -60,6 +60,28 @@ TEST(Sensor, SignsFollowThePitchAndRollConventions) {
   EXPECT_LT(chassisPointMotion({}, {}, {0.01, 0, 0}, {0, -0.7, 0}).q, 0.0);  // right side down
 }
 
+// A wheel's height in chassis axes is the inverse of chassisPointMotion: for a point fixed in
+// the chassis, it returns the point's own z and no rate, at large angles; for a point sliding
+// along the chassis z axis, its z(t) and ż(t).
+TEST(Sensor, ChassisAxisHeightInvertsThePointsWorldHeight) {
+  const Path path;
+  for (double t : {0.0, 0.3, 1.1, 2.5}) {
+    const std::array<double, 3> p{1.4, 0.75, -0.28};
+    const Motion world = chassisPointMotion(path.motion(&Path::h, t), path.motion(&Path::th, t), path.motion(&Path::ph, t), p);
+    const Motion m = chassisAxisHeight(world, path.motion(&Path::h, t), path.motion(&Path::th, t), path.motion(&Path::ph, t), p[0], p[1]);
+    EXPECT_NEAR(m.q, p[2], 1e-12) << t;
+    EXPECT_NEAR(m.qd, 0.0, 1e-6) << t;
+    // Sliding: z(t) = −0.28 + 0.05 sin 7t.
+    auto zOf = [](double s) { return -0.28 + 0.05 * std::sin(7.0 * s); };
+    auto worldOf = [&](double s) { return path.height(s, {p[0], p[1], zOf(s)}); };
+    const double e = 1e-5;
+    const Motion wz{worldOf(t), (worldOf(t + e) - worldOf(t - e)) / (2 * e), 0.0};
+    const Motion s = chassisAxisHeight(wz, path.motion(&Path::h, t), path.motion(&Path::th, t), path.motion(&Path::ph, t), p[0], p[1]);
+    EXPECT_NEAR(s.q, zOf(t), 1e-12) << t;
+    EXPECT_NEAR(s.qd, 0.35 * std::cos(7.0 * t), 1e-5) << t;
+  }
+}
+
 // First order, ramp input (linear between samples, so the step is exact): y = t − τ(1 − e^(−t/τ)).
 TEST(Sensor, FirstOrderFilterIsExactForARamp) {
   const double rate = 1000.0, fc = 25.0, tau = 1.0 / (2 * kPi * fc);

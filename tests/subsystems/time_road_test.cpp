@@ -36,11 +36,17 @@ TEST(TimeRoad, ParsesEveryForm) {
   auto d = parseTimeRoadCsv("\"time_s\",\"left_mps\",\"right_mps\"\n0,0.1,0.2\n1,0.3,0.4\n", "d.csv");
   EXPECT_EQ(d.form, TimeRoadLog::Form::Velocity);
   EXPECT_FALSE(d.identical_tracks);
+  // Centimetres and millimetres per second, as loggers write them.
+  auto e = parseTimeRoadCsv("time_s,left_cm,right_cm\n0,1,2\n1,3,4\n", "e.csv");
+  EXPECT_DOUBLE_EQ(e.right[1], 0.04);
+  auto f = parseTimeRoadCsv("time_s,velocity_mmps\n0,10\n1,30\n", "f.csv");
+  EXPECT_EQ(f.form, TimeRoadLog::Form::Velocity);
+  EXPECT_DOUBLE_EQ(f.left[1], 0.03);
 }
 
 TEST(TimeRoad, BadFilesNameTheLineAndColumn) {
   EXPECT_NE(errorOf("").find("road.csv:1: empty file"), std::string::npos);
-  EXPECT_NE(errorOf("time_s,height_cm\n0,1\n1,2\n").find("road.csv:1: header must be"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_ft\n0,1\n1,2\n").find("road.csv:1: header must be"), std::string::npos);
   EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,x\n").find("road.csv:3: height_m: 'x' is not a finite number"), std::string::npos);
   EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,nan\n").find("road.csv:3: height_m"), std::string::npos);
   EXPECT_NE(errorOf("time_s,height_m\n0,1\n0,2\n").find("road.csv:3: time_s: must increase"), std::string::npos);

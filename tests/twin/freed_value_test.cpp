@@ -204,3 +204,35 @@ TEST(FreedValue, TheCgMovesForwardAtAFixedWheelbaseAndTheStaticLoadsFollow) {
     EXPECT_NE(std::string(e.what()).find("puts the CG outside the wheelbase"), std::string::npos) << e.what();
   }
 }
+
+// Issue 32: a vehicle value can be calibrated like a law value ([[calibrated]]): every model of
+// the study frees it, and the objective at a value predicts what a study with that value fixed
+// predicts, bit for bit. Bounds that would move the CG off the wheelbase are refused when read.
+TEST(FreedValue, AVehicleValueInCalibratedIsCalibratedLikeALawValue) {
+  const fs::path dir = dtwin_test::freshDir("freed_calibrated");
+  const Study s = loadStudy(dtwin_test::writeDemoStudy(dir / "a.toml", "\n[[calibrated]]\nname = \"chassis.mass_kg\"\nunit = \"kg\"\n"
+                                                                         "lower = 1100\nupper = 1700\ntruth = 1400\n")
+                                .string());
+  ASSERT_EQ(s.calibrated.back().name, "chassis.mass_kg");
+  const Study fixed = loadStudy(dtwin_test::writeDemoStudy(dir / "b.toml", "\n[fixed]\n\"chassis.mass_kg\" = 1530\n").string());
+  LabData data;
+  for (int k = 200; k <= 2800; k += 20) data.records.push_back({1, k / 1000.0, "hub_force_fl_N", 0.0});
+  const std::vector<calib::DataSet> sets{{"d", "diag_bump", data}};
+  const calib::LabObjective with(s, s.assemblies().front(), sets, {});
+  const calib::LabObjective base(fixed, fixed.assemblies().front(), sets, {});
+  ASSERT_EQ(with.names().back(), "chassis.mass_kg");
+  auto th = dtwin_test::truthOf(fixed);
+  const auto expect = base.predict(th);
+  th.push_back(1530);
+  EXPECT_EQ(with.predict(th), expect);
+  th.back() = 1400;
+  EXPECT_NE(with.predict(th), expect);
+
+  try {
+    loadStudy(dtwin_test::writeDemoStudy(dir / "c.toml", "\n[[calibrated]]\nname = \"chassis.cg_x_m\"\nlower = -0.2\nupper = 1.6\n").string());
+    FAIL() << "a CG range beyond the front axle was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("calibrated[4]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("between the axles"), std::string::npos) << e.what();
+  }
+}

@@ -114,6 +114,70 @@ TEST(SensorTwin, WheelSensorsAreConsistentDerivatives) {
   EXPECT_LT(worst_a, 0.05 * range(a));
 }
 
+// A string potentiometer on a MacPherson corner reads the strut's deflection from its start
+// (compression positive), and its rate the strut's rate; filtered, the same through its filter.
+TEST(SensorTwin, TravelSensorsReadTheStrutDeflection) {
+  const Study s = sensorStudy("sensor_travel", R"(
+[sensors.pot_fl]
+body = "wheel_fl"
+quantity = "travel"
+
+[sensors.pot_rr]
+body = "wheel_rr"
+quantity = "travel"
+
+[sensors.pot_rr_v]
+body = "wheel_rr"
+quantity = "travel_rate"
+
+[sensors.pot_fl_lp]
+body = "wheel_fl"
+quantity = "travel"
+filter = { order = 1, cutoff_hz = 30.0 }
+)");
+  const Trace tr = roughRun(s).trace;
+  for (const char* c : {"fl", "rr"}) {
+    const auto& pot = tr.column(std::string("pot_") + c + "_m");
+    const auto& q = tr.column(std::string("susp_defl_") + c + "_m");
+    EXPECT_EQ(pot.front(), 0.0);
+    EXPECT_GT(range(pot), 0.005) << c;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < pot.size(); ++i) worst = std::max(worst, std::abs(pot[i] - (q[i] - q.front())));
+    EXPECT_LT(worst, 1e-7 * range(pot)) << c;  // the trigonometric round trip of a 0.3 m height
+  }
+  const auto &v = tr.column("pot_rr_v_mps"), &qd = tr.column("susp_rate_rr_mps");
+  double worst_v = 0.0;
+  for (std::size_t i = 0; i < v.size(); ++i) worst_v = std::max(worst_v, std::abs(v[i] - qd[i]));
+  EXPECT_LT(worst_v, 1e-7 * range(v));
+  EXPECT_EQ(tr.column("pot_fl_lp_m"), lowPass(tr.column("pot_fl_m"), 1000.0, {1, 30.0}));
+}
+
+// At rest on a flat road the travel stays at 0 (it counts from the start).
+TEST(SensorTwin, TravelIsZeroAtRestUnderTheStaticLoad) {
+  const Study s = sensorStudy("sensor_travel_rest", R"(
+[sensors.pot_rl]
+body = "wheel_rl"
+quantity = "travel"
+)");
+  const auto model = s.makeModel(s.assemblies().front());
+  Simulator sim(model, s.simulation);
+  ScenarioSpec sc = s.scenario("diag_rough");
+  sc.duration_s = 0.5;
+  sc.speed.v_final_mps = 0.0;  // standing still
+  sc.speed.trace.reset();
+  const auto road = makeRoad(s.scenario("diag_bump"), model->vehicle(), s.seed);
+  const auto r = sim.run(model->defaultRunValues(), *road, sc);
+  ASSERT_TRUE(r.stats.ok) << r.stats.message;
+  // A few micrometres at most (the start's equilibrium is solved for the body, the struts then
+  // breathe by about 1 µm), and exactly what the strut's own deflection does.
+  const auto& q = r.trace.column("susp_defl_rl_m");
+  const auto& pot = r.trace.column("pot_rl_m");
+  for (std::size_t i = 0; i < pot.size(); ++i) {
+    ASSERT_NEAR(pot[i], 0.0, 1e-5);
+    ASSERT_NEAR(pot[i], q[i] - q[0], 1e-12);
+  }
+}
+
 // The filtered sensor is the unfiltered one through its filter.
 TEST(SensorTwin, FilteredSensorIsTheRawSignalThroughItsFilter) {
   const Study s = sensorStudy("sensor_filter");

@@ -20,7 +20,7 @@ namespace {
 // ------------------------------------------------------------------ compare
 struct CompareConfig {
   std::string study = defaultStudy(), calibration, out;
-  std::vector<std::string> data;
+  std::vector<std::string> data, baseline;
   int draws = 30, threads = 0;
   bool quiet = false, force = false;
 };
@@ -30,6 +30,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   CompareRequest req;
   req.calibration = cfg.calibration;
   req.data = cfg.data;
+  req.baseline = cfg.baseline;
   req.out = cfg.out;
   req.draws = cfg.draws;
   req.threads = cfg.threads;
@@ -132,6 +133,9 @@ CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line)
       ->required();
   c->add_option("--data", cfg->data, "Measurement file FILE[@SCENARIO] (tidy lab layout); repeatable")->required();
   c->add_option("--draws", cfg->draws, "Posterior rows (evenly spaced) for the predictive band")->capture_default_str()->check(CLI::Range(1, 100000));
+  c->add_option("--baseline", cfg->baseline,
+                "Also fit an FIR from the road under the wheels to each channel on this measurement file FILE[@SCENARIO] (the "
+                "calibration drive), and print its fit % on --data beside the model's; repeatable");
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
   c->add_option("--out", cfg->out, "Folder for compare.json (figures and the overlay series)");
   addForceOption(c, cfg->force);

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/json.hpp"
 #include "common/validate.hpp"
 #include "twin/parallel.hpp"
 
@@ -208,6 +209,7 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
   for (std::size_t k = 0; k < ds.data.records.size(); ++k)
     if (ds.data.records[k].channel == ch) by_time[ds.data.records[k].time_s].push_back(offset + k);
   double ss = 0, ss_sys = 0, ss_noise = 0, ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+  double y_sum = 0, y_sq = 0;  // the measured values' sum and sum of squares (the fit percentage)
   long n_rec = 0, covered = 0;
   std::vector<At> samples;  // where each measured time reads the run
   for (const auto& [t, idx] : by_time) {
@@ -231,6 +233,8 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
     for (auto i : idx) {
       const double e = measured[i] - pm;
       ss += e * e;
+      y_sum += measured[i];
+      y_sq += measured[i] * measured[i];
       ++n_rec;
       if (std::abs(e) > sc.max_abs) {
         sc.max_abs = std::abs(e);
@@ -249,6 +253,8 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
   const double nt = static_cast<double>(sc.t.size());
   sc.rms = std::sqrt(ss / static_cast<double>(n_rec));
   sc.nrmse = ymax > ymin ? sc.rms / (ymax - ymin) : 0.0;
+  const double spread = y_sq - y_sum * y_sum / static_cast<double>(n_rec);  // ‖y − mean y‖²
+  sc.fit_percent = spread > 0 ? 100.0 * (1.0 - std::sqrt(ss / spread)) : 0.0;
   sc.coverage = static_cast<double>(covered) / static_cast<double>(n_rec);
   sc.systematic_rms = std::sqrt(std::max(0.0, (ss_sys - ss_noise) / nt));
   // In time: windows of large standardised residual, labelled.
@@ -371,7 +377,8 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
   for (const auto& s : series) {
     nlohmann::json e{{"data_set", s.data_set}, {"scenario", s.scenario}, {"channel", s.channel}, {"unit", s.unit},
                      {"fitted", s.fitted}, {"noise_variance", s.noise_variance}, {"noise_source", s.noise_source},
-                     {"points", s.t.size()}, {"rms", s.rms}, {"nrmse", s.nrmse}, {"max_abs_error", s.max_abs},
+                     {"points", s.t.size()}, {"rms", s.rms}, {"nrmse", s.nrmse}, {"fit_percent", s.fit_percent},
+                     {"baseline_fit_percent", jsonNumber(s.baseline_fit_percent)}, {"max_abs_error", s.max_abs},
                      {"max_error_at_s", s.max_at_s}, {"coverage95", s.coverage}, {"systematic_rms", s.systematic_rms},
                      {"lack_of_fit_chi2", s.lack_of_fit}};
     e["windows"] = nlohmann::json::array();
@@ -414,13 +421,15 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
 }
 
 std::string comparisonTable(const Comparison& c) {
-  std::string s = formatPrintf("%-28s %-12s %-20s %10s %8s %10s %9s %10s\n", "data set", "scenario", "channel", "RMS", "NRMSE",
-                               "max |err|", "coverage", "syst. RMS");
+  const bool baseline = std::any_of(c.series.begin(), c.series.end(), [](const SeriesComparison& x) { return !std::isnan(x.baseline_fit_percent); });
+  std::string s = formatPrintf("%-28s %-12s %-20s %10s %8s %7s %10s %9s %10s%s\n", "data set", "scenario", "channel", "RMS", "NRMSE",
+                               "fit %", "max |err|", "coverage", "syst. RMS", baseline ? "  FIR fit %" : "");
   for (const auto& x : c.series) {
     std::string name = x.data_set;
     if (name.size() > 28) name = "…" + name.substr(name.size() - 27);
-    s += formatPrintf("%-28s %-12s %-20s %10.4g %8.4f %10.4g %8.1f%% %10.4g\n", name.c_str(), x.scenario.c_str(), x.channel.c_str(),
-                      x.rms, x.nrmse, x.max_abs, 100.0 * x.coverage, x.systematic_rms);
+    s += formatPrintf("%-28s %-12s %-20s %10.4g %8.4f %7.1f %10.4g %8.1f%% %10.4g%s\n", name.c_str(), x.scenario.c_str(), x.channel.c_str(),
+                      x.rms, x.nrmse, x.fit_percent, x.max_abs, 100.0 * x.coverage, x.systematic_rms,
+                      baseline ? formatPrintf(" %10.1f", x.baseline_fit_percent).c_str() : "");
   }
   s += formatPrintf("lack of fit: chi2 = %.1f on %ld dof (z = %.1f, p = %.2g); systematic residual %.3f noise sd\n", c.lack_of_fit,
                     c.lack_of_fit_dof, c.lack_of_fit_z, c.lack_of_fit_p, c.systematic_rms_sd);

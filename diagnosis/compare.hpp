@@ -5,6 +5,7 @@
 // frequency (Welch PSD of the residual per band against the noise floor, coherence with the road)
 // and in state (residual binned against suspension deflection and rate, tire deflection, speed,
 // left-right deflection difference; signature fits on those force-state maps).
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -47,6 +48,12 @@ struct SeriesComparison {
   std::vector<double> z;               ///< (measured mean − predicted mean) / its standard deviation
   // Error figures over every measured value (each repetition):
   double rms = 0, nrmse = 0, max_abs = 0, max_at_s = 0, coverage = 0;
+  /// The fit percentage of system identification (MATLAB's `compare`): 100 (1 − ‖y − ŷ‖ / ‖y −
+  /// mean y‖) over every measured value; 100: exact, 0: no better than the mean, < 0: worse.
+  double fit_percent = 0;
+  /// The same figure for the FIR baseline fitted on other data (twin compare --baseline), NaN
+  /// when none was asked for.
+  double baseline_fit_percent = std::numeric_limits<double>::quiet_NaN();
   /// RMS of the systematic part: sqrt(max(0, mean_t (ȳ_t − η_t)² − mean_t σ²/R_t)).
   double systematic_rms = 0;
   double lack_of_fit = 0;  ///< Σ_t R_t (ȳ_t − η_t)² / σ² (fitted series)

@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "common/files.hpp"
 #include "common/format.hpp"
+#include "diagnosis/baseline.hpp"
 #include "diagnosis/measurements.hpp"
 #include "io/provenance.hpp"
 #include "io/work.hpp"
@@ -55,6 +56,36 @@ void appendFailingWindows(const diag::SeriesComparison& s, std::string& out) {
   }
 }
 
+/// The road input of a data set (diagnosis/baseline.hpp) up to its last record.
+diag::RoadInput roadInputOf(const Study& study, const VehicleData& vehicle, const calib::DataSet& ds) {
+  return diag::roadInput(study.scenario(ds.scenario), vehicle, ds.road_seed.value_or(study.seed), 0.001, dataSpan(ds.data));
+}
+
+/// The FIR baseline of every compared channel, fitted on `train` (twin compare --baseline), and
+/// its fit percentage on each compared series.
+void addBaseline(const Study& study, const VehicleData& vehicle, const std::vector<calib::DataSet>& train,
+                 const std::vector<calib::DataSet>& sets, CompareRun& run, const SayFn& say) {
+  std::vector<diag::RoadInput> train_in, test_in;
+  std::vector<const LabData*> train_data;
+  std::vector<const diag::RoadInput*> train_ptr;
+  for (const auto& ds : train) train_in.push_back(roadInputOf(study, vehicle, ds));
+  for (std::size_t i = 0; i < train.size(); ++i) {
+    train_data.push_back(&train[i].data);
+    train_ptr.push_back(&train_in[i]);
+  }
+  for (const auto& ds : sets) test_in.push_back(roadInputOf(study, vehicle, ds));
+  std::map<std::string, diag::FirBaseline> fitted;
+  for (auto& s : run.comparison.series) {
+    if (!fitted.count(s.channel)) {
+      fitted.emplace(s.channel, diag::fitFirBaseline(s.channel, train_data, train_ptr));
+      if (say) say("baseline for " + s.channel + ": " + fitted.at(s.channel).describe());
+    }
+    for (std::size_t k = 0; k < sets.size(); ++k)
+      if (sets[k].name == s.data_set) s.baseline_fit_percent = diag::firFitPercent(fitted.at(s.channel), sets[k].data, test_in[k]);
+  }
+  for (const auto& [channel, b] : fitted) run.baseline[channel] = b.describe();
+}
+
 }  // namespace
 
 std::string CompareRun::text() const {
@@ -96,6 +127,7 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   co.threads = request.threads;
   co.fitted_parameters = static_cast<int>(obj.names().size());
   run.comparison = diag::compareModel(obj, sets, rows, noise, co);
+  if (!request.baseline.empty()) addBaseline(study, obj.model().vehicle(), loadSets(study, request.baseline, "--baseline"), sets, run, say);
   if (!request.out.empty()) {
     nlohmann::json j = run.comparison.toJson(true);
     j["program"] = programInfo();
@@ -106,6 +138,7 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
     j["assembly"] = run.assembly.id;
     j["setup"] = setup.toJson();
     j["data"] = request.data;
+    if (!request.baseline.empty()) j["baseline"] = {{"data", request.baseline}, {"model", run.baseline}};
     run.written = (fs::path(request.out) / "compare.json").string();
     rootWrites([&] { writeFileAtomic(run.written, j.dump(2) + "\n"); });
   }

@@ -5,6 +5,7 @@
 // The CLI parses its flags into these requests, calls, and prints; the HTML report (report/) is
 // drawn from the files written here.
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ namespace dtwin {
 struct CompareRequest {
   std::string calibration;         ///< a calibration folder (summary.json + posterior.csv)
   std::vector<std::string> data;   ///< measurement files FILE[@SCENARIO]
+  /// Measurement files (the calibration drive) the FIR baseline is fitted on, per channel; each
+  /// compared series then also gets the baseline's fit percentage (diagnosis/baseline.hpp).
+  std::vector<std::string> baseline;
   std::string out;                 ///< folder for compare.json; "" writes nothing
   int draws = 30;                  ///< posterior rows (evenly spaced) for the predictive band
   int threads = 0;                 ///< worker threads (0: all cores)
@@ -29,6 +33,7 @@ struct CompareRun {
   AssemblySpec assembly;
   diag::Comparison comparison;
   std::string written;  ///< the compare.json written ("" without --out)
+  std::map<std::string, std::string> baseline;  ///< per channel: the FIR baseline, described (--baseline)
   /// The table, the windows and bands where the model fails, the state maps and the notes, as
   /// `twin compare` prints them (at most 8 windows per series; compare.json lists every one).
   std::string text() const;

@@ -49,6 +49,18 @@ TEST(Compare, ModelDataAreCoveredAndShowNoLackOfFit) {
     EXPECT_LT(x.systematic_rms, 0.35 * std::sqrt(x.noise_variance)) << x.channel;
     EXPECT_EQ(x.t.size(), 201u);
     EXPECT_NEAR(x.rms, std::sqrt(x.noise_variance), 0.1 * std::sqrt(x.noise_variance));
+    // The fit percentage: 100 (1 − ‖y − ŷ‖ / ‖y − mean y‖) = 100 (1 − RMS / sd(y)) over the records.
+    double sum = 0, sq = 0, n = 0;
+    for (const auto& r : ds.data.records)
+      if (r.channel == x.channel) {
+        sum += r.value;
+        sq += r.value * r.value;
+        n += 1;
+      }
+    const double sd = std::sqrt(sq / n - (sum / n) * (sum / n));
+    EXPECT_NEAR(x.fit_percent, 100.0 * (1.0 - x.rms / sd), 1e-6) << x.channel;
+    EXPECT_GT(x.fit_percent, 50.0) << x.channel;  // the bump's forces stand well above the noise
+    EXPECT_LT(x.fit_percent, 100.0) << x.channel;
   }
   EXPECT_GT(c.lack_of_fit_p, 1e-3) << "z = " << c.lack_of_fit_z;
   // Every band is checked; pure noise should rarely be flagged.

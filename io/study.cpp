@@ -668,6 +668,7 @@ const ScenarioSpec& Study::scenario(const std::string& n) const {
 ParameterTable Study::parameterTable(const std::vector<ParameterSetting>& overrides) const {
   ParameterTable t = declareVehicleParameters(*catalog);
   loadVehicleFile(t, vehicle_path);
+  declareSensorParameters(t, sensors);  // before [fixed], which may set a sensor's position or offset
   for (const auto& f : fixed) t.set(f.name, f.value, f.source, f.where);
   if (!fixed.empty()) checkChassisInertias(t, path + ": fixed");
   for (std::size_t i = 0; i < calibrated.size(); ++i)

@@ -9,7 +9,8 @@
 #   bash scripts/bench_jobs.sh paper           # the paper-scale study (hours: run it alone)
 #
 # Rows: readme (the README's diagnose walkthrough), drive_calibrate (`twin calibrate` of M1 on the
-# demonstration drive), drive_diagnose (the drive's diagnose walkthrough of docs/measurements.md),
+# demonstration drive), drive_vehicle (the same with the chassis mass and pitch inertia and the
+# seat accelerometer's x position calibrated too: issue 32), drive_diagnose (the drive's diagnose walkthrough of docs/measurements.md),
 # demo_study (scripts/demo.sh's study), run (one 15 s run per assembly: `twin bench`), paper.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,8 +21,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_diagnose | demo_study | run | paper) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_diagnose demo_study run paper)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | demo_study | run | paper) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose demo_study run paper)" >&2; exit 2 ;;
   esac
 done
 
@@ -66,6 +67,16 @@ for r in "${rows[@]}"; do
       rm -rf "$D/drive_calibrate"
       timed drive_calibrate "$D/drive_calibrate.log" "$B" calibrate --study "$D/drive/study.toml" --assembly M1 --scenario drive \
         --data "$D/drive/measurements.csv" --out "$D/drive_calibrate" --quiet
+      ;;
+    drive_vehicle)
+      drive
+      rm -rf "$D/drive_vehicle" && mkdir -p "$D/drive_vehicle"
+      { cat "$D/drive/study.toml"
+        printf '\n[[calibrated]]\nname = "chassis.mass_kg"\nlower = 1100\nupper = 1700\n'
+        printf '\n[[calibrated]]\nname = "chassis.pitch_inertia_kgm2"\nlower = 1500\nupper = 2800\n'
+        printf '\n[[calibrated]]\nname = "sensors.seat.x_m"\nlower = 0.4\nupper = 1.4\n'; } >"$D/drive_vehicle/study.toml"
+      timed drive_vehicle "$D/drive_vehicle.log" "$B" calibrate --study "$D/drive_vehicle/study.toml" --assembly M1 --scenario drive \
+        --data "$D/drive/measurements.csv" --out "$D/drive_vehicle/out" --quiet
       ;;
     drive_diagnose)
       drive

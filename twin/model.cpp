@@ -196,6 +196,31 @@ void checkChassisInertias(const ParameterTable& table, const std::string& where)
 
 double yawInertiaInTriangle(double ixx, double iyy, double izz) { return std::clamp(izz, std::abs(ixx - iyy), ixx + iyy); }
 
+void declareSensorParameters(ParameterTable& table, const std::vector<SensorSpec>& sensors) {
+  auto declare = [&](const std::string& name, const std::string& unit, const std::string& desc, double lo, double hi, double v) {
+    if (table.contains(name)) return;
+    ParameterSpec s;
+    s.name = name;
+    s.unit = unit;
+    s.description = desc;
+    s.min_value = lo;
+    s.max_value = hi;
+    s.default_value = v;
+    table.declare(s);
+    table.set(name, v, "sensor " + name.substr(0, name.rfind('.')), "[sensors]");
+  };
+  const char* axis[3] = {"x_m", "y_m", "z_m"};
+  const char* words[3] = {"forward", "left", "up"};
+  for (const auto& x : sensors) {
+    const std::string p = "sensors." + x.name + ".";
+    if (x.corner() < 0 && !x.relative())
+      for (int k = 0; k < 3; ++k)
+        declare(p + axis[k], "m", std::string("the sensor's position from the centre of mass, ") + words[k], -10.0, 10.0,
+                x.position_m[static_cast<std::size_t>(k)]);
+    declare(p + "offset", x.unit(), "a constant the sensor adds to what it measures", -kInf, kInf, 0.0);
+  }
+}
+
 void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name, const std::string& where) {
   for (auto s : effect.parameters()) {
     s.name = name + "." + s.name;
@@ -275,6 +300,18 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
       throw InputError(where, "'" + f + "' cannot be freed in assembly " + assembly_.id + ": it has no solid axle");
     if (slot(f) >= 0) throw InputError(where, "'" + f + "' is freed twice");
     freed_slots_.push_back(addRunParameter(f));
+  }
+  declareSensorParameters(table_, sensors_);
+  for (const auto& x : sensors_) {
+    const std::string p = "sensors." + x.name + ".";
+    SensorSlots s;
+    if (x.corner() < 0 && !x.relative()) {
+      s.x = addRunParameter(p + "x_m");
+      s.y = addRunParameter(p + "y_m");
+      s.z = addRunParameter(p + "z_m");
+    }
+    s.offset = addRunParameter(p + "offset");
+    sensor_slots_.push_back(s);
   }
   for (const auto& n : run_names_) need(n);
   const std::string rule = checkRunValues(defaultRunValues());

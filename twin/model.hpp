@@ -76,6 +76,13 @@ struct VehicleData {
   }
 };
 
+/// The run parameters of the sensors, declared in `table` with their study values unless declared
+/// already: sensors.NAME.x_m, .y_m, .z_m (a chassis sensor's position, within ±10 m) and
+/// sensors.NAME.offset (a constant added to the channel, in its unit; 0). They change no force,
+/// only what the sensor reads, so a calibration or a diagnosis can find a position or an offset
+/// nobody measured.
+void declareSensorParameters(ParameterTable& table, const std::vector<SensorSpec>& sensors);
+
 /// InputError(where, ...) when the chassis roll, pitch and yaw inertias of `table` (all three set
 /// and positive) break the triangle inequality: no rigid body has them. loadVehicleFile checks the
 /// file's values with it.
@@ -123,6 +130,14 @@ class Model {
   int interfacePreloadSlot() const { return iface_preload_slot_; }
   const std::vector<std::vector<int>>& effectSlots() const { return effect_slots_; }
 
+  /// Per sensor (sensors() order): the run slots of its chassis position x, y, z (-1 for a wheel
+  /// or travel sensor) and of its offset, the sensors' run parameters
+  /// (declareSensorParameters): calibrated or freed like any run parameter, read by the output.
+  struct SensorSlots {
+    int x = -1, y = -1, z = -1, offset = -1;
+  };
+  const std::vector<SensorSlots>& sensorSlots() const { return sensor_slots_; }
+
   /// Run slots of the freed vehicle values (AssemblySpec::freed), in that order.
   const std::vector<int>& freedSlots() const { return freed_slots_; }
   /// True when `values` (a run vector) holds this model's own freed vehicle values (always true
@@ -156,6 +171,7 @@ class Model {
   int iface_preload_slot_ = -1;
   std::vector<std::vector<int>> effect_slots_;
   std::vector<int> freed_slots_;
+  std::vector<SensorSlots> sensor_slots_;
   std::string where_;
 };
 

@@ -944,7 +944,10 @@ struct Simulator::Impl {
       tr.column(col++)[r] = acc(BODY + 1, BODY + 2);
       tr.column(col++)[r] = acc(BODY + 4, BODY + 5);
       tr.column(col++)[r] = acc(BODY + 7, BODY + 8);
-      for (const auto& x : model->sensors()) {  // before any filter (filterSensors)
+      for (std::size_t si = 0; si < model->sensors().size(); ++si) {  // before any filter (filterSensors)
+        const SensorSpec& x = model->sensors()[si];
+        const Model::SensorSlots& sl = model->sensorSlots()[si];
+        const double offset = ctx.p[sl.offset];  // run parameters: a calibration may move them
         Motion m;
         if (x.relative()) {
           // The wheel centre's height in chassis axes, from its start: the travel (compression
@@ -957,7 +960,7 @@ struct Simulator::Impl {
           const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), 0.0};
           m = chassisAxisHeight({pos(HZ + c, HZD + c), pos(HZD + c, HZDD + c), 0.0}, heave, pitch, roll, cx, cy);
           m.q -= chassisAxisHeight({k0[HZ + c], 0, 0}, {k0[BODY + 0], 0, 0}, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, cx, cy).q;
-          tr.column(col++)[r] = x.quantity == SensorQuantity::Travel ? m.q : m.qd;
+          tr.column(col++)[r] = (x.quantity == SensorQuantity::Travel ? m.q : m.qd) + offset;
           continue;
         }
         if (x.corner() >= 0) {
@@ -968,10 +971,11 @@ struct Simulator::Impl {
           const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), acc(BODY + 4, BODY + 5)};
           const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), acc(BODY + 7, BODY + 8)};
           const Motion at0{k0[BODY + 0], 0.0, 0.0};
-          m = chassisPointMotion(heave, pitch, roll, x.position_m);
-          m.q -= chassisPointMotion(at0, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, x.position_m).q;
+          const std::array<double, 3> where{ctx.p[sl.x], ctx.p[sl.y], ctx.p[sl.z]};
+          m = chassisPointMotion(heave, pitch, roll, where);
+          m.q -= chassisPointMotion(at0, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, where).q;
         }
-        tr.column(col++)[r] = x.quantity == SensorQuantity::DisplacementZ ? m.q : x.quantity == SensorQuantity::VelocityZ ? m.qd : m.qdd;
+        tr.column(col++)[r] = (x.quantity == SensorQuantity::DisplacementZ ? m.q : x.quantity == SensorQuantity::VelocityZ ? m.qd : m.qdd) + offset;
       }
     }
   }

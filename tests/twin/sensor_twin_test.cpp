@@ -273,3 +273,50 @@ TEST(SensorTwin, LabDataCanBeGeneratedOnASensorChannel) {
   EXPECT_EQ(r.data.records.front().channel, "seat_mps2");
   EXPECT_NO_THROW(labCsvText(r.data, measurableChannels(s.sensors)));
 }
+
+// Issue 32: a sensor's position and offset are run parameters (sensors.NAME.x_m, .y_m, .z_m,
+// .offset): a calibration that frees them predicts, at a value, what a study with the sensor
+// mounted there predicts, bit for bit, and an offset adds itself to every sample.
+TEST(SensorTwin, ASensorsPositionAndOffsetAreRunParameters) {
+  const char* kAt = R"(
+[sensors.seat]
+position_m = [0.9, -0.4, 0.3]
+quantity = "acceleration_z"
+)";
+  const Study s = sensorStudy("sensor_param_a", std::string(kAt) + R"(
+[[calibrated]]
+name = "sensors.seat.x_m"
+lower = -1.0
+upper = 1.5
+
+[[calibrated]]
+name = "sensors.seat.offset"
+unit = "m/s^2"
+lower = -1.0
+upper = 1.0
+)");
+  const Study moved = sensorStudy("sensor_param_b", R"(
+[sensors.seat]
+position_m = [1.2, -0.4, 0.3]
+quantity = "acceleration_z"
+)");
+  LabData data;
+  for (int k = 0; k <= 300; ++k) data.records.push_back({1, 0.01 * k, "seat_mps2", 0.0});
+  const std::vector<calib::DataSet> sets{{"d", "diag_bump", data}};
+  const calib::LabObjective with(s, s.assemblies().front(), sets, {});
+  const calib::LabObjective base(moved, moved.assemblies().front(), sets, {});
+  ASSERT_EQ(with.names().size(), 6u);
+  auto th = dtwin_test::truthOf(moved);
+  const auto expect = base.predict(th);
+  th.push_back(1.2);
+  th.push_back(0.0);
+  EXPECT_EQ(with.predict(th), expect);
+  th.back() = 0.25;
+  const auto shifted = with.predict(th);
+  for (std::size_t i = 0; i < expect.size(); ++i) EXPECT_NEAR(shifted[i], expect[i] + 0.25, 1e-12) << i;
+  // In [fixed] too, and a position beyond 10 m is refused when the study is read.
+  const Study fixed = sensorStudy("sensor_param_c", std::string(kAt) + "\n[fixed]\n\"sensors.seat.x_m\" = 1.2\n");
+  const calib::LabObjective f(fixed, fixed.assemblies().front(), sets, {});
+  EXPECT_EQ(f.predict(dtwin_test::truthOf(fixed)), expect);
+  EXPECT_NE(errorOf("sensor_param_d", std::string(kAt) + "\n[fixed]\n\"sensors.seat.x_m\" = 12.0\n").find("sensors.seat.x_m"), std::string::npos);
+}

@@ -416,15 +416,30 @@ ImportMapping readImportMapping(const std::string& path) {
 
 namespace {
 
-/// The channels a log may fill: the study's sensors and the mapping's (new names only), and a
-/// check of the scenario's name against the study.
+/// The mapping's sensors the study does not have yet. One it has, mounted and filtered the same
+/// (a second drive of the same car imported into the first drive's study), is kept as it is; a
+/// sensor of the same name mounted otherwise is an error.
+std::vector<SensorSpec> newSensors(const Study& base, const ImportMapping& m, const std::string& base_study) {
+  std::vector<SensorSpec> out;
+  for (const auto& x : m.sensors) {
+    bool known = false;
+    for (const auto& y : base.sensors)
+      if (y.name == x.name) {
+        if (y.toJson() != x.toJson())
+          throw InputError(m.source + ": sensors." + x.name, "the study " + base_study + " has a sensor of this name already, otherwise (" +
+                                                                  y.toJson().dump() + "): rename one");
+        known = true;
+      }
+    if (!known) out.push_back(x);
+  }
+  return out;
+}
+
+/// The channels a log may fill: the study's sensors and the mapping's, and a check of the
+/// scenario's name against the study.
 std::vector<Channel> checkTarget(const Study& base, const ImportMapping& m, const std::string& base_study, const std::string& scenario) {
   std::vector<SensorSpec> sensors = base.sensors;
-  for (const auto& x : m.sensors) {
-    for (const auto& y : sensors)
-      if (y.name == x.name) throw InputError(m.source + ": sensors." + x.name, "the study " + base_study + " already has this sensor");
-    sensors.push_back(x);
-  }
+  for (const auto& x : newSensors(base, m, base_study)) sensors.push_back(x);
   for (const auto& sc : base.scenarios)
     if (sc.name == scenario) throw InputError("--scenario " + scenario, "the study " + base_study + " already has a scenario of this name");
   bool name_ok = !scenario.empty();
@@ -797,7 +812,10 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
                        const std::string& base_study, const std::string& scenario, const StageProgress& progress) {
   ImportResult res;
   res.scenario = scenario;
-  const std::vector<Channel> known = checkTarget(loadStudy(base_study), m, base_study, scenario);
+  const Study base = loadStudy(base_study);
+  const std::vector<Channel> known = checkTarget(base, m, base_study, scenario);
+  ImportMapping added = m;  // the study gains the mapping's new sensors only
+  added.sensors = newSensors(base, m, base_study);
   const ImportUnits units = resolveUnits(m, known);
   LogRows rows = LogRowReader(log_text, log_name, m, units).read(progress);
   auto& t = rows.t;
@@ -844,7 +862,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     throw InputError(m.window_s ? m.window_where : log_name, "leaves no measurement: every row is outside the window or masked");
   res.lab_csv = labCsvText(res.data, known);  // validates (plausible ranges, ...) with the log's lines lost: name the log
   writeInputs(res, units, tr, vr, road);
-  res.study_toml = importedStudyText(log_name, m, units, base_study, scenario, res.duration_s, res.start_m);
+  res.study_toml = importedStudyText(log_name, added, units, base_study, scenario, res.duration_s, res.start_m);
   res.sidecar = importSidecar(res, log_text, log_name, m, units, base_study);
   return res;
 }

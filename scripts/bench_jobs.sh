@@ -70,13 +70,14 @@ for r in "${rows[@]}"; do
       ;;
     drive_vehicle)
       drive
-      rm -rf "$D/drive_vehicle" && mkdir -p "$D/drive_vehicle"
+      rm -rf "$D/drive_vehicle"
+      # Beside the drive's study: its speed and road files are named relative to it.
       { cat "$D/drive/study.toml"
         printf '\n[[calibrated]]\nname = "chassis.mass_kg"\nlower = 1100\nupper = 1700\n'
         printf '\n[[calibrated]]\nname = "chassis.pitch_inertia_kgm2"\nlower = 1500\nupper = 2800\n'
-        printf '\n[[calibrated]]\nname = "sensors.seat.x_m"\nlower = 0.4\nupper = 1.4\n'; } >"$D/drive_vehicle/study.toml"
-      timed drive_vehicle "$D/drive_vehicle.log" "$B" calibrate --study "$D/drive_vehicle/study.toml" --assembly M1 --scenario drive \
-        --data "$D/drive/measurements.csv" --out "$D/drive_vehicle/out" --quiet
+        printf '\n[[calibrated]]\nname = "sensors.seat.x_m"\nlower = 0.4\nupper = 1.4\n'; } >"$D/drive/study_vehicle.toml"
+      timed drive_vehicle "$D/drive_vehicle.log" "$B" calibrate --study "$D/drive/study_vehicle.toml" --assembly M1 --scenario drive \
+        --data "$D/drive/measurements.csv" --out "$D/drive_vehicle" --quiet
       ;;
     drive_diagnose)
       drive

@@ -19,6 +19,8 @@ import subprocess
 import sys
 import tempfile
 
+from drive_tools import cubic_reader, knot_speed
+
 HIDDEN = "damper_asymmetry:ratio=2.2"  # the answer: what `twin diagnose` should name
 SEED = 20261126
 # The generating run's integrator accuracy: far tighter than any fit's (3e-4 .. 1e-4), so the log
@@ -32,12 +34,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 def speed_profile(t):
     """Stop and go [m/s]: smooth (cosine) ramps between plateaus."""
-    knots = [(0, 0), (2, 0), (10, 15), (20, 15), (26, 0), (29, 0), (37, 20), (47, 20), (55, 5), (62, 5)]
-    for (t0, v0), (t1, v1) in zip(knots, knots[1:]):
-        if t0 <= t <= t1:
-            u = (t - t0) / (t1 - t0)
-            return v0 + (v1 - v0) * 0.5 * (1 - math.cos(math.pi * u))
-    return knots[-1][1]
+    return knot_speed([(0, 0), (2, 0), (10, 15), (20, 15), (26, 0), (29, 0), (37, 20), (47, 20), (55, 5), (62, 5)], t)
 
 
 def main():
@@ -75,19 +72,10 @@ lab_repetitions = 1
     col = {name: [r[i] for r in data] for i, name in enumerate(head)}
     rate = 1000.0
 
+    readers = {name: cubic_reader(col[name]) for name in col}
+
     def at(name, t):  # four-point cubic through the 1 kHz rows (error ~1e-6 of the signal here)
-        y = col[name]
-        x = t * rate
-        k = min(max(int(math.floor(x)) - 1, 0), len(y) - 4)
-        s = x - k
-        v = 0.0
-        for i in range(4):
-            w = 1.0
-            for j in range(4):
-                if j != i:
-                    w *= (s - j) / (i - j)
-            v += w * y[k + i]
-        return v
+        return readers[name](t)
 
     g = 9.80665
     dropouts = {1234, 1235, 3100, 4777, 4778, 4779}

@@ -556,3 +556,28 @@ TEST(LogImport, AWindowPredictsWhatTheWholeDrivePredictsThere) {
     EXPECT_LT(worst, tol * (hi - lo)) << channel << ": worst " << worst << " of a range " << hi - lo;
   }
 }
+
+// A second drive of the same car goes into the first drive's study: the mapping's sensors, the
+// same as the study's, are kept as they are; a sensor of the same name mounted otherwise is an
+// error naming both.
+TEST(LogImport, ASecondDriveJoinsTheFirstDrivesStudy) {
+  const fs::path dir = dtwin_test::freshDir("import_second");
+  dtwin_test::writeText(dir / "map.toml", kMapping);
+  const ImportMapping m = readImportMapping((dir / "map.toml").string());
+  writeImport(importLog(makeLog(), "a.csv", m, kDemo, "drive_a"), (dir / "a").string());
+  const std::string first = (dir / "a" / "study.toml").string();
+  writeImport(importLog(makeLog(), "b.csv", m, first, "drive_b"), (dir / "b").string());
+  const Study s = loadStudy((dir / "b" / "study.toml").string());
+  EXPECT_EQ(s.sensors.size(), 1u);
+  EXPECT_NO_THROW((void)s.scenario("drive_a"));
+  EXPECT_NO_THROW((void)s.scenario("drive_b"));
+  ImportMapping moved = m;
+  moved.sensors[0].position_m[0] = 0.7;
+  try {
+    importLog(makeLog(), "c.csv", moved, first, "drive_c");
+    FAIL() << "a sensor mounted otherwise was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sensors.seat"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("otherwise"), std::string::npos) << e.what();
+  }
+}

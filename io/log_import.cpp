@@ -306,6 +306,37 @@ std::string ImportMask::text() const {
   return s;
 }
 
+namespace {
+/// [import]'s window_s, run_in_s and exclude into `m` (docs/measurements.md, "Windows and masks").
+void readWindowAndMasks(TableReader& r, const std::string& path, ImportMapping& m) {
+  if (const toml::array* w = r.array("window_s")) {
+    m.window_where = r.where("window_s");
+    if (w->size() != 2 || !(*w)[0].is_number() || !(*w)[1].is_number())
+      throw InputError(m.window_where, "must be [start, end] in seconds from the log's first row");
+    m.window_s = std::array<double, 2>{*(*w)[0].value<double>(), *(*w)[1].value<double>()};
+    if (!((*m.window_s)[0] >= 0 && (*m.window_s)[0] < (*m.window_s)[1]))
+      throw InputError(m.window_where, "must be [start, end] with 0 <= start < end, got [" + formatNumber((*m.window_s)[0]) + ", " +
+                                           formatNumber((*m.window_s)[1]) + "]");
+  }
+  if (r.has("run_in_s")) {
+    m.run_in_s = *r.number("run_in_s");
+    if (!(m.run_in_s >= 0 && m.run_in_s <= 3600))
+      throw InputError(r.where("run_in_s"), "must lie in [0, 3600] s, got " + formatNumber(m.run_in_s));
+    if (!m.window_s) throw InputError(r.where("run_in_s"), "needs window_s (the run-in is the log before the window)");
+  }
+  if (r.isTable("exclude")) {
+    m.exclude.push_back(readMask(*r.table("exclude"), path, r.field("exclude")));
+  } else if (const toml::array* ex = r.array("exclude")) {
+    for (std::size_t i = 0; i < ex->size(); ++i) {
+      const auto* t = (*ex)[i].as_table();
+      const std::string field = r.field("exclude") + "[" + std::to_string(i) + "]";
+      if (!t) throw InputError(r.where("exclude"), field + " must be a table { column, unit, above, below }");
+      m.exclude.push_back(readMask(*t, path, field));
+    }
+  }
+}
+}  // namespace
+
 ImportMapping readImportMapping(const std::string& path) {
   const std::string text = readTextFile(path, " (an import mapping)");
   toml::table root;
@@ -359,31 +390,7 @@ ImportMapping readImportMapping(const std::string& path) {
   }
   if (m.decimal_comma && m.separator == ',')
     throw InputError(r.where("decimal_comma"), "needs a separator other than ',' (e.g. separator = \";\")");
-  if (const toml::array* w = r.array("window_s")) {
-    m.window_where = r.where("window_s");
-    if (w->size() != 2 || !(*w)[0].is_number() || !(*w)[1].is_number())
-      throw InputError(m.window_where, "must be [start, end] in seconds from the log's first row");
-    m.window_s = std::array<double, 2>{*(*w)[0].value<double>(), *(*w)[1].value<double>()};
-    if (!((*m.window_s)[0] >= 0 && (*m.window_s)[0] < (*m.window_s)[1]))
-      throw InputError(m.window_where, "must be [start, end] with 0 <= start < end, got [" + formatNumber((*m.window_s)[0]) + ", " +
-                                           formatNumber((*m.window_s)[1]) + "]");
-  }
-  if (r.has("run_in_s")) {
-    m.run_in_s = *r.number("run_in_s");
-    if (!(m.run_in_s >= 0 && m.run_in_s <= 3600))
-      throw InputError(r.where("run_in_s"), "must lie in [0, 3600] s, got " + formatNumber(m.run_in_s));
-    if (!m.window_s) throw InputError(r.where("run_in_s"), "needs window_s (the run-in is the log before the window)");
-  }
-  if (r.isTable("exclude")) {
-    m.exclude.push_back(readMask(*r.table("exclude"), path, r.field("exclude")));
-  } else if (const toml::array* ex = r.array("exclude")) {
-    for (std::size_t i = 0; i < ex->size(); ++i) {
-      const auto* t = (*ex)[i].as_table();
-      const std::string field = r.field("exclude") + "[" + std::to_string(i) + "]";
-      if (!t) throw InputError(r.where("exclude"), field + " must be a table { column, unit, above, below }");
-      m.exclude.push_back(readMask(*t, path, field));
-    }
-  }
+  readWindowAndMasks(r, path, m);
   const toml::array* chans = r.array("channels");
   if (!chans || chans->empty()) throw InputError(r.where("channels"), "needs at least one [[import.channels]] (column, channel, unit)");
   for (std::size_t i = 0; i < chans->size(); ++i) {

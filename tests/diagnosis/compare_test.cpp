@@ -8,13 +8,16 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <regex>
 
 #include "diagnosis/compare.hpp"
 #include "subsystems/effect.hpp"
 #include "io/generate.hpp"
+#include "io/log_import.hpp"
 
 using namespace dtwin;
 using namespace dtwin::diag;
+namespace fs = std::filesystem;
 
 namespace {
 const std::string kDemo = std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml";
@@ -180,4 +183,40 @@ TEST(Compare, EveryEffectsSignatureIsAMapAndFitTheComparisonMakes) {
           for (const auto& f : m.fits) found = found || f.feature == sig.feature;
     EXPECT_TRUE(found) << name << ": no map " << sig.state_map << "* with a fit '" << sig.feature << "'";
   }
+}
+
+// Issue 32's done-when: the unknown car's drive B (data/drives, made by
+// scripts/make_unknown_car_drives.py), imported with its mapping into drive A's study and
+// compared at the hidden truth, fits its string potentiometer within 1.5 noise sd once the
+// logger's 30 Hz filter is declared on the travel sensor, and far outside without it.
+TEST(Compare, TheUnknownCarsPotFitsAtTheTruthOnceItsFilterIsDeclared) {
+  const fs::path dir = dtwin_test::freshDir("compare_unknown_car");
+  const std::string drives = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
+  const ImportMapping m = readImportMapping(drives + "unknown_car_map.toml");
+  writeImport(importLog(dtwin_test::slurp(drives + "unknown_car_a.csv"), "a.csv", m, kDemo, "drive_a"), (dir / "A").string());
+  writeImport(importLog(dtwin_test::slurp(drives + "unknown_car_b.csv"), "b.csv", m, (dir / "A" / "study.toml").string(), "drive_b"),
+              (dir / "B").string());
+  // The car as the script made it (its HIDDEN and SEAT).
+  std::string text = dtwin_test::slurp(dir / "B" / "study.toml");
+  text = std::regex_replace(text, std::regex(R"(position_m = \[0\.9, -0\.4, 0\.3\])"), "position_m = [1.15, -0.35, 0.25]");
+  text += "\n[fixed]\n\"chassis.mass_kg\" = 1620.0\n\"chassis.pitch_inertia_kgm2\" = 2550.0\n\"chassis.roll_inertia_kgm2\" = 560.0\n"
+          "\"chassis.cg_height_m\" = 0.58\n\"chassis.cg_x_m\" = 0.06\n";
+  const std::vector<double> truth{205000.0, 2600.0, 34000.0, 2300.0};
+  auto potRmsInNoiseSd = [&](const std::string& study_text, const std::string& name) {
+    dtwin_test::writeText(dir / "B" / name, study_text);
+    const Study s = loadStudy((dir / "B" / name).string());
+    const auto set = loadMeasurement(s, parseMeasurementArg((dir / "B" / "measurements.csv").string() + "@drive_b", "test"));
+    calib::LabObjective obj(s, s.assemblies().front(), {set}, {});
+    const auto c = compareModel(obj, {set}, {truth}, estimateChannelNoise(s, {set}));
+    for (const auto& x : c.series)
+      if (x.channel == "pot_fl_m") return x.rms / std::sqrt(x.noise_variance);
+    ADD_FAILURE() << "no pot_fl_m series";
+    return 0.0;
+  };
+  const double with = potRmsInNoiseSd(text, "truth.toml");
+  EXPECT_LT(with, 1.5);
+  EXPECT_GT(with, 0.8);  // the pot's own noise is in the data
+  const std::string unfiltered = std::regex_replace(text, std::regex(R"(filter = \{ order = 1, cutoff_hz = 30(\.0)? \})"), "");
+  ASSERT_NE(unfiltered, text);
+  EXPECT_GT(potRmsInNoiseSd(unfiltered, "truth_unfiltered.toml"), 3.0);
 }

@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "diagnosis/signal.hpp"
 #include "subsystems/road.hpp"
 
 namespace dtwin::diag {
@@ -98,8 +99,7 @@ double firFitPercent(const FirBaseline& baseline, const LabData& data, const Roa
     n += 1;
   }
   if (n == 0) return std::numeric_limits<double>::quiet_NaN();
-  const double spread = sq - sum * sum / n;
-  return spread > 0 ? 100.0 * (1.0 - std::sqrt(ss / spread)) : 0.0;
+  return fitPercent(ss, n, sum, sq);
 }
 
 }  // namespace dtwin::diag

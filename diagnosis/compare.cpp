@@ -119,7 +119,7 @@ struct At {
   const RunResult& run;
   std::size_t record;
   /// The column `name` at the record's time (on the grid or at the run's extra output time).
-  double operator()(const std::string& name) const {
+  double column(const std::string& name) const {
     const int c = run.trace.index(name);
     DTWIN_CHECK(c >= 0, "no channel " + name);
     return objective.read(run, record, static_cast<std::size_t>(c));
@@ -133,13 +133,13 @@ void poolStates(Pooled& pl, const std::string& ch, const At& at, double residual
   std::string c = cornerOf(ch);
   if (c.empty()) c = "fl";
   const bool front = c[0] == 'f';
-  pl.state["susp_defl_" + c + "_m"].push_back(at("susp_defl_" + c + "_m"));
-  pl.state["susp_rate_" + c + "_mps"].push_back(at("susp_rate_" + c + "_mps"));
-  pl.state["tire_defl_" + c + "_m"].push_back(at("tire_defl_" + c + "_m"));
-  pl.state["speed_mps"].push_back(at("speed_mps"));
+  pl.state["susp_defl_" + c + "_m"].push_back(at.column("susp_defl_" + c + "_m"));
+  pl.state["susp_rate_" + c + "_mps"].push_back(at.column("susp_rate_" + c + "_mps"));
+  pl.state["tire_defl_" + c + "_m"].push_back(at.column("tire_defl_" + c + "_m"));
+  pl.state["speed_mps"].push_back(at.column("speed_mps"));
   const std::string l = front ? "fl" : "rl", r = front ? "fr" : "rr";
-  pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(at("susp_defl_" + l + "_m") -
-                                                                                   at("susp_defl_" + r + "_m"));
+  pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(at.column("susp_defl_" + l + "_m") -
+                                                                                   at.column("susp_defl_" + r + "_m"));
 }
 
 /// The residual of a fitted series in frequency, with the road under the channel's wheel as the
@@ -179,7 +179,7 @@ void addBands(SeriesComparison& sc, const std::vector<At>& at) {
   for (std::size_t i = 0; i < sc.t.size(); ++i) {
     res[i] = sc.measured_mean[i] - sc.predicted_mean[i];
     rbar += sc.repetitions[i];
-    road[i] = at[i]("road_" + c + "_m");
+    road[i] = at[i].column("road_" + c + "_m");
   }
   rbar /= static_cast<double>(sc.t.size());
   sc.bands = bandAnalysis(res, 1.0 / dt, sc.noise_variance / rbar, &road, welchSegment(res.size()));
@@ -253,8 +253,7 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
   const double nt = static_cast<double>(sc.t.size());
   sc.rms = std::sqrt(ss / static_cast<double>(n_rec));
   sc.nrmse = ymax > ymin ? sc.rms / (ymax - ymin) : 0.0;
-  const double spread = y_sq - y_sum * y_sum / static_cast<double>(n_rec);  // ‖y − mean y‖²
-  sc.fit_percent = spread > 0 ? 100.0 * (1.0 - std::sqrt(ss / spread)) : 0.0;
+  sc.fit_percent = fitPercent(ss, static_cast<double>(n_rec), y_sum, y_sq);
   sc.coverage = static_cast<double>(covered) / static_cast<double>(n_rec);
   sc.systematic_rms = std::sqrt(std::max(0.0, (ss_sys - ss_noise) / nt));
   // In time: windows of large standardised residual, labelled.

@@ -947,8 +947,6 @@ Cause causeOf(const Candidate& c, const std::vector<const Candidate*>& alike) {
   k.finding = c.finding;
   k.delta_bic = c.delta_bic;
   k.explained = c.explained;
-  k.lack_of_fit_z = c.fit->comparison.lack_of_fit_z;
-  k.lack_of_fit_p = c.fit->comparison.lack_of_fit_p;
   k.fit = *c.fit;
   for (const Candidate* a : alike) k.ambiguous_with.push_back(a->effect);
   return k;
@@ -960,7 +958,7 @@ Cause causeOf(const Candidate& c, const std::vector<const Candidate*>& alike) {
 /// (ΔBIC against the model with them), and the best strong one becomes the next cause.
 void furtherCauses(Diagnosis& d) {
   auto& res = d.res;
-  while (static_cast<int>(res.causes.size()) < d.options.causes && res.causes.back().lack_of_fit_p < d.options.lack_of_fit_alpha) {
+  while (static_cast<int>(res.causes.size()) < d.options.causes && res.causes.back().fit.comparison.lack_of_fit_p < d.options.lack_of_fit_alpha) {
     d.installed.push_back(res.causes.back().name);
     d.reference = &res.causes.back().fit;
     std::vector<std::string> catalogue;
@@ -1060,7 +1058,7 @@ void verdict(Diagnosis& d) {
   const Cause& last = res.causes.back();
   double total = 0;
   for (const auto& k : res.causes) total += k.explained;
-  const bool after_bad = last.lack_of_fit_p < alpha;
+  const bool after_bad = last.fit.comparison.lack_of_fit_p < alpha;
   if (after_bad && total < options.explained_min) {
     res.verdict = "unexplained";
     res.unexplained_location = locate(last.fit.comparison);
@@ -1069,7 +1067,7 @@ void verdict(Diagnosis& d) {
       names += (i ? (i + 1 == res.causes.size() ? " and " : ", ") : "") + res.causes[i].name;
     res.summary = std::string("Unexplained residual: the best catalogue ") + (res.causes.size() == 1 ? "effect, " : "causes, ") + names +
                   ", explain" + (res.causes.size() == 1 ? "s" : "") + " only " + fmt("%.0f", 100 * total) +
-                  " % of the excess residual and a significant lack of fit remains (z = " + fmt("%.1f", last.lack_of_fit_z) + "); " +
+                  " % of the excess residual and a significant lack of fit remains (z = " + fmt("%.1f", last.fit.comparison.lack_of_fit_z) + "); " +
                   (res.causes.size() == 1 ? "it is" : "they are") + " not named. Where: " + res.unexplained_location + ".";
     return;
   }
@@ -1081,7 +1079,7 @@ void verdict(Diagnosis& d) {
   res.ambiguous_with = first.ambiguous_with;
   res.summary = effectSummary(d, *named.front(), alike);
   if (after_bad)
-    res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", last.lack_of_fit_z) + "): " + locate(last.fit.comparison) + ".";
+    res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", last.fit.comparison.lack_of_fit_z) + "): " + locate(last.fit.comparison) + ".";
 }
 
 // ------------------------------------------------------------------ propose
@@ -1364,7 +1362,7 @@ nlohmann::json DiagnosisResult::toJson() const {
   for (const auto& k : causes) {
     nlohmann::json c{{"name", k.name},           {"kind", k.kind},
                      {"finding", k.finding},     {"delta_bic", k.delta_bic},
-                     {"explained_fraction", k.explained}, {"lack_of_fit_z_after", k.lack_of_fit_z},
+                     {"explained_fraction", k.explained}, {"lack_of_fit_z_after", k.fit.comparison.lack_of_fit_z},
                      {"parameters", paramsJson(k.parameters)}, {"ambiguous_with", k.ambiguous_with},
                      {"folder", k.fit.folder}};
     j["causes"].push_back(c);
@@ -1419,7 +1417,7 @@ std::string DiagnosisResult::text() const {
     s += "\nCauses (forward stagewise, strongest first; parameters from the joint fit " + causes.back().fit.folder + "):\n";
     for (const auto& c : causes) {
       s += "  " + c.name + ": explains " + fmt("%.0f", 100 * c.explained) + " % of the excess residual (ΔBIC " + fmt("%.1f", c.delta_bic) +
-           "; lack of fit z " + fmt("%.1f", c.lack_of_fit_z) + " after it)\n";
+           "; lack of fit z " + fmt("%.1f", c.fit.comparison.lack_of_fit_z) + " after it)\n";
       for (const auto& p : c.parameters)
         s += "    " + p.name + ": optimum " + fmt("%.4g", p.optimum) + " " + p.unit +
              (p.interval == "none" ? std::string() : "  (95 % " + p.interval + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) + "])") + "\n";

@@ -137,10 +137,9 @@ struct Cause {
   std::string name, kind, finding;  ///< finding: at the joint fit of every cause named
   double delta_bic = 0;             ///< against the model with the causes before it
   double explained = 0;             ///< its share of the base's excess residual (the drop at its step)
-  double lack_of_fit_z = 0, lack_of_fit_p = 1;  ///< what remains with it and every cause before it
   std::vector<EffectParameter> parameters;  ///< in the joint fit of every cause named
   std::vector<std::string> ambiguous_with;  ///< candidates of its stage within ambiguity_log_evidence
-  Figures fit;                      ///< the model with it and every cause before it
+  Figures fit;                      ///< the model with it and every cause before it (its comparison: what remains)
 };
 
 /// A later stage of the stagewise selection: the causes installed and the candidates screened and

@@ -15,12 +15,21 @@
 //         IEEE Trans. Audio Electroacoust. 15(2):70–73, 1967.
 //  [PW93] D. B. Percival, A. T. Walden, Spectral Analysis for Physical Applications, CUP 1993,
 //         §6.17 (WOSA), eq. (292b) for the equivalent degrees of freedom.
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "common/statistics.hpp"
 
 namespace dtwin::diag {
+
+/// The fit percentage of system identification (MATLAB's `compare`): 100 (1 − ‖y − ŷ‖ / ‖y − mean
+/// y‖), from the sum of squared errors `sse` and the values' count, sum and sum of squares; 0 when
+/// the values do not vary.
+inline double fitPercent(double sse, double n, double sum, double sum_sq) {
+  const double spread = sum_sq - sum * sum / n;  // ‖y − mean y‖²
+  return spread > 0 ? 100.0 * (1.0 - std::sqrt(sse / spread)) : 0.0;
+}
 
 /// A one-sided spectrum: value[k] at freq_hz[k], freq_hz[k] = k·Δf, k = 0..M (see welchPsd).
 struct Spectrum {

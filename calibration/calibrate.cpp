@@ -13,6 +13,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "calibration/correlated.hpp"
 #include "calibration/design_journal.hpp"
 #include "calibration/lhs.hpp"
 #include "calibration/subspace_lm.hpp"
@@ -206,6 +207,7 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
                            formatExact(set.scenario.duration_s) + " s)");
     y_.push_back(r.value);
     t_.push_back(r.time_s);
+    rep_.push_back(r.repetition);
     where_.push_back({col, false, 0});
     t_max = std::max(t_max, r.time_s);
   }
@@ -1064,6 +1066,9 @@ class CalibrationRun {
   void evaluatedPoints(Eigen::MatrixXd& pts, std::vector<double>& f) const;
   void appendStartEnds(Eigen::MatrixXd& pts, std::vector<double>& f) const;
   void warnOtherBasins(const nlohmann::json& basins);
+  /// The residuals' correlation in time at the optimum (correlated.hpp): blocks 0 unless every
+  /// data set is a drive (one repetition, enough sample times).
+  CorrelationAdjustment timeCorrelation();
   void writePosterior() const;
 
   const Study& study_;
@@ -1602,6 +1607,39 @@ void CalibrationRun::warnOtherBasins(const nlohmann::json& basins) {
                           where + "): the 95 % profile intervals span it and the optimum's basin; the posterior and the design see only the optimum's");
 }
 
+CorrelationAdjustment CalibrationRun::timeCorrelation() {
+  const LabObjective& objective = *objective_;
+  const std::vector<int> blocks = timeBlocks(objective.times(), objective.dataSetOf(), objective.repetitions());
+  if (blocks.empty() || blocks.front() < 0) return {};
+  // The weighted residuals' Jacobian at the optimum: forward differences in scaled units, each
+  // step towards the inside of the bounds (κ does not depend on the parameters' scales).
+  const std::vector<double>& theta = res_.optimum.theta;
+  const double h = objective.stepsFrozen() ? kPolishStepFrozen : kPolishStep;
+  const auto runs = distributedMap(
+      d_ + 1, options_.threads,
+      [&](std::size_t k, int) {
+        std::vector<double> th = theta;
+        if (k > 0) {
+          const std::size_t j = k - 1;
+          const double step = h * (objective.upper()[j] - objective.lower()[j]);
+          th[j] += th[j] + step <= objective.upper()[j] ? step : -step;
+        }
+        return objective.residuals(th);
+      },
+      [&](std::size_t done, std::size_t total) { report("profile: residual correlation", done, total); });
+  const auto n = static_cast<Eigen::Index>(runs[0].size());
+  if (n != n_) return {};
+  const Eigen::Map<const Eigen::VectorXd> r0(runs[0].data(), n);
+  Eigen::MatrixXd J(n, static_cast<Eigen::Index>(d_));
+  for (std::size_t j = 0; j < d_; ++j) {
+    if (static_cast<Eigen::Index>(runs[j + 1].size()) != n) return {};
+    const double signed_h = theta[j] + h * (objective.upper()[j] - objective.lower()[j]) <= objective.upper()[j] ? h : -h;
+    J.col(static_cast<Eigen::Index>(j)) = (Eigen::Map<const Eigen::VectorXd>(runs[j + 1].data(), n) - r0) / signed_h;
+  }
+  const double s2 = res_.optimum.sse / static_cast<double>(n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : n_);
+  return blockAdjustment(J, r0, blocks, s2, options_.profile.level);
+}
+
 /// Stage 4, profile (profile.json): the profile-likelihood intervals, from every evaluated point
 /// (the design, the ridge floor, the optimum), each end pushed out by profile steps.
 void CalibrationRun::profile() {
@@ -1619,12 +1657,12 @@ void CalibrationRun::profile() {
     const Eigen::Index first_end = pts.rows();
     appendStartEnds(pts, f);
     const LabObjective& objective = *objective_;
-    const ProfilePlan plan = planProfile(pts, f, n_, objective.lower(), objective.upper(), options_.profile);
+    const ProfilePlan plan = planProfile(pts, f, n_, objective.lower(), objective.upper(), options_.profile, timeCorrelation());
     // An optimiser start that ended in another basin the data cannot reject (inside the threshold,
     // a parameter more than a tenth of its range from the optimum): the intervals span both.
     basins = nlohmann::json::array();
     for (Eigen::Index q = first_end; q < pts.rows(); ++q) {
-      if (!(f[static_cast<std::size_t>(q)] <= plan.threshold)) continue;
+      if (!(f[static_cast<std::size_t>(q)] <= *std::max_element(plan.thresholds.begin(), plan.thresholds.end()))) continue;
       bool far = false;
       for (std::size_t k = 0; k < d_; ++k)
         far = far || std::abs(pts(q, static_cast<long>(k)) - res_.optimum.theta[k]) > 0.1 * (objective.upper()[k] - objective.lower()[k]);

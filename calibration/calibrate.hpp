@@ -121,6 +121,9 @@ class LabObjective {
   const std::vector<double>& measured() const { return y_; }
   const std::vector<double>& weights() const { return w_; }
   const std::vector<int>& dataSetOf() const { return set_of_; }
+  /// Per record, in the same order: its time [s] and its repetition.
+  const std::vector<double>& times() const { return t_; }
+  const std::vector<long>& repetitions() const { return rep_; }
 
   /// SSE(θ); +inf when a simulation fails (counted in failures()).
   double sse(const std::vector<double>& theta) const;
@@ -183,6 +186,7 @@ class LabObjective {
   };
   std::vector<RecordRead> where_;  ///< per record
   std::vector<double> t_;          ///< per record: its time [s]
+  std::vector<long> rep_;          ///< per record: its repetition
   /// The setup's sensor models: the channel columns each distorts and its parameter's index in θ.
   struct SensorModelUse {
     std::string kind;

@@ -92,7 +92,7 @@ nlohmann::json ProfileOptions::toJson() const {
 }
 
 ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>& sse, int n_data, const std::vector<double>& lower,
-                        const std::vector<double>& upper, const ProfileOptions& options) {
+                        const std::vector<double>& upper, const ProfileOptions& options, const CorrelationAdjustment& correlation) {
   options.validate();
   DTWIN_CHECK(static_cast<std::size_t>(points.rows()) == sse.size(), "planProfile needs one SSE per point");
   const int d = static_cast<int>(points.cols());
@@ -111,17 +111,25 @@ ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>
   const double t = studentQuantile(0.5 + 0.5 * options.level, p.dof);
   p.c = t * t;
   p.threshold = p.sse_best + p.c * p.s2;
+  p.thresholds.assign(static_cast<std::size_t>(d), p.threshold);
+  if (correlation.blocks > 0) {
+    DTWIN_CHECK(static_cast<int>(correlation.kappa.size()) == d, "planProfile: one kappa per parameter");
+    p.correlation = correlation;
+    for (int j = 0; j < d; ++j)
+      p.thresholds[static_cast<std::size_t>(j)] = p.sse_best + correlation.quantile * p.s2 * correlation.kappa[static_cast<std::size_t>(j)];
+  }
   p.low_point.assign(static_cast<std::size_t>(d), {});
   p.high_point.assign(static_cast<std::size_t>(d), {});
   p.low_sse.assign(static_cast<std::size_t>(d), 0.0);
   p.high_sse.assign(static_cast<std::size_t>(d), 0.0);
   for (Eigen::Index k = 0; k < points.rows(); ++k) {
     const double s = sse[static_cast<std::size_t>(k)];
-    if (!(std::isfinite(s) && s <= p.threshold)) continue;
+    if (!std::isfinite(s)) continue;
     std::vector<double> th(static_cast<std::size_t>(d));
     for (int j = 0; j < d; ++j) th[static_cast<std::size_t>(j)] = points(k, j);
     for (int j = 0; j < d; ++j) {
       const auto jj = static_cast<std::size_t>(j);
+      if (!(s <= p.thresholds[jj])) continue;
       if (p.low_point[jj].empty() || th[jj] < p.low_point[jj][jj]) {
         p.low_point[jj] = th;
         p.low_sse[jj] = s;
@@ -191,13 +199,13 @@ std::vector<Eigen::VectorXd> restartsNear(const ProfilePlan& plan, int j, double
 /// with a fresh Jacobian (a curved valley, or a stale Jacobian), then the restarts `starts()`
 /// (another basin), the lowest fit counting. False when no simulation of it succeeded.
 bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B, const Eigen::VectorXd& h,
-                  const ProfilePlan& plan, const ProfileOptions& options, SubspaceJacobian& jac, Eigen::VectorXd& u, double& f,
+                  const ProfilePlan& plan, double threshold, const ProfileOptions& options, SubspaceJacobian& jac, Eigen::VectorXd& u, double& f,
                   const std::function<std::vector<Eigen::VectorXd>()>& starts) {
   Eigen::VectorXd r;
   SubspaceLmSettings lm;
   lm.forward = options.forward_differences;
   bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, u, r, f, &jac, lm);
-  if (ok && f > plan.threshold && options.polish_iterations > 0) {
+  if (ok && f > threshold && options.polish_iterations > 0) {
     Eigen::VectorXd up = u, rp;
     double fp = 0.0;
     jac.clear();
@@ -206,7 +214,7 @@ bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const E
       u = up;
     }
   }
-  if (ok && f <= plan.threshold) return true;
+  if (ok && f <= threshold) return true;
   for (const Eigen::VectorXd& start : starts()) {
     Eigen::VectorXd ur = start, rr;
     double fr = 0.0;
@@ -215,7 +223,7 @@ bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const E
       f = fr;
       u = ur;
     }
-    if (ok && f <= plan.threshold) break;
+    if (ok && f <= threshold) break;
   }
   return ok;
 }
@@ -301,7 +309,8 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   // the end is where g = g_T = sqrt(threshold − SSE*). Secant steps on the last two inside points
   // while nothing outside is known (at most 4 times the distance covered, and to the bound), then
   // regula falsi in the bracket (nextEndTarget); the tolerance is 1 % of the interval's width.
-  const double g_T = std::sqrt(plan.threshold - plan.sse_best);
+  const double threshold = plan.thresholdOf(j);
+  const double g_T = std::sqrt(threshold - plan.sse_best);
   auto gOf = [&](double f) { return std::sqrt(std::max(f - plan.sse_best, 0.0)); };
   // v at the best fit (the evaluated point of lowest SSE; it holds the optimum), where g = 0: the
   // other end of the secant to start with.
@@ -329,10 +338,10 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     z0(j) = target;
     Eigen::VectorXd un = u;
     double f = 0.0;
-    const bool ok = profilePoint(res, z0, B, h, plan, options, jac, un, f, [&] {
+    const bool ok = profilePoint(res, z0, B, h, plan, threshold, options, jac, un, f, [&] {
       return restartsNear(plan, j, target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un, options.restarts);
     });
-    if (ok && f <= plan.threshold) {
+    if (ok && f <= threshold) {
       // The secant's other point: the last profile point, or, after the first, the best fit (g =
       // 0), not the evaluated point the end started from, whose SSE is above the profile's there
       // and would flatten the secant into overshooting.
@@ -371,6 +380,8 @@ ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<Profi
   out.s2 = plan.s2;
   out.sse_best = plan.sse_best;
   out.threshold = plan.threshold;
+  out.thresholds = plan.thresholds;
+  out.correlation = plan.correlation;
   out.dof = plan.dof;
   for (int j = 0; j < d; ++j) {
     const auto jj = static_cast<std::size_t>(j);
@@ -399,7 +410,8 @@ nlohmann::json ProfileIntervals::toJson() const {
           {"lower_at_bound", lower_at_bound}, {"upper_at_bound", upper_at_bound},
           {"evaluations", evaluations}, {"end_evaluations", end_evaluations},
           {"end_points", end_steps},    {"end_jacobians", end_jacobians},
-          {"end_outside_points", end_outside}};
+          {"end_outside_points", end_outside},
+          {"thresholds", thresholds},   {"correlation", correlation.toJson()}};
 }
 
 ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
@@ -410,6 +422,8 @@ ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
   p.dof = j.at("dof").get<int>();
   p.sse_best = j.at("sse_best").get<double>();
   p.threshold = j.at("threshold").get<double>();
+  p.thresholds = j.value("thresholds", std::vector<double>{});
+  if (j.contains("correlation")) p.correlation = CorrelationAdjustment::fromJson(j.at("correlation"));
   p.lower = j.at("lower").get<std::vector<double>>();
   p.upper = j.at("upper").get<std::vector<double>>();
   p.lower_at_bound = j.at("lower_at_bound").get<std::vector<bool>>();

@@ -45,6 +45,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "calibration/correlated.hpp"
 #include "calibration/region.hpp"
 
 namespace dtwin::calib {
@@ -72,6 +73,11 @@ struct ProfilePlan {
   std::vector<double> lower, upper;        ///< the calibration bounds (physical)
   int n_data = 0, dof = 0;                 ///< n and n − d (n when n <= d)
   double sse_best = 0.0, s2 = 0.0, c = 0.0, threshold = 0.0;
+  /// Per parameter: threshold, or SSE* + t²_{B−1} s² κ_j when the residuals are correlated in
+  /// time (correlated.hpp).
+  std::vector<double> thresholds;
+  CorrelationAdjustment correlation;
+  double thresholdOf(int j) const { return thresholds[static_cast<std::size_t>(j)]; }
   std::vector<std::vector<double>> low_point, high_point;  ///< θ at each parameter's ends
   std::vector<double> low_sse, high_sse;
   Eigen::MatrixXd points;                  ///< every evaluated point (physical), for restarts
@@ -79,8 +85,10 @@ struct ProfilePlan {
 };
 
 /// `points` N x d (physical), `sse` N (+inf: failed). Throws InputError when no SSE is finite.
+/// `correlation` (blockAdjustment; empty: independent residuals) sets each parameter's threshold.
 ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>& sse, int n_data,
-                        const std::vector<double>& lower, const std::vector<double>& upper, const ProfileOptions& options);
+                        const std::vector<double>& lower, const std::vector<double>& upper, const ProfileOptions& options,
+                        const CorrelationAdjustment& correlation = {});
 
 struct ProfileEnd {
   std::vector<double> theta;   ///< the end (physical), inside the threshold
@@ -99,6 +107,8 @@ struct ProfileIntervals {
   std::vector<double> lower, upper;
   std::vector<bool> lower_at_bound, upper_at_bound;
   double level = 0.95, c = 0.0, s2 = 0.0, sse_best = 0.0, threshold = 0.0;
+  std::vector<double> thresholds;     ///< per parameter (ProfilePlan::thresholds)
+  CorrelationAdjustment correlation;  ///< blocks 0: the residuals taken as independent
   int dof = 0, evaluations = 0;
   /// Per end, in index order (parameter j's lower end at 2j): simulations, profile points that
   /// moved the end, finite-difference Jacobians. Empty when read from an older profile.json.

@@ -819,7 +819,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
                        const std::string& base_study, const std::string& scenario, const StageProgress& progress) {
   ImportResult res;
   res.scenario = scenario;
-  const Study base = loadStudy(base_study);
+  const Study base = loadStudy(base_study, /*scenarios_required=*/false);  // the drive is its scenario
   const std::vector<Channel> known = checkTarget(base, m, base_study, scenario);
   ImportMapping added = m;  // the study gains the mapping's new sensors only
   added.sensors = newSensors(base, m, base_study);

@@ -265,7 +265,7 @@ void readSpeedTrace(TableReader& rs, const std::string& csv, ScenarioSpec& sc) {
 }
 
 /// [scenarios.NAME]: duration, speed profile and road (one of the registered road types), in the file's order.
-void readScenarios(TableReader& top, Study& s) {
+void readScenarios(TableReader& top, Study& s, bool required) {
   const std::string& path = top.file();
   if (auto* t = top.table("scenarios")) {
     std::vector<std::pair<int, std::string>> keys;
@@ -301,7 +301,7 @@ void readScenarios(TableReader& top, Study& s) {
       s.scenarios.push_back(sc);
     }
   }
-  if (s.scenarios.empty()) throw InputError(path, "no [scenarios.*] defined");
+  if (s.scenarios.empty() && required) throw InputError(path, "no [scenarios.*] defined");
 }
 
 /// [simulation]: integrator options (SimulationOptions::validate, errors at the study file's line).
@@ -589,7 +589,7 @@ std::vector<UserEffectSpec> loadUserEffects(const std::string& path) {
 
 /// The study file, table by table (each reader checks its own fields and reports unknown ones),
 /// then the cross-checks that need the whole study.
-Study loadStudy(const std::string& path) {
+Study loadStudy(const std::string& path, bool scenarios_required) {
   const toml::table root = parseTomlFile(path, "study file");
   Study s;
   s.path = path;
@@ -606,7 +606,7 @@ Study loadStudy(const std::string& path) {
     s.catalog = std::move(catalog);
   }
   readEffects(top, s);
-  readScenarios(top, s);
+  readScenarios(top, s, scenarios_required);
   readSimulation(top, s);
   readNoise(top, s);
   readSensors(top, s);

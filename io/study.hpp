@@ -124,8 +124,9 @@ std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<Sen
 std::vector<UserEffectSpec> loadUserEffects(const std::string& path);
 
 /// Parses and validates a study file. Every error is an InputError naming the file, the line and
-/// the field, and the rule broken.
-Study loadStudy(const std::string& path);
+/// the field, and the rule broken. A study needs at least one scenario, except a base for
+/// `twin import` (`scenarios_required` false), to which the import adds the drive's.
+Study loadStudy(const std::string& path, bool scenarios_required = true);
 
 /// Parses "name=value" (CLI --set). `where` prefixes errors.
 ParameterSetting parseSetting(const std::string& text, const std::string& where);

@@ -1,5 +1,7 @@
 #include "study/calibrate.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "common/errors.hpp"
@@ -7,6 +9,7 @@
 #include "common/format.hpp"
 #include "common/hash.hpp"
 #include "common/validate.hpp"
+#include "diagnosis/measurements.hpp"
 #include "io/measurement.hpp"
 #include "io/provenance.hpp"
 #include "twin/distributed.hpp"
@@ -40,6 +43,21 @@ std::string calibrationPlan(const CalibrateRequest& request, std::size_t targets
 
 }  // namespace
 
+std::map<std::string, double> channelWeights(const Study& study, const calib::DataSet& set) {
+  const auto channels = set.data.channels();
+  const auto force = [](const std::string& c) { return c.size() > 2 && c.compare(c.size() - 2, 2, "_N") == 0; };
+  if (channels.size() < 2 || std::all_of(channels.begin(), channels.end(), force)) return {};
+  std::vector<std::string> left;
+  const auto noise = diag::estimateChannelNoise(study, {set}, &left);
+  if (!left.empty())
+    throw InputError(set.name, "channel " + left.front() +
+                                   ": the data hold several channels, fitted together only when each has a noise to weigh it by "
+                                   "(give its sensor a noise_sd, or repeat the measurement)");
+  std::map<std::string, double> weights;
+  for (const auto& [c, n] : noise) weights[c] = 1.0 / n.variance;
+  return weights;
+}
+
 std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request) {
   if (request.assemblies.empty()) return study.assemblies();
   std::vector<AssemblySpec> out;
@@ -50,10 +68,13 @@ std::vector<AssemblySpec> calibrationTargets(const Study& study, const Calibrate
 std::string CalibrateRun::text() const {
   const calib::CalibrationResult& r = result;
   const AssemblySpec& a = assembly;
+  const double noise_var = r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0;
+  const std::string noise = weights.empty() ? formatPrintf("noise var %.0f N^2", noise_var)
+                                            : formatPrintf("weighted by 1/noise_sd^2: the noise %.3g times the stated", std::sqrt(noise_var));
   std::string s = formatPrintf(
-      "%-4s %-26s SSE_min %.4g  tau %.3g (noise var %.0f N^2)  design %ld points in %zu round%s (importance ESS %.0f)  "
+      "%-4s %-26s SSE_min %.4g  tau %.3g (%s)  design %ld points in %zu round%s (importance ESS %.0f)  "
       "distinct points %d  top share %.2f  failures %ld  %.1f s\n",
-      a.id.c_str(), a.label().c_str(), r.optimum.sse, r.posterior.tau.mean, r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0,
+      a.id.c_str(), a.label().c_str(), r.optimum.sse, r.posterior.tau.mean, noise.c_str(),
       static_cast<long>(r.design.rows()), r.rounds.rounds.size(), r.rounds.rounds.size() == 1 ? "" : "s", r.rounds.ess,
       r.posterior.distinct_points, r.posterior.top_share, r.design_failures, r.stage_wall_s.back().second);
   const bool profile_first = r.interval == "profile";
@@ -68,6 +89,12 @@ std::string CalibrateRun::text() const {
     else
       s += formatPrintf("       %-22s mean %-11.5g sd %-10.4g 95%% [%.5g, %.5g]%s\n", r.names[k].c_str(), p.mean, p.sd, p.q025, p.q975,
                         truth.c_str());
+  }
+  if (const auto& c = r.profile.correlation; c.blocks > 0 && !c.kappa.empty()) {
+    const auto [lo, hi] = std::minmax_element(c.kappa.begin(), c.kappa.end());
+    s += formatPrintf("       note: one drive's residuals run in stretches (correlated in time): each profile interval's threshold is scaled by "
+                      "its kappa (from %d blocks of consecutive samples; %.2g to %.2g) and taken from t with %d dof (docs/calibration.md)\n",
+                      c.blocks, *lo, *hi, c.blocks - 1);
   }
   if (r.posterior.design_too_coarse) s += "       note: " + r.posterior.message + "\n";
   for (const auto& w : r.rounds.warnings) s += "       note: " + w + "\n";
@@ -89,6 +116,9 @@ void calibrateAssemblies(const Study& study, const CalibrateRequest& request, co
   const auto targets = calibrationTargets(study, request);
   const LabData data = readLabCsv(request.data, measurableChannels(study.sensors));
   const std::string data_hash = std::to_string(fnv1a64(readTextFile(request.data)));
+  const calib::DataSet set{request.data, request.scenario, data, std::nullopt};
+  calib::CalibrationSetup setup;
+  setup.channel_weights = channelWeights(study, set);
   if (say) say(calibrationPlan(request, targets.size(), data));
   nlohmann::json index;
   index["program"] = programInfo();
@@ -100,7 +130,10 @@ void calibrateAssemblies(const Study& study, const CalibrateRequest& request, co
     CalibrateRun run;
     run.assembly = a;
     const std::string dir = (fs::path(request.out) / a.id).string();
-    run.result = calibrateAssembly(study, a, data, request.scenario, opt, dir, data_hash, progress_of ? progress_of(a) : StageProgress{});
+    run.weights = setup.channel_weights;
+    const StageProgress progress = progress_of ? progress_of(a) : StageProgress{};
+    run.result = setup.empty() ? calibrateAssembly(study, a, data, request.scenario, opt, dir, data_hash, progress)
+                               : calibrateAssembly(study, a, {set}, setup, opt, dir, data_hash, progress);
     index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
     if (on_done) on_done(run);
   }

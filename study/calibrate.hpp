@@ -4,6 +4,7 @@
 // indexing them with how they were made. The CLI parses its flags into the request, checks the
 // work, calls, and prints.
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,10 +29,22 @@ struct CalibrateRequest {
 struct CalibrateRun {
   AssemblySpec assembly;
   calib::CalibrationResult result;
+  /// The SSE weight 1/σ_c² of each channel when the data hold several (channelWeights); empty
+  /// with one channel, whose noise the sampler's τ estimates.
+  std::map<std::string, double> weights;
   /// The lines `twin calibrate` prints: SSE, noise, design, then each parameter's mean, sd and
   /// both 95 % intervals (the chosen one first), the truth when known, and the notes.
   std::string text() const;
 };
+
+/// The SSE weights of a calibration against `set`. One channel, or forces only: none (the SSE in
+/// newtons; the Gibbs sampler's τ estimates their one noise, docs/method.md). Other channels, which may
+/// be in different units (an accelerometer and a string pot): 1/σ_c², σ_c from the data's
+/// repetitions, else the sensor's noise_sd, else the study's [noise] for forces, so that the SSE
+/// is a χ² and τ ≈ 1 when the stated noises are right. A channel with none of these is an
+/// InputError naming it: fitted unweighted, a channel in metres would weigh nothing beside one in
+/// m/s², and one in N would swamp both.
+std::map<std::string, double> channelWeights(const Study& study, const calib::DataSet& set);
 
 /// The targets of `request` (every assembly when none is named).
 std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request);

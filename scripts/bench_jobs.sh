@@ -11,6 +11,9 @@
 # Rows: readme (the README's diagnose walkthrough), drive_calibrate (`twin calibrate` of M1 on the
 # demonstration drive), drive_vehicle (the same with the chassis mass and pitch inertia and the
 # seat accelerometer's x position calibrated too: issue 32), drive_diagnose (the drive's diagnose walkthrough of docs/measurements.md),
+# unknown_car (docs/measurements.md, "A car nobody measured": two imports, then the timed
+# twelve-value calibration on drive A, then the comparison on drive B with the FIR baseline;
+# figures in its logs),
 # demo_study (scripts/demo.sh's study), run (one 15 s run per assembly: `twin bench`), paper.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,8 +24,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | demo_study | run | paper) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose demo_study run paper)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | demo_study | run | paper) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car demo_study run paper)" >&2; exit 2 ;;
   esac
 done
 
@@ -85,6 +88,18 @@ for r in "${rows[@]}"; do
       timed drive_diagnose "$D/drive_diagnose.log" "$B" diagnose --study "$D/drive/study.toml" --assembly M1 \
         --data "$D/drive/measurements.csv" --out "$D/drive_diagnose" --lhs-points 60 --iterations 4000 --burn-in 1000 \
         --starts 2 --candidates 1 --apply damper_asymmetry
+      ;;
+    unknown_car)
+      U="$D/unknown_car" && rm -rf "$U" && mkdir -p "$U"
+      "$B" import data/drives/unknown_car_a.csv --map data/drives/unknown_car_map.toml --study data/drives/unknown_car_study.toml \
+        --out "$U/A" --scenario drive_a >"$U/import_a.log"
+      "$B" import data/drives/unknown_car_b.csv --map data/drives/unknown_car_map.toml --study "$U/A/study.toml" \
+        --out "$U/B" --scenario drive_b >"$U/import_b.log"
+      # The log holds the progress lines, each stage's time and the printed intervals.
+      timed unknown_car "$U/calibrate.log" "$B" calibrate --study "$U/B/study.toml" --scenario drive_a \
+        --data "$U/A/measurements.csv" --out "$U/cal"
+      "$B" compare --study "$U/B/study.toml" --calibration "$U/cal/M1" --data "$U/B/measurements.csv@drive_b" \
+        --baseline "$U/A/measurements.csv@drive_a" --out "$U/compare_b" >"$U/compare_b.txt"
       ;;
     demo_study)
       rm -rf "$D/demo_study"

@@ -9,8 +9,9 @@
 // follows F(1, n − d) when v is the truth (exactly for a linear model, asymptotically otherwise).
 // The 95 % profile interval is
 //     { v : SSE_p(v) <= SSE* + c s² },   c = F_{1, n−d}(0.95) = t²_{n−d, 0.975}.
-// It does not depend on the prior. Where the data leave a long valley of nearly equal fits that
-// ends at a bound, the posterior spreads its mass along the valley in proportion to parameter
+// For a logged drive, whose residuals are correlated in time, parameter j's threshold is
+// SSE* + t²_{B−1} s² κ_j instead (correlated.hpp). The interval does not depend on the prior.
+// Where the data leave a long valley of nearly equal fits that ends at a bound, the posterior spreads its mass along the valley in proportion to parameter
 // volume, and its central interval can exclude a truth at the valley's steep end (the demo's
 // solid-axle assembly, seeds 1001–1008); the profile interval holds every value the data do not
 // reject.

@@ -128,10 +128,28 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
     ParameterSpec p = table.at(value).spec;
     const double v = table.value(value);
     p.default_value = v;
-    // The search range: ±50 % about the file's value, inside the value's valid set.
+    // The search range: ±50 % about the file's value (a sensor's position ±0.5 m, its offset ±20
+    // noise sd; the CG's shift ±10 % of the wheelbase), inside the value's valid set.
     std::string range = "±50 %", why_lower = "its smallest valid value", why_upper = "its largest valid value";
     double lo = 0.5 * v, hi = 1.5 * v, valid_lo = p.min_value, valid_hi = p.max_value;
-    if (value == kCgShift) {  // a shift from the file's CG (0): ±10 % of the wheelbase, the CG between the axles
+    if (value.rfind("sensors.", 0) == 0) {  // where a sensor sits, or its offset: absolute ranges (0 is a fine value)
+      const std::string sensor = value.substr(8, value.rfind('.') - 8);
+      if (value.size() > 7 && value.compare(value.size() - 7, 7, ".offset") == 0) {
+        double sd = 0.0;
+        for (const auto& x : study.sensors)
+          if (x.name == sensor) sd = x.noise_sd;
+        if (!(sd > 0))
+          throw InputError(where, "'" + value + "': its search range is ±20 noise sd about " + num("%.4g", v) +
+                                      ", and sensor '" + sensor + "' has no noise_sd (give it one in [sensors." + sensor + "])");
+        range = "±20 noise sd";
+        lo = v - 20 * sd;
+        hi = v + 20 * sd;
+      } else {
+        range = "±0.5 m";
+        lo = v - 0.5;
+        hi = v + 0.5;
+      }
+    } else if (value == kCgShift) {  // a shift from the file's CG (0): ±10 % of the wheelbase, the CG between the axles
       const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
       range = "±10 % of the wheelbase";
       lo = v - 0.1 * (a + b);

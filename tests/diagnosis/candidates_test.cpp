@@ -119,6 +119,34 @@ TEST(Candidates, ARangeThatWouldLeaveTheValidSetIsClippedAndSaysSo) {
   EXPECT_TRUE(candidateSpec("free:wheel.mass_kg", s, s.assemblies().front(), kHub, "t").range_note.empty());
 }
 
+// A sensor's position and offset may well be 0, where ±50 % is no range: ±0.5 m about the
+// position, ±20 noise sd about the offset (refused, in one line, without a noise_sd).
+TEST(Candidates, ASensorsPositionAndOffsetGetAbsoluteRanges) {
+  const Study s = loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("cands_sensor") / "study.toml",
+                                                       "\n[sensors.seat]\nquantity = \"acceleration_z\"\nposition_m = [0.9, 0.0, 0.3]\n"
+                                                       "noise_sd = 0.03\n[sensors.bare]\nquantity = \"acceleration_z\"\n")
+                            .string());
+  const AssemblySpec a = s.assemblies().front();
+  const std::vector<std::string> ch{"seat_mps2", "bare_mps2"};
+  const auto y = candidateSpec("free:sensors.seat.y_m", s, a, ch, "t");
+  ASSERT_EQ(y.parameters.size(), 1u);
+  EXPECT_DOUBLE_EQ(y.parameters[0].prior_lower, -0.5);
+  EXPECT_DOUBLE_EQ(y.parameters[0].prior_upper, 0.5);
+  const auto x = candidateSpec("free:sensors.seat.x_m", s, a, ch, "t");
+  EXPECT_DOUBLE_EQ(x.parameters[0].prior_lower, 0.4);
+  const auto off = candidateSpec("free:sensors.seat.offset", s, a, ch, "t");
+  EXPECT_DOUBLE_EQ(off.parameters[0].prior_lower, -0.6);
+  EXPECT_DOUBLE_EQ(off.parameters[0].prior_upper, 0.6);
+  try {
+    (void)candidateSpec("free:sensors.bare.offset", s, a, ch, "--effects");
+    FAIL() << "an offset without a noise_sd got a range";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("noise_sd"), std::string::npos) << m;
+    EXPECT_NE(m.find("--effects"), std::string::npos) << m;
+  }
+}
+
 TEST(Candidates, ASensorModelInTheObjectiveIsTheChannelThroughDistortChannel) {
   const Study s = demo();
   LabData data;

@@ -107,6 +107,8 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
   c.name = name;
   if (name.rfind(kFree, 0) == 0) {
     const std::string value = name.substr(std::string(kFree).size());
+    for (const auto& cp : study.calibrated)
+      if (cp.name == value) throw InputError(where, "'" + value + "' is calibrated already: only a fixed value can be freed");
     auto freeable = freeableOf(assembly);
     if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
       // A fixed value of the assembly's laws (the tire radius, a strut-law constant): a run
@@ -118,8 +120,6 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
         if (!calibrated && n.find("preload") == std::string::npos) freeable.push_back(n);
       }
       if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
-        for (const auto& cp : study.calibrated)
-          if (cp.name == value) throw InputError(where, "'" + value + "' is calibrated already: only a fixed value can be freed");
         throw InputError(where, unknownNameRule("fixed value that can be freed in assembly " + assembly.id, value, freeable));
       }
       c.law_value = true;

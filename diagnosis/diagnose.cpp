@@ -404,7 +404,13 @@ std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& ass
   const auto installed = refuseInstalled(study, assembly, options);
   std::vector<std::string> catalogue =
       options.effects.empty() ? defaultCandidates(study.effectCatalog(), assembly, channels) : options.effects;
-  catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const std::string& e) { return installed.count(e) > 0; }),
+  // The default catalogue leaves out what the model has already: an installed effect, a value the
+  // study calibrates (a named one is refused by candidateSpec).
+  const auto calibrated = [&](const std::string& e) {
+    return options.effects.empty() && std::any_of(study.calibrated.begin(), study.calibrated.end(),
+                                                   [&](const CalibratedParameter& c) { return e == "free:" + c.name; });
+  };
+  catalogue.erase(std::remove_if(catalogue.begin(), catalogue.end(), [&](const std::string& e) { return installed.count(e) > 0 || calibrated(e); }),
                   catalogue.end());
   for (const char* field : {"effects", "apply"})
     for (const auto& e : std::string(field) == "effects" ? catalogue : options.apply)

@@ -147,6 +147,20 @@ TEST(Candidates, ASensorsPositionAndOffsetGetAbsoluteRanges) {
   }
 }
 
+// A vehicle value the study calibrates already cannot be freed again (the diagnosis's default
+// catalogue leaves it out; named, it is a one-line error).
+TEST(Candidates, AVehicleValueTheStudyCalibratesIsNoCandidate) {
+  const Study s = loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("cands_calibrated") / "study.toml",
+                                                       "\n[[calibrated]]\nname = \"chassis.mass_kg\"\nlower = 1100\nupper = 1700\n")
+                            .string());
+  try {
+    (void)candidateSpec("free:chassis.mass_kg", s, s.assemblies().front(), kHub, "--effects");
+    FAIL() << "a calibrated value was freed again";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("calibrated already"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Candidates, ASensorModelInTheObjectiveIsTheChannelThroughDistortChannel) {
   const Study s = demo();
   LabData data;

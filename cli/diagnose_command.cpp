@@ -9,7 +9,10 @@
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/files.hpp"
+#include "report/compare_page.hpp"
 #include "report/diagnosis_report.hpp"
+#include "twin/distributed.hpp"
 #include "study/diagnose.hpp"
 
 namespace fs = std::filesystem;
@@ -41,7 +44,16 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   };
   const CompareRun run = compareMeasurements(study, req, say);
   if (!cfg.quiet) std::printf("%s", run.text().c_str());
-  if (!run.written.empty()) say("wrote " + run.written);
+  if (!run.written.empty()) {
+    say("wrote " + run.written);
+    // The interactive page beside compare.json, titled without absolute paths.
+    std::string title = "twin compare: " + study.name + ", " + run.assembly.id + " (" + run.assembly.label() + ") against";
+    for (const auto& d : cfg.data) title += " " + std::filesystem::path(d).filename().string();
+    const std::string page = (std::filesystem::path(run.written).parent_path() / "compare.html").string();
+    const std::string html = comparePage(nlohmann::json::parse(readTextFile(run.written)), title);
+    rootWrites([&] { writeFileAtomic(page, html); });
+    say("wrote " + page + " (zoom into the drive, the failing windows listed beside it)");
+  }
   return 0;
 }
 

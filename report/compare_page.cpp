@@ -1,0 +1,284 @@
+#include "report/compare_page.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "common/errors.hpp"
+#include "dtwin/uplot_assets.hpp"
+
+namespace dtwin {
+
+namespace {
+
+/// What the page draws of one series of compare.json.
+nlohmann::json slimSeries(const nlohmann::json& s) {
+  nlohmann::json c{{"channel", s.at("channel")},
+                   {"unit", s.value("unit", "")},
+                   {"fit", s.value("fit_percent", nlohmann::json())},
+                   {"baseline_fit", s.value("baseline_fit_percent", nlohmann::json())},
+                   {"rms", s.value("rms", nlohmann::json())},
+                   {"coverage", s.value("coverage95", nlohmann::json())},
+                   {"noise_sd", s.contains("noise_variance") && s.at("noise_variance").is_number()
+                                    ? nlohmann::json(std::sqrt(s.at("noise_variance").get<double>()))
+                                    : nlohmann::json()},
+                   {"t", s.at("t")},
+                   {"y", s.at("measured_mean")},
+                   {"p", s.at("predicted_mean")},
+                   {"lo", s.at("band_lo")},
+                   {"hi", s.at("band_hi")},
+                   {"windows", nlohmann::json::array()},
+                   {"bands", s.value("bands", nlohmann::json::array())},
+                   {"bands_note", s.value("bands_note", "")}};
+  for (const auto& w : s.value("windows", nlohmann::json::array()))
+    c["windows"].push_back({{"t0", w.at("t_begin_s")}, {"t1", w.at("t_end_s")}, {"z", w.at("peak_z")}, {"share", w.at("share_of_chi2")},
+                            {"label", w.value("label", "")}});
+  return c;
+}
+
+/// The JSON text made safe inside a <script> element.
+std::string scriptSafe(const std::string& json) {
+  std::string out;
+  out.reserve(json.size());
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    if (json[i] == '<' && i + 1 < json.size() && json[i + 1] == '/') {
+      out += "<\\/";
+      ++i;
+    } else {
+      out += json[i];
+    }
+  }
+  return out;
+}
+
+std::string htmlEscape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// The page's script: one group of stacked charts per data set (value and residual per channel),
+// linked zoom, one cursor, min/max decimation per pixel column for display, the failing windows
+// shaded and tabled, the spectrum per band. `#selftest` in the URL writes what a test checks into
+// <pre id="selftest"> (chart count, window rows, errors, whether a zoom moved every chart).
+constexpr const char* kScript = R"js(
+"use strict";
+const errors = [];
+window.addEventListener("error", e => errors.push(String(e.message)));
+const D = JSON.parse(document.getElementById("data").textContent);
+const groups = [];
+const units = { mps2: "m/s²", mps: "m/s", m: "m", N: "N", rad: "rad", radps: "rad/s" };
+const fmt = v => (v == null || !isFinite(v)) ? "–" : Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : (+v.toPrecision(5)).toString();
+function lowerBound(a, x) { let lo = 0, hi = a.length; while (lo < hi) { const m = (lo + hi) >> 1; if (a[m] < x) lo = m + 1; else hi = m; } return lo; }
+// Min and max per pixel column of the samples in [lo, hi], each series on its own, in time order:
+// what is drawn; the numbers (legend, tables) are the full series.
+function decimate(full, lo, hi, width) {
+  const t = full[0];
+  let a = Math.max(0, lowerBound(t, lo) - 1), b = Math.min(t.length, lowerBound(t, hi) + 1);
+  const cols = Math.max(1, Math.floor(width)), n = b - a;
+  if (n <= 2 * cols) return full.map(s => s.slice(a, b));
+  const out = full.map(() => []), per = n / cols;
+  for (let c = 0; c < cols; c++) {
+    const i0 = a + Math.floor(c * per), i1 = Math.min(b, a + Math.floor((c + 1) * per));
+    if (i1 <= i0) continue;
+    out[0].push(t[i0], t[i1 - 1]);
+    for (let k = 1; k < full.length; k++) {
+      const s = full[k];
+      let mn = Infinity, mx = -Infinity, imn = i0, imx = i0;
+      let gap = false;
+      for (let i = i0; i < i1; i++) { const v = s[i]; if (v === null) { gap = true; continue; } if (v < mn) { mn = v; imn = i; } if (v > mx) { mx = v; imx = i; } }
+      if (mn === Infinity) out[k].push(null, null);
+      else if (gap) out[k].push(mn === mx ? mn : null, null);
+      else if (imn <= imx) out[k].push(mn, mx); else out[k].push(mx, mn);
+    }
+  }
+  return out;
+}
+function zoomTo(g, min, max) {
+  if (!(max > min)) return;
+  g.range = [min, max];
+  for (const c of g.charts) {
+    c.u.setData(decimate(c.full, min, max, c.u.bbox.width / devicePixelRatio), false);
+    c.u.setScale("x", { min, max });
+  }
+}
+function shade(windows) {
+  return u => {
+    const ctx = u.ctx, top = u.bbox.top, h = u.bbox.height;
+    ctx.save();
+    ctx.fillStyle = "rgba(220, 50, 47, 0.18)";
+    for (const w of windows) {
+      const x0 = u.valToPos(w.t0, "x", true), x1 = u.valToPos(w.t1, "x", true);
+      if (x1 < u.bbox.left || x0 > u.bbox.left + u.bbox.width) continue;
+      ctx.fillRect(Math.min(x0, x1 - 2), top, Math.max(x1 - x0, 4), h);
+    }
+    ctx.restore();
+  };
+}
+function chart(g, el, title, unit, series, full, windows, height, bands) {
+  const opts = {
+    title, width: Math.max(300, el.clientWidth), height,
+    scales: { x: { time: false } },
+    axes: [{ label: "time [s]" }, { label: unit, size: 70 }],
+    series: [{ label: "t [s]", value: (u, v) => fmt(v) }].concat(series),
+    bands: bands || [],
+    cursor: { sync: { key: g.key }, drag: { x: true, y: false, setScale: false },
+              bind: { dblclick: () => () => { zoomTo(g, g.full[0], g.full[1]); return null; } } },
+    hooks: { draw: [shade(windows)],
+             setSelect: [u => { if (u.select.width > 2) { const a = u.posToVal(u.select.left, "x"), b = u.posToVal(u.select.left + u.select.width, "x");
+                                 u.setSelect({ left: 0, width: 0, top: 0, height: 0 }, false); zoomTo(g, a, b); } }] },
+  };
+  const u = new uPlot(opts, decimate(full, g.full[0], g.full[1], opts.width), el);
+  g.charts.push({ u, full });
+}
+function bandsTable(c) {
+  if (!c.bands.length) return c.bands_note ? "<p class=note>spectrum: " + c.bands_note.replace(/</g, "&lt;") + "</p>" : "";
+  const maxr = Math.max(...c.bands.map(b => b.ratio || 0), 2);
+  let h = "<table class=bands><tr><th>band</th><th>Hz</th><th>residual / noise power</th><th></th></tr>";
+  for (const b of c.bands) {
+    const w = Math.max(1, 100 * Math.log10(1 + (b.ratio || 0)) / Math.log10(1 + maxr));
+    h += "<tr class=" + (b.significant ? "fail" : "ok") + "><td>" + b.band + "</td><td>" + fmt(b.lo_hz) + "–" + fmt(b.hi_hz) +
+         "</td><td><div class=bar style='width:" + w.toFixed(1) + "%'></div></td><td>" + fmt(b.ratio) + (b.significant ? " fails" : "") + "</td></tr>";
+  }
+  return h + "</table>";
+}
+function build() {
+  const root = document.getElementById("sets");
+  D.sets.forEach((set, gi) => {
+    const sec = document.createElement("section");
+    root.appendChild(sec);
+    const h = document.createElement("h2");
+    h.textContent = set.name + " @ " + set.scenario;
+    sec.appendChild(h);
+    const lay = document.createElement("div"); lay.className = "layout"; sec.appendChild(lay);
+    const plots = document.createElement("div"); plots.className = "plots"; lay.appendChild(plots);
+    const side = document.createElement("div"); side.className = "side"; lay.appendChild(side);
+    let tmin = Infinity, tmax = -Infinity;
+    for (const c of set.channels) { if (c.t.length) { tmin = Math.min(tmin, c.t[0]); tmax = Math.max(tmax, c.t[c.t.length - 1]); } }
+    const g = { key: "set" + gi, charts: [], full: [tmin, tmax], range: [tmin, tmax] };
+    groups.push(g);
+    const nav = document.createElement("div"); nav.className = "nav";
+    nav.innerHTML = "<button data-a=left>◀ pan</button><button data-a=out>zoom out</button><button data-a=right>pan ▶</button><button data-a=all>whole drive</button>" +
+                    "<span class=hint>drag across a plot to zoom; double-click for the whole drive</span>";
+    nav.addEventListener("click", e => {
+      const a = e.target.dataset.a; if (!a) return;
+      const [lo, hi] = g.range, w = hi - lo;
+      if (a === "left") zoomTo(g, lo - w / 2, hi - w / 2);
+      if (a === "right") zoomTo(g, lo + w / 2, hi + w / 2);
+      if (a === "out") zoomTo(g, lo - w / 2, hi + w / 2);
+      if (a === "all") zoomTo(g, g.full[0], g.full[1]);
+    });
+    plots.appendChild(nav);
+    for (const c of set.channels) {
+      // A gap (masked rows, a dropout) breaks the lines: a null row where a step exceeds 5 times the median.
+      const steps = c.t.slice(1).map((v, i) => v - c.t[i]).sort((a, b) => a - b), gapAt = 5 * (steps[steps.length >> 1] || Infinity);
+      for (const key of ["t", "y", "p", "lo", "hi"]) c[key + "_g"] = [];
+      for (let i = 0; i < c.t.length; i++) {
+        if (i > 0 && c.t[i] - c.t[i - 1] > gapAt) { c.t_g.push(0.5 * (c.t[i] + c.t[i - 1])); for (const key of ["y", "p", "lo", "hi"]) c[key + "_g"].push(null); }
+        for (const key of ["t", "y", "p", "lo", "hi"]) c[key + "_g"].push(c[key][i]);
+      }
+      const r = c.y_g.map((v, i) => v === null ? null : v - c.p_g[i]);
+      const unit = units[c.unit] || c.unit;
+      const head = document.createElement("p"); head.className = "figs";
+      head.textContent = c.channel + ": fit " + (+c.fit).toFixed(1) + " %" + (c.baseline_fit != null ? " (FIR baseline " + (+c.baseline_fit).toFixed(1) + " %)" : "") +
+                         ", RMS " + fmt(c.rms) + " " + unit + ", 95 % band holds " + (100 * c.coverage).toFixed(1) + " % of the samples";
+      plots.appendChild(head);
+      const e1 = document.createElement("div"); plots.appendChild(e1);
+      chart(g, e1, c.channel, unit,
+            [{ label: "predicted", stroke: "#1f77b4", width: 1.5, value: (u, v) => fmt(v) },
+             { label: "95 % low", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) },
+             { label: "95 % high", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) },
+             { label: "measured", stroke: "#222", width: 1, value: (u, v) => fmt(v) }],
+            [c.t_g, c.p_g, c.lo_g, c.hi_g, c.y_g], c.windows, 240, [{ series: [3, 2], fill: "rgba(31,119,180,0.15)" }]);
+      const e2 = document.createElement("div"); plots.appendChild(e2);
+      chart(g, e2, c.channel + " residual (measured − predicted)", unit,
+            [{ label: "residual", stroke: "#d62728", width: 1, value: (u, v) => fmt(v) }], [c.t_g, r], c.windows, 140);
+      const sp = document.createElement("div"); sp.innerHTML = bandsTable(c); plots.appendChild(sp);
+    }
+    const rows = [];
+    for (const c of set.channels) for (const w of c.windows) rows.push(Object.assign({ channel: c.channel }, w));
+    rows.sort((a, b) => a.t0 - b.t0);
+    const tbl = document.createElement("table"); tbl.className = "windows";
+    tbl.innerHTML = "<caption>failing windows (" + rows.length + "): a row zooms to it</caption><tr><th>channel</th><th>time [s]</th><th>peak |z|</th><th>share</th><th>where</th></tr>";
+    for (const w of rows) {
+      const tr = document.createElement("tr");
+      for (const v of [w.channel, w.t1 > w.t0 ? w.t0.toFixed(3) + "–" + w.t1.toFixed(3) : w.t0.toFixed(3), w.z.toFixed(1), (100 * w.share).toFixed(1) + " %", w.label]) { const td = document.createElement("td"); td.textContent = v; tr.appendChild(td); }
+      tr.addEventListener("click", () => { const pad = Math.max(0.5, 2 * (w.t1 - w.t0)); zoomTo(g, w.t0 - pad, w.t1 + pad); });
+      tbl.appendChild(tr);
+    }
+    side.appendChild(tbl);
+  });
+}
+build();
+const painted = performance.now();
+if (location.hash === "#selftest") {
+  const out = { charts: groups.reduce((n, g) => n + g.charts.length, 0), window_rows: document.querySelectorAll("table.windows tr").length - document.querySelectorAll("table.windows").length,
+                ready_ms: Math.round(painted), zoom_ok: false, errors };
+  if (groups.length && groups[0].charts.length) {
+    const g = groups[0], lo = g.full[0] + 0.45 * (g.full[1] - g.full[0]), hi = g.full[0] + 0.55 * (g.full[1] - g.full[0]);
+    zoomTo(g, lo, hi);
+    // uPlot applies a scale change in a microtask: read the scales after it.
+    queueMicrotask(() => {
+      out.zoom_ok = g.charts.every(c => Math.abs(c.u.scales.x.min - lo) < 1e-9 * (1 + Math.abs(lo)) && Math.abs(c.u.scales.x.max - hi) < 1e-9 * (1 + Math.abs(hi)));
+      out.errors = errors;
+      document.getElementById("selftest").textContent = JSON.stringify(out);
+    });
+  } else {
+    document.getElementById("selftest").textContent = JSON.stringify(out);
+  }
+}
+)js";
+
+constexpr const char* kStyle = R"css(
+body { font-family: sans-serif; margin: 1em 2em; color: #222; }
+h1 { font-size: 1.3em; } h2 { font-size: 1.1em; margin-top: 1.5em; }
+.layout { display: flex; gap: 1.5em; align-items: flex-start; }
+.plots { flex: 3; min-width: 0; } .side { flex: 1.3; position: sticky; top: 0.5em; max-height: 95vh; overflow: auto; }
+.figs { margin: 1em 0 0.2em; font-weight: bold; } .note, .hint { color: #666; font-size: 0.9em; }
+.nav button { margin-right: 0.3em; } .hint { margin-left: 1em; }
+table { border-collapse: collapse; font-size: 0.85em; } td, th { padding: 2px 6px; border-bottom: 1px solid #ddd; text-align: left; }
+table.windows tr:hover { background: #fde2e2; cursor: pointer; } caption { text-align: left; font-weight: bold; padding: 4px 0; }
+table.bands { margin: 0.4em 0 0.8em; width: 60%; } .bar { height: 8px; background: #1f77b4; } tr.fail .bar { background: #d62728; } tr.fail td { color: #b00; }
+)css";
+
+}  // namespace
+
+std::string comparePage(const nlohmann::json& compare, const std::string& title) {
+  nlohmann::json data{{"title", title}, {"sets", nlohmann::json::array()}};
+  std::map<std::string, std::size_t> set_index;
+  for (const auto& s : compare.value("series", nlohmann::json::array())) {
+    if (!s.contains("t")) continue;
+    const std::string key = s.value("data_set", "") + "@" + s.value("scenario", "");
+    if (!set_index.count(key)) {
+      set_index[key] = data["sets"].size();
+      data["sets"].push_back({{"name", std::filesystem::path(s.value("data_set", "")).filename().string()},
+                              {"scenario", s.value("scenario", "")},
+                              {"channels", nlohmann::json::array()}});
+    }
+    data["sets"][set_index[key]]["channels"].push_back(slimSeries(s));
+  }
+  if (data["sets"].empty()) throw InputError("compare page", "the comparison holds no series data to draw");
+  std::string html = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>" + htmlEscape(title) + "</title>\n<style>";
+  html += assets::kUplotCss;
+  html += kStyle;
+  html += "</style></head><body>\n<h1>" + htmlEscape(title) + "</h1>\n";
+  html += "<p class=note>Measured (black), predicted (blue) with its 95 % band, and the residual under each; failing windows shaded "
+          "red. Lines are drawn as the min and max of each pixel column of what is in view; the figures and tables are the "
+          "comparison's own.</p>\n<div id=sets></div>\n<pre id=selftest></pre>\n";
+  html += "<script type=\"application/json\" id=data>" + scriptSafe(data.dump()) + "</script>\n<script>";
+  html += assets::kUplotJs;
+  html += "</script>\n<script>";
+  html += kScript;
+  html += "</script>\n</body></html>\n";
+  return html;
+}
+
+}  // namespace dtwin

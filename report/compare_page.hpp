@@ -1,0 +1,21 @@
+#pragma once
+// The interactive comparison page (`twin compare --out DIR` writes DIR/compare.html): measured,
+// predicted with its 95 % band, and residual of every channel of each data set, stacked, zoomed
+// and panned together in time with one cursor read out across them; the failing windows that the
+// comparison found shaded and listed (a row zooms to its window); the residual's spectrum against
+// the noise per band when the time base allows one. Self-contained: uPlot (report/vendor/uplot)
+// and the data are inlined, nothing is fetched at view time. The lines are decimated for display
+// only (min and max per pixel column of what is in view); the numbers in the page are the
+// comparison's, in full.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dtwin {
+
+/// The page for a comparison's JSON (diag::Comparison::toJson with its series data, as
+/// compare.json holds it). `title` heads the page (e.g. the study's name and the data's file
+/// names; no absolute paths). Throws InputError when the JSON holds no series data.
+std::string comparePage(const nlohmann::json& compare, const std::string& title);
+
+}  // namespace dtwin

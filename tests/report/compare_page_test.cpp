@@ -1,0 +1,125 @@
+// The interactive comparison page (report/compare_page.hpp): what it embeds, and, loaded in
+// headless Chromium, that it draws a value and a residual chart per channel, lists every failing
+// window, raises no script error, and that a zoom through uPlot's API moves every chart of the
+// data set. A 117 000-row drive's page is loaded too and the time its charts are built printed (a figure,
+// not an assertion: timing targets live in benchmarks).
+#include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "report/compare_page.hpp"
+
+namespace fs = std::filesystem;
+using namespace dtwin;
+
+namespace {
+
+fs::path kTmp() { return fs::temp_directory_path() / "dtwin_compare_page_test"; }
+
+/// A comparison's JSON as `twin compare` writes it: two channels of one drive, `rows` samples at
+/// 100 Hz, windows on the first.
+nlohmann::json comparison(int rows, int windows) {
+  nlohmann::json j{{"series", nlohmann::json::array()}};
+  for (const std::string ch : {"seat_mps2", "pot_fl_m"}) {
+    nlohmann::json s{{"data_set", "/abs/path/drive.csv"}, {"scenario", "drive"}, {"channel", ch}, {"unit", ch == "pot_fl_m" ? "m" : "mps2"},
+                     {"fit_percent", 90.0}, {"rms", 0.03}, {"coverage95", 0.95}, {"noise_variance", 9e-4}};
+    std::vector<double> t, y, p, lo, hi;
+    for (int i = 0; i < rows; ++i) {
+      t.push_back(0.01 * i);
+      p.push_back(std::sin(0.05 * i));
+      y.push_back(p.back() + 0.03 * std::sin(1.7 * i));
+      lo.push_back(p.back() - 0.06);
+      hi.push_back(p.back() + 0.06);
+    }
+    s["t"] = t;
+    s["measured_mean"] = y;
+    s["predicted_mean"] = p;
+    s["band_lo"] = lo;
+    s["band_hi"] = hi;
+    s["windows"] = nlohmann::json::array();
+    if (ch == "seat_mps2")
+      for (int w = 0; w < windows; ++w)
+        s["windows"].push_back({{"t_begin_s", 1.0 + w}, {"t_end_s", 1.1 + w}, {"peak_z", 4.5}, {"share_of_chi2", 0.02}, {"label", "braking </script>"}});
+    s["bands"] = {{{"band", 1}, {"lo_hz", 0.5}, {"hi_hz", 1.0}, {"residual_power", 2.0}, {"noise_power", 1.0}, {"ratio", 2.0}, {"significant", true}}};
+    j["series"].push_back(s);
+  }
+  return j;
+}
+
+std::string findOnPath(const std::string& exe) {
+  const char* path = std::getenv("PATH");
+  std::stringstream ss(path ? path : "/usr/bin:/bin");
+  for (std::string dir; std::getline(ss, dir, ':');)
+    if (!dir.empty() && ::access((fs::path(dir) / exe).c_str(), X_OK) == 0) return (fs::path(dir) / exe).string();
+  return "";
+}
+
+/// The page loaded in headless Chromium with #selftest: the JSON the page wrote into
+/// <pre id="selftest">.
+nlohmann::json selftest(const std::string& chromium, const fs::path& html) {
+  const fs::path dom = kTmp() / "dom.html", log = kTmp() / "chromium.log";
+  const std::string cmd = chromium +
+                          " --headless --no-sandbox --disable-gpu --disable-background-networking --window-size=1400,1200"
+                          " --user-data-dir=" + (kTmp() / "profile").string() + " --dump-dom 'file://" + fs::absolute(html).string() +
+                          "#selftest' >" + dom.string() + " 2>" + log.string();
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << dtwin_test::slurp(log);
+  const std::string text = dtwin_test::slurp(dom);
+  const auto a = text.find("<pre id=\"selftest\">"), b = text.find("</pre>", a);
+  if (a == std::string::npos || b == std::string::npos) {
+    ADD_FAILURE() << "no selftest output in the DOM; chromium said: " << dtwin_test::slurp(log);
+    return {};
+  }
+  const std::string body = text.substr(a + 19, b - a - 19);
+  return nlohmann::json::parse(body.empty() ? "{}" : body);
+}
+
+}  // namespace
+
+TEST(ComparePage, EmbedsTheLibraryAndTheDataSafely) {
+  const std::string html = comparePage(comparison(500, 3), "twin compare: demo, M1 against drive.csv");
+  EXPECT_NE(html.find("uPlot"), std::string::npos);
+  EXPECT_EQ(html.find("/abs/path"), std::string::npos) << "no absolute path on the page";
+  // A label holding "</script>" cannot close the data element.
+  const auto a = html.find("id=data>"), b = html.find("</script>", a);
+  ASSERT_NE(a, std::string::npos);
+  const auto data = nlohmann::json::parse(html.substr(a + 8, b - a - 8));
+  ASSERT_EQ(data.at("sets").size(), 1u);
+  EXPECT_EQ(data["sets"][0]["name"], "drive.csv");
+  EXPECT_EQ(data["sets"][0]["channels"].size(), 2u);
+  EXPECT_EQ(data["sets"][0]["channels"][0]["windows"][2]["label"], "braking </script>");
+  EXPECT_EQ(data["sets"][0]["channels"][0]["t"].size(), 500u);
+  EXPECT_THROW(comparePage(nlohmann::json{{"series", nlohmann::json::array()}}, "x"), InputError);
+}
+
+TEST(ComparePage, DrawsEveryChannelListsEveryWindowAndZoomsInChromium) {
+  std::string chromium = findOnPath("chromium");
+  if (chromium.empty()) chromium = findOnPath("chromium-browser");
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium): the page check is skipped";
+  fs::remove_all(kTmp());
+  fs::create_directories(kTmp());
+  const fs::path small = kTmp() / "compare.html";
+  std::ofstream(small) << comparePage(comparison(2000, 4), "small");
+  const auto s = selftest(chromium, small);
+  EXPECT_EQ(s.value("charts", 0), 4) << s.dump();  // value and residual per channel
+  EXPECT_EQ(s.value("window_rows", 0), 4) << s.dump();
+  EXPECT_TRUE(s.value("zoom_ok", false)) << s.dump();
+  EXPECT_TRUE(s.value("errors", nlohmann::json::array()).empty()) << s.dump();
+  // A 117 000-row drive (two channels): it draws, zooms, and the time its charts are built is printed.
+  const fs::path big = kTmp() / "big.html";
+  std::ofstream(big) << comparePage(comparison(117000, 40), "big");
+  const auto g = selftest(chromium, big);
+  EXPECT_EQ(g.value("charts", 0), 4) << g.dump();
+  EXPECT_TRUE(g.value("zoom_ok", false)) << g.dump();
+  EXPECT_TRUE(g.value("errors", nlohmann::json::array()).empty()) << g.dump();
+  std::printf("[ page ] 117 000 rows x 2 channels: charts built %d ms after navigation (headless Chromium)\n", g.value("ready_ms", -1));
+  fs::remove_all(kTmp());
+}

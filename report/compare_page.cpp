@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "dtwin/uplot_assets.hpp"
+#include "report/study_report.hpp"
 
 namespace dtwin {
 
@@ -46,20 +47,6 @@ std::string scriptSafe(const std::string& json) {
       ++i;
     } else {
       out += json[i];
-    }
-  }
-  return out;
-}
-
-std::string htmlEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
     }
   }
   return out;
@@ -266,10 +253,10 @@ std::string comparePage(const nlohmann::json& compare, const std::string& title)
     data["sets"][set_index[key]]["channels"].push_back(slimSeries(s));
   }
   if (data["sets"].empty()) throw InputError("compare page", "the comparison holds no series data to draw");
-  std::string html = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>" + htmlEscape(title) + "</title>\n<style>";
+  std::string html = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>" + report::htmlEscape(title) + "</title>\n<style>";
   html += assets::kUplotCss;
   html += kStyle;
-  html += "</style></head><body>\n<h1>" + htmlEscape(title) + "</h1>\n";
+  html += "</style></head><body>\n<h1>" + report::htmlEscape(title) + "</h1>\n";
   html += "<p class=note>Measured (black), predicted (blue) with its 95 % band, and the residual under each; failing windows shaded "
           "red. Lines are drawn as the min and max of each pixel column of what is in view; the figures and tables are the "
           "comparison's own.</p>\n<div id=sets></div>\n<pre id=selftest></pre>\n";

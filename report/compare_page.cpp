@@ -25,9 +25,7 @@ nlohmann::json slimSeries(const nlohmann::json& s) {
                                     : nlohmann::json()},
                    {"t", s.at("t")},
                    {"y", s.at("measured_mean")},
-                   {"p", s.at("predicted_mean")},
-                   {"lo", s.at("band_lo")},
-                   {"hi", s.at("band_hi")},
+                   {"models", nlohmann::json::array()},
                    {"windows", nlohmann::json::array()},
                    {"bands", s.value("bands", nlohmann::json::array())},
                    {"bands_note", s.value("bands_note", "")}};
@@ -62,6 +60,7 @@ const errors = [];
 window.addEventListener("error", e => errors.push(String(e.message)));
 const D = JSON.parse(document.getElementById("data").textContent);
 const groups = [];
+const palette = ["#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"];
 const units = { mps2: "m/s²", mps: "m/s", m: "m", N: "N", rad: "rad", radps: "rad/s" };
 const fmt = v => (v == null || !isFinite(v)) ? "–" : Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : (+v.toPrecision(5)).toString();
 function lowerBound(a, x) { let lo = 0, hi = a.length; while (lo < hi) { const m = (lo + hi) >> 1; if (a[m] < x) lo = m + 1; else hi = m; } return lo; }
@@ -167,34 +166,33 @@ function build() {
     for (const c of set.channels) {
       // A gap (masked rows, a dropout) breaks the lines: a null row where a step exceeds 5 times the median.
       const steps = c.t.slice(1).map((v, i) => v - c.t[i]).sort((a, b) => a - b), gapAt = 5 * (steps[steps.length >> 1] || Infinity);
-      for (const key of ["t", "y", "p", "lo", "hi"]) c[key + "_g"] = [];
-      for (let i = 0; i < c.t.length; i++) {
-        if (i > 0 && c.t[i] - c.t[i - 1] > gapAt) { c.t_g.push(0.5 * (c.t[i] + c.t[i - 1])); for (const key of ["y", "p", "lo", "hi"]) c[key + "_g"].push(null); }
-        for (const key of ["t", "y", "p", "lo", "hi"]) c[key + "_g"].push(c[key][i]);
-      }
-      const r = c.y_g.map((v, i) => v === null ? null : v - c.p_g[i]);
-      const unit = units[c.unit] || c.unit;
+      const withGaps = s => { const o = []; for (let i = 0; i < c.t.length; i++) { if (i > 0 && c.t[i] - c.t[i - 1] > gapAt) o.push(null); o.push(s[i]); } return o; };
+      const tg = []; for (let i = 0; i < c.t.length; i++) { if (i > 0 && c.t[i] - c.t[i - 1] > gapAt) tg.push(0.5 * (c.t[i] + c.t[i - 1])); tg.push(c.t[i]); }
+      const yg = withGaps(c.y), unit = units[c.unit] || c.unit, M = c.models, last = M[M.length - 1];
       const head = document.createElement("p"); head.className = "figs";
-      head.textContent = c.channel + ": fit " + (+c.fit).toFixed(1) + " %" + (c.baseline_fit != null ? " (FIR baseline " + (+c.baseline_fit).toFixed(1) + " %)" : "") +
-                         ", RMS " + fmt(c.rms) + " " + unit + ", 95 % band holds " + (100 * c.coverage).toFixed(1) + " % of the samples";
+      head.textContent = c.channel + ": " + M.map(m => (M.length > 1 ? m.label + " " : "") + "fit " + (+m.fit).toFixed(1) + " %, RMS " + fmt(m.rms) + " " + unit +
+                         ", band holds " + (100 * m.coverage).toFixed(1) + " %").join("; ") + (c.baseline_fit != null && isFinite(c.baseline_fit) ? " (FIR baseline fit " + (+c.baseline_fit).toFixed(1) + " %)" : "");
       plots.appendChild(head);
       const e1 = document.createElement("div"); plots.appendChild(e1);
-      chart(g, e1, c.channel, unit,
-            [{ label: "predicted", stroke: "#1f77b4", width: 1.5, value: (u, v) => fmt(v) },
-             { label: "95 % low", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) },
-             { label: "95 % high", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) },
-             { label: "measured", stroke: "#222", width: 1, value: (u, v) => fmt(v) }],
-            [c.t_g, c.p_g, c.lo_g, c.hi_g, c.y_g], c.windows, 240, [{ series: [3, 2], fill: "rgba(31,119,180,0.15)" }]);
+      const ser = [], arr = [tg];
+      M.forEach((m, k) => { ser.push({ label: M.length > 1 ? m.label : "predicted", stroke: palette[k % palette.length], width: 1.5, value: (u, v) => fmt(v) }); arr.push(withGaps(m.p)); });
+      ser.push({ label: "95 % low", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) }, { label: "95 % high", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) },
+               { label: "measured", stroke: "#222", width: 1, value: (u, v) => fmt(v) });
+      arr.push(withGaps(last.lo), withGaps(last.hi), yg);
+      const hiIdx = M.length + 2, loIdx = M.length + 1;
+      chart(g, e1, c.channel, unit, ser, arr, c.windows, 240, [{ series: [hiIdx, loIdx], fill: "rgba(31,119,180,0.15)" }]);
       const e2 = document.createElement("div"); plots.appendChild(e2);
-      chart(g, e2, c.channel + " residual (measured − predicted)", unit,
-            [{ label: "residual", stroke: "#d62728", width: 1, value: (u, v) => fmt(v) }], [c.t_g, r], c.windows, 140);
+      const rser = [], rarr = [tg];
+      M.forEach((m, k) => { const pg = withGaps(m.p); rser.push({ label: (M.length > 1 ? m.label + " " : "") + "residual", stroke: palette[k % palette.length], width: 1, value: (u, v) => fmt(v) });
+                            rarr.push(yg.map((v, i) => v === null ? null : v - pg[i])); });
+      chart(g, e2, c.channel + " residual (measured − predicted)", unit, rser, rarr, c.windows, 140);
       const sp = document.createElement("div"); sp.innerHTML = bandsTable(c); plots.appendChild(sp);
     }
     const rows = [];
     for (const c of set.channels) for (const w of c.windows) rows.push(Object.assign({ channel: c.channel }, w));
     rows.sort((a, b) => a.t0 - b.t0);
     const tbl = document.createElement("table"); tbl.className = "windows";
-    tbl.innerHTML = "<caption>failing windows (" + rows.length + "): a row zooms to it</caption><tr><th>channel</th><th>time [s]</th><th>peak |z|</th><th>share</th><th>where</th></tr>";
+    tbl.innerHTML = "<caption>" + (D.windows_of ? "where " + D.windows_of + " fails" : "failing windows") + " (" + rows.length + "): a row zooms to it</caption><tr><th>channel</th><th>time [s]</th><th>peak |z|</th><th>share</th><th>where</th></tr>";
     for (const w of rows) {
       const tr = document.createElement("tr");
       for (const v of [w.channel, w.t1 > w.t0 ? w.t0.toFixed(3) + "–" + w.t1.toFixed(3) : w.t0.toFixed(3), w.z.toFixed(1), (100 * w.share).toFixed(1) + " %", w.label]) { const td = document.createElement("td"); td.textContent = v; tr.appendChild(td); }
@@ -208,7 +206,8 @@ build();
 const painted = performance.now();
 if (location.hash === "#selftest") {
   const out = { charts: groups.reduce((n, g) => n + g.charts.length, 0), window_rows: document.querySelectorAll("table.windows tr").length - document.querySelectorAll("table.windows").length,
-                ready_ms: Math.round(painted), zoom_ok: false, errors };
+                ready_ms: Math.round(painted), zoom_ok: false, errors,
+                series: groups.length ? groups[0].charts.map(c => c.u.series.length) : [] };
   if (groups.length && groups[0].charts.length) {
     const g = groups[0], lo = g.full[0] + 0.45 * (g.full[1] - g.full[0]), hi = g.full[0] + 0.55 * (g.full[1] - g.full[0]);
     zoomTo(g, lo, hi);
@@ -239,26 +238,45 @@ table.bands { margin: 0.4em 0 0.8em; width: 60%; } .bar { height: 8px; backgroun
 }  // namespace
 
 std::string comparePage(const nlohmann::json& compare, const std::string& title) {
+  return comparePage(std::vector<PageModel>{PageModel{"model", compare}}, title);
+}
+
+std::string comparePage(const std::vector<PageModel>& models, const std::string& title) {
   nlohmann::json data{{"title", title}, {"sets", nlohmann::json::array()}};
+  if (models.size() > 1) data["windows_of"] = models.front().label;
   std::map<std::string, std::size_t> set_index;
-  for (const auto& s : compare.value("series", nlohmann::json::array())) {
-    if (!s.contains("t")) continue;
-    const std::string key = s.value("data_set", "") + "@" + s.value("scenario", "");
-    if (!set_index.count(key)) {
-      set_index[key] = data["sets"].size();
-      data["sets"].push_back({{"name", std::filesystem::path(s.value("data_set", "")).filename().string()},
-                              {"scenario", s.value("scenario", "")},
-                              {"channels", nlohmann::json::array()}});
+  std::map<std::string, std::pair<std::size_t, std::size_t>> channel_at;  // data set@scenario#channel -> (set, channel)
+  const auto keyOf = [](const nlohmann::json& s) { return s.value("data_set", "") + "@" + s.value("scenario", ""); };
+  if (!models.empty())
+    for (const auto& s : models.front().comparison.value("series", nlohmann::json::array())) {
+      if (!s.contains("t")) continue;
+      const std::string key = keyOf(s);
+      if (!set_index.count(key)) {
+        set_index[key] = data["sets"].size();
+        data["sets"].push_back({{"name", std::filesystem::path(s.value("data_set", "")).filename().string()},
+                                {"scenario", s.value("scenario", "")},
+                                {"channels", nlohmann::json::array()}});
+      }
+      auto& channels = data["sets"][set_index[key]]["channels"];
+      channel_at[key + "#" + s.value("channel", "")] = {set_index[key], channels.size()};
+      channels.push_back(slimSeries(s));
     }
-    data["sets"][set_index[key]]["channels"].push_back(slimSeries(s));
-  }
+  for (const auto& m : models)
+    for (const auto& s : m.comparison.value("series", nlohmann::json::array())) {
+      const auto at = channel_at.find(keyOf(s) + "#" + s.value("channel", ""));
+      if (at == channel_at.end() || !s.contains("predicted_mean") || s.at("predicted_mean").size() != s.at("t").size()) continue;
+      data["sets"][at->second.first]["channels"][at->second.second]["models"].push_back(
+          {{"label", m.label}, {"p", s.at("predicted_mean")}, {"lo", s.at("band_lo")}, {"hi", s.at("band_hi")},
+           {"fit", s.value("fit_percent", nlohmann::json())}, {"rms", s.value("rms", nlohmann::json())},
+           {"coverage", s.value("coverage95", nlohmann::json())}});
+    }
   if (data["sets"].empty()) throw InputError("compare page", "the comparison holds no series data to draw");
   std::string html = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>" + report::htmlEscape(title) + "</title>\n<style>";
   html += assets::kUplotCss;
   html += kStyle;
   html += "</style></head><body>\n<h1>" + report::htmlEscape(title) + "</h1>\n";
-  html += "<p class=note>Measured (black), predicted (blue) with its 95 % band, and the residual under each; failing windows shaded "
-          "red. Lines are drawn as the min and max of each pixel column of what is in view; the figures and tables are the "
+  html += "<p class=note>Measured (black), the prediction (blue; with several models one colour each, the last with its 95 % "
+          "band), and the residual under each; failing windows shaded red. Lines are drawn as the min and max of each pixel column of what is in view; the figures and tables are the "
           "comparison's own.</p>\n<div id=sets></div>\n<pre id=selftest></pre>\n";
   html += "<script type=\"application/json\" id=data>" + scriptSafe(data.dump()) + "</script>\n<script>";
   html += assets::kUplotJs;

@@ -8,14 +8,27 @@
 // only (min and max per pixel column of what is in view); the numbers in the page are the
 // comparison's, in full.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace dtwin {
 
-/// The page for a comparison's JSON (diag::Comparison::toJson with its series data, as
-/// compare.json holds it). `title` heads the page (e.g. the study's name and the data's file
-/// names; no absolute paths). Throws InputError when the JSON holds no series data.
+/// One model's comparison on the page: its label (e.g. "base", "+ bump_stop") and its JSON
+/// (diag::Comparison::toJson with its series data, as compare.json holds it).
+struct PageModel {
+  std::string label;
+  nlohmann::json comparison;
+};
+
+/// The page for one or more models compared with the same measurements (`twin diagnose`: the
+/// base, then the model with each applied effect, overlaid). The measured series and the failing
+/// windows are the first model's; each model adds its predicted line and residual; the last its
+/// band. `title` heads the page (the study's name and the data's file names; no absolute paths).
+/// Throws InputError when the first JSON holds no series data.
+std::string comparePage(const std::vector<PageModel>& models, const std::string& title);
+
+/// The page of one comparison (`twin compare`).
 std::string comparePage(const nlohmann::json& compare, const std::string& title);
 
 }  // namespace dtwin

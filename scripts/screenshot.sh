@@ -2,6 +2,8 @@
 # A screenshot of a report page in headless Chromium, for the docs (docs/img/).
 #   bash scripts/screenshot.sh PAGE.html OUT.png [WIDTH,HEIGHT]
 # The pages in docs/img and the commands that made them:
+#   diagnose_readme.png: `bash scripts/bench_jobs.sh readme`, then
+#     bash scripts/screenshot.sh /tmp/dtwin_bench/readme/run/compare.html docs/img/diagnose_readme.png 1400,1600
 #   compare_unknown_car_b.png: `bash scripts/bench_jobs.sh unknown_car`, then
 #     bash scripts/screenshot.sh /tmp/dtwin_bench/unknown_car/compare_b/compare.html docs/img/compare_unknown_car_b.png
 set -euo pipefail

@@ -97,6 +97,7 @@ TEST(ComparePage, EmbedsTheLibraryAndTheDataSafely) {
   EXPECT_EQ(data["sets"][0]["channels"].size(), 2u);
   EXPECT_EQ(data["sets"][0]["channels"][0]["windows"][2]["label"], "braking </script>");
   EXPECT_EQ(data["sets"][0]["channels"][0]["t"].size(), 500u);
+  EXPECT_EQ(data["sets"][0]["channels"][0]["models"].size(), 1u);
   EXPECT_THROW(comparePage(nlohmann::json{{"series", nlohmann::json::array()}}, "x"), InputError);
 }
 
@@ -113,6 +114,18 @@ TEST(ComparePage, DrawsEveryChannelListsEveryWindowAndZoomsInChromium) {
   EXPECT_EQ(s.value("window_rows", 0), 4) << s.dump();
   EXPECT_TRUE(s.value("zoom_ok", false)) << s.dump();
   EXPECT_TRUE(s.value("errors", nlohmann::json::array()).empty()) << s.dump();
+  // Two models (a diagnosis's base and "+ effect"): each adds its line and its residual.
+  auto after = comparison(2000, 0);
+  for (auto& ser : after["series"])
+    for (auto& v : ser["predicted_mean"]) v = v.get<double>() + 0.01;
+  const fs::path two = kTmp() / "two.html";
+  std::ofstream(two) << comparePage(std::vector<PageModel>{{"base", comparison(2000, 4)}, {"+ effect", after}}, "two models");
+  const auto t = selftest(chromium, two);
+  EXPECT_EQ(t.value("charts", 0), 4) << t.dump();
+  // value chart: t, 2 predictions, band low and high, measured; residual chart: t and 2 residuals.
+  EXPECT_EQ(t.value("series", nlohmann::json::array()), nlohmann::json({6, 3, 6, 3})) << t.dump();
+  EXPECT_EQ(t.value("window_rows", 0), 4) << "the first model's windows";
+  EXPECT_TRUE(t.value("errors", nlohmann::json::array()).empty()) << t.dump();
   // A 117 000-row drive (two channels): it draws, zooms, and the time its charts are built is printed.
   const fs::path big = kTmp() / "big.html";
   std::ofstream(big) << comparePage(comparison(117000, 40), "big");

@@ -1615,15 +1615,14 @@ CorrelationAdjustment CalibrationRun::timeCorrelation() {
   // step towards the inside of the bounds (κ does not depend on the parameters' scales).
   const std::vector<double>& theta = res_.optimum.theta;
   const double h = objective.stepsFrozen() ? kPolishStepFrozen : kPolishStep;
+  const auto scaled_step = [&](std::size_t j) {  // h, or −h where +h would leave the bounds
+    return theta[j] + h * (objective.upper()[j] - objective.lower()[j]) <= objective.upper()[j] ? h : -h;
+  };
   const auto runs = distributedMap(
       d_ + 1, options_.threads,
       [&](std::size_t k, int) {
         std::vector<double> th = theta;
-        if (k > 0) {
-          const std::size_t j = k - 1;
-          const double step = h * (objective.upper()[j] - objective.lower()[j]);
-          th[j] += th[j] + step <= objective.upper()[j] ? step : -step;
-        }
+        if (k > 0) th[k - 1] += scaled_step(k - 1) * (objective.upper()[k - 1] - objective.lower()[k - 1]);
         return objective.residuals(th);
       },
       [&](std::size_t done, std::size_t total) { report("profile: residual correlation", done, total); });
@@ -1633,8 +1632,7 @@ CorrelationAdjustment CalibrationRun::timeCorrelation() {
   Eigen::MatrixXd J(n, static_cast<Eigen::Index>(d_));
   for (std::size_t j = 0; j < d_; ++j) {
     if (static_cast<Eigen::Index>(runs[j + 1].size()) != n) return {};
-    const double signed_h = theta[j] + h * (objective.upper()[j] - objective.lower()[j]) <= objective.upper()[j] ? h : -h;
-    J.col(static_cast<Eigen::Index>(j)) = (Eigen::Map<const Eigen::VectorXd>(runs[j + 1].data(), n) - r0) / signed_h;
+    J.col(static_cast<Eigen::Index>(j)) = (Eigen::Map<const Eigen::VectorXd>(runs[j + 1].data(), n) - r0) / scaled_step(j);
   }
   const double s2 = res_.optimum.sse / static_cast<double>(n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : n_);
   return blockAdjustment(J, r0, blocks, s2, options_.profile.level);

@@ -9,7 +9,7 @@
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "common/files.hpp"
+#include "common/files.hpp"  // writeFileAtomic
 #include "report/compare_page.hpp"
 #include "report/diagnosis_report.hpp"
 #include "twin/distributed.hpp"
@@ -50,7 +50,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
     std::string title = "twin compare: " + study.name + ", " + run.assembly.id + " (" + run.assembly.label() + ") against";
     for (const auto& d : cfg.data) title += " " + std::filesystem::path(d).filename().string();
     const std::string page = (std::filesystem::path(run.written).parent_path() / "compare.html").string();
-    const std::string html = comparePage(nlohmann::json::parse(readTextFile(run.written)), title);
+    const std::string html = comparePage(run.comparison.toJson(true), title);
     rootWrites([&] { writeFileAtomic(page, html); });
     say("wrote " + page + " (zoom into the drive, the failing windows listed beside it)");
   }

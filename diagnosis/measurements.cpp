@@ -85,7 +85,6 @@ void addPureError(const LabData& data, const std::string& channel, Accum& acc) {
     acc.dof += static_cast<long>(v.size()) - 1;
   }
 }
-bool isForce(const std::string& channel) { return channel.size() > 2 && channel.compare(channel.size() - 2, 2, "_N") == 0; }
 /// The noise_sd of the study's sensor with this channel (0: none given, or no such sensor).
 double sensorNoiseSd(const Study& study, const std::string& channel) {
   for (const auto& x : study.sensors)
@@ -93,6 +92,8 @@ double sensorNoiseSd(const Study& study, const std::string& channel) {
   return 0.0;
 }
 }  // namespace
+
+bool isForce(const std::string& channel) { return channel.size() > 2 && channel.compare(channel.size() - 2, 2, "_N") == 0; }
 
 ChannelNoise estimateNoise(const Study& study, const LabData& data, const std::string& channel) {
   Accum a;

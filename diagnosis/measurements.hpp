@@ -40,6 +40,9 @@ struct ChannelNoise {
 };
 ChannelNoise estimateNoise(const Study& study, const LabData& data, const std::string& channel);
 
+/// A force channel (unit suffix "_N"): the study's [noise] variance applies to it.
+bool isForce(const std::string& channel);
+
 /// Per channel over all data sets (pooled pure error; study [noise] for N channels without
 /// repetitions). Channels with no noise estimate (zero variance) are left out: a diagnosis cannot
 /// weigh them (they are compared but not fitted); `left_out` lists them with the reason.

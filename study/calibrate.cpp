@@ -45,8 +45,7 @@ std::string calibrationPlan(const CalibrateRequest& request, std::size_t targets
 
 std::map<std::string, double> channelWeights(const Study& study, const calib::DataSet& set) {
   const auto channels = set.data.channels();
-  const auto force = [](const std::string& c) { return c.size() > 2 && c.compare(c.size() - 2, 2, "_N") == 0; };
-  if (channels.size() < 2 || std::all_of(channels.begin(), channels.end(), force)) return {};
+  if (channels.size() < 2 || std::all_of(channels.begin(), channels.end(), diag::isForce)) return {};
   std::vector<std::string> left;
   const auto noise = diag::estimateChannelNoise(study, {set}, &left);
   if (!left.empty())

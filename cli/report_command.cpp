@@ -56,7 +56,10 @@ int runReportCommand(const ReportConfig& cfg, const std::string& command) {
   const auto r = report::writeStudyReport(bands, cfg.dir, out, command, o);
   for (const auto& w : r["warnings"]) std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
   for (const auto& w : diag_warnings) std::fprintf(stderr, "twin report: warning: %s\n", w.c_str());
-  if (!cfg.quiet) std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(), r["wall_s"].get<double>());
+  if (!cfg.quiet) {
+    std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(), r["wall_s"].get<double>());
+    if (r["interactive"].is_string()) std::printf("interactive lab view: %s\n", r["interactive"].get<std::string>().c_str());
+  }
   return 0;
 }
 

@@ -170,24 +170,31 @@ function build() {
       const tg = []; for (let i = 0; i < c.t.length; i++) { if (i > 0 && c.t[i] - c.t[i - 1] > gapAt) tg.push(0.5 * (c.t[i] + c.t[i - 1])); tg.push(c.t[i]); }
       const yg = withGaps(c.y), unit = units[c.unit] || c.unit, M = c.models, last = M[M.length - 1];
       const head = document.createElement("p"); head.className = "figs";
-      head.textContent = c.channel + ": " + M.map(m => (M.length > 1 ? m.label + " " : "") + "fit " + (+m.fit).toFixed(1) + " %, RMS " + fmt(m.rms) + " " + unit +
-                         ", band holds " + (100 * m.coverage).toFixed(1) + " %").join("; ") + (c.baseline_fit != null && isFinite(c.baseline_fit) ? " (FIR baseline fit " + (+c.baseline_fit).toFixed(1) + " %)" : "");
+      head.textContent = c.channel + ": " + M.map(m => (M.length > 1 ? m.label + " " : "") + (m.fit != null ? "fit " + (+m.fit).toFixed(1) + " %, " : "") + "RMS " + fmt(m.rms) + " " + unit +
+                         (m.coverage != null ? ", band holds " + (100 * m.coverage).toFixed(1) + " %" : "")).join("; ") + (c.baseline_fit != null && isFinite(c.baseline_fit) ? " (FIR baseline fit " + (+c.baseline_fit).toFixed(1) + " %)" : "");
       plots.appendChild(head);
       const e1 = document.createElement("div"); plots.appendChild(e1);
       const ser = [], arr = [tg];
       M.forEach((m, k) => { ser.push({ label: M.length > 1 ? m.label : "predicted", stroke: palette[k % palette.length], width: 1.5, value: (u, v) => fmt(v) }); arr.push(withGaps(m.p)); });
-      ser.push({ label: "95 % low", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) }, { label: "95 % high", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) },
-               { label: "measured", stroke: "#222", width: 1, value: (u, v) => fmt(v) });
-      arr.push(withGaps(last.lo), withGaps(last.hi), yg);
+      ser.push({ label: "95 % low", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) }, { label: "95 % high", stroke: "rgba(31,119,180,0.3)", value: (u, v) => fmt(v) });
+      arr.push(withGaps(last.lo), withGaps(last.hi));
+      // Measured: a line, or (the lab's repetitions) points only.
+      const P = (c.points || []).map(q => ({ label: q.label, v: withGaps(q.v) }));
+      const dot = (label, color) => ({ label, stroke: color, fill: color, paths: () => null, points: { show: true, size: 6, stroke: color, fill: color }, value: (u, v) => fmt(v) });
+      if (c.y && c.y.some(v => v !== null)) { ser.push({ label: "measured", stroke: "#222", width: 1, value: (u, v) => fmt(v) }); arr.push(yg); }
+      P.forEach((q, k) => { ser.push(dot(q.label, ["#222", "#c03020", "#7f7f7f", "#bcbd22"][k % 4])); arr.push(q.v); });
       const hiIdx = M.length + 2, loIdx = M.length + 1;
       chart(g, e1, c.channel, unit, ser, arr, c.windows, 240, [{ series: [hiIdx, loIdx], fill: "rgba(31,119,180,0.15)" }]);
       const e2 = document.createElement("div"); plots.appendChild(e2);
       const rser = [], rarr = [tg];
-      M.forEach((m, k) => { const pg = withGaps(m.p); rser.push({ label: (M.length > 1 ? m.label + " " : "") + "residual", stroke: palette[k % palette.length], width: 1, value: (u, v) => fmt(v) });
-                            rarr.push(yg.map((v, i) => v === null ? null : v - pg[i])); });
+      M.forEach((m, k) => { const pg = withGaps(m.p), col = palette[k % palette.length], who = M.length > 1 ? m.label + " " : "";
+                            if (!P.length) { rser.push({ label: who + "residual", stroke: col, width: 1, value: (u, v) => fmt(v) });
+                                             rarr.push(yg.map((v, i) => v === null ? null : v - pg[i])); }
+                            P.forEach(q => { rser.push(dot(who + q.label, col)); rarr.push(q.v.map((v, i) => v === null ? null : v - pg[i])); }); });
       chart(g, e2, c.channel + " residual (measured − predicted)", unit, rser, rarr, c.windows, 140);
       const sp = document.createElement("div"); sp.innerHTML = bandsTable(c); plots.appendChild(sp);
     }
+    if (D.no_windows) { side.style.display = "none"; return; }
     const rows = [];
     for (const c of set.channels) for (const w of c.windows) rows.push(Object.assign({ channel: c.channel }, w));
     rows.sort((a, b) => a.t0 - b.t0);
@@ -271,13 +278,19 @@ std::string comparePage(const std::vector<PageModel>& models, const std::string&
            {"coverage", s.value("coverage95", nlohmann::json())}});
     }
   if (data["sets"].empty()) throw InputError("compare page", "the comparison holds no series data to draw");
+  return timeSeriesPage(data,
+                        "Measured (black), the prediction (blue; with several models one colour each, the last with its 95 % "
+                        "band), and the residual under each; failing windows shaded red. Lines are drawn as the min and max of "
+                        "each pixel column of what is in view; the figures and tables are the comparison's own.");
+}
+
+std::string timeSeriesPage(const nlohmann::json& data, const std::string& note) {
+  const std::string title = data.value("title", std::string("twin"));
   std::string html = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>" + report::htmlEscape(title) + "</title>\n<style>";
   html += assets::kUplotCss;
   html += kStyle;
   html += "</style></head><body>\n<h1>" + report::htmlEscape(title) + "</h1>\n";
-  html += "<p class=note>Measured (black), the prediction (blue; with several models one colour each, the last with its 95 % "
-          "band), and the residual under each; failing windows shaded red. Lines are drawn as the min and max of each pixel column of what is in view; the figures and tables are the "
-          "comparison's own.</p>\n<div id=sets></div>\n<pre id=selftest></pre>\n";
+  html += "<p class=note>" + report::htmlEscape(note) + "</p>\n<div id=sets></div>\n<pre id=selftest></pre>\n";
   html += "<script type=\"application/json\" id=data>" + scriptSafe(data.dump()) + "</script>\n<script>";
   html += assets::kUplotJs;
   html += "</script>\n<script>";

@@ -31,4 +31,13 @@ std::string comparePage(const std::vector<PageModel>& models, const std::string&
 /// The page of one comparison (`twin compare`).
 std::string comparePage(const nlohmann::json& compare, const std::string& title);
 
+/// The page itself, from the data its script draws: {"title", "sets": [{"name", "scenario",
+/// "channels": [{"channel", "unit", "t", "y" (measured, null where none), optionally "points"
+/// ([{"label", "v"}]: measured values drawn as points, aligned with t, null elsewhere: the lab's
+/// repetitions), "models": [{"label", "p", "lo", "hi", "fit", "rms", "coverage"}], "windows",
+/// "bands", "bands_note"}]}], optionally "windows_of" and "no_windows" (true: no window table)}.
+/// `note` is the sentence under the title. comparePage builds this from comparisons;
+/// report/lab_page.hpp from a study's lab bands.
+std::string timeSeriesPage(const nlohmann::json& data, const std::string& note);
+
 }  // namespace dtwin

@@ -11,7 +11,10 @@
 #include <sstream>
 
 #include "calibration/summary.hpp"
+#include "report/lab_page.hpp"
+#include "report/posterior_plots.hpp"
 #include "report/svg_plot.hpp"
+#include "report/ticks.hpp"
 #include "classification/synthesis.hpp"
 #include "common/csv.hpp"
 #include "common/files.hpp"
@@ -94,30 +97,57 @@ StudyFiles readStudyFiles(const fs::path& dir) {
   return f;
 }
 
-/// One figure of section 1: the lab data of `p.channel` against the assembly's predictive band,
-/// and the same relative to the median prediction.
-void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, const study::ChannelBand& p, const LabData& lab) {
+/// The unit of channel `name` (measurableChannels of the study's sensors), "" when unknown.
+std::string channelUnit(const Study& study, const std::string& name) {
+  for (const auto& c : measurableChannels(study.sensors))
+    if (c.name == name) return c.unit;
+  return "";
+}
+
+/// One figure of section 1: the lab data of channel `c` against the assembly's predictive band,
+/// drawn through the lab scenario on the dense grid, and the same relative to the median
+/// prediction (the lab points against the median at their times).
+void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t c, const LabData& lab, const std::string& unit) {
   const auto& a = ab.assembly;
+  const study::ChannelBand& p = ab.channels[c];
+  const study::ChannelBand& g = ab.dense.size() > c ? ab.dense[c] : p;
   std::ostringstream band, pts;
-  for (std::size_t i = 0; i < p.times.size(); ++i)
-    band << full(p.times[i]) << ' ' << full(p.lo[i]) << ' ' << full(p.med[i]) << ' ' << full(p.hi[i]) << ' '
-         << full(p.plo[i]) << ' ' << full(p.phi[i]) << '\n';
+  double ylo = INFINITY, yhi = -INFINITY, rlo = INFINITY, rhi = -INFINITY;
+  const auto span = [](double& lo, double& hi, double v) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  };
+  for (std::size_t i = 0; i < g.times.size(); ++i) {
+    band << full(g.times[i]) << ' ' << full(g.lo[i]) << ' ' << full(g.med[i]) << ' ' << full(g.hi[i]) << ' ' << full(g.plo[i]) << ' '
+         << full(g.phi[i]) << '\n';
+    span(ylo, yhi, g.plo[i]);
+    span(ylo, yhi, g.phi[i]);
+    span(rlo, rhi, g.plo[i] - g.med[i]);
+    span(rlo, rhi, g.phi[i] - g.med[i]);
+  }
+  double t_end = 0.0;
   for (const auto& r : lab.records) {
     if (r.channel != p.channel) continue;
     const std::size_t i = static_cast<std::size_t>(std::find(p.times.begin(), p.times.end(), r.time_s) - p.times.begin());
     pts << full(r.time_s) << ' ' << full(r.value) << ' ' << full(r.value - p.med[i]) << '\n';
+    span(ylo, yhi, r.value);
+    span(rlo, rhi, r.value - p.med[i]);
+    t_end = std::max(t_end, r.time_s);
   }
+  padRange(ylo, yhi, 0.05);
+  padRange(rlo, rhi, 0.05);
   const std::string fb = pg.gp.data(band.str()), fp = pg.gp.data(pts.str());
   const std::string title = a.id + " (" + a.label() + "): " + p.channel;
   std::ostringstream s;
   s << "set multiplot layout 2,1 title " << gq(title) << " noenhanced\n"
-    << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(p.channel) << " noenhanced\n"
-    << "set style fill transparent solid 0.25 noborder\n"
+    << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(axisLabel(p.channel, unit)) << " noenhanced\n"
+    << gnuplotTics("x", g.times.empty() ? 0.0 : g.times.front(), g.times.empty() ? t_end : g.times.back(), 8)
+    << gnuplotTics("y", ylo, yhi, 6) << "set style fill transparent solid 0.25 noborder\n"
     << "plot " << fb << " using 1:5:6 with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
     << fb << " using 1:2:4 with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
-    << fb << " using 1:3 with linespoints lw 1.5 pt 1 lc rgb '#103070' title 'median η(θ)', "
-    << fp << " using 1:2 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n"
-    << "set ylabel " << gq("measured − median [" + p.channel + "]") << " noenhanced\n"
+    << fb << " using 1:3 with lines lw 1.5 lc rgb '#103070' title 'median η(θ)', "
+    << fp << " using 1:2 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data (every repetition)'\n"
+    << "set ylabel " << gq(axisLabel("measured − median", unit)) << " noenhanced\n" << gnuplotTics("y", rlo, rhi, 5)
     << "plot " << fb << " using 1:($5-$3):($6-$3) with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
     << fb << " using 1:($2-$3):($4-$3) with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
     << fb << " using 1:($3-$3) with lines lc rgb '#103070' title 'median η(θ)', "
@@ -125,135 +155,133 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, const study:
   const std::string name = "predictive_" + a.id + "_" + p.channel;
   pg.figure(pg.gp.plot(s.str(), 900, 600, title),
             htmlEscape(a.id + ": " + std::to_string(ab.drawn - ab.failures) + " of " + std::to_string(ab.drawn) +
-                       " draws simulated; noise sd 1/√τ = " + num(ab.noise_sd, 4) +
-                       " (posterior median over the draws, in the channel's unit)."));
+                       " draws simulated; the band drawn on " + std::to_string(g.times.size()) +
+                       " times through the lab scenario; noise sd 1/√τ = " + num(ab.noise_sd, 4) + " " + unit +
+                       " (posterior median over the draws)."));
   pg.plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", p.channel}});
 }
 
 /// Section 1: the lab data against every assembly's posterior predictive bands.
-void predictiveSection(ReportPage& pg, const study::LabBands& bands) {
+void predictiveSection(ReportPage& pg, const study::LabBands& bands, const std::string& lab_link) {
   const int draws = bands.draws;
   pg.body << "<h2 id=\"lab\">1. Lab data against the posterior predictive bands</h2>\n"
           << "<p>For each assembly, " << draws
           << " evenly spaced rows of its posterior sample (rows ⌊(k + ½)·S / " << draws
           << "⌋, k = 0 … " << draws - 1
-          << ") are simulated on the lab scenario and predicted at the lab times. Dark band: 2.5–97.5 % of the predictions "
+          << ") are simulated on the lab scenario and predicted through it, on a dense grid of times that holds the lab times: "
+             "the lines and bands are the model's continuous response, the points what the lab measured. Dark band: 2.5–97.5 % of the predictions "
              "η(θ) (parameter uncertainty); line: their median; light band: 2.5–97.5 % of the posterior predictive "
              "distribution, the predictions plus measurement noise N(0, 1/τ) of each draw (noise sd = 1/√τ). Points: the "
              "measured values of every repetition. The lower panel shows the same relative to the median prediction.</p>\n";
+  if (!lab_link.empty())
+    pg.body << "<p>Interactive view (zoom, pan, one cursor across the channels): <a href=\"" << htmlEscape(lab_link) << "\">"
+            << htmlEscape(lab_link) << "</a>.</p>\n";
   for (const auto& ab : bands.assemblies)
-    for (const auto& p : ab.channels) predictivePlot(pg, ab, p, bands.lab);
+    for (std::size_t c = 0; c < ab.channels.size(); ++c)
+      predictivePlot(pg, ab, c, bands.lab, channelUnit(bands.study, ab.channels[c].channel));
 }
 
-/// One panel of a posterior figure: the 40-bin histogram of `v` (the values of parameter `name`),
-/// the posterior's central 95 % interval, the profile interval of `entry` (its summary.json
-/// parameter entry; nullptr for τ or when there is none) and the truth when known, whose note joins `truth_notes`. Returns
-/// the panel's gnuplot commands.
-std::string histogramPanel(GnuplotSvg& gp, const std::string& name, const std::vector<double>& v, std::optional<double> truth,
-                           const json* entry, std::vector<std::string>& truth_notes) {
-  const auto [mn_it, mx_it] = std::minmax_element(v.begin(), v.end());
-  double lo = *mn_it, hi = *mx_it;
-  std::vector<double> sorted = v;
-  std::sort(sorted.begin(), sorted.end());
-  const double q025 = quantileSorted(sorted, 0.025), q975 = quantileSorted(sorted, 0.975);
-  // The profile interval and which interval ci95 is, from the calibration's summary.json.
-  std::optional<std::pair<double, double>> prof;
+/// The marks of calibrated value `name` (its summary.json entry `entry`, nullptr for τ or when
+/// there is none), and the sentence saying whether its ci95 interval holds the truth (when known).
+ParameterMarks marksOf(const std::string& name, const std::string& unit, std::vector<double> v, std::optional<double> truth,
+                       const json* entry, std::vector<std::string>& truth_notes) {
+  ParameterMarks m;
+  m.name = name;
+  m.unit = unit;
+  m.sample = std::move(v);
+  m.truth = truth;
   std::string ci_kind = "posterior";
   if (entry) {
     const json& e = *entry;
-    if (e.contains("profile95")) prof = std::make_pair(e["profile95"][0].get<double>(), e["profile95"][1].get<double>());
+    if (e.contains("profile95")) m.profile = std::make_pair(e["profile95"][0].get<double>(), e["profile95"][1].get<double>());
+    if (e.contains("optimum") && e["optimum"].is_number()) m.optimum = e["optimum"].get<double>();
     ci_kind = e.value("interval", std::string("posterior"));
   }
-  const double ci_lo = ci_kind == "profile" && prof ? prof->first : q025, ci_hi = ci_kind == "profile" && prof ? prof->second : q975;
-  if (prof) {
-    lo = std::min(lo, prof->first);
-    hi = std::max(hi, prof->second);
-  }
-  if (truth) {
-    // Widen the axis to show the truth, with a margin of 5 % of the span.
-    const double span = std::max(std::max(hi, *truth) - std::min(lo, *truth), 1e-12 * std::max(1.0, std::abs(*truth)));
-    if (*truth < lo) lo = *truth - 0.05 * span;
-    if (*truth > hi) hi = *truth + 0.05 * span;
+  axisRange(m);
+  if (truth && !m.sample.empty()) {
+    std::vector<double> sorted = m.sample;
+    std::sort(sorted.begin(), sorted.end());
+    const bool prof = ci_kind == "profile" && m.profile;
+    const double ci_lo = prof ? m.profile->first : quantileSorted(sorted, 0.025);
+    const double ci_hi = prof ? m.profile->second : quantileSorted(sorted, 0.975);
     const bool inside = *truth >= ci_lo && *truth <= ci_hi;
     truth_notes.push_back(name + ": the truth " + num(*truth, 6) +
                           (inside ? " lies inside" : (*truth < ci_lo ? " lies BELOW" : " lies ABOVE")) + " the 95 % interval [" +
-                          num(ci_lo, 6) + ", " + num(ci_hi, 6) + "] (" + (ci_kind == "profile" && prof ? "profile likelihood" : "posterior") +
-                          ")");
+                          num(ci_lo, 6) + ", " + num(ci_hi, 6) + "] (" + (prof ? "profile likelihood" : "posterior") + ")");
   }
-  if (hi - lo <= 1e-12 * std::max(1.0, std::abs(lo))) {
-    const double d = std::max(std::abs(lo) * 1e-3, 1e-12);
-    lo -= d;
-    hi += d;
-  }
-  const int nb = 40;
-  const double w = (hi - lo) / nb;
-  std::vector<long> c(nb, 0);
-  for (double x : v) ++c[static_cast<std::size_t>(std::clamp(static_cast<int>((x - lo) / w), 0, nb - 1))];
-  std::ostringstream d;
-  for (int b = 0; b < nb; ++b) d << full(lo + (b + 0.5) * w) << ' ' << c[static_cast<std::size_t>(b)] << '\n';
-  const std::string f = gp.data(d.str());
-  std::ostringstream s;
-  s << "unset arrow\nset xrange [" << full(lo) << ":" << full(hi) << "]\nset boxwidth " << full(w) << " absolute\n"
-    << "set xtics (" << full(lo + 0.1 * (hi - lo)) << ", " << full(lo + 0.5 * (hi - lo)) << ", " << full(lo + 0.9 * (hi - lo))
-    << ")\n";
-  for (double q : {q025, q975})
-    s << "set arrow from " << full(q) << ", graph 0 to " << full(q) << ", graph 1 nohead lw 1 dt 2 lc rgb '#222222'\n";
-  if (prof)
-    for (double q : {prof->first, prof->second})
-      s << "set arrow from " << full(q) << ", graph 0 to " << full(q) << ", graph 1 nohead lw 2 dt 3 lc rgb '#2a8a3a'\n";
-  if (truth)
-    s << "set arrow from " << full(*truth) << ", graph 0 to " << full(*truth) << ", graph 1 nohead lw 2 lc rgb '#c03020'\n";
-  s << "set xlabel " << gq(name) << " noenhanced\n"
-    << "plot " << f << " using 1:2 with boxes lc rgb '#4a7fc0' notitle\n";
-  return s.str();
+  return m;
 }
 
-/// One figure of section 2: the histograms of an assembly's θ and τ (one panel each).
+/// An assembly's calibration region (calibration/<id>/summary.json "region"), when it has one.
+std::optional<calib::Region> regionOf(const json& cal_summary) {
+  if (!cal_summary.contains("region")) return std::nullopt;
+  try {
+    return calib::Region::fromJson(cal_summary["region"]);
+  } catch (const std::exception&) {
+    return std::nullopt;  // an older or partial summary: the pair plot goes without its region
+  }
+}
+
+/// The figures of section 2 for one assembly: the weighted density of every θ and of τ (one
+/// panel each), then the pair plot of θ.
 void posteriorFigure(ReportPage& pg, const study::AssemblyBands& ab, const Study& study, const fs::path& dir) {
   const auto& a = ab.assembly;
   const auto& post = ab.posterior;
-  std::vector<std::string> names = post.names;
-  names.push_back("tau");
-  const int np = static_cast<int>(names.size()), cols = np <= 3 ? np : 3, rws = (np + cols - 1) / cols;
-  std::ostringstream s;
-  s << "set multiplot layout " << rws << "," << cols << " title " << gq(a.id + " (" + a.label() + "): posterior, " +
-                                                                         std::to_string(post.size()) + " iterations")
-    << " noenhanced\nset style fill solid 0.6 border lc rgb '#333333'\nset ylabel 'count'\nset format x '%.5g'\n";
-  std::vector<std::string> truth_notes;
   const json cal_summary = readJsonIfExists(dir / "calibration" / a.id / "summary.json");
-  for (int j = 0; j < np; ++j) {
-    const std::string& name = names[static_cast<std::size_t>(j)];
-    const bool theta = j < np - 1;
+  std::vector<std::string> truth_notes;
+  std::vector<ParameterMarks> theta;
+  for (std::size_t j = 0; j < post.names.size(); ++j) {
+    const std::string& name = post.names[j];
     std::vector<double> v;
-    if (theta)
-      for (const auto& row : post.theta) v.push_back(row[static_cast<std::size_t>(j)]);
-    else
-      v = post.tau;
+    for (const auto& row : post.theta) v.push_back(row[j]);
     std::optional<double> truth;
+    std::string unit;
     for (const auto& cp : study.calibrated)
-      if (theta && cp.name == name && cp.truth) truth = *cp.truth;
-    const bool has_entry = theta && cal_summary.contains("parameters") && cal_summary["parameters"].contains(name);
-    s << histogramPanel(pg.gp, name, v, truth, has_entry ? &cal_summary["parameters"][name] : nullptr, truth_notes);
+      if (cp.name == name) {
+        truth = cp.truth;
+        unit = cp.unit;
+      }
+    const bool has_entry = cal_summary.contains("parameters") && cal_summary["parameters"].contains(name);
+    theta.push_back(marksOf(name, unit, std::move(v), truth, has_entry ? &cal_summary["parameters"][name] : nullptr, truth_notes));
   }
-  std::string caption = a.id + ": θ = (" + [&] {
-    std::string r;
-    for (std::size_t j = 0; j < post.names.size(); ++j) r += (j ? ", " : "") + post.names[j];
-    return r;
-  }() + "), τ the error precision [1/unit²]; noise sd = 1/√τ.";
+  std::vector<std::string> ignored;
+  ParameterMarks tau = marksOf("tau (error precision)", "1/unit²", post.tau, std::nullopt, nullptr, ignored);
+  const int np = static_cast<int>(theta.size()) + 1, cols = np <= 3 ? np : 3, rws = (np + cols - 1) / cols;
+  std::ostringstream s;
+  s << "set multiplot layout " << rws << "," << cols << " title "
+    << gq(a.id + " (" + a.label() + "): posterior, " + std::to_string(post.size()) + " iterations") << " noenhanced\n"
+    << "set grid xtics\nset ylabel 'posterior density'\n";
+  for (const auto& m : theta) s << densityPanel(pg.gp, m);
+  s << densityPanel(pg.gp, tau);
+  std::string names;
+  for (std::size_t j = 0; j < post.names.size(); ++j) names += (j ? ", " : "") + post.names[j];
+  std::string caption = a.id + ": θ = (" + names + "), τ the error precision [1/unit²]; noise sd = 1/√τ.";
   for (const auto& t : truth_notes) caption += " " + t + ".";
-  pg.figure(pg.gp.plot(s.str(), 900, 300 * rws, a.id + " posterior histograms"), htmlEscape(caption));
-  pg.plots.push_back({{"name", "posterior_" + a.id}, {"kind", "posterior_histograms"}, {"assembly", a.id}});
+  pg.figure(pg.gp.plot(s.str(), 900, 300 * rws, a.id + " posterior densities"), htmlEscape(caption));
+  pg.plots.push_back({{"name", "posterior_" + a.id}, {"kind", "posterior_densities"}, {"assembly", a.id}});
+  if (theta.size() < 2) return;
+  const std::optional<calib::Region> region = regionOf(cal_summary);
+  pg.figure(pairPlot(pg.gp, theta, region, a.id + " (" + a.label() + "): pairs of calibrated values"),
+            htmlEscape(a.id + ": below the diagonal, each pair's posterior design points (area ∝ posterior mass)" +
+                       std::string(region ? ", the calibration's joint region projected (grey outline)" : "") +
+                       ", the optimum (black ×), the truth when known (red +) and the box of the two profile-likelihood 95 % "
+                       "intervals (dotted green); on the diagonal each value's density; above it the posterior correlation ρ "
+                       "(red when |ρ| > 0.7: a ridge along which the data cannot tell the two apart)."));
+  pg.plots.push_back({{"name", "pairs_" + a.id}, {"kind", "pair_plot"}, {"assembly", a.id}});
 }
 
-/// Section 2: the posterior histograms of every assembly.
+/// Section 2: the posterior densities and pair plot of every assembly.
 void posteriorSection(ReportPage& pg, const study::LabBands& bands, const fs::path& dir) {
-  pg.body << "<h2 id=\"posterior\">2. Posterior of θ and τ</h2>\n<p>Histograms (40 bins) of every kept Gibbs iteration of "
-             "<code>calibration/&lt;id&gt;/posterior.csv</code>; θ takes only design-point values, so bars may be sparse. "
+  pg.body << "<h2 id=\"posterior\">2. Posterior of θ and τ</h2>\n<p>Griddy Gibbs draws θ only at design points, so the "
+             "kept iterations of <code>calibration/&lt;id&gt;/posterior.csv</code> are a few values repeated; each panel draws "
+             "their weighted density instead: every design point weighted by its share of the iterations (its posterior mass) "
+             "and smoothed by a Gaussian kernel no narrower than the design's spacing (the grey rug marks the design points). "
              "Dashed lines mark the posterior's central 95 % interval (2.5 % and 97.5 % quantiles, <code>credible95</code>), "
-             "dotted green lines the profile-likelihood 95 % interval (<code>profile95</code>); <code>summary.json</code> prints "
-             "one of them as <code>ci95</code> (the profile interval by default, docs/calibration.md). When the study knows the "
-             "truth, a red line marks it, the axis is widened to show it, and the sentence under the figure says whether the "
-             "ci95 interval holds it.</p>\n";
+             "dotted green lines the profile-likelihood 95 % interval (<code>profile95</code>), the dash-dotted black line the "
+             "optimiser's optimum; <code>summary.json</code> prints one of the two intervals as <code>ci95</code> (the profile "
+             "interval by default, docs/calibration.md). When the study knows the truth, a red line marks it, the axis is "
+             "widened to show it, and the sentence under the figure says whether the ci95 interval holds it. The pair plot "
+             "shows how the values trade against each other.</p>\n";
   for (const auto& ab : bands.assemblies) posteriorFigure(pg, ab, bands.study, dir);
 }
 
@@ -342,10 +370,16 @@ void winsPlot(ReportPage& pg, const std::vector<std::string>& ids, const json& w
 void evidencePlot(ReportPage& pg, const std::vector<std::string>& ids, const json& L, const json& cost, const std::string& recommended) {
   std::ostringstream d, r;
   int n = 0;
+  double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
   for (const auto& id : ids) {
     if (!L.contains(id) || !cost.contains(id)) continue;
     ++n;
-    (id == recommended ? r : d) << full(cost[id].get<double>()) << ' ' << full(L[id].get<double>()) << " \"" << id << "\"\n";
+    const double x = cost[id].get<double>(), y = L[id].get<double>();
+    (id == recommended ? r : d) << full(x) << ' ' << full(y) << " \"" << id << "\"\n";
+    xlo = std::min(xlo, x);
+    xhi = std::max(xhi, x);
+    ylo = std::min(ylo, y);
+    yhi = std::max(yhi, y);
   }
   if (n == 0) {
     pg.warnings.push_back("classification/summary.json has no total_log_likelihood/cost_s_per_s: no evidence plot");
@@ -356,7 +390,10 @@ void evidencePlot(ReportPage& pg, const std::vector<std::string>& ids, const jso
   const std::string fd = pg.gp.data(d.str()), fr = pg.gp.data(r.str());
   std::ostringstream s;
   s << "set title 'evidence against cost'\nset xlabel 'cost [wall s per simulated s]'\nset ylabel 'total log likelihood L_m'\n"
-    << "set grid\nset offsets graph 0.1, graph 0.1, graph 0.1, graph 0.1\nset key bottom right\n"
+    << "set grid\nset key bottom right\n";
+  padRange(xlo, xhi, 0.15);
+  padRange(ylo, yhi, 0.15);
+  s << gnuplotTics("x", xlo, xhi, 6) << gnuplotTics("y", ylo, yhi, 6)
     << "plot " << fd << " using 1:2 with points pt 7 ps 1.2 lc rgb '#4a7fc0' title 'assemblies', " << fr
     << " using 1:2 with points pt 5 ps 1.6 lc rgb '#2a9a3a' title " << gq("recommended: " + recommended) << " noenhanced, "
     << fd << " using 1:2:3 with labels offset 1.5,0.8 noenhanced notitle, " << fr
@@ -429,9 +466,17 @@ void perAssemblyProvenance(std::ostringstream& body, const study::LabBands& band
   body << "</table>\n";
 }
 
-/// Section 5: program, commands, paths, times, seeds and sizes.
+/// `p` relative to the folder `base` (the page's folder): the page names no absolute path, and
+/// the links still hold when the folder is moved or copied whole.
+std::string relativeTo(const fs::path& p, const fs::path& base) {
+  std::error_code ec;
+  const fs::path rel = fs::relative(fs::absolute(p), fs::absolute(base), ec);
+  return ec || rel.empty() ? p.filename().string() : rel.lexically_normal().string();
+}
+
+/// Section 5: program, commands, paths (relative to the page's folder), times, seeds and sizes.
 void provenanceSection(ReportPage& pg, const study::LabBands& bands, const fs::path& dir, const StudyFiles& files,
-                       const std::string& command) {
+                       const std::string& command, const fs::path& page_dir) {
   const json& record = files.record;
   const json& summary = files.summary;
   const json& csum = files.csum;
@@ -450,9 +495,9 @@ void provenanceSection(ReportPage& pg, const study::LabBands& bands, const fs::p
   if (summary.value("command", std::string()) != record.value("command", std::string()))
     row("last study command", summary.value("command", std::string()));
   row("report command", command);
-  row("study file", bands.study_path);
-  row("study folder", fs::absolute(dir).lexically_normal().string());
-  row("lab data", bands.lab_path + " (" + std::to_string(bands.lab.records.size()) + " records)");
+  row("study file", relativeTo(bands.study_path, page_dir));
+  row("study folder", relativeTo(dir, page_dir));
+  row("lab data", relativeTo(bands.lab_path, page_dir) + " (" + std::to_string(bands.lab.records.size()) + " records)");
   row("study created (UTC)", record.value("created_utc", std::string()));
   row("summary written (UTC)", summary.value("created_utc", std::string()));
   row("seed", std::to_string(bands.study.seed));
@@ -475,7 +520,7 @@ void provenanceSection(ReportPage& pg, const study::LabBands& bands, const fs::p
 /// sections 1–5 and the appendix.
 std::string pageHtml(const study::LabBands& bands, const fs::path& dir, const std::string& sentence, const ReportPage& pg,
                      const ReportOptions& options) {
-  const std::string title = "twin study report: " + fs::absolute(dir).lexically_normal().string();
+  const std::string title = "twin study report: " + (bands.study.name.empty() ? dir.filename().string() : bands.study.name);
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << htmlEscape(title)
@@ -490,7 +535,7 @@ std::string pageHtml(const study::LabBands& bands, const fs::path& dir, const st
     page << "</ul></div>\n";
   }
   page << "<nav><ol><li><a href=\"#lab\">Lab data and predictive bands</a></li><li><a href=\"#posterior\">Posterior "
-          "histograms</a></li><li><a href=\"#selection\">Field-record selection</a></li><li><a href=\"#evidence\">Evidence "
+          "densities and pairs</a></li><li><a href=\"#selection\">Field-record selection</a></li><li><a href=\"#evidence\">Evidence "
           "against cost</a></li><li><a href=\"#provenance\">Provenance</a></li>";
   for (const auto& a : options.appendix) page << "<li><a href=\"#" << htmlEscape(a.id) << "\">" << htmlEscape(a.title) << "</a></li>";
   page << "</ol></nav>\n" << pg.body.str();
@@ -529,14 +574,24 @@ json writeStudyReport(const study::LabBands& bands, const std::string& study_dir
   const json wins = summary.value("wins", csum.value("wins", json::object()));
 
   ReportPage pg(gnuplot_exe, bands.warnings);
-  predictiveSection(pg, bands);
+  // The interactive view of section 1, beside the page (linked from it).
+  const fs::path out_path(out_html);
+  const fs::path lab_html = out_path.parent_path() / (out_path.stem().string() + "_lab.html");
+  std::string lab_link;
+  try {
+    writeFileAtomic(lab_html.string(), labPage(bands, "twin lab view: " + (bands.study.name.empty() ? dir.filename().string() : bands.study.name)));
+    lab_link = lab_html.filename().string();
+  } catch (const InputError& e) {
+    pg.warnings.push_back(std::string("no interactive lab view: ") + e.what());
+  }
+  predictiveSection(pg, bands, lab_link);
   posteriorSection(pg, bands, dir);
   const std::vector<std::string> ids = comparedIds(csum);
   pg.body << "<h2 id=\"selection\">3. Field-record selection</h2>\n";
   selectionBoxplot(pg, dir, ids);
   winsPlot(pg, ids, wins);
   evidenceSection(pg, bands, ids, csum, wins, recommended, sentence);
-  provenanceSection(pg, bands, dir, files, command);
+  provenanceSection(pg, bands, dir, files, command, fs::path(out_html).parent_path());
   for (const auto& w : pg.gp.warnings()) pg.warnings.push_back(w);
   writeFileAtomic(out_html, pageHtml(bands, dir, sentence, pg, options));
 
@@ -549,6 +604,7 @@ json writeStudyReport(const study::LabBands& bands, const std::string& study_dir
   int appendix_svgs = 0;
   for (const auto& a : options.appendix) appendix_svgs += a.svg_count;
   return {{"html", out_html},
+          {"interactive", lab_link.empty() ? json() : json(lab_html.string())},
           {"plots", pg.plots},
           {"svg_count", pg.gp.count() + appendix_svgs},
           {"assemblies", assemblies_json},

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -33,29 +35,18 @@ std::vector<std::size_t> evenRows(std::size_t S, int draws) {
   return rows;
 }
 
-/// The bands of one assembly from its predictions (rows that failed are empty vectors).
-void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std::vector<std::vector<double>>& preds,
-               const LabData& lab, std::vector<std::string>& warnings) {
-  std::vector<std::size_t> ok;
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    if (preds[k].size() == lab.records.size()) ok.push_back(k);
-  a.drawn = rows.size();
-  a.failures = rows.size() - ok.size();
-  if (ok.empty()) {
-    warnings.push_back(a.assembly.id + ": every posterior draw failed to simulate the lab scenario; no predictive band");
-    return;
-  }
-  std::vector<double> sd;
-  for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(a.posterior.tau[rows[k]]));
-  std::vector<double> sd_sorted = sd;
-  std::sort(sd_sorted.begin(), sd_sorted.end());
-  a.noise_sd = quantileSorted(sd_sorted, 0.5);
-  for (const auto& ch : lab.channels()) {
+/// The band of every channel of `data` from the predictions of its records by the draws `ok`
+/// (`preds[k][i]`: draw k, record i; every repetition at (channel, t) has the same prediction).
+std::vector<ChannelBand> bandsOf(const LabData& data, const std::vector<std::vector<double>>& preds,
+                                 const std::vector<std::size_t>& ok, const std::vector<double>& sd) {
+  std::vector<ChannelBand> out;
+  std::map<std::pair<std::string, double>, std::size_t> first;  // (channel, t) -> its first record
+  for (std::size_t i = 0; i < data.records.size(); ++i) first.emplace(std::make_pair(data.records[i].channel, data.records[i].time_s), i);
+  for (const auto& ch : data.channels()) {
     ChannelBand p;
     p.channel = ch;
-    for (double t : lab.times(ch)) {
-      std::size_t i = 0;  // the first record at (ch, t): every repetition has the same prediction
-      while (!(lab.records[i].channel == ch && lab.records[i].time_s == t)) ++i;
+    for (double t : data.times(ch)) {
+      const std::size_t i = first.at({ch, t});
       std::vector<double> eta;
       for (std::size_t k : ok) eta.push_back(preds[k][i]);
       const std::vector<double> eta_unsorted = eta;
@@ -67,8 +58,50 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
       p.plo.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.025));
       p.phi.push_back(normalMixtureQuantile(eta_unsorted, sd, 0.975));
     }
-    a.channels.push_back(std::move(p));
+    out.push_back(std::move(p));
   }
+  return out;
+}
+
+/// The lab data's channels on `points` evenly spaced times from 0 to the last lab time, merged
+/// with the lab times (one record per channel and time, value 0: only their predictions count).
+LabData denseGrid(const LabData& lab, int points) {
+  double t_end = 0.0;
+  for (const auto& r : lab.records) t_end = std::max(t_end, r.time_s);
+  LabData dense;
+  for (const auto& ch : lab.channels()) {
+    const std::vector<double> lab_times = lab.times(ch);
+    std::set<double> times(lab_times.begin(), lab_times.end());
+    for (int k = 0; k < points; ++k) times.insert(t_end * k / (points - 1));
+    for (double t : times) dense.records.push_back(LabRecord{1, t, ch, 0.0});
+  }
+  return dense;
+}
+
+/// The bands of one assembly from its predictions on the dense data (rows that failed are empty
+/// vectors); `lab_at[i]`: lab record i's record in `dense`.
+void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std::vector<std::vector<double>>& dense_preds,
+               const LabData& lab, const LabData& dense, const std::vector<std::size_t>& lab_at,
+               std::vector<std::string>& warnings) {
+  std::vector<std::size_t> ok;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (dense_preds[k].size() == dense.records.size()) ok.push_back(k);
+  a.drawn = rows.size();
+  a.failures = rows.size() - ok.size();
+  if (ok.empty()) {
+    warnings.push_back(a.assembly.id + ": every posterior draw failed to simulate the lab scenario; no predictive band");
+    return;
+  }
+  std::vector<double> sd;
+  for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(a.posterior.tau[rows[k]]));
+  std::vector<double> sd_sorted = sd;
+  std::sort(sd_sorted.begin(), sd_sorted.end());
+  a.noise_sd = quantileSorted(sd_sorted, 0.5);
+  std::vector<std::vector<double>> lab_preds(dense_preds.size());
+  for (std::size_t k : ok)
+    for (std::size_t i = 0; i < lab.records.size(); ++i) lab_preds[k].push_back(dense_preds[k][lab_at[i]]);
+  a.channels = bandsOf(lab, lab_preds, ok, sd);
+  a.dense = bandsOf(dense, dense_preds, ok, sd);
 }
 
 }  // namespace
@@ -77,6 +110,7 @@ void LabBandOptions::validate() const {
   const OptionCheck check("lab_bands");
   check.atLeast("draws", draws, 2);
   check.atLeast("threads", threads, 0);  // 0: all cores
+  check.atLeast("grid_points", grid_points, 2);
 }
 
 double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p) {
@@ -114,6 +148,14 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
   out.lab_path = summary.contains("paths") ? summary["paths"].value("lab", "") : "";
   if (out.lab_path.empty() || !fs::exists(out.lab_path)) out.lab_path = (dir / "lab" / "lab.csv").string();
   out.lab = readLabCsv(out.lab_path, measurableChannels(out.study.sensors));
+  // One set of runs predicts the lab times and the dense grid: the lab times are in the grid.
+  const LabData dense = denseGrid(out.lab, options.grid_points);
+  std::vector<std::size_t> lab_at;
+  {
+    std::map<std::pair<std::string, double>, std::size_t> at;
+    for (std::size_t i = 0; i < dense.records.size(); ++i) at.emplace(std::make_pair(dense.records[i].channel, dense.records[i].time_s), i);
+    for (const auto& r : out.lab.records) lab_at.push_back(at.at({r.channel, r.time_s}));
+  }
 
   std::vector<std::unique_ptr<calib::LabObjective>> objectives;
   std::vector<std::vector<std::size_t>> rows;
@@ -123,7 +165,7 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
     AssemblyBands a;
     a.assembly = spec;
     a.posterior = calib::readPosteriorCsv(post.string());
-    objectives.push_back(std::make_unique<calib::LabObjective>(out.study, spec, out.lab, "lab"));
+    objectives.push_back(std::make_unique<calib::LabObjective>(out.study, spec, dense, "lab"));
     if (objectives.back()->names() != a.posterior.names)
       throw InputError(a.posterior.path, "its parameter columns are not the study's calibrated parameters");
     rows.push_back(evenRows(a.posterior.size(), options.draws));
@@ -146,7 +188,8 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
       preds[m][k].clear();  // counted as a failure
     }
   });
-  for (std::size_t m = 0; m < out.assemblies.size(); ++m) summarise(out.assemblies[m], rows[m], preds[m], out.lab, out.warnings);
+  for (std::size_t m = 0; m < out.assemblies.size(); ++m)
+    summarise(out.assemblies[m], rows[m], preds[m], out.lab, dense, lab_at, out.warnings);
   return out;
 }
 

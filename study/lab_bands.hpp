@@ -4,7 +4,8 @@
 // ⌊(k + ½)·S / draws⌋, k = 0 … draws − 1) are simulated on the study's lab scenario and
 // predicted at the lab times; the band is the 2.5 / 50 / 97.5 % quantiles of the predictions
 // η(θ) and, with the measurement noise N(0, 1/τ) of each draw, the 2.5 / 97.5 % quantiles of the
-// posterior predictive (an equal-weight normal mixture). This is the one simulation the study
+// posterior predictive (an equal-weight normal mixture). The same runs also give the band on a
+// dense grid of times through the lab scenario (the continuous response between the lab times). This is the one simulation the study
 // report needs; it lives here so that report/ only draws (report/study_report.hpp).
 #include <cstddef>
 #include <string>
@@ -19,6 +20,9 @@ namespace dtwin::study {
 struct LabBandOptions {
   int draws = 50;   ///< posterior rows per assembly (>= 2)
   int threads = 0;  ///< simulations in parallel (0: all cores; never changes the numbers)
+  /// Evenly spaced times from 0 to the last lab time at which the continuous response is also
+  /// predicted (AssemblyBands::dense; >= 2). The same runs give both: no extra simulation.
+  int grid_points = 400;
   /// InputError whose where() is "lab_bands.<field>" (common/validate.hpp) when out of range.
   void validate() const;
 };
@@ -38,7 +42,10 @@ struct AssemblyBands {
   std::size_t drawn = 0;                     ///< rows simulated
   std::size_t failures = 0;                  ///< of which failed to simulate
   double noise_sd = 0.0;                     ///< median of 1/√τ over the rows that simulated (0 when none)
-  std::vector<ChannelBand> channels;         ///< empty when every row failed
+  std::vector<ChannelBand> channels;         ///< at the lab times; empty when every row failed
+  /// The same channels on a dense grid through the lab scenario (the grid's times and the lab
+  /// times, merged): the continuous response the report draws; empty when every row failed.
+  std::vector<ChannelBand> dense;
 };
 
 /// What a study folder holds for its report, with the predictive bands computed.

@@ -5,6 +5,7 @@
 // not an assertion: timing targets live in benchmarks).
 #include <gtest/gtest.h>
 
+#include "chromium_util.hpp"
 #include "test_util.hpp"
 
 #include <unistd.h>
@@ -55,32 +56,8 @@ nlohmann::json comparison(int rows, int windows) {
   return j;
 }
 
-std::string findOnPath(const std::string& exe) {
-  const char* path = std::getenv("PATH");
-  std::stringstream ss(path ? path : "/usr/bin:/bin");
-  for (std::string dir; std::getline(ss, dir, ':');)
-    if (!dir.empty() && ::access((fs::path(dir) / exe).c_str(), X_OK) == 0) return (fs::path(dir) / exe).string();
-  return "";
-}
-
-/// The page loaded in headless Chromium with #selftest: the JSON the page wrote into
-/// <pre id="selftest">.
-nlohmann::json selftest(const std::string& chromium, const fs::path& html) {
-  const fs::path dom = kTmp() / "dom.html", log = kTmp() / "chromium.log";
-  const std::string cmd = chromium +
-                          " --headless --no-sandbox --disable-gpu --disable-background-networking --window-size=1400,1200"
-                          " --user-data-dir=" + (kTmp() / "profile").string() + " --dump-dom 'file://" + fs::absolute(html).string() +
-                          "#selftest' >" + dom.string() + " 2>" + log.string();
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << dtwin_test::slurp(log);
-  const std::string text = dtwin_test::slurp(dom);
-  const auto a = text.find("<pre id=\"selftest\">"), b = text.find("</pre>", a);
-  if (a == std::string::npos || b == std::string::npos) {
-    ADD_FAILURE() << "no selftest output in the DOM; chromium said: " << dtwin_test::slurp(log);
-    return {};
-  }
-  const std::string body = text.substr(a + 19, b - a - 19);
-  return nlohmann::json::parse(body.empty() ? "{}" : body);
-}
+/// The page loaded in headless Chromium with #selftest.
+nlohmann::json selftest(const std::string& chromium, const fs::path& html) { return dtwin_test::pageSelftest(chromium, html, kTmp()); }
 
 }  // namespace
 
@@ -102,8 +79,7 @@ TEST(ComparePage, EmbedsTheLibraryAndTheDataSafely) {
 }
 
 TEST(ComparePage, DrawsEveryChannelListsEveryWindowAndZoomsInChromium) {
-  std::string chromium = findOnPath("chromium");
-  if (chromium.empty()) chromium = findOnPath("chromium-browser");
+  const std::string chromium = dtwin_test::findChromium();
   if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium): the page check is skipped";
   fs::remove_all(kTmp());
   fs::create_directories(kTmp());

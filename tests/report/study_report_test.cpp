@@ -3,6 +3,7 @@
 // gnuplot is missing, and a headless Chromium rendering without page errors.
 #include <gtest/gtest.h>
 
+#include "chromium_util.hpp"
 #include "test_util.hpp"
 
 #include <sys/wait.h>
@@ -21,17 +22,9 @@ namespace {
 /// Evaluated at use, after main() has given this process its own TMPDIR (tests/test_main.cpp).
 fs::path kTmp() { return fs::temp_directory_path() / "dtwin_report_test"; }
 
+using dtwin_test::findOnPath;
 using dtwin_test::slurp;
 
-
-std::string findOnPath(const std::string& exe) {
-  const char* path = std::getenv("PATH");
-  std::stringstream ss(path ? path : "/usr/bin:/bin");
-  std::string dir;
-  while (std::getline(ss, dir, ':'))
-    if (!dir.empty() && ::access((fs::path(dir) / exe).c_str(), X_OK) == 0) return (fs::path(dir) / exe).string();
-  return "";
-}
 
 std::size_t count(const std::string& s, const std::string& what) {
   std::size_t n = 0;
@@ -65,9 +58,22 @@ TEST(Report, TinyStudyReportRendersInChromium) {
   EXPECT_NE(page.find("<html lang=\"en\">"), std::string::npos);
   EXPECT_NE(page.find("<meta charset=\"utf-8\">"), std::string::npos);
   EXPECT_NE(page.find("<title>"), std::string::npos);
-  // 2 assemblies x 1 lab channel predictive plots, 2 posterior figures, boxplot, wins, evidence/cost.
-  EXPECT_EQ(count(page, "<svg"), 7u);
-  EXPECT_EQ(count(page, "</svg>"), 7u);
+  // 2 assemblies x 1 lab channel predictive plots, 2 posterior density figures, 2 pair plots,
+  // boxplot, wins, evidence/cost.
+  EXPECT_EQ(count(page, "<svg"), 9u);
+  EXPECT_EQ(count(page, "</svg>"), 9u);
+  // The continuous response: the band is drawn on the dense grid (400 times and the lab's).
+  EXPECT_NE(page.find("the band drawn on 40"), std::string::npos);
+  // Human ticks: no tick label in scientific form with a positive exponent (1.5397e+05).
+  EXPECT_FALSE(std::regex_search(page, std::regex(">\\s*-?[0-9.]+e\\+[0-9]+\\s*<"))) << "a tick like 1.5e+05";
+  EXPECT_NE(page.find("[N/m]"), std::string::npos) << "units in the axis labels";
+  // No absolute path: the title is the study's name, paths are relative to the page.
+  const auto t0 = page.find("<title>"), t1 = page.find("</title>");
+  EXPECT_EQ(page.substr(t0, t1 - t0).find(kTmp().string()), std::string::npos) << "an absolute path in the title";
+  EXPECT_NE(page.find("<tr><th>study folder</th><td>.</td></tr>"), std::string::npos) << "the folder relative to the page";
+  EXPECT_NE(page.find("pairs of calibrated values"), std::string::npos);
+  EXPECT_NE(page.find("href=\"report_lab.html\""), std::string::npos);
+  ASSERT_TRUE(fs::exists(dir / "report_lab.html"));
   EXPECT_EQ(page.find("<?xml"), std::string::npos);
   EXPECT_EQ(page.find("<!DOCTYPE svg"), std::string::npos);
   for (const char* bad : {"gnuplot>", "line 0:", "warning:", "Warnings:", "<script", "http://www.w3.org/1999/xhtml", "src="})
@@ -86,10 +92,10 @@ TEST(Report, TinyStudyReportRendersInChromium) {
 
   // --out elsewhere.
   ASSERT_EQ(std::system((twin + " report " + dir.string() + " --quiet --draws 5 --out " + (kTmp() / "r" / "x.html").string()).c_str()), 0);
-  EXPECT_EQ(count(slurp(kTmp() / "r" / "x.html"), "<svg"), 7u);
+  EXPECT_EQ(count(slurp(kTmp() / "r" / "x.html"), "<svg"), 9u);
+  EXPECT_TRUE(fs::exists(kTmp() / "r" / "x_lab.html"));
 
-  std::string chromium = findOnPath("chromium");
-  if (chromium.empty()) chromium = findOnPath("chromium-browser");
+  const std::string chromium = dtwin_test::findChromium();
   if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium): the rendering check is skipped";
   const fs::path png = kTmp() / "report.png", log = kTmp() / "chromium.log";
   const std::string cmd = chromium +
@@ -106,5 +112,11 @@ TEST(Report, TinyStudyReportRendersInChromium) {
     EXPECT_FALSE(line.find("CONSOLE") != std::string::npos && page_line) << line;
     EXPECT_FALSE(line.find("ERROR") != std::string::npos && page_line) << line;
   }
+  // The interactive lab view: a value and a residual chart per lab channel, no script error, and
+  // a zoom through uPlot's API moves both.
+  const auto st = dtwin_test::pageSelftest(chromium, dir / "report_lab.html", kTmp() / "lab_page");
+  EXPECT_EQ(st.value("charts", 0), 2) << st.dump();
+  EXPECT_TRUE(st.value("zoom_ok", false)) << st.dump();
+  EXPECT_TRUE(st.value("errors", nlohmann::json::array()).empty()) << st.dump();
   fs::remove_all(kTmp());
 }

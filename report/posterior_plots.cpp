@@ -210,8 +210,10 @@ std::string pairPlot(GnuplotSvg& gp, const std::vector<ParameterMarks>& params, 
   const int d = static_cast<int>(params.size());
   const int size = std::clamp(150 * d, 500, 1400);
   std::ostringstream s;
-  s << "set multiplot layout " << d << "," << d << " margins 0.1,0.98,0.09,0.94 spacing 0.012,0.012 title " << gnuplotQuote(title)
-    << " noenhanced\nset key off\nset grid\nset style fill transparent solid 0.35 noborder\n";
+  // Both ends of a region edge may lie outside a panel: `clip two` still draws the part inside.
+  s << "set multiplot layout " << d << "," << d << " margins 0.13,0.98,0.1,0.94 spacing 0.012,0.012 title " << gnuplotQuote(title)
+    << " noenhanced\nset key off\nset grid\nset clip two\nset style fill transparent solid 0.35 noborder\n"
+    << "set xlabel font ',8'\nset ylabel font ',8' offset 1,0\nset tics font ',8'\n";
   for (int r = 0; r < d; ++r)
     for (int c = 0; c < d; ++c) {
       const bool bottom = r == d - 1, left = c == 0;

@@ -117,22 +117,30 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t 
     lo = std::min(lo, v);
     hi = std::max(hi, v);
   };
+  // In view: from a little before the first lab time (the lab measures the response to the bump,
+  // after the car has settled) to the last; the y ranges are those of what is in view.
+  double t_end = 0.0, t_first = INFINITY;
+  for (const auto& r : lab.records)
+    if (r.channel == p.channel) {
+      t_first = std::min(t_first, r.time_s);
+      t_end = std::max(t_end, r.time_s);
+    }
+  const double x0 = std::max(g.times.empty() ? 0.0 : g.times.front(), t_first - 0.15 * (t_end - t_first));
   for (std::size_t i = 0; i < g.times.size(); ++i) {
     band << full(g.times[i]) << ' ' << full(g.lo[i]) << ' ' << full(g.med[i]) << ' ' << full(g.hi[i]) << ' ' << full(g.plo[i]) << ' '
          << full(g.phi[i]) << '\n';
+    if (g.times[i] < x0) continue;
     span(ylo, yhi, g.plo[i]);
     span(ylo, yhi, g.phi[i]);
     span(rlo, rhi, g.plo[i] - g.med[i]);
     span(rlo, rhi, g.phi[i] - g.med[i]);
   }
-  double t_end = 0.0;
   for (const auto& r : lab.records) {
     if (r.channel != p.channel) continue;
     const std::size_t i = static_cast<std::size_t>(std::find(p.times.begin(), p.times.end(), r.time_s) - p.times.begin());
     pts << full(r.time_s) << ' ' << full(r.value) << ' ' << full(r.value - p.med[i]) << '\n';
     span(ylo, yhi, r.value);
     span(rlo, rhi, r.value - p.med[i]);
-    t_end = std::max(t_end, r.time_s);
   }
   padRange(ylo, yhi, 0.05);
   padRange(rlo, rhi, 0.05);
@@ -141,7 +149,7 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t 
   std::ostringstream s;
   s << "set multiplot layout 2,1 title " << gq(title) << " noenhanced\n"
     << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(axisLabel(p.channel, unit)) << " noenhanced\n"
-    << gnuplotTics("x", g.times.empty() ? 0.0 : g.times.front(), g.times.empty() ? t_end : g.times.back(), 8)
+    << gnuplotTics("x", x0, t_end, 8)
     << gnuplotTics("y", ylo, yhi, 6) << "set style fill transparent solid 0.25 noborder\n"
     << "plot " << fb << " using 1:5:6 with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
     << fb << " using 1:2:4 with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
@@ -156,7 +164,8 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t 
   pg.figure(pg.gp.plot(s.str(), 900, 600, title),
             htmlEscape(a.id + ": " + std::to_string(ab.drawn - ab.failures) + " of " + std::to_string(ab.drawn) +
                        " draws simulated; the band drawn on " + std::to_string(g.times.size()) +
-                       " times through the lab scenario; noise sd 1/√τ = " + num(ab.noise_sd, 4) + " " + unit +
+                       " times through the lab scenario (shown from just before the first lab time; the interactive view has it "
+                       "all); noise sd 1/√τ = " + num(ab.noise_sd, 4) + " " + unit +
                        " (posterior median over the draws)."));
   pg.plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", p.channel}});
 }

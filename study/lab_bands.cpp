@@ -63,16 +63,24 @@ std::vector<ChannelBand> bandsOf(const LabData& data, const std::vector<std::vec
   return out;
 }
 
-/// The lab data's channels on `points` evenly spaced times from 0 to the last lab time, merged
-/// with the lab times (one record per channel and time, value 0: only their predictions count).
+/// The lab data's channels on `points` evenly spaced times from 0 to the last lab time and as many
+/// from the first lab time to the last (where the lab measured, the response is resolved finely),
+/// merged with the lab times (one record per channel and time, value 0: only their predictions
+/// count).
 LabData denseGrid(const LabData& lab, int points) {
-  double t_end = 0.0;
-  for (const auto& r : lab.records) t_end = std::max(t_end, r.time_s);
+  double t_end = 0.0, t_first = INFINITY;
+  for (const auto& r : lab.records) {
+    t_end = std::max(t_end, r.time_s);
+    t_first = std::min(t_first, r.time_s);
+  }
   LabData dense;
   for (const auto& ch : lab.channels()) {
     const std::vector<double> lab_times = lab.times(ch);
     std::set<double> times(lab_times.begin(), lab_times.end());
-    for (int k = 0; k < points; ++k) times.insert(t_end * k / (points - 1));
+    for (int k = 0; k < points; ++k) {
+      times.insert(t_end * k / (points - 1));
+      times.insert(t_first + (t_end - t_first) * k / (points - 1));
+    }
     for (double t : times) dense.records.push_back(LabRecord{1, t, ch, 0.0});
   }
   return dense;

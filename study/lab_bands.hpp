@@ -20,8 +20,9 @@ namespace dtwin::study {
 struct LabBandOptions {
   int draws = 50;   ///< posterior rows per assembly (>= 2)
   int threads = 0;  ///< simulations in parallel (0: all cores; never changes the numbers)
-  /// Evenly spaced times from 0 to the last lab time at which the continuous response is also
-  /// predicted (AssemblyBands::dense; >= 2). The same runs give both: no extra simulation.
+  /// Evenly spaced times from 0 to the last lab time, and as many from the first lab time to the
+  /// last, at which the continuous response is also predicted (AssemblyBands::dense; >= 2). The
+  /// same runs give both: no extra simulation.
   int grid_points = 400;
   /// InputError whose where() is "lab_bands.<field>" (common/validate.hpp) when out of range.
   void validate() const;

@@ -147,13 +147,14 @@ function build() {
     const lay = document.createElement("div"); lay.className = "layout"; sec.appendChild(lay);
     const plots = document.createElement("div"); plots.className = "plots"; lay.appendChild(plots);
     const side = document.createElement("div"); side.className = "side"; lay.appendChild(side);
+    if (D.no_windows) side.style.display = "none";
     let tmin = Infinity, tmax = -Infinity;
     for (const c of set.channels) { if (c.t.length) { tmin = Math.min(tmin, c.t[0]); tmax = Math.max(tmax, c.t[c.t.length - 1]); } }
     const g = { key: "set" + gi, charts: [], full: [tmin, tmax], range: [tmin, tmax] };
     groups.push(g);
     const nav = document.createElement("div"); nav.className = "nav";
-    nav.innerHTML = "<button data-a=left>◀ pan</button><button data-a=out>zoom out</button><button data-a=right>pan ▶</button><button data-a=all>whole drive</button>" +
-                    "<span class=hint>drag across a plot to zoom; double-click for the whole drive</span>";
+    nav.innerHTML = "<button data-a=left>◀ pan</button><button data-a=out>zoom out</button><button data-a=right>pan ▶</button><button data-a=all>" + (D.whole || "whole drive") + "</button>" +
+                    "<span class=hint>drag across a plot to zoom; double-click for the " + (D.whole || "whole drive") + "</span>";
     nav.addEventListener("click", e => {
       const a = e.target.dataset.a; if (!a) return;
       const [lo, hi] = g.range, w = hi - lo;
@@ -194,7 +195,8 @@ function build() {
       chart(g, e2, c.channel + " residual (measured − predicted)", unit, rser, rarr, c.windows, 140);
       const sp = document.createElement("div"); sp.innerHTML = bandsTable(c); plots.appendChild(sp);
     }
-    if (D.no_windows) { side.style.display = "none"; return; }
+    if (set.view) zoomTo(g, set.view[0], set.view[1]);
+    if (D.no_windows) return;
     const rows = [];
     for (const c of set.channels) for (const w of c.windows) rows.push(Object.assign({ channel: c.channel }, w));
     rows.sort((a, b) => a.t0 - b.t0);

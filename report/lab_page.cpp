@@ -1,5 +1,6 @@
 #include "report/lab_page.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -75,7 +76,14 @@ nlohmann::json labPageData(const study::LabBands& bands, const std::string& titl
   if (!first) throw InputError("lab page", "no assembly has a predictive band (every posterior draw failed to simulate)");
   nlohmann::json set{{"name", "lab data"}, {"scenario", "lab"}, {"channels", nlohmann::json::array()}};
   for (const auto& grid : first->dense) set["channels"].push_back(channelData(bands, grid));
-  return {{"title", title}, {"sets", nlohmann::json::array({set})}, {"no_windows", true}};
+  // The first view: from a little before the first lab time to the last (the static report's).
+  double t0 = INFINITY, t1 = -INFINITY;
+  for (const auto& r : bands.lab.records) {
+    t0 = std::min(t0, r.time_s);
+    t1 = std::max(t1, r.time_s);
+  }
+  if (t1 > t0) set["view"] = {std::max(0.0, t0 - 0.15 * (t1 - t0)), t1};
+  return {{"title", title}, {"sets", nlohmann::json::array({set})}, {"no_windows", true}, {"whole", "whole scenario"}};
 }
 
 std::string labPage(const study::LabBands& bands, const std::string& title) {

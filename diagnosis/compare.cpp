@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -142,46 +144,87 @@ void poolStates(Pooled& pl, const std::string& ch, const At& at, double residual
                                                                                    at.column("susp_defl_" + r + "_m"));
 }
 
+/// How far the times t[b, e) stray from their nominal grid t0 + i dt, in steps: dt their mean
+/// step (returned in `dt`), t0 the median offset.
+double strayOf(const std::vector<double>& t, std::size_t b, std::size_t e, double& dt) {
+  const std::size_t n = e - b;
+  dt = (t[e - 1] - t[b]) / static_cast<double>(n - 1);
+  std::vector<double> offsets(n);
+  for (std::size_t i = 0; i < n; ++i) offsets[i] = t[b + i] - static_cast<double>(i) * dt;
+  std::vector<double> sorted = offsets;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
+  const double t0 = sorted[n / 2];
+  double stray = 0.0;
+  for (std::size_t i = 0; i < n; ++i) stray = std::max(stray, std::abs(offsets[i] - t0) / dt);
+  return stray;
+}
+
+/// The longest run [b, e) of `t` with no step above 1.5 times the median step (a log's stretch
+/// between its gaps: dropouts, masked rows).
+std::pair<std::size_t, std::size_t> longestStretch(const std::vector<double>& t) {
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < t.size(); ++i) steps.push_back(t[i] - t[i - 1]);
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+  const double gap = 1.5 * sorted[sorted.size() / 2];
+  std::pair<std::size_t, std::size_t> best{0, 1};
+  for (std::size_t b = 0, i = 1; i <= t.size(); ++i)
+    if (i == t.size() || steps[i - 1] > gap) {
+      if (i - b > best.second - best.first) best = {b, i};
+      b = i;
+    }
+  return best;
+}
+
 /// The residual of a fitted series in frequency, with the road under the channel's wheel as the
 /// coherence input; else why not, in bands_note. Needs >= 64 times on a uniform base: every time
 /// within 0.4 of a step of the nominal grid t0 + i dt (dt the mean step, t0 the median offset):
 /// a logger's jittered clock. The spectrum then takes the times as uniform, and bands_note says
-/// how far they strayed. A gap or a change of rate gives no spectrum.
+/// how far they strayed. A log with gaps (dropouts, masked rows) gives the spectrum of its longest
+/// stretch between gaps when that holds 64 times and is uniform, and bands_note says which; a
+/// change of rate within it gives no spectrum.
 void addBands(SeriesComparison& sc, const std::vector<At>& at) {
   const std::size_t n = sc.t.size();
   if (n < 64) {
     sc.bands_note = "no spectrum: fewer than 64 times";
     return;
   }
-  const double dt = (sc.t.back() - sc.t.front()) / static_cast<double>(n - 1);
-  std::vector<double> offsets(n);
-  for (std::size_t i = 0; i < n; ++i) offsets[i] = sc.t[i] - static_cast<double>(i) * dt;
-  std::nth_element(offsets.begin(), offsets.begin() + static_cast<long>(n / 2), offsets.end());
-  const double t0 = offsets[n / 2];
-  for (std::size_t i = 0; i < n; ++i) offsets[i] = sc.t[i] - static_cast<double>(i) * dt;
-  double stray = 0.0;
-  for (std::size_t i = 0; i < n; ++i) stray = std::max(stray, std::abs(offsets[i] - t0) / dt);
+  double dt = 0.0;
+  std::size_t b = 0, e = n;
+  double stray = strayOf(sc.t, b, e, dt);
+  std::string stretch;
   if (stray > 0.4) {
-    sc.bands_note = "no spectrum: a non-uniform time base (a time " + formatNumber(stray, 3) + " steps of " +
-                    formatNumber(dt, 4) + " s off the nominal grid; gaps or mixed rates)";
-    return;
+    std::tie(b, e) = longestStretch(sc.t);
+    const double whole_dt = dt, whole_stray = stray;
+    if (e - b >= 64) stray = strayOf(sc.t, b, e, dt);
+    if (e - b < 64 || stray > 0.4) {
+      sc.bands_note = "no spectrum: a non-uniform time base (a time " + formatNumber(whole_stray, 3) + " steps of " +
+                      formatNumber(whole_dt, 4) + " s off the nominal grid; gaps or mixed rates" +
+                      (e - b < 64 ? ", and no stretch between gaps holds 64 times)" : ")");
+      return;
+    }
+    stretch = "the spectrum of the longest stretch between gaps, " + formatNumber(sc.t[b], 6) + "–" + formatNumber(sc.t[e - 1], 6) +
+              " s (" + std::to_string(e - b) + " of " + std::to_string(n) + " times)";
   }
-  if (stray > 1e-6) sc.bands_note = "sample times jitter up to " + formatNumber(100.0 * stray, 3) +
-                                    " % of the step " + formatNumber(dt, 4) + " s: the spectrum treats them as uniform";
+  std::string jitter;
+  if (stray > 1e-6)
+    jitter = "sample times jitter up to " + formatNumber(100.0 * stray, 3) + " % of the step " + formatNumber(dt, 4) +
+             " s: the spectrum treats them as uniform";
+  sc.bands_note = stretch + (!stretch.empty() && !jitter.empty() ? "; " : "") + jitter;
   if (!sc.fitted) {
     sc.bands_note = "no spectrum: no noise estimate for this channel";
     return;
   }
-  std::vector<double> res(sc.t.size()), road(sc.t.size());
+  std::vector<double> res, road;
   double rbar = 0.0;
   std::string c = cornerOf(sc.channel);
   if (c.empty()) c = "fl";
-  for (std::size_t i = 0; i < sc.t.size(); ++i) {
-    res[i] = sc.measured_mean[i] - sc.predicted_mean[i];
+  for (std::size_t i = b; i < e; ++i) {
+    res.push_back(sc.measured_mean[i] - sc.predicted_mean[i]);
     rbar += sc.repetitions[i];
-    road[i] = at[i].column("road_" + c + "_m");
+    road.push_back(at[i].column("road_" + c + "_m"));
   }
-  rbar /= static_cast<double>(sc.t.size());
+  rbar /= static_cast<double>(e - b);
   sc.bands = bandAnalysis(res, 1.0 / dt, sc.noise_variance / rbar, &road, welchSegment(res.size()));
 }
 

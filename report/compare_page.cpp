@@ -125,16 +125,80 @@ function chart(g, el, title, unit, series, full, windows, height, bands) {
   const u = new uPlot(opts, decimate(full, g.full[0], g.full[1], opts.width), el);
   g.charts.push({ u, full });
 }
-function bandsTable(c) {
-  if (!c.bands.length) return c.bands_note ? "<p class=note>spectrum: " + c.bands_note.replace(/</g, "&lt;") + "</p>" : "";
-  const maxr = Math.max(...c.bands.map(b => b.ratio || 0), 2);
-  let h = "<table class=bands><tr><th>band</th><th>Hz</th><th>residual / noise power</th><th></th></tr>";
-  for (const b of c.bands) {
-    const w = Math.max(1, 100 * Math.log10(1 + (b.ratio || 0)) / Math.log10(1 + maxr));
-    h += "<tr class=" + (b.significant ? "fail" : "ok") + "><td>" + b.band + "</td><td>" + fmt(b.lo_hz) + "–" + fmt(b.hi_hz) +
-         "</td><td><div class=bar style='width:" + w.toFixed(1) + "%'></div></td><td>" + fmt(b.ratio) + (b.significant ? " fails" : "") + "</td></tr>";
+// Text made safe inside HTML or SVG markup (element content and quoted attributes).
+function esc(s) { return String(s == null ? "" : s).replace(/[&<>"']/g, ch => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" })[ch]); }
+// A tick of a log axis: 0.5, 1, 20, 1000; 10⁵ and 10⁻⁴ beyond.
+function logTick(v) {
+  const e = Math.round(Math.log10(v));
+  if ((e > 4 || e < -3) && Math.abs(v / Math.pow(10, e) - 1) < 1e-9)
+    return "10" + String(e).replace(/[-0-9]/g, d => "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"["-0123456789".indexOf(d)]);
+  return String(+v.toPrecision(3));
+}
+// The residual's spectrum per band as an inline SVG: residual power / noise power on a log axis
+// against frequency on a log axis, one bar per band spanning lo_hz..hi_hz, the noise floor (ratio 1)
+// dashed, failing bands red, the others blue; "" when no band has a usable frequency range.
+function spectrumSvg(c) {
+  const B = c.bands.filter(b => b.lo_hz > 0 && b.hi_hz > b.lo_hz);
+  if (!B.length) return "";
+  const W = 580, H = 250, L = 62, R = 72, T = 34, Bm = 42, pw = W - L - R, ph = H - T - Bm;
+  const f0 = Math.min(...B.map(b => b.lo_hz)), f1 = Math.max(...B.map(b => b.hi_hz));
+  const rs = B.map(b => b.ratio).filter(r => r > 0 && isFinite(r));
+  const y0 = Math.pow(10, Math.floor(Math.log10(Math.min(1, ...rs) / 1.5))), y1 = Math.pow(10, Math.ceil(Math.log10(Math.max(1, ...rs) * 1.5)));
+  const X = f => L + pw * Math.log10(f / f0) / Math.log10(f1 / f0), Y = r => T + ph * (1 - Math.log10(r / y0) / Math.log10(y1 / y0));
+  const px = v => v.toFixed(1);
+  let s = "<svg class=spectrum-chart xmlns='http://www.w3.org/2000/svg' width=" + W + " height=" + H + " viewBox='0 0 " + W + " " + H + "' font-size=11 fill='#333'>";
+  s += "<text x=" + L + " y=15 font-size=13 font-weight=bold>" + esc(c.channel) + " residual spectrum</text>";
+  s += "<rect x=" + (L + pw - 196) + " y=7 width=10 height=10 fill='#d62728'/><text x=" + (L + pw - 182) + " y=16>fails (1 % test)</text>" +
+       "<rect x=" + (L + pw - 84) + " y=7 width=10 height=10 fill='#1f77b4'/><text x=" + (L + pw - 70) + " y=16>within noise</text>";
+  // Ratio axis: a gridline and label per decade (every k-th past 8 decades), minor gridlines at 2..9 up to 4 decades.
+  const e0 = Math.round(Math.log10(y0)), e1 = Math.round(Math.log10(y1)), k = Math.max(1, Math.ceil((e1 - e0) / 8));
+  for (let e = e0; e <= e1; e++) {
+    const v = Math.pow(10, e), y = px(Y(v));
+    if (e1 - e0 <= 4 && e < e1) for (let m = 2; m <= 9; m++) s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + px(Y(m * v)) + " y2=" + px(Y(m * v)) + " stroke='#f0f0f0'/>";
+    if ((e - e0) % k) continue;
+    s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + y + " y2=" + y + " stroke='#ddd'/>";
+    s += "<text x=" + (L - 6) + " y=" + y + " dy=4 text-anchor=end>" + logTick(v) + "</text>";
   }
-  return h + "</table>";
+  // Frequency axis: 1-2-5 ticks (the ends if fewer than two fall inside).
+  let xt = [];
+  for (let e = Math.floor(Math.log10(f0)); e <= Math.ceil(Math.log10(f1)); e++)
+    for (const m of [1, 2, 5]) { const v = m * Math.pow(10, e); if (v >= f0 * (1 - 1e-9) && v <= f1 * (1 + 1e-9)) xt.push(v); }
+  if (xt.length < 2) xt = [f0, f1];
+  for (const v of xt) {
+    const x = px(X(v));
+    s += "<line x1=" + x + " x2=" + x + " y1=" + T + " y2=" + (T + ph) + " stroke='#eee'/><line x1=" + x + " x2=" + x + " y1=" + (T + ph) + " y2=" + (T + ph + 4) + " stroke='#666'/>";
+    s += "<text x=" + x + " y=" + (T + ph + 16) + " text-anchor=middle>" + logTick(v) + "</text>";
+  }
+  // One bar per band from the axis up to its ratio, the ratio written above it.
+  for (const b of B) {
+    const col = b.significant ? "#d62728" : "#1f77b4", x0 = X(b.lo_hz) + 1, x1 = X(b.hi_hz) - 1, ok = b.ratio > 0 && isFinite(b.ratio);
+    const tip = esc(b.band + ": " + fmt(b.lo_hz) + "–" + fmt(b.hi_hz) + " Hz, residual / noise power " + fmt(b.ratio) + (b.significant ? ", fails" : ""));
+    if (ok) {
+      const yt = Y(b.ratio);
+      s += "<rect x=" + px(x0) + " y=" + px(yt) + " width=" + px(Math.max(1, x1 - x0)) + " height=" + px(T + ph - yt) + " fill='" + col + "' fill-opacity=0.3><title>" + tip + "</title></rect>";
+      s += "<line x1=" + px(x0) + " x2=" + px(x1) + " y1=" + px(yt) + " y2=" + px(yt) + " stroke='" + col + "' stroke-width='2.5'/>";
+      s += "<text x=" + px((x0 + x1) / 2) + " y=" + px(yt - 5) + " text-anchor=middle font-weight=bold stroke='#fff' stroke-width=3 paint-order=stroke fill='" + col + "'>" + esc(fmt(b.ratio)) + "</text>";
+    }
+    if (x1 - x0 > 6.5 * String(b.band).length + 6 && !(ok && Y(b.ratio) > T + ph - 24))  // not under a low bar's figure
+      s += "<text x=" + px((x0 + x1) / 2) + " y=" + (T + ph - 6) + " text-anchor=middle font-size=10 fill='#555'>" + esc(b.band) + "</text>";
+  }
+  // The noise floor: ratio 1, named right of the plot.
+  const yn = px(Y(1));
+  s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + yn + " y2=" + yn + " stroke='#222' stroke-width=1.2 stroke-dasharray='6 4'/>";
+  s += "<text x=" + (L + pw + 5) + " y=" + yn + " dy=4 fill='#222'>noise floor</text>";
+  s += "<rect x=" + L + " y=" + T + " width=" + pw + " height=" + ph + " fill=none stroke='#999'/>";
+  s += "<text x=" + (L + pw / 2) + " y=" + (H - 6) + " text-anchor=middle>frequency [Hz]</text>";
+  s += "<text transform='translate(14 " + (T + ph / 2) + ") rotate(-90)' text-anchor=middle>residual power / noise power</text>";
+  return s + "</svg>";
+}
+// The spectrum per band: the chart and, beside it, its figures; the note when there is no spectrum.
+function bandsTable(c) {
+  if (!c.bands.length) return c.bands_note ? "<p class=note>spectrum: " + esc(c.bands_note) + "</p>" : "";
+  let h = "<table class=bands><tr><th>band</th><th>Hz</th><th>residual /<br>noise power</th><th></th></tr>";
+  for (const b of c.bands)
+    h += "<tr class=" + (b.significant ? "fail" : "ok") + "><td>" + esc(b.band) + "</td><td>" + esc(fmt(b.lo_hz) + "–" + fmt(b.hi_hz)) +
+         "</td><td class=num>" + esc(fmt(b.ratio)) + "</td><td>" + (b.significant ? "fails" : "") + "</td></tr>";
+  return "<div class=spectrum>" + spectrumSvg(c) + h + "</table></div>" + (c.bands_note ? "<p class=note>spectrum: " + esc(c.bands_note) + "</p>" : "");
 }
 function build() {
   const root = document.getElementById("sets");
@@ -192,7 +256,7 @@ function build() {
                             if (!P.length) { rser.push({ label: who + "residual", stroke: col, width: 1, value: (u, v) => fmt(v) });
                                              rarr.push(yg.map((v, i) => v === null ? null : v - pg[i])); }
                             P.forEach(q => { rser.push(dot(who + q.label, col)); rarr.push(q.v.map((v, i) => v === null ? null : v - pg[i])); }); });
-      chart(g, e2, c.channel + " residual (measured − predicted)", unit, rser, rarr, c.windows, 140);
+      chart(g, e2, c.channel + " residual (measured − predicted)", unit, rser, rarr, c.windows, 190);
       const sp = document.createElement("div"); sp.innerHTML = bandsTable(c); plots.appendChild(sp);
     }
     if (set.view) zoomTo(g, set.view[0], set.view[1]);
@@ -219,9 +283,11 @@ if (location.hash === "#selftest") {
                 series: groups.length ? groups[0].charts.map(c => c.u.series.length) : [] };
   if (groups.length && groups[0].charts.length) {
     const g = groups[0], lo = g.full[0] + 0.45 * (g.full[1] - g.full[0]), hi = g.full[0] + 0.55 * (g.full[1] - g.full[0]);
+    const z0 = performance.now();
     zoomTo(g, lo, hi);
     // uPlot applies a scale change in a microtask: read the scales after it.
     queueMicrotask(() => {
+      out.zoom_ms = Math.round(performance.now() - z0);
       out.zoom_ok = g.charts.every(c => Math.abs(c.u.scales.x.min - lo) < 1e-9 * (1 + Math.abs(lo)) && Math.abs(c.u.scales.x.max - hi) < 1e-9 * (1 + Math.abs(hi)));
       out.errors = errors;
       document.getElementById("selftest").textContent = JSON.stringify(out);
@@ -241,7 +307,9 @@ h1 { font-size: 1.3em; } h2 { font-size: 1.1em; margin-top: 1.5em; }
 .nav button { margin-right: 0.3em; } .hint { margin-left: 1em; }
 table { border-collapse: collapse; font-size: 0.85em; } td, th { padding: 2px 6px; border-bottom: 1px solid #ddd; text-align: left; }
 table.windows tr:hover { background: #fde2e2; cursor: pointer; } caption { text-align: left; font-weight: bold; padding: 4px 0; }
-table.bands { margin: 0.4em 0 0.8em; width: 60%; } .bar { height: 8px; background: #1f77b4; } tr.fail .bar { background: #d62728; } tr.fail td { color: #b00; }
+.spectrum { display: flex; flex-wrap: wrap; align-items: center; gap: 0.5em 1em; margin: 0.6em 0 1em; }
+.spectrum svg { max-width: 100%; height: auto; font-family: sans-serif; }
+table.bands td.num { text-align: right; } tr.fail td { color: #b00; }
 )css";
 
 }  // namespace

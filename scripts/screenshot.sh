@@ -6,6 +6,10 @@
 #     bash scripts/screenshot.sh /tmp/dtwin_bench/readme/run/compare.html docs/img/diagnose_readme.png 1400,1600
 #   compare_unknown_car_b.png: `bash scripts/bench_jobs.sh unknown_car`, then
 #     bash scripts/screenshot.sh /tmp/dtwin_bench/unknown_car/compare_b/compare.html docs/img/compare_unknown_car_b.png
+#   compare_stop_and_go.png: `bash scripts/bench_jobs.sh drive_calibrate`, then
+#     build/cli/twin compare --study /tmp/dtwin_bench/drive/study.toml --calibration /tmp/dtwin_bench/drive_calibrate/M1 \
+#       --data /tmp/dtwin_bench/drive/measurements.csv --out /tmp/dtwin_bench/drive_calibrate/compare
+#     bash scripts/screenshot.sh /tmp/dtwin_bench/drive_calibrate/compare/compare.html docs/img/compare_stop_and_go.png 1400,1250
 set -euo pipefail
 [[ $# -ge 2 ]] || { echo "usage: screenshot.sh PAGE.html OUT.png [WIDTH,HEIGHT]" >&2; exit 2; }
 page=$1 out=$2 size=${3:-1400,1500}

@@ -76,7 +76,7 @@ TEST(Compare, ModelDataAreCoveredAndShowNoLackOfFit) {
 // A logger's clock: one repetition at 100 Hz with up to ±2 ms of jitter, so no time is on the
 // 1 kHz output grid. Data made by the model at their own times are covered and show no lack of
 // fit; the same values stamped 20 ms late (a clock offset of two samples, on a bump) are flagged.
-// The spectrum is still drawn, with a note on the jitter.
+// The spectrum is still drawn, with a note on the jitter; across a gap, on the longest stretch.
 TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
   const Study s = loadStudy(kDemo);
   std::mt19937_64 rng(5);
@@ -111,16 +111,32 @@ TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
   const auto bad = compareModel(obj_nominal, {nominal}, {truthOf(s)}, estimateChannelNoise(s, {nominal}));
   EXPECT_LT(bad.lack_of_fit_p, 1e-6) << "z = " << bad.lack_of_fit_z;
 
-  // A gap of 0.2 s in the log: compared all the same, but no spectrum (and the note says why).
-  calib::DataSet gap = at_own;
-  auto& recs = gap.data.records;
-  recs.erase(std::remove_if(recs.begin(), recs.end(), [](const LabRecord& r) { return r.time_s > 1.0 && r.time_s < 1.2; }),
-             recs.end());
-  calib::LabObjective obj_gap(s, s.assemblies().front(), {gap}, {});
-  const auto g = compareModel(obj_gap, {gap}, {truthOf(s)}, estimateChannelNoise(s, {gap}));
+  // A gap of 0.2 s in the log: compared all the same; the spectrum is the longest stretch's,
+  // 1.2 s to the end (about 159 of 259 times), and the note says so.
+  const auto without = [&](std::vector<std::pair<double, double>> holes) {
+    calib::DataSet gap = at_own;
+    auto& recs = gap.data.records;
+    recs.erase(std::remove_if(recs.begin(), recs.end(),
+                              [&](const LabRecord& r) {
+                                for (const auto& [a, b] : holes)
+                                  if (r.time_s > a && r.time_s < b) return true;
+                                return false;
+                              }),
+               recs.end());
+    calib::LabObjective obj_gap(s, s.assemblies().front(), {gap}, {});
+    return compareModel(obj_gap, {gap}, {truthOf(s)}, estimateChannelNoise(s, {gap}));
+  };
+  const auto g = without({{1.0, 1.2}});
   for (const auto& x : g.series) {
+    EXPECT_FALSE(x.bands.empty()) << x.channel;
+    EXPECT_NE(x.bands_note.find("longest stretch between gaps, 1.2"), std::string::npos) << x.bands_note;
+    EXPECT_NE(x.bands_note.find("jitter"), std::string::npos) << x.bands_note;
+  }
+  // Gaps every 0.6 s: no stretch holds 64 times, so no spectrum (and the note says why).
+  const auto h = without({{0.6, 0.7}, {1.2, 1.3}, {1.8, 1.9}, {2.4, 2.5}});
+  for (const auto& x : h.series) {
     EXPECT_TRUE(x.bands.empty()) << x.channel;
-    EXPECT_NE(x.bands_note.find("non-uniform time base"), std::string::npos) << x.bands_note;
+    EXPECT_NE(x.bands_note.find("no stretch between gaps holds 64 times"), std::string::npos) << x.bands_note;
   }
 }
 

@@ -230,7 +230,7 @@ function build() {
     plots.appendChild(nav);
     for (const c of set.channels) {
       // A gap (masked rows, a dropout) breaks the lines: a null row where a step exceeds 5 times the median.
-      const steps = c.t.slice(1).map((v, i) => v - c.t[i]).sort((a, b) => a - b), gapAt = 5 * (steps[steps.length >> 1] || Infinity);
+      const steps = c.t.slice(1).map((v, i) => v - c.t[i]).sort((a, b) => a - b), gapAt = set.no_gaps ? Infinity : 5 * (steps[steps.length >> 1] || Infinity);
       const withGaps = s => { const o = []; for (let i = 0; i < c.t.length; i++) { if (i > 0 && c.t[i] - c.t[i - 1] > gapAt) o.push(null); o.push(s[i]); } return o; };
       const tg = []; for (let i = 0; i < c.t.length; i++) { if (i > 0 && c.t[i] - c.t[i - 1] > gapAt) tg.push(0.5 * (c.t[i] + c.t[i - 1])); tg.push(c.t[i]); }
       const yg = withGaps(c.y), unit = units[c.unit] || c.unit, M = c.models, last = M[M.length - 1];

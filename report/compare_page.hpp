@@ -35,7 +35,7 @@ std::string comparePage(const nlohmann::json& compare, const std::string& title)
 /// "channels": [{"channel", "unit", "t", "y" (measured, null where none), optionally "points"
 /// ([{"label", "v"}]: measured values drawn as points, aligned with t, null elsewhere: the lab's
 /// repetitions), "models": [{"label", "p", "lo", "hi", "fit", "rms", "coverage"}], "windows",
-/// "bands", "bands_note"}], optionally "view": [t0, t1] (the first view)}], optionally "windows_of",
+/// "bands", "bands_note"}], optionally "view": [t0, t1] (the first view) and "no_gaps" (true: a long step is no gap)}], optionally "windows_of",
 /// "no_windows" (true: no window table) and "whole" (the whole-record button's text)}.
 /// `note` is the sentence under the title. comparePage builds this from comparisons;
 /// report/lab_page.hpp from a study's lab bands.

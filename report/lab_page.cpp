@@ -18,48 +18,67 @@ std::string unitOf(const Study& study, const std::string& name) {
   return "";
 }
 
-/// One channel of the page: the grid of `grid` (the first assembly's dense band of it), the
-/// repetitions as points, and every assembly's median and band.
+/// One channel of the page: the grid of `grid` (the first assembly's dense band of it) with every
+/// lab record at its time (a repetition after the first a nanosecond-scale step later, so that
+/// one series holds them all), the records as points, and every assembly's median and band.
 nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBand& grid) {
-  const std::size_t n = grid.times.size();
-  std::map<double, std::size_t> at;
-  for (std::size_t i = 0; i < n; ++i) at.emplace(grid.times[i], i);
-  std::map<long, std::vector<nlohmann::json>> reps;
-  for (const auto& r : bands.lab.records) {
-    if (r.channel != grid.channel) continue;
-    auto& v = reps[r.repetition];
-    if (v.empty()) v.assign(n, nlohmann::json());
-    const auto it = at.find(r.time_s);
-    if (it != at.end()) v[it->second] = r.value;
+  std::map<double, std::vector<double>> at_time;  // lab time -> the values of its repetitions, in file order
+  long repetitions = 0;
+  for (const auto& r : bands.lab.records)
+    if (r.channel == grid.channel) {
+      at_time[r.time_s].push_back(r.value);
+      repetitions = std::max(repetitions, r.repetition);
+    }
+  std::vector<double> t;
+  std::vector<std::size_t> src;  // per entry: its grid row
+  nlohmann::json v = nlohmann::json::array();
+  for (std::size_t i = 0; i < grid.times.size(); ++i) {
+    const auto it = at_time.find(grid.times[i]);
+    if (it == at_time.end()) {
+      t.push_back(grid.times[i]);
+      src.push_back(i);
+      v.push_back(nullptr);
+      continue;
+    }
+    const double step = 1e-9 * std::max(1.0, std::abs(grid.times[i]));
+    for (std::size_t k = 0; k < it->second.size(); ++k) {
+      t.push_back(grid.times[i] + static_cast<double>(k) * step);
+      src.push_back(i);
+      v.push_back(it->second[k]);
+    }
   }
   nlohmann::json c{{"channel", grid.channel},
                    {"unit", unitOf(bands.study, grid.channel)},
-                   {"t", grid.times},
+                   {"t", t},
                    {"y", nlohmann::json::array()},
-                   {"points", nlohmann::json::array()},
+                   {"points", nlohmann::json::array({{{"label", "lab data (" + std::to_string(repetitions) + " repetitions)"}, {"v", v}}})},
                    {"models", nlohmann::json::array()},
                    {"windows", nlohmann::json::array()},
                    {"bands", nlohmann::json::array()},
                    {"bands_note", "the lab scenario's points are too few and uneven for a spectrum"}};
-  for (auto& [rep, v] : reps) c["points"].push_back({{"label", "repetition " + std::to_string(rep)}, {"v", v}});
   for (const auto& ab : bands.assemblies) {
     const study::ChannelBand* d = nullptr;
     for (const auto& b : ab.dense)
       if (b.channel == grid.channel && b.times == grid.times) d = &b;
     if (!d) continue;
+    nlohmann::json p = nlohmann::json::array(), lo = nlohmann::json::array(), hi = nlohmann::json::array();
     double ss = 0.0;
     long count = 0, inside = 0;
-    for (const auto& r : bands.lab.records) {
-      if (r.channel != grid.channel || !at.count(r.time_s)) continue;
-      const std::size_t i = at.at(r.time_s);
-      ss += (r.value - d->med[i]) * (r.value - d->med[i]);
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      const std::size_t i = src[j];
+      p.push_back(d->med[i]);
+      lo.push_back(d->plo[i]);
+      hi.push_back(d->phi[i]);
+      if (v[j].is_null()) continue;
+      const double y = v[j].get<double>();
+      ss += (y - d->med[i]) * (y - d->med[i]);
       ++count;
-      inside += r.value >= d->plo[i] && r.value <= d->phi[i] ? 1 : 0;
+      inside += y >= d->plo[i] && y <= d->phi[i] ? 1 : 0;
     }
     c["models"].push_back({{"label", ab.assembly.id + " (" + ab.assembly.label() + ")"},
-                           {"p", d->med},
-                           {"lo", d->plo},
-                           {"hi", d->phi},
+                           {"p", p},
+                           {"lo", lo},
+                           {"hi", hi},
                            {"fit", nullptr},
                            {"rms", count ? std::sqrt(ss / static_cast<double>(count)) : 0.0},
                            {"coverage", count ? static_cast<double>(inside) / static_cast<double>(count) : 0.0}});
@@ -74,7 +93,8 @@ nlohmann::json labPageData(const study::LabBands& bands, const std::string& titl
   for (const auto& ab : bands.assemblies)
     if (!ab.dense.empty() && !first) first = &ab;
   if (!first) throw InputError("lab page", "no assembly has a predictive band (every posterior draw failed to simulate)");
-  nlohmann::json set{{"name", "lab data"}, {"scenario", "lab"}, {"channels", nlohmann::json::array()}};
+  // The grid is finer where the lab measured: its coarser steps are no gaps.
+  nlohmann::json set{{"name", "lab data"}, {"scenario", "lab"}, {"channels", nlohmann::json::array()}, {"no_gaps", true}};
   for (const auto& grid : first->dense) set["channels"].push_back(channelData(bands, grid));
   // The first view: from a little before the first lab time to the last (the static report's).
   double t0 = INFINITY, t1 = -INFINITY;

@@ -13,7 +13,8 @@
 namespace dtwin::report {
 
 /// What the page draws (the data of timeSeriesPage, report/compare_page.hpp): one set, the lab
-/// scenario; per channel the dense grid's times, one point series per repetition (null off the
+/// scenario; per channel the dense grid's times with every lab record at its time (a repetition
+/// after the first a nanosecond-scale step later), one point series of the records (null off the
 /// lab times), and per assembly with a band its median ("p"), predictive band ("lo", "hi"), the
 /// RMS of the lab points about the median and the share of them inside the band ("coverage").
 /// InputError when no assembly has a band (every draw failed).

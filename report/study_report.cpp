@@ -77,8 +77,8 @@ struct ReportPage {
   std::vector<std::string> warnings;
   ReportPage(const std::string& gnuplot_exe, std::vector<std::string> first_warnings)
       : gp(gnuplot_exe), warnings(std::move(first_warnings)) {}
-  void figure(const std::string& svg, const std::string& caption) {
-    body << "<figure>\n" << svg << "\n<figcaption>" << caption << "</figcaption>\n</figure>\n";
+  void figure(const std::string& svg, const std::string& caption, const std::string& id = "") {
+    body << (id.empty() ? std::string("<figure>\n") : "<figure id=\"" + htmlEscape(id) + "\">\n") << svg << "\n<figcaption>" << caption << "</figcaption>\n</figure>\n";
   }
 };
 
@@ -275,7 +275,8 @@ void posteriorFigure(ReportPage& pg, const study::AssemblyBands& ab, const Study
                        std::string(region ? ", the calibration's joint region projected (grey outline)" : "") +
                        ", the optimum (black ×), the truth when known (red +) and the box of the two profile-likelihood 95 % "
                        "intervals (dotted green); on the diagonal each value's density; above it the posterior correlation ρ "
-                       "(red when |ρ| > 0.7: a ridge along which the data cannot tell the two apart)."));
+                       "(red when |ρ| > 0.7: a ridge along which the data cannot tell the two apart)."),
+            "pairs-" + a.id);
   pg.plots.push_back({{"name", "pairs_" + a.id}, {"kind", "pair_plot"}, {"assembly", a.id}});
 }
 

@@ -107,10 +107,19 @@ TEST(LabPage, EveryRepetitionAtItsTimeAndTheBandsCoverage) {
   b.assemblies.push_back(a);
   const auto data = labPageData(b, "lab view");
   const auto& c = data["sets"][0]["channels"][0];
-  ASSERT_EQ(c["points"].size(), 2u);
-  EXPECT_EQ(c["points"][0]["v"][2], 51.0);  // repetition 1 at t = 0.5
-  EXPECT_TRUE(c["points"][0]["v"][1].is_null());
-  EXPECT_EQ(c["points"][1]["v"][4], 130.0);
+  // One series of points: the grid's 5 times, and repetition 2 a step after each of the 2 lab times.
+  ASSERT_EQ(c["points"].size(), 1u);
+  EXPECT_EQ(c["points"][0]["label"], "lab data (2 repetitions)");
+  const auto& v = c["points"][0]["v"];
+  ASSERT_EQ(c["t"].size(), 7u);
+  ASSERT_EQ(v.size(), 7u);
+  EXPECT_EQ(v[2], 51.0);  // repetition 1 at t = 0.5
+  EXPECT_EQ(v[3], 80.0);  // repetition 2 just after
+  EXPECT_GT(c["t"][3].get<double>(), 0.5);
+  EXPECT_LT(c["t"][3].get<double>(), 0.5 + 1e-6);
+  EXPECT_TRUE(v[1].is_null());
+  EXPECT_EQ(v[6], 130.0);
+  EXPECT_EQ(c["models"][0]["p"][3], 50.0);  // the model at the repeated time is its value at 0.5
   ASSERT_EQ(c["models"].size(), 1u);
   EXPECT_DOUBLE_EQ(c["models"][0]["coverage"].get<double>(), 0.5);  // repetition 1 inside (±1), 2 outside (30 > 10)
   EXPECT_NEAR(c["models"][0]["rms"].get<double>(), std::sqrt((1.0 + 1.0 + 900.0 + 900.0) / 4.0), 1e-12);

@@ -107,6 +107,12 @@ std::vector<Channel> measurableChannels(const std::vector<SensorSpec>& sensors) 
   return out;
 }
 
+std::string channelUnit(const std::vector<Channel>& known, const std::string& name) {
+  for (const auto& c : known)
+    if (c.name == name) return c.unit;
+  return "";
+}
+
 std::string checkChannelName(const std::string& channel, const std::vector<Channel>& known) {
   for (const auto& k : known)
     if (k.name == channel) return {};

@@ -36,6 +36,9 @@ struct LabData {
 /// channels of `sensors` (a study's [sensors]).
 std::vector<Channel> measurableChannels();
 std::vector<Channel> measurableChannels(const std::vector<SensorSpec>& sensors);
+/// The unit of channel `name` among `known` (e.g. measurableChannels(study.sensors)); "" when it
+/// is none of them.
+std::string channelUnit(const std::vector<Channel>& known, const std::string& name);
 
 /// The header of the lab layout.
 inline constexpr const char* kLabHeader = "repetition,time_s,channel,value";

@@ -11,14 +11,7 @@ namespace dtwin::report {
 
 namespace {
 
-/// The unit of channel `name` among the study's measurable channels ("" when unknown).
-std::string unitOf(const Study& study, const std::string& name) {
-  for (const auto& c : measurableChannels(study.sensors))
-    if (c.name == name) return c.unit;
-  return "";
-}
-
-/// One channel of the page: the grid of `grid` (the first assembly's dense band of it) with every
+/// One channel of the page: the grid of `grid` (the first assembly's band of it) with every
 /// lab record at its time (a repetition after the first a nanosecond-scale step later, so that
 /// one series holds them all), the records as points, and every assembly's median and band.
 nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBand& grid) {
@@ -48,7 +41,7 @@ nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBan
     }
   }
   nlohmann::json c{{"channel", grid.channel},
-                   {"unit", unitOf(bands.study, grid.channel)},
+                   {"unit", channelUnit(measurableChannels(bands.study.sensors), grid.channel)},
                    {"t", t},
                    {"y", nlohmann::json::array()},
                    {"points", nlohmann::json::array({{{"label", "lab data (" + std::to_string(repetitions) + " repetitions)"}, {"v", v}}})},
@@ -58,7 +51,7 @@ nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBan
                    {"bands_note", "the lab scenario's points are too few and uneven for a spectrum"}};
   for (const auto& ab : bands.assemblies) {
     const study::ChannelBand* d = nullptr;
-    for (const auto& b : ab.dense)
+    for (const auto& b : ab.channels)
       if (b.channel == grid.channel && b.times == grid.times) d = &b;
     if (!d) continue;
     nlohmann::json p = nlohmann::json::array(), lo = nlohmann::json::array(), hi = nlohmann::json::array();
@@ -91,11 +84,11 @@ nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBan
 nlohmann::json labPageData(const study::LabBands& bands, const std::string& title) {
   const study::AssemblyBands* first = nullptr;
   for (const auto& ab : bands.assemblies)
-    if (!ab.dense.empty() && !first) first = &ab;
+    if (!ab.channels.empty() && !first) first = &ab;
   if (!first) throw InputError("lab page", "no assembly has a predictive band (every posterior draw failed to simulate)");
   // The grid is finer where the lab measured: its coarser steps are no gaps.
   nlohmann::json set{{"name", "lab data"}, {"scenario", "lab"}, {"channels", nlohmann::json::array()}, {"no_gaps", true}};
-  for (const auto& grid : first->dense) set["channels"].push_back(channelData(bands, grid));
+  for (const auto& grid : first->channels) set["channels"].push_back(channelData(bands, grid));
   // The first view: from a little before the first lab time to the last (the static report's).
   double t0 = INFINITY, t1 = -INFINITY;
   for (const auto& r : bands.lab.records) {

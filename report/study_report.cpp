@@ -97,20 +97,12 @@ StudyFiles readStudyFiles(const fs::path& dir) {
   return f;
 }
 
-/// The unit of channel `name` (measurableChannels of the study's sensors), "" when unknown.
-std::string channelUnit(const Study& study, const std::string& name) {
-  for (const auto& c : measurableChannels(study.sensors))
-    if (c.name == name) return c.unit;
-  return "";
-}
-
-/// One figure of section 1: the lab data of channel `c` against the assembly's predictive band,
-/// drawn through the lab scenario on the dense grid, and the same relative to the median
+/// One figure of section 1: the lab data of channel `g.channel` against the assembly's predictive
+/// band, drawn through the lab scenario on the dense grid, and the same relative to the median
 /// prediction (the lab points against the median at their times).
-void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t c, const LabData& lab, const std::string& unit) {
+void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, const study::ChannelBand& g, const LabData& lab,
+                    const std::string& unit) {
   const auto& a = ab.assembly;
-  const study::ChannelBand& p = ab.channels[c];
-  const study::ChannelBand& g = ab.dense.size() > c ? ab.dense[c] : p;
   std::ostringstream band, pts;
   double ylo = INFINITY, yhi = -INFINITY, rlo = INFINITY, rhi = -INFINITY;
   const auto span = [](double& lo, double& hi, double v) {
@@ -121,7 +113,7 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t 
   // after the car has settled) to the last; the y ranges are those of what is in view.
   double t_end = 0.0, t_first = INFINITY;
   for (const auto& r : lab.records)
-    if (r.channel == p.channel) {
+    if (r.channel == g.channel) {
       t_first = std::min(t_first, r.time_s);
       t_end = std::max(t_end, r.time_s);
     }
@@ -136,19 +128,20 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t 
     span(rlo, rhi, g.phi[i] - g.med[i]);
   }
   for (const auto& r : lab.records) {
-    if (r.channel != p.channel) continue;
-    const std::size_t i = static_cast<std::size_t>(std::find(p.times.begin(), p.times.end(), r.time_s) - p.times.begin());
-    pts << full(r.time_s) << ' ' << full(r.value) << ' ' << full(r.value - p.med[i]) << '\n';
+    if (r.channel != g.channel) continue;
+    const std::size_t i = g.at(r.time_s);  // the grid holds every lab time
+    DTWIN_CHECK(i < g.times.size(), "lab time " + std::to_string(r.time_s) + " is not on the band's grid");
+    pts << full(r.time_s) << ' ' << full(r.value) << ' ' << full(r.value - g.med[i]) << '\n';
     span(ylo, yhi, r.value);
-    span(rlo, rhi, r.value - p.med[i]);
+    span(rlo, rhi, r.value - g.med[i]);
   }
   padRange(ylo, yhi, 0.05);
   padRange(rlo, rhi, 0.05);
   const std::string fb = pg.gp.data(band.str()), fp = pg.gp.data(pts.str());
-  const std::string title = a.id + " (" + a.label() + "): " + p.channel;
+  const std::string title = a.id + " (" + a.label() + "): " + g.channel;
   std::ostringstream s;
   s << "set multiplot layout 2,1 title " << gq(title) << " noenhanced\n"
-    << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(axisLabel(p.channel, unit)) << " noenhanced\n"
+    << "set grid\nset key below horizontal\nset xlabel 'time [s]'\nset ylabel " << gq(axisLabel(g.channel, unit)) << " noenhanced\n"
     << gnuplotTics("x", x0, t_end, 8)
     << gnuplotTics("y", ylo, yhi, 6) << "set style fill transparent solid 0.25 noborder\n"
     << "plot " << fb << " using 1:5:6 with filledcurves lc rgb '#7fa7d8' title 'predictive 95 % (with noise)', "
@@ -160,14 +153,14 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, std::size_t 
     << fb << " using 1:($2-$3):($4-$3) with filledcurves lc rgb '#1f5fbf' title 'η(θ) 95 %', "
     << fb << " using 1:($3-$3) with lines lc rgb '#103070' title 'median η(θ)', "
     << fp << " using 1:3 with points pt 7 ps 0.5 lc rgb '#c03020' title 'lab data'\n";
-  const std::string name = "predictive_" + a.id + "_" + p.channel;
+  const std::string name = "predictive_" + a.id + "_" + g.channel;
   pg.figure(pg.gp.plot(s.str(), 900, 600, title),
             htmlEscape(a.id + ": " + std::to_string(ab.drawn - ab.failures) + " of " + std::to_string(ab.drawn) +
                        " draws simulated; the band drawn on " + std::to_string(g.times.size()) +
                        " times through the lab scenario (shown from just before the first lab time; the interactive view has it "
                        "all); noise sd 1/√τ = " + num(ab.noise_sd, 4) + " " + unit +
                        " (posterior median over the draws)."));
-  pg.plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", p.channel}});
+  pg.plots.push_back({{"name", name}, {"kind", "predictive"}, {"assembly", a.id}, {"channel", g.channel}});
 }
 
 /// Section 1: the lab data against every assembly's posterior predictive bands.
@@ -185,9 +178,9 @@ void predictiveSection(ReportPage& pg, const study::LabBands& bands, const std::
   if (!lab_link.empty())
     pg.body << "<p>Interactive view (zoom, pan, one cursor across the channels): <a href=\"" << htmlEscape(lab_link) << "\">"
             << htmlEscape(lab_link) << "</a>.</p>\n";
+  const std::vector<Channel> known = measurableChannels(bands.study.sensors);
   for (const auto& ab : bands.assemblies)
-    for (std::size_t c = 0; c < ab.channels.size(); ++c)
-      predictivePlot(pg, ab, c, bands.lab, channelUnit(bands.study, ab.channels[c].channel));
+    for (const auto& g : ab.channels) predictivePlot(pg, ab, g, bands.lab, channelUnit(known, g.channel));
 }
 
 /// The marks of calibrated value `name` (its summary.json entry `entry`, nullptr for τ or when

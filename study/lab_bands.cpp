@@ -87,13 +87,12 @@ LabData denseGrid(const LabData& lab, int points) {
 }
 
 /// The bands of one assembly from its predictions on the dense data (rows that failed are empty
-/// vectors); `lab_at[i]`: lab record i's record in `dense`.
-void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std::vector<std::vector<double>>& dense_preds,
-               const LabData& lab, const LabData& dense, const std::vector<std::size_t>& lab_at,
-               std::vector<std::string>& warnings) {
+/// vectors).
+void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std::vector<std::vector<double>>& preds,
+               const LabData& dense, std::vector<std::string>& warnings) {
   std::vector<std::size_t> ok;
   for (std::size_t k = 0; k < rows.size(); ++k)
-    if (dense_preds[k].size() == dense.records.size()) ok.push_back(k);
+    if (preds[k].size() == dense.records.size()) ok.push_back(k);
   a.drawn = rows.size();
   a.failures = rows.size() - ok.size();
   if (ok.empty()) {
@@ -105,14 +104,15 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
   std::vector<double> sd_sorted = sd;
   std::sort(sd_sorted.begin(), sd_sorted.end());
   a.noise_sd = quantileSorted(sd_sorted, 0.5);
-  std::vector<std::vector<double>> lab_preds(dense_preds.size());
-  for (std::size_t k : ok)
-    for (std::size_t i = 0; i < lab.records.size(); ++i) lab_preds[k].push_back(dense_preds[k][lab_at[i]]);
-  a.channels = bandsOf(lab, lab_preds, ok, sd);
-  a.dense = bandsOf(dense, dense_preds, ok, sd);
+  a.channels = bandsOf(dense, preds, ok, sd);
 }
 
 }  // namespace
+
+std::size_t ChannelBand::at(double t) const {
+  const auto it = std::lower_bound(times.begin(), times.end(), t);
+  return it != times.end() && *it == t ? static_cast<std::size_t>(it - times.begin()) : times.size();
+}
 
 void LabBandOptions::validate() const {
   const OptionCheck check("lab_bands");
@@ -158,13 +158,6 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
   out.lab = readLabCsv(out.lab_path, measurableChannels(out.study.sensors));
   // One set of runs predicts the lab times and the dense grid: the lab times are in the grid.
   const LabData dense = denseGrid(out.lab, options.grid_points);
-  std::vector<std::size_t> lab_at;
-  {
-    std::map<std::pair<std::string, double>, std::size_t> at;
-    for (std::size_t i = 0; i < dense.records.size(); ++i) at.emplace(std::make_pair(dense.records[i].channel, dense.records[i].time_s), i);
-    for (const auto& r : out.lab.records) lab_at.push_back(at.at({r.channel, r.time_s}));
-  }
-
   std::vector<std::unique_ptr<calib::LabObjective>> objectives;
   std::vector<std::vector<std::size_t>> rows;
   for (const auto& spec : out.study.assemblies()) {
@@ -197,7 +190,7 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
     }
   });
   for (std::size_t m = 0; m < out.assemblies.size(); ++m)
-    summarise(out.assemblies[m], rows[m], preds[m], out.lab, dense, lab_at, out.warnings);
+    summarise(out.assemblies[m], rows[m], preds[m], dense, out.warnings);
   return out;
 }
 

@@ -1,12 +1,12 @@
 #pragma once
-// The posterior predictive at the lab times of a study folder (written by `twin study`): for each
-// calibrated assembly, `draws` evenly spaced rows of calibration/<id>/posterior.csv (rows
-// ⌊(k + ½)·S / draws⌋, k = 0 … draws − 1) are simulated on the study's lab scenario and
-// predicted at the lab times; the band is the 2.5 / 50 / 97.5 % quantiles of the predictions
-// η(θ) and, with the measurement noise N(0, 1/τ) of each draw, the 2.5 / 97.5 % quantiles of the
-// posterior predictive (an equal-weight normal mixture). The same runs also give the band on a
-// dense grid of times through the lab scenario (the continuous response between the lab times). This is the one simulation the study
-// report needs; it lives here so that report/ only draws (report/study_report.hpp).
+// The posterior predictive through the lab scenario of a study folder (written by `twin study`):
+// for each calibrated assembly, `draws` evenly spaced rows of calibration/<id>/posterior.csv (rows
+// ⌊(k + ½)·S / draws⌋, k = 0 … draws − 1) are simulated on the study's lab scenario and predicted
+// on a dense grid of times that holds every lab time; the band is the 2.5 / 50 / 97.5 % quantiles
+// of the predictions η(θ) and, with the measurement noise N(0, 1/τ) of each draw, the 2.5 / 97.5 %
+// quantiles of the posterior predictive (an equal-weight normal mixture). This is the one
+// simulation the study report needs; it lives here so that report/ only draws
+// (report/study_report.hpp).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -21,19 +21,22 @@ struct LabBandOptions {
   int draws = 50;   ///< posterior rows per assembly (>= 2)
   int threads = 0;  ///< simulations in parallel (0: all cores; never changes the numbers)
   /// Evenly spaced times from 0 to the last lab time, and as many from the first lab time to the
-  /// last, at which the continuous response is also predicted (AssemblyBands::dense; >= 2). The
-  /// same runs give both: no extra simulation.
+  /// last, at which the response is predicted besides the lab times (AssemblyBands::channels;
+  /// >= 2). The same runs give both: no extra simulation.
   int grid_points = 400;
   /// InputError whose where() is "lab_bands.<field>" (common/validate.hpp) when out of range.
   void validate() const;
 };
 
-/// One channel's band at its distinct lab times.
+/// One channel's band on the dense grid through the lab scenario.
 struct ChannelBand {
   std::string channel;
-  std::vector<double> times;                 ///< distinct lab times of the channel, in file order
+  std::vector<double> times;                 ///< the grid, ascending: holds every lab time of the channel exactly
   std::vector<double> lo, med, hi;           ///< 2.5 / 50 / 97.5 % of η(θ)
   std::vector<double> plo, phi;              ///< 2.5 / 97.5 % of the posterior predictive (with noise)
+  /// The row of time `t` (a lab time of the channel: the grid holds it exactly); times.size()
+  /// when the grid does not hold it.
+  std::size_t at(double t) const;
 };
 
 /// One assembly's posterior and its bands.
@@ -43,10 +46,10 @@ struct AssemblyBands {
   std::size_t drawn = 0;                     ///< rows simulated
   std::size_t failures = 0;                  ///< of which failed to simulate
   double noise_sd = 0.0;                     ///< median of 1/√τ over the rows that simulated (0 when none)
-  std::vector<ChannelBand> channels;         ///< at the lab times; empty when every row failed
-  /// The same channels on a dense grid through the lab scenario (the grid's times and the lab
-  /// times, merged): the continuous response the report draws; empty when every row failed.
-  std::vector<ChannelBand> dense;
+  /// Per lab channel, the band on a dense grid through the lab scenario (the grid's times and the
+  /// lab times, merged): the continuous response the report draws, and the band at each lab
+  /// time (ChannelBand::at). Empty when every row failed.
+  std::vector<ChannelBand> channels;
 };
 
 /// What a study folder holds for its report, with the predictive bands computed.

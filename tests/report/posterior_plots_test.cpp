@@ -103,7 +103,7 @@ TEST(LabPage, EveryRepetitionAtItsTimeAndTheBandsCoverage) {
     g.plo.push_back(t * 100.0 - 10.0);
     g.phi.push_back(t * 100.0 + 10.0);
   }
-  a.dense = {g};
+  a.channels = {g};
   b.assemblies.push_back(a);
   const auto data = labPageData(b, "lab view");
   const auto& c = data["sets"][0]["channels"][0];
@@ -124,6 +124,6 @@ TEST(LabPage, EveryRepetitionAtItsTimeAndTheBandsCoverage) {
   EXPECT_DOUBLE_EQ(c["models"][0]["coverage"].get<double>(), 0.5);  // repetition 1 inside (±1), 2 outside (30 > 10)
   EXPECT_NEAR(c["models"][0]["rms"].get<double>(), std::sqrt((1.0 + 1.0 + 900.0 + 900.0) / 4.0), 1e-12);
   EXPECT_TRUE(data["no_windows"].get<bool>());
-  b.assemblies[0].dense.clear();
+  b.assemblies[0].channels.clear();
   EXPECT_THROW(labPageData(b, "x"), InputError);
 }

@@ -12,6 +12,7 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <tuple>
 
 #include "calibration/correlated.hpp"
 #include "calibration/design_journal.hpp"
@@ -79,6 +80,8 @@ nlohmann::json CalibrationSetup::toJson() const {
   if (!freed.empty()) j["freed"] = freed;
   for (const auto& m : sensor_models)
     j["sensor_models"].push_back({{"name", m.name}, {"kind", m.kind}, {"channels", m.channels}});
+  for (const auto& [sub, opt] : options) j["options"].push_back({{"subsystem", sub}, {"option", opt}});
+  for (const auto& [name, b] : bounds) j["bounds"][name] = {b.first, b.second};
   return j;
 }
 
@@ -112,6 +115,10 @@ CalibrationSetup CalibrationSetup::fromJson(const nlohmann::json& j) {
     for (const auto& m : j.at("sensor_models"))
       s.sensor_models.push_back(
           {m.at("name").get<std::string>(), m.at("kind").get<std::string>(), m.at("channels").get<std::vector<std::string>>()});
+  if (j.contains("options"))
+    for (const auto& o : j.at("options")) s.options.push_back({o.at("subsystem").get<std::string>(), o.at("option").get<std::string>()});
+  if (j.contains("bounds"))
+    for (const auto& [k, v] : j.at("bounds").items()) s.bounds[k] = {v.at(0).get<double>(), v.at(1).get<double>()};
   return s;
 }
 
@@ -129,6 +136,11 @@ LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, con
     : pool_(std::make_unique<Pool>()) {
   AssemblySpec spec = assembly;
   spec.freed.insert(spec.freed.end(), setup.freed.begin(), setup.freed.end());
+  for (const auto& [sub, opt] : setup.options) {
+    const auto it = std::find_if(spec.options.begin(), spec.options.end(), [&](const auto& o) { return o.first == sub; });
+    if (it == spec.options.end()) throw InputError("calibration setup", "assembly " + assembly.id + " has no subsystem '" + sub + "'");
+    it->second = opt;
+  }
   model_ = study.makeModel(spec, setup.extra_effects);
   if (study.calibrated.empty()) throw InputError(study.path + ": calibrated", "the study names no calibrated parameters");
   if (data.empty()) throw InputError("calibration", "no data sets given");
@@ -149,17 +161,23 @@ LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, con
   };
   auto add = [&](const CalibratedParameter& c, const std::string& where) {
     const auto sensor_model = sensorModelOf(c.name, where);
+    if (!sensor_model && model_->lacksOptionParameter(c.name)) {  // e.g. tire.stiffness of an assembly whose road enters at the hub
+      left_out_.push_back(c.name);
+      return;
+    }
     const int slot = sensor_model ? -1 : model_->slot(c.name);
     if (!sensor_model && slot < 0)
       throw InputError(where, "'" + c.name + "' is not a parameter of assembly " + assembly.id + " (" +
                                   model_->assembly().label() + ")");
     if (std::find(names_.begin(), names_.end(), c.name) != names_.end())
       throw InputError(where, "'" + c.name + "' is calibrated twice");
-    if (!(c.lower < c.upper)) throw InputError(where, "'" + c.name + "' needs lower < upper");
+    double lower = c.lower, upper = c.upper;
+    if (const auto b = setup.bounds.find(c.name); b != setup.bounds.end()) std::tie(lower, upper) = b->second;
+    if (!(lower < upper)) throw InputError(where, "'" + c.name + "' needs lower < upper");
     if (sensor_model) sensor_models_.push_back(*sensor_model);
     names_.push_back(c.name);
-    lower_.push_back(c.lower);
-    upper_.push_back(c.upper);
+    lower_.push_back(lower);
+    upper_.push_back(upper);
     truths_.push_back(c.truth);
     slots_.push_back(slot);
   };
@@ -951,6 +969,16 @@ nlohmann::json CalibrationResult::toJson() const {
     j["parameters"][names[k]] = e;
   }
   j["parameter_order"] = names;
+  j["bounds"] = nlohmann::json::array();
+  for (std::size_t k = 0; k < names.size() && k < lower.size(); ++k) j["bounds"].push_back({lower[k], upper[k]});
+  j["units"] = units;
+  j["bound_findings"] = nlohmann::json::array();
+  for (const auto& f : bounds) j["bound_findings"].push_back(f.toJson());
+  if (!left_out.empty()) {
+    j["left_out"] = left_out;
+    j["left_out_note"] = "calibrated values of the study that this assembly's options do not have (the hub input has no tire "
+                         "stiffness or damping): not calibrated";
+  }
   j["tau"] = {{"mean", posterior.tau.mean},
               {"sd", posterior.tau.sd},
               {"ci95", {posterior.tau.q025, posterior.tau.q975}},
@@ -1039,7 +1067,31 @@ class CalibrationRun {
   CalibrationResult takeOptimum() {
     res_.stage_wall_s.push_back({"total", secondsSince(t_all_)});
     res_.median_run_wall_s = objective_->medianWallSeconds();
+    findBoundFindings();
     return take();
+  }
+  /// res_.bounds from what the stages so far found (the optimum; the intervals and the posterior
+  /// when they exist).
+  void findBoundFindings() {
+    BoundInputs in;
+    in.names = res_.names;
+    in.units = res_.units;
+    in.lower = res_.lower;
+    in.upper = res_.upper;
+    in.optimum = res_.optimum.theta;
+    if (res_.posterior.parameters.size() == d_) {
+      for (std::size_t k = 0; k < d_; ++k) {
+        const bool prof = res_.interval == "profile" && k < res_.profile.lower.size();
+        in.interval_lo.push_back(prof ? res_.profile.lower[k] : res_.posterior.parameters[k].q025);
+        in.interval_hi.push_back(prof ? res_.profile.upper[k] : res_.posterior.parameters[k].q975);
+      }
+      in.design = &res_.design;
+      in.draws = res_.chains.index;
+    }
+    in.limit_lower = limit_lower_;
+    in.limit_upper = limit_upper_;
+    in.limit_basis = limit_basis_;
+    res_.bounds = findBounds(in);
   }
 
  private:
@@ -1091,6 +1143,9 @@ class CalibrationRun {
   /// the source of the integrator probes' steps (probeStepsFromJacobian).
   SubspaceJacobian polish_jacobian_;
   std::vector<double> reference_;  ///< the θ the screening's and the starts' steps were frozen at
+  /// Per calibrated value: its physical limits (NaN: none known) and their basis (physicalLimit).
+  std::vector<double> limit_lower_, limit_upper_;
+  std::vector<std::string> limit_basis_;
 };
 
 /// The resume fingerprint: everything that changes the numbers.
@@ -1128,6 +1183,22 @@ void CalibrationRun::objective() {
   res_.names = objective_->names();
   res_.truth = objective_->truths();
   res_.n_data = n_;
+  res_.lower = objective_->lower();
+  res_.upper = objective_->upper();
+  res_.left_out = objective_->leftOut();
+  const ParameterTable table = study_.parameterTable();
+  for (const auto& name : res_.names) {
+    std::string unit;
+    for (const auto& c : study_.calibrated)
+      if (c.name == name) unit = c.unit;
+    for (const auto& c : setup_.extra_calibrated)
+      if (c.name == name) unit = c.unit;
+    res_.units.push_back(unit);
+    const auto lim = physicalLimit(name, table);
+    limit_lower_.push_back(lim ? lim->lower : std::numeric_limits<double>::quiet_NaN());
+    limit_upper_.push_back(lim ? lim->upper : std::numeric_limits<double>::quiet_NaN());
+    limit_basis_.push_back(lim ? lim->basis : "");
+  }
   fingerprint_ = resumeFingerprint();
   sse_ = [this](const std::vector<double>& th) { return objective_->sse(th); };
   if (options_.steps == "frozen") {
@@ -1833,6 +1904,7 @@ CalibrationRun::BiasProbe CalibrationRun::probeBias(const LabObjective& fine, co
 void CalibrationRun::summary() {
   res_.stage_wall_s.push_back({"total", secondsSince(t_all_)});
   res_.median_run_wall_s = objective_->medianWallSeconds();
+  findBoundFindings();
 
   nlohmann::json j = res_.toJson();
   j["program"] = programInfo();

@@ -29,6 +29,7 @@
 
 #include "common/progress.hpp"
 #include "calibration/adaptive_design.hpp"
+#include "calibration/bounds.hpp"
 #include "calibration/feasible_box.hpp"
 #include "calibration/gibbs.hpp"
 #include "calibration/optimize.hpp"
@@ -76,11 +77,19 @@ struct CalibrationSetup {
   /// extra_calibrated of the same name.
   std::vector<std::string> freed;
   std::vector<SensorModelSetting> sensor_models;
+  /// Subsystem options that replace the assembly's ((subsystem, option), e.g. ("tire", "hub"):
+  /// the road enters at the hub). A calibrated value the new option lacks is left out
+  /// (LabObjective::leftOut).
+  std::vector<std::pair<std::string, std::string>> options;
+  /// Bounds that replace the study's for a calibrated value (name -> (lower, upper)): a range
+  /// widened toward its physical limit (docs/calibration.md, "Values on their bounds").
+  std::map<std::string, std::pair<double, double>> bounds;
   /// SSE = Σ w_c (y − η)², w_c = channel_weights[channel] (1 when absent). With w_c = 1/σ_c² the
   /// SSE is a χ² in standard units, so channels of different units can be fitted together.
   std::map<std::string, double> channel_weights;
   bool empty() const {
-    return extra_effects.empty() && extra_calibrated.empty() && channel_weights.empty() && freed.empty() && sensor_models.empty();
+    return extra_effects.empty() && extra_calibrated.empty() && channel_weights.empty() && freed.empty() && sensor_models.empty() &&
+           options.empty() && bounds.empty();
   }
   /// Everything that changes the numbers (part of the resume fingerprint when not empty).
   nlohmann::json toJson() const;
@@ -108,6 +117,9 @@ class LabObjective {
   const std::vector<double>& lower() const { return lower_; }
   const std::vector<double>& upper() const { return upper_; }
   const std::vector<std::optional<double>>& truths() const { return truths_; }
+  /// The study's calibrated values this assembly does not have (Model::lacksOptionParameter: the
+  /// tire's stiffness and damping when the road enters at the hub), left out of θ.
+  const std::vector<std::string>& leftOut() const { return left_out_; }
   /// Number of scalar residuals n.
   int dataCount() const { return static_cast<int>(y_.size()); }
   const Model& model() const { return *model_; }
@@ -172,7 +184,7 @@ class LabObjective {
   std::vector<RunResult> runAll(const std::vector<double>& theta) const;
   std::shared_ptr<const Model> model_;
   std::vector<Set> sets_;
-  std::vector<std::string> names_;
+  std::vector<std::string> names_, left_out_;
   std::vector<double> lower_, upper_;
   std::vector<std::optional<double>> truths_;
   std::vector<int> slots_;
@@ -324,6 +336,12 @@ std::vector<double> probeStepsFromJacobian(const Eigen::MatrixXd& J, double thre
 struct CalibrationResult {
   std::string assembly, label;
   std::vector<std::string> names;
+  std::vector<std::string> units;         ///< per name ("" when not stated)
+  std::vector<double> lower, upper;       ///< the bounds calibrated within
+  /// The study's calibrated values this assembly lacks (LabObjective::leftOut), left out of θ.
+  std::vector<std::string> left_out;
+  /// Values on their bounds, and values the data do not determine (bounds.hpp): findings.
+  std::vector<BoundFinding> bounds;
   std::vector<std::optional<double>> truth;
   int n_data = 0;
   Optimum optimum;

@@ -119,6 +119,13 @@ CalibrationFolder readCalibrationFolder(const std::string& dir) {
       throw InputError(where + ": setup", std::string("is malformed: ") + jsonErrorInWords(e));
     }
   }
+  if (f.summary.contains("bound_findings")) {
+    try {
+      for (const auto& b : f.summary["bound_findings"]) f.bound_findings.push_back(BoundFinding::fromJson(b));
+    } catch (const std::exception& e) {
+      throw InputError(where + ": bound_findings", std::string("is malformed: ") + jsonErrorInWords(e));
+    }
+  }
   f.posterior = readPosteriorCsv((d / "posterior.csv").string());
   return f;
 }

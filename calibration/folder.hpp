@@ -48,6 +48,9 @@ struct CalibrationFolder {
   std::string assembly;       ///< summary.json "assembly" (checked: a non-empty string)
   CalibrationSetup setup;     ///< summary.json "setup" (empty when absent: a plain calibration)
   PosteriorSample posterior;  ///< posterior.csv
+  /// summary.json "bound_findings": values on their bounds and values the data do not determine
+  /// (empty when absent, as in folders written before they were recorded).
+  std::vector<BoundFinding> bound_findings;
 };
 
 /// Reads `dir`: InputError naming the folder when it is not one or has no summary.json, naming

@@ -95,6 +95,13 @@ std::string CalibrateRun::text() const {
                       "its kappa (from %d blocks of consecutive samples; %.2g to %.2g) and taken from t with %d dof (docs/calibration.md)\n",
                       c.blocks, *lo, *hi, c.blocks - 1);
   }
+  s += calib::boundFindingsText(r.bounds, "       ");
+  if (!r.left_out.empty()) {
+    std::string names;
+    for (const auto& n : r.left_out) names += (names.empty() ? "" : ", ") + n;
+    s += "       note: " + names + " not calibrated: " + a.label() + " does not have " + (r.left_out.size() == 1 ? "it" : "them") +
+         " (the road enters at the hub, with no tire compliance)\n";
+  }
   if (r.posterior.design_too_coarse) s += "       note: " + r.posterior.message + "\n";
   for (const auto& w : r.rounds.warnings) s += "       note: " + w + "\n";
   for (const auto& m : r.region.messages) s += "       note: " + m + "\n";

@@ -127,6 +127,8 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   co.threads = request.threads;
   co.fitted_parameters = static_cast<int>(obj.names().size());
   run.comparison = diag::compareModel(obj, sets, rows, noise, co);
+  // What the calibration found of its own values: a value on its bound is no estimate.
+  for (const auto& f : folder.bound_findings) run.comparison.notes.push_back("the calibration: " + f.sentence());
   if (!request.baseline.empty()) addBaseline(study, obj.model().vehicle(), loadSets(study, request.baseline, "--baseline"), sets, run, say);
   if (!request.out.empty()) {
     nlohmann::json j = run.comparison.toJson(true);

@@ -17,6 +17,9 @@
 #include "subsystems/effects/speed_dependent_tire_stiffness.hpp"
 #include "subsystems/effects/anti_roll_bar.hpp"
 #include "subsystems/effects/top_mount_compliance.hpp"
+#include "subsystems/effects/skyhook.hpp"
+#include "subsystems/effects/groundhook.hpp"
+#include "subsystems/effects/road_feedforward.hpp"
 #include "subsystems/user_effect.hpp"
 
 namespace dtwin {
@@ -72,6 +75,9 @@ const Registry<EffectFactory>& effectRegistry() {
         entry<SpeedDependentTireStiffnessEffect>(),
         entry<AntiRollBarEffect>(),
         entry<TopMountComplianceEffect>(),
+        entry<SkyhookEffect>(),
+        entry<GroundhookEffect>(),
+        entry<RoadFeedforwardEffect>(),
   });
   return registry;
 }

@@ -77,6 +77,10 @@ class Effect {
   /// ("the suspension never compresses beyond the smallest plausible gap (0.008 m < 0.01 m): a bump
   /// stop cannot act here", the parameter's name without "_m" and the effect's in words). Empty: none.
   virtual std::string engagementThreshold() const { return ""; }
+  /// Strut and StrutFilter effects: whether the effect reads the absolute motion at the corner
+  /// (StrutState's body, wheel and road velocities; a controller's sensors). The simulator
+  /// computes them only when an installed effect says so.
+  virtual bool needsMotion() const { return false; }
   /// Strut effects: extra strut force [N] (same sign convention as StrutState).
   virtual double calcStrutForce(const StrutState& s, ParamValues p) const { return 0.0; }
   /// TireInput effects: the effective road under the contact point.

@@ -24,6 +24,10 @@ struct StrutState {
   double other_deflection_m = 0.0;  ///< q of the other main strut on the same axle
   double other_rate_mps = 0.0;      ///< its dq/dt
   bool front = true;                ///< on the front axle
+  // The absolute motion at the corner, for effects that read it (Effect::needsMotion; 0 otherwise):
+  double body_velocity_mps = 0.0;   ///< world-vertical velocity of the strut's upper end on the body (up positive)
+  double wheel_velocity_mps = 0.0;  ///< world-vertical velocity of its lower end (the wheel centre; a solid axle's seat)
+  double road_velocity_mps = 0.0;   ///< vertical velocity of the road signal under the corner's wheel, dh/dt
 };
 
 /// The law of a suspension's main strut. The contract every registered law keeps (checked over

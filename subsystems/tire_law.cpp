@@ -119,6 +119,19 @@ double Pac2002Tire::operatingDeflection(ParamValues p) const {
   return x * R0;
 }
 
+// ---------------------------------------------------------------- the hub's own motion
+HubInput::HubInput() {
+  specs_ = {spec("link_stiffness", "N/m", "stiffness k_l of the link that holds the wheel centre to the signal", 0.0, kInf, false, false),
+            spec("link_damping", "N*s/m", "damping c_l of that link, on the signal's rate minus the hub's", 0.0, kInf),
+            spec("unloaded_radius_m", "m", "the wheel centre's height above the signal at zero load", 0.0, kInf, true, false)};
+  specs_[0].default_value = 1e8;
+  specs_[1].default_value = 1e5;
+}
+
+double HubInput::calcNormalForce(const TireState& s, ParamValues p) const {
+  return p[0] * s.deflection_m + p[1] * (s.road_rate_mps + s.deflection_rate_mps);
+}
+
 // ---------------------------------------------------------------- registry
 // The one list of tire laws: each entry makes a law, which names itself. Adding a law is its
 // class and one line here (docs/extending.md).
@@ -127,6 +140,7 @@ const Registry<Factory<TireLaw>>& tireLawRegistry() {
       "tire option", {
                          lawEntry<FialaTire, TireLaw>("Fiala's vertical law: linear stiffness on the deflection, contact damping (paper eq. 2)"),
                          lawEntry<Pac2002Tire, TireLaw>("PAC2002's vertical law (MFeval): quadratic in the deflection, speed, pressure and camber terms (paper eq. 3)"),
+                         lawEntry<HubInput, TireLaw>("the road signal is the wheel centre's own motion (a hub-motion estimate): the wheel follows it through a stiff two-sided link, with no tire compliance and no lift-off"),
                      });
   return r;
 }

@@ -38,6 +38,10 @@ struct TireState {
   double time_s = 0.0;               ///< simulation time
   bool front = true;                 ///< on the front axle
   double normal_force_N = 0.0;       ///< the law's normal force (set before TireLoad effects run)
+  /// The vertical velocity of the road under the wheel, dh/dt = slope x (forward speed of the
+  /// contact point) [m/s]: the full deflection rate is road_rate_mps + deflection_rate_mps. Read by
+  /// laws that follow the road signal (HubInput); the tire laws ignore it (see deflection_rate_mps).
+  double road_rate_mps = 0.0;
 };
 
 /// Deflection [m] over which the tire damping ramps in at touch-down (see the header comment).
@@ -65,6 +69,12 @@ class TireLaw {
   /// Checks combinations of values that single-parameter ranges cannot express. Returns an
   /// empty string if valid, else the broken rule.
   virtual std::string checkCombination(ParamValues p) const { return {}; }
+  /// False for a tire (the default): the force is >= 0 and 0 out of contact, the wheel may leave
+  /// the road. True for a law that holds the wheel to the road signal (HubInput): the force may
+  /// pull, so the wheel never leaves the signal. Such a law has no tire compliance, so it has
+  /// no shared `stiffness` and `damping` (a study's calibrated tire.stiffness and tire.damping are
+  /// left out of its assemblies).
+  virtual bool followsSignal() const { return false; }
   /// Unloaded radius R0 [m] (every law has one).
   double unloadedRadius(ParamValues p) const { return p[parameterIndex(parameters(), "unloaded_radius_m")]; }
 
@@ -107,6 +117,29 @@ class Pac2002Tire final : public TireLaw {
   double statedStiffness(ParamValues p) const override;
   double operatingDeflection(ParamValues p) const override;
   std::string checkCombination(ParamValues p) const override;
+
+ private:
+  std::vector<ParameterSpec> specs_;
+};
+
+/// The road signal is the motion of the wheel centre itself, not the road under a tire: a
+/// logger's "road" that a car's own system estimates from its wheel sensors follows the wheel.
+/// The wheel is held to the signal by a stiff, damped, two-sided link,
+///   Fz = k_l rho_z + c_l (dh/dt - dz_hub/dt),    rho_z = R0 - (z_hub - h),
+/// which may pull (followsSignal): the wheel never leaves the signal, and nothing between the
+/// signal and the hub is compliant. With the defaults (k_l = 1e8 N/m, c_l = 1e5 N s/m) and a
+/// 29.46 kg wheel the link's own mode is at 295 Hz with damping ratio 0.92: below 20 Hz the hub
+/// follows the signal to 0.4 % in amplitude (docs/model.md, "Where the road enters").
+class HubInput final : public TireLaw {
+ public:
+  HubInput();
+  std::string name() const override { return "hub"; }
+  const std::vector<ParameterSpec>& parameters() const override { return specs_; }
+  /// Parameter order: link_stiffness, link_damping, unloaded_radius_m.
+  double calcNormalForce(const TireState& s, ParamValues p) const override;
+  double statedStiffness(ParamValues p) const override { return p[0]; }
+  double operatingDeflection(ParamValues p) const override { return 4000.0 / p[0]; }
+  bool followsSignal() const override { return true; }
 
  private:
   std::vector<ParameterSpec> specs_;

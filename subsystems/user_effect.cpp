@@ -51,6 +51,14 @@ void compile(Compiled& c, const std::string& expr, const std::vector<std::string
 
 enum class Element { Strut, Tire, AxleRoll, Chassis };
 
+/// Whether `expr` names the identifier `name` (a whole word, not part of a longer name).
+bool usesName(const std::string& expr, const std::string& name) {
+  const auto word = [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; };
+  for (std::size_t at = expr.find(name); at != std::string::npos; at = expr.find(name, at + 1))
+    if ((at == 0 || !word(expr[at - 1])) && (at + name.size() == expr.size() || !word(expr[at + name.size()]))) return true;
+  return false;
+}
+
 const std::vector<UserEffectVariable> kStrutVars = {
     {"q", "m", "strut deflection, compression positive, 0 at design ride height", -0.1, 0.1},
     {"v", "m/s", "its rate dq/dt", -1.0, 1.0},
@@ -60,7 +68,12 @@ const std::vector<UserEffectVariable> kStrutVars = {
     {"c", "N*s/m", "the main damper's damping (a calibrated parameter)", 2.5e3, 2.5e3},
     {"t", "s", "time", 0.0, 20.0},
     {"u", "m/s", "vehicle forward speed", 0.0, 30.0},
-    {"front", "1", "1 on the front axle, 0 on the rear", 0.0, 1.0}};
+    {"front", "1", "1 on the front axle, 0 on the rear", 0.0, 1.0},
+    {"vb", "m/s", "the body's absolute vertical velocity at the strut's top (up positive; a skyhook's sensor)", -0.5, 0.5},
+    {"vw", "m/s", "the wheel centre's absolute vertical velocity (up positive; a groundhook's sensor)", -1.0, 1.0},
+    {"vr", "m/s", "the road signal's vertical velocity under the wheel (a feed-forward's input)", -1.0, 1.0}};
+/// The strut variables that need the absolute motion at the corner (Effect::needsMotion).
+const char* const kMotionVars[] = {"vb", "vw", "vr"};
 const std::vector<UserEffectVariable> kTireVars = {
     {"qt", "m", "tire deflection, positive in contact", -0.01, 0.05},
     {"vt", "m/s", "the rate the tire's damping acts on (minus the hub's vertical velocity)", -0.5, 0.5},
@@ -99,6 +112,8 @@ class UserEffect final : public Effect {
     (void)elementOf(spec_.element, element_);
     for (const auto& v : userEffectVariables(spec_.element)) names_.push_back(v.name);
     nstate_ = names_.size();
+    if (element_ == Element::Strut)
+      for (const char* m : kMotionVars) motion_ = motion_ || usesName(spec_.force, m);
     for (const auto& p : spec_.parameters) {
       names_.push_back(p.name);
       ParameterSpec s = effectParameter(p.name, p.unit, "user-defined (" + spec_.force + ")", p.value, p.lower, p.upper, p.lower, p.upper);
@@ -121,9 +136,11 @@ class UserEffect final : public Effect {
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
   double calcStrutForce(const StrutState& s, ParamValues p) const override {
     const double x[] = {s.deflection_m, s.rate_mps, s.deflection_m - s.other_deflection_m, s.rate_mps - s.other_rate_mps,
-                        s.base_stiffness, s.base_damping, s.time_s, s.speed_mps, s.front ? 1.0 : 0.0};
+                        s.base_stiffness, s.base_damping, s.time_s, s.speed_mps, s.front ? 1.0 : 0.0,
+                        s.body_velocity_mps, s.wheel_velocity_mps, s.road_velocity_mps};
     return eval(x, p);
   }
+  bool needsMotion() const override { return motion_; }
   double calcTireLoad(const TireState& s, ParamValues p) const override {
     const double x[] = {s.deflection_m, s.deflection_rate_mps, s.normal_force_N, s.road_height_m, s.time_s, s.forward_speed_mps, s.front ? 1.0 : 0.0};
     return eval(x, p);
@@ -190,6 +207,7 @@ class UserEffect final : public Effect {
   mutable std::mutex copies_mutex_;
   mutable std::unordered_map<std::thread::id, std::unique_ptr<Compiled>> copies_;
   Element element_ = Element::Strut;
+  bool motion_ = false;  ///< the expression reads vb, vw or vr
   std::vector<std::string> names_;  ///< the state variables, then the parameters
   std::size_t nstate_ = 0;
   std::vector<ParameterSpec> specs_;

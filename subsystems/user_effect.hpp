@@ -5,7 +5,8 @@
 // Four elements, each with the state variables its expression may use (userEffectVariables; the
 // table in docs/extending.md, "Effects written as expressions"):
 //   strut      a force along every main suspension strut, the built-in strut effects' sign
-//              (positive pushes the wheel down and the chassis up): q, v, dq, dv, k, c, t, u, front
+//              (positive pushes the wheel down and the chassis up): q, v, dq, dv, k, c, t, u, front,
+//              and the absolute motion at the corner vb (body), vw (wheel), vr (road signal)
 //   tire       a vertical force added to the tire law's at every wheel in contact (the sum is kept
 //              >= 0): qt, vt, fz, zr, t, u, front
 //   axle_roll  a force pair on each axle's main struts, F on the left and -F on the right:

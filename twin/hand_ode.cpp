@@ -85,6 +85,10 @@ HandOde::HandOde(const Model& m, std::vector<double> values, const Road& road, c
                                                         std::to_string(m.effects().size()) + ")");
   if (values_.size() != m.runParameterNames().size())
     throw InputError("run parameters", "expected " + std::to_string(m.runParameterNames().size()) + " values");
+  if (m.tire().followsSignal())
+    throw InputError("assembly " + m.assembly().id, "the hand-written ODE models a tire under the road, not the '" + m.tire().name() + "' input");
+  if (values_[static_cast<std::size_t>(m.roadGainSlot())] != 1.0 || values_[static_cast<std::size_t>(m.roadDelaySlot())] != 0.0)
+    throw InputError("run parameters", "the hand-written ODE reads the road as logged (road.gain 1, road.delay_s 0)");
   const VehicleData& d = m.vehicle();
   mc_ = d.chassis_mass;
   mw_ = d.wheel_mass;

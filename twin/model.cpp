@@ -100,6 +100,16 @@ ParameterTable declareVehicleParameters(const EffectCatalog& catalog) {
   t.declare(fixedSpec("chassis.cg_x_m", "m",
                       "forward shift of the sprung CG from the vehicle file's position at a fixed wheelbase (a - x, b + x)", -kInf, true));
   t.set("chassis.cg_x_m", 0.0, "default (the vehicle file's CG)", "");
+  // The road signal as the run reads it: its gain and its delay relative to the measured channels
+  // (1 and 0: as logged). Not in a vehicle file; a calibration or a diagnosis may move them.
+  t.declare(fixedSpec("road.gain", "1", "gain of the road signal (1: as logged)", 0.0, false));
+  t.set("road.gain", 1.0, "default (the road as logged)", "");
+  {
+    ParameterSpec d = fixedSpec("road.delay_s", "s", "delay of the road signal relative to the measured channels (positive: logged late)", -1.0, true);
+    d.max_value = 1.0;
+    t.declare(d);
+    t.set("road.delay_s", 0.0, "default (the road as logged)", "");
+  }
   fixed("wheel.mass_kg", "kg", "wheel (unsprung) mass, each");
   fixed("solid_axle.mass_kg", "kg", "axle beam mass (solid axle only), each axle");
   fixed("solid_axle.roll_inertia_kgm2", "kg*m^2", "axle roll inertia about its centre");
@@ -110,7 +120,11 @@ ParameterTable declareVehicleParameters(const EffectCatalog& catalog) {
     auto law = makeTireLaw(opt, "");
     for (auto s : law->parameters()) {
       s.name = fullName("tire", opt, s);
-      if (!t.contains(s.name)) t.declare(s);
+      if (t.contains(s.name)) continue;
+      t.declare(s);
+      // A law's own constant with a stated default (the hub link's stiffness and damping) needs
+      // no vehicle file entry; a vehicle file may still set it.
+      if (!s.shared && s.default_value != 0.0) t.set(s.name, s.default_value, "default of the " + opt + " option", "");
     }
   }
   // Suspension options: the parameters of every strut law, per suspension option (the
@@ -231,6 +245,38 @@ void declareEffectParameters(ParameterTable& table, const Effect& effect, const 
   }
 }
 
+std::optional<PhysicalLimit> physicalLimit(const std::string& name, const ParameterTable& table) {
+  // Passenger cars to light trucks (and a logger's estimate of the road for the road values). The
+  // bounds are wide on purpose: they say what no road vehicle has, not what is typical.
+  static const std::map<std::string, PhysicalLimit> limits = {
+      {"tire.stiffness", {50e3, 2e6, "road-vehicle tires are 150 to 450 kN/m, truck tires up to about 1.5 MN/m; far stiffer is a wheel that follows the road signal (the hub input)"}},
+      {"tire.damping", {0.0, 2e4, "tire damping is a few hundred to a few thousand N s/m"}},
+      {"suspension.stiffness", {3e3, 4e5, "wheel rates run from 10 kN/m (soft cars) to 300 kN/m (trucks)"}},
+      {"suspension.damping", {100.0, 6e4, "damping per corner of a road vehicle"}},
+      {"chassis.mass_kg", {150.0, 8000.0, "sprung masses from a small car to a light truck"}},
+      {"chassis.pitch_inertia_kgm2", {100.0, 2e4, "pitch inertias of road vehicles"}},
+      {"chassis.roll_inertia_kgm2", {30.0, 5000.0, "roll inertias of road vehicles"}},
+      {"chassis.cg_height_m", {0.15, 1.6, "CG heights of road vehicles"}},
+      {"wheel.mass_kg", {3.0, 200.0, "a wheel with its carrier, small car to truck"}},
+      {"solid_axle.mass_kg", {10.0, 400.0, "axle beams"}},
+      {"road.gain", {0.1, 10.0, "a road signal off by more than a factor of 10 is no estimate of the road"}},
+      {"road.delay_s", {-0.5, 0.5, "a logger's channels more than 0.5 s apart are not one record"}},
+  };
+  if (const auto it = limits.find(name); it != limits.end()) return it->second;
+  if (name == "chassis.cg_x_m" && table.contains("geometry.cg_to_front_axle_m") && table.contains("geometry.cg_to_rear_axle_m")) {
+    const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
+    return PhysicalLimit{-0.9 * b, 0.9 * a, "the CG lies between the axles"};
+  }
+  if (name.rfind("sensors.", 0) == 0) {
+    const auto dot = name.rfind('.');
+    const std::string axis = name.substr(dot + 1);
+    if (axis == "x_m") return PhysicalLimit{-4.0, 4.0, "a point of the car's body, from the CG"};
+    if (axis == "y_m") return PhysicalLimit{-1.3, 1.3, "a point of the car's body, from the CG"};
+    if (axis == "z_m") return PhysicalLimit{-1.0, 2.0, "a point of the car's body, from the CG"};
+  }
+  return std::nullopt;
+}
+
 // ------------------------------------------------------------------ Model
 Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors,
              std::shared_ptr<const EffectCatalog> catalog)
@@ -313,6 +359,8 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
     s.offset = addRunParameter(p + "offset");
     sensor_slots_.push_back(s);
   }
+  road_gain_slot_ = addRunParameter("road.gain");  // last: every other slot keeps its place
+  road_delay_slot_ = addRunParameter("road.delay_s");
   for (const auto& n : run_names_) need(n);
   const std::string rule = checkRunValues(defaultRunValues());
   if (!rule.empty()) throw InputError(where, rule);
@@ -330,6 +378,17 @@ int Model::addRunParameter(const std::string& name) {
 int Model::slot(const std::string& name) const {
   auto it = slots_.find(name);
   return it == slots_.end() ? -1 : it->second;
+}
+
+bool Model::lacksOptionParameter(const std::string& name) const {
+  const std::string prefix = "tire.";
+  if (name.rfind(prefix, 0) != 0 || slot(name) >= 0) return false;
+  const std::string local = name.substr(prefix.size());
+  if (local.find('.') != std::string::npos) return false;
+  for (const auto& law : tireLawNames())
+    for (const auto& s : makeTireLaw(law, "")->parameters())
+      if (s.shared && s.name == local) return true;
+  return false;
 }
 
 std::vector<double> Model::defaultRunValues() const {

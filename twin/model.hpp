@@ -5,6 +5,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,19 @@ void checkChassisInertias(const ParameterTable& table, const std::string& where)
 /// the vehicle file's own three are kept as they are (they satisfy the inequality).
 double yawInertiaInTriangle(double ixx, double iyy, double izz);
 
+/// The range a value of a road vehicle can physically take, from a small car to a light truck:
+/// how far a calibration's range may be widened when the data push a value against its bound
+/// (docs/calibration.md, "Values on their bounds"). `basis` says where the numbers come from.
+struct PhysicalLimit {
+  double lower = 0.0, upper = 0.0;
+  std::string basis;
+};
+/// The physical limit of the value `name` (a calibrated tire or strut value, a mass, an
+/// inertia, the CG, a sensor's position, the road signal's gain or delay), read against
+/// `table` where it depends on the vehicle (the CG between the axles); nullopt when none is known
+/// (effects' parameters: their prior range is the plausible range).
+std::optional<PhysicalLimit> physicalLimit(const std::string& name, const ParameterTable& table);
+
 class Model {
  public:
   /// Validates the options and that every parameter this assembly needs has a value.
@@ -118,6 +132,10 @@ class Model {
   const std::vector<std::string>& runParameterNames() const { return run_names_; }
   /// Slot of a run parameter, or -1 if `name` is not a run parameter of this model.
   int slot(const std::string& name) const;
+  /// True when `name` is a shared parameter of a tire option ("tire.stiffness") that this
+  /// assembly's tire option does not have (the hub input has no tire compliance): a study's
+  /// calibrated value of the other options, left out of this assembly's calibration.
+  bool lacksOptionParameter(const std::string& name) const;
   /// The run vector filled from the table's values.
   std::vector<double> defaultRunValues() const;
   /// Checks a run vector (ranges, law combinations). Returns "" or "<name> <rule>".
@@ -137,6 +155,12 @@ class Model {
     int x = -1, y = -1, z = -1, offset = -1;
   };
   const std::vector<SensorSlots>& sensorSlots() const { return sensor_slots_; }
+
+  /// Run slots of the road signal's gain `road.gain` [1] (1: as logged) and its delay relative
+  /// to the measured channels `road.delay_s` [s] (0; positive: the signal was logged late). Run
+  /// parameters of every model: a calibration or a diagnosis may find them (docs/model.md).
+  int roadGainSlot() const { return road_gain_slot_; }
+  int roadDelaySlot() const { return road_delay_slot_; }
 
   /// Run slots of the freed vehicle values (AssemblySpec::freed), in that order.
   const std::vector<int>& freedSlots() const { return freed_slots_; }
@@ -169,6 +193,7 @@ class Model {
   std::map<std::string, int> slots_;
   std::vector<int> tire_slots_, susp_slots_, iface_slots_;
   int iface_preload_slot_ = -1;
+  int road_gain_slot_ = -1, road_delay_slot_ = -1;
   std::vector<std::vector<int>> effect_slots_;
   std::vector<int> freed_slots_;
   std::vector<SensorSlots> sensor_slots_;

@@ -85,6 +85,8 @@ struct RunContext {
   /// The chassis's heave, pitch and roll coordinates at the start (setEquilibrium): ChassisForce
   /// effects read the motion from there.
   double heave0 = 0.0, pitch0 = 0.0, roll0 = 0.0;
+  /// Run slots of the road signal's gain and delay (Model::roadGainSlot, roadDelaySlot).
+  std::size_t gain_slot = 0, delay_slot = 0;
 };
 
 struct TireEval {
@@ -102,20 +104,50 @@ struct TireCorner {
   std::vector<std::pair<const Effect*, std::size_t>> scalers;  // tire-force effects, first slot
   std::vector<std::pair<const Effect*, std::size_t>> loads;    // tire-load effects, first slot
 
+  /// Where the road signal is read for a wheel at road distance x_road (the delay's read-ahead,
+  /// see eval) and the forward speed of that point along the signal (hub_xd: the hub's own).
+  static void signalPoint(const RunContext& c, double t, double x_road, double hub_xd, double& x, double& contact_speed) {
+    const double delay = c.p[c.delay_slot];
+    x = x_road;
+    if (delay == 0.0) {
+      contact_speed = c.speed.speed(t) + hub_xd;
+      return;
+    }
+    x += c.speed.distance(t + delay) - c.speed.distance(t);
+    contact_speed = c.speed.speed(t + delay) + hub_xd;
+  }
+  /// The road signal's vertical velocity under the wheel (gain and delay applied, before
+  /// tire-input effects) [m/s]: what a road-velocity feed-forward reads.
+  double roadRate(const RunContext& c, double t, double hub_x, double hub_xd) const {
+    double x = 0.0, contact_speed = 0.0;
+    signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a, hub_xd, x, contact_speed);
+    return c.p[c.gain_slot] * c.road->sample(cornerTrack(corner), x).slope * contact_speed;
+  }
   TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
     TireEval e;
     const ParamValues p(c.p + p0, np);
     const double v = c.speed.speed(t);
     e.x_road = c.speed.distance(t) + hub_x - model->vehicle().a;
     const Track tr = cornerTrack(corner);
-    RoadSample rs = c.road->sample(tr, e.x_road);
-    e.road_h = rs.height_m;
-    for (auto& [eff, s] : filters)
-      rs = eff->filterRoad(*c.road, tr, e.x_road, ParamValues(c.p + s, eff->parameters().size()));
+    // The road signal's delay d relative to the measured channels (positive: logged late) and its
+    // gain g: the wheel meets g h(x + s(t + d) - s(t)), read ahead by the distance travelled in d
+    // (docs/model.md, "The road signal's gain and delay"). At d = 0 and g = 1 exactly the road.
+    const double gain = c.p[c.gain_slot];
+    double x = 0.0, contact_speed = 0.0;
+    signalPoint(c, t, e.x_road, hub_xd, x, contact_speed);
+    RoadSample rs = c.road->sample(tr, x);
+    e.road_h = rs.height_m;  // the road under the wheel, before tire-input effects
+    for (auto& [eff, s] : filters) rs = eff->filterRoad(*c.road, tr, x, ParamValues(c.p + s, eff->parameters().size()));
+    if (gain != 1.0) {
+      rs.height_m *= gain;
+      rs.slope *= gain;
+      e.road_h *= gain;
+    }
     const double R0 = p[r0];
     e.hub_above_road = hub_z - rs.height_m;
     e.rho = R0 - e.hub_above_road;
-    e.rho_dot = rs.slope * (v + hub_xd) - hub_zd;
+    const double road_rate = rs.slope * contact_speed;
+    e.rho_dot = road_rate - hub_zd;
     TireState ts;
     ts.deflection_m = e.rho;
     // Damping acts on the hub's vertical velocity, -dz_hub/dt (paper eq. 2, "- b z'"). With
@@ -126,6 +158,7 @@ struct TireCorner {
     ts.forward_speed_mps = v;
     ts.fx_N = c.traction_per_wheel_per_accel * c.speed.accel(t);
     ts.road_height_m = e.road_h;
+    ts.road_rate_mps = road_rate;
     ts.time_s = t;
     ts.front = isFront(corner);
     e.fz = model->tire().calcNormalForce(ts, p);
@@ -245,7 +278,11 @@ class StrutElement : public Force::Custom::Implementation {
       for (std::size_t i = 0; i < m->effects().size(); ++i)
         if (m->effects()[i]->kind() == EffectKind::StrutFilter) filter_effects_.push_back(i);
     if (with_effects)
-      for (const auto& e : m->effects()) context_ = context_ || e->kind() == EffectKind::Strut || e->kind() == EffectKind::StrutFilter;
+      for (const auto& e : m->effects()) {
+        const bool strut = e->kind() == EffectKind::Strut || e->kind() == EffectKind::StrutFilter;
+        context_ = context_ || strut;
+        motion_ = motion_ || (strut && e->needsMotion());
+      }
   }
   void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
     const auto k = g_.kin(s);
@@ -287,6 +324,9 @@ class StrutElement : public Force::Custom::Implementation {
   /// effects read (StrutState's time, speed and other_*). Unset on interface elements.
   const StrutGeometry* partner_ = nullptr;
   bool front_ = true;
+  /// A main strut's tire and wheel: the road signal under it, for effects that read the motion.
+  const TireCorner* tire_ = nullptr;
+  MobilizedBody wheel_;
   StrutState strutState(const State& s, const StrutGeometry::Kin& k) const {
     const double* p = ctx_->p;
     StrutState ss;
@@ -302,6 +342,12 @@ class StrutElement : public Force::Custom::Implementation {
       ss.time_s = s.getTime();
       ss.speed_mps = ctx_->speed.speed(ss.time_s);
       ss.front = front_;
+      if (motion_) {
+        ss.body_velocity_mps = g_.upper.findStationVelocityInGround(s, g_.st_upper)[2];
+        ss.wheel_velocity_mps = g_.lower.findStationVelocityInGround(s, g_.st_lower)[2];
+        ss.road_velocity_mps =
+            tire_->roadRate(*ctx_, ss.time_s, wheel_.getBodyOriginLocation(s)[0], wheel_.getBodyOriginVelocity(s)[0]);
+      }
     }
     return ss;
   }
@@ -332,6 +378,7 @@ class StrutElement : public Force::Custom::Implementation {
   double preload_;
   bool effects_;
   bool context_ = false;  ///< a strut effect is installed: fill StrutState's context
+  bool motion_ = false;   ///< ... and one reads the absolute motion (Effect::needsMotion)
   SubsystemIndex sub_;
   std::vector<std::size_t> filter_effects_;  // indices into the model's effects
   mutable std::vector<ZIndex> zi_;           // their auxiliary states (set in realizeTopology)
@@ -533,6 +580,8 @@ struct Simulator::Impl {
       }
       se->partner_ = &struts[c ^ 1];  // corners 2 ax + side: the other side of the axle
       se->front_ = isFront(c);
+      se->tire_ = &tires[static_cast<std::size_t>(c)];
+      se->wheel_ = wheels[c];
       slider_elems.push_back(se);
       Force::Custom(forces, se);
       TireCorner tc;
@@ -584,7 +633,8 @@ struct Simulator::Impl {
     for (int c = 0; c < 4; ++c) {
       const double rho = M.tire().calcStaticDeflection(M.staticTireLoad(c), tp);
       const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
-      target[c] = ctx.road->sample(cornerTrack(c), x_road).height_m + R0 - rho;
+      const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
+      target[c] = ctx.p[ctx.gain_slot] * ctx.road->sample(cornerTrack(c), x_road + shift).height_m + R0 - rho;
       if (M.topology() == SuspensionTopology::SolidAxle) {
         const double* p = ctx.p;
         const double k = p[M.interfaceSlots()[0]], F0 = p[M.interfacePreloadSlot()];
@@ -664,6 +714,8 @@ struct Simulator::Impl {
     ctx.p = values.data();
     ctx.road = &road;
     ctx.speed = sc.speed;
+    ctx.gain_slot = static_cast<std::size_t>(M.roadGainSlot());
+    ctx.delay_slot = static_cast<std::size_t>(M.roadDelaySlot());
   }
 
   /// The branch time of a random road with a smooth start (smooth_until_s - margin), or a

@@ -31,7 +31,9 @@ Values nominalValues() {
           {"fnomin_N", 4000.0},
           {"longvl_mps", 16.7},
           {"inflation_pressure_Pa", 220000.0},
-          {"nompres_Pa", 220000.0}};
+          {"nompres_Pa", 220000.0},
+          {"link_stiffness", 1e8},
+          {"link_damping", 1e5}};
 }
 
 /// The parameter vector of `law`, filled by name from `values` (every parameter must be there).
@@ -159,26 +161,84 @@ void checkTireLawContract(const TireLaw& law, const std::vector<double>& p) {
   EXPECT_DOUBLE_EQ(law.unloadedRadius(p), p[parameterIndex(law.parameters(), "unloaded_radius_m")]);
 }
 
+/// What a law that holds the wheel to the road signal (followsSignal) must satisfy: a two-sided
+/// linear link, k rho + c (road rate + deflection rate), with no clamp.
+void checkFollowerContract(const TireLaw& law, const std::vector<double>& p) {
+  for (std::size_t i = 0; i < p.size(); ++i)
+    ASSERT_EQ(checkParameterValue(law.parameters()[i], p[i]), "") << law.parameters()[i].name;
+  const double k = law.statedStiffness(p);
+  ASSERT_GT(k, 0.0);
+  // It may pull: the wheel cannot leave the signal.
+  EXPECT_LT(law.calcNormalForce(at(-1e-3), p), 0.0);
+  EXPECT_NEAR(law.calcNormalForce(at(-1e-3), p), -k * 1e-3, 1e-9 * k);
+  // Its damping acts on the full deflection rate: the signal's rate counts as much as the hub's.
+  TireState s = at(1e-4, -0.2);
+  const double f_hub = law.calcNormalForce(s, p);
+  s.deflection_rate_mps = 0.0;
+  s.road_rate_mps = -0.2;
+  EXPECT_DOUBLE_EQ(law.calcNormalForce(s, p), f_hub);
+  const double rho0 = law.operatingDeflection(p);
+  const double h = 1e-7;
+  const double fd = (law.calcNormalForce(at(rho0 + h), p) - law.calcNormalForce(at(rho0 - h), p)) / (2 * h);
+  EXPECT_NEAR(fd / k, 1.0, 1e-6);
+  for (double load : {1000.0, 4000.0, 9000.0}) {
+    const double rho = law.calcStaticDeflection(load, p);
+    EXPECT_NEAR(law.calcNormalForce(at(rho), p) / load, 1.0, 1e-9) << "load " << load;
+  }
+  EXPECT_DOUBLE_EQ(law.unloadedRadius(p), p[parameterIndex(law.parameters(), "unloaded_radius_m")]);
+}
+
 TEST(TireLawContract, HoldsForEveryLawAndParameterSet) {
   const auto names = tireLawNames();
-  ASSERT_GE(names.size(), 2u);
+  ASSERT_GE(names.size(), 3u);
+  int followers = 0;
   for (const auto& name : names) {
     SCOPED_TRACE("tire law " + name);
     auto law = makeTireLaw(name, "test");
     ASSERT_TRUE(law);
     EXPECT_EQ(law->name(), name);
+    if (law->followsSignal()) {
+      ++followers;
+      checkFollowerContract(*law, paramsFor(*law, nominalValues()));
+      continue;
+    }
     for (const auto& [label, values] : contractCases()) {
       SCOPED_TRACE("parameters: " + label);
       checkTireLawContract(*law, paramsFor(*law, values));
     }
   }
+  EXPECT_EQ(followers, 1);  // the hub input
+}
+
+// The road enters at the hub: a 1 mm step of the signal under a wheel held by the link returns the
+// static force plus k * 1 mm, and the force at rest is the static load at its static deflection.
+TEST(HubInput, IsATwoSidedLinkToTheSignal) {
+  auto law = makeTireLaw("hub", "test");
+  ASSERT_TRUE(law->followsSignal());
+  const std::vector<double> p = paramsFor(*law, nominalValues());
+  EXPECT_DOUBLE_EQ(law->statedStiffness(p), 1e8);
+  const double rho = law->calcStaticDeflection(4000.0, p);
+  EXPECT_NEAR(rho, 4e-5, 1e-12);
+  EXPECT_NEAR(law->calcNormalForce(at(rho + 1e-3), p), 4000.0 + 1e5, 1e-6);
+  TireState s = at(rho);
+  s.road_rate_mps = 0.1;  // the signal rises at 0.1 m/s under a still hub
+  EXPECT_NEAR(law->calcNormalForce(s, p), 4000.0 + 1e5 * 0.1, 1e-6);
+  // No shared tire compliance: the study's calibrated tire.stiffness and tire.damping do not apply.
+  for (const auto& spec : law->parameters()) {
+    if (spec.name == "stiffness" || spec.name == "damping") ADD_FAILURE() << "the hub input has a tire " << spec.name;
+  }
 }
 
 TEST(TireLawContract, SharedParametersAreCommonToAllLaws) {
-  // Calibrated θ1, θ2 map to "stiffness" and "damping" whatever the option; R0 exists for all.
+  // Calibrated θ1, θ2 map to "stiffness" and "damping" whatever the tire option; R0 exists for
+  // all. A law that follows the signal has no tire compliance, only R0.
   for (const auto& name : tireLawNames()) {
     auto law = makeTireLaw(name, "test");
     const auto& specs = law->parameters();
+    if (law->followsSignal()) {
+      EXPECT_TRUE(specs[parameterIndex(specs, "unloaded_radius_m")].shared) << name;
+      continue;
+    }
     for (const char* shared : {"stiffness", "damping", "unloaded_radius_m"}) {
       const auto& spec = specs[parameterIndex(specs, shared)];
       EXPECT_TRUE(spec.shared) << name << "." << shared;
@@ -371,6 +431,7 @@ TEST(TireParameters, CheckParameterValueMessages) {
   for (const auto& name : tireLawNames()) {
     SCOPED_TRACE(name);
     auto law = makeTireLaw(name, "test");
+    if (law->followsSignal()) continue;  // no tire stiffness or damping
     const auto& specs = law->parameters();
     const auto& k = specs[parameterIndex(specs, "stiffness")];
     EXPECT_EQ(checkParameterValue(k, 180000.0), "");

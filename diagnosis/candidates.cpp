@@ -13,6 +13,9 @@ namespace dtwin::diag {
 namespace {
 
 constexpr const char* kFree = "free:";
+constexpr const char* kWiden = "widen:";
+constexpr const char* kRoadGain = "road.gain";
+constexpr const char* kRoadDelay = "road.delay_s";
 
 std::string num(const char* f, double v) { return formatPrintf(f, v); }
 
@@ -80,6 +83,8 @@ std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(cons
 
 bool hasCandidateForm(const std::string& name) {
   if (name.rfind(kFree, 0) == 0) return name.size() > std::string(kFree).size();
+  if (name.rfind(kWiden, 0) == 0) return name.size() > std::string(kWiden).size();
+  if (const auto eq = name.find('='); eq != std::string::npos) return eq > 0 && eq + 1 < name.size();
   const auto colon = name.find(':');
   if (colon != std::string::npos) {
     const auto& kinds = sensorModelKinds();
@@ -90,14 +95,20 @@ bool hasCandidateForm(const std::string& name) {
 
 bool isCandidateName(const std::string& name, const EffectCatalog& catalog) {
   if (!hasCandidateForm(name)) return false;
-  return name.find(':') != std::string::npos || catalog.contains(name);
+  return name.find(':') != std::string::npos || name.find('=') != std::string::npos || catalog.contains(name);
 }
 
-std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const AssemblySpec& assembly, const std::vector<std::string>& channels) {
+std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const AssemblySpec& assembly, const std::vector<std::string>& channels,
+                                           bool measured_road) {
   std::vector<std::string> out = catalog.names();
   for (const auto& f : freeableOf(assembly)) out.push_back(kFree + f);
   for (const auto& [group, members] : channelGroups(channels))
     for (const auto& k : sensorModelKinds()) out.push_back(k + ":" + group);
+  if (measured_road) {
+    out.push_back(std::string(kFree) + kRoadGain);
+    out.push_back(std::string(kFree) + kRoadDelay);
+    if (assembly.option("tire") != "hub") out.push_back("tire=hub");
+  }
   return out;
 }
 
@@ -105,6 +116,52 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
                             const std::vector<std::string>& channels, const std::string& where) {
   CandidateSpec c;
   c.name = name;
+  if (name.rfind(kWiden, 0) == 0) {  // a calibrated value's range widened to its physical limit
+    const std::string value = name.substr(std::string(kWiden).size());
+    const auto cp = std::find_if(study.calibrated.begin(), study.calibrated.end(), [&](const CalibratedParameter& x) { return x.name == value; });
+    if (cp == study.calibrated.end()) {
+      std::vector<std::string> known;
+      for (const auto& x : study.calibrated) known.push_back(x.name);
+      throw InputError(where, unknownNameRule("calibrated value (widen: takes a value the study calibrates)", value, known));
+    }
+    const auto table = study.parameterTable();
+    const auto limit = physicalLimit(value, table);
+    if (!limit) throw InputError(where, "'" + value + "' has no known physical limit to widen its range to");
+    ParameterSpec p = table.at(value).spec;
+    p.prior_lower = std::min(cp->lower, limit->lower);
+    p.prior_upper = std::max(cp->upper, limit->upper);
+    if (p.prior_lower >= cp->lower && p.prior_upper <= cp->upper)
+      throw InputError(where, "'" + value + "' is calibrated over [" + num("%.4g", cp->lower) + ", " + num("%.4g", cp->upper) +
+                                  "], which holds its physical limits already: nothing to widen");
+    p.unit = cp->unit.empty() ? p.unit : cp->unit;
+    c.kind = "range";
+    c.parameters = {p};
+    c.calibrated_names = {value};
+    c.study_lower = cp->lower;
+    c.study_upper = cp->upper;
+    c.signature = value + " lies outside the study's range [" + num("%.4g", cp->lower) + ", " + num("%.4g", cp->upper) + "] " + p.unit +
+                  " (searched within its physical limits [" + num("%.4g", p.prior_lower) + ", " + num("%.4g", p.prior_upper) + "]: " +
+                  limit->basis + ")";
+    return c;
+  }
+  if (const auto eq = name.find('='); eq != std::string::npos) {  // another option of a subsystem
+    const std::string sub = name.substr(0, eq), opt = name.substr(eq + 1);
+    const auto& known = knownSubsystems();
+    std::vector<std::string> subs;
+    for (const auto& [k, _] : known) subs.push_back(k);
+    if (!known.count(sub)) throw InputError(where, unknownNameRule("subsystem", sub, subs));
+    const auto& opts = known.at(sub);
+    if (std::find(opts.begin(), opts.end(), opt) == opts.end()) throw InputError(where, unknownNameRule(sub + " option", opt, opts));
+    if (assembly.option(sub).empty()) throw InputError(where, "assembly " + assembly.id + " has no " + sub + " subsystem to swap");
+    if (assembly.option(sub) == opt) throw InputError(where, "assembly " + assembly.id + " has the " + sub + " option '" + opt + "' already");
+    c.kind = "option";
+    c.options = {{sub, opt}};
+    c.signature = sub == "tire" && opt == "hub"
+                      ? "the road signal is the hub's own motion, not the road under a tire: no tire filtering between the signal and the "
+                        "wheel (no wheel-hop resonance driven through a tire compliance)"
+                      : "the " + sub + " behaves as the '" + opt + "' option, not '" + assembly.option(sub) + "'";
+    return c;
+  }
   if (name.rfind(kFree, 0) == 0) {
     const std::string value = name.substr(std::string(kFree).size());
     for (const auto& cp : study.calibrated)
@@ -132,7 +189,11 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
     // noise sd; the CG's shift ±10 % of the wheelbase), inside the value's valid set.
     std::string range = "±50 %", why_lower = "its smallest valid value", why_upper = "its largest valid value";
     double lo = 0.5 * v, hi = 1.5 * v, valid_lo = p.min_value, valid_hi = p.max_value;
-    if (value.rfind("sensors.", 0) == 0) {  // where a sensor sits, or its offset: absolute ranges (0 is a fine value)
+    if (value == kRoadDelay) {  // the road signal's delay: ±0.1 s about its value (0 is a fine value)
+      range = "±0.1 s";
+      lo = v - 0.1;
+      hi = v + 0.1;
+    } else if (value.rfind("sensors.", 0) == 0) {  // where a sensor sits, or its offset: absolute ranges (0 is a fine value)
       const std::string sensor = value.substr(8, value.rfind('.') - 8);
       if (value.size() > 7 && value.compare(value.size() - 7, 7, ".offset") == 0) {
         double sd = 0.0;
@@ -163,10 +224,13 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
     p.prior_upper = std::min(hi, valid_hi);
     if (!(p.prior_lower < p.prior_upper))
       throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of " + range + " about it to search");
-    c.kind = "parameter";
+    const bool input = value == kRoadGain || value == kRoadDelay;
+    c.kind = input ? "input" : "parameter";
     c.parameters = {p};
     c.calibrated_names = {value};
-    c.signature = "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
+    c.signature = input ? (value == kRoadGain ? "the road signal is scaled (its gain is not 1)"
+                                              : "the road signal is shifted in time against the measured channels (a delay)")
+                        : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
     if (p.prior_lower > lo) c.range_note = "searched from " + num("%.4g", p.prior_lower) + ", not " + num("%.4g", lo) + " (" + why_lower + ")";
     if (p.prior_upper < hi)
       c.range_note += (c.range_note.empty() ? "searched up to " : "; up to ") + num("%.4g", p.prior_upper) + ", not " + num("%.4g", hi) +
@@ -210,11 +274,19 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
 }
 
 void CandidateSpec::install(calib::CalibrationSetup& setup) const {
+  if (kind == "option") {
+    for (const auto& o : options) setup.options.push_back(o);
+    return;
+  }
+  if (kind == "range") {
+    setup.bounds[calibrated_names[0]] = {parameters[0].prior_lower, parameters[0].prior_upper};
+    return;
+  }
   if (kind == "effect") {
     EffectSetting es;
     es.name = name;
     setup.extra_effects.push_back(es);
-  } else if (kind == "parameter") {
+  } else if (kind == "parameter" || kind == "input") {
     if (!law_value) setup.freed.push_back(calibrated_names[0]);
   } else {
     setup.sensor_models.push_back({name, sensor_kind, channels});
@@ -230,8 +302,28 @@ void CandidateSpec::install(calib::CalibrationSetup& setup) const {
 }
 
 std::string CandidateSpec::finding(const std::vector<double>& values) const {
+  if (kind == "option")
+    return options.size() == 1 && options[0] == std::pair<std::string, std::string>{"tire", "hub"}
+               ? "the road signal behaves as the hub's motion, not the road under a tire"
+               : "the structure is that of " + name;
   if (values.size() != parameters.size() || values.empty()) return "";
   const double v = values[0];
+  if (kind == "range") {
+    const bool above = v > study_upper;
+    if (!above && v >= study_lower) return "";
+    const std::string& value = calibrated_names[0];
+    std::string far = above ? "above" : "below";
+    if (value == "chassis.mass_kg") far = above ? "heavier than" : "lighter than";
+    else if (value.find("stiffness") != std::string::npos) far = above ? "stiffer than" : "softer than";
+    else if (value.find("damping") != std::string::npos) far = above ? "more damped than" : "less damped than";
+    return "the " + valueInWords(value) + " is about " + num("%.4g", v) + " " + parameters[0].unit + ", " + far + " the study's range allows (" +
+           num("%.4g", above ? study_upper : study_lower) + " " + parameters[0].unit + ")";
+  }
+  if (kind == "input") {
+    if (calibrated_names[0] == kRoadGain) return "the road signal looks scaled by " + num("%.3g", v) + " (its gain)";
+    return "the road signal looks logged " + num("%.3g", 1e3 * std::abs(v)) + " ms " + (v >= 0 ? "late" : "early") +
+           " relative to the measured channels";
+  }
   if (kind == "parameter" && calibrated_names[0] == kCgShift)
     return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +
            (v >= parameters[0].default_value ? "ahead of" : "behind") + " the vehicle file's position (the same wheelbase)";

@@ -1,6 +1,6 @@
 #pragma once
-// What `twin diagnose` can propose (docs/diagnosis.md, "Candidates"). Three kinds, all screened,
-// confirmed and applied the same way:
+// What `twin diagnose` can propose (docs/diagnosis.md, "Candidates"). Six kinds, all confirmed
+// and applied the same way:
 //   effect     a force element of the catalogue (subsystems/effect.hpp), built in or user-defined:
 //              "bump_stop", "my_damper"
 //   parameter  a fixed vehicle value freed with a prior range of ±50 % about the vehicle file's
@@ -8,8 +8,16 @@
 //              named, any fixed value of the assembly's laws: "free:tire.unloaded_radius_m"
 //   sensor     a model of how the logger distorted a group of channels (subsystems/sensor.hpp
 //              sensorModelKinds): "lowpass:hub_force" (every fitted channel hub_force_*_N)
-// Each has diagnosed parameters with an "off" value (the nested base model) and a prior range,
-// and installs itself into a calibration setup.
+//   input      the road signal's gain or its delay relative to the measured channels (run
+//              parameters of every model): "free:road.gain", "free:road.delay_s"
+//   range      a calibrated value's range widened to its physical limit (twin/model.hpp
+//              physicalLimit), when the data push it against a bound: "widen:chassis.mass_kg"
+//   option     another option of a subsystem, a structure rather than a force: "tire=hub" (the road
+//              signal is the hub's motion, not the road under a tire)
+// The first four have diagnosed parameters with an "off" value (the nested base model) and a
+// prior range, screened by a score test at the base optimum. A range candidate is screened by the
+// score of its value beyond the bound; an option is not nested and is always confirmed. Each
+// installs itself into a calibration setup.
 #include <string>
 #include <vector>
 
@@ -21,10 +29,18 @@ namespace dtwin::diag {
 
 struct CandidateSpec {
   std::string name;                        ///< as the user writes it (--effects, --apply)
-  std::string kind;                        ///< "effect" | "parameter" | "sensor"
+  std::string kind;                        ///< "effect" | "parameter" | "sensor" | "input" | "range" | "option"
   /// The diagnosed parameters (effects: the non-shape ones): default_value is the off value;
-  /// prior_lower/upper the range a calibration searches.
+  /// prior_lower/upper the range a calibration searches. A range candidate: the widened value,
+  /// prior_lower/upper its widened range, default_value unused (it is calibrated already, not
+  /// added). An option: none.
   std::vector<ParameterSpec> parameters;
+  /// Whether the candidate adds its parameters to the calibrated θ (not a range or an option).
+  bool addsParameters() const { return kind != "range" && kind != "option"; }
+  /// option: the subsystem options it replaces ((subsystem, option)).
+  std::vector<std::pair<std::string, std::string>> options;
+  /// range: the study's bounds of the value (the widened ones are parameters[0]'s prior range).
+  double study_lower = 0.0, study_upper = 0.0;
   std::vector<std::string> calibrated_names;  ///< each parameter's name in a calibration ("bump_stop.gap_m", "wheel.mass_kg")
   std::string signature;                   ///< the expected residual, in words (with range_note)
   /// parameter: how its search range was clipped to the value's valid set (a mass stays
@@ -56,12 +72,15 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
                             const std::vector<std::string>& channels, const std::string& where);
 
 /// Every candidate of the default catalogue: each effect of `catalog` (the study's), each freeable
-/// vehicle value the assembly has, and each sensor model on each channel group.
+/// vehicle value the assembly has, and each sensor model on each channel group; when
+/// `measured_road` (a data set's road is a measured signal, RoadSetting::measured), the road
+/// signal's gain and delay and, unless the assembly has it, the hub input (tire=hub).
 std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const AssemblySpec& assembly,
-                                           const std::vector<std::string>& channels);
+                                           const std::vector<std::string>& channels, bool measured_road = false);
 
-/// True when `name` has the form of a candidate ("free:<value>", "<sensor model>:<group>" or a
-/// non-empty effect name): the options' check before the study and the data are known.
+/// True when `name` has the form of a candidate ("free:<value>", "widen:<value>",
+/// "<subsystem>=<option>", "<sensor model>:<group>" or a non-empty effect name): the options'
+/// check before the study and the data are known.
 bool hasCandidateForm(const std::string& name);
 /// hasCandidateForm, and an effect's name is one of `catalog`'s.
 bool isCandidateName(const std::string& name, const EffectCatalog& catalog);

@@ -140,6 +140,9 @@ nlohmann::json Figures::toJson() const {
   nlohmann::json j{{"label", label},          {"effects", effects}, {"sse_min_weighted", sse_min}, {"bic", bic},
                    {"log_evidence", log_evidence}, {"parameters", parameters}, {"folder", folder}};
   j["effect_parameters"] = paramsJson(effect_parameters);
+  j["bound_findings"] = nlohmann::json::array();
+  for (const auto& b : bounds) j["bound_findings"].push_back(b.toJson());
+  if (!left_out.empty()) j["left_out"] = left_out;
   j["calibration"] = full ? "full" : "optimum only";
   if (full) j["integrator_check"] = integrator.toJson();
   j["importance_ess"] = importance_ess;
@@ -181,7 +184,8 @@ void DiagnoseOptions::validate() const {
       // the nearest and every known effect), a freed value or a sensor model against the study and
       // the data (catalogueOf).
       check.require(hasCandidateForm(e), field,
-                    "'" + e + "' is not a candidate: an effect, free:<vehicle value> or <lowpass|lowpass2|gain|delay>:<channel group>");
+                    "'" + e + "' is not a candidate: an effect, free:<vehicle value>, widen:<calibrated value>, <subsystem>=<option> or "
+                    "<lowpass|lowpass2|gain|delay>:<channel group>");
       check.require(seen.insert(e).second, field, "names '" + e + "' twice");
     }
   }
@@ -207,6 +211,7 @@ struct Diagnosis {
   std::vector<std::string> catalogue;                 ///< the candidates ranked (no installed effect)
   std::map<std::string, CandidateSpec> specs;         ///< every candidate of the catalogue and of options.apply
   std::map<std::string, std::vector<double>> optima;  ///< every calibration's optimum, by joinEffects(effects)
+  std::map<std::string, std::vector<std::string>> optima_names;  ///< ... and the names of its values
   std::unique_ptr<calib::LabObjective> base_obj;      ///< the current stage's reference model on fit_sets (screening, refinement)
   DiagnosisResult res;
   /// Forward stagewise (docs/diagnosis.md, "More than one cause"): the causes installed so far.
@@ -285,8 +290,24 @@ std::vector<std::vector<double>> Diagnosis::extraStarts(const std::vector<std::s
   const std::vector<std::string> nested(effects.begin(), effects.end() - 1);
   const auto it = optima.find(joinEffects(nested));
   if (it == optima.end()) return starts;
+  const CandidateSpec& last = spec(effects.back());
+  if (!last.addsParameters()) {
+    // A widened range or another option: the nested optimum's values by name (an option may lack
+    // some, e.g. the hub input the tire's), and the screening's estimate of the widened model.
+    const calib::LabObjective target(study, assembly, fit_sets, setupOf(effects));
+    const auto& from = optima_names.at(joinEffects(nested));
+    std::vector<double> x;
+    for (std::size_t k = 0; k < target.names().size(); ++k) {
+      const auto at = std::find(from.begin(), from.end(), target.names()[k]);
+      x.push_back(at != from.end() ? it->second[static_cast<std::size_t>(at - from.begin())]
+                                   : 0.5 * (target.lower()[k] + target.upper()[k]));
+    }
+    starts.push_back(x);
+    if (theta_start.size() == x.size()) starts.push_back(theta_start);
+    return starts;
+  }
   auto x = it->second;
-  for (double v : offValues(spec(effects.back()))) x.push_back(v);
+  for (double v : offValues(last)) x.push_back(v);
   starts.push_back(x);
   if (effect_start.empty()) return starts;
   auto y = it->second;
@@ -302,7 +323,6 @@ std::vector<std::vector<double>> Diagnosis::extraStarts(const std::vector<std::s
 
 Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const std::string& stage,
                                  const std::vector<double>& effect_start, const std::vector<double>& theta_start, bool full) {
-  const std::size_t n_fit_params = study.calibrated.size();
   Figures f;
   f.effects = effects;
   f.label = effects.empty() ? "base" : "+ " + joinEffects(effects);
@@ -319,6 +339,7 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   const auto r = full ? calib::calibrateAssembly(study, assembly, fit_sets, setup, copt, f.folder, data_hash, progress_of)
                       : calib::calibrateOptimum(study, assembly, fit_sets, setup, copt, f.folder, data_hash, progress_of);
   optima[joinEffects(effects)] = r.optimum.theta;
+  optima_names[joinEffects(effects)] = r.names;
   f.full = full;
   f.parameters = static_cast<int>(r.names.size());
   f.sse_min = r.optimum.sse;
@@ -326,10 +347,16 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   f.importance_ess = r.rounds.ess;
   f.bic = r.optimum.sse + f.parameters * std::log(static_cast<double>(r.n_data));
   f.log_evidence = -0.5 * f.bic;
-  for (std::size_t k = n_fit_params; k < r.names.size(); ++k) {
+  f.bounds = r.bounds;
+  f.left_out = r.left_out;
+  // The candidates' own parameters: those the setup adds (after the study's calibrated values),
+  // and a widened value's (a range candidate's, one of the study's).
+  const std::size_t n_fit_params = r.names.size() - setup.extra_calibrated.size();
+  for (std::size_t k = 0; k < r.names.size(); ++k) {
+    if (k < n_fit_params && !setup.bounds.count(r.names[k])) continue;
     EffectParameter ep;
     ep.name = r.names[k];
-    ep.unit = setup.extra_calibrated[k - n_fit_params].unit;
+    ep.unit = k < r.units.size() ? r.units[k] : "";
     ep.optimum = r.optimum.theta[k];
     if (!full) {  // the optimum alone: no posterior, no interval
       ep.mean = ep.optimum;
@@ -398,12 +425,21 @@ std::set<std::string> refuseInstalled(const Study& study, const AssemblySpec& as
   return installed;
 }
 
+/// Whether a data set's road is a measured signal (RoadSetting::measured): the input-side and
+/// input-form candidates join the default catalogue.
+bool measuredRoad(const Study& study, const std::vector<calib::DataSet>& sets) {
+  for (const auto& s : sets)
+    if (study.scenario(s.scenario).road->measured()) return true;
+  return false;
+}
+
 std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& assembly, const DiagnoseOptions& options,
-                                     const std::vector<std::string>& channels, std::map<std::string, CandidateSpec>& specs) {
+                                     const std::vector<std::string>& channels, std::map<std::string, CandidateSpec>& specs,
+                                     bool measured_road) {
   const OptionCheck check("diagnose");
   const auto installed = refuseInstalled(study, assembly, options);
   std::vector<std::string> catalogue =
-      options.effects.empty() ? defaultCandidates(study.effectCatalog(), assembly, channels) : options.effects;
+      options.effects.empty() ? defaultCandidates(study.effectCatalog(), assembly, channels, measured_road) : options.effects;
   // The default catalogue leaves out what the model has already: an installed effect, a value the
   // study calibrates (a named one is refused by candidateSpec).
   const auto calibrated = [&](const std::string& e) {
@@ -447,6 +483,23 @@ void prepareData(Diagnosis& d, const std::vector<calib::DataSet>& fit, const std
     d.data_hash += s.scenario + ":" + hexId(fnv1a64(labCsvText(s.data, measurableChannels(d.study.sensors)))) + ";";
 }
 
+/// The base's values on a bound of their range with a physical limit beyond it: each a candidate
+/// "widen:<value>" of the default catalogue (docs/diagnosis.md, "Values on their bounds").
+void addRangeCandidates(Diagnosis& d) {
+  if (!d.options.effects.empty()) return;  // a named catalogue is the user's
+  for (const auto& f : d.res.base.bounds) {
+    if (f.side == "none" || f.at_limit() || !std::isfinite(f.limit)) continue;
+    const std::string name = "widen:" + f.name;
+    if (std::find(d.catalogue.begin(), d.catalogue.end(), name) != d.catalogue.end()) continue;
+    try {
+      d.specs.emplace(name, candidateSpec(name, d.study, d.assembly, d.res.fitted_channels, "diagnose.effects"));
+      d.catalogue.push_back(name);
+    } catch (const InputError&) {
+      // no physical limit beyond the study's range: nothing to widen
+    }
+  }
+}
+
 // ------------------------------------------------------------------ screen
 
 /// The base model linearised at its optimum θ̂: the standardised residual r, the sensitivities
@@ -454,10 +507,22 @@ void prepareData(Diagnosis& d, const std::vector<calib::DataSet>& fit, const std
 struct Linearisation {
   std::vector<double> theta_hat, eta_hat;
   Eigen::VectorXd r;
+  Eigen::MatrixXd J;  ///< ∂η/∂θ, weighted
   Eigen::HouseholderQR<Eigen::MatrixXd> qr;
   Eigen::MatrixXd Q;  ///< orthonormal basis of span(J)
   /// G with span(J) projected out.
   Eigen::MatrixXd project(const Eigen::MatrixXd& G) const { return G - Q * (Q.transpose() * G); }
+  /// G with the span of J's other columns than `k` projected out: what re-calibrating every value
+  /// but θ_k could absorb (the score of θ_k beyond its bound).
+  Eigen::MatrixXd projectWithout(std::size_t k, const Eigen::MatrixXd& G) const {
+    if (J.cols() <= 1) return G;
+    Eigen::MatrixXd Jk(J.rows(), J.cols() - 1);
+    for (long c = 0, o = 0; c < J.cols(); ++c)
+      if (c != static_cast<long>(k)) Jk.col(o++) = J.col(c);
+    Eigen::HouseholderQR<Eigen::MatrixXd> q(Jk);
+    const Eigen::MatrixXd Qk = q.householderQ() * Eigen::MatrixXd::Identity(Jk.rows(), Jk.cols());
+    return G - Qk * (Qk.transpose() * G);
+  }
 };
 
 Linearisation linearise(const Diagnosis& d) {
@@ -490,6 +555,7 @@ Linearisation linearise(const Diagnosis& d) {
   }
   lin.qr.compute(J);
   lin.Q = lin.qr.householderQ() * Eigen::MatrixXd::Identity(static_cast<long>(n), static_cast<long>(dim));
+  lin.J = std::move(J);
   return lin;
 }
 
@@ -498,12 +564,28 @@ Linearisation linearise(const Diagnosis& d) {
 struct ProbeGroup {
   std::size_t effect;                     ///< index into the catalogue
   std::vector<std::vector<double>> cols;  ///< parameter vectors, one per column
+  /// A range candidate: the index in θ of the widened value, which each column's one value
+  /// replaces (instead of parameters appended to θ); -1 otherwise.
+  long theta_index = -1;
 };
 
 /// The probes of effect `e` (docs/diagnosis.md, screening): every strength parameter at 5, 20 and
 /// 60 % of the way to its far prior end, for every point of the scan (10, 30, 60 % of the prior)
 /// of the parameters whose off value lies inside their prior.
-std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate) {
+std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate, double at = std::numeric_limits<double>::quiet_NaN(),
+                                 long theta_index = -1) {
+  if (candidate.kind == "option") return {};  // not nested: no score test (always confirmed)
+  if (candidate.kind == "range") {
+    // Beyond the study's bound the value sits at (the upper one when unknown), 5, 20 and 60 % of the
+    // way to its physical limit.
+    const bool lower = std::isfinite(at) && at - candidate.study_lower < candidate.study_upper - at;
+    const double b = lower ? candidate.study_lower : candidate.study_upper;
+    const double lim = lower ? candidate.parameters[0].prior_lower : candidate.parameters[0].prior_upper;
+    std::vector<ProbeGroup> groups;
+    if (lim == b) return groups;
+    for (double level : {0.05, 0.2, 0.6}) groups.push_back({e, {{b + level * (lim - b)}}, theta_index});
+    return groups;
+  }
   const auto& ps = candidate.parameters;
   const std::vector<double> off = offValues(candidate);
   std::vector<std::size_t> strength, scan;
@@ -538,7 +620,9 @@ std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::v
                                                 const std::vector<double>& theta_hat) {
   std::vector<std::unique_ptr<calib::LabObjective>> eff_obj;
   for (const auto& e : d.catalogue)
-    eff_obj.push_back(std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(d.withInstalled(e))));
+    eff_obj.push_back(d.spec(e).addsParameters()
+                          ? std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(d.withInstalled(e)))
+                          : nullptr);
   std::vector<std::pair<std::size_t, std::size_t>> jobs;  // (group, column)
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t c = 0; c < groups[g].cols.size(); ++c) jobs.push_back({g, c});
@@ -547,6 +631,11 @@ std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::v
   parallelFor(jobs.size(), d.options.threads, [&](std::size_t j, int) {
     const auto& g = groups[jobs[j].first];
     auto th = theta_hat;
+    if (g.theta_index >= 0) {
+      th[static_cast<std::size_t>(g.theta_index)] = g.cols[jobs[j].second][0];
+      probe_eta[j] = d.base_obj->predict(th);
+      return;
+    }
     for (double v : g.cols[jobs[j].second]) th.push_back(v);
     probe_eta[j] = eff_obj[g.effect]->predict(th);
   });
@@ -579,7 +668,8 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
     }
     if (failed) continue;
     all_failed[e] = false;
-    const Eigen::MatrixXd Gp = lin.project(G);
+    const long k_range = groups[g].theta_index;
+    const Eigen::MatrixXd Gp = k_range >= 0 ? lin.projectWithout(static_cast<std::size_t>(k_range), G) : lin.project(G);
     auto& cand = d.stage()[e];
     cand.max_signal = std::max(cand.max_signal, Gp.squaredNorm());
     // S = rᵀ Gp (Gpᵀ Gp)⁺ Gpᵀ r (rank-revealing: a column the base absorbs entirely drops out).
@@ -591,6 +681,18 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
     if (S <= cand.score) continue;
     cand.score = S;
     cand.score_dof = static_cast<int>(rank);
+    if (k_range >= 0) {
+      // The widened value beyond its bound b at v: the linearised fit says b + coef (v − b); the
+      // other values follow it along their own columns (θ̂ + J₋ₖ⁺ (r − G coef)), as the nested
+      // model's would.
+      const auto kk = static_cast<std::size_t>(k_range);
+      const auto& p0 = d.spec(d.catalogue[e]).parameters[0];
+      const double b = lin.theta_hat[kk], v = groups[g].cols[0][0];
+      cand.screening_estimate.clear();
+      cand.screening_theta = lin.theta_hat;
+      cand.screening_theta[kk] = std::clamp(b + coef[0] * (v - b), p0.prior_lower, p0.prior_upper);
+      continue;
+    }
     // Column c probes one strength parameter at value v_c (the others off): the linearised
     // fit says the parameter is off + coef_c (v_c − off), clipped to the prior.
     const auto& ps = d.spec(d.catalogue[e]).parameters;
@@ -630,6 +732,7 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     auto& c = d.stage()[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
+    if (d.spec(c.effect).kind == "option") continue;  // not screened: always confirmed
     if (all_failed[e]) {
       c.gate = "every probe simulation failed";
     } else if (c.max_signal == 0.0) {
@@ -660,9 +763,19 @@ void screen(Diagnosis& d) {
   std::vector<ProbeGroup> groups;
   auto& cands = d.stage();
   cands.resize(d.catalogue.size());
+  const auto& names = d.base_obj->names();
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     const auto& spec = d.spec(d.catalogue[e]);
-    for (auto& g : probesOf(e, spec)) groups.push_back(std::move(g));
+    double at = std::numeric_limits<double>::quiet_NaN();
+    long index = -1;
+    if (spec.kind == "range") {
+      const auto it = std::find(names.begin(), names.end(), spec.calibrated_names[0]);
+      if (it != names.end()) {
+        index = static_cast<long>(it - names.begin());
+        at = lin.theta_hat[static_cast<std::size_t>(index)];
+      }
+    }
+    for (auto& g : probesOf(e, spec, at, index)) groups.push_back(std::move(g));
     cands[e].effect = d.catalogue[e];
     cands[e].kind = spec.kind;
     cands[e].signature = spec.signature;
@@ -693,6 +806,10 @@ std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands
   for (std::size_t i : order)
     if (kinds.insert(cands[i].kind).second) chosen.push_back(i);
   if (chosen.size() > static_cast<std::size_t>(options.candidates)) chosen.resize(static_cast<std::size_t>(options.candidates));
+  // Another option of a subsystem is not nested in the model: no score can screen it, so it is
+  // always confirmed, beyond the budget.
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (cands[i].kind == "option" && cands[i].gate.empty()) chosen.push_back(i);
   return chosen;
 }
 
@@ -749,6 +866,7 @@ void refineBase(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
   for (std::size_t i : to_confirm) {
     const auto& c = res.candidates[i];
     if (c.fit->bic - res.base.bic >= -d.options.bic_strong) continue;
+    if (!d.spec(c.effect).addsParameters()) continue;  // not the base's values plus its own
     auto th = d.optima.at(joinEffects({c.effect}));
     th.resize(d.optima.at("base").size());
     d.report("refine base from " + c.effect, 0, 1);
@@ -997,6 +1115,9 @@ std::string causeInWords(const Cause& k) {
   const std::string evidence = "ΔBIC " + fmt("%.1f", k.delta_bic) + ", explains " + fmt("%.0f", 100 * k.explained) + " % of the excess residual";
   if (k.kind == "parameter") return "Wrong vehicle value: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "sensor") return "Sensor distortion: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "input") return "Road signal: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "range") return "Far from the prior: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "option") return "Structure: " + k.finding + " (" + k.name + ", " + evidence + ")";
   return "Missing effect: " + k.name + " (" + evidence + ")";
 }
 
@@ -1260,7 +1381,7 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
     for (const auto& ch : s.data.channels())
       if (std::find(channels.begin(), channels.end(), ch) == channels.end()) channels.push_back(ch);
   std::map<std::string, CandidateSpec> specs;
-  for (const auto& e : catalogueOf(study, assembly, options, channels, specs)) {
+  for (const auto& e : catalogueOf(study, assembly, options, channels, specs, measuredRoad(study, fit))) {
     const auto groups = probesOf(0, specs.at(e));
     for (const auto& g : groups) catalogue_probes += static_cast<double>(g.cols.size());
     most_effect_params = std::max(most_effect_params, static_cast<double>(specs.at(e).parameters.size()));
@@ -1301,14 +1422,16 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
   options.validate();
   for (const char* field : {"effects", "apply"})  // an effect's name, before the data are read
     for (const auto& e : std::string(field) == "effects" ? options.effects : options.apply)
-      if (e.find(':') == std::string::npos) (void)study.effectCatalog().make(e, OptionCheck("diagnose").where(field));
+      if (e.find(':') == std::string::npos && e.find('=') == std::string::npos)
+        (void)study.effectCatalog().make(e, OptionCheck("diagnose").where(field));
   if (fit.empty()) throw InputError(OptionCheck("diagnose").where("fit"), "needs at least one measurement data set");
   Diagnosis d(study, assembly, options, out_dir, progress);
   d.res.assembly = assembly.id;
   refuseInstalled(study, assembly, options);  // before the data are read
   prepareData(d, fit, holdout);
-  d.catalogue = catalogueOf(study, assembly, options, d.res.fitted_channels, d.specs);
+  d.catalogue = catalogueOf(study, assembly, options, d.res.fitted_channels, d.specs, measuredRoad(study, fit));
   d.res.base = d.calibrateWith({}, "base");
+  addRangeCandidates(d);
   screen(d);
   const auto confirmed = confirm(d);
   refine(d, confirmed);
@@ -1410,7 +1533,10 @@ std::string DiagnosisResult::text() const {
   if (!base_refined_from.empty())
     s += "  (The base optimum was improved from " + base_refined_from + "'s fit with the effect off: weighted SSE " +
          fmt("%.1f", base_unrefined_sse) + " -> " + fmt("%.1f", base.sse_min) + "; every ΔBIC is against the improved base.)\n\n";
-  s += "Ranked effects (confirmed by re-calibration first):\n";
+  if (!base.bounds.empty()) {
+    s += "Values on their bounds (the base calibration; docs/calibration.md):\n" + calib::boundFindingsText(base.bounds, "  ") + "\n";
+  }
+  s += "Ranked candidates (confirmed by re-calibration first):\n";
   int k = 0;
   for (const auto& c : candidates) s += "  " + std::to_string(++k) + ". " + c.why + "\n";
   for (const auto& st : further) {

@@ -101,6 +101,10 @@ struct Figures {
   /// interval are).
   double importance_ess = 0;
   static constexpr double kResolvedEss = 10.0;
+  /// Its values on their bounds and values the data do not determine (calibration/bounds.hpp).
+  std::vector<calib::BoundFinding> bounds;
+  /// The study's calibrated values this model lacks (another tire option): not calibrated.
+  std::vector<std::string> left_out;
   /// false: the calibration stopped at its optimum (DiagnoseOptions::full_within): effect
   /// parameters carry the optimum only, the comparison is at the optimum, no integrator check ran.
   bool full = true;
@@ -109,7 +113,7 @@ struct Figures {
 
 struct Candidate {
   std::string effect;        ///< the candidate's name (an effect, free:<value> or <sensor model>:<group>)
-  std::string kind;          ///< "effect" | "parameter" | "sensor" (candidates.hpp)
+  std::string kind;          ///< "effect" | "parameter" | "sensor" | "input" | "range" | "option" (candidates.hpp)
   std::string signature;
   std::string finding;       ///< confirmed: what the calibrated candidate says, in words (CandidateSpec::finding)
   std::string gate;          ///< empty: passed the gate; else why it cannot matter here

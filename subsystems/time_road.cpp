@@ -88,9 +88,35 @@ std::vector<double> zeroPhaseHighPass(const std::vector<double>& t, const std::v
   return y;
 }
 
+namespace {
+/// Three-point (parabola) derivatives of samples y at times x (one-sided at the ends): exact for
+/// quadratics, at any spacing.
+std::vector<double> threePointSlopes(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> m(n, 0.0);
+  if (n < 2) return m;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == 0) m[i] = (y[1] - y[0]) / (x[1] - x[0]);
+    else if (i + 1 == n) m[i] = (y[n - 1] - y[n - 2]) / (x[n - 1] - x[n - 2]);
+    else {
+      const double a = x[i] - x[i - 1], b = x[i + 1] - x[i];
+      m[i] = (b * (y[i] - y[i - 1]) / a + a * (y[i + 1] - y[i]) / b) / (a + b);
+    }
+  }
+  return m;
+}
+}  // namespace
+
 std::vector<double> roadHeightFromVelocity(const std::vector<double>& t, const std::vector<double>& v, double highpass_hz) {
+  // The exact integral of the velocity's cubic Hermite interpolant (three-point slopes a):
+  // h(t1) − h(t0) = Δt (v0 + v1)/2 + Δt² (a0 − a1)/12, fourth order where the trapezoid is second
+  // (at 100 Hz it loses 3 % of a 10 Hz content's height, this 0.3 %).
+  const std::vector<double> a = threePointSlopes(t, v);
   std::vector<double> h(v.size(), 0.0);
-  for (std::size_t k = 1; k < v.size(); ++k) h[k] = h[k - 1] + 0.5 * (v[k] + v[k - 1]) * (t[k] - t[k - 1]);
+  for (std::size_t k = 1; k < v.size(); ++k) {
+    const double dt = t[k] - t[k - 1];
+    h[k] = h[k - 1] + 0.5 * (v[k] + v[k - 1]) * dt + dt * dt * (a[k - 1] - a[k]) / 12.0;
+  }
   return zeroPhaseHighPass(t, h, highpass_hz);
 }
 
@@ -98,9 +124,13 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const st
                                                 const TimeRoadOptions& o, nlohmann::json description) {
   DTWIN_CHECK(o.dx_m > 0 && o.highpass_hz > 0, "roadFromTimeLog: options");
   std::vector<double> left = log.left, right = log.right;
-  if (log.form == TimeRoadLog::Form::Velocity) {
+  const bool velocity = log.form == TimeRoadLog::Form::Velocity;
+  std::vector<double> rate_l, rate_r;  // a velocity log's own dh/dt (its drift removed as the heights' is)
+  if (velocity) {
     left = roadHeightFromVelocity(log.t_s, log.left, o.highpass_hz);
     right = log.identical_tracks ? left : roadHeightFromVelocity(log.t_s, log.right, o.highpass_hz);
+    rate_l = zeroPhaseHighPass(log.t_s, log.left, o.highpass_hz);
+    rate_r = log.identical_tracks ? rate_l : zeroPhaseHighPass(log.t_s, log.right, o.highpass_hz);
   }
   // Heights a road can have: a wrong unit (mm read as m, a velocity's bias integrated without
   // its drift removed) is refused here, not met as a failed simulation.
@@ -110,13 +140,14 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const st
         throw InputError(log.name, std::string("the road height at time_s = ") + formatNumber(log.t_s[k]) + " is " + formatNumber((*h)[k]) +
                                        " m, beyond the 10 m a road can rise or fall here: check the unit" +
                                        (log.form == TimeRoadLog::Form::Velocity ? " and highpass_hz" : ""));
-  std::vector<double> x, hl, hr;
+  std::vector<double> x, hl, hr, kept;
   for (std::size_t k = 0; k < log.t_s.size(); ++k) {
     const double d = distance(log.t_s[k]);
     if (!x.empty() && !(d > x.back() + 1e-6)) continue;
     x.push_back(d);
     hl.push_back(left[k]);
     hr.push_back(right[k]);
+    kept.push_back(static_cast<double>(k));
   }
   if (x.size() < 2)
     throw InputError(log.name, "the vehicle moves past fewer than two of its samples: no profile against distance");
@@ -125,21 +156,20 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const st
   if (!(points <= 1e7))
     throw InputError(log.name, "the profile would need " + formatNumber(points, 3) + " grid points of dx_m = " + formatNumber(o.dx_m) +
                                    " m (at most 1e7): raise dx_m");
-  // Three-point (parabola) slopes at the kept samples; one-sided at the ends.
-  auto slopes = [&](const std::vector<double>& h) {
-    const std::size_t n = x.size();
-    std::vector<double> m(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i == 0) m[i] = (h[1] - h[0]) / (x[1] - x[0]);
-      else if (i + 1 == n) m[i] = (h[n - 1] - h[n - 2]) / (x[n - 1] - x[n - 2]);
-      else {
-        const double a = x[i] - x[i - 1], b = x[i + 1] - x[i];
-        m[i] = (b * (h[i] - h[i - 1]) / a + a * (h[i + 1] - h[i]) / b) / (a + b);
-      }
+  // Slopes at the kept samples: a velocity log's own, dh/dx = (dh/dt) / (dx/dt), where the
+  // vehicle moves at more than 0.5 m/s (at 100 Hz the profile then holds a 10 Hz content of the
+  // signal to 0.6 %, a 20 Hz one to 4 %); else, and for a height log, three-point (parabola) slopes.
+  auto slopes = [&](const std::vector<double>& h, const std::vector<double>& rate) {
+    std::vector<double> m = threePointSlopes(x, h);
+    if (rate.empty()) return m;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double t = log.t_s[static_cast<std::size_t>(kept[i])], dt = 1e-3;
+      const double speed = (distance(t + dt) - distance(t - dt)) / (2 * dt);
+      if (speed > 0.5) m[i] = rate[static_cast<std::size_t>(kept[i])] / speed;
     }
     return m;
   };
-  const auto ml = slopes(hl), mr = slopes(hr);
+  const auto ml = slopes(hl, rate_l), mr = slopes(hr, rate_r);
   const auto n = static_cast<std::size_t>(std::ceil((x_hi - x_lo) / o.dx_m)) + 1;
   std::vector<double> gl(n), gr(n);
   std::size_t j = 0;

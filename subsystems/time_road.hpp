@@ -35,8 +35,9 @@ TimeRoadLog readTimeRoadCsv(const std::string& path);
 /// is (f/fc)² / (1 + (f/fc)²) (|1 − |H_lp|²|, H_lp = 1/(1 + j f/fc)): 0.5 at fc, 0.99 at 10 fc.
 std::vector<double> zeroPhaseHighPass(const std::vector<double>& t, const std::vector<double>& u, double cutoff_hz);
 
-/// Heights from vertical road velocities: the cumulative trapezoid, its drift removed by
-/// zeroPhaseHighPass at `highpass_hz`.
+/// Heights from vertical road velocities: the exact integral of the velocities' cubic Hermite
+/// interpolant (three-point slopes; fourth order), its drift removed by zeroPhaseHighPass at
+/// `highpass_hz`.
 std::vector<double> roadHeightFromVelocity(const std::vector<double>& t, const std::vector<double>& v, double highpass_hz);
 
 struct TimeRoadOptions {
@@ -48,8 +49,9 @@ struct TimeRoadOptions {
 /// The profile against distance: each sample at the distance the front axle had travelled at its
 /// time (`distance(t)`, non-decreasing). Samples taken while the vehicle stood still (less than
 /// 1e-6 m on from the last kept one) are dropped: the road under a standing wheel does not change.
-/// The kept samples are joined by the cubic Hermite interpolant with three-point slopes (exact
-/// for quadratics) and sampled on the uniform grid of dx_m; before the first kept distance the
+/// The kept samples are joined by the cubic Hermite interpolant and sampled on the uniform grid of
+/// dx_m. Its slopes: a velocity log's own velocity over the speed (dx/dt from `distance`) where the
+/// vehicle moves faster than 0.5 m/s, else three-point slopes (exact for quadratics). Before the first kept distance the
 /// first height is held, after the last the last. Throws InputError(log.name, rule) when a height
 /// (after integration) is beyond ±10 m, fewer than two samples are at distinct distances, or the
 /// grid would exceed 1e7 points.

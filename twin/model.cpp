@@ -385,9 +385,11 @@ bool Model::lacksOptionParameter(const std::string& name) const {
   if (name.rfind(prefix, 0) != 0 || slot(name) >= 0) return false;
   const std::string local = name.substr(prefix.size());
   if (local.find('.') != std::string::npos) return false;
-  for (const auto& law : tireLawNames())
-    for (const auto& s : makeTireLaw(law, "")->parameters())
+  for (const auto& name : tireLawNames()) {
+    const auto law = makeTireLaw(name, "");  // held: parameters() refers into it
+    for (const auto& s : law->parameters())
       if (s.shared && s.name == local) return true;
+  }
   return false;
 }
 

@@ -43,6 +43,9 @@ class RoadSetting {
   virtual bool random() const { return false; }
   /// A short obstacle (the `twin bench` bump case).
   virtual bool obstacle() const { return false; }
+  /// A measured signal (a logged or surveyed road): it may be another quantity than the road under
+  /// a tire (the hub's own motion), or carry a gain or a delay, which a diagnosis then weighs.
+  virtual bool measured() const { return false; }
   /// Checks that need the scenario (a bump before the end of the run); `where` names the table.
   virtual void check(const ScenarioSpec& s, const std::string& where) const {}
 };

@@ -11,6 +11,7 @@ class CsvRoadSetting final : public RoadSetting {
   /// Field: path (relative to the study file's folder).
   static std::shared_ptr<const RoadSetting> parse(TableReader& table);
   std::string type() const override { return "csv"; }
+  bool measured() const override { return true; }
   nlohmann::json toJson() const override { return {{"type", "csv"}, {"path", path}}; }
   std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v, std::uint64_t seed) const override;
   std::vector<std::string> describeWindow(const ScenarioSpec& s, const VehicleData& v, double t0, double t1) const override {

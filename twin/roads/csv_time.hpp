@@ -17,6 +17,7 @@ class CsvTimeRoadSetting final : public RoadSetting {
   /// (default 0.1; a road-velocity file only).
   static std::shared_ptr<const RoadSetting> parse(TableReader& table);
   std::string type() const override { return "csv_time"; }
+  bool measured() const override { return true; }
   nlohmann::json toJson() const override;
   std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v, std::uint64_t seed) const override;
   std::vector<std::string> describeWindow(const ScenarioSpec&, const VehicleData&, double, double) const override {

@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Makes two drives of a car with a suspension controller (docs/measurements.md, "A car with a
+controller"): data/drives/controlled_car_a.csv and controlled_car_b.csv, logger files as such a
+car's own system would write them, made by the twin itself with a car that differs from the
+sedan in its structure, not only in its values.
+
+  python3 scripts/make_controlled_car_drives.py [TWIN] [OUT_DIR]
+
+The car (HIDDEN below: what the walkthrough's diagnosis must find):
+  - its road signal is the car's own estimate of the road from its wheel sensors: the motion of
+    the wheel centre itself, not the road under a tire (the twin's tire option `hub`);
+  - a skyhook controller on every corner (the `skyhook` effect);
+  - a sprung mass far above the sedan's prior range (an SUV on the sedan's priors).
+Two drives on different ISO 8608 roads (the same on both tracks: one road signal) and speed
+profiles, each with a standstill and a turn to mask.
+
+Logger columns: Time [s, 100 Hz, jittered by +-1.5 ms, clock from 1200 s], Speed [km/h, 0.1
+km/h steps], YawRate [deg/s, noise 0.2], RoadVel [m/s: the vertical velocity of the road signal
+under the front wheels], AccZ [g with its 1 g offset, noise 0.03 m/s^2]. Seeds are fixed: the
+files are reproducible.
+"""
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+from drive_tools import cubic_reader, knot_speed
+
+# The car (the walkthrough must not read these; docs/measurements.md states them after the walk).
+HIDDEN_VALUES = {
+    "chassis.mass_kg": 2300.0,             # the sedan study's range: 1100 to 1900
+    "chassis.pitch_inertia_kgm2": 2900.0,  # inside its range (1500 to 3200)
+    "chassis.roll_inertia_kgm2": 650.0,    # not calibrated: one road signal for both tracks leaves roll unexcited
+    "chassis.yaw_inertia_kgm2": 3300.0,    # (yaw is no degree of freedom; it keeps the inertias a rigid body's)
+    "suspension.stiffness": 42000.0,       # inside (10e3 to 80e3)
+    "suspension.damping": 1800.0,          # inside (500 to 8000)
+}
+HIDDEN_SKYHOOK = 2500.0                    # N s/m per corner
+SEAT = [0.4, -0.35, 0.25]                  # the accelerometer, where the mapping says it is
+ROLL_IN_TURN = 0.08                        # vertical acceleration at the sensor per m/s^2 of lateral acceleration
+ACCURACY = "1e-8"
+TWIN = sys.argv[1] if len(sys.argv) > 1 else "./build/cli/twin"
+OUT = sys.argv[2] if len(sys.argv) > 2 else "data/drives"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+DRIVES = {
+    # name: (duration, speed knots (t, v m/s), road class, seed, turns [(t0, t1, yaw rate deg/s)])
+    "a": (62.0, [(0, 0), (2, 0), (10, 16), (27, 16), (33, 9), (44, 21), (63, 21)], "C", 20261201,
+          [(29.0, 34.0, 12.0)]),
+    "b": (52.0, [(0, 0), (2, 0), (9, 13), (22, 13), (30, 24), (53, 24)], "C", 20261202,
+          [(14.0, 19.0, -13.0)]),
+}
+
+
+def yaw_rate(turns, t):
+    """deg/s: a smooth turn in and out over each turn's interval."""
+    for t0, t1, r in turns:
+        if t0 <= t <= t1:
+            return r * math.sin(math.pi * (t - t0) / (t1 - t0)) ** 2
+    return 0.0
+
+
+def generating_study(work):
+    demo = open(os.path.join(ROOT, "data/studies/demo.toml")).read()
+    demo = demo.replace('vehicle = "../vehicle/midsize_sedan.toml"',
+                        f'vehicle = "{os.path.join(ROOT, "data/vehicle/midsize_sedan.toml")}"')
+    demo = demo.replace('tire = ["pac2002", "fiala"]', 'tire = ["hub"]').replace(
+        'suspension = ["macpherson", "solid_axle"]', 'suspension = ["macpherson"]')
+    demo = demo[: demo.index("[sizes]")]
+    # The demo's calibrated tire values do not apply to the hub input: drop those tables.
+    blocks = demo.split("[[calibrated]]")
+    demo = blocks[0] + "".join("[[calibrated]]" + b for b in blocks[1:] if '"tire.' not in b.split("\n", 2)[1])
+    for name, (duration, knots, road_class, seed, turns) in DRIVES.items():
+        with open(os.path.join(work, f"speed_{name}.csv"), "w") as f:
+            f.write("time_s,speed_mps\n")
+            for k in range(int(duration * 10) + 11):
+                f.write(f"{0.1 * k:.1f},{knot_speed(knots, 0.1 * k):.6f}\n")
+        demo += f"""
+[scenarios.truth_{name}]
+duration_s = {duration}
+speed = {{ csv = "speed_{name}.csv" }}
+road = {{ type = "iso8608", class = "{road_class}", band_cycles_per_m = [0.05, 1.0], smooth_until_s = 2.0, tracks = "identical" }}
+"""
+    demo += f"""
+[sensors.seat]
+position_m = [{SEAT[0]}, {SEAT[1]}, {SEAT[2]}]
+quantity = "acceleration_z"
+
+[effects.skyhook]
+damping = {HIDDEN_SKYHOOK}
+
+[fixed]
+""" + "".join(f'"{k}" = {v}\n' for k, v in HIDDEN_VALUES.items() if not k.startswith("suspension.")) + """
+[sizes]
+lab_repetitions = 1
+"""
+    path = os.path.join(work, "study.toml")
+    open(path, "w").write(demo)
+    return path
+
+
+def main():
+    work = tempfile.mkdtemp(prefix="dtwin_controlled_car_")
+    study = generating_study(work)
+    sets = [f"--set={k}={v}" for k, v in HIDDEN_VALUES.items() if k.startswith("suspension.")]
+    os.makedirs(OUT, exist_ok=True)
+    g = 9.80665
+    for name, (duration, knots, road_class, seed, turns) in DRIVES.items():
+        rng = random.Random(seed)
+        trace = os.path.join(work, f"truth_{name}.csv")
+        subprocess.run([TWIN, "simulate", "--study", study, "--assembly", "M1", "--scenario", f"truth_{name}", "--seed", str(seed),
+                        "--out", trace, "--quiet", "--channels", "speed_mps,seat_mps2,road_fl_m",
+                        "--accuracy", ACCURACY] + sets, check=True)
+        rows = [line.strip().split(",") for line in open(trace)]
+        head, data = rows[0], [[float(x) for x in r] for r in rows[1:]]
+        col = {n: [r[i] for r in data] for i, n in enumerate(head)}
+        # The road signal's vertical velocity: the central difference of the 1 kHz road height.
+        h = col["road_fl_m"]
+        col["road_vel"] = [(h[min(i + 1, len(h) - 1)] - h[max(i - 1, 0)]) / (0.001 * (min(i + 1, len(h) - 1) - max(i - 1, 0)))
+                           for i in range(len(h))]
+        readers = {n: cubic_reader(col[n]) for n in col}
+
+        def at(n, t):  # four-point cubic through the 1 kHz rows
+            return readers[n](t)
+
+        path = os.path.join(OUT, f"controlled_car_{name}.csv")
+        n = int(round((duration - 1.0) * 100))
+        with open(path, "w") as f:
+            f.write("Time,Speed,YawRate,RoadVel,AccZ\n")
+            for k in range(n + 1):
+                t = 0.01 * k + (rng.uniform(-0.0015, 0.0015) if 0 < k < n else 0.0)
+                v = at("speed_mps", t)
+                r = yaw_rate(turns, t)
+                lateral = v * math.radians(r)  # m/s^2
+                acc = at("seat_mps2", t) + ROLL_IN_TURN * lateral + rng.gauss(0.0, 0.03)
+                cells = [f"{1200.0 + t:.4f}", f"{round(v * 3.6, 1):.1f}", f"{r + rng.gauss(0.0, 0.2):.2f}",
+                         f"{at('road_vel', t):.5f}", f"{1.0 + acc / g:.6f}"]
+                f.write(",".join(cells) + "\n")
+        print(f"wrote {path} ({n + 1} rows; scratch files in {work})")
+
+
+if __name__ == "__main__":
+    main()

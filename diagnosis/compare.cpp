@@ -7,7 +7,6 @@
 #include <map>
 #include <set>
 #include <stdexcept>
-#include <tuple>
 #include <utility>
 
 #include "common/errors.hpp"
@@ -93,6 +92,10 @@ void CompareOptions::validate() const {
   check.nonNegative("window_threshold", window_threshold);
   check.nonNegative("window_merge_s", window_merge_s);
   check.nonNegative("window_min_s", window_min_s);
+  check.atLeast("window_max_merged", window_max_merged, 1);
+  check.atLeast("window_max_listed", window_max_listed, 1);
+  check.require(window_listed_share > 0.0 && window_listed_share <= 1.0, "window_listed_share",
+                "must lie in (0, 1], got " + formatNumber(window_listed_share));
   check.atLeast("state_bins", state_bins, 1);
   check.atLeast("fitted_parameters", fitted_parameters, 0);
 }
@@ -142,90 +145,6 @@ void poolStates(Pooled& pl, const std::string& ch, const At& at, double residual
   const std::string l = front ? "fl" : "rl", r = front ? "fr" : "rr";
   pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(at.column("susp_defl_" + l + "_m") -
                                                                                    at.column("susp_defl_" + r + "_m"));
-}
-
-/// How far the times t[b, e) stray from their nominal grid t0 + i dt, in steps: dt their mean
-/// step (returned in `dt`), t0 the median offset.
-double strayOf(const std::vector<double>& t, std::size_t b, std::size_t e, double& dt) {
-  const std::size_t n = e - b;
-  dt = (t[e - 1] - t[b]) / static_cast<double>(n - 1);
-  std::vector<double> offsets(n);
-  for (std::size_t i = 0; i < n; ++i) offsets[i] = t[b + i] - static_cast<double>(i) * dt;
-  std::vector<double> sorted = offsets;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
-  const double t0 = sorted[n / 2];
-  double stray = 0.0;
-  for (std::size_t i = 0; i < n; ++i) stray = std::max(stray, std::abs(offsets[i] - t0) / dt);
-  return stray;
-}
-
-/// The longest run [b, e) of `t` with no step above 1.5 times the median step (a log's stretch
-/// between its gaps: dropouts, masked rows).
-std::pair<std::size_t, std::size_t> longestStretch(const std::vector<double>& t) {
-  std::vector<double> steps;
-  for (std::size_t i = 1; i < t.size(); ++i) steps.push_back(t[i] - t[i - 1]);
-  std::vector<double> sorted = steps;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
-  const double gap = 1.5 * sorted[sorted.size() / 2];
-  std::pair<std::size_t, std::size_t> best{0, 1};
-  for (std::size_t b = 0, i = 1; i <= t.size(); ++i)
-    if (i == t.size() || steps[i - 1] > gap) {
-      if (i - b > best.second - best.first) best = {b, i};
-      b = i;
-    }
-  return best;
-}
-
-/// The residual of a fitted series in frequency, with the road under the channel's wheel as the
-/// coherence input; else why not, in bands_note. Needs >= 64 times on a uniform base: every time
-/// within 0.4 of a step of the nominal grid t0 + i dt (dt the mean step, t0 the median offset):
-/// a logger's jittered clock. The spectrum then takes the times as uniform, and bands_note says
-/// how far they strayed. A log with gaps (dropouts, masked rows) gives the spectrum of its longest
-/// stretch between gaps when that holds 64 times and is uniform, and bands_note says which; a
-/// change of rate within it gives no spectrum.
-void addBands(SeriesComparison& sc, const std::vector<At>& at) {
-  const std::size_t n = sc.t.size();
-  if (n < 64) {
-    sc.bands_note = "no spectrum: fewer than 64 times";
-    return;
-  }
-  double dt = 0.0;
-  std::size_t b = 0, e = n;
-  double stray = strayOf(sc.t, b, e, dt);
-  std::string stretch;
-  if (stray > 0.4) {
-    std::tie(b, e) = longestStretch(sc.t);
-    const double whole_dt = dt, whole_stray = stray;
-    if (e - b >= 64) stray = strayOf(sc.t, b, e, dt);
-    if (e - b < 64 || stray > 0.4) {
-      sc.bands_note = "no spectrum: a non-uniform time base (a time " + formatNumber(whole_stray, 3) + " steps of " +
-                      formatNumber(whole_dt, 4) + " s off the nominal grid; gaps or mixed rates" +
-                      (e - b < 64 ? ", and no stretch between gaps holds 64 times)" : ")");
-      return;
-    }
-    stretch = "the spectrum of the longest stretch between gaps, " + formatNumber(sc.t[b], 6) + "–" + formatNumber(sc.t[e - 1], 6) +
-              " s (" + std::to_string(e - b) + " of " + std::to_string(n) + " times)";
-  }
-  std::string jitter;
-  if (stray > 1e-6)
-    jitter = "sample times jitter up to " + formatNumber(100.0 * stray, 3) + " % of the step " + formatNumber(dt, 4) +
-             " s: the spectrum treats them as uniform";
-  sc.bands_note = stretch + (!stretch.empty() && !jitter.empty() ? "; " : "") + jitter;
-  if (!sc.fitted) {
-    sc.bands_note = "no spectrum: no noise estimate for this channel";
-    return;
-  }
-  std::vector<double> res, road;
-  double rbar = 0.0;
-  std::string c = cornerOf(sc.channel);
-  if (c.empty()) c = "fl";
-  for (std::size_t i = b; i < e; ++i) {
-    res.push_back(sc.measured_mean[i] - sc.predicted_mean[i]);
-    rbar += sc.repetitions[i];
-    road.push_back(at[i].column("road_" + c + "_m"));
-  }
-  rbar /= static_cast<double>(e - b);
-  sc.bands = bandAnalysis(res, 1.0 / dt, sc.noise_variance / rbar, &road, welchSegment(res.size()));
 }
 
 /// One (data set, channel): the predictive mean and band at every measured time, the error
@@ -299,18 +218,21 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
   sc.fit_percent = fitPercent(ss, static_cast<double>(n_rec), y_sum, y_sq);
   sc.coverage = static_cast<double>(covered) / static_cast<double>(n_rec);
   sc.systematic_rms = std::sqrt(std::max(0.0, (ss_sys - ss_noise) / nt));
-  // In time: windows of large standardised residual, labelled.
-  if (sc.fitted) {
-    const auto& o = cx.options;
-    for (const auto& w : exceedanceWindows(sc.t, sc.z, o.window_threshold, o.window_merge_s, o.window_min_s)) {
-      LabelledWindow lw;
-      lw.window = w;
-      lw.label = describeScenarioWindow(scenario, cx.vehicle, w.t_begin, w.t_end);
-      lw.speed_mps = scenario.speed.speed(0.5 * (w.t_begin + w.t_end));
-      sc.windows.push_back(lw);
-    }
+  // In time: windows of large standardised residual, ranked, the listed ones labelled.
+  if (sc.fitted)
+    addWindows(sc, cx.options, [&](const Window& w) {
+      return LabelledWindow{w, describeScenarioWindow(scenario, cx.vehicle, w.t_begin, w.t_end),
+                            scenario.speed.speed(0.5 * (w.t_begin + w.t_end))};
+    });
+  // In frequency, with the road under the channel's wheel as the coherence input.
+  std::vector<double> road;
+  if (sc.fitted && samples.size() >= 64) {
+    std::string c = cornerOf(ch);
+    if (c.empty()) c = "fl";
+    road.reserve(samples.size());
+    for (const auto& at : samples) road.push_back(at.column("road_" + c + "_m"));
   }
-  addBands(sc, samples);
+  addResidualBands(sc, road);
   return sc;
 }
 
@@ -357,6 +279,83 @@ void lackOfFit(Comparison& out, int fitted_parameters) {
 }
 
 }  // namespace
+
+std::string windowsNote(const WindowSummary& s) {
+  if (s.found == 0) return "";
+  const auto pct = [](double x) { return 100.0 * x >= 9.5 ? formatPrintf("%.0f", 100.0 * x) : formatNumber(100.0 * x, 2); };
+  std::string out = std::to_string(s.found) + (s.found == 1 ? " window" : " windows") + " over " + pct(s.time_share) + " % of the record";
+  if (100.0 * s.time_share >= 49.5) out += ": the model misses throughout, not in a few places";  // "over 50 %" and more
+  if (s.merged < s.found)
+    out += "; merged to " + std::to_string(s.merged) + " (neighbours closer than " + formatNumber(s.merge_gap_s, 3) + " s),";
+  else
+    out += ";";
+  if (s.listed < s.merged)
+    out += " the " + std::to_string(s.listed) + " largest, listed, hold " + pct(s.listed_share) + " % of the residual";
+  else
+    out += std::string(s.listed == 1 ? " it holds " : " together they hold ") + pct(s.listed_share) + " % of the residual";
+  return out;
+}
+
+void addWindows(SeriesComparison& sc, const CompareOptions& o, const std::function<LabelledWindow(const Window&)>& describe) {
+  o.validate();
+  WindowRankOptions ro;
+  ro.max_merged = static_cast<std::size_t>(o.window_max_merged);
+  ro.max_listed = static_cast<std::size_t>(o.window_max_listed);
+  ro.listed_share = o.window_listed_share;
+  WindowRanking r = rankWindows(sc.t, sc.z, o.window_threshold, o.window_merge_s, o.window_min_s, ro);
+  sc.windows.clear();
+  for (std::size_t k = 0; k < r.summary.listed; ++k) sc.windows.push_back(describe(r.ranked[k]));
+  sc.all_windows = std::move(r.found);
+  sc.window_summary = r.summary;
+  sc.windows_note = windowsNote(r.summary);
+}
+
+void addResidualBands(SeriesComparison& sc, const std::vector<double>& road) {
+  sc.bands.clear();
+  sc.bands_note.clear();
+  const std::size_t n = sc.t.size();
+  if (n < 64) {
+    sc.bands_note = "no spectrum: fewer than 64 times";
+    return;
+  }
+  DTWIN_CHECK(sc.measured_mean.size() == n && sc.predicted_mean.size() == n && sc.repetitions.size() == n,
+              "a series' values and times differ in number");
+  DTWIN_CHECK(road.empty() || road.size() == n, "the road input and the times differ in number");
+  const UniformGrid g = uniformGrid(sc.t);
+  const std::string gaps = std::to_string(g.gaps) + (g.gaps == 1 ? " gap" : " gaps") + " in the times (steps longer than " +
+                           formatNumber(g.gap_step_s, 3) + " s)";
+  if (g.size() < 64) {
+    sc.bands_note = "no spectrum: " + gaps + ", and no stretch between gaps holds 64 times";
+    return;
+  }
+  const std::string stretch = "the longest stretch between gaps, " + formatNumber(sc.t[g.begin], 6) + "–" +
+                              formatNumber(sc.t[g.end - 1], 6) + " s (" + std::to_string(g.size()) + " of " + std::to_string(n) + " times)";
+  if (!g.steady) {
+    sc.bands_note = "no spectrum: the sampling rate changes within " + (g.gaps ? stretch : std::string("the record")) + ", from " +
+                    formatNumber(g.rate_lo_hz, 4) + " to " + formatNumber(g.rate_hi_hz, 4) + " Hz";
+    return;
+  }
+  std::vector<std::string> parts;
+  if (g.gaps) parts.push_back("the spectrum of " + stretch);
+  if (g.resampled)
+    parts.push_back("resampled to a uniform " + formatFixed(1.0 / g.dt, 1) + " Hz grid by linear interpolation: the clock jitters by up to " +
+                    formatNumber(100.0 * g.jitter, 3) + " % of a step (the noise floor follows the interpolation)");
+  for (std::size_t k = 0; k < parts.size(); ++k) sc.bands_note += (k ? "; " : "") + parts[k];
+  if (!sc.fitted) {
+    sc.bands_note = "no spectrum: no noise estimate for this channel";
+    return;
+  }
+  std::vector<double> res(n);
+  for (std::size_t i = 0; i < n; ++i) res[i] = sc.measured_mean[i] - sc.predicted_mean[i];
+  double rbar = 0.0;
+  for (std::size_t i = g.begin; i < g.end; ++i) rbar += sc.repetitions[i];
+  rbar /= static_cast<double>(g.size());
+  const std::vector<double> r = onGrid(g, res);
+  std::vector<double> u;
+  if (!road.empty()) u = onGrid(g, road);
+  sc.bands = bandAnalysis(r, 1.0 / g.dt, sc.noise_variance / rbar, road.empty() ? nullptr : &u, welchSegment(r.size()), 0.01,
+                          gridNoiseAutocorrelation(g));
+}
 
 Comparison compareModel(const calib::LabObjective& objective, const std::vector<calib::DataSet>& sets,
                         const std::vector<std::vector<double>>& draws, const std::map<std::string, ChannelNoise>& noise,
@@ -423,10 +422,18 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
                      {"baseline_fit_percent", jsonNumber(s.baseline_fit_percent)}, {"max_abs_error", s.max_abs},
                      {"max_error_at_s", s.max_at_s}, {"coverage95", s.coverage}, {"systematic_rms", s.systematic_rms},
                      {"lack_of_fit_chi2", s.lack_of_fit}};
-    e["windows"] = nlohmann::json::array();
+    e["windows"] = nlohmann::json::array();  // the listed ones, largest share first
     for (const auto& w : s.windows)
       e["windows"].push_back({{"t_begin_s", w.window.t_begin}, {"t_end_s", w.window.t_end}, {"peak_z", w.window.peak_z},
                               {"share_of_chi2", w.window.share}, {"label", w.label}, {"speed_mps", w.speed_mps}});
+    const WindowSummary& ws = s.window_summary;
+    e["windows_summary"] = {{"found", ws.found}, {"merged", ws.merged}, {"listed", ws.listed}, {"merge_gap_s", ws.merge_gap_s},
+                            {"time_share", ws.time_share}, {"merged_share_of_chi2", ws.merged_share},
+                            {"listed_share_of_chi2", ws.listed_share}};
+    if (!s.windows_note.empty()) e["windows_note"] = s.windows_note;
+    nlohmann::json rows = nlohmann::json::array();  // every window found, chronological
+    for (const auto& w : s.all_windows) rows.push_back({w.t_begin, w.t_end, w.peak_z, w.share});
+    e["all_windows"] = {{"columns", {"t_begin_s", "t_end_s", "peak_z", "share_of_chi2"}}, {"rows", std::move(rows)}};
     e["bands"] = nlohmann::json::array();
     for (const auto& b : s.bands)
       e["bands"].push_back({{"band", b.band}, {"lo_hz", b.lo_hz}, {"hi_hz", b.hi_hz}, {"residual_power", b.residual_power},

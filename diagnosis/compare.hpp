@@ -5,6 +5,7 @@
 // frequency (Welch PSD of the residual per band against the noise floor, coherence with the road)
 // and in state (residual binned against suspension deflection and rate, tire deflection, speed,
 // left-right deflection difference; signature fits on those force-state maps).
+#include <functional>
 #include <limits>
 #include <map>
 #include <string>
@@ -57,8 +58,15 @@ struct SeriesComparison {
   /// RMS of the systematic part: sqrt(max(0, mean_t (ȳ_t − η_t)² − mean_t σ²/R_t)).
   double systematic_rms = 0;
   double lack_of_fit = 0;  ///< Σ_t R_t (ȳ_t − η_t)² / σ² (fitted series)
+  /// Where in time (fitted series; rankWindows): the listed windows, largest share of Σ z² first,
+  /// every window found (chronological, for compare.json), their counts, and the counts in words.
   std::vector<LabelledWindow> windows;
-  std::vector<BandReport> bands;  ///< empty when the times are not uniform or too few
+  std::vector<Window> all_windows;
+  WindowSummary window_summary;
+  std::string windows_note;
+  /// Where in frequency: empty when there are too few times, no noise estimate, or the rate
+  /// changes (uniformGrid); bands_note says why, or what the spectrum was made of.
+  std::vector<BandReport> bands;
   std::string bands_note;
 };
 
@@ -88,6 +96,10 @@ struct CompareOptions {
   int threads = 0;
   double window_threshold = 4.0;   ///< |z| that opens a window
   double window_merge_s = 0.05, window_min_s = 0.0;
+  /// Many windows (rankWindows): merged until at most window_max_merged remain; the fewest of the
+  /// largest holding window_listed_share of their share are listed, at most window_max_listed.
+  int window_max_merged = 200, window_max_listed = 20;
+  double window_listed_share = 0.8;
   int state_bins = 12;
   /// Parameters absorbed by the fit (for the lack-of-fit dof).
   int fitted_parameters = 0;
@@ -108,6 +120,25 @@ Comparison compareModel(const calib::LabObjective& objective, const std::vector<
 /// The work of compareModel() (io/work.hpp): `draws` posterior rows (plus the run at their
 /// mean) over every data set, each simulated up to its last record.
 StageWork estimateCompareWork(const std::vector<calib::DataSet>& sets, std::size_t draws);
+
+/// The windows of a fitted series (sc.t, sc.z) ranked by their share of the residual and merged
+/// when many (rankWindows with the options' window settings): sets sc.windows (the listed ones,
+/// each described by `describe`, which gives its label and speed), sc.all_windows,
+/// sc.window_summary and sc.windows_note. compareModel calls it with the scenario's geometry.
+void addWindows(SeriesComparison& sc, const CompareOptions& options,
+                const std::function<LabelledWindow(const Window&)>& describe);
+
+/// The windows' counts in words: "2033 windows over 98 % of the record: the model misses
+/// throughout, not in a few places; merged to 187 (neighbours closer than 6.4 s), the 20 largest,
+/// listed, hold 34 % of the residual"; "" when there is no window.
+std::string windowsNote(const WindowSummary& summary);
+
+/// The residual's spectrum per band of a series (sc.t, measured and predicted means,
+/// repetitions, noise_variance, fitted) on the uniform grid of its times (uniformGrid: the
+/// longest stretch between gaps, resampled when the clock jitters), with `road` (the road under
+/// the channel's wheel at sc.t; empty: no coherence) as the coherence input: sets sc.bands and
+/// sc.bands_note. Needs 64 times on the grid.
+void addResidualBands(SeriesComparison& sc, const std::vector<double>& road);
 
 /// What the vehicle is doing in [t0, t1] of a scenario (obstacle crossings of each axle, rough
 /// section, smooth road), e.g. "front wheels on the bump".

@@ -185,13 +185,22 @@ std::vector<Band> vehicleBands(double fs_hz) {
 }
 
 std::vector<BandReport> bandAnalysis(const std::vector<double>& residual, double fs_hz, double noise_variance,
-                                     const std::vector<double>* input, int segment, double alpha) {
+                                     const std::vector<double>* input, int segment, double alpha,
+                                     const std::vector<double>& noise_acf) {
   if (input) requireSameSize("bandAnalysis", residual.size(), input->size());
   if (!(noise_variance > 0)) bad("bandAnalysis", "noise variance must be > 0, got " + str(noise_variance));
   if (!(alpha > 0 && alpha < 1)) bad("bandAnalysis", "alpha must be in (0, 1), got " + str(alpha));
   const Segmentation seg = segmentation("bandAnalysis", residual.size(), fs_hz, segment);
+  if (!noise_acf.empty() && !(noise_acf[0] > 0))
+    bad("bandAnalysis", "the noise autocorrelation at lag 0 must be > 0, got " + str(noise_acf[0]));
   const Spectrum psd = welchPsd(residual, fs_hz, segment);
   Spectrum floor{psd.freq_hz, std::vector<double>(psd.freq_hz.size(), 2.0 * noise_variance / fs_hz)};
+  if (!noise_acf.empty())
+    for (std::size_t k = 0; k < floor.value.size(); ++k) {
+      double shape = noise_acf[0];
+      for (std::size_t m = 1; m < noise_acf.size(); ++m) shape += 2.0 * noise_acf[m] * std::cos(2.0 * kPi * psd.freq_hz[k] * m / fs_hz);
+      floor.value[k] *= std::max(0.0, shape);
+    }
   Spectrum coh;
   if (input) coh = coherence(residual, *input, fs_hz, segment);
   // Welch equivalent degrees of freedom (PW93 eq. 292b) with the window's own overlap correlation.
@@ -282,16 +291,25 @@ std::vector<SignatureFit> fitRateSignatures(const std::vector<double>& v, const 
   return sorted(out);
 }
 
-std::vector<Window> exceedanceWindows(const std::vector<double>& t, const std::vector<double>& z, double threshold,
-                                      double merge_gap_s, double min_length_s) {
-  const char* where = "exceedanceWindows";
+namespace {
+
+using Run = std::pair<std::size_t, std::size_t>;  // [first, last] sample of a window
+
+void checkWindowInputs(const char* where, const std::vector<double>& t, const std::vector<double>& z, double threshold,
+                       double merge_gap_s, double min_length_s) {
   requireSameSize(where, t.size(), z.size());
   if (!(threshold >= 0)) bad(where, "threshold must be >= 0, got " + str(threshold));
   if (!(merge_gap_s >= 0)) bad(where, "merge gap must be >= 0 s, got " + str(merge_gap_s));
   if (!(min_length_s >= 0)) bad(where, "minimum length must be >= 0 s, got " + str(min_length_s));
   for (size_t i = 1; i < t.size(); ++i)
     if (!(t[i] > t[i - 1])) bad(where, "time must be strictly increasing, got t[" + std::to_string(i) + "] = " + str(t[i]));
-  std::vector<std::pair<size_t, size_t>> runs;  // [first, last] sample of each run, merged
+}
+
+// The runs of exceedanceWindows: maximal runs of |z| > threshold merged across gaps < merge_gap_s,
+// the short ones dropped.
+std::vector<Run> exceedanceRuns(const std::vector<double>& t, const std::vector<double>& z, double threshold, double merge_gap_s,
+                                double min_length_s) {
+  std::vector<Run> runs;
   for (size_t i = 0; i < z.size(); ++i) {
     if (!(std::abs(z[i]) > threshold)) continue;
     size_t j = i;
@@ -302,16 +320,198 @@ std::vector<Window> exceedanceWindows(const std::vector<double>& t, const std::v
       runs.emplace_back(i, j);
     i = j;
   }
+  std::vector<Run> kept;
+  for (const auto& r : runs)
+    if (t[r.second] - t[r.first] >= min_length_s) kept.push_back(r);
+  return kept;
+}
+
+Window windowOf(const std::vector<double>& t, const std::vector<double>& z, const Run& r, double total) {
+  Window w{t[r.first], t[r.second], 0, 0};
+  for (size_t i = r.first; i <= r.second; ++i) {
+    if (!std::isfinite(z[i])) continue;
+    w.peak_z = std::max(w.peak_z, std::abs(z[i]));
+    w.share += z[i] * z[i];
+  }
+  w.share = total > 0 ? w.share / total : 0;
+  return w;
+}
+
+double finiteSumSquares(const std::vector<double>& z) {
+  double s = 0;
+  for (double v : z)
+    if (std::isfinite(v)) s += v * v;
+  return s;
+}
+
+// The runs merged across gaps < gap_s, never into a window longer than max_length_s.
+std::vector<Run> mergeRuns(const std::vector<double>& t, const std::vector<Run>& runs, double gap_s, double max_length_s) {
+  std::vector<Run> out;
+  for (const auto& r : runs) {
+    if (!out.empty() && t[r.first] - t[out.back().second] < gap_s && t[r.second] - t[out.back().first] <= max_length_s)
+      out.back().second = r.second;
+    else
+      out.push_back(r);
+  }
+  return out;
+}
+
+double medianOf(std::vector<double> v) {
+  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+std::vector<double> stepsOf(const std::vector<double>& t, size_t b, size_t e) {
+  std::vector<double> s;
+  s.reserve(e - b);
+  for (size_t i = b + 1; i < e; ++i) s.push_back(t[i] - t[i - 1]);
+  return s;
+}
+
+}  // namespace
+
+std::vector<Window> exceedanceWindows(const std::vector<double>& t, const std::vector<double>& z, double threshold,
+                                      double merge_gap_s, double min_length_s) {
+  checkWindowInputs("exceedanceWindows", t, z, threshold, merge_gap_s, min_length_s);
   const double total = sumSquares(z);
   std::vector<Window> out;
-  for (const auto& [a, b] : runs) {
-    if (t[b] - t[a] < min_length_s) continue;
-    Window w{t[a], t[b], 0, 0};
-    for (size_t i = a; i <= b; ++i) w.peak_z = std::max(w.peak_z, std::abs(z[i])), w.share += z[i] * z[i];
+  for (const auto& r : exceedanceRuns(t, z, threshold, merge_gap_s, min_length_s)) {
+    Window w{t[r.first], t[r.second], 0, 0};
+    for (size_t i = r.first; i <= r.second; ++i) w.peak_z = std::max(w.peak_z, std::abs(z[i])), w.share += z[i] * z[i];
     w.share = total > 0 ? w.share / total : 0;
     out.push_back(w);
   }
   return out;
+}
+
+WindowRanking rankWindows(const std::vector<double>& t, const std::vector<double>& z, double threshold, double merge_gap_s,
+                          double min_length_s, const WindowRankOptions& o) {
+  const char* where = "rankWindows";
+  checkWindowInputs(where, t, z, threshold, merge_gap_s, min_length_s);
+  if (o.max_merged < 1) bad(where, "max_merged must be >= 1, got 0");
+  if (o.max_listed < 1) bad(where, "max_listed must be >= 1, got 0");
+  if (!(o.listed_share > 0 && o.listed_share <= 1)) bad(where, "listed share must lie in (0, 1], got " + str(o.listed_share));
+  WindowRanking out;
+  const double total = finiteSumSquares(z);
+  const std::vector<Run> runs = exceedanceRuns(t, z, threshold, merge_gap_s, min_length_s);
+  std::size_t inside = 0;
+  for (const auto& r : runs) {
+    out.found.push_back(windowOf(t, z, r, total));
+    inside += r.second - r.first + 1;
+  }
+  WindowSummary& s = out.summary;
+  s.found = runs.size();
+  s.time_share = t.empty() ? 0.0 : static_cast<double>(inside) / static_cast<double>(t.size());
+  s.merge_gap_s = merge_gap_s;
+  std::vector<Run> merged = runs;
+  if (runs.size() > o.max_merged && t.size() > 1) {
+    const double max_length = 2.0 * (t.back() - t.front()) / static_cast<double>(o.max_merged);
+    double gap = merge_gap_s > 0 ? merge_gap_s : medianOf(stepsOf(t, 0, t.size()));
+    while (merged.size() > o.max_merged && gap <= max_length) {
+      gap *= 2.0;
+      merged = mergeRuns(t, runs, gap, max_length);
+      s.merge_gap_s = gap;
+    }
+  }
+  for (const auto& r : merged) out.ranked.push_back(windowOf(t, z, r, total));
+  std::stable_sort(out.ranked.begin(), out.ranked.end(), [](const Window& a, const Window& b) { return a.share > b.share; });
+  s.merged = out.ranked.size();
+  for (const auto& w : out.ranked) s.merged_share += w.share;
+  if (s.merged <= o.max_listed) {
+    s.listed = s.merged;
+  } else {
+    double held = 0;
+    while (s.listed < o.max_listed && held < o.listed_share * s.merged_share) held += out.ranked[s.listed++].share;
+  }
+  for (std::size_t k = 0; k < s.listed; ++k) s.listed_share += out.ranked[k].share;
+  return out;
+}
+
+UniformGrid uniformGrid(const std::vector<double>& t) {
+  const char* where = "uniformGrid";
+  if (t.size() < 2) bad(where, "need at least 2 times, got " + std::to_string(t.size()));
+  for (size_t i = 1; i < t.size(); ++i)
+    if (!(t[i] > t[i - 1])) bad(where, "time must be strictly increasing, got t[" + std::to_string(i) + "] = " + str(t[i]));
+  UniformGrid g;
+  // Gaps: steps beyond what the clock's jitter gives.
+  const std::vector<double> steps = stepsOf(t, 0, t.size());
+  const double m = medianOf(steps);
+  std::vector<double> dev(steps.size());
+  for (size_t i = 0; i < steps.size(); ++i) dev[i] = std::abs(steps[i] - m);
+  const double mad = medianOf(dev);
+  g.gap_step_s = m + std::max(0.5 * m, 8.0 * mad);
+  g.begin = 0, g.end = 1;
+  for (size_t b = 0, i = 1; i <= t.size(); ++i)
+    if (i == t.size() || steps[i - 1] > g.gap_step_s) {
+      if (i < t.size()) ++g.gaps;
+      if (i - b > g.end - g.begin) g.begin = b, g.end = i;
+      b = i;
+    }
+  const size_t n = g.size();
+  if (n < 2) return g;
+  g.dt = (t[g.end - 1] - t[g.begin]) / static_cast<double>(n - 1);
+  for (size_t i = g.begin + 1; i < g.end; ++i) g.jitter = std::max(g.jitter, std::abs(t[i] - t[i - 1] - g.dt) / g.dt);
+  // A steady rate: every block's mean step near dt.
+  const size_t nsteps = n - 1, block = std::max<size_t>(64, nsteps / 16);
+  std::vector<double> sd = stepsOf(t, g.begin, g.end);
+  const double ms = medianOf(sd);
+  for (double& v : sd) v = std::abs(v - ms);
+  const double sigma = 1.4826 * medianOf(sd);
+  g.rate_lo_hz = g.rate_hi_hz = 1.0 / g.dt;
+  const size_t blocks = std::max<size_t>(1, nsteps / block);
+  for (size_t k = 0; k < blocks; ++k) {
+    const size_t a = g.begin + k * block, b = k + 1 == blocks ? g.end - 1 : a + block;  // steps a..b (times a..b)
+    const double steps_in = static_cast<double>(b - a), mean_step = (t[b] - t[a]) / steps_in;
+    g.rate_lo_hz = std::min(g.rate_lo_hz, 1.0 / mean_step);
+    g.rate_hi_hz = std::max(g.rate_hi_hz, 1.0 / mean_step);
+    if (std::abs(mean_step - g.dt) > std::max(0.05 * g.dt, 4.0 * sigma / std::sqrt(steps_in))) g.steady = false;
+  }
+  if (g.jitter <= 1e-6 || !g.steady) return g;
+  // Resampled: each grid time's bracket and place in it.
+  g.resampled = true;
+  g.index.resize(n);
+  g.weight.resize(n);
+  size_t i = g.begin;
+  for (size_t k = 0; k < n; ++k) {
+    const double tau = k + 1 == n ? t[g.end - 1] : t[g.begin] + static_cast<double>(k) * g.dt;
+    while (i + 2 < g.end && t[i + 1] < tau) ++i;
+    g.index[k] = i;
+    g.weight[k] = std::clamp((tau - t[i]) / (t[i + 1] - t[i]), 0.0, 1.0);
+  }
+  return g;
+}
+
+std::vector<double> onGrid(const UniformGrid& g, const std::vector<double>& x) {
+  if (x.size() < g.end) bad("onGrid", "need one value per time of the record, got " + std::to_string(x.size()) + " for a stretch ending at " + std::to_string(g.end));
+  if (!g.resampled) return std::vector<double>(x.begin() + static_cast<long>(g.begin), x.begin() + static_cast<long>(g.end));
+  std::vector<double> y(g.index.size());
+  for (size_t k = 0; k < y.size(); ++k) {
+    const double u = g.weight[k];
+    y[k] = (1.0 - u) * x[g.index[k]] + u * x[g.index[k] + 1];
+  }
+  return y;
+}
+
+std::vector<double> gridNoiseAutocorrelation(const UniformGrid& g) {
+  if (!g.resampled) return {1.0};
+  // y_k = (1 − u_k) n_{i_k} + u_k n_{i_k + 1}: grid times k and k + m share the noise of a sample when
+  // their brackets overlap, i_{k+m} − i_k ∈ {0, 1}.
+  const size_t n = g.index.size();
+  std::vector<double> acf;
+  for (size_t m = 0; m < n; ++m) {
+    double sum = 0;
+    bool any = false;
+    for (size_t k = 0; k + m < n; ++k) {
+      const size_t d = g.index[k + m] - g.index[k];
+      const double u = g.weight[k], v = g.weight[k + m];
+      if (d == 0) sum += (1 - u) * (1 - v) + u * v, any = true;
+      else if (d == 1) sum += u * (1 - v), any = true;
+    }
+    if (!any) break;
+    acf.push_back(sum / static_cast<double>(n - m));
+  }
+  return acf;
 }
 
 }  // namespace dtwin::diag

@@ -1,7 +1,8 @@
 #pragma once
 // Signal tools for the diagnosis (docs/diagnosis.md): where, in frequency, in state and in time,
-// a model fails against measurements. Everything here is pure numerics on uniformly sampled
-// records; the usual input is a residual r(t) = measured − model on a uniform time grid.
+// a model fails against measurements. Everything here is pure numerics; the spectra need uniformly
+// sampled records, which uniformGrid and onGrid make of a record at any increasing times; the usual
+// input is a residual r(t) = measured − model.
 //
 // Conventions
 //  * Sampling frequency fs is in Hz; time in s; frequencies in Hz.
@@ -16,6 +17,7 @@
 //  [PW93] D. B. Percival, A. T. Walden, Spectral Analysis for Physical Applications, CUP 1993,
 //         §6.17 (WOSA), eq. (292b) for the equivalent degrees of freedom.
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -88,7 +90,7 @@ struct BandReport {
   std::string band;
   double lo_hz, hi_hz;
   double residual_power;  ///< bandIntegral of the residual's Welch PSD [unit²]
-  double noise_power;     ///< the same integral of the white noise floor 2σ²/fs [unit²]
+  double noise_power;     ///< the same integral of the noise floor (white: 2σ²/fs) [unit²]
   double ratio;           ///< residual_power / noise_power
   double coherence;       ///< bandMean of the residual–input coherence; NaN without input
   bool significant;       ///< ratio > χ²_{ν,1−α}/ν (see bandAnalysis)
@@ -116,8 +118,12 @@ struct BandReport {
 /// `input` (nullable, same length as residual) is e.g. the road or a body acceleration; a high
 /// coherence says the missing physics is driven by that input. Throws on size mismatch,
 /// fs_hz <= 0, noise_variance <= 0, alpha ∉ (0, 1), or as welchPsd.
+/// `noise_acf` (optional) is the noise's autocorrelation in lags of a sample, ρ(0), ρ(1), ...
+/// (gridNoiseAutocorrelation): the floor is then 2σ²/fs (ρ(0) + 2 Σ_m ρ(m) cos(2π f m/fs)) instead
+/// of white; empty: white. Throws if noise_acf[0] is not > 0.
 std::vector<BandReport> bandAnalysis(const std::vector<double>& residual, double fs_hz, double noise_variance,
-                                     const std::vector<double>* input, int segment, double alpha = 0.01);
+                                     const std::vector<double>* input, int segment, double alpha = 0.01,
+                                     const std::vector<double>& noise_acf = {});
 
 /// One bin of a force-state map.
 struct Bin {
@@ -174,5 +180,91 @@ struct Window {
 /// min_length_s is negative.
 std::vector<Window> exceedanceWindows(const std::vector<double>& t, const std::vector<double>& z, double threshold,
                                       double merge_gap_s, double min_length_s);
+
+/// How many windows a record has and how much of it they hold (see rankWindows).
+struct WindowSummary {
+  std::size_t found = 0;      ///< windows at the requested merge gap (exceedanceWindows)
+  std::size_t merged = 0;     ///< windows once neighbours are merged (= found when they are few)
+  std::size_t listed = 0;     ///< the largest merged windows, the ones listed
+  double merge_gap_s = 0;     ///< the merge gap of the merged windows (the requested one when few)
+  double time_share = 0;      ///< share of the record's samples inside the found windows
+  double merged_share = 0;    ///< Σ share of the merged windows
+  double listed_share = 0;    ///< Σ share of the listed windows
+};
+
+/// The windows of a record, ranked.
+struct WindowRanking {
+  std::vector<Window> found;   ///< exceedanceWindows at the requested merge gap, chronological
+  std::vector<Window> ranked;  ///< merged, largest share first (ties: earlier first); the first summary.listed are listed
+  WindowSummary summary;
+};
+
+/// How rankWindows merges and lists.
+struct WindowRankOptions {
+  std::size_t max_merged = 200;  ///< merge neighbours while more windows than this remain
+  std::size_t max_listed = 20;   ///< list at most this many
+  double listed_share = 0.8;     ///< list the fewest windows holding this share of the merged windows' share
+};
+
+/// The windows of exceedanceWindows ranked by their share of the residual, merged and cut to the
+/// few that matter when there are many:
+///  * found ≤ max_listed: every window is listed, largest share first (nothing merged);
+///  * found > max_merged: neighbours are merged with the merge gap doubled (from merge_gap_s, or
+///    the median step when that is 0) until at most max_merged windows remain; a merge never makes
+///    a window longer than L = 2 (t.back() − t.front()) / max_merged, so a record that fails
+///    throughout keeps windows of a few L at most, not one window over the whole record, and the
+///    doubling stops once the gap exceeds L. A merged window's share and peak are over every
+///    sample from its first to its last (as in exceedanceWindows);
+///  * then the windows are sorted by share, largest first, and the fewest of the largest holding
+///    `listed_share` of the merged windows' share are listed, at most max_listed.
+/// time_share counts the samples from the first to the last of each found window over all samples.
+/// Throws as exceedanceWindows, and if max_merged or max_listed is 0 or listed_share ∉ (0, 1].
+WindowRanking rankWindows(const std::vector<double>& t, const std::vector<double>& z, double threshold, double merge_gap_s,
+                          double min_length_s, const WindowRankOptions& options = {});
+
+/// A uniform time base for the spectrum of a record sampled at strictly increasing times t
+/// (docs/measurements.md, "Sample times"):
+///  * **gaps**: a step longer than the median step m by more than max(m/2, 8 MAD), MAD the median
+///    absolute deviation of the steps from m. On a regular clock (MAD ≈ 0) that is 1.5 m; on a
+///    jittering clock the jitter alone hardly ever reaches it (MAD is 0.18 of the largest step
+///    deviation for stamps jittered uniformly and independently), so jitter does not cut the
+///    record into pieces. The spectrum is that of the longest stretch [begin, end) between gaps
+///    (the whole record when there is none);
+///  * **steady rate**: the stretch is cut into blocks of max(64, n/16) steps; the rate is steady
+///    when every block's mean step is within max(5 %, 4 σ/√B) of the stretch's mean step dt (σ =
+///    1.4826 MAD, B the block's steps): jitter averages out over a block, a change of rate does not;
+///  * **uniform**: every step within 1e-6 of dt: the samples are used as they are;
+///  * **resampled**: otherwise, onto the grid t[begin] + k·dt, k = 0 .. end − begin − 1, by linear
+///    interpolation between the measured times (onGrid).
+struct UniformGrid {
+  std::size_t begin = 0, end = 0;  ///< the stretch of t used, [begin, end)
+  std::size_t gaps = 0;            ///< steps of the whole record counted as gaps
+  double gap_step_s = 0;           ///< a step longer than this is a gap
+  double dt = 0;                   ///< the grid's step: the stretch's mean step [s]
+  double jitter = 0;               ///< max |step − dt| / dt within the stretch
+  bool steady = true;              ///< false: the rate changes within the stretch (no grid)
+  double rate_lo_hz = 0, rate_hi_hz = 0;  ///< the slowest and fastest block of the stretch [Hz]
+  bool resampled = false;          ///< the grid is interpolated (index, weight below)
+  std::vector<std::size_t> index;  ///< resampled: grid time k lies in [t[index[k]], t[index[k] + 1]]
+  std::vector<double> weight;      ///< resampled: its place u ∈ [0, 1] there
+  std::size_t size() const { return end - begin; }
+};
+
+/// The uniform grid of times t (see UniformGrid). Throws if t has fewer than 2 times or is not
+/// strictly increasing.
+UniformGrid uniformGrid(const std::vector<double>& t);
+
+/// The values x (one per time of the record the grid was made from) on the grid: x[begin, end)
+/// when the times are uniform, else (1 − u) x[i] + u x[i + 1] at each grid time. Linear
+/// interpolation is a filter: a sinusoid of frequency f keeps on average sinc²(f·dt) =
+/// [sin(π f dt)/(π f dt)]² of its amplitude when the grid times fall evenly across the steps
+/// (docs/diagnosis.md). Throws if x does not have one value per time.
+std::vector<double> onGrid(const UniformGrid& grid, const std::vector<double>& x);
+
+/// The autocorrelation ρ(0), ρ(1), ... (lags in grid steps, up to the last nonzero one) of white
+/// noise of unit variance carried onto the grid by onGrid: {1} when the times are uniform. Its
+/// spectrum, 2/fs (ρ(0) + 2 Σ_m ρ(m) cos(2π f m/fs)), is the noise floor of a resampled residual
+/// (bandAnalysis's noise_acf).
+std::vector<double> gridNoiseAutocorrelation(const UniformGrid& grid);
 
 }  // namespace dtwin::diag

@@ -28,7 +28,8 @@ nlohmann::json slimSeries(const nlohmann::json& s) {
                    {"models", nlohmann::json::array()},
                    {"windows", nlohmann::json::array()},
                    {"bands", s.value("bands", nlohmann::json::array())},
-                   {"bands_note", s.value("bands_note", "")}};
+                   {"bands_note", s.value("bands_note", "")},
+                   {"windows_note", s.value("windows_note", "")}};
   for (const auto& w : s.value("windows", nlohmann::json::array()))
     c["windows"].push_back({{"t0", w.at("t_begin_s")}, {"t1", w.at("t_end_s")}, {"z", w.at("peak_z")}, {"share", w.at("share_of_chi2")},
                             {"label", w.value("label", "")}});
@@ -52,8 +53,9 @@ std::string scriptSafe(const std::string& json) {
 
 // The page's script: one group of stacked charts per data set (value and residual per channel),
 // linked zoom, one cursor, min/max decimation per pixel column for display, the failing windows
-// shaded and tabled, the spectrum per band. `#selftest` in the URL writes what a test checks into
-// <pre id="selftest"> (chart count, window rows, errors, whether a zoom moved every chart).
+// shaded and tabled (largest share first, under each channel's windows in words), the spectrum
+// per band. `#selftest` in the URL writes what a test checks into <pre id="selftest"> (chart
+// count, window rows and their shares, the windows' notes, errors, whether a zoom moved every chart).
 constexpr const char* kScript = R"js(
 "use strict";
 const errors = [];
@@ -261,11 +263,18 @@ function build() {
     }
     if (set.view) zoomTo(g, set.view[0], set.view[1]);
     if (D.no_windows) return;
+    // The listed windows of every channel, largest share of its residual first; above them, each
+    // channel's windows in words (how many there were, what the listed ones hold).
     const rows = [];
     for (const c of set.channels) for (const w of c.windows) rows.push(Object.assign({ channel: c.channel }, w));
-    rows.sort((a, b) => a.t0 - b.t0);
+    rows.sort((a, b) => (b.share - a.share) || (a.t0 - b.t0));
+    for (const c of set.channels) if (c.windows_note) {
+      const p = document.createElement("p"); p.className = "note windows-note";
+      p.innerHTML = "<b>" + esc(c.channel) + "</b>: " + esc(c.windows_note);
+      side.appendChild(p);
+    }
     const tbl = document.createElement("table"); tbl.className = "windows";
-    tbl.innerHTML = "<caption>" + (D.windows_of ? "where " + D.windows_of + " fails" : "failing windows") + " (" + rows.length + "): a row zooms to it</caption><tr><th>channel</th><th>time [s]</th><th>peak |z|</th><th>share</th><th>where</th></tr>";
+    tbl.innerHTML = "<caption>" + (D.windows_of ? "where " + D.windows_of + " fails" : "failing windows") + " (" + rows.length + ", largest share first): a row zooms to it</caption><tr><th>channel</th><th>time [s]</th><th>peak |z|</th><th>share</th><th>where</th></tr>";
     for (const w of rows) {
       const tr = document.createElement("tr");
       for (const v of [w.channel, w.t1 > w.t0 ? w.t0.toFixed(3) + "–" + w.t1.toFixed(3) : w.t0.toFixed(3), w.z.toFixed(1), (100 * w.share).toFixed(1) + " %", w.label]) { const td = document.createElement("td"); td.textContent = v; tr.appendChild(td); }
@@ -279,6 +288,8 @@ build();
 const painted = performance.now();
 if (location.hash === "#selftest") {
   const out = { charts: groups.reduce((n, g) => n + g.charts.length, 0), window_rows: document.querySelectorAll("table.windows tr").length - document.querySelectorAll("table.windows").length,
+                window_shares: Array.from(document.querySelectorAll("table.windows tr")).filter(r => r.querySelector("td")).map(r => parseFloat(r.children[3].textContent)),
+                windows_notes: Array.from(document.querySelectorAll("p.windows-note")).map(p => p.textContent),
                 ready_ms: Math.round(painted), zoom_ok: false, errors,
                 series: groups.length ? groups[0].charts.map(c => c.u.series.length) : [] };
   if (groups.length && groups[0].charts.length) {
@@ -350,7 +361,7 @@ std::string comparePage(const std::vector<PageModel>& models, const std::string&
   if (data["sets"].empty()) throw InputError("compare page", "the comparison holds no series data to draw");
   return timeSeriesPage(data,
                         "Measured (black), the prediction (blue; with several models one colour each, the last with its 95 % "
-                        "band), and the residual under each; failing windows shaded red. Lines are drawn as the min and max of "
+                        "band), and the residual under each; the failing windows that hold the most of the residual shaded red. Lines are drawn as the min and max of "
                         "each pixel column of what is in view; the figures and tables are the comparison's own.");
 }
 

@@ -2,8 +2,9 @@
 // The interactive comparison page (`twin compare --out DIR` writes DIR/compare.html): measured,
 // predicted with its 95 % band, and residual of every channel of each data set, stacked, zoomed
 // and panned together in time with one cursor read out across them; the failing windows that the
-// comparison found shaded and listed (a row zooms to its window); the residual's spectrum against
-// the noise per band when the time base allows one. Self-contained: uPlot (report/vendor/uplot)
+// comparison listed (the few that hold the most of the residual) shaded and tabled, largest share
+// first, under each channel's count of windows in words (a row zooms to its window); the
+// residual's spectrum against the noise per band when the time base allows one. Self-contained: uPlot (report/vendor/uplot)
 // and the data are inlined, nothing is fetched at view time. The lines are decimated for display
 // only (min and max per pixel column of what is in view); the numbers in the page are the
 // comparison's, in full.
@@ -35,7 +36,7 @@ std::string comparePage(const nlohmann::json& compare, const std::string& title)
 /// "channels": [{"channel", "unit", "t", "y" (measured, null where none), optionally "points"
 /// ([{"label", "v"}]: measured values drawn as points, aligned with t, null elsewhere: the lab's
 /// repetitions), "models": [{"label", "p", "lo", "hi", "fit", "rms", "coverage"}], "windows",
-/// "bands", "bands_note"}], optionally "view": [t0, t1] (the first view) and "no_gaps" (true: a long step is no gap)}], optionally "windows_of",
+/// "bands", "bands_note", optionally "windows_note"}], optionally "view": [t0, t1] (the first view) and "no_gaps" (true: a long step is no gap)}], optionally "windows_of",
 /// "no_windows" (true: no window table) and "whole" (the whole-record button's text)}.
 /// `note` is the sentence under the title. comparePage builds this from comparisons;
 /// report/lab_page.hpp from a study's lab bands.

@@ -34,26 +34,25 @@ void checkOutFolder(const std::string& out, const std::string& field) {
 
 std::string plural(std::size_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
-/// The windows of one series that hold the most of its residual, in time order, then one line for the rest.
+/// Where one series fails in time: the windows' counts in words, the largest windows (the listed
+/// ones, largest share first, at most 8), then one line for the rest.
 void appendFailingWindows(const diag::SeriesComparison& s, std::string& out) {
-  constexpr std::size_t kWindowsShown = 8;  // the rest are in compare.json
-  std::vector<std::size_t> order(s.windows.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.windows[a].window.share > s.windows[b].window.share; });
-  const std::size_t shown = std::min(order.size(), kWindowsShown);
-  std::sort(order.begin(), order.begin() + static_cast<long>(shown));
+  constexpr std::size_t kWindowsShown = 8;  // compare.html lists every listed window, compare.json every one found
+  if (!s.windows_note.empty()) out += formatPrintf("  windows: %s %s: %s\n", s.scenario.c_str(), s.channel.c_str(), s.windows_note.c_str());
+  const std::size_t shown = std::min(s.windows.size(), kWindowsShown);
+  double held = 0.0;
   for (std::size_t k = 0; k < shown; ++k) {
-    const auto& w = s.windows[order[k]];
+    const auto& w = s.windows[k];
+    held += w.window.share;
     out += formatPrintf("  fails: %s %s %.3f-%.3f s, peak |z| %.1f, %.0f %% of its residual: %s (%.1f m/s)\n", s.scenario.c_str(),
                         s.channel.c_str(), w.window.t_begin, w.window.t_end, w.window.peak_z, 100 * w.window.share, w.label.c_str(),
                         w.speed_mps);
   }
-  if (order.size() > shown) {
-    double rest = 0.0;
-    for (std::size_t k = shown; k < order.size(); ++k) rest += s.windows[order[k]].window.share;
-    out += formatPrintf("  fails: %s %s in %zu more windows holding %.0f %% of its residual (--out: compare.json lists every window)\n",
-                        s.scenario.c_str(), s.channel.c_str(), order.size() - shown, 100 * rest);
-  }
+  const diag::WindowSummary& ws = s.window_summary;
+  if (ws.merged > shown)
+    out += formatPrintf("  fails: %s %s in %zu more windows holding %.0f %% of its residual (--out: compare.html lists the %zu largest, "
+                        "compare.json every window)\n",
+                        s.scenario.c_str(), s.channel.c_str(), ws.merged - shown, 100 * std::max(0.0, ws.merged_share - held), ws.listed);
 }
 
 /// The road input of a data set (diagnosis/baseline.hpp) up to its last record.

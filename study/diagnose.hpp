@@ -35,7 +35,8 @@ struct CompareRun {
   std::string written;  ///< the compare.json written ("" without --out)
   std::map<std::string, std::string> baseline;  ///< per channel: the FIR baseline, described (--baseline)
   /// The table, the windows and bands where the model fails, the state maps and the notes, as
-  /// `twin compare` prints them (at most 8 windows per series; compare.json lists every one).
+  /// `twin compare` prints them: per series the windows' counts in words and the largest windows,
+  /// largest share first (at most 8; compare.html lists every listed one, compare.json every one).
   std::string text() const;
 };
 

@@ -76,7 +76,8 @@ TEST(Compare, ModelDataAreCoveredAndShowNoLackOfFit) {
 // A logger's clock: one repetition at 100 Hz with up to ±2 ms of jitter, so no time is on the
 // 1 kHz output grid. Data made by the model at their own times are covered and show no lack of
 // fit; the same values stamped 20 ms late (a clock offset of two samples, on a bump) are flagged.
-// The spectrum is still drawn, with a note on the jitter; across a gap, on the longest stretch.
+// The spectrum is still drawn, resampled to a uniform grid with a note on the jitter; across a
+// gap, on the longest stretch.
 TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
   const Study s = loadStudy(kDemo);
   std::mt19937_64 rng(5);
@@ -100,6 +101,7 @@ TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
     EXPECT_EQ(x.noise_source, "study [noise]") << x.channel;
     EXPECT_NEAR(x.coverage, 0.95, 0.04) << x.channel;
     EXPECT_NE(x.bands_note.find("jitter"), std::string::npos) << x.bands_note;
+    EXPECT_NE(x.bands_note.find("resampled to a uniform 100.0 Hz grid"), std::string::npos) << x.bands_note;
     EXPECT_FALSE(x.bands.empty()) << x.channel;
   }
   EXPECT_GT(c.lack_of_fit_p, 1e-3) << "z = " << c.lack_of_fit_z;

@@ -92,6 +92,9 @@ TEST(CompareOptions, DefaultsAreValidAndEveryFieldIsChecked) {
       {"window_min_s", [](CompareOptions& o) { o.window_min_s = -1e-3; }},
       {"state_bins", [](CompareOptions& o) { o.state_bins = 0; }},
       {"fitted_parameters", [](CompareOptions& o) { o.fitted_parameters = -1; }},
+      {"window_max_merged", [](CompareOptions& o) { o.window_max_merged = 0; }},
+      {"window_max_listed", [](CompareOptions& o) { o.window_max_listed = -3; }},
+      {"window_listed_share", [](CompareOptions& o) { o.window_listed_share = 0.0; }},
   };
   for (const auto& [field, spoil] : cases) {
     CompareOptions o;

@@ -396,9 +396,9 @@ TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
 
 // The promise: import -> compare with no hand editing. The shipped demonstration drive is
 // imported and compared with a calibration at the truth without its hidden effect. The twin fails
-// all along the drive, and compare prints the eight windows holding the most of the residual, in
-// time order, then one line for the rest, and the failing bands of the spectrum (of the longest
-// stretch between the log's dropouts).
+// all along the drive, and compare prints how many windows there were in words, the eight windows
+// holding the most of the residual, largest first, then one line for the rest, and the failing
+// bands of the spectrum (of the longest stretch between the log's dropouts).
 TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
   const fs::path dir = dtwin_test::freshDir("import_compare");
   const std::string drive = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
@@ -415,9 +415,10 @@ TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
   const int st = std::system(cmd.c_str());
   ASSERT_EQ(WEXITSTATUS(st), 0) << dtwin_test::slurp(out);
   std::istringstream text(dtwin_test::slurp(out));
-  std::vector<double> starts;
-  int rest = 0, bands = 0;
+  std::vector<double> shares;
+  int rest = 0, bands = 0, counted = 0;
   for (std::string line; std::getline(text, line);) {
+    if (line.find("  windows: drive seat_mps2: ") == 0 && line.find(" windows over ") != std::string::npos) ++counted;
     if (line.find("  fails: drive seat_mps2 ") != 0) continue;
     if (line.find("  fails: drive seat_mps2 band ") == 0) {  // the spectrum, of the longest stretch between the dropouts
       ++bands;
@@ -427,12 +428,15 @@ TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
       ++rest;
       continue;
     }
-    starts.push_back(std::stod(line.substr(std::string("  fails: drive seat_mps2 ").size())));
+    const auto pct = line.find(" % of its residual");
+    ASSERT_NE(pct, std::string::npos) << line;
+    shares.push_back(std::stod(line.substr(line.rfind(", ", pct) + 2)));
   }
-  EXPECT_EQ(starts.size(), 8u) << dtwin_test::slurp(out);
+  EXPECT_EQ(counted, 1) << dtwin_test::slurp(out);
+  EXPECT_EQ(shares.size(), 8u) << dtwin_test::slurp(out);
   EXPECT_EQ(rest, 1) << dtwin_test::slurp(out);
   EXPECT_GE(bands, 1) << "the hidden damper asymmetry shows in the spectrum: " << dtwin_test::slurp(out);
-  EXPECT_TRUE(std::is_sorted(starts.begin(), starts.end())) << dtwin_test::slurp(out);
+  EXPECT_TRUE(std::is_sorted(shares.rbegin(), shares.rend())) << "largest share first: " << dtwin_test::slurp(out);
   EXPECT_NE(dtwin_test::slurp(out).find("lack of fit: chi2 = "), std::string::npos);
 }
 

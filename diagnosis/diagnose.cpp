@@ -732,11 +732,16 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     auto& c = d.stage()[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
-    if (d.spec(c.effect).kind == "option") continue;  // not screened: always confirmed
+    const auto& spec = d.spec(c.effect);
+    if (spec.kind == "option") continue;  // not screened: always confirmed
+    const auto& names = d.base_obj->names();
+    if (spec.kind == "range" && std::find(names.begin(), names.end(), spec.calibrated_names[0]) == names.end()) {
+      c.gate = "this model has no " + spec.calibrated_names[0] + " to widen (" + joinEffects(d.installed) + " leaves it out)";
+      continue;
+    }
     if (all_failed[e]) {
       c.gate = "every probe simulation failed";
     } else if (c.max_signal == 0.0) {
-      const auto& spec = d.spec(c.effect);
       const std::string& threshold = spec.engagement_threshold;
       if (!threshold.empty()) {
         if (!max_compression) max_compression = maxCompression(d, theta_hat);
@@ -770,10 +775,9 @@ void screen(Diagnosis& d) {
     long index = -1;
     if (spec.kind == "range") {
       const auto it = std::find(names.begin(), names.end(), spec.calibrated_names[0]);
-      if (it != names.end()) {
-        index = static_cast<long>(it - names.begin());
-        at = lin.theta_hat[static_cast<std::size_t>(index)];
-      }
+      if (it == names.end()) continue;  // the model lacks the value (another option left it out): gated below
+      index = static_cast<long>(it - names.begin());
+      at = lin.theta_hat[static_cast<std::size_t>(index)];
     }
     for (auto& g : probesOf(e, spec, at, index)) groups.push_back(std::move(g));
     cands[e].effect = d.catalogue[e];
@@ -1181,7 +1185,41 @@ void verdict(Diagnosis& d) {
   }
   const auto alike = alikeOf(named, options);
   res.causes.push_back(causeOf(*named.front(), alike));
+  const auto catalogue = d.catalogue;
   furtherCauses(d);
+  // Another structure (a subsystem option) is not nested in the forces found on the first cause's
+  // model: a car whose road enters at the hub and whose struts carry a controller may fit worse
+  // with the hub input alone than with a tire and a delay, and better with both changes. So each
+  // strong option that the chain did not take is weighed at its best: the stagewise selection is
+  // run again from it, and the chain whose final model has the lower BIC is the verdict.
+  const Candidate* lead = named.front();
+  for (const Candidate* o : named) {
+    if (o->kind != "option" || o == named.front()) continue;
+    if (std::any_of(res.causes.begin(), res.causes.end(), [&](const Cause& k) { return k.name == o->effect; })) continue;
+    auto chain = std::move(res.causes);
+    auto stages = std::move(res.further);
+    res.causes = {causeOf(*o, {})};
+    res.further.clear();
+    d.catalogue = catalogue;
+    furtherCauses(d);
+    const double bic_chain = chain.back().fit.bic, bic_alt = res.causes.back().fit.bic;
+    auto words = [](const std::vector<Cause>& c) {
+      std::string w;
+      for (const auto& k : c) w += (w.empty() ? "" : " + ") + k.name;
+      return w;
+    };
+    const std::string weighed = "The structure " + o->effect + " was weighed at its best: " + words(res.causes) + " reaches BIC " +
+                                fmt("%.1f", bic_alt) + ", " + words(chain) + " BIC " + fmt("%.1f", bic_chain);
+    if (bic_alt < bic_chain) {
+      res.structure_note = weighed + ": the first is kept.";
+      lead = o;
+    } else {
+      res.structure_note = weighed + ": the second is kept.";
+      res.causes = std::move(chain);
+      res.further = std::move(stages);
+    }
+  }
+  d.catalogue = catalogue;
   const Cause& last = res.causes.back();
   double total = 0;
   for (const auto& k : res.causes) total += k.explained;
@@ -1204,7 +1242,8 @@ void verdict(Diagnosis& d) {
   res.named_kind = first.kind;
   res.finding = first.finding;
   res.ambiguous_with = first.ambiguous_with;
-  res.summary = effectSummary(d, *named.front(), alike);
+  res.summary = lead == named.front() ? effectSummary(d, *lead, alike) : effectSummary(d, *lead, {});
+  if (!res.structure_note.empty()) res.summary += " " + res.structure_note;
   if (after_bad)
     res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", last.fit.comparison.lack_of_fit_z) + "): " + locate(last.fit.comparison) + ".";
 }
@@ -1480,6 +1519,7 @@ nlohmann::json DiagnosisResult::toJson() const {
     j["finding"] = finding;
   }
   j["ambiguous_with"] = ambiguous_with;
+  if (!structure_note.empty()) j["structure_note"] = structure_note;
   if (verdict != "none") j["unexplained_location"] = unexplained_location;
   j["fitted_channels"] = fitted_channels;
   j["left_out_channels"] = left_out_channels;

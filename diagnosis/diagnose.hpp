@@ -160,6 +160,9 @@ struct DiagnosisResult {
   std::string named_kind;         ///< its kind: "effect" | "parameter" | "sensor"
   std::string finding;            ///< a freed value or a sensor model: what it found, in words
   std::vector<std::string> ambiguous_with;
+  /// When a strong subsystem option (another structure) was weighed at its best against the
+  /// first chain of causes: which chain reached the lower BIC, in words ("" when none was).
+  std::string structure_note;
   std::string unexplained_location;
   Figures base;
   /// When a candidate's base parameters (its effect off) fitted better than the base optimum, the

@@ -14,6 +14,8 @@
 #include <functional>
 #include <map>
 #include <ostream>
+#include <regex>
+#include <set>
 
 #include <unistd.h>
 
@@ -390,4 +392,89 @@ TEST(Diagnose16, ATermOnlyTheRegressionFindsIsProposedAppliedAndCutsTheError) {
   const auto a = diagnose(with, with.assemblies().front(), data, {}, o, dir);
   ASSERT_EQ(a.steps.size(), 2u) << a.text();
   EXPECT_LE(a.steps[1].comparison.systematic_rms_sd, 0.5 * a.steps[0].comparison.systematic_rms_sd) << a.text();
+}
+
+// Candidates of structure (docs/diagnosis.md, "Candidates of structure"). A value the data push
+// beyond its range: the study calibrates the strut stiffness within [10, 25] kN/m while the data
+// come from 30 kN/m. The base calibration says so in words, and widening the range is the verdict,
+// with the value found beyond the old bound.
+TEST(DiagnoseStructure, AValueBeyondItsRangeIsAFindingAndWideningItIsTheVerdict) {
+  Study s = study();
+  for (auto& c : s.calibrated)
+    if (c.name == "suspension.stiffness") c.upper = 25e3;  // the truth, 30e3, lies beyond
+  auto o = smallOptions(s);
+  o.effects = {"widen:suspension.stiffness", "bump_stop"};
+  o.causes = 1;
+  o.propose_terms = 0;
+  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "", 1), {}, o, freshDir("diag_widen"));
+  bool finding = false;
+  for (const auto& b : r.base.bounds)
+    finding = finding || (b.name == "suspension.stiffness" && b.side == "upper" && b.optimum_on_bound && b.bound == 25e3);
+  EXPECT_TRUE(finding) << r.text();
+  EXPECT_NE(r.text().find("FINDING: suspension.stiffness is at its upper bound 25000"), std::string::npos) << r.text();
+  ASSERT_EQ(r.verdict, "effect") << r.text();
+  EXPECT_EQ(r.named_effect, "widen:suspension.stiffness") << r.text();
+  EXPECT_EQ(r.named_kind, "range");
+  EXPECT_NE(r.summary.find("Far from the prior: the suspension stiffness is about"), std::string::npos) << r.summary;
+  EXPECT_NE(r.summary.find("stiffer than the study's range allows (25000 N/m)"), std::string::npos) << r.summary;
+  ASSERT_FALSE(r.causes.empty());
+  ASSERT_EQ(r.causes[0].parameters.size(), 1u) << r.text();
+  EXPECT_NEAR(r.causes[0].parameters[0].optimum / 30e3, 1.0, 0.03) << r.text();
+}
+
+namespace {
+/// The demo study with the tire options pac2002 (M1) and hub (M2) on MacPherson struts.
+Study hubStudy() {
+  static const fs::path p = [] {
+    const fs::path path = fs::temp_directory_path() / ("diag_hub_study_" + std::to_string(::getpid()) + ".toml");
+    dtwin_test::writeDemoStudy(path, "lab_repetitions = 3\noptimizer_starts = 2\n");
+    std::string t = dtwin_test::slurp(path);
+    t = std::regex_replace(t, std::regex("tire = \\[[^\\]]*\\]"), "tire = [\"pac2002\", \"hub\"]");
+    t = std::regex_replace(t, std::regex("suspension = \\[[^\\]]*\\]"), "suspension = [\"macpherson\"]");
+    dtwin_test::writeText(path, t);
+    return path;
+  }();
+  return loadStudy(p.string());
+}
+}  // namespace
+
+// A car whose road signal is its hubs' own motion and whose struts carry a skyhook controller,
+// diagnosed from the sedan's tire model: the input form and the controller are both named, each
+// for what it is, the controller's gain within 15 % (label structure: a few minutes on 2 cores).
+TEST(DiagnoseStructure, TheHubInputAndASkyhookControllerAreNamed) {
+  const Study s = hubStudy();
+  ASSERT_EQ(s.assembly("M2").option("tire"), "hub");
+  std::vector<calib::DataSet> data;
+  for (const std::string sc : {"diag_bump", "diag_rough"}) {
+    LabOptions l;
+    l.scenario = sc;
+    l.times_mode = LabTimesMode::All;
+    l.rate_hz = 200.0;
+    l.repetitions = 3;
+    l.seed = 3;
+    l.channels = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
+    l.hidden_effects.push_back(parseEffectSetting("skyhook:damping=3000", "test", s.effectCatalog()));
+    data.push_back({sc + ".csv", sc, generateLab(s, s.assembly("M2"), l).data, 3});
+  }
+  auto o = smallOptions(s);
+  o.effects = {"tire=hub", "skyhook", "groundhook", "damper_asymmetry"};
+  o.causes = 2;
+  o.propose_terms = 0;
+  const auto r = diagnose(s, s.assembly("M1"), data, {}, o, freshDir("diag_hub_skyhook"));
+  ASSERT_EQ(r.verdict, "effect") << r.text();
+  ASSERT_GE(r.causes.size(), 2u) << r.text();
+  std::set<std::string> named;
+  for (const auto& k : r.causes) named.insert(k.name);
+  EXPECT_TRUE(named.count("tire=hub")) << r.text();
+  EXPECT_TRUE(named.count("skyhook")) << r.text();
+  for (const auto& k : r.causes) {
+    if (k.name == "tire=hub") {
+      EXPECT_EQ(k.kind, "option");
+      EXPECT_NE(k.finding.find("the road signal behaves as the hub's motion"), std::string::npos) << k.finding;
+    }
+    if (k.name == "skyhook") {
+      ASSERT_EQ(k.parameters.size(), 1u) << r.text();
+      EXPECT_NEAR(k.parameters[0].optimum / 3000.0, 1.0, 0.15) << r.text();
+    }
+  }
 }

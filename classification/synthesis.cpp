@@ -139,8 +139,11 @@ SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, co
                 "must hold at least the roads per draw (" + std::to_string(plan.R) + "), got " + std::to_string(plan.L));
   if (post.size() == 0) throw InputError(post.path, "the posterior sample is empty");
 
-  // The posterior's parameters must be the study's calibrated ones, in order.
-  for (const auto& c : study.calibrated) plan.names.push_back(c.name);
+  // The posterior's parameters must be the study's calibrated ones the assembly has, in order
+  // (the hub input has no tire stiffness or damping: LabObjective::leftOut).
+  plan.model = study.makeModel(assembly);
+  for (const auto& c : study.calibrated)
+    if (!plan.model->lacksOptionParameter(c.name)) plan.names.push_back(c.name);
   if (post.names != plan.names) {
     std::string a, b;
     for (const auto& n : post.names) a += (a.empty() ? "" : ",") + n;
@@ -148,7 +151,6 @@ SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, co
     throw InputError(post.path + ":1", "parameter columns " + a + " are not the study's calibrated parameters " + b +
                                            " (" + study.path + ")");
   }
-  plan.model = study.makeModel(assembly);
   for (const auto& n : plan.names) {
     const int s = plan.model->slot(n);
     if (s < 0) throw InputError(study.path + ": calibrated", "'" + n + "' is not a parameter of assembly " + assembly.id);

@@ -853,7 +853,10 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   for (std::size_t i : optimised) {
     auto& c = cands[i];
     c.evidence_gap = best - c.fit->log_evidence;
-    if (c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + on_top + " in full", true)) continue;
+    // On top of causes already named (a later stage of the stagewise selection) the evidence
+    // decides alone; only the final model's intervals are reported, so it alone is calibrated in
+    // full, once the selection ends (furtherCauses).
+    if (d.installed.empty() && c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + " in full", true)) continue;
     c.confirmed = true;
     c.finding = d.findingOf(c.effect, *c.fit);
     confirmed.push_back(i);
@@ -997,8 +1000,11 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
   if (!band.empty()) s += "; lowers the " + band;
   if (!c.finding.empty() && c.delta_bic < 0) s += "; " + c.finding;
   if (!c.fit->full)
-    s += "; calibrated to its optimum only (log evidence " + fmt("%.1f", c.evidence_gap) +
-         " below the best candidate's: it can be neither the verdict nor ambiguous with it, so no intervals)";
+    s += c.evidence_gap <= std::max(options.full_within, options.ambiguity_log_evidence)
+             ? "; calibrated to its optimum (on top of causes already named the evidence decides; the final model alone is calibrated "
+               "in full)"
+             : "; calibrated to its optimum only (log evidence " + fmt("%.1f", c.evidence_gap) +
+                   " below the best candidate's: it can be neither the verdict nor ambiguous with it, so no intervals)";
   const std::string sig = signatureSeen(base, spec);
   if (!sig.empty()) s += "; its signature is in the data: " + sig;
   if (c.holdout_change) s += "; held-out systematic error x" + fmt("%.2f", *c.holdout_change);
@@ -1101,7 +1107,12 @@ void furtherCauses(Diagnosis& d) {
     if (named.empty()) break;
     res.causes.push_back(causeOf(*named.front(), alikeOf(named, d.options)));
   }
-  // Every cause's parameters and finding from the model with all of them (a joint calibration).
+  // Every cause's parameters and finding from the model with all of them (a joint calibration),
+  // calibrated in full (its intervals; a later stage stops its candidates at their optimum).
+  if (!res.causes.back().fit.full) {
+    const std::vector<std::string> effects = res.causes.back().fit.effects;
+    res.causes.back().fit = d.calibrateWith(effects, "final " + joinEffects(effects) + " in full", {}, {}, true);
+  }
   const Figures& all = res.causes.back().fit;
   for (auto& k : res.causes) {
     k.parameters = d.parametersOf(k.name, all);

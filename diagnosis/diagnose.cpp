@@ -542,16 +542,30 @@ Linearisation linearise(const Diagnosis& d) {
   for (std::size_t k = 0; k < dim; ++k)
     h[k] = 1e-2 * std::max(std::abs(lin.theta_hat[k]), 1e-3 * (obj.upper()[k] - obj.lower()[k]));
   d.report("screening: sensitivities", 0, 2 * dim);
+  // Central differences, one-sided where a value sits on a bound of its range (an effect at its
+  // off value 0, a value the data pushed to its bound): a step across the bound may leave the
+  // value's valid set, and its run would fail.
+  std::vector<double> up(dim), down(dim);
+  for (std::size_t k = 0; k < dim; ++k) {
+    up[k] = std::min(h[k], obj.upper()[k] - lin.theta_hat[k]);
+    down[k] = std::min(h[k], lin.theta_hat[k] - obj.lower()[k]);
+    if (up[k] < 0.5 * h[k] && down[k] < 0.5 * h[k]) up[k] = down[k] = h[k];  // a range narrower than the step: both sides
+    else if (up[k] < 0.5 * h[k]) up[k] = 0.0, down[k] = h[k];
+    else if (down[k] < 0.5 * h[k]) down[k] = 0.0, up[k] = h[k];
+    else up[k] = down[k] = h[k];
+  }
   parallelFor(2 * dim, d.options.threads, [&](std::size_t t, int) {
     const std::size_t k = t / 2;
     auto th = lin.theta_hat;
-    th[k] += (t % 2 == 0 ? 1.0 : -1.0) * h[k];
-    (t % 2 == 0 ? plus[k] : minus[k]) = obj.predict(th);
+    th[k] += t % 2 == 0 ? up[k] : -down[k];
+    (t % 2 == 0 ? plus[k] : minus[k]) = (t % 2 == 0 ? up[k] : down[k]) == 0.0 ? lin.eta_hat : obj.predict(th);
   });
   for (std::size_t k = 0; k < dim; ++k) {
-    if (plus[k].empty() || minus[k].empty()) throw std::runtime_error("diagnose: a sensitivity run at the base optimum failed");
+    if (plus[k].empty() || minus[k].empty())
+      throw std::runtime_error("diagnose: a sensitivity run at the base optimum failed (" + obj.names()[k] + " = " +
+                               fmt("%.6g", lin.theta_hat[k]) + ")");
     for (std::size_t i = 0; i < n; ++i)
-      J(static_cast<long>(i), static_cast<long>(k)) = std::sqrt(w[i]) * (plus[k][i] - minus[k][i]) / (2 * h[k]);
+      J(static_cast<long>(i), static_cast<long>(k)) = std::sqrt(w[i]) * (plus[k][i] - minus[k][i]) / (up[k] + down[k]);
   }
   lin.qr.compute(J);
   lin.Q = lin.qr.householderQ() * Eigen::MatrixXd::Identity(static_cast<long>(n), static_cast<long>(dim));
@@ -859,6 +873,18 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
     if (d.installed.empty() && c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + " in full", true)) continue;
     c.confirmed = true;
     c.finding = d.findingOf(c.effect, *c.fit);
+    // Its own parameters all at their off values: the candidate adds nothing; an SSE below the
+    // reference's then comes from polishing the reference's values further, not from it.
+    const auto& spec = d.spec(c.effect);
+    if (spec.addsParameters()) {
+      const auto own = d.parametersOf(c.effect, *c.fit);
+      c.inert = !own.empty() && std::all_of(own.begin(), own.end(), [&](const EffectParameter& p) {
+        for (const auto& ps : spec.parameters)
+          if (c.effect + "." + ps.name == p.name || ps.name == p.name || (spec.calibrated_names.size() == 1 && spec.calibrated_names[0] == p.name))
+            return std::abs(p.optimum - ps.default_value) <= 1e-6 * (ps.prior_upper - ps.prior_lower);
+        return false;
+      });
+    }
     confirmed.push_back(i);
   }
   return confirmed;
@@ -994,6 +1020,7 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
            ".";
   std::string s = c.effect + ": " + (c.delta_bic < 0 ? "ΔBIC " : "ΔBIC +") + fmt("%.1f", c.delta_bic) + ", explains " +
                   fmt("%.0f", 100 * c.explained) + " % of the excess residual";
+  if (c.inert) s += "; its parameters stay at their off values, so it is no cause (the change is the reference's optimum polished further)";
   const std::string where = windowFixed(base, c.fit->comparison);
   if (!where.empty()) s += "; " + where;
   const std::string band = bandFixed(base, c.fit->comparison);
@@ -1061,7 +1088,7 @@ void explainStage(Diagnosis& d, const Comparison& ref) {
 std::vector<const Candidate*> strongOf(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
   std::vector<const Candidate*> named;
   for (const auto& c : cands)
-    if (c.confirmed && c.delta_bic < -options.bic_strong) named.push_back(&c);
+    if (c.confirmed && c.delta_bic < -options.bic_strong && !c.inert) named.push_back(&c);
   return named;
 }
 

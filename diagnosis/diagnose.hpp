@@ -127,6 +127,9 @@ struct Candidate {
   /// ... and of the base parameters with it: θ̂ + J⁺ (r − G c) (the joint linearised fit).
   std::vector<double> screening_theta;
   bool confirmed = false;
+  /// Confirmed with every parameter of its own at its off value: it adds nothing, so it is never
+  /// named, whatever its ΔBIC (which then comes from the reference's optimum polished further).
+  bool inert = false;
   std::optional<Figures> fit;  ///< the re-calibration with the effect (confirmed candidates)
   double evidence_gap = 0;   ///< confirmed: log evidence below the best confirmed candidate's (>= 0)
   double delta_bic = 0;      ///< BIC(with effect) − BIC(base)

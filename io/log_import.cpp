@@ -87,6 +87,9 @@ ImportMask readMask(const toml::table& t, const std::string& file, const std::st
       (std::string(side) == "above" ? k.above : k.below) = *v * factor;
     }
   if (!k.above && !k.below) throw InputError(r.where("above"), "a mask needs above or below (or both)");
+  k.pad_s = r.number("pad_s", 0.0);
+  if (!(k.pad_s >= 0 && k.pad_s <= 60))
+    throw InputError(r.where("pad_s"), "must lie in [0, 60] s (rows this close to a masked one are masked too), got " + formatNumber(k.pad_s));
   r.finish();
   return k;
 }
@@ -303,6 +306,7 @@ std::string ImportMask::text() const {
   std::string s;
   if (above) s = "|" + source.column + "| > " + formatNumber(*above) + " " + si;
   if (below) s += (s.empty() ? "" : " or ") + std::string("|") + source.column + "| < " + formatNumber(*below) + " " + si;
+  if (pad_s > 0) s += " (and " + formatNumber(pad_s) + " s around)";
   return s;
 }
 
@@ -850,6 +854,28 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   res.duration_s = tr.back();
   res.masked.resize(m.exclude.size());
   for (std::size_t k = 0; k < m.exclude.size(); ++k) res.masked[k].first = m.exclude[k].text();
+  // Per mask, the rows it masks: those past a threshold (or empty), and those within its pad_s of one.
+  std::vector<std::vector<char>> hit(m.exclude.size(), std::vector<char>(t.size(), 0));
+  for (std::size_t k = 0; k < m.exclude.size(); ++k) {
+    const auto& mk = m.exclude[k];
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const double x = rows.mask[k][i];
+      hit[k][i] = std::isnan(x) || (mk.above && x > *mk.above) || (mk.below && x < *mk.below);
+    }
+    if (mk.pad_s <= 0) continue;
+    std::vector<char> padded = hit[k];
+    double last = -std::numeric_limits<double>::infinity();  // the latest hit at or before row i
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (hit[k][i]) last = t[i];
+      if (t[i] - last <= mk.pad_s * (1 + 1e-9)) padded[i] = 1;  // rows exactly pad_s away count, whatever the rounding
+    }
+    double next = std::numeric_limits<double>::infinity();  // the earliest hit at or after row i
+    for (std::size_t i = t.size(); i-- > 0;) {
+      if (hit[k][i]) next = t[i];
+      if (next - t[i] <= mk.pad_s * (1 + 1e-9)) padded[i] = 1;
+    }
+    hit[k] = std::move(padded);
+  }
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (i < span.first || i > span.last || t[i] < span.window_begin || t[i] > span.window_end) {
       ++res.outside_window;
@@ -857,8 +883,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     }
     bool masked = false;
     for (std::size_t k = 0; k < m.exclude.size() && !masked; ++k) {
-      const double x = rows.mask[k][i];
-      masked = std::isnan(x) || (m.exclude[k].above && x > *m.exclude[k].above) || (m.exclude[k].below && x < *m.exclude[k].below);
+      masked = hit[k][i] != 0;
       if (masked) ++res.masked[k].second;
     }
     if (masked) continue;

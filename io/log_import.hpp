@@ -37,6 +37,9 @@ struct ImportMask {
   ImportColumn source;
   std::optional<double> above, below;  ///< thresholds in SI (the mask's unit converted)
   std::string si;                      ///< the SI unit of the thresholds
+  /// Rows within this many seconds of a row past a threshold are masked too: a turn's edges, where
+  /// the yaw rate is under its threshold but the body still rolls (0: none).
+  double pad_s = 0.0;
   /// "|yaw_rate| > 0.1 rad/s" (SI thresholds).
   std::string text() const;
 };

@@ -14,6 +14,11 @@
 # unknown_car (docs/measurements.md, "A car nobody measured": two imports, then the timed
 # twelve-value calibration on drive A, then the comparison on drive B with the FIR baseline;
 # figures in its logs),
+# controlled_car (docs/measurements.md, "A car with a controller": two imports, the calibration on
+# drive A, the diagnosis with drive B held out and its causes applied, the comparison on drive B
+# with the FIR baseline; the whole walk timed, each step's time in its log), long_window (a
+# two-minute window at 110 Hz of the same car, calibrated with the structure the diagnosis found:
+# the hub input, a skyhook, a widened mass range),
 # demo_study (scripts/demo.sh's study), run (one 15 s run per assembly: `twin bench`), paper.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,8 +29,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | demo_study | run | paper) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car demo_study run paper)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | long_window | demo_study | run | paper) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car long_window demo_study run paper)" >&2; exit 2 ;;
   esac
 done
 
@@ -100,6 +105,36 @@ for r in "${rows[@]}"; do
         --data "$U/A/measurements.csv" --out "$U/cal"
       "$B" compare --study "$U/B/study.toml" --calibration "$U/cal/M1" --data "$U/B/measurements.csv@drive_b" \
         --baseline "$U/A/measurements.csv@drive_a" --out "$U/compare_b" >"$U/compare_b.txt"
+      ;;
+    controlled_car)
+      C="$D/controlled_car" && rm -rf "$C" && mkdir -p "$C"
+      walk() {
+        "$B" import data/drives/controlled_car_a.csv --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
+          --out "$C/A" --scenario drive_a >"$C/import_a.log"
+        "$B" import data/drives/controlled_car_b.csv --map data/drives/controlled_car_map.toml --study "$C/A/study.toml" \
+          --out "$C/B" --scenario drive_b >"$C/import_b.log"
+        /usr/bin/time -f "calibrate %e s" "$B" calibrate --study "$C/B/study.toml" --scenario drive_a --data "$C/A/measurements.csv" \
+          --out "$C/cal" >"$C/calibrate.log" 2>&1
+        /usr/bin/time -f "diagnose %e s" "$B" diagnose --study "$C/B/study.toml" --data "$C/A/measurements.csv@drive_a" \
+          --holdout "$C/B/measurements.csv@drive_b" --out "$C/diag" --causes 3 --candidates 2 >"$C/diagnose.log" 2>&1
+        # The model with every cause the verdict names (the last cause's folder: their joint calibration).
+        local found
+        found=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['causes'][-1]['folder'])" "$C/diag/diagnosis.json")
+        /usr/bin/time -f "compare %e s" "$B" compare --study "$C/B/study.toml" --calibration "$found" \
+          --data "$C/B/measurements.csv@drive_b" --baseline "$C/A/measurements.csv@drive_a" --out "$C/compare_b" >"$C/compare_b.txt" 2>&1
+      }
+      timed controlled_car "$C/walk.log" walk
+      ;;
+    long_window)
+      L="$D/long_window" && rm -rf "$L" && mkdir -p "$L"
+      "$B" import data/drives/controlled_car_c.csv --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
+        --out "$L/C" --scenario drive_c >"$L/import.log"
+      # The structure the diagnosis of the car found: the road at the hub, a skyhook, a heavier body.
+      sed -e 's/^tire = \["pac2002"\]/tire = ["hub"]/' -e 's/^upper = 1900.0$/upper = 3000.0/' "$L/C/study.toml" >"$L/C/study_found.toml"
+      printf '\n[effects.skyhook]\ndamping = 0.0\n\n[[calibrated]]\nname = "skyhook.damping"\nunit = "N*s/m"\nlower = 0.0\nupper = 8000.0\n' \
+        >>"$L/C/study_found.toml"
+      timed long_window "$L/calibrate.log" "$B" calibrate --study "$L/C/study_found.toml" --scenario drive_c \
+        --data "$L/C/measurements.csv" --out "$L/cal"
       ;;
     demo_study)
       rm -rf "$D/demo_study"

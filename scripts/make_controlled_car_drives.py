@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Makes two drives of a car with a suspension controller (docs/measurements.md, "A car with a
-controller"): data/drives/controlled_car_a.csv and controlled_car_b.csv, logger files as such a
+"""Makes the drives of a car with a suspension controller (docs/measurements.md, "A car with a
+controller"): data/drives/controlled_car_a.csv and controlled_car_b.csv (and controlled_car_c.csv,
+a long drive at 110 Hz for scripts/bench_jobs.sh), logger files as such a
 car's own system would write them, made by the twin itself with a car that differs from the
 sedan in its structure, not only in its values.
 
@@ -11,10 +12,10 @@ The car (HIDDEN below: what the walkthrough's diagnosis must find):
     the wheel centre itself, not the road under a tire (the twin's tire option `hub`);
   - a skyhook controller on every corner (the `skyhook` effect);
   - a sprung mass far above the sedan's prior range (an SUV on the sedan's priors).
-Two drives on different ISO 8608 roads (the same on both tracks: one road signal) and speed
+The drives are on different ISO 8608 roads (the same on both tracks: one road signal) and speed
 profiles, each with a standstill and a turn to mask.
 
-Logger columns: Time [s, 100 Hz, jittered by +-1.5 ms, clock from 1200 s], Speed [km/h, 0.1
+Logger columns: Time [s, 100 Hz (c: 110 Hz), jittered by +-1.5 ms, clock from 1200 s], Speed [km/h, 0.1
 km/h steps], YawRate [deg/s, noise 0.2], RoadVel [m/s: the vertical velocity of the road signal
 under the front wheels], AccZ [g with its 1 g offset, noise 0.03 m/s^2]. Seeds are fixed: the
 files are reproducible.
@@ -22,6 +23,7 @@ files are reproducible.
 import math
 import os
 import random
+import re
 import subprocess
 import sys
 import tempfile
@@ -38,11 +40,28 @@ HIDDEN_VALUES = {
     "suspension.damping": 1800.0,          # inside (500 to 8000)
 }
 HIDDEN_SKYHOOK = 2500.0                    # N s/m per corner
+TIRE = "hub"                               # the road signal is the hub's own motion
+# --passive: a car whose structure is the twin's (a tire under the road, no controller) and whose
+# values lie inside the sedan's ranges: the walkthrough's null case (passive_car_a.csv, _b.csv).
+PASSIVE = "--passive" in sys.argv
+if PASSIVE:
+    HIDDEN_VALUES = {
+        "chassis.mass_kg": 1650.0,
+        "chassis.pitch_inertia_kgm2": 2500.0,
+        "suspension.stiffness": 35000.0,
+        "suspension.damping": 2200.0,
+        "tire.stiffness": 210000.0,
+        "tire.damping": 2800.0,
+    }
+    HIDDEN_SKYHOOK = 0.0
+    TIRE = "pac2002"
 SEAT = [0.4, -0.35, 0.25]                  # the accelerometer, where the mapping says it is
 ROLL_IN_TURN = 0.08                        # vertical acceleration at the sensor per m/s^2 of lateral acceleration
 ACCURACY = "1e-8"
-TWIN = sys.argv[1] if len(sys.argv) > 1 else "./build/cli/twin"
-OUT = sys.argv[2] if len(sys.argv) > 2 else "data/drives"
+ARGS = [a for a in sys.argv[1:] if a != "--passive"]
+TWIN = ARGS[0] if len(ARGS) > 0 else "./build/cli/twin"
+OUT = ARGS[1] if len(ARGS) > 1 else "data/drives"
+PREFIX = "passive_car" if PASSIVE else "controlled_car"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 DRIVES = {
@@ -51,7 +70,11 @@ DRIVES = {
           [(29.0, 34.0, 12.0)]),
     "b": (52.0, [(0, 0), (2, 0), (9, 13), (22, 13), (30, 24), (53, 24)], "C", 20261202,
           [(14.0, 19.0, -13.0)]),
+    # A long drive at the real car's 110 Hz: the two-minute window of scripts/bench_jobs.sh's long_window row.
+    "c": (128.0, [(0, 0), (2, 0), (10, 18), (40, 18), (48, 11), (70, 11), (80, 23), (129, 23)], "C", 20261203,
+          [(58.0, 63.0, 10.0)]),
 }
+RATE_HZ = {"a": 100.0, "b": 100.0, "c": 110.0}  # the logger's clock
 
 
 def yaw_rate(turns, t):
@@ -66,12 +89,14 @@ def generating_study(work):
     demo = open(os.path.join(ROOT, "data/studies/demo.toml")).read()
     demo = demo.replace('vehicle = "../vehicle/midsize_sedan.toml"',
                         f'vehicle = "{os.path.join(ROOT, "data/vehicle/midsize_sedan.toml")}"')
-    demo = demo.replace('tire = ["pac2002", "fiala"]', 'tire = ["hub"]').replace(
+    demo = demo.replace('tire = ["pac2002", "fiala"]', f'tire = ["{TIRE}"]').replace(
         'suspension = ["macpherson", "solid_axle"]', 'suspension = ["macpherson"]')
     demo = demo[: demo.index("[sizes]")]
-    # The demo's calibrated tire values do not apply to the hub input: drop those tables.
-    blocks = demo.split("[[calibrated]]")
-    demo = blocks[0] + "".join("[[calibrated]]" + b for b in blocks[1:] if '"tire.' not in b.split("\n", 2)[1])
+    # At the generating accuracy the hub's stiff link takes about 20 000 steps per second of drive.
+    demo = demo.replace("[simulation]\n", "[simulation]\nmax_internal_steps = 20000000\n")
+    # The demo's calibrated values are set from the command line (--set); its tire values do not
+    # apply to the hub input: drop every [[calibrated]] table.
+    demo = re.sub(r"\[\[calibrated\]\]\n(?:[^\[\n][^\n]*\n|\n)*", "", demo)
     for name, (duration, knots, road_class, seed, turns) in DRIVES.items():
         with open(os.path.join(work, f"speed_{name}.csv"), "w") as f:
             f.write("time_s,speed_mps\n")
@@ -87,12 +112,12 @@ road = {{ type = "iso8608", class = "{road_class}", band_cycles_per_m = [0.05, 1
 [sensors.seat]
 position_m = [{SEAT[0]}, {SEAT[1]}, {SEAT[2]}]
 quantity = "acceleration_z"
-
+""" + ("" if PASSIVE else f"""
 [effects.skyhook]
 damping = {HIDDEN_SKYHOOK}
-
+""") + """
 [fixed]
-""" + "".join(f'"{k}" = {v}\n' for k, v in HIDDEN_VALUES.items() if not k.startswith("suspension.")) + """
+""" + "".join(f'"{k}" = {v}\n' for k, v in HIDDEN_VALUES.items() if not k.startswith(("suspension.", "tire."))) + """
 [sizes]
 lab_repetitions = 1
 """
@@ -102,12 +127,14 @@ lab_repetitions = 1
 
 
 def main():
-    work = tempfile.mkdtemp(prefix="dtwin_controlled_car_")
+    work = tempfile.mkdtemp(prefix=f"dtwin_{PREFIX}_")
     study = generating_study(work)
-    sets = [f"--set={k}={v}" for k, v in HIDDEN_VALUES.items() if k.startswith("suspension.")]
+    sets = [f"--set={k}={v}" for k, v in HIDDEN_VALUES.items() if k.startswith(("suspension.", "tire."))]
     os.makedirs(OUT, exist_ok=True)
     g = 9.80665
     for name, (duration, knots, road_class, seed, turns) in DRIVES.items():
+        if PASSIVE and name == "c":
+            continue  # the null case needs the two walkthrough drives only
         rng = random.Random(seed)
         trace = os.path.join(work, f"truth_{name}.csv")
         subprocess.run([TWIN, "simulate", "--study", study, "--assembly", "M1", "--scenario", f"truth_{name}", "--seed", str(seed),
@@ -125,12 +152,13 @@ def main():
         def at(n, t):  # four-point cubic through the 1 kHz rows
             return readers[n](t)
 
-        path = os.path.join(OUT, f"controlled_car_{name}.csv")
-        n = int(round((duration - 1.0) * 100))
+        path = os.path.join(OUT, f"{PREFIX}_{name}.csv")
+        rate = RATE_HZ[name]
+        n = int(round((duration - 1.0) * rate))
         with open(path, "w") as f:
             f.write("Time,Speed,YawRate,RoadVel,AccZ\n")
             for k in range(n + 1):
-                t = 0.01 * k + (rng.uniform(-0.0015, 0.0015) if 0 < k < n else 0.0)
+                t = k / rate + (rng.uniform(-0.0015, 0.0015) if 0 < k < n else 0.0)
                 v = at("speed_mps", t)
                 r = yaw_rate(turns, t)
                 lateral = v * math.radians(r)  # m/s^2

@@ -480,6 +480,40 @@ TEST(LogImport, AWindowAndAMaskChooseTheMeasuredRows) {
   EXPECT_EQ(side["window"]["masks"][0]["rows_dropped"], masked);
 }
 
+// A mask's pad_s drops the rows within that time of a row past its threshold too (a turn's edges):
+// the count is the brute-force one, and the sidecar's text says so.
+TEST(LogImport, AMaskPadDropsTheRowsAroundWhatItMasks) {
+  const fs::path dir = dtwin_test::freshDir("import_pad");
+  dtwin_test::writeText(dir / "map.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
+                                                                          "\nexclude = { column = \"zr\", unit = \"mm\", above = 1.5, pad_s = 0.05 }"));
+  const ImportMapping m = readImportMapping((dir / "map.toml").string());
+  ASSERT_EQ(m.exclude.size(), 1u);
+  EXPECT_EQ(m.exclude[0].pad_s, 0.05);
+  const ImportResult r = importLog(makeLog(), "log.csv", m, kDemo, "drive");
+  std::vector<bool> past(401);
+  for (int k = 0; k <= 400; ++k) past[static_cast<std::size_t>(k)] = std::abs(std::stod(std::to_string(2.0 * std::sin(0.05 * k)))) > 1.5;
+  long masked = 0, past_only = 0;
+  for (int k = 0; k <= 400; ++k) {
+    bool near = false;
+    for (int j = std::max(0, k - 5); j <= std::min(400, k + 5); ++j) near = near || past[static_cast<std::size_t>(j)];  // 10 ms rows: ±50 ms
+    masked += near;
+    past_only += past[static_cast<std::size_t>(k)];
+  }
+  ASSERT_EQ(r.masked.size(), 1u);
+  EXPECT_EQ(r.masked[0].second, masked);
+  EXPECT_GT(masked, past_only + 20);  // the pad drops more than the threshold alone
+  EXPECT_EQ(r.masked[0].first, "|zr| > 0.0015 m (and 0.05 s around)");
+  EXPECT_EQ(static_cast<long>(r.data.records.size()), 2 * (401 - masked));
+  dtwin_test::writeText(dir / "bad.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
+                                                                          "\nexclude = { column = \"zr\", unit = \"mm\", above = 1.5, pad_s = -1 }"));
+  try {
+    readImportMapping((dir / "bad.toml").string());
+    FAIL() << "a negative pad accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pad_s"), std::string::npos) << e.what();
+  }
+}
+
 // A window outside the log, a mask on a column the log lacks, a mask without a threshold: one line
 // naming the mapping's field or the log, and nothing written.
 TEST(LogImport, BadWindowsAndMasksAreOneLineErrors) {

@@ -19,6 +19,16 @@ constexpr const char* kRoadDelay = "road.delay_s";
 
 std::string num(const char* f, double v) { return formatPrintf(f, v); }
 
+/// `v` to four significant digits in plain notation where it reads well (29910, not 2.991e+04).
+std::string plain(double v) {
+  const double a = std::abs(v);
+  if (!(a >= 1e-3 && a < 1e9)) return formatPrintf("%.4g", v);
+  const int digits = static_cast<int>(std::floor(std::log10(a))) + 1;
+  const int decimals = std::max(0, 4 - digits);
+  const double scale = std::pow(10.0, std::max(0, digits - 4));
+  return formatPrintf("%.*f", decimals, std::round(v / scale) * scale);
+}
+
 /// The unit suffix of a channel name ("hub_force_fl_N" -> "N"), "" when it has none.
 std::string unitSuffix(const std::string& channel) {
   const auto u = channel.rfind('_');
@@ -316,8 +326,8 @@ std::string CandidateSpec::finding(const std::vector<double>& values) const {
     if (value == "chassis.mass_kg") far = above ? "heavier than" : "lighter than";
     else if (value.find("stiffness") != std::string::npos) far = above ? "stiffer than" : "softer than";
     else if (value.find("damping") != std::string::npos) far = above ? "more damped than" : "less damped than";
-    return "the " + valueInWords(value) + " is about " + num("%.4g", v) + " " + parameters[0].unit + ", " + far + " the study's range allows (" +
-           num("%.4g", above ? study_upper : study_lower) + " " + parameters[0].unit + ")";
+    return "the " + valueInWords(value) + " is about " + plain(v) + " " + parameters[0].unit + ", " + far + " the study's range allows (" +
+           plain(above ? study_upper : study_lower) + " " + parameters[0].unit + ")";
   }
   if (kind == "input") {
     if (calibrated_names[0] == kRoadGain) return "the road signal looks scaled by " + num("%.3g", v) + " (its gain)";
@@ -328,7 +338,7 @@ std::string CandidateSpec::finding(const std::vector<double>& values) const {
     return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +
            (v >= parameters[0].default_value ? "ahead of" : "behind") + " the vehicle file's position (the same wheelbase)";
   if (kind == "parameter")
-    return "the " + valueInWords(calibrated_names[0]) + " is about " + num("%.4g", v) + " " + parameters[0].unit + ", not " +
+    return "the " + valueInWords(calibrated_names[0]) + " is about " + plain(v) + " " + parameters[0].unit + ", not " +
            num("%.4g", parameters[0].default_value) + " " + parameters[0].unit;
   if (kind != "sensor") return "";
   const std::string group = name.substr(name.find(':') + 1);

@@ -785,6 +785,9 @@ void screen(Diagnosis& d) {
   const auto& names = d.base_obj->names();
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     const auto& spec = d.spec(d.catalogue[e]);
+    cands[e].effect = d.catalogue[e];
+    cands[e].kind = spec.kind;
+    cands[e].signature = spec.signature;
     double at = std::numeric_limits<double>::quiet_NaN();
     long index = -1;
     if (spec.kind == "range") {
@@ -794,9 +797,6 @@ void screen(Diagnosis& d) {
       at = lin.theta_hat[static_cast<std::size_t>(index)];
     }
     for (auto& g : probesOf(e, spec, at, index)) groups.push_back(std::move(g));
-    cands[e].effect = d.catalogue[e];
-    cands[e].kind = spec.kind;
-    cands[e].signature = spec.signature;
   }
   const auto probe_eta = simulateProbes(d, groups, lin.theta_hat);
   const auto all_failed = scoreProbes(d, lin, groups, probe_eta);

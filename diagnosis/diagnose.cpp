@@ -212,6 +212,10 @@ struct Diagnosis {
   std::map<std::string, CandidateSpec> specs;         ///< every candidate of the catalogue and of options.apply
   std::map<std::string, std::vector<double>> optima;  ///< every calibration's optimum, by joinEffects(effects)
   std::map<std::string, std::vector<std::string>> optima_names;  ///< ... and the names of its values
+  /// The optimiser's extra starts of each calibration folder, fixed by its first call: a folder
+  /// calibrated again (in full after its optimum, or from another stage) resumes the same
+  /// calibration instead of meeting a different one.
+  std::map<std::string, std::vector<std::vector<double>>> starts_of;
   std::unique_ptr<calib::LabObjective> base_obj;      ///< the current stage's reference model on fit_sets (screening, refinement)
   DiagnosisResult res;
   /// Forward stagewise (docs/diagnosis.md, "More than one cause"): the causes installed so far.
@@ -334,7 +338,10 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   copt.threads = options.threads;
   copt.command = options.command;
   copt.polish_step = 0.01;
-  for (auto& s : extraStarts(effects, effect_start, theta_start)) copt.extra_starts.push_back(std::move(s));
+  const auto known = starts_of.find(f.folder);
+  const auto& starts = known != starts_of.end() ? known->second
+                                                : (starts_of[f.folder] = extraStarts(effects, effect_start, theta_start));
+  copt.extra_starts.insert(copt.extra_starts.end(), starts.begin(), starts.end());
   const auto progress_of = [&](const std::string& s, std::size_t d, std::size_t t) { report(stage + ": " + s, d, t); };
   const auto r = full ? calib::calibrateAssembly(study, assembly, fit_sets, setup, copt, f.folder, data_hash, progress_of)
                       : calib::calibrateOptimum(study, assembly, fit_sets, setup, copt, f.folder, data_hash, progress_of);

@@ -22,11 +22,9 @@ std::string num(const char* f, double v) { return formatPrintf(f, v); }
 /// `v` to four significant digits in plain notation where it reads well (29910, not 2.991e+04).
 std::string plain(double v) {
   const double a = std::abs(v);
-  if (!(a >= 1e-3 && a < 1e9)) return formatPrintf("%.4g", v);
-  const int digits = static_cast<int>(std::floor(std::log10(a))) + 1;
-  const int decimals = std::max(0, 4 - digits);
-  const double scale = std::pow(10.0, std::max(0, digits - 4));
-  return formatPrintf("%.*f", decimals, std::round(v / scale) * scale);
+  if (!(a >= 1e4 && a < 1e9)) return formatPrintf("%.4g", v);
+  const double scale = std::pow(10.0, std::floor(std::log10(a)) - 3);
+  return formatPrintf("%.0f", std::round(v / scale) * scale);
 }
 
 /// The unit suffix of a channel name ("hub_force_fl_N" -> "N"), "" when it has none.

@@ -140,6 +140,7 @@ nlohmann::json Figures::toJson() const {
   nlohmann::json j{{"label", label},          {"effects", effects}, {"sse_min_weighted", sse_min}, {"bic", bic},
                    {"log_evidence", log_evidence}, {"parameters", parameters}, {"folder", folder}};
   j["effect_parameters"] = paramsJson(effect_parameters);
+  j["values"] = paramsJson(values);
   j["bound_findings"] = nlohmann::json::array();
   for (const auto& b : bounds) j["bound_findings"].push_back(b.toJson());
   if (!left_out.empty()) j["left_out"] = left_out;
@@ -360,7 +361,7 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   // and a widened value's (a range candidate's, one of the study's).
   const std::size_t n_fit_params = r.names.size() - setup.extra_calibrated.size();
   for (std::size_t k = 0; k < r.names.size(); ++k) {
-    if (k < n_fit_params && !setup.bounds.count(r.names[k])) continue;
+    const bool own = k >= n_fit_params || setup.bounds.count(r.names[k]);
     EffectParameter ep;
     ep.name = r.names[k];
     ep.unit = k < r.units.size() ? r.units[k] : "";
@@ -369,19 +370,19 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
       ep.mean = ep.optimum;
       ep.sd = ep.q025 = ep.q975 = ep.post_q025 = ep.post_q975 = std::numeric_limits<double>::quiet_NaN();
       ep.interval = "none";
-      f.effect_parameters.push_back(ep);
-      continue;
+    } else {
+      const auto& p = r.posterior.parameters[k];
+      ep.mean = p.mean;
+      ep.sd = p.sd;
+      ep.post_q025 = p.q025;
+      ep.post_q975 = p.q975;
+      const bool prof = r.interval == "profile" && k < r.profile.lower.size();
+      ep.interval = prof ? "profile" : "posterior";
+      ep.q025 = prof ? r.profile.lower[k] : p.q025;
+      ep.q975 = prof ? r.profile.upper[k] : p.q975;
     }
-    const auto& p = r.posterior.parameters[k];
-    ep.mean = p.mean;
-    ep.sd = p.sd;
-    ep.post_q025 = p.q025;
-    ep.post_q975 = p.q975;
-    const bool prof = r.interval == "profile" && k < r.profile.lower.size();
-    ep.interval = prof ? "profile" : "posterior";
-    ep.q025 = prof ? r.profile.lower[k] : p.q025;
-    ep.q975 = prof ? r.profile.upper[k] : p.q975;
-    f.effect_parameters.push_back(ep);
+    f.values.push_back(ep);
+    if (own) f.effect_parameters.push_back(ep);
   }
   compareFigures(f, r, setup, stage);
   return f;
@@ -1640,9 +1641,25 @@ std::string DiagnosisResult::text() const {
              (p.interval == "none" ? std::string() : "  (95 % " + p.interval + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) + "])") + "\n";
     }
   }
+  if (!causes.empty() && causes.back().fit.full && !causes.back().fit.values.empty()) {
+    const Figures& all = causes.back().fit;
+    s += "\nThe model with " + (causes.size() > 1 ? std::string("every cause") : "the cause") + " (" + joinEffects(all.effects) +
+         "), its calibrated values:\n";
+    for (const auto& p : all.values)
+      s += "  " + p.name + ": optimum " + fmt("%.5g", p.optimum) + " " + p.unit + "  (95 % " + p.interval + " [" + fmt("%.5g", p.q025) +
+           ", " + fmt("%.5g", p.q975) + "])\n";
+    if (!all.left_out.empty()) {
+      s += "  (left out, this model has no such value:";
+      for (const auto& n : all.left_out) s += " " + n;
+      s += ")\n";
+    }
+    if (!all.bounds.empty()) s += calib::boundFindingsText(all.bounds, "  ");
+  }
   for (const auto& c : candidates)
     if (c.confirmed && c.fit->full && !c.fit->effect_parameters.empty()) {
-      s += "\n  " + c.effect + " posterior:\n";
+      bool named = false;
+      for (const auto& k : causes) named = named || k.name == c.effect;
+      s += "\n  " + c.effect + " posterior" + (named || causes.empty() ? "" : " (calibrated in full; not among the causes)") + ":\n";
       const bool resolved = c.fit->importance_ess >= Figures::kResolvedEss;
       for (const auto& p : c.fit->effect_parameters) {
         // An unresolved design (a posterior on a handful of points) gives a mean and an sd that

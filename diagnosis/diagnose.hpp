@@ -93,6 +93,8 @@ struct Figures {
   std::optional<Comparison> holdout;  ///< on the held-out data, when given
   std::string folder;                 ///< the calibration's folder
   std::vector<EffectParameter> effect_parameters;
+  /// Every calibrated value of the model (the study's and the candidates'), in the calibration's order.
+  std::vector<EffectParameter> values;
   /// The calibration's integrator check: !ok when the optimum and the intervals follow the
   /// integrator rather than the data (its message says what to tighten).
   calib::IntegratorCheck integrator;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <limits>
 
 #include <Eigen/Dense>
@@ -41,49 +42,143 @@ RoadInput roadInput(const ScenarioSpec& sc, const VehicleData& vehicle, std::uin
 }
 
 namespace {
-/// The regressors of one time: 1, then u_c(t − j Δ) wheel by wheel.
-void regressors(const RoadInput& in, double t, double dt, int taps, Eigen::VectorXd& x) {
+/// The regressors of one time: 1, then the input at t − j Δ wheel by wheel (the height, or the
+/// velocity over the tap spacing).
+void regressors(const RoadInput& in, double t, double dt, int taps, FirInput input, const std::vector<int>& corners, Eigen::VectorXd& x) {
   x[0] = 1.0;
-  for (int c = 0; c < 4; ++c)
-    for (int j = 0; j < taps; ++j) x[1 + c * taps + j] = in.at(c, t - j * dt);
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const int c = corners[i];
+    for (int j = 0; j < taps; ++j)
+      x[1 + static_cast<long>(i) * taps + j] =
+          input == FirInput::Height ? in.at(c, t - j * dt) : (in.at(c, t - j * dt) - in.at(c, t - (j + 1) * dt)) / dt;
+  }
+}
+
+/// One training record: the data set, its time and value, and its fold (0: the first half of its
+/// data set's time span).
+struct Row {
+  std::size_t set;
+  double t, y;
+  int fold;
+};
+
+/// The normal equations of the rows of one fold: XᵀX, Xᵀy and yᵀy.
+struct Normal {
+  Eigen::MatrixXd xx;
+  Eigen::VectorXd xy;
+  double yy = 0;
+};
+
+/// Each fold's normal equations (0: the first half of each data set's span, 1: the second).
+std::array<Normal, 2> normals(const std::vector<Row>& rows, const std::vector<const RoadInput*>& inputs, double dt, int taps, FirInput input,
+                              const std::vector<int>& corners) {
+  const long p = 1 + static_cast<long>(corners.size()) * taps;
+  std::array<Normal, 2> n;
+  for (auto& f : n) {
+    f.xx = Eigen::MatrixXd::Zero(p, p);
+    f.xy = Eigen::VectorXd::Zero(p);
+  }
+  Eigen::VectorXd x(p);
+  for (const auto& r : rows) {
+    auto& f = n[static_cast<std::size_t>(r.fold)];
+    regressors(*inputs[r.set], r.t, dt, taps, input, corners, x);
+    f.xx.selfadjointView<Eigen::Lower>().rankUpdate(x);
+    f.xy += r.y * x;
+    f.yy += r.y * r.y;
+  }
+  for (auto& f : n) f.xx.triangularView<Eigen::StrictlyUpper>() = f.xx.transpose().triangularView<Eigen::StrictlyUpper>();
+  return n;
+}
+
+/// The ridge solution (XᵀX + λ mean(diag XᵀX) I) c = Xᵀy.
+Eigen::VectorXd ridgeSolve(const Eigen::MatrixXd& xx, const Eigen::VectorXd& xy, double lambda) {
+  Eigen::MatrixXd a = xx;
+  a.diagonal().array() += lambda * xx.diagonal().mean();
+  return a.ldlt().solve(xy);
 }
 }  // namespace
 
 double FirBaseline::predict(const RoadInput& in, double t) const {
   Eigen::VectorXd x(static_cast<long>(coef.size()));
-  regressors(in, t, dt_s, taps, x);
+  regressors(in, t, dt_s, taps, input, corners, x);
   return x.dot(Eigen::Map<const Eigen::VectorXd>(coef.data(), static_cast<long>(coef.size())));
 }
 
 std::string FirBaseline::describe() const {
-  return "FIR from the road under the 4 wheels, " + std::to_string(taps) + " taps each at " + formatNumber(dt_s) +
-         " s, least squares on " + std::to_string(training_records) + " records";
+  const bool front = corners.size() <= 2 && std::all_of(corners.begin(), corners.end(), [](int c) { return c < 2; });
+  const std::string wheels = front ? (corners.size() == 1 ? "the front wheels (one signal)" : "the 2 front wheels")
+                                   : (corners.size() == 4 ? "the 4 wheels" : std::to_string(corners.size()) + " distinct wheel signals");
+  return std::string("FIR from the road's ") + (input == FirInput::Height ? "height" : "vertical velocity") + " under " + wheels + ", " +
+         std::to_string(taps) + " taps each at " + formatNumber(dt_s) + " s, least squares on " + std::to_string(training_records) +
+         " records, ridge " + formatNumber(ridge) + (cv_sse.empty() ? "" : " (input, wheels and ridge chosen by two-fold cross-validation on them)");
 }
 
 FirBaseline fitFirBaseline(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
-                           double dt_s, int taps) {
+                           double dt_s, int taps, std::optional<FirInput> input) {
   DTWIN_CHECK(train.size() == inputs.size() && dt_s > 0 && taps > 0, "fitFirBaseline: arguments");
   FirBaseline b;
   b.channel = channel;
   b.dt_s = dt_s;
   b.taps = taps;
-  const long p = 1 + 4L * taps;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(p, p);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(p), x(p);
-  for (std::size_t s = 0; s < train.size(); ++s)
-    for (const auto& r : train[s]->records) {
-      if (r.channel != channel) continue;
-      regressors(*inputs[s], r.time_s, dt_s, taps, x);
-      A.selfadjointView<Eigen::Lower>().rankUpdate(x);
-      rhs += r.value * x;
-      ++b.training_records;
+  std::vector<Row> rows;
+  for (std::size_t s = 0; s < train.size(); ++s) {
+    double t0 = std::numeric_limits<double>::infinity(), t1 = -t0;
+    for (const auto& r : train[s]->records)
+      if (r.channel == channel) t0 = std::min(t0, r.time_s), t1 = std::max(t1, r.time_s);
+    for (const auto& r : train[s]->records)
+      if (r.channel == channel) rows.push_back({s, r.time_s, r.value, r.time_s < 0.5 * (t0 + t1) ? 0 : 1});
+  }
+  b.training_records = static_cast<long>(rows.size());
+  // Wheels whose road repeats an earlier wheel's in every training input enter once.
+  std::vector<int> distinct;
+  for (int c = 0; c < 4; ++c) {
+    bool repeat = false;
+    for (int e : distinct) {
+      bool same = true;
+      for (const auto* in : inputs) same = same && in->u[static_cast<std::size_t>(c)] == in->u[static_cast<std::size_t>(e)];
+      repeat = repeat || same;
     }
+    if (!repeat) distinct.push_back(c);
+  }
+  std::vector<int> front;
+  for (int c : distinct)
+    if (c < 2) front.push_back(c);
+  b.corners = distinct;
+  const long p = 1 + static_cast<long>(distinct.size()) * taps;
   if (b.training_records < p)
     throw InputError("baseline " + channel, "the calibration data hold " + std::to_string(b.training_records) + " records of " + channel +
                                                 ", fewer than the FIR's " + std::to_string(p) + " coefficients");
-  A.triangularView<Eigen::StrictlyUpper>() = A.transpose().triangularView<Eigen::StrictlyUpper>();
-  A.diagonal().array() += 1e-9 * A.diagonal().mean();
-  const Eigen::VectorXd c = A.ldlt().solve(rhs);
+  // Each form (input, wheels, ridge) scored by two-fold cross-validation: each half of the
+  // training data predicted by the FIR fitted on the other half; the sums of squares from the
+  // held half's normal equations, yᵀy − 2 cᵀXᵀy + cᵀXᵀX c.
+  long in_fold[2] = {0, 0};
+  for (const auto& r : rows) ++in_fold[r.fold];
+  const bool cross = !input && in_fold[0] >= p && in_fold[1] >= p;  // else the given or general form, the smallest ridge
+  std::vector<std::vector<int>> sets{distinct};
+  if (!input && !front.empty() && front.size() < distinct.size()) sets.push_back(front);
+  std::vector<FirInput> forms;
+  if (input) forms.push_back(*input);
+  else forms = {FirInput::Height, FirInput::Velocity};
+  const double lambdas[] = {1e-9, 1e-7, 1e-5, 1e-3, 1e-1};
+  double best = std::numeric_limits<double>::infinity();
+  b.input = forms.front();
+  b.ridge = lambdas[0];
+  Eigen::VectorXd c;
+  for (const auto& set : sets)
+    for (const FirInput form : forms) {
+      const auto n = normals(rows, inputs, dt_s, taps, form, set);
+      if (cross)
+        for (const double lambda : lambdas) {
+          double sse = 0;
+          for (std::size_t f = 0; f < 2; ++f) {
+            const Eigen::VectorXd cf = ridgeSolve(n[1 - f].xx, n[1 - f].xy, lambda);
+            sse += n[f].yy - 2 * cf.dot(n[f].xy) + cf.dot(n[f].xx * cf);
+          }
+          b.cv_sse.push_back(sse);
+          if (sse < best) best = sse, b.input = form, b.corners = set, b.ridge = lambda;
+        }
+      if (b.input == form && b.corners == set) c = ridgeSolve(n[0].xx + n[1].xx, n[0].xy + n[1].xy, b.ridge);
+    }
   b.coef.assign(c.data(), c.data() + c.size());
   return b;
 }

@@ -6,10 +6,15 @@
 //
 //     y(t) ≈ b + Σ_c Σ_{j=0}^{L−1} h_{c,j} u_c(t − j Δ),
 //
-// fitted by least squares on the calibration drive and scored on the other, by the same fit
-// percentage as the model (compare.hpp SeriesComparison::fit_percent).
+// u_c the road's height under wheel c, or its vertical velocity (u_c(t) − u_c(t − Δ)) / Δ: an
+// FIR on the velocity has no gain at zero frequency, so a road's slow drift (a logged signal's
+// offset from drive to drive) does not become a prediction. fitFirBaseline chooses the input by
+// a two-fold cross-validation on the training data alone (never on the drive it is scored on),
+// fits it by least squares on the whole calibration drive, and it is scored on the other, by the
+// same fit percentage as the model (compare.hpp SeriesComparison::fit_percent).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,23 +36,39 @@ struct RoadInput {
 /// The road input of scenario `sc` (its road built for `vehicle` with `seed`) up to `duration_s`.
 RoadInput roadInput(const ScenarioSpec& sc, const VehicleData& vehicle, std::uint64_t seed, double dt_s, double duration_s);
 
+enum class FirInput { Height, Velocity };
+
 struct FirBaseline {
   std::string channel;
   double dt_s = 0.02;   ///< tap spacing Δ
   int taps = 50;        ///< L per wheel (memory L Δ)
+  FirInput input = FirInput::Height;
+  /// The wheels whose road enters (0 fl, 1 fr, 2 rl, 3 rr), in the order of the coefficients.
+  std::vector<int> corners{0, 1, 2, 3};
+  double ridge = 1e-9;  ///< λ: the normal matrix's diagonal raised by λ times its mean
+  /// The two-fold cross-validated residual sum of squares of each candidate form on the training
+  /// data (height and velocity, from every distinct wheel and from the front ones alone): the
+  /// choice of `input` and `corners`. Empty when the input was given.
+  std::vector<double> cv_sse;
   std::vector<double> coef;  ///< b, then h_{c,j} wheel by wheel
   long training_records = 0;
   double predict(const RoadInput& in, double t) const;
-  /// "FIR 4 x 50 taps at 0.02 s from the road under the wheels, least squares on N records"
+  /// "FIR from the road's vertical velocity under the 4 wheels, 50 taps each at 0.02 s, least
+  /// squares on N records (the input chosen by two-fold cross-validation on them)"
   std::string describe() const;
 };
 
-/// The baseline of `channel` fitted by least squares (a ridge of 1e-9 of the normal matrix's mean
-/// diagonal, for a road that does not excite every lag) on every record of `channel` in each
-/// `train` data set, read with its road input. Throws InputError when the data hold fewer records
-/// of the channel than coefficients.
+/// The baseline of `channel` fitted by least squares (with a ridge, below) on every record of `channel` in each
+/// `train` data set, read with its road input. Wheels whose road repeats another's exactly (one
+/// signal for both tracks) enter once. `input` empty: the form whose two-fold cross-validated
+/// error is lowest (each data set's records split at its middle time; each half predicted by the
+/// FIR fitted on the other), among height and velocity, from every wheel and from the front ones
+/// alone (the rear wheels' road is the front's, later: near-collinear taps), and ridges λ from
+/// 1e-9 to 0.1 (a least-squares FIR has any gain in a band the training drive leaves unexcited,
+/// and a faster drive excites it). `input` given: that input from every distinct wheel, λ = 1e-9.
+/// Throws InputError when the data hold fewer records of the channel than coefficients.
 FirBaseline fitFirBaseline(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
-                           double dt_s = 0.02, int taps = 50);
+                           double dt_s = 0.02, int taps = 50, std::optional<FirInput> input = std::nullopt);
 
 /// The fit percentage (100 (1 − ‖y − ŷ‖ / ‖y − mean y‖)) of `baseline` on every record of its
 /// channel in `data`; NaN when `data` holds none.

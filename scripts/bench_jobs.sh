@@ -18,7 +18,8 @@
 # drive A, the diagnosis with drive B held out and its causes applied, the comparison on drive B
 # with the FIR baseline; the whole walk timed, each step's time in its log), long_window (a
 # two-minute window at 110 Hz of the same car, calibrated with the structure the diagnosis found:
-# the hub input and a skyhook),
+# the hub input and a skyhook), passive_car (the same walk's diagnosis on a car without a
+# controller, whose road signal is the road under its tires: the verdict must be "none"),
 # demo_study (scripts/demo.sh's study), run (one 15 s run per assembly: `twin bench`), paper.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,8 +30,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | long_window | demo_study | run | paper) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car long_window demo_study run paper)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | passive_car | long_window | demo_study | run | paper) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car passive_car long_window demo_study run paper)" >&2; exit 2 ;;
   esac
 done
 
@@ -124,6 +125,19 @@ for r in "${rows[@]}"; do
           --data "$C/B/measurements.csv@drive_b" --baseline "$C/A/measurements.csv@drive_a" --out "$C/compare_b" >"$C/compare_b.txt" 2>&1
       }
       timed controlled_car "$C/walk.log" walk
+      ;;
+    passive_car)
+      P="$D/passive_car" && rm -rf "$P" && mkdir -p "$P"
+      walk_passive() {
+        "$B" import data/drives/passive_car_a.csv --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
+          --out "$P/A" --scenario drive_a >"$P/import_a.log"
+        "$B" import data/drives/passive_car_b.csv --map data/drives/controlled_car_map.toml --study "$P/A/study.toml" \
+          --out "$P/B" --scenario drive_b >"$P/import_b.log"
+        /usr/bin/time -f "diagnose %e s" "$B" diagnose --study "$P/B/study.toml" --data "$P/A/measurements.csv@drive_a" \
+          --holdout "$P/B/measurements.csv@drive_b" --out "$P/diag" --causes 3 --candidates 2 >"$P/diagnose.log" 2>&1
+        grep -q "^Diagnosis of M1: none" "$P/diagnose.log" || { echo "passive_car: the verdict is not none; see $P/diagnose.log" >&2; return 1; }
+      }
+      timed passive_car "$P/walk.log" walk_passive
       ;;
     long_window)
       L="$D/long_window" && rm -rf "$L" && mkdir -p "$L"

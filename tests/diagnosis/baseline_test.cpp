@@ -90,3 +90,65 @@ TEST(FirBaseline, TheRearWheelsFollowTheFrontOnesByAWheelbase) {
   }
   EXPECT_GT(most, 1e-3);  // a rough road
 }
+
+// The input form by cross-validation on the training data: a channel that follows the road's
+// velocity over a road that drifts (a random walk: its height wanders far from where it started)
+// gets the velocity form, and the height form's zero-frequency gain would carry the drift into its
+// prediction of another drive; a channel that follows the height gets the height form.
+TEST(FirBaseline, TheInputFormIsChosenByCrossValidationOnTheTrainingData) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const auto walk = [&](double start) {
+    RoadInput in;
+    in.dt_s = 0.01;
+    for (auto& v : in.u) {
+      v.resize(3001);
+      double h = start;
+      for (auto& x : v) x = (h += 0.002 * g(rng));
+    }
+    return in;
+  };
+  FirBaseline truth;
+  truth.channel = "seat_mps2";
+  truth.dt_s = 0.02;
+  truth.taps = 8;
+  truth.input = FirInput::Velocity;
+  truth.coef.assign(1 + 4 * 8, 0.0);
+  for (std::size_t i = 1; i < truth.coef.size(); ++i) truth.coef[i] = 0.02 * g(rng);
+  const auto recordsOf = [&](const RoadInput& in) {
+    LabData d;
+    for (int k = 0; k <= 2900; ++k) d.records.push_back({1, 0.01 * k, "seat_mps2", truth.predict(in, 0.01 * k) + 0.01 * g(rng)});
+    return d;
+  };
+  const RoadInput train = walk(0.0), test = walk(0.5);  // another drive, its signal 0.5 m off
+  const LabData train_data = recordsOf(train), test_data = recordsOf(test);
+  const FirBaseline chosen = fitFirBaseline("seat_mps2", {&train_data}, {&train}, 0.02, 8);
+  // 2 input forms x 5 ridges, from the 4 wheels and from the 2 front ones.
+  ASSERT_EQ(chosen.cv_sse.size(), 20u);
+  EXPECT_EQ(chosen.input, FirInput::Velocity);
+  EXPECT_NE(chosen.describe().find("vertical velocity"), std::string::npos) << chosen.describe();
+  const FirBaseline height = fitFirBaseline("seat_mps2", {&train_data}, {&train}, 0.02, 8, FirInput::Height);
+  EXPECT_TRUE(height.cv_sse.empty());
+  EXPECT_GT(firFitPercent(chosen, test_data, test), firFitPercent(height, test_data, test));
+  // A channel that follows the height: the height form.
+  truth.input = FirInput::Height;
+  const LabData h_data = recordsOf(train);
+  EXPECT_EQ(fitFirBaseline("seat_mps2", {&h_data}, {&train}, 0.02, 8).input, FirInput::Height);
+}
+
+// One signal for both tracks (a logged road): the right wheels repeat the left ones and enter
+// once; the FIR from the 2 distinct signals (left front, left rear) recovers the system.
+TEST(FirBaseline, WheelsThatRepeatAnotherEnterOnce) {
+  Known k(10, 0.0, 12);
+  k.in.u[1] = k.in.u[0];
+  k.in.u[3] = k.in.u[2];
+  FirBaseline truth = k.truth;
+  truth.corners = {0, 2};
+  truth.coef.resize(1 + 2 * 10);
+  for (auto& r : k.data.records) r.value = truth.predict(k.in, r.time_s);
+  const FirBaseline b = fitFirBaseline("seat_mps2", {&k.data}, {&k.in}, 0.02, 10);
+  EXPECT_EQ(b.corners, (std::vector<int>{0, 2}));
+  EXPECT_EQ(b.input, FirInput::Height);
+  EXPECT_NEAR(firFitPercent(b, k.data, k.in), 100.0, 1e-3);
+  EXPECT_NE(b.describe().find("2 distinct wheel signals"), std::string::npos) << b.describe();
+}

@@ -1206,7 +1206,8 @@ std::string effectSummary(const Diagnosis& d, const Candidate& best, const std::
 /// Verdict (step 4): every candidate's why, then "effect" (the best confirmed candidate with
 /// ΔBIC < −bic_strong, and the causes stagewise selection adds on top of it, which together leave
 /// no significant lack of fit or explain at least explained_min of the excess; ambiguity
-/// stated), "none" or "unexplained" (with where).
+/// stated), "none" (no significant lack of fit in the base: nothing to explain, whatever a
+/// candidate's ΔBIC) or "unexplained" (with where).
 void verdict(Diagnosis& d) {
   auto& res = d.res;
   const auto& options = d.options;
@@ -1227,6 +1228,19 @@ void verdict(Diagnosis& d) {
                     fmt("%.1f", base.lack_of_fit_z) + ", p = " + fmt("%.2g", base.lack_of_fit_p) +
                     ") and no catalogue effect passes the screening and the evidence test.";
     }
+    return;
+  }
+  if (!base_bad) {
+    // The base fits to the noise: there is no excess residual for a cause to explain. A candidate
+    // may still lower the BIC by fitting the noise a little better (or a trace the log's own
+    // processing leaves, such as its resampling); it is reported, not named.
+    std::string best;
+    for (std::size_t i = 0; i < named.size() && i < 3; ++i)
+      best += (i ? ", " : "") + named[i]->effect + " ΔBIC " + fmt("%.1f", named[i]->delta_bic);
+    res.verdict = "none";
+    res.summary = "No missing effect found: the residual is consistent with the measurement noise (lack of fit z = " +
+                  fmt("%.1f", base.lack_of_fit_z) + ", p = " + fmt("%.2g", base.lack_of_fit_p) + "). Candidates that fit it slightly better (" +
+                  best + ") have no excess residual to explain and are not named; --apply adds one to see what it changes.";
     return;
   }
   const auto alike = alikeOf(named, options);

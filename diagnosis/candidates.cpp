@@ -120,154 +120,178 @@ std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const A
   return out;
 }
 
+namespace {
+/// A calibrated value's range widened to its physical limit (widen:VALUE).
+CandidateSpec rangeCandidate(const std::string& name, const Study& study, const std::string& where) {
+  CandidateSpec c;
+  c.name = name;
+  const std::string value = name.substr(std::string(kWiden).size());
+  const auto cp = std::find_if(study.calibrated.begin(), study.calibrated.end(), [&](const CalibratedParameter& x) { return x.name == value; });
+  if (cp == study.calibrated.end()) {
+    std::vector<std::string> known;
+    for (const auto& x : study.calibrated) known.push_back(x.name);
+    throw InputError(where, unknownNameRule("calibrated value (widen: takes a value the study calibrates)", value, known));
+  }
+  const auto table = study.parameterTable();
+  const auto limit = physicalLimit(value, table);
+  if (!limit) throw InputError(where, "'" + value + "' has no known physical limit to widen its range to");
+  ParameterSpec p = table.at(value).spec;
+  p.prior_lower = std::min(cp->lower, limit->lower);
+  p.prior_upper = std::max(cp->upper, limit->upper);
+  if (p.prior_lower >= cp->lower && p.prior_upper <= cp->upper)
+    throw InputError(where, "'" + value + "' is calibrated over [" + num("%.4g", cp->lower) + ", " + num("%.4g", cp->upper) +
+                                "], which holds its physical limits already: nothing to widen");
+  p.unit = cp->unit.empty() ? p.unit : cp->unit;
+  c.kind = "range";
+  c.parameters = {p};
+  c.calibrated_names = {value};
+  c.study_lower = cp->lower;
+  c.study_upper = cp->upper;
+  c.signature = value + " lies outside the study's range [" + num("%.4g", cp->lower) + ", " + num("%.4g", cp->upper) + "] " + p.unit +
+                " (searched within its physical limits [" + num("%.4g", p.prior_lower) + ", " + num("%.4g", p.prior_upper) + "]: " +
+                limit->basis + ")";
+  return c;
+}
+
+/// Another option of a subsystem (SUBSYSTEM=OPTION).
+CandidateSpec optionCandidate(const std::string& name, const AssemblySpec& assembly, const std::string& where) {
+  CandidateSpec c;
+  c.name = name;
+  const auto eq = name.find('=');
+  const std::string sub = name.substr(0, eq), opt = name.substr(eq + 1);
+  const auto& known = knownSubsystems();
+  std::vector<std::string> subs;
+  for (const auto& [k, _] : known) subs.push_back(k);
+  if (!known.count(sub)) throw InputError(where, unknownNameRule("subsystem", sub, subs));
+  const auto& opts = known.at(sub);
+  if (std::find(opts.begin(), opts.end(), opt) == opts.end()) throw InputError(where, unknownNameRule(sub + " option", opt, opts));
+  if (assembly.option(sub).empty()) throw InputError(where, "assembly " + assembly.id + " has no " + sub + " subsystem to swap");
+  if (assembly.option(sub) == opt) throw InputError(where, "assembly " + assembly.id + " has the " + sub + " option '" + opt + "' already");
+  c.kind = "option";
+  c.options = {{sub, opt}};
+  c.signature = sub == "tire" && opt == "hub"
+                    ? "the road signal is the hub's own motion, not the road under a tire: no tire filtering between the signal and the "
+                      "wheel (no wheel-hop resonance driven through a tire compliance)"
+                    : "the " + sub + " behaves as the '" + opt + "' option, not '" + assembly.option(sub) + "'";
+  return c;
+}
+
+/// A fixed value freed (free:VALUE): a vehicle value, a law's constant or an input-side value.
+CandidateSpec freeCandidate(const std::string& name, const Study& study, const AssemblySpec& assembly, const std::string& where) {
+  CandidateSpec c;
+  c.name = name;
+  const std::string value = name.substr(std::string(kFree).size());
+  for (const auto& cp : study.calibrated)
+    if (cp.name == value) throw InputError(where, "'" + value + "' is calibrated already: only a fixed value can be freed");
+  auto freeable = freeableOf(assembly);
+  if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
+    // A fixed value of the assembly's laws (the tire radius, a strut-law constant): a run
+    // parameter already, so it is calibrated without a rebuild. Not a calibrated one.
+    const auto model = study.makeModel(assembly, {});
+    for (const auto& n : model->runParameterNames()) {
+      bool calibrated = false;
+      for (const auto& cp : study.calibrated) calibrated = calibrated || cp.name == n;
+      if (!calibrated && n.find("preload") == std::string::npos) freeable.push_back(n);
+    }
+    if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
+      throw InputError(where, unknownNameRule("fixed value that can be freed in assembly " + assembly.id, value, freeable));
+    }
+    c.law_value = true;
+  }
+  const auto table = study.parameterTable();
+  ParameterSpec p = table.at(value).spec;
+  const double v = table.value(value);
+  p.default_value = v;
+  // The search range: ±50 % about the file's value (a sensor's position ±0.5 m, its offset ±20
+  // noise sd; the CG's shift ±10 % of the wheelbase), inside the value's valid set.
+  std::string range = "±50 %", why_lower = "its smallest valid value", why_upper = "its largest valid value";
+  double lo = 0.5 * v, hi = 1.5 * v, valid_lo = p.min_value, valid_hi = p.max_value;
+  if (value == kRoadDelay) {  // the road signal's delay: ±0.1 s about its value (0 is a fine value)
+    range = "±0.1 s";
+    lo = v - 0.1;
+    hi = v + 0.1;
+  } else if (value.rfind("sensors.", 0) == 0) {  // where a sensor sits, or its offset: absolute ranges (0 is a fine value)
+    const std::string sensor = value.substr(8, value.rfind('.') - 8);
+    if (value.size() > 7 && value.compare(value.size() - 7, 7, ".offset") == 0) {
+      double sd = 0.0;
+      for (const auto& x : study.sensors)
+        if (x.name == sensor) sd = x.noise_sd;
+      if (!(sd > 0))
+        throw InputError(where, "'" + value + "': its search range is ±20 noise sd about " + num("%.4g", v) +
+                                    ", and sensor '" + sensor + "' has no noise_sd (give it one in [sensors." + sensor + "])");
+      range = "±20 noise sd";
+      lo = v - 20 * sd;
+      hi = v + 20 * sd;
+    } else {
+      range = "±0.5 m";
+      lo = v - 0.5;
+      hi = v + 0.5;
+    }
+  } else if (value == kCgShift) {  // a shift from the file's CG (0): ±10 % of the wheelbase, the CG between the axles
+    const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
+    range = "±10 % of the wheelbase";
+    lo = v - 0.1 * (a + b);
+    hi = v + 0.1 * (a + b);
+    valid_lo = std::max(valid_lo, -0.9 * b);
+    valid_hi = std::min(valid_hi, 0.9 * a);
+    why_lower = "90 % of the way to the rear axle";
+    why_upper = "90 % of the way to the front axle";
+  }
+  p.prior_lower = std::max(lo, valid_lo);
+  p.prior_upper = std::min(hi, valid_hi);
+  if (!(p.prior_lower < p.prior_upper))
+    throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of " + range + " about it to search");
+  const bool input = value == kRoadGain || value == kRoadDelay;
+  c.kind = input ? "input" : "parameter";
+  c.parameters = {p};
+  c.calibrated_names = {value};
+  c.signature = input ? (value == kRoadGain ? "the road signal is scaled (its gain is not 1)"
+                                            : "the road signal is shifted in time against the measured channels (a delay)")
+                      : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
+  if (p.prior_lower > lo) c.range_note = "searched from " + num("%.4g", p.prior_lower) + ", not " + num("%.4g", lo) + " (" + why_lower + ")";
+  if (p.prior_upper < hi)
+    c.range_note += (c.range_note.empty() ? "searched up to " : "; up to ") + num("%.4g", p.prior_upper) + ", not " + num("%.4g", hi) +
+                    " (" + why_upper + ")";
+  if (!c.range_note.empty()) {
+    c.range_note = "its " + range + " range was clipped to stay valid: " + c.range_note;
+    c.signature += "; " + c.range_note;
+  }
+  return c;
+}
+
+/// A sensor model on a channel group (KIND:GROUP).
+CandidateSpec sensorCandidate(const std::string& name, const std::vector<std::string>& channels, const std::string& where) {
+  CandidateSpec c;
+  c.name = name;
+  const auto colon = name.find(':');
+  c.sensor_kind = name.substr(0, colon);
+  const std::string group = name.substr(colon + 1);
+  ParameterSpec p = sensorModelParameter(c.sensor_kind, where);
+  std::vector<std::string> known;
+  for (const auto& [g, members] : channelGroups(channels)) {
+    known.push_back(g);
+    if (g == group) c.channels = members;
+  }
+  // A single fitted channel may also be named by itself.
+  if (c.channels.empty() && std::find(channels.begin(), channels.end(), group) != channels.end()) c.channels = {group};
+  if (c.channels.empty()) throw InputError(where, unknownNameRule("channel group of the fitted data", group, known));
+  c.kind = "sensor";
+  c.parameters = {p};
+  c.calibrated_names = {name + "." + p.name};
+  c.signature = "the " + group + " channels were distorted by the logger (" + c.sensor_kind + ")";
+  return c;
+}
+}  // namespace
+
 CandidateSpec candidateSpec(const std::string& name, const Study& study, const AssemblySpec& assembly,
                             const std::vector<std::string>& channels, const std::string& where) {
   CandidateSpec c;
   c.name = name;
-  if (name.rfind(kWiden, 0) == 0) {  // a calibrated value's range widened to its physical limit
-    const std::string value = name.substr(std::string(kWiden).size());
-    const auto cp = std::find_if(study.calibrated.begin(), study.calibrated.end(), [&](const CalibratedParameter& x) { return x.name == value; });
-    if (cp == study.calibrated.end()) {
-      std::vector<std::string> known;
-      for (const auto& x : study.calibrated) known.push_back(x.name);
-      throw InputError(where, unknownNameRule("calibrated value (widen: takes a value the study calibrates)", value, known));
-    }
-    const auto table = study.parameterTable();
-    const auto limit = physicalLimit(value, table);
-    if (!limit) throw InputError(where, "'" + value + "' has no known physical limit to widen its range to");
-    ParameterSpec p = table.at(value).spec;
-    p.prior_lower = std::min(cp->lower, limit->lower);
-    p.prior_upper = std::max(cp->upper, limit->upper);
-    if (p.prior_lower >= cp->lower && p.prior_upper <= cp->upper)
-      throw InputError(where, "'" + value + "' is calibrated over [" + num("%.4g", cp->lower) + ", " + num("%.4g", cp->upper) +
-                                  "], which holds its physical limits already: nothing to widen");
-    p.unit = cp->unit.empty() ? p.unit : cp->unit;
-    c.kind = "range";
-    c.parameters = {p};
-    c.calibrated_names = {value};
-    c.study_lower = cp->lower;
-    c.study_upper = cp->upper;
-    c.signature = value + " lies outside the study's range [" + num("%.4g", cp->lower) + ", " + num("%.4g", cp->upper) + "] " + p.unit +
-                  " (searched within its physical limits [" + num("%.4g", p.prior_lower) + ", " + num("%.4g", p.prior_upper) + "]: " +
-                  limit->basis + ")";
-    return c;
-  }
-  if (const auto eq = name.find('='); eq != std::string::npos) {  // another option of a subsystem
-    const std::string sub = name.substr(0, eq), opt = name.substr(eq + 1);
-    const auto& known = knownSubsystems();
-    std::vector<std::string> subs;
-    for (const auto& [k, _] : known) subs.push_back(k);
-    if (!known.count(sub)) throw InputError(where, unknownNameRule("subsystem", sub, subs));
-    const auto& opts = known.at(sub);
-    if (std::find(opts.begin(), opts.end(), opt) == opts.end()) throw InputError(where, unknownNameRule(sub + " option", opt, opts));
-    if (assembly.option(sub).empty()) throw InputError(where, "assembly " + assembly.id + " has no " + sub + " subsystem to swap");
-    if (assembly.option(sub) == opt) throw InputError(where, "assembly " + assembly.id + " has the " + sub + " option '" + opt + "' already");
-    c.kind = "option";
-    c.options = {{sub, opt}};
-    c.signature = sub == "tire" && opt == "hub"
-                      ? "the road signal is the hub's own motion, not the road under a tire: no tire filtering between the signal and the "
-                        "wheel (no wheel-hop resonance driven through a tire compliance)"
-                      : "the " + sub + " behaves as the '" + opt + "' option, not '" + assembly.option(sub) + "'";
-    return c;
-  }
-  if (name.rfind(kFree, 0) == 0) {
-    const std::string value = name.substr(std::string(kFree).size());
-    for (const auto& cp : study.calibrated)
-      if (cp.name == value) throw InputError(where, "'" + value + "' is calibrated already: only a fixed value can be freed");
-    auto freeable = freeableOf(assembly);
-    if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
-      // A fixed value of the assembly's laws (the tire radius, a strut-law constant): a run
-      // parameter already, so it is calibrated without a rebuild. Not a calibrated one.
-      const auto model = study.makeModel(assembly, {});
-      for (const auto& n : model->runParameterNames()) {
-        bool calibrated = false;
-        for (const auto& cp : study.calibrated) calibrated = calibrated || cp.name == n;
-        if (!calibrated && n.find("preload") == std::string::npos) freeable.push_back(n);
-      }
-      if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
-        throw InputError(where, unknownNameRule("fixed value that can be freed in assembly " + assembly.id, value, freeable));
-      }
-      c.law_value = true;
-    }
-    const auto table = study.parameterTable();
-    ParameterSpec p = table.at(value).spec;
-    const double v = table.value(value);
-    p.default_value = v;
-    // The search range: ±50 % about the file's value (a sensor's position ±0.5 m, its offset ±20
-    // noise sd; the CG's shift ±10 % of the wheelbase), inside the value's valid set.
-    std::string range = "±50 %", why_lower = "its smallest valid value", why_upper = "its largest valid value";
-    double lo = 0.5 * v, hi = 1.5 * v, valid_lo = p.min_value, valid_hi = p.max_value;
-    if (value == kRoadDelay) {  // the road signal's delay: ±0.1 s about its value (0 is a fine value)
-      range = "±0.1 s";
-      lo = v - 0.1;
-      hi = v + 0.1;
-    } else if (value.rfind("sensors.", 0) == 0) {  // where a sensor sits, or its offset: absolute ranges (0 is a fine value)
-      const std::string sensor = value.substr(8, value.rfind('.') - 8);
-      if (value.size() > 7 && value.compare(value.size() - 7, 7, ".offset") == 0) {
-        double sd = 0.0;
-        for (const auto& x : study.sensors)
-          if (x.name == sensor) sd = x.noise_sd;
-        if (!(sd > 0))
-          throw InputError(where, "'" + value + "': its search range is ±20 noise sd about " + num("%.4g", v) +
-                                      ", and sensor '" + sensor + "' has no noise_sd (give it one in [sensors." + sensor + "])");
-        range = "±20 noise sd";
-        lo = v - 20 * sd;
-        hi = v + 20 * sd;
-      } else {
-        range = "±0.5 m";
-        lo = v - 0.5;
-        hi = v + 0.5;
-      }
-    } else if (value == kCgShift) {  // a shift from the file's CG (0): ±10 % of the wheelbase, the CG between the axles
-      const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
-      range = "±10 % of the wheelbase";
-      lo = v - 0.1 * (a + b);
-      hi = v + 0.1 * (a + b);
-      valid_lo = std::max(valid_lo, -0.9 * b);
-      valid_hi = std::min(valid_hi, 0.9 * a);
-      why_lower = "90 % of the way to the rear axle";
-      why_upper = "90 % of the way to the front axle";
-    }
-    p.prior_lower = std::max(lo, valid_lo);
-    p.prior_upper = std::min(hi, valid_hi);
-    if (!(p.prior_lower < p.prior_upper))
-      throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of " + range + " about it to search");
-    const bool input = value == kRoadGain || value == kRoadDelay;
-    c.kind = input ? "input" : "parameter";
-    c.parameters = {p};
-    c.calibrated_names = {value};
-    c.signature = input ? (value == kRoadGain ? "the road signal is scaled (its gain is not 1)"
-                                              : "the road signal is shifted in time against the measured channels (a delay)")
-                        : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
-    if (p.prior_lower > lo) c.range_note = "searched from " + num("%.4g", p.prior_lower) + ", not " + num("%.4g", lo) + " (" + why_lower + ")";
-    if (p.prior_upper < hi)
-      c.range_note += (c.range_note.empty() ? "searched up to " : "; up to ") + num("%.4g", p.prior_upper) + ", not " + num("%.4g", hi) +
-                      " (" + why_upper + ")";
-    if (!c.range_note.empty()) {
-      c.range_note = "its " + range + " range was clipped to stay valid: " + c.range_note;
-      c.signature += "; " + c.range_note;
-    }
-    return c;
-  }
+  if (name.rfind(kWiden, 0) == 0) return rangeCandidate(name, study, where);
+  if (name.find('=') != std::string::npos) return optionCandidate(name, assembly, where);
+  if (name.rfind(kFree, 0) == 0) return freeCandidate(name, study, assembly, where);
   const auto colon = name.find(':');
-  if (colon != std::string::npos) {
-    c.sensor_kind = name.substr(0, colon);
-    const std::string group = name.substr(colon + 1);
-    ParameterSpec p = sensorModelParameter(c.sensor_kind, where);
-    std::vector<std::string> known;
-    for (const auto& [g, members] : channelGroups(channels)) {
-      known.push_back(g);
-      if (g == group) c.channels = members;
-    }
-    // A single fitted channel may also be named by itself.
-    if (c.channels.empty() && std::find(channels.begin(), channels.end(), group) != channels.end()) c.channels = {group};
-    if (c.channels.empty()) throw InputError(where, unknownNameRule("channel group of the fitted data", group, known));
-    c.kind = "sensor";
-    c.parameters = {p};
-    c.calibrated_names = {name + "." + p.name};
-    c.signature = "the " + group + " channels were distorted by the logger (" + c.sensor_kind + ")";
-    return c;
-  }
+  if (colon != std::string::npos) return sensorCandidate(name, channels, where);
   const auto effect = study.effectCatalog().make(name, where);  // InputError naming the known effects
   c.kind = "effect";
   for (const auto& p : effect->parameters())

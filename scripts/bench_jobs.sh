@@ -48,6 +48,13 @@ timed() {  # timed NAME LOG COMMAND...: wall seconds of COMMAND into secs[NAME]
   printf '%s: %.0f s\n' "$name" "${secs[$name]}" >&2
 }
 
+import_car() {  # import_car PREFIX DIR: drives A and B of data/drives/PREFIX_*.csv with the controlled car's mapping and study
+  "$B" import "data/drives/$1_a.csv" --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
+    --out "$2/A" --scenario drive_a >"$2/import_a.log"
+  "$B" import "data/drives/$1_b.csv" --map data/drives/controlled_car_map.toml --study "$2/A/study.toml" \
+    --out "$2/B" --scenario drive_b >"$2/import_b.log"
+}
+
 drive() {  # the demonstration drive, imported once
   if [[ ! -f "$D/drive/study.toml" ]]; then
     rm -rf "$D/drive"
@@ -110,10 +117,7 @@ for r in "${rows[@]}"; do
     controlled_car)
       C="$D/controlled_car" && rm -rf "$C" && mkdir -p "$C"
       walk() {
-        "$B" import data/drives/controlled_car_a.csv --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
-          --out "$C/A" --scenario drive_a >"$C/import_a.log"
-        "$B" import data/drives/controlled_car_b.csv --map data/drives/controlled_car_map.toml --study "$C/A/study.toml" \
-          --out "$C/B" --scenario drive_b >"$C/import_b.log"
+        import_car controlled_car "$C"
         /usr/bin/time -f "calibrate %e s" "$B" calibrate --study "$C/B/study.toml" --scenario drive_a --data "$C/A/measurements.csv" \
           --out "$C/cal" >"$C/calibrate.log" 2>&1
         /usr/bin/time -f "diagnose %e s" "$B" diagnose --study "$C/B/study.toml" --data "$C/A/measurements.csv@drive_a" \
@@ -129,10 +133,7 @@ for r in "${rows[@]}"; do
     passive_car)
       P="$D/passive_car" && rm -rf "$P" && mkdir -p "$P"
       walk_passive() {
-        "$B" import data/drives/passive_car_a.csv --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
-          --out "$P/A" --scenario drive_a >"$P/import_a.log"
-        "$B" import data/drives/passive_car_b.csv --map data/drives/controlled_car_map.toml --study "$P/A/study.toml" \
-          --out "$P/B" --scenario drive_b >"$P/import_b.log"
+        import_car passive_car "$P"
         /usr/bin/time -f "diagnose %e s" "$B" diagnose --study "$P/B/study.toml" --data "$P/A/measurements.csv@drive_a" \
           --holdout "$P/B/measurements.csv@drive_b" --out "$P/diag" --causes 3 --candidates 2 >"$P/diagnose.log" 2>&1
         grep -q "^Diagnosis of M1: none" "$P/diagnose.log" || { echo "passive_car: the verdict is not none; see $P/diagnose.log" >&2; return 1; }

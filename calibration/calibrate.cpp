@@ -136,10 +136,11 @@ LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, con
     : pool_(std::make_unique<Pool>()) {
   AssemblySpec spec = assembly;
   spec.freed.insert(spec.freed.end(), setup.freed.begin(), setup.freed.end());
-  for (const auto& [sub, opt] : setup.options) {
+  for (const auto& swap : setup.options) {  // (subsystem, option); no structured binding: a lambda captures it
+    const std::string& sub = swap.first;
     const auto it = std::find_if(spec.options.begin(), spec.options.end(), [&](const auto& o) { return o.first == sub; });
     if (it == spec.options.end()) throw InputError("calibration setup", "assembly " + assembly.id + " has no subsystem '" + sub + "'");
-    it->second = opt;
+    it->second = swap.second;
   }
   model_ = study.makeModel(spec, setup.extra_effects);
   if (study.calibrated.empty()) throw InputError(study.path + ": calibrated", "the study names no calibrated parameters");

@@ -68,7 +68,7 @@ int runTwin(int argc, char** argv, std::string& error) {
   const std::string command = joinArgs(argc, argv);
   CLI::App app{"twin: a multibody digital twin of a ground vehicle (Simbody), with Bayesian choice of subsystem fidelity"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string(kVersion) + " (" + kGitDescribe + ")");
+  app.set_version_flag("--version", std::string(kVersion) + " (" + kGitDescribe + ")\n" + kSimbody);
 
   std::vector<CommandHandle> commands;
   std::vector<bool> distributed;

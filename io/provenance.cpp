@@ -9,7 +9,7 @@
 
 namespace dtwin {
 
-nlohmann::json programInfo() { return {{"name", "twin"}, {"version", kVersion}, {"git", kGitDescribe}}; }
+nlohmann::json programInfo() { return {{"name", "twin"}, {"version", kVersion}, {"git", kGitDescribe}, {"simbody", kSimbody}}; }
 
 std::string utcNow() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# Builds Debian's own Simbody (the source package of the installed libsimbody-dev, Debian's patches
+# applied) with Simbody's Release flags (-O2 -DNDEBUG), libraries only, into a cache outside the
+# repository, once per machine. CMake prefers this build and falls back to the binary package
+# (docs/performance.md, "Which Simbody"): Debian's binary package is built without NDEBUG, so every
+# range, stage and argument check of Simbody runs inside each step, and a run is about twice as slow.
+#
+#   simbody.sh          build it if it is missing (about 8 to 10 minutes on 2 cores, once)
+#   simbody.sh --where  print the folder it is (or would be) installed in, build nothing
+#
+# The cache is $DTWIN_CACHE_DIR, else $XDG_CACHE_HOME/dtwin, else ~/.cache/dtwin. A build that is
+# interrupted leaves nothing half-installed: the folder is renamed into place only when complete.
+# Needs root (or sudo) once, to add a deb-src line for `apt-get source` and the build's packages.
+set -euo pipefail
+cache="${DTWIN_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/dtwin}"
+version="$(dpkg-query -W -f='${Version}' libsimbody-dev 2>/dev/null || true)"
+if [ -z "$version" ]; then
+  echo "simbody: libsimbody-dev is not installed (run scripts/setup.sh first)" >&2
+  exit 2
+fi
+prefix="$cache/simbody-${version}-release"
+if [ "${1:-}" = "--where" ]; then echo "$prefix"; exit 0; fi
+if [ -f "$prefix/dtwin-build.txt" ]; then
+  echo "simbody: Release build present ($prefix)"
+  exit 0
+fi
+mkdir -p "$cache"
+exec 9>"$cache/simbody.lock"
+if ! flock -n 9; then
+  echo "simbody: another set-up is building it; waiting"
+  flock 9
+  [ -f "$prefix/dtwin-build.txt" ] && { echo "simbody: Release build present ($prefix)"; exit 0; }
+fi
+start=$SECONDS
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+# The source package comes from the same archive as the binaries: one deb-src line for each
+# suite of the machine's own sources, added once.
+if ! apt-get source --print-uris -qq "simbody=$version" >/dev/null 2>&1; then
+  src=/etc/apt/sources.list.d/dtwin-src.sources
+  echo "simbody: adding the archive's source packages ($src)"
+  $SUDO tee "$src" >/dev/null <<'EOF'
+Types: deb-src
+URIs: http://deb.debian.org/debian
+Suites: bookworm bookworm-updates
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+EOF
+  $SUDO apt-get update -qq
+fi
+need=()
+for p in dpkg-dev liblapack-dev libblas-dev cmake g++; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || need+=("$p")
+done
+if [ ${#need[@]} -gt 0 ]; then
+  echo "simbody: installing ${need[*]}"
+  $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}"
+fi
+work="$cache/simbody-${version}-work"
+rm -rf "$work" "$prefix.partial"
+mkdir -p "$work"
+( cd "$work" && apt-get source -qq "simbody=$version" >/dev/null 2>&1 ) || {
+  echo "simbody: 'apt-get source simbody=$version' failed; the binary package stays in use" >&2
+  rm -rf "$work"; exit 1; }
+srcdir="$(find "$work" -mindepth 1 -maxdepth 1 -type d -name 'simbody-*' | head -n1)"
+echo "simbody: building Debian's simbody $version with Release flags into $prefix (once per machine)"
+gen=()
+command -v ninja >/dev/null && gen=(-G Ninja)
+cmake -S "$srcdir" -B "$work/build" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_INSTALL_PREFIX="$prefix.partial" -DCMAKE_INSTALL_LIBDIR=lib \
+  -DBUILD_TESTING=OFF -DBUILD_EXAMPLES=OFF -DBUILD_VISUALIZER=OFF \
+  -DSIMBODY_VISUALIZER_INSTALL_DIR="$prefix/lib/simbody/libexec" \
+  -DBUILD_DYNAMIC_LIBRARIES=ON -DBUILD_STATIC_LIBRARIES=OFF -DINSTALL_DOCS=OFF >"$work/configure.log" 2>&1 || {
+  echo "simbody: configure failed ($work/configure.log); the binary package stays in use" >&2; exit 1; }
+cmake --build "$work/build" -j"$(nproc)" >"$work/build.log" 2>&1 || {
+  echo "simbody: build failed ($work/build.log); the binary package stays in use" >&2; exit 1; }
+cmake --install "$work/build" >"$work/install.log" 2>&1
+# The installed CMake files name the prefix they were installed to; they locate themselves
+# relative to their own folder, so the rename below keeps them valid. (Debian's patch asks for the
+# visualizer's folder even when the visualizer is not built.)
+cat >"$prefix.partial/dtwin-build.txt" <<EOF
+Simbody $version (Debian source package, Release: -O2 -DNDEBUG, libraries only)
+built $(date -u +%Y-%m-%dT%H:%M:%SZ) by scripts/simbody.sh in $((SECONDS - start)) s
+EOF
+mv "$prefix.partial" "$prefix"
+rm -rf "$work"
+echo "simbody: done in $((SECONDS - start)) s ($prefix)"

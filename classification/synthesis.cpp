@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "calibration/calibrate.hpp"
+#include "classification/moment_tree.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/statistics.hpp"
@@ -117,7 +118,9 @@ struct SynthesisPlan {
   std::vector<double> times;            ///< the window's times
   bool branched = false;                ///< the roads of a draw share the smooth start
   double t_branch = -1.0;
+  long LB = 1;                          ///< blocks per leaf of the accumulation tree
   long blocks() const { return (M + B - 1) / B; }
+  long leaves() const { return (blocks() + LB - 1) / LB; }
   long blockSize(long b) const { return std::min(B, M - b * B); }
 };
 
@@ -132,6 +135,7 @@ SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, co
   plan.R = opt.roads_per_draw > 0 ? opt.roads_per_draw : study.sizes.at("roads_per_draw");
   plan.L = opt.road_library > 0 ? opt.road_library : study.sizes.at("road_library");
   plan.B = opt.block;
+  plan.LB = opt.leaf_blocks;
   plan.seed = opt.seed.value_or(study.seed);
   check.atLeast("draws", plan.M, 1);
   check.atLeast("roads_per_draw", plan.R, 1);
@@ -196,7 +200,7 @@ SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& asse
     post_rows += formatExact(post.tau[i]) + "\n";
   }
   id.post_hash = hexId(calib::fnv1a64(post_rows));
-  nlohmann::json fp{{"format", 1},
+  nlohmann::json fp{{"format", 2},
                     {"assembly", assembly.id},
                     {"label", assembly.label()},
                     {"names", plan.names},
@@ -205,6 +209,7 @@ SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& asse
                     {"roads_per_draw", plan.R},
                     {"road_library", plan.L},
                     {"block", plan.B},
+                    {"leaf_blocks", plan.LB},
                     {"seed", plan.seed},
                     {"streams", {hexId(kSynthDrawStream), hexId(kSynthRoadStream), hexId(kSynthNoiseStream), hexId(kRoadLibraryStream)}},
                     {"scenario", plan.sc->toJson()},
@@ -340,36 +345,17 @@ DrawOutput simulateDraw(const SynthesisPlan& plan, const PosteriorSample& post, 
   return out;
 }
 
-/// The ordered reduction of a synthesis: the accumulator, the next block to add, the failures
-/// and run costs so far, and the checkpoint that lets a rerun continue (synthesis.hpp,
-/// "Accumulation" and "Resume"). Not thread-safe: the caller adds one block at a time.
-class Reduction {
+/// Adds a synthesis's blocks, in block order, to the leaves of a MomentTree: a leaf is
+/// `leaf_blocks` blocks added with addBlock to an empty accumulator, then pushed into the tree
+/// (synthesis.hpp, "Accumulation"). Also keeps the failures and run costs in draw order. Not
+/// thread-safe: the caller adds one block at a time.
+class LeafSink {
  public:
-  Reduction(const SynthesisPlan& plan, const SynthesisOptions& opt, const SynthesisFiles& files, std::string assembly,
-            std::string fingerprint, bool root)
-      : acc(static_cast<int>(plan.p), momentOptions(opt)), plan_(plan), opt_(opt), files_(files), assembly_(std::move(assembly)),
-        fingerprint_(std::move(fingerprint)), root_(root) {}
-
-  /// Continues from checkpoint.json when the folder has one (InputError when it is another
-  /// synthesis's or does not match its moments file).
-  void resume() {
-    const std::string ckpt_text = rootRead(files_.checkpoint);
-    if (ckpt_text.empty()) return;
-    const nlohmann::json j = parseRootJson(ckpt_text);
-    if (!j.is_object() || j.value("fingerprint", "") != fingerprint_) refuseForeign(files_.checkpoint);
-    ckpt_file_ = j.at("moments").get<std::string>();
-    acc = MomentAccumulator::load((files_.dir / ckpt_file_).string());
-    if (acc.count() != j.at("vectors").get<std::int64_t>() || acc.dimension() != static_cast<int>(plan_.p))
-      throw InputError(files_.checkpoint.string(), "does not match " + ckpt_file_ + "; delete the folder to start over");
-    next_block = j.at("next_block").get<long>();
-    for (const auto& f : j.at("failure_list")) failures.push_back(failureFrom(f));
-    costs = j.at("cost_samples").get<std::vector<double>>();
-    run_walls = j.at("run_wall_samples").get<std::vector<double>>();
-    previous_wall = j.at("wall_s").get<double>();
-  }
+  LeafSink(const SynthesisPlan& plan, const MomentOptions& mo, MomentTree& tree)
+      : next_block(tree.end() * plan.LB), plan_(plan), mo_(mo), tree_(tree), leaf_(static_cast<int>(plan.p), mo) {}
 
   /// Adds block next_block (vectors in (draw, road) order; failed runs left out) and moves on.
-  void addNext(PendingBlock& blk) {
+  void add(PendingBlock& blk) {
     long cols = 0;
     for (const auto& d : blk.draws)
       for (const auto& v : d.vectors) cols += v.empty() ? 0 : 1;
@@ -379,7 +365,7 @@ class Reduction {
       for (const auto& d : blk.draws)
         for (const auto& v : d.vectors)
           if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(plan_.p));
-      acc.addBlock(X);
+      leaf_.addBlock(X);
     }
     for (auto& d : blk.draws) {
       failures.insert(failures.end(), d.failures.begin(), d.failures.end());
@@ -387,16 +373,81 @@ class Reduction {
       run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
     }
     ++next_block;
+    if (atLeafBoundary()) {
+      tree_.pushLeaf(std::move(leaf_));
+      leaf_ = MomentAccumulator(static_cast<int>(plan_.p), mo_);
+    }
+  }
+  const MomentOptions& moments() const { return mo_; }
+  /// True when every block added so far is in a leaf of the tree.
+  bool atLeafBoundary() const { return next_block % plan_.LB == 0 || next_block == plan_.blocks(); }
+
+  long next_block;
+  std::vector<SynthesisFailure> failures;
+  std::vector<double> costs, run_walls;
+
+ private:
+  const SynthesisPlan& plan_;
+  MomentOptions mo_;
+  MomentTree& tree_;
+  MomentAccumulator leaf_;
+};
+
+/// The reduction of a whole synthesis: the tree of its leaves, what is added next, the failures
+/// and run costs so far, and the checkpoint that lets a rerun continue (synthesis.hpp,
+/// "Accumulation" and "Resume"). Under MPI only the root holds the tree's nodes; every rank
+/// keeps next_block, the failures and the costs.
+class Reduction {
+ public:
+  Reduction(const SynthesisPlan& plan, const SynthesisOptions& opt, const SynthesisFiles& files, std::string assembly,
+            std::string fingerprint, bool root)
+      : tree(plan.leaves()), sink(plan, momentOptions(opt), tree), plan_(plan), opt_(opt), files_(files),
+        assembly_(std::move(assembly)), fingerprint_(std::move(fingerprint)), root_(root) {}
+
+  /// Continues from checkpoint.json when the folder has one (InputError when it is another
+  /// synthesis's or does not match its node files).
+  void resume() {
+    const std::string ckpt_text = rootRead(files_.checkpoint);
+    if (ckpt_text.empty()) return;
+    const nlohmann::json j = parseRootJson(ckpt_text);
+    if (!j.is_object() || j.value("fingerprint", "") != fingerprint_ || !j.contains("nodes")) refuseForeign(files_.checkpoint);
+    const long next_leaf = j.at("next_leaf").get<long>();
+    if (root_) {
+      std::vector<TreeNode> nodes;
+      for (const auto& n : j.at("nodes")) {
+        TreeNode node;
+        node.level = n.at("level").get<int>();
+        node.index = n.at("index").get<long>();
+        node.acc = MomentAccumulator::load((files_.dir / n.at("file").get<std::string>()).string());
+        if (node.acc.dimension() != static_cast<int>(plan_.p))
+          throw InputError(files_.checkpoint.string(), "does not match " + n.at("file").get<std::string>() + "; delete the folder to start over");
+        nodes.push_back(std::move(node));
+      }
+      tree = MomentTree::fromNodes(plan_.leaves(), 0, std::move(nodes), files_.checkpoint.string());
+      if (tree.end() != next_leaf)
+        throw InputError(files_.checkpoint.string(), "its nodes end at leaf " + std::to_string(tree.end()) + ", not at next_leaf " +
+                                                         std::to_string(next_leaf) + "; delete the folder to start over");
+      for (const auto& n : j.at("nodes")) node_files_.push_back(n.at("file").get<std::string>());
+    } else {
+      tree = MomentTree(plan_.leaves(), next_leaf);  // the root holds [0, next_leaf)
+    }
+    sink.next_block = std::min(plan_.blocks(), next_leaf * plan_.LB);
+    for (const auto& f : j.at("failure_list")) sink.failures.push_back(failureFrom(f));
+    sink.costs = j.at("cost_samples").get<std::vector<double>>();
+    sink.run_walls = j.at("run_wall_samples").get<std::vector<double>>();
+    previous_wall = j.at("wall_s").get<double>();
   }
 
   /// Starts the checkpoint clock (when the simulations start).
   void startClock() { last_ckpt_ = Clock::now(); }
 
-  /// Writes a checkpoint when blocks remain and checkpoint_interval_s has passed since the last
-  /// one; `t_run` is when this invocation started simulating.
+  /// Writes a checkpoint when leaves remain, the blocks added so far fill whole leaves and
+  /// checkpoint_interval_s has passed since the last one; `t_run` is when this invocation
+  /// started simulating. Root only (elsewhere a no-op).
   void checkpointIfDue(Clock::time_point t_run) {
     const auto now = Clock::now();
-    if (next_block < plan_.blocks() && std::chrono::duration<double>(now - last_ckpt_).count() >= opt_.checkpoint_interval_s) {
+    if (root_ && sink.next_block < plan_.blocks() && sink.atLeafBoundary() &&
+        std::chrono::duration<double>(now - last_ckpt_).count() >= opt_.checkpoint_interval_s) {
       writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
       last_ckpt_ = Clock::now();
     }
@@ -404,23 +455,22 @@ class Reduction {
 
   /// The finished synthesis replaces the checkpoint: moments.bin and synthesis.json (root only;
   /// its error reaches every rank).
-  void writeResults(const nlohmann::json& info) {
+  void writeResults(const MomentAccumulator& acc, const nlohmann::json& info) {
     onRoot([&]() -> std::string {
       acc.save(files_.moments.string());
       writeFileAtomic(files_.info.string(), info.dump(2) + "\n");
       // The checkpoint is no longer needed.
       std::error_code ec;
       fs::remove(files_.checkpoint, ec);
-      if (!ckpt_file_.empty()) fs::remove(files_.dir / ckpt_file_, ec);
+      for (const auto& f : node_files_) fs::remove(files_.dir / f, ec);
       return std::string();
     });
   }
 
-  MomentAccumulator acc;
-  long next_block = 0;
-  std::vector<SynthesisFailure> failures;
-  std::vector<double> costs, run_walls;
+  MomentTree tree;
+  LeafSink sink;
   double previous_wall = 0.0;  ///< wall time of earlier (interrupted) invocations
+  double combine_s = 0.0;      ///< this rank's time in the combination of the ranks' parts (MPI)
 
  private:
   static MomentOptions momentOptions(const SynthesisOptions& opt) {
@@ -429,25 +479,33 @@ class Reduction {
     return mo;
   }
 
-  /// checkpoint_<next_block>.bin and checkpoint.json naming it; the previous .bin is removed.
+  /// node_<level>_<index>.bin for each node not yet on disk (a node never changes: it is only
+  /// merged into its parent), then checkpoint.json naming them, then the files no longer named.
   void writeCheckpoint(double wall_so_far) {
-    if (!root_) return;
-    const std::string file = "checkpoint_" + std::to_string(next_block) + ".bin";
-    acc.save((files_.dir / file).string());
+    std::vector<std::string> files;
+    nlohmann::json nodes = nlohmann::json::array();
+    for (const auto& node : tree.nodes()) {
+      const std::string file = "node_" + std::to_string(node.level) + "_" + std::to_string(node.index) + ".bin";
+      if (std::find(node_files_.begin(), node_files_.end(), file) == node_files_.end()) node.acc.save((files_.dir / file).string());
+      nodes.push_back({{"level", node.level}, {"index", node.index}, {"file", file}, {"vectors", node.acc.count()}});
+      files.push_back(file);
+    }
     nlohmann::json j{{"fingerprint", fingerprint_},
                      {"assembly", assembly_},
-                     {"next_block", next_block},
+                     {"next_block", sink.next_block},
                      {"blocks", plan_.blocks()},
-                     {"moments", file},
-                     {"vectors", acc.count()},
+                     {"next_leaf", tree.end()},
+                     {"leaves", plan_.leaves()},
+                     {"nodes", nodes},
                      {"failure_list", nlohmann::json::array()},
-                     {"cost_samples", costs},
-                     {"run_wall_samples", run_walls},
+                     {"cost_samples", sink.costs},
+                     {"run_wall_samples", sink.run_walls},
                      {"wall_s", wall_so_far}};
-    for (const auto& f : failures) j["failure_list"].push_back(failureJson(f));
+    for (const auto& f : sink.failures) j["failure_list"].push_back(failureJson(f));
     writeFileAtomic(files_.checkpoint.string(), j.dump() + "\n");
-    if (!ckpt_file_.empty() && ckpt_file_ != file) fs::remove(files_.dir / ckpt_file_);
-    ckpt_file_ = file;
+    for (const auto& f : node_files_)
+      if (std::find(files.begin(), files.end(), f) == files.end()) fs::remove(files_.dir / f);
+    node_files_ = std::move(files);
   }
 
   const SynthesisPlan& plan_;
@@ -455,21 +513,21 @@ class Reduction {
   const SynthesisFiles& files_;
   std::string assembly_, fingerprint_;
   bool root_;
-  std::string ckpt_file_;  ///< current checkpoint_<block>.bin
+  std::vector<std::string> node_files_;  ///< the nodes of the current checkpoint
   Clock::time_point last_ckpt_ = Clock::now();
 };
 
 /// Simulates draw j on worker w (each worker has its own Simulator, made on first use).
 using DrawFn = std::function<DrawOutput(long j, int w)>;
 
-/// One process: draws first_draw .. M−1 on the threads; each finished block is added as soon as
-/// its predecessors are (one reducer at a time; a finished block whose predecessor is still
-/// running waits in `pending`).
-void reduceOnThreads(const SynthesisPlan& plan, const SynthesisOptions& opt, long first_draw, const DrawFn& draw,
-                     Reduction& red, Clock::time_point t_run, const ProgressFn& progress) {
+/// Draws [first_draw, end_draw) on this process's threads, each finished block added to `sink`
+/// as soon as its predecessors are (one reducer at a time; a finished block whose predecessor is
+/// still running waits in `pending`). `after_block` runs after each block is added (under the
+/// reducer's lock); `tick` after each draw.
+void reduceOnThreads(const SynthesisPlan& plan, int threads, long first_draw, long end_draw, const DrawFn& draw, LeafSink& sink,
+                     const std::function<void()>& after_block, const std::function<void()>& tick) {
   std::mutex state_m, reduce_m, progress_m;
   std::map<long, PendingBlock> pending;  // guarded by state_m
-  std::size_t done = static_cast<std::size_t>(first_draw);
   auto reduce = [&]() {
     while (true) {
       std::unique_lock<std::mutex> rl(reduce_m, std::try_to_lock);
@@ -478,21 +536,21 @@ void reduceOnThreads(const SynthesisPlan& plan, const SynthesisOptions& opt, lon
         PendingBlock blk;
         {
           std::lock_guard<std::mutex> sl(state_m);
-          auto it = pending.find(red.next_block);
+          auto it = pending.find(sink.next_block);
           if (it == pending.end() || it->second.remaining > 0) break;
           blk = std::move(it->second);
           pending.erase(it);
         }
-        red.addNext(blk);
-        red.checkpointIfDue(t_run);
+        sink.add(blk);
+        if (after_block) after_block();
       }
       rl.unlock();
       std::lock_guard<std::mutex> sl(state_m);  // a block finished while we were releasing?
-      auto it = pending.find(red.next_block);
+      auto it = pending.find(sink.next_block);
       if (it == pending.end() || it->second.remaining > 0) return;
     }
   };
-  parallelFor(static_cast<std::size_t>(plan.M - first_draw), opt.threads, [&](std::size_t task, int w) {
+  parallelFor(static_cast<std::size_t>(end_draw - first_draw), threads, [&](std::size_t task, int w) {
     const long j = first_draw + static_cast<long>(task);
     DrawOutput out = draw(j, w);
     {
@@ -507,40 +565,78 @@ void reduceOnThreads(const SynthesisPlan& plan, const SynthesisOptions& opt, lon
       --blk.remaining;
     }
     reduce();
-    if (progress) {
+    if (tick) {
       std::lock_guard<std::mutex> pl(progress_m);
-      progress(++done, static_cast<std::size_t>(plan.M));
+      tick();
     }
   });
   reduce();
 }
 
-/// Several MPI ranks: rounds of whole blocks. The draws of a round are spread over the ranks
-/// (draw j0 + t on rank t % size); every rank receives every draw's vectors and adds the blocks
-/// in block order with the same addBlock calls as one process: the same moments, bit for bit. A
-/// round holds about 8 draws per worker, at most ~256 MB of vectors.
-void reduceOnRanks(const SynthesisPlan& plan, const SynthesisOptions& opt, int ranks, int workers, const DrawFn& draw,
-                   Reduction& red, Clock::time_point t_run, const ProgressFn& progress) {
-  const long per_round_mem =
-      std::max<long>(1, static_cast<long>(256e6 / (8.0 * static_cast<double>(plan.R) * static_cast<double>(plan.p))));
-  const long per_round = std::min<long>(8L * ranks * workers, per_round_mem);
-  const long blocks_per_round = std::max<long>(1, per_round / plan.B);
-  const long n_blocks = plan.blocks();
-  while (red.next_block < n_blocks) {
-    const long b0 = red.next_block, b1 = std::min(n_blocks, b0 + blocks_per_round);
-    const long j0 = b0 * plan.B, j1 = std::min(plan.M, b1 * plan.B);
-    const auto packed = distributedMap(
-        static_cast<std::size_t>(j1 - j0), opt.threads,
-        [&](std::size_t t, int w) { return packDraw(draw(j0 + static_cast<long>(t), w)); },
-        [&](std::size_t d, std::size_t) {
-          if (progress) progress(static_cast<std::size_t>(j0) + d, static_cast<std::size_t>(plan.M));
-        });
-    for (long b = b0; b < b1; ++b) {
-      PendingBlock blk;
-      for (long j = b * plan.B; j < std::min(plan.M, (b + 1) * plan.B); ++j)
-        blk.draws.push_back(unpackDraw(packed[static_cast<std::size_t>(j - j0)]));
-      red.addNext(blk);
+/// Failures and run costs of a rank's draws, as doubles (what distributedMap carries).
+std::vector<double> packSink(const LeafSink& s) {
+  DrawOutput d;
+  d.failures = s.failures;
+  d.cost = s.costs;
+  d.run_wall = s.run_walls;
+  return packDraw(d);
+}
+
+/// Several MPI ranks: rounds of whole leaves. Rank r of K takes the round's leaves
+/// [L0 + r·q, L0 + (r + 1)·q), simulates their draws on its threads and builds its part of the
+/// tree; the parts are combined along a binomial tree of ranks (rank r + 2^s sends its nodes to
+/// rank r, s = 0, 1, ...: log2 K steps, each a transfer and the sibling merges it completes) and
+/// the root appends the round's nodes to its tree. Every node is the tree's own, so the moments
+/// are those of one process bit for bit. Rounds (at most kRoundLeaves leaves per rank, so that a
+/// checkpoint comes every few minutes) are balanced: q = ⌈leaves left / (K · rounds left)⌉.
+void reduceOnRanks(const SynthesisPlan& plan, int threads, int ranks, const DrawFn& draw, Reduction& red,
+                   Clock::time_point t_run, const ProgressFn& progress) {
+  constexpr long kRoundLeaves = 8;
+  const Distributed& D = Distributed::instance();
+  const long leaf_draws = plan.LB * plan.B;
+  const long n_leaves = plan.leaves();
+  while (red.sink.next_block < plan.blocks()) {
+    const long L0 = red.sink.next_block / plan.LB, left = n_leaves - L0;
+    const long rounds = (left + kRoundLeaves * ranks - 1) / (kRoundLeaves * ranks);
+    const long q = (left + ranks * rounds - 1) / (ranks * rounds);
+    const long L1 = std::min(n_leaves, L0 + q * ranks);
+    const long lo = std::min(L1, L0 + q * D.rank()), hi = std::min(L1, lo + q);
+    MomentTree part(n_leaves, lo);
+    std::size_t done = static_cast<std::size_t>(std::min(plan.M, L0 * leaf_draws));
+    const auto packed = distributedMap(static_cast<std::size_t>(ranks), threads, [&](std::size_t r, int) -> std::vector<double> {
+      DTWIN_CHECK(static_cast<int>(r) == D.rank(), "a rank's leaves computed on another rank");
+      LeafSink sink(plan, red.sink.moments(), part);
+      const long j0 = std::min(plan.M, lo * leaf_draws), j1 = std::min(plan.M, hi * leaf_draws);
+      reduceOnThreads(plan, threads, j0, j1, draw, sink, nullptr, [&] {
+        if (progress) progress(std::min<std::size_t>(static_cast<std::size_t>(plan.M), done += static_cast<std::size_t>(ranks)),
+                               static_cast<std::size_t>(plan.M));
+      });
+      DTWIN_CHECK(sink.atLeafBoundary(), "a rank's draws end inside a leaf");
+      return packSink(sink);
+    });
+    // The parts, combined along the binomial tree of ranks: after step s, rank r (r divisible by
+    // 2^(s+1)) holds the leaves of ranks r .. r + 2^(s+1) − 1.
+    const auto t_combine = Clock::now();
+    for (int s = 1; s < ranks; s *= 2) {
+      if (D.rank() % (2 * s) == s) {
+        D.sendDoubles(D.rank() - s, part.toVector());
+        break;
+      }
+      if (D.rank() % (2 * s) == 0 && D.rank() + s < ranks) part.append(MomentTree::fromVector(D.receiveDoubles(D.rank() + s)));
     }
+    if (D.isRoot()) {
+      DTWIN_CHECK(part.first() == L0 && part.end() == L1, "the ranks' parts do not cover the round");
+      red.tree.append(std::move(part));
+    }
+    red.combine_s += secondsSince(t_combine);
+    for (const auto& p : packed) {
+      const DrawOutput d = unpackDraw(p);
+      red.sink.failures.insert(red.sink.failures.end(), d.failures.begin(), d.failures.end());
+      red.sink.costs.insert(red.sink.costs.end(), d.cost.begin(), d.cost.end());
+      red.sink.run_walls.insert(red.sink.run_walls.end(), d.run_wall.begin(), d.run_wall.end());
+    }
+    red.sink.next_block = std::min(plan.blocks(), L1 * plan.LB);
+    if (!D.isRoot()) red.tree = MomentTree(n_leaves, L1);  // the root holds [0, L1)
     onRoot([&]() -> std::string {
       red.checkpointIfDue(t_run);
       return std::string();
@@ -552,7 +648,8 @@ void reduceOnRanks(const SynthesisPlan& plan, const SynthesisOptions& opt, int r
 /// cost and wall time.
 nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
                              const SynthesisOptions& opt, const SynthesisPlan& plan, const SynthesisIdentity& id,
-                             const Reduction& red, const SynthesisResult& res, double wall_total, int workers, int ranks) {
+                             const Reduction& red, const MomentAccumulator& acc, const SynthesisResult& res, double wall_total,
+                             int workers, int ranks) {
   const long M = plan.M, R = plan.R;
   nlohmann::json j;
   j["program"] = programInfo();
@@ -567,12 +664,13 @@ nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, c
   j["roads_per_draw"] = R;
   j["road_library"] = plan.L;
   j["block"] = plan.B;
+  j["leaf_blocks"] = plan.LB;
   j["simulations"] = M * R;
-  j["vectors"] = red.acc.count();
+  j["vectors"] = acc.count();
   j["failures"] = res.failures;
   j["failure_list"] = nlohmann::json::array();
-  for (std::size_t i = 0; i < red.failures.size() && i < 1000; ++i) j["failure_list"].push_back(failureJson(red.failures[i]));
-  if (red.failures.size() > 1000) j["failure_list_truncated"] = true;
+  for (std::size_t i = 0; i < red.sink.failures.size() && i < 1000; ++i) j["failure_list"].push_back(failureJson(red.sink.failures[i]));
+  if (red.sink.failures.size() > 1000) j["failure_list_truncated"] = true;
   j["seed"] = plan.seed;
   j["streams"] = {
       {"draw", {{"constant", hexId(kSynthDrawStream)},
@@ -599,18 +697,21 @@ nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, c
                   {"format", "MomentAccumulator::save: 8-byte tag DTWMOM01, then doubles (little-endian): magic, version, p, n, "
                              "track flag, mean (p), packed upper triangle of M2 column by column (p(p+1)/2), [T (p), Q]"},
                   {"dimension", plan.p},
-                  {"count", red.acc.count()},
+                  {"count", acc.count()},
                   {"track_fourth_moment", opt.track_fourth_moment},
-                  {"accumulation", "fixed blocks of `block` draws, addBlock in (draw, road) order, blocks added in block order"}};
+                  {"accumulation", "fixed blocks of `block` draws, addBlock in (draw, road) order; leaves of `leaf_blocks` blocks "
+                                   "in block order; leaves merged in a fixed binary tree (node (l+1, k) = node (l, 2k) merged with "
+                                   "node (l, 2k+1))"}};
   j["cost"] = {{"wall_s_per_simulated_s_median", res.cost_s_per_s},
                {"run_wall_s_median", res.median_run_wall_s},
-               {"runs_measured", red.costs.size()},
+               {"runs_measured", red.sink.costs.size()},
                {"rule", std::string("median over the successful runs of wall time / simulated time") +
                             (plan.branched ? "; a branched run carries an even share of its draw's common smooth part" : "")}};
   j["wall_s"] = wall_total;
   j["resumed_blocks"] = res.resumed_blocks;
   j["threads"] = workers;
   j["ranks"] = ranks;
+  if (ranks > 1) j["rank_tree_combine_s"] = red.combine_s;
   j["fingerprint"] = id.fingerprint;
   return j;
 }
@@ -624,6 +725,7 @@ std::uint64_t librarySeed(std::uint64_t seed, std::uint64_t index) {
 void SynthesisOptions::validate() const {
   const OptionCheck check("synthesis");
   check.atLeast("block", block, 1);
+  check.atLeast("leaf_blocks", leaf_blocks, 1);
   check.finite("t_begin_s", t_begin_s);
   check.finite("t_end_s", t_end_s);
   check.require(t_begin_s <= t_end_s, "t_begin_s",
@@ -665,8 +767,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
 
   Reduction red(plan, opt, files, assembly.id, id.fingerprint, root);
   red.resume();
-  res.resumed_blocks = red.next_block;
-  const long first_draw = std::min(plan.M, red.next_block * plan.B);
+  res.resumed_blocks = red.sink.next_block;
+  const long first_draw = std::min(plan.M, red.sink.next_block * plan.B);
   const long todo = plan.M - first_draw;
   const int ranks = Distributed::instance().size();
   const int workers = distributedWorkers(static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
@@ -679,21 +781,37 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   red.startClock();
   const auto t_run = Clock::now();
   if (progress) progress(static_cast<std::size_t>(first_draw), static_cast<std::size_t>(plan.M));
-  if (ranks == 1)
-    reduceOnThreads(plan, opt, first_draw, draw, red, t_run, progress);
-  else
-    reduceOnRanks(plan, opt, ranks, workers, draw, red, t_run, progress);
-  DTWIN_CHECK(red.next_block == plan.blocks(), "blocks left unreduced");
+  if (ranks == 1) {
+    std::size_t done = static_cast<std::size_t>(first_draw);
+    reduceOnThreads(plan, opt.threads, first_draw, plan.M, draw, red.sink, [&] { red.checkpointIfDue(t_run); },
+                    [&] {
+                      if (progress) progress(++done, static_cast<std::size_t>(plan.M));
+                    });
+  } else {
+    reduceOnRanks(plan, opt.threads, ranks, draw, red, t_run, progress);
+  }
+  DTWIN_CHECK(red.sink.next_block == plan.blocks(), "blocks left unreduced");
 
+  // The root's tree is complete; under MPI every rank gets its root.
+  MomentAccumulator acc{1};
+  if (ranks == 1) {
+    acc = red.tree.takeRoot();
+  } else {
+    const std::string bytes = onRoot([&]() -> std::string {
+      const std::vector<std::uint8_t> b = red.tree.root().toBytes();
+      return std::string(b.begin(), b.end());
+    });
+    acc = MomentAccumulator::fromBytes(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+  }
   const double wall_total = red.previous_wall + secondsSince(t_run);
-  res.failures = static_cast<long>(red.failures.size());
-  res.failure_list = red.failures;
-  res.cost_s_per_s = median(red.costs);
-  res.median_run_wall_s = median(red.run_walls);
-  nlohmann::json info = synthesisInfo(study, assembly, post, opt, plan, id, red, res, wall_total, workers, ranks);
-  red.writeResults(info);
+  res.failures = static_cast<long>(red.sink.failures.size());
+  res.failure_list = red.sink.failures;
+  res.cost_s_per_s = median(red.sink.costs);
+  res.median_run_wall_s = median(red.sink.run_walls);
+  nlohmann::json info = synthesisInfo(study, assembly, post, opt, plan, id, red, acc, res, wall_total, workers, ranks);
+  red.writeResults(acc, info);
   res.info = std::move(info);
-  res.moments = std::move(red.acc);
+  res.moments = std::move(acc);
   res.wall_s = secondsSince(t_all);
   return res;
 }

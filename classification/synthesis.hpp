@@ -19,13 +19,17 @@
 //    value, drawn from RandomStream(seed, kSynthNoiseStream, j·R + r) in time order (channels in
 //    N only, as `twin generate field` does; other channels stay noise-free and the JSON says so).
 //
-// \par Accumulation (bitwise reproducible for any thread count)
-// Draws are grouped in FIXED blocks of B draws (block b = draws bB .. bB+B−1). The vectors of a
-// block are added with one MomentAccumulator::addBlock, columns in (j, r) order, and blocks are
-// added IN BLOCK ORDER (an ordered reduction: a finished block waits for its predecessors;
-// draws are simulated in parallel, one Simulator per worker). A failed simulation (diverged,
-// parameters a law rejects, non-finite output) is counted and listed; its vector is left out of
-// its block (never averaged in), which depends only on (j, r), never on timing.
+// \par Accumulation (bitwise reproducible for any thread or process count)
+// Draws are grouped in FIXED blocks of B draws (block b = draws bB .. bB+B−1) and blocks in FIXED
+// leaves of `leaf_blocks` blocks. The vectors of a block are added with one
+// MomentAccumulator::addBlock, columns in (j, r) order, blocks in block order into their leaf's
+// accumulator (an ordered reduction: a finished block waits for its predecessors; draws are
+// simulated in parallel, one Simulator per worker), and the leaves are merged in a fixed binary
+// tree (classification/moment_tree.hpp): the same nodes whoever computes them. Under MPI each rank
+// builds the leaves of its share of a round and the parts meet along a binomial tree of ranks, so
+// no rank adds every vector. A failed simulation (diverged, parameters a law rejects, non-finite
+// output) is counted and listed; its vector is left out of its block (never averaged in), which
+// depends only on (j, r), never on timing.
 //
 // \par Files in out_dir
 //   moments.bin        the accumulator (MomentAccumulator::save: tag DTWMOM01, then
@@ -33,13 +37,14 @@
 //                      upper triangle of the scatter matrix M2, optionally T and Q)
 //   synthesis.json     sizes, seeds, streams, failures, cost, wall time, window, channel,
 //                      fingerprint, program information (SynthesisResult::info)
-//   checkpoint.json + checkpoint_<block>.bin   while running (removed at the end)
-// Resume: every ~checkpoint_interval_s (default 30 s) the merged accumulator is saved (atomic)
-// with the next block index and the fingerprint of everything that changes the numbers (one
-// file for all blocks so far, not one per block: at p = 5001 each is 100 MB). A rerun of the
-// same synthesis continues from the checkpoint and ends with a bit-identical moments.bin; a rerun
-// after completion reuses the finished files; a rerun with different inputs into the same folder
-// is refused (InputError).
+//   checkpoint.json + node_<level>_<index>.bin   while running (removed at the end)
+// Resume: every ~checkpoint_interval_s (default 30 s), at a leaf boundary, the tree's current
+// nodes are saved (atomic; at most about 2 log2(leaves) of them, each written once: a node never
+// changes until it is merged into its parent, at p = 5001 each is 100 MB) with the next leaf and
+// the fingerprint of everything that changes the numbers. A rerun of the same synthesis continues
+// from the checkpoint and ends with a bit-identical moments.bin; a rerun after completion reuses
+// the finished files; a rerun with different inputs into the same folder is refused (InputError).
+// Memory: one accumulator per node held (8 p² bytes each: 200 MB at p = 5001).
 //
 // \par Cost
 // Each run's wall time per simulated second (runBranched splits the shared part's time evenly
@@ -78,6 +83,7 @@ struct SynthesisOptions {
   long roads_per_draw = 0;  ///< R; <= 0: sizes.roads_per_draw
   long road_library = 0;    ///< L (>= R); <= 0: sizes.road_library
   long block = 16;          ///< B draws per block (changes the numbers at the rounding level)
+  long leaf_blocks = 2;     ///< blocks per leaf of the accumulation tree (changes the numbers at the rounding level)
   int threads = 0;          ///< <= 0: all cores (never changes the numbers)
   std::optional<std::uint64_t> seed;  ///< default: the study's seed
   std::string scenario = "field";

@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
 #include "study/bench.hpp"
+#include "study/bench_accumulation.hpp"
 #include "twin/hand_ode.hpp"
 #include "io/provenance.hpp"
 #include "twin/simulator.hpp"
@@ -106,7 +107,7 @@ int runHandOdeBench(const std::string& study_path, int runs, bool markdown, std:
                     w.jacs, per);
     }
     if (markdown) std::printf("\n");
-    std::printf("ratio Simbody / hand ODE: %.1fx (issue 29's target: <= 3x); with the output at 0.1 Hz: %.1fx\n", r.ratio(),
+    std::printf("ratio Simbody / hand ODE: %.1fx (target: <= 3x); with the output at 0.1 Hz: %.1fx\n", r.ratio(),
                 r.simbody_integration_s / r.hand_integration_s);
     std::printf("one hand right-hand side alone: %.2f us\n", 1e6 * r.hand_rhs_s);
     std::printf("front-left hub force: peak %.0f N; max |Simbody - hand| %.2g N (%.2g %% of the peak) at t = %.3f s; "
@@ -117,10 +118,30 @@ int runHandOdeBench(const std::string& study_path, int runs, bool markdown, std:
   return 0;
 }
 
+/// `--accumulation`: the measured costs of a synthesis and its modelled wall time on K ranks.
+int runAccumulationBench(const std::string& study_path, int runs, double link_gb, const std::vector<std::string>& ids) {
+  const Study study = loadStudy(study_path);
+  const AssemblySpec a = ids.empty() ? study.assemblies().front() : study.assembly(ids.front());
+  std::fprintf(stderr, "twin bench --accumulation: %s, %d timed draws (after one warm-up), median reported\n", a.id.c_str(), runs);
+  const AccumulationBench r = benchAccumulation(study, a, runs, link_gb);
+  const AccumulationCosts& c = r.costs;
+  std::printf("%s (%s): %ld draws x %ld roads, blocks of %ld draws, leaves of %ld blocks (%ld leaves), vectors of %d samples\n",
+              r.assembly.c_str(), r.label.c_str(), c.draws, c.roads, c.block, c.leaf_blocks, c.leaves, c.p);
+  std::printf("measured on one core: a draw (%ld runs) %.3f s; addBlock %.2f ms per vector; merge of two nodes %.1f ms; "
+              "node to doubles %.1f ms, back %.1f ms, to a file %.1f ms (%.0f MB); assumed link %.0f GB/s\n",
+              c.roads, c.draw_s, 1e3 * c.add_per_vector_s, 1e3 * c.merge_s, 1e3 * c.pack_s, 1e3 * c.unpack_s, 1e3 * c.save_s,
+              c.node_bytes / 1e6, c.link_bytes_per_s / 1e9);
+  std::printf("%6s %7s %12s %9s %11s %14s %22s\n", "ranks", "rounds", "wall_s", "speed-up", "efficiency", "of it combine", "every rank adds all [s]");
+  for (const ScalingRow& w : r.rows)
+    std::printf("%6d %7ld %12.1f %9.1f %11.2f %14.1f %22.1f\n", w.ranks, w.rounds, w.wall_s, w.speedup, w.efficiency, w.combine_s,
+                w.ordered_wall_s);
+  return 0;
+}
+
 }  // namespace
 
 CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*/) {
-  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; std::string scenario = "field"; bool hand_ode = false; };
+  struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; std::string scenario = "field"; bool hand_ode = false; bool accumulation = false; double link_gb = 10.0; };
   auto cfg = std::make_shared<Cfg>();
   std::string& bench_study = cfg->study;
   int& bench_runs = cfg->runs;
@@ -140,6 +161,12 @@ CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*
               "both integrated by ROS34PW2")
       ->excludes("--import")
       ->excludes("--user-effect");
+  auto* acc = b->add_flag("--accumulation", cfg->accumulation,
+                          "Instead: a synthesis's cost per draw and per accumulation step for one assembly (--assembly, default "
+                          "the first), and its wall time on 1 to 256 single-core MPI ranks modelled from them");
+  acc->excludes("--import")->excludes("--user-effect")->excludes("--hand-ode");
+  b->add_option("--link-gb-per-s", cfg->link_gb, "With --accumulation: the bandwidth between ranks the model assumes [GB/s]")
+      ->capture_default_str()->check(CLI::PositiveNumber)->needs(acc);
   auto* scen = b->add_option("--scenario", cfg->scenario, "With --user-effect: the study's scenario of the whole runs timed")->capture_default_str();
   scen->needs("--user-effect");
 
@@ -161,6 +188,7 @@ CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*
                           r.user_run_s / r.builtin_run_s, r.identical_traces ? "identical" : "DIFFER");
               return 0;
             }
+            if (cfg->accumulation) return runAccumulationBench(cfg->study, cfg->runs, cfg->link_gb, cfg->ids);
             if (cfg->hand_ode) return runHandOdeBench(cfg->study, cfg->runs, cfg->md, cfg->ids);
             return runBench(cfg->study, cfg->runs, cfg->md, cfg->ids);
           }};

@@ -19,7 +19,7 @@ namespace {
 
 struct SynthesizeConfig {
   std::string study = defaultStudy(), calibration, assembly = "all", out, scenario = "field", channel = "hub_force_fl_N";
-  long draws = 0, roads = 0, library = 0, block = 16;
+  long draws = 0, roads = 0, library = 0, block = 16, leaf_blocks = 2;
   int threads = 0;
   std::optional<std::uint64_t> seed;  ///< unset: the study's
   std::vector<double> window;
@@ -56,6 +56,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   opt.roads_per_draw = cfg.roads;
   opt.road_library = cfg.library;
   opt.block = cfg.block;
+  opt.leaf_blocks = cfg.leaf_blocks;
   opt.threads = cfg.threads;
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.scenario = cfg.scenario;
@@ -119,6 +120,9 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
   c->add_option("--roads", cfg->roads, "Roads per draw R (default: sizes.roads_per_draw)")->check(CLI::Range(1L, 100000L));
   c->add_option("--library", cfg->library, "Road library size L >= R (default: sizes.road_library)")->check(CLI::Range(1L, 1000000000L));
   c->add_option("--block", cfg->block, "Draws per accumulation block (part of the result's definition)")
+      ->capture_default_str()->check(CLI::Range(1L, 100000L));
+  c->add_option("--leaf-blocks", cfg->leaf_blocks,
+                "Blocks per leaf of the fixed accumulation tree (part of the result's definition)")
       ->capture_default_str()->check(CLI::Range(1L, 100000L));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores; never changes the result)")
       ->capture_default_str()->check(CLI::Range(0, 1024));

@@ -265,6 +265,44 @@ void Distributed::gatherMap(std::vector<std::vector<double>>& out, long long loc
   if (error) std::rethrow_exception(error);
 }
 
+namespace {
+constexpr long long kPiece = 1LL << 27;  // doubles per message (1 GiB): MPI counts are int
+}  // namespace
+
+void Distributed::sendDoubles(int to, const std::vector<double>& values) const {
+#ifdef DTWIN_HAVE_MPI
+  if (mpi_ && size_ > 1) {
+    DTWIN_CHECK(to >= 0 && to < size_ && to != rank_, "sendDoubles: no such partner rank");
+    long long n = static_cast<long long>(values.size());
+    MPI_Send(&n, 1, MPI_LONG_LONG, to, 1, g_work);
+    for (long long at = 0; at < n; at += kPiece)
+      MPI_Send(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, to, 2, g_work);
+    return;
+  }
+#endif
+  (void)to;
+  (void)values;
+  DTWIN_CHECK(false, "sendDoubles needs more than one rank");
+}
+
+std::vector<double> Distributed::receiveDoubles(int from) const {
+#ifdef DTWIN_HAVE_MPI
+  if (mpi_ && size_ > 1) {
+    DTWIN_CHECK(from >= 0 && from < size_ && from != rank_, "receiveDoubles: no such partner rank");
+    long long n = 0;
+    MPI_Recv(&n, 1, MPI_LONG_LONG, from, 1, g_work, MPI_STATUS_IGNORE);
+    DTWIN_CHECK(n >= 0, "receiveDoubles: a negative length");
+    std::vector<double> values(static_cast<std::size_t>(n));
+    for (long long at = 0; at < n; at += kPiece)
+      MPI_Recv(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, from, 2, g_work, MPI_STATUS_IGNORE);
+    return values;
+  }
+#endif
+  (void)from;
+  DTWIN_CHECK(false, "receiveDoubles needs more than one rank");
+  return {};
+}
+
 std::string encodeException(const std::exception_ptr& e) {
   std::string out;
   try {

@@ -82,6 +82,10 @@ class Distributed {
   /// this rank (or -1) and `error` its exception. Throws the lowest failing task's error on
   /// every rank.
   void gatherMap(std::vector<std::vector<double>>& out, long long local_fail, const std::exception_ptr& error) const;
+  /// Point to point, for reductions along a tree of ranks: `values` to rank `to`, which must call
+  /// receiveDoubles(from this rank). Any length (sent in pieces of at most 2^27 doubles).
+  void sendDoubles(int to, const std::vector<double>& values) const;
+  std::vector<double> receiveDoubles(int from) const;
 
   Distributed(const Distributed&) = delete;
   Distributed& operator=(const Distributed&) = delete;

@@ -40,6 +40,7 @@ SynthesisOptions tiny(int threads) {
   o.roads_per_draw = 2;
   o.road_library = 20;
   o.block = 2;
+  o.leaf_blocks = 1;  // three leaves: a tree with a merge and a promoted node
   o.threads = threads;
   o.seed = 99;
   o.t_begin_s = 10.0;
@@ -116,6 +117,11 @@ TEST(Synthesis, ResumesAfterAnInterruptionBitIdentically) {
                std::runtime_error);
   ASSERT_TRUE(fs::exists(dir / "cut" / "checkpoint.json"));
   EXPECT_FALSE(fs::exists(dir / "cut" / "moments.bin"));
+  {  // the checkpoint names the tree's nodes so far, each in its own file
+    const auto ck = nlohmann::json::parse(slurp(dir / "cut" / "checkpoint.json"));
+    ASSERT_FALSE(ck["nodes"].empty());
+    for (const auto& n : ck["nodes"]) EXPECT_TRUE(fs::exists(dir / "cut" / n["file"].get<std::string>())) << n.dump();
+  }
   const auto r = synthesizeAssembly(demo(), a, ps, o, out);
   EXPECT_GE(r.resumed_blocks, 1);
   EXPECT_LT(r.resumed_blocks, 3);
@@ -123,7 +129,7 @@ TEST(Synthesis, ResumesAfterAnInterruptionBitIdentically) {
   EXPECT_TRUE(slurp(dir / "full" / "moments.bin") == slurp(dir / "cut" / "moments.bin")) << "resumed moments differ";
   EXPECT_FALSE(fs::exists(dir / "cut" / "checkpoint.json"));
   for (const auto& e : fs::directory_iterator(dir / "cut"))
-    EXPECT_EQ(e.path().filename().string().rfind("checkpoint_", 0), std::string::npos) << e.path();
+    EXPECT_EQ(e.path().filename().string().rfind("node_", 0), std::string::npos) << e.path();
   const auto again = synthesizeAssembly(demo(), a, ps, o, out);
   EXPECT_TRUE(again.reused);
   EXPECT_EQ(again.moments.count(), r.moments.count());

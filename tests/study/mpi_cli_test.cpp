@@ -77,6 +77,10 @@ TEST(MpiCli, CalibrateAndSynthesizeAreBitIdenticalWithTwoRanks) {
   expectSameFile(tmp / "s1" / "M3" / "moments.bin", tmp / "s2" / "M3" / "moments.bin");
   expectSameFile(tmp / "s1" / "M3" / "moments.bin", tmp / "s3" / "M3" / "moments.bin");
   EXPECT_FALSE(fs::exists(tmp / "s2" / "M3" / "checkpoint.json"));
+  // One block per leaf: five leaves in rounds of two, the last round's second rank without one.
+  ASSERT_EQ(run(kTwin + synth + (tmp / "t1").string() + " --threads 1 --leaf-blocks 1"), 0);
+  ASSERT_EQ(run(mpirun2() + kTwin + synth + (tmp / "t2").string() + " --threads 1 --leaf-blocks 1"), 0);
+  expectSameFile(tmp / "t1" / "M3" / "moments.bin", tmp / "t2" / "M3" / "moments.bin");
   // A rerun under MPI reuses the finished files.
   ASSERT_EQ(run(mpirun2() + kTwin + synth + (tmp / "s2").string() + " --threads 1"), 0);
   expectSameFile(tmp / "s1" / "M3" / "moments.bin", tmp / "s2" / "M3" / "moments.bin");

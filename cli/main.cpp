@@ -8,6 +8,9 @@
 #include <cstdio>
 #include <string>
 #include <vector>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "cli/commands.hpp"
 #include "dtwin/version.hpp"
@@ -118,6 +121,13 @@ int runTwin(int argc, char** argv, std::string& error) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#if defined(__GLIBC__)
+  // Every run allocates its output trace (about 5 MB for 15 s at 1 kHz) and frees it. glibc would
+  // hand freed memory back to the system and fault it in again on the next run (about 10 % of a
+  // run's time, docs/performance.md "One run"): keep up to 256 MB of freed memory for reuse.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
   Distributed& dist = Distributed::instance();
   dist.init(&argc, &argv);  // MPI when started by mpirun; otherwise one process
   std::string error;

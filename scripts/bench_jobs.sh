@@ -6,7 +6,8 @@
 #
 #   bash scripts/bench_jobs.sh                 # every row but the paper-scale study
 #   bash scripts/bench_jobs.sh readme drive_calibrate   # only these rows
-#   bash scripts/bench_jobs.sh paper           # the paper-scale study (hours: run it alone)
+#   bash scripts/bench_jobs.sh paper           # the paper-scale study (about 1.5 h: run it alone;
+#                                              # resumable: rerun to continue, delete its folder to start over)
 #
 # Rows: readme (the README's diagnose walkthrough), drive_calibrate (`twin calibrate` of M1 on the
 # demonstration drive), drive_vehicle (the same with the chassis mass and pitch inertia and the
@@ -20,7 +21,13 @@
 # two-minute window at 110 Hz of the same car, calibrated with the structure the diagnosis found:
 # the hub input and a skyhook), passive_car (the same walk's diagnosis on a car without a
 # controller, whose road signal is the road under its tires: the verdict must be "none"),
-# demo_study (scripts/demo.sh's study), run (one 15 s run per assembly: `twin bench`), paper.
+# demo_study (scripts/demo.sh's study), fresh_demo (scripts/demo.sh on a fresh clone of HEAD with an
+# empty Simbody cache: the newcomer's first run, the Release Simbody build included), run (one 15 s
+# run per assembly: `twin bench`), hand_ode (`twin bench --hand-ode`: one run against a hand-written
+# ODE), accumulation (`twin bench --accumulation` on the paper's sizes: the synthesis's measured
+# costs and its modelled wall time on 1 to 256 ranks), mpi_synthesis (one synthesis of the demo
+# study's M1, one process of two threads against `mpirun -n 2`, bit-identical moments; needs the
+# demo_study row's calibration), paper.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B="$PWD/build/cli/twin"
@@ -30,8 +37,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | passive_car | long_window | demo_study | run | paper) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car passive_car long_window demo_study run paper)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | passive_car | long_window | demo_study | fresh_demo | run | hand_ode | accumulation | mpi_synthesis | paper) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car passive_car long_window demo_study fresh_demo run hand_ode accumulation mpi_synthesis paper)" >&2; exit 2 ;;
   esac
 done
 
@@ -155,9 +162,33 @@ for r in "${rows[@]}"; do
       rm -rf "$D/demo_study"
       timed demo_study "$D/demo_study.log" "$B" study data/studies/demo.toml --out "$D/demo_study" --quiet
       ;;
+    fresh_demo)
+      rm -rf "$D/fresh_demo" "$D/fresh_cache"
+      git clone -q . "$D/fresh_demo"
+      timed fresh_demo "$D/fresh_demo.log" env DTWIN_CACHE_DIR="$D/fresh_cache" bash "$D/fresh_demo/scripts/demo.sh"
+      ;;
+    hand_ode)
+      "$B" bench --hand-ode --runs 30 >"$D/hand_ode.txt" 2>&1
+      secs[hand_ode]=0
+      ;;
+    accumulation)
+      "$B" bench --accumulation --study data/studies/paper.toml --runs 9 >"$D/accumulation.txt" 2>&1
+      secs[accumulation]=0
+      ;;
+    mpi_synthesis)
+      [[ -f "$D/demo_study/calibration/M1/posterior.csv" ]] || { echo "bench_jobs.sh: mpi_synthesis needs the demo_study row first" >&2; exit 2; }
+      command -v mpirun >/dev/null || { echo "bench_jobs.sh: mpi_synthesis needs mpirun (openmpi-bin)" >&2; exit 2; }
+      rm -rf "$D/mpi_synthesis"
+      S=(synthesize --study data/studies/demo.toml --calibration "$D/demo_study/calibration" --assembly M1 --draws 400 --quiet)
+      timed mpi_synthesis_threads "$D/mpi_synthesis_threads.log" "$B" "${S[@]}" --threads 2 --out "$D/mpi_synthesis/threads"
+      timed mpi_synthesis "$D/mpi_synthesis.log" mpirun --allow-run-as-root --oversubscribe -n 2 "$B" "${S[@]}" --threads 1 \
+        --out "$D/mpi_synthesis/ranks"
+      cmp "$D/mpi_synthesis/threads/M1/moments.bin" "$D/mpi_synthesis/ranks/M1/moments.bin" >&2 ||
+        { echo "bench_jobs.sh: mpi_synthesis: the moments differ between threads and ranks" >&2; exit 1; }
+      ;;
     paper)
-      rm -rf "$D/paper"
-      timed paper "$D/paper.log" "$B" study data/studies/paper.toml --out "$D/paper" --quiet
+      # Resumable: a rerun continues the study in $D/paper; the time is this sitting's.
+      timed paper "$D/paper.log" "$B" study data/studies/paper.toml --out "$D/paper"
       ;;
   esac
 done
@@ -167,6 +198,9 @@ echo "|---|---|---|"
 for r in "${rows[@]}"; do
   case "$r" in
     run) echo "| one 15 s run per assembly (\`twin bench --runs 3\`) | see $D/run.md | $D/run.md |" ;;
+    hand_ode | accumulation) echo "| $r | see $D/$r.txt | $D/$r.txt |" ;;
+    mpi_synthesis) printf '| mpi_synthesis: 1 process x 2 threads / mpirun -n 2 x 1 thread | %.0f / %.0f | %s |\n' \
+      "${secs[mpi_synthesis_threads]}" "${secs[mpi_synthesis]}" "$D/mpi_synthesis" ;;
     *) printf '| %s | %.0f | %s |\n' "$r" "${secs[$r]}" "$D/$r" ;;
   esac
 done

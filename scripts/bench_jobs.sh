@@ -27,7 +27,9 @@
 # ODE), accumulation (`twin bench --accumulation` on the paper's sizes: the synthesis's measured
 # costs and its modelled wall time on 1 to 256 ranks), mpi_synthesis (one synthesis of the demo
 # study's M1, one process of two threads against `mpirun -n 2`, bit-identical moments; needs the
-# demo_study row's calibration), paper.
+# demo_study row's calibration), paper, paper_draws (how the paper study's decision depends on the
+# number of synthetic draws: its calibrations and field records, synthesized again with 100, 300
+# and 1000 draws under several seeds and classified; needs the paper row, or PAPER_DIR).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B="$PWD/build/cli/twin"
@@ -37,8 +39,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | passive_car | long_window | demo_study | fresh_demo | run | hand_ode | accumulation | mpi_synthesis | paper) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car passive_car long_window demo_study fresh_demo run hand_ode accumulation mpi_synthesis paper)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | passive_car | long_window | demo_study | fresh_demo | run | hand_ode | accumulation | mpi_synthesis | paper | paper_draws) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car passive_car long_window demo_study fresh_demo run hand_ode accumulation mpi_synthesis paper paper_draws)" >&2; exit 2 ;;
   esac
 done
 
@@ -185,6 +187,22 @@ for r in "${rows[@]}"; do
         --out "$D/mpi_synthesis/ranks"
       cmp "$D/mpi_synthesis/threads/M1/moments.bin" "$D/mpi_synthesis/ranks/M1/moments.bin" >&2 ||
         { echo "bench_jobs.sh: mpi_synthesis: the moments differ between threads and ranks" >&2; exit 1; }
+      ;;
+    paper_draws)
+      P="${PAPER_DIR:-$D/paper}"
+      [[ -f "$P/summary.json" ]] || { echo "bench_jobs.sh: paper_draws needs a finished paper study in $P (the paper row, or PAPER_DIR)" >&2; exit 2; }
+      mkdir -p "$D/paper_draws"
+      t0=$(date +%s)
+      for run in 100:1 100:2 100:3 300:1 300:2 300:3 1000:1; do
+        n=${run%%:*} seed=${run##*:} out="$D/paper_draws/d${run%%:*}_s${run##*:}"
+        "$B" synthesize --study data/studies/paper.toml --calibration "$P/calibration" --draws "$n" --seed "$seed" \
+          --out "$out/synthetic" --quiet
+        "$B" classify --study data/studies/paper.toml --field "$P/field/field.csv" --synthetic "$out/synthetic" \
+          --out "$out/classification" --quiet
+        python3 -c "import json,sys; j=json.load(open(sys.argv[1])); print(sys.argv[2], 'draws, seed', sys.argv[3], ':', 'wins', j['wins'], 'recommended', j['recommended'])" \
+          "$out/classification/summary.json" "$n" "$seed" | tee -a "$D/paper_draws/table.txt" >&2
+      done
+      secs[paper_draws]=$(( $(date +%s) - t0 ))
       ;;
     paper)
       # Resumable: a rerun continues the study in $D/paper; the time is this sitting's.

@@ -10,9 +10,17 @@ namespace dtwin::classify {
 namespace {
 constexpr const char* kTreeWhere = "moment tree";
 
-/// True when `right` is the right sibling of `left`.
-bool siblings(const TreeNode& left, const TreeNode& right) {
-  return left.level == right.level && left.index % 2 == 0 && right.index == left.index + 1;
+/// True when node (right_level, right_index) is the right sibling of (left_level, left_index).
+bool siblings(int left_level, long left_index, int right_level, long right_index) {
+  return left_level == right_level && left_index % 2 == 0 && right_index == left_index + 1;
+}
+bool siblings(const TreeNode& left, const TreeNode& right) { return siblings(left.level, left.index, right.level, right.index); }
+
+/// True when node (level, index) of an n-leaf tree is its own parent: a left child whose right
+/// sibling would start at or after leaf n (and not the root).
+bool promotable(int level, long index, long n) {
+  const bool is_root = index == 0 && (1L << level) >= n;
+  return !is_root && index % 2 == 0 && ((index + 1) << level) >= n;
 }
 
 /// Leaves [first, end) of node (level, index) in a tree of n leaves.
@@ -43,8 +51,7 @@ void MomentTree::push(TreeNode node) {
       left.index /= 2;
       continue;
     }
-    const bool is_root = last.index == 0 && (1L << last.level) >= n_;
-    if (!is_root && last.index % 2 == 0 && ((last.index + 1) << last.level) >= n_) {
+    if (promotable(last.level, last.index, n_)) {
       last.level += 1;  // the right sibling is empty: the parent is this node
       last.index /= 2;
       continue;
@@ -82,6 +89,24 @@ MomentAccumulator MomentTree::takeRoot() {
   return std::move(nodes_.front().acc);
 }
 
+long MomentTree::nodeCount(long leaves, long first, long end) {
+  std::vector<std::pair<int, long>> nodes;  // (level, index): push() without the accumulators
+  for (long leaf = first; leaf < end; ++leaf) {
+    nodes.emplace_back(0, leaf);
+    for (;;) {
+      auto& last = nodes.back();
+      if (nodes.size() >= 2 && siblings(nodes[nodes.size() - 2].first, nodes[nodes.size() - 2].second, last.first, last.second)) {
+        nodes.pop_back();
+      } else if (!promotable(last.first, last.second, leaves)) {
+        break;
+      }
+      nodes.back().first += 1;
+      nodes.back().second /= 2;
+    }
+  }
+  return static_cast<long>(nodes.size());
+}
+
 MomentTree MomentTree::fromNodes(long leaves, long first, std::vector<TreeNode> nodes, const std::string& where) {
   MomentTree t(leaves, first);
   for (auto& node : nodes) {
@@ -94,9 +119,7 @@ MomentTree MomentTree::fromNodes(long leaves, long first, std::vector<TreeNode> 
   // Canonical: no two neighbours are siblings and no node could be promoted.
   for (std::size_t i = 0; i < t.nodes_.size(); ++i) {
     const TreeNode& node = t.nodes_[i];
-    const bool is_root = node.index == 0 && (1L << node.level) >= leaves;
-    if ((i + 1 < t.nodes_.size() && siblings(node, t.nodes_[i + 1])) ||
-        (!is_root && node.index % 2 == 0 && ((node.index + 1) << node.level) >= leaves))
+    if ((i + 1 < t.nodes_.size() && siblings(node, t.nodes_[i + 1])) || promotable(node.level, node.index, leaves))
       throw InputError(where, "node (" + std::to_string(node.level) + ", " + std::to_string(node.index) +
                                   ") should have been merged with its sibling");
   }

@@ -57,6 +57,9 @@ class MomentTree {
   MomentAccumulator takeRoot();
 
   const std::vector<TreeNode>& nodes() const { return nodes_; }
+  /// Number of nodes in the canonical list of leaves [first, end) of a `leaves`-leaf tree (the
+  /// same rules as pushLeaf, without accumulators: for cost models).
+  static long nodeCount(long leaves, long first, long end);
   /// Rebuilds a range from its nodes (for a checkpoint): they must be the canonical list of
   /// [first, end) (InputError naming `where` otherwise).
   static MomentTree fromNodes(long leaves, long first, std::vector<TreeNode> nodes, const std::string& where);

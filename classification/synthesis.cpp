@@ -367,16 +367,18 @@ class LeafSink {
           if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(plan_.p));
       leaf_.addBlock(X);
     }
-    for (auto& d : blk.draws) {
-      failures.insert(failures.end(), d.failures.begin(), d.failures.end());
-      costs.insert(costs.end(), d.cost.begin(), d.cost.end());
-      run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
-    }
+    for (const auto& d : blk.draws) addRecords(d);
     ++next_block;
     if (atLeafBoundary()) {
       tree_.pushLeaf(std::move(leaf_));
       leaf_ = MomentAccumulator(static_cast<int>(plan_.p), mo_);
     }
+  }
+  /// Appends a draw's (or a rank's) failures and run costs, in draw order.
+  void addRecords(const DrawOutput& d) {
+    failures.insert(failures.end(), d.failures.begin(), d.failures.end());
+    costs.insert(costs.end(), d.cost.begin(), d.cost.end());
+    run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
   }
   const MomentOptions& moments() const { return mo_; }
   /// True when every block added so far is in a leaf of the tree.
@@ -629,12 +631,7 @@ void reduceOnRanks(const SynthesisPlan& plan, int threads, int ranks, const Draw
       red.tree.append(std::move(part));
     }
     red.combine_s += secondsSince(t_combine);
-    for (const auto& p : packed) {
-      const DrawOutput d = unpackDraw(p);
-      red.sink.failures.insert(red.sink.failures.end(), d.failures.begin(), d.failures.end());
-      red.sink.costs.insert(red.sink.costs.end(), d.cost.begin(), d.cost.end());
-      red.sink.run_walls.insert(red.sink.run_walls.end(), d.run_wall.begin(), d.run_wall.end());
-    }
+    for (const auto& p : packed) red.sink.addRecords(unpackDraw(p));
     red.sink.next_block = std::min(plan.blocks(), L1 * plan.LB);
     if (!D.isRoot()) red.tree = MomentTree(n_leaves, L1);  // the root holds [0, L1)
     onRoot([&]() -> std::string {

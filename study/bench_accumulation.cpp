@@ -27,33 +27,6 @@ double accMedian(std::vector<double> v) {
 long accCeilDiv(long a, long b) { return (a + b - 1) / b; }
 }  // namespace
 
-long canonicalNodeCount(long n, long first, long end) {
-  std::vector<std::pair<int, long>> nodes;  // (level, index), as MomentTree::push
-  for (long leaf = first; leaf < end; ++leaf) {
-    nodes.emplace_back(0, leaf);
-    for (;;) {
-      auto& last = nodes.back();
-      if (nodes.size() >= 2) {
-        const auto& left = nodes[nodes.size() - 2];
-        if (left.first == last.first && left.second % 2 == 0 && last.second == left.second + 1) {
-          nodes.pop_back();
-          nodes.back().first += 1;
-          nodes.back().second /= 2;
-          continue;
-        }
-      }
-      const bool is_root = last.second == 0 && (1L << last.first) >= n;
-      if (!is_root && last.second % 2 == 0 && ((last.second + 1) << last.first) >= n) {
-        last.first += 1;
-        last.second /= 2;
-        continue;
-      }
-      break;
-    }
-  }
-  return static_cast<long>(nodes.size());
-}
-
 ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
   DTWIN_CHECK(ranks >= 1 && c.leaves >= 1, "modelSynthesisWall: ranks and leaves >= 1");
   const long leaf_draws = c.leaf_blocks * c.block, n = c.leaves;
@@ -81,7 +54,7 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
       for (long r = 0; r < ranks; ++r) {
         double t = 0;
         for (long l = lo(r); l < hi(r); ++l) t += leafTime(l);
-        t += static_cast<double>((hi(r) - lo(r)) - canonicalNodeCount(n, lo(r), hi(r))) * c.merge_s;
+        t += static_cast<double>((hi(r) - lo(r)) - MomentTree::nodeCount(n, lo(r), hi(r))) * c.merge_s;
         compute = std::max(compute, t);
       }
       // The binomial combination: at step s rank r receives the part of ranks r+s .. r+2s−1.
@@ -90,14 +63,14 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
         double step = 0;
         for (long r = 0; r + s < ranks; r += 2 * s) {
           const long from = lo(r + s), to = hi(std::min<long>(ranks - 1, r + 2 * s - 1));
-          const long m = canonicalNodeCount(n, from, to);
-          const long before = canonicalNodeCount(n, lo(r), from), after = canonicalNodeCount(n, lo(r), to);
+          const long m = MomentTree::nodeCount(n, from, to);
+          const long before = MomentTree::nodeCount(n, lo(r), from), after = MomentTree::nodeCount(n, lo(r), to);
           step = std::max(step, static_cast<double>(m) * node_s + static_cast<double>(before + m - after) * c.merge_s);
         }
         combine += step;
       }
       // The root appends the round to its list, and saves the new nodes when a checkpoint is due (30 s).
-      const long before = canonicalNodeCount(n, 0, L0), part = canonicalNodeCount(n, L0, L1), after = canonicalNodeCount(n, 0, L1);
+      const long before = MomentTree::nodeCount(n, 0, L0), part = MomentTree::nodeCount(n, L0, L1), after = MomentTree::nodeCount(n, 0, L1);
       combine += static_cast<double>(before + part - after) * c.merge_s;
       since_ckpt += compute + combine;
       if (since_ckpt >= 30.0 && L1 < n) {

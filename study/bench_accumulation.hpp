@@ -35,9 +35,6 @@ struct ScalingRow {
 /// with one thread), round by round as classification/synthesis.cpp schedules it.
 ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks);
 
-/// Number of nodes in the canonical list of leaves [first, end) of an n-leaf tree (MomentTree).
-long canonicalNodeCount(long n, long first, long end);
-
 struct AccumulationBench {
   std::string assembly, label;
   AccumulationCosts costs;

@@ -19,7 +19,7 @@ TEST(AccumulationModel, NodeCountsAreTheTreesOwn) {
           leaf.add(Eigen::VectorXd::Constant(1, static_cast<double>(i)));
           t.pushLeaf(std::move(leaf));
         }
-        ASSERT_EQ(canonicalNodeCount(n, a, b), static_cast<long>(t.nodes().size())) << n << " leaves, [" << a << ", " << b << ")";
+        ASSERT_EQ(classify::MomentTree::nodeCount(n, a, b), static_cast<long>(t.nodes().size())) << n << " leaves, [" << a << ", " << b << ")";
       }
 }
 

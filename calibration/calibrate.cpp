@@ -22,8 +22,8 @@
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
-#include "twin/distributed.hpp"
-#include "twin/parallel.hpp"
+#include "common/distributed.hpp"
+#include "common/parallel.hpp"
 #include "io/provenance.hpp"
 
 namespace fs = std::filesystem;

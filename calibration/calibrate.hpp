@@ -219,6 +219,7 @@ class LabObjective {
 /// a study's are taken by fromStudy.
 struct CalibrationOptions {
   int threads = 0;  ///< >= 0; 0: all cores
+  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   int optimizer_starts = kDefaultOptimizerStarts;  ///< >= 1
   int lhs_points = kDefaultLhsPoints;              ///< the first Latin hypercube, >= 2
   int gibbs_iterations = kDefaultGibbsIterations;  ///< >= 1, burn-in included

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "twin/parallel.hpp"
+#include "common/parallel.hpp"
 
 namespace dtwin::calib {
 

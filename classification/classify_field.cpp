@@ -16,7 +16,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/validate.hpp"
-#include "twin/parallel.hpp"
+#include "common/parallel.hpp"
 #include "io/provenance.hpp"
 #include "twin/trace.hpp"
 

@@ -21,8 +21,8 @@
 #include "common/statistics.hpp"
 #include "common/validate.hpp"
 #include "subsystems/random.hpp"
-#include "twin/distributed.hpp"
-#include "twin/parallel.hpp"
+#include "common/distributed.hpp"
+#include "common/parallel.hpp"
 #include "io/provenance.hpp"
 #include "twin/simulator.hpp"
 

@@ -60,7 +60,7 @@
 
 #include "calibration/folder.hpp"
 #include "classification/moments.hpp"
-#include "io/generate.hpp"
+#include "common/progress.hpp"
 #include "io/study.hpp"
 
 namespace dtwin::classify {
@@ -85,6 +85,7 @@ struct SynthesisOptions {
   long block = 16;          ///< B draws per block (changes the numbers at the rounding level)
   long leaf_blocks = 2;     ///< blocks per leaf of the accumulation tree (changes the numbers at the rounding level)
   int threads = 0;          ///< <= 0: all cores (never changes the numbers)
+  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   std::optional<std::uint64_t> seed;  ///< default: the study's seed
   std::string scenario = "field";
   std::string channel = "hub_force_fl_N";

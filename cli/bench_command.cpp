@@ -8,7 +8,7 @@
 #include "common/errors.hpp"
 #include "study/bench.hpp"
 #include "study/bench_accumulation.hpp"
-#include "twin/hand_ode.hpp"
+#include "study/hand_ode.hpp"
 #include "io/provenance.hpp"
 #include "twin/simulator.hpp"
 #include "io/study.hpp"

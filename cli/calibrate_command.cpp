@@ -28,6 +28,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   calib::CalibrationOptions& opt = req.options;
   opt = calib::CalibrationOptions::fromStudy(study);
   opt.threads = cfg.threads;
+  opt.processes = commandProcesses();
   if (cfg.lhs_points > 0) opt.lhs_points = static_cast<int>(cfg.lhs_points);
   if (cfg.iterations > 0) opt.gibbs_iterations = static_cast<int>(cfg.iterations);
   if (cfg.burn_in >= 0) opt.gibbs_burn_in = static_cast<int>(cfg.burn_in);

@@ -11,6 +11,8 @@
 
 #include "common/registry.hpp"
 #include "io/study.hpp"
+#include "io/work.hpp"
+#include "common/distributed.hpp"
 
 namespace dtwin::cli {
 
@@ -49,19 +51,15 @@ std::string joinArgs(int argc, char** argv);
 CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, const std::string& help);
 /// The `--force` flag of the commands that run many simulations (io/work.hpp).
 void addForceOption(CLI::App* app, bool& force);
-/// A command-line size override (`--runs`, `--lhs-points`, ...; <= 0: not given) into
-/// study.sizes.<field>, checked against that size's limit; InputError naming `flag`.
-void overrideSize(Study& study, const std::string& field, long value, const std::string& flag);
-/// Refuses with an InputError naming the study file when the estimated work of the study's
-/// `stages` (prefixes: "lab", "field", "calibrate", "calibrate M1", "synthesize", ...), times
-/// `repeat`, exceeds the limits of io/work.hpp, unless `force`.
-void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat = 1);
 /// True when stderr is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
 /// Progress is shown unless --quiet, and only by the root rank under MPI (cli/progress.hpp).
 bool progressOn(bool quiet);
 /// True on the rank that prints and writes (always, without MPI).
 bool isRootRank();
+/// The process context main() created (common/distributed.hpp).
+const Distributed* commandProcesses();
+void setCommandProcesses(const Distributed* processes);
 
 CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line);
 CommandHandle addListCommand(CLI::App& root, const std::string& command_line);

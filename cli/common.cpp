@@ -6,7 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 #include "io/work.hpp"
 
 namespace fs = std::filesystem;
@@ -34,23 +34,6 @@ void addForceOption(CLI::App* app, bool& force) {
                 "Run even when the estimated work exceeds the limits (docs/study-file.md, Limits); the sizes' own limits still hold");
 }
 
-void overrideSize(Study& study, const std::string& field, long value, const std::string& flag) {
-  if (value <= 0) return;  // not given
-  const long most = StudySizes::maximum(field);
-  if (value > most)
-    throw InputError(flag, "must be at most " + std::to_string(most) + " (the limit of sizes." + field + "), got " + std::to_string(value));
-  study.sizes.at(field) = value;
-}
-
-void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat) {
-  auto work = selectStages(estimateStudyWork(study), stages);
-  for (auto& w : work) {
-    w.simulations *= repeat;
-    w.simulated_s *= repeat;
-  }
-  checkWork(work, study.path, force);
-}
-
 std::string defaultStudy() {
   for (const char* dir : {DTWIN_SOURCE_DATA_DIR, DTWIN_INSTALL_DATA_DIR}) {
     const fs::path p = fs::path(dir) / "studies" / "demo.toml";
@@ -67,7 +50,12 @@ std::string joinArgs(int argc, char** argv) {
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
 
-bool isRootRank() { return Distributed::instance().isRoot(); }
+namespace {
+const Distributed* g_processes = nullptr;
+}  // namespace
+const Distributed* commandProcesses() { return g_processes; }
+void setCommandProcesses(const Distributed* processes) { g_processes = processes; }
+bool isRootRank() { return isRootProcess(g_processes); }
 
 bool progressOn(bool quiet) { return !quiet && isRootRank(); }
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "calibration/coverage.hpp"
+#include "study/coverage.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
@@ -46,6 +46,7 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   o.command = command;
   o.calibration = calib::CalibrationOptions::fromStudy(study);
   o.calibration.threads = cfg.threads;
+  o.calibration.processes = commandProcesses();
   if (cfg.lhs_points > 0) o.calibration.lhs_points = static_cast<int>(cfg.lhs_points);
   if (cfg.iterations > 0) o.calibration.gibbs_iterations = static_cast<int>(cfg.iterations);
   if (cfg.burn_in >= 0) o.calibration.gibbs_burn_in = static_cast<int>(cfg.burn_in);

@@ -12,7 +12,7 @@
 #include "common/files.hpp"  // writeFileAtomic
 #include "report/compare_page.hpp"
 #include "report/diagnosis_report.hpp"
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 #include "study/diagnose.hpp"
 
 namespace fs = std::filesystem;
@@ -37,6 +37,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   req.out = cfg.out;
   req.draws = cfg.draws;
   req.threads = cfg.threads;
+  req.processes = commandProcesses();
   req.force = cfg.force;
   req.command = command;
   const auto say = [&](const std::string& line) {
@@ -51,7 +52,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
     for (const auto& d : cfg.data) title += " " + std::filesystem::path(d).filename().string();
     const std::string page = (std::filesystem::path(run.written).parent_path() / "compare.html").string();
     const std::string html = comparePage(run.comparison.toJson(true), title);
-    rootWrites([&] { writeFileAtomic(page, html); });
+    rootWrites(commandProcesses(), [&] { writeFileAtomic(page, html); });
     say("wrote " + page + " (zoom into the drive, the failing windows listed beside it)");
   }
   return 0;
@@ -120,6 +121,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   o.effects = splitCommas(cfg.effects);
   o.apply = splitCommas(cfg.apply);  // a .toml item (a proposal.toml) adds its [user_effects]
   o.threads = cfg.threads;
+  o.processes = commandProcesses();
   o.command = command;
   ProgressBar bar("diagnose", progressOn(cfg.quiet), stderrIsTerminal());
   std::string current;

@@ -1,5 +1,5 @@
 // `twin generate lab|field`: synthetic measurements made by one assembly at the study's true
-// parameters, plus noise. Thin: parse, validate, call io/generate.hpp, write atomically.
+// parameters, plus noise. Thin: parse, call study/generate.hpp, print.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -12,8 +12,8 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
-#include "twin/distributed.hpp"
-#include "io/generate.hpp"
+#include "common/distributed.hpp"
+#include "study/generate.hpp"
 #include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -45,19 +45,6 @@ AssemblySpec chooseAssembly(const Study& study, const std::string& id) {
   const auto all = study.assemblies();
   if (all.empty()) throw InputError(study.path + ": assemblies", "the study defines no assembly");
   return all.front();  // M1: the highest fidelity by convention (docs/method.md §1)
-}
-
-/// Rejects an --out that is not a .csv file or whose folder cannot be made or written, before any run.
-void checkOut(const std::string& out) {
-  const fs::path p(out);
-  if (p.extension() != ".csv") throw InputError("--out", "must name a .csv file, got '" + out + "'");
-  // The folder is made only when the data are written (writeFileAtomic); here its nearest existing
-  // ancestor must be a folder we may write into, so that no run is wasted and nothing is created.
-  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  while (!fs::exists(dir) && dir.has_parent_path() && dir.parent_path() != dir) dir = dir.parent_path();
-  if (!fs::exists(dir)) dir = ".";
-  if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)
-    throw InputError("--out", "cannot write into folder '" + dir.string() + "'");
 }
 
 std::vector<EffectSetting> parseHidden(const std::vector<std::string>& texts, const EffectCatalog& catalog) {
@@ -94,7 +81,6 @@ void printHidden(const nlohmann::json& provenance, const EffectCatalog& catalog)
 }
 
 int runLab(const GenerateConfig& cfg, const std::string& command) {
-  rootWrites([&] { checkOut(cfg.out); });
   const Study study = loadStudy(cfg.study);
   const AssemblySpec a = chooseAssembly(study, cfg.assembly);
   LabOptions opt;
@@ -109,6 +95,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   }
   if (cfg.rate_opt && cfg.rate_opt->count()) opt.rate_hz = cfg.rate;
   opt.channels = cfg.channels;
+  opt.processes = commandProcesses();
   opt.repetitions = cfg.repetitions;
   {
     Study sized = study;
@@ -120,12 +107,8 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   LabResult r;
   {
     ProgressBar bar("generate lab", progressOn(cfg.quiet), stderrIsTerminal());
-    r = generateLab(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
+    r = generateLabFile(study, a, opt, cfg.out, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
-  rootWrites([&] {
-    writeLabCsv(cfg.out, r.data, measurableChannels(study.sensors));
-    writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
-  });
   if (!cfg.quiet) {
     for (const auto& c : r.provenance["noise"]["not_applied_to"])
       std::fprintf(stderr, "twin: note: channel %s is not in N; it is written without noise\n", c.get<std::string>().c_str());
@@ -145,7 +128,6 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
 }
 
 int runField(const GenerateConfig& cfg, const std::string& command) {
-  rootWrites([&] { checkOut(cfg.out); });
   const Study study = loadStudy(cfg.study);
   const AssemblySpec a = chooseAssembly(study, cfg.assembly);
   FieldOptions opt;
@@ -164,17 +146,14 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
     checkCommandWork(sized, {"field"}, cfg.force);
   }
   opt.threads = cfg.threads;
+  opt.processes = commandProcesses();
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.command = command;
   FieldResult r;
   {
     ProgressBar bar("generate field", progressOn(cfg.quiet), stderrIsTerminal());
-    r = generateField(study, a, opt, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
+    r = generateFieldFile(study, a, opt, cfg.out, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
-  rootWrites([&] {
-    writeFieldCsv(cfg.out, r.data);
-    writeFileAtomic(sidecarPath(cfg.out), r.provenance.dump(2) + "\n");
-  });
   if (!cfg.quiet && !r.provenance["noise"]["applied"].get<bool>())
     std::fprintf(stderr, "twin: note: channel %s is not in N; it is written without noise\n", opt.channel.c_str());
   if (!cfg.quiet)
@@ -245,7 +224,7 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
 
   CommandHandle h;
   h.app = g;
-  h.field_flags = {{"channels", "--channels"}, {"window", "--window"}, {"rate_hz", "--rate"}, {"hidden_effects", "--hidden-effect"},
+  h.field_flags = {{"out", "--out"}, {"channels", "--channels"}, {"window", "--window"}, {"rate_hz", "--rate"}, {"hidden_effects", "--hidden-effect"},
                    {"hidden_values", "--hidden-value"}, {"hidden_sensor", "--hidden-sensor"}};
   h.run = [=]() -> int {
     try {

@@ -17,7 +17,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/names.hpp"
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 
 using namespace dtwin;
 using namespace dtwin::cli;
@@ -97,7 +97,7 @@ int runTwin(int argc, char** argv, std::string& error) {
   }
   // Under MPI (mpirun -n K twin ...) the commands that simulate in bulk run on every rank and
   // spread their simulations (twin/distributed.hpp); the others run on the root alone.
-  const Distributed& dist = Distributed::instance();
+  const Distributed& dist = *commandProcesses();
   const CommandHandle* chosen = nullptr;
   try {
     for (std::size_t i = 0; i < commands.size(); ++i) {
@@ -128,8 +128,9 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
-  Distributed& dist = Distributed::instance();
+  Distributed dist;
   dist.init(&argc, &argv);  // MPI when started by mpirun; otherwise one process
+  dtwin::cli::setCommandProcesses(&dist);
   std::string error;
   const int rc = runTwin(argc, argv, error);
   return dist.finish(rc, error);

@@ -25,6 +25,7 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command) {
   checkCommandWork(study, stages, cfg.force);
   study::StudyRunOptions o;
   o.threads = cfg.threads;
+  o.processes = commandProcesses();
   o.lab_file = cfg.lab;
   o.field_file = cfg.field;
   o.command = command;

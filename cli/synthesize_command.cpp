@@ -1,16 +1,16 @@
 // `twin synthesize`: synthetic field data of calibrated assemblies (posterior draws on library
-// roads, plus noise), accumulated as streaming moments (classification/synthesis.hpp).
+// roads, plus noise), accumulated as streaming moments. Parses, calls study/synthesize.hpp, prints.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
-#include "classification/synthesis.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 #include "io/provenance.hpp"
 #include "io/study.hpp"
+#include "study/synthesize.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,36 +28,19 @@ struct SynthesizeConfig {
 
 int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
-  study.scenario(cfg.scenario);  // validates the name
-  std::vector<AssemblySpec> targets;
-  if (cfg.assembly == "all") targets = study.assemblies();
-  else targets.push_back(study.assembly(cfg.assembly));
-  if (!fs::is_directory(cfg.calibration)) throw InputError(cfg.calibration, "calibration folder not found (--calibration)");
-  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
-  {
-    Study sized = study;
-    overrideSize(sized, "posterior_draws", cfg.draws, "--draws");
-    overrideSize(sized, "roads_per_draw", cfg.roads, "--roads");
-    overrideSize(sized, "road_library", cfg.library, "--library");
-    std::vector<std::string> stages;
-    for (const auto& a : targets) stages.push_back("synthesize " + a.id);
-    checkCommandWork(sized, stages, cfg.force);
-  }
-  // Read every posterior first: a missing or malformed one stops before any simulation.
-  std::vector<calib::PosteriorSample> posteriors;
-  for (const auto& a : targets) {
-    const std::string p = (fs::path(cfg.calibration) / a.id / "posterior.csv").string();
-    if (!fs::exists(p))
-      throw InputError(p, "not found: calibrate assembly " + a.id + " first (twin calibrate --assembly " + a.id + ")");
-    posteriors.push_back(calib::readPosteriorCsv(p));
-  }
-  classify::SynthesisOptions opt;
+  SynthesizeRequest req;
+  req.calibration = cfg.calibration;
+  req.assembly = cfg.assembly;
+  req.out = cfg.out;
+  req.force = cfg.force;
+  classify::SynthesisOptions& opt = req.options;
   opt.draws = cfg.draws;
   opt.roads_per_draw = cfg.roads;
   opt.road_library = cfg.library;
   opt.block = cfg.block;
   opt.leaf_blocks = cfg.leaf_blocks;
   opt.threads = cfg.threads;
+  opt.processes = commandProcesses();
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.scenario = cfg.scenario;
   opt.channel = cfg.channel;
@@ -71,39 +54,22 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   opt.command = command;
 
   const bool bar_on = progressOn(cfg.quiet);
-  nlohmann::json index;
-  index["program"] = programInfo();
-  index["command"] = command;
-  index["created_utc"] = utcNow();
-  index["study"] = study.path;
-  index["calibration"] = cfg.calibration;
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    const auto& a = targets[i];
-    const std::string dir = (fs::path(cfg.out) / a.id).string();
-    classify::SynthesisResult r;
-    {
-      ProgressBar bar(a.id + " synthesize", bar_on, stderrIsTerminal());
-      r = classify::synthesizeAssembly(study, a, posteriors[i], opt, dir,
-                                       [&](std::size_t done, std::size_t total) { bar.update(done, total); });
-    }
-    index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"synthesis", (fs::path(a.id) / "synthesis.json").string()},
-                                   {"moments", (fs::path(a.id) / "moments.bin").string()}});
-    if (!cfg.quiet) {
-      const auto& j = r.info;
-      std::printf("%-4s %-24s %ld draws x %ld roads (library %ld) -> %lld vectors of %zu samples (%s %g..%g s), failures %ld, "
-                  "cost %.4g s/s (median run %.3f s), %s%.1f s -> %s\n",
-                  a.id.c_str(), a.label().c_str(), r.draws, r.roads_per_draw, r.road_library, static_cast<long long>(r.moments.count()),
-                  r.times_s.size(), j["channel"].get<std::string>().c_str(), r.times_s.front(), r.times_s.back(), r.failures,
-                  r.cost_s_per_s, r.median_run_wall_s,
-                  r.reused ? "reused finished files, " : (r.resumed_blocks ? ("resumed at block " + std::to_string(r.resumed_blocks) + ", ").c_str() : ""),
-                  r.wall_s, (fs::path(dir) / "moments.bin").string().c_str());
-      for (std::size_t k = 0; k < r.failure_list.size() && k < 5; ++k)
-        std::printf("       failed: draw %ld road %ld (library road %ld, seed %llu): %s\n", r.failure_list[k].draw, r.failure_list[k].road,
-                    r.failure_list[k].library_index, static_cast<unsigned long long>(r.failure_list[k].road_seed),
-                    r.failure_list[k].message.c_str());
-    }
-  }
-  rootWrites([&] { writeFileAtomic((fs::path(cfg.out) / "synthesize.json").string(), index.dump(2) + "\n"); });
+  std::unique_ptr<ProgressBar> bar;  // one per assembly, as it starts
+  std::string stage;
+  synthesizeAssemblies(
+      study, req,
+      [&](const std::string& s, std::size_t done, std::size_t total) {
+        if (!bar || s != stage) {
+          bar.reset();
+          stage = s;
+          bar = std::make_unique<ProgressBar>(s, bar_on, stderrIsTerminal());
+        }
+        bar->update(done, total);
+      },
+      [&](const SynthesizeRun& run) {
+        bar.reset();
+        if (!cfg.quiet) std::fputs(run.text().c_str(), stdout);
+      });
   return 0;
 }
 

@@ -13,7 +13,7 @@
 #include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/validate.hpp"
-#include "twin/parallel.hpp"
+#include "common/parallel.hpp"
 
 namespace dtwin::diag {
 namespace {

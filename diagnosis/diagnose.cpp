@@ -16,7 +16,7 @@
 #include "common/validate.hpp"
 #include "diagnosis/candidates.hpp"
 #include "subsystems/effect.hpp"
-#include "twin/parallel.hpp"
+#include "common/parallel.hpp"
 #include "io/provenance.hpp"
 
 namespace fs = std::filesystem;

@@ -63,6 +63,7 @@ struct DiagnoseOptions {
   std::vector<std::string> effects;  ///< the catalogue to rank (empty: every effect not already installed)
   std::vector<std::string> apply;    ///< effects added in turn after the verdict (`twin diagnose --apply`)
   int threads = 0;                   ///< worker threads (0: all cores)
+  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   /// When the verdict is "unexplained": at most this many library terms proposed (proposal.hpp;
   /// 0: no proposal; at most 3, the exhaustive subset search's limit).
   int propose_terms = 3;

@@ -12,7 +12,7 @@
 #include "common/files.hpp"
 #include "common/format.hpp"
 #include "twin/parameters.hpp"
-#include "twin/simulator.hpp"
+#include "twin/run_types.hpp"
 
 namespace dtwin {
 namespace {
@@ -102,7 +102,7 @@ std::vector<Channel> measurableChannels() { return measurableChannels({}); }
 
 std::vector<Channel> measurableChannels(const std::vector<SensorSpec>& sensors) {
   std::vector<Channel> out;
-  for (auto& c : Simulator::channels(sensors))
+  for (auto& c : runChannels(sensors))
     if (c.name != "time_s") out.push_back(c);
   return out;
 }

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/hash.hpp"  // fnv1a64, hexId
-#include "twin/simulator.hpp"
+#include "twin/run_types.hpp"
 #include "io/study.hpp"
 
 namespace dtwin {

@@ -10,6 +10,8 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "io/measurement.hpp"
+#include "io/speed_trace_file.hpp"
+#include "io/vehicle_file.hpp"
 #include "twin/road_setting.hpp"
 #include "common/toml_reader.hpp"
 
@@ -372,7 +374,7 @@ std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<Sen
   auto* t = top.table("sensors");
   if (!t) return out;
   std::vector<std::string> taken;
-  for (const auto& c : Simulator::channels(existing)) taken.push_back(c.name);
+  for (const auto& c : runChannels(existing)) taken.push_back(c.name);
   for (auto&& [key, node] : *t) {
     const std::string name(key.str());
     const std::string field = "sensors." + name;

@@ -16,7 +16,7 @@
 #include "io/study_sizes.hpp"
 #include "twin/model.hpp"
 #include "twin/scenario.hpp"
-#include "twin/simulator.hpp"
+#include "twin/run_types.hpp"
 
 namespace dtwin {
 

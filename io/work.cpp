@@ -89,4 +89,21 @@ void checkWork(const std::vector<StageWork>& stages, const std::string& where, b
                                 formatNumber(limits.memory_bytes / 1e9, 3) + " GB" + hint);
 }
 
+void overrideSize(Study& study, const std::string& field, long value, const std::string& flag) {
+  if (value <= 0) return;  // not given
+  const long most = StudySizes::maximum(field);
+  if (value > most)
+    throw InputError(flag, "must be at most " + std::to_string(most) + " (the limit of sizes." + field + "), got " + std::to_string(value));
+  study.sizes.at(field) = value;
+}
+
+void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat) {
+  auto work = selectStages(estimateStudyWork(study), stages);
+  for (auto& w : work) {
+    w.simulations *= repeat;
+    w.simulated_s *= repeat;
+  }
+  checkWork(work, study.path, force);
+}
+
 }  // namespace dtwin

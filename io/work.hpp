@@ -47,4 +47,12 @@ std::vector<StageWork> selectStages(const std::vector<StageWork>& all, const std
 /// `force`: "estimated work 3.1e+08 simulated s (calibrate M1 ...) exceeds the limit 2e+07 s; ...".
 void checkWork(const std::vector<StageWork>& stages, const std::string& where, bool force, const WorkLimits& limits = {});
 
+/// A size override (a command's `--runs`, `--lhs-points`, ...; <= 0: not given) into
+/// study.sizes.<field>, checked against that size's limit; InputError naming `flag`.
+void overrideSize(Study& study, const std::string& field, long value, const std::string& flag);
+/// Refuses with an InputError naming the study file when the estimated work of the study's
+/// `stages` (prefixes: "lab", "field", "calibrate", "calibrate M1", "synthesize", ...), times
+/// `repeat`, exceeds the limits above, unless `force`.
+void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat = 1);
+
 }  // namespace dtwin

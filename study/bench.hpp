@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "twin/hand_ode.hpp"
+#include "study/hand_ode.hpp"
 #include "io/study.hpp"
 
 namespace dtwin {

@@ -12,7 +12,7 @@
 #include "diagnosis/measurements.hpp"
 #include "io/measurement.hpp"
 #include "io/provenance.hpp"
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 
 namespace fs = std::filesystem;
 
@@ -143,7 +143,7 @@ void calibrateAssemblies(const Study& study, const CalibrateRequest& request, co
     index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
     if (on_done) on_done(run);
   }
-  rootWrites([&] { writeFileAtomic((fs::path(request.out) / "calibration.json").string(), index.dump(2) + "\n"); });
+  rootWrites(request.options.processes, [&] { writeFileAtomic((fs::path(request.out) / "calibration.json").string(), index.dump(2) + "\n"); });
 }
 
 }  // namespace dtwin

@@ -15,7 +15,7 @@
 #include "diagnosis/measurements.hpp"
 #include "io/provenance.hpp"
 #include "io/work.hpp"
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 
 namespace fs = std::filesystem;
 
@@ -141,7 +141,7 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
     j["data"] = request.data;
     if (!request.baseline.empty()) j["baseline"] = {{"data", request.baseline}, {"model", run.baseline}};
     run.written = (fs::path(request.out) / "compare.json").string();
-    rootWrites([&] { writeFileAtomic(run.written, j.dump(2) + "\n"); });
+    rootWrites(request.processes, [&] { writeFileAtomic(run.written, j.dump(2) + "\n"); });
   }
   return run;
 }
@@ -183,7 +183,7 @@ void writeDiagnosis(const Study& study, const DiagnoseRequest& request, const Di
   j["data"] = request.data;
   j["holdout"] = request.holdout;
   j["options"] = optionsJson(run.options);
-  rootWrites([&] {
+  rootWrites(request.options.processes, [&] {
     writeFileAtomic((out / "diagnosis.json").string(), j.dump(2) + "\n");
     if (!r.proposal.empty())
       writeFileAtomic((out / "proposal.toml").string(), "# Proposed by twin diagnose (" + run.options.command +

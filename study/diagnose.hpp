@@ -25,6 +25,7 @@ struct CompareRequest {
   std::string out;                 ///< folder for compare.json; "" writes nothing
   int draws = 30;                  ///< posterior rows (evenly spaced) for the predictive band
   int threads = 0;                 ///< worker threads (0: all cores)
+  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   bool force = false;              ///< run even above the work limits (io/work.hpp)
   std::string command;             ///< recorded in compare.json
 };

@@ -14,7 +14,7 @@
 #include "common/errors.hpp"
 #include "common/json.hpp"
 #include "common/validate.hpp"
-#include "twin/parallel.hpp"
+#include "common/parallel.hpp"
 #include "io/provenance.hpp"
 
 namespace fs = std::filesystem;

@@ -11,9 +11,9 @@
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
-#include "io/generate.hpp"
+#include "study/generate.hpp"
 #include "io/measurement.hpp"
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 #include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
@@ -27,8 +27,8 @@ double since(std::chrono::steady_clock::time_point t0) {
 
 /// A stage's output file is complete once it exists: every writer here is atomic. Under MPI the
 /// root looks and every rank gets its answer.
-bool done(const fs::path& p) {
-  return onRoot([&] { return std::string(fs::exists(p) ? "1" : "0"); }) == "1";
+bool done(const Distributed* processes, const fs::path& p) {
+  return onRoot(processes, [&] { return std::string(fs::exists(p) ? "1" : "0"); }) == "1";
 }
 
 /// The CLI's news of a study: progress of the running stage and one line per finished stage.
@@ -46,7 +46,7 @@ struct StageNews {
 /// OUT/study.json: written on the first run; on a rerun it must hold the same fingerprint (study,
 /// vehicle and data files), else InputError.
 void checkStudyRecord(const Study& study, const StudyRunOptions& options, const fs::path& out) {
-  rootWrites([&] {
+  rootWrites(options.processes, [&] {
     nlohmann::json fp{{"study_file", std::to_string(calib::fnv1a64(readTextFile(study.path)))},
                       {"vehicle_file", std::to_string(calib::fnv1a64(readTextFile(study.vehicle_path)))},
                       {"lab_file", options.lab_file.empty() ? "" : std::to_string(calib::fnv1a64(readTextFile(options.lab_file)))},
@@ -76,8 +76,8 @@ std::string labStage(const Study& study, const AssemblySpec& truth, const StudyR
                      const StageNews& news) {
   if (!options.lab_file.empty()) return options.lab_file;
   const std::string lab_path = (out / "lab" / "lab.csv").string();
-  if (done(sidecarPath(lab_path))) return lab_path;
-  rootWrites([&] {
+  if (done(options.processes, sidecarPath(lab_path))) return lab_path;
+  rootWrites(options.processes, [&] {
     news.report("lab", 0, 1);
     LabOptions lo;
     lo.command = options.command;
@@ -96,12 +96,13 @@ std::string fieldStage(const Study& study, const AssemblySpec& truth, const Stud
                        const StageNews& news) {
   if (!options.field_file.empty()) return options.field_file;
   const std::string field_path = (out / "field" / "field.csv").string();
-  if (done(sidecarPath(field_path))) return field_path;
+  if (done(options.processes, sidecarPath(field_path))) return field_path;
   FieldOptions fo;
   fo.threads = options.threads;
+  fo.processes = options.processes;
   fo.command = options.command;
   const FieldResult r = generateField(study, truth, fo, [&](std::size_t d, std::size_t t) { news.report("field", d, t); });
-  rootWrites([&] {
+  rootWrites(options.processes, [&] {
     writeFieldCsv(field_path, r.data);
     writeFileAtomic(sidecarPath(field_path), r.provenance.dump(2) + "\n");
   });
@@ -116,6 +117,7 @@ nlohmann::json calibrateStage(const Study& study, const std::vector<AssemblySpec
                               const fs::path& out, const StageNews& news) {
   calib::CalibrationOptions co = calib::CalibrationOptions::fromStudy(study);
   co.threads = options.threads;
+  co.processes = options.processes;
   co.command = options.command;
   co.data_path = lab_path;
   const std::string lab_hash = std::to_string(calib::fnv1a64(lab_bytes));
@@ -132,7 +134,7 @@ nlohmann::json calibrateStage(const Study& study, const std::vector<AssemblySpec
     j["study"] = study.path;
     j["data"] = {{"path", lab_path}, {"records", lab.records.size()}, {"fnv1a64", lab_hash}};
     j["options"] = co.toJson();
-    rootWrites([&] { writeFileAtomic((dir / "summary.json").string(), j.dump(2) + "\n"); });
+    rootWrites(options.processes, [&] { writeFileAtomic((dir / "summary.json").string(), j.dump(2) + "\n"); });
     calibrated[a.id] = {{"sse_min", j["sse_min"]}, {"parameters", j["parameters"]}, {"tau", j["tau"]}};
     news.say("calibrate " + a.id + " (" + a.label() + "): SSE_min " + std::to_string(r.optimum.sse) + ", " +
              std::to_string(r.posterior.distinct_points) + " distinct design points");
@@ -146,9 +148,10 @@ void synthesizeStage(const Study& study, const std::vector<AssemblySpec>& assemb
   for (const auto& a : assemblies) {
     classify::SynthesisOptions so;
     so.threads = options.threads;
+    so.processes = options.processes;
     so.command = options.command;
     const std::string post_path = (out / "calibration" / a.id / "posterior.csv").string();
-    const auto post = calib::parsePosteriorCsv(onRoot([&] {
+    const auto post = calib::parsePosteriorCsv(onRoot(options.processes, [&] {
                                           if (!fs::exists(post_path)) throw InputError(post_path, "posterior file not found");
                                           return readTextFile(post_path);
                                         }),
@@ -199,14 +202,14 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   const StageNews news{progress, log};
   const auto t_all = std::chrono::steady_clock::now();
   const fs::path out(out_dir);
-  const bool root = Distributed::instance().isRoot();  // only the root writes files and runs stage 5
+  const bool root = isRootProcess(options.processes);  // only the root writes files and runs stage 5
   // The user's files are read and checked before anything is written: a bad --lab or --field
   // leaves no study folder behind.
   if (!options.lab_file.empty()) (void)readLabCsv(options.lab_file, measurableChannels(study.sensors));
   if (!options.field_file.empty()) (void)readFieldCsv(options.field_file);
   if (fs::exists(out) && !fs::is_directory(out)) throw InputError(out_dir, "exists and is not a folder (--out)");
   news.say("study " + study.path + " -> " + out_dir + " (rerun the same command to resume)");
-  rootWrites([&] { fs::create_directories(out); });
+  rootWrites(options.processes, [&] { fs::create_directories(out); });
   const auto assemblies = study.assemblies();
   if (assemblies.empty()) throw InputError(study.path, "the study defines no assemblies");
   const AssemblySpec& truth_assembly = assemblies.front();  // the highest fidelity generates the data
@@ -215,7 +218,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   nlohmann::json stages = nlohmann::json::object();
   auto t0 = std::chrono::steady_clock::now();
   const std::string lab_path = labStage(study, truth_assembly, options, out, news);
-  const std::string lab_bytes = rootFileBytes(lab_path);
+  const std::string lab_bytes = rootFileBytes(options.processes, lab_path);
   const LabData lab = parseLabCsv(lab_bytes, lab_path, measurableChannels(study.sensors));
   stages["lab"] = since(t0);
 
@@ -232,12 +235,13 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   stages["synthesize"] = since(t0);
 
   // ---- 5. classification and recommendation: no simulation, the root alone (it wrote the files).
-  if (!root) return nlohmann::json{{"rank", Distributed::instance().rank()}, {"stages", stages}};
+  if (!root) return nlohmann::json{{"rank", processRank(options.processes)}, {"stages", stages}};
   t0 = std::chrono::steady_clock::now();
   news.report("classify", 0, 1);
   classify::FieldClassifyOptions fo;
   fo.command = options.command;
   fo.threads = options.threads;
+  fo.processes = options.processes;
   const classify::FieldClassification c = classifyFieldFile(study, field_path, (out / "synthetic").string(), fo);
   classify::writeFieldClassification(c, (out / "classification").string());
   news.report("classify", 1, 1);

@@ -25,6 +25,7 @@ namespace dtwin::study {
 
 struct StudyRunOptions {
   int threads = 0;              ///< 0: all cores (never changes the numbers)
+  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   std::string lab_file;         ///< use these lab data instead of generating them
   std::string field_file;       ///< use these field records instead of generating them
   std::string command;          ///< recorded in every output

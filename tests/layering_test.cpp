@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <regex>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -26,6 +28,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"diagnosis", {"common", "subsystems", "twin", "io", "calibration", "diagnosis"}},
       {"study", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study"}},
       {"report", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report"}},
+      {"cli", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report", "cli"}},
   };
   return a;
 }
@@ -34,6 +37,21 @@ const std::set<std::string>& projectFolders() {
   static const std::set<std::string> f = {"common",    "subsystems", "twin",  "io",     "calibration",
                                           "classification", "diagnosis",  "study", "report", "cli"};
   return f;
+}
+
+}  // namespace
+
+namespace {
+
+/// The project headers `header` includes, directly or through others (paths from the source root).
+void includesOf(const fs::path& root, const std::string& header, std::set<std::string>& seen) {
+  if (!seen.insert(header).second || !fs::exists(root / header)) return;
+  std::ifstream in(root / header);
+  const std::regex inc(R"re(^\s*#\s*include\s*"([^"]+)")re");
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, inc)) includesOf(root, m[1], seen);
+  }
 }
 
 }  // namespace
@@ -65,18 +83,92 @@ TEST(Layering, NoLibraryIncludesAFolderAboveIt) {
 
 namespace {
 
-/// The project headers `header` includes, directly or through others (paths from the source root).
-void includesOf(const fs::path& root, const std::string& header, std::set<std::string>& seen) {
-  if (!seen.insert(header).second || !fs::exists(root / header)) return;
-  std::ifstream in(root / header);
-  const std::regex inc(R"re(^\s*#\s*include\s*"([^"]+)")re");
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (std::regex_search(line, m, inc)) includesOf(root, m[1], seen);
-  }
+/// Every source file (.cpp, .hpp) under the project's source folders, tests included.
+std::vector<fs::path> sourceFiles(const fs::path& root, bool with_tests) {
+  std::vector<fs::path> out;
+  auto folders = projectFolders();
+  if (with_tests) folders.insert("tests");
+  for (const auto& f : folders)
+    for (const auto& e : fs::recursive_directory_iterator(root / f)) {
+      const auto ext = e.path().extension().string();
+      if (ext == ".cpp" || ext == ".hpp") out.push_back(e.path());
+    }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 }  // namespace
+
+// Every folder of the source tree that holds C++ is a layer of the map above (or the tests): a
+// new folder fails here until it is placed.
+TEST(Layering, EveryFolderWithSourcesIsPlaced) {
+  const fs::path root(DTWIN_SOURCE_DIR);
+  const std::set<std::string> not_code = {"build", "data", "docs", "scripts", "cmake", "out", "third_party", "tests"};
+  for (const auto& e : fs::directory_iterator(root)) {
+    if (!e.is_directory()) continue;
+    const std::string name = e.path().filename().string();
+    if (name.empty() || name[0] == '.' || not_code.count(name) || name.rfind("build", 0) == 0) continue;
+    bool has_code = false;
+    for (const auto& f : fs::recursive_directory_iterator(e.path())) {
+      const auto ext = f.path().extension().string();
+      if (ext == ".cpp" || ext == ".hpp") {
+        has_code = true;
+        break;
+      }
+    }
+    if (has_code) {
+      EXPECT_TRUE(allowed().count(name)) << name << "/ holds C++ sources but has no place in the layering";
+    }
+  }
+  for (const auto& f : projectFolders()) EXPECT_TRUE(allowed().count(f)) << f;
+}
+
+// io/ reads and writes files and runs nothing: none of its files reaches the simulator, the
+// integrators or the process layer, directly or through the headers it includes.
+TEST(Layering, IoRunsNothing) {
+  const fs::path root(DTWIN_SOURCE_DIR);
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(root / "io")) {
+    const auto ext = e.path().extension().string();
+    if (ext != ".cpp" && ext != ".hpp") continue;
+    ++files;
+    std::set<std::string> seen;
+    const std::string self = "io/" + e.path().filename().string();
+    includesOf(root, self, seen);
+    for (const auto& s : seen)
+      for (const char* banned : {"twin/simulator.hpp", "twin/rosenbrock.hpp", "common/distributed.hpp", "common/parallel.hpp"})
+        EXPECT_NE(s, banned) << self << " reaches " << banned;
+  }
+  EXPECT_GT(files, 8);
+}
+
+// The process context (threads, MPI ranks) is passed to the library explicitly: only the program
+// (cli/) creates it; no library file reaches for a process-wide instance.
+TEST(Layering, NoLibraryReadsAProcessWideInstance) {
+  const fs::path root(DTWIN_SOURCE_DIR);
+  const std::regex global(R"(Distributed::instance\s*\()");
+  for (const auto& p : sourceFiles(root, false)) {
+    const std::string rel = fs::relative(p, root).string();
+    if (rel.rfind("cli/", 0) == 0) continue;
+    std::ifstream in(p);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+      EXPECT_FALSE(std::regex_search(line, global)) << rel << ":" << n << " reads Distributed::instance()";
+  }
+}
+
+// No source file grows past about 800 lines: a file that does is holding two responsibilities.
+TEST(Layering, NoSourceFileIsOverEightHundredLines) {
+  const fs::path root(DTWIN_SOURCE_DIR);
+  for (const auto& p : sourceFiles(root, true)) {
+    if (p.extension() != ".cpp") continue;
+    std::ifstream in(p);
+    std::size_t lines = 0;
+    for (std::string line; std::getline(in, line);) ++lines;
+    EXPECT_LE(lines, 800u) << fs::relative(p, root).string() << " has " << lines << " lines; split it by responsibility";
+  }
+}
+
 
 // The calibration's mathematics (docs/architecture.md: it sees the simulations only through an
 // SSE callback) compiles without the simulator, the model and the study reader: its headers reach
@@ -94,12 +186,20 @@ TEST(Layering, TheCalibrationsMathematicsDoesNotIncludeTheSimulator) {
 }
 
 // twin/ holds the model, the simulator, the integrators, scenarios and roads; the files of a study
-// (its reader, measurements, log import, provenance, data generation) are io/'s. No twin/ source
-// includes io/ (the first test), and none of those modules is left behind in twin/.
-TEST(Layering, TheFilesOfAStudyLiveInIo) {
+// (its reader, the vehicle file, speed traces, measurements, log import, provenance) are io/'s; the
+// use cases (generate, coverage, synthesize, calibrate, diagnose, the whole study) are study/'s.
+TEST(Layering, EachConcernHasOneHome) {
   const fs::path root(DTWIN_SOURCE_DIR);
-  for (const char* m : {"study", "study_sizes", "measurement", "log_import", "provenance", "generate", "work"}) {
+  for (const char* m : {"study", "study_sizes", "measurement", "log_import", "provenance", "work"}) {
     EXPECT_TRUE(fs::exists(root / "io" / (std::string(m) + ".hpp"))) << m;
     EXPECT_FALSE(fs::exists(root / "twin" / (std::string(m) + ".hpp"))) << m;
   }
+  for (const char* m : {"generate", "coverage", "synthesize", "calibrate", "diagnose", "run", "bench", "hand_ode"}) {
+    EXPECT_TRUE(fs::exists(root / "study" / (std::string(m) + ".hpp"))) << m;
+    for (const char* below : {"twin", "io", "calibration", "classification", "diagnosis"})
+      if (std::string(m) != "calibrate" && std::string(m) != "diagnose") {
+        EXPECT_FALSE(fs::exists(root / below / (std::string(m) + ".hpp"))) << below << "/" << m;
+      }
+  }
+  for (const char* m : {"distributed", "parallel", "run_error"}) EXPECT_TRUE(fs::exists(root / "common" / (std::string(m) + ".hpp"))) << m;
 }

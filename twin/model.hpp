@@ -59,10 +59,6 @@ ParameterTable declareVehicleParameters(const EffectCatalog& catalog);
 /// among declareVehicleParameters's.
 void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name, const std::string& where);
 
-/// Reads a vehicle data file (TOML; each leaf `name = { value = .., unit = "..", source = ".." }`)
-/// into `table`. Errors name the file, the line and the field.
-void loadVehicleFile(ParameterTable& table, const std::string& path);
-
 /// Fixed (topology-level) vehicle data, read once per model.
 struct VehicleData {
   double gravity = 9.80665;
@@ -85,8 +81,8 @@ struct VehicleData {
 void declareSensorParameters(ParameterTable& table, const std::vector<SensorSpec>& sensors);
 
 /// InputError(where, ...) when the chassis roll, pitch and yaw inertias of `table` (all three set
-/// and positive) break the triangle inequality: no rigid body has them. loadVehicleFile checks the
-/// file's values with it.
+/// and positive) break the triangle inequality: no rigid body has them. The vehicle file's reader
+/// (io/vehicle_file.hpp) checks the file's values with it.
 void checkChassisInertias(const ParameterTable& table, const std::string& where);
 /// The yaw inertia a run uses: `izz` clamped into [|ixx - iyy|, ixx + iyy], the values for which
 /// the three satisfy the triangle inequality. Yaw is not a degree of freedom of the model, so a

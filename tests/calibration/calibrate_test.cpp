@@ -17,7 +17,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
-#include "io/generate.hpp"
+#include "study/generate.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

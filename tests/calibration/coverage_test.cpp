@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "calibration/coverage.hpp"
+#include "study/coverage.hpp"
 #include "common/errors.hpp"
 
 namespace fs = std::filesystem;

@@ -19,7 +19,7 @@
 #include "classification/classify_field.hpp"
 #include "classification/synthesis.hpp"
 #include "common/errors.hpp"
-#include "io/generate.hpp"
+#include "study/generate.hpp"
 #include "io/provenance.hpp"
 #include "twin/trace.hpp"
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "classification/synthesis.hpp"
+#include "study/generate.hpp"
 #include "common/errors.hpp"
 
 namespace fs = std::filesystem;

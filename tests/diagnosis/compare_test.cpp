@@ -12,7 +12,7 @@
 
 #include "diagnosis/compare.hpp"
 #include "subsystems/effect.hpp"
-#include "io/generate.hpp"
+#include "study/generate.hpp"
 #include "io/log_import.hpp"
 
 using namespace dtwin;

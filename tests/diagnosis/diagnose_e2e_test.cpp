@@ -20,7 +20,7 @@
 #include <unistd.h>
 
 #include "diagnosis/diagnose.hpp"
-#include "io/generate.hpp"
+#include "study/generate.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;

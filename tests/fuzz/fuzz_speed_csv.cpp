@@ -1,8 +1,8 @@
-// Fuzz harness: the speed-trace CSV reader (subsystems/speed_trace.hpp parseSpeedTraceCsv), then
+// Fuzz harness: the speed-trace CSV reader (io/speed_trace_file.hpp parseSpeedTraceCsv), then
 // the interpolant, its integral and its inverse on an accepted trace.
 #include <string>
 
-#include "subsystems/speed_trace.hpp"
+#include "io/speed_trace_file.hpp"
 #include "tests/fuzz/fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,5 +1,6 @@
-// Fuzz harness: the vehicle data file reader (twin/model.hpp loadVehicleFile) into a fresh
+// Fuzz harness: the vehicle data file reader (io/vehicle_file.hpp loadVehicleFile) into a fresh
 // declaration of every vehicle parameter.
+#include "io/vehicle_file.hpp"
 #include "tests/fuzz/fuzz_common.hpp"
 #include "twin/model.hpp"
 

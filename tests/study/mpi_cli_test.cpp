@@ -15,7 +15,7 @@
 #include <regex>
 #include <string>
 
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 
 namespace fs = std::filesystem;
 

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "io/vehicle_file.hpp"
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
 #include "test_util.hpp"

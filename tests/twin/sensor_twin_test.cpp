@@ -8,7 +8,7 @@
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
 #include "test_util.hpp"
-#include "io/generate.hpp"
+#include "study/generate.hpp"
 #include "twin/simulator.hpp"
 #include "io/study.hpp"
 

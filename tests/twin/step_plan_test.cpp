@@ -11,7 +11,7 @@
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
 #include "shipped_study.hpp"
-#include "io/generate.hpp"
+#include "study/generate.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/simulator.hpp"
 #include "io/study.hpp"

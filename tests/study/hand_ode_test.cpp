@@ -7,7 +7,7 @@
 
 #include "common/errors.hpp"
 #include "test_util.hpp"
-#include "twin/hand_ode.hpp"
+#include "study/hand_ode.hpp"
 #include "twin/simulator.hpp"
 #include "io/study.hpp"
 

@@ -1,4 +1,8 @@
-#include "io/generate.hpp"
+#include "study/generate.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
 
 #include <algorithm>
 #include <chrono>
@@ -13,12 +17,14 @@
 #include "common/names.hpp"
 #include "common/validate.hpp"
 #include "subsystems/random.hpp"
-#include "twin/distributed.hpp"
-#include "twin/parallel.hpp"
+#include "common/distributed.hpp"
+#include "common/parallel.hpp"
 #include "io/provenance.hpp"
 #include "twin/simulator.hpp"
 
 namespace dtwin {
+
+namespace fs = std::filesystem;
 namespace {
 
 double noiseVariance(const Study& study, const std::optional<double>& override_value) {
@@ -402,13 +408,13 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
   std::vector<Stats> stats(N);
   // Runs are spread over the MPI ranks (run i on rank i % size) and the threads of each rank;
   // every rank receives every run's window (twin/distributed.hpp).
-  const int workers = distributedWorkers(N, opt.threads);
+  const int workers = distributedWorkers(opt.processes, N, opt.threads);
   std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
   if (progress) progress(0, N);
   const auto t0 = std::chrono::steady_clock::now();
 
   const auto results = distributedMap(
-      N, opt.threads,
+      opt.processes, N, opt.threads,
       [&](std::size_t i, int w) {
         const std::size_t run_no = i + 1;
         const std::uint64_t road_seed = fieldRoadSeed(seed, run_no);
@@ -471,13 +477,52 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
                 {"output_rate_hz", rate},
                 {"runs", N},
                 {"threads", workers},
-                {"ranks", Distributed::instance().size()},
+                {"ranks", processCount(opt.processes)},
                 {"per_run", nlohmann::json::array()}};
   for (std::size_t i = 0; i < N; ++i)
     j["field"]["per_run"].push_back({{"run", d.runs[i]}, {"road_seed", d.road_seeds[i]}, {"integrator_steps", stats[i].steps},
                                      {"wall_s", stats[i].wall_s}});
   j["stats"]["message"] = "totals over all runs; wall_s is the elapsed time of the whole parallel loop";
   return {std::move(d), std::move(j)};
+}
+
+namespace {
+
+/// Rejects an output that is not a .csv file or whose folder cannot be made or written, before any run.
+void checkDataOut(const std::string& out) {
+  const fs::path p(out);
+  if (p.extension() != ".csv") throw InputError("generate.out", "must name a .csv file, got '" + out + "'");
+  // The folder is made only when the data are written (writeFileAtomic); here its nearest existing
+  // ancestor must be a folder we may write into, so that no run is wasted and nothing is created.
+  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  while (!fs::exists(dir) && dir.has_parent_path() && dir.parent_path() != dir) dir = dir.parent_path();
+  if (!fs::exists(dir)) dir = ".";
+  if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)
+    throw InputError("generate.out", "cannot write into folder '" + dir.string() + "'");
+}
+
+}  // namespace
+
+LabResult generateLabFile(const Study& study, const AssemblySpec& assembly, const LabOptions& options, const std::string& out,
+                          const ProgressFn& progress) {
+  rootWrites(options.processes, [&] { checkDataOut(out); });
+  LabResult r = generateLab(study, assembly, options, progress);
+  rootWrites(options.processes, [&] {
+    writeLabCsv(out, r.data, measurableChannels(study.sensors));
+    writeFileAtomic(sidecarPath(out), r.provenance.dump(2) + "\n");
+  });
+  return r;
+}
+
+FieldResult generateFieldFile(const Study& study, const AssemblySpec& assembly, const FieldOptions& options,
+                              const std::string& out, const ProgressFn& progress) {
+  rootWrites(options.processes, [&] { checkDataOut(out); });
+  FieldResult r = generateField(study, assembly, options, progress);
+  rootWrites(options.processes, [&] {
+    writeFieldCsv(out, r.data);
+    writeFileAtomic(sidecarPath(out), r.provenance.dump(2) + "\n");
+  });
+  return r;
 }
 
 }  // namespace dtwin

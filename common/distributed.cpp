@@ -1,4 +1,4 @@
-#include "twin/distributed.hpp"
+#include "common/distributed.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "common/errors.hpp"
-#include "twin/run_error.hpp"
+#include "common/run_error.hpp"
 
 #ifdef DTWIN_HAVE_MPI
 #include <mpi.h>
@@ -20,8 +20,8 @@
 
 namespace dtwin {
 
-std::string rootFileBytes(const std::string& path) {
-  return onRoot([&] {
+std::string rootFileBytes(const Distributed* processes, const std::string& path) {
+  return onRoot(processes, [&] {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "cannot be read");
     std::ostringstream s;
@@ -32,9 +32,6 @@ std::string rootFileBytes(const std::string& path) {
 namespace {
 
 #ifdef DTWIN_HAVE_MPI
-MPI_Comm g_work = MPI_COMM_NULL;  // the collectives of the program
-MPI_Comm g_exit = MPI_COMM_NULL;  // the exit agreement only (never mixed with unfinished work)
-
 void bcastBytes(std::string& s, int root, MPI_Comm comm) {
   unsigned long long len = s.size();
   MPI_Bcast(&len, 1, MPI_UNSIGNED_LONG_LONG, root, comm);
@@ -81,10 +78,15 @@ std::string nextField(const std::string& in, std::size_t& pos) {
 
 }  // namespace
 
-Distributed& Distributed::instance() {
-  static Distributed d;
-  return d;
-}
+struct Distributed::Comms {
+#ifdef DTWIN_HAVE_MPI
+  MPI_Comm work = MPI_COMM_NULL;  // the collectives of the program
+  MPI_Comm exit = MPI_COMM_NULL;  // the exit agreement only (never mixed with unfinished work)
+#endif
+};
+
+Distributed::Distributed() : comms_(std::make_unique<Comms>()) {}
+Distributed::~Distributed() = default;
 
 bool Distributed::builtWithMpi() {
 #ifdef DTWIN_HAVE_MPI
@@ -111,10 +113,10 @@ void Distributed::init(int* argc, char*** argv) {
   }
   mpi_ = true;
   std::set_terminate(terminateHandler);
-  MPI_Comm_dup(MPI_COMM_WORLD, &g_work);
-  MPI_Comm_dup(MPI_COMM_WORLD, &g_exit);
-  MPI_Comm_rank(g_work, &rank_);
-  MPI_Comm_size(g_work, &size_);
+  MPI_Comm_dup(MPI_COMM_WORLD, &comms_->work);
+  MPI_Comm_dup(MPI_COMM_WORLD, &comms_->exit);
+  MPI_Comm_rank(comms_->work, &rank_);
+  MPI_Comm_size(comms_->work, &size_);
   MPI_Comm shm;
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &shm);
   MPI_Comm_size(shm, &local_size_);
@@ -148,7 +150,7 @@ int Distributed::finish(int rc, const std::string& message) {
     }
   };
   MPI_Request req;
-  MPI_Ibarrier(g_exit, &req);
+  MPI_Ibarrier(comms_->exit, &req);
   const auto t0 = std::chrono::steady_clock::now();
   int arrived = 0;
   while (true) {
@@ -161,15 +163,15 @@ int Distributed::finish(int rc, const std::string& message) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   std::vector<int> rcs(static_cast<std::size_t>(size_));
-  MPI_Allgather(&rc, 1, MPI_INT, rcs.data(), 1, MPI_INT, g_exit);
+  MPI_Allgather(&rc, 1, MPI_INT, rcs.data(), 1, MPI_INT, comms_->exit);
   int job = rcs[0];
   for (int r : rcs)
     if (job == 0 && r != 0) job = r;
   if (rank_ != 0 && rc != 0 && rcs[0] != rc) say(message.empty() ? std::string("failed") : message);
   if (rank_ == 0 && rc == 0 && job != 0) std::fprintf(stderr, "twin: error: another rank failed (exit code %d)\n", job);
   std::fflush(stderr);
-  MPI_Comm_free(&g_work);
-  MPI_Comm_free(&g_exit);
+  MPI_Comm_free(&comms_->work);
+  MPI_Comm_free(&comms_->exit);
   MPI_Finalize();
   mpi_ = false;
   return job;
@@ -187,7 +189,7 @@ int Distributed::threadsPerRank(int requested) const {
 
 void Distributed::barrier() const {
 #ifdef DTWIN_HAVE_MPI
-  if (mpi_ && size_ > 1) MPI_Barrier(g_work);
+  if (mpi_ && size_ > 1) MPI_Barrier(comms_->work);
 #endif
 }
 
@@ -196,7 +198,7 @@ std::string Distributed::broadcastFromRoot(const std::string& payload, const std
   if (mpi_ && size_ > 1) {
     std::string msg;
     if (rank_ == 0) msg = error ? "E" + encodeException(error) : "V" + payload;
-    bcastBytes(msg, 0, g_work);
+    bcastBytes(msg, 0, comms_->work);
     if (rank_ == 0) {
       if (error) std::rethrow_exception(error);
       return payload;
@@ -223,14 +225,14 @@ void Distributed::gatherMap(std::vector<std::vector<double>>& out, long long loc
       }
     long long mine[2] = {static_cast<long long>(buf.size()), error ? local_fail : -1};
     std::vector<long long> all(2 * size);
-    MPI_Allgather(mine, 2, MPI_LONG_LONG, all.data(), 2, MPI_LONG_LONG, g_work);
+    MPI_Allgather(mine, 2, MPI_LONG_LONG, all.data(), 2, MPI_LONG_LONG, comms_->work);
     long long fail = -1;
     for (std::size_t r = 0; r < size; ++r)
       if (all[2 * r + 1] >= 0 && (fail < 0 || all[2 * r + 1] < fail)) fail = all[2 * r + 1];
     if (fail >= 0) {
       const int owner = static_cast<int>(fail % static_cast<long long>(size_));
       std::string bytes = rank_ == owner ? encodeException(error) : std::string();
-      bcastBytes(bytes, owner, g_work);
+      bcastBytes(bytes, owner, comms_->work);
       if (rank_ == owner) std::rethrow_exception(error);
       throwEncoded(bytes);
     }
@@ -245,7 +247,7 @@ void Distributed::gatherMap(std::vector<std::vector<double>>& out, long long loc
     }
     std::vector<double> recv(static_cast<std::size_t>(total));
     MPI_Allgatherv(buf.data(), counts[static_cast<std::size_t>(rank_)], MPI_DOUBLE, recv.data(), counts.data(), displs.data(),
-                   MPI_DOUBLE, g_work);
+                   MPI_DOUBLE, comms_->work);
     for (std::size_t r = 0; r < size; ++r) {
       std::size_t pos = static_cast<std::size_t>(displs[r]);
       const std::size_t end = pos + static_cast<std::size_t>(counts[r]);
@@ -274,9 +276,9 @@ void Distributed::sendDoubles(int to, const std::vector<double>& values) const {
   if (mpi_ && size_ > 1) {
     DTWIN_CHECK(to >= 0 && to < size_ && to != rank_, "sendDoubles: no such partner rank");
     long long n = static_cast<long long>(values.size());
-    MPI_Send(&n, 1, MPI_LONG_LONG, to, 1, g_work);
+    MPI_Send(&n, 1, MPI_LONG_LONG, to, 1, comms_->work);
     for (long long at = 0; at < n; at += kPiece)
-      MPI_Send(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, to, 2, g_work);
+      MPI_Send(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, to, 2, comms_->work);
     return;
   }
 #endif
@@ -290,11 +292,11 @@ std::vector<double> Distributed::receiveDoubles(int from) const {
   if (mpi_ && size_ > 1) {
     DTWIN_CHECK(from >= 0 && from < size_ && from != rank_, "receiveDoubles: no such partner rank");
     long long n = 0;
-    MPI_Recv(&n, 1, MPI_LONG_LONG, from, 1, g_work, MPI_STATUS_IGNORE);
+    MPI_Recv(&n, 1, MPI_LONG_LONG, from, 1, comms_->work, MPI_STATUS_IGNORE);
     DTWIN_CHECK(n >= 0, "receiveDoubles: a negative length");
     std::vector<double> values(static_cast<std::size_t>(n));
     for (long long at = 0; at < n; at += kPiece)
-      MPI_Recv(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, from, 2, g_work, MPI_STATUS_IGNORE);
+      MPI_Recv(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, from, 2, comms_->work, MPI_STATUS_IGNORE);
     return values;
   }
 #endif

@@ -15,8 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/progress.hpp"
 #include "io/measurement.hpp"
-#include "twin/run_error.hpp"
+#include "common/run_error.hpp"
 #include "io/study.hpp"
 
 namespace dtwin {
@@ -31,9 +32,6 @@ std::uint64_t labNoiseStream(const std::string& scenario);
 inline constexpr std::uint64_t kFieldRoadStream = 0x4649454C44524F44ULL;   // "FIELDROD"; index: run - 1
 inline constexpr std::uint64_t kFieldNoiseStream = 0x4649454C444E4F49ULL;  // "FIELDNOI"; index: run - 1
 
-/// Progress: `done` of `total` units finished. Called one call at a time (possibly from worker
-/// threads), never concurrently.
-using ProgressFn = std::function<void(std::size_t done, std::size_t total)>;
 
 /// The road seed of field run `run` (1-based): RandomStream(seed, kFieldRoadStream, run - 1).bits()
 /// >> 11, i.e. in [0, 2^53): exact as a double (MATLAB) and as a signed 64-bit integer.
@@ -88,6 +86,9 @@ struct LabOptions {
   std::optional<double> rate_hz;
   std::vector<std::string> channels;          ///< empty: the study's [lab] channels
   std::string command;                        ///< recorded in the provenance
+  /// The process context (common/distributed.hpp; nullptr: this process alone): every process
+  /// makes the lab data (one run), only the root writes them (generateLabFile).
+  const Distributed* processes = nullptr;
 };
 
 struct LabResult {
@@ -123,6 +124,7 @@ struct FieldOptions {
   /// before the noise, e.g. {"lowpass", 0.0064} for a 25 Hz first-order low-pass.
   std::vector<std::pair<std::string, double>> hidden_sensor;
   int threads = 0;                            ///< <= 0: all cores
+  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   std::string command;
 };
 
@@ -137,5 +139,14 @@ struct FieldResult {
 /// Throws InputError for bad settings, RunFailedError naming the lowest failing run and its seed.
 FieldResult generateField(const Study& study, const AssemblySpec& assembly, const FieldOptions& options = {},
                           const ProgressFn& progress = {});
+
+/// `twin generate lab` and `twin generate field` as one call each: refuses an `out` that is not a
+/// .csv file or whose folder cannot be written (InputError "generate.out", before any run), makes
+/// the data (generateLab / generateField) and writes `out` and its JSON sidecar atomically (only
+/// the root of options.processes writes).
+LabResult generateLabFile(const Study& study, const AssemblySpec& assembly, const LabOptions& options, const std::string& out,
+                          const ProgressFn& progress = {});
+FieldResult generateFieldFile(const Study& study, const AssemblySpec& assembly, const FieldOptions& options,
+                              const std::string& out, const ProgressFn& progress = {});
 
 }  // namespace dtwin

@@ -1,4 +1,4 @@
-#include "calibration/coverage.hpp"
+#include "study/coverage.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -12,8 +12,8 @@
 
 #include "common/errors.hpp"
 #include "common/validate.hpp"
-#include "twin/distributed.hpp"
-#include "io/generate.hpp"
+#include "common/distributed.hpp"
+#include "study/generate.hpp"
 #include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
@@ -108,7 +108,7 @@ CalibrationResult calibrateSeed(const Study& study, const AssemblySpec& a, const
   lo.command = options.command;
   const LabResult lab = generateLab(study, a, lo);
   const std::string lab_path = (adir / ("lab_" + std::to_string(seed) + ".csv")).string();
-  rootWrites([&] {
+  rootWrites(options.calibration.processes, [&] {
     writeLabCsv(lab_path, lab.data, measurableChannels(study.sensors));
     writeFileAtomic(fs::path(lab_path).replace_extension(".json").string(), lab.provenance.dump(2) + "\n");
   });
@@ -174,7 +174,7 @@ void writeCoverage(const Study& study, const CoverageOptions& options, const Cov
   j["study"] = study.path;
   j["seeds"] = {{"first", options.first_seed}, {"count", options.seeds}, {"rule", "lab noise seed s = first .. first + count - 1"}};
   j["calibration_options"] = options.calibration.toJson();
-  rootWrites([&] {
+  rootWrites(options.calibration.processes, [&] {
     writeFileAtomic((fs::path(options.out_dir) / "coverage.json").string(), j.dump(2) + "\n");
     std::string md = "# Coverage of the 95 % intervals\n\nStudy `" + study.path + "`, noise seeds " + std::to_string(options.first_seed) + "–" +
                      std::to_string(options.first_seed + static_cast<std::uint64_t>(options.seeds) - 1) + ", region `" +
@@ -199,7 +199,7 @@ CoverageResult runCoverage(const Study& study, const CoverageOptions& options, c
   int index = 0;
   for (const auto& a : targets) {
     const fs::path adir = fs::path(options.out_dir) / a.id;
-    rootWrites([&] { fs::create_directories(adir); });
+    rootWrites(options.calibration.processes, [&] { fs::create_directories(adir); });
     std::vector<nlohmann::json> summaries;
     summaries.reserve(static_cast<std::size_t>(options.seeds));
     std::vector<std::string> order;

@@ -8,13 +8,19 @@
 #include <vector>
 
 #include "common/errors.hpp"
-#include "twin/distributed.hpp"
-#include "twin/run_error.hpp"
+#include "common/distributed.hpp"
+#include "common/run_error.hpp"
 
 using namespace dtwin;
 
 TEST(Distributed, SingleProcessWithoutLauncher) {
-  const Distributed& d = Distributed::instance();
+  const Distributed d;  // not started by a launcher: one process
+  EXPECT_EQ(processRank(nullptr), 0);
+  EXPECT_EQ(processCount(nullptr), 1);
+  EXPECT_TRUE(isRootProcess(nullptr));
+  EXPECT_EQ(threadsPerProcess(nullptr, 3), 3);
+  EXPECT_EQ(processCount(&d), 1);
+  EXPECT_EQ(threadsPerProcess(&d, 0), 0);
   EXPECT_EQ(d.rank(), 0);
   EXPECT_EQ(d.size(), 1);
   EXPECT_TRUE(d.isRoot());
@@ -23,13 +29,15 @@ TEST(Distributed, SingleProcessWithoutLauncher) {
 }
 
 TEST(Distributed, MapReturnsEveryResultInIndexOrderForAnyThreadCount) {
+  const Distributed one;
+  for (const Distributed* processes : {static_cast<const Distributed*>(nullptr), &one})
   for (int threads : {1, 2, 4}) {
     std::atomic<int> calls{0};
     std::vector<std::size_t> last;
     const auto r = distributedMap(
-        37, threads,
+        processes, 37, threads,
         [&](std::size_t i, int w) {
-          EXPECT_LT(w, distributedWorkers(37, threads));
+          EXPECT_LT(w, distributedWorkers(processes, 37, threads));
           ++calls;
           return std::vector<double>(i % 4, static_cast<double>(i) + 0.5);
         },
@@ -46,13 +54,13 @@ TEST(Distributed, MapReturnsEveryResultInIndexOrderForAnyThreadCount) {
     ASSERT_FALSE(last.empty());
     EXPECT_EQ(last.back(), 37u);
   }
-  EXPECT_TRUE(distributedMap(0, 2, [](std::size_t, int) { return std::vector<double>{1.0}; }).empty());
+  EXPECT_TRUE(distributedMap(nullptr, 0, 2, [](std::size_t, int) { return std::vector<double>{1.0}; }).empty());
 }
 
 TEST(Distributed, MapRethrowsTheLowestFailingIndexWithItsType) {
   for (int threads : {1, 3}) {
     try {
-      distributedMap(50, threads, [](std::size_t i, int) -> std::vector<double> {
+      distributedMap(nullptr, 50, threads, [](std::size_t i, int) -> std::vector<double> {
         if (i == 7 || i == 30) throw InputError("task " + std::to_string(i), "fails");
         return {1.0};
       });
@@ -60,7 +68,7 @@ TEST(Distributed, MapRethrowsTheLowestFailingIndexWithItsType) {
     } catch (const InputError& e) {
       EXPECT_EQ(e.where(), "task 7");
     }
-    EXPECT_THROW(distributedMap(5, threads,
+    EXPECT_THROW(distributedMap(nullptr, 5, threads,
                                 [](std::size_t i, int) -> std::vector<double> {
                                   if (i == 2) throw RunFailedError("run 3 failed", 3, 42);
                                   return {};
@@ -126,7 +134,10 @@ TEST(Distributed, ExceptionsTravelAsBytes) {
 }
 
 TEST(Distributed, OnRootRunsHereAndPassesErrorsOn) {
-  EXPECT_EQ(onRoot([] { return std::string("abc"); }), "abc");
-  EXPECT_THROW(onRoot([]() -> std::string { throw InputError("x", "y"); }), InputError);
-  Distributed::instance().barrier();  // a no-op with one process
+  const Distributed one;
+  for (const Distributed* processes : {static_cast<const Distributed*>(nullptr), &one}) {
+    EXPECT_EQ(onRoot(processes, [] { return std::string("abc"); }), "abc");
+    EXPECT_THROW(onRoot(processes, []() -> std::string { throw InputError("x", "y"); }), InputError);
+  }
+  one.barrier();  // a no-op with one process
 }

@@ -1,15 +1,18 @@
 #pragma once
 // Running one program on several processes (MPI ranks, possibly on several machines).
 //
-//   mpirun -n K twin study data/studies/paper.toml --out /shared/study --threads T
+//   mpirun -n K twin study --study data/studies/paper.toml --out /shared/study --threads T
 //
-// The same binary runs alone or under an MPI launcher (docs/cluster.md). Without one (or when
-// the project was built without MPI: DTWIN_HAVE_MPI undefined) there is one process, rank 0 of
-// size 1, and every function here is a plain local call.
+// The same binary runs alone or under an MPI launcher (docs/cluster.md). The program (main)
+// creates the one Distributed object and passes a pointer to it down to every call that spreads
+// work, as options.processes (the process context, passed explicitly like Drake's contexts: no
+// library code reaches for a process-wide instance). A null pointer, or an object without MPI
+// (not started by a launcher, or the project built without MPI: DTWIN_HAVE_MPI undefined), is one
+// process, rank 0 of size 1, and every function here is then a plain local call.
 //
 // The collective that spreads simulations:
 //
-//   auto results = distributedMap(n, threads, [&](std::size_t i, int worker) -> std::vector<double> {
+//   auto results = distributedMap(processes, n, threads, [&](std::size_t i, int worker) -> std::vector<double> {
 //     ... simulate task i, using state private to `worker` ...
 //   });
 //
@@ -27,7 +30,7 @@
 //  * only the root (rank 0) writes files and prints; a decision that depends on a file (resume)
 //    is taken from what the root read (onRoot), never from each rank's own view of a shared
 //    filesystem;
-//  * main() calls init() first and returns finish(rc, message): an error on any rank ends the
+//  * main() creates the Distributed object, calls init() first and returns finish(rc, message): an error on any rank ends the
 //    whole job (MPI_Abort after a grace period) instead of leaving the others waiting forever.
 #include <algorithm>
 #include <cstddef>
@@ -36,19 +39,21 @@
 #include <exception>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "twin/parallel.hpp"
+#include "common/parallel.hpp"
 
 namespace dtwin {
 
 class Distributed {
  public:
-  /// The process-wide instance (size 1 until init() starts MPI).
-  static Distributed& instance();
+  /// One process (rank 0 of size 1) until init() starts MPI.
+  Distributed();
+  ~Distributed();
   /// True when this library was built with MPI (DTWIN_HAVE_MPI).
   static bool builtWithMpi();
 
@@ -91,11 +96,21 @@ class Distributed {
   Distributed& operator=(const Distributed&) = delete;
 
  private:
-  Distributed() = default;
+  struct Comms;  // the MPI communicators (distributed.cpp)
+  std::unique_ptr<Comms> comms_;
   int rank_ = 0, size_ = 1, local_size_ = 1;
   bool mpi_ = false;
   int saved_stderr_ = -1;
 };
+
+/// The rank, size, root test and worker threads of the process context `processes` (nullptr:
+/// this process alone, rank 0 of size 1).
+inline int processRank(const Distributed* processes) { return processes ? processes->rank() : 0; }
+inline int processCount(const Distributed* processes) { return processes ? processes->size() : 1; }
+inline bool isRootProcess(const Distributed* processes) { return processRank(processes) == 0; }
+inline int threadsPerProcess(const Distributed* processes, int requested) {
+  return processes ? processes->threadsPerRank(requested) : requested;
+}
 
 /// An exception as bytes (type, message, fields) and back: what carries a task's error to the
 /// other ranks.
@@ -103,17 +118,16 @@ std::string encodeException(const std::exception_ptr& e);
 [[noreturn]] void throwEncoded(const std::string& bytes);
 
 /// Upper bound (exclusive) of the worker ids distributedMap passes to its task.
-inline int distributedWorkers(std::size_t n, int threads) {
-  return workerCount(Distributed::instance().threadsPerRank(threads), n);
+inline int distributedWorkers(const Distributed* processes, std::size_t n, int threads) {
+  return workerCount(threadsPerProcess(processes, threads), n);
 }
 
 /// See the top of this file. `progress(done, n)` (optional) is called one call at a time as this
 /// rank's tasks finish (done estimated from this rank's share under MPI), and with (n, n) at the end.
 template <class F>
-std::vector<std::vector<double>> distributedMap(std::size_t n, int threads, F f,
+std::vector<std::vector<double>> distributedMap(const Distributed* processes, std::size_t n, int threads, F f,
                                                 const std::function<void(std::size_t, std::size_t)>& progress = nullptr) {
-  const Distributed& D = Distributed::instance();
-  const std::size_t size = static_cast<std::size_t>(D.size()), rank = static_cast<std::size_t>(D.rank());
+  const std::size_t size = static_cast<std::size_t>(processCount(processes)), rank = static_cast<std::size_t>(processRank(processes));
   std::vector<std::vector<double>> out(n);
   std::mutex m;
   std::size_t done = 0;
@@ -123,8 +137,8 @@ std::vector<std::vector<double>> distributedMap(std::size_t n, int threads, F f,
     ++done;
     progress(std::min(n, done * size), n);
   };
-  if (size == 1) {
-    parallelFor(n, D.threadsPerRank(threads), [&](std::size_t i, int w) {
+  if (processes == nullptr || size == 1) {
+    parallelFor(n, threadsPerProcess(processes, threads), [&](std::size_t i, int w) {
       out[i] = f(i, w);
       tick();
     });
@@ -134,7 +148,7 @@ std::vector<std::vector<double>> distributedMap(std::size_t n, int threads, F f,
   long long local_fail = -1;
   std::exception_ptr error;
   try {
-    parallelFor(local_n, D.threadsPerRank(threads), [&](std::size_t k, int w) {
+    parallelFor(local_n, processes->threadsPerRank(threads), [&](std::size_t k, int w) {
       const std::size_t i = rank + k * size;
       try {
         out[i] = f(i, w);
@@ -148,7 +162,7 @@ std::vector<std::vector<double>> distributedMap(std::size_t n, int threads, F f,
   } catch (...) {
     error = std::current_exception();  // parallelFor rethrows the lowest failing index's
   }
-  D.gatherMap(out, local_fail, error);
+  processes->gatherMap(out, local_fail, error);
   if (progress) progress(n, n);
   return out;
 }
@@ -157,25 +171,24 @@ std::vector<std::vector<double>> distributedMap(std::size_t n, int threads, F f,
 /// exception f throws is rethrown on every rank. The way to base a decision on a file: the root
 /// reads it, every rank gets the same bytes.
 template <class F>
-std::string onRoot(F f) {
-  const Distributed& D = Distributed::instance();
-  if (D.size() == 1) return f();
+std::string onRoot(const Distributed* processes, F f) {
+  if (processes == nullptr || processes->size() == 1) return f();
   std::string payload;
   std::exception_ptr error;
-  if (D.isRoot()) {
+  if (processes->isRoot()) {
     try {
       payload = f();
     } catch (...) {
       error = std::current_exception();
     }
   }
-  return D.broadcastFromRoot(payload, error);
+  return processes->broadcastFromRoot(payload, error);
 }
 
 /// Runs `write` on the root only (the only rank that writes files); its error reaches every rank.
 template <class F>
-void rootWrites(F write) {
-  onRoot([&]() -> std::string {
+void rootWrites(const Distributed* processes, F write) {
+  onRoot(processes, [&]() -> std::string {
     write();
     return std::string();
   });
@@ -183,7 +196,7 @@ void rootWrites(F write) {
 
 /// A file's bytes as the root reads them (InputError if it cannot be read), on every rank: files the root wrote in
 /// this run are never read from another rank's view of a shared filesystem.
-std::string rootFileBytes(const std::string& path);
+std::string rootFileBytes(const Distributed* processes, const std::string& path);
 
 /// Packing of mixed values into the doubles distributedMap carries (integers up to 2^53 exactly,
 /// strings byte by byte).

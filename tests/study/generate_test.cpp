@@ -12,8 +12,8 @@
 
 #include "shipped_study.hpp"
 #include "common/errors.hpp"
-#include "io/generate.hpp"
-#include "twin/parallel.hpp"
+#include "study/generate.hpp"
+#include "common/parallel.hpp"
 #include "twin/simulator.hpp"
 
 using namespace dtwin;

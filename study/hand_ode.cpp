@@ -1,4 +1,4 @@
-#include "twin/hand_ode.hpp"
+#include "study/hand_ode.hpp"
 
 #include "twin/ros34pw2_core.hpp"
 

@@ -4,9 +4,9 @@
 // a design simulated in parallel (a Latin hypercube, then adaptive rounds where the posterior
 // lies), the two-block Griddy Gibbs with design weights, posterior summaries. Every stage is persisted in the assembly's output folder as it
 // finishes, so a killed calibration rerun with the same inputs continues where it stopped and
-// ends with identical results (design points are journalled one by one). In calibrate.cpp each
-// stage is one method of CalibrationRun, and calibrateAssembly lists them in order: objective,
-// optimum, region, design, profile, sampler, summary.
+// ends with identical results (design points are journalled one by one). In calibration_run.cpp and
+// calibration_run_intervals.cpp each stage is one method of CalibrationRun, and calibrateAssembly
+// lists them in order: objective, optimum, region, design, profile, sampler, summary.
 //
 // Outputs in `out_dir` (docs/calibration.md describes every file):
 //   optimum.json        every start of the optimiser and the optimum (stage 1)
@@ -27,6 +27,7 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "common/distributed.hpp"
 #include "common/progress.hpp"
 #include "calibration/adaptive_design.hpp"
 #include "calibration/bounds.hpp"

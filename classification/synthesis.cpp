@@ -1,4 +1,5 @@
 #include "classification/synthesis.hpp"
+#include "classification/synthesis_internal.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -37,6 +38,8 @@ double median(std::vector<double> v) {
   return quantileSorted(v, 0.5);
 }
 
+}  // namespace
+
 nlohmann::json failureJson(const SynthesisFailure& f) {
   return {{"draw", f.draw}, {"road", f.road}, {"library_index", f.library_index}, {"road_seed", f.road_seed}, {"message", f.message}};
 }
@@ -50,79 +53,35 @@ SynthesisFailure failureFrom(const nlohmann::json& j) {
   return f;
 }
 
-/// What one draw produced: R vectors (empty where the run failed), failures, run costs.
-struct DrawOutput {
-  std::vector<std::vector<double>> vectors;
-  std::vector<SynthesisFailure> failures;
-  std::vector<double> cost;      ///< wall s per simulated s, successful runs
-  std::vector<double> run_wall;  ///< wall s, successful runs
-};
-
-struct PendingBlock {
-  std::vector<DrawOutput> draws;
-  long remaining = 0;
-};
-
-/// A draw's output as doubles (what distributedMap carries between MPI ranks).
-std::vector<double> packDraw(const DrawOutput& d) {
-  Packer pk;
-  pk.put(static_cast<double>(d.vectors.size()));
-  for (const auto& v : d.vectors) pk.put(v);
-  pk.put(static_cast<double>(d.failures.size()));
-  for (const auto& f : d.failures)
-    pk.put(static_cast<double>(f.draw)).put(static_cast<double>(f.road)).put(static_cast<double>(f.library_index))
-        .put(static_cast<double>(f.road_seed)).put(f.message);
-  pk.put(d.cost).put(d.run_wall);
-  return pk.take();
-}
-DrawOutput unpackDraw(const std::vector<double>& v) {
-  Unpacker u(v);
-  DrawOutput d;
-  d.vectors.resize(static_cast<std::size_t>(u.integer()));
-  for (auto& x : d.vectors) x = u.vec();
-  d.failures.resize(static_cast<std::size_t>(u.integer()));
-  for (auto& f : d.failures) {
-    f.draw = static_cast<long>(u.integer());
-    f.road = static_cast<long>(u.integer());
-    f.library_index = static_cast<long>(u.integer());
-    f.road_seed = static_cast<std::uint64_t>(u.num());  // < 2^53: exact
-    f.message = u.str();
-  }
-  d.cost = u.vec();
-  d.run_wall = u.vec();
-  return d;
-}
-
-using Clock = std::chrono::steady_clock;
-
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// "F" + the bytes of `path` as the root reads them, "" when it does not exist: resume decisions
+/// are taken on what the root reads (the same bytes on every MPI rank).
+std::string rootRead(const Distributed* processes, const fs::path& path) {
+  return onRoot(processes, [&]() -> std::string { return fs::exists(path) ? "F" + readTextFile(path.string()) : std::string(); });
+}
+
+/// The JSON of a rootRead() text; null when it is not JSON (written atomically: a foreign file).
+nlohmann::json parseRootJson(const std::string& text) {
+  try {
+    return nlohmann::json::parse(text.begin() + 1, text.end());
+  } catch (const std::exception&) {
+    return nlohmann::json();
+  }
+}
+
+/// InputError: `path` belongs to a different synthesis.
+[[noreturn]] void refuseForeign(const fs::path& path) {
+  throw InputError(path.string(), "was made by a different synthesis (study, posterior, assembly, sizes, seed, window or "
+                                  "options changed); use a new output folder or delete it to start over");
+}
+
+namespace {
 
 /// Grid index of a window end, or InputError naming the option field (synthesis.<field>).
 std::size_t windowIndex(double t, double rate, double duration, const char* field) {
   return gridIndex(t, rate, duration, OptionCheck("synthesis").where(field));
 }
-
-/// Everything a synthesis fixes before it simulates (synthesis.hpp, "What is simulated").
-struct SynthesisPlan {
-  long M = 0, R = 0, L = 0, B = 0;      ///< draws, roads per draw, library roads, draws per block
-  std::uint64_t seed = 0;
-  std::vector<std::string> names;       ///< the study's calibrated parameters (= the posterior's columns)
-  std::shared_ptr<const Model> model;
-  std::vector<int> slots;               ///< run-value slot of each calibrated parameter
-  std::vector<double> base;             ///< the model's default run values
-  const ScenarioSpec* sc = nullptr;     ///< the field scenario (random road)
-  std::string unit;                     ///< of the channel
-  bool noisy = false;                   ///< noise N(0, 1/τ) is added (channels in N)
-  double rate = 0.0;                    ///< output grid [Hz]
-  std::size_t kb = 0, ke = 0, p = 0;    ///< the window: first and last grid index, samples
-  std::vector<double> times;            ///< the window's times
-  bool branched = false;                ///< the roads of a draw share the smooth start
-  double t_branch = -1.0;
-  long LB = 1;                          ///< blocks per leaf of the accumulation tree
-  long blocks() const { return (M + B - 1) / B; }
-  long leaves() const { return (blocks() + LB - 1) / LB; }
-  long blockSize(long b) const { return std::min(B, M - b * B); }
-};
 
 /// The sizes (options, else the study's sizes), the posterior checked against the study's
 /// calibrated parameters, the model's slots, the scenario, channel and window, and whether the
@@ -224,42 +183,14 @@ SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& asse
   return id;
 }
 
-/// The files of a synthesis folder (synthesis.hpp, "Files in out_dir").
-struct SynthesisFiles {
-  fs::path dir, moments, info, checkpoint;
-  explicit SynthesisFiles(const std::string& out_dir)
-      : dir(out_dir), moments(dir / "moments.bin"), info(dir / "synthesis.json"), checkpoint(dir / "checkpoint.json") {}
-};
-
-/// "F" + the bytes of `path` as the root reads them, "" when it does not exist: resume decisions
-/// are taken on what the root reads (the same bytes on every MPI rank).
-std::string rootRead(const fs::path& path) {
-  return onRoot([&]() -> std::string { return fs::exists(path) ? "F" + readTextFile(path.string()) : std::string(); });
-}
-
-/// The JSON of a rootRead() text; null when it is not JSON (written atomically: a foreign file).
-nlohmann::json parseRootJson(const std::string& text) {
-  try {
-    return nlohmann::json::parse(text.begin() + 1, text.end());
-  } catch (const std::exception&) {
-    return nlohmann::json();
-  }
-}
-
-/// InputError: `path` belongs to a different synthesis.
-[[noreturn]] void refuseForeign(const fs::path& path) {
-  throw InputError(path.string(), "was made by a different synthesis (study, posterior, assembly, sizes, seed, window or "
-                                  "options changed); use a new output folder or delete it to start over");
-}
-
 /// A finished synthesis of this fingerprint in the folder: `res` filled from its files, true.
 /// False when there is none; InputError when the folder holds a different synthesis.
-bool reuseFinished(const SynthesisFiles& files, const std::string& fingerprint, SynthesisResult& res) {
-  const std::string info_text = rootRead(files.info);
+bool reuseFinished(const Distributed* processes, const SynthesisFiles& files, const std::string& fingerprint, SynthesisResult& res) {
+  const std::string info_text = rootRead(processes, files.info);
   if (info_text.empty()) return false;
   const nlohmann::json j = parseRootJson(info_text);
   if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuseForeign(files.info);
-  if (onRoot([&] { return std::string(fs::exists(files.moments) ? "1" : "0"); }) != "1") return false;
+  if (onRoot(processes, [&] { return std::string(fs::exists(files.moments) ? "1" : "0"); }) != "1") return false;
   res.moments = MomentAccumulator::load(files.moments.string());
   res.info = j;
   res.reused = true;
@@ -343,302 +274,6 @@ DrawOutput simulateDraw(const SynthesisPlan& plan, const PosteriorSample& post, 
     out.run_wall.push_back(run.stats.wall_s);
   }
   return out;
-}
-
-/// Adds a synthesis's blocks, in block order, to the leaves of a MomentTree: a leaf is
-/// `leaf_blocks` blocks added with addBlock to an empty accumulator, then pushed into the tree
-/// (synthesis.hpp, "Accumulation"). Also keeps the failures and run costs in draw order. Not
-/// thread-safe: the caller adds one block at a time.
-class LeafSink {
- public:
-  LeafSink(const SynthesisPlan& plan, const MomentOptions& mo, MomentTree& tree)
-      : next_block(tree.end() * plan.LB), plan_(plan), mo_(mo), tree_(tree), leaf_(static_cast<int>(plan.p), mo) {}
-
-  /// Adds block next_block (vectors in (draw, road) order; failed runs left out) and moves on.
-  void add(PendingBlock& blk) {
-    long cols = 0;
-    for (const auto& d : blk.draws)
-      for (const auto& v : d.vectors) cols += v.empty() ? 0 : 1;
-    if (cols > 0) {
-      Eigen::MatrixXd X(static_cast<Eigen::Index>(plan_.p), cols);
-      Eigen::Index c = 0;
-      for (const auto& d : blk.draws)
-        for (const auto& v : d.vectors)
-          if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(plan_.p));
-      leaf_.addBlock(X);
-    }
-    for (const auto& d : blk.draws) addRecords(d);
-    ++next_block;
-    if (atLeafBoundary()) {
-      tree_.pushLeaf(std::move(leaf_));
-      leaf_ = MomentAccumulator(static_cast<int>(plan_.p), mo_);
-    }
-  }
-  /// Appends a draw's (or a rank's) failures and run costs, in draw order.
-  void addRecords(const DrawOutput& d) {
-    failures.insert(failures.end(), d.failures.begin(), d.failures.end());
-    costs.insert(costs.end(), d.cost.begin(), d.cost.end());
-    run_walls.insert(run_walls.end(), d.run_wall.begin(), d.run_wall.end());
-  }
-  const MomentOptions& moments() const { return mo_; }
-  /// True when every block added so far is in a leaf of the tree.
-  bool atLeafBoundary() const { return next_block % plan_.LB == 0 || next_block == plan_.blocks(); }
-
-  long next_block;
-  std::vector<SynthesisFailure> failures;
-  std::vector<double> costs, run_walls;
-
- private:
-  const SynthesisPlan& plan_;
-  MomentOptions mo_;
-  MomentTree& tree_;
-  MomentAccumulator leaf_;
-};
-
-/// The reduction of a whole synthesis: the tree of its leaves, what is added next, the failures
-/// and run costs so far, and the checkpoint that lets a rerun continue (synthesis.hpp,
-/// "Accumulation" and "Resume"). Under MPI only the root holds the tree's nodes; every rank
-/// keeps next_block, the failures and the costs.
-class Reduction {
- public:
-  Reduction(const SynthesisPlan& plan, const SynthesisOptions& opt, const SynthesisFiles& files, std::string assembly,
-            std::string fingerprint, bool root)
-      : tree(plan.leaves()), sink(plan, momentOptions(opt), tree), plan_(plan), opt_(opt), files_(files),
-        assembly_(std::move(assembly)), fingerprint_(std::move(fingerprint)), root_(root) {}
-
-  /// Continues from checkpoint.json when the folder has one (InputError when it is another
-  /// synthesis's or does not match its node files).
-  void resume() {
-    const std::string ckpt_text = rootRead(files_.checkpoint);
-    if (ckpt_text.empty()) return;
-    const nlohmann::json j = parseRootJson(ckpt_text);
-    if (!j.is_object() || j.value("fingerprint", "") != fingerprint_ || !j.contains("nodes")) refuseForeign(files_.checkpoint);
-    const long next_leaf = j.at("next_leaf").get<long>();
-    if (root_) {
-      std::vector<TreeNode> nodes;
-      for (const auto& n : j.at("nodes")) {
-        TreeNode node;
-        node.level = n.at("level").get<int>();
-        node.index = n.at("index").get<long>();
-        node.acc = MomentAccumulator::load((files_.dir / n.at("file").get<std::string>()).string());
-        if (node.acc.dimension() != static_cast<int>(plan_.p))
-          throw InputError(files_.checkpoint.string(), "does not match " + n.at("file").get<std::string>() + "; delete the folder to start over");
-        nodes.push_back(std::move(node));
-      }
-      tree = MomentTree::fromNodes(plan_.leaves(), 0, std::move(nodes), files_.checkpoint.string());
-      if (tree.end() != next_leaf)
-        throw InputError(files_.checkpoint.string(), "its nodes end at leaf " + std::to_string(tree.end()) + ", not at next_leaf " +
-                                                         std::to_string(next_leaf) + "; delete the folder to start over");
-      for (const auto& n : j.at("nodes")) node_files_.push_back(n.at("file").get<std::string>());
-    } else {
-      tree = MomentTree(plan_.leaves(), next_leaf);  // the root holds [0, next_leaf)
-    }
-    sink.next_block = std::min(plan_.blocks(), next_leaf * plan_.LB);
-    for (const auto& f : j.at("failure_list")) sink.failures.push_back(failureFrom(f));
-    sink.costs = j.at("cost_samples").get<std::vector<double>>();
-    sink.run_walls = j.at("run_wall_samples").get<std::vector<double>>();
-    previous_wall = j.at("wall_s").get<double>();
-  }
-
-  /// Starts the checkpoint clock (when the simulations start).
-  void startClock() { last_ckpt_ = Clock::now(); }
-
-  /// Writes a checkpoint when leaves remain, the blocks added so far fill whole leaves and
-  /// checkpoint_interval_s has passed since the last one; `t_run` is when this invocation
-  /// started simulating. Root only (elsewhere a no-op).
-  void checkpointIfDue(Clock::time_point t_run) {
-    const auto now = Clock::now();
-    if (root_ && sink.next_block < plan_.blocks() && sink.atLeafBoundary() &&
-        std::chrono::duration<double>(now - last_ckpt_).count() >= opt_.checkpoint_interval_s) {
-      writeCheckpoint(previous_wall + std::chrono::duration<double>(now - t_run).count());
-      last_ckpt_ = Clock::now();
-    }
-  }
-
-  /// The finished synthesis replaces the checkpoint: moments.bin and synthesis.json (root only;
-  /// its error reaches every rank).
-  void writeResults(const MomentAccumulator& acc, const nlohmann::json& info) {
-    onRoot([&]() -> std::string {
-      acc.save(files_.moments.string());
-      writeFileAtomic(files_.info.string(), info.dump(2) + "\n");
-      // The checkpoint is no longer needed.
-      std::error_code ec;
-      fs::remove(files_.checkpoint, ec);
-      for (const auto& f : node_files_) fs::remove(files_.dir / f, ec);
-      return std::string();
-    });
-  }
-
-  MomentTree tree;
-  LeafSink sink;
-  double previous_wall = 0.0;  ///< wall time of earlier (interrupted) invocations
-  double combine_s = 0.0;      ///< this rank's time in the combination of the ranks' parts (MPI)
-
- private:
-  static MomentOptions momentOptions(const SynthesisOptions& opt) {
-    MomentOptions mo;
-    mo.track_fourth_moment = opt.track_fourth_moment;
-    return mo;
-  }
-
-  /// node_<level>_<index>.bin for each node not yet on disk (a node never changes: it is only
-  /// merged into its parent), then checkpoint.json naming them, then the files no longer named.
-  void writeCheckpoint(double wall_so_far) {
-    std::vector<std::string> files;
-    nlohmann::json nodes = nlohmann::json::array();
-    for (const auto& node : tree.nodes()) {
-      const std::string file = "node_" + std::to_string(node.level) + "_" + std::to_string(node.index) + ".bin";
-      if (std::find(node_files_.begin(), node_files_.end(), file) == node_files_.end()) node.acc.save((files_.dir / file).string());
-      nodes.push_back({{"level", node.level}, {"index", node.index}, {"file", file}, {"vectors", node.acc.count()}});
-      files.push_back(file);
-    }
-    nlohmann::json j{{"fingerprint", fingerprint_},
-                     {"assembly", assembly_},
-                     {"next_block", sink.next_block},
-                     {"blocks", plan_.blocks()},
-                     {"next_leaf", tree.end()},
-                     {"leaves", plan_.leaves()},
-                     {"nodes", nodes},
-                     {"failure_list", nlohmann::json::array()},
-                     {"cost_samples", sink.costs},
-                     {"run_wall_samples", sink.run_walls},
-                     {"wall_s", wall_so_far}};
-    for (const auto& f : sink.failures) j["failure_list"].push_back(failureJson(f));
-    writeFileAtomic(files_.checkpoint.string(), j.dump() + "\n");
-    for (const auto& f : node_files_)
-      if (std::find(files.begin(), files.end(), f) == files.end()) fs::remove(files_.dir / f);
-    node_files_ = std::move(files);
-  }
-
-  const SynthesisPlan& plan_;
-  const SynthesisOptions& opt_;
-  const SynthesisFiles& files_;
-  std::string assembly_, fingerprint_;
-  bool root_;
-  std::vector<std::string> node_files_;  ///< the nodes of the current checkpoint
-  Clock::time_point last_ckpt_ = Clock::now();
-};
-
-/// Simulates draw j on worker w (each worker has its own Simulator, made on first use).
-using DrawFn = std::function<DrawOutput(long j, int w)>;
-
-/// Draws [first_draw, end_draw) on this process's threads, each finished block added to `sink`
-/// as soon as its predecessors are (one reducer at a time; a finished block whose predecessor is
-/// still running waits in `pending`). `after_block` runs after each block is added (under the
-/// reducer's lock); `tick` after each draw.
-void reduceOnThreads(const SynthesisPlan& plan, int threads, long first_draw, long end_draw, const DrawFn& draw, LeafSink& sink,
-                     const std::function<void()>& after_block, const std::function<void()>& tick) {
-  std::mutex state_m, reduce_m, progress_m;
-  std::map<long, PendingBlock> pending;  // guarded by state_m
-  auto reduce = [&]() {
-    while (true) {
-      std::unique_lock<std::mutex> rl(reduce_m, std::try_to_lock);
-      if (!rl.owns_lock()) return;
-      while (true) {
-        PendingBlock blk;
-        {
-          std::lock_guard<std::mutex> sl(state_m);
-          auto it = pending.find(sink.next_block);
-          if (it == pending.end() || it->second.remaining > 0) break;
-          blk = std::move(it->second);
-          pending.erase(it);
-        }
-        sink.add(blk);
-        if (after_block) after_block();
-      }
-      rl.unlock();
-      std::lock_guard<std::mutex> sl(state_m);  // a block finished while we were releasing?
-      auto it = pending.find(sink.next_block);
-      if (it == pending.end() || it->second.remaining > 0) return;
-    }
-  };
-  parallelFor(static_cast<std::size_t>(end_draw - first_draw), threads, [&](std::size_t task, int w) {
-    const long j = first_draw + static_cast<long>(task);
-    DrawOutput out = draw(j, w);
-    {
-      std::lock_guard<std::mutex> sl(state_m);
-      const long b = j / plan.B;
-      auto& blk = pending[b];
-      if (blk.draws.empty()) {
-        blk.draws.resize(static_cast<std::size_t>(plan.blockSize(b)));
-        blk.remaining = plan.blockSize(b);
-      }
-      blk.draws[static_cast<std::size_t>(j - b * plan.B)] = std::move(out);
-      --blk.remaining;
-    }
-    reduce();
-    if (tick) {
-      std::lock_guard<std::mutex> pl(progress_m);
-      tick();
-    }
-  });
-  reduce();
-}
-
-/// Failures and run costs of a rank's draws, as doubles (what distributedMap carries).
-std::vector<double> packSink(const LeafSink& s) {
-  DrawOutput d;
-  d.failures = s.failures;
-  d.cost = s.costs;
-  d.run_wall = s.run_walls;
-  return packDraw(d);
-}
-
-/// Several MPI ranks: rounds of whole leaves. Rank r of K takes the round's leaves
-/// [L0 + r·q, L0 + (r + 1)·q), simulates their draws on its threads and builds its part of the
-/// tree; the parts are combined along a binomial tree of ranks (rank r + 2^s sends its nodes to
-/// rank r, s = 0, 1, ...: log2 K steps, each a transfer and the sibling merges it completes) and
-/// the root appends the round's nodes to its tree. Every node is the tree's own, so the moments
-/// are those of one process bit for bit. Rounds (at most kRoundLeaves leaves per rank, so that a
-/// checkpoint comes every few minutes) are balanced: q = ⌈leaves left / (K · rounds left)⌉.
-void reduceOnRanks(const SynthesisPlan& plan, int threads, int ranks, const DrawFn& draw, Reduction& red,
-                   Clock::time_point t_run, const ProgressFn& progress) {
-  constexpr long kRoundLeaves = 8;
-  const Distributed& D = Distributed::instance();
-  const long leaf_draws = plan.LB * plan.B;
-  const long n_leaves = plan.leaves();
-  while (red.sink.next_block < plan.blocks()) {
-    const long L0 = red.sink.next_block / plan.LB, left = n_leaves - L0;
-    const long rounds = (left + kRoundLeaves * ranks - 1) / (kRoundLeaves * ranks);
-    const long q = (left + ranks * rounds - 1) / (ranks * rounds);
-    const long L1 = std::min(n_leaves, L0 + q * ranks);
-    const long lo = std::min(L1, L0 + q * D.rank()), hi = std::min(L1, lo + q);
-    MomentTree part(n_leaves, lo);
-    std::size_t done = static_cast<std::size_t>(std::min(plan.M, L0 * leaf_draws));
-    const auto packed = distributedMap(static_cast<std::size_t>(ranks), threads, [&](std::size_t r, int) -> std::vector<double> {
-      DTWIN_CHECK(static_cast<int>(r) == D.rank(), "a rank's leaves computed on another rank");
-      LeafSink sink(plan, red.sink.moments(), part);
-      const long j0 = std::min(plan.M, lo * leaf_draws), j1 = std::min(plan.M, hi * leaf_draws);
-      reduceOnThreads(plan, threads, j0, j1, draw, sink, nullptr, [&] {
-        if (progress) progress(std::min<std::size_t>(static_cast<std::size_t>(plan.M), done += static_cast<std::size_t>(ranks)),
-                               static_cast<std::size_t>(plan.M));
-      });
-      DTWIN_CHECK(sink.atLeafBoundary(), "a rank's draws end inside a leaf");
-      return packSink(sink);
-    });
-    // The parts, combined along the binomial tree of ranks: after step s, rank r (r divisible by
-    // 2^(s+1)) holds the leaves of ranks r .. r + 2^(s+1) − 1.
-    const auto t_combine = Clock::now();
-    for (int s = 1; s < ranks; s *= 2) {
-      if (D.rank() % (2 * s) == s) {
-        D.sendDoubles(D.rank() - s, part.toVector());
-        break;
-      }
-      if (D.rank() % (2 * s) == 0 && D.rank() + s < ranks) part.append(MomentTree::fromVector(D.receiveDoubles(D.rank() + s)));
-    }
-    if (D.isRoot()) {
-      DTWIN_CHECK(part.first() == L0 && part.end() == L1, "the ranks' parts do not cover the round");
-      red.tree.append(std::move(part));
-    }
-    red.combine_s += secondsSince(t_combine);
-    for (const auto& p : packed) red.sink.addRecords(unpackDraw(p));
-    red.sink.next_block = std::min(plan.blocks(), L1 * plan.LB);
-    if (!D.isRoot()) red.tree = MomentTree(n_leaves, L1);  // the root holds [0, L1)
-    onRoot([&]() -> std::string {
-      red.checkpointIfDue(t_run);
-      return std::string();
-    });
-  }
 }
 
 /// synthesis.json (SynthesisResult::info): provenance, sizes, streams, noise, window, moments,
@@ -742,7 +377,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   const auto t_all = Clock::now();
   opt.validate();
   const SynthesisPlan plan = planSynthesis(study, assembly, post, opt);
-  const bool root = Distributed::instance().isRoot();  // only the root writes files
+  const bool root = isRootProcess(opt.processes);  // only the root writes files
   const SynthesisIdentity id = identifySynthesis(study, assembly, post, opt, plan, root);
   if (root) fs::create_directories(out_dir);
   const SynthesisFiles files(out_dir);
@@ -756,7 +391,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   res.road_library = plan.L;
   res.block = plan.B;
   res.simulations = plan.M * plan.R;
-  if (reuseFinished(files, id.fingerprint, res)) {
+  if (reuseFinished(opt.processes, files, id.fingerprint, res)) {
     res.wall_s = secondsSince(t_all);
     if (progress) progress(static_cast<std::size_t>(plan.M), static_cast<std::size_t>(plan.M));
     return res;
@@ -767,8 +402,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   res.resumed_blocks = red.sink.next_block;
   const long first_draw = std::min(plan.M, red.sink.next_block * plan.B);
   const long todo = plan.M - first_draw;
-  const int ranks = Distributed::instance().size();
-  const int workers = distributedWorkers(static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
+  const int ranks = processCount(opt.processes);
+  const int workers = distributedWorkers(opt.processes, static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
   std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
   const DrawFn draw = [&](long j, int w) {
     auto& sim = sims[static_cast<std::size_t>(w)];
@@ -785,7 +420,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
                       if (progress) progress(++done, static_cast<std::size_t>(plan.M));
                     });
   } else {
-    reduceOnRanks(plan, opt.threads, ranks, draw, red, t_run, progress);
+    reduceOnRanks(*opt.processes, plan, opt.threads, ranks, draw, red, t_run, progress);
   }
   DTWIN_CHECK(red.sink.next_block == plan.blocks(), "blocks left unreduced");
 
@@ -794,7 +429,7 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   if (ranks == 1) {
     acc = red.tree.takeRoot();
   } else {
-    const std::string bytes = onRoot([&]() -> std::string {
+    const std::string bytes = onRoot(opt.processes, [&]() -> std::string {
       const std::vector<std::uint8_t> b = red.tree.root().toBytes();
       return std::string(b.begin(), b.end());
     });

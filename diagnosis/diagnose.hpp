@@ -22,7 +22,8 @@
 //     stated when two effects' evidence is within a factor e^3.
 //  5. Apply (options.apply): effects added in turn, each re-calibrated; the before/after table
 //     and waterfall.
-// diagnose() runs these as named stages (diagnose.cpp: screen, confirm, refine, verdict, apply).
+// diagnose() runs these as named stages (diagnose.cpp; screen, confirm and refine, verdict, apply in
+// diagnose_screen.cpp, diagnose_confirm.cpp, diagnose_verdict.cpp, diagnose_apply.cpp).
 #include <functional>
 #include <optional>
 #include <string>

@@ -32,7 +32,7 @@ struct ScalingRow {
 };
 
 /// The wall time of the synthesis of one assembly on `ranks` single-core ranks (1: one process
-/// with one thread), round by round as classification/synthesis.cpp schedules it.
+/// with one thread), round by round as classification/synthesis_reduction.cpp schedules it.
 ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks);
 
 struct AccumulationBench {

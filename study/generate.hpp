@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/distributed.hpp"
 #include "common/progress.hpp"
 #include "io/measurement.hpp"
 #include "common/run_error.hpp"

@@ -72,7 +72,7 @@ long Ros34pw2Stepper::jacobians() const { return impl_->n_jacs; }
 //   e_y' x s_i, e_z' (column 3 + i)], a_i = wd x s_i + w x (w x s_i) + 2 ud_i w x e_z';
 //   chassis: v = zd e_z (the heave slider), its rotation Jw above, I_b = R diag(ixx, iyy, izz) R^T.
 // A wheel's isotropic inertia only adds iw to the roll and pitch diagonal (e_x . e_y' = 0, and
-// its velocity-product terms vanish). Applied loads (simulator.cpp's force elements): gravity and
+// its velocity-product terms vanish). Applied loads (force_elements.hpp's force elements): gravity and
 // the d'Alembert load -m a(t) e_x at every mass centre; at each hub the tire (traction, 0, Fz)
 // and the traction's moment (0, -(z_hub - h_road) F_x, 0) about it; the strut as the generalised
 // force -F on u_i (a mobility force, as StrutGeometry::apply does for a slider).

@@ -241,7 +241,6 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   classify::FieldClassifyOptions fo;
   fo.command = options.command;
   fo.threads = options.threads;
-  fo.processes = options.processes;
   const classify::FieldClassification c = classifyFieldFile(study, field_path, (out / "synthetic").string(), fo);
   classify::writeFieldClassification(c, (out / "classification").string());
   news.report("classify", 1, 1);

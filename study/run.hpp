@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/distributed.hpp"
 #include "common/progress.hpp"
 #include "io/study.hpp"
 

@@ -1,0 +1,203 @@
+// The confirmation stage of diagnose() (docs/diagnosis.md, step 3): the candidates re-calibrated with
+// their effect, the base refined and the candidates weighed; then the forward stagewise selection.
+#include "diagnosis/diagnose_internal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <set>
+
+#include "common/errors.hpp"
+
+namespace dtwin::diag {
+namespace {
+
+/// The candidates to confirm (docs/diagnosis.md, "Confirmation"), in order: among the ungated ones
+/// with p < screen_alpha, every one whose screening score is within a factor
+/// options.confirm_within of the best, by score; then the best of each kind (effect, parameter,
+/// sensor) not already in, by score; at most options.candidates in all (the work budget).
+std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (cands[i].gate.empty() && cands[i].p_value < options.screen_alpha) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cands[a].score > cands[b].score; });
+  std::vector<std::size_t> chosen;
+  if (order.empty()) return chosen;
+  const double best = cands[order.front()].score;
+  for (std::size_t i : order)
+    if (cands[i].score * options.confirm_within >= best) chosen.push_back(i);
+  std::set<std::string> kinds;
+  for (std::size_t i : chosen) kinds.insert(cands[i].kind);
+  for (std::size_t i : order)
+    if (kinds.insert(cands[i].kind).second) chosen.push_back(i);
+  if (chosen.size() > static_cast<std::size_t>(options.candidates)) chosen.resize(static_cast<std::size_t>(options.candidates));
+  // Another option of a subsystem is not nested in the model: no score can screen it, so it is
+  // always confirmed, beyond the budget.
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (cands[i].kind == "option" && cands[i].gate.empty()) chosen.push_back(i);
+  return chosen;
+}
+
+}  // namespace
+
+/// Confirm (step 3): the candidates chooseConfirmations picks, re-calibrated with their effect.
+/// Returns their indices in res.candidates.
+std::vector<std::size_t> confirm(Diagnosis& d) {
+  auto& cands = d.stage();
+  const std::vector<std::size_t> to_confirm = chooseConfirmations(cands, d.options);
+  const std::string on_top = d.installed.empty() ? "" : " on " + joinEffects(d.installed);
+  // One candidate's calibration failing (e.g. its region found no point inside the bounds) is
+  // reported with the candidate; the diagnosis goes on with the others.
+  auto calibrate = [&](Candidate& c, const std::string& stage, bool full) {
+    try {
+      c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, c.screening_estimate, c.screening_theta, full);
+      return true;
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      c.fit.reset();
+      c.gate = std::string("its confirming calibration failed: ") + e.what();
+      return false;
+    }
+  };
+  // First every candidate's optimum (its evidence), then the full calibration (intervals, the
+  // posterior's comparison) of those that could be the verdict or ambiguous with it.
+  std::vector<std::size_t> optimised;
+  for (std::size_t k = 0; k < to_confirm.size(); ++k) {
+    auto& c = cands[to_confirm[k]];
+    const std::string stage =
+        "confirm " + c.effect + on_top + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
+    if (calibrate(c, stage, false)) optimised.push_back(to_confirm[k]);
+  }
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t i : optimised) best = std::max(best, cands[i].fit->log_evidence);
+  const double margin = std::max(d.options.full_within, d.options.ambiguity_log_evidence);
+  std::vector<std::size_t> confirmed;
+  for (std::size_t i : optimised) {
+    auto& c = cands[i];
+    c.evidence_gap = best - c.fit->log_evidence;
+    // On top of causes already named (a later stage of the stagewise selection) the evidence
+    // decides alone; only the final model's intervals are reported, so it alone is calibrated in
+    // full, once the selection ends (furtherCauses).
+    if (d.installed.empty() && c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + " in full", true)) continue;
+    c.confirmed = true;
+    c.finding = d.findingOf(c.effect, *c.fit);
+    // Its own parameters all at their off values: the candidate adds nothing; an SSE below the
+    // reference's then comes from polishing the reference's values further, not from it.
+    const auto& spec = d.spec(c.effect);
+    if (spec.addsParameters()) {
+      const auto own = d.parametersOf(c.effect, *c.fit);
+      c.inert = !own.empty() && std::all_of(own.begin(), own.end(), [&](const EffectParameter& p) {
+        for (const auto& ps : spec.parameters)
+          if (c.effect + "." + ps.name == p.name || ps.name == p.name || (spec.calibrated_names.size() == 1 && spec.calibrated_names[0] == p.name))
+            return std::abs(p.optimum - ps.default_value) <= 1e-6 * (ps.prior_upper - ps.prior_lower);
+        return false;
+      });
+    }
+    confirmed.push_back(i);
+  }
+  return confirmed;
+}
+
+namespace {
+
+/// The base polished again from every strongly favoured candidate's base parameters (its effect
+/// off); when that fits better than the base optimum, the base is re-calibrated from there.
+void refineBase(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
+  auto& res = d.res;
+  std::vector<double> better;
+  double better_sse = res.base.sse_min - 1.0;  // below the integrator's noise in the SSE: no change
+  for (std::size_t i : to_confirm) {
+    const auto& c = res.candidates[i];
+    if (c.fit->bic - res.base.bic >= -d.options.bic_strong) continue;
+    if (!d.spec(c.effect).addsParameters()) continue;  // not the base's values plus its own
+    auto th = d.optima.at(joinEffects({c.effect}));
+    th.resize(d.optima.at("base").size());
+    d.report("refine base from " + c.effect, 0, 1);
+    const auto p = calib::polishLeastSquares(*d.base_obj, th, {d.options.threads});
+    d.report("refine base from " + c.effect, 1, 1);
+    if (p.sse < better_sse) {
+      better_sse = p.sse;
+      better = p.theta;
+      res.base_refined_from = c.effect;
+    }
+  }
+  if (!better.empty()) {
+    res.base_unrefined_sse = res.base.sse_min;
+    res.base = d.calibrateWith({}, "base (refined)", {}, better);
+  }
+}
+
+}  // namespace
+
+/// Refine (the end of step 3): the evidence for an effect must not come from a base optimum the optimiser
+/// missed. The base is polished again from every strongly favoured candidate's base parameters
+/// (its effect switched off); when that fits better, the base is re-calibrated from there and
+/// becomes the reference of every ΔBIC and of the lack-of-fit figures (first stage only: a later
+/// stage's reference is the previous stage's confirmed fit). Then each confirmed candidate is
+/// weighed against the stage's reference (ΔBIC, share of the base's excess residual it removes,
+/// held-out change) and the stage's candidates are ranked: confirmed by log evidence, then by
+/// score, gated last.
+void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
+  auto& res = d.res;
+  auto& cands = d.stage();
+  if (d.installed.empty()) refineBase(d, to_confirm);
+  const Figures& ref = d.installed.empty() ? res.base : *d.reference;
+  const Comparison& base = res.base.comparison;
+  const double base_excess = base.lack_of_fit - static_cast<double>(base.lack_of_fit_dof);
+  for (std::size_t i : to_confirm) {
+    auto& c = cands[i];
+    c.delta_bic = c.fit->bic - ref.bic;
+    c.explained =
+        base_excess > 0 ? std::clamp((ref.comparison.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess, 0.0, 1.0) : 0.0;
+    if (c.fit->holdout && ref.holdout && ref.holdout->systematic_rms_sd > 0)
+      c.holdout_change = c.fit->holdout->systematic_rms_sd / ref.holdout->systematic_rms_sd;
+  }
+  std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
+    auto cls = [](const Candidate& c) { return c.confirmed ? 0 : (c.gate.empty() ? 1 : 2); };
+    if (cls(a) != cls(b)) return cls(a) < cls(b);
+    if (a.confirmed) return a.fit->log_evidence > b.fit->log_evidence;
+    return a.score > b.score;
+  });
+}
+
+/// More than one cause (docs/diagnosis.md, step 4): forward stagewise selection. While the model
+/// with the causes named so far leaves a significant lack of fit and fewer than options.causes
+/// are named, they are installed, every other candidate is screened and confirmed on top of them
+/// (ΔBIC against the model with them), and the best strong one becomes the next cause.
+void furtherCauses(Diagnosis& d) {
+  auto& res = d.res;
+  while (static_cast<int>(res.causes.size()) < d.options.causes && res.causes.back().fit.comparison.lack_of_fit_p < d.options.lack_of_fit_alpha) {
+    d.installed.push_back(res.causes.back().name);
+    d.reference = &res.causes.back().fit;
+    std::vector<std::string> catalogue;
+    for (const auto& e : d.catalogue)
+      if (std::find(d.installed.begin(), d.installed.end(), e) == d.installed.end()) catalogue.push_back(e);
+    d.catalogue = catalogue;
+    res.further.push_back({d.installed, {}});
+    screen(d);
+    refine(d, confirm(d));
+    explainStage(d, d.reference->comparison);
+    const auto named = strongOf(d.stage(), d.options);
+    if (named.empty()) break;
+    res.causes.push_back(causeOf(*named.front(), alikeOf(named, d.options)));
+  }
+  // Every cause's parameters and finding from the model with all of them (a joint calibration),
+  // calibrated in full (its intervals; a later stage stops its candidates at their optimum).
+  if (!res.causes.back().fit.full) {
+    const std::vector<std::string> effects = res.causes.back().fit.effects;
+    res.causes.back().fit = d.calibrateWith(effects, "final " + joinEffects(effects) + " in full", {}, {}, true);
+  }
+  const Figures& all = res.causes.back().fit;
+  for (auto& k : res.causes) {
+    k.parameters = d.parametersOf(k.name, all);
+    k.finding = d.findingOf(k.name, all);
+  }
+  // The proposal (an unexplained verdict) linearises the base model again.
+  d.installed.clear();
+  d.reference = nullptr;
+  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
+}
+
+}  // namespace dtwin::diag

@@ -1,0 +1,412 @@
+// Private to twin/ (not installed): the Simbody force elements of the vehicle (tires, struts, axle
+// couplings, chassis forces, gravity with the frame's acceleration) and the per-run data they read.
+// Included by simulator.cpp alone, which is kept out of the unity batches (CMakeLists.txt): SimTK is open.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <Simbody.h>
+
+#include "twin/simulator.hpp"
+
+namespace dtwin {
+using namespace SimTK;
+
+// ----------------------------------------------------------------------- force elements
+namespace {
+
+/// Per-run data the force elements read (owned by the Simulator, set before each run).
+struct RunContext {
+  const double* p = nullptr;
+  const Road* road = nullptr;
+  SpeedProfile speed;
+  double traction_per_wheel_per_accel = 0.0;  ///< M/4: traction share per unit acceleration
+  /// The chassis's heave, pitch and roll coordinates at the start (setEquilibrium): ChassisForce
+  /// effects read the motion from there.
+  double heave0 = 0.0, pitch0 = 0.0, roll0 = 0.0;
+  /// Run slots of the road signal's gain and delay (Model::roadGainSlot, roadDelaySlot).
+  std::size_t gain_slot = 0, delay_slot = 0;
+};
+
+struct TireEval {
+  double fz = 0, rho = 0, rho_dot = 0, road_h = 0, x_road = 0;
+  double hub_above_road = 0;  ///< hub height above the (effective) road: where traction acts
+};
+
+/// The tire at one corner: shared by the Simbody force element and the output reconstruction.
+struct TireCorner {
+  const Model* model = nullptr;
+  int corner = 0;
+  std::size_t p0 = 0, np = 0;  // contiguous tire slots
+  std::size_t r0 = 0;          // index of unloaded_radius_m within the tire's parameters
+  std::vector<std::pair<const Effect*, std::size_t>> filters;  // tire-input effects, first slot
+  std::vector<std::pair<const Effect*, std::size_t>> scalers;  // tire-force effects, first slot
+  std::vector<std::pair<const Effect*, std::size_t>> loads;    // tire-load effects, first slot
+
+  /// Where the road signal is read for a wheel at road distance x_road (the delay's read-ahead,
+  /// see eval) and the forward speed of that point along the signal (hub_xd: the hub's own).
+  static void signalPoint(const RunContext& c, double t, double x_road, double hub_xd, double& x, double& contact_speed) {
+    const double delay = c.p[c.delay_slot];
+    x = x_road;
+    if (delay == 0.0) {
+      contact_speed = c.speed.speed(t) + hub_xd;
+      return;
+    }
+    x += c.speed.distance(t + delay) - c.speed.distance(t);
+    contact_speed = c.speed.speed(t + delay) + hub_xd;
+  }
+  /// The road signal's vertical velocity under the wheel (gain and delay applied, before
+  /// tire-input effects) [m/s]: what a road-velocity feed-forward reads.
+  double roadRate(const RunContext& c, double t, double hub_x, double hub_xd) const {
+    double x = 0.0, contact_speed = 0.0;
+    signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a, hub_xd, x, contact_speed);
+    return c.p[c.gain_slot] * c.road->sample(cornerTrack(corner), x).slope * contact_speed;
+  }
+  TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
+    TireEval e;
+    const ParamValues p(c.p + p0, np);
+    const double v = c.speed.speed(t);
+    e.x_road = c.speed.distance(t) + hub_x - model->vehicle().a;
+    const Track tr = cornerTrack(corner);
+    // The road signal's delay d relative to the measured channels (positive: logged late) and its
+    // gain g: the wheel meets g h(x + s(t + d) - s(t)), read ahead by the distance travelled in d
+    // (docs/model.md, "The road signal's gain and delay"). At d = 0 and g = 1 exactly the road.
+    const double gain = c.p[c.gain_slot];
+    double x = 0.0, contact_speed = 0.0;
+    signalPoint(c, t, e.x_road, hub_xd, x, contact_speed);
+    RoadSample rs = c.road->sample(tr, x);
+    e.road_h = rs.height_m;  // the road under the wheel, before tire-input effects
+    for (auto& [eff, s] : filters) rs = eff->filterRoad(*c.road, tr, x, ParamValues(c.p + s, eff->parameters().size()));
+    if (gain != 1.0) {
+      rs.height_m *= gain;
+      rs.slope *= gain;
+      e.road_h *= gain;
+    }
+    const double R0 = p[r0];
+    e.hub_above_road = hub_z - rs.height_m;
+    e.rho = R0 - e.hub_above_road;
+    const double road_rate = rs.slope * contact_speed;
+    e.rho_dot = road_rate - hub_zd;
+    TireState ts;
+    ts.deflection_m = e.rho;
+    // Damping acts on the hub's vertical velocity, -dz_hub/dt (paper eq. 2, "- b z'"). With
+    // single-point contact the full deflection rate would carry the road slope times the speed
+    // (56 m/s over the 100 mm bump): an unphysical damping spike a real tire never sees.
+    ts.deflection_rate_mps = -hub_zd;
+    ts.wheel_speed_radps = v / (R0 - std::max(0.0, e.rho) / 3.0);
+    ts.forward_speed_mps = v;
+    ts.fx_N = c.traction_per_wheel_per_accel * c.speed.accel(t);
+    ts.road_height_m = e.road_h;
+    ts.road_rate_mps = road_rate;
+    ts.time_s = t;
+    ts.front = isFront(corner);
+    e.fz = model->tire().calcNormalForce(ts, p);
+    for (auto& [eff, s] : scalers) e.fz *= eff->tireForceFactor(ts, ParamValues(c.p + s, eff->parameters().size()));
+    if (!loads.empty() && e.rho > 0) {  // added at a wheel in contact; the tire cannot pull
+      ts.normal_force_N = e.fz;
+      double add = 0.0;
+      for (auto& [eff, s] : loads) add += eff->calcTireLoad(ts, ParamValues(c.p + s, eff->parameters().size()));
+      e.fz = std::max(0.0, e.fz + add);
+    }
+    return e;
+  }
+};
+
+class TireElement : public Force::Custom::Implementation {
+ public:
+  TireElement(const RunContext* ctx, TireCorner tc, MobilizedBody wheel) : ctx_(ctx), tc_(std::move(tc)), wheel_(wheel) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    const Vec3 p = wheel_.getBodyOriginLocation(s), v = wheel_.getBodyOriginVelocity(s);
+    const double t = s.getTime();
+    const TireEval e = tc_.eval(*ctx_, t, p[0], v[0], p[2], v[2]);
+    const double fx = ctx_->traction_per_wheel_per_accel * ctx_->speed.accel(t);
+    SpatialVec& F = bodyForces[wheel_.getMobilizedBodyIndex()];
+    F[1] += Vec3(fx, 0, e.fz);
+    // Traction acts at the contact point, a height (hub_z - road) below the hub.
+    F[0] += Vec3(0, -e.hub_above_road * fx, 0);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  TireCorner tc_;
+  MobilizedBody wheel_;
+};
+
+struct StrutGeometry {
+  MobilizedBody upper, lower;
+  Vec3 st_upper, st_lower;
+  /// When `lower` is a Slider on `upper` whose axis is upper's z through st_upper, the strut
+  /// length change is exactly the slider coordinate: read q, u, u-dot from the State directly
+  /// (no kinematics through Simbody's body caches), and apply the force as a mobility force.
+  bool is_slider = false;
+  QIndex qi{};
+  UIndex ui{};
+  struct Kin {
+    double q, qd;
+  };
+  /// A solid axle's spring seat: the axle hangs on a Slider (heave along the chassis z) and a
+  /// Pin (roll about the chassis x) with the seat at lateral offset `seat_y` on the axle. The seat
+  /// moves along the chassis z by q_h + y sin(phi): read q, u from the State. The force is applied
+  /// as the generalized forces of that pair (virtual work of a force along the chassis z).
+  bool is_axle_seat = false;
+  QIndex qh{}, qr{};
+  UIndex uh{}, ur{};
+  double seat_y = 0;
+  Kin kin(const State& s) const {
+    if (is_slider) return {s.getQ()[qi], s.getU()[ui]};
+    if (is_axle_seat) {
+      const double phi = s.getQ()[qr];
+      return {s.getQ()[qh] + seat_y * std::sin(phi), s.getU()[uh] + seat_y * std::cos(phi) * s.getU()[ur]};
+    }
+    const Vec3 pu = upper.findStationLocationInGround(s, st_upper), pl = lower.findStationLocationInGround(s, st_lower);
+    const Vec3 vu = upper.findStationVelocityInGround(s, st_upper), vl = lower.findStationVelocityInGround(s, st_lower);
+    const UnitVec3 z = upper.getBodyRotation(s).z();
+    const Vec3 w = upper.getBodyAngularVelocity(s);
+    const Vec3 d = pl - pu;
+    return {~d * Vec3(z), ~(vl - vu) * Vec3(z) + ~d * (w % Vec3(z))};
+  }
+  double accel(const State& s) const {
+    if (is_slider) return s.getUDot()[ui];
+    if (is_axle_seat) {
+      const double phi = s.getQ()[qr], w = s.getU()[ur];
+      return s.getUDot()[uh] + seat_y * (std::cos(phi) * s.getUDot()[ur] - std::sin(phi) * w * w);
+    }
+    const Vec3 au = upper.findStationAccelerationInGround(s, st_upper), al = lower.findStationAccelerationInGround(s, st_lower);
+    return ~(al - au) * Vec3(upper.getBodyRotation(s).z());
+  }
+  /// Applies the strut force F (positive pushes the ends apart along upper's z).
+  void apply(const State& s, double F, Vector_<SpatialVec>& bodyForces, Vector& mobilityForces) const {
+    if (is_slider) {
+      mobilityForces[ui] -= F;  // compression positive: the force pushes the slider back down
+      return;
+    }
+    if (is_axle_seat) {
+      mobilityForces[uh] -= F;
+      mobilityForces[ur] -= F * seat_y * std::cos(s.getQ()[qr]);
+      return;
+    }
+    const Vec3 z(upper.getBodyRotation(s).z());
+    upper.applyForceToBodyPoint(s, st_upper, F * z, bodyForces);
+    lower.applyForceToBodyPoint(s, st_lower, -F * z, bodyForces);
+  }
+  /// Call after realizeTopology for solid-axle spring seats (`slider` carries `pin`).
+  void bindAxleSeat(const State& s, const MobilizedBody& slider, const MobilizedBody& pin, double y) {
+    is_axle_seat = true;
+    qh = slider.getFirstQIndex(s);
+    uh = slider.getFirstUIndex(s);
+    qr = pin.getFirstQIndex(s);
+    ur = pin.getFirstUIndex(s);
+    seat_y = y;
+  }
+  /// Call after realizeTopology for slider struts.
+  void bindSlider(const State& s) {
+    is_slider = true;
+    qi = lower.getFirstQIndex(s);
+    ui = lower.getFirstUIndex(s);
+  }
+};
+
+class StrutElement : public Force::Custom::Implementation {
+ public:
+  /// `filter_states`: allocate one auxiliary state (a Z of `sub`) per installed StrutFilter effect.
+  StrutElement(const RunContext* ctx, const Model* m, const StrutLaw* law, StrutGeometry g, std::size_t p0, int preload_slot,
+               double preload, bool with_effects, bool filter_states = false, SubsystemIndex sub = SubsystemIndex())
+      : ctx_(ctx), m_(m), law_(law), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects), sub_(sub) {
+    if (with_effects && filter_states)
+      for (std::size_t i = 0; i < m->effects().size(); ++i)
+        if (m->effects()[i]->kind() == EffectKind::StrutFilter) filter_effects_.push_back(i);
+    if (with_effects)
+      for (const auto& e : m->effects()) {
+        const bool strut = e->kind() == EffectKind::Strut || e->kind() == EffectKind::StrutFilter;
+        context_ = context_ || strut;
+        motion_ = motion_ || (strut && e->needsMotion());
+      }
+  }
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
+    const auto k = g_.kin(s);
+    const StrutState ss = strutState(s, k);
+    double F = force(ss);
+    if (!filter_effects_.empty()) {
+      const Vector& z = s.getZ(sub_);
+      for (std::size_t j = 0; j < filter_effects_.size(); ++j) {
+        const std::size_t i = filter_effects_[j];
+        F += m_->effects()[i]->calcFilteredStrutForce(ss, z[zi_[j]], effectValues(i));
+      }
+    }
+    g_.apply(s, F, bodyForces, mobilityForces);
+  }
+  void realizeTopology(State& s) const override {
+    zi_.clear();
+    for (std::size_t j = 0; j < filter_effects_.size(); ++j) zi_.push_back(s.allocateZ(sub_, Vector(1, 0.0)));
+  }
+  /// The auxiliary states' derivatives (z = 0 at rest: the equilibrium start needs no setting).
+  void realizeAcceleration(const State& s) const override {
+    if (filter_effects_.empty()) return;
+    const StrutState ss = strutState(s, g_.kin(s));
+    const Vector& z = s.getZ(sub_);
+    Vector& zd = s.updZDot(sub_);
+    for (std::size_t j = 0; j < filter_effects_.size(); ++j) {
+      const std::size_t i = filter_effects_[j];
+      zd[zi_[j]] = m_->effects()[i]->calcFilterRate(ss, z[zi_[j]], effectValues(i));
+    }
+  }
+  /// Binds slider struts to their state indices (after realizeTopology).
+  void bind(const State& s) {
+    if (bind_slider_) g_.bindSlider(s);
+    if (!seat_slider_.isEmptyHandle()) g_.bindAxleSeat(s, seat_slider_, seat_pin_, seat_y_);
+  }
+  bool bind_slider_ = false;
+  MobilizedBody seat_slider_, seat_pin_;
+  double seat_y_ = 0;
+  /// A main strut's axle partner (the other main strut on its axle) and axle: the context its
+  /// effects read (StrutState's time, speed and other_*). Unset on interface elements.
+  const StrutGeometry* partner_ = nullptr;
+  bool front_ = true;
+  /// A main strut's tire and wheel: the road signal under it, for effects that read the motion.
+  const TireCorner* tire_ = nullptr;
+  MobilizedBody wheel_;
+  StrutState strutState(const State& s, const StrutGeometry::Kin& k) const {
+    const double* p = ctx_->p;
+    StrutState ss;
+    ss.deflection_m = k.q;
+    ss.rate_mps = k.qd;
+    ss.preload_N = preload_slot_ >= 0 ? p[preload_slot_] : preload_;
+    ss.base_stiffness = p[p0_];
+    ss.base_damping = p[p0_ + 1];
+    if (context_ && partner_) {
+      const auto o = partner_->kin(s);
+      ss.other_deflection_m = o.q;
+      ss.other_rate_mps = o.qd;
+      ss.time_s = s.getTime();
+      ss.speed_mps = ctx_->speed.speed(ss.time_s);
+      ss.front = front_;
+      if (motion_) {
+        ss.body_velocity_mps = g_.upper.findStationVelocityInGround(s, g_.st_upper)[2];
+        ss.wheel_velocity_mps = g_.lower.findStationVelocityInGround(s, g_.st_lower)[2];
+        ss.road_velocity_mps =
+            tire_->roadRate(*ctx_, ss.time_s, wheel_.getBodyOriginLocation(s)[0], wheel_.getBodyOriginVelocity(s)[0]);
+      }
+    }
+    return ss;
+  }
+  ParamValues effectValues(std::size_t i) const {
+    return ParamValues(ctx_->p + m_->effectSlots()[i][0], m_->effects()[i]->parameters().size());
+  }
+  /// Strut force without the StrutFilter effects (they need the State's auxiliary variables).
+  double force(const StrutState& ss) const {
+    const double* p = ctx_->p;
+    double F = law_->calcForce(ss, ParamValues(p + p0_, law_->parameters().size()));
+    if (effects_) {
+      const auto& effs = m_->effects();
+      for (std::size_t i = 0; i < effs.size(); ++i)
+        if (effs[i]->kind() == EffectKind::Strut)
+          F += effs[i]->calcStrutForce(ss, ParamValues(p + m_->effectSlots()[i][0], effs[i]->parameters().size()));
+    }
+    return F;
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  const Model* m_;
+  const StrutLaw* law_;
+  StrutGeometry g_;
+  std::size_t p0_;
+  int preload_slot_;
+  double preload_;
+  bool effects_;
+  bool context_ = false;  ///< a strut effect is installed: fill StrutState's context
+  bool motion_ = false;   ///< ... and one reads the absolute motion (Effect::needsMotion)
+  SubsystemIndex sub_;
+  std::vector<std::size_t> filter_effects_;  // indices into the model's effects
+  mutable std::vector<ZIndex> zi_;           // their auxiliary states (set in realizeTopology)
+};
+
+/// An AxleCoupling effect on one axle: a force pair on the left and right main struts computed
+/// from both deflections (kin()/apply() of the two corners' StrutGeometry: MacPherson sliders or
+/// solid-axle spring seats). Installed only when such an effect is.
+class AxleCouplingElement : public Force::Custom::Implementation {
+ public:
+  AxleCouplingElement(const RunContext* ctx, const Effect* eff, std::size_t slot, const StrutGeometry* left,
+                      const StrutGeometry* right, bool front)
+      : ctx_(ctx), eff_(eff), slot_(slot), left_(left), right_(right), front_(front) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
+    const auto l = left_->kin(s), r = right_->kin(s);
+    AxleState a;
+    a.q_left = l.q;
+    a.q_right = r.q;
+    a.v_left = l.qd;
+    a.v_right = r.qd;
+    a.front = front_;
+    a.time_s = s.getTime();
+    a.speed_mps = ctx_->speed.speed(a.time_s);
+    const double F = eff_->calcAxleForce(a, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
+    if (F == 0.0) return;
+    left_->apply(s, F, bodyForces, mobilityForces);
+    right_->apply(s, -F, bodyForces, mobilityForces);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  const Effect* eff_;
+  std::size_t slot_;
+  const StrutGeometry *left_, *right_;  // the Impl's struts (bound after realizeTopology)
+  bool front_;
+};
+
+/// A ChassisForce effect: a vertical force on the chassis at its mass centre (its body origin),
+/// from the heave, pitch and roll coordinates relative to the start. Installed only when such an
+/// effect is.
+class ChassisForceElement : public Force::Custom::Implementation {
+ public:
+  /// `heave`: the chassis's vertical Slider; `chassis`: its Universal (q0 roll, q1 pitch).
+  ChassisForceElement(const RunContext* ctx, const Effect* eff, std::size_t slot, MobilizedBody heave, MobilizedBody chassis)
+      : ctx_(ctx), eff_(eff), slot_(slot), heave_(heave), chassis_(chassis) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    ChassisState c;
+    c.heave_m = heave_.getOneQ(s, 0) - ctx_->heave0;
+    c.heave_rate_mps = heave_.getOneU(s, 0);
+    c.pitch_rad = chassis_.getOneQ(s, 1) - ctx_->pitch0;
+    c.roll_rad = chassis_.getOneQ(s, 0) - ctx_->roll0;
+    c.time_s = s.getTime();
+    c.speed_mps = ctx_->speed.speed(c.time_s);
+    const double F = eff_->calcChassisForce(c, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
+    if (F != 0.0) bodyForces[chassis_.getMobilizedBodyIndex()][1] += Vec3(0, 0, F);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  const Effect* eff_;
+  std::size_t slot_;
+  MobilizedBody heave_, chassis_;
+};
+
+/// Gravity plus the d'Alembert load of the accelerating vehicle frame: m (-g z - a(t) x) at every
+/// massive body's mass centre (each body's origin is its mass centre). One element instead of
+/// Simbody's UniformGravity, which walks every body's mass properties on each evaluation.
+class BodyLoadElement : public Force::Custom::Implementation {
+ public:
+  BodyLoadElement(const RunContext* ctx, const std::vector<std::pair<MobilizedBody, double>>& bodies, double g) : ctx_(ctx), g_(g) {
+    for (auto& [b, m] : bodies) bodies_.push_back({b.getMobilizedBodyIndex(), m});
+  }
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    const double a = ctx_->speed.accel(s.getTime());
+    for (auto& [i, m] : bodies_) bodyForces[i][1] += Vec3(-m * a, 0, -m * g_);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  double g_;
+  std::vector<std::pair<MobilizedBodyIndex, double>> bodies_;
+};
+
+}  // namespace
+
+}  // namespace dtwin

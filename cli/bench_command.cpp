@@ -169,6 +169,9 @@ CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*
       ->capture_default_str()->check(CLI::PositiveNumber)->needs(acc);
   auto* scen = b->add_option("--scenario", cfg->scenario, "With --user-effect: the study's scenario of the whole runs timed")->capture_default_str();
   scen->needs("--user-effect");
+  addExamples(b, {
+               "twin bench --study data/studies/demo.toml --assembly M3 --runs 1",
+               "twin bench --import 20000 --runs 1"});
 
   return {b, [cfg] {
             if (cfg->import_rows > 0) {

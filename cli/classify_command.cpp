@@ -75,6 +75,8 @@ CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line
       ->check(CLI::Range(0, 1024));
   c->add_option("--out", cfg->out, "Output folder: records.csv and summary.json")->required();
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addExamples(c, {
+               "twin classify --study data/studies/demo.toml --field out/field.csv --synthetic out/synthetic --out out/classification"});
   CommandHandle handle{c, [cfg, command_line] { return runClassify(*cfg, command_line); }, {}};
   // Library errors name FieldClassifyOptions fields ("field_classify.threshold"); the fields whose
   // flag is not "--" + the field with '_' as '-':

@@ -30,9 +30,16 @@ struct CommandHandle {
 struct CommandEntry {
   CommandHandle (*add)(CLI::App& root, const std::string& command_line);
   bool distributed = false;
+  const char* group = "";  ///< the heading `twin --help` lists the command under (a task, kCommandGroups)
+  const char* task = "";   ///< one line: what the command is for, as `twin --help` shows it
+  bool resumable = false;  ///< a rerun of the same command continues where a stopped one ended
 };
+/// The headings of `twin --help`, in order.
+inline const char* const kCommandGroups[] = {"Simulate, calibrate and choose an assembly", "Measured drives", "Tools"};
 /// Every subcommand, in the order `twin --help` lists them (cli/command_registry.cpp).
 const Registry<CommandEntry>& commandRegistry();
+/// The grouped overview `twin --help`, `twin help` and `twin` alone print.
+std::string topLevelHelp();
 /// The subcommand `name` on `root`, with its registry description.
 CLI::App* addSubcommand(CLI::App& root, const std::string& name);
 
@@ -56,6 +63,12 @@ void overrideSize(Study& study, const std::string& field, long value, const std:
 /// `stages` (prefixes: "lab", "field", "calibrate", "calibrate M1", "synthesize", ...), times
 /// `repeat`, exceeds the limits of io/work.hpp, unless `force`.
 void checkCommandWork(const Study& study, const std::vector<std::string>& stages, bool force, double repeat = 1);
+/// "twin: note: `OLD` is deprecated; use `NEW`" on stderr (by the root rank): an older shape of
+/// a command line that is still accepted, and gives the same results.
+void deprecationNote(const std::string& old_shape, const std::string& new_shape);
+/// The "Examples:" section at the end of a command's --help: one command a line, each runnable as
+/// written from the root of the source tree (tests/cli/help_examples_test.cpp runs them).
+void addExamples(CLI::App* app, const std::vector<std::string>& examples);
 /// True when stderr is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
 /// Progress is shown unless --quiet, and only by the root rank under MPI (cli/progress.hpp).
@@ -86,5 +99,7 @@ CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line)
 CommandHandle addImportCommand(CLI::App& root, const std::string& command_line);
 /// `twin diagnose`: which catalogue effect the assembly misses; --apply adds effects (diagnosis/diagnose.hpp).
 CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line);
+/// `twin help [COMMAND [SUBCOMMAND]]`: the overview, or a command's help (as `twin COMMAND --help`).
+CommandHandle addHelpCommand(CLI::App& root, const std::string& command_line);
 
 }  // namespace dtwin::cli

@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -63,6 +64,16 @@ std::string joinArgs(int argc, char** argv) {
   std::string s;
   for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
   return s;
+}
+
+void deprecationNote(const std::string& old_shape, const std::string& new_shape) {
+  if (isRootRank()) std::fprintf(stderr, "twin: note: `%s` is deprecated; use `%s`\n", old_shape.c_str(), new_shape.c_str());
+}
+
+void addExamples(CLI::App* app, const std::vector<std::string>& examples) {
+  std::string text = "Examples:";
+  for (const auto& e : examples) text += "\n  " + e;
+  app->footer(text);
 }
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }

@@ -243,6 +243,12 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
   f->add_option("--channel", field->channel, "Channel to keep")->capture_default_str();
   f->add_option("--window", field->window, "Time window kept, T0,T1 [s] (default 10,15)")->delimiter(',')->expected(2);
 
+  addExamples(g, {"twin generate lab --study data/studies/demo.toml --repetitions 3 --out out/lab.csv",
+                  "twin generate field --study data/studies/demo.toml --runs 20 --window 10,10.05 --out out/field.csv",
+                  "twin generate lab --study data/studies/demo.toml --scenario diag_bump --times all --rate 100 --repetitions 2 "
+                  "--channels hub_force_fl_N,hub_force_fr_N --hidden-effect bump_stop:stiffness=5e6,gap_m=0.02 --out out/diag_bump.csv"});
+  addExamples(l, {"twin generate lab --study data/studies/demo.toml --repetitions 3 --out out/lab.csv"});
+  addExamples(f, {"twin generate field --study data/studies/demo.toml --runs 20 --window 10,10.05 --out out/field.csv"});
   CommandHandle h;
   h.app = g;
   h.field_flags = {{"channels", "--channels"}, {"window", "--window"}, {"rate_hz", "--rate"}, {"hidden_effects", "--hidden-effect"},

@@ -16,7 +16,7 @@ namespace dtwin::cli {
 namespace {
 
 struct ImportConfig {
-  std::string log, map, out, study = defaultStudy(), scenario = "drive";
+  std::string log, positional, map, out, study = defaultStudy(), scenario = "drive";
   std::string time, speed, road, road_left, road_right, separator;
   std::vector<std::string> channels;
   double highpass_hz = 0.0, speed_lowpass_hz = 0.0;
@@ -74,7 +74,13 @@ ImportMapping mappingFromFlags(const ImportConfig& cfg) {
   return m;
 }
 
-int runImport(const ImportConfig& cfg, const std::string& command) {
+int runImport(ImportConfig cfg, const std::string& command) {
+  if (!cfg.positional.empty()) {  // the older shape `twin import FILE`
+    if (!cfg.log.empty()) throw InputError("--log", "give the logger's CSV once (--log FILE)");
+    deprecationNote("twin import FILE", "twin import --log FILE");
+    cfg.log = cfg.positional;
+  }
+  if (cfg.log.empty()) throw InputError("--log", "is required (the logger's CSV file)");
   const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() || !cfg.road_left.empty() ||
                      !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
   if (!cfg.map.empty() && flags) throw InputError("--map", "give the mapping either in the file or as flags (--time, --speed, --road, --channel), not both");
@@ -117,7 +123,8 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
 CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) {
   auto cfg = std::make_shared<ImportConfig>();
   auto* c = addSubcommand(root, "import");
-  c->add_option("log", cfg->log, "The logger's CSV file")->required();
+  c->add_option("--log", cfg->log, "The logger's CSV file");
+  c->add_option("log_file", cfg->positional, "Deprecated: give --log FILE");
   c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv, study.toml")->required();
   c->add_option("--map", cfg->map, "Mapping file (TOML, [import] table); or give the mapping as the flags below");
   c->add_option("--study", cfg->study, "The study the drive joins (its vehicle, assemblies, sensors)")->capture_default_str();
@@ -139,6 +146,8 @@ CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) 
   c->add_option("--run-in", cfg->run_in, "Seconds of the log simulated before the window, for the model to settle (default 10)")
       ->check(CLI::Range(0.0, 3600.0));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addExamples(c, {
+               "twin import --log data/drives/stop_and_go.csv --map data/drives/stop_and_go_map.toml --out out/drive"});
   return {c, [cfg, command_line] { return runImport(*cfg, command_line); }, {}};
 }
 

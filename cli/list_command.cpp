@@ -145,6 +145,9 @@ CommandHandle addListCommand(CLI::App& root, const std::string& /*command_line*/
   l->add_flag("--parameters", list_params, "Also list every parameter with its value, unit and source");
   l->add_flag("--registries", cfg->registries, "Instead: every registry of the twin (laws, effects, roads, sensors, integrators, commands) as Markdown "
                                                 "tables, as docs/registries.md holds them");
+  addExamples(l, {
+               "twin list --study data/studies/paper.toml",
+               "twin list --study data/studies/demo.toml --parameters"});
 
   return {l, [cfg] { return cfg->registries ? runRegistries() : runList(cfg->study, cfg->params); }};
 }

@@ -134,6 +134,9 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
   c->add_flag("--no-fourth-moment", cfg->no_fourth, "Do not accumulate the moments Ledoit-Wolf needs");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   addForceOption(c, cfg->force);
+  addExamples(c, {
+               "twin synthesize --study data/studies/demo.toml --calibration out/calibration --assembly M3 --draws 4 --roads 2 --library 8 --window 10,10.05 --out out/synthetic",
+               "twin synthesize --study data/studies/demo.toml --calibration out/calibration --assembly M4 --draws 4 --roads 2 --library 8 --window 10,10.05 --out out/synthetic"});
   CommandHandle handle{c, [cfg, command_line] { return runSynthesize(*cfg, command_line); }, {}};
   // Library errors name SynthesisOptions fields ("synthesis.road_library"); the fields whose flag
   // is not "--" + the field with '_' as '-':

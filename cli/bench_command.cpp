@@ -150,7 +150,7 @@ CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*
   auto* b = addSubcommand(root, "bench");
   b->add_option("--study", bench_study, "Study file (TOML)")->capture_default_str();
   b->add_option("--runs", bench_runs, "Timed runs per case (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
-  b->add_option("--assembly", bench_ids, "Only these assemblies")->delimiter(',');
+  b->add_option("--assembly", bench_ids, "Only these assemblies (comma separated or repeated)")->delimiter(',');
   b->add_flag("--markdown", bench_md, "Print a markdown table (for docs/performance.md)");
   b->add_option("--import", cfg->import_rows, "Instead: time `twin import` on a synthetic 100 Hz log of this many rows (360000: one hour)")
       ->check(CLI::Range(2L, 100000000L));

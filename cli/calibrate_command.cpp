@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "diagnosis/measurements.hpp"
 #include "study/calibrate.hpp"
 
@@ -37,7 +38,9 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
   CalibrateRequest req;
   std::tie(req.data, req.scenario) = calibrationData(cfg);
-  if (cfg.assembly != "all") req.assemblies = {cfg.assembly};
+  if (cfg.assembly != "all")
+    for (auto& id : splitOn(cfg.assembly, ','))
+      if (!id.empty()) req.assemblies.push_back(std::move(id));
   req.out = cfg.out;
   req.command = command;
   calib::CalibrationOptions& opt = req.options;
@@ -85,7 +88,10 @@ CommandHandle addCalibrateCommand(CLI::App& root, const std::string& command_lin
                 "Lab data FILE[@SCENARIO] (repetition,time_s,channel,value), e.g. from `twin generate lab`; SCENARIO: the "
                 "study's scenario it was measured on (default: lab)")
       ->required();
-  c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...) or 'all'")->capture_default_str();
+  c->add_option("--assembly", cfg->assembly, "Assembly ids (M1, M2, ...; comma separated or repeated) or 'all'")
+      ->capture_default_str()
+      ->delimiter(',')
+      ->multi_option_policy(CLI::MultiOptionPolicy::Join);
   c->add_option("--scenario", cfg->scenario, "Deprecated: give --data FILE@SCENARIO");
   c->add_option("--out", cfg->out,
                 "Output folder; each assembly writes OUT/<id>/ (summary.json, posterior.csv, design.csv, the stages' files); "

@@ -64,7 +64,10 @@ CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--field", cfg->field, "Field data CSV (run,road_seed,t_...), e.g. from twin generate field")->required();
   c->add_option("--synthetic", cfg->synthetic, "Folder written by twin synthesize (DIR/<id>/moments.bin, synthesis.json)")->required();
-  c->add_option("--assembly", cfg->assembly, "Assemblies to compare, comma-separated, or 'all' (those synthesized)")->capture_default_str();
+  c->add_option("--assembly", cfg->assembly, "Assemblies to compare (comma separated or repeated), or 'all' (those synthesized)")
+      ->capture_default_str()
+      ->delimiter(',')
+      ->multi_option_policy(CLI::MultiOptionPolicy::Join);
   c->add_option("--covariance", cfg->covariance,
                 "auto (Ledoit-Wolf when some assembly has fewer than 2p synthetic vectors, else sample), sample or ledoit-wolf")
       ->capture_default_str()->check(CLI::IsMember({"auto", "sample", "ledoit-wolf"}));

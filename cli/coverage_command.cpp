@@ -77,8 +77,8 @@ CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line
   auto cfg = std::make_shared<CoverageConfig>();
   auto* c = addSubcommand(root, "coverage");
   c->add_option("--study", cfg->study, "Study file (TOML); its calibrated truths are what is covered")->capture_default_str();
-  c->add_option("--out", cfg->out, "Output folder: <id>/lab_<seed>.csv, <id>/seed_<seed>/, coverage.json, coverage.md")->required();
-  c->add_option("--assembly", cfg->assemblies, "Assembly ids (repeatable; default: all)");
+  c->add_option("--out", cfg->out, "Output folder (a rerun into it resumes): <id>/lab_<seed>.csv + .json, <id>/seed_<seed>/, coverage.json, coverage.md")->required();
+  c->add_option("--assembly", cfg->assemblies, "Assembly ids (comma separated or repeated; default: all)")->delimiter(',');
   c->add_option("--seeds", cfg->seeds, "Number of noise seeds N")->capture_default_str()->check(CLI::Range(2, 100000));
   c->add_option("--first-seed", cfg->first_seed, "Noise seed of the first data set (seeds first .. first + N - 1)")
       ->capture_default_str()

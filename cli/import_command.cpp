@@ -125,7 +125,7 @@ CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) 
   auto* c = addSubcommand(root, "import");
   c->add_option("--log", cfg->log, "The logger's CSV file");
   c->add_option("log_file", cfg->positional, "Deprecated: give --log FILE");
-  c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv, study.toml")->required();
+  c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv (when a road column is mapped), study.toml")->required();
   c->add_option("--map", cfg->map, "Mapping file (TOML, [import] table); or give the mapping as the flags below");
   c->add_option("--study", cfg->study, "The study the drive joins (its vehicle, assemblies, sensors)")->capture_default_str();
   c->add_option("--scenario", cfg->scenario, "Name of the drive's scenario in the written study")->capture_default_str();

@@ -115,7 +115,8 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--calibration", cfg->calibration, "Folder written by twin calibrate (reads DIR/<id>/posterior.csv)")->required();
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...) or 'all'")->capture_default_str();
-  c->add_option("--out", cfg->out, "Output folder; each assembly writes OUT/<id>/moments.bin and synthesis.json")->required();
+  c->add_option("--out", cfg->out, "Output folder: OUT/<id>/moments.bin and OUT/<id>/synthesis.json per assembly, and OUT/synthesize.json listing them; a "
+                "rerun into it resumes")->required();
   c->add_option("--draws", cfg->draws, "Posterior draws M (default: the study's sizes.posterior_draws)")->check(CLI::Range(1L, 100000000L));
   c->add_option("--roads", cfg->roads, "Roads per draw R (default: sizes.roads_per_draw)")->check(CLI::Range(1L, 100000L));
   c->add_option("--library", cfg->library, "Road library size L >= R (default: sizes.road_library)")->check(CLI::Range(1L, 1000000000L));

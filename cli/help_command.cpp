@@ -50,8 +50,7 @@ CommandHandle addHelpCommand(CLI::App& root, const std::string& /*command_line*/
               std::vector<std::string> names;
               for (const CLI::App* sub : app->get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
               if (std::find(names.begin(), names.end(), word) == names.end()) {
-                const std::string where = i == 0 ? std::string() : path.substr(path.find(' ') + 1);
-                throw InputError(where, unknownNameRule("command", word, names));
+                throw InputError(i == 0 ? std::string() : app->get_name(), unknownNameRule("command", word, names));
               }
               if (i > 0) path += " " + app->get_name();
               app = app->get_subcommand(word);

@@ -48,7 +48,9 @@ TEST(SpeedTrace, ReproducesALinearSpeedAndItsQuadraticDistanceExactly) {
     EXPECT_NEAR(s.speed(x), 2 + 0.5 * x, 1e-12) << x;
     EXPECT_NEAR(s.accel(x), 0.5, 1e-12) << x;
     EXPECT_NEAR(s.distance(x), 2 * x + 0.25 * x * x, 1e-12) << x;
-    if (x > 0) EXPECT_NEAR(s.timeAtDistance(2 * x + 0.25 * x * x), x, 1e-9) << x;
+    if (x > 0) {
+      EXPECT_NEAR(s.timeAtDistance(2 * x + 0.25 * x * x), x, 1e-9) << x;
+    }
   }
   // Beyond the samples the end speed is held.
   EXPECT_DOUBLE_EQ(s.speed(7.0), 4.5);

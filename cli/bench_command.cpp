@@ -140,7 +140,7 @@ int runAccumulationBench(const std::string& study_path, int runs, double link_gb
 
 }  // namespace
 
-CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*/) {
+CommandHandle addBenchCommand(CLI::App& root, const CommandContext& /*context*/) {
   struct Cfg { std::string study = defaultStudy(); int runs = 5; bool md = false; std::vector<std::string> ids; long import_rows = 0; long user_effect = 0; std::string scenario = "field"; bool hand_ode = false; bool accumulation = false; double link_gb = 10.0; };
   auto cfg = std::make_shared<Cfg>();
   std::string& bench_study = cfg->study;
@@ -150,7 +150,7 @@ CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*
   auto* b = addSubcommand(root, "bench");
   b->add_option("--study", bench_study, "Study file (TOML)")->capture_default_str();
   b->add_option("--runs", bench_runs, "Timed runs per case (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
-  b->add_option("--assembly", bench_ids, "Only these assemblies")->delimiter(',');
+  b->add_option("--assembly", bench_ids, "Only these assemblies (comma separated or repeated)")->delimiter(',');
   b->add_flag("--markdown", bench_md, "Print a markdown table (for docs/performance.md)");
   b->add_option("--import", cfg->import_rows, "Instead: time `twin import` on a synthetic 100 Hz log of this many rows (360000: one hour)")
       ->check(CLI::Range(2L, 100000000L));
@@ -169,6 +169,9 @@ CommandHandle addBenchCommand(CLI::App& root, const std::string& /*command_line*
       ->capture_default_str()->check(CLI::PositiveNumber)->needs(acc);
   auto* scen = b->add_option("--scenario", cfg->scenario, "With --user-effect: the study's scenario of the whole runs timed")->capture_default_str();
   scen->needs("--user-effect");
+  addExamples(b, {
+               "twin bench --study data/studies/demo.toml --assembly M3 --runs 1",
+               "twin bench --import 20000 --runs 1"});
 
   return {b, [cfg] {
             if (cfg->import_rows > 0) {

@@ -58,13 +58,17 @@ int runClassify(const ClassifyConfig& cfg, const std::string& command) {
 
 }  // namespace
 
-CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addClassifyCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<ClassifyConfig>();
   auto* c = addSubcommand(root, "classify");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--field", cfg->field, "Field data CSV (run,road_seed,t_...), e.g. from twin generate field")->required();
   c->add_option("--synthetic", cfg->synthetic, "Folder written by twin synthesize (DIR/<id>/moments.bin, synthesis.json)")->required();
-  c->add_option("--assembly", cfg->assembly, "Assemblies to compare, comma-separated, or 'all' (those synthesized)")->capture_default_str();
+  c->add_option("--assembly", cfg->assembly, "Assemblies to compare (comma separated or repeated), or 'all' (those synthesized)")
+      ->capture_default_str()
+      ->delimiter(',')
+      ->multi_option_policy(CLI::MultiOptionPolicy::Join);
   c->add_option("--covariance", cfg->covariance,
                 "auto (Ledoit-Wolf when some assembly has fewer than 2p synthetic vectors, else sample), sample or ledoit-wolf")
       ->capture_default_str()->check(CLI::IsMember({"auto", "sample", "ledoit-wolf"}));
@@ -75,6 +79,8 @@ CommandHandle addClassifyCommand(CLI::App& root, const std::string& command_line
       ->check(CLI::Range(0, 1024));
   c->add_option("--out", cfg->out, "Output folder: records.csv and summary.json")->required();
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addExamples(c, {
+               "twin classify --study data/studies/demo.toml --field out/field.csv --synthetic out/synthetic --out out/classification"});
   CommandHandle handle{c, [cfg, command_line] { return runClassify(*cfg, command_line); }, {}};
   // Library errors name FieldClassifyOptions fields ("field_classify.threshold"); the fields whose
   // flag is not "--" + the field with '_' as '-':

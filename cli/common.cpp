@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -48,16 +49,20 @@ std::string joinArgs(int argc, char** argv) {
   return s;
 }
 
+void deprecationNote(const std::string& old_shape, const std::string& new_shape, const Distributed* processes) {
+  if (isRootProcess(processes)) std::fprintf(stderr, "twin: note: `%s` is deprecated; use `%s`\n", old_shape.c_str(), new_shape.c_str());
+}
+
+void addExamples(CLI::App* app, const std::vector<std::string>& examples) {
+  std::string text = "Examples:";
+  for (const auto& e : examples) text += "\n  " + e;
+  app->footer(text);
+}
+
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
 
-namespace {
-const Distributed* g_processes = nullptr;
-}  // namespace
-const Distributed* commandProcesses() { return g_processes; }
-void setCommandProcesses(const Distributed* processes) { g_processes = processes; }
-bool isRootRank() { return isRootProcess(g_processes); }
 
-bool progressOn(bool quiet) { return !quiet && isRootRank(); }
+bool progressOn(bool quiet, const Distributed* processes) { return !quiet && isRootProcess(processes); }
 
 }  // namespace dtwin::cli
 

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "study/coverage.hpp"
+#include "cli/calibration_flags.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
@@ -16,11 +17,12 @@ namespace dtwin::cli {
 namespace {
 
 struct CoverageConfig {
-  std::string study = defaultStudy(), out, region, design, interval;
+  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
+  std::string study = defaultStudy(), out;
   std::vector<std::string> assemblies;
   int seeds = 20, threads = 0;
   long long first_seed = 1001;
-  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
+  CalibrationFlags calibration;
   bool quiet = false, force = false;
 };
 
@@ -29,14 +31,10 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   for (const auto& id : cfg.assemblies) study.assembly(id);  // validates the ids
   if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
   {
-    Study sized = study;
-    overrideSize(sized, "lhs_points", cfg.lhs_points, "--lhs-points");
-    overrideSize(sized, "gibbs_iterations", cfg.iterations, "--iterations");
-    overrideSize(sized, "optimizer_starts", cfg.starts, "--starts");
     std::vector<std::string> stages;
     for (const auto& id : cfg.assemblies) stages.push_back("calibrate " + id);
     if (stages.empty()) stages.push_back("calibrate");
-    checkCommandWork(sized, stages, cfg.force, cfg.seeds);  // each seed is one calibration
+    checkCommandWork(cfg.calibration.sized(study), stages, cfg.force, cfg.seeds);  // each seed is one calibration
   }
   calib::CoverageOptions o;
   o.seeds = cfg.seeds;
@@ -46,24 +44,15 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   o.command = command;
   o.calibration = calib::CalibrationOptions::fromStudy(study);
   o.calibration.threads = cfg.threads;
-  o.calibration.processes = commandProcesses();
-  if (cfg.lhs_points > 0) o.calibration.lhs_points = static_cast<int>(cfg.lhs_points);
-  if (cfg.iterations > 0) o.calibration.gibbs_iterations = static_cast<int>(cfg.iterations);
-  if (cfg.burn_in >= 0) o.calibration.gibbs_burn_in = static_cast<int>(cfg.burn_in);
-  if (cfg.starts > 0) o.calibration.optimizer_starts = static_cast<int>(cfg.starts);
-  if (!cfg.region.empty()) {
-    o.calibration.region = cfg.region;
-    if (cfg.design.empty()) o.calibration.design.adaptive = cfg.region == "joint";
-  }
-  if (!cfg.design.empty()) o.calibration.design.adaptive = cfg.design == "adaptive";
-  if (!cfg.interval.empty()) o.calibration.interval = cfg.interval;
+  o.calibration.processes = cfg.processes;
+  cfg.calibration.applyTo(o.calibration);
   o.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
   const std::size_t n_asm = cfg.assemblies.empty() ? study.assemblies().size() : cfg.assemblies.size();
   if (!cfg.quiet)
     std::printf("coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n", n_asm, n_asm == 1 ? "y" : "ies",
                 cfg.seeds, cfg.first_seed, cfg.first_seed + cfg.seeds - 1, o.calibration.region.c_str(),
                 o.calibration.design.adaptive ? "adaptive" : "lhs", cfg.out.c_str());
-  const bool bar_on = progressOn(cfg.quiet);
+  const bool bar_on = progressOn(cfg.quiet, cfg.processes);
   ProgressBar bar("coverage", bar_on, stderrIsTerminal());
   std::string current;
   const calib::CoverageResult r = calib::runCoverage(
@@ -86,36 +75,29 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
 
 }  // namespace
 
-CommandHandle addCoverageCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addCoverageCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<CoverageConfig>();
+  cfg->processes = context.processes;
   auto* c = addSubcommand(root, "coverage");
   c->add_option("--study", cfg->study, "Study file (TOML); its calibrated truths are what is covered")->capture_default_str();
-  c->add_option("--out", cfg->out, "Output folder: <id>/lab_<seed>.csv, <id>/seed_<seed>/, coverage.json, coverage.md")->required();
-  c->add_option("--assembly", cfg->assemblies, "Assembly ids (repeatable; default: all)");
+  c->add_option("--out", cfg->out, "Output folder (a rerun into it resumes): <id>/lab_<seed>.csv + .json, <id>/seed_<seed>/, coverage.json, coverage.md")->required();
+  c->add_option("--assembly", cfg->assemblies, "Assembly ids (comma separated or repeated; default: all)")->delimiter(',');
   c->add_option("--seeds", cfg->seeds, "Number of noise seeds N")->capture_default_str()->check(CLI::Range(2, 100000));
   c->add_option("--first-seed", cfg->first_seed, "Noise seed of the first data set (seeds first .. first + N - 1)")
       ->capture_default_str()
       ->check(CLI::Range(0LL, (1LL << 62)));
-  c->add_option("--region", cfg->region, "joint or paper (default: the study's [calibration] region)")->check(CLI::IsMember({"joint", "paper"}));
-  c->add_option("--interval", cfg->interval,
-                "The 95 % interval printed as ci95: profile (the profile-likelihood interval, default) or posterior (the "
-                "posterior's central interval); both are in summary.json. Default: the study's [calibration] interval")
-      ->check(CLI::IsMember({"profile", "posterior"}));
-  c->add_option("--design", cfg->design, "adaptive or lhs (default: the study's, or the region's default)")->check(CLI::IsMember({"adaptive", "lhs"}));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
-  c->add_option("--lhs-points", cfg->lhs_points, "Design points of round 0 (default: sizes.lhs_points)")->check(CLI::Range(2L, 10000000L));
-  c->add_option("--iterations", cfg->iterations, "Gibbs iterations incl. burn-in (default: sizes.gibbs_iterations)")->check(CLI::Range(1L, 100000000L));
-  c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
-  c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
+  cfg->calibration.addTo(c, CalibrationFlags::kSizes | CalibrationFlags::kRegion);
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
   addForceOption(c, cfg->force);
+  addExamples(c, {
+               "twin coverage --study data/studies/demo.toml --assembly M3 --seeds 2 --region paper --lhs-points 20 --iterations 600 --burn-in 200 --out out/coverage"});
   CommandHandle handle{c, [cfg, command_line] { return runCoverage(*cfg, command_line); }, {}};
   // Library errors name CoverageOptions and CalibrationOptions fields ("coverage.out_dir",
   // "calibration.gibbs_burn_in"); the fields whose flag is not "--" + the field with '_' as '-':
   handle.field_flags["out_dir"] = "--out";
-  handle.field_flags["gibbs_iterations"] = "--iterations";
-  handle.field_flags["gibbs_burn_in"] = "--burn-in";
-  handle.field_flags["optimizer_starts"] = "--starts";
+  CalibrationFlags::addFieldFlags(handle);
   return handle;
 }
 

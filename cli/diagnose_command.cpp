@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "cli/calibration_flags.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
@@ -22,6 +23,7 @@ namespace {
 
 // ------------------------------------------------------------------ compare
 struct CompareConfig {
+  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
   std::string study = defaultStudy(), calibration, out;
   std::vector<std::string> data, baseline;
   int draws = 30, threads = 0;
@@ -37,7 +39,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   req.out = cfg.out;
   req.draws = cfg.draws;
   req.threads = cfg.threads;
-  req.processes = commandProcesses();
+  req.processes = cfg.processes;
   req.force = cfg.force;
   req.command = command;
   const auto say = [&](const std::string& line) {
@@ -52,7 +54,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
     for (const auto& d : cfg.data) title += " " + std::filesystem::path(d).filename().string();
     const std::string page = (std::filesystem::path(run.written).parent_path() / "compare.html").string();
     const std::string html = comparePage(run.comparison.toJson(true), title);
-    rootWrites(commandProcesses(), [&] { writeFileAtomic(page, html); });
+    rootWrites(cfg.processes, [&] { writeFileAtomic(page, html); });
     say("wrote " + page + " (zoom into the drive, the failing windows listed beside it)");
   }
   return 0;
@@ -78,12 +80,12 @@ std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& wha
 
 // ------------------------------------------------------------------ diagnose
 struct DiagnoseConfig {
+  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
   std::string study = defaultStudy(), assembly = "M1", out;
   std::vector<std::string> data, holdout, effects, apply;
   int threads = 0, candidates = 6, causes = 3, draws = 20, propose = 3;
   double confirm_within = 2.0;
-  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1;
-  std::string steps;
+  CalibrationFlags calibration;
   bool quiet = false, force = false, all_intervals = false;
 };
 
@@ -105,11 +107,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   req.force = cfg.force;
   diag::DiagnoseOptions& o = req.options;
   o.calibration = calib::CalibrationOptions::fromStudy(study);
-  if (cfg.lhs_points > 0) o.calibration.lhs_points = static_cast<int>(cfg.lhs_points);
-  if (cfg.iterations > 0) o.calibration.gibbs_iterations = static_cast<int>(cfg.iterations);
-  if (cfg.burn_in >= 0) o.calibration.gibbs_burn_in = static_cast<int>(cfg.burn_in);
-  if (cfg.starts > 0) o.calibration.optimizer_starts = static_cast<int>(cfg.starts);
-  if (!cfg.steps.empty()) o.calibration.steps = cfg.steps;
+  cfg.calibration.applyTo(o.calibration);
   if (o.calibration.gibbs_burn_in >= o.calibration.gibbs_iterations)
     throw InputError("--burn-in", "must be below the number of iterations (" + std::to_string(o.calibration.gibbs_iterations) + ")");
   o.candidates = cfg.candidates;
@@ -121,9 +119,9 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   o.effects = splitCommas(cfg.effects);
   o.apply = splitCommas(cfg.apply);  // a .toml item (a proposal.toml) adds its [user_effects]
   o.threads = cfg.threads;
-  o.processes = commandProcesses();
+  o.processes = cfg.processes;
   o.command = command;
-  ProgressBar bar("diagnose", progressOn(cfg.quiet), stderrIsTerminal());
+  ProgressBar bar("diagnose", progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
   std::string current;
   const auto progress = [&](const std::string& stage, std::size_t d, std::size_t t) {
     if (stage != current) {
@@ -141,7 +139,7 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   if (run.written.empty()) return 0;
   if (!cfg.quiet) std::printf("\nwrote %s\n", run.written.c_str());
   // The HTML page (overlays, band powers, force-state map, waterfall); needs gnuplot.
-  if (isRootRank()) {
+  if (isRootProcess(cfg.processes)) {
     const std::string page = (fs::path(cfg.out) / "compare.html").string();
     try {
       writeFileAtomic(page, diagnosisPage(run.result, study.name + ", " + cfg.assembly, cfg.data));
@@ -162,8 +160,10 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
 
 }  // namespace
 
-CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addCompareCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<CompareConfig>();
+  cfg->processes = context.processes;
   auto* c = addSubcommand(root, "compare");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--calibration", cfg->calibration,
@@ -176,14 +176,20 @@ CommandHandle addCompareCommand(CLI::App& root, const std::string& command_line)
                 "Also fit an FIR from the road under the wheels to each channel on this measurement file FILE[@SCENARIO] (the "
                 "calibration drive), and print its fit % on --data beside the model's; repeatable");
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
-  c->add_option("--out", cfg->out, "Folder for compare.json (figures and the overlay series)");
+  c->add_option("--out", cfg->out,
+                "Folder for compare.json (the figures and the overlay series) and compare.html (an interactive page of every "
+                "channel); default: print only");
   addForceOption(c, cfg->force);
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addExamples(c, {
+               "twin compare --study data/studies/demo.toml --calibration out/calibration/M3 --data out/lab.csv --draws 5 --out out/compare"});
   return {c, [cfg, command_line] { return runCompare(*cfg, command_line); }};
 }
 
-CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addDiagnoseCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<DiagnoseConfig>();
+  cfg->processes = context.processes;
   auto* c = addSubcommand(root, "diagnose");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...)")->capture_default_str();
@@ -218,21 +224,20 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const std::string& command_line
       ->check(CLI::Range(0, 3));
   c->add_option("--draws", cfg->draws, "Posterior rows per comparison")->capture_default_str()->check(CLI::Range(1, 100000));
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
-  c->add_option("--lhs-points", cfg->lhs_points, "Design points per calibration (default: sizes.lhs_points)")->check(CLI::Range(2L, 10000000L));
-  c->add_option("--iterations", cfg->iterations, "Gibbs iterations (default: sizes.gibbs_iterations)")->check(CLI::Range(1L, 100000000L));
-  c->add_option("--burn-in", cfg->burn_in, "Gibbs burn-in (default: sizes.gibbs_burn_in)")->check(CLI::Range(0L, 100000000L));
-  c->add_option("--starts", cfg->starts, "Optimiser starts (default: sizes.optimizer_starts)")->check(CLI::Range(1L, 10000L));
-  c->add_option("--steps", cfg->steps,
-                "Integrator steps of every calibration: frozen (a smooth SSE, the accuracy chosen from the data) or adaptive; "
-                "default: the study's [calibration] steps")
-      ->check(CLI::IsMember({"frozen", "adaptive"}));
-  c->add_option("--out", cfg->out, "Folder: diagnosis.json, comparisons/, calibrations/ (resumable)");
+  cfg->calibration.addTo(c, CalibrationFlags::kSizes | CalibrationFlags::kSteps);
+  c->add_option("--out", cfg->out,
+                "Folder (a rerun into it resumes): diagnosis.json, comparisons/, calibrations/, proposal.toml when unexplained, "
+                "compare.html (the models overlaid) and report.html (needs gnuplot); without it the calibrations go to a temporary "
+                "folder and only the printout remains");
   addForceOption(c, cfg->force);
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addExamples(c, {
+               "twin diagnose --study data/studies/demo.toml --assembly M1 --data out/diag_bump.csv --lhs-points 20 --iterations 600 --burn-in 200 --starts 1 --candidates 1 --causes 1 --propose 0 --out out/diagnosis"});
   CommandHandle handle{c, [cfg, command_line] { return runDiagnose(*cfg, command_line); }, {}};
   // Library errors name DiagnoseOptions fields and diagnose()'s arguments ("diagnose.compare_draws");
   // the fields whose flag is not "--" + the field with '_' as '-':
   handle.field_flags["compare_draws"] = "--draws";
+  CalibrationFlags::addFieldFlags(handle);
   handle.field_flags["fit"] = "--data";
   return handle;
 }

@@ -23,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct GenerateConfig {
+  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
   std::string study = defaultStudy(), out, assembly, scenario, channel = "hub_force_fl_N";
   std::optional<std::uint64_t> seed;  ///< unset: the study's
   long repetitions = 0, runs = 0;
@@ -95,7 +96,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   }
   if (cfg.rate_opt && cfg.rate_opt->count()) opt.rate_hz = cfg.rate;
   opt.channels = cfg.channels;
-  opt.processes = commandProcesses();
+  opt.processes = cfg.processes;
   opt.repetitions = cfg.repetitions;
   {
     Study sized = study;
@@ -106,7 +107,7 @@ int runLab(const GenerateConfig& cfg, const std::string& command) {
   opt.command = command;
   LabResult r;
   {
-    ProgressBar bar("generate lab", progressOn(cfg.quiet), stderrIsTerminal());
+    ProgressBar bar("generate lab", progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
     r = generateLabFile(study, a, opt, cfg.out, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
   if (!cfg.quiet) {
@@ -146,12 +147,12 @@ int runField(const GenerateConfig& cfg, const std::string& command) {
     checkCommandWork(sized, {"field"}, cfg.force);
   }
   opt.threads = cfg.threads;
-  opt.processes = commandProcesses();
+  opt.processes = cfg.processes;
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.command = command;
   FieldResult r;
   {
-    ProgressBar bar("generate field", progressOn(cfg.quiet), stderrIsTerminal());
+    ProgressBar bar("generate field", progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
     r = generateFieldFile(study, a, opt, cfg.out, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
   }
   if (!cfg.quiet && !r.provenance["noise"]["applied"].get<bool>())
@@ -181,11 +182,14 @@ void commonOptions(CLI::App* s, GenerateConfig& cfg, const char* default_scenari
 
 }  // namespace
 
-CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addGenerateCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto* g = addSubcommand(root, "generate");
   g->require_subcommand(1);
   auto lab = std::make_shared<GenerateConfig>();
+  lab->processes = context.processes;
   auto field = std::make_shared<GenerateConfig>();
+  field->processes = context.processes;
 
   auto* l = g->add_subcommand("lab",
                               "Lab data: the assembly at the study's true parameters over the lab scenario, plus noise, R "
@@ -222,6 +226,12 @@ CommandHandle addGenerateCommand(CLI::App& root, const std::string& command_line
   f->add_option("--channel", field->channel, "Channel to keep")->capture_default_str();
   f->add_option("--window", field->window, "Time window kept, T0,T1 [s] (default 10,15)")->delimiter(',')->expected(2);
 
+  addExamples(g, {"twin generate lab --study data/studies/demo.toml --repetitions 3 --out out/lab.csv",
+                  "twin generate field --study data/studies/demo.toml --runs 20 --window 10,10.05 --out out/field.csv",
+                  "twin generate lab --study data/studies/demo.toml --scenario diag_bump --times all --rate 100 --repetitions 2 "
+                  "--channels hub_force_fl_N,hub_force_fr_N --hidden-effect bump_stop:stiffness=5e6,gap_m=0.02 --out out/diag_bump.csv"});
+  addExamples(l, {"twin generate lab --study data/studies/demo.toml --repetitions 3 --out out/lab.csv"});
+  addExamples(f, {"twin generate field --study data/studies/demo.toml --runs 20 --window 10,10.05 --out out/field.csv"});
   CommandHandle h;
   h.app = g;
   h.field_flags = {{"out", "--out"}, {"channels", "--channels"}, {"window", "--window"}, {"rate_hz", "--rate"}, {"hidden_effects", "--hidden-effect"},

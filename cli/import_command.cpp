@@ -16,7 +16,8 @@ namespace dtwin::cli {
 namespace {
 
 struct ImportConfig {
-  std::string log, map, out, study = defaultStudy(), scenario = "drive";
+  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
+  std::string log, positional, map, out, study = defaultStudy(), scenario = "drive";
   std::string time, speed, road, road_left, road_right, separator;
   std::vector<std::string> channels;
   double highpass_hz = 0.0, speed_lowpass_hz = 0.0;
@@ -74,7 +75,13 @@ ImportMapping mappingFromFlags(const ImportConfig& cfg) {
   return m;
 }
 
-int runImport(const ImportConfig& cfg, const std::string& command) {
+int runImport(ImportConfig cfg, const std::string& command) {
+  if (!cfg.positional.empty()) {  // the older shape `twin import FILE`
+    if (!cfg.log.empty()) throw InputError("--log", "give the logger's CSV once (--log FILE)");
+    deprecationNote("twin import FILE", "twin import --log FILE", cfg.processes);
+    cfg.log = cfg.positional;
+  }
+  if (cfg.log.empty()) throw InputError("--log", "is required (the logger's CSV file)");
   const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() || !cfg.road_left.empty() ||
                      !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
   if (!cfg.map.empty() && flags) throw InputError("--map", "give the mapping either in the file or as flags (--time, --speed, --road, --channel), not both");
@@ -88,7 +95,7 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
     throw InputError(cfg.log, "is " + formatNumber(static_cast<double>(bytes) / 1e9, 3) +
                                   " GB; twin import holds a log in memory, at most 4 GB: split it into drives");
   const std::string text = readTextFile(cfg.log, " (a logger's CSV)");
-  ProgressBar bar("import " + cfg.log, progressOn(cfg.quiet), stderrIsTerminal());
+  ProgressBar bar("import " + cfg.log, progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
   ImportResult r = importLog(text, cfg.log, mapping, cfg.study, cfg.scenario,
                              [&bar](const std::string&, std::size_t done, std::size_t total) { bar.update(done, total); });
   r.sidecar["command"] = command;
@@ -114,11 +121,14 @@ int runImport(const ImportConfig& cfg, const std::string& command) {
 
 }  // namespace
 
-CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addImportCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<ImportConfig>();
+  cfg->processes = context.processes;
   auto* c = addSubcommand(root, "import");
-  c->add_option("log", cfg->log, "The logger's CSV file")->required();
-  c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv, study.toml")->required();
+  c->add_option("--log", cfg->log, "The logger's CSV file");
+  c->add_option("log_file", cfg->positional, "Deprecated: give --log FILE");
+  c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv (when a road column is mapped), study.toml")->required();
   c->add_option("--map", cfg->map, "Mapping file (TOML, [import] table); or give the mapping as the flags below");
   c->add_option("--study", cfg->study, "The study the drive joins (its vehicle, assemblies, sensors)")->capture_default_str();
   c->add_option("--scenario", cfg->scenario, "Name of the drive's scenario in the written study")->capture_default_str();
@@ -139,6 +149,8 @@ CommandHandle addImportCommand(CLI::App& root, const std::string& command_line) 
   c->add_option("--run-in", cfg->run_in, "Seconds of the log simulated before the window, for the model to settle (default 10)")
       ->check(CLI::Range(0.0, 3600.0));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addExamples(c, {
+               "twin import --log data/drives/stop_and_go.csv --map data/drives/stop_and_go_map.toml --out out/drive"});
   return {c, [cfg, command_line] { return runImport(*cfg, command_line); }, {}};
 }
 

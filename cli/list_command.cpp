@@ -135,7 +135,7 @@ int runList(const std::string& study_path, bool params) {
 
 }  // namespace
 
-CommandHandle addListCommand(CLI::App& root, const std::string& /*command_line*/) {
+CommandHandle addListCommand(CLI::App& root, const CommandContext& /*context*/) {
   struct Cfg { std::string study = defaultStudy(); bool params = false; bool registries = false; };
   auto cfg = std::make_shared<Cfg>();
   std::string& list_study = cfg->study;
@@ -145,6 +145,9 @@ CommandHandle addListCommand(CLI::App& root, const std::string& /*command_line*/
   l->add_flag("--parameters", list_params, "Also list every parameter with its value, unit and source");
   l->add_flag("--registries", cfg->registries, "Instead: every registry of the twin (laws, effects, roads, sensors, integrators, commands) as Markdown "
                                                 "tables, as docs/registries.md holds them");
+  addExamples(l, {
+               "twin list --study data/studies/paper.toml",
+               "twin list --study data/studies/demo.toml --parameters"});
 
   return {l, [cfg] { return cfg->registries ? runRegistries() : runList(cfg->study, cfg->params); }};
 }

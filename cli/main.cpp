@@ -67,19 +67,28 @@ std::string parseErrorLine(const CLI::App& root, const CLI::ParseError& e) {
   return what + " (see " + path + " --help)";
 }
 
-int runTwin(int argc, char** argv, std::string& error) {
-  const std::string command = joinArgs(argc, argv);
-  CLI::App app{"twin: a multibody digital twin of a ground vehicle (Simbody), with Bayesian choice of subsystem fidelity"};
+int runTwin(int argc, char** argv, const Distributed& dist, std::string& error) {
+  const CommandContext context{joinArgs(argc, argv), &dist};
+  CLI::App app{"twin: a multibody digital twin of a ground vehicle (Simbody), with Bayesian choice of subsystem fidelity", "twin"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string(kVersion) + " (" + kGitDescribe + ")\n" + kSimbody);
 
   std::vector<CommandHandle> commands;
-  std::vector<bool> distributed;
+  std::vector<bool> distributed, resumable;
   for (const auto& e : commandRegistry()) {
-    commands.push_back(e.value.add(app, command));
+    commands.push_back(e.value.add(app, context));
     distributed.push_back(e.value.distributed);
+    resumable.push_back(e.value.resumable);
     if (commands.back().app->get_name() != e.name)
       throw std::logic_error("command registry: the entry '" + e.name + "' adds '" + commands.back().app->get_name() + "'");
+  }
+
+  // The overview lists the commands by task (the registry's groups), not as CLI11 would; the
+  // subcommands keep CLI11's formatter (each took a copy when it was added).
+  app.formatter_fn([](const CLI::App*, const std::string&, CLI::AppFormatMode) { return topLevelHelp(); });
+  if (argc < 2) {  // `twin` alone: the overview
+    if (dist.isRoot()) std::printf("%s", topLevelHelp().c_str());
+    return 0;
   }
 
   if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
@@ -96,13 +105,14 @@ int runTwin(int argc, char** argv, std::string& error) {
     return 2;
   }
   // Under MPI (mpirun -n K twin ...) the commands that simulate in bulk run on every rank and
-  // spread their simulations (twin/distributed.hpp); the others run on the root alone.
-  const Distributed& dist = *commandProcesses();
+  // spread their simulations (common/distributed.hpp); the others run on the root alone.
   const CommandHandle* chosen = nullptr;
+  bool resumes = false;
   try {
     for (std::size_t i = 0; i < commands.size(); ++i) {
       if (!commands[i].app->parsed()) continue;
       chosen = &commands[i];
+      resumes = resumable[i];
       if (!distributed[i] && !dist.isRoot()) return 0;
       return commands[i].run();
     }
@@ -110,6 +120,10 @@ int runTwin(int argc, char** argv, std::string& error) {
     error = oneLine(std::string("error: ") + (chosen ? messageForCommand(*chosen, e.where(), e.rule()) : std::string(e.what())));
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 2;
+  } catch (const StorageError& e) {  // the disk filled: what to do, not an internal error
+    error = oneLine(std::string(e.what()) + "; free space and rerun the same command" + (resumes ? " — it resumes where it stopped" : ""));
+    std::fprintf(stderr, "twin: %s\n", error.c_str());
+    return 1;
   } catch (const std::exception& e) {
     error = oneLine(std::string("internal error: ") + e.what());
     std::fprintf(stderr, "twin: %s\n", error.c_str());
@@ -128,10 +142,9 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
-  Distributed dist;
+  Distributed dist;  // the process context, passed down explicitly (CommandContext)
   dist.init(&argc, &argv);  // MPI when started by mpirun; otherwise one process
-  dtwin::cli::setCommandProcesses(&dist);
   std::string error;
-  const int rc = runTwin(argc, argv, error);
+  const int rc = runTwin(argc, argv, dist, error);
   return dist.finish(rc, error);
 }

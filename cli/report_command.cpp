@@ -1,5 +1,6 @@
-// `twin report [STUDY_DIR] [--diagnosis DIR]... [--out FILE.html]`: a self-contained HTML report of
-// a study folder, with the diagnosis sections appended; or of diagnosis folders alone.
+// `twin report [--study-dir DIR] [--diagnosis DIR]... [--out DIR]`: a self-contained HTML report
+// (DIR/report.html) of a study folder, with the diagnosis sections appended; or of diagnosis
+// folders alone.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -16,22 +17,41 @@ namespace dtwin::cli {
 namespace {
 
 struct ReportConfig {
-  std::string dir, out;
+  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
+  std::string dir, positional, out;
   std::vector<std::string> diagnoses;
   int draws = 50, threads = 0;
   bool quiet = false;
 };
 
-int runReportCommand(const ReportConfig& cfg, const std::string& command) {
-  if (cfg.dir.empty() && cfg.diagnoses.empty()) throw InputError("twin report", "give a study folder, --diagnosis DIR, or both");
+/// The page's path: OUT/report.html for --out OUT; the older --out FILE.html as is (with a
+/// note); without --out, report.html in `default_dir`.
+std::string reportPath(const std::string& out, const std::string& default_dir, const Distributed* processes) {
+  if (out.empty()) return (std::filesystem::path(default_dir) / "report.html").string();
+  if (std::filesystem::path(out).extension() == ".html") {
+    deprecationNote("twin report --out FILE.html", "twin report --out DIR (writes DIR/report.html)", processes);
+    return out;
+  }
+  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out))
+    throw InputError("--out", "'" + out + "' exists and is not a folder");
+  return (std::filesystem::path(out) / "report.html").string();
+}
+
+int runReportCommand(ReportConfig cfg, const std::string& command) {
+  if (!cfg.positional.empty()) {  // the older shape `twin report STUDY_DIR`
+    if (!cfg.dir.empty()) throw InputError("--study-dir", "give the study folder once (--study-dir DIR)");
+    deprecationNote("twin report STUDY_DIR", "twin report --study-dir STUDY_DIR", cfg.processes);
+    cfg.dir = cfg.positional;
+  }
+  if (cfg.dir.empty() && cfg.diagnoses.empty()) throw InputError("twin report", "give a study folder (--study-dir DIR), --diagnosis DIR, or both");
   if (cfg.dir.empty()) {  // diagnosis-only page
-    const std::string out = cfg.out.empty() ? (std::filesystem::path(cfg.diagnoses[0]) / "report.html").string() : cfg.out;
+    const std::string out = reportPath(cfg.out, cfg.diagnoses[0], cfg.processes);
     const auto r = report::writeDiagnosisReport(cfg.diagnoses, out, command);
     for (const auto& w : r["warnings"]) std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
     if (!cfg.quiet) std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(), r["wall_s"].get<double>());
     return 0;
   }
-  const std::string out = cfg.out.empty() ? (std::filesystem::path(cfg.dir) / "report.html").string() : cfg.out;
+  const std::string out = reportPath(cfg.out, cfg.dir, cfg.processes);
   report::requireGnuplot("`twin report`");  // before any simulation
   report::ReportOptions o;
   std::vector<std::string> diag_warnings;
@@ -65,20 +85,27 @@ int runReportCommand(const ReportConfig& cfg, const std::string& command) {
 
 }  // namespace
 
-CommandHandle addReportCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addReportCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<ReportConfig>();
+  cfg->processes = context.processes;
   auto* c = addSubcommand(root, "report");
-  c->add_option("study_dir", cfg->dir, "Study folder written by `twin study` (optional with --diagnosis)")->check(CLI::ExistingDirectory);
+  c->add_option("--study-dir", cfg->dir, "Study folder written by `twin study --out` (optional with --diagnosis)")->check(CLI::ExistingDirectory);
+  c->add_option("study_dir", cfg->positional, "Deprecated: give --study-dir DIR")->check(CLI::ExistingDirectory);
   c->add_option("--diagnosis", cfg->diagnoses,
                 "Folder written by `twin diagnose --out` (repeatable): its section is appended to the study report, or, "
-                "without STUDY_DIR, makes a diagnosis-only report")
+                "without --study-dir, makes a diagnosis-only report")
       ->take_all()
       ->allow_extra_args(false);
-  c->add_option("--out", cfg->out, "HTML file (default: STUDY_DIR/report.html, or the first --diagnosis DIR/report.html)");
+  c->add_option("--out", cfg->out,
+                "Output folder: OUT/report.html and, with a study, OUT/report_lab.html (the interactive lab view); default: "
+                "the study folder, or the first --diagnosis folder");
   c->add_option("--draws", cfg->draws, "Posterior rows per assembly for the predictive band (evenly spaced)")
       ->capture_default_str()->check(CLI::Range(2, 100000));
   c->add_option("--threads", cfg->threads, "Simulations in parallel (0: all cores; never changes the page)")->check(CLI::Range(0, 1024));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
+  addExamples(c, {
+               "twin report --study-dir out/study --draws 4 --out out/report"});
   CommandHandle handle{c, [cfg, command_line] { return runReportCommand(*cfg, command_line); }, {}};
   // Library errors name fields ("lab_bands.draws" is --draws); the ones whose flag is not "--" +
   // the field with '_' as '-':

@@ -58,7 +58,8 @@ int runSimulate(const SimulateConfig& cfg, const std::string& command) {
 
 }  // namespace
 
-CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addSimulateCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<SimulateConfig>();
   SimulateConfig& sim = *cfg;
   auto* s = addSubcommand(root, "simulate");
@@ -77,6 +78,10 @@ CommandHandle addSimulateCommand(CLI::App& root, const std::string& command_line
   s->add_option("--obstacle-step", sim.obstacle_step, "Override the largest step while crossing an obstacle [s]");
   s->add_option("--output-rate", sim.rate, "Override the output rate [Hz]");
   s->add_flag("--quiet", sim.quiet, "Print nothing on success");
+  addExamples(s, {
+               "twin simulate --study data/studies/demo.toml --assembly M1 --scenario lab --out out/simulate/m1_lab.csv",
+               "twin simulate --study data/studies/paper.toml --assembly M3 --scenario field --seed 7 --out out/simulate/m3_field.csv",
+               "twin simulate --study data/studies/demo.toml --assembly all --scenario lab --effect bump_stop:stiffness=5e6,gap_m=0.03 --out out/simulate/bump_stop"});
 
   CommandHandle handle{s, [cfg, command_line] { return runSimulate(*cfg, command_line); }};
   handle.field_flags = {{"effects", "--effect"}, {"max_step_s", "--max-step"}, {"obstacle_max_step_s", "--obstacle-step"}, {"output_rate_hz", "--output-rate"}};

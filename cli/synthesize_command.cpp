@@ -18,6 +18,7 @@ namespace dtwin::cli {
 namespace {
 
 struct SynthesizeConfig {
+  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
   std::string study = defaultStudy(), calibration, assembly = "all", out, scenario = "field", channel = "hub_force_fl_N";
   long draws = 0, roads = 0, library = 0, block = 16, leaf_blocks = 2;
   int threads = 0;
@@ -40,7 +41,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   opt.block = cfg.block;
   opt.leaf_blocks = cfg.leaf_blocks;
   opt.threads = cfg.threads;
-  opt.processes = commandProcesses();
+  opt.processes = cfg.processes;
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.scenario = cfg.scenario;
   opt.channel = cfg.channel;
@@ -53,7 +54,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   opt.track_fourth_moment = !cfg.no_fourth;
   opt.command = command;
 
-  const bool bar_on = progressOn(cfg.quiet);
+  const bool bar_on = progressOn(cfg.quiet, cfg.processes);
   std::unique_ptr<ProgressBar> bar;  // one per assembly, as it starts
   std::string stage;
   synthesizeAssemblies(
@@ -75,13 +76,16 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
 
 }  // namespace
 
-CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_line) {
+CommandHandle addSynthesizeCommand(CLI::App& root, const CommandContext& context) {
+  const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<SynthesizeConfig>();
+  cfg->processes = context.processes;
   auto* c = addSubcommand(root, "synthesize");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--calibration", cfg->calibration, "Folder written by twin calibrate (reads DIR/<id>/posterior.csv)")->required();
   c->add_option("--assembly", cfg->assembly, "Assembly id (M1, M2, ...) or 'all'")->capture_default_str();
-  c->add_option("--out", cfg->out, "Output folder; each assembly writes OUT/<id>/moments.bin and synthesis.json")->required();
+  c->add_option("--out", cfg->out, "Output folder: OUT/<id>/moments.bin and OUT/<id>/synthesis.json per assembly, and OUT/synthesize.json listing them; a "
+                "rerun into it resumes")->required();
   c->add_option("--draws", cfg->draws, "Posterior draws M (default: the study's sizes.posterior_draws)")->check(CLI::Range(1L, 100000000L));
   c->add_option("--roads", cfg->roads, "Roads per draw R (default: sizes.roads_per_draw)")->check(CLI::Range(1L, 100000L));
   c->add_option("--library", cfg->library, "Road library size L >= R (default: sizes.road_library)")->check(CLI::Range(1L, 1000000000L));
@@ -100,6 +104,9 @@ CommandHandle addSynthesizeCommand(CLI::App& root, const std::string& command_li
   c->add_flag("--no-fourth-moment", cfg->no_fourth, "Do not accumulate the moments Ledoit-Wolf needs");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   addForceOption(c, cfg->force);
+  addExamples(c, {
+               "twin synthesize --study data/studies/demo.toml --calibration out/calibration --assembly M3 --draws 4 --roads 2 --library 8 --window 10,10.05 --out out/synthetic",
+               "twin synthesize --study data/studies/demo.toml --calibration out/calibration --assembly M4 --draws 4 --roads 2 --library 8 --window 10,10.05 --out out/synthetic"});
   CommandHandle handle{c, [cfg, command_line] { return runSynthesize(*cfg, command_line); }, {}};
   // Library errors name SynthesisOptions fields ("synthesis.road_library"); the fields whose flag
   // is not "--" + the field with '_' as '-':

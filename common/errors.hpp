@@ -2,7 +2,12 @@
 // Error levels (see docs/architecture.md):
 //  * InputError  - something a user supplied is wrong (file, field, option, number). Thrown; the
 //                  CLI prints what() on one line and exits with code 2.
+//  * StorageError - a write failed because the storage is full (the disk, the quota or the file
+//                  size limit): neither the user's input nor a bug. The CLI prints it on one line
+//                  with what to do (free space, rerun) and exits with code 1.
 //  * DTWIN_CHECK - an always-on check of an impossible internal state; throws std::logic_error.
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -38,6 +43,31 @@ class InputError : public std::runtime_error {
  private:
   std::string where_;
   std::string rule_;
+};
+
+/// A write to `path` failed with ENOSPC, EDQUOT or EFBIG (isStorageFull): what() is
+/// "<path>: cannot write: the disk is full (No space left on device)" (the quota, the file size
+/// limit for the other two).
+class StorageError : public std::runtime_error {
+ public:
+  StorageError(const std::string& path, int error_number)
+      : std::runtime_error(printable(path) + ": cannot write: " + reason(error_number)), path_(printable(path)), errno_(error_number) {}
+  const std::string& path() const { return path_; }
+  int errorNumber() const { return errno_; }
+
+  /// True for the errno values of a full storage: ENOSPC, EDQUOT, EFBIG.
+  static bool isStorageFull(int error_number) {
+    return error_number == ENOSPC || error_number == EDQUOT || error_number == EFBIG;
+  }
+  /// "the disk is full (No space left on device)", and the like for EDQUOT and EFBIG.
+  static std::string reason(int error_number) {
+    const char* what = error_number == EDQUOT ? "the disk quota is used up" : error_number == EFBIG ? "the file size limit is reached" : "the disk is full";
+    return std::string(what) + " (" + std::strerror(error_number) + ")";
+  }
+
+ private:
+  std::string path_;
+  int errno_;
 };
 
 }  // namespace dtwin

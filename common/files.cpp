@@ -32,6 +32,7 @@ void writeAll(int fd, const std::string& data, const std::string& path) {
     const ssize_t w = ::write(fd, data.data() + done, data.size() - done);
     if (w < 0) {
       if (errno == EINTR) continue;
+      if (StorageError::isStorageFull(errno)) throw StorageError(path, errno);
       throw std::runtime_error(systemError(path + ": cannot write"));
     }
     done += static_cast<std::size_t>(w);
@@ -53,13 +54,22 @@ void writeFileAtomic(const std::string& path, const std::string& content) {
   const fs::path p(path);
   std::error_code ec;
   if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
+  if (ec && StorageError::isStorageFull(ec.value())) throw StorageError(p.parent_path().string(), ec.value());
   if (ec) throw InputError(path, "cannot create folder " + p.parent_path().string() + ": " + ec.message());
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0 && StorageError::isStorageFull(errno)) throw StorageError(path, errno);
   if (fd < 0) throw InputError(path, systemError("cannot write (is the folder writable?) " + tmp));
   try {
     writeAll(fd, content, tmp);
-    if (::fsync(fd) != 0) throw std::runtime_error(systemError(tmp + ": fsync"));
+    if (::fsync(fd) != 0) {
+      if (StorageError::isStorageFull(errno)) throw StorageError(tmp, errno);
+      throw std::runtime_error(systemError(tmp + ": fsync"));
+    }
+  } catch (const StorageError& e) {  // named by the file the user knows, not the temporary one
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw StorageError(path, e.errorNumber());
   } catch (const std::exception& e) {
     ::close(fd);
     ::unlink(tmp.c_str());
@@ -67,6 +77,11 @@ void writeFileAtomic(const std::string& path, const std::string& content) {
   }
   ::close(fd);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    if (StorageError::isStorageFull(err)) {
+      ::unlink(tmp.c_str());
+      throw StorageError(path, err);
+    }
     const std::string msg = systemError("cannot replace file");
     ::unlink(tmp.c_str());
     throw InputError(path, msg);

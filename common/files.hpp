@@ -12,12 +12,14 @@ std::string readTextFile(const std::string& path, const std::string& hint = "");
 
 /// Writes `content` to `path` atomically and durably: a temporary file in the same folder,
 /// written in full and fsync'ed, renamed over `path`, then the folder fsync'ed, so that a crash
-/// leaves either the old file or the new one, never a part. Creates parent folders. InputError
-/// naming the path on failure (the temporary file is removed).
+/// leaves either the old file or the new one, never a part. Creates parent folders. On failure
+/// (the temporary file is removed): StorageError naming `path` when the storage is full (ENOSPC,
+/// EDQUOT, EFBIG), else InputError naming the path.
 void writeFileAtomic(const std::string& path, const std::string& content);
 
-/// Writes all of `data` to the open descriptor `fd` (retrying short writes and EINTR);
-/// std::runtime_error naming `path` on failure.
+/// Writes all of `data` to the open descriptor `fd` (retrying short writes and EINTR); on
+/// failure StorageError naming `path` when the storage is full (ENOSPC, EDQUOT, EFBIG), else
+/// std::runtime_error naming `path`.
 void writeAll(int fd, const std::string& data, const std::string& path);
 /// Best effort: fsync the folder holding `path`, so a new or renamed entry survives a crash.
 void syncParentDirectory(const std::string& path);

@@ -58,16 +58,16 @@ timed() {  # timed NAME LOG COMMAND...: wall seconds of COMMAND into secs[NAME]
 }
 
 import_car() {  # import_car PREFIX DIR: drives A and B of data/drives/PREFIX_*.csv with the controlled car's mapping and study
-  "$B" import "data/drives/$1_a.csv" --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
+  "$B" import --log "data/drives/$1_a.csv" --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
     --out "$2/A" --scenario drive_a >"$2/import_a.log"
-  "$B" import "data/drives/$1_b.csv" --map data/drives/controlled_car_map.toml --study "$2/A/study.toml" \
+  "$B" import --log "data/drives/$1_b.csv" --map data/drives/controlled_car_map.toml --study "$2/A/study.toml" \
     --out "$2/B" --scenario drive_b >"$2/import_b.log"
 }
 
 drive() {  # the demonstration drive, imported once
   if [[ ! -f "$D/drive/study.toml" ]]; then
     rm -rf "$D/drive"
-    "$B" import data/drives/stop_and_go.csv --map data/drives/stop_and_go_map.toml --out "$D/drive" >/dev/null
+    "$B" import --log data/drives/stop_and_go.csv --map data/drives/stop_and_go_map.toml --out "$D/drive" >/dev/null
   fi
 }
 
@@ -113,9 +113,9 @@ for r in "${rows[@]}"; do
       ;;
     unknown_car)
       U="$D/unknown_car" && rm -rf "$U" && mkdir -p "$U"
-      "$B" import data/drives/unknown_car_a.csv --map data/drives/unknown_car_map.toml --study data/drives/unknown_car_study.toml \
+      "$B" import --log data/drives/unknown_car_a.csv --map data/drives/unknown_car_map.toml --study data/drives/unknown_car_study.toml \
         --out "$U/A" --scenario drive_a >"$U/import_a.log"
-      "$B" import data/drives/unknown_car_b.csv --map data/drives/unknown_car_map.toml --study "$U/A/study.toml" \
+      "$B" import --log data/drives/unknown_car_b.csv --map data/drives/unknown_car_map.toml --study "$U/A/study.toml" \
         --out "$U/B" --scenario drive_b >"$U/import_b.log"
       # The log holds the progress lines, each stage's time and the printed intervals.
       timed unknown_car "$U/calibrate.log" "$B" calibrate --study "$U/B/study.toml" --scenario drive_a \
@@ -151,7 +151,7 @@ for r in "${rows[@]}"; do
       ;;
     long_window)
       L="$D/long_window" && rm -rf "$L" && mkdir -p "$L"
-      "$B" import data/drives/controlled_car_c.csv --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
+      "$B" import --log data/drives/controlled_car_c.csv --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
         --out "$L/C" --scenario drive_c >"$L/import.log"
       # The structure the diagnosis of the car found: the road at the hub and a skyhook.
       sed -e 's/^tire = \["pac2002"\]/tire = ["hub"]/' "$L/C/study.toml" >"$L/C/study_found.toml"
@@ -162,7 +162,7 @@ for r in "${rows[@]}"; do
       ;;
     demo_study)
       rm -rf "$D/demo_study"
-      timed demo_study "$D/demo_study.log" "$B" study data/studies/demo.toml --out "$D/demo_study" --quiet
+      timed demo_study "$D/demo_study.log" "$B" study --study data/studies/demo.toml --out "$D/demo_study" --quiet
       ;;
     fresh_demo)
       rm -rf "$D/fresh_demo" "$D/fresh_cache"
@@ -206,7 +206,7 @@ for r in "${rows[@]}"; do
       ;;
     paper)
       # Resumable: a rerun continues the study in $D/paper; the time is this sitting's.
-      timed paper "$D/paper.log" "$B" study data/studies/paper.toml --out "$D/paper"
+      timed paper "$D/paper.log" "$B" study --study data/studies/paper.toml --out "$D/paper"
       ;;
   esac
 done

@@ -13,9 +13,9 @@ bash scripts/setup.sh demo
 t_setup=$((SECONDS - start))
 bash scripts/build.sh --demo
 t_build=$((SECONDS - start - t_setup))
-./build/cli/twin study data/studies/demo.toml --out out/study
+./build/cli/twin study --study data/studies/demo.toml --out out/study
 t_study=$((SECONDS - start - t_setup - t_build))
-./build/cli/twin report out/study --out out/study/report.html
+./build/cli/twin report --study-dir out/study --out out/study
 t_report=$((SECONDS - start - t_setup - t_build - t_study))
 echo "results in out/study/ (summary.json: wins, recommended, stages); open out/study/report.html"
 echo "wall time: set-up ${t_setup} s, build ${t_build} s, study ${t_study} s, report ${t_report} s, total $((SECONDS - start)) s"

@@ -7,7 +7,7 @@
 #   compare_unknown_car_b.png: `bash scripts/bench_jobs.sh unknown_car`, then
 #     bash scripts/screenshot.sh /tmp/dtwin_bench/unknown_car/compare_b/compare.html docs/img/compare_unknown_car_b.png
 #   study_report_lab.png, study_report_pairs.png, study_report_lab_view.png: `bash scripts/bench_jobs.sh demo_study`,
-#     then build/cli/twin report /tmp/dtwin_bench/demo_study, then
+#     then build/cli/twin report --study-dir /tmp/dtwin_bench/demo_study, then
 #     bash scripts/screenshot.sh '/tmp/dtwin_bench/demo_study/report.html#lab' docs/img/study_report_lab.png 1100,1200
 #     bash scripts/screenshot.sh '/tmp/dtwin_bench/demo_study/report.html#pairs-M1' docs/img/study_report_pairs.png 1100,960
 #     bash scripts/screenshot.sh /tmp/dtwin_bench/demo_study/report_lab.html docs/img/study_report_lab_view.png 1400,900

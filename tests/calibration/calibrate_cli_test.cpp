@@ -51,7 +51,7 @@ TEST_F(CalibrateCli, BadInputExitsTwoWithOneLine) {
       // The library names the field (calibration.gibbs_burn_in); the CLI shows it as the flag.
       {"calibrate --data " + lab + " --iterations 100 --burn-in 100 --out " + (kTmp() / "o").string(),
        "error: --burn-in: must be below the number of Gibbs iterations (100), got 100"},
-      {"calibrate --data " + lab + " --scenario nowhere --out " + (kTmp() / "o").string(), "nowhere"},
+      {"calibrate --data " + lab + "@nowhere --out " + (kTmp() / "o").string(), "nowhere"},
   };
   for (const auto& c : cases) {
     const Result r = twin(c.args);

@@ -220,7 +220,7 @@ TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
   std::string big = base;
   big.replace(big.find("posterior_draws = 100"), 21, "posterior_draws = 900000");
   writeText(dir / "big.toml", big);
-  Result r = twin("study " + (dir / "big.toml").string() + " --quiet --out " + (dir / "out").string(), dir);
+  Result r = twin("study --study " + (dir / "big.toml").string() + " --quiet --out " + (dir / "out").string(), dir);
   expectRejected(r, (dir / "big.toml").string(), "estimated work", dir / "out");
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
   r = twin("calibrate --study " + (dir / "big.toml").string() + " --data " + kSrc + "/tests/fuzz/seeds/lab/two_channels.csv" +
@@ -307,12 +307,12 @@ TEST(BrokenInputs, EveryCommandLeavesItsOutputFolderByteIdenticalOnFailure) {
       "synthesize" + b + " --calibration " + o + " --out " + o,
       "synthesize" + g + " --calibration " + o + " --out " + o,  // no posterior.csv in out/M1
       "classify" + g + " --field " + (dir / "bad_field.csv").string() + " --synthetic " + o + " --out " + o,
-      "study " + (dir / "broken.toml").string() + " --out " + o,
-      "study " + (dir / "good.toml").string() + " --lab " + (dir / "bad_lab.csv").string() + " --out " + o,
-      "study " + (dir / "good.toml").string() + " --field " + (dir / "bad_field.csv").string() + " --out " + o,
+      "study --study " + (dir / "broken.toml").string() + " --out " + o,
+      "study --study " + (dir / "good.toml").string() + " --lab " + (dir / "bad_lab.csv").string() + " --out " + o,
+      "study --study " + (dir / "good.toml").string() + " --field " + (dir / "bad_field.csv").string() + " --out " + o,
       "compare" + g + " --calibration " + o + "/M1 --data " + (dir / "bad_lab.csv").string() + " --out " + o,
       "diagnose" + g + " --data " + (dir / "bad_lab.csv").string() + " --out " + o,
-      "report " + o + " --out " + o + "/report.html",  // not a study folder
+      "report --study-dir " + o + " --out " + o,  // not a study folder
   };
   const auto before = snapshot(dir);
   for (const auto& c : commands) {
@@ -334,7 +334,7 @@ TEST(BrokenInputs, CommandLinesGetOneLineNamingTheCommand) {
       {"simulat", "unknown command 'simulat'"},
       {"simulat", "did you mean 'simulate'"},
       {"generate lb --out x.csv", "generate: unknown command 'lb'"},
-      {"", "a subcommand is required"},
+      {"--bogus", "(see twin --help)"},  // `twin` alone prints the overview (tests/cli/help_examples_test.cpp)
       {"generate", "(see twin generate --help)"},
       {"simulate --bogus --out " + (dir / "o" / "x.csv").string(), "--bogus"},
       {"simulate --out", "--out"},

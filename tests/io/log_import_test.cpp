@@ -175,7 +175,7 @@ TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
     const fs::path log = dir / "log.csv";
     dtwin_test::writeText(log, c.log);
     const fs::path out = dir / ("out_" + c.name);
-    const Cli r = twin("import " + log.string() + " --map " + c.map + " --out " + out.string());
+    const Cli r = twin("import --log " + log.string() + " --map " + c.map + " --out " + out.string());
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // one line
@@ -188,7 +188,7 @@ TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
 TEST(LogImport, FlagsMapTheLogAndAnExistingFolderIsKept) {
   const fs::path dir = dtwin_test::freshDir("import_flags");
   dtwin_test::writeText(dir / "log.csv", makeLog());
-  const std::string base = "import " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --road zr:mm --channel defl:susp_defl_fl_m:mm";
+  const std::string base = "import --log " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --road zr:mm --channel defl:susp_defl_fl_m:mm";
   Cli r = twin(base + " --out " + (dir / "out").string());
   ASSERT_EQ(r.code, 0) << r.err;
   const Study s = loadStudy((dir / "out" / "study.toml").string());
@@ -201,7 +201,7 @@ TEST(LogImport, FlagsMapTheLogAndAnExistingFolderIsKept) {
   r = twin(base + " --map x.toml --out " + (dir / "out2").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--map: give the mapping either in the file or as flags"), std::string::npos) << r.err;
-  r = twin("import " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --channel defl:susp_defl_fl_m:furlong --out " +
+  r = twin("import --log " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --channel defl:susp_defl_fl_m:furlong --out " +
            (dir / "out3").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("unknown unit 'furlong'"), std::string::npos) << r.err;
@@ -377,7 +377,7 @@ TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
     log += row;
   }
   dtwin_test::writeText(dir / "log.txt", log);
-  const Cli r = twin("import " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
+  const Cli r = twin("import --log " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
                      " --separator whitespace --quiet --out " + (dir / "out").string());
   ASSERT_EQ(r.code, 0) << r.err;
   const LabData back = readLabCsv((dir / "out" / "measurements.csv").string());
@@ -386,7 +386,7 @@ TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
   EXPECT_DOUBLE_EQ(back.records[150].value, 0.15);
   EXPECT_NE(dtwin_test::slurp(dir / "out" / "speed.csv").find("\n1.5,15\n"), std::string::npos);  // 54 km/h
   for (const char* bad : {"'a'", "'.'", "'\"'"}) {
-    const Cli b = twin("import " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
+    const Cli b = twin("import --log " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
                        " --separator " + bad + " --out " + (dir / "bad").string());
     EXPECT_EQ(b.code, 2) << bad;
     EXPECT_NE(b.err.find("--separator: must be one character such as"), std::string::npos) << b.err;
@@ -402,7 +402,7 @@ TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
 TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
   const fs::path dir = dtwin_test::freshDir("import_compare");
   const std::string drive = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
-  Cli r = twin("import " + drive + "stop_and_go.csv --map " + drive + "stop_and_go_map.toml --quiet --out " + (dir / "drive").string());
+  Cli r = twin("import --log " + drive + "stop_and_go.csv --map " + drive + "stop_and_go_map.toml --quiet --out " + (dir / "drive").string());
   ASSERT_EQ(r.code, 0) << r.err;
   fs::create_directories(dir / "cal");
   dtwin_test::writeText(dir / "cal" / "summary.json", R"({"assembly": "M1"})");

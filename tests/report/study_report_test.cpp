@@ -39,18 +39,18 @@ TEST(Report, TinyStudyReportRendersInChromium) {
   const fs::path study = dtwin_test::writeTinyStudy(kTmp() / "tiny.toml");
   const fs::path dir = kTmp() / "study";
   const std::string twin = DTWIN_TWIN_EXE;
-  ASSERT_EQ(std::system((twin + " study " + study.string() + " --out " + dir.string() + " --quiet").c_str()), 0);
+  ASSERT_EQ(std::system((twin + " study --study " + study.string() + " --out " + dir.string() + " --quiet").c_str()), 0);
 
   // Without gnuplot: one clear line naming the package, exit code 2, nothing written.
   const fs::path err = kTmp() / "nognuplot.err";
-  const int rc = std::system(("env PATH=/nonexistent " + twin + " report " + dir.string() + " 2>" + err.string()).c_str());
+  const int rc = std::system(("env PATH=/nonexistent " + twin + " report --study-dir " + dir.string() + " 2>" + err.string()).c_str());
   ASSERT_TRUE(WIFEXITED(rc));
   EXPECT_EQ(WEXITSTATUS(rc), 2);
   EXPECT_NE(slurp(err).find("gnuplot-nox"), std::string::npos) << slurp(err);
   EXPECT_FALSE(fs::exists(dir / "report.html"));
 
   if (findOnPath("gnuplot").empty()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox): cannot draw the report";
-  ASSERT_EQ(std::system((twin + " report " + dir.string() + " --quiet").c_str()), 0);
+  ASSERT_EQ(std::system((twin + " report --study-dir " + dir.string() + " --quiet").c_str()), 0);
   const fs::path html = dir / "report.html";
   ASSERT_TRUE(fs::exists(html));
   const std::string page = slurp(html);
@@ -92,10 +92,10 @@ TEST(Report, TinyStudyReportRendersInChromium) {
   for (auto it = std::sregex_iterator(page.begin(), page.end(), id_re); it != std::sregex_iterator(); ++it) ++ids[(*it)[2]];
   for (const auto& [id, n] : ids) EXPECT_EQ(n, 1) << "duplicate id " << id;
 
-  // --out elsewhere.
-  ASSERT_EQ(std::system((twin + " report " + dir.string() + " --quiet --draws 5 --out " + (kTmp() / "r" / "x.html").string()).c_str()), 0);
-  EXPECT_EQ(count(slurp(kTmp() / "r" / "x.html"), "<svg"), 9u);
-  EXPECT_TRUE(fs::exists(kTmp() / "r" / "x_lab.html"));
+  // --out elsewhere: a folder.
+  ASSERT_EQ(std::system((twin + " report --study-dir " + dir.string() + " --quiet --draws 5 --out " + (kTmp() / "r").string()).c_str()), 0);
+  EXPECT_EQ(count(slurp(kTmp() / "r" / "report.html"), "<svg"), 9u);
+  EXPECT_TRUE(fs::exists(kTmp() / "r" / "report_lab.html"));
 
   const std::string chromium = dtwin_test::findChromium();
   if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium): the rendering check is skipped";

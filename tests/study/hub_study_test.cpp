@@ -20,7 +20,7 @@ TEST(HubStudy, AStudyWithTheHubInputAsATireOptionRunsWhole) {
   s = std::regex_replace(s, std::regex("tire = \\[[^\\]]*\\]"), "tire = [\"pac2002\", \"hub\"]");
   s = std::regex_replace(s, std::regex("include = \\[[^\\]]*\\]"), "include = [\"M1\", \"M3\"]");
   dtwin_test::writeText(study, s);
-  const auto r = dtwin_test::runTwin("study " + study.string() + " --out " + (dir / "out").string() + " --quiet", dir);
+  const auto r = dtwin_test::runTwin("study --study " + study.string() + " --out " + (dir / "out").string() + " --quiet", dir);
   ASSERT_EQ(r.code, 0) << r.err;
   const auto m3 = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "calibration" / "M3" / "summary.json"));
   EXPECT_EQ(m3.at("label"), "hub + macpherson");

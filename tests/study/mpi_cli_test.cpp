@@ -103,7 +103,7 @@ TEST(MpiCli, TinyStudyIsBitIdenticalWithTwoRanks) {
   fs::remove_all(tmp);
   fs::create_directories(tmp);
   const fs::path study = dtwin_test::writeTinyStudy(tmp / "tiny.toml", 2);
-  const std::string cmd = kTwin + " study " + study.string() + " --threads 1 --quiet --out ";
+  const std::string cmd = kTwin + " study --study " + study.string() + " --threads 1 --quiet --out ";
   ASSERT_EQ(run(cmd + (tmp / "one").string()), 0);
   ASSERT_EQ(run(mpirun2() + cmd + (tmp / "two").string()), 0);
   for (const std::string f : {"lab/lab.csv", "field/field.csv", "calibration/M3/posterior.csv", "calibration/M4/posterior.csv",

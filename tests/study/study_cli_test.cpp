@@ -31,7 +31,7 @@ TEST(StudyCli, KilledStudyResumesToIdenticalResults) {
   fs::remove_all(kTmp());
   fs::create_directories(kTmp());
   const fs::path study = dtwin_test::writeTinyStudy(kTmp() / "tiny.toml");
-  const std::string base = std::string(DTWIN_TWIN_EXE) + " study " + study.string() + " --quiet";
+  const std::string base = std::string(DTWIN_TWIN_EXE) + " study --study " + study.string() + " --quiet";
   ASSERT_EQ(std::system((base + " --threads 2 --out " + (kTmp() / "whole").string()).c_str()), 0);
 
   const nlohmann::json s = nlohmann::json::parse(slurp(kTmp() / "whole" / "summary.json"));

@@ -25,7 +25,7 @@ TEST(StudyEndToEnd, DemoStudyPicksTheGeneratingAssemblyAndFollowsTheRule) {
   dtwin_test::writeDemoStudy(tmp / "demo_small.toml",
                              "lab_repetitions = 10\nfield_runs = 20\nlhs_points = 60\ngibbs_iterations = 6000\ngibbs_burn_in = 1000\n"
                              "posterior_draws = 40\nroads_per_draw = 5\nroad_library = 200\noptimizer_starts = 2\n");
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " study " + (tmp / "demo_small.toml").string() + " --quiet --out " +
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " study --study " + (tmp / "demo_small.toml").string() + " --quiet --out " +
                           (tmp / "study").string();
   ASSERT_EQ(std::system(cmd.c_str()), 0);
 

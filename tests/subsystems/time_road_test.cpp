@@ -163,7 +163,9 @@ TEST(TimeRoad, AVelocityLogKeepsItsDetailBetweenSamples) {
     const auto h = roadHeightFromVelocity(log.t_s, log.left, 0.05);
     double worst_h = 0;
     for (std::size_t k = 3000; k < 4000; ++k) worst_h = std::max(worst_h, std::abs(h[k] - A * std::sin(w * log.t_s[k])));
-    if (f == 10.0) EXPECT_LT(worst_h, 0.005 * A);
+    if (f == 10.0) {
+      EXPECT_LT(worst_h, 0.005 * A);
+    }
     TimeRoadOptions o;
     o.dx_m = 0.005;
     o.highpass_hz = 0.05;

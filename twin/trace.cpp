@@ -11,6 +11,7 @@
 
 #include "common/json.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 
 namespace dtwin {
 

@@ -171,7 +171,10 @@ DesignJournal::DesignJournal(const std::string& path, int dim, const std::string
     if (fd_ < 0) throw InputError(path, systemError("cannot create design journal"));
     try {
       writeAll(fd_, headerLine(dim, fingerprint), path);
-      if (durable_ && ::fsync(fd_) != 0) throw std::runtime_error(systemError(path + ": fsync"));
+      if (durable_ && ::fsync(fd_) != 0) {
+        if (StorageError::isStorageFull(errno)) throw StorageError(path, errno);  // delayed allocation
+        throw std::runtime_error(systemError(path + ": fsync"));
+      }
     } catch (...) {
       ::close(fd_);
       throw;
@@ -204,7 +207,10 @@ void DesignJournal::append(std::int64_t index, const std::vector<double>& theta,
   line += '\n';
   std::lock_guard<std::mutex> lock(mutex_);
   writeAll(fd_, line, path_);
-  if (durable_ && ::fsync(fd_) != 0) throw std::runtime_error(systemError(path_ + ": fsync"));
+  if (durable_ && ::fsync(fd_) != 0) {
+    if (StorageError::isStorageFull(errno)) throw StorageError(path_, errno);  // delayed allocation
+    throw std::runtime_error(systemError(path_ + ": fsync"));
+  }
 }
 
 void writeDesignTableCsv(const std::string& path, const std::vector<std::string>& names,

@@ -15,31 +15,15 @@
 #include <nlohmann/json.hpp>
 
 #include "calibration/calibrate.hpp"
+#include "io/posterior_file.hpp"
 
 namespace dtwin::calib {
 
-/// A posterior sample as `twin calibrate` writes it (posterior.csv): θ columns, then tau, then
-/// design_index; one row per kept Gibbs iteration.
-struct PosteriorSample {
-  std::string path;
-  std::vector<std::string> names;          ///< θ column names (the calibrated parameters)
-  std::vector<std::vector<double>> theta;  ///< one row per draw, names.size() values each
-  std::vector<double> tau;                 ///< error precision [1/unit²], > 0
-  std::vector<long> design_index;          ///< >= 0
-  std::size_t size() const { return tau.size(); }
-};
-
-/// Reads and validates posterior.csv. Rules (InputError naming file:line, the column and the
-/// rule): a header of at least one θ name, then `tau`, then `design_index`, names unique and
-/// non-empty; every line has one field per column; θ values finite numbers; tau a finite number
-/// > 0; design_index an integer >= 0; at least one row. CR line ends and blank lines are accepted.
-PosteriorSample readPosteriorCsv(const std::string& path);
-/// The same from text; `name` prefixes errors.
-PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name);
-
-/// The text of posterior.csv (numbers round-trip exactly): the inverse of parsePosteriorCsv.
-std::string posteriorCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& theta,
-                         const std::vector<double>& tau, const std::vector<long>& design_index);
+// posterior.csv, its reader and writer: io/posterior_file.hpp.
+using dtwin::PosteriorSample;
+using dtwin::parsePosteriorCsv;
+using dtwin::posteriorCsv;
+using dtwin::readPosteriorCsv;
 
 /// A calibration folder read back.
 struct CalibrationFolder {

@@ -64,7 +64,7 @@ int runBench(const std::string& study_path, int runs, bool markdown, const std::
 
 
 /// `--hand-ode`: the Simbody twin against the hand-written 7-DOF ODE on the study's bump
-/// (twin/hand_ode.hpp), both integrated by ROS34PW2 at the study's accuracy.
+/// (study/hand_ode.hpp), both integrated by ROS34PW2 at the study's accuracy.
 int runHandOdeBench(const std::string& study_path, int runs, bool markdown, std::vector<std::string> ids) {
   const Study study = loadStudy(study_path);
   const ScenarioSpec* bump = nullptr;

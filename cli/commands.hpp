@@ -28,7 +28,7 @@ struct CommandHandle {
 
 /// A registry entry of a subcommand: what adds it to the root application (its options and what it
 /// runs), and whether it runs on every MPI rank (the commands that spread simulations,
-/// twin/distributed.hpp) rather than on the root alone.
+/// common/distributed.hpp) rather than on the root alone.
 /// What a command runs in, passed to it explicitly: the command line as typed (recorded in every
 /// output) and the process context main() created (common/distributed.hpp: the MPI ranks).
 struct CommandContext {
@@ -79,11 +79,11 @@ bool progressOn(bool quiet, const Distributed* processes);
 CommandHandle addSimulateCommand(CLI::App& root, const CommandContext& context);
 CommandHandle addListCommand(CLI::App& root, const CommandContext& context);
 CommandHandle addBenchCommand(CLI::App& root, const CommandContext& context);
-/// `twin generate lab|field`: synthetic measurements (io/generate.hpp, docs/data-files.md).
+/// `twin generate lab|field`: synthetic measurements (study/generate.hpp, docs/data-files.md).
 CommandHandle addGenerateCommand(CLI::App& root, const CommandContext& context);
 /// `twin calibrate`: Griddy Gibbs calibration of assemblies against lab data (calibration/calibrate.hpp).
 CommandHandle addCalibrateCommand(CLI::App& root, const CommandContext& context);
-/// `twin coverage`: how often the calibration's 95 % intervals hold the truth (calibration/coverage.hpp).
+/// `twin coverage`: how often the calibration's 95 % intervals hold the truth (study/coverage.hpp).
 CommandHandle addCoverageCommand(CLI::App& root, const CommandContext& context);
 /// `twin synthesize`: synthetic field data per calibrated assembly as moments (classification/synthesis.hpp).
 CommandHandle addSynthesizeCommand(CLI::App& root, const CommandContext& context);

@@ -1,5 +1,5 @@
 // `twin coverage`: how often the calibration's 95 % intervals hold the truth, over noise seeds
-// (calibration/coverage.hpp, docs/calibration.md).
+// (study/coverage.hpp, docs/calibration.md).
 #include <cstdio>
 #include <filesystem>
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
-// RunFailedError: a simulation that failed while generating data (io/generate.hpp). In its own
-// header so that the distributed layer (twin/distributed.hpp) can carry it from one MPI rank to
+// RunFailedError: a simulation that failed while generating data (study/generate.hpp). In its own
+// header so that the distributed layer (common/distributed.hpp) can carry it from one MPI rank to
 // every other without depending on the simulator.
 #include <cstddef>
 #include <cstdint>

@@ -11,7 +11,7 @@
 #
 # Rows: readme (the README's diagnose walkthrough), drive_calibrate (`twin calibrate` of M1 on the
 # demonstration drive), drive_vehicle (the same with the chassis mass and pitch inertia and the
-# seat accelerometer's x position calibrated too: issue 32), drive_diagnose (the drive's diagnose walkthrough of docs/measurements.md),
+# seat accelerometer's x position calibrated too), drive_diagnose (the drive's diagnose walkthrough of docs/measurements.md),
 # unknown_car (docs/measurements.md, "A car nobody measured": two imports, then the timed
 # twelve-value calibration on drive A, then the comparison on drive B with the FIR baseline;
 # figures in its logs),
@@ -90,8 +90,8 @@ for r in "${rows[@]}"; do
     drive_calibrate)
       drive
       rm -rf "$D/drive_calibrate"
-      timed drive_calibrate "$D/drive_calibrate.log" "$B" calibrate --study "$D/drive/study.toml" --assembly M1 --scenario drive \
-        --data "$D/drive/measurements.csv" --out "$D/drive_calibrate" --quiet
+      timed drive_calibrate "$D/drive_calibrate.log" "$B" calibrate --study "$D/drive/study.toml" --assembly M1 \
+        --data "$D/drive/measurements.csv@drive" --out "$D/drive_calibrate" --quiet
       ;;
     drive_vehicle)
       drive
@@ -101,8 +101,8 @@ for r in "${rows[@]}"; do
         printf '\n[[calibrated]]\nname = "chassis.mass_kg"\nlower = 1100\nupper = 1700\n'
         printf '\n[[calibrated]]\nname = "chassis.pitch_inertia_kgm2"\nlower = 1500\nupper = 2800\n'
         printf '\n[[calibrated]]\nname = "sensors.seat.x_m"\nlower = 0.4\nupper = 1.4\n'; } >"$D/drive/study_vehicle.toml"
-      timed drive_vehicle "$D/drive_vehicle.log" "$B" calibrate --study "$D/drive/study_vehicle.toml" --assembly M1 --scenario drive \
-        --data "$D/drive/measurements.csv" --out "$D/drive_vehicle" --quiet
+      timed drive_vehicle "$D/drive_vehicle.log" "$B" calibrate --study "$D/drive/study_vehicle.toml" --assembly M1 \
+        --data "$D/drive/measurements.csv@drive" --out "$D/drive_vehicle" --quiet
       ;;
     drive_diagnose)
       drive
@@ -118,8 +118,8 @@ for r in "${rows[@]}"; do
       "$B" import --log data/drives/unknown_car_b.csv --map data/drives/unknown_car_map.toml --study "$U/A/study.toml" \
         --out "$U/B" --scenario drive_b >"$U/import_b.log"
       # The log holds the progress lines, each stage's time and the printed intervals.
-      timed unknown_car "$U/calibrate.log" "$B" calibrate --study "$U/B/study.toml" --scenario drive_a \
-        --data "$U/A/measurements.csv" --out "$U/cal"
+      timed unknown_car "$U/calibrate.log" "$B" calibrate --study "$U/B/study.toml" \
+        --data "$U/A/measurements.csv@drive_a" --out "$U/cal"
       "$B" compare --study "$U/B/study.toml" --calibration "$U/cal/M1" --data "$U/B/measurements.csv@drive_b" \
         --baseline "$U/A/measurements.csv@drive_a" --out "$U/compare_b" >"$U/compare_b.txt"
       ;;
@@ -127,7 +127,7 @@ for r in "${rows[@]}"; do
       C="$D/controlled_car" && rm -rf "$C" && mkdir -p "$C"
       walk() {
         import_car controlled_car "$C"
-        /usr/bin/time -f "calibrate %e s" "$B" calibrate --study "$C/B/study.toml" --scenario drive_a --data "$C/A/measurements.csv" \
+        /usr/bin/time -f "calibrate %e s" "$B" calibrate --study "$C/B/study.toml" --data "$C/A/measurements.csv@drive_a" \
           --out "$C/cal" >"$C/calibrate.log" 2>&1
         /usr/bin/time -f "diagnose %e s" "$B" diagnose --study "$C/B/study.toml" --data "$C/A/measurements.csv@drive_a" \
           --holdout "$C/B/measurements.csv@drive_b" --out "$C/diag" --causes 3 --candidates 2 >"$C/diagnose.log" 2>&1
@@ -157,8 +157,8 @@ for r in "${rows[@]}"; do
       sed -e 's/^tire = \["pac2002"\]/tire = ["hub"]/' "$L/C/study.toml" >"$L/C/study_found.toml"
       printf '\n[effects.skyhook]\ndamping = 0.0\n\n[[calibrated]]\nname = "skyhook.damping"\nunit = "N*s/m"\nlower = 0.0\nupper = 8000.0\n' \
         >>"$L/C/study_found.toml"
-      timed long_window "$L/calibrate.log" "$B" calibrate --study "$L/C/study_found.toml" --scenario drive_c \
-        --data "$L/C/measurements.csv" --out "$L/cal"
+      timed long_window "$L/calibrate.log" "$B" calibrate --study "$L/C/study_found.toml" \
+        --data "$L/C/measurements.csv@drive_c" --out "$L/cal"
       ;;
     demo_study)
       rm -rf "$D/demo_study"

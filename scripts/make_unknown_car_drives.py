@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Makes two drives of a car nobody measured (issue 32's demonstration; docs/measurements.md,
+"""Makes two drives of a car nobody measured (the demonstration of docs/measurements.md,
 "A car nobody measured"): data/drives/unknown_car_a.csv and unknown_car_b.csv, logger files as a
 test car would record them, made by the twin itself with a vehicle that is NOT the demo vehicle.
 

@@ -407,7 +407,7 @@ FieldResult generateField(const Study& study, const AssemblySpec& assembly, cons
   };
   std::vector<Stats> stats(N);
   // Runs are spread over the MPI ranks (run i on rank i % size) and the threads of each rank;
-  // every rank receives every run's window (twin/distributed.hpp).
+  // every rank receives every run's window (common/distributed.hpp).
   const int workers = distributedWorkers(opt.processes, N, opt.threads);
   std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
   if (progress) progress(0, N);

@@ -1,5 +1,5 @@
 #pragma once
-// The Simbody twin against a hand-written ODE of the same vehicle (issue 29: "one 15 s bump run
+// The Simbody twin against a hand-written ODE of the same vehicle ("one 15 s bump run
 // against the hand-written 7-DOF ODE of the same model: <= 3x, or the measured reason why not").
 //
 // Three parts:

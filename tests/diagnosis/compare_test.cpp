@@ -203,7 +203,7 @@ TEST(Compare, EveryEffectsSignatureIsAMapAndFitTheComparisonMakes) {
   }
 }
 
-// Issue 32's done-when: the unknown car's drive B (data/drives, made by
+// the unknown car's drive B (data/drives, made by
 // scripts/make_unknown_car_drives.py), imported with its mapping into drive A's study and
 // compared at the hidden truth, fits its string potentiometer within 1.5 noise sd once the
 // logger's 30 Hz filter is declared on the travel sensor, and far outside without it.

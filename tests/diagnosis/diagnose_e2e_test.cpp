@@ -1,4 +1,4 @@
-// Issue 5's acceptance test, end to end on the real twin (slow): data with a hidden effect on two
+// The diagnosis's acceptance test, end to end on the real twin (slow): data with a hidden effect on two
 // scenarios (diag_bump, diag_rough; 4 hub forces at 200 Hz, 3 repetitions), `diagnose` from the
 // base assembly M1 names it first, recovers its main parameter within 20 %, and adding it cuts
 // the systematic residual RMS by >= 50 % (or, for an effect too weak for that, to the noise); data without a hidden effect give "none"; data with an
@@ -186,7 +186,7 @@ TEST(Diagnose, AnEffectOutsideTheCatalogueIsUnexplained) {
   EXPECT_LT(r.base.comparison.lack_of_fit_p, 1e-3) << r.text();
 }
 
-// Issue 16's known answers (label diag16, about 15 min on 2 cores; kept out of the default run like
+// Known answers beyond the catalogue (label diag16, about 15 min on 2 cores; kept out of the default run like
 // the matrix): causes that are not catalogue forces are named for what they are, with their
 // value, and applying them cuts the systematic error by half.
 
@@ -229,7 +229,7 @@ TEST(Diagnose16, AWheelMassTwentyPercentHeavierIsNamed) {
 }
 
 TEST(Diagnose16, APitchInertiaThirtyFivePercentHighIsNamed) {
-  // Issue 31: 2835 kg m^2 against the file's 2100, with roll 500 and yaw 2300. The data and the
+  // 2835 kg m^2 against the file's 2100, with roll 500 and yaw 2300. The data and the
   // freed value's prior range (up to 3150) both pass the triangle inequality only because the yaw
   // inertia follows (docs/model.md); Simbody refused them before.
   const Study s = study();
@@ -242,7 +242,7 @@ TEST(Diagnose16, APitchInertiaThirtyFivePercentHighIsNamed) {
 }
 
 TEST(Diagnose16, TheCgEightCentimetresForwardIsNamed) {
-  // Issue 31: the weight distribution moved at a fixed wheelbase (a 1.435, b 1.584 m in the
+  // The weight distribution moved at a fixed wheelbase (a 1.435, b 1.584 m in the
   // issue's car); the axles, and so the road under them, stay where they are.
   const Study s = study();
   auto o = trustedIntervals(s, smallOptions(s));
@@ -265,7 +265,7 @@ TEST(Diagnose16, A25HzSensorLowPassIsNamed) {
 }
 
 TEST(Diagnose16, APure8msDelayIsNamedNotItsLowPassLookAlike) {
-  // Issue 31: a low-pass's group delay mimics a delay; the screening ranks the three sensor models
+  // A low-pass's group delay mimics a delay; the screening ranks the three sensor models
   // close together, and all three are confirmed side by side (within a factor of the best score),
   // so the delay, which fits exactly, wins on evidence.
   const Study s = study();
@@ -307,7 +307,7 @@ void expectTwoCauses(const DiagnosisResult& r, const std::map<std::string, std::
 }  // namespace
 
 TEST(Diagnose16, TwoHiddenCatalogueEffectsAreBothNamed) {
-  // Issue 31: real cars rarely have one thing wrong. A bump stop and an asymmetric damper at once.
+  // Real cars rarely have one thing wrong. A bump stop and an asymmetric damper at once.
   const Study s = study();
   auto o = smallOptions(s);
   o.apply = {"bump_stop", "damper_asymmetry"};

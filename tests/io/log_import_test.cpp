@@ -440,7 +440,7 @@ TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
   EXPECT_NE(dtwin_test::slurp(out).find("lack of fit: chi2 = "), std::string::npos);
 }
 
-// Issue 32: a window keeps rows [a, b] as measurements, the run starts run_in_s before a with the
+// A window keeps rows [a, b] as measurements, the run starts run_in_s before a with the
 // log's speed and road, and the distance driven before it becomes the speed's start_m; a mask
 // drops the rows where a column's magnitude is above (or below) its threshold. The sidecar says
 // how many rows were dropped and why.
@@ -542,7 +542,7 @@ TEST(LogImport, BadWindowsAndMasksAreOneLineErrors) {
   EXPECT_NE(e.find("needs window_s"), std::string::npos) << e;
 }
 
-// The done-when of issue 32: a window cut from a drive predicts what the whole drive predicts over
+// a window cut from a drive predicts what the whole drive predicts over
 // the same stretch, once the run-in has let the start's equilibrium transient die away.
 TEST(LogImport, AWindowPredictsWhatTheWholeDrivePredictsThere) {
   const fs::path dir = dtwin_test::freshDir("import_window_same");

@@ -1,4 +1,4 @@
-// Synthetic measurements (io/generate.hpp): automatic lab times, noise statistics, [lab]
+// Synthetic measurements (study/generate.hpp): automatic lab times, noise statistics, [lab]
 // settings, determinism whatever the thread count, independent roads per field run with a common
 // smooth part, failed runs named with their seed, and parallelFor's error propagation.
 #include <gtest/gtest.h>

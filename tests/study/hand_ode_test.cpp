@@ -1,4 +1,4 @@
-// The hand-written 7-DOF ODE of M3 and its generic ROS34PW2 stepper (twin/hand_ode.hpp; issue 29,
+// The hand-written 7-DOF ODE of M3 and its generic ROS34PW2 stepper (study/hand_ode.hpp,
 // `twin bench --hand-ode`): the stepper against closed forms, the ODE at rest against the static
 // loads, and the ODE on the bump against the Simbody twin. No timing here (that is the bench's).
 #include <gtest/gtest.h>

@@ -206,7 +206,7 @@ TEST(FreedValue, TheCgMovesForwardAtAFixedWheelbaseAndTheStaticLoadsFollow) {
   }
 }
 
-// Issue 32: a vehicle value can be calibrated like a law value ([[calibrated]]): every model of
+// A vehicle value can be calibrated like a law value ([[calibrated]]): every model of
 // the study frees it, and the objective at a value predicts what a study with that value fixed
 // predicts, bit for bit. Bounds that would move the CG off the wheelbase are refused when read.
 TEST(FreedValue, AVehicleValueInCalibratedIsCalibratedLikeALawValue) {

@@ -274,7 +274,7 @@ TEST(SensorTwin, LabDataCanBeGeneratedOnASensorChannel) {
   EXPECT_NO_THROW(labCsvText(r.data, measurableChannels(s.sensors)));
 }
 
-// Issue 32: a sensor's position and offset are run parameters (sensors.NAME.x_m, .y_m, .z_m,
+// A sensor's position and offset are run parameters (sensors.NAME.x_m, .y_m, .z_m,
 // .offset): a calibration that frees them predicts, at a value, what a study with the sensor
 // mounted there predicts, bit for bit, and an offset adds itself to every sample.
 TEST(SensorTwin, ASensorsPositionAndOffsetAreRunParameters) {

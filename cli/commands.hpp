@@ -99,6 +99,8 @@ CommandHandle addCompareCommand(CLI::App& root, const CommandContext& context);
 CommandHandle addImportCommand(CLI::App& root, const CommandContext& context);
 /// `twin diagnose`: which catalogue effect the assembly misses; --apply adds effects (diagnosis/diagnose.hpp).
 CommandHandle addDiagnoseCommand(CLI::App& root, const CommandContext& context);
+/// `twin changes`: what changed between two calibrations of one car (study/changes.hpp).
+CommandHandle addChangesCommand(CLI::App& root, const CommandContext& context);
 /// `twin help [COMMAND [SUBCOMMAND]]`: the overview, or a command's help (as `twin COMMAND --help`).
 CommandHandle addHelpCommand(CLI::App& root, const CommandContext& context);
 

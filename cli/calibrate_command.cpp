@@ -1,5 +1,6 @@
 // `twin calibrate`: Griddy Gibbs calibration of one or every assembly against a lab data file.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <tuple>
 #include <utility>
@@ -9,6 +10,8 @@
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/json.hpp"
+#include "io/provenance.hpp"
 #include "diagnosis/measurements.hpp"
 #include "study/calibrate.hpp"
 
@@ -25,14 +28,22 @@ struct CalibrateConfig {
 };
 
 /// The lab data file and its scenario: --data FILE[@SCENARIO] (the parser of compare and
-/// diagnose); the older --scenario NAME is still accepted, with a note. Default scenario: lab.
+/// diagnose); without @SCENARIO, the scenario the file's sidecar names, else lab; a scenario
+/// the sidecar contradicts is refused, as compare and diagnose refuse it. The older --scenario
+/// NAME is still accepted, with a note.
 std::pair<std::string, std::string> calibrationData(const CalibrateConfig& cfg) {
   const diag::MeasurementSpec spec = diag::parseMeasurementArg(cfg.data, "--data");
-  if (cfg.scenario.empty()) return {spec.path, spec.scenario.empty() ? "lab" : spec.scenario};
+  const std::string named = sidecarScenario(spec.path);
+  auto checked = [&](const std::string& scenario) {
+    if (!named.empty() && scenario != named)
+      throw InputError(spec.path + "@" + scenario, "its sidecar " + sidecarPath(spec.path) + " says it was measured on scenario '" + named + "'");
+    return std::make_pair(spec.path, scenario);
+  };
+  if (cfg.scenario.empty()) return checked(!spec.scenario.empty() ? spec.scenario : named.empty() ? "lab" : named);
   if (!spec.scenario.empty() && spec.scenario != cfg.scenario)
     throw InputError("--scenario", "'" + cfg.scenario + "' differs from the scenario of --data " + cfg.data + ": give it once, as --data FILE@SCENARIO");
   deprecationNote("twin calibrate --data FILE --scenario NAME", "twin calibrate --data FILE@NAME", cfg.processes);
-  return {spec.path, cfg.scenario};
+  return checked(cfg.scenario);
 }
 
 int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
@@ -90,7 +101,7 @@ CommandHandle addCalibrateCommand(CLI::App& root, const CommandContext& context)
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option("--data", cfg->data,
                 "Lab data FILE[@SCENARIO] (repetition,time_s,channel,value), e.g. from `twin generate lab`; SCENARIO: the "
-                "study's scenario it was measured on (default: lab)")
+                "study's scenario it was measured on (default: the one its JSON sidecar names, else lab)")
       ->required();
   c->add_option("--assembly", cfg->assembly, "Assembly ids (M1, M2, ...; comma separated or repeated) or 'all'")
       ->capture_default_str()

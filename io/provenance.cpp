@@ -6,6 +6,9 @@
 #include <filesystem>
 
 #include "dtwin/version.hpp"
+#include "common/errors.hpp"
+#include "common/files.hpp"
+#include "common/json.hpp"
 
 namespace dtwin {
 
@@ -55,6 +58,22 @@ std::string sidecarPath(const std::string& csv_path) {
   std::filesystem::path p(csv_path);
   p.replace_extension(".json");
   return p.string();
+}
+
+std::string sidecarScenario(const std::string& csv_path) {
+  const std::string side = sidecarPath(csv_path);
+  if (!std::filesystem::exists(side)) return "";
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(readTextFile(side));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(side, std::string("is not valid JSON: ") + jsonErrorInWords(e));
+  }
+  if (!j.is_object() || !j.contains("scenario")) return "";
+  if (j["scenario"].is_object() && j["scenario"].contains("name") && j["scenario"]["name"].is_string())
+    return j["scenario"]["name"].get<std::string>();
+  if (j["scenario"].is_string()) return j["scenario"].get<std::string>();
+  return "";
 }
 
 }  // namespace dtwin

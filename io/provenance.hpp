@@ -25,5 +25,9 @@ nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioS
 
 /// "out/m1.csv" -> "out/m1.json".
 std::string sidecarPath(const std::string& csv_path);
+/// The scenario a data file's JSON sidecar names ("scenario": {"name": ..} as `twin generate lab`
+/// writes it, or a string), "" when there is no sidecar or it names none; InputError naming the
+/// sidecar when it is not valid JSON.
+std::string sidecarScenario(const std::string& csv_path);
 
 }  // namespace dtwin

@@ -182,6 +182,7 @@ struct Simulator::Impl {
       auto* se = new StrutElement(&ctx, &M, &M.strut(), struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
                                   filter_states, forces.getMySubsystemIndex());
       strut_elems[c] = se;
+      se->factors_ = M.strutFactors()[static_cast<std::size_t>(c)];
       if (M.topology() == SuspensionTopology::MacPherson) {
         se->bind_slider_ = true;  // the wheel carrier slides along the chassis z at the strut
       } else {
@@ -202,6 +203,7 @@ struct Simulator::Impl {
       tc.p0 = contiguous(M.tireSlots());
       tc.np = M.tireSlots().size();
       tc.r0 = parameterIndex(M.tire().parameters(), "unloaded_radius_m");
+      tc.factors = M.tireFactors()[static_cast<std::size_t>(c)];
       for (std::size_t i = 0; i < M.effects().size(); ++i)
         if (M.effects()[i]->kind() == EffectKind::TireInput)
           tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
@@ -243,7 +245,11 @@ struct Simulator::Impl {
     const double R0 = M.tire().unloadedRadius(tp);
     std::array<double, 4> target{};
     for (int c = 0; c < 4; ++c) {
-      const double rho = M.tire().calcStaticDeflection(M.staticTireLoad(c), tp);
+      // The corner's own tire values (its factors applied; tp itself without). A stiffness factor
+      // at one corner makes the four hub targets non-coplanar: the start places FL, FR and RL and
+      // the run settles into the warped equilibrium (docs/model.md, "Per-corner and per-axle values").
+      LawValueBuffer buf;
+      const double rho = M.tire().calcStaticDeflection(M.staticTireLoad(c), tires[c].values(ctx, buf));
       const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
       const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
       target[c] = ctx.p[ctx.gain_slot] * ctx.road->sample(cornerTrack(c), x_road + shift).height_m + R0 - rho;

@@ -373,6 +373,11 @@ std::string CandidateSpec::finding(const std::vector<double>& values) const {
   if (kind == "parameter" && calibrated_names[0] == kCgShift)
     return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +
            (v >= parameters[0].default_value ? "ahead of" : "behind") + " the vehicle file's position (the same wheelbase)";
+  if (const auto f = parseCornerFactor(calibrated_names[0]); kind == "parameter" && f) {
+    const std::string place = kFactorPlaces[static_cast<std::size_t>(f->place)];
+    return "the " + f->value + " at " + (f->place < 4 ? "the " + place + " corner" : "the " + place + " axle") + " is about " +
+           num("%.3g", v) + " times the others'";
+  }
   if (kind == "parameter")
     return "the " + valueInWords(calibrated_names[0]) + " is about " + plain(v) + " " + parameters[0].unit + ", not " +
            num("%.4g", parameters[0].default_value) + " " + parameters[0].unit;

@@ -237,6 +237,69 @@ struct Simulator::Impl {
     }
   }
 
+  /// True when a tire factor of this run (ctx) is not 1: the corners' tires differ.
+  bool tireFactorsActive() const {
+    for (const auto& f : model->tireFactors())
+      for (const auto& x : f)
+        if (ctx.p[x.slot] != 1.0) return true;
+    return false;
+  }
+
+  /// MacPherson corners whose tires differ (a tire factor away from 1): the static loads of the
+  /// warped equilibrium and the strut compressions that carry them. Four corners on a rigid body
+  /// are statically indeterminate by one warp mode w = (+1, -1, -1, +1) (fl, fr, rl, rr): tire
+  /// loads W_c + w_c d, strut forces preload_c + w_c d (which keep the body's force and moments),
+  /// with d such that the corners' total compressions rho_c + q_c keep the four body corners
+  /// coplanar, sum_c w_c (rho_c + q_c) = 0 (docs/model.md, "Per-corner and per-axle values").
+  /// Solved with the tire and strut laws themselves; the strut effects are left out (the run
+  /// settles from there).
+  void warpedStart(std::array<double, 4>& load, std::array<double, 4>& strut_q) const {
+    const Model& M = *model;
+    static constexpr double w[4] = {1.0, -1.0, -1.0, 1.0};
+    const auto p0 = static_cast<std::size_t>(M.suspensionSlots().front());
+    const std::size_t np = M.strut().parameters().size();
+    // The strut compression whose force is the preload plus dF (Newton on the law).
+    auto compression = [&](int c, double dF) {
+      LawValueBuffer buf;
+      const ParamValues law = Model::scaledLawValues(ctx.p, p0, np, M.strutFactors()[static_cast<std::size_t>(c)], buf);
+      auto excess = [&](double q) {
+        StrutState ss;
+        ss.deflection_m = q;
+        ss.preload_N = strut_preload[c];
+        return M.strut().calcForce(ss, law) - strut_preload[c] - dF;
+      };
+      double q = 0.0;
+      for (int it = 0; it < 30; ++it) {
+        const double r = excess(q);
+        if (std::abs(r) < 1e-9) break;
+        const double h = 1e-6, slope = (excess(q + h) - excess(q - h)) / (2 * h);
+        if (!(slope > 0)) break;
+        q -= r / slope;
+      }
+      return q;
+    };
+    auto residual = [&](double d) {
+      double r = 0.0;
+      for (int c = 0; c < 4; ++c) {
+        LawValueBuffer buf;
+        const double rho = M.tire().calcStaticDeflection(std::max(0.0, M.staticTireLoad(c) + w[c] * d), tires[c].values(ctx, buf));
+        r += w[c] * (rho + compression(c, w[c] * d));
+      }
+      return r;
+    };
+    double d = 0.0, r = residual(0.0);
+    for (int it = 0; it < 20 && std::abs(r) > 1e-13; ++it) {  // secant-Newton: the residual is nearly linear in d
+      const double h = 1.0, slope = (residual(d + h) - r) / h;
+      if (!(slope > 0)) break;
+      d -= r / slope;
+      r = residual(d);
+    }
+    for (int c = 0; c < 4; ++c) {
+      load[c] = std::max(0.0, M.staticTireLoad(c) + w[c] * d);
+      strut_q[c] = compression(c, w[c] * d);
+    }
+  }
+
   /// Static equilibrium at t = 0 for the run parameters in ctx (vehicle at rest, flat start).
   void setEquilibrium(State& s) {
     const Model& M = *model;
@@ -244,12 +307,15 @@ struct Simulator::Impl {
     const ParamValues tp(ctx.p + tires[0].p0, tires[0].np);
     const double R0 = M.tire().unloadedRadius(tp);
     std::array<double, 4> target{};
+    // The corners' tire loads: the static ones, warped when the tires differ (warpedStart).
+    std::array<double, 4> load{}, strut_q{};
+    for (int c = 0; c < 4; ++c) load[c] = M.staticTireLoad(c);
+    if (M.topology() == SuspensionTopology::MacPherson && tireFactorsActive()) warpedStart(load, strut_q);
     for (int c = 0; c < 4; ++c) {
-      // The corner's own tire values (its factors applied; tp itself without). A stiffness factor
-      // at one corner makes the four hub targets non-coplanar: the start places FL, FR and RL and
-      // the run settles into the warped equilibrium (docs/model.md, "Per-corner and per-axle values").
+      // The corner's own tire values (its factors applied; tp itself without).
       LawValueBuffer buf;
-      const double rho = M.tire().calcStaticDeflection(M.staticTireLoad(c), tires[c].values(ctx, buf));
+      const double rho = M.tire().calcStaticDeflection(load[c], tires[c].values(ctx, buf));
+      if (strut_q[c] != 0.0) wheels[c].setOneQ(s, 0, strut_q[c]);
       const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
       const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
       target[c] = ctx.p[ctx.gain_slot] * ctx.road->sample(cornerTrack(c), x_road + shift).height_m + R0 - rho;

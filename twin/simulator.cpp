@@ -245,20 +245,24 @@ struct Simulator::Impl {
     return false;
   }
 
-  /// MacPherson corners whose tires differ (a tire factor away from 1): the static loads of the
-  /// warped equilibrium and the strut compressions that carry them. Four corners on a rigid body
-  /// are statically indeterminate by one warp mode w = (+1, -1, -1, +1) (fl, fr, rl, rr): tire
-  /// loads W_c + w_c d, strut forces preload_c + w_c d (which keep the body's force and moments),
-  /// with d such that the corners' total compressions rho_c + q_c keep the four body corners
-  /// coplanar, sum_c w_c (rho_c + q_c) = 0 (docs/model.md, "Per-corner and per-axle values").
-  /// Solved with the tire and strut laws themselves; the strut effects are left out (the run
-  /// settles from there).
+  /// The corners' tires differ (a tire factor away from 1): the static loads of the warped
+  /// equilibrium and the main-strut compressions that carry them. Four corners on a rigid body are
+  /// statically indeterminate by one warp mode w = (+1, -1, -1, +1) (fl, fr, rl, rr): tire loads
+  /// W_c + w_c d and main-strut forces preload_c + w_c d e, which leave the body's force and
+  /// moments as they are (e = 1 at MacPherson struts; on a solid axle the seats, spring_track
+  /// apart, carry the wheels' roll moment: e = track / spring_track). d is such that the chassis
+  /// points of the four main struts stay coplanar (docs/model.md, "Per-corner and per-axle
+  /// values"). Solved with the tire, strut and interface laws themselves; the strut effects are
+  /// left out (the run settles from there).
   void warpedStart(std::array<double, 4>& load, std::array<double, 4>& strut_q) const {
     const Model& M = *model;
+    const VehicleData& v = M.vehicle();
     static constexpr double w[4] = {1.0, -1.0, -1.0, 1.0};
+    const bool axle = M.topology() == SuspensionTopology::SolidAxle;
+    const double e = axle ? v.track / v.spring_track : 1.0;
     const auto p0 = static_cast<std::size_t>(M.suspensionSlots().front());
     const std::size_t np = M.strut().parameters().size();
-    // The strut compression whose force is the preload plus dF (Newton on the law).
+    // The main-strut compression whose force is the preload plus dF (Newton on the law).
     auto compression = [&](int c, double dF) {
       LawValueBuffer buf;
       const ParamValues law = Model::scaledLawValues(ctx.p, p0, np, M.strutFactors()[static_cast<std::size_t>(c)], buf);
@@ -278,12 +282,18 @@ struct Simulator::Impl {
       }
       return q;
     };
+    // Each corner's drop of its strut's chassis point below the wheel's contact, relative: on a
+    // solid axle the wheels' differences reach the seats scaled by spring_track / track (the
+    // axle's roll), the interfaces' compressions with them.
+    const double k_wa = axle ? ctx.p[M.interfaceSlots()[0]] : 0.0;
     auto residual = [&](double d) {
       double r = 0.0;
       for (int c = 0; c < 4; ++c) {
         LawValueBuffer buf;
-        const double rho = M.tire().calcStaticDeflection(std::max(0.0, M.staticTireLoad(c) + w[c] * d), tires[c].values(ctx, buf));
-        r += w[c] * (rho + compression(c, w[c] * d));
+        const double W = std::max(0.0, M.staticTireLoad(c) + w[c] * d);
+        const double rho = M.tire().calcStaticDeflection(W, tires[c].values(ctx, buf));
+        const double wheel = axle ? (rho + (W - M.staticTireLoad(c)) / k_wa) / e : rho;
+        r += w[c] * (wheel + compression(c, w[c] * d * e));
       }
       return r;
     };
@@ -296,7 +306,7 @@ struct Simulator::Impl {
     }
     for (int c = 0; c < 4; ++c) {
       load[c] = std::max(0.0, M.staticTireLoad(c) + w[c] * d);
-      strut_q[c] = compression(c, w[c] * d);
+      strut_q[c] = compression(c, w[c] * d * e);
     }
   }
 
@@ -310,19 +320,29 @@ struct Simulator::Impl {
     // The corners' tire loads: the static ones, warped when the tires differ (warpedStart).
     std::array<double, 4> load{}, strut_q{};
     for (int c = 0; c < 4; ++c) load[c] = M.staticTireLoad(c);
-    if (M.topology() == SuspensionTopology::MacPherson && tireFactorsActive()) warpedStart(load, strut_q);
+    if (tireFactorsActive()) {
+      warpedStart(load, strut_q);
+      if (M.topology() == SuspensionTopology::MacPherson) {
+        for (int c = 0; c < 4; ++c) wheels[c].setOneQ(s, 0, strut_q[c]);
+      } else {  // a seat moves by q_h + y sin(phi), y = +-spring_track / 2 (left +)
+        for (int ax = 0; ax < 2; ++ax) {
+          const double ql = strut_q[2 * ax], qr = strut_q[2 * ax + 1];
+          axle_slider[ax].setOneQ(s, 0, 0.5 * (ql + qr));
+          axle[ax].setOneQ(s, 0, std::asin(std::clamp((ql - qr) / d.spring_track, -1.0, 1.0)));
+        }
+      }
+    }
     for (int c = 0; c < 4; ++c) {
       // The corner's own tire values (its factors applied; tp itself without).
       LawValueBuffer buf;
       const double rho = M.tire().calcStaticDeflection(load[c], tires[c].values(ctx, buf));
-      if (strut_q[c] != 0.0) wheels[c].setOneQ(s, 0, strut_q[c]);
       const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
       const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
       target[c] = ctx.p[ctx.gain_slot] * ctx.road->sample(cornerTrack(c), x_road + shift).height_m + R0 - rho;
       if (M.topology() == SuspensionTopology::SolidAxle) {
         const double* p = ctx.p;
         const double k = p[M.interfaceSlots()[0]], F0 = p[M.interfacePreloadSlot()];
-        const double q = (M.staticTireLoad(c) - d.wheel_mass * d.gravity - F0) / k;
+        const double q = (load[c] - d.wheel_mass * d.gravity - F0) / k;
         wheels[c].setOneQ(s, 0, q);
       }
     }

@@ -198,6 +198,43 @@ TEST(CornerFactors, OneCornersSpringBreaksTheSymmetryOnTheSolidAxle) {
   EXPECT_GT(gap, 50.0);
 }
 
+// The solid axle (fiala): a stiffer front left tire takes load from its neighbour on the axle,
+// the rear pair's mean is kept, the settled warp is the closed form's, and the run starts in it.
+TEST(CornerFactors, OnTheSolidAxleOneStifferTireWarpsAsTheClosedFormSays) {
+  const AssemblySpec a = paperStudy().assembly("M4");
+  ASSERT_EQ(a.label(), "fiala + solid_axle");
+  const auto r = runOn(paperStudy().makeModel(a, {}, settings({{"tire.stiffness@fl", 2.0}})), dtwin_test::standstill(20.0));
+  const auto base = runOn(paperStudy().makeModel(a), dtwin_test::standstill(20.0));
+  auto last = [](const RunResult& x, const std::string& ch) { return x.trace.column(ch).back(); };
+  const double Ffl = last(r, "hub_force_fl_N"), Ffr = last(r, "hub_force_fr_N");
+  EXPECT_GT(Ffl, Ffr);
+  EXPECT_LT(last(r, "tire_defl_fl_m"), last(r, "tire_defl_fr_m"));
+  const double rear = last(r, "tire_defl_rl_m") + last(r, "tire_defl_rr_m"), rear_base = last(base, "tire_defl_rl_m") + last(base, "tire_defl_rr_m");
+  EXPECT_NEAR(rear, rear_base, 1e-3 * rear_base);
+  // The warp's closed form on a solid axle: the seats (spring_track s apart) carry the wheels'
+  // (track t apart) roll moment, seat forces +-d t/s; the axle's roll carries the wheels'
+  // differences to the seats scaled by s/t, the wheel/axle interfaces (k_wa) in series with the tires:
+  //   d = (s/t) (W_f / 2k) / ((s/t) (3.5/k + 4/k_wa) + 4 (t/s) / k_s).
+  const auto model = paperStudy().makeModel(a);
+  const Model& m = *model;
+  const double k = m.table().value("tire.stiffness"), ks = m.table().value("suspension.stiffness");
+  const double kwa = m.table().value("suspension.solid_axle.interface_stiffness");
+  const double st = m.vehicle().spring_track / m.vehicle().track, Wf = m.staticTireLoad(0);
+  const double d = st * (Wf / (2 * k)) / (st * (3.5 / k + 4 / kwa) + 4 / (st * ks));
+  const double warp = (Ffl - Ffr - last(r, "hub_force_rl_N") + last(r, "hub_force_rr_N")) / 4;
+  EXPECT_NEAR(warp, d, 1e-3 * d);
+  for (const char* ch : {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"}) {
+    const auto& col = r.trace.column(ch);
+    double most = 0;
+    for (double v : col) most = std::max(most, std::abs(v - col.back()));
+    EXPECT_LT(most, 0.2 * d) << ch << ": the start is the warped equilibrium";
+  }
+  std::printf("solid axle: closed form d = %.4f N, model warp %.4f N (%.3g %%)\n", d, warp, 100 * (warp - d) / d);
+  std::printf("solid axle: hub forces fl %.2f N, fr %.2f N, rl %.2f N, rr %.2f N; start fl %.2f N, rr %.2f N\n", Ffl, Ffr,
+              last(r, "hub_force_rl_N"), last(r, "hub_force_rr_N"), r.trace.column("hub_force_fl_N").front(),
+              r.trace.column("hub_force_rr_N").front());
+}
+
 TEST(CornerFactors, BadNamesAndValuesAreOneLineInputErrors) {
   const Study& s = paperStudy();
   const AssemblySpec a = s.assembly("M1");

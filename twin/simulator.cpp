@@ -12,6 +12,7 @@
 #include "common/validate.hpp"
 #include "twin/rosenbrock.hpp"
 #include "twin/force_elements.hpp"
+#include "twin/static_start.hpp"
 
 namespace dtwin {
 using namespace SimTK;
@@ -237,79 +238,6 @@ struct Simulator::Impl {
     }
   }
 
-  /// True when a tire factor of this run (ctx) is not 1: the corners' tires differ.
-  bool tireFactorsActive() const {
-    for (const auto& f : model->tireFactors())
-      for (const auto& x : f)
-        if (ctx.p[x.slot] != 1.0) return true;
-    return false;
-  }
-
-  /// The corners' tires differ (a tire factor away from 1): the static loads of the warped
-  /// equilibrium and the main-strut compressions that carry them. Four corners on a rigid body are
-  /// statically indeterminate by one warp mode w = (+1, -1, -1, +1) (fl, fr, rl, rr): tire loads
-  /// W_c + w_c d and main-strut forces preload_c + w_c d e, which leave the body's force and
-  /// moments as they are (e = 1 at MacPherson struts; on a solid axle the seats, spring_track
-  /// apart, carry the wheels' roll moment: e = track / spring_track). d is such that the chassis
-  /// points of the four main struts stay coplanar (docs/model.md, "Per-corner and per-axle
-  /// values"). Solved with the tire, strut and interface laws themselves; the strut effects are
-  /// left out (the run settles from there).
-  void warpedStart(std::array<double, 4>& load, std::array<double, 4>& strut_q) const {
-    const Model& M = *model;
-    const VehicleData& v = M.vehicle();
-    static constexpr double w[4] = {1.0, -1.0, -1.0, 1.0};
-    const bool axle = M.topology() == SuspensionTopology::SolidAxle;
-    const double e = axle ? v.track / v.spring_track : 1.0;
-    const auto p0 = static_cast<std::size_t>(M.suspensionSlots().front());
-    const std::size_t np = M.strut().parameters().size();
-    // The main-strut compression whose force is the preload plus dF (Newton on the law).
-    auto compression = [&](int c, double dF) {
-      LawValueBuffer buf;
-      const ParamValues law = Model::scaledLawValues(ctx.p, p0, np, M.strutFactors()[static_cast<std::size_t>(c)], buf);
-      auto excess = [&](double q) {
-        StrutState ss;
-        ss.deflection_m = q;
-        ss.preload_N = strut_preload[c];
-        return M.strut().calcForce(ss, law) - strut_preload[c] - dF;
-      };
-      double q = 0.0;
-      for (int it = 0; it < 30; ++it) {
-        const double r = excess(q);
-        if (std::abs(r) < 1e-9) break;
-        const double h = 1e-6, slope = (excess(q + h) - excess(q - h)) / (2 * h);
-        if (!(slope > 0)) break;
-        q -= r / slope;
-      }
-      return q;
-    };
-    // Each corner's drop of its strut's chassis point below the wheel's contact, relative: on a
-    // solid axle the wheels' differences reach the seats scaled by spring_track / track (the
-    // axle's roll), the interfaces' compressions with them.
-    const double k_wa = axle ? ctx.p[M.interfaceSlots()[0]] : 0.0;
-    auto residual = [&](double d) {
-      double r = 0.0;
-      for (int c = 0; c < 4; ++c) {
-        LawValueBuffer buf;
-        const double W = std::max(0.0, M.staticTireLoad(c) + w[c] * d);
-        const double rho = M.tire().calcStaticDeflection(W, tires[c].values(ctx, buf));
-        const double wheel = axle ? (rho + (W - M.staticTireLoad(c)) / k_wa) / e : rho;
-        r += w[c] * (wheel + compression(c, w[c] * d * e));
-      }
-      return r;
-    };
-    double d = 0.0, r = residual(0.0);
-    for (int it = 0; it < 20 && std::abs(r) > 1e-13; ++it) {  // secant-Newton: the residual is nearly linear in d
-      const double h = 1.0, slope = (residual(d + h) - r) / h;
-      if (!(slope > 0)) break;
-      d -= r / slope;
-      r = residual(d);
-    }
-    for (int c = 0; c < 4; ++c) {
-      load[c] = std::max(0.0, M.staticTireLoad(c) + w[c] * d);
-      strut_q[c] = compression(c, w[c] * d * e);
-    }
-  }
-
   /// Static equilibrium at t = 0 for the run parameters in ctx (vehicle at rest, flat start).
   void setEquilibrium(State& s) {
     const Model& M = *model;
@@ -320,8 +248,10 @@ struct Simulator::Impl {
     // The corners' tire loads: the static ones, warped when the tires differ (warpedStart).
     std::array<double, 4> load{}, strut_q{};
     for (int c = 0; c < 4; ++c) load[c] = M.staticTireLoad(c);
-    if (tireFactorsActive()) {
-      warpedStart(load, strut_q);
+    if (tireFactorsActive(M, ctx.p)) {
+      const WarpedStart warp = warpedStart(M, ctx.p);
+      load = warp.tire_load_N;
+      strut_q = warp.strut_compression_m;
       if (M.topology() == SuspensionTopology::MacPherson) {
         for (int c = 0; c < 4; ++c) wheels[c].setOneQ(s, 0, strut_q[c]);
       } else {  // a seat moves by q_h + y sin(phi), y = +-spring_track / 2 (left +)

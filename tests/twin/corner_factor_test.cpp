@@ -99,7 +99,7 @@ TEST(CornerFactors, CalibratedFactorsAreRunParametersAtOne) {
 // is exact, so the bump trace is the base model's bit for bit (every channel).
 TEST(CornerFactors, AllFactorsAtOneGiveTheBaseTraceBitForBit) {
   const auto& sc = paperStudy().scenario("lab");
-  for (const char* id : {"M1", "M2"}) {
+  for (const char* id : {"M1", "M2", "M3", "M4"}) {
     SCOPED_TRACE(id);
     AssemblySpec a = paperStudy().assembly(id);
     const auto base = paperStudy().makeModel(a);

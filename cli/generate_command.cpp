@@ -210,7 +210,7 @@ CommandHandle addGenerateCommand(CLI::App& root, const CommandContext& context) 
   l->add_option("--channels", lab->channels, "Channels, a,b,c (default: the study's [lab] channels)")->delimiter(',');
   l->add_option("--hidden-value", lab->hidden_values,
                 "Make the data with this fixed vehicle value changed (for testing a diagnosis): NAME=VALUE, e.g. "
-                "wheel.mass_kg=35.35; repeatable; recorded in the sidecar")
+                "wheel.mass_kg=35.35, or a per-corner factor, e.g. suspension.damping@rr=0.5; repeatable; recorded in the sidecar")
       ->allow_extra_args(false);
   l->add_option("--hidden-sensor", lab->hidden_sensor,
                 "Distort every data channel by this sensor model before the noise (for testing a diagnosis): KIND=VALUE with "

@@ -110,6 +110,11 @@ int runList(const std::string& study_path, bool params) {
   for (const auto& f : freeableVehicleParameters()) freeable += (freeable.empty() ? "" : ", ") + f;
   std::printf("  free:VALUE          a fixed vehicle value freed over +-50 %% of the file's (the CG shift chassis.cg_x_m over "
               "+-10 %% of the wheelbase): %s\n", freeable.c_str());
+  std::string factored;
+  for (const char* v : kCornerFactorValues) factored += (factored.empty() ? "" : ", ") + std::string(v);
+  std::printf("  free:VALUE@PLACE    a per-corner or per-axle factor (docs/model.md) freed over [%g, %g], when named (not in the "
+              "default catalogue): VALUE one of %s; PLACE fl, fr, rl, rr, front or rear\n",
+              kFactorPriorLower, kFactorPriorUpper, factored.c_str());
   for (const auto& k : sensorModelKinds()) {
     const auto p = sensorModelParameter(k, "");
     std::printf("  %-19s %s [%s] off = %g  prior [%g, %g]\n", (k + ":GROUP").c_str(), p.description.c_str(), p.unit.c_str(), p.default_value,

@@ -41,6 +41,13 @@ std::vector<std::string> freeableOf(const AssemblySpec& assembly) {
   return out;
 }
 
+/// What a per-corner or per-axle factor away from 1 leaves in the data, in words.
+std::string factorSignature(const CornerFactor& f) {
+  const std::string place = kFactorPlaces[static_cast<std::size_t>(f.place)];
+  return f.place < 4 ? "the " + place + " corner's " + f.value + " differs from the other corners' (" + f.value + "@" + place + " is not 1)"
+                     : "the " + place + " axle's " + f.value + " differs from the other axle's (" + f.value + "@" + place + " is not 1)";
+}
+
 /// "wheel.mass_kg" -> "wheel mass"; "chassis.roll_inertia_kgm2" -> "chassis roll inertia".
 /// The freeable CG shift at a fixed wheelbase (twin/model.hpp), 0 in the vehicle file.
 constexpr const char* kCgShift = "chassis.cg_x_m";
@@ -184,7 +191,9 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
   for (const auto& cp : study.calibrated)
     if (cp.name == value) throw InputError(where, "'" + value + "' is calibrated already: only a fixed value can be freed");
   auto freeable = freeableOf(assembly);
-  if (std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
+  const bool factor = parseCornerFactor(value).has_value();  // freed through AssemblySpec::freed, without a rebuild
+  if (!factor && std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
+    if (const std::string rule = cornerFactorRule(value); !rule.empty()) throw InputError(where, rule);
     // A fixed value of the assembly's laws (the tire radius, a strut-law constant): a run
     // parameter already, so it is calibrated without a rebuild. Not a calibrated one.
     const auto model = study.makeModel(assembly, {});
@@ -206,7 +215,11 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
   // noise sd; the CG's shift ±10 % of the wheelbase), inside the value's valid set.
   std::string range = "±50 %", why_lower = "its smallest valid value", why_upper = "its largest valid value";
   double lo = 0.5 * v, hi = 1.5 * v, valid_lo = p.min_value, valid_hi = p.max_value;
-  if (value == kRoadDelay) {  // the road signal's delay: ±0.1 s about its value (0 is a fine value)
+  if (factor) {  // a per-corner or per-axle factor: its documented prior range
+    range = "[" + num("%g", kFactorPriorLower) + ", " + num("%g", kFactorPriorUpper) + "]";
+    lo = kFactorPriorLower;
+    hi = kFactorPriorUpper;
+  } else if (value == kRoadDelay) {  // the road signal's delay: ±0.1 s about its value (0 is a fine value)
     range = "±0.1 s";
     lo = v - 0.1;
     hi = v + 0.1;
@@ -247,7 +260,8 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
   c.calibrated_names = {value};
   c.signature = input ? (value == kRoadGain ? "the road signal is scaled (its gain is not 1)"
                                             : "the road signal is shifted in time against the measured channels (a delay)")
-                      : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
+                      : factor ? factorSignature(*parseCornerFactor(value))
+                               : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
   if (p.prior_lower > lo) c.range_note = "searched from " + num("%.4g", p.prior_lower) + ", not " + num("%.4g", lo) + " (" + why_lower + ")";
   if (p.prior_upper < hi)
     c.range_note += (c.range_note.empty() ? "searched up to " : "; up to ") + num("%.4g", p.prior_upper) + ", not " + num("%.4g", hi) +
@@ -359,6 +373,11 @@ std::string CandidateSpec::finding(const std::vector<double>& values) const {
   if (kind == "parameter" && calibrated_names[0] == kCgShift)
     return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +
            (v >= parameters[0].default_value ? "ahead of" : "behind") + " the vehicle file's position (the same wheelbase)";
+  if (const auto f = parseCornerFactor(calibrated_names[0]); kind == "parameter" && f) {
+    const std::string place = kFactorPlaces[static_cast<std::size_t>(f->place)];
+    return "the " + f->value + " at " + (f->place < 4 ? "the " + place + " corner" : "the " + place + " axle") + " is about " +
+           num("%.3g", v) + " times the others'";
+  }
   if (kind == "parameter")
     return "the " + valueInWords(calibrated_names[0]) + " is about " + plain(v) + " " + parameters[0].unit + ", not " +
            num("%.4g", parameters[0].default_value) + " " + parameters[0].unit;

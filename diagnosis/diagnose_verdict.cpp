@@ -231,6 +231,8 @@ namespace {
 /// (free:wheel.mass_kg, ΔBIC −512.3, explains 64 % of the excess residual)".
 std::string causeInWords(const Cause& k) {
   const std::string evidence = "ΔBIC " + fmt("%.1f", k.delta_bic) + ", explains " + fmt("%.0f", 100 * k.explained) + " % of the excess residual";
+  if (const auto f = parseCornerFactor(k.name.rfind("free:", 0) == 0 ? k.name.substr(5) : std::string()); k.kind == "parameter" && f)
+    return std::string(f->place < 4 ? "Fault at one corner: " : "Fault on one axle: ") + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "parameter") return "Wrong vehicle value: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "sensor") return "Sensor distortion: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "input") return "Road signal: " + k.finding + " (" + k.name + ", " + evidence + ")";

@@ -536,7 +536,7 @@ void checkCalibratedAgainstVehicle(const Study& s) {
   for (std::size_t i = 0; i < s.calibrated.size(); ++i) {
     const auto& c = s.calibrated[i];
     const std::string where = s.path + ": calibrated[" + std::to_string(i) + "]";
-    if (!table.contains(c.name)) throw InputError(where + ".name", "unknown parameter '" + c.name + "'");
+    if (!table.contains(c.name)) throw InputError(where + ".name", table.unknownRule(c.name));
     const auto& spec = table.at(c.name).spec;
     if (!c.unit.empty() && c.unit != spec.unit)
       throw InputError(where + ".unit", "unit of '" + c.name + "' must be \"" + spec.unit + "\", got \"" + c.unit + "\"");
@@ -688,8 +688,10 @@ std::shared_ptr<const Model> Study::makeModel(const AssemblySpec& a, const std::
   // A calibrated vehicle value (a mass, an inertia, the CG) builds the multibody system: it is
   // freed, so each run is built with its own value (docs/calibration.md, "Vehicle values").
   const auto& freeable = freeableVehicleParameters();
+  // A calibrated per-corner or per-axle factor is a run parameter at any value, 1 included
+  // (twin/parameters.hpp), without a rebuild.
   for (const auto& c : calibrated)
-    if (std::find(freeable.begin(), freeable.end(), c.name) != freeable.end() &&
+    if ((std::find(freeable.begin(), freeable.end(), c.name) != freeable.end() || parseCornerFactor(c.name)) &&
         std::find(spec.freed.begin(), spec.freed.end(), c.name) == spec.freed.end())
       spec.freed.push_back(c.name);
   ParameterTable table = parameterTable();

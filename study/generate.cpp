@@ -230,8 +230,10 @@ std::shared_ptr<const Model> labModel(const Study& study, const AssemblySpec& as
   if (opt.hidden_values.empty()) return model;
   const auto& freeable = freeableVehicleParameters();
   for (const auto& v : opt.hidden_values)
-    if (std::find(freeable.begin(), freeable.end(), v.name) == freeable.end())
-      throw InputError(check.where("hidden_values"), unknownNameRule("vehicle value that can be changed", v.name, freeable));
+    if (std::find(freeable.begin(), freeable.end(), v.name) == freeable.end() && !parseCornerFactor(v.name)) {
+      if (const std::string rule = cornerFactorRule(v.name); !rule.empty()) throw InputError(check.where("hidden_values"), rule);
+      throw InputError(check.where("hidden_values"), unknownNameRule("vehicle value that can be changed (or a per-corner factor VALUE@PLACE)", v.name, freeable));
+    }
   return study.makeModel(assembly, opt.hidden_effects, opt.hidden_values);
 }
 

@@ -72,7 +72,8 @@ struct LabOptions {
   std::optional<double> noise_variance_N2;    ///< default: the study's [noise] variance_N2
   std::vector<EffectSetting> hidden_effects;  ///< effects switched on in the assembly that makes the data
   /// Fixed vehicle values changed in the model that makes the data (a wheel mass 20 % heavier than
-  /// the vehicle file's): names from freeableVehicleParameters().
+  /// the vehicle file's): names from freeableVehicleParameters(), or a per-corner or per-axle
+  /// factor (twin/parameters.hpp: "suspension.damping@rr" = 0.5, a worn damper at one corner).
   std::vector<ParameterSetting> hidden_values;
   /// Sensor models (subsystems/sensor.hpp: kind, parameter value) applied to every data channel
   /// before the noise, e.g. {"lowpass", 0.0064} for a 25 Hz first-order low-pass.

@@ -45,6 +45,10 @@ struct TireCorner {
   std::vector<std::pair<const Effect*, std::size_t>> filters;  // tire-input effects, first slot
   std::vector<std::pair<const Effect*, std::size_t>> scalers;  // tire-force effects, first slot
   std::vector<std::pair<const Effect*, std::size_t>> loads;    // tire-load effects, first slot
+  std::vector<Model::ScaledParameter> factors;                 // this corner's factors (Model::tireFactors)
+
+  /// The tire law's parameters at this corner: the run vector's own without factors.
+  ParamValues values(const RunContext& c, LawValueBuffer& buf) const { return Model::scaledLawValues(c.p, p0, np, factors, buf); }
 
   /// Where the road signal is read for a wheel at road distance x_road (the delay's read-ahead,
   /// see eval) and the forward speed of that point along the signal (hub_xd: the hub's own).
@@ -67,7 +71,8 @@ struct TireCorner {
   }
   TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
     TireEval e;
-    const ParamValues p(c.p + p0, np);
+    LawValueBuffer buf;
+    const ParamValues p = values(c, buf);
     const double v = c.speed.speed(t);
     e.x_road = c.speed.distance(t) + hub_x - model->vehicle().a;
     const Track tr = cornerTrack(corner);
@@ -275,8 +280,10 @@ class StrutElement : public Force::Custom::Implementation {
     ss.deflection_m = k.q;
     ss.rate_mps = k.qd;
     ss.preload_N = preload_slot_ >= 0 ? p[preload_slot_] : preload_;
-    ss.base_stiffness = p[p0_];
-    ss.base_damping = p[p0_ + 1];
+    LawValueBuffer buf;
+    const ParamValues law = lawValues(buf);
+    ss.base_stiffness = law[0];
+    ss.base_damping = law[1];
     if (context_ && partner_) {
       const auto o = partner_->kin(s);
       ss.other_deflection_m = o.q;
@@ -293,13 +300,20 @@ class StrutElement : public Force::Custom::Implementation {
     }
     return ss;
   }
+  /// The strut law's parameters at this corner (its factors applied; the run vector's own without).
+  ParamValues lawValues(LawValueBuffer& buf) const {
+    return Model::scaledLawValues(ctx_->p, p0_, law_->parameters().size(), factors_, buf);
+  }
+  /// A main strut's factors (Model::strutFactors); none on the solid axle's wheel interfaces.
+  std::vector<Model::ScaledParameter> factors_;
   ParamValues effectValues(std::size_t i) const {
     return ParamValues(ctx_->p + m_->effectSlots()[i][0], m_->effects()[i]->parameters().size());
   }
   /// Strut force without the StrutFilter effects (they need the State's auxiliary variables).
   double force(const StrutState& ss) const {
     const double* p = ctx_->p;
-    double F = law_->calcForce(ss, ParamValues(p + p0_, law_->parameters().size()));
+    LawValueBuffer buf;
+    double F = law_->calcForce(ss, lawValues(buf));
     if (effects_) {
       const auto& effs = m_->effects();
       for (std::size_t i = 0; i < effs.size(); ++i)

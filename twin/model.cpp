@@ -132,6 +132,7 @@ ParameterTable declareVehicleParameters(const EffectCatalog& catalog) {
         if (!t.contains(s.name)) t.declare(s);
       }
   }
+  declareCornerFactors(t);
   fixed("suspension.solid_axle.interface_stiffness", "N/m", "wheel/axle interface stiffness k_wa (eq. 5)");
   fixed("suspension.solid_axle.interface_damping", "N*s/m", "wheel/axle interface damping c_wa (eq. 5)", 0.0, true);
   fixed("suspension.solid_axle.interface_preload_N", "N", "wheel/axle interface preload F0 (eq. 5)", -kInf, true);
@@ -219,6 +220,8 @@ std::optional<PhysicalLimit> physicalLimit(const std::string& name, const Parame
       {"road.delay_s", {-0.5, 0.5, "a logger's channels more than 0.5 s apart are not one record"}},
   };
   if (const auto it = limits.find(name); it != limits.end()) return it->second;
+  if (parseCornerFactor(name))
+    return PhysicalLimit{0.05, 5.0, "a corner's spring, damper or tire more than a factor of 5 off the others' is another part, not a fault of one"};
   if (name == "chassis.cg_x_m" && table.contains("geometry.cg_to_front_axle_m") && table.contains("geometry.cg_to_rear_axle_m")) {
     const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
     return PhysicalLimit{-0.9 * b, 0.9 * a, "the CG lies between the axles"};
@@ -295,6 +298,8 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
     effect_slots_.push_back(std::move(slots));
   }
   for (const auto& f : assembly_.freed) {
+    if (parseCornerFactor(f)) continue;  // a factor: addCornerFactors
+    if (const std::string rule = cornerFactorRule(f); !rule.empty()) throw InputError(where, rule);
     const auto& freeable = freeableVehicleParameters();
     if (std::find(freeable.begin(), freeable.end(), f) == freeable.end())
       throw InputError(where, unknownNameRule("freeable vehicle value", f, freeable));
@@ -303,6 +308,7 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
     if (slot(f) >= 0) throw InputError(where, "'" + f + "' is freed twice");
     freed_slots_.push_back(addRunParameter(f));
   }
+  addCornerFactors();
   declareSensorParameters(table_, sensors_);
   for (const auto& x : sensors_) {
     const std::string p = "sensors." + x.name + ".";
@@ -331,12 +337,50 @@ int Model::addRunParameter(const std::string& name) {
   return s;
 }
 
+void Model::addCornerFactors() {
+  // A factor is a run parameter when the assembly frees it (a calibration, a diagnosis) or the
+  // table holds it away from 1 (--set, [fixed], a hidden value); else it is nothing at all.
+  for (const auto& f : assembly_.freed) {
+    if (parseCornerFactor(f) && std::count(assembly_.freed.begin(), assembly_.freed.end(), f) > 1)
+      throw InputError(where_, "'" + f + "' is freed twice");
+  }
+  for (const auto& name : cornerFactorNames()) {
+    const bool freed = std::find(assembly_.freed.begin(), assembly_.freed.end(), name) != assembly_.freed.end();
+    const bool set = table_.contains(name) && table_.value(name) != 1.0;
+    if (!freed && !set) continue;
+    const CornerFactor f = *parseCornerFactor(name);
+    const bool tire = f.value.rfind("tire.", 0) == 0;
+    const std::string local = f.value.substr(f.value.find('.') + 1);
+    const auto& specs = tire ? tire_->parameters() : strut_->parameters();
+    const auto it = std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.shared && s.name == local; });
+    if (it == specs.end()) {  // the hub input has no tire compliance: a calibration leaves the factor out
+      if (!set) continue;
+      throw InputError(where_, "'" + name + "': assembly " + assembly_.id + " (" + assembly_.label() + ") has no " + f.value);
+    }
+    const ScaledParameter sp{static_cast<std::size_t>(it - specs.begin()), addRunParameter(name)};
+    for (int c = 0; c < 4; ++c) {
+      const bool here = f.place < 4 ? f.place == c : (f.place == 4) == isFront(c);
+      if (here) (tire ? tire_factors_ : strut_factors_)[static_cast<std::size_t>(c)].push_back(sp);
+    }
+  }
+  // The axle's factor before the corner's, whatever the order of the names: value x axle x corner.
+  auto axleFirst = [&](std::vector<ScaledParameter>& v) {
+    std::stable_sort(v.begin(), v.end(), [&](const ScaledParameter& a, const ScaledParameter& b) {
+      auto place = [&](const ScaledParameter& x) { return parseCornerFactor(run_names_[static_cast<std::size_t>(x.slot)])->place; };
+      return (place(a) >= 4) > (place(b) >= 4);
+    });
+  };
+  for (auto& v : strut_factors_) axleFirst(v);
+  for (auto& v : tire_factors_) axleFirst(v);
+}
+
 int Model::slot(const std::string& name) const {
   auto it = slots_.find(name);
   return it == slots_.end() ? -1 : it->second;
 }
 
 bool Model::lacksOptionParameter(const std::string& name) const {
+  if (const auto f = parseCornerFactor(name)) return slot(name) < 0 && lacksOptionParameter(f->value);
   const std::string prefix = "tire.";
   if (name.rfind(prefix, 0) != 0 || slot(name) >= 0) return false;
   const std::string local = name.substr(prefix.size());
@@ -363,7 +407,25 @@ std::string Model::checkRunValues(const std::vector<double>& v) const {
   }
   std::vector<double> tp;
   for (int s : tire_slots_) tp.push_back(v[static_cast<std::size_t>(s)]);
-  return tire_->checkCombination(tp);
+  if (std::string rule = tire_->checkCombination(tp); !rule.empty()) return rule;
+  for (int c = 0; c < 4; ++c) {  // a corner's scaled tire values must make a valid law too
+    const auto& f = tire_factors_[static_cast<std::size_t>(c)];
+    if (f.empty()) continue;
+    LawValueBuffer buf{};
+    const ParamValues scaled = scaledLawValues(v.data(), static_cast<std::size_t>(tire_slots_.front()), tp.size(), f, buf);
+    if (std::string rule = tire_->checkCombination(scaled); !rule.empty())
+      return std::string("at the ") + kCornerNames[static_cast<std::size_t>(c)] + " corner (its factors applied): " + rule;
+  }
+  return {};
+}
+
+ParamValues Model::scaledLawValues(const double* p, std::size_t p0, std::size_t n, const std::vector<ScaledParameter>& factors,
+                                   LawValueBuffer& buf) {
+  if (factors.empty()) return ParamValues(p + p0, n);
+  DTWIN_CHECK(n <= buf.size(), "too many law parameters for a corner's scaled copy");
+  std::copy(p + p0, p + p0 + n, buf.begin());
+  for (const auto& f : factors) buf[f.index] *= p[f.slot];
+  return ParamValues(buf.data(), n);
 }
 
 bool Model::builtFor(const std::vector<double>& values) const {

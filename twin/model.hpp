@@ -34,6 +34,8 @@ struct AssemblySpec {
   /// Fixed vehicle values made run parameters (freeableVehicleParameters(); twin diagnose's
   /// "free:" candidates): a run whose value differs rebuilds its multibody system.
   std::vector<std::string> freed;
+  // A per-corner or per-axle factor ("suspension.damping@rr", twin/parameters.hpp) in `freed` is
+  // made a run parameter without a rebuild (calibrated or freed at any value, 1 included).
   std::string option(const std::string& subsystem) const;
   std::string label() const;                     ///< "pac2002 + macpherson [+ bump_stop] [+ free wheel.mass_kg]"
 };
@@ -103,6 +105,9 @@ struct PhysicalLimit {
 /// (effects' parameters: their prior range is the plausible range).
 std::optional<PhysicalLimit> physicalLimit(const std::string& name, const ParameterTable& table);
 
+/// Room for one law's parameters scaled at a corner (scaledLawValues).
+using LawValueBuffer = std::array<double, 32>;
+
 class Model {
  public:
   /// Validates the options and that every parameter this assembly needs has a value.
@@ -158,6 +163,22 @@ class Model {
   int roadGainSlot() const { return road_gain_slot_; }
   int roadDelaySlot() const { return road_delay_slot_; }
 
+  /// A law parameter scaled at one corner: its index in the law's parameters() and the run slot
+  /// of a factor on it (docs/model.md, "Per-corner and per-axle values").
+  struct ScaledParameter {
+    std::size_t index = 0;
+    int slot = -1;
+  };
+  /// Per corner (Corner order): the factors on its main strut's and its tire's law parameters
+  /// that are run parameters, the axle's before the corner's; empty (the common case) when none
+  /// is, and then the force elements multiply by nothing.
+  const std::array<std::vector<ScaledParameter>, 4>& strutFactors() const { return strut_factors_; }
+  const std::array<std::vector<ScaledParameter>, 4>& tireFactors() const { return tire_factors_; }
+  /// A law's `n` parameters at p + p0 as one corner uses them: the run vector itself when
+  /// `factors` is empty (nothing multiplied), else a copy in `buf` with each factor applied.
+  static ParamValues scaledLawValues(const double* p, std::size_t p0, std::size_t n, const std::vector<ScaledParameter>& factors,
+                                     LawValueBuffer& buf);
+
   /// Run slots of the freed vehicle values (AssemblySpec::freed), in that order.
   const std::vector<int>& freedSlots() const { return freed_slots_; }
   /// True when `values` (a run vector) holds this model's own freed vehicle values (always true
@@ -174,6 +195,7 @@ class Model {
 
  private:
   int addRunParameter(const std::string& name);
+  void addCornerFactors();
 
   AssemblySpec assembly_;
   ParameterTable table_;
@@ -192,6 +214,7 @@ class Model {
   int road_gain_slot_ = -1, road_delay_slot_ = -1;
   std::vector<std::vector<int>> effect_slots_;
   std::vector<int> freed_slots_;
+  std::array<std::vector<ScaledParameter>, 4> strut_factors_, tire_factors_;
   std::vector<SensorSlots> sensor_slots_;
   std::string where_;
 };

@@ -12,6 +12,7 @@
 #include "common/validate.hpp"
 #include "twin/rosenbrock.hpp"
 #include "twin/force_elements.hpp"
+#include "twin/static_start.hpp"
 
 namespace dtwin {
 using namespace SimTK;
@@ -182,6 +183,7 @@ struct Simulator::Impl {
       auto* se = new StrutElement(&ctx, &M, &M.strut(), struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
                                   filter_states, forces.getMySubsystemIndex());
       strut_elems[c] = se;
+      se->factors_ = M.strutFactors()[static_cast<std::size_t>(c)];
       if (M.topology() == SuspensionTopology::MacPherson) {
         se->bind_slider_ = true;  // the wheel carrier slides along the chassis z at the strut
       } else {
@@ -202,6 +204,7 @@ struct Simulator::Impl {
       tc.p0 = contiguous(M.tireSlots());
       tc.np = M.tireSlots().size();
       tc.r0 = parameterIndex(M.tire().parameters(), "unloaded_radius_m");
+      tc.factors = M.tireFactors()[static_cast<std::size_t>(c)];
       for (std::size_t i = 0; i < M.effects().size(); ++i)
         if (M.effects()[i]->kind() == EffectKind::TireInput)
           tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
@@ -242,15 +245,34 @@ struct Simulator::Impl {
     const ParamValues tp(ctx.p + tires[0].p0, tires[0].np);
     const double R0 = M.tire().unloadedRadius(tp);
     std::array<double, 4> target{};
+    // The corners' tire loads: the static ones, warped when the tires differ (warpedStart).
+    std::array<double, 4> load{}, strut_q{};
+    for (int c = 0; c < 4; ++c) load[c] = M.staticTireLoad(c);
+    if (tireFactorsActive(M, ctx.p)) {
+      const WarpedStart warp = warpedStart(M, ctx.p);
+      load = warp.tire_load_N;
+      strut_q = warp.strut_compression_m;
+      if (M.topology() == SuspensionTopology::MacPherson) {
+        for (int c = 0; c < 4; ++c) wheels[c].setOneQ(s, 0, strut_q[c]);
+      } else {  // a seat moves by q_h + y sin(phi), y = +-spring_track / 2 (left +)
+        for (int ax = 0; ax < 2; ++ax) {
+          const double ql = strut_q[2 * ax], qr = strut_q[2 * ax + 1];
+          axle_slider[ax].setOneQ(s, 0, 0.5 * (ql + qr));
+          axle[ax].setOneQ(s, 0, std::asin(std::clamp((ql - qr) / d.spring_track, -1.0, 1.0)));
+        }
+      }
+    }
     for (int c = 0; c < 4; ++c) {
-      const double rho = M.tire().calcStaticDeflection(M.staticTireLoad(c), tp);
+      // The corner's own tire values (its factors applied; tp itself without).
+      LawValueBuffer buf;
+      const double rho = M.tire().calcStaticDeflection(load[c], tires[c].values(ctx, buf));
       const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
       const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
       target[c] = ctx.p[ctx.gain_slot] * ctx.road->sample(cornerTrack(c), x_road + shift).height_m + R0 - rho;
       if (M.topology() == SuspensionTopology::SolidAxle) {
         const double* p = ctx.p;
         const double k = p[M.interfaceSlots()[0]], F0 = p[M.interfacePreloadSlot()];
-        const double q = (M.staticTireLoad(c) - d.wheel_mass * d.gravity - F0) / k;
+        const double q = (load[c] - d.wheel_mass * d.gravity - F0) / k;
         wheels[c].setOneQ(s, 0, q);
       }
     }

@@ -204,3 +204,35 @@ TEST(Candidates, AFreedLawValueIsARunParameterOfTheObjective) {
   ASSERT_EQ(moved.size(), raw.size());
   for (double v : moved) EXPECT_TRUE(std::isfinite(v));
 }
+
+// A per-corner factor (twin/parameters.hpp) is a candidate when named, not in the default
+// catalogue: freed without a rebuild over its prior [0.2, 2]; at 1 the objective's predictions are
+// the base model's exactly, away from 1 they move.
+TEST(Candidates, APerCornerFactorIsACandidateWhenNamed) {
+  const Study s = demo();
+  const auto a = s.assemblies().front();
+  const auto all = defaultCandidates(s.effectCatalog(), a, kHub, false);
+  EXPECT_TRUE(std::none_of(all.begin(), all.end(), [](const std::string& n) { return n.find('@') != std::string::npos; }));
+  const auto f = candidateSpec("free:suspension.damping@rr", s, a, kHub, "t");
+  EXPECT_EQ(f.kind, "parameter");
+  EXPECT_FALSE(f.law_value);
+  ASSERT_EQ(f.parameters.size(), 1u);
+  EXPECT_EQ(f.parameters[0].default_value, 1.0);
+  EXPECT_EQ(f.parameters[0].prior_lower, 0.2);
+  EXPECT_EQ(f.parameters[0].prior_upper, 2.0);
+  EXPECT_NE(f.signature.find("the rr corner's suspension.damping differs from the other corners'"), std::string::npos) << f.signature;
+  EXPECT_EQ(f.finding({0.45}), "the suspension.damping at the rr corner is about 0.45 times the others'");
+  for (const char* bad : {"free:suspension.damping@xx", "free:chassis.mass_kg@fl"}) EXPECT_THROW(candidateSpec(bad, s, a, kHub, "t"), InputError) << bad;
+
+  LabData data;
+  for (int k = 200; k <= 2800; k += 50) data.records.push_back({1, k / 1000.0, "hub_force_rr_N", 0.0});
+  const WithCandidate wc(s, "free:suspension.damping@rr", data);
+  EXPECT_EQ(wc.setup.freed, std::vector<std::string>{"suspension.damping@rr"});
+  const auto with = wc.objective(s), without = wc.base(s);
+  std::vector<double> th = wc.truth;
+  const auto raw = without.predict(th);
+  th.push_back(1.0);
+  EXPECT_EQ(with.predict(th), raw);
+  th.back() = 0.5;
+  EXPECT_NE(with.predict(th), raw);
+}

@@ -28,8 +28,13 @@ int runChanges(const ChangesConfig& cfg, const std::string& command) {
   req.command = command;
   const diag::ChangeReport r = detectChanges(req);
   if (!cfg.out.empty()) {
-    const std::string title = "What changed: " + std::filesystem::path(cfg.before).filename().string() + " -> " +
-                              std::filesystem::path(cfg.after).filename().string() + " (" + r.assembly + ")";
+    // The folders by their last two names (drive_may/M1), which tell the drives apart.
+    auto shortName = [](const std::string& dir) {
+      const std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
+      const std::filesystem::path leaf = p.filename().empty() ? p.parent_path() : p;
+      return (leaf.parent_path().filename() / leaf.filename()).string();
+    };
+    const std::string title = "What changed: " + shortName(cfg.before) + " -> " + shortName(cfg.after) + " (" + r.assembly + ")";
     writeFileAtomic((std::filesystem::path(cfg.out) / "changes.html").string(), changesPage(r.toJson(), title));
   }
   if (!cfg.quiet) {

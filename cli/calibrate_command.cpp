@@ -33,17 +33,16 @@ struct CalibrateConfig {
 /// NAME is still accepted, with a note.
 std::pair<std::string, std::string> calibrationData(const CalibrateConfig& cfg) {
   const diag::MeasurementSpec spec = diag::parseMeasurementArg(cfg.data, "--data");
-  const std::string named = sidecarScenario(spec.path);
-  auto checked = [&](const std::string& scenario) {
-    if (!named.empty() && scenario != named)
-      throw InputError(spec.path + "@" + scenario, "its sidecar " + sidecarPath(spec.path) + " says it was measured on scenario '" + named + "'");
-    return std::make_pair(spec.path, scenario);
+  const SidecarFacts facts = readSidecarFacts(spec.path);
+  auto scenario = [&](const std::string& given) {
+    const std::string s = dataScenario(spec.path, given, facts);
+    return std::make_pair(spec.path, s.empty() ? std::string("lab") : s);
   };
-  if (cfg.scenario.empty()) return checked(!spec.scenario.empty() ? spec.scenario : named.empty() ? "lab" : named);
+  if (cfg.scenario.empty()) return scenario(spec.scenario);
   if (!spec.scenario.empty() && spec.scenario != cfg.scenario)
     throw InputError("--scenario", "'" + cfg.scenario + "' differs from the scenario of --data " + cfg.data + ": give it once, as --data FILE@SCENARIO");
   deprecationNote("twin calibrate --data FILE --scenario NAME", "twin calibrate --data FILE@NAME", cfg.processes);
-  return checked(cfg.scenario);
+  return scenario(cfg.scenario);
 }
 
 int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {

@@ -32,30 +32,12 @@ calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec) 
   calib::DataSet ds;
   ds.name = spec.path;
   ds.data = readLabCsv(spec.path, measurableChannels(study.sensors));
-  ds.scenario = spec.scenario;
   // The sidecar (when there is one) names the scenario and the random road's seed.
-  const std::string side = sidecarPath(spec.path);
-  std::string side_scenario;
-  if (fs::exists(side)) {
-    try {
-      const auto j = nlohmann::json::parse(readTextFile(side));
-      if (j.contains("scenario") && j["scenario"].is_object() && j["scenario"].contains("name"))
-        side_scenario = j["scenario"]["name"].get<std::string>();
-      else if (j.contains("scenario") && j["scenario"].is_string())
-        side_scenario = j["scenario"].get<std::string>();
-      if (j.contains("road") && j["road"].is_object() && j["road"].contains("seed") && j["road"]["seed"].is_number_unsigned())
-        ds.road_seed = j["road"]["seed"].get<std::uint64_t>();
-    } catch (const nlohmann::json::exception& e) {
-      throw InputError(side, std::string("is not valid JSON: ") + jsonErrorInWords(e));
-    }
-  }
-  if (!ds.scenario.empty() && !side_scenario.empty() && ds.scenario != side_scenario)
-    throw InputError(spec.path + "@" + ds.scenario, "its sidecar " + side + " says it was measured on scenario '" + side_scenario + "'");
-  if (ds.scenario.empty()) {
-    ds.scenario = side_scenario;
-    if (ds.scenario.empty())
-      throw InputError(spec.path, "no scenario: name it as " + spec.path + "@SCENARIO (the file has no sidecar naming one)");
-  }
+  const SidecarFacts facts = readSidecarFacts(spec.path);
+  ds.road_seed = facts.road_seed;
+  ds.scenario = dataScenario(spec.path, spec.scenario, facts);
+  if (ds.scenario.empty())
+    throw InputError(spec.path, "no scenario: name it as " + spec.path + "@SCENARIO (the file has no sidecar naming one)");
   const ScenarioSpec& sc = study.scenario(ds.scenario);  // InputError lists the known names
   for (std::size_t i = 0; i < ds.data.records.size(); ++i) {
     const auto& r = ds.data.records[i];

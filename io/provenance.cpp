@@ -60,20 +60,30 @@ std::string sidecarPath(const std::string& csv_path) {
   return p.string();
 }
 
-std::string sidecarScenario(const std::string& csv_path) {
+SidecarFacts readSidecarFacts(const std::string& csv_path) {
+  SidecarFacts facts;
   const std::string side = sidecarPath(csv_path);
-  if (!std::filesystem::exists(side)) return "";
-  nlohmann::json j;
+  if (!std::filesystem::exists(side)) return facts;
   try {
-    j = nlohmann::json::parse(readTextFile(side));
+    const auto j = nlohmann::json::parse(readTextFile(side));
+    if (j.contains("scenario") && j["scenario"].is_object() && j["scenario"].contains("name") && j["scenario"]["name"].is_string())
+      facts.scenario = j["scenario"]["name"].get<std::string>();
+    else if (j.contains("scenario") && j["scenario"].is_string())
+      facts.scenario = j["scenario"].get<std::string>();
+    if (j.contains("road") && j["road"].is_object() && j["road"].contains("seed") && j["road"]["seed"].is_number_unsigned())
+      facts.road_seed = j["road"]["seed"].get<std::uint64_t>();
   } catch (const nlohmann::json::exception& e) {
     throw InputError(side, std::string("is not valid JSON: ") + jsonErrorInWords(e));
   }
-  if (!j.is_object() || !j.contains("scenario")) return "";
-  if (j["scenario"].is_object() && j["scenario"].contains("name") && j["scenario"]["name"].is_string())
-    return j["scenario"]["name"].get<std::string>();
-  if (j["scenario"].is_string()) return j["scenario"].get<std::string>();
-  return "";
+  return facts;
+}
+
+std::string dataScenario(const std::string& csv_path, const std::string& given, const SidecarFacts& facts) {
+  if (given.empty()) return facts.scenario;
+  if (!facts.scenario.empty() && given != facts.scenario)
+    throw InputError(csv_path + "@" + given,
+                     "its sidecar " + sidecarPath(csv_path) + " says it was measured on scenario '" + facts.scenario + "'");
+  return given;
 }
 
 }  // namespace dtwin

@@ -2,6 +2,7 @@
 // How an output was made: program version, command, study, assembly, every parameter value,
 // road and seed, integrator settings, run statistics. Written as a JSON sidecar next to outputs.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,9 +26,18 @@ nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioS
 
 /// "out/m1.csv" -> "out/m1.json".
 std::string sidecarPath(const std::string& csv_path);
-/// The scenario a data file's JSON sidecar names ("scenario": {"name": ..} as `twin generate lab`
-/// writes it, or a string), "" when there is no sidecar or it names none; InputError naming the
-/// sidecar when it is not valid JSON.
-std::string sidecarScenario(const std::string& csv_path);
+/// What a data file's JSON sidecar says of where it was measured: the scenario ("scenario":
+/// {"name": ..} as `twin generate lab` writes it, or a string; "" when it names none) and the random
+/// road's seed (road.seed). Empty without a sidecar; InputError naming the sidecar when it is not
+/// valid JSON.
+struct SidecarFacts {
+  std::string scenario;
+  std::optional<std::uint64_t> road_seed;
+};
+SidecarFacts readSidecarFacts(const std::string& csv_path);
+/// The scenario data file `csv_path` was measured on: `given` when not empty (InputError
+/// "PATH@GIVEN: its sidecar ... says it was measured on scenario 'X'" when the sidecar names
+/// another), else the sidecar's, else "".
+std::string dataScenario(const std::string& csv_path, const std::string& given, const SidecarFacts& facts);
 
 }  // namespace dtwin

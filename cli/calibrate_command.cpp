@@ -21,6 +21,7 @@ namespace {
 struct CalibrateConfig {
   const Distributed* processes = nullptr;  ///< the process context (CommandContext)
   std::string study = defaultStudy(), data, assembly = "all", scenario, out;
+  std::vector<std::string> free;  ///< --free: fixed values calibrated too
   int threads = 0;
   CalibrationFlags calibration;
   std::optional<std::uint64_t> seed;  ///< unset: the study's
@@ -53,6 +54,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
     for (auto& id : splitOn(cfg.assembly, ','))
       if (!id.empty()) req.assemblies.push_back(std::move(id));
   req.out = cfg.out;
+  req.free = cfg.free;
   req.command = command;
   calib::CalibrationOptions& opt = req.options;
   opt = calib::CalibrationOptions::fromStudy(study);
@@ -112,13 +114,18 @@ CommandHandle addCalibrateCommand(CLI::App& root, const CommandContext& context)
                 "a rerun into it resumes")
       ->required();
   c->add_option("--threads", cfg->threads, "Worker threads per process (0: all cores, shared among the MPI ranks of a machine)")->capture_default_str()->check(CLI::Range(0, 1024));
+  c->add_option("--free", cfg->free,
+                "A fixed value calibrated too, over the range `twin diagnose` gives it (comma separated or repeated): a per-corner or "
+                "per-axle factor such as suspension.damping@rr (over [0.2, 2]), or a vehicle value such as wheel.mass_kg (±50 %)")
+      ->delimiter(',');
   cfg->calibration.addTo(c, CalibrationFlags::kSizes | CalibrationFlags::kRegion | CalibrationFlags::kRounds | CalibrationFlags::kSteps);
   addSeedOption(c, cfg->seed, "Seed of the design and the sampler (default: the study's seed)");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   addForceOption(c, cfg->force);
   addExamples(c, {
                "twin calibrate --study data/studies/demo.toml --data out/lab.csv --assembly M3 --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --out out/calibration",
-               "twin calibrate --study data/studies/demo.toml --data out/lab.csv@lab --assembly M4 --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --out out/calibration"});
+               "twin calibrate --study data/studies/demo.toml --data out/lab.csv@lab --assembly M4 --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --out out/calibration",
+               "twin calibrate --study data/studies/demo.toml --data out/lab.csv --assembly M1 --free suspension.damping@rr --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --out out/calibration_rr"});
   CommandHandle handle{c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }, {}};
   CalibrationFlags::addFieldFlags(handle);
   return handle;

@@ -41,12 +41,38 @@ std::vector<std::string> freeableOf(const AssemblySpec& assembly) {
   return out;
 }
 
-/// What a per-corner or per-axle factor away from 1 leaves in the data, in words.
-std::string factorSignature(const CornerFactor& f) {
-  const std::string place = kFactorPlaces[static_cast<std::size_t>(f.place)];
-  return f.place < 4 ? "the " + place + " corner's " + f.value + " differs from the other corners' (" + f.value + "@" + place + " is not 1)"
-                     : "the " + place + " axle's " + f.value + " differs from the other axle's (" + f.value + "@" + place + " is not 1)";
+/// The part a factor's value belongs to: "damper", "spring", "tire".
+std::string factorPart(const std::string& value) {
+  if (value == "suspension.damping") return "damper";
+  if (value == "suspension.stiffness") return "spring";
+  return "tire";
 }
+
+/// The quantity a factor scales, in words: "damping", "stiffness", "vertical stiffness".
+std::string factorQuantity(const std::string& value) {
+  if (value == "tire.stiffness") return "vertical stiffness";
+  return value.substr(value.find('.') + 1);
+}
+
+/// A corner's name in words: "fl" -> "front-left".
+std::string cornerInWords(int place) {
+  static const char* const words[] = {"front-left", "front-right", "rear-left", "rear-right", "front", "rear"};
+  return words[place];
+}
+
+/// What a per-corner or per-axle factor away from 1 leaves in the data, in words.
+std::string factorSignature(const CornerFactor& f, bool relative) {
+  const std::string part = factorPart(f.value), q = factorQuantity(f.value);
+  const std::string name = f.value + "@" + kFactorPlaces[static_cast<std::size_t>(f.place)];
+  if (f.place < 4)
+    return "the " + cornerInWords(f.place) + " " + part + "'s " + q + " differs from the other corners' (" + name +
+           " is not 1): a pitch, roll or warp response the same change at all four corners cannot make";
+  return relative ? "the front and rear " + part + "s' " + q + " are in another ratio than the vehicle file's (" + name + " is not 1)"
+                  : "both " + cornerInWords(f.place) + " " + part + "s' " + q + " differs from the vehicle file's (" + name + " is not 1)";
+}
+
+/// A ratio in percent: 0.5512 -> "55 %" (three significant digits below 10 %: "4.2 %").
+std::string percent(double v) { return formatPrintf(std::abs(v) < 0.1 ? "%.2g %%" : "%.0f %%", 100 * v); }
 
 /// "wheel.mass_kg" -> "wheel mass"; "chassis.roll_inertia_kgm2" -> "chassis roll inertia".
 /// The freeable CG shift at a fixed wheelbase (twin/model.hpp), 0 in the vehicle file.
@@ -113,10 +139,45 @@ bool isCandidateName(const std::string& name, const EffectCatalog& catalog) {
   return name.find(':') != std::string::npos || name.find('=') != std::string::npos || catalog.contains(name);
 }
 
-std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const AssemblySpec& assembly, const std::vector<std::string>& channels,
+std::string factorPlaceInWords(const std::string& factor) {
+  const auto f = parseCornerFactor(factor);
+  if (!f) return factor;
+  const std::string part = factorPart(f->value);
+  return f->place < 4 ? "the " + cornerInWords(f->place) + " " + part : "both " + cornerInWords(f->place) + " " + part + "s";
+}
+
+std::vector<std::string> cornerCandidates(const Study& study, const AssemblySpec& assembly) {
+  // The factors the assembly's laws have: a model with every factor freed holds those it can
+  // apply as run parameters (the hub input has no tire compliance, so no tire factor).
+  AssemblySpec all = assembly;
+  for (const auto& n : cornerFactorNames())
+    if (std::find(all.freed.begin(), all.freed.end(), n) == all.freed.end()) all.freed.push_back(n);
+  const auto names = study.makeModel(all)->runParameterNames();
+  const auto calibrated = [&](const std::string& v) {
+    return std::any_of(study.calibrated.begin(), study.calibrated.end(), [&](const CalibratedParameter& c) { return c.name == v; });
+  };
+  std::vector<std::string> out;
+  for (const char* value : kCornerFactorValues)
+    for (int place = 0; place < 6; ++place) {
+      const std::string n = cornerFactorName(value, place);
+      if (std::find(names.begin(), names.end(), n) == names.end()) continue;
+      if (place == 5 && calibrated(value)) continue;  // the front factor's mirror (see the header)
+      out.push_back(kFree + n);
+    }
+  // The catalogue's effects of a part that wears at one strut, at each corner ("bump_stop@rr").
+  const auto& catalog = study.effectCatalog();
+  for (const auto& e : catalog.names()) {
+    if (!catalog.make(e, "")->screenedAtEachCorner()) continue;
+    for (const char* c : kEffectCorners) out.push_back(e + "@" + c);
+  }
+  return out;
+}
+
+std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpec& assembly, const std::vector<std::string>& channels,
                                            bool measured_road) {
-  std::vector<std::string> out = catalog.names();
+  std::vector<std::string> out = study.effectCatalog().names();
   for (const auto& f : freeableOf(assembly)) out.push_back(kFree + f);
+  for (const auto& f : cornerCandidates(study, assembly)) out.push_back(f);
   for (const auto& [group, members] : channelGroups(channels))
     for (const auto& k : sensorModelKinds()) out.push_back(k + ":" + group);
   if (measured_road) {
@@ -191,7 +252,8 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
   for (const auto& cp : study.calibrated)
     if (cp.name == value) throw InputError(where, "'" + value + "' is calibrated already: only a fixed value can be freed");
   auto freeable = freeableOf(assembly);
-  const bool factor = parseCornerFactor(value).has_value();  // freed through AssemblySpec::freed, without a rebuild
+  const auto corner_factor = parseCornerFactor(value);
+  const bool factor = corner_factor.has_value();  // freed through AssemblySpec::freed, without a rebuild
   if (!factor && std::find(freeable.begin(), freeable.end(), value) == freeable.end()) {
     if (const std::string rule = cornerFactorRule(value); !rule.empty()) throw InputError(where, rule);
     // A fixed value of the assembly's laws (the tire radius, a strut-law constant): a run
@@ -256,11 +318,13 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
     throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of " + range + " about it to search");
   const bool input = value == kRoadGain || value == kRoadDelay;
   c.kind = input ? "input" : "parameter";
+  c.relative = factor && std::any_of(study.calibrated.begin(), study.calibrated.end(),
+                                     [&](const CalibratedParameter& cp) { return cp.name == corner_factor->value; });
   c.parameters = {p};
   c.calibrated_names = {value};
   c.signature = input ? (value == kRoadGain ? "the road signal is scaled (its gain is not 1)"
                                             : "the road signal is shifted in time against the measured channels (a delay)")
-                      : factor ? factorSignature(*parseCornerFactor(value))
+                      : factor ? factorSignature(*corner_factor, c.relative)
                                : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
   if (p.prior_lower > lo) c.range_note = "searched from " + num("%.4g", p.prior_lower) + ", not " + num("%.4g", lo) + " (" + why_lower + ")";
   if (p.prior_upper < hi)
@@ -314,6 +378,8 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
       c.calibrated_names.push_back(name + "." + p.name);
     }
   c.signature = effect->signature();
+  if (const EffectPlace at = splitEffectPlace(name, where); at.corner >= 0)
+    c.signature = "at the " + cornerInWords(at.corner) + " corner only: " + c.signature;
   c.residual_signature = effect->residualSignature();
   c.engagement_threshold = effect->engagementThreshold();
   return c;
@@ -347,7 +413,7 @@ void CandidateSpec::install(calib::CalibrationSetup& setup) const {
   }
 }
 
-std::string CandidateSpec::finding(const std::vector<double>& values) const {
+std::string CandidateSpec::finding(const std::vector<double>& values, double lower, double upper) const {
   if (kind == "option")
     return options.size() == 1 && options[0] == std::pair<std::string, std::string>{"tire", "hub"}
                ? "the road signal behaves as the hub's motion, not the road under a tire"
@@ -374,9 +440,29 @@ std::string CandidateSpec::finding(const std::vector<double>& values) const {
     return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +
            (v >= parameters[0].default_value ? "ahead of" : "behind") + " the vehicle file's position (the same wheelbase)";
   if (const auto f = parseCornerFactor(calibrated_names[0]); kind == "parameter" && f) {
-    const std::string place = kFactorPlaces[static_cast<std::size_t>(f->place)];
-    return "the " + f->value + " at " + (f->place < 4 ? "the " + place + " corner" : "the " + place + " axle") + " is about " +
-           num("%.3g", v) + " times the others'";
+    // "the rear-right damper gives about 55 % of the damping of the other three (95 %: 51 % to 59 %)"
+    const std::string q = factorQuantity(f->value), part = factorPart(f->value);
+    const std::string interval =
+        std::isfinite(lower) && std::isfinite(upper) ? " (95 %: " + percent(lower) + " to " + percent(upper) + ")" : "";
+    const bool tire = part == "tire";
+    if (f->place < 4)
+      return factorPlaceInWords(calibrated_names[0]) + (tire ? " has about " : " gives about ") + percent(v) + " of the " + q + " of " +
+             (relative ? "the other three" : "its nominal " + part + " (the vehicle file's)") + interval;
+    if (relative) {
+      // The ratio between the axles (cornerCandidates), said of the axle with the lower value: a
+      // worn part loses damping or stiffness, so "the rear dampers give 55 % of the front ones'"
+      // reads as the finding it most likely is, where "the front give 182 % of the rear" would not.
+      const bool flip = v > 1;
+      const int low = flip ? 9 - f->place : f->place;  // front 4 <-> rear 5
+      const std::string axle = cornerInWords(low), other = low == 4 ? "rear" : "front";
+      const std::string ratio_interval =
+          interval.empty() ? "" : " (95 %: " + percent(flip ? 1 / upper : lower) + " to " + percent(flip ? 1 / lower : upper) + ")";
+      return "the " + axle + " " + part + "s " + (tire ? "have" : "give") + " about " + percent(flip ? 1 / v : v) + " of the " + q +
+             " of the " + other + " ones" + ratio_interval + " (which axle changed, these data cannot tell while the whole " + q +
+             " is calibrated)";
+    }
+    return factorPlaceInWords(calibrated_names[0]) + (tire ? " have about " : " give about ") + percent(v) + " of their nominal " + q +
+           interval;
   }
   if (kind == "parameter")
     return "the " + valueInWords(calibrated_names[0]) + " is about " + plain(v) + " " + parameters[0].unit + ", not " +

@@ -18,6 +18,7 @@
 // prior range, screened by a score test at the base optimum. A range candidate is screened by the
 // score of its value beyond the bound; an option is not nested and is always confirmed. Each
 // installs itself into a calibration setup.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -53,11 +54,19 @@ struct CandidateSpec {
   /// parameter: a fixed value of the assembly's laws, a run parameter already (calibrated
   /// without AssemblySpec::freed and without a rebuild); false for a freeable vehicle value.
   bool law_value = false;
+  /// parameter: a per-corner or per-axle factor whose value the study calibrates as a whole, so
+  /// the factor reads as a ratio to the other corners (or, on an axle, to the other axle) rather
+  /// than to the vehicle file's value.
+  bool relative = false;
   /// Adds this candidate (installed, its diagnosed parameters calibrated over their prior range).
   void install(calib::CalibrationSetup& setup) const;
   /// The finding in plain words at calibrated `values` (one per parameter): "the wheel mass is
-  /// about 35.3 kg, not 29.46 kg"; "the hub_force channels look filtered at about 25 Hz".
-  std::string finding(const std::vector<double>& values) const;
+  /// about 35.3 kg, not 29.46 kg"; "the hub_force channels look filtered at about 25 Hz". A
+  /// factor's finding names its place and, given the first value's 95 % interval
+  /// (`lower`, `upper`, finite), says it: "the rear-right damper gives about 55 % of the damping of
+  /// the other three (95 %: 51 % to 59 %)".
+  std::string finding(const std::vector<double>& values, double lower = std::numeric_limits<double>::quiet_NaN(),
+                      double upper = std::numeric_limits<double>::quiet_NaN()) const;
 };
 
 /// The sensor-model groups of `channels`: channels of one unit suffix ("_N", "_mps2") share a
@@ -71,12 +80,27 @@ std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(cons
 CandidateSpec candidateSpec(const std::string& name, const Study& study, const AssemblySpec& assembly,
                             const std::vector<std::string>& channels, const std::string& where);
 
-/// Every candidate of the default catalogue: each effect of `catalog` (the study's), each freeable
-/// vehicle value the assembly has, and each sensor model on each channel group; when
-/// `measured_road` (a data set's road is a measured signal, RoadSetting::measured), the road
-/// signal's gain and delay and, unless the assembly has it, the hub input (tire=hub).
-std::vector<std::string> defaultCandidates(const EffectCatalog& catalog, const AssemblySpec& assembly,
+/// Every candidate of the default catalogue: each effect of the study's catalogue, each freeable
+/// vehicle value the assembly has, the per-corner and per-axle factors (cornerCandidates), and
+/// each sensor model on each channel group; when `measured_road` (a data set's road is a measured
+/// signal, RoadSetting::measured), the road signal's gain and delay and, unless the assembly has
+/// it, the hub input (tire=hub).
+std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpec& assembly,
                                            const std::vector<std::string>& channels, bool measured_road = false);
+
+/// The per-corner and per-axle candidates of the default catalogue: the factors
+/// ("free:suspension.damping@rr"), for each value with factors that the assembly's laws have, its
+/// four corners and its axles; and each effect that wears at one strut
+/// (Effect::screenedAtEachCorner) at each corner ("bump_stop@rr"). When the study calibrates a
+/// value as a whole, its front and rear factors are one model (the overall value times f on the
+/// front axle fits as well as the overall value times f on both and 1/f on the rear): only the
+/// front one is a candidate, read as the ratio between the axles.
+std::vector<std::string> cornerCandidates(const Study& study, const AssemblySpec& assembly);
+
+/// A factor's place and part in words: "the rear-right damper", "both rear dampers", "the
+/// front-left tire", "both front springs" (the first value of `name`, a factor name without
+/// "free:").
+std::string factorPlaceInWords(const std::string& factor);
 
 /// True when `name` has the form of a candidate ("free:<value>", "widen:<value>",
 /// "<subsystem>=<option>", "<sensor model>:<group>" or a non-empty effect name): the options'

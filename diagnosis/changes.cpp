@@ -63,13 +63,18 @@ std::string describe(const ValueChange& c) {
     s += " moved by " + std::string(c.change >= 0 ? "+" : "") + number(c.change) + unit + " (95 %: " + number(c.lo) + " to " +
          number(c.hi) + unit + ")";
   }
-  s += ": " + number(c.first.optimum) + " -> " + number(c.second.optimum) + unit;
+  s += ": " + number(c.first.estimate) + " -> " + number(c.second.estimate) + unit;
   s += c.significant ? "; significant" : "; no significant change";
   if (!c.trusted) {
     std::string why = !c.first.trusted ? "first: " + c.first.note : "";
     if (!c.second.trusted) why += (why.empty() ? "" : "; ") + std::string("second: ") + c.second.note;
     s += " (intervals not to be trusted: " + why + ")";
   }
+  if (c.first.centred || c.second.centred)
+    s += c.first.centred && c.second.centred
+             ? " (both optima lie outside their intervals: the profile search met better fits; the intervals' centres are compared)"
+             : std::string(" (the ") + (c.first.centred ? "first" : "second") +
+                   " calibration's optimum lies outside its interval: the profile search met a better fit; the interval's centre is compared)";
   return s;
 }
 
@@ -92,6 +97,11 @@ ValueEstimate valueEstimate(const calib::CalibrationFolder& folder, const std::s
     throw InputError(where, "optimum and ci95 must be finite numbers");
   if (e.lo > e.hi) throw InputError(where + ".ci95", "lower end above the upper end");
   e.interval = p.value("interval", s.value("interval", std::string("profile")));
+  e.estimate = e.optimum;
+  if (e.optimum < e.lo || e.optimum > e.hi) {
+    e.centred = true;
+    e.estimate = e.lo > 0 ? std::sqrt(e.lo * e.hi) : 0.5 * (e.lo + e.hi);
+  }
   if (s.contains("integrator_check") && s["integrator_check"].is_object() && s["integrator_check"].contains("ok") &&
       s["integrator_check"]["ok"].is_boolean() && !s["integrator_check"]["ok"].get<bool>()) {
     e.trusted = false;
@@ -144,10 +154,13 @@ ChangeReport compareCalibrations(const calib::CalibrationFolder& first, const ca
     c.trusted = c.first.trusted && c.second.trusted;
     const double b1 = lowerBound(first, n), b2 = lowerBound(second, n);
     c.ratio = c.first.lo > 0 && c.second.lo > 0 && c.first.optimum > 0 && c.second.optimum > 0 && !(b1 < 0) && !(b2 < 0);
+    // A centred estimate of a value compared by difference: the arithmetic centre.
+    for (ValueEstimate* e : {&c.first, &c.second})
+      if (e->centred && !c.ratio) e->estimate = 0.5 * (e->lo + e->hi);
     auto centre = [&](double x) { return c.ratio ? std::log(x) : x; };
     const double s1 = (centre(c.first.hi) - centre(c.first.lo)) / (2 * kZ975);
     const double s2 = (centre(c.second.hi) - centre(c.second.lo)) / (2 * kZ975);
-    const double d = centre(c.second.optimum) - centre(c.first.optimum);
+    const double d = centre(c.second.estimate) - centre(c.first.estimate);
     const double s = std::sqrt(s1 * s1 + s2 * s2);
     if (s > 0) {
       c.z = d / s;
@@ -192,7 +205,8 @@ nlohmann::json ChangeReport::toJson() const {
   j["changes"] = nlohmann::json::array();
   for (const auto& c : changes) {
     auto est = [](const ValueEstimate& e) {
-      return nlohmann::json{{"optimum", e.optimum}, {"ci95", {e.lo, e.hi}}, {"interval", e.interval}, {"trusted", e.trusted}, {"note", e.note}};
+      return nlohmann::json{{"optimum", e.optimum}, {"estimate", e.estimate}, {"optimum_outside_interval", e.centred}, {"ci95", {e.lo, e.hi}},
+                            {"interval", e.interval}, {"trusted", e.trusted}, {"note", e.note}};
     };
     j["changes"].push_back({{"name", c.name},
                             {"unit", c.unit},

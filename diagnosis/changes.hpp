@@ -9,7 +9,10 @@
 // sd = (hi - lo) / (2 z_0.975): on the log scale for a positive value (a stiffness, a damping, a
 // factor: the change is a ratio), on the linear scale otherwise (a position, an offset: the change
 // is a difference). The two estimates are independent (two drives, two noise records), so the
-// change has sd = sqrt(sd1² + sd2²) and z = change / sd.
+// change has sd = sqrt(sd1² + sd2²) and z = change / sd. The estimate is the optimum, unless it
+// lies outside its own interval (the profile search met a better fit than the optimiser's, in a
+// flat valley): then the interval's centre (geometric for a positive value), which the interval
+// was built around, and the change says so.
 #include <string>
 #include <vector>
 
@@ -21,7 +24,11 @@ namespace dtwin::diag {
 
 /// One value as one calibration gives it.
 struct ValueEstimate {
-  double optimum = 0, lo = 0, hi = 0;  ///< the point estimate and the printed 95 % interval
+  double optimum = 0, lo = 0, hi = 0;  ///< the optimum and the printed 95 % interval
+  /// The point estimate compared: the optimum, or the interval's centre when the optimum lies
+  /// outside the interval (centred true).
+  double estimate = 0;
+  bool centred = false;
   std::string interval;                ///< "profile" | "posterior" (summary.json "interval")
   bool trusted = true;                 ///< false: the integrator check flagged the calibration, or the value sits on a bound
   std::string note;                    ///< why not trusted

@@ -35,11 +35,18 @@ std::string joinEffects(const std::vector<std::string>& e) {
   return s;
 }
 
-/// An effect's name in words with its article: "bump_stop" -> "a bump stop".
+/// An effect's name in words with its article: "bump_stop" -> "a bump stop"; at one corner,
+/// "bump_stop@rr" -> "a bump stop at the rear-right corner".
 std::string inWords(const std::string& effect) {
-  std::string w = effect;
+  static const char* const corners[] = {"front-left", "front-right", "rear-left", "rear-right"};
+  const auto at = effect.find('@');
+  std::string w = effect.substr(0, at);
   std::replace(w.begin(), w.end(), '_', ' ');
-  return (std::string("aeiou").find(w.empty() ? 'x' : w[0]) == std::string::npos ? "a " : "an ") + w;
+  std::string out = (std::string("aeiou").find(w.empty() ? 'x' : w[0]) == std::string::npos ? "a " : "an ") + w;
+  if (at != std::string::npos)
+    for (int c = 0; c < 4; ++c)
+      if (effect.substr(at + 1) == kEffectCorners[c]) out += std::string(" at the ") + corners[c] + " corner";
+  return out;
 }
 
 nlohmann::json paramsJson(const std::vector<EffectParameter>& ps) {
@@ -286,7 +293,7 @@ std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& ass
   const OptionCheck check("diagnose");
   const auto installed = refuseInstalled(study, assembly, options);
   std::vector<std::string> catalogue =
-      options.effects.empty() ? defaultCandidates(study.effectCatalog(), assembly, channels, measured_road) : options.effects;
+      options.effects.empty() ? defaultCandidates(study, assembly, channels, measured_road) : options.effects;
   // The default catalogue leaves out what the model has already: an installed effect, a value the
   // study calibrates (a named one is refused by candidateSpec).
   const auto calibrated = [&](const std::string& e) {

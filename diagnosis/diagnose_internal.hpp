@@ -70,8 +70,12 @@ struct Diagnosis {
   /// What `f` says of candidate `name`, in words (CandidateSpec::finding at its mean values).
   std::string findingOf(const std::string& name, const Figures& f) const {
     std::vector<double> values;
-    for (const auto& p : parametersOf(name, f)) values.push_back(p.mean);
-    return spec(name).finding(values);
+    const auto ps = parametersOf(name, f);
+    for (const auto& p : ps) values.push_back(p.mean);
+    // The first value's printed interval, when it has one (a full calibration).
+    const bool interval = !ps.empty() && ps[0].interval != "none";
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return spec(name).finding(values, interval ? ps[0].q025 : nan, interval ? ps[0].q975 : nan);
   }
   /// The candidates of the current stage.
   std::vector<Candidate>& stage() { return installed.empty() ? res.candidates : res.further.back().candidates; }

@@ -155,6 +155,13 @@ std::string separatedBy(const Candidate& a, const Candidate& b) {
   auto timing = [](const Candidate& c) {
     return c.effect.rfind("lowpass", 0) == 0 || c.effect.rfind("delay", 0) == 0;
   };
+  const auto factorOf = [](const Candidate& c) { return parseCornerFactor(c.effect.rfind("free:", 0) == 0 ? c.effect.substr(5) : ""); };
+  if (const auto fa = factorOf(a), fb = factorOf(b); fa && fb) {
+    if (fa->value == fb->value && fa->place >= 4 && fb->place >= 4)
+      return "they are one model while the whole " + fa->value + " is calibrated: only the ratio between the axles is known";
+    return "a scenario that loads the corners unevenly (a bump under one wheel, a roll or warp input) or a force or travel "
+           "channel at each corner would separate them";
+  }
   if (timing(a) && timing(b))
     return "a step input or the phase above 20 Hz would separate them (a delay shifts the phase in proportion to frequency "
            "and keeps the amplitude; a low-pass lowers the amplitude too)";
@@ -238,6 +245,7 @@ std::string causeInWords(const Cause& k) {
   if (k.kind == "input") return "Road signal: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "range") return "Far from the prior: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "option") return "Structure: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.name.find('@') != std::string::npos) return "Missing effect at one corner: " + inWords(k.name) + " (" + k.name + ", " + evidence + ")";
   return "Missing effect: " + k.name + " (" + evidence + ")";
 }
 

@@ -50,7 +50,12 @@ std::string changesPage(const nlohmann::json& j, const std::string& title) {
     if (!ratio) dmax = std::max({std::fabs(c["ci95"][0].get<double>()), std::fabs(c["ci95"][1].get<double>()), 1e-300}) * 1.1;
     const std::string unit = c["unit"].get<std::string>();
     auto est = [&](const nlohmann::json& e) {
-      return num(e["optimum"].get<double>()) + " <small>[" + num(e["ci95"][0].get<double>()) + ", " + num(e["ci95"][1].get<double>()) + "]</small>" +
+      const bool centred = e.value("optimum_outside_interval", false);
+      return num(e.value("estimate", e["optimum"].get<double>())) +
+             (centred ? " <span class=\"warn\" title=\"the optimum (" + num(e["optimum"].get<double>()) +
+                            ") lies outside its interval: the profile search met a better fit; the interval's centre is compared\">c</span>"
+                      : std::string()) +
+             " <small>[" + num(e["ci95"][0].get<double>()) + ", " + num(e["ci95"][1].get<double>()) + "]</small>" +
              (e["trusted"].get<bool>() ? "" : " <span class=\"warn\" title=\"" + htmlEscape(e["note"].get<std::string>()) + "\">!</span>");
     };
     const bool sig = c["significant"].get<bool>();

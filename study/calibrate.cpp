@@ -9,6 +9,7 @@
 #include "common/format.hpp"
 #include "common/hash.hpp"
 #include "common/validate.hpp"
+#include "diagnosis/candidates.hpp"
 #include "diagnosis/measurements.hpp"
 #include "io/measurement.hpp"
 #include "io/provenance.hpp"
@@ -25,6 +26,19 @@ void CalibrateRequest::validate(const Study& study) const {
   if (!fs::exists(data)) throw InputError(data, "lab data file not found (--data)");
   check.require(!(fs::exists(out) && !fs::is_directory(out)), "out", "'" + out + "' exists and is not a folder");
   options.validate();
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    check.require(std::find(free.begin(), free.begin() + static_cast<long>(i), free[i]) == free.begin() + static_cast<long>(i), "free",
+                  "names '" + free[i] + "' twice");
+    for (const auto& a : calibrationTargets(study, *this)) (void)freedValueSpec(study, a, free[i]);
+  }
+}
+
+diag::CandidateSpec freedValueSpec(const Study& study, const AssemblySpec& assembly, const std::string& value) {
+  const std::string where = OptionCheck("calibrate").where("free");
+  if (value.rfind("free:", 0) == 0) throw InputError(where, "'" + value + "': give the value's name alone (" + value.substr(5) + ")");
+  auto spec = diag::candidateSpec("free:" + value, study, assembly, {}, where);
+  if (spec.kind != "parameter" && spec.kind != "input") throw InputError(where, "'" + value + "' is not a fixed value that can be freed");
+  return spec;
 }
 
 namespace {
@@ -137,9 +151,11 @@ void calibrateAssemblies(const Study& study, const CalibrateRequest& request, co
     run.assembly = a;
     const std::string dir = (fs::path(request.out) / a.id).string();
     run.weights = setup.channel_weights;
+    calib::CalibrationSetup with = setup;  // the freed values, this assembly's (a law's value may differ between them)
+    for (const auto& v : request.free) freedValueSpec(study, a, v).install(with);
     const StageProgress progress = progress_of ? progress_of(a) : StageProgress{};
-    run.result = setup.empty() ? calibrateAssembly(study, a, data, request.scenario, opt, dir, data_hash, progress)
-                               : calibrateAssembly(study, a, {set}, setup, opt, dir, data_hash, progress);
+    run.result = with.empty() ? calibrateAssembly(study, a, data, request.scenario, opt, dir, data_hash, progress)
+                              : calibrateAssembly(study, a, {set}, with, opt, dir, data_hash, progress);
     index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"summary", (fs::path(a.id) / "summary.json").string()}});
     if (on_done) on_done(run);
   }

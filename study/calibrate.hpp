@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "calibration/calibrate.hpp"
+#include "diagnosis/candidates.hpp"
 #include "common/progress.hpp"
 #include "io/study.hpp"
 
@@ -20,6 +21,10 @@ struct CalibrateRequest {
   std::string scenario = "lab";         ///< the scenario the data were measured on
   std::string out;                      ///< the folder; each assembly writes OUT/<id>/
   calib::CalibrationOptions options;    ///< command and data_path are set from the request
+  /// Fixed values calibrated too, each over its prior range as `twin diagnose` frees it
+  /// (diagnosis/candidates.hpp): a per-corner or per-axle factor ("suspension.damping@rr", over
+  /// [0.2, 2]), a freeable vehicle value or a law's fixed value (±50 % about the file's value).
+  std::vector<std::string> free;
   std::string command;                  ///< recorded in every output
   /// InputError naming the field ("calibrate.data", "calibrate.out", ...) or the options' own.
   void validate(const Study& study) const;
@@ -45,6 +50,11 @@ struct CalibrateRun {
 /// InputError naming it: fitted unweighted, a channel in metres would weigh nothing beside one in
 /// m/s², and one in N would swamp both.
 std::map<std::string, double> channelWeights(const Study& study, const calib::DataSet& set);
+
+/// How `value` of CalibrateRequest::free is calibrated in `assembly`: the diagnosis's "free:"
+/// candidate. InputError("calibrate.free", rule) for a value that cannot be freed there (unknown,
+/// calibrated already, a factor of a value the assembly lacks, ...).
+diag::CandidateSpec freedValueSpec(const Study& study, const AssemblySpec& assembly, const std::string& value);
 
 /// The targets of `request` (every assembly when none is named).
 std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request);

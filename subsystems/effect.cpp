@@ -100,4 +100,19 @@ std::unique_ptr<Effect> makeEffect(const std::string& name, const std::string& w
   throw InputError(where, unknownNameRule("effect", name, effectNames()));
 }
 
+bool actsAtOneCorner(EffectKind kind) {
+  return kind == EffectKind::Strut || kind == EffectKind::StrutFilter || kind == EffectKind::TireInput || kind == EffectKind::TireForce ||
+         kind == EffectKind::TireLoad;
+}
+
+EffectPlace splitEffectPlace(const std::string& name, const std::string& where) {
+  const auto at = name.find('@');
+  if (at == std::string::npos || name.rfind(kTermPrefix, 0) == 0) return {name, -1};
+  const std::string place = name.substr(at + 1);
+  for (int c = 0; c < 4; ++c)
+    if (place == kEffectCorners[c]) return {name.substr(0, at), c};
+  throw InputError(where, "'" + name + "': an effect is installed at one corner (fl, fr, rl, rr) or at all four (no @), not at '" +
+                              place + "'");
+}
+
 }  // namespace dtwin

@@ -81,6 +81,10 @@ class Effect {
   /// (StrutState's body, wheel and road velocities; a controller's sensors). The simulator
   /// computes them only when an installed effect says so.
   virtual bool needsMotion() const { return false; }
+  /// Whether the diagnosis's default catalogue also screens this effect at each corner on its own
+  /// ("bump_stop@rr": a part that wears or fails at one strut). Any effect that acts at a corner
+  /// (actsAtOneCorner) can be installed at one when named; this only adds it to the default list.
+  virtual bool screenedAtEachCorner() const { return false; }
   /// Strut effects: extra strut force [N] (same sign convention as StrutState).
   virtual double calcStrutForce(const StrutState& s, ParamValues p) const { return 0.0; }
   /// TireInput effects: the effective road under the contact point.
@@ -114,6 +118,22 @@ class Effect {
   /// StrutFilter effects: extra strut force [N] given the auxiliary state z.
   virtual double calcFilteredStrutForce(const StrutState& s, double z, ParamValues p) const { return 0.0; }
 };
+
+/// The corners an effect can be installed at on its own ("bump_stop@rr"), in the twin's corner
+/// order: front-left, front-right, rear-left, rear-right (docs/model.md, "Effects at one corner").
+inline constexpr const char* kEffectCorners[] = {"fl", "fr", "rl", "rr"};
+
+/// Whether effects of `kind` act at each corner separately (a strut's or a tire's), so that one
+/// can be installed at one corner: Strut, StrutFilter, TireInput, TireForce and TireLoad.
+bool actsAtOneCorner(EffectKind kind);
+
+/// An installed effect's name split: "bump_stop@rr" -> ("bump_stop", 3); "bump_stop" ->
+/// ("bump_stop", -1: every corner). InputError(where, rule) for a place that is no corner.
+struct EffectPlace {
+  std::string effect;
+  int corner = -1;
+};
+EffectPlace splitEffectPlace(const std::string& name, const std::string& where);
 
 /// An effectParameter's upper limit when it has none.
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();

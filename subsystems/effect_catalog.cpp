@@ -20,6 +20,15 @@ void EffectCatalog::add(const UserEffectSpec& spec) {
 }
 
 std::unique_ptr<Effect> EffectCatalog::make(const std::string& name, const std::string& where) const {
+  if (name.find('@') != std::string::npos && name.rfind(kTermPrefix, 0) != 0) {
+    // An effect at one corner: the effect itself, installed there (the model keeps the corner).
+    const EffectPlace at = splitEffectPlace(name, where);
+    auto e = make(at.effect, where);
+    if (!actsAtOneCorner(e->kind()))
+      throw InputError(where, "'" + name + "': " + at.effect + " (" + kindName(e->kind()) +
+                                  ") does not act at one corner; effects of kinds Strut, StrutFilter, TireInput, TireForce and TireLoad do");
+    return e;
+  }
   for (const auto& u : user_)
     if (u.name == name) return remakeUserEffect(u);  // checked when added
   for (const auto& e : effectRegistry())
@@ -30,7 +39,14 @@ std::unique_ptr<Effect> EffectCatalog::make(const std::string& name, const std::
 
 bool EffectCatalog::contains(const std::string& name) const {
   const auto n = names();
-  return std::find(n.begin(), n.end(), name) != n.end();
+  if (std::find(n.begin(), n.end(), name) != n.end()) return true;
+  if (name.find('@') == std::string::npos) return false;
+  try {  // an effect of the catalogue at one corner
+    const EffectPlace at = splitEffectPlace(name, "");
+    return std::find(n.begin(), n.end(), at.effect) != n.end() && actsAtOneCorner(make(at.effect, "")->kind());
+  } catch (const InputError&) {
+    return false;
+  }
 }
 
 std::vector<std::string> EffectCatalog::names() const {

@@ -259,6 +259,14 @@ class StrutElement : public Force::Custom::Implementation {
       zd[zi_[j]] = m_->effects()[i]->calcFilterRate(ss, z[zi_[j]], effectValues(i));
     }
   }
+  /// A main strut's corner (0-3): the effects installed at another corner only leave it alone.
+  /// Call before the system's topology is realized (it keeps the StrutFilter states of its own).
+  void placeAt(int corner) {
+    corner_ = corner;
+    filter_effects_.erase(std::remove_if(filter_effects_.begin(), filter_effects_.end(),
+                                         [&](std::size_t i) { return !m_->effectActsAt(i, corner); }),
+                          filter_effects_.end());
+  }
   /// Binds slider struts to their state indices (after realizeTopology).
   void bind(const State& s) {
     if (bind_slider_) g_.bindSlider(s);
@@ -317,7 +325,7 @@ class StrutElement : public Force::Custom::Implementation {
     if (effects_) {
       const auto& effs = m_->effects();
       for (std::size_t i = 0; i < effs.size(); ++i)
-        if (effs[i]->kind() == EffectKind::Strut)
+        if (effs[i]->kind() == EffectKind::Strut && m_->effectActsAt(i, corner_))
           F += effs[i]->calcStrutForce(ss, ParamValues(p + m_->effectSlots()[i][0], effs[i]->parameters().size()));
     }
     return F;
@@ -333,6 +341,7 @@ class StrutElement : public Force::Custom::Implementation {
   int preload_slot_;
   double preload_;
   bool effects_;
+  int corner_ = -1;       ///< a main strut's corner (placeAt); -1 on interface elements
   bool context_ = false;  ///< a strut effect is installed: fill StrutState's context
   bool motion_ = false;   ///< ... and one reads the absolute motion (Effect::needsMotion)
   SubsystemIndex sub_;

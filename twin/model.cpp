@@ -296,6 +296,7 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
     for (const auto& s : eff->parameters()) slots.push_back(addRunParameter(e + "." + s.name));
     effects_.push_back(std::move(eff));
     effect_slots_.push_back(std::move(slots));
+    effect_corners_.push_back(splitEffectPlace(e, where).corner);
   }
   for (const auto& f : assembly_.freed) {
     if (parseCornerFactor(f)) continue;  // a factor: addCornerFactors

@@ -148,6 +148,11 @@ class Model {
   const std::vector<int>& interfaceSlots() const { return iface_slots_; }
   int interfacePreloadSlot() const { return iface_preload_slot_; }
   const std::vector<std::vector<int>>& effectSlots() const { return effect_slots_; }
+  /// Each installed effect's corner (0-3, kEffectCorners) when installed at one ("bump_stop@rr"),
+  /// -1 when it acts at every corner.
+  const std::vector<int>& effectCorners() const { return effect_corners_; }
+  /// Whether effect i acts at `corner`.
+  bool effectActsAt(std::size_t i, int corner) const { return effect_corners_[i] < 0 || effect_corners_[i] == corner; }
 
   /// Per sensor (sensors() order): the run slots of its chassis position x, y, z (-1 for a wheel
   /// or travel sensor) and of its offset, the sensors' run parameters
@@ -213,6 +218,7 @@ class Model {
   int iface_preload_slot_ = -1;
   int road_gain_slot_ = -1, road_delay_slot_ = -1;
   std::vector<std::vector<int>> effect_slots_;
+  std::vector<int> effect_corners_;
   std::vector<int> freed_slots_;
   std::array<std::vector<ScaledParameter>, 4> strut_factors_, tire_factors_;
   std::vector<SensorSlots> sensor_slots_;

@@ -115,6 +115,7 @@ std::string cornerFactorRule(const std::string& name) {
   const auto at = name.find('@');
   if (at == std::string::npos || parseCornerFactor(name)) return {};
   const std::string value = name.substr(0, at), place = name.substr(at + 1);
+  if (place.find('.') != std::string::npos) return {};  // an effect's value at one corner ("bump_stop@rr.gap_m"), no factor
   if (std::find(std::begin(kCornerFactorValues), std::end(kCornerFactorValues), value) == std::end(kCornerFactorValues))
     return "'" + name + "': " + value + " has no per-corner or per-axle factor (values with one: " +
            joinedNames(std::begin(kCornerFactorValues), std::end(kCornerFactorValues)) + ")";

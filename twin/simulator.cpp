@@ -183,6 +183,7 @@ struct Simulator::Impl {
       auto* se = new StrutElement(&ctx, &M, &M.strut(), struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
                                   filter_states, forces.getMySubsystemIndex());
       strut_elems[c] = se;
+      se->placeAt(c);
       se->factors_ = M.strutFactors()[static_cast<std::size_t>(c)];
       if (M.topology() == SuspensionTopology::MacPherson) {
         se->bind_slider_ = true;  // the wheel carrier slides along the chassis z at the strut
@@ -206,7 +207,9 @@ struct Simulator::Impl {
       tc.r0 = parameterIndex(M.tire().parameters(), "unloaded_radius_m");
       tc.factors = M.tireFactors()[static_cast<std::size_t>(c)];
       for (std::size_t i = 0; i < M.effects().size(); ++i)
-        if (M.effects()[i]->kind() == EffectKind::TireInput)
+        if (!M.effectActsAt(i, c))
+          continue;  // installed at another corner
+        else if (M.effects()[i]->kind() == EffectKind::TireInput)
           tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
         else if (M.effects()[i]->kind() == EffectKind::TireForce)
           tc.scalers.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});

@@ -15,6 +15,7 @@ class BumpStopEffect final : public Effect {
     return "residual grows like a knee in force vs suspension deflection beyond the gap; only at large compression (bump peaks)";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
+  bool screenedAtEachCorner() const override { return true; }  // a part that wears at one strut
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
   ResidualSignature residualSignature() const override { return {"susp_defl_", "knee"}; }
   std::string engagementThreshold() const override { return "gap_m"; }

@@ -16,6 +16,7 @@ class DamperAsymmetryEffect final : public Effect {
     return "residual linear in deflection rate on the rebound side only (slope change at zero rate)";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
+  bool screenedAtEachCorner() const override { return true; }  // a part that wears at one strut
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
   ResidualSignature residualSignature() const override { return {"susp_rate_", "rebound_slope"}; }
   double calcStrutForce(const StrutState& s, ParamValues p) const override;

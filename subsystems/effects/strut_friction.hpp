@@ -15,6 +15,7 @@ class StrutFrictionEffect final : public Effect {
     return "residual is a step in force vs deflection rate at zero rate; strongest on small, slow motions";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
+  bool screenedAtEachCorner() const override { return true; }  // a part that wears at one strut
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
   ResidualSignature residualSignature() const override { return {"susp_rate_", "step"}; }
   double calcStrutForce(const StrutState& s, ParamValues p) const override;

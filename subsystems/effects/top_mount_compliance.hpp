@@ -24,6 +24,7 @@ class TopMountComplianceEffect final : public Effect {
            "residual concentrated in the wheel-hop band (10-20 Hz), little in body modes (1-2 Hz)";
   }
   EffectKind kind() const override { return EffectKind::StrutFilter; }
+  bool screenedAtEachCorner() const override { return true; }  // a part that wears at one strut
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
   bool filterActive(ParamValues p) const override { return p[0] > 0.0; }
   double calcFilterRate(const StrutState& s, double z, ParamValues p) const override;

@@ -44,7 +44,7 @@ TEST(Candidates, ChannelGroupsAreNamedByUnitAndCommonPrefix) {
 
 TEST(Candidates, DefaultCatalogueHoldsEffectsFreedValuesAndSensorModels) {
   const Study s = demo();
-  const auto names = defaultCandidates(s.effectCatalog(), s.assemblies().front(), kHub);
+  const auto names = defaultCandidates(s, s.assemblies().front(), kHub);
   auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
   EXPECT_TRUE(has("bump_stop"));
   EXPECT_TRUE(has("free:wheel.mass_kg"));
@@ -205,14 +205,59 @@ TEST(Candidates, AFreedLawValueIsARunParameterOfTheObjective) {
   for (double v : moved) EXPECT_TRUE(std::isfinite(v));
 }
 
-// A per-corner factor (twin/parameters.hpp) is a candidate when named, not in the default
-// catalogue: freed without a rebuild over its prior [0.2, 2]; at 1 the objective's predictions are
-// the base model's exactly, away from 1 they move.
+// The per-corner and per-axle factors (twin/parameters.hpp) are candidates of the default
+// catalogue: every corner of each value the laws have, and the front axle alone when the study
+// calibrates the whole value (the rear's is the same model). Freed without a rebuild over their
+// prior [0.2, 2]; at 1 the objective's predictions are the base model's exactly, away from 1 they
+// move.
+TEST(Candidates, PerCornerFactorsAreCandidates) {
+  const Study s = demo();
+  const auto a = s.assemblies().front();
+  const auto all = defaultCandidates(s, a, kHub, false);
+  std::vector<std::string> factors, at_corner;
+  for (const auto& n : all)
+    if (n.find('@') != std::string::npos) (n.rfind("free:", 0) == 0 ? factors : at_corner).push_back(n);
+  // demo calibrates all four values as a whole: four corners and the front axle each.
+  ASSERT_EQ(factors.size(), 20u);
+  for (const char* v : {"suspension.stiffness", "suspension.damping", "tire.stiffness", "tire.damping"}) {
+    for (const char* place : {"fl", "fr", "rl", "rr", "front"})
+      EXPECT_NE(std::find(all.begin(), all.end(), std::string("free:") + v + "@" + place), all.end()) << v << "@" << place;
+    EXPECT_EQ(std::find(all.begin(), all.end(), std::string("free:") + v + "@rear"), all.end()) << v;
+  }
+  // The effects of a part that wears at one strut, at each corner.
+  EXPECT_EQ(at_corner, (std::vector<std::string>{"bump_stop@fl", "bump_stop@fr", "bump_stop@rl", "bump_stop@rr", "damper_asymmetry@fl",
+                                                 "damper_asymmetry@fr", "damper_asymmetry@rl", "damper_asymmetry@rr", "strut_friction@fl",
+                                                 "strut_friction@fr", "strut_friction@rl", "strut_friction@rr", "top_mount_compliance@fl",
+                                                 "top_mount_compliance@fr", "top_mount_compliance@rl", "top_mount_compliance@rr"}));
+  auto both = factors;
+  both.insert(both.end(), at_corner.begin(), at_corner.end());
+  EXPECT_EQ(cornerCandidates(s, a), both);
+  const auto stop = candidateSpec("bump_stop@rr", s, a, kHub, "t");
+  EXPECT_EQ(stop.kind, "effect");
+  EXPECT_EQ(stop.calibrated_names.front().rfind("bump_stop@rr.", 0), 0u);
+  EXPECT_EQ(stop.signature.rfind("at the rear-right corner only: ", 0), 0u) << stop.signature;
+  // The hub input has no tire compliance: no tire factor.
+  AssemblySpec hub = a;
+  for (auto& [sub, opt] : hub.options)
+    if (sub == "tire") opt = "hub";
+  for (const auto& n : cornerCandidates(s, hub)) EXPECT_EQ(n.find("free:tire."), std::string::npos) << n;
+  EXPECT_EQ(factorPlaceInWords("suspension.damping@rr"), "the rear-right damper");
+  EXPECT_EQ(factorPlaceInWords("suspension.damping@rear"), "both rear dampers");
+  EXPECT_EQ(factorPlaceInWords("tire.stiffness@fl"), "the front-left tire");
+  const auto front = candidateSpec("free:suspension.stiffness@front", s, a, kHub, "t");
+  EXPECT_TRUE(front.relative);
+  EXPECT_EQ(front.finding({0.7}, 0.65, 0.75),
+            "the front springs give about 70 % of the stiffness of the rear ones (95 %: 65 % to 75 %) (which axle changed, these data "
+            "cannot tell while the whole stiffness is calibrated)");
+  // Above 1: said of the other axle, the one with the lower value.
+  EXPECT_EQ(front.finding({2.0}, 1.6, 2.5),
+            "the rear springs give about 50 % of the stiffness of the front ones (95 %: 40 % to 62 %) (which axle changed, these data "
+            "cannot tell while the whole stiffness is calibrated)");
+}
+
 TEST(Candidates, APerCornerFactorIsACandidateWhenNamed) {
   const Study s = demo();
   const auto a = s.assemblies().front();
-  const auto all = defaultCandidates(s.effectCatalog(), a, kHub, false);
-  EXPECT_TRUE(std::none_of(all.begin(), all.end(), [](const std::string& n) { return n.find('@') != std::string::npos; }));
   const auto f = candidateSpec("free:suspension.damping@rr", s, a, kHub, "t");
   EXPECT_EQ(f.kind, "parameter");
   EXPECT_FALSE(f.law_value);
@@ -220,8 +265,11 @@ TEST(Candidates, APerCornerFactorIsACandidateWhenNamed) {
   EXPECT_EQ(f.parameters[0].default_value, 1.0);
   EXPECT_EQ(f.parameters[0].prior_lower, 0.2);
   EXPECT_EQ(f.parameters[0].prior_upper, 2.0);
-  EXPECT_NE(f.signature.find("the rr corner's suspension.damping differs from the other corners'"), std::string::npos) << f.signature;
-  EXPECT_EQ(f.finding({0.45}), "the suspension.damping at the rr corner is about 0.45 times the others'");
+  EXPECT_TRUE(f.relative);  // demo calibrates the whole damping
+  EXPECT_NE(f.signature.find("the rear-right damper's damping differs from the other corners'"), std::string::npos) << f.signature;
+  EXPECT_EQ(f.finding({0.45}), "the rear-right damper gives about 45 % of the damping of the other three");
+  EXPECT_EQ(f.finding({0.5512}, 0.5107, 0.5822),
+            "the rear-right damper gives about 55 % of the damping of the other three (95 %: 51 % to 58 %)");
   for (const char* bad : {"free:suspension.damping@xx", "free:chassis.mass_kg@fl"}) EXPECT_THROW(candidateSpec(bad, s, a, kHub, "t"), InputError) << bad;
 
   LabData data;

@@ -156,3 +156,28 @@ TEST(Changes, AMalformedSummaryNamesTheFieldAndALevelOutsideItsRangeIsRefused) {
   }
   EXPECT_THROW(diag::compareCalibrations(b, b, 0.7), InputError);
 }
+
+// An optimum outside its own interval (the profile search met a better fit in a flat valley): the
+// interval's centre is compared, which the interval was built around, and the sentence says so.
+TEST(Changes, AnOptimumOutsideItsIntervalIsReplacedByTheIntervalsCentre) {
+  calib::CalibrationFolder a, b;
+  a.dir = "a";
+  b.dir = "b";
+  a.assembly = b.assembly = "M1";
+  for (auto* f : {&a, &b}) {
+    f->summary["parameter_order"] = {"suspension.stiffness"};
+    f->summary["units"] = {"N/m"};
+    f->summary["bounds"] = {{10000, 1e9}};
+  }
+  a.summary["parameters"]["suspension.stiffness"] = {{"optimum", 30000.0}, {"ci95", {29600.0, 30400.0}}};
+  b.summary["parameters"]["suspension.stiffness"] = {{"optimum", 28500.0}, {"ci95", {29600.0, 30400.0}}};  // optimum outside
+  const auto r = dtwin::diag::compareCalibrations(a, b);
+  ASSERT_EQ(r.changes.size(), 1u);
+  const auto& c = r.changes[0];
+  EXPECT_FALSE(c.first.centred);
+  EXPECT_TRUE(c.second.centred);
+  EXPECT_DOUBLE_EQ(c.second.estimate, std::sqrt(29600.0 * 30400.0));
+  EXPECT_FALSE(c.significant);  // the optimum alone would read 0.95 x, z = -5.2
+  EXPECT_NEAR(c.change, std::sqrt(29600.0 * 30400.0) / 30000.0, 1e-12);
+  EXPECT_NE(c.sentence.find("the second calibration's optimum lies outside its interval"), std::string::npos) << c.sentence;
+}

@@ -676,8 +676,11 @@ ParameterTable Study::parameterTable(const std::vector<ParameterSetting>& overri
   for (std::size_t i = 0; i < calibrated.size(); ++i)
     if (calibrated[i].truth && t.contains(calibrated[i].name))
       t.set(calibrated[i].name, *calibrated[i].truth, path + " [calibrated] truth", path + ": calibrated[" + std::to_string(i) + "].truth");
-  for (const auto& e : effects)
+  for (const auto& e : effects) {
+    // An effect installed at one corner ("bump_stop@rr") has its own parameters, declared here.
+    if (e.name.find('@') != std::string::npos) declareEffectParameters(t, *catalog->make(e.name, path + ": effects"), e.name, path + ": effects");
     for (const auto& v : e.values) t.set(v.name, v.value, v.source, v.where);
+  }
   for (const auto& o : overrides) t.set(o.name, o.value, o.source, o.where);
   return t;
 }

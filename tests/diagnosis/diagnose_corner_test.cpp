@@ -163,6 +163,8 @@ TEST(Corners, AWornDamperAndABumpStopAreBothNamed) {
   const EffectParameter* gap = parameterOf(*named["bump_stop"], "bump_stop.gap_m");
   ASSERT_NE(gap, nullptr);
   EXPECT_NEAR(gap->optimum / 0.02, 1.0, 0.2) << r.text();
+  std::printf("two causes, first %s: suspension.damping@rr %.4f (truth 0.55), bump_stop.gap_m %.4f m (truth 0.02)\n", r.causes[0].name.c_str(),
+              f->optimum, gap->optimum);
   EXPECT_NE(r.summary.find("the rear-right damper"), std::string::npos) << r.summary;
 }
 
@@ -186,5 +188,6 @@ TEST(Corners, ABumpStopAtOneStrutIsNamedWithItsCorner) {
   const EffectParameter* gap = parameterOf(r.causes.front(), "bump_stop@rr.gap_m");
   ASSERT_NE(gap, nullptr) << r.text();
   EXPECT_NEAR(gap->mean / 0.02, 1.0, 0.2) << r.text();
+  std::printf("bump_stop@rr.gap_m: %.4f, 95 %% [%.4f, %.4f], truth 0.02\n", gap->mean, gap->q025, gap->q975);
   EXPECT_NE(r.summary.find("Missing effect at one corner: a bump stop at the rear-right corner"), std::string::npos) << r.summary;
 }

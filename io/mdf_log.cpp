@@ -65,6 +65,7 @@ std::string mdfReason(const std::string& fallback) {
   std::string s = mdf_last_error.empty() ? fallback : mdf_last_error;
   mdf_last_error.clear();
   std::replace(s.begin(), s.end(), '\n', ' ');
+  std::replace(s.begin(), s.end(), '\r', ' ');
   return s;
 }
 

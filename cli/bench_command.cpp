@@ -152,7 +152,7 @@ CommandHandle addBenchCommand(CLI::App& root, const CommandContext& /*context*/)
   b->add_option("--runs", bench_runs, "Timed runs per case (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
   b->add_option("--assembly", bench_ids, "Only these assemblies (comma separated or repeated)")->delimiter(',');
   b->add_flag("--markdown", bench_md, "Print a markdown table (for docs/performance.md)");
-  b->add_option("--import", cfg->import_rows, "Instead: time `twin import` on a synthetic 100 Hz log of this many rows (360000: one hour)")
+  b->add_option("--import", cfg->import_rows, "Instead: time `twin import` on a synthetic 100 Hz log of this many rows (360000: one hour), as CSV and as MF4")
       ->check(CLI::Range(2L, 100000000L));
   b->add_option("--user-effect", cfg->user_effect, "Instead: time a user-defined strut effect against the built-in one of the same form, over this many evaluations")
       ->check(CLI::Range(1000L, 1000000000L));
@@ -178,6 +178,10 @@ CommandHandle addBenchCommand(CLI::App& root, const CommandContext& /*context*/)
               const BenchImport r = benchImport(cfg->study, cfg->import_rows, cfg->runs);
               std::printf("twin import: %ld rows (%.1f MB), %d runs: median %.2f s (%.2f..%.2f s), %.0f rows/s\n", r.rows, r.bytes / 1e6,
                           cfg->runs, r.median_s, r.min_s, r.max_s, static_cast<double>(r.rows) / r.median_s);
+              std::printf("twin import, MF4: %ld rows (%.1f MB), %d runs: median %.2f s (%.2f..%.2f s), %.0f rows/s\n", r.rows, r.mf4_bytes / 1e6,
+                          cfg->runs, r.mf4_median_s, r.mf4_min_s, r.mf4_max_s, static_cast<double>(r.rows) / r.mf4_median_s);
+              std::printf("twin import, MF4 with DZ blocks: %ld rows (%.1f MB), %d runs: median %.2f s (%.2f..%.2f s), %.0f rows/s\n", r.rows,
+                          r.mf4z_bytes / 1e6, cfg->runs, r.mf4z_median_s, r.mf4z_min_s, r.mf4z_max_s, static_cast<double>(r.rows) / r.mf4z_median_s);
               return 0;
             }
             if (cfg->user_effect > 0) {

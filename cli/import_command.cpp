@@ -1,4 +1,4 @@
-// `twin import`: a logger's wide CSV into the twin's files and a study holding the drive
+// `twin import`: a logger's wide CSV or MF4 log into the twin's files and a study holding the drive
 // (io/log_import.hpp, docs/measurements.md).
 #include <chrono>
 #include <cstdio>
@@ -81,7 +81,7 @@ int runImport(ImportConfig cfg, const std::string& command) {
     deprecationNote("twin import FILE", "twin import --log FILE", cfg.processes);
     cfg.log = cfg.positional;
   }
-  if (cfg.log.empty()) throw InputError("--log", "is required (the logger's CSV file)");
+  if (cfg.log.empty()) throw InputError("--log", "is required (the logger's CSV or MF4 file)");
   const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() || !cfg.road_left.empty() ||
                      !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
   if (!cfg.map.empty() && flags) throw InputError("--map", "give the mapping either in the file or as flags (--time, --speed, --road, --channel), not both");
@@ -94,7 +94,7 @@ int runImport(ImportConfig cfg, const std::string& command) {
   if (!ec && bytes > 4000000000ULL)
     throw InputError(cfg.log, "is " + formatNumber(static_cast<double>(bytes) / 1e9, 3) +
                                   " GB; twin import holds a log in memory, at most 4 GB: split it into drives");
-  const std::string text = readTextFile(cfg.log, " (a logger's CSV)");
+  const std::string text = readTextFile(cfg.log, " (a logger's CSV or MF4 file)");
   ProgressBar bar("import " + cfg.log, progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
   ImportResult r = importLog(text, cfg.log, mapping, cfg.study, cfg.scenario,
                              [&bar](const std::string&, std::size_t done, std::size_t total) { bar.update(done, total); });
@@ -126,7 +126,7 @@ CommandHandle addImportCommand(CLI::App& root, const CommandContext& context) {
   auto cfg = std::make_shared<ImportConfig>();
   cfg->processes = context.processes;
   auto* c = addSubcommand(root, "import");
-  c->add_option("--log", cfg->log, "The logger's CSV file");
+  c->add_option("--log", cfg->log, "The logger's file: a CSV, or an MF4 log (.mf4, .mdf; docs/measurements.md)");
   c->add_option("log_file", cfg->positional, "Deprecated: give --log FILE");
   c->add_option("--out", cfg->out, "New output folder: measurements.csv + .json, speed.csv, road.csv (when a road column is mapped), study.toml")->required();
   c->add_option("--map", cfg->map, "Mapping file (TOML, [import] table); or give the mapping as the flags below");

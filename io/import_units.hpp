@@ -1,11 +1,17 @@
 // Private to io/ (not installed): the units a logger's columns may give, each with its SI unit and
-// factor, shared by the column map reader (import_mapping.cpp) and the import (log_import.cpp).
+// factor, shared by the column map reader (import_mapping.cpp), the import (log_import.cpp) and the
+// MF4 reader (mdf_import.cpp); the resolved units and the rows read, shared by the import and the
+// MF4 reader.
 #pragma once
 
 #include <string>
 #include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "common/statistics.hpp"
+#include "io/log_import.hpp"
 
 namespace dtwin {
 
@@ -29,6 +35,31 @@ const Unit kUnits[] = {
     {"rad/s^2", "rad/s^2", 1.0}, {"deg/s^2", "rad/s^2", kPi / 180.0},
     {"rad/s", "rad/s", 1.0},   {"deg/s", "rad/s", kPi / 180.0},
 };
+
+/// Every mapped column's factor to SI, resolved before a row is read (a wrong unit is named
+/// before a million rows are read).
+struct ImportUnits {
+  double time = 1.0, speed = 1.0;
+  std::vector<const ImportColumn*> road_cols;  ///< none, one (both tracks) or left and right
+  bool road_velocity = false;                  ///< the road columns are velocities, not heights
+  std::vector<double> road, channel;
+};
+
+/// The log's rows in SI units: times (as logged), speeds, road columns, and the channels (NaN: a
+/// dropout).
+struct LogRows {
+  std::vector<double> t, v;
+  std::vector<std::vector<double>> road, values;
+  std::vector<std::vector<double>> mask;  ///< per mask: |value| in SI, NaN for an empty cell
+  long dropped_cells = 0;
+};
+
+/// The rows of an MF4 log (mdf_import.cpp): the mapped channels, each found by name (or
+/// GROUP/NAME), its unit checked against the mapping's, on the time base of the time channel's
+/// group (others interpolated linearly onto it), with the CSV's checks. `provenance`: the groups
+/// and channels read, the resampling and the rows it dropped.
+LogRows readMdfRows(const std::string& bytes, const std::string& name, const ImportMapping& m, const ImportUnits& u,
+                    nlohmann::json& provenance);
 
 /// A mask's unit: its factor to SI and the SI unit (import_mapping.cpp).
 std::pair<double, std::string> anyUnit(const std::string& unit, const std::string& where);

@@ -2,6 +2,7 @@
 // output grid, the imported study and data files with their sidecar (writeImport); clock times.
 #include "io/log_import.hpp"
 #include "io/import_units.hpp"
+#include "io/mdf_log.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -211,15 +212,6 @@ std::vector<Channel> checkTarget(const Study& base, const ImportMapping& m, cons
   return measurableChannels(sensors);
 }
 
-/// Every mapped column's factor to SI, resolved before a row is read (a wrong unit is named
-/// before a million rows are read).
-struct ImportUnits {
-  double time = 1.0, speed = 1.0;
-  std::vector<const ImportColumn*> road_cols;  ///< none, one (both tracks) or left and right
-  bool road_velocity = false;                  ///< the road columns are velocities, not heights
-  std::vector<double> road, channel;
-};
-
 ImportUnits resolveUnits(const ImportMapping& m, const std::vector<Channel>& known) {
   ImportUnits u;
   u.time = unitFactor(m.time.unit, "s", m.time.where);
@@ -270,15 +262,6 @@ class ClockCounter {
  private:
   long day0_ = 0, day_ = 0;
   double previous_ = 0.0;
-};
-
-/// The log's rows in SI units: times (as logged), speeds, road columns, and the channels (NaN: a
-/// dropout).
-struct LogRows {
-  std::vector<double> t, v;
-  std::vector<std::vector<double>> road, values;
-  std::vector<std::vector<double>> mask;  ///< per mask: |value| in SI, NaN for an empty cell
-  long dropped_cells = 0;
 };
 
 /// Reads the log row by row with every check of importLog (io/log_import.hpp).
@@ -580,7 +563,10 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   ImportMapping added = m;  // the study gains the mapping's new sensors only
   added.sensors = newSensors(base, m, base_study);
   const ImportUnits units = resolveUnits(m, known);
-  LogRows rows = LogRowReader(log_text, log_name, m, units).read(progress);
+  // An MF4 log (by its extension or its identification) or a CSV: the same rows, the same checks.
+  const bool mdf = isMdfLog(log_name, log_text);
+  nlohmann::json mdf_read;
+  LogRows rows = mdf ? readMdfRows(log_text, log_name, m, units, mdf_read) : LogRowReader(log_text, log_name, m, units).read(progress);
   auto& t = rows.t;
   if (t.size() < 2) throw InputError(log_name, "holds " + std::to_string(t.size()) + " data rows; a drive needs at least 2");
   res.rows = static_cast<long>(t.size());
@@ -648,6 +634,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   writeInputs(res, units, tr, vr, road);
   res.study_toml = importedStudyText(log_name, added, units, base_study, scenario, res.duration_s, res.start_m);
   res.sidecar = importSidecar(res, log_text, log_name, m, units, base_study);
+  if (mdf) res.sidecar["source"]["mdf"] = mdf_read;  // the groups and channels read, the resampling
   return res;
 }
 

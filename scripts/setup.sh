@@ -8,6 +8,7 @@ PKGS=(build-essential cmake pkg-config git
       googletest libgtest-dev libgmock-dev
       libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
       libmuparser-dev         # user-defined effects: force expressions in the study file
+      zlib1g-dev libexpat1-dev   # mdflib (third_party/mdflib): MF4 logs for `twin import`
       gnuplot-nox chromium    # gnuplot: `twin report`; chromium: its rendering test
       libopenmpi-dev openmpi-bin)   # MPI: `mpirun -n K twin ...` (docs/cluster.md)
 # `setup.sh demo`: only what the demo needs (no test framework, no browser for the report test, no

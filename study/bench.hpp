@@ -26,11 +26,16 @@ BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const Scenario
 
 /// `twin import` on a synthetic logger CSV of `rows` rows at 100 Hz (time with clock jitter,
 /// speed in km/h, left and right road heights in mm, two accelerometers in g, two unused
-/// columns), read, converted and written into a fresh temporary folder `runs` times.
+/// columns), read, converted and written into a fresh temporary folder `runs` times; then the same
+/// log written as MF4 (plain and compressed) into a temporary folder and imported the same way.
 struct BenchImport {
   long rows = 0;
   double bytes = 0;             ///< size of the log
   double median_s = 0, min_s = 0, max_s = 0;  ///< importLog + writeImport, wall
+  /// The same log as an MF4 file (mdflib's writer, one channel group, 64-bit floats; the counter
+  /// and the note left out), plain and with its data in DZ blocks: its size and the same timing.
+  double mf4_bytes = 0, mf4_median_s = 0, mf4_min_s = 0, mf4_max_s = 0;
+  double mf4z_bytes = 0, mf4z_median_s = 0, mf4z_min_s = 0, mf4z_max_s = 0;
 };
 BenchImport benchImport(const std::string& study_path, long rows, int runs);
 

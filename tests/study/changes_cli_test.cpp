@@ -1,7 +1,8 @@
 // `twin changes` end to end on the twin: one car measured twice (hub forces over a bump from M1,
 // independent noise), the second time with dampers at 55 % of their value. Each drive calibrated as
 // `twin calibrate` does; the change list names the damper first, significant, its ratio's interval
-// holding 0.55, and nothing else significant. Bad input exits 2 with one line.
+// holding 0.55, and nothing else significant; the same with one worn damper, named with its
+// corner. Bad input exits 2 with one line.
 #include <gtest/gtest.h>
 
 #include "test_util.hpp"
@@ -64,6 +65,48 @@ TEST(ChangesCli, AWornDamperIsNamedFirstAndNothingElseChanged) {
   EXPECT_NE(page.find("suspension.damping"), std::string::npos);
   EXPECT_NE(page.find("<b>1 of 4</b>"), std::string::npos);
   if (!HasFailure()) fs::remove_all(kTmp());
+}
+
+// One worn damper: the second drive's rear-right damper at 55 % of the others'. Both drives
+// calibrated with that corner's factor too (`twin calibrate --free`); the change list names the
+// factor first, significant, its ratio's interval holding 0.55, and nothing else.
+TEST(ChangesCli, OneWornDamperIsNamedFirstWithItsCorner) {
+  // Its own folder: the other cases of this file (separate processes under ctest -j) clear kTmp().
+  const fs::path dir = fs::temp_directory_path() / "dtwin_changes_corner";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string text = dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "data/studies/demo.toml");
+  text = std::regex_replace(text, std::regex(R"(vehicle = "\.\./vehicle/)"), std::string("vehicle = \"") + DTWIN_SOURCE_DIR + "/data/vehicle/");
+  const fs::path s = dir / "corner.toml";
+  std::ofstream(s) << text;
+  const auto twin = [&](const std::string& args) { return dtwin_test::runTwin(args, dir); };
+  const std::string d = dir.string();
+  const std::string lab = " --scenario diag_bump --times all --rate 200 --repetitions 3 "
+                          "--channels hub_force_fl_N,hub_force_fr_N,hub_force_rl_N,hub_force_rr_N";
+  ASSERT_EQ(twin("generate lab --quiet --study " + s.string() + lab + " --seed 11 --out " + d + "/lab1.csv").code, 0);
+  ASSERT_EQ(twin("generate lab --quiet --study " + s.string() + lab + " --seed 12 --hidden-value suspension.damping@rr=0.55 --out " + d +
+                 "/lab2.csv")
+                .code,
+            0);
+  for (const char* k : {"1", "2"}) {
+    const auto r = twin("calibrate --quiet --study " + s.string() + " --assembly M1 --free suspension.damping@rr --data " + d + "/lab" + k +
+                        ".csv --out " + d + "/cal" + k);
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  const auto r = twin("changes --before " + d + "/cal1/M1 --after " + d + "/cal2/M1 --out " + d + "/changes");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 of 5 values changed significantly"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(dtwin_test::slurp(dir / "changes/changes.json"));
+  ASSERT_EQ(j["changes"].size(), 5u);
+  EXPECT_EQ(j["changes"][0]["name"], "suspension.damping@rr") << r.out;
+  EXPECT_EQ(j["changes"][0]["significant"], true) << r.out;
+  EXPECT_LE(j["changes"][0]["ci95"][0].get<double>(), 0.55) << r.out;
+  EXPECT_GE(j["changes"][0]["ci95"][1].get<double>(), 0.55) << r.out;
+  for (std::size_t i = 1; i < j["changes"].size(); ++i) EXPECT_EQ(j["changes"][i]["significant"], false) << j["changes"][i]["sentence"];
+  // The calibration records the freed value in its setup.
+  const auto summary = nlohmann::json::parse(dtwin_test::slurp(dir / "cal1/M1/summary.json"));
+  EXPECT_NE(summary.dump().find("suspension.damping@rr"), std::string::npos);
+  if (!HasFailure()) fs::remove_all(dir);
 }
 
 TEST(ChangesCli, AMissingFolderIsOneLineAndExitCodeTwo) {

@@ -71,7 +71,7 @@ std::string factorSignature(const CornerFactor& f, bool relative) {
                   : "both " + cornerInWords(f.place) + " " + part + "s' " + q + " differs from the vehicle file's (" + name + " is not 1)";
 }
 
-/// A ratio in percent: 0.5512 -> "55 %" (three significant digits below 10 %: "4.2 %").
+/// A ratio in percent: 0.5512 -> "55 %" (two significant digits below 10 %: "4.2 %").
 std::string percent(double v) { return formatPrintf(std::abs(v) < 0.1 ? "%.2g %%" : "%.0f %%", 100 * v); }
 
 /// "wheel.mass_kg" -> "wheel mass"; "chassis.roll_inertia_kgm2" -> "chassis roll inertia".

@@ -347,18 +347,20 @@ TEST(Diagnose16, AHiddenUserDefinedEffectIsNamed) {
 }
 
 TEST(Diagnose16, AHiddenChassisElementWrittenAsAnExpressionIsNamed) {
-  // A skyhook damper, a force on the chassis against its absolute vertical velocity (what an
-  // active suspension adds): F = -cs w, a user-defined `chassis` element that no strut effect is.
+  // A skyhook damper at the body's mass centre, a force on the chassis against its absolute
+  // vertical velocity (what an active suspension adds): F = -cs w, a user-defined `chassis` element
+  // that no strut effect is (the catalogue's own `skyhook` acts at each strut's top; the user's
+  // effect takes another name, as a study must give it).
   static const fs::path p = dtwin_test::writeDemoStudy(
-      fs::temp_directory_path() / ("diag16_skyhook_" + std::to_string(::getpid()) + ".toml"),
-      "lab_repetitions = 3\noptimizer_starts = 2\n\n[user_effects.skyhook]\nelement = \"chassis\"\n"
+      fs::temp_directory_path() / ("diag16_body_damper_" + std::to_string(::getpid()) + ".toml"),
+      "lab_repetitions = 3\noptimizer_starts = 2\n\n[user_effects.body_damper]\nelement = \"chassis\"\n"
       "force = \"-cs * w\"\n"
       "parameters = { cs = { value = 0, unit = \"N*s/m\", lower = 0, upper = 8000 } }\n");
   const Study s = loadStudy(p.string());
   auto o = smallOptions(s);
-  o.apply = {"skyhook"};
-  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "skyhook:cs=2500", 1), {}, o, freshDir("diag16_skyhook"));
-  expectNamed(r, "skyhook", "effect", 2500.0, 0.2);
+  o.apply = {"body_damper"};
+  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "body_damper:cs=2500", 1), {}, o, freshDir("diag16_body_damper"));
+  expectNamed(r, "body_damper", "effect", 2500.0, 0.2);
 }
 
 TEST(Diagnose16, ATermOnlyTheRegressionFindsIsProposedAppliedAndCutsTheError) {

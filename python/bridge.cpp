@@ -154,7 +154,7 @@ void Callbacks::raiseIfCallbackRaised() {
 
 // ------------------------------------------------------------------ errors
 namespace {
-[[noreturn]] void raise(const py::object& type, const std::string& message) {
+[[noreturn]] void raiseAs(const py::object& type, const std::string& message) {
   PyErr_SetString(type.ptr(), message.c_str());
   throw py::error_already_set();
 }
@@ -177,13 +177,13 @@ void runReleased(const std::function<void()>& work, const Keywords& keywords, Ca
   try {
     std::rethrow_exception(failure);
   } catch (const InputError& e) {
-    raise(exceptions().input_error, oneLine(keywords.message(e.where(), e.rule())));
+    raiseAs(exceptions().input_error, oneLine(keywords.message(e.where(), e.rule())));
   } catch (const StorageError& e) {
-    raise(exceptions().storage_error, oneLine(std::string(e.what()) + "; free space and call again"));
+    raiseAs(exceptions().storage_error, oneLine(std::string(e.what()) + "; free space and call again"));
   } catch (py::error_already_set&) {
     throw;
   } catch (const std::exception& e) {
-    raise(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), oneLine(std::string("internal error: ") + e.what()));
+    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), oneLine(std::string("internal error: ") + e.what()));
   }
 }
 

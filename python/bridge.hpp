@@ -46,7 +46,7 @@ struct CallbackRaised : std::runtime_error {
 /// The progress callback and the printed lines of one long call. Built with the GIL held; the
 /// functions it hands out may be called from any thread while the GIL is released: each takes
 /// the GIL for its Python work. A Python exception in a callback (KeyboardInterrupt included,
-/// checked on the main thread at each progress call) stops the call and is raised when it returns.
+/// seen by the progress calls made on the main thread) stops the call and is raised when it returns.
 class Callbacks {
  public:
   /// `progress`: None (lines on sys.stderr unless `quiet`) or a callable (stage, done, total).

@@ -225,18 +225,23 @@ py::object toPython(const nlohmann::json& j) {
   return py::none();
 }
 
+std::string pathText(const py::handle& value, const std::string& keyword) {
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::hasattr(value, "__fspath__")) {
+    const py::object p = py::module_::import("os").attr("fspath")(value);
+    if (py::isinstance<py::str>(p)) return p.cast<std::string>();
+  }
+  throw py::type_error(keyword + ": expects a str or a path, got " + py::str(py::type::handle_of(value)).cast<std::string>());
+}
+
 std::vector<std::string> stringList(const py::object& value, const std::string& keyword) {
   std::vector<std::string> out;
   if (value.is_none()) return out;
-  if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    for (const auto& v : value) {
-      if (!py::isinstance<py::str>(v)) throw py::type_error(keyword + ": expects a str or a list of str");
-      out.push_back(v.cast<std::string>());
-    }
+    for (const auto& v : value) out.push_back(pathText(v, keyword));
     return out;
   }
-  throw py::type_error(keyword + ": expects a str or a list of str");
+  return {pathText(value, keyword)};
 }
 
 std::string literal(const py::handle& value) { return py::repr(value).cast<std::string>(); }

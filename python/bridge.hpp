@@ -73,7 +73,9 @@ void runReleased(const std::function<void()>& work, const Keywords& keywords, Ca
 /// not finite becomes None, as in the files the library writes.
 py::object toPython(const nlohmann::json& j);
 
-/// A Python str, or a list/tuple of str, as strings (None: empty).
+/// A path given as a str or an os.PathLike (pathlib.Path); TypeError naming `keyword` otherwise.
+std::string pathText(const py::handle& value, const std::string& keyword);
+/// A str or path, or a list/tuple of them, as strings (None: empty).
 std::vector<std::string> stringList(const py::object& value, const std::string& keyword);
 /// `value` written as a Python literal, for the command recorded in outputs.
 std::string literal(const py::handle& value);

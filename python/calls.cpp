@@ -29,7 +29,10 @@ class CallText {
  public:
   explicit CallText(std::string head) : text_(std::move(head)) {}
   CallText& add(const std::string& keyword, const py::handle& value) {
-    if (!value.is_none()) text_ += std::string(first_ ? "" : ", ") + keyword + "=" + literal(value);
+    if (value.is_none()) return *this;
+    if (!py::isinstance<py::str>(value) && py::hasattr(value, "__fspath__"))
+      return add(keyword, pathText(value, keyword));  // a pathlib.Path as its text
+    text_ += std::string(first_ ? "" : ", ") + keyword + "=" + literal(value);
     first_ = false;
     return *this;
   }
@@ -158,7 +161,7 @@ std::string withoutFinalNewline(std::string s) {
 }  // namespace
 
 PyStudy loadStudyFile(const py::object& path) {
-  const std::string p = path.is_none() ? defaultStudyPath() : py::str(path).cast<std::string>();
+  const std::string p = path.is_none() ? defaultStudyPath() : pathText(path, "path");
   PyStudy s;
   runReleased([&] { s.study = std::make_shared<const Study>(loadStudy(p)); }, Keywords{{"path"}, {}});
   return s;
@@ -174,7 +177,7 @@ py::object simulate(const PyStudy& s, const std::string& assembly, const std::st
   SimulateRequest req;
   req.assembly = assembly;
   req.scenario = scenario;
-  req.out = out.is_none() ? std::string() : py::str(out).cast<std::string>();
+  req.out = out.is_none() ? std::string() : pathText(out, "out");
   req.channels = commaList(channels, "channels");
   std::optional<std::pair<double, double>> win;
   if (!window.is_none()) {
@@ -225,9 +228,10 @@ py::object simulate(const PyStudy& s, const std::string& assembly, const std::st
 }
 
 // ------------------------------------------------------------------ calibrate
-py::object calibrate(const PyStudy& s, const std::string& data, const py::object& assembly, const std::string& out, int threads,
+py::object calibrate(const PyStudy& s, const py::object& data_arg, const py::object& assembly, const py::object& out_arg, int threads,
                      const CalibrationKeywords& sizes, const py::object& seed, bool force, bool quiet, const py::object& progress) {
   const Study& study = *s.study;
+  const std::string data = pathText(data_arg, "data"), out = pathText(out_arg, "out");
   const CalibrationOverrides overrides = overridesOf(sizes);
   std::vector<std::string> assemblies;
   for (auto& id : commaList(assembly, "assembly"))
@@ -272,14 +276,15 @@ py::object calibrate(const PyStudy& s, const std::string& data, const py::object
 }
 
 // ------------------------------------------------------------------ compare
-py::object compare(const PyStudy& s, const std::string& calibration, const py::object& data, const py::object& baseline, int draws,
+py::object compare(const PyStudy& s, const py::object& calibration_arg, const py::object& data, const py::object& baseline, int draws,
                    int threads, const py::object& out, bool force, bool quiet) {
   const Study& study = *s.study;
+  const std::string calibration = pathText(calibration_arg, "calibration");
   CompareRequest req;
   req.calibration = calibration;
   req.data = stringList(data, "data");
   req.baseline = stringList(baseline, "baseline");
-  req.out = out.is_none() ? std::string() : py::str(out).cast<std::string>();
+  req.out = out.is_none() ? std::string() : pathText(out, "out");
   req.draws = draws;
   req.threads = threads;
   req.processes = nullptr;
@@ -315,7 +320,7 @@ py::object diagnose(const PyStudy& s, const DiagnoseKeywords& k, const Calibrati
   req.assembly = k.assembly;
   req.data = stringList(k.data, "data");
   req.holdout = stringList(k.holdout, "holdout");
-  req.out = k.out.is_none() ? std::string() : py::str(k.out).cast<std::string>();
+  req.out = k.out.is_none() ? std::string() : pathText(k.out, "out");
   req.force = k.force;
   diag::DiagnoseOptions& o = req.options;
   o.candidates = k.candidates;
@@ -374,12 +379,12 @@ py::object diagnose(const PyStudy& s, const DiagnoseKeywords& k, const Calibrati
 // ------------------------------------------------------------------ import
 py::object importLog(const ImportKeywords& k, const py::object& progress) {
   ImportRequest req;
-  req.log = k.log;
-  req.out = k.out;
+  req.log = pathText(k.log, "log");
+  req.out = pathText(k.out, "out");
   req.scenario = k.scenario;
-  req.study = k.study.is_none() ? defaultStudyPath() : py::str(k.study).cast<std::string>();
+  req.study = k.study.is_none() ? defaultStudyPath() : pathText(k.study, "study");
   const auto text = [](const py::object& v) { return v.is_none() ? std::string() : py::str(v).cast<std::string>(); };
-  req.map = text(k.map);
+  req.map = k.map.is_none() ? std::string() : pathText(k.map, "map");
   req.time = text(k.time);
   req.speed = text(k.speed);
   req.road = text(k.road);

@@ -28,11 +28,11 @@ struct CalibrationKeywords {
   py::object lhs_points, iterations, burn_in, starts, region, design, interval, steps, max_rounds, ridge_steps;
 };
 
-py::object calibrate(const PyStudy& s, const std::string& data, const py::object& assembly, const std::string& out,
+py::object calibrate(const PyStudy& s, const py::object& data, const py::object& assembly, const py::object& out,
                      int threads, const CalibrationKeywords& sizes, const py::object& seed, bool force, bool quiet,
                      const py::object& progress);
 
-py::object compare(const PyStudy& s, const std::string& calibration, const py::object& data, const py::object& baseline,
+py::object compare(const PyStudy& s, const py::object& calibration, const py::object& data, const py::object& baseline,
                    int draws, int threads, const py::object& out, bool force, bool quiet);
 
 struct DiagnoseKeywords {
@@ -47,8 +47,8 @@ py::object diagnose(const PyStudy& s, const DiagnoseKeywords& k, const Calibrati
 
 /// dtwin.import_log(...): the keyword arguments of `twin import`.
 struct ImportKeywords {
-  std::string log, out, scenario = "drive";
-  py::object map, study, time, speed, road, road_left, road_right, channel, highpass_hz, speed_lowpass_hz, separator, window, run_in;
+  std::string scenario = "drive";
+  py::object log, out, map, study, time, speed, road, road_left, road_right, channel, highpass_hz, speed_lowpass_hz, separator, window, run_in;
   bool quiet = false;
 };
 py::object importLog(const ImportKeywords& k, const py::object& progress);

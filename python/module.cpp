@@ -78,7 +78,7 @@ set: {"tire.stiffness": 2.0e5} or ["NAME=VALUE"]; effects: ["bump_stop:stiffness
 the CSV and its sidecar. Raises dtwin.SimulationError when the run fails.)")
       .def(
           "calibrate",
-          [](const PyStudy& s, const std::string& data, const py::object& assembly, const std::string& out, int threads, py::object lhs_points,
+          [](const PyStudy& s, const py::object& data, const py::object& assembly, const py::object& out, int threads, py::object lhs_points,
              py::object iterations, py::object burn_in, py::object starts, py::object region, py::object design, py::object interval,
              py::object steps, py::object max_rounds, py::object ridge_steps, const py::object& seed, bool force, bool quiet,
              const py::object& progress) {
@@ -137,7 +137,7 @@ calibrations/, compare.html and report.html (needs gnuplot).)");
 
   m.def(
       "import_log",
-      [](const std::string& log, const py::object& map, const std::string& out, const py::object& study, const std::string& scenario,
+      [](const py::object& log, const py::object& map, const py::object& out, const py::object& study, const std::string& scenario,
          const py::object& time, const py::object& speed, const py::object& road, const py::object& road_left,
          const py::object& road_right, const py::object& channel, const py::object& highpass_hz, const py::object& speed_lowpass_hz,
          const py::object& separator, const py::object& window, const py::object& run_in, bool quiet, const py::object& progress) {

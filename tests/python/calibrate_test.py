@@ -10,15 +10,22 @@ from dtwin_testing import SOURCE_DIR, scratch, twin
 
 SIZES = {"lhs_points": 20, "iterations": 600, "burn_in": 200, "starts": 1, "max_rounds": 0, "ridge_steps": 0}
 # What differs between two runs of the same calibration: when and how it was called, and how long it took.
-RUN_KEYS = {"program", "command", "created_utc", "stage_wall_s", "median_run_wall_s", "wall_s"}
+RUN_KEYS = {"program", "command", "created_utc", "stages_wall_s", "median_run_wall_s", "wall_s"}
 
 
-def without_run_keys(value):
-    if isinstance(value, dict):
-        return {k: without_run_keys(v) for k, v in value.items() if k not in RUN_KEYS}
-    if isinstance(value, list):
-        return [without_run_keys(v) for v in value]
-    return value
+def differences(a, b, path=""):
+    """The paths where two JSON values differ, outside RUN_KEYS."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        out = [f"{path}/{k}: only in one" for k in set(a) ^ set(b) if k not in RUN_KEYS]
+        for k in set(a) & set(b):
+            if k not in RUN_KEYS:
+                out += differences(a[k], b[k], f"{path}/{k}")
+        return out
+    if isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            return [f"{path}: {len(a)} items against {len(b)}"]
+        return [d for i, (x, y) in enumerate(zip(a, b)) for d in differences(x, y, f"{path}[{i}]")]
+    return [] if a == b else [f"{path}: {a!r} against {b!r}"]
 
 
 class Calibrate(unittest.TestCase):
@@ -45,7 +52,7 @@ class Calibrate(unittest.TestCase):
             self.assertEqual(list(fits), ["M1"])
             with open(os.path.join(cli_out, "M1", "summary.json")) as f:
                 cli_summary = json.load(f)
-            self.assertEqual(without_run_keys(fits["M1"]), without_run_keys(cli_summary))
+            self.assertEqual(differences(fits["M1"], cli_summary), [])
             self.assertTrue(fits["M1"]["command"].startswith("python: dtwin.Study("))
             self.assertTrue(stages)
             self.assertTrue(all(s.startswith("M1 ") for s, _, _ in stages))
@@ -58,7 +65,7 @@ class Calibrate(unittest.TestCase):
             page = study.compare(os.path.join(cli_out, "M1"), data, draws=5, quiet=True)
             with open(os.path.join(page_dir, "compare.json")) as f:
                 cli_page = json.load(f)
-            self.assertEqual(without_run_keys(page), without_run_keys(cli_page))
+            self.assertEqual(differences(page, cli_page), [])
             self.assertGreater(page["series"][0]["fit_percent"], 50)
 
 

@@ -2,6 +2,7 @@
 last bit (the CSV holds the shortest exact form of each double, so float() reads them back exactly)."""
 import csv
 import os
+import pathlib
 import unittest
 
 import numpy as np
@@ -57,7 +58,7 @@ class Simulate(unittest.TestCase):
     def test_out_writes_the_same_csv_as_the_cli(self):
         with scratch() as tmp:
             a, b = os.path.join(tmp, "py.csv"), os.path.join(tmp, "cli.csv")
-            self.study.simulate("M1", "lab", out=a)
+            self.study.simulate("M1", "lab", out=pathlib.Path(a))  # a str or a path
             rc, _, err = twin("simulate", "--study", DEMO_STUDY, "--out", b, "--quiet")
             self.assertEqual(rc, 0, err)
             with open(a) as fa, open(b) as fb:

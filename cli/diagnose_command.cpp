@@ -50,10 +50,8 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   if (!run.written.empty()) {
     say("wrote " + run.written);
     // The interactive page beside compare.json, titled without absolute paths.
-    std::string title = "twin compare: " + study.name + ", " + run.assembly.id + " (" + run.assembly.label() + ") against";
-    for (const auto& d : cfg.data) title += " " + std::filesystem::path(d).filename().string();
     const std::string page = (std::filesystem::path(run.written).parent_path() / "compare.html").string();
-    const std::string html = comparePage(run.comparison.toJson(true), title);
+    const std::string html = comparePage(run, study.name, cfg.data);
     rootWrites(cfg.processes, [&] { writeFileAtomic(page, html); });
     say("wrote " + page + " (zoom into the drive, the failing windows listed beside it)");
   }

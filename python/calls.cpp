@@ -301,10 +301,8 @@ py::object compare(const PyStudy& s, const py::object& calibration_arg, const py
         if (say) say(withoutFinalNewline(run.text()));
         if (!run.written.empty()) {
           if (say) say("wrote " + run.written);
-          std::string title = "twin compare: " + study.name + ", " + run.assembly.id + " (" + run.assembly.label() + ") against";
-          for (const auto& d : req.data) title += " " + fs::path(d).filename().string();
           const std::string page = (fs::path(run.written).parent_path() / "compare.html").string();
-          writeFileAtomic(page, comparePage(run.json, title));
+          writeFileAtomic(page, comparePage(run, study.name, req.data));
           if (say) say("wrote " + page);
         }
       },

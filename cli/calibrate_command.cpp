@@ -28,28 +28,21 @@ struct CalibrateConfig {
   bool quiet = false, force = false;
 };
 
-/// The lab data file and its scenario: --data FILE[@SCENARIO] (the parser of compare and
-/// diagnose); without @SCENARIO, the scenario the file's sidecar names, else lab; a scenario
-/// the sidecar contradicts is refused, as compare and diagnose refuse it. The older --scenario
-/// NAME is still accepted, with a note.
-std::pair<std::string, std::string> calibrationData(const CalibrateConfig& cfg) {
+/// The lab data file and its scenario: --data FILE[@SCENARIO] (calibrationData, study/calibrate.hpp).
+/// The older --scenario NAME is still accepted, with a note.
+std::pair<std::string, std::string> calibrationDataOf(const CalibrateConfig& cfg) {
+  if (cfg.scenario.empty()) return calibrationData(cfg.data, "--data");
   const diag::MeasurementSpec spec = diag::parseMeasurementArg(cfg.data, "--data");
-  const SidecarFacts facts = readSidecarFacts(spec.path);
-  auto scenario = [&](const std::string& given) {
-    const std::string s = dataScenario(spec.path, given, facts);
-    return std::make_pair(spec.path, s.empty() ? std::string("lab") : s);
-  };
-  if (cfg.scenario.empty()) return scenario(spec.scenario);
   if (!spec.scenario.empty() && spec.scenario != cfg.scenario)
     throw InputError("--scenario", "'" + cfg.scenario + "' differs from the scenario of --data " + cfg.data + ": give it once, as --data FILE@SCENARIO");
   deprecationNote("twin calibrate --data FILE --scenario NAME", "twin calibrate --data FILE@NAME", cfg.processes);
-  return scenario(cfg.scenario);
+  return calibrationData(cfg.data, "--data", cfg.scenario);
 }
 
 int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
   CalibrateRequest req;
-  std::tie(req.data, req.scenario) = calibrationData(cfg);
+  std::tie(req.data, req.scenario) = calibrationDataOf(cfg);
   if (cfg.assembly != "all")
     for (auto& id : splitOn(cfg.assembly, ','))
       if (!id.empty()) req.assemblies.push_back(std::move(id));
@@ -63,11 +56,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   if (cfg.seed) opt.seed = *cfg.seed;
   cfg.calibration.applyTo(opt);
   req.validate(study);  // before anything is printed; main() shows a field as its flag (field_flags below)
-  {
-    std::vector<std::string> stages;
-    for (const auto& a : calibrationTargets(study, req)) stages.push_back("calibrate " + a.id);
-    checkCommandWork(cfg.calibration.sized(study), stages, cfg.force);
-  }
+  checkCalibrateWork(study, req, cfg.calibration, cfg.force);
   const bool bar_on = progressOn(cfg.quiet, cfg.processes);
   std::unique_ptr<ProgressBar> bar;
   std::string current;

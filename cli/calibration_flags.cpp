@@ -40,30 +40,6 @@ void CalibrationFlags::addTo(CLI::App* app, unsigned which) {
         ->check(CLI::Range(0L, 1000L));
 }
 
-void CalibrationFlags::applyTo(calib::CalibrationOptions& opt) const {
-  if (lhs_points > 0) opt.lhs_points = static_cast<int>(lhs_points);
-  if (iterations > 0) opt.gibbs_iterations = static_cast<int>(iterations);
-  if (burn_in >= 0) opt.gibbs_burn_in = static_cast<int>(burn_in);
-  if (starts > 0) opt.optimizer_starts = static_cast<int>(starts);
-  if (!region.empty()) {
-    opt.region = region;
-    if (design.empty()) opt.design.adaptive = region == "joint";  // the region's default design
-  }
-  if (!design.empty()) opt.design.adaptive = design == "adaptive";
-  if (!interval.empty()) opt.interval = interval;
-  if (!steps.empty()) opt.steps = steps;
-  if (max_rounds >= 0) opt.design.max_rounds = static_cast<int>(max_rounds);
-  if (ridge_steps >= 0) opt.joint.ridge_steps = static_cast<int>(ridge_steps);
-}
-
-Study CalibrationFlags::sized(const Study& study) const {
-  Study s = study;
-  overrideSize(s, "lhs_points", lhs_points, "--lhs-points");
-  overrideSize(s, "gibbs_iterations", iterations, "--iterations");
-  overrideSize(s, "optimizer_starts", starts, "--starts");
-  return s;
-}
-
 void CalibrationFlags::addFieldFlags(CommandHandle& handle) {
   handle.field_flags["gibbs_iterations"] = "--iterations";
   handle.field_flags["gibbs_burn_in"] = "--burn-in";

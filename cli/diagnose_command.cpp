@@ -50,32 +50,12 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   if (!run.written.empty()) {
     say("wrote " + run.written);
     // The interactive page beside compare.json, titled without absolute paths.
-    std::string title = "twin compare: " + study.name + ", " + run.assembly.id + " (" + run.assembly.label() + ") against";
-    for (const auto& d : cfg.data) title += " " + std::filesystem::path(d).filename().string();
     const std::string page = (std::filesystem::path(run.written).parent_path() / "compare.html").string();
-    const std::string html = comparePage(run.comparison.toJson(true), title);
+    const std::string html = comparePage(run, study.name, cfg.data);
     rootWrites(cfg.processes, [&] { writeFileAtomic(page, html); });
     say("wrote " + page + " (zoom into the drive, the failing windows listed beside it)");
   }
   return 0;
-}
-
-/// The interactive page of a diagnosis (report/compare_page.hpp): the base, then each applied
-/// effect (--apply) or each cause in turn, overlaid; titled by `what` and the data's file names.
-std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what, const std::vector<std::string>& data) {
-  std::vector<PageModel> models{{"base", r.base.comparison.toJson(true)}};
-  const auto plus = [](const std::vector<std::string>& effects) {
-    std::string s;
-    for (const auto& e : effects) s += " + " + e;
-    return s;
-  };
-  if (r.steps.size() > 1)
-    for (std::size_t k = 1; k < r.steps.size(); ++k) models.push_back({plus(r.steps[k].effects), r.steps[k].comparison.toJson(true)});
-  else
-    for (std::size_t k = 1; k < r.causes.size(); ++k) models.push_back({plus(r.causes[k].fit.effects), r.causes[k].fit.comparison.toJson(true)});
-  std::string title = "twin diagnose: " + what + " against";
-  for (const auto& d : data) title += " " + fs::path(d).filename().string();
-  return comparePage(models, title);
 }
 
 // ------------------------------------------------------------------ diagnose

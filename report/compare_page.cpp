@@ -5,8 +5,10 @@
 #include <map>
 
 #include "common/errors.hpp"
+#include "diagnosis/diagnose.hpp"
 #include "dtwin/uplot_assets.hpp"
 #include "report/study_report.hpp"
+#include "study/diagnose.hpp"
 
 namespace dtwin {
 
@@ -378,6 +380,28 @@ std::string timeSeriesPage(const nlohmann::json& data, const std::string& note) 
   html += kScript;
   html += "</script>\n</body></html>\n";
   return html;
+}
+
+std::string comparePage(const CompareRun& run, const std::string& study_name, const std::vector<std::string>& data) {
+  std::string title = "twin compare: " + study_name + ", " + run.assembly.id + " (" + run.assembly.label() + ") against";
+  for (const auto& d : data) title += " " + std::filesystem::path(d).filename().string();
+  return comparePage(run.comparison.toJson(true), title);
+}
+
+std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what, const std::vector<std::string>& data) {
+  std::vector<PageModel> models{{"base", r.base.comparison.toJson(true)}};
+  const auto plus = [](const std::vector<std::string>& effects) {
+    std::string s;
+    for (const auto& e : effects) s += " + " + e;
+    return s;
+  };
+  if (r.steps.size() > 1)
+    for (std::size_t k = 1; k < r.steps.size(); ++k) models.push_back({plus(r.steps[k].effects), r.steps[k].comparison.toJson(true)});
+  else
+    for (std::size_t k = 1; k < r.causes.size(); ++k) models.push_back({plus(r.causes[k].fit.effects), r.causes[k].fit.comparison.toJson(true)});
+  std::string title = "twin diagnose: " + what + " against";
+  for (const auto& d : data) title += " " + std::filesystem::path(d).filename().string();
+  return comparePage(models, title);
 }
 
 }  // namespace dtwin

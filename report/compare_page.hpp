@@ -14,6 +14,10 @@
 #include <nlohmann/json.hpp>
 
 namespace dtwin {
+namespace diag {
+struct DiagnosisResult;
+}
+struct CompareRun;
 
 /// One model's comparison on the page: its label (e.g. "base", "+ bump_stop") and its JSON
 /// (diag::Comparison::toJson with its series data, as compare.json holds it).
@@ -31,6 +35,15 @@ std::string comparePage(const std::vector<PageModel>& models, const std::string&
 
 /// The page of one comparison (`twin compare`).
 std::string comparePage(const nlohmann::json& compare, const std::string& title);
+
+/// The page of `twin compare --out DIR` (DIR/compare.html): `run` (study/diagnose.hpp) of the study
+/// named `study_name` against the measurement files `data`, titled without absolute paths.
+std::string comparePage(const CompareRun& run, const std::string& study_name, const std::vector<std::string>& data);
+
+/// The page of a diagnosis (`twin diagnose --out DIR` writes DIR/compare.html): the base, then
+/// each applied effect (--apply) or each cause in turn, overlaid; titled "twin diagnose: `what`
+/// against" and the data's file names.
+std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what, const std::vector<std::string>& data);
 
 /// The page itself, from the data its script draws: {"title", "sets": [{"name", "scenario",
 /// "channels": [{"channel", "unit", "t", "y" (measured, null where none), optionally "points"

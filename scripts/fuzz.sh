@@ -16,7 +16,7 @@ SAN_TESTS=(messages_test study_test measurement_test road_test speed_trace_test 
 bash scripts/setup.sh fuzz
 t0=$(date +%s)
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-  -DDTWIN_BUILD_TESTS=ON -DDTWIN_WITH_MPI=OFF -DDTWIN_FUZZ=ON -DDTWIN_FUZZ_SECONDS="$seconds" >/dev/null
+  -DDTWIN_BUILD_TESTS=ON -DDTWIN_WITH_MPI=OFF -DDTWIN_PYTHON=OFF -DDTWIN_FUZZ=ON -DDTWIN_FUZZ_SECONDS="$seconds" >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target fuzz_all "${SAN_TESTS[@]}"
 t1=$(date +%s)
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"

@@ -10,13 +10,16 @@ PKGS=(build-essential cmake pkg-config git
       libmuparser-dev         # user-defined effects: force expressions in the study file
       zlib1g-dev libexpat1-dev   # mdflib (third_party/mdflib): MF4 logs for `twin import`
       gnuplot-nox chromium    # gnuplot: `twin report`; chromium: its rendering test
+      pybind11-dev python3-dev python3-numpy   # the Python module dtwin (docs/python.md)
+      python3-matplotlib      # the plots of docs/python.md's example (and its test)
       libopenmpi-dev openmpi-bin)   # MPI: `mpirun -n K twin ...` (docs/cluster.md)
 # `setup.sh demo`: only what the demo needs (no test framework, no browser for the report test, no
-# MPI: the demo runs in one process, and MPI's 80 packages, gfortran among them, add about 105 MB).
+# MPI: the demo runs in one process, and MPI's 80 packages, gfortran among them, add about 105 MB;
+# no matplotlib: the demo builds the Python module but plots nothing with it).
 if [ "${1:-}" = "demo" ]; then
   keep=()
   for p in "${PKGS[@]}"; do
-    case "$p" in googletest|libgtest-dev|libgmock-dev|chromium|libopenmpi-dev|openmpi-bin) ;; *) keep+=("$p") ;; esac
+    case "$p" in googletest|libgtest-dev|libgmock-dev|chromium|libopenmpi-dev|openmpi-bin|python3-matplotlib) ;; *) keep+=("$p") ;; esac
   done
   PKGS=("${keep[@]}")
 fi

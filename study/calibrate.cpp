@@ -13,6 +13,7 @@
 #include "diagnosis/measurements.hpp"
 #include "io/measurement.hpp"
 #include "io/provenance.hpp"
+#include "io/work.hpp"
 #include "common/distributed.hpp"
 
 namespace fs = std::filesystem;
@@ -69,6 +70,42 @@ std::map<std::string, double> channelWeights(const Study& study, const calib::Da
   std::map<std::string, double> weights;
   for (const auto& [c, n] : noise) weights[c] = 1.0 / n.variance;
   return weights;
+}
+
+void CalibrationOverrides::applyTo(calib::CalibrationOptions& opt) const {
+  if (lhs_points > 0) opt.lhs_points = static_cast<int>(lhs_points);
+  if (iterations > 0) opt.gibbs_iterations = static_cast<int>(iterations);
+  if (burn_in >= 0) opt.gibbs_burn_in = static_cast<int>(burn_in);
+  if (starts > 0) opt.optimizer_starts = static_cast<int>(starts);
+  if (!region.empty()) {
+    opt.region = region;
+    if (design.empty()) opt.design.adaptive = region == "joint";  // the region's default design
+  }
+  if (!design.empty()) opt.design.adaptive = design == "adaptive";
+  if (!interval.empty()) opt.interval = interval;
+  if (!steps.empty()) opt.steps = steps;
+  if (max_rounds >= 0) opt.design.max_rounds = static_cast<int>(max_rounds);
+  if (ridge_steps >= 0) opt.joint.ridge_steps = static_cast<int>(ridge_steps);
+}
+
+Study CalibrationOverrides::sized(const Study& study) const {
+  Study s = study;
+  overrideSize(s, "lhs_points", lhs_points, "--lhs-points");
+  overrideSize(s, "gibbs_iterations", iterations, "--iterations");
+  overrideSize(s, "optimizer_starts", starts, "--starts");
+  return s;
+}
+
+std::pair<std::string, std::string> calibrationData(const std::string& data, const std::string& field, const std::string& scenario) {
+  const diag::MeasurementSpec spec = diag::parseMeasurementArg(data, field);
+  const std::string s = dataScenario(spec.path, scenario.empty() ? spec.scenario : scenario, readSidecarFacts(spec.path));
+  return {spec.path, s.empty() ? std::string("lab") : s};
+}
+
+void checkCalibrateWork(const Study& study, const CalibrateRequest& request, const CalibrationOverrides& overrides, bool force) {
+  std::vector<std::string> stages;
+  for (const auto& a : calibrationTargets(study, request)) stages.push_back("calibrate " + a.id);
+  checkCommandWork(overrides.sized(study), stages, force);
 }
 
 std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request) {

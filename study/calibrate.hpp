@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "calibration/calibrate.hpp"
@@ -29,6 +30,31 @@ struct CalibrateRequest {
   /// InputError naming the field ("calibrate.data", "calibrate.out", ...) or the options' own.
   void validate(const Study& study) const;
 };
+
+/// The calibration settings a user may override for one call (the flags of `twin calibrate`,
+/// `twin coverage` and `twin diagnose`, the keywords of the Python module): -1 or "" leaves the
+/// study's value.
+struct CalibrationOverrides {
+  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1, max_rounds = -1, ridge_steps = -1;
+  std::string region, design, interval, steps;
+
+  /// The given values over `opt` (the study's options, CalibrationOptions::fromStudy): a region
+  /// without a design also sets the region's default design (adaptive for joint, lhs for paper).
+  void applyTo(calib::CalibrationOptions& opt) const;
+  /// `study` with its sizes overridden by lhs_points, iterations and starts, each checked
+  /// against its limit (for the work estimate, io/work.hpp).
+  Study sized(const Study& study) const;
+};
+
+/// The lab data of `twin calibrate --data FILE[@SCENARIO]`: the file, and the scenario it was
+/// measured on: `scenario` when given, else the one after '@', else the one its JSON sidecar
+/// names, else lab (InputError when the sidecar names another). `field` names the argument.
+std::pair<std::string, std::string> calibrationData(const std::string& data, const std::string& field,
+                                                    const std::string& scenario = "");
+
+/// The work of `request` with `overrides` checked against the limits (io/work.hpp; InputError
+/// above them unless `force`), before anything runs.
+void checkCalibrateWork(const Study& study, const CalibrateRequest& request, const CalibrationOverrides& overrides, bool force);
 
 /// One calibrated assembly.
 struct CalibrateRun {

@@ -129,17 +129,18 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   // What the calibration found of its own values: a value on its bound is no estimate.
   for (const auto& f : folder.bound_findings) run.comparison.notes.push_back("the calibration: " + f.sentence());
   if (!request.baseline.empty()) addBaseline(study, obj.model().vehicle(), loadSets(study, request.baseline, "--baseline"), sets, run, say);
+  nlohmann::json& j = run.json;
+  j = run.comparison.toJson(true);
+  j["program"] = programInfo();
+  j["command"] = request.command;
+  j["created_utc"] = utcNow();
+  j["study"] = study.path;
+  j["calibration"] = request.calibration;
+  j["assembly"] = run.assembly.id;
+  j["setup"] = setup.toJson();
+  j["data"] = request.data;
+  if (!request.baseline.empty()) j["baseline"] = {{"data", request.baseline}, {"model", run.baseline}};
   if (!request.out.empty()) {
-    nlohmann::json j = run.comparison.toJson(true);
-    j["program"] = programInfo();
-    j["command"] = request.command;
-    j["created_utc"] = utcNow();
-    j["study"] = study.path;
-    j["calibration"] = request.calibration;
-    j["assembly"] = run.assembly.id;
-    j["setup"] = setup.toJson();
-    j["data"] = request.data;
-    if (!request.baseline.empty()) j["baseline"] = {{"data", request.baseline}, {"model", run.baseline}};
     run.written = (fs::path(request.out) / "compare.json").string();
     rootWrites(request.processes, [&] { writeFileAtomic(run.written, j.dump(2) + "\n"); });
   }
@@ -171,11 +172,9 @@ nlohmann::json optionsJson(const diag::DiagnoseOptions& o) {
           {"effects", o.effects}, {"apply", o.apply}, {"propose_terms", o.propose_terms}};
 }
 
-/// diagnosis.json, proposal.toml and comparisons/*.json of a finished diagnosis, on the root rank.
-void writeDiagnosis(const Study& study, const DiagnoseRequest& request, const DiagnoseRun& run) {
-  const diag::DiagnosisResult& r = run.result;
-  const fs::path out(request.out);
-  nlohmann::json j = r.toJson();
+/// What diagnosis.json holds: the result with how it was made.
+nlohmann::json diagnosisJson(const Study& study, const DiagnoseRequest& request, const DiagnoseRun& run) {
+  nlohmann::json j = run.result.toJson();
   j["program"] = programInfo();
   j["command"] = run.options.command;
   j["created_utc"] = utcNow();
@@ -183,8 +182,15 @@ void writeDiagnosis(const Study& study, const DiagnoseRequest& request, const Di
   j["data"] = request.data;
   j["holdout"] = request.holdout;
   j["options"] = optionsJson(run.options);
+  return j;
+}
+
+/// diagnosis.json, proposal.toml and comparisons/*.json of a finished diagnosis, on the root rank.
+void writeDiagnosis(const DiagnoseRequest& request, const DiagnoseRun& run) {
+  const diag::DiagnosisResult& r = run.result;
+  const fs::path out(request.out);
   rootWrites(request.options.processes, [&] {
-    writeFileAtomic((out / "diagnosis.json").string(), j.dump(2) + "\n");
+    writeFileAtomic((out / "diagnosis.json").string(), run.json.dump(2) + "\n");
     if (!r.proposal.empty())
       writeFileAtomic((out / "proposal.toml").string(), "# Proposed by twin diagnose (" + run.options.command +
                                                             "): paste into the study file, or pass this file to --apply.\n" +
@@ -241,8 +247,9 @@ DiagnoseRun diagnoseMeasurements(const Study& base_study, const DiagnoseRequest&
         formatPrintf("%.3g simulations, %.3g simulated s", sims, simulated));
   }
   run.result = diag::diagnose(study, assembly, fit, hold, run.options, out, progress);
+  run.json = diagnosisJson(study, request, run);
   if (!request.out.empty()) {
-    writeDiagnosis(study, request, run);
+    writeDiagnosis(request, run);
     run.written = (fs::path(request.out) / "diagnosis.json").string();
   }
   return run;

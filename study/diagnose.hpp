@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "calibration/calibrate.hpp"
+#include "common/json.hpp"
 #include "diagnosis/compare.hpp"
 #include "diagnosis/diagnose.hpp"
 #include "io/study.hpp"
@@ -34,6 +35,7 @@ struct CompareRun {
   AssemblySpec assembly;
   diag::Comparison comparison;
   std::string written;  ///< the compare.json written ("" without --out)
+  nlohmann::json json;  ///< what compare.json holds (built with or without --out)
   std::map<std::string, std::string> baseline;  ///< per channel: the FIR baseline, described (--baseline)
   /// The table, the windows and bands where the model fails, the state maps and the notes, as
   /// `twin compare` prints them: per series the windows' counts in words and the largest windows,
@@ -60,6 +62,7 @@ struct DiagnoseRun {
   diag::DiagnosisResult result;
   diag::DiagnoseOptions options;  ///< as run (the .toml items of apply replaced by their effects)
   std::string written;            ///< the diagnosis.json written ("" without an out folder)
+  nlohmann::json json;            ///< what diagnosis.json holds (built with or without an out folder)
 };
 
 /// Diagnoses `request.assembly` of `study` on the measurements (docs/diagnosis.md): the work is

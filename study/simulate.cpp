@@ -25,7 +25,7 @@ void SimulateRequest::validate(const Study& study) const {
     check.require(!fs::path(out).has_extension(), "out", "with --assembly all, --out must be a folder, got '" + out + "'");
   } else {
     (void)study.assembly(assembly);
-    check.require(fs::path(out).extension() == ".csv", "out", "must name a .csv file, got '" + out + "'");
+    check.require(out.empty() || fs::path(out).extension() == ".csv", "out", "must name a .csv file, got '" + out + "'");
   }
 }
 
@@ -85,7 +85,8 @@ std::vector<SimulateRun> simulateScenario(const Study& study, const SimulateRequ
     run.wall_s = r.stats.wall_s;
     run.peak_hub_force_fl_N = peakOf(r.trace, "hub_force_fl_N");
     run.static_hub_force_fl_N = r.trace.column("hub_force_fl_N").front();
-    if (r.stats.ok) {
+    if (r.stats.ok && (request.keep_values || request.out.empty())) run.values = r.trace.select(channels, t_lo, t_hi);
+    if (r.stats.ok && !request.out.empty()) {
       writeFileAtomic(csv, r.trace.toCsv(channels, t_lo, t_hi));
       const auto rec = runRecord(study, *model, sc, road->describe(), seed, values, request.simulation, r.stats,
                                  Simulator::channels(study.sensors), request.command);
@@ -95,11 +96,11 @@ std::vector<SimulateRun> simulateScenario(const Study& study, const SimulateRequ
     summary["runs"].push_back({{"assembly", run.assembly}, {"label", run.label}, {"ok", run.ok}, {"message", run.message},
                                {"peak_hub_force_fl_N", run.peak_hub_force_fl_N}, {"static_hub_force_fl_N", run.static_hub_force_fl_N},
                                {"integrator_steps", run.steps}, {"wall_s", run.wall_s},
-                               {"trace", run.ok ? nlohmann::json(csv) : nlohmann::json()}});
+                               {"trace", run.trace.empty() ? nlohmann::json() : nlohmann::json(csv)}});
     if (on_run) on_run(run);
     runs.push_back(std::move(run));
   }
-  if (all) writeFileAtomic((fs::path(request.out) / "summary.json").string(), summary.dump(2) + "\n");
+  if (all && !request.out.empty()) writeFileAtomic((fs::path(request.out) / "summary.json").string(), summary.dump(2) + "\n");
   return runs;
 }
 

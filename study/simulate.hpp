@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "twin/simulator.hpp"
+#include "twin/trace.hpp"
 #include "io/study.hpp"
 
 namespace dtwin {
@@ -17,7 +18,7 @@ namespace dtwin {
 struct SimulateRequest {
   std::string assembly = "M1";  ///< an assembly id, or "all"
   std::string scenario = "lab";
-  std::string out;  ///< a .csv file (one assembly) or a folder (all)
+  std::string out;  ///< a .csv file (one assembly) or a folder (all); "" writes no file (the values are kept)
   std::vector<ParameterSetting> sets;  ///< overrides (--set)
   std::vector<EffectSetting> effects;  ///< added effects (--effect)
   std::vector<std::string> channels;   ///< written channels (time_s always); empty: all
@@ -25,6 +26,8 @@ struct SimulateRequest {
   std::optional<std::uint64_t> seed;   ///< of random roads; unset: the study's
   SimulationOptions simulation;        ///< the integration (the study's, with overrides)
   std::string command;                 ///< recorded in every sidecar
+  /// Keep each run's written rows and channels in SimulateRun::values (always when out is "").
+  bool keep_values = false;
   /// InputError naming the field ("simulate.channels", "simulate.out", ...) for a bad request.
   void validate(const Study& study) const;
 };
@@ -37,7 +40,9 @@ struct SimulateRun {
   double peak_hub_force_fl_N = 0.0, static_hub_force_fl_N = 0.0;
   long steps = 0;
   double wall_s = 0.0;
-  std::string trace;  ///< the CSV written ("" when the run failed)
+  std::string trace;  ///< the CSV written ("" when the run failed or no out was given)
+  /// The rows and channels the CSV holds (Trace::select), when kept (SimulateRequest::keep_values).
+  Trace values;
   /// Effects installed at their off values, each with a hint how to switch it on.
   std::vector<std::string> off_effects;
 };

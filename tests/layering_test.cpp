@@ -29,13 +29,15 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"study", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study"}},
       {"report", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report"}},
       {"cli", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report", "cli"}},
+      // The Python module: at the level of cli/, beside it (neither includes the other).
+      {"python", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report", "python"}},
   };
   return a;
 }
 
 const std::set<std::string>& projectFolders() {
   static const std::set<std::string> f = {"common",    "subsystems", "twin",  "io",     "calibration",
-                                          "classification", "diagnosis",  "study", "report", "cli"};
+                                          "classification", "diagnosis",  "study", "report", "cli", "python"};
   return f;
 }
 

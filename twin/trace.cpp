@@ -71,7 +71,7 @@ const std::vector<double>& Trace::column(const std::string& name) const {
   return columns_[static_cast<std::size_t>(i)];
 }
 
-std::string Trace::toCsv(const std::vector<std::string>& selected, double t_lo, double t_hi) const {
+std::vector<std::size_t> Trace::selectedColumns(const std::vector<std::string>& selected) const {
   std::vector<std::size_t> cols;
   if (selected.empty())
     for (std::size_t i = 0; i < channels_.size(); ++i) cols.push_back(i);
@@ -81,6 +81,17 @@ std::string Trace::toCsv(const std::vector<std::string>& selected, double t_lo, 
       DTWIN_CHECK(i >= 0, "no channel " + s);
       cols.push_back(static_cast<std::size_t>(i));
     }
+  return cols;
+}
+
+bool Trace::rowInWindow(int ti, std::size_t r, double t_lo, double t_hi) const {
+  if (ti < 0) return true;
+  const double t = columns_[static_cast<std::size_t>(ti)][r];
+  return !(t < t_lo - 1e-12 || t > t_hi + 1e-12);
+}
+
+std::string Trace::toCsv(const std::vector<std::string>& selected, double t_lo, double t_hi) const {
+  const std::vector<std::size_t> cols = selectedColumns(selected);
   std::string out;
   out.reserve(rows() * cols.size() * 14 + 256);
   for (std::size_t k = 0; k < cols.size(); ++k) out += (k ? "," : "") + channels_[cols[k]].name;
@@ -88,16 +99,25 @@ std::string Trace::toCsv(const std::vector<std::string>& selected, double t_lo, 
   const int ti = index("time_s");
   char buf[64];
   for (std::size_t r = 0; r < rows(); ++r) {
-    if (ti >= 0) {
-      const double t = columns_[static_cast<std::size_t>(ti)][r];
-      if (t < t_lo - 1e-12 || t > t_hi + 1e-12) continue;
-    }
+    if (!rowInWindow(ti, r, t_lo, t_hi)) continue;
     for (std::size_t k = 0; k < cols.size(); ++k) {
       if (k) out += ',';
       auto res = std::to_chars(buf, buf + sizeof buf, columns_[cols[k]][r]);
       out.append(buf, res.ptr);
     }
     out += '\n';
+  }
+  return out;
+}
+
+Trace Trace::select(const std::vector<std::string>& selected, double t_lo, double t_hi) const {
+  const std::vector<std::size_t> cols = selectedColumns(selected);
+  Trace out;
+  for (const std::size_t c : cols) out.addChannel(channels_[c]);
+  const int ti = index("time_s");
+  for (std::size_t r = 0; r < rows(); ++r) {
+    if (!rowInWindow(ti, r, t_lo, t_hi)) continue;
+    for (std::size_t k = 0; k < cols.size(); ++k) out.columns_[k].push_back(columns_[cols[k]][r]);
   }
   return out;
 }

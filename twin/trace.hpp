@@ -31,8 +31,16 @@ class Trace {
   /// CSV text: header of channel names, then rows; `selected` empty means all channels;
   /// rows with time outside [t_lo, t_hi] are skipped. Numbers use the shortest exact form.
   std::string toCsv(const std::vector<std::string>& selected = {}, double t_lo = -1e300, double t_hi = 1e300) const;
+  /// The rows and channels toCsv writes, as a trace: the same columns in the same order, the
+  /// same rows, the same values (the Python module's simulate returns these).
+  Trace select(const std::vector<std::string>& selected = {}, double t_lo = -1e300, double t_hi = 1e300) const;
 
  private:
+  /// The column indices of `selected` (all when empty), and whether row `r` lies in [t_lo, t_hi]
+  /// (`ti`: the column of time_s, -1 for none: every row).
+  std::vector<std::size_t> selectedColumns(const std::vector<std::string>& selected) const;
+  bool rowInWindow(int ti, std::size_t r, double t_lo, double t_hi) const;
+
   std::vector<Channel> channels_;
   std::vector<std::vector<double>> columns_;
 };

@@ -168,8 +168,12 @@ class MdfStructureCheck {
     const std::string t = id(at);
     if (t == "DT" || t == "DV") return u64(at + 8) - 24;
     if (t == "DZ") {
-      if (u64(at + 24 + 16) > u64(at + 8) - 48) fail(at, "a DZ block's compressed data runs past the block");
-      return u64(at + 24 + 8);
+      const std::uint64_t packed = u64(at + 24 + 16), original = u64(at + 24 + 8);
+      if (packed > u64(at + 8) - 48) fail(at, "a DZ block's compressed data runs past the block");
+      // Deflate packs at most 1032 bytes into one: a larger claim is damage, not data (and a reader
+      // would reserve it before inflating).
+      if (original / 1032 > packed + 1) fail(at, "a DZ block declares " + std::to_string(original) + " bytes from " + std::to_string(packed) + " compressed ones");
+      return original;
     }
     if (t == "HL") return dataBytes(u64(at + 24), depth + 1);
     if (t == "DL") {
@@ -195,7 +199,11 @@ class MdfStructureCheck {
       if (!cgs.insert(cg).second) fail(cg, "the channel groups link back to themselves");
       const std::uint64_t data = cg + 24 + 8 * u64(cg + 16);
       if ((u64(data + 16) & 0xffff & 1) != 0) return;  // variable-length signal data: not sized here
-      need += u64(data + 8) * (record_id + u32(data + 24) + u32(data + 28));
+      // A record of no bytes would keep a reader at the same place for ever (every group has its
+      // master channel, so a real one has bytes).
+      const std::uint64_t record = u32(data + 24) + static_cast<std::uint64_t>(u32(data + 28));
+      if (record == 0) fail(cg, "a channel group declares records of 0 bytes");
+      need += u64(data + 8) * (record_id + record);
     }
     const std::uint64_t have = dataBytes(u64(dg + 24 + 16), 0);
     if (have < need)

@@ -26,3 +26,15 @@ else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=ON
   cmake --build build -j"$(nproc)"
 fi
+# `import dtwin` in Debian's Python with no setting: a path file in /usr/local's dist-packages (on
+# Debian's sys.path) names this build's module folder. Only as root, and only where that folder is
+# Debian Python's own; elsewhere docs/python.md says to set PYTHONPATH=build/python.
+module=$(ls build/python/dtwin.cpython-*.so 2>/dev/null | head -n 1 || true)
+if [ -n "$module" ] && [ "$(id -u)" -eq 0 ] && [ -x /usr/bin/python3 ]; then
+  site=$(/usr/bin/python3 -c 'import sys; print("/usr/local/lib/python%d.%d/dist-packages" % sys.version_info[:2])')
+  if /usr/bin/python3 -c "import sys; sys.exit(0 if '$site' in sys.path else 1)" 2>/dev/null; then
+    mkdir -p "$site"
+    echo "$(pwd)/build/python" > "$site/dtwin.pth"
+    echo "build: /usr/bin/python3 finds the module dtwin ($site/dtwin.pth -> $(pwd)/build/python)"
+  fi
+fi

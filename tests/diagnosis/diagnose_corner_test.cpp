@@ -1,5 +1,5 @@
-// Faults at one corner or on one axle, end to end on the real twin (label `corners`, about 15 min on
-// 2 cores; kept out of the default run like the matrix): data from M1 with a per-corner or
+// Faults at one corner or on one axle, end to end on the real twin (label `corners`, about 11 min of
+// test time; kept out of the default run like the matrix): data from M1 with a per-corner or
 // per-axle factor hidden (twin/parameters.hpp), on diag_bump and diag_rough (4 hub forces at
 // 200 Hz, 3 repetitions), diagnosed with the default catalogue. Each fault is named with its place,
 // its value's printed 95 % interval holds the truth, and a car with all four corners alike gives

@@ -264,6 +264,12 @@ TEST(MdfImport, BadFilesGiveOneLineErrorsAndWriteNothing) {
       {"unit", bytes, (dir / "unit.toml").string(), "channel 'GPS_Speed' (group 'log'): the file gives its unit as 'km/h', the mapping declares 'mph'"},
       {"shared", dtwin_test::slurp(split), (dir / "shared.toml").string(), "channel 'Time' (" + (dir / "shared.toml").string() + ":6: import.road_left) is in group 'chassis', group 'gps': name one as GROUP/Time"},
       {"not_mdf", dtwin_test::slurp(kDrives + "stop_and_go.csv"), map, "is not an MDF file"},
+      // Two files the fuzzer made: records of 0 bytes (a reader would never move on) and a DZ block
+      // that claims more data than deflate can pack into its bytes (a reader would reserve it).
+      {"zero_size_records", dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import/zero_size_records.mf4"), map,
+       "a channel group declares records of 0 bytes"},
+      {"dz_size_too_large", dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import/dz_size_too_large.mf4"), map,
+       "truncated or damaged"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);

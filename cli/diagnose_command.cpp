@@ -176,9 +176,11 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const CommandContext& context) 
   c->add_option("--data", cfg->data, "Measurement file FILE[@SCENARIO] to fit (tidy lab layout); repeatable")->required();
   c->add_option("--holdout", cfg->holdout, "Held-out measurement file FILE[@SCENARIO] (not fitted; error reported); repeatable");
   c->add_option("--effects", cfg->effects,
-                "Only rank these candidates (comma separated): effects, free:<vehicle value> (e.g. free:wheel.mass_kg) or "
+                "Only rank these candidates (comma separated): effects, an effect at one corner (e.g. bump_stop@rr), "
+                "free:<vehicle value> (e.g. free:wheel.mass_kg), a per-corner or per-axle factor (e.g. free:suspension.damping@rr) or "
                 "<lowpass|lowpass2|gain|delay>:<channel group> (e.g. lowpass:hub_force); default: every effect not installed, "
-                "every freeable vehicle value and every sensor model (docs/diagnosis.md)");
+                "every freeable vehicle value, the per-corner and per-axle factors, the effects of a part that wears at one strut at "
+                "each corner, and every sensor model (docs/diagnosis.md)");
   c->add_option("--apply", cfg->apply,
                 "Add these candidates in turn (comma separated) and print the before/after table; a .toml file (e.g. a diagnosis's "
                 "proposal.toml) adds its [user_effects]");

@@ -134,6 +134,83 @@ std::vector<double> mdfResample(const std::vector<double>& ts, const std::vector
   return out;
 }
 
+/// The rows on the time base `tb` with the checks a CSV's rows get, sample by sample
+/// (log_import.cpp, LogRowReader): `refs` in the order speed, roads, channels, masks; `column`
+/// gives a ref's values on the base, `sampleWhere` names a sample in an error.
+template <class Column, class Where>
+LogRows mdfCheckedRows(const ImportMapping& m, const ImportUnits& u, const std::vector<MdfColumnRef>& refs, const std::vector<double>& tb,
+                       const Column& column, const Where& sampleWhere) {
+  LogRows rows;
+  rows.t = tb;
+  std::size_t k = 0;
+  {
+    const auto& r = refs[k++];
+    const auto v = column(r);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (!std::isfinite(v[i])) throw InputError(sampleWhere(r, i), "is invalid or NaN (a required channel has no gaps)");
+      double vi = (v[i] - m.speed->offset) * m.speed->scale * u.speed;
+      if (vi < 0 && vi >= -0.2) vi = 0.0;  // a logger's noise about standstill
+      if (vi < 0) throw InputError(sampleWhere(r, i), "speed " + formatNumber(v[i]) + " " + m.speed->unit + " is negative (beyond the 0.2 m/s of noise at rest)");
+      if (vi > 100) throw InputError(sampleWhere(r, i), "speed " + formatNumber(v[i]) + " " + m.speed->unit + " exceeds 100 m/s");
+      rows.v.push_back(vi);
+    }
+  }
+  for (std::size_t q = 0; q < u.road_cols.size(); ++q) {
+    const auto& r = refs[k++];
+    auto v = column(r);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (!std::isfinite(v[i])) throw InputError(sampleWhere(r, i), "is invalid or NaN (a required channel has no gaps)");
+      v[i] = (v[i] - r.column->offset) * r.column->scale * u.road[q];
+    }
+    rows.road.push_back(std::move(v));
+  }
+  for (std::size_t q = 0; q < m.channels.size(); ++q) {
+    const auto& r = refs[k++];
+    auto v = column(r);
+    long run = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (std::isnan(v[i])) {
+        if (++run > m.max_dropout_rows)
+          throw InputError(sampleWhere(r, i - static_cast<std::size_t>(run) + 1),
+                           "invalid or NaN from here on: more than max_dropout_rows = " + std::to_string(m.max_dropout_rows) + " samples in a row");
+        ++rows.dropped_cells;
+        continue;
+      }
+      if (!std::isfinite(v[i])) throw InputError(sampleWhere(r, i), "is not a finite number");
+      run = 0;
+      v[i] = (v[i] - r.column->offset) * r.column->scale * u.channel[q];
+    }
+    rows.values.push_back(std::move(v));
+  }
+  for (const auto& mk : m.exclude) {
+    const auto& r = refs[k++];
+    auto v = column(r);
+    const double f = anyUnit(mk.source.unit, mk.source.where).first;
+    for (auto& x : v) x = std::isnan(x) ? x : std::abs((x - mk.source.offset) * mk.source.scale * f);
+    rows.mask.push_back(std::move(v));
+  }
+  return rows;
+}
+
+/// What an MF4 import read, for the sidecar: the groups and channels, the time base, the samples
+/// dropped outside other groups' spans and the resampling rule.
+nlohmann::json mdfProvenance(const MdfDirectory& dir, const std::map<std::size_t, MdfGroupData>& data, std::size_t base, std::size_t dropped) {
+  nlohmann::json groups = nlohmann::json::array();
+  for (const auto& [g, d] : data) {
+    nlohmann::json chans = nlohmann::json::array();
+    for (const auto& c : d.channels) chans.push_back({{"name", c.name}, {"unit", c.unit}, {"conversion", c.conversion}});
+    groups.push_back({{"group", dir.groups[g].name}, {"index", g + 1}, {"master", d.master}, {"master_unit", d.master_unit},
+                      {"samples", d.time.size()}, {"time_base", g == base}, {"channels", chans}});
+  }
+  return {{"format", "MDF " + dir.version},
+          {"groups_read", groups},
+          {"time_base", {{"group", dir.groups[base].name}, {"index", base + 1}, {"master", data.at(base).master}}},
+          {"samples_outside_other_groups", static_cast<long>(dropped)},
+          {"rule", "every mapped channel is read on the time base (the master of the time channel's group); a channel of another group is "
+                   "interpolated linearly between its two samples around each base time (its own sample at a time it has); base samples "
+                   "outside another used group's first..last time are dropped (no extrapolation) and counted here"}};
+}
+
 }  // namespace
 
 LogRows readMdfRows(const std::string& bytes, const std::string& name, const ImportMapping& m, const ImportUnits& u, nlohmann::json& provenance) {
@@ -214,71 +291,8 @@ LogRows readMdfRows(const std::string& bytes, const std::string& name, const Imp
   auto sampleWhere = [&](const MdfColumnRef& r, std::size_t i) {
     return name + ": channel '" + r.channel + "' (" + mdfGroupLabel(dir, r.group) + ") at " + formatNumber(tb[i], 12) + " s";
   };
-  // The CSV's checks, sample by sample (log_import.cpp, LogRowReader).
-  LogRows rows;
-  rows.t = tb;
-  std::size_t k = 0;
-  {
-    const auto& r = refs[k++];
-    const auto v = column(r);
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (!std::isfinite(v[i])) throw InputError(sampleWhere(r, i), "is invalid or NaN (a required channel has no gaps)");
-      double vi = (v[i] - m.speed->offset) * m.speed->scale * u.speed;
-      if (vi < 0 && vi >= -0.2) vi = 0.0;  // a logger's noise about standstill
-      if (vi < 0) throw InputError(sampleWhere(r, i), "speed " + formatNumber(v[i]) + " " + m.speed->unit + " is negative (beyond the 0.2 m/s of noise at rest)");
-      if (vi > 100) throw InputError(sampleWhere(r, i), "speed " + formatNumber(v[i]) + " " + m.speed->unit + " exceeds 100 m/s");
-      rows.v.push_back(vi);
-    }
-  }
-  for (std::size_t q = 0; q < u.road_cols.size(); ++q) {
-    const auto& r = refs[k++];
-    auto v = column(r);
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (!std::isfinite(v[i])) throw InputError(sampleWhere(r, i), "is invalid or NaN (a required channel has no gaps)");
-      v[i] = (v[i] - r.column->offset) * r.column->scale * u.road[q];
-    }
-    rows.road.push_back(std::move(v));
-  }
-  for (std::size_t q = 0; q < m.channels.size(); ++q) {
-    const auto& r = refs[k++];
-    auto v = column(r);
-    long run = 0;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (std::isnan(v[i])) {
-        if (++run > m.max_dropout_rows)
-          throw InputError(sampleWhere(r, i - static_cast<std::size_t>(run) + 1),
-                           "invalid or NaN from here on: more than max_dropout_rows = " + std::to_string(m.max_dropout_rows) + " samples in a row");
-        ++rows.dropped_cells;
-        continue;
-      }
-      if (!std::isfinite(v[i])) throw InputError(sampleWhere(r, i), "is not a finite number");
-      run = 0;
-      v[i] = (v[i] - r.column->offset) * r.column->scale * u.channel[q];
-    }
-    rows.values.push_back(std::move(v));
-  }
-  for (const auto& mk : m.exclude) {
-    const auto& r = refs[k++];
-    auto v = column(r);
-    const double f = anyUnit(mk.source.unit, mk.source.where).first;
-    for (auto& x : v) x = std::isnan(x) ? x : std::abs((x - mk.source.offset) * mk.source.scale * f);
-    rows.mask.push_back(std::move(v));
-  }
-  // What was read, for the sidecar.
-  nlohmann::json groups = nlohmann::json::array();
-  for (const auto& [g, d] : data) {
-    nlohmann::json chans = nlohmann::json::array();
-    for (const auto& c : d.channels) chans.push_back({{"name", c.name}, {"unit", c.unit}, {"conversion", c.conversion}});
-    groups.push_back({{"group", dir.groups[g].name}, {"index", g + 1}, {"master", d.master}, {"master_unit", d.master_unit},
-                      {"samples", d.time.size()}, {"time_base", g == base}, {"channels", chans}});
-  }
-  provenance = {{"format", "MDF " + dir.version},
-                {"groups_read", groups},
-                {"time_base", {{"group", dir.groups[base].name}, {"index", base + 1}, {"master", bd.master}}},
-                {"samples_outside_other_groups", static_cast<long>(t.size() - (last - first))},
-                {"rule", "every mapped channel is read on the time base (the master of the time channel's group); a channel of another group is "
-                         "interpolated linearly between its two samples around each base time (its own sample at a time it has); base samples "
-                         "outside another used group's first..last time are dropped (no extrapolation) and counted here"}};
+  LogRows rows = mdfCheckedRows(m, u, refs, tb, column, sampleWhere);
+  provenance = mdfProvenance(dir, data, base, t.size() - (last - first));
   return rows;
 }
 

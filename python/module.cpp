@@ -36,14 +36,10 @@ CalibrationKeywords sizesOf(py::object lhs_points, py::object iterations, py::ob
 
 }  // namespace
 
-PYBIND11_MODULE(dtwin, m) {
-  m.doc() = kModuleDoc;
-  m.attr("__version__") = dtwin::kVersion;
-  m.attr("git_describe") = dtwin::kGitDescribe;
-  m.attr("simbody") = dtwin::kSimbody;
-  registerExceptions(m);
-  m.def("default_study", &defaultStudyPath, "The path of the default study (data/studies/demo.toml), as `twin`'s --study default.");
+namespace {
 
+/// dtwin.Study: the study file and its calls (simulate, calibrate, compare, diagnose).
+void bindStudy(py::module_& m) {
   py::class_<PyStudy>(m, "Study", "A study file (TOML), read and checked once; errors raise dtwin.InputError naming file, line and field.")
       .def(py::init(&loadStudyFile), py::arg("path") = py::none(), "Reads the study file `path` (None: the default study).")
       .def_property_readonly("path", [](const PyStudy& s) { return s.study->path; })
@@ -134,7 +130,10 @@ OUT/compare.json and OUT/compare.html.)")
 FILE[@SCENARIO] (`twin diagnose`): the diagnosis.json dict. apply: add these candidates in turn.
 out: the folder (a call with the same arguments resumes), with diagnosis.json, comparisons/,
 calibrations/, compare.html and report.html (needs gnuplot).)");
+}
 
+/// dtwin.import_log: a logger's file into the twin's files (`twin import`).
+void bindImport(py::module_& m) {
   m.def(
       "import_log",
       [](const py::object& log, const py::object& map, const py::object& out, const py::object& study, const std::string& scenario,
@@ -166,7 +165,20 @@ calibrations/, compare.html and report.html (needs gnuplot).)");
       py::arg("road_left") = py::none(), py::arg("road_right") = py::none(), py::arg("channel") = py::none(),
       py::arg("highpass_hz") = py::none(), py::arg("speed_lowpass_hz") = py::none(), py::arg("separator") = py::none(),
       py::arg("window") = py::none(), py::arg("run_in") = py::none(), py::arg("quiet") = false, py::arg("progress") = py::none(),
-      R"(A logger's CSV into OUT/ (measurements.csv + .json, speed.csv, road.csv, study.toml), as
+      R"(A logger's CSV or MF4 log into OUT/ (measurements.csv + .json, speed.csv, road.csv, study.toml), as
 `twin import`: the mapping from `map` (a TOML file) or from time/speed/road/channel. Returns the
 measurements.json dict; OUT/study.toml is the study that holds the drive (scenario `scenario`).)");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(dtwin, m) {
+  m.doc() = kModuleDoc;
+  m.attr("__version__") = dtwin::kVersion;
+  m.attr("git_describe") = dtwin::kGitDescribe;
+  m.attr("simbody") = dtwin::kSimbody;
+  registerExceptions(m);
+  m.def("default_study", &defaultStudyPath, "The path of the default study (data/studies/demo.toml), as `twin`'s --study default.");
+  bindStudy(m);
+  bindImport(m);
 }

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "diagnosis/diagnose.hpp"
+#include "diagnosis_lab_data.hpp"
 #include "study/generate.hpp"
 
 namespace fs = std::filesystem;
@@ -42,21 +43,9 @@ Study cornerStudy() {
 /// Lab data of M1 with `hidden` factors (name -> value) and, if given, a hidden catalogue effect.
 std::vector<calib::DataSet> cornerData(const Study& s, const std::map<std::string, double>& hidden, std::uint64_t seed,
                                        const std::string& effect = "") {
-  std::vector<calib::DataSet> sets;
-  for (const std::string sc : {"diag_bump", "diag_rough"}) {
-    LabOptions o;
-    o.scenario = sc;
-    o.times_mode = LabTimesMode::All;
-    o.rate_hz = 200.0;
-    o.repetitions = 3;
-    o.seed = seed;
-    o.channels = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
+  return dtwin_test::diagnosisLabData(s, effect, seed, [&](LabOptions& o) {
     for (const auto& [name, value] : hidden) o.hidden_values.push_back({name, value, "test", "test"});
-    if (!effect.empty()) o.hidden_effects.push_back(parseEffectSetting(effect, "test", s.effectCatalog()));
-    const auto lab = generateLab(s, s.assemblies().front(), o);
-    sets.push_back({sc + ".csv", sc, lab.data, seed});
-  }
-  return sets;
+  });
 }
 
 /// The diagnosis test's small sizes (the paper's region, one Latin hypercube) with the study's

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "diagnosis/diagnose.hpp"
+#include "diagnosis_lab_data.hpp"
 #include "study/generate.hpp"
 
 namespace fs = std::filesystem;
@@ -44,21 +45,7 @@ std::string freshDir(const std::string& name) {
 
 std::vector<calib::DataSet> makeData(const Study& s, const std::string& hidden, std::uint64_t seed,
                                      const std::function<void(LabOptions&)>& more = {}) {
-  std::vector<calib::DataSet> sets;
-  for (const std::string sc : {"diag_bump", "diag_rough"}) {
-    LabOptions o;
-    o.scenario = sc;
-    o.times_mode = LabTimesMode::All;
-    o.rate_hz = 200.0;
-    o.repetitions = 3;
-    o.seed = seed;
-    o.channels = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
-    if (!hidden.empty()) o.hidden_effects.push_back(parseEffectSetting(hidden, "test", s.effectCatalog()));
-    if (more) more(o);
-    const auto lab = generateLab(s, s.assemblies().front(), o);
-    sets.push_back({sc + ".csv", sc, lab.data, seed});  // the rough road was made with `seed`
-  }
-  return sets;
+  return dtwin_test::diagnosisLabData(s, hidden, seed, more);
 }
 
 /// Small sizes and, unless `joint`, the paper's region with one Latin hypercube and two profile

@@ -33,6 +33,82 @@ std::string unitSuffix(const std::string& channel) {
   return u == std::string::npos ? "" : channel.substr(u + 1);
 }
 
+bool calibratedInStudy(const Study& study, const std::string& name) {
+  return std::any_of(study.calibrated.begin(), study.calibrated.end(), [&](const CalibratedParameter& c) { return c.name == name; });
+}
+
+/// "sensors.NAME.x_m", ".y_m" or ".z_m": where a chassis sensor sits.
+bool isSensorPosition(const std::string& value) {
+  if (value.rfind("sensors.", 0) != 0 || value.size() < 13) return false;
+  const std::string tail = value.substr(value.size() - 4);
+  return tail == ".x_m" || tail == ".y_m" || tail == ".z_m";
+}
+
+/// A road-signal form's share v in words, with its 95 % interval when given.
+std::string roadFormFinding(const RoadSignalForm& f, double v, double lower, double upper) {
+  const std::string interval = std::isfinite(lower) && std::isfinite(upper)
+                                   ? " (share " + formatPrintf("%.2f", v) + ", 95 %: " + formatPrintf("%.2f", lower) + " to " + formatPrintf("%.2f", upper) + ")"
+                                   : " (share " + formatPrintf("%.2f", v) + ")";
+  const bool whole = std::isfinite(lower) && std::isfinite(upper) ? (lower <= 1.0 && upper >= 1.0) || std::abs(v - 1.0) <= 0.1
+                                                                  : std::abs(v - 1.0) <= 0.15;
+  const std::string name = f.name;
+  if (name == "road.all_at_once")
+    return whole ? "the road signal reaches all four wheels at once, the rear without the wheelbase's lag" + interval
+                 : "the rear wheels meet the road signal earlier than a wheelbase after the front ones" + interval;
+  std::string rest = "the other three wheels meet none of it";
+  if (name == "road.left_only") rest = "the right wheels meet none of it";
+  if (name == "road.right_only") rest = "the left wheels meet none of it";
+  if (whole) return std::string("the road signal behaves as ") + f.whose + " road alone: " + rest + interval;
+  return std::string("the road signal lies between the road under both axles and ") + f.whose + " road alone" + interval;
+}
+
+/// Where a sensor acts, in words: "the sensor seat acts as if it sat 1.35 m ahead of the CG,
+/// over the front axle (the study puts it 0.4 m ahead)". a, b: CG to the front and rear axle;
+/// track: the track width.
+std::string sensorPlaceFinding(const std::string& value, double v, double study_v, double a, double b, double track) {
+  const std::string sensor = value.substr(8, value.rfind('.') - 8);
+  const char axis = value[value.size() - 3];
+  auto metres = [](double x) { return formatPrintf("%.2f m", std::abs(x)); };
+  if (axis == 'x') {
+    auto where_x = [&](double x) {
+      return x >= 0 ? metres(x) + " ahead of the CG" : metres(x) + " behind the CG";
+    };
+    const double L = a + b, near = 0.1 * L;
+    std::string place;
+    if (a > 0 && b > 0) {
+      if (std::abs(v - a) <= near) place = ", over the front axle";
+      else if (v > a) place = ", ahead of the front axle";
+      else if (std::abs(v + b) <= near) place = ", over the rear axle";
+      else if (v < -b) place = ", behind the rear axle";
+      else place = ", between the axles";
+    }
+    return "the sensor " + sensor + " acts as if it sat " + where_x(v) + place + " (the study puts it " + where_x(study_v) + ")";
+  }
+  if (axis == 'y') {
+    auto where_y = [&](double y) {
+      return y == 0 ? std::string("on the centre line") : metres(y) + (y > 0 ? " left of the centre line" : " right of the centre line");
+    };
+    std::string place;
+    if (track > 0) {
+      const double h = 0.5 * track, near = 0.15 * track;
+      if (std::abs(v - h) <= near) place = ", over the left wheels";
+      else if (std::abs(v + h) <= near) place = ", over the right wheels";
+      else if (std::abs(v) > h) place = v > 0 ? ", outside the left wheels" : ", outside the right wheels";
+      else place = ", between the wheels";
+    }
+    return "the sensor " + sensor + " acts as if it sat " + where_y(v) + place + " (the study puts it " + where_y(study_v) + ")";
+  }
+  return "the sensor " + sensor + " acts as if it sat " + metres(v) + (v >= 0 ? " above" : " below") + " the CG (the study puts it " +
+         formatPrintf("%.2f m", study_v) + ")";
+}
+
+/// The road-signal form `name` ("road.fl_only"), or null.
+const RoadSignalForm* roadForm(const std::string& name) {
+  for (const auto& f : roadSignalForms())
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
 /// The freeable vehicle values `assembly` has (the solid axle's only with a solid axle).
 std::vector<std::string> freeableOf(const AssemblySpec& assembly) {
   std::vector<std::string> out;
@@ -180,10 +256,26 @@ std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpe
   for (const auto& f : cornerCandidates(study, assembly)) out.push_back(f);
   for (const auto& [group, members] : channelGroups(channels))
     for (const auto& k : sensorModelKinds()) out.push_back(k + ":" + group);
+  for (const auto& f : sensorPlaceCandidates(study, channels)) out.push_back(f);
   if (measured_road) {
     out.push_back(std::string(kFree) + kRoadGain);
     out.push_back(std::string(kFree) + kRoadDelay);
+    for (const auto& f : roadSignalForms())
+      if (!calibratedInStudy(study, f.name) && study.parameterTable().value(f.name) == 0.0) out.push_back(std::string(kFree) + f.name);
     if (assembly.option("tire") != "hub") out.push_back("tire=hub");
+  }
+  return out;
+}
+
+std::vector<std::string> sensorPlaceCandidates(const Study& study, const std::vector<std::string>& channels) {
+  std::vector<std::string> out;
+  for (const auto& x : study.sensors) {
+    if (x.corner() >= 0 || x.relative() || x.positionMeasured()) continue;
+    if (std::find(channels.begin(), channels.end(), x.channel()) == channels.end()) continue;
+    for (const char* axis : {"x_m", "y_m"}) {
+      const std::string n = "sensors." + x.name + "." + axis;
+      if (!calibratedInStudy(study, n)) out.push_back(kFree + n);
+    }
   }
   return out;
 }
@@ -285,6 +377,10 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
     range = "±0.1 s";
     lo = v - 0.1;
     hi = v + 0.1;
+  } else if (roadForm(value)) {  // a road-signal form's share: past both ends of [0, 1], so that 0 and 1 are inside
+    range = "[-0.5, 1.5]";
+    lo = -0.5;
+    hi = 1.5;
   } else if (value.rfind("sensors.", 0) == 0) {  // where a sensor sits, or its offset: absolute ranges (0 is a fine value)
     const std::string sensor = value.substr(8, value.rfind('.') - 8);
     if (value.size() > 7 && value.compare(value.size() - 7, 7, ".offset") == 0) {
@@ -298,9 +394,23 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
       lo = v - 20 * sd;
       hi = v + 20 * sd;
     } else {
-      range = "±0.5 m";
-      lo = v - 0.5;
-      hi = v + 0.5;
+      const SensorSpec* sp = nullptr;
+      for (const auto& x : study.sensors)
+        if (x.name == sensor) sp = &x;
+      const auto limit = physicalLimit(value, table);
+      if (sp && !sp->positionMeasured() && limit) {
+        // Not declared measured: anywhere within the car's body and beyond, to the physical limit
+        // (a sensor that acts as if it sat ahead of the front axle is a finding, not a bound).
+        range = "its physical limit";
+        lo = limit->lower;
+        hi = limit->upper;
+      } else {
+        // Measured: five standard deviations about the study's value, at least 5 cm.
+        const double half = std::max(0.05, 5 * (sp ? sp->position_sd_m : 0.1));
+        range = "±" + num("%g", half) + " m";
+        lo = v - half;
+        hi = v + half;
+      }
     }
   } else if (value == kCgShift) {  // a shift from the file's CG (0): ±10 % of the wheelbase, the CG between the axles
     const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
@@ -316,16 +426,26 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
   p.prior_upper = std::min(hi, valid_hi);
   if (!(p.prior_lower < p.prior_upper))
     throw InputError(where, "'" + value + "' is " + num("%.4g", v) + " " + p.unit + ": no range of " + range + " about it to search");
-  const bool input = value == kRoadGain || value == kRoadDelay;
-  c.kind = input ? "input" : "parameter";
+  const bool input = value == kRoadGain || value == kRoadDelay || roadForm(value);
+  const bool place = isSensorPosition(value);
+  c.kind = input ? "input" : place ? "place" : "parameter";
+  if (place)
+    for (const char* g : {"geometry.cg_to_front_axle_m", "geometry.cg_to_rear_axle_m", "geometry.track_m"})
+      c.geometry.push_back(table.contains(g) ? table.value(g) : 0.0);
   c.relative = factor && std::any_of(study.calibrated.begin(), study.calibrated.end(),
                                      [&](const CalibratedParameter& cp) { return cp.name == corner_factor->value; });
   c.parameters = {p};
   c.calibrated_names = {value};
-  c.signature = input ? (value == kRoadGain ? "the road signal is scaled (its gain is not 1)"
-                                            : "the road signal is shifted in time against the measured channels (a delay)")
-                      : factor ? factorSignature(*corner_factor, c.relative)
-                               : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
+  if (const RoadSignalForm* f = roadForm(value))
+    c.signature = std::string("the road signal is ") + f->whose + " road, not the road under both axles (the rear a wheelbase later)";
+  else if (place)
+    c.signature = "the sensor " + value.substr(8, value.rfind('.') - 8) + " acts where the study does not put it (" + value + " = " +
+                  num("%.4g", v) + " m): it sees another mix of heave, pitch and roll";
+  else
+    c.signature = input ? (value == kRoadGain ? "the road signal is scaled (its gain is not 1)"
+                                              : "the road signal is shifted in time against the measured channels (a delay)")
+                        : factor ? factorSignature(*corner_factor, c.relative)
+                                 : "a fixed vehicle value (" + value + " = " + num("%.4g", v) + " " + p.unit + ") is wrong";
   if (p.prior_lower > lo) c.range_note = "searched from " + num("%.4g", p.prior_lower) + ", not " + num("%.4g", lo) + " (" + why_lower + ")";
   if (p.prior_upper < hi)
     c.range_note += (c.range_note.empty() ? "searched up to " : "; up to ") + num("%.4g", p.prior_upper) + ", not " + num("%.4g", hi) +
@@ -398,7 +518,7 @@ void CandidateSpec::install(calib::CalibrationSetup& setup) const {
     EffectSetting es;
     es.name = name;
     setup.extra_effects.push_back(es);
-  } else if (kind == "parameter" || kind == "input") {
+  } else if (kind == "parameter" || kind == "input" || kind == "place") {
     if (!law_value) setup.freed.push_back(calibrated_names[0]);
   } else {
     setup.sensor_models.push_back({name, sensor_kind, channels});
@@ -433,9 +553,11 @@ std::string CandidateSpec::finding(const std::vector<double>& values, double low
   }
   if (kind == "input") {
     if (calibrated_names[0] == kRoadGain) return "the road signal looks scaled by " + num("%.3g", v) + " (its gain)";
+    if (const RoadSignalForm* f = roadForm(calibrated_names[0])) return roadFormFinding(*f, v, lower, upper);
     return "the road signal looks logged " + num("%.3g", 1e3 * std::abs(v)) + " ms " + (v >= 0 ? "late" : "early") +
            " relative to the measured channels";
   }
+  if (kind == "place") return sensorPlaceFinding(calibrated_names[0], v, parameters[0].default_value, geometry[0], geometry[1], geometry[2]);
   if (kind == "parameter" && calibrated_names[0] == kCgShift)
     return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +
            (v >= parameters[0].default_value ? "ahead of" : "behind") + " the vehicle file's position (the same wheelbase)";

@@ -14,6 +14,10 @@
 //              physicalLimit), when the data push it against a bound: "widen:chassis.mass_kg"
 //   option     another option of a subsystem, a structure rather than a force: "tire=hub" (the road
 //              signal is the hub's motion, not the road under a tire)
+//   place      where a chassis sensor acts, when the study does not declare its position measured
+//              (SensorSpec::position_sd_m): "free:sensors.seat.x_m", searched to its physical limit
+// The input kind also holds the road signal's place (twin/model.hpp roadSignalForms):
+// "free:road.fl_only" moves the signal from under both axles to the front-left wheel alone.
 // The first four have diagnosed parameters with an "off" value (the nested base model) and a
 // prior range, screened by a score test at the base optimum. A range candidate is screened by the
 // score of its value beyond the bound; an option is not nested and is always confirmed. Each
@@ -30,7 +34,7 @@ namespace dtwin::diag {
 
 struct CandidateSpec {
   std::string name;                        ///< as the user writes it (--effects, --apply)
-  std::string kind;                        ///< "effect" | "parameter" | "sensor" | "input" | "range" | "option"
+  std::string kind;                        ///< "effect" | "parameter" | "sensor" | "input" | "range" | "option" | "place"
   /// The diagnosed parameters (effects: the non-shape ones): default_value is the off value;
   /// prior_lower/upper the range a calibration searches. A range candidate: the widened value,
   /// prior_lower/upper its widened range, default_value unused (it is calibrated already, not
@@ -58,6 +62,8 @@ struct CandidateSpec {
   /// the factor reads as a ratio to the other corners (or, on an axle, to the other axle) rather
   /// than to the vehicle file's value.
   bool relative = false;
+  /// place: the CG to the front and the rear axle and the track width [m], for the finding's words.
+  std::vector<double> geometry;
   /// Adds this candidate (installed, its diagnosed parameters calibrated over their prior range).
   void install(calib::CalibrationSetup& setup) const;
   /// The finding in plain words at calibrated `values` (one per parameter): "the wheel mass is
@@ -82,11 +88,17 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
 
 /// Every candidate of the default catalogue: each effect of the study's catalogue, each freeable
 /// vehicle value the assembly has, the per-corner and per-axle factors (cornerCandidates), and
-/// each sensor model on each channel group; when `measured_road` (a data set's road is a measured
-/// signal, RoadSetting::measured), the road signal's gain and delay and, unless the assembly has
-/// it, the hub input (tire=hub).
+/// each sensor model on each channel group, the place of each sensor whose position is not declared
+/// measured (sensorPlaceCandidates); when `measured_road` (a data set's road is a measured
+/// signal, RoadSetting::measured), the road signal's gain, delay and place (each form of
+/// roadSignalForms the study leaves at 0) and, unless the assembly has it, the hub input (tire=hub).
 std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpec& assembly,
                                            const std::vector<std::string>& channels, bool measured_road = false);
+
+/// The sensor-place candidates of the default catalogue: "free:sensors.NAME.x_m" and ".y_m" for each
+/// chassis sensor whose channel is in `channels`, whose position the study does not declare
+/// measured and does not calibrate.
+std::vector<std::string> sensorPlaceCandidates(const Study& study, const std::vector<std::string>& channels);
 
 /// The per-corner and per-axle candidates of the default catalogue: the factors
 /// ("free:suspension.damping@rr"), for each value with factors that the assembly's laws have, its

@@ -243,6 +243,7 @@ std::string causeInWords(const Cause& k) {
   if (k.kind == "parameter") return "Wrong vehicle value: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "sensor") return "Sensor distortion: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "input") return "Road signal: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "place") return "Sensor place: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "range") return "Far from the prior: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "option") return "Structure: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.name.find('@') != std::string::npos) return "Missing effect at one corner: " + inWords(k.name) + " (" + k.name + ", " + evidence + ")";

@@ -498,6 +498,7 @@ std::string importedStudyText(const std::string& log_name, const ImportMapping& 
       study << " }\n";
     }
     if (x.noise_sd > 0) study << "noise_sd = " << formatExact(x.noise_sd) << "\n";
+    if (x.positionMeasured()) study << "position_sd_m = " << formatExact(x.position_sd_m) << "\n";
   }
   return study.str();
 }

@@ -406,6 +406,11 @@ std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<Sen
       fr.finish();
     }
     x.noise_sd = r.number("noise_sd", 0.0);
+    if (r.has("position_sd_m")) {
+      x.position_sd_m = r.number("position_sd_m", -1.0);
+      if (!(x.position_sd_m >= 0.0))  // a negative number would read as "not declared"
+        throw InputError(r.where("position_sd_m"), "must be a finite number of metres in [0, 10], got " + formatNumber(x.position_sd_m));
+    }
     r.finish();
     try {
       x.validate(field);

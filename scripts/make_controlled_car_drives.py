@@ -61,12 +61,35 @@ if PASSIVE:
     HIDDEN_SKYHOOK = 0.0
     TIRE = "pac2002"
 SEAT = [0.4, -0.35, 0.25]                  # the accelerometer, where the mapping says it is
+# --corner: a car whose road signal is one corner's (the front-left wheel's motion; the other
+# wheels meet no signal: the twin's road.fl_only = 1), whose accelerometer sits over the
+# front-left wheel where nobody wrote it down (the study puts it near the CG), with a skyhook;
+# --feedforward: the same car with a feed-forward controller (road_feedforward) instead of the
+# skyhook (corner_car_*.csv, feedforward_car_*.csv; docs/measurements.md, "A sensor nobody placed").
+CORNER = "--corner" in sys.argv
+FEEDFORWARD = "--feedforward" in sys.argv
+HIDDEN_FEEDFORWARD = -1800.0               # N s/m: a force against the road's push (tau at its default 0.02 s)
+HIDDEN_FORMS = {}
+if CORNER or FEEDFORWARD:
+    HIDDEN_VALUES = {
+        "chassis.mass_kg": 2300.0,             # weighed (the study enters it)
+        "chassis.pitch_inertia_kgm2": 2700.0,
+        "chassis.roll_inertia_kgm2": 650.0,
+        "chassis.yaw_inertia_kgm2": 3200.0,
+        "suspension.stiffness": 38000.0,
+        "suspension.damping": 1700.0,
+    }
+    HIDDEN_SKYHOOK = 0.0 if FEEDFORWARD else 2200.0
+    HIDDEN_FORMS = {"road.fl_only": 1.0}   # the signal is the front-left wheel's alone
+    TIRE = "hub"
+    # Over the front-left wheel: the sedan's CG-to-front-axle distance and half its track.
+    SEAT = [1.515, 0.775, 0.25]
 ROLL_IN_TURN = 0.08                        # vertical acceleration at the sensor per m/s^2 of lateral acceleration
 ACCURACY = "1e-8"
-ARGS = [a for a in sys.argv[1:] if a != "--passive"]
+ARGS = [a for a in sys.argv[1:] if a not in ("--passive", "--corner", "--feedforward")]
 TWIN = ARGS[0] if len(ARGS) > 0 else "./build/cli/twin"
 OUT = ARGS[1] if len(ARGS) > 1 else "data/drives"
-PREFIX = "passive_car" if PASSIVE else "controlled_car"
+PREFIX = "passive_car" if PASSIVE else "feedforward_car" if FEEDFORWARD else "corner_car" if CORNER else "controlled_car"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 DRIVES = {
@@ -117,9 +140,12 @@ road = {{ type = "iso8608", class = "{road_class}", band_cycles_per_m = [0.05, 1
 [sensors.seat]
 position_m = [{SEAT[0]}, {SEAT[1]}, {SEAT[2]}]
 quantity = "acceleration_z"
-""" + ("" if PASSIVE else f"""
+""" + ("" if HIDDEN_SKYHOOK == 0.0 else f"""
 [effects.skyhook]
 damping = {HIDDEN_SKYHOOK}
+""") + ("" if not FEEDFORWARD else f"""
+[effects.road_feedforward]
+gain = {HIDDEN_FEEDFORWARD}
 """) + """
 [fixed]
 """ + "".join(f'"{k}" = {v}\n' for k, v in HIDDEN_VALUES.items() if not k.startswith(("suspension.", "tire."))) + """
@@ -135,11 +161,12 @@ def main():
     work = tempfile.mkdtemp(prefix=f"dtwin_{PREFIX}_")
     study = generating_study(work)
     sets = [f"--set={k}={v}" for k, v in HIDDEN_VALUES.items() if k.startswith(("suspension.", "tire."))]
+    sets += [f"--set={k}={v}" for k, v in HIDDEN_FORMS.items()]
     os.makedirs(OUT, exist_ok=True)
     g = 9.80665
     for name, (duration, knots, road_class, seed, turns) in DRIVES.items():
-        if PASSIVE and name == "c":
-            continue  # the null case needs the two walkthrough drives only
+        if (PASSIVE or CORNER or FEEDFORWARD) and name == "c":
+            continue  # the null case and the variants need the two walkthrough drives only
         rng = random.Random(seed)
         trace = os.path.join(work, f"truth_{name}.csv")
         subprocess.run([TWIN, "simulate", "--study", study, "--assembly", "M1", "--scenario", f"truth_{name}", "--seed", str(seed),

@@ -38,7 +38,7 @@ diag::CandidateSpec freedValueSpec(const Study& study, const AssemblySpec& assem
   const std::string where = OptionCheck("calibrate").where("free");
   if (value.rfind("free:", 0) == 0) throw InputError(where, "'" + value + "': give the value's name alone (" + value.substr(5) + ")");
   auto spec = diag::candidateSpec("free:" + value, study, assembly, {}, where);
-  if (spec.kind != "parameter" && spec.kind != "input") throw InputError(where, "'" + value + "' is not a fixed value that can be freed");
+  if (spec.kind != "parameter" && spec.kind != "input" && spec.kind != "place") throw InputError(where, "'" + value + "' is not a fixed value that can be freed");
   return spec;
 }
 

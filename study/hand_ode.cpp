@@ -89,6 +89,9 @@ HandOde::HandOde(const Model& m, std::vector<double> values, const Road& road, c
     throw InputError("assembly " + m.assembly().id, "the hand-written ODE models a tire under the road, not the '" + m.tire().name() + "' input");
   if (values_[static_cast<std::size_t>(m.roadGainSlot())] != 1.0 || values_[static_cast<std::size_t>(m.roadDelaySlot())] != 0.0)
     throw InputError("run parameters", "the hand-written ODE reads the road as logged (road.gain 1, road.delay_s 0)");
+  for (std::size_t f = 0; f < roadSignalForms().size(); ++f)
+    if (values_[static_cast<std::size_t>(m.roadFormSlot()) + f] != 0.0)
+      throw InputError("run parameters", std::string("the hand-written ODE reads the road under both axles (") + roadSignalForms()[f].name + " 0)");
   for (int c = 0; c < 4; ++c)
     if (!m.strutFactors()[static_cast<std::size_t>(c)].empty() || !m.tireFactors()[static_cast<std::size_t>(c)].empty())
       throw InputError("assembly " + m.assembly().id, "the hand-written ODE has the same struts and tires at every corner (no per-corner factors)");

@@ -77,6 +77,10 @@ void SensorSpec::validate(const std::string& where) const {
     throw InputError(where + ".filter.damping", "must lie in (0, 10], got " + formatNumber(filter.damping));
   if (!(std::isfinite(noise_sd) && noise_sd >= 0))
     throw InputError(where + ".noise_sd", "must be a finite number >= 0, got " + formatNumber(noise_sd));
+  if (positionMeasured() && !(std::isfinite(position_sd_m) && position_sd_m <= 10.0))
+    throw InputError(where + ".position_sd_m", "must be a finite number of metres in [0, 10], got " + formatNumber(position_sd_m));
+  if (positionMeasured() && corner() >= 0)
+    throw InputError(where + ".position_sd_m", "a wheel sensor sits at the wheel centre: only a chassis sensor's position is declared measured");
 }
 
 nlohmann::json SensorSpec::toJson() const {
@@ -84,6 +88,7 @@ nlohmann::json SensorSpec::toJson() const {
                       {"quantity", sensorQuantityName(quantity)}, {"filter", filter.toJson()}};
   if (corner() < 0) j["position_m"] = position_m;
   if (noise_sd > 0) j["noise_sd"] = noise_sd;
+  if (positionMeasured()) j["position_sd_m"] = position_sd_m;
   return j;
 }
 

@@ -38,6 +38,11 @@ struct SensorSpec {
   /// Standard deviation of the sensor's noise in its unit (0: unknown). Weighs the channel when
   /// the data have a single repetition (docs/diagnosis.md, "Noise").
   double noise_sd = 0.0;
+  /// A chassis sensor's position measured, with this standard deviation [m] per coordinate
+  /// (`position_sd_m` in the study); negative: not declared measured, so `twin diagnose` weighs
+  /// where the sensor acts as candidates (docs/diagnosis.md, "Where a sensor sits").
+  double position_sd_m = -1.0;
+  bool positionMeasured() const { return position_sd_m >= 0.0; }
 
   /// A relative sensor: travel or its rate (between the chassis and the wheel of `mount`).
   bool relative() const { return quantity == SensorQuantity::Travel || quantity == SensorQuantity::TravelRate; }
@@ -49,7 +54,7 @@ struct SensorSpec {
   int corner() const;
   /// InputError(where + ".<field>", rule) for a bad name, mount, position (a wheel sensor sits at
   /// the wheel centre: position must be 0), a travel sensor not on a wheel, filter (order 0-2; 0 < cutoff_hz <= 1e4; 0 < ζ <= 10)
-  /// or noise_sd (finite, >= 0).
+  /// noise_sd (finite, >= 0) or position_sd_m (finite, >= 0 when declared; a chassis sensor's only).
   void validate(const std::string& where) const;
   nlohmann::json toJson() const;
 };

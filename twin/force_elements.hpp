@@ -29,6 +29,26 @@ struct RunContext {
   double heave0 = 0.0, pitch0 = 0.0, roll0 = 0.0;
   /// Run slots of the road signal's gain and delay (Model::roadGainSlot, roadDelaySlot).
   std::size_t gain_slot = 0, delay_slot = 0;
+  /// The run slot of the first road-signal form (Model::roadFormSlot; roadSignalForms() order).
+  std::size_t form_slot = 0;
+  double wheelbase = 0.0;
+  /// Where corner `c` meets the road signal (roadSignalForms): the signal's weight there (gain
+  /// included) and how far ahead [m] it reads the signal. At every form's default (0) exactly
+  /// the gain and no read-ahead.
+  void signalAt(int c, double& weight, double& ahead_m) const {
+    weight = p[gain_slot];
+    ahead_m = 0.0;
+    const auto& forms = roadSignalForms();
+    double w = 1.0, lag = 0.0;
+    for (std::size_t f = 0; f < forms.size(); ++f) {
+      const double l = p[form_slot + f];
+      if (l == 0.0) continue;
+      w += l * (forms[f].weight[c] - 1.0);
+      lag += l * forms[f].no_lag[c];
+    }
+    if (w != 1.0) weight *= w;
+    if (lag != 0.0) ahead_m = lag * wheelbase;
+  }
 };
 
 struct TireEval {
@@ -54,7 +74,7 @@ struct TireCorner {
   /// see eval) and the forward speed of that point along the signal (hub_xd: the hub's own).
   static void signalPoint(const RunContext& c, double t, double x_road, double hub_xd, double& x, double& contact_speed) {
     const double delay = c.p[c.delay_slot];
-    x = x_road;
+    x = x_road;  // the form's read-ahead is in x_road already (eval, roadRate)
     if (delay == 0.0) {
       contact_speed = c.speed.speed(t) + hub_xd;
       return;
@@ -65,9 +85,10 @@ struct TireCorner {
   /// The road signal's vertical velocity under the wheel (gain and delay applied, before
   /// tire-input effects) [m/s]: what a road-velocity feed-forward reads.
   double roadRate(const RunContext& c, double t, double hub_x, double hub_xd) const {
-    double x = 0.0, contact_speed = 0.0;
-    signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a, hub_xd, x, contact_speed);
-    return c.p[c.gain_slot] * c.road->sample(cornerTrack(corner), x).slope * contact_speed;
+    double x = 0.0, contact_speed = 0.0, weight = 1.0, ahead = 0.0;
+    c.signalAt(corner, weight, ahead);
+    signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a + ahead, hub_xd, x, contact_speed);
+    return weight * c.road->sample(cornerTrack(corner), x).slope * contact_speed;
   }
   TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
     TireEval e;
@@ -79,9 +100,10 @@ struct TireCorner {
     // The road signal's delay d relative to the measured channels (positive: logged late) and its
     // gain g: the wheel meets g h(x + s(t + d) - s(t)), read ahead by the distance travelled in d
     // (docs/model.md, "The road signal's gain and delay"). At d = 0 and g = 1 exactly the road.
-    const double gain = c.p[c.gain_slot];
+    double gain = 1.0, ahead = 0.0;
+    c.signalAt(corner, gain, ahead);
     double x = 0.0, contact_speed = 0.0;
-    signalPoint(c, t, e.x_road, hub_xd, x, contact_speed);
+    signalPoint(c, t, e.x_road + ahead, hub_xd, x, contact_speed);
     RoadSample rs = c.road->sample(tr, x);
     e.road_h = rs.height_m;  // the road under the wheel, before tire-input effects
     for (auto& [eff, s] : filters) rs = eff->filterRoad(*c.road, tr, x, ParamValues(c.p + s, eff->parameters().size()));

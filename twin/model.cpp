@@ -67,6 +67,21 @@ const Registry<SuspensionTopology>& suspensionOptions() {
   return r;
 }
 
+const std::vector<RoadSignalForm>& roadSignalForms() {
+  // Per corner (fl, fr, rl, rr): the weight of the signal at the form, and whether the corner
+  // reads it without the wheelbase's lag (a rear wheel that is itself the signal's place).
+  static const std::vector<RoadSignalForm> forms = {
+      {"road.fl_only", "the front-left wheel's", "share of the way to the road signal at the front-left wheel alone (0: under both axles)", {1, 0, 0, 0}, {0, 0, 0, 0}},
+      {"road.fr_only", "the front-right wheel's", "share of the way to the road signal at the front-right wheel alone (0: under both axles)", {0, 1, 0, 0}, {0, 0, 0, 0}},
+      {"road.rl_only", "the rear-left wheel's", "share of the way to the road signal at the rear-left wheel alone, without the wheelbase's lag (0: under both axles)", {0, 0, 1, 0}, {0, 0, 1, 0}},
+      {"road.rr_only", "the rear-right wheel's", "share of the way to the road signal at the rear-right wheel alone, without the wheelbase's lag (0: under both axles)", {0, 0, 0, 1}, {0, 0, 0, 1}},
+      {"road.left_only", "the left track's", "share of the way to the road signal under the left wheels alone, the rear a wheelbase later (0: under both axles)", {1, 0, 1, 0}, {0, 0, 0, 0}},
+      {"road.right_only", "the right track's", "share of the way to the road signal under the right wheels alone, the rear a wheelbase later (0: under both axles)", {0, 1, 0, 1}, {0, 0, 0, 0}},
+      {"road.all_at_once", "every wheel's at once", "share of the way to the same road signal at all four wheels at once, the rear without the wheelbase's lag (0: the rear a wheelbase later)", {1, 1, 1, 1}, {0, 0, 1, 1}},
+  };
+  return forms;
+}
+
 const std::map<std::string, std::vector<std::string>>& knownSubsystems() {
   static const std::map<std::string, std::vector<std::string>> k = [] {
     const std::vector<std::string> susp = suspensionOptions().names();
@@ -104,6 +119,16 @@ ParameterTable declareVehicleParameters(const EffectCatalog& catalog) {
     d.max_value = 1.0;
     t.declare(d);
     t.set("road.delay_s", 0.0, "default (the road as logged)", "");
+  }
+  // Where the road signal enters (docs/model.md, "Where the road signal is"): each form's share
+  // λ moves the run from the axle form (0: the signal under the front wheels, the rear a
+  // wheelbase later) towards that form (1). Not in a vehicle file; a study may fix them and a
+  // diagnosis weighs them.
+  for (const RoadSignalForm& f : roadSignalForms()) {
+    ParameterSpec d = fixedSpec(f.name, "1", f.description, -1.0, true);
+    d.max_value = 2.0;
+    t.declare(d);
+    t.set(f.name, 0.0, "default (the signal under the front axle, the rear a wheelbase later)", "");
   }
   fixed("wheel.mass_kg", "kg", "wheel (unsprung) mass, each");
   fixed("solid_axle.mass_kg", "kg", "axle beam mass (solid axle only), each axle");
@@ -218,6 +243,13 @@ std::optional<PhysicalLimit> physicalLimit(const std::string& name, const Parame
       {"solid_axle.mass_kg", {10.0, 400.0, "axle beams"}},
       {"road.gain", {0.1, 10.0, "a road signal off by more than a factor of 10 is no estimate of the road"}},
       {"road.delay_s", {-0.5, 0.5, "a logger's channels more than 0.5 s apart are not one record"}},
+      {"road.fl_only", {-0.5, 1.5, "a share of the way from the axle form to the form"}},
+      {"road.fr_only", {-0.5, 1.5, "a share of the way from the axle form to the form"}},
+      {"road.rl_only", {-0.5, 1.5, "a share of the way from the axle form to the form"}},
+      {"road.rr_only", {-0.5, 1.5, "a share of the way from the axle form to the form"}},
+      {"road.left_only", {-0.5, 1.5, "a share of the way from the axle form to the form"}},
+      {"road.right_only", {-0.5, 1.5, "a share of the way from the axle form to the form"}},
+      {"road.all_at_once", {-0.5, 1.5, "a share of the way from the axle form to the form"}},
   };
   if (const auto it = limits.find(name); it != limits.end()) return it->second;
   if (parseCornerFactor(name))
@@ -324,6 +356,10 @@ Model::Model(AssemblySpec assembly, ParameterTable table, const std::string& whe
   }
   road_gain_slot_ = addRunParameter("road.gain");  // last: every other slot keeps its place
   road_delay_slot_ = addRunParameter("road.delay_s");
+  for (const RoadSignalForm& f : roadSignalForms()) {
+    const int slot = addRunParameter(f.name);
+    if (road_form_slot_ < 0) road_form_slot_ = slot;
+  }
   for (const auto& n : run_names_) need(n);
   const std::string rule = checkRunValues(defaultRunValues());
   if (!rule.empty()) throw InputError(where, rule);

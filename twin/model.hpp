@@ -49,6 +49,21 @@ const std::vector<std::string>& freeableVehicleParameters();
 /// The suspension options (the `suspension` subsystem's), each a mobilizer layout.
 const Registry<SuspensionTopology>& suspensionOptions();
 
+/// A place of the road signal other than the axle form (the signal under the front wheels, the
+/// rear a wheelbase later): a run parameter λ (0: the axle form, 1: this form) that moves every
+/// corner's weight of the signal from 1 towards `weight` and reads the signal ahead by λ times the
+/// wheelbase at the corners whose `no_lag` is 1 (docs/model.md, "Where the road signal is").
+/// Forms add: corner c meets the signal with weight 1 + Σ λ_f (weight_f[c] − 1), read ahead by
+/// the wheelbase times Σ λ_f no_lag_f[c].
+struct RoadSignalForm {
+  const char* name;         ///< "road.fl_only"
+  const char* whose;        ///< "the front-left wheel's": the signal, in words
+  const char* description;
+  double weight[4];         ///< fl, fr, rl, rr at λ = 1
+  double no_lag[4];
+};
+const std::vector<RoadSignalForm>& roadSignalForms();
+
 /// Subsystems and options the twin knows.
 const std::map<std::string, std::vector<std::string>>& knownSubsystems();
 
@@ -167,6 +182,8 @@ class Model {
   /// parameters of every model: a calibration or a diagnosis may find them (docs/model.md).
   int roadGainSlot() const { return road_gain_slot_; }
   int roadDelaySlot() const { return road_delay_slot_; }
+  /// The run slot of roadSignalForms()[0]; the others follow in their order.
+  int roadFormSlot() const { return road_form_slot_; }
 
   /// A law parameter scaled at one corner: its index in the law's parameters() and the run slot
   /// of a factor on it (docs/model.md, "Per-corner and per-axle values").
@@ -216,7 +233,7 @@ class Model {
   std::map<std::string, int> slots_;
   std::vector<int> tire_slots_, susp_slots_, iface_slots_;
   int iface_preload_slot_ = -1;
-  int road_gain_slot_ = -1, road_delay_slot_ = -1;
+  int road_gain_slot_ = -1, road_delay_slot_ = -1, road_form_slot_ = -1;
   std::vector<std::vector<int>> effect_slots_;
   std::vector<int> effect_corners_;
   std::vector<int> freed_slots_;

@@ -271,7 +271,9 @@ struct Simulator::Impl {
       const double rho = M.tire().calcStaticDeflection(load[c], tires[c].values(ctx, buf));
       const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
       const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
-      target[c] = ctx.p[ctx.gain_slot] * ctx.road->sample(cornerTrack(c), x_road + shift).height_m + R0 - rho;
+      double weight = 1.0, ahead = 0.0;
+      ctx.signalAt(c, weight, ahead);
+      target[c] = weight * ctx.road->sample(cornerTrack(c), x_road + ahead + shift).height_m + R0 - rho;
       if (M.topology() == SuspensionTopology::SolidAxle) {
         const double* p = ctx.p;
         const double k = p[M.interfaceSlots()[0]], F0 = p[M.interfacePreloadSlot()];
@@ -353,6 +355,8 @@ struct Simulator::Impl {
     ctx.speed = sc.speed;
     ctx.gain_slot = static_cast<std::size_t>(M.roadGainSlot());
     ctx.delay_slot = static_cast<std::size_t>(M.roadDelaySlot());
+    ctx.form_slot = static_cast<std::size_t>(M.roadFormSlot());
+    ctx.wheelbase = M.vehicle().wheelbase();
   }
 
   /// The branch time of a random road with a smooth start (smooth_until_s - margin), or a

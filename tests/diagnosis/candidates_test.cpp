@@ -128,12 +128,15 @@ TEST(Candidates, ASensorsPositionAndOffsetGetAbsoluteRanges) {
                             .string());
   const AssemblySpec a = s.assemblies().front();
   const std::vector<std::string> ch{"seat_mps2", "bare_mps2"};
+  // Not declared measured: searched to the physical limit (a place, not a wrong vehicle value).
   const auto y = candidateSpec("free:sensors.seat.y_m", s, a, ch, "t");
   ASSERT_EQ(y.parameters.size(), 1u);
-  EXPECT_DOUBLE_EQ(y.parameters[0].prior_lower, -0.5);
-  EXPECT_DOUBLE_EQ(y.parameters[0].prior_upper, 0.5);
+  EXPECT_EQ(y.kind, "place");
+  EXPECT_DOUBLE_EQ(y.parameters[0].prior_lower, -1.3);
+  EXPECT_DOUBLE_EQ(y.parameters[0].prior_upper, 1.3);
   const auto x = candidateSpec("free:sensors.seat.x_m", s, a, ch, "t");
-  EXPECT_DOUBLE_EQ(x.parameters[0].prior_lower, 0.4);
+  EXPECT_DOUBLE_EQ(x.parameters[0].prior_lower, -4.0);
+  EXPECT_DOUBLE_EQ(x.parameters[0].prior_upper, 4.0);
   const auto off = candidateSpec("free:sensors.seat.offset", s, a, ch, "t");
   EXPECT_DOUBLE_EQ(off.parameters[0].prior_lower, -0.6);
   EXPECT_DOUBLE_EQ(off.parameters[0].prior_upper, 0.6);
@@ -283,4 +286,72 @@ TEST(Candidates, APerCornerFactorIsACandidateWhenNamed) {
   EXPECT_EQ(with.predict(th), raw);
   th.back() = 0.5;
   EXPECT_NE(with.predict(th), raw);
+}
+
+// Where a sensor sits (docs/diagnosis.md, "Where a sensor sits"): a chassis sensor of a fitted
+// channel whose position is not declared measured has its fore-aft and lateral place among the
+// default candidates; a measured one is searched five of its standard deviations about the
+// study's value when named, and is no default candidate; the finding names the place against the
+// axles and the wheels.
+TEST(Candidates, ASensorWhosePositionIsNotDeclaredMeasuredHasItsPlaceAsCandidates) {
+  const Study s = loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("cands_place") / "study.toml",
+                                                       "\n[sensors.seat]\nquantity = \"acceleration_z\"\nposition_m = [0.0, 0.0, 0.3]\n"
+                                                       "[sensors.known]\nquantity = \"acceleration_z\"\nposition_m = [0.5, 0.2, 0.3]\n"
+                                                       "position_sd_m = 0.02\n")
+                            .string());
+  const AssemblySpec a = s.assemblies().front();
+  const std::vector<std::string> ch{"seat_mps2", "known_mps2"};
+  const auto names = defaultCandidates(s, a, ch);
+  auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
+  EXPECT_TRUE(has("free:sensors.seat.x_m"));
+  EXPECT_TRUE(has("free:sensors.seat.y_m"));
+  EXPECT_FALSE(has("free:sensors.seat.z_m"));
+  EXPECT_FALSE(has("free:sensors.known.x_m"));
+  // Not fitted: no candidate.
+  const auto only_known = defaultCandidates(s, a, {"known_mps2"});
+  EXPECT_EQ(std::count(only_known.begin(), only_known.end(), "free:sensors.seat.x_m"), 0);
+  const auto known = candidateSpec("free:sensors.known.x_m", s, a, ch, "t");
+  EXPECT_DOUBLE_EQ(known.parameters[0].prior_lower, 0.4);
+  EXPECT_DOUBLE_EQ(known.parameters[0].prior_upper, 0.6);
+  // The finding: the sedan's front axle is 1.515 m ahead of the CG, its track 1.55 m.
+  const auto x = candidateSpec("free:sensors.seat.x_m", s, a, ch, "t");
+  EXPECT_EQ(x.finding({1.49}), "the sensor seat acts as if it sat 1.49 m ahead of the CG, over the front axle (the study puts it 0.00 m ahead of the CG)");
+  EXPECT_EQ(x.finding({2.4}), "the sensor seat acts as if it sat 2.40 m ahead of the CG, ahead of the front axle (the study puts it 0.00 m ahead of the CG)");
+  EXPECT_EQ(x.finding({-0.5}), "the sensor seat acts as if it sat 0.50 m behind the CG, between the axles (the study puts it 0.00 m ahead of the CG)");
+  const auto y = candidateSpec("free:sensors.seat.y_m", s, a, ch, "t");
+  EXPECT_EQ(y.finding({0.77}), "the sensor seat acts as if it sat 0.77 m left of the centre line, over the left wheels (the study puts it on the centre line)");
+  EXPECT_EQ(y.finding({-0.1}), "the sensor seat acts as if it sat 0.10 m right of the centre line, between the wheels (the study puts it on the centre line)");
+  // A calibrated position is no candidate either.
+  EXPECT_THROW((void)loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("cands_place_bad") / "study.toml",
+                                                          "\n[sensors.w]\nbody = \"wheel_fl\"\nquantity = \"acceleration_z\"\n"
+                                                          "position_sd_m = 0.02\n")
+                                   .string()),
+               InputError);
+}
+
+// Where the road signal enters (twin/model.hpp roadSignalForms): each form is an input candidate
+// when a road is a measured signal, searched over [-0.5, 1.5], and its finding says the place.
+TEST(Candidates, TheRoadSignalsFormsAreInputCandidatesOfAMeasuredRoad) {
+  const Study s = demo();
+  const AssemblySpec a = s.assemblies().front();
+  const auto plain = defaultCandidates(s, a, kHub, false);
+  EXPECT_EQ(std::count(plain.begin(), plain.end(), "free:road.fl_only"), 0);
+  const auto measured = defaultCandidates(s, a, kHub, true);
+  for (const auto& f : roadSignalForms()) EXPECT_EQ(std::count(measured.begin(), measured.end(), std::string("free:") + f.name), 1) << f.name;
+  const auto fl = candidateSpec("free:road.fl_only", s, a, kHub, "t");
+  EXPECT_EQ(fl.kind, "input");
+  EXPECT_DOUBLE_EQ(fl.parameters[0].default_value, 0.0);
+  EXPECT_DOUBLE_EQ(fl.parameters[0].prior_lower, -0.5);
+  EXPECT_DOUBLE_EQ(fl.parameters[0].prior_upper, 1.5);
+  EXPECT_EQ(fl.finding({0.99}, 0.97, 1.01),
+            "the road signal behaves as the front-left wheel's road alone: the other three wheels meet none of it (share 0.99, 95 %: 0.97 to 1.01)");
+  EXPECT_EQ(fl.finding({0.5}, 0.45, 0.55),
+            "the road signal lies between the road under both axles and the front-left wheel's road alone (share 0.50, 95 %: 0.45 to 0.55)");
+  const auto all = candidateSpec("free:road.all_at_once", s, a, kHub, "t");
+  EXPECT_EQ(all.finding({1.0}), "the road signal reaches all four wheels at once, the rear without the wheelbase's lag (share 1.00)");
+  calib::CalibrationSetup setup;
+  fl.install(setup);
+  ASSERT_EQ(setup.extra_calibrated.size(), 1u);
+  EXPECT_EQ(setup.extra_calibrated[0].name, "road.fl_only");
+  EXPECT_TRUE(setup.freed.empty());  // a run parameter already: no rebuild
 }

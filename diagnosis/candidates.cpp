@@ -14,6 +14,7 @@ namespace {
 
 constexpr const char* kFree = "free:";
 constexpr const char* kWiden = "widen:";
+constexpr const char* kPlace = "place:";
 constexpr const char* kRoadGain = "road.gain";
 constexpr const char* kRoadDelay = "road.delay_s";
 
@@ -100,6 +101,31 @@ std::string sensorPlaceFinding(const std::string& value, double v, double study_
   }
   return "the sensor " + sensor + " acts as if it sat " + metres(v) + (v >= 0 ? " above" : " below") + " the CG (the study puts it " +
          formatPrintf("%.2f m", study_v) + ")";
+}
+
+/// Where a sensor acts in both coordinates, in words: "the sensor seat acts as if it sat 1.52 m
+/// ahead of the CG and 0.78 m left of the centre line: over the front-left wheel (the study puts it
+/// 0.00 m ahead of the CG, on the centre line)".
+std::string sensorCornerFinding(const std::string& sensor, double x, double y, double study_x, double study_y, double a, double b,
+                                double track) {
+  auto fore = [](double v) { return formatPrintf("%.2f m", std::abs(v)) + (v >= 0 ? " ahead of the CG" : " behind the CG"); };
+  auto across = [](double v) {
+    return v == 0 ? std::string("on the centre line") : formatPrintf("%.2f m", std::abs(v)) + (v > 0 ? " left of the centre line" : " right of the centre line");
+  };
+  std::string place;
+  if (a > 0 && b > 0 && track > 0) {
+    const double L = a + b, h = 0.5 * track;
+    const bool front = std::abs(x - a) <= 0.1 * L, rear = std::abs(x + b) <= 0.1 * L;
+    const bool left = std::abs(y - h) <= 0.15 * track, right = std::abs(y + h) <= 0.15 * track, centre = std::abs(y) <= 0.15 * track;
+    const std::string axle = front ? "front" : rear ? "rear" : "";
+    if (!axle.empty() && (left || right)) place = "over the " + axle + "-" + (left ? "left" : "right") + " wheel";
+    else if (!axle.empty() && centre) place = "over the middle of the " + axle + " axle";
+    else if (!axle.empty()) place = "over the " + axle + " axle";
+    else if (left || right) place = std::string("over the ") + (left ? "left" : "right") + " wheels' line, " + (x > a ? "ahead of the front axle" : x < -b ? "behind the rear axle" : "between the axles");
+    else place = x > a ? "ahead of the front axle" : x < -b ? "behind the rear axle" : "between the axles";
+  }
+  return "the sensor " + sensor + " acts as if it sat " + fore(x) + " and " + across(y) + (place.empty() ? "" : ": " + place) +
+         " (the study puts it " + fore(study_x) + ", " + across(study_y) + ")";
 }
 
 /// The road-signal form `name` ("road.fl_only"), or null.
@@ -201,6 +227,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(cons
 bool hasCandidateForm(const std::string& name) {
   if (name.rfind(kFree, 0) == 0) return name.size() > std::string(kFree).size();
   if (name.rfind(kWiden, 0) == 0) return name.size() > std::string(kWiden).size();
+  if (name.rfind(kPlace, 0) == 0) return name.size() > std::string(kPlace).size();
   if (const auto eq = name.find('='); eq != std::string::npos) return eq > 0 && eq + 1 < name.size();
   const auto colon = name.find(':');
   if (colon != std::string::npos) {
@@ -272,10 +299,13 @@ std::vector<std::string> sensorPlaceCandidates(const Study& study, const std::ve
   for (const auto& x : study.sensors) {
     if (x.corner() >= 0 || x.relative() || x.positionMeasured()) continue;
     if (std::find(channels.begin(), channels.end(), x.channel()) == channels.end()) continue;
-    for (const char* axis : {"x_m", "y_m"}) {
-      const std::string n = "sensors." + x.name + "." + axis;
-      if (!calibratedInStudy(study, n)) out.push_back(kFree + n);
-    }
+    const std::string p = "sensors." + x.name + ".";
+    const bool fx = calibratedInStudy(study, p + "x_m"), fy = calibratedInStudy(study, p + "y_m");
+    // Fore-aft and across together: where a sensor acts against the road input is one place
+    // (over a corner, over an axle); one of them alone when the study calibrates the other.
+    if (!fx && !fy) out.push_back(kPlace + x.name);
+    else if (!fx) out.push_back(kFree + p + "x_m");
+    else if (!fy) out.push_back(kFree + p + "y_m");
   }
   return out;
 }
@@ -457,6 +487,29 @@ CandidateSpec freeCandidate(const std::string& name, const Study& study, const A
   return c;
 }
 
+/// Where a chassis sensor acts, fore-aft and across together (place:NAME): its x and y freed as one
+/// candidate, each over the range freeCandidate gives it.
+CandidateSpec placeCandidate(const std::string& name, const Study& study, const AssemblySpec& assembly, const std::string& where) {
+  const std::string sensor = name.substr(std::string(kPlace).size());
+  std::vector<std::string> known;
+  const SensorSpec* sp = nullptr;
+  for (const auto& x : study.sensors)
+    if (x.corner() < 0 && !x.relative()) {
+      known.push_back(x.name);
+      if (x.name == sensor) sp = &x;
+    }
+  if (!sp) throw InputError(where, unknownNameRule("chassis sensor (place: takes a [sensors] table's name on the chassis)", sensor, known));
+  const CandidateSpec x = freeCandidate("free:sensors." + sensor + ".x_m", study, assembly, where);
+  const CandidateSpec y = freeCandidate("free:sensors." + sensor + ".y_m", study, assembly, where);
+  CandidateSpec c = x;
+  c.name = name;
+  c.parameters.push_back(y.parameters[0]);
+  c.calibrated_names.push_back(y.calibrated_names[0]);
+  c.signature = "the sensor " + sensor + " acts where the study does not put it (at " + num("%.3g", x.parameters[0].default_value) + ", " +
+                num("%.3g", y.parameters[0].default_value) + " m from the CG): it sees another mix of heave, pitch and roll";
+  return c;
+}
+
 /// A sensor model on a channel group (KIND:GROUP).
 CandidateSpec sensorCandidate(const std::string& name, const std::vector<std::string>& channels, const std::string& where) {
   CandidateSpec c;
@@ -489,6 +542,7 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study, const A
   if (name.find('=') != std::string::npos) return optionCandidate(name, assembly, where);
   if (name.rfind(kFree, 0) == 0) return freeCandidate(name, study, assembly, where);
   const auto colon = name.find(':');
+  if (name.rfind(kPlace, 0) == 0) return placeCandidate(name, study, assembly, where);
   if (colon != std::string::npos) return sensorCandidate(name, channels, where);
   const auto effect = study.effectCatalog().make(name, where);  // InputError naming the known effects
   c.kind = "effect";
@@ -557,6 +611,9 @@ std::string CandidateSpec::finding(const std::vector<double>& values, double low
     return "the road signal looks logged " + num("%.3g", 1e3 * std::abs(v)) + " ms " + (v >= 0 ? "late" : "early") +
            " relative to the measured channels";
   }
+  if (kind == "place" && values.size() == 2)
+    return sensorCornerFinding(name.substr(std::string(kPlace).size()), values[0], values[1], parameters[0].default_value,
+                               parameters[1].default_value, geometry[0], geometry[1], geometry[2]);
   if (kind == "place") return sensorPlaceFinding(calibrated_names[0], v, parameters[0].default_value, geometry[0], geometry[1], geometry[2]);
   if (kind == "parameter" && calibrated_names[0] == kCgShift)
     return "the sprung CG lies about " + num("%.3g", std::abs(v - parameters[0].default_value)) + " m " +

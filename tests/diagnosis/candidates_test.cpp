@@ -303,13 +303,23 @@ TEST(Candidates, ASensorWhosePositionIsNotDeclaredMeasuredHasItsPlaceAsCandidate
   const std::vector<std::string> ch{"seat_mps2", "known_mps2"};
   const auto names = defaultCandidates(s, a, ch);
   auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
-  EXPECT_TRUE(has("free:sensors.seat.x_m"));
-  EXPECT_TRUE(has("free:sensors.seat.y_m"));
-  EXPECT_FALSE(has("free:sensors.seat.z_m"));
-  EXPECT_FALSE(has("free:sensors.known.x_m"));
+  EXPECT_TRUE(has("place:seat"));
+  EXPECT_FALSE(has("free:sensors.seat.x_m"));  // fore-aft and across as one place
+  EXPECT_FALSE(has("place:known"));
   // Not fitted: no candidate.
   const auto only_known = defaultCandidates(s, a, {"known_mps2"});
-  EXPECT_EQ(std::count(only_known.begin(), only_known.end(), "free:sensors.seat.x_m"), 0);
+  EXPECT_EQ(std::count(only_known.begin(), only_known.end(), "place:seat"), 0);
+  const auto both = candidateSpec("place:seat", s, a, ch, "t");
+  EXPECT_EQ(both.kind, "place");
+  ASSERT_EQ(both.calibrated_names, (std::vector<std::string>{"sensors.seat.x_m", "sensors.seat.y_m"}));
+  EXPECT_DOUBLE_EQ(both.parameters[1].prior_lower, -1.3);
+  EXPECT_EQ(both.finding({1.5, 0.76}),
+            "the sensor seat acts as if it sat 1.50 m ahead of the CG and 0.76 m left of the centre line: over the front-left wheel "
+            "(the study puts it 0.00 m ahead of the CG, on the centre line)");
+  EXPECT_EQ(both.finding({-1.45, 0.02}),
+            "the sensor seat acts as if it sat 1.45 m behind the CG and 0.02 m left of the centre line: over the middle of the rear axle "
+            "(the study puts it 0.00 m ahead of the CG, on the centre line)");
+  EXPECT_THROW((void)candidateSpec("place:nosuch", s, a, ch, "t"), InputError);
   const auto known = candidateSpec("free:sensors.known.x_m", s, a, ch, "t");
   EXPECT_DOUBLE_EQ(known.parameters[0].prior_lower, 0.4);
   EXPECT_DOUBLE_EQ(known.parameters[0].prior_upper, 0.6);

@@ -14,8 +14,7 @@
 namespace dtwin::diag {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
 
 /// A band's figures within which the car reads "as the model".
 constexpr double kSameGain = 0.05, kSamePhaseDeg = 3.0;
@@ -44,6 +43,24 @@ void distinctTimes(const LabData& data, const std::string& channel, const std::v
   }
 }
 
+/// The values v at the distinct times t (ascending) as a signal against time: u[0] on a 1 ms grid
+/// from 0 to the last time, linear between the times (before the first: its value).
+RoadInput modelSignal(const std::vector<double>& t, const std::vector<double>& v) {
+  RoadInput m;
+  m.dt_s = 0.001;
+  if (t.empty()) return m;
+  const auto n = static_cast<std::size_t>(std::ceil(t.back() / m.dt_s)) + 1;
+  m.u[0].resize(n);
+  std::size_t i = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double time = static_cast<double>(k) * m.dt_s;
+    while (i + 1 < t.size() && t[i + 1] <= time) ++i;
+    if (time <= t[i] || i + 1 == t.size()) m.u[0][k] = v[i];
+    else m.u[0][k] = v[i] + (v[i + 1] - v[i]) * (time - t[i]) / (t[i + 1] - t[i]);
+  }
+  return m;
+}
+
 /// The words of one band (b.read set).
 std::string bandWords(const DiscrepancyBand& b) {
   const std::string where = b.band + " band, " + hz(b.lo_hz, b.hi_hz);
@@ -66,11 +83,11 @@ std::string reading(const std::vector<DiscrepancyBand>& bands) {
   double largest = 0;
   for (const auto& b : bands) {
     if (!b.read) continue;
-    const std::complex<double> r = std::polar(b.gain, b.phase_deg * kPi / 180.0) - 1.0;
+    const std::complex<double> r = std::polar(b.gain, b.phase_deg * kRadPerDeg) - 1.0;
     if (std::abs(r) > largest) largest = std::abs(r), most = &b;
   }
   if (!most || largest < kSameGain) return "the car responds as the model in every band it excites";
-  const std::complex<double> r = std::polar(most->gain, most->phase_deg * kPi / 180.0) - 1.0;
+  const std::complex<double> r = std::polar(most->gain, most->phase_deg * kRadPerDeg) - 1.0;
   const std::string where = "most in the " + most->band + " band: ";
   if (std::abs(r.real()) >= std::abs(r.imag()))
     return where + (r.real() < 0 ? "less of the road reaches the channel than the model lets through: damping the model lacks, or an "
@@ -109,7 +126,7 @@ void addResponse(DiscrepancyFilter& f, const std::vector<double>& t, const std::
     const std::complex<double> r = 1.0 + cs.pxy[k] / cs.pxx[k];
     f.freq_hz.push_back(cs.freq_hz[k]);
     f.gain.push_back(std::abs(r));
-    f.phase_deg.push_back(std::arg(r) * 180.0 / kPi);
+    f.phase_deg.push_back(std::arg(r) / kRadPerDeg);
   }
   for (const Band& band : vehicleBands(fs)) {
     DiscrepancyBand b;
@@ -124,7 +141,7 @@ void addResponse(DiscrepancyFilter& f, const std::vector<double>& t, const std::
     if (!(pyy > 0)) continue;
     const std::complex<double> r = 1.0 + pyd / pyy;
     b.gain = std::abs(r);
-    b.phase_deg = std::arg(r) * 180.0 / kPi;
+    b.phase_deg = std::arg(r) / kRadPerDeg;
     b.lead_ms = 1000.0 * b.phase_deg / (360.0 * std::sqrt(band.lo_hz * band.hi_hz));
     b.model_share = total > 0 ? pyy / total : 0.0;
     b.filter_ratio = std::sqrt(pdd / pyy);
@@ -142,6 +159,8 @@ void DiscrepancyOptions::validate() const {
   const OptionCheck check("discrepancy");
   check.positive("dt_s", dt_s);
   check.require(!taps.empty(), "taps", "must list at least one order");
+  check.require(!model_taps.empty(), "model_taps", "must list at least one order (0: none)");
+  for (const int n : model_taps) check.require(n >= 0 && n <= 500, "model_taps", "must each lie in [0, 500], got " + std::to_string(n));
   for (const int n : taps) check.require(n >= 1 && n <= 500, "taps", "must each lie in [1, 500], got " + std::to_string(n));
 }
 
@@ -154,7 +173,9 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
   // The residual of every record of the channel, with its road.
   std::vector<LabData> residual(calibration.size());
   std::vector<const LabData*> data;
-  std::vector<const RoadInput*> roads;
+  std::vector<const RoadInput*> roads, models;
+  std::vector<RoadInput> model(calibration.size());
+  std::vector<double> t, physics;
   for (std::size_t s = 0; s < calibration.size(); ++s) {
     const DiscrepancyDrive& d = calibration[s];
     DTWIN_CHECK(d.data && d.physics && d.road && d.physics->size() == d.data->records.size(), "fitDiscrepancy: a drive's predictions");
@@ -166,11 +187,15 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
       }
     data.push_back(&residual[s]);
     roads.push_back(d.road);
+    distinctTimes(*d.data, channel, *d.physics, t, physics);
+    model[s] = modelSignal(t, physics);
+    models.push_back(&model[s]);
   }
   FirSearch search;
   search.taps = options.taps;
+  search.model_taps = options.model_taps;
   search.allow_none = true;
-  f.fir = fitFir(channel, data, roads, options.dt_s, search);
+  f.fir = fitFir(channel, data, roads, options.dt_s, search, models);
   f.candidates = static_cast<int>(f.fir.cv_sse.size());
   if (!f.fir.cv_sse.empty()) {
     f.cv_sse_none = f.fir.cv_sse.front();
@@ -184,14 +209,13 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
   }
   // The response on the drive with the most times of the channel.
   std::size_t best = 0, most = 0;
-  std::vector<double> t, physics;
   for (std::size_t s = 0; s < calibration.size(); ++s) {
     distinctTimes(*calibration[s].data, channel, *calibration[s].physics, t, physics);
     if (t.size() > most) most = t.size(), best = s;
   }
   distinctTimes(*calibration[best].data, channel, *calibration[best].physics, t, physics);
   std::vector<double> d(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) d[i] = f.fir.predict(*calibration[best].road, t[i]);
+  for (std::size_t i = 0; i < t.size(); ++i) d[i] = f.fir.predict(*calibration[best].road, t[i], &model[best]);
   addResponse(f, t, physics, d);
   std::string words;
   for (const auto& b : f.bands)
@@ -209,6 +233,7 @@ std::string DiscrepancyFilter::describe() const {
   const std::string wheels = front ? (fir.corners.size() == 1 ? "the front wheels (one signal)" : "the 2 front wheels")
                                    : (fir.corners.size() == 4 ? "the 4 wheels" : std::to_string(fir.corners.size()) + " distinct wheel signals");
   std::string s = "FIR from the road's " + std::string(fir.input == FirInput::Height ? "height" : "vertical velocity") + " under " + wheels +
+                  (fir.model_taps ? " and from the model's own prediction (" + std::to_string(fir.model_taps) + (fir.model_taps == 1 ? " tap)" : " taps)") : std::string()) +
                   " to the residual, " + std::to_string(fir.taps) + " taps each at " + formatNumber(fir.dt_s) + " s (memory " +
                   formatNumber(fir.taps * fir.dt_s, 3) + " s), ridge " + formatNumber(fir.ridge) + ", least squares on " +
                   std::to_string(fir.training_records) + " records";
@@ -231,6 +256,7 @@ nlohmann::json DiscrepancyFilter::toJson() const {
     j["input"] = inputName(fir.input);
     j["wheels"] = fir.corners;
     j["taps"] = fir.taps;
+    j["model_taps"] = fir.model_taps;
     j["dt_s"] = fir.dt_s;
     j["ridge"] = fir.ridge;
     j["coefficients"] = fir.coef;
@@ -249,8 +275,9 @@ SeriesDiscrepancy scoreDiscrepancy(const DiscrepancyFilter& filter, const std::v
   DTWIN_CHECK(t.size() == physics.size(), "scoreDiscrepancy: times and predictions differ in number");
   SeriesDiscrepancy out;
   out.filter = filter;
+  const RoadInput model = modelSignal(t, physics);
   std::vector<double> d(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) d[i] = filter.fir.predict(road, t[i]);
+  for (std::size_t i = 0; i < t.size(); ++i) d[i] = filter.fir.predict(road, t[i], &model);
   out.hybrid.resize(t.size());
   for (std::size_t i = 0; i < t.size(); ++i) out.hybrid[i] = physics[i] + d[i];
   double ss_h = 0, ss_p = 0, sum = 0, sq = 0, n = 0;
@@ -278,7 +305,7 @@ SeriesDiscrepancy scoreDiscrepancy(const DiscrepancyFilter& filter, const std::v
       return std::sqrt(s / static_cast<double>(v.size()));
     };
     const double h = sdOf(out.hybrid);
-    out.share = h > 0 ? sdOf(d) / h : kNaN;
+    out.share = h > 0 ? sdOf(d) / h : std::numeric_limits<double>::quiet_NaN();
   }
   return out;
 }

@@ -21,7 +21,10 @@ namespace dtwin::diag {
 
 struct DiscrepancyOptions {
   double dt_s = 0.02;                ///< the taps' spacing Δ
-  std::vector<int> taps{5, 10, 25, 50};  ///< the orders cross-validated (memory L Δ: 0.1 to 1 s)
+  std::vector<int> taps{5, 10, 25, 50};  ///< the road's orders cross-validated (memory L Δ: 0.1 to 1 s)
+  /// Taps on the model's own prediction cross-validated: 0 (a filter of the road alone), 1 (a gain
+  /// on the prediction), 10 (a short filter of it: the model's response reshaped, a resonance moved).
+  std::vector<int> model_taps{0, 1, 10};
   /// Throws InputError("discrepancy.<field>", rule) for a field out of range.
   void validate() const;
 };

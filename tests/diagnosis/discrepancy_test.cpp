@@ -22,7 +22,6 @@ using namespace dtwin;
 using namespace dtwin::diag;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 /// A random road input on a 0.01 s grid (4 independent wheels).
 RoadInput randomRoad(unsigned seed, std::size_t n = 4001) {
@@ -66,7 +65,7 @@ TEST(CrossSpectrum, TheCrossSpectrumOfADelayHasThePhaseOfTheDelay) {
   ASSERT_EQ(cs.freq_hz.size(), 129u);
   for (std::size_t k = 1; k < cs.freq_hz.size(); k += 8) {
     if (cs.freq_hz[k] > 15.0) break;  // the Hann window's leakage grows with the phase's slope
-    const double expect = -2 * kPi * cs.freq_hz[k] * lag / fs;
+    const double expect = -2 * std::acos(-1.0) * cs.freq_hz[k] * lag / fs;
     EXPECT_NEAR(std::arg(cs.pxy[k]), expect, 0.05) << cs.freq_hz[k];
     EXPECT_NEAR(std::abs(cs.pxy[k]) / cs.pxx[k], 1.0, 0.1) << cs.freq_hz[k];
   }

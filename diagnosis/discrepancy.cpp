@@ -77,18 +77,20 @@ std::string bandWords(const DiscrepancyBand& b) {
   return s + formatNumber(b.gain, 2) + " times its gain";
 }
 
-/// What would respond so, from the band where the car differs most from the model.
+/// What would respond so, from the band that holds most of the filter's power (the model's share
+/// there times the filter's ratio squared).
 std::string reading(const std::vector<DiscrepancyBand>& bands) {
   const DiscrepancyBand* most = nullptr;
   double largest = 0;
   for (const auto& b : bands) {
     if (!b.read) continue;
     const std::complex<double> r = std::polar(b.gain, b.phase_deg * kRadPerDeg) - 1.0;
-    if (std::abs(r) > largest) largest = std::abs(r), most = &b;
+    if (std::abs(r) < kSameGain && std::abs(b.phase_deg) < kSamePhaseDeg) continue;
+    if (b.model_share * b.filter_ratio * b.filter_ratio > largest) largest = b.model_share * b.filter_ratio * b.filter_ratio, most = &b;
   }
-  if (!most || largest < kSameGain) return "the car responds as the model in every band it excites";
+  if (!most) return "the car responds as the model in every band it excites";
   const std::complex<double> r = std::polar(most->gain, most->phase_deg * kRadPerDeg) - 1.0;
-  const std::string where = "most in the " + most->band + " band: ";
+  const std::string where = "most of the filter is in the " + most->band + " band: ";
   if (std::abs(r.real()) >= std::abs(r.imag()))
     return where + (r.real() < 0 ? "less of the road reaches the channel than the model lets through: damping the model lacks, or an "
                                    "actuator against the body's motion (a skyhook would)"

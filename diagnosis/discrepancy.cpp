@@ -124,7 +124,7 @@ void addResponse(DiscrepancyFilter& f, const std::vector<double>& t, const std::
   double total = 0, peak = 0;
   for (std::size_t k = 1; k < cs.freq_hz.size(); ++k) total += cs.pxx[k], peak = std::max(peak, cs.pxx[k]);
   for (std::size_t k = 1; k < cs.freq_hz.size(); ++k) {
-    if (!(cs.pxx[k] > 1e-6 * peak)) continue;  // where the model has no power the ratio is noise
+    if (!(cs.pxx[k] > 1e-3 * peak)) continue;  // where the model has little power the ratio is noise
     const std::complex<double> r = 1.0 + cs.pxy[k] / cs.pxx[k];
     f.freq_hz.push_back(cs.freq_hz[k]);
     f.gain.push_back(std::abs(r));

@@ -52,7 +52,7 @@ struct DiscrepancyFilter {
   double cv_sse_none = std::numeric_limits<double>::quiet_NaN(), cv_sse_chosen = std::numeric_limits<double>::quiet_NaN();
   int candidates = 0;  ///< forms scored (no filter included)
   /// The car over the model per Welch bin (0 < f ≤ the Nyquist frequency, bins where the model
-  /// has power), on the calibration drive: what compare.html draws.
+  /// has 0.1 % of its peak power), on the calibration drive: what compare.html draws.
   std::vector<double> freq_hz, gain, phase_deg;
   std::vector<DiscrepancyBand> bands;
   std::string response_note;  ///< where the response was estimated, or why there is none

@@ -274,7 +274,7 @@ function discrepancySvg(d) {
 }
 function discrepancySection(c) {
   const d = c.discrepancy, pct = v => v != null && isFinite(v) ? (+v).toFixed(1) + " %" : "–";
-  let h = "<div class=discrepancy><h3>" + esc(c.channel) + ": what the physics misses, as a filter</h3>";
+  let h = "<div class=discrepancy id=\"discrepancy-" + esc(c.channel) + "\"><h3>" + esc(c.channel) + ": what the physics misses, as a filter</h3>";
   h += "<table class=fits><tr><th>on this drive</th><th>fit</th></tr><tr><td>physics alone (the headline)</td><td class=num>" + pct(d.physics_fit) +
        "</td></tr><tr><td>physics + filter</td><td class=num>" + pct(d.hybrid_fit) + "</td></tr><tr><td>FIR baseline</td><td class=num>" + pct(d.baseline_fit) +
        "</td></tr><tr><td>the filter's share of the prediction</td><td class=num>" + (d.share != null && isFinite(d.share) ? (100 * d.share).toFixed(0) + " %" : "–") + "</td></tr></table>";

@@ -193,6 +193,9 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
     model[s] = modelSignal(t, physics);
     models.push_back(&model[s]);
   }
+  std::size_t records = 0;
+  for (const auto& r : residual) records += r.records.size();
+  if (records == 0) throw InputError("discrepancy " + channel, "the calibration drive holds no records of " + channel);
   FirSearch search;
   search.taps = options.taps;
   search.model_taps = options.model_taps;

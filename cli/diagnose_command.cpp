@@ -157,7 +157,8 @@ CommandHandle addCompareCommand(CLI::App& root, const CommandContext& context) {
                 "Also fit an FIR from the road under the wheels to each channel on this measurement file FILE[@SCENARIO] (the "
                 "calibration drive), and print its fit % on --data beside the model's; repeatable");
   c->add_option("--discrepancy", cfg->discrepancy,
-                "Also fit a filter from the road under the wheels to the model's residual on this measurement file FILE[@SCENARIO] "
+                "Also fit a filter from the road under the wheels (and the model's own prediction) to the model's residual on this "
+                "measurement file FILE[@SCENARIO] "
                 "(the calibration drive; its form chosen by cross-validation there), and print what the model misses band by band "
                 "and the fit % of model + filter on --data beside the model's and the FIR baseline's (fitted on the same file "
                 "unless --baseline names another); a prediction aid, not physics; repeatable");

@@ -271,3 +271,54 @@ TEST(DiscrepancyTwin, WhenThePhysicsIsRightTheFilterIsNothing) {
   std::printf("null: physics %.1f %%, hybrid %.1f %%, FIR %.1f %%, share %.3f\n  %s\n", sc.hybrid.physics_fit_percent,
               sc.hybrid.hybrid_fit_percent, sc.baseline, sc.hybrid.share, sc.filter.describe().c_str());
 }
+
+// twin compare --discrepancy end to end on the imported demonstration drive, compared at the
+// truth without its hidden effect (a calibration folder of one row): the filter fitted on the
+// drive itself gives each series a discrepancy object whose in-sample fit is never below the
+// physics' (least squares with a ridge never raises the residual it fits), with the FIR baseline
+// beside it; a file that does not exist and a drive on a flat road are one-line errors, exit 2.
+TEST(DiscrepancyCli, CompareFitsTheFilterAndRefusesBadDrives) {
+  namespace fs = std::filesystem;
+  const fs::path dir = dtwin_test::freshDir("discrepancy_cli");
+  const std::string drive = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
+  auto r = dtwin_test::runTwin("import --log " + drive + "stop_and_go.csv --map " + drive + "stop_and_go_map.toml --quiet --out " +
+                                   (dir / "drive").string(),
+                               dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  fs::create_directories(dir / "cal");
+  dtwin_test::writeText(dir / "cal" / "summary.json", R"({"assembly": "M1"})");
+  dtwin_test::writeText(dir / "cal" / "posterior.csv",
+                        "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
+                        "180000,3000,30000,2500,1,0\n");
+  // A study with a flat road too, and the drive's records on it (no sidecar naming its scenario).
+  const std::string study = (dir / "drive" / "study.toml").string();
+  dtwin_test::writeText(dir / "drive" / "flat.toml", dtwin_test::slurp(study) + "\n[scenarios.flat]\nduration_s = 60.0\nspeed = { v_final_mps = 10.0, ramp_s = 0.0 }\nroad = { type = \"flat\" }\n");
+  fs::copy_file(dir / "drive" / "measurements.csv", dir / "flat.csv");
+  const std::string data = (dir / "drive" / "measurements.csv").string();
+  const std::string base = "compare --study " + study + " --calibration " + (dir / "cal").string() + " --data " + data + " --draws 1 --quiet";
+  r = dtwin_test::runTwin(base + " --discrepancy " + (dir / "none.csv").string(), dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("none.csv"), std::string::npos) << r.err;
+  r = dtwin_test::runTwin("compare --study " + (dir / "drive" / "flat.toml").string() + " --calibration " + (dir / "cal").string() + " --data " + data +
+                              " --draws 1 --quiet --discrepancy " + (dir / "flat.csv").string() + "@flat",
+                          dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("no road signal"), std::string::npos) << r.err;
+  r = dtwin_test::runTwin(base + " --discrepancy " + data + " --out " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "compare.json"));
+  EXPECT_EQ(j.at("discrepancy").at("data").size(), 1u);
+  EXPECT_EQ(j.at("baseline").at("data"), j.at("discrepancy").at("data")) << "--discrepancy implies the baseline on its drive";
+  ASSERT_FALSE(j.at("series").empty());
+  for (const auto& s : j.at("series")) {
+    const auto& d = s.at("discrepancy");
+    EXPECT_NEAR(d.at("physics_fit_percent").get<double>(), s.at("fit_percent").get<double>(), 1e-9);
+    EXPECT_GE(d.at("hybrid_fit_percent").get<double>(), d.at("physics_fit_percent").get<double>() - 1e-6) << d.dump();
+    EXPECT_TRUE(d.at("baseline_fit_percent").is_number()) << d.dump();
+    EXPECT_EQ(d.at("hybrid_predicted").size(), s.at("t").size());
+    EXPECT_FALSE(d.at("summary").get<std::string>().empty());
+  }
+  EXPECT_NE(dtwin_test::slurp(dir / "out" / "compare.html").find("what the physics misses"), std::string::npos);
+}

@@ -25,7 +25,7 @@ namespace {
 struct CompareConfig {
   const Distributed* processes = nullptr;  ///< the process context (CommandContext)
   std::string study = defaultStudy(), calibration, out;
-  std::vector<std::string> data, baseline;
+  std::vector<std::string> data, baseline, discrepancy;
   int draws = 30, threads = 0;
   bool quiet = false, force = false;
 };
@@ -36,6 +36,7 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   req.calibration = cfg.calibration;
   req.data = cfg.data;
   req.baseline = cfg.baseline;
+  req.discrepancy = cfg.discrepancy;
   req.out = cfg.out;
   req.draws = cfg.draws;
   req.threads = cfg.threads;
@@ -155,6 +156,12 @@ CommandHandle addCompareCommand(CLI::App& root, const CommandContext& context) {
   c->add_option("--baseline", cfg->baseline,
                 "Also fit an FIR from the road under the wheels to each channel on this measurement file FILE[@SCENARIO] (the "
                 "calibration drive), and print its fit % on --data beside the model's; repeatable");
+  c->add_option("--discrepancy", cfg->discrepancy,
+                "Also fit a filter from the road under the wheels (and the model's own prediction) to the model's residual on this "
+                "measurement file FILE[@SCENARIO] "
+                "(the calibration drive; its form chosen by cross-validation there), and print what the model misses band by band "
+                "and the fit % of model + filter on --data beside the model's and the FIR baseline's (fitted on the same file "
+                "unless --baseline names another); a prediction aid, not physics; repeatable");
   c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
   c->add_option("--out", cfg->out,
                 "Folder for compare.json (the figures and the overlay series) and compare.html (an interactive page of every "

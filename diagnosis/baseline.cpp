@@ -43,8 +43,9 @@ RoadInput roadInput(const ScenarioSpec& sc, const VehicleData& vehicle, std::uin
 
 namespace {
 /// The regressors of one time: 1, then the input at t − j Δ wheel by wheel (the height, or the
-/// velocity over the tap spacing).
-void regressors(const RoadInput& in, double t, double dt, int taps, FirInput input, const std::vector<int>& corners, Eigen::VectorXd& x) {
+/// velocity over the tap spacing), then the model's prediction (model->u[0]) at t − j Δ, j < model_taps.
+void regressors(const RoadInput& in, double t, double dt, int taps, FirInput input, const std::vector<int>& corners, const RoadInput* model,
+                int model_taps, Eigen::VectorXd& x) {
   x[0] = 1.0;
   for (std::size_t i = 0; i < corners.size(); ++i) {
     const int c = corners[i];
@@ -52,6 +53,8 @@ void regressors(const RoadInput& in, double t, double dt, int taps, FirInput inp
       x[1 + static_cast<long>(i) * taps + j] =
           input == FirInput::Height ? in.at(c, t - j * dt) : (in.at(c, t - j * dt) - in.at(c, t - (j + 1) * dt)) / dt;
   }
+  const long m0 = 1 + static_cast<long>(corners.size()) * taps;
+  for (int j = 0; j < model_taps; ++j) x[m0 + j] = model->at(0, t - j * dt);
 }
 
 /// One training record: the data set, its time and value, and its fold (0: the first half of its
@@ -71,8 +74,8 @@ struct Normal {
 
 /// Each fold's normal equations (0: the first half of each data set's span, 1: the second).
 std::array<Normal, 2> normals(const std::vector<Row>& rows, const std::vector<const RoadInput*>& inputs, double dt, int taps, FirInput input,
-                              const std::vector<int>& corners) {
-  const long p = 1 + static_cast<long>(corners.size()) * taps;
+                              const std::vector<int>& corners, const std::vector<const RoadInput*>& models, int model_taps) {
+  const long p = 1 + static_cast<long>(corners.size()) * taps + model_taps;
   std::array<Normal, 2> n;
   for (auto& f : n) {
     f.xx = Eigen::MatrixXd::Zero(p, p);
@@ -81,7 +84,7 @@ std::array<Normal, 2> normals(const std::vector<Row>& rows, const std::vector<co
   Eigen::VectorXd x(p);
   for (const auto& r : rows) {
     auto& f = n[static_cast<std::size_t>(r.fold)];
-    regressors(*inputs[r.set], r.t, dt, taps, input, corners, x);
+    regressors(*inputs[r.set], r.t, dt, taps, input, corners, model_taps ? models[r.set] : nullptr, model_taps, x);
     f.xx.selfadjointView<Eigen::Lower>().rankUpdate(x);
     f.xy += r.y * x;
     f.yy += r.y * r.y;
@@ -98,13 +101,17 @@ Eigen::VectorXd ridgeSolve(const Eigen::MatrixXd& xx, const Eigen::VectorXd& xy,
 }
 }  // namespace
 
-double FirBaseline::predict(const RoadInput& in, double t) const {
+double FirBaseline::predict(const RoadInput& in, double t, const RoadInput* model) const {
+  DTWIN_CHECK(model_taps == 0 || model, "FirBaseline::predict: the filter takes the model's prediction");
   Eigen::VectorXd x(static_cast<long>(coef.size()));
-  regressors(in, t, dt_s, taps, input, corners, x);
+  regressors(in, t, dt_s, taps, input, corners, model, model_taps, x);
   return x.dot(Eigen::Map<const Eigen::VectorXd>(coef.data(), static_cast<long>(coef.size())));
 }
 
 std::string FirBaseline::describe() const {
+  if (none())
+    return "no filter: predicting nothing beat every FIR form in a two-fold cross-validation on " + std::to_string(training_records) +
+           " records";
   const bool front = corners.size() <= 2 && std::all_of(corners.begin(), corners.end(), [](int c) { return c < 2; });
   const std::string wheels = front ? (corners.size() == 1 ? "the front wheels (one signal)" : "the 2 front wheels")
                                    : (corners.size() == 4 ? "the 4 wheels" : std::to_string(corners.size()) + " distinct wheel signals");
@@ -113,13 +120,18 @@ std::string FirBaseline::describe() const {
          " records, ridge " + formatNumber(ridge) + (cv_sse.empty() ? "" : " (input, wheels and ridge chosen by two-fold cross-validation on them)");
 }
 
-FirBaseline fitFirBaseline(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
-                           double dt_s, int taps, std::optional<FirInput> input) {
-  DTWIN_CHECK(train.size() == inputs.size() && dt_s > 0 && taps > 0, "fitFirBaseline: arguments");
+FirBaseline fitFir(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
+                   double dt_s, const FirSearch& search, const std::vector<const RoadInput*>& models) {
+  DTWIN_CHECK(train.size() == inputs.size() && dt_s > 0 && !search.taps.empty() && !search.inputs.empty() && !search.ridges.empty() &&
+                  !search.model_taps.empty(),
+              "fitFir: arguments");
+  for (const int taps : search.taps) DTWIN_CHECK(taps > 0, "fitFir: taps must be positive");
+  const int most_model = *std::max_element(search.model_taps.begin(), search.model_taps.end());
+  DTWIN_CHECK(*std::min_element(search.model_taps.begin(), search.model_taps.end()) >= 0 && (most_model == 0 || models.size() == train.size()),
+              "fitFir: the model's predictions");
   FirBaseline b;
   b.channel = channel;
   b.dt_s = dt_s;
-  b.taps = taps;
   std::vector<Row> rows;
   for (std::size_t s = 0; s < train.size(); ++s) {
     double t0 = std::numeric_limits<double>::infinity(), t1 = -t0;
@@ -143,44 +155,98 @@ FirBaseline fitFirBaseline(const std::string& channel, const std::vector<const L
   std::vector<int> front;
   for (int c : distinct)
     if (c < 2) front.push_back(c);
-  b.corners = distinct;
-  const long p = 1 + static_cast<long>(distinct.size()) * taps;
-  if (b.training_records < p)
+  const int fewest = *std::min_element(search.taps.begin(), search.taps.end());
+  const int most = *std::max_element(search.taps.begin(), search.taps.end());
+  const long p_min = 1 + static_cast<long>(distinct.size()) * fewest;
+  if (b.training_records < p_min)
     throw InputError("baseline " + channel, "the calibration data hold " + std::to_string(b.training_records) + " records of " + channel +
-                                                ", fewer than the FIR's " + std::to_string(p) + " coefficients");
-  // Each form (input, wheels, ridge) scored by two-fold cross-validation: each half of the
+                                                ", fewer than the FIR's " + std::to_string(p_min) + " coefficients");
+  std::vector<std::vector<int>> sets{distinct};
+  if (search.front_only && !front.empty() && front.size() < distinct.size()) sets.push_back(front);
+  const std::size_t candidates =
+      sets.size() * search.inputs.size() * search.taps.size() * search.model_taps.size() * search.ridges.size() + (search.allow_none ? 1 : 0);
+  // Each form (wheels, input, taps, ridge) scored by two-fold cross-validation: each half of the
   // training data predicted by the FIR fitted on the other half; the sums of squares from the
-  // held half's normal equations, yᵀy − 2 cᵀXᵀy + cᵀXᵀX c.
+  // held half's normal equations, yᵀy − 2 cᵀXᵀy + cᵀXᵀX c. The normal equations are made once per
+  // wheels and input at the most taps; a form with fewer taps takes its rows and columns.
   long in_fold[2] = {0, 0};
   for (const auto& r : rows) ++in_fold[r.fold];
-  const bool cross = !input && in_fold[0] >= p && in_fold[1] >= p;  // else the given or general form, the smallest ridge
-  std::vector<std::vector<int>> sets{distinct};
-  if (!input && !front.empty() && front.size() < distinct.size()) sets.push_back(front);
-  std::vector<FirInput> forms;
-  if (input) forms.push_back(*input);
-  else forms = {FirInput::Height, FirInput::Velocity};
-  const double lambdas[] = {1e-9, 1e-7, 1e-5, 1e-3, 1e-1};
   double best = std::numeric_limits<double>::infinity();
-  b.input = forms.front();
-  b.ridge = lambdas[0];
+  bool chosen_none = false;
+  if (candidates > 1 && search.allow_none) {
+    double yy[2] = {0, 0};
+    for (const auto& r : rows) yy[r.fold] += r.y * r.y;
+    best = yy[0] + yy[1];
+    b.cv_sse.push_back(best);
+    chosen_none = true;
+  }
+  // Without a score, the fallback: nothing (allow_none), else the first input at the fewest taps from every distinct wheel.
+  b.input = search.inputs.front();
+  b.corners = distinct;
+  b.taps = fewest;
+  b.model_taps = search.model_taps.front();
+  b.ridge = *std::min_element(search.ridges.begin(), search.ridges.end());
+  const auto sub = [](const Normal& n, const std::vector<long>& idx) {
+    Normal o;
+    const long p = static_cast<long>(idx.size());
+    o.xx.resize(p, p);
+    o.xy.resize(p);
+    o.yy = n.yy;
+    for (long i = 0; i < p; ++i) {
+      o.xy[i] = n.xy[idx[static_cast<std::size_t>(i)]];
+      for (long j = 0; j < p; ++j) o.xx(i, j) = n.xx(idx[static_cast<std::size_t>(i)], idx[static_cast<std::size_t>(j)]);
+    }
+    return o;
+  };
   Eigen::VectorXd c;
   for (const auto& set : sets)
-    for (const FirInput form : forms) {
-      const auto n = normals(rows, inputs, dt_s, taps, form, set);
-      if (cross)
-        for (const double lambda : lambdas) {
-          double sse = 0;
-          for (std::size_t f = 0; f < 2; ++f) {
-            const Eigen::VectorXd cf = ridgeSolve(n[1 - f].xx, n[1 - f].xy, lambda);
-            sse += n[f].yy - 2 * cf.dot(n[f].xy) + cf.dot(n[f].xx * cf);
-          }
-          b.cv_sse.push_back(sse);
-          if (sse < best) best = sse, b.input = form, b.corners = set, b.ridge = lambda;
+    for (const FirInput form : search.inputs) {
+      const auto full = normals(rows, inputs, dt_s, most, form, set, models, most_model);
+      for (const int taps : search.taps)
+        for (const int mt : search.model_taps) {
+          std::vector<long> idx{0};
+          for (std::size_t i = 0; i < set.size(); ++i)
+            for (int j = 0; j < taps; ++j) idx.push_back(1 + static_cast<long>(i) * most + j);
+          for (int j = 0; j < mt; ++j) idx.push_back(1 + static_cast<long>(set.size()) * most + j);
+          const bool all = taps == most && mt == most_model;
+          const std::array<Normal, 2> n = all ? full : std::array<Normal, 2>{sub(full[0], idx), sub(full[1], idx)};
+          const long p = static_cast<long>(idx.size());
+          if (candidates > 1 && in_fold[0] >= p && in_fold[1] >= p)
+            for (const double lambda : search.ridges) {
+              double sse = 0;
+              for (std::size_t f = 0; f < 2; ++f) {
+                const Eigen::VectorXd cf = ridgeSolve(n[1 - f].xx, n[1 - f].xy, lambda);
+                sse += n[f].yy - 2 * cf.dot(n[f].xy) + cf.dot(n[f].xx * cf);
+              }
+              b.cv_sse.push_back(sse);
+              if (sse < best) best = sse, b.input = form, b.corners = set, b.taps = taps, b.model_taps = mt, b.ridge = lambda, chosen_none = false;
+            }
+          if (!chosen_none && b.input == form && b.corners == set && b.taps == taps && b.model_taps == mt && b.training_records >= p)
+            c = ridgeSolve(n[0].xx + n[1].xx, n[0].xy + n[1].xy, b.ridge);
         }
-      if (b.input == form && b.corners == set) c = ridgeSolve(n[0].xx + n[1].xx, n[0].xy + n[1].xy, b.ridge);
     }
+  if (chosen_none || (search.allow_none && b.cv_sse.size() <= 1)) {
+    b.taps = 0;
+    b.model_taps = 0;
+    b.corners.clear();
+    b.coef = {0.0};
+    return b;
+  }
   b.coef.assign(c.data(), c.data() + c.size());
   return b;
+}
+
+FirBaseline fitFirBaseline(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
+                           double dt_s, int taps, std::optional<FirInput> input) {
+  DTWIN_CHECK(taps > 0, "fitFirBaseline: arguments");
+  FirSearch search;
+  search.taps = {taps};
+  if (input) {  // that input from every distinct wheel, the smallest ridge: nothing to choose
+    search.inputs = {*input};
+    search.front_only = false;
+    search.ridges = {1e-9};
+  }
+  return fitFir(channel, train, inputs, dt_s, search);
 }
 
 double firFitPercent(const FirBaseline& baseline, const LabData& data, const RoadInput& input) {

@@ -50,13 +50,45 @@ struct FirBaseline {
   /// data (height and velocity, from every distinct wheel and from the front ones alone): the
   /// choice of `input` and `corners`. Empty when the input was given.
   std::vector<double> cv_sse;
-  std::vector<double> coef;  ///< b, then h_{c,j} wheel by wheel
+  std::vector<double> coef;  ///< b, then h_{c,j} wheel by wheel, then g_j on the model's prediction
   long training_records = 0;
-  double predict(const RoadInput& in, double t) const;
+  /// No filter: the cross-validation chose to predict 0 (FirSearch::allow_none); taps 0, no wheels, coef {0}.
+  bool none() const { return taps == 0; }
+  /// Taps on the model's own prediction after the road's (a discrepancy filter, discrepancy.hpp;
+  /// 0 for the baseline): predict() then needs `model`, the prediction as u[0] against time.
+  int model_taps = 0;
+  double predict(const RoadInput& in, double t, const RoadInput* model = nullptr) const;
   /// "FIR from the road's vertical velocity under the 4 wheels, 50 taps each at 0.02 s, least
   /// squares on N records (the input chosen by two-fold cross-validation on them)"
   std::string describe() const;
 };
+
+/// The forms an FIR is chosen among (fitFir): every combination of taps, input, wheels and ridge
+/// is scored by two-fold cross-validation on the training data, and the best is fitted on all of it.
+struct FirSearch {
+  std::vector<int> taps{50};  ///< L per wheel (a form's memory L Δ)
+  std::vector<FirInput> inputs{FirInput::Height, FirInput::Velocity};
+  bool front_only = true;  ///< also the front wheels alone (when the rear wheels' road differs from theirs)
+  std::vector<double> ridges{1e-9, 1e-7, 1e-5, 1e-3, 1e-1};
+  /// Taps on the model's prediction (fitFir's `models`), each count a candidate; {0}: none.
+  std::vector<int> model_taps{0};
+  /// "No filter" (a prediction of 0; FirBaseline::none()) is a candidate too, scored first: a
+  /// form must predict the held halves better than nothing to be chosen.
+  bool allow_none = false;
+};
+
+/// The FIR of `channel` on `train` (records, with their road inputs) among the forms of `search`,
+/// chosen by two-fold cross-validation (each data set's records split at its middle time; each
+/// half predicted by the FIR fitted on the other) and fitted by ridge least squares on every
+/// record. Wheels whose road repeats another's exactly (one signal for both tracks) enter once.
+/// When a half holds fewer records than a form's coefficients, that form is not scored; when none
+/// can be, the first input and taps of the search from every distinct wheel with the smallest
+/// ridge. Throws InputError when the data hold fewer records of the channel than the
+/// coefficients of the form fitted.
+/// `models` (needed when search.model_taps holds a count above 0): per training set, the model's
+/// prediction as u[0] against time, whose taps enter after the road's.
+FirBaseline fitFir(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
+                   double dt_s, const FirSearch& search, const std::vector<const RoadInput*>& models = {});
 
 /// The baseline of `channel` fitted by least squares (with a ridge, below) on every record of `channel` in each
 /// `train` data set, read with its road input. Wheels whose road repeats another's exactly (one

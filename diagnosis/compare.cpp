@@ -440,6 +440,7 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
                             {"noise_power", b.noise_power}, {"ratio", b.ratio}, {"coherence_with_road", b.coherence},
                             {"significant", b.significant}});
     if (!s.bands_note.empty()) e["bands_note"] = s.bands_note;
+    if (s.discrepancy) e["discrepancy"] = s.discrepancy->toJson(s.baseline_fit_percent, with_series_data);
     if (with_series_data) {
       e["t"] = s.t;
       e["measured_mean"] = s.measured_mean;

@@ -8,12 +8,14 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "calibration/calibrate.hpp"
+#include "diagnosis/discrepancy.hpp"
 #include "diagnosis/measurements.hpp"
 #include "diagnosis/signal.hpp"
 #include "io/work.hpp"
@@ -55,6 +57,9 @@ struct SeriesComparison {
   /// The same figure for the FIR baseline fitted on other data (twin compare --baseline), NaN
   /// when none was asked for.
   double baseline_fit_percent = std::numeric_limits<double>::quiet_NaN();
+  /// The filter from the road to the residual fitted on other data and the hybrid's fit (twin
+  /// compare --discrepancy, diagnosis/discrepancy.hpp); empty when none was asked for.
+  std::optional<SeriesDiscrepancy> discrepancy;
   /// RMS of the systematic part: sqrt(max(0, mean_t (ȳ_t − η_t)² − mean_t σ²/R_t)).
   double systematic_rms = 0;
   double lack_of_fit = 0;  ///< Σ_t R_t (ȳ_t − η_t)² / σ² (fitted series)

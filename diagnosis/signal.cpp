@@ -156,6 +156,24 @@ Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, d
   return out;
 }
 
+CrossSpectrum crossSpectrum(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment) {
+  requireSameSize("crossSpectrum", x.size(), y.size());
+  const Segmentation s = segmentation("crossSpectrum", x.size(), fs_hz, segment);
+  Eigen::FFT<double> fft;
+  const size_t m = s.L / 2 + 1;
+  CrossSpectrum out{frequencies(s, fs_hz), std::vector<double>(m, 0.0), std::vector<double>(m, 0.0),
+                    std::vector<std::complex<double>>(m, 0.0)};
+  for (int k = 0; k < s.K; ++k) {
+    const auto X = segmentDft(s, x, k, fft), Y = segmentDft(s, y, k, fft);
+    for (size_t j = 0; j < m; ++j) out.pxx[j] += std::norm(X[j]), out.pyy[j] += std::norm(Y[j]), out.pxy[j] += std::conj(X[j]) * Y[j];
+  }
+  for (size_t j = 0; j < m; ++j) {
+    const double c = ((j == 0 || j + 1 == m) ? 1.0 : 2.0) / (s.K * fs_hz * s.U);
+    out.pxx[j] *= c, out.pyy[j] *= c, out.pxy[j] *= c;
+  }
+  return out;
+}
+
 double bandIntegral(const Spectrum& s, double f_lo, double f_hi) {
   checkSpectrum("bandIntegral", s, f_lo, f_hi);
   const size_t m = s.freq_hz.size();

@@ -18,6 +18,7 @@
 //         §6.17 (WOSA), eq. (292b) for the equivalent degrees of freedom.
 #include <cmath>
 #include <cstddef>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,16 @@ Spectrum welchPsd(const std::vector<double>& x, double fs_hz, int segment);
 /// where P_xx·P_yy vanishes (e.g. DC after mean removal of a constant) get C = 0.
 /// Throws if the sizes differ, or as welchPsd.
 Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment);
+
+/// The auto and cross spectra of x and y with the Welch settings and scaling of welchPsd: P_xx,
+/// P_yy and P_xy = c_k / (K fs U) Σ_segments conj(X_k) Y_k, complex. Its phase is y's lead over x:
+/// y(t) = x(t + τ) gives arg P_xy = 2π f τ. P_xy / P_xx is the H1 estimate of the frequency
+/// response from x to y. Throws as coherence.
+struct CrossSpectrum {
+  std::vector<double> freq_hz, pxx, pyy;
+  std::vector<std::complex<double>> pxy;
+};
+CrossSpectrum crossSpectrum(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment);
 
 /// ∫_{f_lo}^{f_hi} S(f) df over a spectrum on the grid of welchPsd, by the trapezoid rule written
 /// on the bins: Σ_{k: f_lo <= f_k < f_hi} S_k·Δ_k with Δ_k = Δf, except Δ_0 = Δ_M = Δf/2 (the DC and

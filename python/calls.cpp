@@ -276,7 +276,8 @@ py::object calibrate(const PyStudy& s, const py::object& data_arg, const py::obj
 }
 
 // ------------------------------------------------------------------ compare
-py::object compare(const PyStudy& s, const py::object& calibration_arg, const py::object& data, const py::object& baseline, int draws,
+py::object compare(const PyStudy& s, const py::object& calibration_arg, const py::object& data, const py::object& baseline,
+                   const py::object& discrepancy, int draws,
                    int threads, const py::object& out, bool force, bool quiet) {
   const Study& study = *s.study;
   const std::string calibration = pathText(calibration_arg, "calibration");
@@ -284,13 +285,14 @@ py::object compare(const PyStudy& s, const py::object& calibration_arg, const py
   req.calibration = calibration;
   req.data = stringList(data, "data");
   req.baseline = stringList(baseline, "baseline");
+  req.discrepancy = stringList(discrepancy, "discrepancy");
   req.out = out.is_none() ? std::string() : pathText(out, "out");
   req.draws = draws;
   req.threads = threads;
   req.processes = nullptr;
   req.force = force;
   CallText call(studyCall(s, "compare"));
-  call.add("calibration", calibration).add("data", data).add("baseline", baseline).add("draws", py::int_(draws)).add("out", out);
+  call.add("calibration", calibration).add("data", data).add("baseline", baseline).add("discrepancy", discrepancy).add("draws", py::int_(draws)).add("out", out);
   req.command = call.str();
   Callbacks callbacks(py::none(), quiet);
   const SayFn say = callbacks.say();
@@ -306,7 +308,7 @@ py::object compare(const PyStudy& s, const py::object& calibration_arg, const py
           if (say) say("wrote " + page);
         }
       },
-      Keywords{{"calibration", "data", "baseline", "draws", "threads", "out", "force"}, {}}, &callbacks);
+      Keywords{{"calibration", "data", "baseline", "discrepancy", "draws", "threads", "out", "force"}, {}}, &callbacks);
   return toPython(run.json);
 }
 

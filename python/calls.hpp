@@ -33,7 +33,7 @@ py::object calibrate(const PyStudy& s, const py::object& data, const py::object&
                      const py::object& progress);
 
 py::object compare(const PyStudy& s, const py::object& calibration, const py::object& data, const py::object& baseline,
-                   int draws, int threads, const py::object& out, bool force, bool quiet);
+                   const py::object& discrepancy, int draws, int threads, const py::object& out, bool force, bool quiet);
 
 struct DiagnoseKeywords {
   std::string assembly = "M1";

@@ -91,10 +91,12 @@ the CSV and its sidecar. Raises dtwin.SimulationError when the run fails.)")
 OUT/<id>/ (a call with the same arguments resumes). Returns {id: summary}, each OUT/<id>/summary.json
 as a dict. assembly: "all", "M1", "M1,M3" or a list.)")
       .def("compare", &compare, py::arg("calibration"), py::arg("data"), py::kw_only(), py::arg("baseline") = py::none(),
-           py::arg("draws") = 30, py::arg("threads") = 0, py::arg("out") = py::none(), py::arg("force") = false, py::arg("quiet") = false,
+           py::arg("discrepancy") = py::none(), py::arg("draws") = 30, py::arg("threads") = 0, py::arg("out") = py::none(), py::arg("force") = false, py::arg("quiet") = false,
            R"(A calibration folder's model against measurement files FILE[@SCENARIO] (`twin compare`): the
-compare.json dict (fit per channel, failing windows and bands, the series). out: also write
-OUT/compare.json and OUT/compare.html.)")
+compare.json dict (fit per channel, failing windows and bands, the series). baseline: the drive(s) an
+FIR from the road is fitted on; discrepancy: the drive(s) a filter from the road to the model's
+residual is fitted on (the hybrid's fit and the filter in words). out: also write OUT/compare.json
+and OUT/compare.html.)")
       .def(
           "diagnose",
           [](const PyStudy& s, const py::object& data, const std::string& assembly, const py::object& holdout, const py::object& effects,

@@ -32,6 +32,19 @@ nlohmann::json slimSeries(const nlohmann::json& s) {
                    {"bands", s.value("bands", nlohmann::json::array())},
                    {"bands_note", s.value("bands_note", "")},
                    {"windows_note", s.value("windows_note", "")}};
+  if (s.contains("discrepancy")) {  // twin compare --discrepancy: the filter and the three fits
+    const auto& d = s.at("discrepancy");
+    c["discrepancy"] = {{"physics_fit", d.value("physics_fit_percent", nlohmann::json())},
+                        {"hybrid_fit", d.value("hybrid_fit_percent", nlohmann::json())},
+                        {"baseline_fit", d.value("baseline_fit_percent", nlohmann::json())},
+                        {"share", d.value("share", nlohmann::json())},
+                        {"none", d.value("none", false)},
+                        {"description", d.value("description", "")},
+                        {"summary", d.value("summary", "")},
+                        {"note", d.value("response_note", "")},
+                        {"bands", d.value("bands", nlohmann::json::array())},
+                        {"response", d.value("response", nlohmann::json::object())}};
+  }
   for (const auto& w : s.value("windows", nlohmann::json::array()))
     c["windows"].push_back({{"t0", w.at("t_begin_s")}, {"t1", w.at("t_end_s")}, {"z", w.at("peak_z")}, {"share", w.at("share_of_chi2")},
                             {"label", w.value("label", "")}});
@@ -57,7 +70,8 @@ std::string scriptSafe(const std::string& json) {
 // linked zoom, one cursor, min/max decimation per pixel column for display, the failing windows
 // shaded and tabled (largest share first, under each channel's windows in words), the spectrum
 // per band. `#selftest` in the URL writes what a test checks into <pre id="selftest"> (chart
-// count, window rows and their shares, the windows' notes, errors, whether a zoom moved every chart).
+// count, window rows and their shares, the windows' notes, the discrepancy sections' charts and
+// fits, errors, whether a zoom moved every chart).
 constexpr const char* kScript = R"js(
 "use strict";
 const errors = [];
@@ -204,6 +218,71 @@ function bandsTable(c) {
          "</td><td class=num>" + esc(fmt(b.ratio)) + "</td><td>" + (b.significant ? "fails" : "") + "</td></tr>";
   return "<div class=spectrum>" + spectrumSvg(c) + h + "</table></div>" + (c.bands_note ? "<p class=note>spectrum: " + esc(c.bands_note) + "</p>" : "");
 }
+// What the physics misses, as a filter (twin compare --discrepancy): the three fit percentages side
+// by side, the filter's share, the car's response over the model's (gain and phase against
+// frequency, each band's figure as a bar across it) and the bands in words.
+function discrepancySvg(d) {
+  const r = d.response || {}, F = r.freq_hz || [];
+  if (F.length < 2) return "";
+  const W = 580, H = 300, L = 62, R = 72, T = 30, gap = 34, Bm = 40, pw = W - L - R, ph = (H - T - gap - Bm) / 2;
+  const f0 = F[0], f1 = F[F.length - 1];
+  const X = f => L + pw * Math.log10(f / f0) / Math.log10(f1 / f0);
+  const gmax = Math.max(2, ...r.gain.filter(isFinite)), g1 = Math.pow(2, Math.ceil(Math.log2(gmax))), g0 = 1 / g1;
+  const Yg = g => T + ph * (1 - (Math.log2(Math.min(g1, Math.max(g0, g))) - Math.log2(g0)) / (Math.log2(g1) - Math.log2(g0)));
+  const Yp = p => T + ph + gap + ph * (1 - (Math.max(-180, Math.min(180, p)) + 180) / 360);
+  const px = v => v.toFixed(1);
+  let s = "<svg class=discrepancy-chart xmlns='http://www.w3.org/2000/svg' width=" + W + " height=" + H + " viewBox='0 0 " + W + " " + H + "' font-size=11 fill='#333'>";
+  s += "<text x=" + L + " y=15 font-size=13 font-weight=bold>the car over the model: gain and phase</text>";
+  for (const [y0, lab] of [[T, "gain (×)"], [T + ph + gap, "phase [°]"]]) {
+    s += "<rect x=" + L + " y=" + y0 + " width=" + pw + " height=" + px(ph) + " fill=none stroke='#999'/>";
+    s += "<text transform='translate(14 " + px(y0 + ph / 2) + ") rotate(-90)' text-anchor=middle>" + lab + "</text>";
+  }
+  for (let e = Math.log2(g0); e <= Math.log2(g1); e++) {
+    const v = Math.pow(2, e), y = px(Yg(v));
+    s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + y + " y2=" + y + " stroke='#eee'/><text x=" + (L - 6) + " y=" + y + " dy=4 text-anchor=end>" + logTick(v) + "</text>";
+  }
+  for (const v of [-180, -90, 0, 90, 180]) {
+    const y = px(Yp(v));
+    s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + y + " y2=" + y + " stroke='#eee'/><text x=" + (L - 6) + " y=" + y + " dy=4 text-anchor=end>" + v + "</text>";
+  }
+  let xt = [];
+  for (let e = Math.floor(Math.log10(f0)); e <= Math.ceil(Math.log10(f1)); e++)
+    for (const m of [1, 2, 5]) { const v = m * Math.pow(10, e); if (v >= f0 * (1 - 1e-9) && v <= f1 * (1 + 1e-9)) xt.push(v); }
+  for (const v of xt) {
+    const x = px(X(v));
+    s += "<line x1=" + x + " x2=" + x + " y1=" + T + " y2=" + px(T + 2 * ph + gap) + " stroke='#f0f0f0'/>";
+    s += "<text x=" + x + " y=" + px(T + 2 * ph + gap + 16) + " text-anchor=middle>" + logTick(v) + "</text>";
+  }
+  // The model: gain 1, phase 0 (dashed); the car per bin (line); each band's figure (a bar across it).
+  s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + px(Yg(1)) + " y2=" + px(Yg(1)) + " stroke='#222' stroke-dasharray='6 4'/>";
+  s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + px(Yp(0)) + " y2=" + px(Yp(0)) + " stroke='#222' stroke-dasharray='6 4'/>";
+  s += "<text x=" + (L + pw + 5) + " y=" + px(Yg(1)) + " dy=4>the model</text><text x=" + (L + pw + 5) + " y=" + px(Yp(0)) + " dy=4>the model</text>";
+  s += "<polyline fill=none stroke='#9467bd' stroke-width=1.3 points='" + F.map((f, i) => px(X(f)) + "," + px(Yg(r.gain[i]))).join(" ") + "'/>";
+  s += "<polyline fill=none stroke='#9467bd' stroke-width=1.3 points='" + F.map((f, i) => px(X(f)) + "," + px(Yp(r.phase_deg[i]))).join(" ") + "'/>";
+  for (const b of d.bands || []) {
+    if (!b.read) continue;
+    const x0 = X(Math.max(f0, b.lo_hz)), x1 = X(Math.min(f1, b.hi_hz));
+    if (!(x1 > x0)) continue;
+    const tip = "<title>" + esc(b.words) + "</title>";
+    s += "<line x1=" + px(x0) + " x2=" + px(x1) + " y1=" + px(Yg(b.gain)) + " y2=" + px(Yg(b.gain)) + " stroke='#d62728' stroke-width=3>" + tip + "</line>";
+    s += "<line x1=" + px(x0) + " x2=" + px(x1) + " y1=" + px(Yp(b.phase_deg)) + " y2=" + px(Yp(b.phase_deg)) + " stroke='#d62728' stroke-width=3>" + tip + "</line>";
+    s += "<text x=" + px((x0 + x1) / 2) + " y=" + px(Yg(b.gain) - 5) + " text-anchor=middle font-weight=bold stroke='#fff' stroke-width=3 paint-order=stroke fill='#d62728'>" + esc(fmt(+b.gain.toPrecision(2))) + "×</text>";
+    s += "<text x=" + px((x0 + x1) / 2) + " y=" + px(Yp(b.phase_deg) - 5) + " text-anchor=middle font-weight=bold stroke='#fff' stroke-width=3 paint-order=stroke fill='#d62728'>" + esc(Math.round(b.phase_deg)) + "°</text>";
+  }
+  s += "<text x=" + (L + pw / 2) + " y=" + (H - 6) + " text-anchor=middle>frequency [Hz]</text>";
+  return s + "</svg>";
+}
+function discrepancySection(c) {
+  const d = c.discrepancy, pct = v => v != null && isFinite(v) ? (+v).toFixed(1) + " %" : "–";
+  let h = "<div class=discrepancy id=\"discrepancy-" + esc(c.channel) + "\"><h3>" + esc(c.channel) + ": what the physics misses, as a filter</h3>";
+  h += "<table class=fits><tr><th>on this drive</th><th>fit</th></tr><tr><td>physics alone (the headline)</td><td class=num>" + pct(d.physics_fit) +
+       "</td></tr><tr><td>physics + filter</td><td class=num>" + pct(d.hybrid_fit) + "</td></tr><tr><td>FIR baseline</td><td class=num>" + pct(d.baseline_fit) +
+       "</td></tr><tr><td>the filter's share of the prediction</td><td class=num>" + (d.share != null && isFinite(d.share) ? (100 * d.share).toFixed(0) + " %" : "–") + "</td></tr></table>";
+  h += "<p class=reading>" + esc(d.summary) + "</p>";
+  h += "<div class=spectrum>" + discrepancySvg(d) + "</div>";
+  h += "<p class=note>" + esc(d.description) + (d.note ? "; response " + esc(d.note) : "") + ". A prediction aid, not physics: it names no cause.</p></div>";
+  return h;
+}
 function build() {
   const root = document.getElementById("sets");
   D.sets.forEach((set, gi) => {
@@ -262,6 +341,7 @@ function build() {
                             P.forEach(q => { rser.push(dot(who + q.label, col)); rarr.push(q.v.map((v, i) => v === null ? null : v - pg[i])); }); });
       chart(g, e2, c.channel + " residual (measured − predicted)", unit, rser, rarr, c.windows, 190);
       const sp = document.createElement("div"); sp.innerHTML = bandsTable(c); plots.appendChild(sp);
+      if (c.discrepancy) { const dv = document.createElement("div"); dv.innerHTML = discrepancySection(c); plots.appendChild(dv); }
     }
     if (set.view) zoomTo(g, set.view[0], set.view[1]);
     if (D.no_windows) return;
@@ -292,6 +372,7 @@ if (location.hash === "#selftest") {
   const out = { charts: groups.reduce((n, g) => n + g.charts.length, 0), window_rows: document.querySelectorAll("table.windows tr").length - document.querySelectorAll("table.windows").length,
                 window_shares: Array.from(document.querySelectorAll("table.windows tr")).filter(r => r.querySelector("td")).map(r => parseFloat(r.children[3].textContent)),
                 windows_notes: Array.from(document.querySelectorAll("p.windows-note")).map(p => p.textContent),
+                discrepancy: Array.from(document.querySelectorAll("div.discrepancy")).map(d => ({ charts: d.querySelectorAll("svg.discrepancy-chart").length, fits: Array.from(d.querySelectorAll("table.fits td.num")).map(td => td.textContent) })),
                 ready_ms: Math.round(painted), zoom_ok: false, errors,
                 series: groups.length ? groups[0].charts.map(c => c.u.series.length) : [] };
   if (groups.length && groups[0].charts.length) {
@@ -323,6 +404,8 @@ table.windows tr:hover { background: #fde2e2; cursor: pointer; } caption { text-
 .spectrum { display: flex; flex-wrap: wrap; align-items: center; gap: 0.5em 1em; margin: 0.6em 0 1em; }
 .spectrum svg { max-width: 100%; height: auto; font-family: sans-serif; }
 table.bands td.num { text-align: right; } tr.fail td { color: #b00; }
+.discrepancy { border-top: 1px solid #ddd; margin: 0.5em 0 1.5em; } .discrepancy h3 { font-size: 1em; margin: 0.6em 0 0.3em; }
+table.fits td.num { text-align: right; } .reading { max-width: 60em; }
 )css";
 
 }  // namespace

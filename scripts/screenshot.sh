@@ -15,6 +15,11 @@
 #     build/cli/twin compare --study /tmp/dtwin_bench/drive/study.toml --calibration /tmp/dtwin_bench/drive_calibrate/M1 \
 #       --data /tmp/dtwin_bench/drive/measurements.csv --out /tmp/dtwin_bench/drive_calibrate/compare
 #     bash scripts/screenshot.sh /tmp/dtwin_bench/drive_calibrate/compare/compare.html docs/img/compare_stop_and_go.png 1400,1250
+#   compare_discrepancy_controlled_car.png: the imports and the calibration of docs/measurements.md ("A car with a
+#     controller", O=out/controlled), then
+#     build/cli/twin compare --study $O/B/study.toml --calibration $O/cal/M1 --data $O/B/measurements.csv@drive_b \
+#       --discrepancy $O/A/measurements.csv@drive_a --out $O/compare_disc
+#     bash scripts/screenshot.sh "$O/compare_disc/compare.html#discrepancy-seat_mps2" docs/img/compare_discrepancy_controlled_car.png 1400,900
 set -euo pipefail
 [[ $# -ge 2 ]] || { echo "usage: screenshot.sh PAGE.html OUT.png [WIDTH,HEIGHT]" >&2; exit 2; }
 page=$1 out=$2 size=${3:-1400,1500}

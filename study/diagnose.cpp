@@ -12,6 +12,8 @@
 #include "common/files.hpp"
 #include "common/format.hpp"
 #include "diagnosis/baseline.hpp"
+#include "diagnosis/discrepancy.hpp"
+#include "common/parallel.hpp"
 #include "diagnosis/measurements.hpp"
 #include "io/provenance.hpp"
 #include "io/work.hpp"
@@ -85,6 +87,58 @@ void addBaseline(const Study& study, const VehicleData& vehicle, const std::vect
   for (const auto& [channel, b] : fitted) run.baseline[channel] = b.describe();
 }
 
+/// Throws InputError for a drive of `sets` whose road is flat under every wheel: a filter from the
+/// road has nothing to follow there.
+void requireRoadSignal(const Study& study, const VehicleData& vehicle, const std::vector<calib::DataSet>& sets) {
+  for (const auto& ds : sets) {
+    const diag::RoadInput in = roadInputOf(study, vehicle, ds);
+    bool flat = true;
+    for (const auto& u : in.u) flat = flat && std::all_of(u.begin(), u.end(), [&](double v) { return v == u.front(); });
+    if (flat)
+      throw InputError(ds.name + "@" + ds.scenario, "its road is flat under every wheel: no road signal for the --discrepancy filter to follow");
+  }
+}
+
+/// The discrepancy filter of every compared channel (twin compare --discrepancy): the physics at
+/// the posterior rows `rows` simulated on the calibration drives `train` (the mean over the rows
+/// that simulated), the filter fitted on its residual, and the hybrid scored on each compared series.
+void addDiscrepancy(const Study& study, const AssemblySpec& assembly, const calib::CalibrationSetup& setup,
+                    const std::vector<std::vector<double>>& rows, const std::vector<calib::DataSet>& train,
+                    const std::vector<calib::DataSet>& sets, int threads, CompareRun& run, const SayFn& say) {
+  const calib::LabObjective tobj(study, assembly, train, setup);
+  std::vector<diag::RoadInput> train_in, test_in;
+  for (const auto& ds : train) train_in.push_back(roadInputOf(study, tobj.model().vehicle(), ds));
+  std::vector<std::vector<double>> preds(rows.size());
+  parallelFor(rows.size(), threads, [&](std::size_t i, int) { preds[i] = tobj.predict(rows[i]); });
+  std::vector<double> mean(static_cast<std::size_t>(tobj.dataCount()), 0.0);
+  double ok = 0;
+  for (const auto& p : preds)
+    if (!p.empty()) {
+      for (std::size_t i = 0; i < p.size(); ++i) mean[i] += p[i];
+      ok += 1;
+    }
+  if (ok == 0) throw std::runtime_error("compare: every simulation of the posterior draws on the --discrepancy drive failed");
+  for (auto& m : mean) m /= ok;
+  std::vector<std::vector<double>> physics;
+  std::size_t offset = 0;
+  for (const auto& ds : train) {
+    physics.emplace_back(mean.begin() + static_cast<long>(offset), mean.begin() + static_cast<long>(offset + ds.data.records.size()));
+    offset += ds.data.records.size();
+  }
+  for (const auto& ds : sets) test_in.push_back(roadInputOf(study, tobj.model().vehicle(), ds));
+  std::vector<diag::DiscrepancyDrive> drives;
+  for (std::size_t i = 0; i < train.size(); ++i) drives.push_back({&train[i].data, &physics[i], &train_in[i]});
+  std::map<std::string, diag::DiscrepancyFilter> fitted;
+  for (auto& s : run.comparison.series) {
+    if (!fitted.count(s.channel)) {
+      fitted.emplace(s.channel, diag::fitDiscrepancy(s.channel, drives));
+      if (say) say("discrepancy for " + s.channel + ": " + fitted.at(s.channel).describe());
+    }
+    for (std::size_t k = 0; k < sets.size(); ++k)
+      if (sets[k].name == s.data_set) s.discrepancy = diag::scoreDiscrepancy(fitted.at(s.channel), s.t, s.predicted_mean, sets[k].data, test_in[k]);
+  }
+}
+
 }  // namespace
 
 std::string CompareRun::text() const {
@@ -96,6 +150,14 @@ std::string CompareRun::text() const {
       if (b.significant)
         out += formatPrintf("  fails: %s %s band %s (%.1f-%.1f Hz): residual %.3g x the noise floor, coherence with the road %.2f\n",
                             s.scenario.c_str(), s.channel.c_str(), b.band.c_str(), b.lo_hz, b.hi_hz, b.ratio, b.coherence);
+    if (s.discrepancy) {
+      const diag::SeriesDiscrepancy& d = *s.discrepancy;
+      out += formatPrintf("  discrepancy: %s %s: fit %.1f %% physics + filter, %.1f %% physics alone%s; the filter is %.0f %% of the "
+                          "prediction\n    %s\n",
+                          s.scenario.c_str(), s.channel.c_str(), d.hybrid_fit_percent, s.fit_percent,
+                          std::isnan(s.baseline_fit_percent) ? "" : formatPrintf(", %.1f %% FIR baseline", s.baseline_fit_percent).c_str(),
+                          100 * d.share, d.filter.summary.c_str());
+    }
   }
   for (const auto& cm : c.maps)
     for (const auto& m : cm.maps)
@@ -114,10 +176,17 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   run.assembly = calib::calibratedAssembly(study, folder);
   const calib::CalibrationSetup& setup = folder.setup;
   const auto sets = loadSets(study, request.data, "--data");
+  const auto discrepancy = loadSets(study, request.discrepancy, "--discrepancy");
   const calib::PosteriorSample& sample = folder.posterior;
   calib::LabObjective obj(study, run.assembly, sets, setup);
   const auto rows = diag::posteriorRows(sample.names, sample.theta, obj.names(), request.draws, sample.path);
-  checkWork({diag::estimateCompareWork(sets, rows.size())}, "--data", request.force);
+  requireRoadSignal(study, obj.model().vehicle(), discrepancy);
+  std::vector<StageWork> work{diag::estimateCompareWork(sets, rows.size())};
+  if (!discrepancy.empty()) {  // the draws on the calibration drive (the run at their mean is not made)
+    work.push_back(diag::estimateCompareWork(discrepancy, rows.size() - 1));
+    work.back().stage = "discrepancy";
+  }
+  checkWork(work, "--data", request.force);
   const auto noise = diag::estimateChannelNoise(study, sets);
   if (say)
     say("comparing " + run.assembly.id + " (" + obj.model().assembly().label() + ") from " + request.calibration + " with " +
@@ -128,7 +197,12 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   run.comparison = diag::compareModel(obj, sets, rows, noise, co);
   // What the calibration found of its own values: a value on its bound is no estimate.
   for (const auto& f : folder.bound_findings) run.comparison.notes.push_back("the calibration: " + f.sentence());
-  if (!request.baseline.empty()) addBaseline(study, obj.model().vehicle(), loadSets(study, request.baseline, "--baseline"), sets, run, say);
+  // --discrepancy without --baseline: the FIR baseline on the discrepancy's drive, beside the hybrid.
+  const std::vector<std::string>& baseline = request.baseline.empty() ? request.discrepancy : request.baseline;
+  if (!baseline.empty())
+    addBaseline(study, obj.model().vehicle(), request.baseline.empty() ? discrepancy : loadSets(study, request.baseline, "--baseline"), sets, run,
+                say);
+  if (!discrepancy.empty()) addDiscrepancy(study, run.assembly, setup, rows, discrepancy, sets, request.threads, run, say);
   nlohmann::json& j = run.json;
   j = run.comparison.toJson(true);
   j["program"] = programInfo();
@@ -139,7 +213,8 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   j["assembly"] = run.assembly.id;
   j["setup"] = setup.toJson();
   j["data"] = request.data;
-  if (!request.baseline.empty()) j["baseline"] = {{"data", request.baseline}, {"model", run.baseline}};
+  if (!baseline.empty()) j["baseline"] = {{"data", baseline}, {"model", run.baseline}};
+  if (!discrepancy.empty()) j["discrepancy"] = {{"data", request.discrepancy}};
   if (!request.out.empty()) {
     run.written = (fs::path(request.out) / "compare.json").string();
     rootWrites(request.processes, [&] { writeFileAtomic(run.written, j.dump(2) + "\n"); });

@@ -23,6 +23,11 @@ struct CompareRequest {
   /// Measurement files (the calibration drive) the FIR baseline is fitted on, per channel; each
   /// compared series then also gets the baseline's fit percentage (diagnosis/baseline.hpp).
   std::vector<std::string> baseline;
+  /// Measurement files (the calibration drive) a filter from the road to the model's residual is
+  /// fitted on, per channel; each compared series then also gets the hybrid's (model + filter) fit
+  /// percentage and the filter in words (diagnosis/discrepancy.hpp). Without `baseline`, the FIR
+  /// baseline is fitted on these files too.
+  std::vector<std::string> discrepancy;
   std::string out;                 ///< folder for compare.json; "" writes nothing
   int draws = 30;                  ///< posterior rows (evenly spaced) for the predictive band
   int threads = 0;                 ///< worker threads (0: all cores)

@@ -144,3 +144,31 @@ TEST(ComparePage, ListsTheWindowsLargestShareFirstUnderTheirCountInWords) {
   EXPECT_TRUE(s.value("errors", nlohmann::json::array()).empty()) << s.dump();
   fs::remove_all(kTmp());
 }
+
+// twin compare --discrepancy: a channel's discrepancy object is drawn under it, the three fit
+// percentages side by side and the gain and phase of the car over the model in one chart.
+TEST(ComparePage, DrawsTheDiscrepancyFilterAndTheThreeFits) {
+  auto j = comparison(2000, 0);
+  nlohmann::json d{{"physics_fit_percent", 61.2}, {"hybrid_fit_percent", 88.4}, {"baseline_fit_percent", 42.9}, {"share", 0.31},
+                   {"none", false}, {"description", "FIR from the road's vertical velocity"}, {"summary", "at 0.5–2 Hz (body) the car responds <b>"},
+                   {"response_note", "on the calibration drive"}};
+  std::vector<double> f, g, p;
+  for (int k = 1; k <= 100; ++k) f.push_back(0.2 * k), g.push_back(1 + 0.3 / k), p.push_back(40.0 / k);
+  d["response"] = {{"freq_hz", f}, {"gain", g}, {"phase_deg", p}};
+  d["bands"] = {{{"band", "body"}, {"lo_hz", 0.5}, {"hi_hz", 2.0}, {"gain", 1.3}, {"phase_deg", 40.0}, {"read", true}, {"words", "x"}},
+                {{"band", "high"}, {"lo_hz", 20.0}, {"hi_hz", 50.0}, {"gain", 1.0}, {"phase_deg", 0.0}, {"read", false}, {"words", "y"}}};
+  j["series"][0]["discrepancy"] = d;
+  const std::string html = comparePage(j, "discrepancy");
+  EXPECT_NE(html.find("88.4"), std::string::npos);
+  const std::string chromium = dtwin_test::findChromium();
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium): the page check is skipped";
+  fs::create_directories(kTmp());
+  const fs::path page = kTmp() / "discrepancy.html";
+  std::ofstream(page) << html;
+  const auto s = selftest(chromium, page);
+  EXPECT_TRUE(s.value("errors", nlohmann::json::array()).empty()) << s.dump();
+  ASSERT_EQ(s.value("discrepancy", nlohmann::json::array()).size(), 1u) << s.dump();
+  EXPECT_EQ(s["discrepancy"][0]["charts"], 1) << s.dump();
+  EXPECT_EQ(s["discrepancy"][0]["fits"], nlohmann::json({"61.2 %", "88.4 %", "42.9 %", "31 %"})) << s.dump();
+  fs::remove_all(kTmp());
+}

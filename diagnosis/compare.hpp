@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calibration/calibrate.hpp"
+#include "diagnosis/frequency_response.hpp"
 #include "diagnosis/measurements.hpp"
 #include "diagnosis/signal.hpp"
 #include "io/work.hpp"
@@ -68,6 +69,9 @@ struct SeriesComparison {
   /// changes (uniformGrid); bands_note says why, or what the spectrum was made of.
   std::vector<BandReport> bands;
   std::string bands_note;
+  /// The frequency response from the road under the channel's wheel (the front-left road for a
+  /// chassis channel) to the measured and to the predicted values (seriesResponse).
+  SeriesResponse frequency_response;
 };
 
 /// The force-state maps of one channel, pooled over every data set that measured it.

@@ -11,19 +11,19 @@
 namespace dtwin::diag {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = 180.0 / kPi;
+constexpr double kHalfTurn = 3.14159265358979323846;  // π (names distinct from signal.cpp's: unity builds)
+constexpr double kDegPerRad = 180.0 / kHalfTurn;
 
-[[noreturn]] void bad(const std::string& where, const std::string& rule) { throw std::invalid_argument(where + ": " + rule); }
+[[noreturn]] void refuse(const std::string& where, const std::string& rule) { throw std::invalid_argument(where + ": " + rule); }
 
 /// arg z in degrees, in (−180°, 180°].
-double phaseDeg(std::complex<double> z) {
-  const double p = std::arg(z) * kDeg;
+double phaseDegrees(std::complex<double> z) {
+  const double p = std::arg(z) * kDegPerRad;
   return p <= -180.0 ? p + 360.0 : p;
 }
 
 /// The bins of a band, with signal.hpp's rule: lo <= f < hi, the last bin included when hi reaches it.
-bool inBand(const std::vector<double>& f, std::size_t k, double lo, double hi) {
+bool binInBand(const std::vector<double>& f, std::size_t k, double lo, double hi) {
   return f[k] >= lo && (f[k] < hi || (k + 1 == f.size() && hi >= f[k]));
 }
 
@@ -31,25 +31,28 @@ double bandMeanOf(const std::vector<double>& f, const std::vector<double>& v, do
   double sum = 0;
   int n = 0;
   for (std::size_t k = 0; k < f.size(); ++k)
-    if (inBand(f, k, lo, hi)) sum += v[k], ++n;
+    if (binInBand(f, k, lo, hi)) sum += v[k], ++n;
   return n ? sum / n : std::numeric_limits<double>::quiet_NaN();
 }
 
 /// v to 6 significant digits (compare.json's arrays: the estimates' own error is far larger).
-double rounded(double v) { return std::isfinite(v) && v != 0 ? std::stod(formatPrintf("%.6g", v)) : v; }
+double rounded6(double v) {
+  double r = v;
+  return std::isfinite(v) && v != 0 && parseNumber(formatNumber(v, 6), r) ? r : v;
+}
 
-nlohmann::json roundedArray(const std::vector<double>& v) {
+nlohmann::json rounded6Array(const std::vector<double>& v) {
   std::vector<double> r(v.size());
-  std::transform(v.begin(), v.end(), r.begin(), rounded);
+  std::transform(v.begin(), v.end(), r.begin(), rounded6);
   return jsonNumbers(r);
 }
 
 nlohmann::json responseJson(const FrequencyResponse& r) {
-  return {{"magnitude", roundedArray(r.magnitude)},
-          {"phase_deg", roundedArray(r.phase_deg)},
-          {"coherence", roundedArray(r.coherence)},
-          {"magnitude_error", roundedArray(r.magnitude_error)},
-          {"phase_sd_deg", roundedArray(r.phase_sd_deg)}};
+  return {{"magnitude", rounded6Array(r.magnitude)},
+          {"phase_deg", rounded6Array(r.phase_deg)},
+          {"coherence", rounded6Array(r.coherence)},
+          {"magnitude_error", rounded6Array(r.magnitude_error)},
+          {"phase_sd_deg", rounded6Array(r.phase_sd_deg)}};
 }
 
 }  // namespace
@@ -68,17 +71,17 @@ FrequencyResponse frequencyResponse(const std::vector<double>& u, const std::vec
   r.coherence.resize(m);
   r.magnitude_error.resize(m);
   r.phase_sd_deg.resize(m);
-  const double two_nd = 2.0 * c.averages, max_phase_sd = kPi / std::sqrt(3.0);
+  const double two_nd = 2.0 * c.averages, max_phase_sd = kHalfTurn / std::sqrt(3.0);
   for (std::size_t k = 0; k < m; ++k) {
     r.h[k] = c.pxx[k] > 0 ? c.pxy[k] / c.pxx[k] : std::complex<double>(0.0, 0.0);
     const double d = c.pxx[k] * c.pyy[k];
     const double g2 = d > 0 ? std::min(1.0, std::norm(c.pxy[k]) / d) : 0.0;
     r.magnitude[k] = std::abs(r.h[k]);
-    r.phase_deg[k] = phaseDeg(r.h[k]);
+    r.phase_deg[k] = phaseDegrees(r.h[k]);
     r.coherence[k] = g2;
     const double eps = g2 > 0 ? std::sqrt((1.0 - g2) / (g2 * two_nd)) : std::numeric_limits<double>::infinity();
     r.magnitude_error[k] = eps;
-    r.phase_sd_deg[k] = std::min(eps, max_phase_sd) * kDeg;
+    r.phase_sd_deg[k] = std::min(eps, max_phase_sd) * kDegPerRad;
   }
   return r;
 }
@@ -87,9 +90,9 @@ ResponseComparison compareResponses(const std::vector<double>& u, const std::vec
                                     const std::vector<double>& predicted, double fs_hz, int segment, double level) {
   const char* where = "compareResponses";
   if (measured.size() != u.size() || predicted.size() != u.size())
-    bad(where, "the input, measured and predicted values must have the same length, got " + std::to_string(u.size()) + ", " +
+    refuse(where, "the input, measured and predicted values must have the same length, got " + std::to_string(u.size()) + ", " +
                    std::to_string(measured.size()) + " and " + std::to_string(predicted.size()));
-  if (!(level > 0 && level < 1)) bad(where, "level must be in (0, 1), got " + formatNumber(level));
+  if (!(level > 0 && level < 1)) refuse(where, "level must be in (0, 1), got " + formatNumber(level));
   ResponseComparison out;
   out.level = level;
   out.measured = frequencyResponse(u, measured, fs_hz, segment);
@@ -119,7 +122,7 @@ ResponseComparison compareResponses(const std::vector<double>& u, const std::vec
     double wsum = 0, gain = 0;
     std::complex<double> phasor(0.0, 0.0);
     for (std::size_t k = 1; k < m; ++k) {
-      if (!inBand(f, k, b.lo_hz, b.hi_hz) || !(out.measured.magnitude[k] > 0) || !std::isfinite(s[k])) continue;
+      if (!binInBand(f, k, b.lo_hz, b.hi_hz) || !(out.measured.magnitude[k] > 0) || !std::isfinite(s[k])) continue;
       const std::complex<double> ratio = out.measured.h[k] / out.predicted.h[k];
       const double w = 1.0 / std::max(s[k] * s[k], 1e-300);
       wsum += w;
@@ -131,8 +134,8 @@ ResponseComparison compareResponses(const std::vector<double>& u, const std::vec
     const double lg = gain / wsum, ph = std::arg(phasor), sd = std::sqrt(std::min(rb.bins, 2) / wsum);
     rb.gain_ratio = std::exp(lg);
     rb.gain_ratio_error = sd;
-    rb.phase_difference_deg = phaseDeg(phasor);
-    rb.phase_difference_sd_deg = std::min(sd, kPi / std::sqrt(3.0)) * kDeg;
+    rb.phase_difference_deg = phaseDegrees(phasor);
+    rb.phase_difference_sd_deg = std::min(sd, kHalfTurn / std::sqrt(3.0)) * kDegPerRad;
     rb.coherence_measured = bandMeanOf(f, out.measured.coherence, b.lo_hz, b.hi_hz);
     rb.coherence_predicted = bandMeanOf(f, out.predicted.coherence, b.lo_hz, b.hi_hz);
     rb.chi2 = sd > 0 ? (lg * lg + ph * ph) / (sd * sd) : (lg != 0 || ph != 0 ? std::numeric_limits<double>::infinity() : 0.0);
@@ -147,7 +150,7 @@ SeriesResponse seriesResponse(const std::vector<double>& t, const std::vector<do
   const char* where = "seriesResponse";
   const std::size_t n = t.size();
   if (measured.size() != n || predicted.size() != n || (!road.empty() && road.size() != n))
-    bad(where, "the times, road, measured and predicted values must have the same length, got " + std::to_string(n) + ", " +
+    refuse(where, "the times, road, measured and predicted values must have the same length, got " + std::to_string(n) + ", " +
                    std::to_string(road.size()) + ", " + std::to_string(measured.size()) + " and " + std::to_string(predicted.size()));
   SeriesResponse sr;
   sr.input = road.empty() ? "" : input;
@@ -202,10 +205,10 @@ nlohmann::json SeriesResponse::toJson(bool with_bins) const {
   j["level"] = r.level;
   j["coherence_threshold"] = r.coherence_threshold;
   if (with_bins) {
-    j["f_hz"] = roundedArray(r.measured.freq_hz);
+    j["f_hz"] = rounded6Array(r.measured.freq_hz);
     j["measured"] = responseJson(r.measured);
     j["predicted"] = responseJson(r.predicted);
-    j["residual_coherence"] = roundedArray(r.residual_coherence);
+    j["residual_coherence"] = rounded6Array(r.residual_coherence);
     j["differs"] = r.differs;
   }
   j["bands"] = nlohmann::json::array();

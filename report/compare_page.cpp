@@ -223,9 +223,9 @@ function frfSvg(c) {
   const Yp = v => t1 + hp * (1 - (v + 180) / 360), Yc = v => t2 + hc * (1 - v);
   let s = "<svg class=frf-chart xmlns='http://www.w3.org/2000/svg' width=" + W + " height=" + H + " viewBox='0 0 " + W + " " + H + "' font-size=11 fill='#333'>";
   s += "<text x=" + L + " y=15 font-size=13 font-weight=bold>" + esc(c.channel) + " frequency response from " + esc(R.input) + "</text>";
-  s += "<line x1=" + (L + pw - 200) + " x2=" + (L + pw - 186) + " y1=26 y2=26 stroke='#222' stroke-width=1.5/><text x=" + (L + pw - 182) + " y=29>measured</text>" +
-       "<line x1=" + (L + pw - 126) + " x2=" + (L + pw - 112) + " y1=26 y2=26 stroke='#1f77b4' stroke-width=1.5/><text x=" + (L + pw - 108) + " y=29>predicted</text>" +
-       "<rect x=" + (L + pw - 50) + " y=20 width=10 height=10 fill='rgba(220,50,47,0.25)'/><text x=" + (L + pw - 36) + " y=29>differs</text>";
+  s += "<line x1=" + (L + pw - 232) + " x2=" + (L + pw - 216) + " y1=25 y2=25 stroke='#222' stroke-width='1.5'/><text x=" + (L + pw - 211) + " y=29>measured</text>" +
+       "<line x1=" + (L + pw - 146) + " x2=" + (L + pw - 130) + " y1=25 y2=25 stroke='#1f77b4' stroke-width='1.5'/><text x=" + (L + pw - 125) + " y=29>predicted</text>" +
+       "<rect x=" + (L + pw - 56) + " y=20 width=10 height=10 fill='rgba(220,50,47,0.25)'/><text x=" + (L + pw - 42) + " y=29>differs</text>";
   // The bands that differ, shaded over the three panels.
   for (const b of R.bands || []) if (b.differs) {
     const x0 = X(Math.max(f0, b.lo_hz)), x1 = X(Math.min(f1, b.hi_hz));
@@ -257,7 +257,7 @@ function frfSvg(c) {
   const line = (val, Y, col, wraps) => { let d = "", prev = null;
     for (const k of K) { const v = val[k]; if (v == null || !isFinite(v)) { prev = null; continue; }
       d += (prev === null || (wraps && Math.abs(v - prev) > 180) ? "M" : "L") + px(X(f[k])) + " " + px(Y(v)); prev = v; }
-    return "<path d='" + d + "' fill=none stroke='" + col + "' stroke-width=1.3/>"; };
+    return "<path d='" + d + "' fill=none stroke='" + col + "' stroke-width='1.3'/>"; };
   s += line(M.magnitude, Ym, "#222") + line(P.magnitude, Ym, "#1f77b4");
   s += line(M.phase_deg, Yp, "#222", true) + line(P.phase_deg, Yp, "#1f77b4", true);
   s += line(M.coherence, Yc, "#222") + line(P.coherence, Yc, "#1f77b4");
@@ -267,13 +267,19 @@ function frfSvg(c) {
   s += "<text x=" + (L + pw / 2) + " y=" + (H - 6) + " text-anchor=middle>frequency [Hz]</text>";
   return s + "</svg>";
 }
+// v ± sd with sd to two significant digits and v to the same decimals.
+function pm(v, sd) {
+  if (!(sd > 0) || !isFinite(sd)) return fmt(v);
+  const d = Math.min(8, Math.max(0, 1 - Math.floor(Math.log10(sd))));
+  return (+v).toFixed(d) + " ± " + (+sd).toFixed(d);
+}
 function frfTable(c) {
   const R = c.frf;
   if (!R || !R.f_hz) return R && R.note ? "<p class=note>frequency response: " + esc(R.note) + "</p>" : "";
   let h = "<table class=bands><tr><th>band</th><th>Hz</th><th>gain ratio<br>measured / predicted</th><th>phase<br>difference</th><th></th></tr>";
   for (const b of R.bands)
     h += "<tr class=" + (b.differs ? "fail" : "ok") + "><td>" + esc(b.band) + "</td><td>" + esc(fmt(b.lo_hz) + "–" + fmt(b.hi_hz)) + "</td><td class=num>" +
-         esc(fmt(b.gain_ratio) + " ± " + fmt(b.gain_ratio * b.gain_ratio_error)) + "</td><td class=num>" +
+         esc(pm(b.gain_ratio, b.gain_ratio * b.gain_ratio_error)) + "</td><td class=num>" +
          esc((+b.phase_difference_deg).toFixed(1) + "° ± " + (+b.phase_difference_sd_deg).toFixed(1) + "°") + "</td><td>" + (b.differs ? "differs" : "") + "</td></tr>";
   return "<div class=spectrum>" + frfSvg(c) + h + "</table></div>" + (R.note ? "<p class=note>frequency response: " + esc(R.note) + "</p>" : "");
 }

@@ -40,13 +40,6 @@ std::string unitOf(const std::string& channel) {
   return u == std::string::npos ? "" : channel.substr(u + 1);
 }
 
-/// Largest power of two <= n / 2, within [32, 512].
-int welchSegment(std::size_t n) {
-  int s = 32;
-  while (static_cast<std::size_t>(2 * s) <= n / 2 && s < 512) s *= 2;
-  return s;
-}
-
 }  // namespace
 
 std::string describeScenarioWindow(const ScenarioSpec& sc, const VehicleData& v, double t0, double t1) {
@@ -226,13 +219,14 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
     });
   // In frequency, with the road under the channel's wheel as the coherence input.
   std::vector<double> road;
-  if (sc.fitted && samples.size() >= 64) {
-    std::string c = cornerOf(ch);
-    if (c.empty()) c = "fl";
+  std::string c = cornerOf(ch);
+  if (c.empty()) c = "fl";
+  if (samples.size() >= 64) {
     road.reserve(samples.size());
     for (const auto& at : samples) road.push_back(at.column("road_" + c + "_m"));
   }
   addResidualBands(sc, road);
+  sc.frequency_response = seriesResponse(sc.t, road, "road_" + c + "_m", sc.measured_mean, sc.predicted_mean);
   return sc;
 }
 
@@ -353,7 +347,7 @@ void addResidualBands(SeriesComparison& sc, const std::vector<double>& road) {
   const std::vector<double> r = onGrid(g, res);
   std::vector<double> u;
   if (!road.empty()) u = onGrid(g, road);
-  sc.bands = bandAnalysis(r, 1.0 / g.dt, sc.noise_variance / rbar, road.empty() ? nullptr : &u, welchSegment(r.size()), 0.01,
+  sc.bands = bandAnalysis(r, 1.0 / g.dt, sc.noise_variance / rbar, road.empty() ? nullptr : &u, welchSegmentFor(r.size()), 0.01,
                           gridNoiseAutocorrelation(g));
 }
 
@@ -441,6 +435,7 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
                             {"significant", b.significant}});
     if (!s.bands_note.empty()) e["bands_note"] = s.bands_note;
     if (s.discrepancy) e["discrepancy"] = s.discrepancy->toJson(s.baseline_fit_percent, with_series_data);
+    e["frequency_response"] = s.frequency_response.toJson(with_series_data);
     if (with_series_data) {
       e["t"] = s.t;
       e["measured_mean"] = s.measured_mean;

@@ -16,6 +16,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "diagnosis/discrepancy.hpp"
+#include "diagnosis/frequency_response.hpp"
 #include "diagnosis/measurements.hpp"
 #include "diagnosis/signal.hpp"
 #include "io/work.hpp"
@@ -73,6 +74,9 @@ struct SeriesComparison {
   /// changes (uniformGrid); bands_note says why, or what the spectrum was made of.
   std::vector<BandReport> bands;
   std::string bands_note;
+  /// The frequency response from the road under the channel's wheel (the front-left road for a
+  /// chassis channel) to the measured and to the predicted values (seriesResponse).
+  SeriesResponse frequency_response;
 };
 
 /// The force-state maps of one channel, pooled over every data set that measured it.

@@ -51,6 +51,14 @@ Segmentation segmentation(const char* where, size_t n, double fs_hz, int segment
   return s;
 }
 
+// Welch equivalent degrees of freedom (PW93 eq. 292b) with the window's own overlap correlation.
+double welchDof(const Segmentation& seg) {
+  double rho = 0;
+  for (int i = 0; i + seg.hop < seg.L; ++i) rho += seg.w[i] * seg.w[i + seg.hop];
+  rho /= seg.U;
+  return 2.0 * seg.K / (1.0 + 2.0 * (1.0 - 1.0 / seg.K) * rho * rho);
+}
+
 // The one-sided DFT bins 0..L/2 of the detrended (mean-removed), windowed segment k of x.
 std::vector<std::complex<double>> segmentDft(const Segmentation& s, const std::vector<double>& x, int k,
                                              Eigen::FFT<double>& fft) {
@@ -137,39 +145,39 @@ Spectrum welchPsd(const std::vector<double>& x, double fs_hz, int segment) {
   return out;
 }
 
-Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment) {
-  requireSameSize("coherence", x.size(), y.size());
-  const Segmentation s = segmentation("coherence", x.size(), fs_hz, segment);
+CrossSpectra welchCrossSpectra(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment) {
+  requireSameSize("welchCrossSpectra", x.size(), y.size());
+  const Segmentation s = segmentation("welchCrossSpectra", x.size(), fs_hz, segment);
   Eigen::FFT<double> fft;
   const size_t m = s.L / 2 + 1;
-  std::vector<double> pxx(m, 0.0), pyy(m, 0.0);
-  std::vector<std::complex<double>> pxy(m, 0.0);
+  CrossSpectra out{frequencies(s, fs_hz), std::vector<double>(m, 0.0), std::vector<double>(m, 0.0),
+                   std::vector<std::complex<double>>(m, 0.0), s.L, s.K, welchDof(s) / 2.0};
   for (int k = 0; k < s.K; ++k) {
     const auto X = segmentDft(s, x, k, fft), Y = segmentDft(s, y, k, fft);
-    for (size_t j = 0; j < m; ++j) pxx[j] += std::norm(X[j]), pyy[j] += std::norm(Y[j]), pxy[j] += std::conj(X[j]) * Y[j];
+    for (size_t j = 0; j < m; ++j)
+      out.pxx[j] += std::norm(X[j]), out.pyy[j] += std::norm(Y[j]), out.pxy[j] += std::conj(X[j]) * Y[j];
   }
-  Spectrum out{frequencies(s, fs_hz), std::vector<double>(m, 0.0)};
   for (size_t j = 0; j < m; ++j) {
-    const double d = pxx[j] * pyy[j];
-    out.value[j] = d > 0 ? std::min(1.0, std::norm(pxy[j]) / d) : 0.0;
+    const double c = (j == 0 || j + 1 == m ? 1.0 : 2.0) / (s.K * fs_hz * s.U);
+    out.pxx[j] *= c, out.pyy[j] *= c, out.pxy[j] *= c;
   }
   return out;
 }
 
-CrossSpectrum crossSpectrum(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment) {
-  requireSameSize("crossSpectrum", x.size(), y.size());
-  const Segmentation s = segmentation("crossSpectrum", x.size(), fs_hz, segment);
-  Eigen::FFT<double> fft;
-  const size_t m = s.L / 2 + 1;
-  CrossSpectrum out{frequencies(s, fs_hz), std::vector<double>(m, 0.0), std::vector<double>(m, 0.0),
-                    std::vector<std::complex<double>>(m, 0.0)};
-  for (int k = 0; k < s.K; ++k) {
-    const auto X = segmentDft(s, x, k, fft), Y = segmentDft(s, y, k, fft);
-    for (size_t j = 0; j < m; ++j) out.pxx[j] += std::norm(X[j]), out.pyy[j] += std::norm(Y[j]), out.pxy[j] += std::conj(X[j]) * Y[j];
-  }
-  for (size_t j = 0; j < m; ++j) {
-    const double c = ((j == 0 || j + 1 == m) ? 1.0 : 2.0) / (s.K * fs_hz * s.U);
-    out.pxx[j] *= c, out.pyy[j] *= c, out.pxy[j] *= c;
+int welchSegmentFor(std::size_t n) {
+  int s = 32;
+  while (static_cast<std::size_t>(2 * s) <= n / 2 && s < 512) s *= 2;
+  return s;
+}
+
+Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment) {
+  requireSameSize("coherence", x.size(), y.size());
+  segmentation("coherence", x.size(), fs_hz, segment);  // the argument checks, named for this function
+  const CrossSpectra c = welchCrossSpectra(x, y, fs_hz, segment);
+  Spectrum out{c.freq_hz, std::vector<double>(c.freq_hz.size(), 0.0)};
+  for (size_t j = 0; j < out.value.size(); ++j) {
+    const double d = c.pxx[j] * c.pyy[j];
+    out.value[j] = d > 0 ? std::min(1.0, std::norm(c.pxy[j]) / d) : 0.0;
   }
   return out;
 }
@@ -221,11 +229,7 @@ std::vector<BandReport> bandAnalysis(const std::vector<double>& residual, double
     }
   Spectrum coh;
   if (input) coh = coherence(residual, *input, fs_hz, segment);
-  // Welch equivalent degrees of freedom (PW93 eq. 292b) with the window's own overlap correlation.
-  double rho = 0;
-  for (int i = 0; i + seg.hop < seg.L; ++i) rho += seg.w[i] * seg.w[i + seg.hop];
-  rho /= seg.U;
-  const double nu_w = 2.0 * seg.K / (1.0 + 2.0 * (1.0 - 1.0 / seg.K) * rho * rho);
+  const double nu_w = welchDof(seg);
   std::vector<BandReport> out;
   for (const Band& b : vehicleBands(fs_hz)) {
     long bins = 0;

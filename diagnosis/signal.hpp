@@ -17,6 +17,7 @@
 //  [PW93] D. B. Percival, A. T. Walden, Spectral Analysis for Physical Applications, CUP 1993,
 //         §6.17 (WOSA), eq. (292b) for the equivalent degrees of freedom.
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <complex>
 #include <string>
@@ -63,15 +64,28 @@ Spectrum welchPsd(const std::vector<double>& x, double fs_hz, int segment);
 /// Throws if the sizes differ, or as welchPsd.
 Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment);
 
-/// The auto and cross spectra of x and y with the Welch settings and scaling of welchPsd: P_xx,
-/// P_yy and P_xy = c_k / (K fs U) Σ_segments conj(X_k) Y_k, complex. Its phase is y's lead over x:
-/// y(t) = x(t + τ) gives arg P_xy = 2π f τ. P_xy / P_xx is the H1 estimate of the frequency
-/// response from x to y. Throws as coherence.
-struct CrossSpectrum {
-  std::vector<double> freq_hz, pxx, pyy;
-  std::vector<std::complex<double>> pxy;
+/// The Welch auto and cross spectra of two records (frequency_response.hpp's H1 estimate and
+/// coherence are made of them), with the settings and scaling of welchPsd:
+/// pxx = welchPsd(x), pyy = welchPsd(y), pxy(f_k) = c_k / (K · fs · U) · Σ_segments conj(X_k) Y_k.
+struct CrossSpectra {
+  std::vector<double> freq_hz;
+  std::vector<double> pxx, pyy;            ///< [x unit²/Hz], [y unit²/Hz]
+  std::vector<std::complex<double>> pxy;   ///< [x unit · y unit/Hz]
+  int segment = 0;                         ///< L, the segment length used
+  int segments = 0;                        ///< K
+  /// The effective number of independent averages, n_d = ν_W / 2 with ν_W the equivalent degrees
+  /// of freedom of the Welch PSD (see bandAnalysis): ≈ 0.95 K for Hann at 50 % overlap (1 for K = 1).
+  double averages = 0;
 };
-CrossSpectrum crossSpectrum(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment);
+
+/// welchPsd of x and y and their cross spectrum, in one pass. Throws as coherence.
+CrossSpectra welchCrossSpectra(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment);
+/// The phase of pxy is y's lead over x: y(t) = x(t + τ) gives arg pxy = 2π f τ, and pxy / pxx is
+/// the H1 estimate of the frequency response from x to y.
+
+/// The Welch segment length the comparison uses for n samples: the largest power of two <= n/2,
+/// within [32, 512] (512 at 100 Hz: bins 0.2 Hz apart, at least 3 segments).
+int welchSegmentFor(std::size_t n);
 
 /// ∫_{f_lo}^{f_hi} S(f) df over a spectrum on the grid of welchPsd, by the trapezoid rule written
 /// on the bins: Σ_{k: f_lo <= f_k < f_hi} S_k·Δ_k with Δ_k = Δf, except Δ_0 = Δ_M = Δf/2 (the DC and
@@ -115,8 +129,9 @@ struct BandReport {
 ///     ν_W = 2K / (1 + 2 Σ_{m=1}^{K−1} (1 − m/K) ρ²(m)),   ρ(m) = Σ_n w[n] w[n + m·L/2] / Σ_n w[n]²,
 ///
 /// the correlation of the white-noise periodograms of segments m hops apart. For the periodic Hann
-/// window ρ(1) = 1/3 and ρ(m>1) = 0, so ν_W ≈ 1.64 K (fewer than the 1.89 K of [PW93 eq. 292c],
-/// which uses ρ² = 1/36). Summing the M_b bins of a band, the power estimates of neighbouring Hann
+/// window ρ(1) = 1/6 (the sum runs over the L/2 samples two neighbouring segments share) and
+/// ρ(m>1) = 0, so ν_W ≈ 1.89 K, as [PW93 eq. 292c] (FrfEstimate.QuarterCarOnARandomRoad... checks
+/// n_d = ν_W/2 against the scatter of an H1 estimate). Summing the M_b bins of a band, the power estimates of neighbouring Hann
 /// bins are correlated too (ρ² = 4/9 adjacent, 1/36 two apart), so a band holds about M_b/1.94
 /// independent bins; only every second bin is counted: ν = ν_W · max(1, M_b/2). Flagged when
 ///

@@ -31,6 +31,7 @@ nlohmann::json slimSeries(const nlohmann::json& s) {
                    {"windows", nlohmann::json::array()},
                    {"bands", s.value("bands", nlohmann::json::array())},
                    {"bands_note", s.value("bands_note", "")},
+                   {"frf", s.value("frequency_response", nlohmann::json())},
                    {"windows_note", s.value("windows_note", "")}};
   if (s.contains("discrepancy")) {  // twin compare --discrepancy: the filter and the three fits
     const auto& d = s.at("discrepancy");
@@ -283,6 +284,84 @@ function discrepancySection(c) {
   h += "<p class=note>" + esc(d.description) + (d.note ? "; response " + esc(d.note) : "") + ". A prediction aid, not physics: it names no cause.</p></div>";
   return h;
 }
+// The frequency response from the road to the channel as an inline SVG: magnitude (log-log),
+// phase and, beneath, the coherence, against log frequency; measured black with its 95 % band grey,
+// predicted blue; the bands where they differ at 95 % shaded red. Beside it the bands' gain ratio
+// and phase difference, measured over predicted; the note when there is none.
+function frfSvg(c) {
+  const R = c.frf, f = R.f_hz, M = R.measured, P = R.predicted, unit = units[c.unit] || c.unit;
+  const K = []; for (let k = 1; k < f.length; k++) K.push(k);
+  const W = 580, L = 62, Rm = 16, pw = W - L - Rm, T = 34, gap = 14, hm = 150, hp = 90, hc = 64, Bm = 38;
+  const H = T + hm + gap + hp + gap + hc + Bm, f0 = f[1], f1 = f[f.length - 1];
+  const X = v => L + pw * Math.log10(v / f0) / Math.log10(f1 / f0), px = v => v.toFixed(1);
+  const mags = K.map(k => M.magnitude[k]).concat(K.map(k => P.magnitude[k])).filter(v => v > 0 && isFinite(v));
+  if (!mags.length) return "";
+  const m1 = Math.pow(10, Math.ceil(Math.log10(Math.max(...mags) * 1.2))), m0 = Math.max(Math.pow(10, Math.floor(Math.log10(Math.min(...mags)))), m1 * 1e-4);
+  const t1 = T + hm + gap, t2 = t1 + hp + gap;
+  const Ym = v => T + hm * (1 - Math.log10(Math.min(m1, Math.max(m0, v)) / m0) / Math.log10(m1 / m0));
+  const Yp = v => t1 + hp * (1 - (v + 180) / 360), Yc = v => t2 + hc * (1 - v);
+  let s = "<svg class=frf-chart xmlns='http://www.w3.org/2000/svg' width=" + W + " height=" + H + " viewBox='0 0 " + W + " " + H + "' font-size=11 fill='#333'>";
+  s += "<text x=" + L + " y=15 font-size=13 font-weight=bold>" + esc(c.channel) + " frequency response from " + esc(R.input) + "</text>";
+  s += "<line x1=" + (L + pw - 232) + " x2=" + (L + pw - 216) + " y1=25 y2=25 stroke='#222' stroke-width='1.5'/><text x=" + (L + pw - 211) + " y=29>measured</text>" +
+       "<line x1=" + (L + pw - 146) + " x2=" + (L + pw - 130) + " y1=25 y2=25 stroke='#1f77b4' stroke-width='1.5'/><text x=" + (L + pw - 125) + " y=29>predicted</text>" +
+       "<rect x=" + (L + pw - 56) + " y=20 width=10 height=10 fill='rgba(220,50,47,0.25)'/><text x=" + (L + pw - 42) + " y=29>differs</text>";
+  // The bands that differ, shaded over the three panels.
+  for (const b of R.bands || []) if (b.differs) {
+    const x0 = X(Math.max(f0, b.lo_hz)), x1 = X(Math.min(f1, b.hi_hz));
+    const tip = esc(b.band + ": gain ratio " + fmt(b.gain_ratio) + ", phase difference " + fmt(b.phase_difference_deg) + "°");
+    for (const [y, h] of [[T, hm], [t1, hp], [t2, hc]])
+      s += "<rect x=" + px(x0) + " y=" + y + " width=" + px(Math.max(1, x1 - x0)) + " height=" + h + " fill='rgba(220,50,47,0.15)'><title>" + tip + "</title></rect>";
+  }
+  // Frequency gridlines (1-2-5) on every panel, labels under the last.
+  const xt = [];
+  for (let e = Math.floor(Math.log10(f0)); e <= Math.ceil(Math.log10(f1)); e++)
+    for (const m of [1, 2, 5]) { const v = m * Math.pow(10, e); if (v >= f0 * (1 - 1e-9) && v <= f1 * (1 + 1e-9)) xt.push(v); }
+  for (const v of xt) {
+    const x = px(X(v));
+    for (const [y, h] of [[T, hm], [t1, hp], [t2, hc]]) s += "<line x1=" + x + " x2=" + x + " y1=" + y + " y2=" + (y + h) + " stroke='#eee'/>";
+    s += "<text x=" + x + " y=" + (t2 + hc + 15) + " text-anchor=middle>" + logTick(v) + "</text>";
+  }
+  for (let e = Math.round(Math.log10(m0)); e <= Math.round(Math.log10(m1)); e++) {
+    const y = px(Ym(Math.pow(10, e)));
+    s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + y + " y2=" + y + " stroke='#ddd'/><text x=" + (L - 6) + " y=" + y + " dy=4 text-anchor=end>" + logTick(Math.pow(10, e)) + "</text>";
+  }
+  for (const v of [-180, -90, 0, 90, 180]) { const y = px(Yp(v)); s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + y + " y2=" + y + " stroke='#ddd'/><text x=" + (L - 6) + " y=" + y + " dy=4 text-anchor=end>" + v + "°</text>"; }
+  for (const v of [0, 0.5, 1]) { const y = px(Yc(v)); s += "<line x1=" + L + " x2=" + (L + pw) + " y1=" + y + " y2=" + y + " stroke='#ddd'/><text x=" + (L - 6) + " y=" + y + " dy=4 text-anchor=end>" + v + "</text>"; }
+  // The measured 95 % bands: |H| exp(±1.96 ε) and φ ± 1.96 σ_φ.
+  const area = (lo, hi) => { const a = K.filter(k => isFinite(lo(k)) && isFinite(hi(k))); if (!a.length) return "";
+    return "<path d='M" + a.map(k => px(X(f[k])) + " " + px(hi(k))).join("L") + "L" + a.slice().reverse().map(k => px(X(f[k])) + " " + px(lo(k))).join("L") + "Z' fill='rgba(0,0,0,0.10)'/>"; };
+  const eps = k => Math.min(5, isFinite(M.magnitude_error[k]) ? M.magnitude_error[k] : 5);
+  s += area(k => Ym(M.magnitude[k] * Math.exp(-1.96 * eps(k))), k => Ym(M.magnitude[k] * Math.exp(1.96 * eps(k))));
+  // Lines; the phase broken where it wraps.
+  const line = (val, Y, col, wraps) => { let d = "", prev = null;
+    for (const k of K) { const v = val[k]; if (v == null || !isFinite(v)) { prev = null; continue; }
+      d += (prev === null || (wraps && Math.abs(v - prev) > 180) ? "M" : "L") + px(X(f[k])) + " " + px(Y(v)); prev = v; }
+    return "<path d='" + d + "' fill=none stroke='" + col + "' stroke-width='1.3'/>"; };
+  s += line(M.magnitude, Ym, "#222") + line(P.magnitude, Ym, "#1f77b4");
+  s += line(M.phase_deg, Yp, "#222", true) + line(P.phase_deg, Yp, "#1f77b4", true);
+  s += line(M.coherence, Yc, "#222") + line(P.coherence, Yc, "#1f77b4");
+  for (const [y, h] of [[T, hm], [t1, hp], [t2, hc]]) s += "<rect x=" + L + " y=" + y + " width=" + pw + " height=" + h + " fill=none stroke='#999'/>";
+  const ylab = (y, h, t) => "<text transform='translate(14 " + (y + h / 2) + ") rotate(-90)' text-anchor=middle>" + esc(t) + "</text>";
+  s += ylab(T, hm, "gain [" + unit + " / m]") + ylab(t1, hp, "phase") + ylab(t2, hc, "coherence γ²");
+  s += "<text x=" + (L + pw / 2) + " y=" + (H - 6) + " text-anchor=middle>frequency [Hz]</text>";
+  return s + "</svg>";
+}
+// v ± sd with sd to two significant digits and v to the same decimals.
+function pm(v, sd) {
+  if (!(sd > 0) || !isFinite(sd)) return fmt(v);
+  const d = Math.min(8, Math.max(0, 1 - Math.floor(Math.log10(sd))));
+  return (+v).toFixed(d) + " ± " + (+sd).toFixed(d);
+}
+function frfTable(c) {
+  const R = c.frf;
+  if (!R || !R.f_hz) return R && R.note ? "<p class=note>frequency response: " + esc(R.note) + "</p>" : "";
+  let h = "<table class=bands><tr><th>band</th><th>Hz</th><th>gain ratio<br>measured / predicted</th><th>phase<br>difference</th><th></th></tr>";
+  for (const b of R.bands)
+    h += "<tr class=" + (b.differs ? "fail" : "ok") + "><td>" + esc(b.band) + "</td><td>" + esc(fmt(b.lo_hz) + "–" + fmt(b.hi_hz)) + "</td><td class=num>" +
+         esc(pm(b.gain_ratio, b.gain_ratio * b.gain_ratio_error)) + "</td><td class=num>" +
+         esc((+b.phase_difference_deg).toFixed(1) + "° ± " + (+b.phase_difference_sd_deg).toFixed(1) + "°") + "</td><td>" + (b.differs ? "differs" : "") + "</td></tr>";
+  return "<div class=spectrum>" + frfSvg(c) + h + "</table></div>" + (R.note ? "<p class=note>frequency response: " + esc(R.note) + "</p>" : "");
+}
 function build() {
   const root = document.getElementById("sets");
   D.sets.forEach((set, gi) => {
@@ -342,6 +421,7 @@ function build() {
       chart(g, e2, c.channel + " residual (measured − predicted)", unit, rser, rarr, c.windows, 190);
       const sp = document.createElement("div"); sp.innerHTML = bandsTable(c); plots.appendChild(sp);
       if (c.discrepancy) { const dv = document.createElement("div"); dv.innerHTML = discrepancySection(c); plots.appendChild(dv); }
+      const fr = document.createElement("div"); fr.innerHTML = frfTable(c); plots.appendChild(fr);
     }
     if (set.view) zoomTo(g, set.view[0], set.view[1]);
     if (D.no_windows) return;
@@ -373,6 +453,7 @@ if (location.hash === "#selftest") {
                 window_shares: Array.from(document.querySelectorAll("table.windows tr")).filter(r => r.querySelector("td")).map(r => parseFloat(r.children[3].textContent)),
                 windows_notes: Array.from(document.querySelectorAll("p.windows-note")).map(p => p.textContent),
                 discrepancy: Array.from(document.querySelectorAll("div.discrepancy")).map(d => ({ charts: d.querySelectorAll("svg.discrepancy-chart").length, fits: Array.from(d.querySelectorAll("table.fits td.num")).map(td => td.textContent) })),
+                frf_charts: document.querySelectorAll("svg.frf-chart").length,
                 ready_ms: Math.round(painted), zoom_ok: false, errors,
                 series: groups.length ? groups[0].charts.map(c => c.u.series.length) : [] };
   if (groups.length && groups[0].charts.length) {

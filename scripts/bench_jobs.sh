@@ -19,7 +19,10 @@
 # drive A, the diagnosis with drive B held out and its causes applied, the comparison on drive B
 # with the FIR baseline; the whole walk timed, each step's time in its log), long_window (a
 # two-minute window at 110 Hz of the same car, calibrated with the structure the diagnosis found:
-# the hub input and a skyhook), passive_car (the same walk's diagnosis on a car without a
+# the hub input and a skyhook), corner_car and feedforward_car (docs/measurements.md, "A sensor nobody
+# placed": the same walk on a car whose road signal is one corner's and whose accelerometer sits over
+# that wheel, with a skyhook or a feed-forward controller; the comparison with --discrepancy too),
+# passive_car (the same walk's diagnosis on a car without a
 # controller, whose road signal is the road under its tires: the verdict must be "none"),
 # demo_study (scripts/demo.sh's study), fresh_demo (scripts/demo.sh on a fresh clone of HEAD with an
 # empty Simbody cache: the newcomer's first run, the Release Simbody build included), run (one 15 s
@@ -39,8 +42,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | passive_car | long_window | demo_study | fresh_demo | run | hand_ode | accumulation | mpi_synthesis | paper | paper_draws) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car passive_car long_window demo_study fresh_demo run hand_ode accumulation mpi_synthesis paper paper_draws)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | corner_car | feedforward_car | passive_car | long_window | demo_study | fresh_demo | run | hand_ode | accumulation | mpi_synthesis | paper | paper_draws) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car corner_car feedforward_car passive_car long_window demo_study fresh_demo run hand_ode accumulation mpi_synthesis paper paper_draws)" >&2; exit 2 ;;
   esac
 done
 
@@ -57,11 +60,26 @@ timed() {  # timed NAME LOG COMMAND...: wall seconds of COMMAND into secs[NAME]
   printf '%s: %.0f s\n' "$name" "${secs[$name]}" >&2
 }
 
-import_car() {  # import_car PREFIX DIR: drives A and B of data/drives/PREFIX_*.csv with the controlled car's mapping and study
-  "$B" import --log "data/drives/$1_a.csv" --map data/drives/controlled_car_map.toml --study data/drives/controlled_car_study.toml \
+import_car() {  # import_car PREFIX DIR [MAP_STUDY]: drives A and B of data/drives/PREFIX_*.csv with the mapping and study
+  # data/drives/MAP_STUDY_map.toml and _study.toml (default: the controlled car's)
+  local ms="${3:-controlled_car}"
+  "$B" import --log "data/drives/$1_a.csv" --map "data/drives/${ms}_map.toml" --study "data/drives/${ms}_study.toml" \
     --out "$2/A" --scenario drive_a >"$2/import_a.log"
-  "$B" import --log "data/drives/$1_b.csv" --map data/drives/controlled_car_map.toml --study "$2/A/study.toml" \
+  "$B" import --log "data/drives/$1_b.csv" --map "data/drives/${ms}_map.toml" --study "$2/A/study.toml" \
     --out "$2/B" --scenario drive_b >"$2/import_b.log"
+}
+
+corner_walk() {  # corner_walk PREFIX DIR: docs/measurements.md, "A sensor nobody placed"
+  import_car "$1" "$2" corner_car
+  /usr/bin/time -f "calibrate %e s" "$B" calibrate --study "$2/B/study.toml" --data "$2/A/measurements.csv@drive_a" \
+    --out "$2/cal" >"$2/calibrate.log" 2>&1
+  /usr/bin/time -f "diagnose %e s" "$B" diagnose --study "$2/B/study.toml" --data "$2/A/measurements.csv@drive_a" \
+    --holdout "$2/B/measurements.csv@drive_b" --out "$2/diag" --causes 5 --candidates 2 >"$2/diagnose.log" 2>&1
+  local found
+  found=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['causes'][-1]['folder'])" "$2/diag/diagnosis.json")
+  /usr/bin/time -f "compare %e s" "$B" compare --study "$2/B/study.toml" --calibration "$found" \
+    --data "$2/B/measurements.csv@drive_b" --baseline "$2/A/measurements.csv@drive_a" \
+    --discrepancy "$2/A/measurements.csv@drive_a" --out "$2/compare_b" >"$2/compare_b.txt" 2>&1
 }
 
 drive() {  # the demonstration drive, imported once
@@ -138,6 +156,10 @@ for r in "${rows[@]}"; do
           --data "$C/B/measurements.csv@drive_b" --baseline "$C/A/measurements.csv@drive_a" --out "$C/compare_b" >"$C/compare_b.txt" 2>&1
       }
       timed controlled_car "$C/walk.log" walk
+      ;;
+    corner_car | feedforward_car)
+      K="$D/$r" && rm -rf "$K" && mkdir -p "$K"
+      timed "$r" "$K/walk.log" corner_walk "$r" "$K"
       ;;
     passive_car)
       P="$D/passive_car" && rm -rf "$P" && mkdir -p "$P"

@@ -71,6 +71,21 @@ TEST(Compare, ModelDataAreCoveredAndShowNoLackOfFit) {
   for (const auto& x : c.series)
     for (const auto& b : x.bands) flagged += b.significant;
   EXPECT_LE(flagged, 2);
+  // The frequency response from the road under each wheel: the model's own data differ from it in
+  // few bands (each at 95 %), and compare.json carries it with its bins.
+  int differ = 0;
+  for (const auto& x : c.series) {
+    const SeriesResponse& fr = x.frequency_response;
+    ASSERT_TRUE(fr.computed) << x.channel << ": " << fr.note;
+    EXPECT_EQ(fr.input, x.channel == "hub_force_fl_N" ? "road_fl_m" : "road_rl_m");
+    EXPECT_NEAR(fr.fs_hz, 100.0, 1e-9);
+    for (const auto& b : fr.response.bands) differ += b.differs;
+  }
+  EXPECT_LE(differ, 2);
+  const nlohmann::json j = c.toJson(true).at("series").at(0).at("frequency_response");
+  EXPECT_EQ(j.at("f_hz").size(), j.at("measured").at("magnitude").size());
+  EXPECT_EQ(j.at("differs").size(), j.at("f_hz").size());
+  EXPECT_FALSE(c.toJson(false).at("series").at(0).at("frequency_response").contains("f_hz"));
 }
 
 // A logger's clock: one repetition at 100 Hz with up to ±2 ms of jitter, so no time is on the

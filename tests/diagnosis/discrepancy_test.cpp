@@ -61,7 +61,7 @@ TEST(CrossSpectrum, TheCrossSpectrumOfADelayHasThePhaseOfTheDelay) {
   std::vector<double> x(8192), y(8192, 0.0);
   for (auto& v : x) v = g(rng);
   for (std::size_t i = lag; i < x.size(); ++i) y[i] = x[i - lag];
-  const CrossSpectrum cs = crossSpectrum(x, y, fs, 256);
+  const CrossSpectra cs = welchCrossSpectra(x, y, fs, 256);
   ASSERT_EQ(cs.freq_hz.size(), 129u);
   for (std::size_t k = 1; k < cs.freq_hz.size(); k += 8) {
     if (cs.freq_hz[k] > 15.0) break;  // the Hann window's leakage grows with the phase's slope

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "diagnosis/frequency_response.hpp"
 #include "report/compare_page.hpp"
 
 namespace fs = std::filesystem;
@@ -90,6 +91,26 @@ TEST(ComparePage, DrawsEveryChannelListsEveryWindowAndZoomsInChromium) {
   EXPECT_EQ(s.value("window_rows", 0), 4) << s.dump();
   EXPECT_TRUE(s.value("zoom_ok", false)) << s.dump();
   EXPECT_TRUE(s.value("errors", nlohmann::json::array()).empty()) << s.dump();
+  EXPECT_EQ(s.value("frf_charts", -1), 0) << "no frequency response in the comparison: no chart";
+  // The frequency response from a road (diagnosis/frequency_response.hpp) under the first channel:
+  // its chart drawn, a band that differs shaded, no script error.
+  auto with_frf = comparison(2000, 4);
+  {
+    auto& ser = with_frf["series"][0];
+    const auto t = ser["t"].get<std::vector<double>>();
+    std::vector<double> road(t.size()), measured(t.size()), predicted(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      road[i] = 0.01 * (std::sin(7.1 * i) + std::sin(2.3 * i + 1) + std::sin(0.5 * i));
+      predicted[i] = 40 * road[i] + (i ? 20 * road[i - 1] : 0.0);
+      measured[i] = 1.3 * predicted[i] + 0.01 * std::sin(1.7 * i);
+    }
+    ser["frequency_response"] = diag::seriesResponse(t, road, "road_fl_m", measured, predicted).toJson();
+  }
+  const fs::path frf = kTmp() / "frf.html";
+  std::ofstream(frf) << comparePage(with_frf, "with a frequency response");
+  const auto f = selftest(chromium, frf);
+  EXPECT_EQ(f.value("frf_charts", 0), 1) << f.dump();
+  EXPECT_TRUE(f.value("errors", nlohmann::json::array()).empty()) << f.dump();
   // Two models (a diagnosis's base and "+ effect"): each adds its line and its residual.
   auto after = comparison(2000, 0);
   for (auto& ser : after["series"])

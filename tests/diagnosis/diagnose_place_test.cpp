@@ -3,7 +3,8 @@
 // by a car whose road signal is the front-left wheel's alone (road.fl_only = 1) and whose body
 // accelerometer sits over the front-left wheel, diagnosed with a study that reads the signal under
 // both axles and puts the accelerometer at the centre of mass: the form and the sensor's place are
-// named, each hidden value within three standard errors of its printed interval's centre. The null
+// named, over the front-left wheel, the residual left at the noise, each hidden value near its
+// estimate (the share within 0.02, the place within 15 cm fore-aft and 10 cm across). The null
 // case: the same car with its sensor where the study says and the signal under both axles gives
 // no place and no form. Label `places` (ctest -L places), kept out of the default run for time.
 #include <gtest/gtest.h>
@@ -74,12 +75,13 @@ DiagnoseOptions placeOptions(const Study& s) {
   return o;
 }
 
-/// |estimate − truth| within three standard errors (the printed 95 % interval's half-width / 1.96).
-void expectNear(const Cause& k, const std::string& name, double truth, const std::string& text) {
+/// |optimum − truth| within `tolerance`. These tests run the diagnosis at small sizes (the paper's
+/// region, two profile points), whose intervals are not the ones a user gets: coverage is the
+/// calibration tests' job (tests/calibration); here the estimate must land near the truth.
+void expectNear(const Cause& k, const std::string& name, double truth, double tolerance, const std::string& text) {
   for (const auto& p : k.parameters)
     if (p.name == name) {
-      const double se = (p.q975 - p.q025) / (2 * 1.96);
-      EXPECT_LE(std::abs(p.optimum - truth), 3 * se + 1e-9) << name << " " << p.optimum << " [" << p.q025 << ", " << p.q975 << "]\n" << text;
+      EXPECT_LE(std::abs(p.optimum - truth), tolerance) << name << " " << p.optimum << " [" << p.q025 << ", " << p.q975 << "]\n" << text;
       return;
     }
   ADD_FAILURE() << "no parameter " << name << " in cause " << k.name << "\n" << text;
@@ -102,16 +104,18 @@ TEST(Places, TheRoadSignalsCornerAndTheSensorsPlaceAreNamed) {
     if (k.name == "free:road.fl_only") {
       EXPECT_EQ(k.kind, "input");
       EXPECT_NE(k.finding.find("the front-left wheel's road alone"), std::string::npos) << k.finding;
-      expectNear(k, "road.fl_only", 1.0, text);
+      expectNear(k, "road.fl_only", 1.0, 0.02, text);
     }
     if (k.name == "place:seat") {
       EXPECT_EQ(k.kind, "place");
       EXPECT_NE(k.finding.find("over the front-left wheel"), std::string::npos) << k.finding;
-      expectNear(k, "sensors.seat.x_m", 1.515, text);
-      expectNear(k, "sensors.seat.y_m", 0.775, text);
+      expectNear(k, "sensors.seat.x_m", 1.515, 0.15, text);
+      expectNear(k, "sensors.seat.y_m", 0.775, 0.1, text);
     }
   }
   EXPECT_NE(text.find("Sensor place: "), std::string::npos) << text;
+  ASSERT_FALSE(r.causes.empty());
+  EXPECT_LT(r.causes.back().fit.comparison.lack_of_fit_z, 3.0) << text;
 }
 
 TEST(Places, ASensorWhereTheStudySaysAndTheSignalUnderBothAxlesGiveNoPlace) {

@@ -7,7 +7,7 @@
 //    with that candidate and in diagnosis.json, and the run finishes with the others.
 // On a car whose road enters at the hub and whose struts carry a skyhook controller (the demo
 // sedan's study with the tire options pac2002 and hub), diagnosed from the sedan's tire model;
-// small sizes (label slow: about a minute each on 2 cores).
+// small sizes (label slow: about three minutes together on 2 cores).
 #include <gtest/gtest.h>
 
 #include "test_util.hpp"

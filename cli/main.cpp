@@ -125,7 +125,7 @@ int runTwin(int argc, char** argv, const Distributed& dist, std::string& error) 
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 1;
   } catch (const std::exception& e) {
-    error = oneLine(std::string("internal error: ") + e.what());
+    error = oneLine(internalErrorText(e.what()));
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 1;
   }

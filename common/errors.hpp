@@ -70,6 +70,13 @@ class StorageError : public std::runtime_error {
   int errno_;
 };
 
+/// The one line shown for an exception that is neither bad input nor a full disk (a bug):
+/// "internal error: <what>", the prefix once (DTWIN_CHECK's message carries it already).
+inline std::string internalErrorText(const std::string& what) {
+  static const std::string prefix = "internal error: ";
+  return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what;
+}
+
 }  // namespace dtwin
 
 #define DTWIN_CHECK(cond, msg)                                                          \

@@ -139,33 +139,38 @@ std::vector<std::vector<double>> Diagnosis::extraStarts(const std::vector<std::s
   const auto it = optima.find(joinEffects(nested));
   if (it == optima.end()) return starts;
   const CandidateSpec& last = spec(effects.back());
-  if (!last.addsParameters()) {
-    // A widened range or another option: the nested optimum's values by name (an option may lack
-    // some, e.g. the hub input the tire's), and the screening's estimate of the widened model.
-    const calib::LabObjective target(study, assembly, fit_sets, setupOf(effects));
-    const auto& from = optima_names.at(joinEffects(nested));
+  // Every start by name: the nested model's values, then the last candidate's own, the others
+  // (none, unless a value the nested model lacks) at the middle of their range. The model with
+  // `effects` may lack values of either (an option such as tire=hub leaves out the tire's, and a
+  // tire's factor on top of it), so no start is the nested optimum with values appended.
+  const calib::LabObjective target(study, assembly, fit_sets, setupOf(effects));
+  const auto& from = optima_names.at(joinEffects(nested));
+  auto byName = [&](const std::vector<double>& nested_values, const std::vector<double>& own) {
     std::vector<double> x;
     for (std::size_t k = 0; k < target.names().size(); ++k) {
-      const auto at = std::find(from.begin(), from.end(), target.names()[k]);
-      x.push_back(at != from.end() ? it->second[static_cast<std::size_t>(at - from.begin())]
-                                   : 0.5 * (target.lower()[k] + target.upper()[k]));
+      const std::string& n = target.names()[k];
+      const auto at = std::find(from.begin(), from.end(), n);
+      const auto mine = std::find(last.calibrated_names.begin(), last.calibrated_names.end(), n);
+      const auto i = static_cast<std::size_t>(mine - last.calibrated_names.begin());
+      x.push_back(at != from.end() ? nested_values[static_cast<std::size_t>(at - from.begin())]
+                  : mine != last.calibrated_names.end() && i < own.size() ? own[i]
+                                                                           : 0.5 * (target.lower()[k] + target.upper()[k]));
     }
+    return x;
+  };
+  if (!last.addsParameters()) {
+    // A widened range or another option: the nested optimum's values, and the screening's
+    // estimate of the widened model.
+    const auto x = byName(it->second, {});
     starts.push_back(x);
     if (theta_start.size() == x.size()) starts.push_back(theta_start);
     return starts;
   }
-  auto x = it->second;
-  for (double v : offValues(last)) x.push_back(v);
-  starts.push_back(x);
+  starts.push_back(byName(it->second, offValues(last)));
   if (effect_start.empty()) return starts;
-  auto y = it->second;
-  for (double v : effect_start) y.push_back(v);
-  starts.push_back(y);
-  if (theta_start.size() == it->second.size()) {  // the screening's θ̂ + δθ of the nested model
-    auto z = theta_start;
-    for (double v : effect_start) z.push_back(v);
-    starts.push_back(z);
-  }
+  starts.push_back(byName(it->second, effect_start));
+  if (theta_start.size() == it->second.size())  // the screening's θ̂ + δθ of the nested model
+    starts.push_back(byName(theta_start, effect_start));
   return starts;
 }
 
@@ -203,9 +208,11 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
   f.left_out = r.left_out;
   // The candidates' own parameters: those the setup adds (after the study's calibrated values),
   // and a widened value's (a range candidate's, one of the study's).
-  const std::size_t n_fit_params = r.names.size() - setup.extra_calibrated.size();
+  // By name: a model may lack some of them (left out, Model::lacksOptionParameter).
   for (std::size_t k = 0; k < r.names.size(); ++k) {
-    const bool own = k >= n_fit_params || setup.bounds.count(r.names[k]);
+    const bool own = setup.bounds.count(r.names[k]) ||
+                     std::any_of(setup.extra_calibrated.begin(), setup.extra_calibrated.end(),
+                                 [&](const CalibratedParameter& c) { return c.name == r.names[k]; });
     EffectParameter ep;
     ep.name = r.names[k];
     ep.unit = k < r.units.size() ? r.units[k] : "";
@@ -228,6 +235,7 @@ Figures Diagnosis::calibrateWith(const std::vector<std::string>& effects, const 
     f.values.push_back(ep);
     if (own) f.effect_parameters.push_back(ep);
   }
+  if (options.before_candidate_step && !effects.empty()) options.before_candidate_step(joinEffects(effects), "compare");
   compareFigures(f, r, setup, stage);
   return f;
 }
@@ -431,7 +439,8 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly, const
   const auto confirmed = confirm(d);
   refine(d, confirmed);
   verdict(d);
-  if (d.res.verdict == "unexplained" && options.propose_terms > 0) propose(d);
+  if (d.res.verdict == "unexplained" && options.propose_terms > 0 && !d.isolated("the proposal", [&] { propose(d); }))
+    d.res.proposal.clear();
   apply(d);
   return std::move(d.res);
 }

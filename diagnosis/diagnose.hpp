@@ -69,6 +69,12 @@ struct DiagnoseOptions {
   /// 0: no proposal; at most 3, the exhaustive subset search's limit).
   int propose_terms = 3;
   std::string command;               ///< recorded in every calibration folder
+  /// A seam for tests: when set, called before each step of a model's screening and confirmation
+  /// with the model (its candidates joined by '+', as its calibration folder: "bump_stop",
+  /// "tire=hub+skyhook") and the step ("screen", "optimum", "full", "compare"). What it throws
+  /// fails that candidate as a failure of the step itself would (docs/diagnosis.md, "When a
+  /// candidate fails"). Empty: nothing is called.
+  std::function<void(const std::string& model, const std::string& step)> before_candidate_step;
   /// Throws InputError("diagnose.<field>", rule) for a field out of range, an unknown or repeated
   /// effect in effects or apply (common/validate.hpp); checks calibration too. diagnose() calls it.
   void validate() const;
@@ -121,6 +127,10 @@ struct Candidate {
   std::string signature;
   std::string finding;       ///< confirmed: what the calibrated candidate says, in words (CandidateSpec::finding)
   std::string gate;          ///< empty: passed the gate; else why it cannot matter here
+  /// Empty: its screening and confirmation finished; else the step that failed and why, on one
+  /// line ("its confirming calibration failed: ..."): an internal error or a simulation failure
+  /// in this candidate alone, which the diagnosis reports and goes on without it.
+  std::string failed;
   double score = 0;          ///< max over probes of rᵀ P r
   int score_dof = 1;
   double p_value = 1.0;      ///< Bonferroni-adjusted over every probe of every effect
@@ -189,6 +199,11 @@ struct DiagnosisResult {
   /// The proposal as ready-to-paste [user_effects] tables ("" when there is none).
   std::string proposalToml() const;
   std::vector<std::string> fitted_channels, left_out_channels;
+  /// What failed beyond one candidate (a later stage of the stagewise selection, the joint
+  /// calibration of the causes in full, another structure's chain, the proposal, a refinement of
+  /// the base), one line each: the diagnosis went on without it (docs/diagnosis.md, "When a
+  /// candidate fails"). A failed candidate is reported with the candidate (Candidate::failed).
+  std::vector<std::string> failures;
   nlohmann::json toJson() const;
   /// The report printed by the CLI.
   std::string text() const;

@@ -159,7 +159,14 @@ void apply(Diagnosis& d) {
         start = c.screening_estimate;
         theta = c.screening_theta;
       }
-    res.steps.push_back(confirmed ? *confirmed : d.calibrateWith(acc, "apply " + joinEffects(acc), start, theta));
+    if (confirmed) {
+      res.steps.push_back(*confirmed);
+      continue;
+    }
+    // A step that fails ends the table at the steps before it (res.failures says why).
+    Figures step;
+    if (!d.isolated("applying " + joinEffects(acc), [&] { step = d.calibrateWith(acc, "apply " + joinEffects(acc), start, theta); })) break;
+    res.steps.push_back(std::move(step));
   }
 }
 

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 
 namespace dtwin::diag {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cands.size(); ++i)
-    if (cands[i].gate.empty() && cands[i].p_value < options.screen_alpha) order.push_back(i);
+    if (cands[i].gate.empty() && cands[i].failed.empty() && cands[i].p_value < options.screen_alpha) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cands[a].score > cands[b].score; });
   std::vector<std::size_t> chosen;
   if (order.empty()) return chosen;
@@ -35,7 +36,7 @@ std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands
   // Another option of a subsystem is not nested in the model: no score can screen it, so it is
   // always confirmed, beyond the budget.
   for (std::size_t i = 0; i < cands.size(); ++i)
-    if (cands[i].kind == "option" && cands[i].gate.empty()) chosen.push_back(i);
+    if (cands[i].kind == "option" && cands[i].gate.empty() && cands[i].failed.empty()) chosen.push_back(i);
   return chosen;
 }
 
@@ -47,17 +48,22 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   auto& cands = d.stage();
   const std::vector<std::size_t> to_confirm = chooseConfirmations(cands, d.options);
   const std::string on_top = d.installed.empty() ? "" : " on " + joinEffects(d.installed);
-  // One candidate's calibration failing (e.g. its region found no point inside the bounds) is
-  // reported with the candidate; the diagnosis goes on with the others.
+  // Each candidate's confirmation is its own (docs/diagnosis.md, "When a candidate fails"): one
+  // whose calibration, intervals or comparison throws (its region found no point inside the
+  // bounds, an internal error) is reported with the candidate, and the diagnosis goes on with the
+  // others. Bad input and a full disk end the run.
   auto calibrate = [&](Candidate& c, const std::string& stage, bool full) {
     try {
+      if (d.options.before_candidate_step) d.options.before_candidate_step(joinEffects(d.withInstalled(c.effect)), full ? "full" : "optimum");
       c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, c.screening_estimate, c.screening_theta, full);
       return true;
     } catch (const InputError&) {
       throw;
+    } catch (const StorageError&) {
+      throw;
     } catch (const std::exception& e) {
       c.fit.reset();
-      c.gate = std::string("its confirming calibration failed: ") + e.what();
+      c.failed = std::string(full ? "its calibration in full failed: " : "its confirming calibration failed: ") + oneLine(e.what());
       return false;
     }
   };
@@ -114,18 +120,25 @@ void refineBase(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
     if (!d.spec(c.effect).addsParameters()) continue;  // not the base's values plus its own
     auto th = d.optima.at(joinEffects({c.effect}));
     th.resize(d.optima.at("base").size());
-    d.report("refine base from " + c.effect, 0, 1);
-    const auto p = calib::polishLeastSquares(*d.base_obj, th, {d.options.threads});
-    d.report("refine base from " + c.effect, 1, 1);
-    if (p.sse < better_sse) {
-      better_sse = p.sse;
-      better = p.theta;
-      res.base_refined_from = c.effect;
-    }
+    d.isolated("the base's refinement from " + c.effect, [&] {
+      d.report("refine base from " + c.effect, 0, 1);
+      const auto p = calib::polishLeastSquares(*d.base_obj, th, {d.options.threads});
+      d.report("refine base from " + c.effect, 1, 1);
+      if (p.sse < better_sse) {
+        better_sse = p.sse;
+        better = p.theta;
+        res.base_refined_from = c.effect;
+      }
+    });
   }
   if (!better.empty()) {
-    res.base_unrefined_sse = res.base.sse_min;
-    res.base = d.calibrateWith({}, "base (refined)", {}, better);
+    Figures refined;
+    if (d.isolated("the refined base's calibration", [&] { refined = d.calibrateWith({}, "base (refined)", {}, better); })) {
+      res.base_unrefined_sse = res.base.sse_min;
+      res.base = std::move(refined);
+    } else {
+      res.base_refined_from.clear();
+    }
   }
 }
 
@@ -155,7 +168,7 @@ void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
       c.holdout_change = c.fit->holdout->systematic_rms_sd / ref.holdout->systematic_rms_sd;
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
-    auto cls = [](const Candidate& c) { return c.confirmed ? 0 : (c.gate.empty() ? 1 : 2); };
+    auto cls = [](const Candidate& c) { return c.confirmed ? 0 : (c.gate.empty() && c.failed.empty() ? 1 : 2); };
     if (cls(a) != cls(b)) return cls(a) < cls(b);
     if (a.confirmed) return a.fit->log_evidence > b.fit->log_evidence;
     return a.score > b.score;
@@ -176,8 +189,15 @@ void furtherCauses(Diagnosis& d) {
       if (std::find(d.installed.begin(), d.installed.end(), e) == d.installed.end()) catalogue.push_back(e);
     d.catalogue = catalogue;
     res.further.push_back({d.installed, {}});
-    screen(d);
-    refine(d, confirm(d));
+    // The stage's own screening (the model with the causes so far, linearised) failing ends the
+    // selection with the causes named so far; its candidates' failures are their own (confirm).
+    if (!d.isolated("the stage on top of " + joinEffects(d.installed), [&] {
+          screen(d);
+          refine(d, confirm(d));
+        })) {
+      res.further.pop_back();
+      break;
+    }
     explainStage(d, d.reference->comparison);
     const auto named = strongOf(d.stage(), d.options);
     if (named.empty()) break;
@@ -185,9 +205,13 @@ void furtherCauses(Diagnosis& d) {
   }
   // Every cause's parameters and finding from the model with all of them (a joint calibration),
   // calibrated in full (its intervals; a later stage stops its candidates at their optimum).
+  // If that calibration fails, the causes keep the joint model at its optimum (no intervals).
   if (!res.causes.back().fit.full) {
     const std::vector<std::string> effects = res.causes.back().fit.effects;
-    res.causes.back().fit = d.calibrateWith(effects, "final " + joinEffects(effects) + " in full", {}, {}, true);
+    Figures all;
+    if (d.isolated("the calibration in full of " + joinEffects(effects),
+                   [&] { all = d.calibrateWith(effects, "final " + joinEffects(effects) + " in full", {}, {}, true); }))
+      res.causes.back().fit = std::move(all);
   }
   const Figures& all = res.causes.back().fit;
   for (auto& k : res.causes) {

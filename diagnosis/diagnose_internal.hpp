@@ -14,6 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "calibration/calibrate.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
 #include "diagnosis/candidates.hpp"
 #include "diagnosis/diagnose.hpp"
 
@@ -84,6 +86,23 @@ struct Diagnosis {
     auto e = installed;
     e.push_back(name);
     return e;
+  }
+
+  /// Runs `step`; when it throws anything but bad input or a full disk, records "<what> failed:
+  /// <reason>" in res.failures and returns false (docs/diagnosis.md, "When a candidate fails").
+  template <class F>
+  bool isolated(const std::string& what, F&& step) {
+    try {
+      step();
+      return true;
+    } catch (const InputError&) {
+      throw;
+    } catch (const StorageError&) {
+      throw;
+    } catch (const std::exception& e) {
+      res.failures.push_back(what + " failed: " + oneLine(e.what()));
+      return false;
+    }
   }
 
   void report(const std::string& stage, std::size_t done, std::size_t total) const {

@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/parallel.hpp"
 
@@ -143,31 +144,41 @@ std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate, 
 
 namespace {
 
-/// The predictions at every probe column, in group then column order (empty: a failed run).
+/// The predictions at every probe column, in group then column order (empty: a failed run), on
+/// `eff_obj` (per catalogue effect; the reference model for a range candidate's probes). A probe
+/// whose run throws fails its candidate: `failed` (per catalogue effect) gets the message of its
+/// first such probe, in job order (whatever the thread count).
 std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::vector<ProbeGroup>& groups,
-                                                const std::vector<double>& theta_hat) {
-  std::vector<std::unique_ptr<calib::LabObjective>> eff_obj;
-  for (const auto& e : d.catalogue)
-    eff_obj.push_back(d.spec(e).addsParameters()
-                          ? std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(d.withInstalled(e)))
-                          : nullptr);
+                                                const std::vector<double>& theta_hat,
+                                                const std::vector<std::unique_ptr<calib::LabObjective>>& eff_obj,
+                                                std::vector<std::string>& failed) {
   std::vector<std::pair<std::size_t, std::size_t>> jobs;  // (group, column)
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t c = 0; c < groups[g].cols.size(); ++c) jobs.push_back({g, c});
   std::vector<std::vector<double>> probe_eta(jobs.size());
+  std::vector<std::string> errors(jobs.size());
   d.report("screening: probes", 0, jobs.size());
   parallelFor(jobs.size(), d.options.threads, [&](std::size_t j, int) {
     const auto& g = groups[jobs[j].first];
-    auto th = theta_hat;
-    if (g.theta_index >= 0) {
-      th[static_cast<std::size_t>(g.theta_index)] = g.cols[jobs[j].second][0];
-      probe_eta[j] = d.base_obj->predict(th);
-      return;
+    try {
+      auto th = theta_hat;
+      if (g.theta_index >= 0) {
+        th[static_cast<std::size_t>(g.theta_index)] = g.cols[jobs[j].second][0];
+        probe_eta[j] = d.base_obj->predict(th);
+        return;
+      }
+      for (double v : g.cols[jobs[j].second]) th.push_back(v);
+      probe_eta[j] = eff_obj[g.effect]->predict(th);
+    } catch (const std::exception& e) {  // this candidate's alone (an InputError is a failed run: LabObjective)
+      probe_eta[j].clear();
+      errors[j] = oneLine(e.what());
     }
-    for (double v : g.cols[jobs[j].second]) th.push_back(v);
-    probe_eta[j] = eff_obj[g.effect]->predict(th);
   });
   d.report("screening: probes", jobs.size(), jobs.size());
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    auto& f = failed[groups[jobs[j].first].effect];
+    if (!errors[j].empty() && f.empty()) f = "its screening failed: " + errors[j];
+  }
   return probe_eta;
 }
 
@@ -260,6 +271,7 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     auto& c = d.stage()[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
+    if (!c.failed.empty() || !c.gate.empty()) continue;  // failed, or gated before its probes (screen)
     const auto& spec = d.spec(c.effect);
     if (spec.kind == "option") continue;  // not screened: always confirmed
     const auto& names = d.base_obj->names();
@@ -299,6 +311,10 @@ void screen(Diagnosis& d) {
   auto& cands = d.stage();
   cands.resize(d.catalogue.size());
   const auto& names = d.base_obj->names();
+  // Each candidate's screening is its own: one whose model cannot be built or whose probe throws
+  // fails alone (Candidate::failed) and the others are screened.
+  std::vector<std::unique_ptr<calib::LabObjective>> eff_obj(d.catalogue.size());
+  std::vector<std::string> failed(d.catalogue.size());
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     const auto& spec = d.spec(d.catalogue[e]);
     cands[e].effect = d.catalogue[e];
@@ -312,9 +328,34 @@ void screen(Diagnosis& d) {
       index = static_cast<long>(it - names.begin());
       at = lin.theta_hat[static_cast<std::size_t>(index)];
     }
+    if (spec.kind == "option") continue;  // not nested: not screened (always confirmed)
+    try {
+      const auto model = d.withInstalled(d.catalogue[e]);
+      if (d.options.before_candidate_step) d.options.before_candidate_step(joinEffects(model), "screen");
+      if (spec.addsParameters()) eff_obj[e] = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(model));
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& ex) {
+      cands[e].failed = "its screening failed: " + oneLine(ex.what());
+      continue;
+    }
+    // A value of the candidate that the model with the causes installed lacks (a tire's factor
+    // on top of tire=hub): the candidate does not exist on this model.
+    std::string lacks;
+    if (eff_obj[e])
+      for (const auto& n : eff_obj[e]->leftOut())
+        if (std::find(spec.calibrated_names.begin(), spec.calibrated_names.end(), n) != spec.calibrated_names.end())
+          lacks += (lacks.empty() ? "" : ", ") + n;
+    if (!lacks.empty()) {
+      cands[e].gate = "this model has no " + lacks + (d.installed.empty() ? "" : " (" + joinEffects(d.installed) + " leaves it out)");
+      eff_obj[e].reset();
+      continue;
+    }
     for (auto& g : probesOf(e, spec, at, index)) groups.push_back(std::move(g));
   }
-  const auto probe_eta = simulateProbes(d, groups, lin.theta_hat);
+  const auto probe_eta = simulateProbes(d, groups, lin.theta_hat, eff_obj, failed);
+  for (std::size_t e = 0; e < d.catalogue.size(); ++e)
+    if (!failed[e].empty()) cands[e].failed = failed[e];
   const auto all_failed = scoreProbes(d, lin, groups, probe_eta);
   gateCandidates(d, lin.theta_hat, groups.size(), all_failed);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <set>
 
 #include "common/format.hpp"
@@ -116,6 +117,7 @@ std::string signatureSeen(const Comparison& base, const CandidateSpec& candidate
 /// `best_score`: the best screening score of the ungated candidates.
 std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Comparison& base, const DiagnoseOptions& options,
                   double best_score) {
+  if (!c.failed.empty()) return c.effect + ": failed, left out of the verdict: " + c.failed + (c.failed.back() == '.' ? "" : ".");
   if (!c.gate.empty()) return c.effect + ": not a candidate: " + c.gate + ".";
   if (!c.confirmed)
     return c.effect + ": screening score " + fmt("%.3g", c.score) + " (p = " + fmt("%.2g", c.p_value) + ")" +
@@ -194,7 +196,7 @@ void explainStage(Diagnosis& d, const Comparison& ref) {
   auto& cands = d.stage();
   double best_score = 0;
   for (const auto& c : cands)
-    if (c.gate.empty()) best_score = std::max(best_score, c.score);
+    if (c.gate.empty() && c.failed.empty()) best_score = std::max(best_score, c.score);
   for (auto& c : cands) {
     const auto& spec = d.spec(c.effect);
     c.why = whyOf(c, spec, ref, d.options, best_score);
@@ -343,7 +345,14 @@ void verdict(Diagnosis& d) {
     res.causes = {causeOf(*o, {})};
     res.further.clear();
     d.catalogue = catalogue;
-    furtherCauses(d);
+    if (!d.isolated("the chain from the structure " + o->effect, [&] { furtherCauses(d); })) {
+      res.causes = std::move(chain);  // the first chain stands
+      res.further = std::move(stages);
+      d.installed.clear();
+      d.reference = nullptr;
+      d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
+      continue;
+    }
     const double bic_chain = chain.back().fit.bic, bic_alt = res.causes.back().fit.bic;
     auto words = [](const std::vector<Cause>& c) {
       std::string w;
@@ -400,6 +409,7 @@ void candidatesJson(const std::vector<Candidate>& candidates, double ref_log_evi
     nlohmann::json s{{"effect", c.effect},     {"kind", c.kind},           {"score", c.score},         {"score_dof", c.score_dof}, {"p_value", c.p_value},
                      {"max_signal", c.max_signal}, {"gate", c.gate},       {"confirmed", c.confirmed}, {"why", c.why},
                      {"signature", c.signature}};
+    if (!c.failed.empty()) s["failed"] = c.failed;
     j["screening"].push_back(s);
     if (!c.confirmed) continue;
     nlohmann::json r{{"effect", c.effect},
@@ -433,6 +443,13 @@ nlohmann::json DiagnosisResult::toJson() const {
   if (verdict != "none") j["unexplained_location"] = unexplained_location;
   j["fitted_channels"] = fitted_channels;
   j["left_out_channels"] = left_out_channels;
+  j["failed"] = nlohmann::json::array();  // every candidate that failed, of every stage, and what failed beyond one
+  for (const auto& c : candidates)
+    if (!c.failed.empty()) j["failed"].push_back({{"candidate", c.effect}, {"reason", c.failed}});
+  for (const auto& st : further)
+    for (const auto& c : st.candidates)
+      if (!c.failed.empty()) j["failed"].push_back({{"candidate", c.effect}, {"on_top_of", st.installed}, {"reason", c.failed}});
+  for (const auto& f : failures) j["failed"].push_back({{"reason", f}});
   j["base"] = base.toJson();
   if (!base_refined_from.empty())
     j["base_refined"] = {{"from", base_refined_from}, {"sse_min_weighted_before", base_unrefined_sse}};
@@ -504,6 +521,10 @@ std::string DiagnosisResult::text() const {
         s += "    " + p.name + ": optimum " + fmt("%.4g", p.optimum) + " " + p.unit +
              (p.interval == "none" ? std::string() : "  (95 % " + p.interval + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) + "])") + "\n";
     }
+  }
+  if (!failures.empty()) {
+    s += "\nFailed (the diagnosis went on without it):\n";
+    for (const auto& f : failures) s += "  " + f + "\n";
   }
   if (!causes.empty() && causes.back().fit.full && !causes.back().fit.values.empty()) {
     const Figures& all = causes.back().fit;

@@ -183,7 +183,7 @@ void runReleased(const std::function<void()>& work, const Keywords& keywords, Ca
   } catch (py::error_already_set&) {
     throw;
   } catch (const std::exception& e) {
-    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), oneLine(std::string("internal error: ") + e.what()));
+    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), oneLine(internalErrorText(e.what())));
   }
 }
 

@@ -334,7 +334,8 @@ void effectTables(SectionPage& pg, const DiagnosisInput& in) {
     for (const auto& s : screening)
       b << "<tr><td>" << htmlEscape(str(at(s, "effect"))) << "</td><td class=\"n\">" << num(dbl(at(s, "score")), 4) << " ("
         << htmlEscape(text(at(s, "score_dof"))) << ")</td><td class=\"n\">" << num(dbl(at(s, "p_value")), 3) << "</td><td>"
-        << htmlEscape(text(at(s, "gate"))) << "</td><td>" << htmlEscape(text(at(s, "confirmed"))) << "</td><td>"
+        << htmlEscape(at(s, "failed").is_string() ? "failed: " + str(at(s, "failed")) : text(at(s, "gate"))) << "</td><td>"
+        << htmlEscape(text(at(s, "confirmed"))) << "</td><td>"
         << htmlEscape(text(at(s, "why"))) << "</td></tr>\n";
     b << "</table>\n";
   }

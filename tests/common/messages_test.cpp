@@ -1,6 +1,6 @@
 // One-line messages: printable() escapes the control bytes of quoted user text, InputError applies
-// it to both parts, oneLine() folds another library's multi-line message, and a JSON library's
-// error identifiers are dropped (jsonErrorInWords).
+// it to both parts, oneLine() folds another library's multi-line message, a JSON library's
+// error identifiers are dropped (jsonErrorInWords), and an internal error's prefix is shown once.
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
@@ -23,6 +23,20 @@ TEST(Messages, InputErrorIsOneLineWhateverItQuotes) {
   EXPECT_EQ(what.find('\r'), std::string::npos);
   EXPECT_EQ(what, "lab.csv:1: header: unexpected column 'time\\r\\n_s'");
   EXPECT_EQ(e.rule(), "header: unexpected column 'time\\r\\n_s'");
+}
+
+// An internal error is shown with its prefix once: DTWIN_CHECK's message carries it already.
+TEST(Messages, AnInternalErrorCarriesItsPrefixOnce) {
+  try {
+    DTWIN_CHECK(1 + 1 == 3, "arithmetic");
+    FAIL() << "DTWIN_CHECK did not throw";
+  } catch (const std::logic_error& e) {
+    const std::string text = dtwin::internalErrorText(e.what());
+    EXPECT_EQ(text.rfind("internal error: arithmetic [1 + 1 == 3] (", 0), 0u) << text;
+    EXPECT_EQ(text.find("internal error: internal error"), std::string::npos) << text;
+  }
+  EXPECT_EQ(dtwin::internalErrorText("[json.exception.type_error.302] type must be number"),
+            "internal error: [json.exception.type_error.302] type must be number");
 }
 
 TEST(Messages, OneLineFoldsWhiteSpaceRuns) {

@@ -178,11 +178,18 @@ class LabObjective {
   struct Pool;
   struct Set {
     ScenarioSpec scenario;
+    /// The same run writing only the records' times, every one a sample time (a grid time as
+    /// r / rate, read bit for bit as its grid row): what predict() reads (ScenarioSpec::grid_output).
+    ScenarioSpec sampled;
     std::shared_ptr<const Road> road;
     std::size_t first = 0, count = 0;  ///< its records in y_
   };
   void addDataSet(const Study& study, const DataSet& ds, bool single);
-  std::vector<RunResult> runAll(const std::vector<double>& theta) const;
+  /// Every data set's run at θ; `sampled`: the runs of Set::sampled (no output grid).
+  std::vector<RunResult> runAll(const std::vector<double>& theta, bool sampled = false) const;
+  /// Whether predict() may read the sampled runs: no sensor model (it distorts the grid) and no
+  /// filtered sensor (its filter runs on the grid).
+  bool sampledPredictions() const;
   std::shared_ptr<const Model> model_;
   std::vector<Set> sets_;
   std::vector<std::string> names_, left_out_;
@@ -198,6 +205,7 @@ class LabObjective {
     std::size_t index = 0;   ///< the row (of the grid, or of the samples)
   };
   std::vector<RecordRead> where_;  ///< per record
+  std::vector<std::size_t> sampled_row_;  ///< per record: its row of the sampled run's samples
   std::vector<double> t_;          ///< per record: its time [s]
   std::vector<long> rep_;          ///< per record: its repetition
   /// The setup's sensor models: the channel columns each distorts and its parameter's index in θ.

@@ -173,7 +173,26 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
       w.index = static_cast<std::size_t>(std::lower_bound(extra.begin(), extra.end(), t) - extra.begin());
     }
   }
+  // The sampled run: every record's time a sample time, a grid time as the grid's own r / rate.
+  set.sampled = set.scenario;
+  set.sampled.grid_output = false;
+  std::vector<double>& all = set.sampled.sample_times_s;
+  all.clear();
+  auto sampleTime = [&](std::size_t i) {
+    const double t = ds.data.records[i].time_s;
+    return onGrid(t, rate) ? static_cast<double>(std::llround(t * rate)) / rate : t;
+  };
+  for (std::size_t i = 0; i < set.count; ++i) all.push_back(sampleTime(i));
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  for (std::size_t i = 0; i < set.count; ++i)
+    sampled_row_.push_back(static_cast<std::size_t>(std::lower_bound(all.begin(), all.end(), sampleTime(i)) - all.begin()));
   sets_.push_back(std::move(set));
+}
+
+bool LabObjective::sampledPredictions() const {
+  return sensor_models_.empty() && std::none_of(model_->sensors().begin(), model_->sensors().end(),
+                                                [](const SensorSpec& x) { return x.filter.order > 0; });
 }
 
 LabObjective::~LabObjective() = default;
@@ -192,7 +211,7 @@ std::vector<double> LabObjective::runValues(const std::vector<double>& theta) co
   return values;
 }
 
-std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta) const {
+std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta, bool sampled) const {
   const std::vector<double> values = runValues(theta);
   pool_->evaluations++;
   auto sim = pool_->acquire();
@@ -203,7 +222,7 @@ std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta) co
     try {
       StepControl steps;
       if (!plans_.empty()) steps.replay = plans_[static_cast<std::size_t>(&set - sets_.data())].get();
-      r = sim->run(values, *set.road, set.scenario, steps);
+      r = sim->run(values, *set.road, sampled ? set.sampled : set.scenario, steps);
     } catch (const InputError& e) {
       // A combination of in-bound values the laws reject (e.g. PAC2002 with an impossible shape):
       // a failed point, not a failed calibration.
@@ -246,7 +265,7 @@ bool LabObjective::freezeSteps(const std::vector<double>& theta, double accuracy
     StepControl steps;
     steps.record = plan.get();
     try {
-      ok = sim->run(values, *set.road, set.scenario, steps).stats.ok;
+      ok = sim->run(values, *set.road, sampledPredictions() ? set.sampled : set.scenario, steps).stats.ok;
     } catch (const InputError&) {
       ok = false;
     }
@@ -287,9 +306,19 @@ double LabObjective::read(const RunResult& run, std::size_t record, std::size_t 
 }
 
 std::vector<double> LabObjective::predict(const std::vector<double>& theta) const {
-  const auto rs = runAll(theta);
+  const bool sampled = sampledPredictions();
+  const auto rs = runAll(theta, sampled);
   if (rs.size() != sets_.size() || !rs.back().stats.ok) return {};
   std::vector<double> eta(y_.size());
+  if (sampled) {  // every record a row of its run's samples, bit for bit the value of the grid path
+    for (std::size_t k = 0; k < sets_.size(); ++k)
+      for (std::size_t i = sets_[k].first; i < sets_[k].first + sets_[k].count; ++i) {
+        const Trace& tr = rs[k].samples;
+        if (sampled_row_[i] >= tr.rows()) return {};
+        eta[i] = tr.column(static_cast<std::size_t>(where_[i].column))[sampled_row_[i]];
+      }
+    return eta;
+  }
   for (std::size_t k = 0; k < sets_.size(); ++k)
     for (std::size_t i = sets_[k].first; i < sets_[k].first + sets_[k].count; ++i) {
       const RecordRead& w = where_[i];

@@ -24,7 +24,11 @@
 # that wheel, with a skyhook or a feed-forward controller; the comparison with --discrepancy too),
 # passive_car (the same walk's diagnosis on a car without a
 # controller, whose road signal is the road under its tires: the verdict must be "none"),
-# demo_study (scripts/demo.sh's study), fresh_demo (scripts/demo.sh on a fresh clone of HEAD with an
+# long_drive (a real car's sizes: the diagnosis `--causes 3 --candidates 2` of a 60 s window at
+# 110 Hz of the controlled car with its five calibrated values, then the structure it finds, the hub
+# input and a skyhook, calibrated on a whole 12-minute drive at 110 Hz, 72 199 records, which
+# scripts/make_controlled_car_drives.py --long makes into the row's folder once; each step's stage
+# times in its log), demo_study (scripts/demo.sh's study), fresh_demo (scripts/demo.sh on a fresh clone of HEAD with an
 # empty Simbody cache: the newcomer's first run, the Release Simbody build included), run (one 15 s
 # run per assembly: `twin bench`), hand_ode (`twin bench --hand-ode`: one run against a hand-written
 # ODE), accumulation (`twin bench --accumulation` on the paper's sizes: the synthesis's measured
@@ -42,8 +46,8 @@ mkdir -p "$D"
 rows=("$@")
 [[ ${#rows[@]} -gt 0 ]] || rows=(run readme drive_calibrate drive_diagnose demo_study)
 for r in "${rows[@]}"; do
-  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | corner_car | feedforward_car | passive_car | long_window | demo_study | fresh_demo | run | hand_ode | accumulation | mpi_synthesis | paper | paper_draws) ;;
-    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car corner_car feedforward_car passive_car long_window demo_study fresh_demo run hand_ode accumulation mpi_synthesis paper paper_draws)" >&2; exit 2 ;;
+  case "$r" in readme | drive_calibrate | drive_vehicle | drive_diagnose | unknown_car | controlled_car | corner_car | feedforward_car | passive_car | long_window | long_drive | demo_study | fresh_demo | run | hand_ode | accumulation | mpi_synthesis | paper | paper_draws) ;;
+    *) echo "bench_jobs.sh: unknown row '$r' (rows: readme drive_calibrate drive_vehicle drive_diagnose unknown_car controlled_car corner_car feedforward_car passive_car long_window long_drive demo_study fresh_demo run hand_ode accumulation mpi_synthesis paper paper_draws)" >&2; exit 2 ;;
   esac
 done
 
@@ -182,6 +186,23 @@ for r in "${rows[@]}"; do
       timed long_window "$L/calibrate.log" "$B" calibrate --study "$L/C/study_found.toml" \
         --data "$L/C/measurements.csv@drive_c" --out "$L/cal"
       ;;
+    long_drive)
+      R="$D/long_drive" && mkdir -p "$R" && rm -rf "$R/W" "$R/L" "$R/diag" "$R/cal"
+      # (a) a 60 s window at 110 Hz, the five values of the study: the diagnosis.
+      "$B" import --log data/drives/controlled_car_c.csv --map data/drives/controlled_car_map.toml \
+        --study data/drives/controlled_car_study.toml --out "$R/W" --scenario drive_w --window 10,70 >"$R/import_w.log"
+      timed long_drive_diagnose "$R/diagnose.log" "$B" diagnose --study "$R/W/study.toml" --data "$R/W/measurements.csv@drive_w" \
+        --out "$R/diag" --causes 3 --candidates 2
+      # (b) the structure found (hub input + skyhook, four values) on a whole 12-minute drive.
+      [[ -f "$R/controlled_car_long.csv" ]] || python3 scripts/make_controlled_car_drives.py --long "$B" "$R" >"$R/make.log"
+      "$B" import --log "$R/controlled_car_long.csv" --map data/drives/controlled_car_map.toml \
+        --study data/drives/controlled_car_study.toml --out "$R/L" --scenario drive_long >"$R/import_l.log"
+      sed -e 's/^tire = \["pac2002"\]/tire = ["hub"]/' "$R/L/study.toml" >"$R/L/study_found.toml"
+      printf '\n[effects.skyhook]\ndamping = 0.0\n\n[[calibrated]]\nname = "skyhook.damping"\nunit = "N*s/m"\nlower = 0.0\nupper = 8000.0\n' \
+        >>"$R/L/study_found.toml"
+      timed long_drive "$R/calibrate.log" "$B" calibrate --study "$R/L/study_found.toml" \
+        --data "$R/L/measurements.csv@drive_long" --out "$R/cal"
+      ;;
     demo_study)
       rm -rf "$D/demo_study"
       timed demo_study "$D/demo_study.log" "$B" study --study data/studies/demo.toml --out "$D/demo_study" --quiet
@@ -239,6 +260,8 @@ for r in "${rows[@]}"; do
   case "$r" in
     run) echo "| one 15 s run per assembly (\`twin bench --runs 3\`) | see $D/run.md | $D/run.md |" ;;
     hand_ode | accumulation) echo "| $r | see $D/$r.txt | $D/$r.txt |" ;;
+    long_drive) printf '| long_drive: (a) diagnose, 60 s at 110 Hz / (b) calibrate, 12 min at 110 Hz | %.0f / %.0f | %s |\n' \
+      "${secs[long_drive_diagnose]}" "${secs[long_drive]}" "$D/long_drive" ;;
     mpi_synthesis) printf '| mpi_synthesis: 1 process x 2 threads / mpirun -n 2 x 1 thread | %.0f / %.0f | %s |\n' \
       "${secs[mpi_synthesis_threads]}" "${secs[mpi_synthesis]}" "$D/mpi_synthesis" ;;
     *) printf '| %s | %.0f | %s |\n' "$r" "${secs[$r]}" "$D/$r" ;;

@@ -82,12 +82,28 @@ SpeedTrace::SpeedTrace(std::vector<double> t_s, std::vector<double> v_mps, std::
     const double h = t_[k + 1] - t_[k];  // the Hermite trapezoid rule: exact for the cubic
     cum_[k + 1] = cum_[k] + h * (v_[k] + v_[k + 1]) / 2 + h * h * (d_[k] - d_[k + 1]) / 12;
   }
+  // The interval index at the start of each of t_.size() equal buckets of the span: interval()
+  // starts there and walks a step or two instead of a binary search over the whole trace.
+  const std::size_t nb = t_.size();
+  bucket_scale_ = static_cast<double>(nb) / (t_.back() - t_.front());
+  bucket_.resize(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const double tb = t_.front() + static_cast<double>(b) / bucket_scale_;
+    const auto it = std::upper_bound(t_.begin(), t_.end(), tb);
+    bucket_[b] = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(it - t_.begin() - 1, 0, static_cast<std::ptrdiff_t>(nb) - 2));
+  }
   offset_ = integral(0.0);
 }
 
 std::size_t SpeedTrace::interval(double t) const {
-  const auto it = std::upper_bound(t_.begin(), t_.end(), t);
-  return static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(it - t_.begin() - 1, 0, static_cast<std::ptrdiff_t>(t_.size()) - 2));
+  // The largest k <= size - 2 with t_[k] <= t (0 when none): the same k as a binary search.
+  const double u = (t - t_.front()) * bucket_scale_;
+  const std::size_t last = t_.size() - 2;
+  const double nb = static_cast<double>(bucket_.size());
+  std::size_t k = u > 0 ? bucket_[u < nb ? static_cast<std::size_t>(u) : bucket_.size() - 1] : 0;
+  while (k > 0 && t_[k] > t) --k;
+  while (k < last && t_[k + 1] <= t) ++k;
+  return k;
 }
 
 double SpeedTrace::speed(double t) const {

@@ -44,6 +44,13 @@ struct ScenarioSpec {
   /// Extra output times a caller asks of a run (ascending, within duration_s): the times of
   /// measurements off the output grid. Not part of the study file, nor of toJson().
   std::vector<double> sample_times_s;
+  /// false: the run writes only the rows at sample_times_s (RunResult::samples) and leaves the
+  /// output grid empty (RunResult::trace has the channels and no rows), unless a sensor is
+  /// filtered (its filter runs on the grid). For callers that read measured times only: on a long
+  /// drive the grid's rows cost more than the rows the data ask for. A grid time asked as a
+  /// sample time (r / output_rate_hz) gives its grid row's numbers bit for bit. Not part of
+  /// toJson().
+  bool grid_output = true;
   nlohmann::json toJson() const;
 };
 

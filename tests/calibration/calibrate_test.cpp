@@ -305,6 +305,30 @@ TEST(LabObjective, RejectsTimesOutsideTheScenarioAndAcceptsOffGridTimes) {
   EXPECT_NO_THROW(LabObjective(f.study, f.assembly, d, "lab"));
 }
 
+// predict() runs without the output grid (ScenarioSpec::grid_output): every record, on the grid or
+// off it, is a sample time of the run. Its predictions are the grid path's numbers bit for bit: a
+// run with the grid read through read(), grid rows and off-grid samples mixed.
+TEST(LabObjective, PredictionsWithoutTheGridAreTheGridsNumbers) {
+  Fixture f;
+  LabData d;
+  const std::vector<std::string> names = {"hub_force_fl_N", "chassis_heave_acc_mps2", "susp_defl_rr_m"};
+  for (int k = 0; k < 300; ++k)
+    for (const auto& ch : names) d.records.push_back({1, k % 2 ? 5.8 + 0.001 * k : 5.8005 + 0.0025 * k, ch, 0.0});
+  LabObjective obj(f.study, f.assembly, d, "lab");
+  const auto theta = truthOf(f.study);
+  const auto eta = obj.predict(theta);
+  const auto runs = obj.runs(theta);
+  ASSERT_EQ(eta.size(), d.records.size());
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_GT(runs[0].trace.rows(), 0u);  // runs() keeps the grid
+  const auto channels = Simulator::channels(obj.model().sensors());
+  for (std::size_t i = 0; i < eta.size(); ++i) {
+    const auto it = std::find_if(channels.begin(), channels.end(), [&](const Channel& c) { return c.name == d.records[i].channel; });
+    ASSERT_NE(it, channels.end());
+    EXPECT_EQ(eta[i], obj.read(runs[0], i, static_cast<std::size_t>(it - channels.begin()))) << "record " << i;
+  }
+}
+
 // Times off the 1 kHz output grid are extra output times of the run, read from the same dense
 // output as the grid: the same values as a 2 kHz run (on whose grid they lie) gives, to rounding.
 // The integration does not depend on the output rate.

@@ -37,9 +37,10 @@
 # demo_study row's calibration), paper, paper_draws (how the paper study's decision depends on the
 # number of synthetic draws: its calibrations and field records, synthesized again with 100, 300
 # and 1000 draws under several seeds and classified; needs the paper row, or PAPER_DIR).
+# TWIN=PATH times another build of the program (default: ./build/cli/twin).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-B="$PWD/build/cli/twin"
+B="${TWIN:-$PWD/build/cli/twin}"
 [[ -x "$B" ]] || { echo "bench_jobs.sh: build first (bash scripts/build.sh)" >&2; exit 2; }
 D="${BENCH_DIR:-/tmp/dtwin_bench}"
 mkdir -p "$D"

@@ -185,9 +185,11 @@ CommandHandle addDiagnoseCommand(CLI::App& root, const CommandContext& context) 
   c->add_option("--effects", cfg->effects,
                 "Only rank these candidates (comma separated): effects, an effect at one corner (e.g. bump_stop@rr), "
                 "free:<vehicle value> (e.g. free:wheel.mass_kg), a per-corner or per-axle factor (e.g. free:suspension.damping@rr) or "
-                "<lowpass|lowpass2|gain|delay>:<channel group> (e.g. lowpass:hub_force); default: every effect not installed, "
+                "<lowpass|lowpass2|gain|delay>:<channel group> (e.g. lowpass:hub_force), place:<sensor> (where a body sensor acts, "
+                "e.g. place:seat) or a place of the road signal (e.g. free:road.fl_only); default: every effect not installed, "
                 "every freeable vehicle value, the per-corner and per-axle factors, the effects of a part that wears at one strut at "
-                "each corner, and every sensor model (docs/diagnosis.md)");
+                "each corner, every sensor model, the place of each sensor not declared measured, and on a logged road its gain, "
+                "delay and places (docs/diagnosis.md)");
   c->add_option("--apply", cfg->apply,
                 "Add these candidates in turn (comma separated) and print the before/after table; a .toml file (e.g. a diagnosis's "
                 "proposal.toml) adds its [user_effects]");

@@ -17,7 +17,7 @@ if [ "${1:-}" = "--demo" ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=OFF
   cmake --build build -j"$(nproc)" --target twin
   # The Python module (docs/python.md), when CMake found pybind11 and Python's headers.
-  if cmake --build build --target help | grep -q "dtwin_python"; then
+  if cmake --build build --target help | grep "dtwin_python" >/dev/null; then
     cmake --build build -j"$(nproc)" --target dtwin_python
   fi
 else

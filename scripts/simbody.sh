@@ -54,7 +54,7 @@ EOF
 fi
 need=()
 for p in dpkg-dev liblapack-dev libblas-dev cmake g++; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || need+=("$p")
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep "install ok installed" >/dev/null || need+=("$p")
 done
 if [ ${#need[@]} -gt 0 ]; then
   echo "simbody: installing ${need[*]}"

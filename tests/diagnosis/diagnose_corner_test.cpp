@@ -50,19 +50,7 @@ std::vector<calib::DataSet> cornerData(const Study& s, const std::map<std::strin
 
 /// The diagnosis test's small sizes (the paper's region, one Latin hypercube) with the study's
 /// profile settings: these tests check that the printed interval holds the truth.
-DiagnoseOptions cornerOptions(const Study& s) {
-  DiagnoseOptions o;
-  o.calibration = calib::CalibrationOptions::fromStudy(s);
-  o.calibration.lhs_points = 40;
-  o.calibration.gibbs_iterations = 3000;
-  o.calibration.gibbs_burn_in = 1000;
-  o.calibration.optimizer_starts = 2;
-  o.calibration.region = "paper";
-  o.calibration.design.adaptive = false;
-  o.candidates = 4;
-  o.compare_draws = 10;
-  return o;
-}
+DiagnoseOptions cornerOptions(const Study& s) { return dtwin_test::smallDiagnosisOptions(s); }
 
 /// The parameter `name` of cause `k`.
 const EffectParameter* parameterOf(const Cause& k, const std::string& name) {

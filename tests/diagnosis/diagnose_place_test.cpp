@@ -53,19 +53,11 @@ std::vector<calib::DataSet> placeData(const Study& truth, std::uint64_t seed) {
 }
 
 DiagnoseOptions placeOptions(const Study& s) {
-  DiagnoseOptions o;
-  o.calibration = calib::CalibrationOptions::fromStudy(s);
-  o.calibration.lhs_points = 40;
-  o.calibration.gibbs_iterations = 3000;
-  o.calibration.gibbs_burn_in = 1000;
-  o.calibration.optimizer_starts = 2;
-  o.calibration.region = "paper";
-  o.calibration.design.adaptive = false;
+  DiagnoseOptions o = dtwin_test::smallDiagnosisOptions(s);
   o.calibration.profile.steps = 2;
   o.calibration.profile.restarts = 0;
   o.calibration.profile.polish_iterations = 0;
   o.candidates = 3;
-  o.compare_draws = 10;
   o.causes = 3;
   o.propose_terms = 0;
   // The place candidates beside their look-alikes: other forms of the signal, its gain, a

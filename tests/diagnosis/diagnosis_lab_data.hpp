@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnosis/diagnose.hpp"
 #include "study/generate.hpp"
 
 namespace dtwin_test {
@@ -31,6 +32,23 @@ inline std::vector<dtwin::calib::DataSet> diagnosisLabData(const dtwin::Study& s
     sets.push_back({sc + ".csv", sc, lab.data, seed});  // the rough road was made with `seed`
   }
   return sets;
+}
+
+/// The diagnosis tests' small sizes: the paper's region with one Latin hypercube of 40 points,
+/// 3000 Gibbs iterations (1000 burn-in), two optimiser starts, four confirmations, ten draws in
+/// each comparison; the study's other calibration settings (its profile's among them).
+inline dtwin::diag::DiagnoseOptions smallDiagnosisOptions(const dtwin::Study& s) {
+  dtwin::diag::DiagnoseOptions o;
+  o.calibration = dtwin::calib::CalibrationOptions::fromStudy(s);
+  o.calibration.lhs_points = 40;
+  o.calibration.gibbs_iterations = 3000;
+  o.calibration.gibbs_burn_in = 1000;
+  o.calibration.optimizer_starts = 2;
+  o.calibration.region = "paper";
+  o.calibration.design.adaptive = false;
+  o.candidates = 4;
+  o.compare_draws = 10;
+  return o;
 }
 
 }  // namespace dtwin_test

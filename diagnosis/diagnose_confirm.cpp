@@ -53,19 +53,15 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   // bounds, an internal error) is reported with the candidate, and the diagnosis goes on with the
   // others. Bad input and a full disk end the run.
   auto calibrate = [&](Candidate& c, const std::string& stage, bool full) {
-    try {
-      if (d.options.before_candidate_step) d.options.before_candidate_step(joinEffects(d.withInstalled(c.effect)), full ? "full" : "optimum");
-      c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, c.screening_estimate, c.screening_theta, full);
-      return true;
-    } catch (const InputError&) {
-      throw;
-    } catch (const StorageError&) {
-      throw;
-    } catch (const std::exception& e) {
-      c.fit.reset();
-      c.failed = std::string(full ? "its calibration in full failed: " : "its confirming calibration failed: ") + oneLine(e.what());
-      return false;
-    }
+    return d.isolatedStep(
+        [&] {
+          if (d.options.before_candidate_step) d.options.before_candidate_step(joinEffects(d.withInstalled(c.effect)), full ? "full" : "optimum");
+          c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, c.screening_estimate, c.screening_theta, full);
+        },
+        [&](const std::string& reason) {
+          c.fit.reset();
+          c.failed = std::string(full ? "its calibration in full failed: " : "its confirming calibration failed: ") + reason;
+        });
   };
   // First every candidate's optimum (its evidence), then the full calibration (intervals, the
   // posterior's comparison) of those that could be the verdict or ambiguous with it.

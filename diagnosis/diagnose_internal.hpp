@@ -88,10 +88,11 @@ struct Diagnosis {
     return e;
   }
 
-  /// Runs `step`; when it throws anything but bad input or a full disk, records "<what> failed:
-  /// <reason>" in res.failures and returns false (docs/diagnosis.md, "When a candidate fails").
-  template <class F>
-  bool isolated(const std::string& what, F&& step) {
+  /// Runs `step`; when it throws anything but bad input or a full disk (which end the run), gives
+  /// the reason in one line to `on_failure` and returns false (docs/diagnosis.md, "When a
+  /// candidate fails").
+  template <class F, class G>
+  static bool isolatedStep(F&& step, G&& on_failure) {
     try {
       step();
       return true;
@@ -100,9 +101,14 @@ struct Diagnosis {
     } catch (const StorageError&) {
       throw;
     } catch (const std::exception& e) {
-      res.failures.push_back(what + " failed: " + oneLine(e.what()));
+      on_failure(oneLine(e.what()));
       return false;
     }
+  }
+  /// isolatedStep, recording "<what> failed: <reason>" in res.failures.
+  template <class F>
+  bool isolated(const std::string& what, F&& step) {
+    return isolatedStep(step, [&](const std::string& reason) { res.failures.push_back(what + " failed: " + reason); });
   }
 
   void report(const std::string& stage, std::size_t done, std::size_t total) const {

@@ -13,6 +13,7 @@
 #endif
 
 #include "cli/commands.hpp"
+#include "cli/parse_error_text.hpp"
 #include "dtwin/version.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -57,8 +58,8 @@ std::string parseErrorLine(const CLI::App& root, const CLI::ParseError& e) {
     app = app->get_subcommands().front();
     path += " " + app->get_name();
   }
-  std::string what = oneLine(e.what());
-  if (what == "A subcommand is required") {
+  std::string what = parseErrorText(*app, e);
+  if (dynamic_cast<const CLI::RequiredError*>(&e) && oneLine(e.what()) == "A subcommand is required") {
     what = "a subcommand is required (";
     for (const auto& n : subcommandNames(*app)) what += n + ", ";
     what.resize(what.size() - 2);

@@ -77,6 +77,7 @@ ImportColumn readColumn(TableReader& r, const std::string& key, const std::strin
     if (!col || col->empty()) throw InputError(cr.where("column"), "is required (the log's column name)");
     c.column = *col;
     c.unit = cr.string("unit").value_or(default_unit);
+    if (cr.has("unit")) c.unit_where = cr.where("unit");
     if (c.unit.empty()) throw InputError(cr.where("unit"), "is required (" + unitList("") + ")");
     c.offset = cr.number("offset", 0.0);
     c.scale = cr.number("scale", 1.0);
@@ -243,6 +244,7 @@ ImportMapping readImportMapping(const std::string& path) {
     const auto unit = cr.string("unit");
     if (!unit) throw InputError(cr.where("unit"), "is required (" + unitList("") + ")");
     c.source.unit = *unit;
+    c.source.unit_where = cr.where("unit");
     c.source.offset = cr.number("offset", 0.0);
     c.source.scale = cr.number("scale", 1.0);
     if (c.source.scale == 0) throw InputError(cr.where("scale"), "must not be 0");

@@ -214,16 +214,16 @@ std::vector<Channel> checkTarget(const Study& base, const ImportMapping& m, cons
 
 ImportUnits resolveUnits(const ImportMapping& m, const std::vector<Channel>& known) {
   ImportUnits u;
-  u.time = unitFactor(m.time.unit, "s", m.time.where);
+  u.time = unitFactor(m.time.unit, "s", m.time.unitWhere());
   if (!m.speed) throw InputError(m.source + ": import.speed", "is required");
-  u.speed = unitFactor(m.speed->unit, "m/s", m.speed->where);
+  u.speed = unitFactor(m.speed->unit, "m/s", m.speed->unitWhere());
   if (m.road) u.road_cols = {&*m.road};
   if (m.road_left) u.road_cols = {&*m.road_left, &*m.road_right};
   for (const auto* c : u.road_cols) {
     bool velocity = false;
     for (const auto& k : kUnits)
       if (c->unit == k.name && std::string(k.si) == "m/s") velocity = true;
-    u.road.push_back(unitFactor(c->unit, velocity ? "m/s" : "m", c->where));
+    u.road.push_back(unitFactor(c->unit, velocity ? "m/s" : "m", c->unitWhere()));
     if (c != u.road_cols.front() && velocity != u.road_velocity)
       throw InputError(c->where, "both tracks must be heights (m, mm) or both road velocities (m/s, mm/s)");
     u.road_velocity = velocity;
@@ -238,7 +238,7 @@ ImportUnits resolveUnits(const ImportMapping& m, const std::vector<Channel>& kno
     std::string si;
     for (const auto& k : known)
       if (k.name == c.channel) si = k.unit;
-    u.channel.push_back(unitFactor(c.source.unit, si, c.source.where));
+    u.channel.push_back(unitFactor(c.source.unit, si, c.source.unitWhere()));
   }
   return u;
 }

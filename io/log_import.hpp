@@ -23,6 +23,8 @@ struct ImportColumn {
   double offset = 0.0;     ///< in the log's unit (e.g. 1 for an accelerometer in g that reads 1 g at rest)
   double scale = 1.0;      ///< e.g. -1 for a sensor mounted upside down
   std::string where;       ///< names it in errors (mapping file:line: field, or the flag)
+  std::string unit_where;  ///< names the unit in errors (its own line); empty: `where`
+  const std::string& unitWhere() const { return unit_where.empty() ? where : unit_where; }
 };
 
 struct ImportChannel {

@@ -37,6 +37,9 @@ void CalibrateRequest::validate(const Study& study) const {
 diag::CandidateSpec freedValueSpec(const Study& study, const AssemblySpec& assembly, const std::string& value) {
   const std::string where = OptionCheck("calibrate").where("free");
   if (value.rfind("free:", 0) == 0) throw InputError(where, "'" + value + "': give the value's name alone (" + value.substr(5) + ")");
+  if (const auto eq = value.find('='); eq != std::string::npos)
+    throw InputError(where, "'" + value + "': a freed value is searched over its range and takes no value; give '" + value.substr(0, eq) +
+                                "' alone (a fixed value is the study's [fixed] table)");
   auto spec = diag::candidateSpec("free:" + value, study, assembly, {}, where);
   if (spec.kind != "parameter" && spec.kind != "input" && spec.kind != "place") throw InputError(where, "'" + value + "' is not a fixed value that can be freed");
   return spec;

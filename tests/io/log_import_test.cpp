@@ -167,8 +167,8 @@ TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
       {"nan_time", spoil(7, "nan,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': 'nan' is not a finite number"},
       {"empty_speed", spoil(7, "5070,,0.1,1.0,3,x"), map, "log.csv:9: column 'v': is empty or NaN"},
       {"columns", spoil(7, "5070,36,0.1,1.0,3"), map, "log.csv:9: expected 6 columns (as the header), got 5"},
-      {"unknown_unit", makeLog(), (dir / "bad_unit.toml").string(), "bad_unit.toml:3: import.speed: unknown unit 'km/s'"},
-      {"wrong_unit", makeLog(), (dir / "wrong_unit.toml").string(), "unit 'g' is in m/s^2, but this needs m"},
+      {"unknown_unit", makeLog(), (dir / "bad_unit.toml").string(), "bad_unit.toml:3: import.speed.unit: unknown unit 'km/s'"},
+      {"wrong_unit", makeLog(), (dir / "wrong_unit.toml").string(), "wrong_unit.toml:15: import.channels[1].unit: unit 'g' is in m/s^2, but this needs m"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);

@@ -78,12 +78,12 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs) {
   }
   ImportMapping m;
   m.source = "bench";
-  m.time = {"time", "s", 0, 1, "time"};
-  m.speed = ImportColumn{"speed_kmh", "km/h", 0, 1, "speed"};
-  m.road_left = ImportColumn{"road_l_mm", "mm", 0, 1, "road_left"};
-  m.road_right = ImportColumn{"road_r_mm", "mm", 0, 1, "road_right"};
-  m.channels.push_back({{"seat_g", "g", 1, 1, "seat"}, "chassis_heave_acc_mps2"});
-  m.channels.push_back({{"hub_g", "g", 0, 1, "hub"}, "chassis_pitch_acc_radps2"});
+  m.time = {"time", "s", 0, 1, "time", ""};
+  m.speed = ImportColumn{"speed_kmh", "km/h", 0, 1, "speed", ""};
+  m.road_left = ImportColumn{"road_l_mm", "mm", 0, 1, "road_left", ""};
+  m.road_right = ImportColumn{"road_r_mm", "mm", 0, 1, "road_right", ""};
+  m.channels.push_back({{"seat_g", "g", 1, 1, "seat", ""}, "chassis_heave_acc_mps2"});
+  m.channels.push_back({{"hub_g", "g", 0, 1, "hub", ""}, "chassis_pitch_acc_radps2"});
   m.channels.back().source.unit = "deg/s^2";  // any channel will do: the reading is what is timed
   BenchImport b;
   b.rows = rows;

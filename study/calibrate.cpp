@@ -122,7 +122,7 @@ std::string CalibrateRun::text() const {
   const calib::CalibrationResult& r = result;
   const AssemblySpec& a = assembly;
   const double noise_var = r.posterior.tau.mean > 0 ? 1.0 / r.posterior.tau.mean : 0.0;
-  const std::string noise = weights.empty() ? formatPrintf("noise var %.0f N^2", noise_var)
+  const std::string noise = weights.empty() ? formatPrintf("noise sd %.3g %s", std::sqrt(noise_var), unit.c_str())
                                             : formatPrintf("weighted by 1/noise_sd^2: the noise %.3g times the stated", std::sqrt(noise_var));
   std::string s = formatPrintf(
       "%-4s %-26s SSE_min %.4g  tau %.3g (%s)  design %ld points in %zu round%s (importance ESS %.0f)  "
@@ -191,6 +191,10 @@ void calibrateAssemblies(const Study& study, const CalibrateRequest& request, co
     run.assembly = a;
     const std::string dir = (fs::path(request.out) / a.id).string();
     run.weights = setup.channel_weights;
+    if (const auto ch = data.channels(); !ch.empty()) {
+      const std::string u = channelUnit(measurableChannels(study.sensors), ch.front());
+      if (!u.empty()) run.unit = u;
+    }
     calib::CalibrationSetup with = setup;  // the freed values, this assembly's (a law's value may differ between them)
     for (const auto& v : request.free) freedValueSpec(study, a, v).install(with);
     const StageProgress progress = progress_of ? progress_of(a) : StageProgress{};

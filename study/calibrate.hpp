@@ -63,6 +63,8 @@ struct CalibrateRun {
   /// The SSE weight 1/σ_c² of each channel when the data hold several (channelWeights); empty
   /// with one channel, whose noise the sampler's τ estimates.
   std::map<std::string, double> weights;
+  /// The unit of the data when they are unweighted ("N" for forces, "m/s^2" for one accelerometer).
+  std::string unit = "N";
   /// The lines `twin calibrate` prints: SSE, noise, design, then each parameter's mean, sd and
   /// both 95 % intervals (the chosen one first), the truth when known, and the notes.
   std::string text() const;

@@ -229,9 +229,9 @@ TEST(LogImport, SpeedLowPassSmoothsAQuantisedSpeed) {
   }
   ImportMapping m;
   m.source = "test";
-  m.time = {"t", "ms", 0, 1, "time"};
-  m.speed = ImportColumn{"v", "km/h", 0, 1, "speed"};
-  m.channels.push_back({{"defl", "mm", 0, 1, "defl"}, "susp_defl_fl_m"});
+  m.time = {"t", "ms", 0, 1, "time", ""};
+  m.speed = ImportColumn{"v", "km/h", 0, 1, "speed", ""};
+  m.channels.push_back({{"defl", "mm", 0, 1, "defl", ""}, "susp_defl_fl_m"});
   m.speed_lowpass_hz = 1.0;
   const ImportResult r = importLog(log, "log.csv", m, kDemo, "drive");
   std::vector<double> v;

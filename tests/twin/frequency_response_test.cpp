@@ -182,11 +182,11 @@ TEST(FrequencyResponse, TheImportedLogOfTheLinearVehicleIsReproduced) {
   }
   ImportMapping m;
   m.source = "test";
-  m.time = {"Time", "s", 0, 1, "time"};
-  m.speed = ImportColumn{"Speed", "km/h", 0, 1, "speed"};
-  m.road_left = ImportColumn{"RoadL", "mm", 0, 1, "road_left"};
-  m.road_right = ImportColumn{"RoadR", "mm", 0, 1, "road_right"};
-  m.channels.push_back({{"Acc", "g", 1.0, 1, "acc"}, "p_mps2"});
+  m.time = {"Time", "s", 0, 1, "time", ""};
+  m.speed = ImportColumn{"Speed", "km/h", 0, 1, "speed", ""};
+  m.road_left = ImportColumn{"RoadL", "mm", 0, 1, "road_left", ""};
+  m.road_right = ImportColumn{"RoadR", "mm", 0, 1, "road_right", ""};
+  m.channels.push_back({{"Acc", "g", 1.0, 1, "acc", ""}, "p_mps2"});
   SensorSpec sensor;
   sensor.name = "p";
   sensor.position_m = p;

@@ -4,10 +4,12 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <stdexcept>
 #include <cstdio>
 #include <string>
 #include <vector>
+#include <unistd.h>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -47,6 +49,28 @@ std::string unknownCommand(const CLI::App& root, int argc, char** argv) {
     path += (path.empty() ? "" : " ") + word;
   }
   return "";
+}
+
+// Ctrl-C, a scheduler's SIGTERM or mpirun stopping the job: one line from the root process, then
+// death by the same signal (so a shell or scheduler sees it). Every file is written whole or not at
+// all (atomic renames, a journal whose cut last line is dropped), so nothing half-written remains.
+extern "C" void stoppedResumable(int sig) {
+  const char line[] = "\ntwin: stopped by a signal; the finished work is kept: rerun the same command to resume where it stopped\n";
+  (void)!::write(STDERR_FILENO, line, sizeof line - 1);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+extern "C" void stoppedPlain(int sig) {
+  const char line[] = "\ntwin: stopped by a signal; no file was left half-written\n";
+  (void)!::write(STDERR_FILENO, line, sizeof line - 1);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+/// The stop handlers of the root process (the other ranks die silently: one line per job).
+void sayWhenStopped(bool root, bool resumable) {
+  if (!root) return;
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, resumable ? stoppedResumable : stoppedPlain);
 }
 
 /// A CLI11 parse error as one line: "<what> (see twin <command> --help)", naming the deepest
@@ -115,6 +139,7 @@ int runTwin(int argc, char** argv, const Distributed& dist, std::string& error) 
       chosen = &commands[i];
       resumes = resumable[i];
       if (!distributed[i] && !dist.isRoot()) return 0;
+      sayWhenStopped(dist.isRoot(), resumes);
       return commands[i].run();
     }
   } catch (const InputError& e) {

@@ -111,3 +111,41 @@ TEST(MpiCli, TinyStudyIsBitIdenticalWithTwoRanks) {
                               "classification/records.csv"})
     expectSameFile(tmp / "one" / f, tmp / "two" / f);
 }
+
+// A rank killed mid-calibration (a crashed node): mpirun stops the job, the root says in one line
+// that the finished work is kept, and the same command run again resumes to the files of a run
+// that was never stopped.
+TEST(MpiCli, AKilledRankStopsTheJobAndTheRerunResumesToTheSameFiles) {
+  SKIP_WITHOUT_MPI();
+  const fs::path tmp = fs::temp_directory_path() / "mpi_cli_killed";
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  const std::string lab = (tmp / "lab.csv").string();
+  ASSERT_EQ(run(kTwin + " generate lab --study " + kDemo + " --out " + lab + " --quiet"), 0);
+  const std::string calib = " calibrate --study " + kDemo + " --data " + lab +
+                            " --assembly M3 --starts 2 --lhs-points 40 --max-rounds 1 --ridge-steps 3 --iterations 300 --burn-in 100 "
+                            "--quiet --threads 1 --out ";
+  ASSERT_EQ(run(kTwin + calib + (tmp / "alone").string()), 0);
+
+  // Rank 1 dies of SIGKILL once the root has journalled 8 design points.
+  const fs::path out = tmp / "killed", journal = out / "M3" / "design_journal.csv";
+  const std::string script = "(" + mpirun2() + kTwin + calib + out.string() + " > " + (tmp / "err.txt").string() + " 2>&1; echo $? > " +
+                             (tmp / "rc.txt").string() + ") & job=$!\n"
+                             "for i in $(seq 600); do [ -f " + journal.string() + " ] && [ $(wc -l < " + journal.string() +
+                             ") -ge 9 ] && break; sleep 0.1; done\n"
+                             "for p in $(pgrep -f 'twin calibrate.*" + out.string() + "'); do\n"
+                             "  grep -qz '^OMPI_COMM_WORLD_RANK=1$' /proc/$p/environ 2>/dev/null && kill -9 $p\n"
+                             "done\nwait $job\n";
+  dtwin_test::writeText(tmp / "kill.sh", script);
+  ASSERT_EQ(std::system(("bash " + (tmp / "kill.sh").string()).c_str()), 0);
+  EXPECT_NE(std::stoi(slurp(tmp / "rc.txt")), 0) << "the job went on without a rank";
+  const std::string err = slurp(tmp / "err.txt");
+  const std::string line = "twin: stopped by a signal; the finished work is kept: rerun the same command to resume where it stopped";
+  EXPECT_NE(err.find(line), std::string::npos) << err;
+  EXPECT_EQ(err.find(line), err.rfind(line)) << "one line per job, not per rank:\n" << err;
+  EXPECT_FALSE(fs::exists(out / "M3" / "posterior.csv")) << "the rank died after the calibration ended: the test proves nothing";
+
+  ASSERT_EQ(run(mpirun2() + kTwin + calib + out.string()), 0);
+  for (const char* f : {"posterior.csv", "design.csv", "optimum.json", "box.json"})
+    EXPECT_EQ(slurp(tmp / "alone" / "M3" / f), slurp(out / "M3" / f)) << f;
+}

@@ -116,7 +116,10 @@ std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate, 
   const auto& ps = candidate.parameters;
   const std::vector<double> off = offValues(candidate);
   std::vector<std::size_t> strength, scan;
-  for (std::size_t k = 0; k < ps.size(); ++k) (k == 0 || isStrength(ps[k]) ? strength : scan).push_back(k);
+  // A sensor's place enters its reading linearly (a = heave − x·pitch'' + y·roll''): both
+  // coordinates are directions of one group, so the test sees any place, not only the scanned ones.
+  const bool linear = candidate.kind == "place";
+  for (std::size_t k = 0; k < ps.size(); ++k) (k == 0 || linear || isStrength(ps[k]) ? strength : scan).push_back(k);
   std::vector<std::vector<double>> scans{off};
   for (std::size_t k : scan) {
     std::vector<std::vector<double>> next;

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -35,54 +36,73 @@ std::string holderOf(int fd) {
   return s.find('\n') == std::string::npos ? s : std::string();
 }
 
-/// Takes the lock on this process; returns the open descriptor.
-int lockFolder(const std::string& dir, const std::string& path, const std::string& flag) {
+/// Takes the lock on this process; returns the open descriptor. `created` tells whether the
+/// folder was made here.
+int lockFolder(const std::string& dir, const std::string& path, const std::string& flag, bool& created) {
   const std::string where = flag + " " + dir;
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
     throw InputError(where, "exists and is not a folder");
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(where, "cannot create the folder: " + ec.message());
-  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(where, systemError("cannot open its lock file " + path));
-  int rc;
-  do rc = ::flock(fd, LOCK_EX | LOCK_NB);
-  while (rc != 0 && errno == EINTR);
-  if (rc != 0) {
-    const int err = errno;
-    const std::string holder = err == EWOULDBLOCK ? holderOf(fd) : std::string();
-    ::close(fd);
-    if (err != EWOULDBLOCK) {
-      errno = err;
-      throw InputError(where, systemError("cannot lock " + path));
+  created = !std::filesystem::exists(dir, ec);
+  // A run that ends removes its lock file (and the folder it made, when empty): a lock taken on a
+  // file that was removed meanwhile is no lock, so the file locked must still be the one at `path`.
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError(where, "cannot create the folder: " + ec.message());
+    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0 && errno == ENOENT) continue;  // the folder went away meanwhile
+    if (fd < 0) throw InputError(where, systemError("cannot open its lock file " + path));
+    int rc;
+    do rc = ::flock(fd, LOCK_EX | LOCK_NB);
+    while (rc != 0 && errno == EINTR);
+    if (rc != 0) {
+      const int err = errno;
+      const std::string holder = err == EWOULDBLOCK ? holderOf(fd) : std::string();
+      ::close(fd);
+      if (err != EWOULDBLOCK) {
+        errno = err;
+        throw InputError(where, systemError("cannot lock " + path));
+      }
+      throw InputError(where, "in use by another twin run" + (holder.empty() ? std::string() : " (" + holder + ")") +
+                                  "; wait for it or choose another folder");
     }
-    throw InputError(where, "in use by another twin run" + (holder.empty() ? std::string() : " (" + holder + ")") +
-                                "; wait for it or choose another folder");
-  }
-  const std::string me = "pid " + std::to_string(::getpid()) + ", started " + utcStamp() + "\n";
-  if (::ftruncate(fd, 0) == 0) {
-    try {
-      writeAll(fd, me, path);
-    } catch (const std::exception&) {
-      // the lock holds without its note: a second run names no holder
+    struct stat locked{}, named{};
+    if (::fstat(fd, &locked) != 0 || ::stat(path.c_str(), &named) != 0 || locked.st_ino != named.st_ino ||
+        locked.st_dev != named.st_dev) {
+      ::close(fd);  // its holder removed it as it ended: lock the new one
+      continue;
     }
+    const std::string me = "pid " + std::to_string(::getpid()) + ", started " + utcStamp() + "\n";
+    if (::ftruncate(fd, 0) == 0) {
+      try {
+        writeAll(fd, me, path);
+      } catch (const std::exception&) {
+        // the lock holds without its note: a second run names no holder
+      }
+    }
+    return fd;
   }
-  return fd;
+  throw InputError(where, "cannot lock " + path + ": it keeps being removed (another twin run starting and ending?)");
 }
 
 }  // namespace
 
 FolderLock::FolderLock(const std::string& dir, const std::string& flag, const Distributed* processes)
-    : path_((std::filesystem::path(dir) / ".lock").string()) {
+    : dir_(dir), path_((std::filesystem::path(dir) / ".lock").string()) {
   if (dir.empty()) return;  // no folder: nothing to lock
   onRoot(processes, [&]() -> std::string {
-    fd_ = lockFolder(dir, path_, flag);
+    fd_ = lockFolder(dir, path_, flag, created_dir_);
     return std::string();
   });
 }
 
 FolderLock::~FolderLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing the last descriptor releases the lock
+  if (fd_ < 0) return;
+  // Removed while still held, then released (closing the descriptor); a run that failed before it
+  // wrote anything leaves the folder as it found it.
+  ::unlink(path_.c_str());
+  ::close(fd_);
+  if (created_dir_) ::rmdir(dir_.c_str());  // only when empty
 }
 
 }  // namespace dtwin

@@ -3,7 +3,9 @@
 // diagnose, study, coverage, synthesize) hold an exclusive lock on OUT/.lock (flock(2)) for the
 // whole run: a second run into the same folder refuses at once and writes nothing. The kernel
 // releases the lock when the process ends, however it ends, so a killed run never blocks the
-// next one. Under MPI only the root takes it; every rank learns the outcome (onRoot).
+// next one. A run that ends removes OUT/.lock (and OUT itself when it made it and it is empty: a
+// run that failed on its input leaves no trace); a killed run leaves it behind, which is harmless.
+// Under MPI only the root takes it; every rank learns the outcome (onRoot).
 #include <string>
 
 #include "common/distributed.hpp"
@@ -24,7 +26,8 @@ class FolderLock {
   const std::string& path() const { return path_; }
 
  private:
-  std::string path_;
+  std::string dir_, path_;
+  bool created_dir_ = false;  ///< the folder did not exist before
   int fd_ = -1;  ///< open on the root while the lock is held; -1 elsewhere
 };
 

@@ -103,8 +103,8 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   o.threads = cfg.threads;
   o.processes = cfg.processes;
   o.command = command;
-  std::unique_ptr<FolderLock> lock;  // one run at a time in the folder
-  if (!cfg.out.empty()) lock = std::make_unique<FolderLock>(cfg.out, "--out", nullptr);  // runs on the root alone (command registry)
+  // One run at a time in the folder (none without --out); on the root alone (command registry).
+  const FolderLock lock(cfg.out, "--out", nullptr);
   ProgressBar bar("diagnose", progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
   std::string current;
   const auto progress = [&](const std::string& stage, std::size_t d, std::size_t t) {

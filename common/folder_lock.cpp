@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <system_error>
@@ -36,8 +37,8 @@ std::string holderOf(int fd) {
   return s.find('\n') == std::string::npos ? s : std::string();
 }
 
-/// Takes the lock on this process; returns the open descriptor. `created` tells whether the
-/// folder was made here.
+/// Takes the lock on this process; returns the open descriptor (-1, after a note, on a filesystem
+/// without locks). `created` tells whether the folder was made here.
 int lockFolder(const std::string& dir, const std::string& path, const std::string& flag, bool& created) {
   const std::string where = flag + " " + dir;
   std::error_code ec;
@@ -55,6 +56,13 @@ int lockFolder(const std::string& dir, const std::string& path, const std::strin
     int rc;
     do rc = ::flock(fd, LOCK_EX | LOCK_NB);
     while (rc != 0 && errno == EINTR);
+    if (rc != 0 && (errno == ENOLCK || errno == ENOSYS || errno == EOPNOTSUPP || errno == EINVAL)) {
+      // A filesystem without locks (some cluster filesystems): run as before, and say so.
+      std::fprintf(stderr, "twin: note: %s: %s\n", where.c_str(),
+                   systemError("the folder cannot be locked; a second run into it is not detected").c_str());
+      ::close(fd);
+      return -1;
+    }
     if (rc != 0) {
       const int err = errno;
       const std::string holder = err == EWOULDBLOCK ? holderOf(fd) : std::string();

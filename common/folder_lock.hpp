@@ -17,7 +17,8 @@ class FolderLock {
   /// Creates `dir` (and OUT/.lock) when missing and locks it. When another process holds the
   /// lock: InputError(`flag` + " " + dir, "in use by another twin run (pid P, started T); wait
   /// for it or choose another folder"), on every rank. `processes` null: this process alone.
-  /// An empty `dir` (no output folder) locks nothing.
+  /// An empty `dir` (no output folder) locks nothing; on a filesystem without locks (flock fails
+  /// with ENOLCK, ENOSYS, EOPNOTSUPP or EINVAL) a note on stderr says so and the run goes on.
   FolderLock(const std::string& dir, const std::string& flag, const Distributed* processes);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;

@@ -135,6 +135,7 @@ TEST_F(ResumeFaults, TwoRunsStartedTogetherTheSecondRefusesTheFirstEndsAsAlone) 
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   EXPECT_EQ(slurp(rc), "0\n") << slurp(kTmp() / "first.err");
+  EXPECT_FALSE(fs::exists(out / ".lock"));  // removed by its holder as it ended
   EXPECT_EQ(numbers(out / "M3" / "summary.json"), numbers(alone() / "summary.json"));
   EXPECT_EQ(slurp(out / "M3" / "posterior.csv"), slurp(alone() / "posterior.csv"));
 }

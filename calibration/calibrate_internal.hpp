@@ -37,7 +37,10 @@ nlohmann::json gaussNewtonJson(const JointRegionPlan& plan, const std::vector<Ra
 
 // ------------------------------------------------------------------ calibration_run.cpp
 /// Reads a stage file when it exists and carries `fingerprint`; null otherwise. Under MPI the
-/// root reads it and every rank decides on the same bytes.
+/// root reads it and every rank decides on the same bytes. The stage files are written sealed
+/// (common/checksum.hpp sealJson): one that is not JSON or fails its checksum was damaged on disk;
+/// the root sets it aside (<file>.corrupt, one note on stderr) and null is returned, so the stage is
+/// redone. A file of another calibration (its fingerprint differs) is an InputError.
 nlohmann::json readStage(const Distributed* processes, const fs::path& p, const std::string& fingerprint);
 double secondsSince(std::chrono::steady_clock::time_point t0);
 
@@ -136,7 +139,7 @@ class CalibrationRun {
   /// The residuals' correlation in time at the optimum (correlated.hpp): blocks 0 unless every
   /// data set is a drive (one repetition, enough sample times).
   CorrelationAdjustment timeCorrelation();
-  void writePosterior() const;
+  void writePosterior();
 
   const Study& study_;
   const AssemblySpec& assembly_;
@@ -152,6 +155,7 @@ class CalibrationRun {
   std::size_t d_ = 0;        ///< calibrated parameters
   int n_ = 0;                ///< scalar residuals
   std::string fingerprint_;  ///< of everything that changes the numbers; every stage file carries it
+  std::string posterior_checksum_;  ///< of posterior.csv's bytes (contentChecksum), recorded in summary.json
   CalibrationResult res_;
   nlohmann::json steps_log_ = nlohmann::json::array();  ///< chooseStepAccuracy's tries
   /// The Jacobian of the last polish on frozen steps (scaled units): the next polish's first, and

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "calibration/lhs.hpp"
+#include "common/checksum.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
@@ -23,20 +24,27 @@ namespace dtwin::calib {
 
 // ------------------------------------------------------------------ persistence helpers
 nlohmann::json readStage(const Distributed* processes, const fs::path& p, const std::string& fingerprint) {
+  // The root reads and checks the file; a damaged one is set aside and every rank redoes the stage.
   const std::string text = onRoot(processes, [&]() -> std::string {
     if (!fs::exists(p)) return std::string();
     std::ifstream in(p, std::ios::binary);
     std::ostringstream os;
     os << in.rdbuf();
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(os.str());
+    } catch (const std::exception&) {  // written atomically: damaged on disk, or not ours
+      setAsideCorrupt(p.string(), "is not valid JSON");
+      return std::string();
+    }
+    if (checkSeal(j) == Seal::broken) {
+      setAsideCorrupt(p.string(), "fails its checksum");
+      return std::string();
+    }
     return "F" + os.str();
   });
   if (text.empty()) return nullptr;
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text.begin() + 1, text.end());
-  } catch (const std::exception&) {
-    return nullptr;  // written atomically, so this is a foreign file: redo the stage
-  }
+  const nlohmann::json j = nlohmann::json::parse(text.begin() + 1, text.end());
   if (!j.contains("fingerprint") || j["fingerprint"] != fingerprint)
     throw InputError(p.string(), "was made by a different calibration (study, data, assembly or sizes changed); "
                                  "use a new output folder or delete it to start over");
@@ -450,7 +458,7 @@ void CalibrationRun::optimum() {
     rootWrites(options_.processes, [&] {
       nlohmann::json stage{{"fingerprint", fingerprint_}, {"optimum", optimumJson(res_.optimum)}, {"steps", stepsJson()}};
       if (!screening.is_null()) stage["screening"] = screening;
-      writeFileAtomic(opt_path.string(), stage.dump(2) + "\n");
+      writeFileAtomic(opt_path.string(), sealJson(stage).dump(2) + "\n");
     });
   }
   if (!std::isfinite(res_.optimum.sse))
@@ -531,7 +539,7 @@ void CalibrationRun::region() {
     if (options_.region == "paper") paperBox(bp, stage);
     else jointRegion(bp, stage);
     stage["region"] = res_.region.toJson();
-    rootWrites(options_.processes, [&] { writeFileAtomic(box_path.string(), stage.dump(2) + "\n"); });
+    rootWrites(options_.processes, [&] { writeFileAtomic(box_path.string(), sealJson(stage).dump(2) + "\n"); });
   }
   res_.stage_wall_s.push_back({"region", secondsSince(t0)});
 }

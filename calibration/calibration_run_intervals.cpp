@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "calibration/folder.hpp"
+#include "common/checksum.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
@@ -164,10 +165,10 @@ void CalibrationRun::profile() {
     res_.profile = collectProfile(plan, ends, options_.profile);
     rootWrites(options_.processes, [&] {
       writeFileAtomic(profile_path.string(),
-                      nlohmann::json{{"fingerprint", fingerprint_},
-                                     {"profile", res_.profile.toJson()},
-                                     {"differences", po.forward_differences ? "forward" : "central"},
-                                     {"other_basins", basins}}
+                      sealJson({{"fingerprint", fingerprint_},
+                                {"profile", res_.profile.toJson()},
+                                {"differences", po.forward_differences ? "forward" : "central"},
+                                {"other_basins", basins}})
                               .dump(2) + "\n");
     });
   }
@@ -176,19 +177,19 @@ void CalibrationRun::profile() {
 }
 
 /// posterior.csv: θ, τ and the design index of every kept Gibbs iteration.
-void CalibrationRun::writePosterior() const {
-  rootWrites(options_.processes, [&] {
-    std::vector<std::vector<double>> rows;
-    std::vector<long> index;
-    for (std::size_t t = 0; t < res_.chains.index.size(); ++t) {
-      const int k = res_.chains.index[t];
-      std::vector<double> row(d_);
-      for (std::size_t c = 0; c < d_; ++c) row[c] = res_.design(k, static_cast<long>(c));
-      rows.push_back(std::move(row));
-      index.push_back(k);
-    }
-    writeFileAtomic(file("posterior.csv").string(), posteriorCsv(res_.names, rows, res_.chains.tau, index));
-  });
+void CalibrationRun::writePosterior() {
+  std::vector<std::vector<double>> rows;
+  std::vector<long> index;
+  for (std::size_t t = 0; t < res_.chains.index.size(); ++t) {
+    const int k = res_.chains.index[t];
+    std::vector<double> row(d_);
+    for (std::size_t c = 0; c < d_; ++c) row[c] = res_.design(k, static_cast<long>(c));
+    rows.push_back(std::move(row));
+    index.push_back(k);
+  }
+  const std::string text = posteriorCsv(res_.names, rows, res_.chains.tau, index);
+  posterior_checksum_ = contentChecksum(text);  // summary.json records it: a reader refuses a changed file
+  rootWrites(options_.processes, [&] { writeFileAtomic(file("posterior.csv").string(), text); });
 }
 
 /// Stage 5, sampler (posterior.csv): the two-block Griddy Gibbs with the design weights and the
@@ -332,6 +333,7 @@ void CalibrationRun::summary() {
   j["setup"] = setup_.toJson();
   j["options"] = options_.toJson();
   j["threads"] = options_.threads;
+  if (!posterior_checksum_.empty()) j["posterior_checksum"] = posterior_checksum_;
   rootWrites(options_.processes, [&] { writeFileAtomic(file("summary.json").string(), j.dump(2) + "\n"); });
 }
 

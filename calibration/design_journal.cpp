@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/checksum.hpp"
 #include "common/errors.hpp"
 #include "common/files.hpp"
 #include "common/format.hpp"
@@ -22,8 +23,11 @@
 namespace dtwin::calib {
 namespace {
 
-const std::string kHeaderPrefix = "# dtwin design journal v1; dim=";
+const std::string kHeaderStart = "# dtwin design journal v";
+const std::string kDimKey = "; dim=";
 const std::string kFingerprintKey = "; fingerprint=";
+const std::string kCheckKey = "; check=";
+constexpr int kVersion = 2;  // v2: a checksum ends every line; v1 (none) is still read and appended to
 
 void appendDouble(std::string& out, double v) {
   if (!std::isfinite(v)) {
@@ -36,8 +40,19 @@ void appendDouble(std::string& out, double v) {
   out.append(buf, res.ptr);
 }
 
-std::string headerLine(int dim, const std::string& fingerprint) {
-  return kHeaderPrefix + std::to_string(dim) + kFingerprintKey + fingerprint + "\n";
+std::string headerLine(int version, int dim, const std::string& fingerprint) {
+  const std::string text = kHeaderStart + std::to_string(version) + kDimKey + std::to_string(dim) + kFingerprintKey + fingerprint;
+  return version == 1 ? text + "\n" : text + kCheckKey + lineChecksum(text) + "\n";
+}
+
+/// `body` (a complete line without its '\n') without the checksum a v2 line ends with (`key`
+/// and 8 hex digits); false when there is none or it does not match.
+bool stripChecksum(std::string& body, const std::string& key) {
+  const std::size_t at = body.rfind(key);
+  if (at == std::string::npos || body.size() != at + key.size() + 8) return false;
+  const std::string sum = body.substr(at + key.size());
+  body.resize(at);
+  return sum == lineChecksum(body);
 }
 
 bool readWholeFile(const std::string& path, std::string& text) {
@@ -70,12 +85,23 @@ bool parseJournal(const std::string& text, const std::string& path, JournalConte
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::string where = path + ": line " + std::to_string(line_no);
     if (line_no == 1) {
-      const std::size_t fp = line.find(kFingerprintKey);
-      if (line.compare(0, kHeaderPrefix.size(), kHeaderPrefix) != 0 || fp == std::string::npos)
-        throw InputError(where, "not a dtwin design journal: the header must read '" +
-                                    kHeaderPrefix + "<d>" + kFingerprintKey + "<fingerprint>'");
-      const std::string dim_text =
-          line.substr(kHeaderPrefix.size(), fp - kHeaderPrefix.size());
+      const std::string rule = "not a dtwin design journal: the header must read '" + kHeaderStart + "<version>" + kDimKey + "<d>" +
+                               kFingerprintKey + "<fingerprint>'";
+      std::size_t at = kHeaderStart.size();
+      if (line.compare(0, at, kHeaderStart) != 0) throw InputError(where, rule);
+      const std::size_t dim_at = line.find(kDimKey, at);
+      if (dim_at == std::string::npos) throw InputError(where, rule);
+      const std::string version = line.substr(at, dim_at - at);
+      if (version != "1" && version != "2")
+        throw InputError(where, "journal version " + version + " is not one this program reads (1 or 2)");
+      out.version = version == "1" ? 1 : 2;
+      if (out.version == 2 && !stripChecksum(line, kCheckKey)) {
+        out.corrupt_line = line_no;
+        return true;
+      }
+      const std::size_t fp = line.find(kFingerprintKey, dim_at);
+      if (fp == std::string::npos) throw InputError(where, rule);
+      const std::string dim_text = line.substr(dim_at + kDimKey.size(), fp - dim_at - kDimKey.size());
       int dim = 0;
       const auto res = std::from_chars(dim_text.data(), dim_text.data() + dim_text.size(), dim);
       if (res.ec != std::errc() || res.ptr != dim_text.data() + dim_text.size() || dim < 1)
@@ -84,7 +110,11 @@ bool parseJournal(const std::string& text, const std::string& path, JournalConte
       out.fingerprint = line.substr(fp + kFingerprintKey.size());
       continue;
     }
-    if (line.empty()) continue;
+    if (line.empty() && out.version == 1) continue;
+    if (out.version == 2 && !stripChecksum(line, ",")) {  // changed on disk after it was written
+      out.corrupt_line = line_no;
+      return true;
+    }
     std::vector<std::string> fields;
     std::size_t start = 0;
     for (;;) {
@@ -128,6 +158,8 @@ JournalContents readDesignJournal(const std::string& path) {
   std::size_t complete = 0;
   if (!parseJournal(text, path, c, complete))
     throw InputError(path, "design journal has no complete header line");
+  if (c.corrupt_line > 0)
+    throw InputError(path + ": line " + std::to_string(c.corrupt_line), "fails its checksum (changed after it was written)");
   return c;
 }
 
@@ -145,7 +177,14 @@ DesignJournal::DesignJournal(const std::string& path, int dim, const std::string
   const bool exists = std::filesystem::exists(path, ec);
   if (exists && !readWholeFile(path, text))  // never truncate a journal we could not read
     throw InputError(path, "design journal exists but cannot be read");
-  if (exists && parseJournal(text, path, c, complete)) {
+  bool found = exists && parseJournal(text, path, c, complete);
+  if (found && c.corrupt_line > 0) {  // damaged on disk: set aside, and the points are computed again
+    setAsideCorrupt(path, "line " + std::to_string(c.corrupt_line) + " fails its checksum");
+    set_aside_ = true;
+    found = false;
+    text.clear();
+  }
+  if (found) {
     if (c.dim != dim || c.fingerprint != fingerprint) {
       std::ostringstream os;
       os << "design journal belongs to a different design (";
@@ -162,15 +201,17 @@ DesignJournal::DesignJournal(const std::string& path, int dim, const std::string
       throw std::runtime_error(systemError(path + ": cannot cut off the truncated last line"));
     resumed_ = std::move(c.entries);
     discarded_ = c.discarded_truncated_line;
+    version_ = c.version;
     fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
     if (fd_ < 0) throw InputError(path, systemError("cannot open design journal for appending"));
   } else {
-    // New journal (or one killed before its header line was complete).
+    // New journal (or one killed before its header line was complete), in the current version.
     discarded_ = exists && !text.empty();
+    version_ = kVersion;
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
     if (fd_ < 0) throw InputError(path, systemError("cannot create design journal"));
     try {
-      writeAll(fd_, headerLine(dim, fingerprint), path);
+      writeAll(fd_, headerLine(version_, dim, fingerprint), path);
       if (durable_ && ::fsync(fd_) != 0) {
         if (StorageError::isStorageFull(errno)) throw StorageError(path, errno);  // delayed allocation
         throw std::runtime_error(systemError(path + ": fsync"));
@@ -204,6 +245,7 @@ void DesignJournal::append(std::int64_t index, const std::vector<double>& theta,
   }
   line += ',';
   appendDouble(line, sse);
+  if (version_ >= 2) line += "," + lineChecksum(line);
   line += '\n';
   std::lock_guard<std::mutex> lock(mutex_);
   writeAll(fd_, line, path_);

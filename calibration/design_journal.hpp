@@ -2,17 +2,23 @@
 // Persistence of design-point evaluations, so that an interrupted calibration can resume.
 //
 // \par Journal file format (text, append-only)
-//     # dtwin design journal v1; dim=<d>; fingerprint=<caller's string>
-//     <index>,<theta_1>,...,<theta_d>,<sse>
+//     # dtwin design journal v2; dim=<d>; fingerprint=<caller's string>; check=<c>
+//     <index>,<theta_1>,...,<theta_d>,<sse>,<c>
 //     ...
-// One line per finished design point, in completion order (any order under parallel runs).
+// One line per finished design point, in completion order (any order under parallel runs). <c> is
+// the 32-bit FNV-1a of the line's text before it (8 hex digits, common/checksum.hpp lineChecksum):
+// a line changed on disk after it was written (a digit overwritten) fails it. Journals of version
+// 1 (the same without the checksums) are read as before and appended to in their own version.
 // Numbers are written with std::to_chars (the shortest text that reads back to the identical
 // double, locale-independent); a non-finite SSE (failed simulation) is written as "inf".
 // Each line goes to the file with a single write(2) and is then fsync'ed (unless disabled), so a
 // killed process loses at most the line being written. A line counts only when its '\n' is on
 // disk: on reading, a last line without one is discarded as truncated (and, when the journal is
 // reopened for appending, cut off so the next line starts cleanly). A malformed line that IS
-// terminated is corruption and an error.
+// terminated is corruption: in a v1 journal an error; in a v2 journal any complete line that
+// fails its checksum (a malformed one included) makes the journal damaged: DesignJournal sets it
+// aside (<path>.corrupt, one note on stderr) and starts a new one, so the points are computed
+// again instead of trusted.
 // The fingerprint identifies what the points belong to (e.g. a hash of study, assembly, box
 // and design seed). Reopening a journal with a different d or fingerprint is refused with an
 // InputError, so points of one design can never be resumed into another.
@@ -37,14 +43,16 @@ struct JournalEntry {
 };
 
 struct JournalContents {
+  int version = 2;  ///< 1: lines without checksums
   int dim = 0;
   std::string fingerprint;
   std::vector<JournalEntry> entries;      ///< complete lines, in file order
   bool discarded_truncated_line = false;  ///< a last line without '\n' was dropped
+  int corrupt_line = 0;  ///< > 0: the first line (1 = the header) that fails its checksum; reading stopped there
 };
 
 /// Reads a journal. Throws InputError (naming the file and line) when the file cannot be read,
-/// the header is missing or malformed, or a complete line is malformed.
+/// the header is missing or malformed, or a complete line is malformed or fails its checksum.
 JournalContents readDesignJournal(const std::string& path);
 
 /// An open journal: loads what is there, then appends. append() is thread-safe.
@@ -53,7 +61,9 @@ class DesignJournal {
   /// Creates `path` with a header if it does not exist (or holds not even a complete header
   /// line); otherwise checks that its d and fingerprint equal `dim` and `fingerprint` (InputError
   /// if not, saying which differs), loads its entries (see resumed()) and removes a truncated
-  /// last line. `fingerprint` must not contain line breaks. `durable` = fsync after each line.
+  /// last line. A v2 journal with a line that fails its checksum is set aside (renamed to
+  /// <path>.corrupt, with a note on stderr; setAside() true) and a new one is started.
+  /// `fingerprint` must not contain line breaks. `durable` = fsync after each line.
   DesignJournal(const std::string& path, int dim, const std::string& fingerprint,
                 bool durable = true);
   ~DesignJournal();
@@ -63,6 +73,8 @@ class DesignJournal {
   /// Entries that were already in the file when it was opened, in file order.
   const std::vector<JournalEntry>& resumed() const { return resumed_; }
   bool discardedTruncatedLine() const { return discarded_; }
+  /// The journal in the file failed its checksum and was set aside (resumed() is then empty).
+  bool setAside() const { return set_aside_; }
   const std::string& path() const { return path_; }
   int dim() const { return dim_; }
 
@@ -78,6 +90,8 @@ class DesignJournal {
   std::mutex mutex_;
   std::vector<JournalEntry> resumed_;
   bool discarded_ = false;
+  bool set_aside_ = false;
+  int version_ = 2;  ///< of the lines appended: the file's own
 };
 
 /// A further column of the design table: its name and one value per design point.

@@ -21,6 +21,7 @@ namespace dtwin::calib {
 
 // posterior.csv, its reader and writer: io/posterior_file.hpp.
 using dtwin::PosteriorSample;
+using dtwin::checkPosteriorChecksum;
 using dtwin::parsePosteriorCsv;
 using dtwin::posteriorCsv;
 using dtwin::readPosteriorCsv;

@@ -61,6 +61,36 @@ std::string rootRead(const Distributed* processes, const fs::path& path) {
   return onRoot(processes, [&]() -> std::string { return fs::exists(path) ? "F" + readTextFile(path.string()) : std::string(); });
 }
 
+std::string rootReadCheckpoint(const Distributed* processes, const SynthesisFiles& files) {
+  return onRoot(processes, [&]() -> std::string {
+    const fs::path& path = files.checkpoint;
+    if (!fs::exists(path)) return std::string();
+    const std::string text = readTextFile(path.string());
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(text);
+    } catch (const std::exception&) {
+      setAsideCorrupt(path.string(), "is not valid JSON");
+      return std::string();
+    }
+    if (checkSeal(j) == Seal::broken) {
+      setAsideCorrupt(path.string(), "fails its checksum");
+      return std::string();
+    }
+    if (j.is_object() && j.contains("nodes") && j["nodes"].is_array())
+      for (const auto& n : j["nodes"]) {
+        const std::string sum = n.value("checksum", std::string()), file = n.value("file", std::string());
+        if (sum.empty() || file.empty()) continue;  // a checkpoint written before checksums were recorded
+        const fs::path node = files.dir / file;
+        if (!fs::exists(node) || contentChecksum(readTextFile(node.string())) != sum) {
+          setAsideCorrupt(path.string(), "its node file " + file + (fs::exists(node) ? " fails its checksum" : " is missing"));
+          return std::string();
+        }
+      }
+    return "F" + text;
+  });
+}
+
 /// The JSON of a rootRead() text; null when it is not JSON (written atomically: a foreign file).
 nlohmann::json parseRootJson(const std::string& text) {
   try {

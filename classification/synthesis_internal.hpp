@@ -19,6 +19,8 @@
 #include "classification/moment_tree.hpp"
 #include "classification/moments.hpp"
 #include "classification/synthesis.hpp"
+#include "common/checksum.hpp"
+#include "common/files.hpp"
 #include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/distributed.hpp"
@@ -79,6 +81,11 @@ struct SynthesisFiles {
 };
 
 std::string rootRead(const Distributed* processes, const fs::path& path);
+/// rootRead of checkpoint.json, checked on the root first: one that is not JSON, fails its
+/// checksum or names a node file whose bytes differ from the checksum it recorded was damaged on
+/// disk; it is set aside (checkpoint.json.corrupt, one note on stderr) and "" returned, so the
+/// synthesis starts again instead of trusting it.
+std::string rootReadCheckpoint(const Distributed* processes, const SynthesisFiles& files);
 nlohmann::json parseRootJson(const std::string& text);
 [[noreturn]] void refuseForeign(const fs::path& path);
 
@@ -147,7 +154,7 @@ class Reduction {
   /// Continues from checkpoint.json when the folder has one (InputError when it is another
   /// synthesis's or does not match its node files).
   void resume() {
-    const std::string ckpt_text = rootRead(opt_.processes, files_.checkpoint);
+    const std::string ckpt_text = rootReadCheckpoint(opt_.processes, files_);
     if (ckpt_text.empty()) return;
     const nlohmann::json j = parseRootJson(ckpt_text);
     if (!j.is_object() || j.value("fingerprint", "") != fingerprint_ || !j.contains("nodes")) refuseForeign(files_.checkpoint);
@@ -167,7 +174,10 @@ class Reduction {
       if (tree.end() != next_leaf)
         throw InputError(files_.checkpoint.string(), "its nodes end at leaf " + std::to_string(tree.end()) + ", not at next_leaf " +
                                                          std::to_string(next_leaf) + "; delete the folder to start over");
-      for (const auto& n : j.at("nodes")) node_files_.push_back(n.at("file").get<std::string>());
+      for (const auto& n : j.at("nodes")) {
+        node_files_.push_back(n.at("file").get<std::string>());
+        node_sums_.push_back(n.value("checksum", std::string()));
+      }
     } else {
       tree = MomentTree(plan_.leaves(), next_leaf);  // the root holds [0, next_leaf)
     }
@@ -222,13 +232,19 @@ class Reduction {
   /// node_<level>_<index>.bin for each node not yet on disk (a node never changes: it is only
   /// merged into its parent), then checkpoint.json naming them, then the files no longer named.
   void writeCheckpoint(double wall_so_far) {
-    std::vector<std::string> files;
+    std::vector<std::string> files, sums;
     nlohmann::json nodes = nlohmann::json::array();
     for (const auto& node : tree.nodes()) {
       const std::string file = "node_" + std::to_string(node.level) + "_" + std::to_string(node.index) + ".bin";
-      if (std::find(node_files_.begin(), node_files_.end(), file) == node_files_.end()) node.acc.save((files_.dir / file).string());
-      nodes.push_back({{"level", node.level}, {"index", node.index}, {"file", file}, {"vectors", node.acc.count()}});
+      const auto known = std::find(node_files_.begin(), node_files_.end(), file);
+      std::string sum = known == node_files_.end() ? std::string() : node_sums_[static_cast<std::size_t>(known - node_files_.begin())];
+      if (known == node_files_.end()) {
+        node.acc.save((files_.dir / file).string());
+        sum = contentChecksum(readTextFile((files_.dir / file).string()));
+      }
+      nodes.push_back({{"level", node.level}, {"index", node.index}, {"file", file}, {"vectors", node.acc.count()}, {"checksum", sum}});
       files.push_back(file);
+      sums.push_back(sum);
     }
     nlohmann::json j{{"fingerprint", fingerprint_},
                      {"assembly", assembly_},
@@ -242,10 +258,11 @@ class Reduction {
                      {"run_wall_samples", sink.run_walls},
                      {"wall_s", wall_so_far}};
     for (const auto& f : sink.failures) j["failure_list"].push_back(failureJson(f));
-    writeFileAtomic(files_.checkpoint.string(), j.dump() + "\n");
+    writeFileAtomic(files_.checkpoint.string(), sealJson(j).dump() + "\n");
     for (const auto& f : node_files_)
       if (std::find(files.begin(), files.end(), f) == files.end()) fs::remove(files_.dir / f);
     node_files_ = std::move(files);
+    node_sums_ = std::move(sums);
   }
 
   const SynthesisPlan& plan_;
@@ -254,6 +271,7 @@ class Reduction {
   std::string assembly_, fingerprint_;
   bool root_;
   std::vector<std::string> node_files_;  ///< the nodes of the current checkpoint
+  std::vector<std::string> node_sums_;   ///< their checksums (contentChecksum of the file's bytes)
   Clock::time_point last_ckpt_ = Clock::now();
 };
 

@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
+#include "common/folder_lock.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
 #include "io/provenance.hpp"
@@ -57,6 +58,7 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   cfg.calibration.applyTo(opt);
   req.validate(study);  // before anything is printed; main() shows a field as its flag (field_flags below)
   checkCalibrateWork(study, req, cfg.calibration, cfg.force);
+  const FolderLock lock(cfg.out, "--out", cfg.processes);  // one run at a time in the folder
   const bool bar_on = progressOn(cfg.quiet, cfg.processes);
   std::unique_ptr<ProgressBar> bar;
   std::string current;

@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
+#include "common/folder_lock.hpp"
 #include "io/study.hpp"
 
 namespace fs = std::filesystem;
@@ -47,6 +48,7 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   o.calibration.processes = cfg.processes;
   cfg.calibration.applyTo(o.calibration);
   o.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
+  const FolderLock lock(cfg.out, "--out", nullptr);  // one run at a time in the folder (on the root alone: command registry)
   const std::size_t n_asm = cfg.assemblies.empty() ? study.assemblies().size() : cfg.assemblies.size();
   if (!cfg.quiet)
     std::printf("coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n", n_asm, n_asm == 1 ? "y" : "ies",

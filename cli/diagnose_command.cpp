@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
+#include "common/folder_lock.hpp"
 #include "common/format.hpp"
 #include "common/files.hpp"  // writeFileAtomic
 #include "report/compare_page.hpp"
@@ -102,6 +103,8 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   o.threads = cfg.threads;
   o.processes = cfg.processes;
   o.command = command;
+  // One run at a time in the folder (none without --out); on the root alone (command registry).
+  const FolderLock lock(cfg.out, "--out", nullptr);
   ProgressBar bar("diagnose", progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
   std::string current;
   const auto progress = [&](const std::string& stage, std::size_t d, std::size_t t) {

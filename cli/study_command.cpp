@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
+#include "common/folder_lock.hpp"
 #include "io/study.hpp"
 
 namespace dtwin::cli {
@@ -30,6 +31,7 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command, const CL
   if (cfg.lab.empty()) stages.push_back("lab");
   if (cfg.field.empty()) stages.push_back("field");
   checkCommandWork(study, stages, cfg.force);
+  const FolderLock lock(cfg.out, "--out", cfg.processes);  // one run at a time in the folder
   study::StudyRunOptions o;
   o.threads = cfg.threads;
   o.processes = cfg.processes;

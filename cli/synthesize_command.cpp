@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
+#include "common/folder_lock.hpp"
 #include "common/distributed.hpp"
 #include "io/provenance.hpp"
 #include "io/study.hpp"
@@ -54,6 +55,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   opt.track_fourth_moment = !cfg.no_fourth;
   opt.command = command;
 
+  const FolderLock lock(cfg.out, "--out", cfg.processes);  // one run at a time in the folder
   const bool bar_on = progressOn(cfg.quiet, cfg.processes);
   std::unique_ptr<ProgressBar> bar;  // one per assembly, as it starts
   std::string stage;

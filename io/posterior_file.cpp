@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
+#include "common/checksum.hpp"
 #include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/files.hpp"
@@ -65,9 +68,28 @@ PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& na
   return ps;
 }
 
+void checkPosteriorChecksum(const std::string& path, const std::string& text) {
+  const fs::path summary = fs::path(path).parent_path() / "summary.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(summary, ec)) return;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(readTextFile(summary.string()));
+  } catch (const std::exception&) {
+    return;  // not a calibration's summary: nothing recorded to check against
+  }
+  if (!j.is_object() || !j.contains("posterior_checksum") || !j["posterior_checksum"].is_string()) return;
+  const std::string recorded = j["posterior_checksum"].get<std::string>();
+  if (recorded != contentChecksum(text))
+    throw InputError(path, "fails its checksum (" + summary.string() + " records " + recorded +
+                               "): it changed after the calibration wrote it and is not used; rerun that calibration into its folder to write it again");
+}
+
 PosteriorSample readPosteriorCsv(const std::string& path) {
   if (!fs::exists(path)) throw InputError(path, "posterior file not found");
-  return parsePosteriorCsv(readTextFile(path), path);
+  const std::string text = readTextFile(path);
+  checkPosteriorChecksum(path, text);
+  return parsePosteriorCsv(text, path);
 }
 
 std::string posteriorCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& theta,

@@ -22,7 +22,14 @@ struct PosteriorSample {
 /// rule): a header of at least one θ name, then `tau`, then `design_index`, names unique and
 /// non-empty; every line has one field per column; θ values finite numbers; tau a finite number
 /// > 0; design_index an integer >= 0; at least one row. CR line ends and blank lines are accepted.
+/// A posterior.csv in a calibration's folder is also checked against the checksum its
+/// summary.json records (checkPosteriorChecksum).
 PosteriorSample readPosteriorCsv(const std::string& path);
+/// InputError naming `path` when the summary.json beside it records a "posterior_checksum"
+/// (common/checksum.hpp contentChecksum) that `text`, the file's bytes, does not have: a value
+/// changed on disk after the calibration wrote it is refused, never used. No summary.json, or one
+/// without the field (written before checksums were recorded): nothing to check.
+void checkPosteriorChecksum(const std::string& path, const std::string& text);
 /// The same from text; `name` prefixes errors.
 PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name);
 

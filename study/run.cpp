@@ -13,6 +13,7 @@
 #include "common/validate.hpp"
 #include "study/generate.hpp"
 #include "io/measurement.hpp"
+#include "io/posterior_file.hpp"
 #include "common/distributed.hpp"
 #include "io/provenance.hpp"
 
@@ -153,7 +154,9 @@ void synthesizeStage(const Study& study, const std::vector<AssemblySpec>& assemb
     const std::string post_path = (out / "calibration" / a.id / "posterior.csv").string();
     const auto post = calib::parsePosteriorCsv(onRoot(options.processes, [&] {
                                           if (!fs::exists(post_path)) throw InputError(post_path, "posterior file not found");
-                                          return readTextFile(post_path);
+                                          std::string text = readTextFile(post_path);
+                                          dtwin::checkPosteriorChecksum(post_path, text);
+                                          return text;
                                         }),
                                         post_path);
     const auto r = classify::synthesizeAssembly(study, a, post, so, (out / "synthetic" / a.id).string(),

@@ -1,8 +1,10 @@
 // Design journal: exact round trip, a process killed mid-line, refusing a foreign design,
-// concurrent appends, and the atomic design table.
+// concurrent appends, a line changed on disk (its checksum), version 1 journals, and the atomic
+// design table.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -51,7 +53,7 @@ TEST(DesignJournal, WriteAndReloadRoundTripsExactly) {
     EXPECT_EQ(c.entries[k].theta, thetas[k]);  // bit-exact
     EXPECT_EQ(c.entries[k].sse, sses[k]);
   }
-  EXPECT_NE(readFile(path).find(",inf\n"), std::string::npos);  // +inf written as "inf"
+  EXPECT_NE(readFile(path).find(",inf,"), std::string::npos);  // +inf written as "inf" (then the checksum)
 
   // Reopening resumes the same entries and keeps appending.
   {
@@ -123,9 +125,9 @@ TEST(DesignJournal, ForeignDesignIsRefused) {
 }
 
 TEST(DesignJournal, CorruptCompleteLineIsAnErrorWithLineNumber) {
+  // A journal of version 1 (no checksums): a malformed complete line is an error naming it.
   const std::string path = tempPath("corrupt.journal");
-  { DesignJournal j(path, 2, "fp"); j.append(0, {1, 2}, 3); }
-  { std::ofstream(path, std::ios::app) << "1,2.0,abc,4\n"; }
+  { std::ofstream(path, std::ios::binary) << "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1,2,3\n1,2.0,abc,4\n"; }
   try {
     readDesignJournal(path);
     FAIL() << "no throw";
@@ -136,6 +138,79 @@ TEST(DesignJournal, CorruptCompleteLineIsAnErrorWithLineNumber) {
   const std::string p2 = tempPath("notajournal.csv");
   { std::ofstream(p2) << "a,b,c\n1,2,3\n"; }
   EXPECT_THROW(DesignJournal(p2, 2, "fp"), InputError);
+}
+
+TEST(DesignJournal, VersionOneJournalsAreReadAndAppendedToInTheirVersion) {
+  const std::string path = tempPath("v1.journal");
+  { std::ofstream(path, std::ios::binary) << "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1.5,2.5,10\n"; }
+  {
+    DesignJournal j(path, 2, "fp");
+    EXPECT_FALSE(j.setAside());
+    ASSERT_EQ(j.resumed().size(), 1u);
+    EXPECT_EQ(j.resumed()[0].theta, (std::vector<double>{1.5, 2.5}));
+    j.append(1, {3.5, 4.5}, 20.0);
+  }
+  EXPECT_EQ(readFile(path), "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1.5,2.5,10\n1,3.5,4.5,20\n");
+  const JournalContents c = readDesignJournal(path);
+  EXPECT_EQ(c.version, 1);
+  ASSERT_EQ(c.entries.size(), 2u);
+  EXPECT_EQ(c.entries[1].sse, 20.0);
+}
+
+TEST(DesignJournal, EveryLineCarriesTheChecksumOfItsText) {
+  const std::string path = tempPath("checksum.journal");
+  { DesignJournal j(path, 2, "fp"); j.append(7, {1.25, -3.0}, 0.5); }
+  const std::string text = readFile(path);
+  const std::string header = "# dtwin design journal v2; dim=2; fingerprint=fp";
+  const std::string line = "7,1.25,-3,0.5";
+  // 32-bit FNV-1a, computed here from its definition.
+  auto fnv = [](const std::string& s) {
+    std::uint32_t h = 2166136261u;
+    for (unsigned char c : s) h = (h ^ c) * 16777619u;
+    char buf[9];
+    std::snprintf(buf, sizeof buf, "%08x", static_cast<unsigned>(h));
+    return std::string(buf);
+  };
+  EXPECT_EQ(text, header + "; check=" + fnv(header) + "\n" + line + "," + fnv(line) + "\n");
+  EXPECT_EQ(fnv(""), "811c9dc5");  // the offset basis: FNV-1a of nothing
+  EXPECT_EQ(fnv("a"), "e40c292c");  // the published test vector
+}
+
+TEST(DesignJournal, ALineChangedOnDiskIsDetectedAndTheJournalSetAside) {
+  const std::string path = tempPath("changed.journal");
+  std::remove((path + ".corrupt").c_str());
+  {
+    DesignJournal j(path, 2, "fp");
+    for (int k = 0; k < 20; ++k) j.append(k, {1.0 + k, 2.0 * k}, 100.0 + k);
+  }
+  // One digit of line 17 (point 15: "15,16,30,115,<c>") changed in place: a well-formed line.
+  std::string text = readFile(path);
+  const std::size_t at = text.find("\n15,16,30,115,");
+  ASSERT_NE(at, std::string::npos);
+  text[at + 7] = '7';  // 30 -> 70
+  { std::ofstream(path, std::ios::binary | std::ios::trunc) << text; }
+  try {
+    readDesignJournal(path);
+    FAIL() << "no throw";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": line 17: fails its checksum"), std::string::npos) << e.what();
+  }
+  {
+    DesignJournal j(path, 2, "fp");
+    EXPECT_TRUE(j.setAside());
+    EXPECT_TRUE(j.resumed().empty());  // nothing of it is trusted
+    j.append(0, {1.0, 0.0}, 100.0);
+  }
+  EXPECT_EQ(readFile(path + ".corrupt"), text);  // kept for a look, never read again
+  const JournalContents c = readDesignJournal(path);
+  ASSERT_EQ(c.entries.size(), 1u);
+  EXPECT_EQ(c.entries[0].sse, 100.0);
+  // A changed header (its fingerprint) fails its checksum too.
+  std::string h = readFile(path);
+  h[h.find("fingerprint=fp") + 12] = 'q';
+  { std::ofstream(path, std::ios::binary | std::ios::trunc) << h; }
+  DesignJournal again(path, 2, "fp");
+  EXPECT_TRUE(again.setAside());
 }
 
 TEST(DesignJournal, ConcurrentAppendsKeepWholeLines) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "calibration/folder.hpp"
+#include "common/checksum.hpp"
 #include "common/errors.hpp"
 
 namespace fs = std::filesystem;
@@ -89,6 +90,32 @@ TEST(CalibrationFolder, ReadsSummaryAndPosterior) {
   EXPECT_TRUE(f.setup.extra_effects.empty());
   EXPECT_EQ(f.posterior.size(), 1u);
   EXPECT_EQ(f.posterior.names, (std::vector<std::string>{"a", "b"}));
+}
+
+// posterior.csv's checksum in summary.json: the file as written reads; a value changed in the
+// middle (still a well-formed file) is refused, naming the file and the rule; no checksum recorded
+// (a folder written before they were): read as before.
+TEST(CalibrationFolder, APosteriorChangedAfterItWasWrittenIsRefused) {
+  const fs::path dir = tempDir("checksum");
+  const std::string text = "a,b,tau,design_index\n1,2,0.5,3\n4,5,0.25,1\n6,7,0.5,2\n";
+  const std::string sum = contentChecksum(text);
+  writeText(dir / "summary.json", R"({"assembly": "M3", "posterior_checksum": ")" + sum + "\"}");
+  writeText(dir / "posterior.csv", text);
+  EXPECT_EQ(readCalibrationFolder(dir.string()).posterior.size(), 3u);
+  std::string changed = text;
+  changed[changed.find("4,5")] = '8';  // the middle row's first value
+  writeText(dir / "posterior.csv", changed);
+  const std::string rule = (dir / "posterior.csv").string() + ": fails its checksum (" + (dir / "summary.json").string() + " records " +
+                           sum + "): it changed after the calibration wrote it and is not used; rerun that calibration into its folder to write it again";
+  EXPECT_EQ(folderError(dir), rule);
+  try {
+    readPosteriorCsv((dir / "posterior.csv").string());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), rule);
+  }
+  writeText(dir / "summary.json", R"({"assembly": "M3"})");
+  EXPECT_EQ(readCalibrationFolder(dir.string()).posterior.theta[1][0], 8.0);  // nothing recorded to check against
 }
 
 TEST(CalibrationFolder, EveryBrokenPartIsNamed) {

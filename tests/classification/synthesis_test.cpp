@@ -12,6 +12,7 @@
 
 #include "classification/synthesis.hpp"
 #include "study/generate.hpp"
+#include "common/checksum.hpp"
 #include "common/errors.hpp"
 
 namespace fs = std::filesystem;
@@ -137,6 +138,46 @@ TEST(Synthesis, ResumesAfterAnInterruptionBitIdentically) {
   SynthesisOptions other = o;
   other.draws = 8;
   EXPECT_THROW(synthesizeAssembly(demo(), a, ps, other, out), InputError);
+}
+
+// A checkpoint changed on disk (bytes of checkpoint.json overwritten, or a node file's): set aside
+// with one note, the synthesis started again, and the same moments.bin as an undisturbed run.
+TEST(Synthesis, ADamagedCheckpointIsSetAsideAndTheSynthesisRedone) {
+  const fs::path dir = tempDir("damaged");
+  const auto ps = posterior(dir);
+  const auto a = demo().assembly("M3");
+  SynthesisOptions o = tiny(2);
+  o.checkpoint_interval_s = 0.0;  // checkpoint after every block
+  synthesizeAssembly(demo(), a, ps, o, (dir / "full").string());
+  const std::string full = slurp(dir / "full" / "moments.bin");
+  for (const std::string damage : {"checkpoint", "node"}) {
+    const fs::path cut = dir / ("cut_" + damage);
+    EXPECT_THROW(synthesizeAssembly(demo(), a, ps, o, cut.string(),
+                                    [](std::size_t done, std::size_t) {
+                                      if (done >= 3) throw std::runtime_error("interrupted");
+                                    }),
+                 std::runtime_error);
+    const fs::path ck = cut / "checkpoint.json";
+    ASSERT_TRUE(fs::exists(ck));
+    const auto j = nlohmann::json::parse(slurp(ck));
+    ASSERT_TRUE(j.contains("checksum"));
+    const fs::path node = cut / j["nodes"][0]["file"].get<std::string>();
+    EXPECT_EQ(j["nodes"][0]["checksum"], contentChecksum(slurp(node)));  // of the node file's bytes
+    const fs::path target = damage == "checkpoint" ? ck : node;
+    std::string bytes = slurp(target);
+    bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x10);  // one byte in the middle
+    writeText(target, bytes);
+    ::testing::internal::CaptureStderr();
+    const auto r = synthesizeAssembly(demo(), a, ps, o, cut.string());
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(r.resumed_blocks, 0) << damage;  // nothing of it trusted
+    EXPECT_TRUE(slurp(cut / "moments.bin") == full) << damage << ": moments differ from the undisturbed run's";
+    EXPECT_TRUE(fs::exists(cut / "checkpoint.json.corrupt")) << damage;
+    const std::string what = damage == "checkpoint" ? "" : "its node file " + node.filename().string() + " fails its checksum";
+    EXPECT_EQ(err.rfind("twin: note: " + ck.string() + ": " + what, 0), 0u) << err;
+    EXPECT_NE(err.find("the stage is redone, not trusted"), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  }
 }
 
 // A draw whose parameters the model rejects: its runs are failures, counted and listed, and its

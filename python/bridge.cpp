@@ -173,6 +173,9 @@ namespace {
 /// Runs `work` on a thread of its own; the calling thread (GIL released) wakes every kSignalEvery
 /// to run Python's signal handlers with the GIL held. Returns what `work` threw.
 std::exception_ptr runWatched(const std::function<void()>& work, Callbacks& callbacks) {
+  // Python runs signal handlers on the main thread only: elsewhere there is nothing to watch.
+  const py::module_ threading = py::module_::import("threading");
+  const bool watch = threading.attr("current_thread")().is(threading.attr("main_thread")());
   std::mutex m;
   std::condition_variable cv;
   bool done = false;
@@ -190,11 +193,11 @@ std::exception_ptr runWatched(const std::function<void()>& work, Callbacks& call
   });
   std::unique_lock<std::mutex> lock(m);
   while (!cv.wait_for(lock, kSignalEvery, [&] { return done; })) {
-    if (callbacks.stop().requested()) continue;  // stopping: wait for the work to end
+    if (!watch || callbacks.stop().requested()) continue;  // stopping: wait for the work to end
     lock.unlock();
     {
       py::gil_scoped_acquire gil;
-      if (PyErr_CheckSignals() != 0) callbacks.stopWithPythonError();  // acts on the main thread only
+      if (PyErr_CheckSignals() != 0) callbacks.stopWithPythonError();
     }
     lock.lock();
   }

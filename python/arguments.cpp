@@ -218,6 +218,13 @@ const py::object& Arguments::operator[](const std::string& name) const {
   return values_[i];
 }
 
+Keywords Arguments::keywords(std::map<std::string, std::string> fields) const {
+  Keywords k;
+  for (const Param& p : call_->params()) k.names.insert(p.name);
+  k.fields = std::move(fields);
+  return k;
+}
+
 void Arguments::invalid(const std::string& name, const std::string& rule) const {
   PyErr_SetString(exceptions().input_error.ptr(), oneLine(name + ": " + rule).c_str());
   throw py::error_already_set();

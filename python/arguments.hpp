@@ -114,6 +114,9 @@ class Arguments {
   const std::string& call() const { return call_->name(); }
 
   const py::object& operator[](const std::string& name) const;
+  /// The call's keywords for the library's errors (bridge.hpp), `fields` naming the option fields
+  /// that differ from their keyword.
+  Keywords keywords(std::map<std::string, std::string> fields = {}) const;
   bool isNone(const std::string& name) const { return (*this)[name].is_none(); }
 
   std::string str(const std::string& name) const;                      ///< Str ("" for None)

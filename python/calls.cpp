@@ -88,11 +88,9 @@ Study withStop(const Study& study, const StopToken& stop) {
   return s;
 }
 
-/// The names of the calibration keywords, and the option fields they set under other names.
-Keywords calibrationKeywords(std::set<std::string> names) {
-  for (const char* n : {"lhs_points", "iterations", "burn_in", "starts", "region", "design", "interval", "steps", "max_rounds", "ridge_steps"})
-    names.insert(n);
-  return {std::move(names), {{"gibbs_iterations", "iterations"}, {"gibbs_burn_in", "burn_in"}, {"optimizer_starts", "starts"}}};
+/// The call's keywords, with the option fields the calibration keywords set under other names.
+Keywords calibrationKeywords(const Arguments& a) {
+  return a.keywords({{"gibbs_iterations", "iterations"}, {"gibbs_burn_in", "burn_in"}, {"optimizer_starts", "starts"}});
 }
 
 nlohmann::json readJsonFile(const std::string& path) { return nlohmann::json::parse(readTextFile(path)); }
@@ -107,7 +105,7 @@ std::string withoutFinalNewline(std::string s) {
 PyStudy loadStudyFile(const Arguments& a) {
   const std::string p = a.isNone("path") ? defaultStudyPath() : a.path("path");
   PyStudy s;
-  runReleased([&] { s.study = std::make_shared<const Study>(loadStudy(p)); }, Keywords{{"path"}, {}});
+  runReleased([&] { s.study = std::make_shared<const Study>(loadStudy(p)); }, a.keywords());
   return s;
 }
 
@@ -136,9 +134,8 @@ py::object simulate(const PyStudy& s, const Arguments& a) {
                    "obstacle_step", "output_rate", "out"});
   req.command = call.str();
 
-  const Keywords keywords{{"assembly", "scenario", "set", "effects", "seed", "channels", "window", "integrator", "accuracy", "max_step",
-                           "obstacle_step", "output_rate", "out"},
-                          {{"effect", "effects"}, {"max_step_s", "max_step"}, {"obstacle_max_step_s", "obstacle_step"}, {"output_rate_hz", "output_rate"}}};
+  const Keywords keywords =
+      a.keywords({{"effect", "effects"}, {"max_step_s", "max_step"}, {"obstacle_max_step_s", "obstacle_step"}, {"output_rate_hz", "output_rate"}});
   Callbacks callbacks(py::none(), true);
   req.simulation.stop = callbacks.stop();
   std::vector<SimulateRun> runs;
@@ -207,7 +204,7 @@ py::object calibrate(const PyStudy& s, const Arguments& a) {
           done.push_back(run.assembly.id);
         });
       },
-      calibrationKeywords({"data", "assembly", "out", "threads", "seed", "force"}), &callbacks);
+      calibrationKeywords(a), &callbacks);
   py::dict result;
   for (const auto& id : done) result[py::str(id)] = toPython(readJsonFile((fs::path(out) / id / "summary.json").string()));
   return std::move(result);
@@ -245,7 +242,7 @@ py::object compare(const PyStudy& s, const Arguments& a) {
           if (say) say("wrote " + page);
         }
       },
-      Keywords{{"calibration", "data", "baseline", "discrepancy", "draws", "threads", "out", "force"}, {}}, &callbacks);
+      a.keywords(), &callbacks);
   return toPython(run.json);
 }
 
@@ -277,8 +274,7 @@ py::object diagnose(const PyStudy& s, const Arguments& a) {
   const StageProgress stage_progress = callbacks.progress();
   const SayFn say = callbacks.say();
   DiagnoseRun run;
-  Keywords keywords = calibrationKeywords({"data", "assembly", "holdout", "effects", "apply", "candidates", "causes", "confirm_within",
-                                           "all_intervals", "propose", "draws", "threads", "out", "force"});
+  Keywords keywords = calibrationKeywords(a);
   keywords.fields["compare_draws"] = "draws";
   keywords.fields["fit"] = "data";
   keywords.fields["propose_terms"] = "propose";
@@ -346,9 +342,7 @@ py::object importLog(const Arguments& a) {
           say("imported " + std::to_string(r.rows) + " rows (" + formatNumber(r.duration_s, 6) + " s of driving, " +
               std::to_string(r.data.records.size()) + " records) into " + req.out + "/ (study.toml, scenario '" + r.scenario + "')");
       },
-      Keywords{{"log", "map", "out", "study", "scenario", "time", "speed", "road", "road_left", "road_right", "channel", "highpass_hz",
-                "speed_lowpass_hz", "separator", "window", "run_in"},
-               {}},
+      a.keywords(),
       &callbacks);
   return toPython(r.sidecar);
 }

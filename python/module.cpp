@@ -25,8 +25,11 @@ const char* kModuleDoc = R"(The vehicle digital twin from Python (docs/python.md
 Errors: dtwin.InputError (a ValueError) for bad input, with the one line `twin` prints after
 'twin: error: ' (keyword arguments named instead of flags); dtwin.StorageError (an OSError) when
 the disk is full; dtwin.SimulationError when a simulation fails; RuntimeError for an internal
-error. Long calls release the GIL; their progress goes to `progress(stage, done, total)` or, by
-default, to sys.stderr, and the lines `twin` prints to sys.stdout (quiet=True: none).)";
+error; TypeError for a wrong type, naming the call, the keyword and the type it expects (the types
+are in each call's docstring and in dtwin.pyi). Long calls release the GIL; their progress goes to
+`progress(stage, done, total)` or, by default, to sys.stderr, and the lines `twin` prints to
+sys.stdout (quiet=True: none). Ctrl-C stops a call within about a second with KeyboardInterrupt,
+leaving whole files only.)";
 
 
 

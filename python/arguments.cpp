@@ -172,7 +172,7 @@ std::string CallSignature::doc(const std::string& summary) const {
 }
 
 Arguments CallSignature::bind(const py::args& args, const py::kwargs& kwargs) const {
-  const std::string head = name_ + "()";
+  const std::string head = shown_ + "()";
   const std::size_t positional = static_cast<std::size_t>(
       std::count_if(params_.begin(), params_.end(), [](const Param& p) { return !p.keyword_only; }));
   if (args.size() > positional)

@@ -81,8 +81,10 @@ class Arguments;
 /// One call's table: `CallSignature("simulate", true).arg(...).keywordOnly().arg(...)`.
 class CallSignature {
  public:
-  /// `method`: bound to a Study (the text signature starts with self, positional-only).
-  CallSignature(std::string name, bool method) : name_(std::move(name)), method_(method) {}
+  /// `method`: bound to a Study (the text signature starts with self, positional-only). `shown`:
+  /// the call's name in errors, when not `name` (the constructor: "Study").
+  CallSignature(std::string name, bool method, std::string shown = "")
+      : name_(std::move(name)), shown_(shown.empty() ? name_ : std::move(shown)), method_(method) {}
   CallSignature& arg(std::string name, ArgType type, Default def = Default::none());
   /// The arguments added after this are keyword-only (the `*` of a Python signature).
   CallSignature& keywordOnly();
@@ -99,7 +101,7 @@ class CallSignature {
   Arguments bind(const py::args& args, const py::kwargs& kwargs) const;
 
  private:
-  std::string name_;
+  std::string name_, shown_;
   bool method_;
   bool keyword_only_ = false;
   std::vector<Param> params_;

@@ -53,7 +53,7 @@ void method(py::class_<PyStudy>& c, CallSignature sig, const std::string& summar
 /// dtwin.Study: the study file and its calls (simulate, calibrate, compare, diagnose).
 void bindStudy(py::module_& m) {
   py::class_<PyStudy> study(m, "Study", "A study file (TOML), read and checked once; errors raise dtwin.InputError naming file, line and field.");
-  auto init = std::make_shared<const CallSignature>(CallSignature("__init__", true).arg("path", T::Path));
+  auto init = std::make_shared<const CallSignature>(CallSignature("__init__", true, "Study").arg("path", T::Path));
   study.def(py::init([init](const py::args& args, const py::kwargs& kwargs) { return loadStudyFile(init->bind(args, kwargs)); }),
             init->doc("Reads the study file `path` (None: the default study, dtwin.default_study()).").c_str());
   study.def_property_readonly("path", [](const PyStudy& s) { return s.study->path; }, "str: the study file.")

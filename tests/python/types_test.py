@@ -86,8 +86,7 @@ class WrongTypes(unittest.TestCase):
                     with self.assertRaises(TypeError) as caught:
                         call(**kwargs)
                     text = str(caught.exception)
-                    head = "__init__" if name == "Study" else name
-                    self.assertTrue(text.startswith(f"{head}(): {keyword} expects "), text)
+                    self.assertTrue(text.startswith(f"{name}(): {keyword} expects "), text)
                     self.assertTrue(text.endswith(", got Unconvertible <unconvertible>"), text)
                     checked += 1
         self.assertGreater(checked, 70)
@@ -104,7 +103,7 @@ class WrongTypes(unittest.TestCase):
         self.assertTypeError(STUDY.simulate, "simulate(): effects expects a dict {name: {parameter: value}} or a list of 'NAME[:p=v,...]', got dict {'bump_stop': 5}",
                              effects={"bump_stop": 5})
         self.assertTypeError(STUDY.calibrate, "calibrate(): progress expects a callable (stage, done, total), got str 'x'", data="x", out="y", progress="x")
-        self.assertTypeError(dtwin.Study, "__init__(): path expects a str or a path, got int 5", path=5)
+        self.assertTypeError(dtwin.Study, "Study(): path expects a str or a path, got int 5", path=5)
         self.assertTypeError(STUDY.calibrate, "calibrate(): out expects a str or a path, got NoneType None", data="x", out=None)
 
     def test_the_binding_of_arguments(self):

@@ -2,8 +2,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <condition_variable>
+#include <filesystem>
 #include <mutex>
 #include <thread>
 

@@ -2,8 +2,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <filesystem>
 #include <mutex>
+#include <thread>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -59,24 +61,25 @@ std::string Keywords::message(const std::string& where, const std::string& rule)
 struct Callbacks::State {
   py::object progress;  ///< None or a callable
   bool quiet = false;
+  StopToken stop = StopToken::make();
   std::mutex mutex;
-  std::optional<py::error_already_set> error;  ///< what a callback raised
+  std::optional<py::error_already_set> error;  ///< what a callback or a signal handler raised
   // The default progress: a line on sys.stderr at most every kLineEvery, and one at a stage's end.
   std::string stage;
   std::chrono::steady_clock::time_point last_line{}, stage_start{};
   bool stage_printed = false;
-  bool aborted() {
-    std::lock_guard<std::mutex> lock(mutex);
-    return error.has_value();
-  }
   void keep(py::error_already_set& e) {  // with the GIL held
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!error) error.emplace(std::move(e));
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error.emplace(std::move(e));
+    }
+    stop.request();
   }
 };
 
 namespace {
 constexpr auto kLineEvery = std::chrono::seconds(10);
+constexpr auto kSignalEvery = std::chrono::milliseconds(50);
 
 void writeTo(const char* stream, const std::string& text) {
   py::module_::import("sys").attr(stream).attr("write")(text);
@@ -96,13 +99,15 @@ Callbacks::~Callbacks() {
   state_->progress = py::object();
 }
 
+const StopToken& Callbacks::stop() const { return state_->stop; }
+
 StageProgress Callbacks::progress() {
-  if (state_->progress.is_none() && state_->quiet) return {};
-  return [state = state_](const std::string& stage, std::size_t done, std::size_t total) {
-    if (state->aborted()) throw CallbackRaised();
+  const bool silent = state_->progress.is_none() && state_->quiet;
+  return [state = state_, silent](const std::string& stage, std::size_t done, std::size_t total) {
+    state->stop.throwIfRequested();
+    if (silent) return;
     py::gil_scoped_acquire gil;
     try {
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C (acts on the main thread only)
       if (!state->progress.is_none()) {
         state->progress(stage, done, total);
         return;
@@ -125,7 +130,7 @@ StageProgress Callbacks::progress() {
       writeTo("stderr", stage + line);
     } catch (py::error_already_set& e) {
       state->keep(e);
-      throw CallbackRaised();
+      throw Stopped();
     }
   };
 }
@@ -133,14 +138,20 @@ StageProgress Callbacks::progress() {
 SayFn Callbacks::say() {
   if (state_->quiet) return {};
   return [state = state_](const std::string& line) {
+    state->stop.throwIfRequested();
     py::gil_scoped_acquire gil;
     try {
       writeTo("stdout", line + "\n");
     } catch (py::error_already_set& e) {
       state->keep(e);
-      throw CallbackRaised();
+      throw Stopped();
     }
   };
+}
+
+void Callbacks::stopWithPythonError() {
+  py::error_already_set e;  // takes the error indicator
+  state_->keep(e);
 }
 
 void Callbacks::raiseIfCallbackRaised() {
@@ -158,13 +169,51 @@ namespace {
   PyErr_SetString(type.ptr(), message.c_str());
   throw py::error_already_set();
 }
+
+/// Runs `work` on a thread of its own; the calling thread (GIL released) wakes every kSignalEvery
+/// to run Python's signal handlers with the GIL held. Returns what `work` threw.
+std::exception_ptr runWatched(const std::function<void()>& work, Callbacks& callbacks) {
+  // Python runs signal handlers on the main thread only: elsewhere there is nothing to watch.
+  const py::module_ threading = py::module_::import("threading");
+  const bool watch = threading.attr("current_thread")().is(threading.attr("main_thread")());
+  std::mutex m;
+  std::condition_variable cv;
+  bool done = false;
+  std::exception_ptr failure;
+  py::gil_scoped_release release;
+  std::thread worker([&] {
+    try {
+      work();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    std::lock_guard<std::mutex> lock(m);
+    done = true;
+    cv.notify_one();
+  });
+  std::unique_lock<std::mutex> lock(m);
+  while (!cv.wait_for(lock, kSignalEvery, [&] { return done; })) {
+    if (!watch || callbacks.stop().requested()) continue;  // stopping: wait for the work to end
+    lock.unlock();
+    {
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) callbacks.stopWithPythonError();
+    }
+    lock.lock();
+  }
+  lock.unlock();
+  worker.join();
+  return failure;
+}
 }  // namespace
 
 void runReleased(const std::function<void()>& work, const Keywords& keywords, Callbacks* callbacks) {
   // The library's exceptions leave the released section before they are translated: Python's
   // error state is set with the GIL held.
   std::exception_ptr failure;
-  {
+  if (callbacks) {
+    failure = runWatched(work, *callbacks);
+  } else {
     py::gil_scoped_release release;
     try {
       work();
@@ -172,7 +221,7 @@ void runReleased(const std::function<void()>& work, const Keywords& keywords, Ca
       failure = std::current_exception();
     }
   }
-  if (callbacks) callbacks->raiseIfCallbackRaised();  // a callback's own exception comes first
+  if (callbacks) callbacks->raiseIfCallbackRaised();  // a callback's or a signal handler's exception comes first
   if (!failure) return;
   try {
     std::rethrow_exception(failure);
@@ -184,6 +233,8 @@ void runReleased(const std::function<void()>& work, const Keywords& keywords, Ca
     throw;
   } catch (const std::exception& e) {
     raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), oneLine(internalErrorText(e.what())));
+  } catch (const Stopped&) {
+    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), "internal error: the call stopped with no exception to raise");
   }
 }
 
@@ -237,11 +288,9 @@ std::string pathText(const py::handle& value, const std::string& keyword) {
 std::vector<std::string> stringList(const py::object& value, const std::string& keyword) {
   std::vector<std::string> out;
   if (value.is_none()) return out;
-  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    for (const auto& v : value) out.push_back(pathText(v, keyword));
-    return out;
-  }
-  return {pathText(value, keyword)};
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) return {pathText(value, keyword)};
+  for (const auto& v : value) out.push_back(pathText(v, keyword));  // a sequence (checked by the call's arguments)
+  return out;
 }
 
 std::string literal(const py::handle& value) { return py::repr(value).cast<std::string>(); }

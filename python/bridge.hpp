@@ -14,6 +14,7 @@
 
 #include "common/json.hpp"
 #include "common/progress.hpp"
+#include "common/stop.hpp"
 
 namespace dtwin::python {
 
@@ -37,25 +38,26 @@ struct Keywords {
   std::string message(const std::string& where, const std::string& rule) const;
 };
 
-/// Raised inside a library call when a Python callback raised (its Python error is kept by the
-/// Callbacks object that threw it and raised again once the call returns).
-struct CallbackRaised : std::runtime_error {
-  CallbackRaised() : std::runtime_error("a Python callback raised an exception") {}
-};
-
-/// The progress callback and the printed lines of one long call. Built with the GIL held; the
-/// functions it hands out may be called from any thread while the GIL is released: each takes
-/// the GIL for its Python work. A Python exception in a callback (KeyboardInterrupt included,
-/// seen by the progress calls made on the main thread) stops the call and is raised when it returns.
+/// The progress callback, the printed lines and the stop of one long call. Built with the GIL
+/// held; the functions it hands out may be called from any thread while the GIL is released: each
+/// takes the GIL for its Python work. A Python exception in a callback, or one raised by a signal
+/// handler while the call runs (Ctrl-C: KeyboardInterrupt), requests the stop (stop()): the work
+/// throws Stopped at its next progress report or integrator step, and the exception is raised when
+/// the call returns.
 class Callbacks {
  public:
   /// `progress`: None (lines on sys.stderr unless `quiet`) or a callable (stage, done, total).
   Callbacks(py::object progress, bool quiet);
   ~Callbacks();
+  /// Never empty: even a quiet call reports to it, as it checks the stop.
   StageProgress progress();
   /// A line on sys.stdout (the lines `twin` prints), unless quiet.
   SayFn say();
-  /// Raises the kept Python error, if a callback raised.
+  /// The call's stop: pass it to the simulation options of the work (SimulationOptions::stop).
+  const StopToken& stop() const;
+  /// With the GIL held: keeps the Python error now set (PyErr_Occurred) and requests the stop.
+  void stopWithPythonError();
+  /// Raises the kept Python error, if a callback or a signal handler raised.
   void raiseIfCallbackRaised();
 
  private:
@@ -66,7 +68,10 @@ class Callbacks {
 /// Runs `work` with the GIL released and turns the library's errors into the module's
 /// exceptions (InputError -> dtwin.InputError with `keywords`' message, StorageError ->
 /// dtwin.StorageError, anything else -> RuntimeError "internal error: ..."), the `twin`
-/// program's classes. `callbacks` (may be null) re-raise a callback's own exception.
+/// program's classes. With `callbacks`, `work` runs on a thread of its own while the calling
+/// thread runs Python's signal handlers every 50 ms (PyErr_CheckSignals: on the main thread, Ctrl-C
+/// raises KeyboardInterrupt there): an exception they raise stops the work through
+/// callbacks->stop(), and it, or a callback's own exception, is raised once the work has ended.
 void runReleased(const std::function<void()>& work, const Keywords& keywords, Callbacks* callbacks = nullptr);
 
 /// A JSON value as Python objects (dict, list, str, int, float, bool, None); a number that is

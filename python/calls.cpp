@@ -48,64 +48,6 @@ std::string studyCall(const PyStudy& s, const std::string& method) {
   return "python: dtwin.Study(" + literal(py::str(s.study->path)) + ")." + method + "(";
 }
 
-template <class T>
-std::optional<T> optionalOf(const py::object& v) {
-  if (v.is_none()) return std::nullopt;
-  return v.cast<T>();
-}
-
-std::optional<std::uint64_t> seedOf(const py::object& v) {
-  if (v.is_none()) return std::nullopt;
-  if (!py::isinstance<py::int_>(v) || v.cast<py::int_>() < py::int_(0))
-    throw py::type_error("seed: must be an int in [0, 18446744073709551615] or None");
-  return v.cast<std::uint64_t>();
-}
-
-/// A str "A,B" or a list of str, as strings (the comma-separated flags of `twin`).
-std::vector<std::string> commaList(const py::object& v, const std::string& keyword) {
-  std::vector<std::string> out;
-  for (const auto& s : stringList(v, keyword))
-    for (auto& part : splitOn(s, ','))
-      if (!part.empty()) out.push_back(std::move(part));
-  return out;
-}
-
-/// A number as text the library parses back to the same double (Python's repr is the shortest exact form).
-std::string numberText(const py::handle& v) {
-  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
-  if (py::isinstance<py::bool_>(v)) throw py::type_error("a value must be a number or a str, got a bool");
-  return literal(py::float_(py::reinterpret_borrow<py::object>(v)));
-}
-
-/// set=: {"NAME": value} or ["NAME=VALUE", ...] -> the texts of `--set`.
-std::vector<std::string> settingTexts(const py::object& set) {
-  if (set.is_none()) return {};
-  if (py::isinstance<py::dict>(set)) {
-    std::vector<std::string> out;
-    for (const auto& [k, v] : set.cast<py::dict>()) out.push_back(py::str(k).cast<std::string>() + "=" + numberText(v));
-    return out;
-  }
-  return stringList(set, "set");
-}
-
-/// effects=: ["NAME[:p=v,...]", ...] or {"NAME": {"p": v} or None} -> the texts of `--effect`.
-std::vector<std::string> effectTexts(const py::object& effects) {
-  if (effects.is_none()) return {};
-  if (!py::isinstance<py::dict>(effects)) return stringList(effects, "effects");
-  std::vector<std::string> out;
-  for (const auto& [k, v] : effects.cast<py::dict>()) {
-    std::string text = py::str(k).cast<std::string>();
-    if (!v.is_none()) {
-      if (!py::isinstance<py::dict>(v)) throw py::type_error("effects: {name: {parameter: value}} or a list of 'NAME[:p=v,...]'");
-      std::string settings;
-      for (const auto& [p, x] : v.cast<py::dict>()) settings += (settings.empty() ? "" : ",") + py::str(p).cast<std::string>() + "=" + numberText(x);
-      if (!settings.empty()) text += ":" + settings;
-    }
-    out.push_back(std::move(text));
-  }
-  return out;
-}
-
 py::dict columnsOf(const Trace& t) {
   py::dict out;
   for (std::size_t i = 0; i < t.channels().size(); ++i) {
@@ -117,38 +59,38 @@ py::dict columnsOf(const Trace& t) {
   return out;
 }
 
-CalibrationOverrides overridesOf(const CalibrationKeywords& k) {
+/// The calibration sizes and settings of a call (study/calibrate.hpp CalibrationOverrides).
+CalibrationOverrides overridesOf(const Arguments& a, bool settings) {
   CalibrationOverrides o;
-  const auto count = [](const py::object& v, long& into) {
-    if (!v.is_none()) into = v.cast<long>();
-  };
-  const auto text = [](const py::object& v, std::string& into) {
-    if (!v.is_none()) into = v.cast<std::string>();
-  };
-  count(k.lhs_points, o.lhs_points);
-  count(k.iterations, o.iterations);
-  count(k.burn_in, o.burn_in);
-  count(k.starts, o.starts);
-  count(k.max_rounds, o.max_rounds);
-  count(k.ridge_steps, o.ridge_steps);
-  text(k.region, o.region);
-  text(k.design, o.design);
-  text(k.interval, o.interval);
-  text(k.steps, o.steps);
+  o.lhs_points = a.optionalInteger("lhs_points").value_or(-1);
+  o.iterations = a.optionalInteger("iterations").value_or(-1);
+  o.burn_in = a.optionalInteger("burn_in").value_or(-1);
+  o.starts = a.optionalInteger("starts").value_or(-1);
+  o.steps = a.str("steps");
+  if (!settings) return o;  // diagnose: the sizes alone
+  o.max_rounds = a.optionalInteger("max_rounds").value_or(-1);
+  o.ridge_steps = a.optionalInteger("ridge_steps").value_or(-1);
+  o.region = a.str("region");
+  o.design = a.str("design");
+  o.interval = a.str("interval");
   return o;
 }
 
-void addSizes(CallText& call, const CalibrationKeywords& k) {
-  call.add("lhs_points", k.lhs_points).add("iterations", k.iterations).add("burn_in", k.burn_in).add("starts", k.starts);
-  call.add("region", k.region).add("design", k.design).add("interval", k.interval).add("steps", k.steps);
-  call.add("max_rounds", k.max_rounds).add("ridge_steps", k.ridge_steps);
+/// The call's given arguments among `names`, recorded as its command.
+void addAll(CallText& call, const Arguments& a, std::initializer_list<const char*> names) {
+  for (const char* n : names) call.add(n, a[n]);
 }
 
-/// The names of the calibration keywords, and the option fields they set under other names.
-Keywords calibrationKeywords(std::set<std::string> names) {
-  for (const char* n : {"lhs_points", "iterations", "burn_in", "starts", "region", "design", "interval", "steps", "max_rounds", "ridge_steps"})
-    names.insert(n);
-  return {std::move(names), {{"gibbs_iterations", "iterations"}, {"gibbs_burn_in", "burn_in"}, {"optimizer_starts", "starts"}}};
+/// The study a stoppable call runs on: `study` with the call's stop in its simulation options.
+Study withStop(const Study& study, const StopToken& stop) {
+  Study s = study;
+  s.simulation.stop = stop;
+  return s;
+}
+
+/// The call's keywords, with the option fields the calibration keywords set under other names.
+Keywords calibrationKeywords(const Arguments& a) {
+  return a.keywords({{"gibbs_iterations", "iterations"}, {"gibbs_burn_in", "burn_in"}, {"optimizer_starts", "starts"}});
 }
 
 nlohmann::json readJsonFile(const std::string& path) { return nlohmann::json::parse(readTextFile(path)); }
@@ -160,48 +102,42 @@ std::string withoutFinalNewline(std::string s) {
 
 }  // namespace
 
-PyStudy loadStudyFile(const py::object& path) {
-  const std::string p = path.is_none() ? defaultStudyPath() : pathText(path, "path");
+PyStudy loadStudyFile(const Arguments& a) {
+  const std::string p = a.isNone("path") ? defaultStudyPath() : a.path("path");
   PyStudy s;
-  runReleased([&] { s.study = std::make_shared<const Study>(loadStudy(p)); }, Keywords{{"path"}, {}});
+  runReleased([&] { s.study = std::make_shared<const Study>(loadStudy(p)); }, a.keywords());
   return s;
 }
 
 // ------------------------------------------------------------------ simulate
-py::object simulate(const PyStudy& s, const std::string& assembly, const std::string& scenario, const py::object& set,
-                    const py::object& effects, const py::object& seed, const py::object& channels, const py::object& window,
-                    const py::object& integrator, const py::object& accuracy, const py::object& max_step,
-                    const py::object& obstacle_step, const py::object& output_rate, const py::object& out) {
+py::object simulate(const PyStudy& s, const Arguments& a) {
   const Study& study = *s.study;
-  const std::vector<std::string> sets = settingTexts(set), effect_texts = effectTexts(effects);
+  const std::vector<std::string> sets = a.settings("set"), effect_texts = a.effects("effects");
+  const std::string assembly = a.str("assembly");
   SimulateRequest req;
   req.assembly = assembly;
-  req.scenario = scenario;
-  req.out = out.is_none() ? std::string() : pathText(out, "out");
-  req.channels = commaList(channels, "channels");
+  req.scenario = a.str("scenario");
+  req.out = a.path("out");
+  req.channels = a.names("channels");
   std::optional<std::pair<double, double>> win;
-  if (!window.is_none()) {
-    const auto w = window.cast<std::vector<double>>();
-    if (w.size() != 2) throw py::type_error("window: expects (T0, T1)");
-    win = std::make_pair(w[0], w[1]);
-  }
-  req.seed = seedOf(seed);
+  if (const auto w = a.window("window"); !w.empty()) win = std::make_pair(w[0], w[1]);
+  req.seed = a.seed("seed");
   req.simulation = study.simulation;
-  if (!integrator.is_none()) req.simulation.integrator = integrator.cast<std::string>();
-  req.simulation.accuracy = optionalOf<double>(accuracy).value_or(req.simulation.accuracy);
-  req.simulation.max_step_s = optionalOf<double>(max_step).value_or(req.simulation.max_step_s);
-  req.simulation.obstacle_max_step_s = optionalOf<double>(obstacle_step).value_or(req.simulation.obstacle_max_step_s);
-  req.simulation.output_rate_hz = optionalOf<double>(output_rate).value_or(req.simulation.output_rate_hz);
+  if (!a.isNone("integrator")) req.simulation.integrator = a.str("integrator");
+  req.simulation.accuracy = a.optionalReal("accuracy").value_or(req.simulation.accuracy);
+  req.simulation.max_step_s = a.optionalReal("max_step").value_or(req.simulation.max_step_s);
+  req.simulation.obstacle_max_step_s = a.optionalReal("obstacle_step").value_or(req.simulation.obstacle_max_step_s);
+  req.simulation.output_rate_hz = a.optionalReal("output_rate").value_or(req.simulation.output_rate_hz);
   req.keep_values = true;
   CallText call(studyCall(s, "simulate"));
-  call.add("assembly", assembly).add("scenario", scenario).add("set", set).add("effects", effects).add("seed", seed);
-  call.add("channels", channels).add("window", window).add("integrator", integrator).add("accuracy", accuracy);
-  call.add("max_step", max_step).add("obstacle_step", obstacle_step).add("output_rate", output_rate).add("out", out);
+  addAll(call, a, {"assembly", "scenario", "set", "effects", "seed", "channels", "window", "integrator", "accuracy", "max_step",
+                   "obstacle_step", "output_rate", "out"});
   req.command = call.str();
 
-  const Keywords keywords{{"assembly", "scenario", "set", "effects", "seed", "channels", "window", "integrator", "accuracy", "max_step",
-                           "obstacle_step", "output_rate", "out"},
-                          {{"effect", "effects"}, {"max_step_s", "max_step"}, {"obstacle_max_step_s", "obstacle_step"}, {"output_rate_hz", "output_rate"}}};
+  const Keywords keywords =
+      a.keywords({{"effect", "effects"}, {"max_step_s", "max_step"}, {"obstacle_max_step_s", "obstacle_step"}, {"output_rate_hz", "output_rate"}});
+  Callbacks callbacks(py::none(), true);
+  req.simulation.stop = callbacks.stop();
   std::vector<SimulateRun> runs;
   runReleased(
       [&] {
@@ -210,7 +146,7 @@ py::object simulate(const PyStudy& s, const std::string& assembly, const std::st
         req.window = win;
         runs = simulateScenario(study, req);
       },
-      keywords);
+      keywords, &callbacks);
   std::string failed;
   for (const auto& r : runs) {
     for (const auto& note : r.off_effects)
@@ -228,25 +164,25 @@ py::object simulate(const PyStudy& s, const std::string& assembly, const std::st
 }
 
 // ------------------------------------------------------------------ calibrate
-py::object calibrate(const PyStudy& s, const py::object& data_arg, const py::object& assembly, const py::object& out_arg, int threads,
-                     const CalibrationKeywords& sizes, const py::object& seed, bool force, bool quiet, const py::object& progress) {
-  const Study& study = *s.study;
-  const std::string data = pathText(data_arg, "data"), out = pathText(out_arg, "out");
-  const CalibrationOverrides overrides = overridesOf(sizes);
+py::object calibrate(const PyStudy& s, const Arguments& a) {
+  const std::string data = a.path("data"), out = a.path("out");
+  const CalibrationOverrides overrides = overridesOf(a, true);
   std::vector<std::string> assemblies;
-  for (auto& id : commaList(assembly, "assembly"))
+  for (auto& id : a.names("assembly"))
     if (id != "all") assemblies.push_back(std::move(id));
-  const auto seed_value = seedOf(seed);
+  const auto seed_value = a.seed("seed");
+  const int threads = a.smallInteger("threads");
+  const bool force = a.flag("force");
   CallText call(studyCall(s, "calibrate"));
-  call.add("data", data).add("assembly", assembly).add("out", out);
-  addSizes(call, sizes);
-  call.add("seed", seed);
-  Callbacks callbacks(progress, quiet);
+  call.add("data", data).add("assembly", a["assembly"]).add("out", out);
+  addAll(call, a, {"lhs_points", "iterations", "burn_in", "starts", "region", "design", "interval", "steps", "max_rounds", "ridge_steps", "seed"});
+  Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();
   const SayFn say = callbacks.say();
   std::vector<std::string> done;
   runReleased(
       [&] {
+        const Study study = withStop(*s.study, callbacks.stop());
         CalibrateRequest req;
         std::tie(req.data, req.scenario) = calibrationData(data, "--data");
         req.assemblies = assemblies;
@@ -260,45 +196,43 @@ py::object calibrate(const PyStudy& s, const py::object& data_arg, const py::obj
         overrides.applyTo(opt);
         req.validate(study);
         checkCalibrateWork(study, req, overrides, force);
-        const auto progress_of = [&](const AssemblySpec& a) -> StageProgress {
-          if (!stage_progress) return {};
-          return [&, id = a.id](const std::string& stage, std::size_t d, std::size_t t) { stage_progress(id + " " + stage, d, t); };
+        const auto progress_of = [&](const AssemblySpec& as) -> StageProgress {
+          return [&, id = as.id](const std::string& stage, std::size_t d, std::size_t t) { stage_progress(id + " " + stage, d, t); };
         };
         calibrateAssemblies(study, req, say, progress_of, [&](const CalibrateRun& run) {
           if (say) say(withoutFinalNewline(run.text()));
           done.push_back(run.assembly.id);
         });
       },
-      calibrationKeywords({"data", "assembly", "out", "threads", "seed", "force"}), &callbacks);
+      calibrationKeywords(a), &callbacks);
   py::dict result;
   for (const auto& id : done) result[py::str(id)] = toPython(readJsonFile((fs::path(out) / id / "summary.json").string()));
   return std::move(result);
 }
 
 // ------------------------------------------------------------------ compare
-py::object compare(const PyStudy& s, const py::object& calibration_arg, const py::object& data, const py::object& baseline,
-                   const py::object& discrepancy, int draws,
-                   int threads, const py::object& out, bool force, bool quiet) {
-  const Study& study = *s.study;
-  const std::string calibration = pathText(calibration_arg, "calibration");
+py::object compare(const PyStudy& s, const Arguments& a) {
+  const std::string calibration = a.path("calibration");
   CompareRequest req;
   req.calibration = calibration;
-  req.data = stringList(data, "data");
-  req.baseline = stringList(baseline, "baseline");
-  req.discrepancy = stringList(discrepancy, "discrepancy");
-  req.out = out.is_none() ? std::string() : pathText(out, "out");
-  req.draws = draws;
-  req.threads = threads;
+  req.data = a.paths("data");
+  req.baseline = a.paths("baseline");
+  req.discrepancy = a.paths("discrepancy");
+  req.out = a.path("out");
+  req.draws = a.smallInteger("draws");
+  req.threads = a.smallInteger("threads");
   req.processes = nullptr;
-  req.force = force;
+  req.force = a.flag("force");
   CallText call(studyCall(s, "compare"));
-  call.add("calibration", calibration).add("data", data).add("baseline", baseline).add("discrepancy", discrepancy).add("draws", py::int_(draws)).add("out", out);
+  call.add("calibration", calibration);
+  addAll(call, a, {"data", "baseline", "discrepancy", "draws", "out"});
   req.command = call.str();
-  Callbacks callbacks(py::none(), quiet);
+  Callbacks callbacks(py::none(), a.flag("quiet"));
   const SayFn say = callbacks.say();
   CompareRun run;
   runReleased(
       [&] {
+        const Study study = withStop(*s.study, callbacks.stop());
         run = compareMeasurements(study, req, say);
         if (say) say(withoutFinalNewline(run.text()));
         if (!run.written.empty()) {
@@ -308,48 +242,45 @@ py::object compare(const PyStudy& s, const py::object& calibration_arg, const py
           if (say) say("wrote " + page);
         }
       },
-      Keywords{{"calibration", "data", "baseline", "discrepancy", "draws", "threads", "out", "force"}, {}}, &callbacks);
+      a.keywords(), &callbacks);
   return toPython(run.json);
 }
 
 // ------------------------------------------------------------------ diagnose
-py::object diagnose(const PyStudy& s, const DiagnoseKeywords& k, const CalibrationKeywords& sizes, const py::object& progress) {
-  const Study& study = *s.study;
-  const CalibrationOverrides overrides = overridesOf(sizes);
+py::object diagnose(const PyStudy& s, const Arguments& a) {
+  const CalibrationOverrides overrides = overridesOf(a, false);
   DiagnoseRequest req;
-  req.assembly = k.assembly;
-  req.data = stringList(k.data, "data");
-  req.holdout = stringList(k.holdout, "holdout");
-  req.out = k.out.is_none() ? std::string() : pathText(k.out, "out");
-  req.force = k.force;
+  req.assembly = a.str("assembly");
+  req.data = a.paths("data");
+  req.holdout = a.paths("holdout");
+  req.out = a.path("out");
+  req.force = a.flag("force");
   diag::DiagnoseOptions& o = req.options;
-  o.candidates = k.candidates;
-  o.confirm_within = k.confirm_within;
-  o.causes = k.causes;
-  if (k.all_intervals) o.full_within = std::numeric_limits<double>::infinity();
-  o.propose_terms = k.propose;
-  o.compare_draws = k.draws;
-  o.effects = commaList(k.effects, "effects");
-  o.apply = commaList(k.apply, "apply");
-  o.threads = k.threads;
+  o.candidates = a.smallInteger("candidates");
+  o.confirm_within = a.real("confirm_within");
+  o.causes = a.smallInteger("causes");
+  if (a.flag("all_intervals")) o.full_within = std::numeric_limits<double>::infinity();
+  o.propose_terms = a.smallInteger("propose");
+  o.compare_draws = a.smallInteger("draws");
+  o.effects = a.names("effects");
+  o.apply = a.names("apply");
+  o.threads = a.smallInteger("threads");
   o.processes = nullptr;  // this process alone
   CallText call(studyCall(s, "diagnose"));
-  call.add("data", k.data).add("assembly", k.assembly).add("holdout", k.holdout).add("effects", k.effects).add("apply", k.apply);
-  call.add("candidates", py::int_(k.candidates)).add("causes", py::int_(k.causes)).add("propose", py::int_(k.propose));
-  addSizes(call, sizes);
-  call.add("out", k.out);
+  addAll(call, a, {"data", "assembly", "holdout", "effects", "apply", "candidates", "causes", "propose", "lhs_points", "iterations",
+                   "burn_in", "starts", "steps", "out"});
   o.command = call.str();
-  Callbacks callbacks(progress, k.quiet);
+  Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();
   const SayFn say = callbacks.say();
   DiagnoseRun run;
-  Keywords keywords = calibrationKeywords({"data", "assembly", "holdout", "effects", "apply", "candidates", "causes", "confirm_within",
-                                           "all_intervals", "propose", "draws", "threads", "out", "force"});
+  Keywords keywords = calibrationKeywords(a);
   keywords.fields["compare_draws"] = "draws";
   keywords.fields["fit"] = "data";
   keywords.fields["propose_terms"] = "propose";
   runReleased(
       [&] {
+        const Study study = withStop(*s.study, callbacks.stop());
         o.calibration = calib::CalibrationOptions::fromStudy(study);
         overrides.applyTo(o.calibration);
         run = diagnoseMeasurements(study, req, say, stage_progress);
@@ -377,47 +308,41 @@ py::object diagnose(const PyStudy& s, const DiagnoseKeywords& k, const Calibrati
 }
 
 // ------------------------------------------------------------------ import
-py::object importLog(const ImportKeywords& k, const py::object& progress) {
+py::object importLog(const Arguments& a) {
   ImportRequest req;
-  req.log = pathText(k.log, "log");
-  req.out = pathText(k.out, "out");
-  req.scenario = k.scenario;
-  req.study = k.study.is_none() ? defaultStudyPath() : pathText(k.study, "study");
-  const auto text = [](const py::object& v) { return v.is_none() ? std::string() : py::str(v).cast<std::string>(); };
-  req.map = k.map.is_none() ? std::string() : pathText(k.map, "map");
-  req.time = text(k.time);
-  req.speed = text(k.speed);
-  req.road = text(k.road);
-  req.road_left = text(k.road_left);
-  req.road_right = text(k.road_right);
-  req.separator = text(k.separator);
-  req.channels = stringList(k.channel, "channel");
-  req.highpass_hz = optionalOf<double>(k.highpass_hz).value_or(0.0);
-  req.speed_lowpass_hz = optionalOf<double>(k.speed_lowpass_hz).value_or(0.0);
-  if (!k.window.is_none()) req.window = k.window.cast<std::vector<double>>();
-  req.run_in = optionalOf<double>(k.run_in).value_or(-1.0);
+  req.log = a.path("log");
+  req.out = a.path("out");
+  req.scenario = a.str("scenario");
+  req.study = a.isNone("study") ? defaultStudyPath() : a.path("study");
+  req.map = a.path("map");
+  req.time = a.str("time");
+  req.speed = a.str("speed");
+  req.road = a.str("road");
+  req.road_left = a.str("road_left");
+  req.road_right = a.str("road_right");
+  req.separator = a.str("separator");
+  req.channels = a.strings("channel");
+  req.highpass_hz = a.optionalReal("highpass_hz").value_or(0.0);
+  req.speed_lowpass_hz = a.optionalReal("speed_lowpass_hz").value_or(0.0);
+  req.window = a.window("window");
+  req.run_in = a.optionalReal("run_in").value_or(-1.0);
   CallText call("python: dtwin.import_log(");
-  call.add("log", k.log).add("map", k.map).add("out", k.out).add("study", k.study).add("scenario", k.scenario);
-  call.add("time", k.time).add("speed", k.speed).add("road", k.road).add("road_left", k.road_left).add("road_right", k.road_right);
-  call.add("channel", k.channel).add("highpass_hz", k.highpass_hz).add("speed_lowpass_hz", k.speed_lowpass_hz);
-  call.add("separator", k.separator).add("window", k.window).add("run_in", k.run_in);
+  addAll(call, a, {"log", "map", "out", "study", "scenario", "time", "speed", "road", "road_left", "road_right", "channel", "highpass_hz",
+                   "speed_lowpass_hz", "separator", "window", "run_in"});
   req.command = call.str();
-  Callbacks callbacks(progress, k.quiet);
+  Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();
   const SayFn say = callbacks.say();
   ImportResult r;
   runReleased(
       [&] {
-        StageProgress bytes;
-        if (stage_progress) bytes = [&](const std::string&, std::size_t d, std::size_t t) { stage_progress("import " + req.log, d, t); };
+        const StageProgress bytes = [&](const std::string&, std::size_t d, std::size_t t) { stage_progress("import " + req.log, d, t); };
         r = importDrive(req, bytes);
         if (say)
           say("imported " + std::to_string(r.rows) + " rows (" + formatNumber(r.duration_s, 6) + " s of driving, " +
               std::to_string(r.data.records.size()) + " records) into " + req.out + "/ (study.toml, scenario '" + r.scenario + "')");
       },
-      Keywords{{"log", "map", "out", "study", "scenario", "time", "speed", "road", "road_left", "road_right", "channel", "highpass_hz",
-                "speed_lowpass_hz", "separator", "window", "run_in"},
-               {}},
+      a.keywords(),
       &callbacks);
   return toPython(r.sidecar);
 }

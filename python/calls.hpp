@@ -1,11 +1,13 @@
 #pragma once
 // The calls of the Python module (docs/python.md): each fills the request of one library use case
-// (study/) from its keyword arguments, as the `twin` command of the same name fills it from its
-// flags, runs it with the GIL released, and returns what the command writes as Python objects.
+// (study/) from its arguments (python/arguments.hpp, bound and type-checked by the call's table in
+// module.cpp), as the `twin` command of the same name fills it from its flags, runs it with the
+// GIL released (stopped by Ctrl-C), and returns what the command writes as Python objects.
 #include <memory>
 #include <string>
 
 #include "io/study.hpp"
+#include "python/arguments.hpp"
 #include "python/bridge.hpp"
 
 namespace dtwin::python {
@@ -15,42 +17,22 @@ struct PyStudy {
   std::shared_ptr<const Study> study;
 };
 
-PyStudy loadStudyFile(const py::object& path);
+/// dtwin.Study(path=None).
+PyStudy loadStudyFile(const Arguments& a);
 
 /// study.simulate(...): the trace(s) `twin simulate --out` writes, as numpy arrays by column.
-py::object simulate(const PyStudy& s, const std::string& assembly, const std::string& scenario, const py::object& set,
-                    const py::object& effects, const py::object& seed, const py::object& channels, const py::object& window,
-                    const py::object& integrator, const py::object& accuracy, const py::object& max_step,
-                    const py::object& obstacle_step, const py::object& output_rate, const py::object& out);
+py::object simulate(const PyStudy& s, const Arguments& a);
 
-/// The keyword arguments of the calibration sizes and settings (study/calibrate.hpp CalibrationOverrides).
-struct CalibrationKeywords {
-  py::object lhs_points, iterations, burn_in, starts, region, design, interval, steps, max_rounds, ridge_steps;
-};
+/// study.calibrate(...): {id: summary.json as a dict}.
+py::object calibrate(const PyStudy& s, const Arguments& a);
 
-py::object calibrate(const PyStudy& s, const py::object& data, const py::object& assembly, const py::object& out,
-                     int threads, const CalibrationKeywords& sizes, const py::object& seed, bool force, bool quiet,
-                     const py::object& progress);
+/// study.compare(...): compare.json as a dict.
+py::object compare(const PyStudy& s, const Arguments& a);
 
-py::object compare(const PyStudy& s, const py::object& calibration, const py::object& data, const py::object& baseline,
-                   const py::object& discrepancy, int draws, int threads, const py::object& out, bool force, bool quiet);
+/// study.diagnose(...): diagnosis.json as a dict.
+py::object diagnose(const PyStudy& s, const Arguments& a);
 
-struct DiagnoseKeywords {
-  std::string assembly = "M1";
-  py::object data, holdout, effects, apply, out;
-  int candidates = 6, causes = 3, propose = 3, draws = 20, threads = 0;
-  double confirm_within = 2.0;
-  bool all_intervals = false, force = false, quiet = false;
-};
-
-py::object diagnose(const PyStudy& s, const DiagnoseKeywords& k, const CalibrationKeywords& sizes, const py::object& progress);
-
-/// dtwin.import_log(...): the keyword arguments of `twin import`.
-struct ImportKeywords {
-  std::string scenario = "drive";
-  py::object log, out, map, study, time, speed, road, road_left, road_right, channel, highpass_hz, speed_lowpass_hz, separator, window, run_in;
-  bool quiet = false;
-};
-py::object importLog(const ImportKeywords& k, const py::object& progress);
+/// dtwin.import_log(...): the measurements.json dict of `twin import`.
+py::object importLog(const Arguments& a);
 
 }  // namespace dtwin::python

@@ -36,5 +36,9 @@ if [ -n "$module" ] && [ "$(id -u)" -eq 0 ] && [ -x /usr/bin/python3 ]; then
     mkdir -p "$site"
     echo "$(pwd)/build/python" > "$site/dtwin.pth"
     echo "build: /usr/bin/python3 finds the module dtwin ($site/dtwin.pth -> $(pwd)/build/python)"
+    # and mypy its types: the stub package dtwin-stubs of this build (python/dtwin.pyi)
+    if [ -d build/python/dtwin-stubs ] && { [ -L "$site/dtwin-stubs" ] || [ ! -e "$site/dtwin-stubs" ]; }; then
+      ln -sfn "$(pwd)/build/python/dtwin-stubs" "$site/dtwin-stubs"
+    fi
   fi
 fi

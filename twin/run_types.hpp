@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/stop.hpp"
 #include "subsystems/sensor.hpp"
 #include "twin/trace.hpp"
 
@@ -24,6 +25,9 @@ struct SimulationOptions {
   double output_rate_hz = 1000.0;
   long max_internal_steps = 2000000;     ///< a run taking more steps is reported as failed
   double max_wall_s = 600.0;             ///< a run taking longer (wall clock) is reported as failed
+  /// Checked at every integrator step: a requested stop throws Stopped (common/stop.hpp), not a
+  /// failed run. Not a setting: no file names it and toJson leaves it out.
+  StopToken stop;
   /// InputError "simulation.<field>: <rule>" (common/validate.hpp) when a field is out of range.
   void validate() const;
   nlohmann::json toJson() const;

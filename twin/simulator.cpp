@@ -332,6 +332,7 @@ struct Simulator::Impl {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(opt.max_wall_s);
     long checks = 0;
     auto checkFinite = [&](double time) {
+      opt.stop.throwIfRequested();  // Stopped is no std::exception: it leaves the run (docs/python.md)
       for (double v : knots.back())
         if (!std::isfinite(v)) throw std::runtime_error("state became non-finite at t = " + std::to_string(time) + " s");
       if (++checks % 256 == 0 && std::chrono::steady_clock::now() > deadline)

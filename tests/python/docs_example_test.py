@@ -1,21 +1,11 @@
 """docs/python.md's example runs as written: its python block, in a new folder where data/ is the
 repository's, writes the plot and names the effect the demonstration drive hides."""
 import os
-import re
 import subprocess
 import sys
 import unittest
 
-from dtwin_testing import SOURCE_DIR, scratch
-
-
-def example_script():
-    with open(os.path.join(SOURCE_DIR, "docs", "python.md")) as f:
-        text = f.read()
-    section = text[text.index("## Example"):]
-    blocks = re.findall(r"```python\n(.*?)```", section, re.S)
-    assert blocks, "no python block in docs/python.md's example"
-    return blocks[0]
+from dtwin_testing import SOURCE_DIR, docs_example, scratch
 
 
 class DocsExample(unittest.TestCase):
@@ -24,7 +14,7 @@ class DocsExample(unittest.TestCase):
             os.symlink(os.path.join(SOURCE_DIR, "data"), os.path.join(tmp, "data"))
             script = os.path.join(tmp, "example.py")
             with open(script, "w") as f:
-                f.write(example_script())
+                f.write(docs_example())
             r = subprocess.run([sys.executable, script], cwd=tmp, capture_output=True, text=True)
             self.assertEqual(r.returncode, 0, r.stdout[-3000:] + r.stderr[-3000:])
             with open(os.path.join(tmp, "measured_vs_predicted.png"), "rb") as f:

@@ -3,6 +3,7 @@
 CTest runs each test script with Debian's /usr/bin/python3 and sets PYTHONPATH (the built module),
 DTWIN_SOURCE_DIR and DTWIN_TWIN_EXE (tests/CMakeLists.txt)."""
 import os
+import re
 import subprocess
 import tempfile
 
@@ -27,3 +28,13 @@ def cli_error(stderr):
 def scratch():
     """A new temporary folder, removed at exit."""
     return tempfile.TemporaryDirectory(prefix="dtwin-py-test-")
+
+
+def docs_example():
+    """The python block of docs/python.md's example section, as written."""
+    with open(os.path.join(SOURCE_DIR, "docs", "python.md")) as f:
+        text = f.read()
+    section = text[text.index("## Example"):]
+    blocks = re.findall(r"```python\n(.*?)```", section, re.S)
+    assert blocks, "no python block in docs/python.md's example"
+    return blocks[0]

@@ -136,13 +136,21 @@ std::string checkChannelName(const std::string& channel, const std::vector<Chann
 
 void validateLabData(const LabData& data, const std::string& name, const std::vector<Channel>& known) {
   if (data.records.empty()) throw InputError(name, "no records");
+  validateLabData(data, [&](std::size_t i) { return name + ":" + std::to_string(i + 2); }, known);
+}
+
+void validateLabData(const LabData& data, const std::function<std::string(std::size_t)>& where, const std::vector<Channel>& known) {
   LabChecker checker(known);
-  for (std::size_t i = 0; i < data.records.size(); ++i)
-    checker.check(data.records[i], name + ":" + std::to_string(i + 2));
+  for (std::size_t i = 0; i < data.records.size(); ++i) checker.check(data.records[i], where(i));
 }
 
 std::string labCsvText(const LabData& data, const std::vector<Channel>& known) {
-  validateLabData(data, "lab data", known);
+  return labCsvText(data, [](std::size_t i) { return "lab data:" + std::to_string(i + 2); }, known);
+}
+
+std::string labCsvText(const LabData& data, const std::function<std::string(std::size_t)>& where, const std::vector<Channel>& known) {
+  if (data.records.empty()) throw InputError("lab data", "no records");
+  validateLabData(data, where, known);
   std::string out = std::string(kLabHeader) + "\n";
   out.reserve(out.size() + data.records.size() * 48);
   for (const auto& r : data.records) {

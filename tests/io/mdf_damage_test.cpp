@@ -90,14 +90,14 @@ Blocks blocksOf(const std::string& b) {
   return x;
 }
 
-struct Run {
+struct ImportRun {
   int code;
   std::string err;
   bool wrote;
 };
 
 /// `twin import` of `bytes` as DIR/NAME.mf4 with the drive's mapping.
-Run importBytes(const fs::path& dir, const std::string& name, const std::string& bytes) {
+ImportRun importBytes(const fs::path& dir, const std::string& name, const std::string& bytes) {
   const fs::path log = dir / (name + ".mf4"), out = dir / ("out_" + name);
   dtwin_test::writeText(log, bytes);
   const auto r = dtwin_test::runTwin("import --log " + log.string() + " --map " + kDrives + "stop_and_go_map.toml --quiet --out " + out.string(), dir);
@@ -107,7 +107,7 @@ Run importBytes(const fs::path& dir, const std::string& name, const std::string&
 /// Exit code 2, one line "twin: error: DIR/NAME.mf4: <expect...>", nothing written.
 void expectRefused(const fs::path& dir, const std::string& name, const std::string& bytes, const std::string& expect) {
   SCOPED_TRACE(name);
-  const Run r = importBytes(dir, name, bytes);
+  const ImportRun r = importBytes(dir, name, bytes);
   EXPECT_EQ(r.code, 2) << r.err;
   const std::string head = "twin: error: " + (dir / (name + ".mf4")).string() + ": ";
   EXPECT_EQ(r.err.rfind(head, 0), 0u) << r.err;
@@ -138,7 +138,7 @@ const std::string& goodLog(bool compress) {
 TEST(MdfDamage, TheGoodLogsImport) {
   const fs::path dir = dtwin_test::freshDir("mdf_damage_ok");
   for (bool compress : {false, true}) {
-    const Run r = importBytes(dir, compress ? "dz" : "plain", goodLog(compress));
+    const ImportRun r = importBytes(dir, compress ? "dz" : "plain", goodLog(compress));
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(r.wrote);
   }
@@ -237,7 +237,7 @@ TEST(MdfDamage, ACompressedBlockThatFailsItsCheckIsNamed) {
   expectRefused(dir, "dz_zip_type", b, where + "zip type 7 is neither 0 (deflate) nor 1 (transposition + deflate)");
   b = good;
   b[dz + 48 + 2] = static_cast<char>(b[dz + 48 + 2] ^ 0xff);  // the first deflate block's header
-  const Run r = importBytes(dir, "dz_stream", b);
+  const ImportRun r = importBytes(dir, "dz_stream", b);
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find(where + "compressed data fail their check (zlib: "), std::string::npos) << r.err;
 }
@@ -252,7 +252,7 @@ TEST(MdfDamage, AChangedValueInsideAStreamFailsItsChecksum) {
   const std::string units = " --units GPS_Speed=km/h,Road_L=mm,Road_R=mm,AccZ_Seat=g,Cabin_Temp=degC";
   ASSERT_EQ(std::system(("python3 " + script + " " + kDrives + "stop_and_go.csv " + log.string() + " --data deflate --level 0" + units).c_str()), 0);
   const std::string good = dtwin_test::slurp(log);
-  const Run ok = importBytes(dir, "stored_good", good);
+  const ImportRun ok = importBytes(dir, "stored_good", good);
   ASSERT_EQ(ok.code, 0) << ok.err;
   const std::uint64_t dz = blocksOf(good).dz;
   ASSERT_NE(dz, 0u);

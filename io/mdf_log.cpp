@@ -122,14 +122,16 @@ struct MdfOpened {
   std::vector<std::pair<mdf::IDataGroup*, mdf::IChannelGroup*>> groups;  ///< every channel group, in file order
 };
 
-MdfOpened openMdf(const std::string& bytes, const std::string& name) {
+/// The log opened by mdflib after the structure check (its DZ blocks inflated too when `data`: the
+/// data will be read).
+MdfOpened openMdf(const std::string& bytes, const std::string& name, bool data) {
   installMdfLog();
   mdf_last_error.clear();
   if (bytes.size() < 64 || bytes.compare(0, 8, "MDF     ") != 0)
     throw InputError(name, bytes.compare(0, 8, "UnFinMF ") == 0 && bytes.size() >= 64
                                ? "is an MDF file the logger did not finalise (its identification reads 'UnFinMF'): finalise it with the logger's tool first"
                                : "is not an MDF file: it does not begin with an MDF identification block");
-  checkMdfStructure(bytes, name);  // mdflib reads a link to the wrong block, or a damaged DZ block, without a word
+  checkMdfStructure(bytes, name, data);  // mdflib reads a link to the wrong block, or a damaged DZ block, without a word
   MdfOpened o;
   o.buffer = std::make_shared<MdfMemoryBuffer>(bytes);
   try {
@@ -164,7 +166,7 @@ bool isMdfLog(const std::string& name, std::string_view bytes) {
 }
 
 MdfDirectory readMdfDirectory(const std::string& bytes, const std::string& name) {
-  const MdfOpened o = openMdf(bytes, name);
+  const MdfOpened o = openMdf(bytes, name, /*data=*/false);
   MdfDirectory d;
   d.version = o.reader->GetFile()->Version();
   for (const auto& [dg, cg] : o.groups) {
@@ -187,7 +189,7 @@ MdfDirectory readMdfDirectory(const std::string& bytes, const std::string& name)
 }
 
 MdfGroupData readMdfGroup(const std::string& bytes, const std::string& name, std::size_t group, const std::vector<std::string>& channels) {
-  MdfOpened o = openMdf(bytes, name);
+  MdfOpened o = openMdf(bytes, name, /*data=*/true);
   if (group >= o.groups.size()) throw InputError(name, "has no channel group " + std::to_string(group + 1));
   auto* dg = o.groups[group].first;
   auto* cg = o.groups[group].second;

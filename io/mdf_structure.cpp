@@ -154,10 +154,13 @@ class MdfStructure {
  public:
   MdfStructure(const std::string& bytes, const std::string& name) : b_(bytes), name_(name) {}
 
-  void run() {
+  void run(bool inflate) {
     identification();
     walk();
-    for (const std::uint64_t dz : dz_) inflated(dz);
+    for (const std::uint64_t dz : dz_) {
+      dzHeader(dz);
+      if (inflate) inflated(dz);
+    }
     for (std::uint64_t dg = link(64, 0); dg != 0; dg = link(dg, 0)) records(dg);
   }
 
@@ -318,9 +321,8 @@ class MdfStructure {
                    ": the file is truncated or damaged");
   }
 
-  /// A DZ block's compressed data inflate to the original size it declares, the zlib stream ending
-  /// there with its checksum (adler-32) right.
-  void inflated(std::uint64_t at) const {
+  /// A DZ block's header: an original block type and a zip type of the standard, sizes that fit.
+  void dzHeader(std::uint64_t at) const {
     const std::uint64_t len = u64(at + 8);
     if (len < 48) fail(at, "runs " + std::to_string(len) + " bytes, less than a DZ block's 48 bytes of header");
     const std::string original = b_.substr(at + 24, 2);
@@ -333,6 +335,12 @@ class MdfStructure {
     if (packed > len - 48) fail(at, "its " + std::to_string(packed) + " bytes of compressed data run past the block's " + std::to_string(len) + " bytes");
     // Deflate packs at most 1032 bytes into one: a larger claim is damage, not data.
     if (size / 1032 > packed + 1) fail(at, "declares " + std::to_string(size) + " bytes from " + std::to_string(packed) + " compressed ones");
+  }
+
+  /// A DZ block's compressed data inflate to the original size it declares, the zlib stream ending
+  /// there with its checksum (adler-32) right (its header checked).
+  void inflated(std::uint64_t at) const {
+    const std::uint64_t size = u64(at + 32), packed = u64(at + 40);
     z_stream z{};
     if (inflateInit(&z) != Z_OK) fail(at, "zlib cannot start inflating");
     struct End {
@@ -372,6 +380,6 @@ class MdfStructure {
 
 }  // namespace
 
-void checkMdfStructure(const std::string& bytes, const std::string& name) { MdfStructure(bytes, name).run(); }
+void checkMdfStructure(const std::string& bytes, const std::string& name, bool inflate) { MdfStructure(bytes, name).run(inflate); }
 
 }  // namespace dtwin

@@ -13,10 +13,11 @@ namespace dtwin {
 ///    allows for that link (cn_cn_next: ##CN, dg_data: ##DT, ##DV, ##DZ, ##DL, ##LD, ##HL, ...);
 ///  * no chain or tree of blocks a reader follows leads back to a block on its own path (a cycle);
 ///  * each data group's data blocks hold the records its channel groups declare;
-///  * every ##DZ block inflates cleanly (zlib's stream end and checksum) to exactly the size it
-///    declares.
+///  * every ##DZ block names an original block type and a zip type of the standard, and, when
+///    `inflate`, inflates cleanly (zlib's stream end and checksum) to exactly the size it declares
+///    (asked for where the data are read: the blocks alone need no inflating).
 /// The first violation is an InputError: "NAME: block ##CN at 0x1a40", "link 'cn_cn_next' points
 /// to a ##CG block (allowed: ##CN)".
-void checkMdfStructure(const std::string& bytes, const std::string& name);
+void checkMdfStructure(const std::string& bytes, const std::string& name, bool inflate);
 
 }  // namespace dtwin

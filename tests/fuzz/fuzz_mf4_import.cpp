@@ -77,7 +77,7 @@ const char* const kMdf4Ids[] = {"HD", "MD", "TX", "FH", "CH", "AT", "EV", "DG", 
 /// A DZ block's records inflated, changed and deflated again into the block's room: a stream
 /// whose checksum passes. False when the block is not one to do this with.
 bool rewriteDz(uint8_t* d, size_t size, const FoundBlock& b, std::minstd_rand& rng) {
-  if (b.links != 0 || b.length < 48 || b.at + b.length > size) return false;
+  if (b.links != 0 || b.length < 48 || b.length > size - b.at) return false;
   const uint64_t original = get64(d, b.at + 32), packed = get64(d, b.at + 40), room = b.length - 48;
   if (original == 0 || original > (1u << 20) || packed > room) return false;
   std::vector<uint8_t> raw(original);

@@ -29,6 +29,17 @@ constexpr const char* kLinkless = "MD TX DT SD RD DV DI RV RI DZ";
 constexpr const char* kListData = "DT SD RD DV DI RV RI DZ";
 constexpr const char* kDataRoot = "DT DV DZ DL LD HL";  ///< what dg_data and a CA's data point to
 
+/// The bytes of a block's fixed fields after its links (MDF 4.1), which a reader reads whatever the
+/// block's length: HD, FH, CH, AT, EV, DG, CG, SI, CN, CC, CA, DL, LD, HL, SR, DZ; 0 for the others.
+std::uint64_t fixedFields(const char* id) {
+  static const std::pair<const char*, std::uint64_t> sizes[] = {{"HD", 32}, {"FH", 16}, {"CH", 8}, {"AT", 40}, {"EV", 32}, {"DG", 8},
+                                                                {"CG", 32}, {"SI", 8},  {"CN", 72}, {"CC", 24}, {"CA", 16}, {"DL", 8},
+                                                                {"LD", 8},  {"HL", 8},  {"SR", 24}, {"DZ", 24}};
+  for (const auto& [k, n] : sizes)
+    if (k[0] == id[0] && k[1] == id[1]) return n;
+  return 0;
+}
+
 /// True when `list` (ids separated by spaces) holds the two letters `id`.
 bool among(const char* list, const char* id) {
   for (const char* p = list; *p != '\0'; p += p[2] == ' ' ? 3 : 2)
@@ -203,6 +214,10 @@ class MdfStructure {
       fail(at, "runs " + std::to_string(len) + " bytes, past the end of the file (" + std::to_string(b_.size()) + " bytes): the file is truncated or damaged");
     if (links > (len - 24) / 8) fail(at, "declares " + std::to_string(links) + " links, more than its " + std::to_string(len) + " bytes hold");
     if (among(kLinkless, b_.c_str() + at + 2) && links != 0) fail(at, "declares " + std::to_string(links) + " links; a " + idAt(at) + " block has none");
+    const std::uint64_t fixed = fixedFields(b_.c_str() + at + 2);
+    if (len - 24 - 8 * links < fixed)
+      fail(at, "runs " + std::to_string(len) + " bytes, too few for its " + std::to_string(links) + " links and the " + std::to_string(fixed) +
+                   " bytes of fields a " + idAt(at) + " block has");
   }
 
   /// A count in a block's data section (after its links), 0 when the block is too short for it.

@@ -146,7 +146,8 @@ TEST(MdfDamage, TheGoodLogsImport) {
 }
 
 // Links to a block of the wrong type (every link inside the file), a chain that leads back to a
-// block on its own path, a link past the end of the file.
+// block on its own path, a link past the end of the file or into a block; a block too short for
+// its fields.
 TEST(MdfDamage, ALinkToTheWrongBlockIsNamed) {
   const fs::path dir = dtwin_test::freshDir("mdf_damage_links");
   const std::string good = goodLog(false);
@@ -175,6 +176,9 @@ TEST(MdfDamage, ALinkToTheWrongBlockIsNamed) {
   b = good;
   setLink(b, x.cn, 0, good.size() + 64);
   expectRefused(dir, "cn_next_past_end", b, "block ##CN at " + hex(x.cn) + ": link 'cn_cn_next' points to byte " + hex(good.size() + 64) + ", outside the file's blocks");
+  b = good;
+  put64(b, x.cn + 8, 24 + 8 * 8 + 16);  // a channel's length: its links, but not its 72 bytes of fields
+  expectRefused(dir, "cn_short", b, "block ##CN at " + hex(x.cn) + ": runs 104 bytes, too few for its 8 links and the 72 bytes of fields a ##CN block has");
   b = good;
   setLink(b, x.cn, 0, x.cn + 4);  // into the middle of a block
   expectRefused(dir, "cn_next_mid_block", b, "link 'cn_cn_next' points to '");

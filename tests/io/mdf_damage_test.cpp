@@ -298,3 +298,32 @@ TEST(MdfDamage, TheFuzzersDamagedSeedsAreRefused) {
   for (const auto& e : fs::directory_iterator(seeds)) damaged += e.path().filename().string().rfind("damaged_", 0) == 0;
   EXPECT_EQ(damaged, cases.size()) << "a damaged seed without its case here";
 }
+
+// The same damaged seeds read in process (io/mdf_log.hpp): an InputError naming the file, from the
+// directory for the blocks, from the group's data for the DZ checksum. The seeds are undamaged
+// otherwise: plain.mf4 reads.
+TEST(MdfDamage, TheReaderRefusesTheDamagedSeedsInProcess) {
+  const fs::path seeds = fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import";
+  const std::string plain = dtwin_test::slurp(seeds / "plain.mf4");
+  const MdfDirectory dir = readMdfDirectory(plain, "plain.mf4");
+  ASSERT_EQ(dir.groups.size(), 1u);
+  EXPECT_EQ(readMdfGroup(plain, "plain.mf4", 0, {"AccZ_Seat"}).time.size(), 200u);
+  for (const char* f : {"damaged_cn_next_to_cg", "damaged_cn_composition_self", "damaged_cn_cycle", "damaged_cn_as_co", "damaged_hd_renamed"}) {
+    SCOPED_TRACE(f);
+    const std::string bytes = dtwin_test::slurp(seeds / (std::string(f) + ".mf4"));
+    try {
+      (void)readMdfDirectory(bytes, "x.mf4");
+      ADD_FAILURE() << "read";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("x.mf4: block ##", 0), 0u) << e.what();
+    }
+  }
+  const std::string dz = dtwin_test::slurp(seeds / "damaged_dz_checksum.mf4");
+  EXPECT_EQ(readMdfDirectory(dz, "x.mf4").groups.size(), 2u);  // the blocks are whole; the data are not
+  try {
+    (void)readMdfGroup(dz, "x.mf4", 0, {"AccZ_Seat"});
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "x.mf4: block ##DZ at 0x690: compressed data fail their check (zlib: incorrect data check)");
+  }
+}

@@ -207,7 +207,7 @@ class MdfStructure {
     header(64);
   }
 
-  /// A block's 24-byte header: an MDF 4 id, its length and links inside the file.
+  /// A block's 24-byte header: its length inside the file, holding its links and its fixed fields.
   void header(std::uint64_t at) const {
     const std::uint64_t len = u64(at + 8), links = u64(at + 16);
     if (len < 24 || len > b_.size() - at)
@@ -242,16 +242,16 @@ class MdfStructure {
 
   /// Link k of `from` points to `to`: a block inside the file of an id the rule allows.
   void target(const BlockInfo& from, const LinkRule& r, std::uint64_t to) const {
-    const std::string link = "link '" + std::string(r.name) + (r.index >= 0 ? "[" + std::to_string(r.index) + "]" : "") + "'";
+    const std::string what = "link '" + std::string(r.name) + (r.index >= 0 ? "[" + std::to_string(r.index) + "]" : "") + "'";
     if (to < 64 || to >= b_.size() || b_.size() - to < 24)
-      fail(from.at, link + " points to byte " + hex(to) + ", outside the file's blocks (" + std::to_string(b_.size()) + " bytes): the file is truncated or damaged");
+      fail(from.at, what + " points to byte " + hex(to) + ", outside the file's blocks (" + std::to_string(b_.size()) + " bytes): the file is truncated or damaged");
     const char* id = b_.c_str() + to + 2;
     if (b_[to] != '#' || b_[to + 1] != '#' || !knownId(id))
-      fail(from.at, link + " points to '" + idAt(to) + "' at " + hex(to) + ", not an MDF 4 block id (allowed: " + idList(r.allowed) + ")");
+      fail(from.at, what + " points to '" + idAt(to) + "' at " + hex(to) + ", not an MDF 4 block id (allowed: " + idList(r.allowed) + ")");
     if (!among(r.allowed, id)) {
       if (std::string(r.name) == "cn_composition" && among("DS CL CV CU", id))
-        fail(from.at, link + " points to a " + idAt(to) + " block, an MDF 4.2 composition this reader does not read (read: ##CA, ##CN)");
-      fail(from.at, link + " points to a " + idAt(to) + " block (allowed: " + idList(r.allowed) + ")");
+        fail(from.at, what + " points to a " + idAt(to) + " block, an MDF 4.2 composition this reader does not read (read: ##CA, ##CN)");
+      fail(from.at, what + " points to a " + idAt(to) + " block (allowed: " + idList(r.allowed) + ")");
     }
     header(to);
   }

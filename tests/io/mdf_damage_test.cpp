@@ -280,9 +280,9 @@ TEST(MdfDamage, AnImplausibleValueNamesTheLog) {
 }
 
 // The damaged seeds of the fuzzer (tests/fuzz/seeds/mf4_import/damaged_*.mf4; docs/fuzzing.md):
-// the 200-row seed damaged as the user's files were, and two inputs the fuzzer found. Before the
-// structure check, three crashed the import (SIGSEGV), the cycle hung it, and the others imported
-// without a word.
+// the 200-row seed damaged as the user's files were, and three inputs the fuzzer found. Before the
+// structure check, three crashed the import (SIGSEGV), the two cycles hung it, and the others
+// imported without a word.
 TEST(MdfDamage, TheFuzzersDamagedSeedsAreRefused) {
   const fs::path dir = dtwin_test::freshDir("mdf_damage_seeds");
   const fs::path seeds = fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import";
@@ -294,9 +294,11 @@ TEST(MdfDamage, TheFuzzersDamagedSeedsAreRefused) {
       {"damaged_hd_renamed", "block ##HX at 0x40: the block after the identification must be the header, ##HD"},
       {"damaged_dz_checksum", "block ##DZ at 0x690: compressed data fail their check (zlib: incorrect data check)"},
       // Found by the fuzzer's structure-aware mutations: a channel's name a renamed block (SIGSEGV
-      // before the check), a data group's channel groups a file history (imported without a word).
+      // before the check), a data group's channel groups a file history (imported without a word),
+      // a file history that is its own next (the import hung).
       {"damaged_found_cn_name_to_ri", "block ##CN at 0x568: link 'cn_tx_name' points to a ##RI block (allowed: ##TX)"},
       {"damaged_found_dg_cg_to_fh", "block ##DG at 0x1708: link 'dg_cg_first' points to a ##FH block (allowed: ##CG)"},
+      {"damaged_found_fh_cycle", "block ##FH at 0x160: link 'fh_fh_next' leads back to the ##FH block at 0x160 on its own path"},
   };
   for (const auto& [file, expect] : cases) expectRefused(dir, file, dtwin_test::slurp(seeds / (file + ".mf4")), expect);
   std::size_t damaged = 0;
@@ -314,7 +316,7 @@ TEST(MdfDamage, TheReaderRefusesTheDamagedSeedsInProcess) {
   ASSERT_EQ(dir.groups.size(), 1u);
   EXPECT_EQ(readMdfGroup(plain, "plain.mf4", 0, {"AccZ_Seat"}).time.size(), 200u);
   for (const char* f : {"damaged_cn_next_to_cg", "damaged_cn_composition_self", "damaged_cn_cycle", "damaged_cn_as_co", "damaged_hd_renamed",
-                        "damaged_found_cn_name_to_ri", "damaged_found_dg_cg_to_fh"}) {
+                        "damaged_found_cn_name_to_ri", "damaged_found_dg_cg_to_fh", "damaged_found_fh_cycle"}) {
     SCOPED_TRACE(f);
     const std::string bytes = dtwin_test::slurp(seeds / (std::string(f) + ".mf4"));
     try {

@@ -631,7 +631,17 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   }
   if (res.data.records.empty())
     throw InputError(m.window_s ? m.window_where : log_name, "leaves no measurement: every row is outside the window or masked");
-  res.lab_csv = labCsvText(res.data, known);  // validates (plausible ranges, ...) with the log's lines lost: name the log
+  // The records' checks (plausible ranges, ...), each named by the log's channel and time.
+  res.lab_csv = labCsvText(
+      res.data,
+      [&](std::size_t i) {
+        const auto& r = res.data.records[i];
+        std::string column = r.channel;
+        for (const auto& c : m.channels)
+          if (c.channel == r.channel) column = c.source.column;
+        return log_name + ": channel '" + column + "' at " + formatNumber(res.t0_s + r.time_s, 12) + " s";
+      },
+      known);
   writeInputs(res, units, tr, vr, road);
   res.study_toml = importedStudyText(log_name, added, units, base_study, scenario, res.duration_s, res.start_m);
   res.sidecar = importSidecar(res, log_text, log_name, m, units, base_study);

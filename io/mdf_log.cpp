@@ -8,7 +8,6 @@
 #include <limits>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <stdexcept>
 #include <streambuf>
 
@@ -24,6 +23,7 @@
 #include <mdf/mdfwriter.h>
 
 #include "common/errors.hpp"
+#include "io/mdf_structure.hpp"
 
 namespace dtwin {
 
@@ -115,106 +115,6 @@ std::string channelUnit(const mdf::IChannel& cn) {
   return cc != nullptr && cc->IsUnitValid() ? cc->Unit() : std::string();
 }
 
-/// The file's block structure, checked before mdflib reads it (mdflib reads past the end of a
-/// cut file without a word): every block reachable from the header lies inside the file with its
-/// links, and each data group's data blocks hold the records its channel groups declare.
-class MdfStructureCheck {
- public:
-  MdfStructureCheck(const std::string& bytes, const std::string& name) : b_(bytes), name_(name) {}
-
-  void run() {
-    std::vector<std::uint64_t> todo = {64};
-    while (!todo.empty()) {
-      const std::uint64_t at = todo.back();
-      todo.pop_back();
-      if (!seen_.insert(at).second) continue;
-      if (seen_.size() > b_.size() / 24) fail(at, "more blocks than the file can hold");
-      block(at);
-      for (std::uint64_t k = 0; k < u64(at + 16); ++k)
-        if (const std::uint64_t l = u64(at + 24 + 8 * k); l != 0) todo.push_back(l);
-    }
-    for (std::uint64_t dg = u64(64 + 24); dg != 0; dg = u64(dg + 24)) records(dg);
-  }
-
- private:
-  [[noreturn]] void fail(std::uint64_t at, const std::string& rule) const {
-    throw InputError(name_, "is truncated or damaged: at byte " + std::to_string(at) + ", " + rule);
-  }
-  std::uint64_t u64(std::uint64_t at) const {
-    if (at > b_.size() || b_.size() - at < 8) fail(at, "the file ends inside a block");
-    std::uint64_t v = 0;
-    for (int i = 7; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b_[at + static_cast<std::uint64_t>(i)]);
-    return v;
-  }
-  std::uint32_t u32(std::uint64_t at) const {
-    if (at > b_.size() || b_.size() - at < 4) fail(at, "the file ends inside a block");
-    std::uint32_t v = 0;
-    for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b_[at + static_cast<std::uint64_t>(i)]);
-    return v;
-  }
-  /// A block's header, its length and links inside the file.
-  void block(std::uint64_t at) {
-    if (at < 64 || at > b_.size() || b_.size() - at < 24) fail(at, "a link points past the end of the file (" + std::to_string(b_.size()) + " bytes)");
-    if (b_[at] != '#' || b_[at + 1] != '#') fail(at, "a link points to no block");
-    const std::uint64_t len = u64(at + 8), links = u64(at + 16);
-    if (len < 24 || len > b_.size() - at) fail(at, "the block " + b_.substr(at, 4) + " runs " + std::to_string(len) + " bytes, past the end of the file (" + std::to_string(b_.size()) + " bytes)");
-    if (links > (len - 24) / 8) fail(at, "the block " + b_.substr(at, 4) + " has more links than bytes");
-  }
-  std::string id(std::uint64_t at) const { return b_.substr(at + 2, 2); }
-  /// The bytes of records data block `at` holds (DT, DZ, or a list of them under DL/HL).
-  std::uint64_t dataBytes(std::uint64_t at, int depth) {
-    if (at == 0) return 0;
-    if (depth > 64) fail(at, "data lists nested too deep");
-    const std::string t = id(at);
-    if (t == "DT" || t == "DV") return u64(at + 8) - 24;
-    if (t == "DZ") {
-      const std::uint64_t packed = u64(at + 24 + 16), original = u64(at + 24 + 8);
-      if (packed > u64(at + 8) - 48) fail(at, "a DZ block's compressed data runs past the block");
-      // Deflate packs at most 1032 bytes into one: a larger claim is damage, not data (and a reader
-      // would reserve it before inflating).
-      if (original / 1032 > packed + 1) fail(at, "a DZ block declares " + std::to_string(original) + " bytes from " + std::to_string(packed) + " compressed ones");
-      return original;
-    }
-    if (t == "HL") return dataBytes(u64(at + 24), depth + 1);
-    if (t == "DL") {
-      std::uint64_t sum = 0;
-      std::set<std::uint64_t> lists;
-      for (std::uint64_t dl = at; dl != 0; dl = u64(dl + 24)) {
-        if (!lists.insert(dl).second) fail(dl, "a data list links back to itself");
-        for (std::uint64_t k = 1; k < u64(dl + 16); ++k) sum += dataBytes(u64(dl + 24 + 8 * k), depth + 1);
-      }
-      return sum;
-    }
-    return std::numeric_limits<std::uint64_t>::max();  // another layout (a sample reduction, ...): not sized here
-  }
-  /// A data group's data holds the records of its channel groups.
-  void records(std::uint64_t dg) {
-    if (!dgs_.insert(dg).second) fail(dg, "the data groups link back to themselves");
-    const std::uint64_t links = u64(dg + 16);
-    if (links < 3) fail(dg, "a data group without its links");
-    const std::uint64_t record_id = u32(dg + 24 + 8 * links) & 0xff;  // the record id's size in bytes
-    std::uint64_t need = 0;
-    std::set<std::uint64_t> cgs;
-    for (std::uint64_t cg = u64(dg + 24 + 8); cg != 0; cg = u64(cg + 24)) {
-      if (!cgs.insert(cg).second) fail(cg, "the channel groups link back to themselves");
-      const std::uint64_t data = cg + 24 + 8 * u64(cg + 16);
-      if ((u64(data + 16) & 0xffff & 1) != 0) return;  // variable-length signal data: not sized here
-      // A record of no bytes would keep a reader at the same place for ever (every group has its
-      // master channel, so a real one has bytes).
-      const std::uint64_t record = u32(data + 24) + static_cast<std::uint64_t>(u32(data + 28));
-      if (record == 0) fail(cg, "a channel group declares records of 0 bytes");
-      need += u64(data + 8) * (record_id + record);
-    }
-    const std::uint64_t have = dataBytes(u64(dg + 24 + 16), 0);
-    if (have < need)
-      fail(dg, "its data blocks hold " + std::to_string(have) + " bytes of records where its channel groups declare " + std::to_string(need));
-  }
-
-  const std::string& b_;
-  const std::string& name_;
-  std::set<std::uint64_t> seen_, dgs_;
-};
-
 /// An opened log: the reader with its blocks read (not the data).
 struct MdfOpened {
   std::shared_ptr<MdfMemoryBuffer> buffer;
@@ -222,14 +122,16 @@ struct MdfOpened {
   std::vector<std::pair<mdf::IDataGroup*, mdf::IChannelGroup*>> groups;  ///< every channel group, in file order
 };
 
-MdfOpened openMdf(const std::string& bytes, const std::string& name) {
+/// The log opened by mdflib after the structure check (its DZ blocks inflated too when `data`: the
+/// data will be read).
+MdfOpened openMdf(const std::string& bytes, const std::string& name, bool data) {
   installMdfLog();
   mdf_last_error.clear();
   if (bytes.size() < 64 || bytes.compare(0, 8, "MDF     ") != 0)
     throw InputError(name, bytes.compare(0, 8, "UnFinMF ") == 0 && bytes.size() >= 64
                                ? "is an MDF file the logger did not finalise (its identification reads 'UnFinMF'): finalise it with the logger's tool first"
                                : "is not an MDF file: it does not begin with an MDF identification block");
-  MdfStructureCheck(bytes, name).run();
+  checkMdfStructure(bytes, name, data);  // mdflib reads a link to the wrong block, or a damaged DZ block, without a word
   MdfOpened o;
   o.buffer = std::make_shared<MdfMemoryBuffer>(bytes);
   try {
@@ -264,7 +166,7 @@ bool isMdfLog(const std::string& name, std::string_view bytes) {
 }
 
 MdfDirectory readMdfDirectory(const std::string& bytes, const std::string& name) {
-  const MdfOpened o = openMdf(bytes, name);
+  const MdfOpened o = openMdf(bytes, name, /*data=*/false);
   MdfDirectory d;
   d.version = o.reader->GetFile()->Version();
   for (const auto& [dg, cg] : o.groups) {
@@ -287,7 +189,7 @@ MdfDirectory readMdfDirectory(const std::string& bytes, const std::string& name)
 }
 
 MdfGroupData readMdfGroup(const std::string& bytes, const std::string& name, std::size_t group, const std::vector<std::string>& channels) {
-  MdfOpened o = openMdf(bytes, name);
+  MdfOpened o = openMdf(bytes, name, /*data=*/true);
   if (group >= o.groups.size()) throw InputError(name, "has no channel group " + std::to_string(group + 1));
   auto* dg = o.groups[group].first;
   auto* cg = o.groups[group].second;

@@ -47,11 +47,12 @@ struct MdfDirectory {
 };
 
 /// Reads the log's blocks but not its data. InputError(name, ...) for a file that is not MDF 4,
-/// is truncated or damaged, or is not finalised.
+/// is truncated or damaged (its block structure: io/mdf_structure.hpp), or is not finalised.
 MdfDirectory readMdfDirectory(const std::string& bytes, const std::string& name);
 
 /// Reads the named channels of group `group` (an index into MdfDirectory::groups) with their
-/// master. InputError for a channel with a text conversion or whose data is cut short.
+/// master. InputError for a channel with a text conversion or whose data is cut short, and for a
+/// file whose DZ blocks do not inflate cleanly to their declared sizes.
 MdfGroupData readMdfGroup(const std::string& bytes, const std::string& name, std::size_t group, const std::vector<std::string>& channels);
 
 /// A conversion written with a channel (writeMdfLog): the stored values are raw, the file's

@@ -33,25 +33,27 @@ class LabChecker {
  public:
   explicit LabChecker(const std::vector<Channel>& known) : known_(known) {}
 
-  void check(const LabRecord& r, const std::string& at) {
+  /// `at()` names the record; asked for only when a rule is broken (a name costs more than a check).
+  template <class At>
+  void check(const LabRecord& r, const At& at) {
     if (r.repetition <= 0)
-      throw InputError(at + ": repetition", "must be a positive integer, got " + std::to_string(r.repetition));
-    if (!std::isfinite(r.time_s)) throw InputError(at + ": time_s", "must be finite, got " + formatExact(r.time_s));
-    if (r.time_s < 0) throw InputError(at + ": time_s", "must be >= 0 (seconds since the scenario start), got " + formatExact(r.time_s));
+      throw InputError(at() + ": repetition", "must be a positive integer, got " + std::to_string(r.repetition));
+    if (!std::isfinite(r.time_s)) throw InputError(at() + ": time_s", "must be finite, got " + formatExact(r.time_s));
+    if (r.time_s < 0) throw InputError(at() + ": time_s", "must be >= 0 (seconds since the scenario start), got " + formatExact(r.time_s));
     const std::string rule = checkChannelName(r.channel, known_);
-    if (!rule.empty()) throw InputError(at + ": channel", rule);
-    if (!std::isfinite(r.value)) throw InputError(at + ": value", "must be finite, got " + formatExact(r.value));
+    if (!rule.empty()) throw InputError(at() + ": channel", rule);
+    if (!std::isfinite(r.value)) throw InputError(at() + ": value", "must be finite, got " + formatExact(r.value));
     if (r.time_s > plausibleLimit("s"))
-      throw InputError(at + ": time_s", "must be <= " + formatExact(plausibleLimit("s")) + " s (plausible range), got " + formatExact(r.time_s));
+      throw InputError(at() + ": time_s", "must be <= " + formatExact(plausibleLimit("s")) + " s (plausible range), got " + formatExact(r.time_s));
     for (const auto& k : known_)
       if (k.name == r.channel && std::abs(r.value) > plausibleLimit(k.unit))
-        throw InputError(at + ": value", "must lie in the plausible range [-" + formatExact(plausibleLimit(k.unit)) + ", " +
+        throw InputError(at() + ": value", "must lie in the plausible range [-" + formatExact(plausibleLimit(k.unit)) + ", " +
                                              formatExact(plausibleLimit(k.unit)) + "] " + k.unit + " for " + r.channel + ", got " +
                                              formatExact(r.value));
     auto key = std::make_pair(r.repetition, r.channel);
     auto it = last_.find(key);
     if (it != last_.end() && !(r.time_s > it->second))
-      throw InputError(at + ": time_s", std::string(r.time_s == it->second ? "repeated" : "not increasing") + " for repetition " +
+      throw InputError(at() + ": time_s", std::string(r.time_s == it->second ? "repeated" : "not increasing") + " for repetition " +
                                             std::to_string(r.repetition) + " channel " + r.channel + " (" +
                                             formatExact(r.time_s) + " after " + formatExact(it->second) + ")");
     last_[key] = r.time_s;
@@ -136,13 +138,21 @@ std::string checkChannelName(const std::string& channel, const std::vector<Chann
 
 void validateLabData(const LabData& data, const std::string& name, const std::vector<Channel>& known) {
   if (data.records.empty()) throw InputError(name, "no records");
+  validateLabData(data, [&](std::size_t i) { return name + ":" + std::to_string(i + 2); }, known);
+}
+
+void validateLabData(const LabData& data, const std::function<std::string(std::size_t)>& where, const std::vector<Channel>& known) {
   LabChecker checker(known);
-  for (std::size_t i = 0; i < data.records.size(); ++i)
-    checker.check(data.records[i], name + ":" + std::to_string(i + 2));
+  for (std::size_t i = 0; i < data.records.size(); ++i) checker.check(data.records[i], [&] { return where(i); });
 }
 
 std::string labCsvText(const LabData& data, const std::vector<Channel>& known) {
-  validateLabData(data, "lab data", known);
+  return labCsvText(data, [](std::size_t i) { return "lab data:" + std::to_string(i + 2); }, known);
+}
+
+std::string labCsvText(const LabData& data, const std::function<std::string(std::size_t)>& where, const std::vector<Channel>& known) {
+  if (data.records.empty()) throw InputError("lab data", "no records");
+  validateLabData(data, where, known);
   std::string out = std::string(kLabHeader) + "\n";
   out.reserve(out.size() + data.records.size() * 48);
   for (const auto& r : data.records) {
@@ -205,7 +215,7 @@ LabData parseLabCsv(const std::string& text, const std::string& name, const std:
     r.channel = std::string(f[static_cast<std::size_t>(col[2])]);
     const std::string_view vs = f[static_cast<std::size_t>(col[3])];
     if (!parseNumber(vs, r.value)) throw InputError(at + ": value", "must be a number, got " + inQuotes(vs));
-    checker.check(r, at);
+    checker.check(r, [&] { return at; });
     data.records.push_back(std::move(r));
   }
   if (data.records.empty()) throw InputError(name, "no records after the header (line " + std::to_string(header_line) + ")");

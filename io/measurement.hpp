@@ -4,6 +4,7 @@
 // the same layout. Readers validate everything and throw InputError with one line naming
 // file:line, the field and the rule broken. docs/data-files.md describes both layouts.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,8 @@ inline constexpr const char* kLabHeader = "repetition,time_s,channel,value";
 /// CSV text of lab data: header `repetition,time_s,channel,value`, one record per line, numbers
 /// in the shortest form that reads back exactly. Validates first (same rules as the reader).
 std::string labCsvText(const LabData& data, const std::vector<Channel>& known = measurableChannels());
+/// The same, record i named by `where(i)` in an error (an import names the log and the sample).
+std::string labCsvText(const LabData& data, const std::function<std::string(std::size_t)>& where, const std::vector<Channel>& known);
 /// Writes labCsvText atomically (common/files.hpp writeFileAtomic).
 void writeLabCsv(const std::string& path, const LabData& data, const std::vector<Channel>& known = measurableChannels());
 
@@ -60,6 +63,8 @@ LabData parseLabCsv(const std::string& text, const std::string& name, const std:
 LabData readLabCsv(const std::string& path, const std::vector<Channel>& known = measurableChannels());
 /// Validates lab data held in memory (the reader's rules; "record i" stands for line i + 2).
 void validateLabData(const LabData& data, const std::string& name, const std::vector<Channel>& known = measurableChannels());
+/// The same, record i named by `where(i)` (an import names the log and the sample it came from).
+void validateLabData(const LabData& data, const std::function<std::string(std::size_t)>& where, const std::vector<Channel>& known);
 
 /// The largest magnitude a measured value in `unit` may have (the plausibility range [-limit,
 /// limit] of docs/data-files.md, "Plausible values"): far beyond what a road vehicle produces,

@@ -259,7 +259,7 @@ TEST(MdfImport, BadFilesGiveOneLineErrorsAndWriteNothing) {
       {"cut_in_dz", bytes_dz.substr(0, bytes_dz.size() / 2), map, "truncated or damaged"},
       {"cut_in_header", bytes.substr(0, 100), map, "truncated or damaged"},
       {"cut_in_id", bytes.substr(0, 20), map, "is not an MDF file"},
-      {"cut_before_data", bytes.substr(0, bytes.find("##DT") + 30), map, "the block ##DT runs"},
+      {"cut_before_data", bytes.substr(0, bytes.find("##DT") + 30), map, "block ##DT at 0x"},
       {"missing_channel", bytes, (dir / "missing.toml").string(), "no channel 'AccZ_Seet' (" + (dir / "missing.toml").string() + ":"},
       {"unit", bytes, (dir / "unit.toml").string(), "channel 'GPS_Speed' (group 'log'): the file gives its unit as 'km/h', the mapping declares 'mph'"},
       {"shared", dtwin_test::slurp(split), (dir / "shared.toml").string(), "channel 'Time' (" + (dir / "shared.toml").string() + ":6: import.road_left) is in group 'chassis', group 'gps': name one as GROUP/Time"},
@@ -267,9 +267,9 @@ TEST(MdfImport, BadFilesGiveOneLineErrorsAndWriteNothing) {
       // Two files the fuzzer made: records of 0 bytes (a reader would never move on) and a DZ block
       // that claims more data than deflate can pack into its bytes (a reader would reserve it).
       {"zero_size_records", dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import/zero_size_records.mf4"), map,
-       "a channel group declares records of 0 bytes"},
+       "declares records of 0 bytes"},
       {"dz_size_too_large", dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import/dz_size_too_large.mf4"), map,
-       "truncated or damaged"},
+       "block ##DZ at 0x690: declares 26177172834095008 bytes from 1270 compressed ones"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);

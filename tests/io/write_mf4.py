@@ -3,12 +3,13 @@
 writer, independent of mdflib (which `twin import` reads through and whose writer makes the other
 MF4 fixtures), written from the MDF 4 block layout. tests/io/mdf_import_test.cpp runs it.
 
-    write_mf4.py CSV OUT.mf4 --data dt|deflate|transposed [--split COL,...] [--units COL=UNIT,...]
+    write_mf4.py CSV OUT.mf4 --data dt|deflate|transposed [--split COL,...] [--units COL=UNIT,...] [--level 0-9]
 
 Every column but the first becomes a 64-bit float channel (an empty cell: NaN), the first the time
 master (seconds). --data: the records in one DT block, or in two DZ blocks (deflate, or
 transposition + deflate) listed by a DL block under an HL block. --split: those columns go into a
-second data group with its own master, sampled at every other row and the last.
+second data group with its own master, sampled at every other row and the last. --level: zlib's
+compression level of the DZ blocks (0: stored, the records' bytes as they are inside the stream).
 """
 import argparse
 import csv
@@ -51,7 +52,7 @@ def transpose(data, columns):
     return bytes(out) + data[n * columns:]
 
 
-def data_blocks(f, raw, record_size, kind):
+def data_blocks(f, raw, record_size, kind, level):
     if kind == "dt":
         return f.block(b"DT", [], raw)
     half = (len(raw) // record_size // 2) * record_size  # two blocks, the first a whole number of records
@@ -59,7 +60,7 @@ def data_blocks(f, raw, record_size, kind):
     dz = []
     for p in parts:
         zip_type = 1 if kind == "transposed" else 0
-        z = zlib.compress(transpose(p, record_size) if zip_type else p)
+        z = zlib.compress(transpose(p, record_size) if zip_type else p, level)
         head = b"DT" + struct.pack("<BBIQQ", zip_type, 0, record_size if zip_type else 0, len(p), len(z))
         dz.append(f.block(b"DZ", [], head + z))
     dl = f.block(b"DL", [0] + dz, struct.pack("<B3xIQ", 1, len(dz), half))  # equal length: all but the last hold `half` bytes
@@ -73,7 +74,7 @@ def channel(f, name, unit, master, byte_offset):
     return f.block(b"CN", [0, 0, tx_name, 0, 0, 0, tx_unit, 0], data)
 
 
-def group(f, name, times, columns, units, kind):
+def group(f, name, times, columns, units, kind, level):
     """One data group with one channel group: the master, then the columns."""
     rows = [[t] + [c[1][i] for c in columns] for i, t in enumerate(times)]
     record_size = 8 * (1 + len(columns))
@@ -82,7 +83,7 @@ def group(f, name, times, columns, units, kind):
         f.patch_link(a, 0, b)
     acq = f.tx(name)
     cg = f.block(b"CG", [0, cns[0], acq, 0, 0, 0], struct.pack("<QQHH4xII", 0, len(rows), 0, 0, record_size - 0, 0))
-    data = data_blocks(f, records(rows), record_size, kind)
+    data = data_blocks(f, records(rows), record_size, kind, level)
     return f.block(b"DG", [0, cg, data, 0], struct.pack("<B7x", 0))
 
 
@@ -93,6 +94,7 @@ def main():
     ap.add_argument("--data", choices=["dt", "deflate", "transposed"], default="dt")
     ap.add_argument("--split", default="")
     ap.add_argument("--units", default="")
+    ap.add_argument("--level", type=int, default=-1)
     a = ap.parse_args()
     with open(a.csv, newline="") as fh:
         table = list(csv.reader(fh))
@@ -109,11 +111,11 @@ def main():
     f.patch_link(hd, 1, fh_block)
     times = cols[0][1]
     main_cols = [c for c in cols[1:] if c[0] not in split]
-    dgs = [group(f, "log", times, main_cols, units, a.data)]
+    dgs = [group(f, "log", times, main_cols, units, a.data, a.level)]
     if split:
         keep = [i for i in range(len(times)) if i % 2 == 0 or i + 1 == len(times)]
         other = [(n, [v[i] for i in keep]) for n, v in cols[1:] if n in split]
-        dgs.append(group(f, "slow", [times[i] for i in keep], other, units, a.data))
+        dgs.append(group(f, "slow", [times[i] for i in keep], other, units, a.data, a.level))
     for x, y in zip(dgs, dgs[1:]):
         f.patch_link(x, 0, y)
     f.patch_link(hd, 0, dgs[0])

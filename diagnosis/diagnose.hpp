@@ -123,7 +123,7 @@ struct Figures {
 
 struct Candidate {
   std::string effect;        ///< the candidate's name (an effect, free:<value> or <sensor model>:<group>)
-  std::string kind;          ///< "effect" | "parameter" | "sensor" | "input" | "range" | "option" (candidates.hpp)
+  std::string kind;          ///< "effect" | "parameter" | "sensor" | "input" | "place" | "range" | "option" (candidates.hpp)
   std::string signature;
   std::string finding;       ///< confirmed: what the calibrated candidate says, in words (CandidateSpec::finding)
   std::string gate;          ///< empty: passed the gate; else why it cannot matter here

@@ -12,12 +12,12 @@
 #include "common/format.hpp"
 
 namespace dtwin::diag {
-namespace {
 
 /// The candidates to confirm (docs/diagnosis.md, "Confirmation"), in order: among the ungated ones
 /// with p < screen_alpha, every one whose screening score is within a factor
-/// options.confirm_within of the best, by score; then the best of each kind (effect, parameter,
-/// sensor) not already in, by score; at most options.candidates in all (the work budget).
+/// options.confirm_within of the best (the best of each kind first, then the others, by score);
+/// then the best of each kind (effect, parameter, sensor, ...) not already in, by score; at most
+/// options.candidates in all (the work budget).
 std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cands.size(); ++i)
@@ -26,10 +26,14 @@ std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands
   std::vector<std::size_t> chosen;
   if (order.empty()) return chosen;
   const double best = cands[order.front()].score;
-  for (std::size_t i : order)
-    if (cands[i].score * options.confirm_within >= best) chosen.push_back(i);
+  // Within the factor, the best of each kind comes first, then the rest by score: when the budget
+  // cannot hold them all, two mirror images of one kind (the road signal at the front-left or at
+  // the front-right wheel) do not take the slots of a cause of another kind (the sensor's place).
+  std::vector<std::size_t> rest;
   std::set<std::string> kinds;
-  for (std::size_t i : chosen) kinds.insert(cands[i].kind);
+  for (std::size_t i : order)
+    if (cands[i].score * options.confirm_within >= best) (kinds.insert(cands[i].kind).second ? chosen : rest).push_back(i);
+  for (std::size_t i : rest) chosen.push_back(i);
   for (std::size_t i : order)
     if (kinds.insert(cands[i].kind).second) chosen.push_back(i);
   if (chosen.size() > static_cast<std::size_t>(options.candidates)) chosen.resize(static_cast<std::size_t>(options.candidates));
@@ -39,8 +43,6 @@ std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands
     if (cands[i].kind == "option" && cands[i].gate.empty() && cands[i].failed.empty()) chosen.push_back(i);
   return chosen;
 }
-
-}  // namespace
 
 /// Confirm (step 3): the candidates chooseConfirmations picks, re-calibrated with their effect.
 /// Returns their indices in res.candidates.

@@ -61,11 +61,12 @@ struct Diagnosis {
   /// The current stage's reference model (res.base in the first stage).
   const Figures* reference = nullptr;
 
-  /// The parameters of candidate `name` in the calibration `f` (which may hold other causes too).
+  /// The parameters of candidate `name` in the calibration `f` (which may hold other causes too;
+  /// a widened range's value is the study's, among f.values).
   std::vector<EffectParameter> parametersOf(const std::string& name, const Figures& f) const {
     std::vector<EffectParameter> out;
     for (const auto& n : spec(name).calibrated_names)
-      for (const auto& p : f.effect_parameters)
+      for (const auto& p : f.values)
         if (p.name == n) out.push_back(p);
     return out;
   }
@@ -193,5 +194,8 @@ void verdict(Diagnosis& d);
 // ------------------------------------------------------------------ propose, apply (diagnose_apply.cpp)
 void propose(Diagnosis& d);
 void apply(Diagnosis& d);
+
+/// The candidates a stage confirms, in order (docs/diagnosis.md, "Confirmation"; diagnose_confirm.cpp).
+std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options);
 
 }  // namespace dtwin::diag

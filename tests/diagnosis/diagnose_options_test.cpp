@@ -16,6 +16,7 @@
 #include "common/errors.hpp"
 #include "diagnosis/compare.hpp"
 #include "diagnosis/diagnose.hpp"
+#include "diagnosis/diagnose_internal.hpp"
 #include "io/work.hpp"
 
 using namespace dtwin;
@@ -261,4 +262,39 @@ TEST(DiagnoseText, AnUnresolvedPosteriorPrintsTheOptimumNotAMeanAndSd) {
   t = r.text();
   EXPECT_NE(t.find("time_constant_s = 0.0001005 ± 2.6e-18 s"), std::string::npos) << t;
   EXPECT_EQ(t.find("not resolved"), std::string::npos) << t;
+}
+
+// The confirmation budget: within the factor of the best score, the best of each kind first, so
+// that two mirror images of one cause do not take the slots of a cause of another kind; then the
+// others by score; then the best of each kind beyond the factor; options beyond the budget.
+TEST(DiagnoseConfirm, TheBudgetGoesToEachKindsBestFirst) {
+  using dtwin::diag::Candidate;
+  auto cand = [](const std::string& name, const std::string& kind, double score) {
+    Candidate c;
+    c.effect = name;
+    c.kind = kind;
+    c.score = score;
+    c.p_value = kind == "option" ? 1.0 : 0.0;  // another option is not screened
+    return c;
+  };
+  const std::vector<Candidate> cands = {cand("free:road.fl_only", "input", 7.0e5), cand("free:road.fr_only", "input", 6.95e5),
+                                        cand("place:seat", "place", 6.9e5),        cand("free:tire.stiffness@fl", "parameter", 5.2e5),
+                                        cand("gain:seat", "sensor", 1.0e5),         cand("tire=hub", "option", 0.0)};
+  dtwin::diag::DiagnoseOptions o;
+  o.confirm_within = 2.0;
+  auto names = [&](const std::vector<std::size_t>& idx) {
+    std::vector<std::string> out;
+    for (auto i : idx) out.push_back(cands[i].effect);
+    return out;
+  };
+  o.candidates = 2;
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o)),
+            (std::vector<std::string>{"free:road.fl_only", "place:seat", "tire=hub"}));
+  o.candidates = 4;
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o)),
+            (std::vector<std::string>{"free:road.fl_only", "place:seat", "free:tire.stiffness@fl", "free:road.fr_only", "tire=hub"}));
+  o.candidates = 6;  // every one within the factor, then the sensor model as its kind's best
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o)),
+            (std::vector<std::string>{"free:road.fl_only", "place:seat", "free:tire.stiffness@fl", "free:road.fr_only", "gain:seat",
+                                      "tire=hub"}));
 }

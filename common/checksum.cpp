@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/hash.hpp"
 
 namespace dtwin {
 
@@ -19,12 +20,7 @@ std::string lineChecksum(const std::string& text) {
 }
 
 std::string contentChecksum(const std::string& bytes) {
-  std::uint64_t h = 14695981039346656037ULL;  // the published FNV-1a 64 offset basis and prime
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return formatPrintf("fnv1a64:%016llx", static_cast<unsigned long long>(h));
+  return formatPrintf("fnv1a64:%016llx", static_cast<unsigned long long>(fnv1a64Published(bytes)));
 }
 
 nlohmann::json sealJson(nlohmann::json j) {

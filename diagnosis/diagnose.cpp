@@ -95,6 +95,7 @@ void DiagnoseOptions::validate() const {
   calibration.validate();
   check.atLeast("candidates", candidates, 0);
   check.require(confirm_within >= 1.0, "confirm_within", "must be >= 1 (a factor of the best screening score)");
+  check.atLeast("confirm_rounds", confirm_rounds, 1);
   check.atLeast("causes", causes, 1);
   check.open01("screen_alpha", screen_alpha);
   check.nonNegative("bic_strong", bic_strong);
@@ -403,17 +404,20 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
   std::vector<StageWork> out;
   out.push_back(calibration("diagnose base", 2, base_params));  // the base and its refinement
   out.push_back({"diagnose screening", probe_runs, probe_runs * fit_span, 8.0 * probe_runs * fit_records});
-  out.push_back(calibration("diagnose confirm", options.candidates, base_params + most_effect_params));
+  // One round of the budget per stage: a later round runs only where the screening misjudged
+  // (docs/diagnosis.md, "Confirmation") and adds at most options.candidates to its stage.
+  const double per_stage = static_cast<double>(options.candidates);
+  out.push_back(calibration("diagnose confirm", per_stage, base_params + most_effect_params));
   out.push_back(calibration("diagnose apply", static_cast<double>(options.apply.size()), base_params + applied_params));
   // Forward stagewise: at most causes − 1 further stages, each a screening (a linearisation with
   // the causes before it, and every probe) and a confirmation on top of them.
   const double further = static_cast<double>(options.causes - 1);
-  auto more = calibration("diagnose further causes", further * options.candidates, base_params + static_cast<double>(options.causes) * most_effect_params);
+  auto more = calibration("diagnose further causes", further * per_stage, base_params + static_cast<double>(options.causes) * most_effect_params);
   const double further_probes = further * (2 * (base_params + further * most_effect_params) + catalogue_probes);
   more.simulations += further_probes;
   more.simulated_s += further_probes * fit_span;
   out.push_back(more);
-  const double models = 2 + options.candidates * static_cast<double>(options.causes) + static_cast<double>(options.apply.size());
+  const double models = 2 + per_stage * static_cast<double>(options.causes) + static_cast<double>(options.apply.size());
   const double runs = models * (options.compare_draws + 1);
   out.push_back({"diagnose compare", runs, runs * (fit_span + hold_span), 8.0 * (options.compare_draws + 1) * fit_records});
   return out;

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "twin/model.hpp"
 
 namespace dtwin::diag {
 
@@ -17,8 +18,10 @@ namespace dtwin::diag {
 /// with p < screen_alpha, every one whose screening score is within a factor
 /// options.confirm_within of the best (the best of each kind first, then the others, by score);
 /// then the best of each kind (effect, parameter, sensor, ...) not already in, by score; at most
-/// options.candidates in all (the work budget).
-std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
+/// options.candidates in all (the work budget). A later round passes the indices the rounds before
+/// took as `tried`: they are left out, and options are not added again.
+std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options,
+                                             const std::set<std::size_t>& tried) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cands.size(); ++i)
     if (cands[i].gate.empty() && cands[i].failed.empty() && cands[i].p_value < options.screen_alpha) order.push_back(i);
@@ -32,17 +35,49 @@ std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands
   std::vector<std::size_t> rest;
   std::set<std::string> kinds;
   for (std::size_t i : order)
-    if (cands[i].score * options.confirm_within >= best) (kinds.insert(cands[i].kind).second ? chosen : rest).push_back(i);
+    if (!tried.count(i) && cands[i].score * options.confirm_within >= best) (kinds.insert(cands[i].kind).second ? chosen : rest).push_back(i);
   for (std::size_t i : rest) chosen.push_back(i);
-  for (std::size_t i : order)
-    if (kinds.insert(cands[i].kind).second) chosen.push_back(i);
+  // Beyond the factor, the best of each kind not confirmed yet (in the first round only).
+  if (tried.empty())
+    for (std::size_t i : order)
+      if (kinds.insert(cands[i].kind).second) chosen.push_back(i);
   if (chosen.size() > static_cast<std::size_t>(options.candidates)) chosen.resize(static_cast<std::size_t>(options.candidates));
   // Another option of a subsystem is not nested in the model: no score can screen it, so it is
   // always confirmed, beyond the budget.
-  for (std::size_t i = 0; i < cands.size(); ++i)
-    if (cands[i].kind == "option" && cands[i].gate.empty() && cands[i].failed.empty()) chosen.push_back(i);
+  if (tried.empty())
+    for (std::size_t i = 0; i < cands.size(); ++i)
+      if (cands[i].kind == "option" && cands[i].gate.empty() && cands[i].failed.empty()) chosen.push_back(i);
   return chosen;
 }
+
+namespace {
+
+/// Its own parameters all at their off values in its fit: the candidate adds nothing; an SSE below
+/// the reference's then comes from polishing the reference's values further, not from it.
+bool isInert(const Diagnosis& d, const Candidate& c) {
+  const auto& spec = d.spec(c.effect);
+  if (!spec.addsParameters()) return false;
+  const auto own = d.parametersOf(c.effect, *c.fit);
+  return !own.empty() && std::all_of(own.begin(), own.end(), [&](const EffectParameter& p) {
+    for (const auto& ps : spec.parameters)
+      if (c.effect + "." + ps.name == p.name || ps.name == p.name || (spec.calibrated_names.size() == 1 && spec.calibrated_names[0] == p.name))
+        return std::abs(p.optimum - ps.default_value) <= 1e-6 * (ps.prior_upper - ps.prior_lower);
+    return false;
+  });
+}
+
+/// A confirmed candidate weighed against its stage's reference `ref`: ΔBIC, the share of the
+/// base's excess residual it removes, the held-out change.
+void weigh(const Diagnosis& d, Candidate& c, const Figures& ref) {
+  const Comparison& base = d.res.base.comparison;
+  const double base_excess = base.lack_of_fit - static_cast<double>(base.lack_of_fit_dof);
+  c.delta_bic = c.fit->bic - ref.bic;
+  c.explained = base_excess > 0 ? std::clamp((ref.comparison.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess, 0.0, 1.0) : 0.0;
+  if (c.fit->holdout && ref.holdout && ref.holdout->systematic_rms_sd > 0)
+    c.holdout_change = c.fit->holdout->systematic_rms_sd / ref.holdout->systematic_rms_sd;
+}
+
+}  // namespace
 
 /// Confirm (step 3): the candidates chooseConfirmations picks, re-calibrated with their effect.
 /// Returns their indices in res.candidates.
@@ -68,12 +103,38 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   // First every candidate's optimum (its evidence), then the full calibration (intervals, the
   // posterior's comparison) of those that could be the verdict or ambiguous with it.
   std::vector<std::size_t> optimised;
-  for (std::size_t k = 0; k < to_confirm.size(); ++k) {
-    auto& c = cands[to_confirm[k]];
-    const std::string stage =
-        "confirm " + c.effect + on_top + " (" + std::to_string(k + 1) + "/" + std::to_string(to_confirm.size()) + ")";
-    if (calibrate(c, stage, false)) optimised.push_back(to_confirm[k]);
+  std::set<std::size_t> tried;
+  auto round = [&](const std::vector<std::size_t>& chosen, int r) {
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
+      auto& c = cands[chosen[k]];
+      tried.insert(chosen[k]);
+      const std::string stage = "confirm " + c.effect + on_top + " (" + std::to_string(k + 1) + "/" + std::to_string(chosen.size()) +
+                                (r > 0 ? ", round " + std::to_string(r + 1) : "") + ")";
+      if (calibrate(c, stage, false)) optimised.push_back(chosen[k]);
+    }
+  };
+  round(to_confirm, 0);
+  // The screening score is the weighted SSE the linearised model says a candidate removes. A
+  // candidate whose model is far from linear there (its best values move the others far: a
+  // controller beside a sensor's place) may remove much more, or much less: while a candidate
+  // within the factor promises more than the largest drop a confirmed one achieved, the
+  // screening cannot rule it out, and the next round of the budget confirms it.
+  const double ref_sse = (d.installed.empty() ? d.res.base : *d.reference).sse_min;
+  auto drop = [&] {
+    double best_drop = 0;
+    for (std::size_t i : optimised) best_drop = std::max(best_drop, ref_sse - cands[i].fit->sse_min);
+    return best_drop;
+  };
+  for (int r = 1; r < d.options.confirm_rounds; ++r) {
+    std::set<std::size_t> out = tried;  // the tried ones and those promising no more than the drop
+    for (std::size_t i = 0; i < cands.size(); ++i)
+      if (cands[i].score <= drop()) out.insert(i);
+    const auto next = chooseConfirmations(cands, d.options, out);
+    if (next.empty()) break;
+    round(next, r);
   }
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (!tried.count(i) && cands[i].score > 0 && cands[i].score <= drop()) cands[i].outscored_by = drop();
   double best = -std::numeric_limits<double>::infinity();
   for (std::size_t i : optimised) best = std::max(best, cands[i].fit->log_evidence);
   const double margin = std::max(d.options.full_within, d.options.ambiguity_log_evidence);
@@ -87,18 +148,7 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
     if (d.installed.empty() && c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + " in full", true)) continue;
     c.confirmed = true;
     c.finding = d.findingOf(c.effect, *c.fit);
-    // Its own parameters all at their off values: the candidate adds nothing; an SSE below the
-    // reference's then comes from polishing the reference's values further, not from it.
-    const auto& spec = d.spec(c.effect);
-    if (spec.addsParameters()) {
-      const auto own = d.parametersOf(c.effect, *c.fit);
-      c.inert = !own.empty() && std::all_of(own.begin(), own.end(), [&](const EffectParameter& p) {
-        for (const auto& ps : spec.parameters)
-          if (c.effect + "." + ps.name == p.name || ps.name == p.name || (spec.calibrated_names.size() == 1 && spec.calibrated_names[0] == p.name))
-            return std::abs(p.optimum - ps.default_value) <= 1e-6 * (ps.prior_upper - ps.prior_lower);
-        return false;
-      });
-    }
+    c.inert = isInert(d, c);
     confirmed.push_back(i);
   }
   return confirmed;
@@ -155,22 +205,77 @@ void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
   auto& cands = d.stage();
   if (d.installed.empty()) refineBase(d, to_confirm);
   const Figures& ref = d.installed.empty() ? res.base : *d.reference;
-  const Comparison& base = res.base.comparison;
-  const double base_excess = base.lack_of_fit - static_cast<double>(base.lack_of_fit_dof);
-  for (std::size_t i : to_confirm) {
-    auto& c = cands[i];
-    c.delta_bic = c.fit->bic - ref.bic;
-    c.explained =
-        base_excess > 0 ? std::clamp((ref.comparison.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess, 0.0, 1.0) : 0.0;
-    if (c.fit->holdout && ref.holdout && ref.holdout->systematic_rms_sd > 0)
-      c.holdout_change = c.fit->holdout->systematic_rms_sd / ref.holdout->systematic_rms_sd;
-  }
+  for (std::size_t i : to_confirm) weigh(d, cands[i], ref);
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
     auto cls = [](const Candidate& c) { return c.confirmed ? 0 : (c.gate.empty() && c.failed.empty() ? 1 : 2); };
     if (cls(a) != cls(b)) return cls(a) < cls(b);
     if (a.confirmed) return a.fit->log_evidence > b.fit->log_evidence;
     return a.score > b.score;
   });
+}
+
+namespace {
+
+/// The structure a candidate changes (docs/diagnosis.md, "Structure first"): where a sensor sits
+/// (one per sensor), where the road signal enters, or a subsystem's option; "" for a force, a
+/// value or a sensor model.
+std::string structureOf(const Candidate& c) {
+  if (c.kind == "place") return c.effect;
+  if (c.kind == "option") return "option:" + c.effect.substr(0, c.effect.find('='));
+  if (c.kind == "input")
+    for (const auto& f : roadSignalForms())
+      if (c.effect == std::string("free:") + f.name) return "road form";
+  return "";
+}
+
+}  // namespace
+
+/// Structure first (docs/diagnosis.md, "Structure first"). Where the sensor sits, where the road
+/// signal enters and which law carries it do not add like forces: each changes how every other
+/// part is seen, so each alone may explain less than a force that stands in for it, and the
+/// forward stagewise selection, screening on top of one of them, never comes back to the others.
+/// So when the first cause is a structure, the best strong candidate of each other structure of
+/// the first stage (one per sensor's place, one road form, one per subsystem's option) is weighed
+/// on top of the causes so far, in the order of their first-stage evidence, each re-calibrated
+/// (to its optimum) and kept as the next cause when strong against the model without it.
+void structureFirst(Diagnosis& d, const std::vector<const Candidate*>& named) {
+  auto& res = d.res;
+  if (named.empty() || structureOf(*named.front()).empty()) return;
+  std::set<std::string> seen{structureOf(*named.front())};
+  std::vector<Candidate> members;
+  for (const Candidate* c : named)
+    if (const auto s = structureOf(*c); !s.empty() && seen.insert(s).second) members.push_back(*c);
+  for (auto& c : members) {
+    if (static_cast<int>(res.causes.size()) >= d.options.causes) break;
+    d.installed.clear();
+    for (const auto& k : res.causes) d.installed.push_back(k.name);
+    // Its own values at the first stage's optimum: a start beside the off values.
+    std::vector<double> own;
+    for (const auto& p : d.parametersOf(c.effect, *c.fit)) own.push_back(p.optimum);
+    if (own.size() != d.spec(c.effect).calibrated_names.size()) own.clear();
+    c.fit.reset();
+    c.confirmed = false;
+    c.holdout_change.reset();
+    res.further.push_back({d.installed, {}});
+    const std::string stage = "structure " + c.effect + " on " + joinEffects(d.installed);
+    if (!d.isolated(stage, [&] { c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, own, {}, false); })) {
+      res.further.pop_back();
+      continue;
+    }
+    c.confirmed = true;
+    c.inert = isInert(d, c);
+    c.finding = d.findingOf(c.effect, *c.fit);
+    c.evidence_gap = 0;
+    const Figures& ref = res.causes.back().fit;
+    weigh(d, c, ref);
+    res.further.back().candidates.push_back(c);
+    d.reference = &ref;
+    explainStage(d, ref.comparison);
+    if (c.delta_bic < -d.options.bic_strong && !c.inert) res.causes.push_back(causeOf(res.further.back().candidates.back(), {}));
+  }
+  d.installed.clear();
+  for (std::size_t k = 0; k + 1 < res.causes.size(); ++k) d.installed.push_back(res.causes[k].name);
+  d.reference = nullptr;
 }
 
 /// More than one cause (docs/diagnosis.md, step 4): forward stagewise selection. While the model

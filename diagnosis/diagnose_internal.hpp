@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -183,6 +184,8 @@ void screen(Diagnosis& d);
 std::vector<std::size_t> confirm(Diagnosis& d);
 void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm);
 void furtherCauses(Diagnosis& d);
+/// The other structures of the first stage weighed on top of a first cause that is one (diagnose_confirm.cpp).
+void structureFirst(Diagnosis& d, const std::vector<const Candidate*>& named);
 
 // ------------------------------------------------------------------ verdict (diagnose_verdict.cpp)
 void explainStage(Diagnosis& d, const Comparison& ref);
@@ -196,6 +199,8 @@ void propose(Diagnosis& d);
 void apply(Diagnosis& d);
 
 /// The candidates a stage confirms, in order (docs/diagnosis.md, "Confirmation"; diagnose_confirm.cpp).
-std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options);
+/// `tried`: the indices a round before took (left out; the factor still counts from the best score of all).
+std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options,
+                                             const std::set<std::size_t>& tried = {});
 
 }  // namespace dtwin::diag

@@ -317,9 +317,9 @@ DiagnoseRun diagnoseMeasurements(const Study& base_study, const DiagnoseRequest&
       sims += w.simulations;
       simulated += w.simulated_s;
     }
-    say("budget: at most " + plural(static_cast<std::size_t>(run.options.candidates), "confirmation") + " per stage and " +
-        plural(static_cast<std::size_t>(run.options.causes), "cause") + " (--candidates, --causes); upper estimate " +
-        formatPrintf("%.3g simulations, %.3g simulated s", sims, simulated));
+    say("budget: at most " + plural(static_cast<std::size_t>(run.options.candidates), "confirmation") + " per round, " +
+        std::to_string(run.options.confirm_rounds) + " rounds per stage, " + plural(static_cast<std::size_t>(run.options.causes), "cause") +
+        " (--candidates, --causes); estimate with one round per stage " + formatPrintf("%.3g simulations, %.3g simulated s", sims, simulated));
   }
   run.result = diag::diagnose(study, assembly, fit, hold, run.options, out, progress);
   run.json = diagnosisJson(study, request, run);

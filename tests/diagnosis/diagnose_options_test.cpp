@@ -298,3 +298,37 @@ TEST(DiagnoseConfirm, TheBudgetGoesToEachKindsBestFirst) {
             (std::vector<std::string>{"free:road.fl_only", "place:seat", "free:tire.stiffness@fl", "free:road.fr_only", "gain:seat",
                                       "tire=hub"}));
 }
+
+// A later round of the budget: the candidates a round before took, and those promising no more
+// than the drop a confirmed one achieved, are left out; the factor still counts from the best
+// score of all; no candidate beyond the factor and no option is added again.
+TEST(DiagnoseConfirm, ALaterRoundTakesTheNextWithinTheFactor) {
+  using dtwin::diag::Candidate;
+  auto cand = [](const std::string& name, const std::string& kind, double score) {
+    Candidate c;
+    c.effect = name;
+    c.kind = kind;
+    c.score = score;
+    c.p_value = kind == "option" ? 1.0 : 0.0;
+    return c;
+  };
+  // Scores as on a car whose controller moves the sensor's fitted place: the sensor model and the
+  // widened range screen best, the controllers just behind.
+  const std::vector<Candidate> cands = {cand("lowpass:seat", "sensor", 1505), cand("widen:chassis.pitch_inertia_kgm2", "range", 1299),
+                                        cand("groundhook", "effect", 1206),  cand("lowpass2:seat", "sensor", 1151),
+                                        cand("skyhook", "effect", 1123),     cand("free:chassis.mass_kg", "parameter", 736),
+                                        cand("tire=hub", "option", 0.0)};
+  dtwin::diag::DiagnoseOptions o;
+  o.candidates = 2;
+  auto names = [&](const std::vector<std::size_t>& idx) {
+    std::vector<std::string> out;
+    for (auto i : idx) out.push_back(cands[i].effect);
+    return out;
+  };
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o)),
+            (std::vector<std::string>{"lowpass:seat", "widen:chassis.pitch_inertia_kgm2", "tire=hub"}));
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 6})), (std::vector<std::string>{"groundhook", "lowpass2:seat"}));
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 2, 3, 6})), (std::vector<std::string>{"skyhook"}));
+  // Every one within the factor taken: the parameter beyond it (736 < 1505 / 2) is not.
+  EXPECT_TRUE(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 2, 3, 4, 6}).empty());
+}

@@ -5,6 +5,7 @@ dtwin` needs no setting and docs/python.md's example runs there as written.
 
 CTest sets DTWIN_BUILD_DIR (the build whose module is packed), DTWIN_SOURCE_DIR and
 DTWIN_SIMBODY_RELEASE (empty for Debian's binary Simbody)."""
+import importlib.util
 import os
 import re
 import shutil
@@ -37,6 +38,10 @@ def resolved(elf, library, env):
 
 class Wheel(unittest.TestCase):
     def test_the_wheel_installs_offline_and_runs_the_example(self):
+        for module, package in (("build", "python3-build"), ("setuptools", "python3-setuptools"), ("wheel", "python3-wheel"),
+                                ("ensurepip", "python3-venv")):
+            self.assertIsNotNone(importlib.util.find_spec(module),
+                                 f"{module} is missing: bash scripts/setup.sh installs Debian's {package}")
         with tempfile.TemporaryDirectory(prefix="dtwin-wheel-test-") as tmp:
             dist = os.path.join(tmp, "dist")
             run([sys.executable, "-m", "build", "--wheel", "--no-isolation", "--outdir", dist, SOURCE],

@@ -56,8 +56,13 @@ CLI::App* addSubcommand(CLI::App& root, const std::string& name);
 /// form "<options>.<field>" becomes the flag that sets the field, when there is one.
 std::string messageForCommand(const CommandHandle& handle, const std::string& where, const std::string& rule);
 
-/// The embedded default study (data/studies/demo.toml in the source tree or the install prefix).
+/// The embedded default study (data/studies/demo.toml in the source tree, else in the install
+/// prefix this program runs from: <prefix>/share/dtwin/data, found beside bin/twin wherever the
+/// prefix was moved, else the prefix it was configured for).
 std::string defaultStudy();
+/// Where the installed documentation is: <prefix>/share/doc/dtwin beside the running program when
+/// it is there, else the configured prefix's.
+std::string installedDocDir();
 /// The command line as one string, recorded in every output.
 std::string joinArgs(int argc, char** argv);
 /// The `--seed` option of every command: an integer in [0, 2^64 - 1], written as digits (anything

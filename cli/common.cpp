@@ -35,12 +35,29 @@ void addForceOption(CLI::App* app, bool& force) {
                 "Run even when the estimated work exceeds the limits (docs/study-file.md, Limits); the sizes' own limits still hold");
 }
 
+fs::path installPrefix() {
+  std::error_code ec;
+  const fs::path exe = fs::canonical("/proc/self/exe", ec);
+  if (ec || !exe.has_parent_path()) return {};
+  return exe.parent_path().parent_path();  // <prefix>/bin/twin
+}
+
 std::string defaultStudy() {
-  for (const char* dir : {DTWIN_SOURCE_DATA_DIR, DTWIN_INSTALL_DATA_DIR}) {
+  const fs::path prefix = installPrefix();
+  const std::string beside = prefix.empty() ? std::string() : (prefix / "share" / "dtwin" / "data").string();
+  for (const std::string& dir : {std::string(DTWIN_SOURCE_DATA_DIR), beside, std::string(DTWIN_INSTALL_DATA_DIR)}) {
+    if (dir.empty()) continue;
     const fs::path p = fs::path(dir) / "studies" / "demo.toml";
     if (fs::exists(p)) return p.string();
   }
   return "data/studies/demo.toml";
+}
+
+std::string installedDocDir() {
+  const fs::path prefix = installPrefix();
+  std::error_code ec;
+  if (!prefix.empty() && fs::is_directory(prefix / "share" / "doc" / "dtwin", ec)) return (prefix / "share" / "doc" / "dtwin").string();
+  return DTWIN_INSTALL_DOC_DIR;
 }
 
 std::string joinArgs(int argc, char** argv) {

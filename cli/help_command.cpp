@@ -28,7 +28,7 @@ std::string topLevelHelp() {
        "  --version      the version, the build and the Simbody it runs on\n"
        "\nThe examples in each command's help run as written from the root of the source tree with twin on\n"
        "PATH (else write ./build/cli/twin for twin); they read data/ and write under out/.\n"
-       "Documentation: docs/ in the source tree (README.md first); installed under " DTWIN_INSTALL_DOC_DIR ".\n";
+       "Documentation: docs/ in the source tree (README.md first); installed under " + installedDocDir() + ".\n";
   return s;
 }
 

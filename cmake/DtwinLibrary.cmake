@@ -1,7 +1,7 @@
 # dtwin_library(<name> SOURCES ... HEADERS ... [PUBLIC ...] [PRIVATE ...] [HEADER_DIR dir])
 # One library of the project: target dtwin_<name> with alias dtwin::<name>, the project root on
-# its include path, the project's warnings, exported as dtwin::<name> by `install`, and its
-# HEADERS installed under include/dtwin/<HEADER_DIR, default name>/.
+# its include path, the project's warnings, exported as dtwin::<name> by `install`, and the headers
+# of its folder (when it lists HEADERS) installed under include/dtwin/<HEADER_DIR, default name>/.
 function(dtwin_library name)
   cmake_parse_arguments(L "" "HEADER_DIR" "SOURCES;HEADERS;PUBLIC;PRIVATE" ${ARGN})
   if(L_UNPARSED_ARGUMENTS)
@@ -24,8 +24,12 @@ function(dtwin_library name)
   dtwin_use_pch(${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME ${target})
   install(TARGETS ${target} EXPORT dtwinTargets ARCHIVE DESTINATION lib LIBRARY DESTINATION lib)
+  # Every header of the library's folder and its subfolders (effects/, roads/), not only those
+  # listed: a listed header includes others, and a program built on the installed package needs
+  # them all (tests/install/).
   if(L_HEADERS)
-    install(FILES ${L_HEADERS} DESTINATION include/dtwin/${L_HEADER_DIR})
+    install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION include/dtwin/${L_HEADER_DIR}
+            FILES_MATCHING PATTERN "*.hpp")
   endif()
 endfunction()
 

@@ -1,5 +1,7 @@
 #include "python/bridge.hpp"
 
+#include <dlfcn.h>
+
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -296,7 +298,20 @@ std::vector<std::string> stringList(const py::object& value, const std::string& 
 std::string literal(const py::handle& value) { return py::repr(value).cast<std::string>(); }
 
 std::string defaultStudyPath() {
-  for (const char* dir : {DTWIN_SOURCE_DATA_DIR, DTWIN_INSTALL_DATA_DIR}) {
+  // The module's own folder: <prefix>/lib/python3.X/dist-packages/ after `cmake --install`
+  // (data in <prefix>/share/dtwin/data), or the package folder dtwin/ of the wheel (data beside it).
+  std::vector<std::string> dirs{DTWIN_SOURCE_DATA_DIR};
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&defaultStudyPath), &info) != 0 && info.dli_fname != nullptr) {
+    std::error_code ec;
+    const std::filesystem::path here = std::filesystem::canonical(info.dli_fname, ec).parent_path();
+    if (!ec) {
+      dirs.push_back((here / "data").string());
+      dirs.push_back((here.parent_path().parent_path().parent_path() / "share" / "dtwin" / "data").string());
+    }
+  }
+  dirs.push_back(DTWIN_INSTALL_DATA_DIR);
+  for (const std::string& dir : dirs) {
     const std::filesystem::path p = std::filesystem::path(dir) / "studies" / "demo.toml";
     if (std::filesystem::exists(p)) return p.string();
   }

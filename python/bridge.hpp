@@ -85,7 +85,8 @@ std::vector<std::string> stringList(const py::object& value, const std::string& 
 /// `value` written as a Python literal, for the command recorded in outputs.
 std::string literal(const py::handle& value);
 
-/// The default study: data/studies/demo.toml in the source tree, else the install prefix.
+/// The default study: data/studies/demo.toml in the source tree, else beside the module (the
+/// wheel's dtwin/data, an install prefix's share/dtwin/data), else the configured install prefix.
 std::string defaultStudyPath();
 
 }  // namespace dtwin::python

@@ -29,7 +29,8 @@ fi
 # `import dtwin` in Debian's Python with no setting: a path file in /usr/local's dist-packages (on
 # Debian's sys.path) names this build's module folder. Only as root, and only where that folder is
 # Debian Python's own; elsewhere docs/python.md says to set PYTHONPATH=build/python.
-module=$(ls build/python/dtwin.cpython-*.so 2>/dev/null | head -n 1 || true)
+module=""
+for f in build/python/dtwin.cpython-*.so; do [ -e "$f" ] && module="$f" && break; done
 if [ -n "$module" ] && [ "$(id -u)" -eq 0 ] && [ -x /usr/bin/python3 ]; then
   site=$(/usr/bin/python3 -c 'import sys; print("/usr/local/lib/python%d.%d/dist-packages" % sys.version_info[:2])')
   if /usr/bin/python3 -c "import sys; sys.exit(0 if '$site' in sys.path else 1)" 2>/dev/null; then

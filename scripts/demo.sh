@@ -19,3 +19,13 @@ t_study=$((SECONDS - start - t_setup - t_build))
 t_report=$((SECONDS - start - t_setup - t_build - t_study))
 echo "results in out/study/ (summary.json: wins, recommended, stages); open out/study/report.html"
 echo "wall time: set-up ${t_setup} s, build ${t_build} s, study ${t_study} s, report ${t_report} s, total $((SECONDS - start)) s"
+# The Python module (docs/python.md): `import dtwin` in Debian's Python, with no setting when
+# scripts/build.sh could write its path file (as root), else with PYTHONPATH=build/python.
+modules=(build/python/dtwin.cpython-*.so)
+if [ ! -e "${modules[0]}" ]; then
+  echo "python: no module dtwin (CMake found no pybind11 or Python headers; docs/python.md)"
+elif [ "$(id -u)" -eq 0 ]; then
+  /usr/bin/python3 -c 'import dtwin; print("python: /usr/bin/python3 -c \"import dtwin\" works (dtwin %s, %s)" % (dtwin.__version__, dtwin.__file__))'
+else
+  PYTHONPATH=build/python /usr/bin/python3 -c 'import dtwin; print("python: PYTHONPATH=build/python /usr/bin/python3 -c \"import dtwin\" works (dtwin %s)" % dtwin.__version__)'
+fi

@@ -66,7 +66,7 @@ mkdir -p "$work"
 ( cd "$work" && apt-get source -qq "simbody=$version" >/dev/null 2>&1 ) || {
   echo "simbody: 'apt-get source simbody=$version' failed; the binary package stays in use" >&2
   rm -rf "$work"; exit 1; }
-srcdir="$(find "$work" -mindepth 1 -maxdepth 1 -type d -name 'simbody-*' | head -n1)"
+srcdir="$(find "$work" -mindepth 1 -maxdepth 1 -type d -name 'simbody-*' -print -quit)"
 # Simbody sets its Release flags itself (CMakeLists.txt, BUILD_CXX_FLAGS_RELEASE): raise them there.
 sed -i 's/"-DNDEBUG -O2 ${GCC_OPT_ENABLE}/"'"$flags"' ${GCC_OPT_ENABLE}/' "$srcdir/CMakeLists.txt"
 grep -q -- "$flags" "$srcdir/CMakeLists.txt" || { echo "simbody: could not set the Release flags in $srcdir/CMakeLists.txt" >&2; exit 1; }

@@ -173,6 +173,15 @@ void CalibrationRun::profile() {
     });
   }
   warnOtherBasins(basins);
+  // A point the later stages evaluated (the ridge floor, the design, another start's end) below
+  // the optimiser's optimum: the intervals are drawn about it (its SSE is sse_best), so it is the
+  // calibration's optimum from here on (the integrator check, the summary, the comparisons).
+  if (res_.profile.best_point.size() == d_ && res_.profile.sse_best < res_.optimum.sse) {
+    res_.warnings.push_back("an evaluated point has a lower SSE (" + formatNumber(res_.profile.sse_best, 6) + ") than the optimiser's optimum (" +
+                            formatNumber(res_.optimum.sse, 6) + "): it is the optimum from the profile on (optimum.json keeps the optimiser's)");
+    res_.optimum.theta = res_.profile.best_point;
+    res_.optimum.sse = res_.profile.sse_best;
+  }
   res_.stage_wall_s.push_back({"profile", secondsSince(t0)});
 }
 

@@ -104,8 +104,12 @@ ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>
   p.sse = sse;
   p.dof = n_data > d ? n_data - d : n_data;
   p.sse_best = std::numeric_limits<double>::infinity();
-  for (double s : sse)
-    if (std::isfinite(s)) p.sse_best = std::min(p.sse_best, s);
+  for (Eigen::Index k = 0; k < points.rows(); ++k)
+    if (const double s = sse[static_cast<std::size_t>(k)]; std::isfinite(s) && s < p.sse_best) {
+      p.sse_best = s;
+      p.best_point.resize(static_cast<std::size_t>(d));
+      for (int j = 0; j < d; ++j) p.best_point[static_cast<std::size_t>(j)] = points(k, j);
+    }
   if (!std::isfinite(p.sse_best)) throw InputError("profile interval", "no evaluated point has a finite SSE");
   p.s2 = p.sse_best / p.dof;
   const double t = studentQuantile(0.5 + 0.5 * options.level, p.dof);
@@ -379,6 +383,7 @@ ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<Profi
   out.c = plan.c;
   out.s2 = plan.s2;
   out.sse_best = plan.sse_best;
+  out.best_point = plan.best_point;
   out.threshold = plan.threshold;
   out.thresholds = plan.thresholds;
   out.correlation = plan.correlation;
@@ -411,7 +416,8 @@ nlohmann::json ProfileIntervals::toJson() const {
           {"evaluations", evaluations}, {"end_evaluations", end_evaluations},
           {"end_points", end_steps},    {"end_jacobians", end_jacobians},
           {"end_outside_points", end_outside},
-          {"thresholds", thresholds},   {"correlation", correlation.toJson()}};
+          {"thresholds", thresholds},   {"correlation", correlation.toJson()},
+          {"best_point", best_point}};
 }
 
 ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
@@ -433,6 +439,7 @@ ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
   p.end_steps = j.value("end_points", std::vector<int>{});
   p.end_jacobians = j.value("end_jacobians", std::vector<int>{});
   p.end_outside = j.value("end_outside_points", std::vector<int>{});
+  p.best_point = j.value("best_point", std::vector<double>{});
   return p;
 }
 

@@ -83,6 +83,7 @@ struct ProfilePlan {
   std::vector<double> low_sse, high_sse;
   Eigen::MatrixXd points;                  ///< every evaluated point (physical), for restarts
   std::vector<double> sse;                 ///< their SSE (+inf: failed)
+  std::vector<double> best_point;          ///< the point whose SSE is sse_best
 };
 
 /// `points` N x d (physical), `sse` N (+inf: failed). Throws InputError when no SSE is finite.
@@ -111,6 +112,9 @@ struct ProfileIntervals {
   std::vector<double> thresholds;     ///< per parameter (ProfilePlan::thresholds)
   CorrelationAdjustment correlation;  ///< blocks 0: the residuals taken as independent
   int dof = 0, evaluations = 0;
+  /// The evaluated point whose SSE is sse_best (physical); empty when read from an older
+  /// profile.json. Below the optimiser's optimum, it is the calibration's optimum (CalibrationRun::profile).
+  std::vector<double> best_point;
   /// Per end, in index order (parameter j's lower end at 2j): simulations, profile points that
   /// moved the end, finite-difference Jacobians. Empty when read from an older profile.json.
   std::vector<int> end_evaluations, end_steps, end_jacobians, end_outside;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <set>
 
@@ -241,37 +242,54 @@ std::string structureOf(const Candidate& c) {
 void structureFirst(Diagnosis& d, const std::vector<const Candidate*>& named) {
   auto& res = d.res;
   if (named.empty() || structureOf(*named.front()).empty()) return;
-  std::set<std::string> seen{structureOf(*named.front())};
-  std::vector<Candidate> members;
+  // The other structures' strong candidates, grouped by structure in the order of each group's
+  // best first-stage evidence (named is ordered by it).
+  std::vector<std::string> keys;
+  std::map<std::string, std::vector<Candidate>> groups;
   for (const Candidate* c : named)
-    if (const auto s = structureOf(*c); !s.empty() && seen.insert(s).second) members.push_back(*c);
-  for (auto& c : members) {
+    if (const auto s = structureOf(*c); !s.empty() && s != structureOf(*named.front())) {
+      if (!groups.count(s)) keys.push_back(s);
+      groups[s].push_back(*c);
+    }
+  for (const auto& key : keys) {
     if (static_cast<int>(res.causes.size()) >= d.options.causes) break;
     d.installed.clear();
     for (const auto& k : res.causes) d.installed.push_back(k.name);
-    // Its own values at the first stage's optimum: a start beside the off values.
-    std::vector<double> own;
-    for (const auto& p : d.parametersOf(c.effect, *c.fit)) own.push_back(p.optimum);
-    if (own.size() != d.spec(c.effect).calibrated_names.size()) own.clear();
-    c.fit.reset();
-    c.confirmed = false;
-    c.holdout_change.reset();
     res.further.push_back({d.installed, {}});
-    const std::string stage = "structure " + c.effect + " on " + joinEffects(d.installed);
-    if (!d.isolated(stage, [&] { c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, own, {}, false); })) {
-      res.further.pop_back();
-      continue;
+    // Each strong candidate of the structure (the road signal at one corner, or at all four
+    // wheels at once) on top of the causes so far: the best of them is the structure's.
+    for (auto c : groups.at(key)) {
+      // Its own values at the first stage's optimum: a start beside the off values.
+      std::vector<double> own;
+      for (const auto& p : d.parametersOf(c.effect, *c.fit)) own.push_back(p.optimum);
+      if (own.size() != d.spec(c.effect).calibrated_names.size()) own.clear();
+      c.fit.reset();
+      c.confirmed = false;
+      c.holdout_change.reset();
+      const std::string stage = "structure " + c.effect + " on " + joinEffects(d.installed);
+      if (!d.isolatedStep([&] { c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, own, {}, false); },
+                          [&](const std::string& reason) { c.failed = "its confirming calibration failed: " + reason; })) {
+        c.fit.reset();
+        res.further.back().candidates.push_back(c);
+        continue;
+      }
+      c.confirmed = true;
+      c.inert = isInert(d, c);
+      c.finding = d.findingOf(c.effect, *c.fit);
+      weigh(d, c, res.causes.back().fit);
+      res.further.back().candidates.push_back(c);
     }
-    c.confirmed = true;
-    c.inert = isInert(d, c);
-    c.finding = d.findingOf(c.effect, *c.fit);
-    c.evidence_gap = 0;
-    const Figures& ref = res.causes.back().fit;
-    weigh(d, c, ref);
-    res.further.back().candidates.push_back(c);
-    d.reference = &ref;
-    explainStage(d, ref.comparison);
-    if (c.delta_bic < -d.options.bic_strong && !c.inert) res.causes.push_back(causeOf(res.further.back().candidates.back(), {}));
+    auto& cands = res.further.back().candidates;
+    std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
+      if (a.confirmed != b.confirmed) return a.confirmed;
+      return a.confirmed && a.fit->log_evidence > b.fit->log_evidence;
+    });
+    for (auto& c : cands)
+      if (c.confirmed) c.evidence_gap = cands.front().fit->log_evidence - c.fit->log_evidence;
+    d.reference = &res.causes.back().fit;
+    explainStage(d, d.reference->comparison);
+    const auto strong = strongOf(cands, d.options);
+    if (!strong.empty()) res.causes.push_back(causeOf(*strong.front(), alikeOf(strong, d.options)));
   }
   d.installed.clear();
   for (std::size_t k = 0; k + 1 < res.causes.size(); ++k) d.installed.push_back(res.causes[k].name);

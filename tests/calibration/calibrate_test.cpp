@@ -85,6 +85,14 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
   // The region holds the optimum; a design point better than the optimum is reported.
   const double best_design = *std::min_element(r1.sse.begin(), r1.sse.end());
   EXPECT_EQ(r1.toJson()["design"]["better_than_optimum"].get<bool>(), best_design < r1.optimum.sse);
+  // The optimum is the best point the calibration evaluated (the optimiser's, or a later stage's
+  // below it), and lies inside every profile interval drawn about it.
+  EXPECT_LE(r1.optimum.sse, best_design);
+  EXPECT_LE(r1.optimum.sse, r1.profile.sse_best);
+  for (std::size_t k = 0; k < r1.names.size(); ++k) {
+    EXPECT_LE(r1.profile.lower[k], r1.optimum.theta[k]) << r1.names[k];
+    EXPECT_GE(r1.profile.upper[k], r1.optimum.theta[k]) << r1.names[k];
+  }
   EXPECT_EQ(r1.region.kind, "joint");
   EXPECT_TRUE(r1.region.contains(r1.region.toScaled(r1.optimum.theta)));
   EXPECT_EQ(r1.rounds.rounds.size(), 3u);  // round 0 and two adaptive rounds (they never settle at these sizes)

@@ -47,6 +47,9 @@ TEST(Profile, ThresholdIsTheFQuantileOfTheEstimatedVariance) {
   // Inside (<= 46 + 3.95): 0.2 (SSE 50 > threshold? 50 > 49.95, outside) and 0.5.
   EXPECT_DOUBLE_EQ(p.low_point[0][0], 0.5);
   EXPECT_DOUBLE_EQ(p.high_point[0][0], 0.5);
+  // The point of the best SSE, which a calibration takes as its optimum when it beats the optimiser's.
+  ASSERT_EQ(p.best_point.size(), 1u);
+  EXPECT_DOUBLE_EQ(p.best_point[0], 0.5);
   EXPECT_THROW(planProfile(pts, {INFINITY, NAN, INFINITY}, kN, {0.0}, {1.0}, {}), InputError);
 }
 

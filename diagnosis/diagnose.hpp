@@ -48,8 +48,7 @@ struct DiagnoseOptions {
   int candidates = 6;
   double confirm_within = 2.0;       ///< screening scores within this factor of the best are confirmed side by side
   /// Rounds of the budget per stage (docs/diagnosis.md, "Confirmation"): after a round, the next
-  /// `candidates` within the factor are confirmed too when their screening score (the SSE the
-  /// linearised model says they remove) exceeds the largest drop a confirmed candidate achieved.
+  /// `candidates` of those within the factor are confirmed too, up to this many rounds.
   int confirm_rounds = 3;
   /// At most this many causes named by forward stagewise selection (docs/diagnosis.md, "More
   /// than one cause"); 1: the best candidate alone, as before.
@@ -149,9 +148,6 @@ struct Candidate {
   /// named, whatever its ΔBIC (which then comes from the reference's optimum polished further).
   bool inert = false;
   std::optional<Figures> fit;  ///< the re-calibration with the effect (confirmed candidates)
-  /// Not confirmed because a confirmed candidate of its stage removed more of the weighted SSE
-  /// (this drop) than its screening score promises (0: not so judged).
-  double outscored_by = 0;
   double evidence_gap = 0;   ///< confirmed: log evidence below the best confirmed candidate's (>= 0)
   double delta_bic = 0;      ///< BIC(with effect) − BIC(base)
   double explained = 0;      ///< share of the base's excess residual (χ² − dof) it removes

@@ -116,26 +116,15 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   };
   round(to_confirm, 0);
   // The screening score is the weighted SSE the linearised model says a candidate removes. A
-  // candidate whose model is far from linear there (its best values move the others far: a
-  // controller beside a sensor's place) may remove much more, or much less: while a candidate
-  // within the factor promises more than the largest drop a confirmed one achieved, the
-  // screening cannot rule it out, and the next round of the budget confirms it.
-  const double ref_sse = (d.installed.empty() ? d.res.base : *d.reference).sse_min;
-  auto drop = [&] {
-    double best_drop = 0;
-    for (std::size_t i : optimised) best_drop = std::max(best_drop, ref_sse - cands[i].fit->sse_min);
-    return best_drop;
-  };
+  // candidate whose best values move the others far (a controller beside a sensor's fitted place,
+  // a delay against a low-pass) may remove three times its score, or a tenth of it: the order
+  // within the factor is not to be trusted, so the next rounds of the budget confirm the
+  // candidates within it that the first left out.
   for (int r = 1; r < d.options.confirm_rounds; ++r) {
-    std::set<std::size_t> out = tried;  // the tried ones and those promising no more than the drop
-    for (std::size_t i = 0; i < cands.size(); ++i)
-      if (cands[i].score <= drop()) out.insert(i);
-    const auto next = chooseConfirmations(cands, d.options, out);
+    const auto next = chooseConfirmations(cands, d.options, tried);
     if (next.empty()) break;
     round(next, r);
   }
-  for (std::size_t i = 0; i < cands.size(); ++i)
-    if (!tried.count(i) && cands[i].score > 0 && cands[i].score <= drop()) cands[i].outscored_by = drop();
   double best = -std::numeric_limits<double>::infinity();
   for (std::size_t i : optimised) best = std::max(best, cands[i].fit->log_evidence);
   const double margin = std::max(d.options.full_within, d.options.ambiguity_log_evidence);

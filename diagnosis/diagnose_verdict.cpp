@@ -122,13 +122,10 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
   if (!c.confirmed)
     return c.effect + ": screening score " + fmt("%.3g", c.score) + " (p = " + fmt("%.2g", c.p_value) + ")" +
            (c.p_value < options.screen_alpha
-                ? (c.outscored_by > 0 && c.score * options.confirm_within >= best_score
-                       ? ", within a factor " + fmt("%.3g", options.confirm_within) +
-                             " of the best score, but no more than the weighted SSE a confirmed candidate removed (" +
-                             fmt("%.3g", c.outscored_by) + "): not confirmed"
-                   : c.score * options.confirm_within >= best_score
+                ? (c.score * options.confirm_within >= best_score
                        ? ", within a factor " + fmt("%.3g", options.confirm_within) + " of the best score but beyond the budget of " +
-                             std::to_string(options.candidates) + " confirmations (--candidates)"
+                             std::to_string(options.candidates) + " confirmations per round and " + std::to_string(options.confirm_rounds) +
+                             " rounds (--candidates)"
                        : ", more than a factor " + fmt("%.3g", options.confirm_within) +
                              " below the best score and not the best of its kind: not confirmed")
                 : ": explains nothing beyond noise") +
@@ -415,7 +412,6 @@ void candidatesJson(const std::vector<Candidate>& candidates, double ref_log_evi
                      {"max_signal", c.max_signal}, {"gate", c.gate},       {"confirmed", c.confirmed}, {"why", c.why},
                      {"signature", c.signature}};
     if (!c.failed.empty()) s["failed"] = c.failed;
-    if (c.outscored_by > 0) s["outscored_by"] = c.outscored_by;
     j["screening"].push_back(s);
     if (!c.confirmed) continue;
     nlohmann::json r{{"effect", c.effect},

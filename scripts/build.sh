@@ -11,21 +11,36 @@ cd "$(dirname "$0")/.."
 simbody() {
   bash scripts/simbody.sh || echo "build: the Release Simbody could not be built; using Debian's binary package (about half the speed)"
 }
+# Each phase's wall time, printed at the end (docs/performance.md, "Which Simbody": the newcomer's path).
+phases=""
+phase_start=$SECONDS
+phase() {  # phase NAME: the time since the last phase ends here
+  phases="$phases${phases:+, }$1 $((SECONDS - phase_start)) s"
+  phase_start=$SECONDS
+}
 if [ "${1:-}" = "--demo" ]; then
   bash scripts/setup.sh demo
+  phase packages
   simbody
+  phase simbody
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=OFF
   cmake --build build -j"$(nproc)" --target twin
+  phase twin
   # The Python module (docs/python.md), when CMake found pybind11 and Python's headers.
   if cmake --build build --target help | grep "dtwin_python" >/dev/null; then
     cmake --build build -j"$(nproc)" --target dtwin_python
+    phase "python module"
   fi
 else
   bash scripts/setup.sh
+  phase packages
   simbody
+  phase simbody
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=ON
   cmake --build build -j"$(nproc)"
+  phase "twin, python module and tests"
 fi
+echo "build phases: $phases"
 # `import dtwin` in Debian's Python with no setting: a path file in /usr/local's dist-packages (on
 # Debian's sys.path) names this build's module folder. Only as root, and only where that folder is
 # Debian Python's own; elsewhere docs/python.md says to set PYTHONPATH=build/python.

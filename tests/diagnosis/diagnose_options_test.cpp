@@ -264,19 +264,24 @@ TEST(DiagnoseText, AnUnresolvedPosteriorPrintsTheOptimumNotAMeanAndSd) {
   EXPECT_EQ(t.find("not resolved"), std::string::npos) << t;
 }
 
+namespace {
+/// A screened candidate of `kind` with screening score `score` (an option is not screened: p = 1).
+dtwin::diag::Candidate screenedCandidate(const std::string& name, const std::string& kind, double score) {
+  dtwin::diag::Candidate c;
+  c.effect = name;
+  c.kind = kind;
+  c.score = score;
+  c.p_value = kind == "option" ? 1.0 : 0.0;
+  return c;
+}
+}  // namespace
+
 // The confirmation budget: within the factor of the best score, the best of each kind first, so
 // that two mirror images of one cause do not take the slots of a cause of another kind; then the
 // others by score; then the best of each kind beyond the factor; options beyond the budget.
 TEST(DiagnoseConfirm, TheBudgetGoesToEachKindsBestFirst) {
   using dtwin::diag::Candidate;
-  auto cand = [](const std::string& name, const std::string& kind, double score) {
-    Candidate c;
-    c.effect = name;
-    c.kind = kind;
-    c.score = score;
-    c.p_value = kind == "option" ? 1.0 : 0.0;  // another option is not screened
-    return c;
-  };
+  auto cand = screenedCandidate;
   const std::vector<Candidate> cands = {cand("free:road.fl_only", "input", 7.0e5), cand("free:road.fr_only", "input", 6.95e5),
                                         cand("place:seat", "place", 6.9e5),        cand("free:tire.stiffness@fl", "parameter", 5.2e5),
                                         cand("gain:seat", "sensor", 1.0e5),         cand("tire=hub", "option", 0.0)};
@@ -304,14 +309,7 @@ TEST(DiagnoseConfirm, TheBudgetGoesToEachKindsBestFirst) {
 // score of all; no candidate beyond the factor and no option is added again.
 TEST(DiagnoseConfirm, ALaterRoundTakesTheNextWithinTheFactor) {
   using dtwin::diag::Candidate;
-  auto cand = [](const std::string& name, const std::string& kind, double score) {
-    Candidate c;
-    c.effect = name;
-    c.kind = kind;
-    c.score = score;
-    c.p_value = kind == "option" ? 1.0 : 0.0;
-    return c;
-  };
+  auto cand = screenedCandidate;
   // Scores as on a car whose controller moves the sensor's fitted place: the sensor model and the
   // widened range screen best, the controllers just behind.
   const std::vector<Candidate> cands = {cand("lowpass:seat", "sensor", 1505), cand("widen:chassis.pitch_inertia_kgm2", "range", 1299),

@@ -7,7 +7,6 @@ CTest sets DTWIN_BUILD_DIR, DTWIN_SOURCE_DIR and DTWIN_SIMBODY_RELEASE (empty fo
 Simbody)."""
 import os
 import re
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -16,18 +15,8 @@ BUILD = os.environ["DTWIN_BUILD_DIR"]
 SIMBODY_RELEASE = os.environ.get("DTWIN_SIMBODY_RELEASE", "")
 
 
-def run(cmd, **kw):
-    r = subprocess.run(cmd, capture_output=True, text=True, **kw)
-    if r.returncode != 0:
-        raise AssertionError(f"{' '.join(cmd)}: exit {r.returncode}\n{r.stdout[-3000:]}\n{r.stderr[-3000:]}")
-    return r.stdout
-
-
-def resolved(elf, library, env):
-    """Where the loader finds `library` for `elf` (ldd), its links resolved."""
-    m = re.search(r"(?m)^\s*%s => (\S+)" % re.escape(library), run(["ldd", elf], env=env))
-    assert m, f"ldd {elf}: {library} not found"
-    return os.path.realpath(m.group(1))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from install_testing import resolved, run  # noqa: E402,F401
 
 
 class Deb(unittest.TestCase):

@@ -11,6 +11,10 @@ cd "$(dirname "$0")/.."
 simbody() {
   bash scripts/simbody.sh || echo "build: the Release Simbody could not be built; using Debian's binary package (about half the speed)"
 }
+# Ninja where it is installed (setup.sh installs it): about 15 % faster than make on 2 cores. A
+# build folder keeps the generator it was first configured with.
+gen=()
+if [ ! -f build/CMakeCache.txt ] && command -v ninja >/dev/null; then gen=(-G Ninja); fi
 # Each phase's wall time, printed at the end (docs/performance.md, "Which Simbody": the newcomer's path).
 phases=""
 phase_start=$SECONDS
@@ -23,11 +27,11 @@ if [ "${1:-}" = "--demo" ]; then
   phase packages
   simbody
   phase simbody
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=OFF
+  cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=OFF
   cmake --build build -j"$(nproc)" --target twin
   phase twin
   # The Python module (docs/python.md), when CMake found pybind11 and Python's headers.
-  if cmake --build build --target help | grep "dtwin_python" >/dev/null; then
+  if [ -d build/python/CMakeFiles/dtwin_python.dir ]; then
     cmake --build build -j"$(nproc)" --target dtwin_python
     phase "python module"
   fi
@@ -36,7 +40,7 @@ else
   phase packages
   simbody
   phase simbody
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=ON
+  cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=ON
   cmake --build build -j"$(nproc)"
   phase "twin, python module and tests"
 fi

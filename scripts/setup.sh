@@ -3,7 +3,7 @@
 # Safe to run repeatedly. Needs root (or sudo) for apt-get. `setup.sh demo`: the demo's only;
 # `setup.sh fuzz`: also clang and its sanitizer/libFuzzer runtimes (scripts/fuzz.sh).
 set -euo pipefail
-PKGS=(build-essential cmake pkg-config git
+PKGS=(build-essential cmake ninja-build pkg-config git
       libsimbody-dev libeigen3-dev libnlopt-cxx-dev libnlopt-dev
       googletest libgtest-dev libgmock-dev
       libcli11-dev libtomlplusplus-dev nlohmann-json3-dev

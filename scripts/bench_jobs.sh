@@ -211,7 +211,7 @@ for r in "${rows[@]}"; do
     fresh_demo)
       rm -rf "$D/fresh_demo" "$D/fresh_cache"
       git clone -q . "$D/fresh_demo"
-      timed fresh_demo "$D/fresh_demo.log" env DTWIN_CACHE_DIR="$D/fresh_cache" bash "$D/fresh_demo/scripts/demo.sh"
+      timed fresh_demo "$D/fresh_demo.log" env DTWIN_CACHE_DIR="$D/fresh_cache" CCACHE_DISABLE=1 bash "$D/fresh_demo/scripts/demo.sh"
       ;;
     hand_ode)
       "$B" bench --hand-ode --runs 30 >"$D/hand_ode.txt" 2>&1

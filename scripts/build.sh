@@ -4,7 +4,7 @@
 #   build.sh --demo   only the `twin` program, the Python module dtwin and the packages they need
 #                     (scripts/demo.sh)
 # Both first build Debian's Simbody with Release flags into a cache outside the repository, once
-# per machine (scripts/simbody.sh, about 2.5 minutes on 2 cores); if that fails the project links
+# per machine (scripts/simbody.sh, about 2 minutes on 2 cores); if that fails the project links
 # Debian's binary Simbody instead (about half the speed) and says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,12 +28,14 @@ if [ "${1:-}" = "--demo" ]; then
   simbody
   phase simbody
   cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DDTWIN_BUILD_TESTS=OFF
-  cmake --build build -j"$(nproc)" --target twin
-  phase twin
-  # The Python module (docs/python.md), when CMake found pybind11 and Python's headers.
+  # The program and the Python module (docs/python.md, when CMake found pybind11 and Python's
+  # headers) in one build, so that the module's bindings compile beside the program's last sources.
   if [ -d build/python/CMakeFiles/dtwin_python.dir ]; then
-    cmake --build build -j"$(nproc)" --target dtwin_python
-    phase "python module"
+    cmake --build build -j"$(nproc)" --target twin dtwin_python
+    phase "twin and python module"
+  else
+    cmake --build build -j"$(nproc)" --target twin
+    phase twin
   fi
 else
   bash scripts/setup.sh

@@ -7,10 +7,11 @@
 # range, stage and argument check of Simbody runs inside each step, and a run is about twice as slow.
 #
 # The libraries are compiled as a unity build (batches of 8 sources, each batch one compiler run;
-# the sources that do not compile beside others alone): about 2.5 minutes on 2 cores instead of 4.
-# Where the unity build fails (another Simbody version), the ordinary build follows.
+# the sources that do not compile beside others alone), and the code the twin never runs at -O1:
+# about 2 minutes on 2 cores instead of 4. Where the unity build fails (another Simbody version),
+# the ordinary build follows.
 #
-#   simbody.sh          build it if it is missing (about 2.5 minutes on 2 cores, once)
+#   simbody.sh          build it if it is missing (about 2 minutes on 2 cores, once)
 #   simbody.sh --where  print the folder it is (or would be) installed in, build nothing
 #
 # The cache is $DTWIN_CACHE_DIR, else $XDG_CACHE_HOME/dtwin, else ~/.cache/dtwin. A build that is
@@ -25,7 +26,11 @@ if [ -z "$version" ]; then
 fi
 prefix="$cache/simbody-${version}-release"
 flags="-DNDEBUG -O3 -fno-semantic-interposition"
-recipe="Simbody $version (Debian source package, Release: $flags, libraries only)"
+# The multibody library's own batches are large enough to stop GCC's inlining at its unit-growth
+# limit: raised there, the twin's runs are about 7 % faster than with the library compiled source
+# by source (docs/performance.md, "Which Simbody").
+inline="--param=inline-unit-growth=400"
+recipe="Simbody $version (Debian source package, Release: $flags, SimTKsimbody $inline, libraries only)"
 if [ "${1:-}" = "--where" ]; then echo "$prefix"; exit 0; fi
 present() { [ -f "$prefix/dtwin-build.txt" ] && [ "$(head -n1 "$prefix/dtwin-build.txt")" = "$recipe" ]; }
 if present; then
@@ -75,18 +80,53 @@ srcdir="$(find "$work" -mindepth 1 -maxdepth 1 -type d -name 'simbody-*' -print 
 sed -i 's/"-DNDEBUG -O2 ${GCC_OPT_ENABLE}/"'"$flags"' ${GCC_OPT_ENABLE}/' "$srcdir/CMakeLists.txt"
 grep -q -- "$flags" "$srcdir/CMakeLists.txt" || { echo "simbody: could not set the Release flags in $srcdir/CMakeLists.txt" >&2; exit 1; }
 # The unity build's exceptions: sources that declare BLAS/LAPACK or f2c names their own way, reuse
-# a static helper's name or define macros (the polynomial solvers, the random generator), and the C
-# sources, each compiled alone. Source properties hold in the folder that defines the library.
+# a static helper's name or define macros (the polynomial solvers, the random generator, the contact
+# tracker), and the C sources, each compiled alone. Source properties hold in the folder that
+# defines the library.
+# Code the twin never runs (the optimizers with Ipopt, contact geometry and contact forces, cables,
+# the assembler and point fitters, the visualizer client, XML and meshes) is compiled at -O1, in
+# batches of 16 of its own: a fifth less compiler time; what the twin runs (the multibody tree,
+# the integrators, linear algebra, SimTKcommon's core) keeps the Release flags above.
 for lib in SimTKcommon SimTKmath Simbody; do
-  cat >>"$srcdir/$lib/sharedTarget/CMakeLists.txt" <<'EOF'
+  cat >>"$srcdir/$lib/sharedTarget/CMakeLists.txt" <<'EOF2'
 # scripts/simbody.sh (dtwin): the sources compiled alone in a unity build
 foreach(f ${SOURCE_FILES})
-  if(f MATCHES "/(cpoly|rpoly|gcvspl|ParallelWorkQueue|IpLapack|IpLapackSolverInterface|IpBlas|lbfgs|lbfgsb|LapackInterface|About|SFMT|Random|HuntCrossleyForce|PLUSImpulseSolver)\\.cpp$" OR f MATCHES "\\.c$")
+  if(f MATCHES "/(cpoly|rpoly|gcvspl|ParallelWorkQueue|IpLapack|IpLapackSolverInterface|IpBlas|lbfgs|lbfgsb|LapackInterface|About|SFMT|Random|HuntCrossleyForce|PLUSImpulseSolver|ContactTracker)\\.cpp$" OR f MATCHES "\\.c$")
     set_source_files_properties(${f} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
   endif()
 endforeach()
-EOF
+# scripts/simbody.sh (dtwin): code the twin never runs, at -O1 in batches of 16 (dtwin_cold_N.cpp)
+set(_dtwin_cold "")
+foreach(f ${SOURCE_FILES})
+  if(f MATCHES "/Optimizers/|/Geometry/|/(Cable[A-Za-z]*|[A-Za-z_]*Contact[A-Za-z_]*|HuntCrossley[A-Za-z]*|[A-Za-z]*ImpulseSolver|ElasticFoundationForce|Visualizer[A-Za-z_]*|ObservedPointFitter|LocalEnergyMinimizer|Assembler|AssemblyCondition_[A-Za-z]*|TextDataEventReporter|SmoothSphereHalfSpaceForce|OBSOLETE_LengthConstraints|DecorationSubsystem|Force_Thermostat|Xml|tinyxml[a-z]*|PolygonalMesh|DecorativeGeometry)\\.cpp$")
+    get_source_file_property(_dtwin_alone ${f} SKIP_UNITY_BUILD_INCLUSION)
+    if(_dtwin_alone OR f MATCHES "\\.c$")
+      set_source_files_properties(${f} PROPERTIES COMPILE_OPTIONS "-O1")
+    else()
+      set_source_files_properties(${f} PROPERTIES HEADER_FILE_ONLY ON)
+      list(APPEND _dtwin_cold ${f})
+    endif()
+  endif()
+endforeach()
+list(LENGTH _dtwin_cold _dtwin_len)
+set(_dtwin_n 0)
+set(_dtwin_text "")
+foreach(f ${_dtwin_cold})
+  string(APPEND _dtwin_text "#include \"${f}\"\n")
+  math(EXPR _dtwin_n "${_dtwin_n} + 1")
+  math(EXPR _dtwin_r "${_dtwin_n} % 16")
+  if(_dtwin_r EQUAL 0 OR _dtwin_n EQUAL _dtwin_len)
+    math(EXPR _dtwin_k "(${_dtwin_n} - 1) / 16")
+    set(_dtwin_file "${CMAKE_CURRENT_BINARY_DIR}/dtwin_cold_${_dtwin_k}.cpp")
+    file(WRITE "${_dtwin_file}" "${_dtwin_text}")
+    target_sources(${SHARED_TARGET} PRIVATE "${_dtwin_file}")
+    set_source_files_properties("${_dtwin_file}" PROPERTIES COMPILE_OPTIONS "-O1" SKIP_UNITY_BUILD_INCLUSION ON)
+    set(_dtwin_text "")
+  endif()
+endforeach()
+EOF2
 done
+echo "target_compile_options(\${SHARED_TARGET} PRIVATE $inline)  # scripts/simbody.sh (dtwin)" >>"$srcdir/Simbody/sharedTarget/CMakeLists.txt"
 echo "simbody: building Debian's simbody $version with Release flags into $prefix (once per machine)"
 gen=()
 command -v ninja >/dev/null && gen=(-G Ninja)
@@ -100,7 +140,7 @@ configure() {  # configure UNITY(ON|OFF): a fresh $work/build
     -DBUILD_DYNAMIC_LIBRARIES=ON -DBUILD_STATIC_LIBRARIES=OFF -DINSTALL_DOCS=OFF >"$work/configure.log" 2>&1 || {
     echo "simbody: configure failed ($work/configure.log); the binary package stays in use" >&2; exit 1; }
 }
-how="unity build"
+how="unity build; code the twin never runs at -O1"
 configure ON
 if ! cmake --build "$work/build" -j"$(nproc)" >"$work/build.log" 2>&1; then
   echo "simbody: the unity build failed ($work/build-unity.log); building source by source"

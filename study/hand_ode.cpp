@@ -57,7 +57,7 @@ long Ros34pw2Stepper::jacobians() const { return impl_->n_jacs; }
 
 // ----------------------------------------------------------------------------- the vehicle
 //
-// Kinematics (those of Simulator::Impl::build): the chassis frame sits at the CG, height z, with
+// Kinematics (those the simulator's VehicleSystem builds): the chassis frame sits at the CG, height z, with
 // rotation R = Rx(phi) Ry(theta) (Simbody's Universal: about x, then about the new y). Wheel i's
 // centre, body and strut slide along the chassis z through (x_i, y_i, w) in the chassis, w the
 // wheel centre below the CG (R0 - cg_height): s_i = R (x_i, y_i, w + u_i) from the CG. The
@@ -227,8 +227,8 @@ Eigen::VectorXd HandOde::equilibrium() const {
     const double rho = model_.tire().calcStaticDeflection(model_.staticTireLoad(c), tp);
     target[static_cast<std::size_t>(c)] = road_.sample(cornerTrack(c), isFront(c) ? 0.0 : -wb).height_m + R0_ - rho;
   }
-  // Newton on (heave, pitch, roll) for the FL, FR, RL hub heights: Simulator::Impl::setEquilibrium's
-  // iteration (start, difference step and tolerance), so both runs start from the same state.
+  // Newton on (heave, pitch, roll) for the FL, FR, RL hub heights: the iteration of the
+  // simulator's StaticStart (its start, difference step and tolerance), so both runs start from the same state.
   Eigen::VectorXd y = Eigen::VectorXd::Zero(kStates);
   auto residual = [&](const Eigen::Vector3d& x) {
     const HandFrame fr(x[2], x[1], 0.0, 0.0);
@@ -271,13 +271,13 @@ HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const R
                       const SimulationOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   const HandOde ode(m, values, road, sc.speed);
-  RosenbrockOptions ro;  // as Simulator::Impl::integrate sets them
+  RosenbrockOptions ro;  // as the simulator's Stepper::integrate sets them
   ro.accuracy = o.accuracy;
   ro.max_step_s = o.max_step_s;
   ro.max_steps = o.max_internal_steps;
   Ros34pw2Stepper st([&ode](double t, const Eigen::VectorXd& y, Eigen::VectorXd& yd) { ode.rhs(t, y, yd); }, ro);
   st.initialize(0.0, ode.equilibrium());
-  // Knots: per step and corner the hub's (x, xd, z, zd, zdd), as Simulator::Impl::record.
+  // Knots: per step and corner the hub's (x, xd, z, zd, zdd), as the simulator's Stepper::record.
   std::vector<double> times;
   std::vector<std::array<HandOde::Hub, 4>> knots;
   auto record = [&] {
@@ -294,7 +294,7 @@ HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const R
       record();
     }
   }
-  // The output grid and its dense output (Simulator::Impl::makeOutput / writeRows).
+  // The output grid and its dense output (the simulator's Recorder::makeOutput / writeRows).
   HandOdeRun r;
   const std::size_t n = static_cast<std::size_t>(std::floor(times.back() * o.output_rate_hz + 1e-9)) + 1;
   r.time_s.resize(n);

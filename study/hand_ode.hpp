@@ -8,7 +8,7 @@
 //    that both models are integrated by the same method at the same tolerance.
 //  * HandOde: the nonlinear equations of motion of a MacPherson assembly (chassis heave z, roll
 //    phi, pitch theta, four wheel travels u_i along the chassis z), derived by hand from the
-//    kinematics the simulator builds in Simbody (twin/simulator.cpp), with the project's own force
+//    kinematics the simulator builds in Simbody (twin/vehicle_system.cpp), with the project's own force
 //    laws (the model's tire law, its strut law) and the scenario's road and speed.
 //  * benchHandOde: the wall time of one run of each, their step and evaluation counts, and how
 //    closely their front-left hub forces agree (`twin bench --hand-ode`, docs/performance.md).
@@ -77,7 +77,7 @@ class HandOde {
   /// `values` is a run vector of `m` (m.defaultRunValues()); `road` must outlive this object.
   HandOde(const Model& m, std::vector<double> values, const Road& road, const SpeedProfile& speed);
 
-  /// The simulator's start state (Simulator::Impl::setEquilibrium): wheels at zero travel and
+  /// The simulator's start state (the simulator's StaticStart, twin/static_start.hpp): wheels at zero travel and
   /// rest, and heave, pitch and roll such that the FL, FR and RL hubs sit at the road height plus
   /// R0 minus the static deflection under their static tire loads.
   Eigen::VectorXd equilibrium() const;

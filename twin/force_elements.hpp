@@ -1,6 +1,8 @@
 // Private to twin/ (not installed): the Simbody force elements of the vehicle (tires, struts, axle
-// couplings, chassis forces, gravity with the frame's acceleration) and the per-run data they read.
-// Included by simulator.cpp alone, which is kept out of the unity batches (CMakeLists.txt): SimTK is open.
+// couplings, chassis forces, gravity with the frame's acceleration) and the per-run data they read
+// (namespace dtwin::sim, with the simulator's parts: vehicle_system.hpp builds the system from
+// them). Included by those parts alone, which are kept out of the unity batches (CMakeLists.txt):
+// SimTK is open.
 #pragma once
 
 #include <algorithm>
@@ -16,15 +18,15 @@ namespace dtwin {
 using namespace SimTK;
 
 // ----------------------------------------------------------------------- force elements
-namespace {
+namespace sim {
 
-/// Per-run data the force elements read (owned by the Simulator, set before each run).
+/// Per-run data the force elements read (in the VehicleSystem; the Simulator sets it before each run).
 struct RunContext {
   const double* p = nullptr;
   const Road* road = nullptr;
   SpeedProfile speed;
   double traction_per_wheel_per_accel = 0.0;  ///< M/4: traction share per unit acceleration
-  /// The chassis's heave, pitch and roll coordinates at the start (setEquilibrium): ChassisForce
+  /// The chassis's heave, pitch and roll coordinates at the start (StaticStart, static_start.hpp): ChassisForce
   /// effects read the motion from there.
   double heave0 = 0.0, pitch0 = 0.0, roll0 = 0.0;
   /// Run slots of the road signal's gain and delay (Model::roadGainSlot, roadDelaySlot).
@@ -142,27 +144,6 @@ struct TireCorner {
   }
 };
 
-class TireElement : public Force::Custom::Implementation {
- public:
-  TireElement(const RunContext* ctx, TireCorner tc, MobilizedBody wheel) : ctx_(ctx), tc_(std::move(tc)), wheel_(wheel) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
-    const Vec3 p = wheel_.getBodyOriginLocation(s), v = wheel_.getBodyOriginVelocity(s);
-    const double t = s.getTime();
-    const TireEval e = tc_.eval(*ctx_, t, p[0], v[0], p[2], v[2]);
-    const double fx = ctx_->traction_per_wheel_per_accel * ctx_->speed.accel(t);
-    SpatialVec& F = bodyForces[wheel_.getMobilizedBodyIndex()];
-    F[1] += Vec3(fx, 0, e.fz);
-    // Traction acts at the contact point, a height (hub_z - road) below the hub.
-    F[0] += Vec3(0, -e.hub_above_road * fx, 0);
-  }
-  Real calcPotentialEnergy(const State&) const override { return 0; }
-
- private:
-  const RunContext* ctx_;
-  TireCorner tc_;
-  MobilizedBody wheel_;
-};
-
 struct StrutGeometry {
   MobilizedBody upper, lower;
   Vec3 st_upper, st_lower;
@@ -235,6 +216,31 @@ struct StrutGeometry {
     qi = lower.getFirstQIndex(s);
     ui = lower.getFirstUIndex(s);
   }
+};
+
+// The Simbody force elements. Only the system builder (vehicle_system.cpp) instantiates them, and
+// they keep internal linkage there: the compiler sees every use of their code in that one file.
+namespace {
+
+class TireElement : public Force::Custom::Implementation {
+ public:
+  TireElement(const RunContext* ctx, TireCorner tc, MobilizedBody wheel) : ctx_(ctx), tc_(std::move(tc)), wheel_(wheel) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    const Vec3 p = wheel_.getBodyOriginLocation(s), v = wheel_.getBodyOriginVelocity(s);
+    const double t = s.getTime();
+    const TireEval e = tc_.eval(*ctx_, t, p[0], v[0], p[2], v[2]);
+    const double fx = ctx_->traction_per_wheel_per_accel * ctx_->speed.accel(t);
+    SpatialVec& F = bodyForces[wheel_.getMobilizedBodyIndex()];
+    F[1] += Vec3(fx, 0, e.fz);
+    // Traction acts at the contact point, a height (hub_z - road) below the hub.
+    F[0] += Vec3(0, -e.hub_above_road * fx, 0);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  TireCorner tc_;
+  MobilizedBody wheel_;
 };
 
 class StrutElement : public Force::Custom::Implementation {
@@ -400,7 +406,7 @@ class AxleCouplingElement : public Force::Custom::Implementation {
   const RunContext* ctx_;
   const Effect* eff_;
   std::size_t slot_;
-  const StrutGeometry *left_, *right_;  // the Impl's struts (bound after realizeTopology)
+  const StrutGeometry *left_, *right_;  // the system's struts (bound after realizeTopology)
   bool front_;
 };
 
@@ -451,7 +457,8 @@ class BodyLoadElement : public Force::Custom::Implementation {
   double g_;
   std::vector<std::pair<MobilizedBodyIndex, double>> bodies_;
 };
-
 }  // namespace
+
+}  // namespace sim
 
 }  // namespace dtwin

@@ -57,8 +57,8 @@ namespace {
 }  // namespace
 
 const Registry<SuspensionTopology>& suspensionOptions() {
-  // Each is a mobilizer layout of the simulator (twin/simulator.cpp), so a new one needs simulator
-  // code, not only an entry here.
+  // Each is a mobilizer layout of the simulator (its system builder, twin/vehicle_system.cpp), so a
+  // new one needs simulator code, not only an entry here.
   static const Registry<SuspensionTopology> r(
       "suspension option", {
                                {"macpherson", "independent struts: each wheel carrier slides along the chassis z axis (paper eq. 4)", SuspensionTopology::MacPherson},

@@ -1,5 +1,5 @@
 // The simulation's options (SimulationOptions) and the integrators a study may name: kept apart
-// from simulator.cpp's run, which they configure.
+// from the simulator's run (simulator.cpp, stepper.cpp), which they configure.
 #include <memory>
 #include <string>
 #include <vector>

@@ -325,9 +325,7 @@ void CalibrationRun::summary() {
   findBoundFindings();
 
   nlohmann::json j = res_.toJson();
-  j["program"] = programInfo();
-  j["command"] = options_.command;
-  j["created_utc"] = utcNow();
+  stampProvenance(j, options_.command);
   j["study"] = study_.path;
   j["scenario"] = data_.front().scenario;
   std::size_t records = 0;

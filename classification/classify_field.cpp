@@ -278,9 +278,7 @@ nlohmann::json classificationSummary(const Study& study, const FieldData& field,
                                      const FieldClassification& out) {
   const int M = static_cast<int>(ids.size());
   nlohmann::json s;
-  s["program"] = programInfo();
-  s["command"] = opt.command;
-  s["created_utc"] = utcNow();
+  stampProvenance(s, opt.command);
   s["study"] = study.path;
   s["field"] = field_info.is_null() ? nlohmann::json::object() : field_info;
   s["field"]["records"] = static_cast<long>(field.rowCount());

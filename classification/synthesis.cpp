@@ -314,9 +314,7 @@ nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, c
                              int workers, int ranks) {
   const long M = plan.M, R = plan.R;
   nlohmann::json j;
-  j["program"] = programInfo();
-  j["command"] = opt.command;
-  j["created_utc"] = utcNow();
+  stampProvenance(j, opt.command);
   j["study"] = study.path;
   j["assembly"] = assembly.id;
   j["label"] = assembly.label();

@@ -21,13 +21,18 @@ std::string utcNow() {
   return buf;
 }
 
+nlohmann::json& stampProvenance(nlohmann::json& j, const std::string& command) {
+  j["program"] = programInfo();
+  j["command"] = command;
+  j["created_utc"] = utcNow();
+  return j;
+}
+
 nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioSpec& scenario, const nlohmann::json& road,
                          std::uint64_t seed, const std::vector<double>& values, const SimulationOptions& options,
                          const RunStats& stats, const std::vector<Channel>& channels, const std::string& command) {
   nlohmann::json j;
-  j["program"] = programInfo();
-  j["command"] = command;
-  j["created_utc"] = utcNow();
+  stampProvenance(j, command);
   j["study"] = {{"path", study.path}, {"name", study.name}, {"vehicle", study.vehicle_path}};
   j["assembly"] = {{"id", model.assembly().id}, {"label", model.assembly().label()}, {"effects", model.assembly().effects}};
   for (auto& [s, o] : model.assembly().options) j["assembly"]["options"][s] = o;

@@ -16,6 +16,9 @@ namespace dtwin {
 
 nlohmann::json programInfo();
 std::string utcNow();
+/// How an output was made, the same three fields in every JSON file a command writes: "program"
+/// (programInfo()), "command" (the command line) and "created_utc" (utcNow()). Returns j.
+nlohmann::json& stampProvenance(nlohmann::json& j, const std::string& command);
 
 
 /// The sidecar of one simulation run (or of a set of runs); `road` describes the road(s)

@@ -181,9 +181,7 @@ void calibrateAssemblies(const Study& study, const CalibrateRequest& request, co
   setup.channel_weights = channelWeights(study, set);
   if (say) say(calibrationPlan(request, targets.size(), data));
   nlohmann::json index;
-  index["program"] = programInfo();
-  index["command"] = request.command;
-  index["created_utc"] = utcNow();
+  stampProvenance(index, request.command);
   index["study"] = study.path;
   index["data"] = request.data;
   for (const auto& a : targets) {

@@ -20,9 +20,7 @@ diag::ChangeReport detectChanges(const ChangesRequest& request) {
   diag::ChangeReport r = diag::compareCalibrations(first, second, request.level);
   if (!request.out.empty()) {
     nlohmann::json j = r.toJson();
-    j["program"] = programInfo();
-    j["command"] = request.command;
-    j["created_utc"] = utcNow();
+    stampProvenance(j, request.command);
     writeFileAtomic((std::filesystem::path(request.out) / "changes.json").string(), j.dump(2) + "\n");
   }
   return r;

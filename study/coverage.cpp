@@ -168,9 +168,7 @@ CoverageRow coverageRow(const std::string& assembly, const std::string& paramete
 /// coverage.json and coverage.md in options.out_dir.
 void writeCoverage(const Study& study, const CoverageOptions& options, const CoverageResult& res) {
   nlohmann::json j = res.toJson();
-  j["program"] = programInfo();
-  j["command"] = options.command;
-  j["created_utc"] = utcNow();
+  stampProvenance(j, options.command);
   j["study"] = study.path;
   j["seeds"] = {{"first", options.first_seed}, {"count", options.seeds}, {"rule", "lab noise seed s = first .. first + count - 1"}};
   j["calibration_options"] = options.calibration.toJson();

@@ -205,9 +205,7 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   if (!discrepancy.empty()) addDiscrepancy(study, run.assembly, setup, rows, discrepancy, sets, request.threads, run, say);
   nlohmann::json& j = run.json;
   j = run.comparison.toJson(true);
-  j["program"] = programInfo();
-  j["command"] = request.command;
-  j["created_utc"] = utcNow();
+  stampProvenance(j, request.command);
   j["study"] = study.path;
   j["calibration"] = request.calibration;
   j["assembly"] = run.assembly.id;
@@ -250,9 +248,7 @@ nlohmann::json optionsJson(const diag::DiagnoseOptions& o) {
 /// What diagnosis.json holds: the result with how it was made.
 nlohmann::json diagnosisJson(const Study& study, const DiagnoseRequest& request, const DiagnoseRun& run) {
   nlohmann::json j = run.result.toJson();
-  j["program"] = programInfo();
-  j["command"] = run.options.command;
-  j["created_utc"] = utcNow();
+  stampProvenance(j, run.options.command);
   j["study"] = study.path;
   j["data"] = request.data;
   j["holdout"] = request.holdout;

@@ -64,9 +64,8 @@ void checkStudyRecord(const Study& study, const StudyRunOptions& options, const 
       if (j.value("fingerprint", nlohmann::json()) != fp)
         throw InputError(record.string(), "was made by a different study, vehicle or data file; use a new output folder or delete it");
     } else {
-      writeFileAtomic(record.string(), nlohmann::json{{"fingerprint", fp}, {"study", study.path}, {"program", programInfo()},
-                                                      {"command", options.command}, {"created_utc", utcNow()}}
-                                               .dump(2) + "\n");
+      nlohmann::json j{{"fingerprint", fp}, {"study", study.path}};
+      writeFileAtomic(record.string(), stampProvenance(j, options.command).dump(2) + "\n");
     }
   });
 }
@@ -130,8 +129,7 @@ nlohmann::json calibrateStage(const Study& study, const std::vector<AssemblySpec
                                               news.report("calibrate " + a.id + " " + s, d, t);
                                             });
     nlohmann::json j = r.toJson();
-    j["program"] = programInfo();
-    j["command"] = options.command;
+    stampProvenance(j, options.command);
     j["study"] = study.path;
     j["data"] = {{"path", lab_path}, {"records", lab.records.size()}, {"fnv1a64", lab_hash}};
     j["options"] = co.toJson();
@@ -171,9 +169,7 @@ nlohmann::json studySummary(const Study& study, const StudyRunOptions& options, 
                             const classify::FieldClassification& c, const nlohmann::json& stages, const nlohmann::json& calibrated,
                             const std::string& lab_path, const std::string& field_path) {
   nlohmann::json s;
-  s["program"] = programInfo();
-  s["command"] = options.command;
-  s["created_utc"] = utcNow();
+  stampProvenance(s, options.command);
   s["study"] = study.path;
   s["wins"] = c.summary["wins"];
   s["recommended"] = c.summary["recommended"];

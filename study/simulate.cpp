@@ -65,8 +65,8 @@ std::vector<SimulateRun> simulateScenario(const Study& study, const SimulateRequ
   const std::uint64_t seed = request.seed.value_or(study.seed);
   const double t_lo = request.window ? request.window->first : -1e300, t_hi = request.window ? request.window->second : 1e300;
 
-  nlohmann::json summary = {{"program", programInfo()}, {"command", request.command}, {"created_utc", utcNow()},
-                            {"study", study.path},      {"scenario", sc.name},          {"seed", seed}};
+  nlohmann::json summary = {{"study", study.path}, {"scenario", sc.name}, {"seed", seed}};
+  stampProvenance(summary, request.command);
   std::vector<SimulateRun> runs;
   for (const auto& a : targets) {
     const auto model = study.makeModel(a, request.effects, request.sets);

@@ -66,9 +66,7 @@ std::vector<SynthesizeRun> synthesizeAssemblies(const Study& study, const Synthe
     posteriors.push_back(calib::readPosteriorCsv(p));
   }
   nlohmann::json index;
-  index["program"] = programInfo();
-  index["command"] = opt.command;
-  index["created_utc"] = utcNow();
+  stampProvenance(index, opt.command);
   index["study"] = study.path;
   index["calibration"] = request.calibration;
   std::vector<SynthesizeRun> runs;

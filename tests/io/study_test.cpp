@@ -4,8 +4,10 @@
 
 #include <cstdio>
 #include <fstream>
+#include <regex>
 
 #include "common/errors.hpp"
+#include "io/provenance.hpp"
 #include "io/study.hpp"
 
 using namespace dtwin;
@@ -191,4 +193,17 @@ TEST(Study, SettingsFromTheCommandLine) {
   auto m = s.makeModel(s.assembly("M1"), {parseEffectSetting("bump_stop:stiffness=1e6,gap_m=0.03", "--effect", s.effectCatalog())});
   EXPECT_DOUBLE_EQ(m->table().value("bump_stop.gap_m"), 0.03);
   EXPECT_GE(m->slot("bump_stop.stiffness"), 0);
+}
+
+// The one provenance writer: the three fields every JSON output opens with, the rest kept.
+TEST(Provenance, StampAddsProgramCommandAndTimeAndKeepsTheRest) {
+  nlohmann::json j{{"study", "s.toml"}, {"command", "an older command"}};
+  nlohmann::json& out = dtwin::stampProvenance(j, "twin simulate --assembly M1");
+  EXPECT_EQ(&out, &j);
+  EXPECT_EQ(j.at("study"), "s.toml");
+  EXPECT_EQ(j.at("command"), "twin simulate --assembly M1");
+  EXPECT_EQ(j.at("program").at("name"), "twin");
+  EXPECT_EQ(j.at("program"), dtwin::programInfo());
+  const std::string t = j.at("created_utc").get<std::string>();
+  EXPECT_TRUE(std::regex_match(t, std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)"))) << t;
 }

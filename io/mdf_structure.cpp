@@ -218,6 +218,15 @@ class MdfStructure {
     if (len - 24 - 8 * links < fixed)
       fail(at, "runs " + std::to_string(len) + " bytes, too few for its " + std::to_string(links) + " links and the " + std::to_string(fixed) +
                    " bytes of fields a " + idAt(at) + " block has");
+    // A data list's count (dl_count, ld_count: after 4 bytes of flags) is how many of its links a
+    // reader walks, each with its offset in a DL of unequal lengths: no more than its links hold.
+    if (const std::string id = idAt(at); id == "##DL" || id == "##LD") {
+      const std::uint64_t count = dataField(at, links, 4, 4), held = links > 0 ? links - 1 : 0;
+      if (count > held)
+        fail(at, "lists " + std::to_string(count) + " data blocks but links to " + std::to_string(held) + ": the file is damaged");
+      if (id == "##DL" && (dataField(at, links, 0, 1) & 1) == 0 && len - 24 - 8 * links < 8 + 8 * count)
+        fail(at, "runs " + std::to_string(len) + " bytes, too few for the offsets of its " + std::to_string(count) + " data blocks");
+    }
   }
 
   /// A count in a block's data section (after its links), 0 when the block is too short for it.

@@ -299,6 +299,8 @@ TEST(MdfDamage, TheFuzzersDamagedSeedsAreRefused) {
       {"damaged_found_cn_name_to_ri", "block ##CN at 0x568: link 'cn_tx_name' points to a ##RI block (allowed: ##TX)"},
       {"damaged_found_dg_cg_to_fh", "block ##DG at 0x1708: link 'dg_cg_first' points to a ##FH block (allowed: ##CG)"},
       {"damaged_found_fh_cycle", "block ##FH at 0x160: link 'fh_fh_next' leads back to the ##FH block at 0x160 on its own path"},
+      // A data list whose count far exceeds its links (the reader walked billions of them: hung).
+      {"damaged_found_dl_count", "block ##DL at 0x10e0: lists 2684354562 data blocks but links to 2: the file is damaged"},
   };
   for (const auto& [file, expect] : cases) expectRefused(dir, file, dtwin_test::slurp(seeds / (file + ".mf4")), expect);
   std::size_t damaged = 0;

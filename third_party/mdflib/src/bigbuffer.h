@@ -67,15 +67,17 @@ size_t BigBuffer<T>::size() const {
 
 template <typename T>
 T BigBuffer<T>::value() const {
-  const T* val = reinterpret_cast<const T*>(buffer_.data());
+  // dtwin: the swapped bytes are read while they are in scope (the original read them through a
+  // pointer to an array that had gone out of scope: AddressSanitizer, stack-use-after-scope).
+  std::array<uint8_t, sizeof(T)> temp = buffer_;
   if (IsLittleEndian()) { // Computer uses little endian
-    std::array<uint8_t, sizeof(T)> temp = {0};
     for (size_t index = sizeof(T); index > 0; --index) {
       temp[sizeof(T) - index] = buffer_[index - 1];
     }
-    val = reinterpret_cast<const T*>(temp.data());
   }
-  return *val;
+  T val;
+  std::memcpy(&val, temp.data(), sizeof(T));
+  return val;
 }
 
 }  // namespace mdf

@@ -320,6 +320,7 @@ void readSimulation(TableReader& top, Study& s) {
     o.obstacle_margin_after_s = r.number("obstacle_margin_after_s", o.obstacle_margin_after_s);
     o.output_rate_hz = r.number("output_rate_hz", o.output_rate_hz);
     o.max_wall_s = r.number("max_wall_s", o.max_wall_s);
+    o.hub_motion = r.string("hub_motion").value_or(o.hub_motion);
     if (auto n = r.integer("max_internal_steps")) o.max_internal_steps = static_cast<long>(*n);
     r.finish();
     try {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -34,6 +35,10 @@ struct RunContext {
   /// The run slot of the first road-signal form (Model::roadFormSlot; roadSignalForms() order).
   std::size_t form_slot = 0;
   double wheelbase = 0.0;
+  /// With the hubs' motion prescribed (VehicleSystem::prescribed_hubs): the link's static
+  /// deflection at each corner at the start (StaticStart): the hub rides R0 minus it above the
+  /// signal.
+  std::array<double, 4> hub_rho{};
   /// Where corner `c` meets the road signal (roadSignalForms): the signal's weight there (gain
   /// included) and how far ahead [m] it reads the signal. At every form's default (0) exactly
   /// the gain and no read-ahead.
@@ -92,28 +97,56 @@ struct TireCorner {
     signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a + ahead, hub_xd, x, contact_speed);
     return weight * c.road->sample(cornerTrack(corner), x).slope * contact_speed;
   }
-  TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
-    TireEval e;
-    LawValueBuffer buf;
-    const ParamValues p = values(c, buf);
-    const double v = c.speed.speed(t);
-    e.x_road = c.speed.distance(t) + hub_x - model->vehicle().a;
+  /// The road the wheel meets at road distance x_road (tire-input effects and the signal's gain
+  /// applied), the speed at which the wheel travels along it, and the road before the tire-input
+  /// effects (road_h, gain applied).
+  RoadSample signalUnder(const RunContext& c, double t, double x_road, double hub_xd, double& contact_speed, double& road_h) const {
     const Track tr = cornerTrack(corner);
     // The road signal's delay d relative to the measured channels (positive: logged late) and its
     // gain g: the wheel meets g h(x + s(t + d) - s(t)), read ahead by the distance travelled in d
     // (docs/model.md, "The road signal's gain and delay"). At d = 0 and g = 1 exactly the road.
     double gain = 1.0, ahead = 0.0;
     c.signalAt(corner, gain, ahead);
-    double x = 0.0, contact_speed = 0.0;
-    signalPoint(c, t, e.x_road + ahead, hub_xd, x, contact_speed);
+    double x = 0.0;
+    signalPoint(c, t, x_road + ahead, hub_xd, x, contact_speed);
     RoadSample rs = c.road->sample(tr, x);
-    e.road_h = rs.height_m;  // the road under the wheel, before tire-input effects
+    road_h = rs.height_m;  // the road under the wheel, before tire-input effects
     for (auto& [eff, s] : filters) rs = eff->filterRoad(*c.road, tr, x, ParamValues(c.p + s, eff->parameters().size()));
     if (gain != 1.0) {
       rs.height_m *= gain;
       rs.slope *= gain;
-      e.road_h *= gain;
+      road_h *= gain;
     }
+    return rs;
+  }
+  /// A prescribed hub's height and vertical rate (VehicleSystem::prescribed_hubs): the road the
+  /// wheel meets (signalUnder) plus R0 less the link's static deflection (RunContext::hub_rho),
+  /// for a hub at x (hub_x, hub_xd as in eval).
+  struct HubPath {
+    double z = 0, zd = 0;
+  };
+  HubPath hubPath(const RunContext& c, double t, double hub_x, double hub_xd) const {
+    LawValueBuffer buf;
+    const double R0 = values(c, buf)[r0];
+    double contact_speed = 0.0, road_h = 0.0;
+    const RoadSample rs = signalUnder(c, t, c.speed.distance(t) + hub_x - model->vehicle().a, hub_xd, contact_speed, road_h);
+    return {rs.height_m + R0 - c.hub_rho[static_cast<std::size_t>(corner)], rs.slope * contact_speed};
+  }
+  /// The prescribed hub's vertical acceleration: the rate's central difference over +-10 us (the
+  /// road's interpolant has no second derivative of its own; it jumps at the signal's nodes).
+  /// For the recorded outputs only: no force reads it.
+  double hubAccel(const RunContext& c, double t, double hub_x, double hub_xd) const {
+    constexpr double dt = 1e-5;
+    return (hubPath(c, t + dt, hub_x + hub_xd * dt, hub_xd).zd - hubPath(c, t - dt, hub_x - hub_xd * dt, hub_xd).zd) / (2 * dt);
+  }
+  TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
+    TireEval e;
+    LawValueBuffer buf;
+    const ParamValues p = values(c, buf);
+    const double v = c.speed.speed(t);
+    e.x_road = c.speed.distance(t) + hub_x - model->vehicle().a;
+    double contact_speed = 0.0;
+    const RoadSample rs = signalUnder(c, t, e.x_road, hub_xd, contact_speed, e.road_h);
     const double R0 = p[r0];
     e.hub_above_road = hub_z - rs.height_m;
     e.rho = R0 - e.hub_above_road;
@@ -164,8 +197,41 @@ struct StrutGeometry {
   QIndex qh{}, qr{};
   UIndex uh{}, ur{};
   double seat_y = 0;
+  /// The hub's motion prescribed (VehicleSystem::prescribed_hubs): `lower` is empty and the hub
+  /// sits on upper's z axis through st_upper, at the height of the road signal under it
+  /// (TireCorner::hubPath). The compression is the distance along that axis from st_upper to the
+  /// hub's height: q = (z_hub - z_P) / z_z, P the station and z the axis in Ground.
+  bool is_prescribed = false;
+  const RunContext* ctx = nullptr;
+  const TireCorner* tire = nullptr;
+  /// Where a prescribed hub is (Position stage): the station P, the axis z, the hub's path, q.
+  struct HubAt {
+    Vec3 p;
+    UnitVec3 z;
+    TireCorner::HubPath path;
+    double q = 0;
+  };
+  /// `hub_xd`: the station's forward velocity where known (the Velocity stage); the position
+  /// alone (the static start) reads the signal at the hub's own speed along the road.
+  HubAt hubAt(const State& s, double hub_xd = 0.0) const {
+    HubAt h;
+    h.p = upper.findStationLocationInGround(s, st_upper);
+    h.z = upper.getBodyRotation(s).z();
+    h.path = tire->hubPath(*ctx, s.getTime(), h.p[0], hub_xd);
+    h.q = (h.path.z - h.p[2]) / h.z[2];
+    return h;
+  }
+  Kin prescribedKin(const State& s, Vec3* station_velocity = nullptr, TireCorner::HubPath* path = nullptr) const {
+    const Vec3 v = upper.findStationVelocityInGround(s, st_upper);
+    const HubAt h = hubAt(s, v[0]);
+    const Vec3 zdot = upper.getBodyAngularVelocity(s) % Vec3(h.z);
+    if (station_velocity) *station_velocity = v;
+    if (path) *path = h.path;
+    return {h.q, (h.path.zd - v[2] - h.q * zdot[2]) / h.z[2]};
+  }
   Kin kin(const State& s) const {
     if (is_slider) return {s.getQ()[qi], s.getU()[ui]};
+    if (is_prescribed) return prescribedKin(s);
     if (is_axle_seat) {
       const double phi = s.getQ()[qr];
       return {s.getQ()[qh] + seat_y * std::sin(phi), s.getU()[uh] + seat_y * std::cos(phi) * s.getU()[ur]};
@@ -179,6 +245,16 @@ struct StrutGeometry {
   }
   double accel(const State& s) const {
     if (is_slider) return s.getUDot()[ui];
+    if (is_prescribed) {  // q z_z = z_hub - z_P, differentiated twice (z the body's axis in Ground)
+      Vec3 v;
+      TireCorner::HubPath path;
+      const Kin k = prescribedKin(s, &v, &path);
+      const Vec3 z(upper.getBodyRotation(s).z()), w = upper.getBodyAngularVelocity(s);
+      const Vec3 zdot = w % z, zddot = upper.getBodyAngularAcceleration(s) % z + w % zdot;
+      const double hdd = tire->hubAccel(*ctx, s.getTime(), upper.findStationLocationInGround(s, st_upper)[0], v[0]);
+      const double pdd = upper.findStationAccelerationInGround(s, st_upper)[2];
+      return (hdd - pdd - 2 * k.qd * zdot[2] - k.q * zddot[2]) / z[2];
+    }
     if (is_axle_seat) {
       const double phi = s.getQ()[qr], w = s.getU()[ur];
       return s.getUDot()[uh] + seat_y * (std::cos(phi) * s.getUDot()[ur] - std::sin(phi) * w * w);
@@ -186,10 +262,20 @@ struct StrutGeometry {
     const Vec3 au = upper.findStationAccelerationInGround(s, st_upper), al = lower.findStationAccelerationInGround(s, st_lower);
     return ~(al - au) * Vec3(upper.getBodyRotation(s).z());
   }
-  /// Applies the strut force F (positive pushes the ends apart along upper's z).
-  void apply(const State& s, double F, Vector_<SpatialVec>& bodyForces, Vector& mobilityForces) const {
+  /// Applies the strut force F (positive pushes the ends apart along upper's z). `k`: the strut's
+  /// kinematics at `s` where the caller has them (a prescribed hub's compression places the force).
+  void apply(const State& s, double F, Vector_<SpatialVec>& bodyForces, Vector& mobilityForces, const Kin* k = nullptr) const {
     if (is_slider) {
       mobilityForces[ui] -= F;  // compression positive: the force pushes the slider back down
+      return;
+    }
+    if (is_prescribed) {
+      // On the body alone: the road moves the hub. The wheel carrier slides along the body's z
+      // and the road holds the hub by a vertical force, so what the body receives from this
+      // corner is vertical, F / z_z at the hub: the strut's push along z plus the slide's
+      // reaction to the push's tilt (HubReactionElement adds the fore-aft reactions).
+      const double q = k ? k->q : hubAt(s).q;
+      upper.applyForceToBodyPoint(s, st_upper + Vec3(0, 0, q), Vec3(0, 0, F / upper.getBodyRotation(s).z()[2]), bodyForces);
       return;
     }
     if (is_axle_seat) {
@@ -260,7 +346,15 @@ class StrutElement : public Force::Custom::Implementation {
       }
   }
   void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
+    StrutGeometry::Kin k;
+    const double F = totalForce(s, &k);
+    g_.apply(s, F, bodyForces, mobilityForces, &k);
+  }
+  /// The strut's force with every effect, the StrutFilter ones included (compression positive);
+  /// `kin` receives the strut's kinematics.
+  double totalForce(const State& s, StrutGeometry::Kin* kin = nullptr) const {
     const auto k = g_.kin(s);
+    if (kin) *kin = k;
     const StrutState ss = strutState(s, k);
     double F = force(ss);
     if (!filter_effects_.empty()) {
@@ -270,7 +364,7 @@ class StrutElement : public Force::Custom::Implementation {
         F += m_->effects()[i]->calcFilteredStrutForce(ss, z[zi_[j]], effectValues(i));
       }
     }
-    g_.apply(s, F, bodyForces, mobilityForces);
+    return F;
   }
   void realizeTopology(State& s) const override {
     zi_.clear();
@@ -327,7 +421,14 @@ class StrutElement : public Force::Custom::Implementation {
       ss.time_s = s.getTime();
       ss.speed_mps = ctx_->speed.speed(ss.time_s);
       ss.front = front_;
-      if (motion_) {
+      if (motion_ && g_.is_prescribed) {
+        Vec3 v;
+        TireCorner::HubPath path;
+        g_.prescribedKin(s, &v, &path);
+        ss.body_velocity_mps = v[2];
+        ss.wheel_velocity_mps = path.zd;
+        ss.road_velocity_mps = tire_->roadRate(*ctx_, ss.time_s, g_.upper.findStationLocationInGround(s, g_.st_upper)[0], v[0]);
+      } else if (motion_) {
         ss.body_velocity_mps = g_.upper.findStationVelocityInGround(s, g_.st_upper)[2];
         ss.wheel_velocity_mps = g_.lower.findStationVelocityInGround(s, g_.st_lower)[2];
         ss.road_velocity_mps =
@@ -386,7 +487,18 @@ class AxleCouplingElement : public Force::Custom::Implementation {
                       const StrutGeometry* right, bool front)
       : ctx_(ctx), eff_(eff), slot_(slot), left_(left), right_(right), front_(front) {}
   void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
+    StrutGeometry::Kin l, r;
+    const double F = pairForce(s, &l, &r);
+    if (F == 0.0) return;
+    left_->apply(s, F, bodyForces, mobilityForces, &l);
+    right_->apply(s, -F, bodyForces, mobilityForces, &r);
+  }
+  /// The force on the left strut (the right one takes its opposite), compression positive; `left`
+  /// and `right` receive the struts' kinematics.
+  double pairForce(const State& s, StrutGeometry::Kin* left = nullptr, StrutGeometry::Kin* right = nullptr) const {
     const auto l = left_->kin(s), r = right_->kin(s);
+    if (left) *left = l;
+    if (right) *right = r;
     AxleState a;
     a.q_left = l.q;
     a.q_right = r.q;
@@ -395,10 +507,7 @@ class AxleCouplingElement : public Force::Custom::Implementation {
     a.front = front_;
     a.time_s = s.getTime();
     a.speed_mps = ctx_->speed.speed(a.time_s);
-    const double F = eff_->calcAxleForce(a, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
-    if (F == 0.0) return;
-    left_->apply(s, F, bodyForces, mobilityForces);
-    right_->apply(s, -F, bodyForces, mobilityForces);
+    return eff_->calcAxleForce(a, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
   }
   Real calcPotentialEnergy(const State&) const override { return 0; }
 
@@ -408,6 +517,33 @@ class AxleCouplingElement : public Force::Custom::Implementation {
   std::size_t slot_;
   const StrutGeometry *left_, *right_;  // the system's struts (bound after realizeTopology)
   bool front_;
+};
+
+/// A prescribed hub's reactions on the body besides its strut (VehicleSystem::prescribed_hubs):
+/// what a wheel carrier sliding on the body passes to it across the slide. The fore-aft force on
+/// the wheel, H = traction - m_w a(t) (the wheel's d'Alembert load of the accelerating frame), at
+/// the hub; the traction's moment, acting R0 - rho below the hub; and, as the slide does not carry
+/// H's part along the tilted strut axis, the road's vertical -H z_x / z_z that holds the hub
+/// against it. The wheel's weight and vertical inertia go to the road, which moves the hub.
+class HubReactionElement : public Force::Custom::Implementation {
+ public:
+  HubReactionElement(const RunContext* ctx, const StrutGeometry* g, double wheel_mass) : ctx_(ctx), g_(g), m_w_(wheel_mass) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+    const double a = ctx_->speed.accel(s.getTime());
+    const double fx = ctx_->traction_per_wheel_per_accel * a;
+    const StrutGeometry::HubAt h = g_->hubAt(s);
+    const double H = fx - m_w_ * a;
+    g_->upper.applyForceToBodyPoint(s, g_->st_upper + Vec3(0, 0, h.q), Vec3(H, 0, -H * h.z[0] / h.z[2]), bodyForces);
+    LawValueBuffer buf;
+    const double R0 = g_->tire->values(*ctx_, buf)[g_->tire->r0];
+    g_->upper.applyBodyTorque(s, Vec3(0, -(R0 - ctx_->hub_rho[static_cast<std::size_t>(g_->tire->corner)]) * fx, 0), bodyForces);
+  }
+  Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const RunContext* ctx_;
+  const StrutGeometry* g_;
+  double m_w_;
 };
 
 /// A ChassisForce effect: a vertical force on the chassis at its mass centre (its body origin),

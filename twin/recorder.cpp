@@ -1,6 +1,7 @@
 #include "twin/recorder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "common/errors.hpp"
@@ -65,6 +66,12 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
   const std::size_t n = ts.size();
   for (std::size_t i = 0; i < tr.channels().size(); ++i) tr.column(i).resize(n);
   const auto& k0 = knots.front();
+  // Prescribed hubs: the State at each output time, rebuilt from the body's interpolated
+  // coordinates and auxiliary states; the hubs are read off the signal there, exactly, where the
+  // knots (the body's steps) are too far apart to carry the signal's detail.
+  const bool prescribed = sys_.prescribed_hubs;
+  State st;
+  if (prescribed) st = sys_.default_state;
   std::size_t j = 0;
   for (std::size_t r = 0; r < n; ++r) {
     const double t = ts[r];
@@ -79,13 +86,53 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
     std::size_t col = 0;
     tr.column(col++)[r] = t;
     tr.column(col++)[r] = sc.speed.speed(t);
+    // Each hub's height, rate and acceleration, and its strut's compression and rate.
+    std::array<double, 4> hz{}, hzd{}, hzdd{}, sq{}, sqd{}, fz{};
+    if (prescribed) {
+      st.setTime(t);
+      Vector &Qv = st.updQ(), &Uv = st.updU();
+      Qv[sys_.heave_q] = pos(BODY + 0, BODY + 1);
+      Uv[sys_.heave_u] = pos(BODY + 1, BODY + 2);
+      Qv[sys_.chassis_q + 1] = pos(BODY + 3, BODY + 4);
+      Uv[sys_.chassis_u + 1] = pos(BODY + 4, BODY + 5);
+      Qv[sys_.chassis_q] = pos(BODY + 6, BODY + 7);
+      Uv[sys_.chassis_u] = pos(BODY + 7, BODY + 8);
+      Vector& Zv = st.updZ();
+      for (int i = 0; i < Zv.size(); ++i) {
+        const std::size_t iz = ZS + static_cast<std::size_t>(i);
+        Zv[i] = a[iz] + u * (b[iz] - a[iz]);
+      }
+      sys_.system.realize(st, Stage::Velocity);
+    }
     for (int c = 0; c < 4; ++c) {
-      const double hx = pos(HX + c, HXD + c), hxd = a[HXD + c] + u * (b[HXD + c] - a[HXD + c]);
-      const TireEval e = tires[c].eval(ctx, t, hx, hxd, pos(HZ + c, HZD + c), pos(HZD + c, HZDD + c));
-      tr.column(col + c)[r] = e.fz;
+      double hx = 0.0, hxd = 0.0;
+      if (prescribed) {
+        const StrutGeometry& g = sys_.struts[c];
+        Vec3 v;
+        TireCorner::HubPath path;
+        const auto k = g.prescribedKin(st, &v, &path);
+        hx = g.upper.findStationLocationInGround(st, g.st_upper)[0];
+        hxd = v[0];
+        hz[c] = path.z;
+        hzd[c] = path.zd;
+        hzdd[c] = tires[c].hubAccel(ctx, t, hx, hxd);
+        sq[c] = k.q;
+        sqd[c] = k.qd;
+        fz[c] = sys_.prescribedHubForce(st, c, hzdd[c]);
+      } else {
+        hx = pos(HX + c, HXD + c);
+        hxd = a[HXD + c] + u * (b[HXD + c] - a[HXD + c]);
+        hz[c] = pos(HZ + c, HZD + c);
+        hzd[c] = pos(HZD + c, HZDD + c);
+        hzdd[c] = acc(HZD + c, HZDD + c);
+        sq[c] = pos(Q + c, QD + c);
+        sqd[c] = pos(QD + c, QDD + c);
+      }
+      const TireEval e = tires[c].eval(ctx, t, hx, hxd, hz[c], hzd[c]);
+      tr.column(col + c)[r] = prescribed ? fz[c] : e.fz;
       tr.column(col + 4 + c)[r] = e.rho;
-      tr.column(col + 8 + c)[r] = pos(Q + c, QD + c);
-      tr.column(col + 12 + c)[r] = pos(QD + c, QDD + c);
+      tr.column(col + 8 + c)[r] = sq[c];
+      tr.column(col + 12 + c)[r] = sqd[c];
       tr.column(col + 16 + c)[r] = e.road_h;
     }
     col += 20;
@@ -109,14 +156,14 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
         const Motion heave{pos(BODY + 0, BODY + 1), pos(BODY + 1, BODY + 2), 0.0};
         const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), 0.0};
         const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), 0.0};
-        m = chassisAxisHeight({pos(HZ + c, HZD + c), pos(HZD + c, HZDD + c), 0.0}, heave, pitch, roll, cx, cy);
+        m = chassisAxisHeight({hz[c], hzd[c], 0.0}, heave, pitch, roll, cx, cy);
         m.q -= chassisAxisHeight({k0[HZ + c], 0, 0}, {k0[BODY + 0], 0, 0}, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, cx, cy).q;
         tr.column(col++)[r] = (x.quantity == SensorQuantity::Travel ? m.q : m.qd) + offset;
         continue;
       }
       if (x.corner() >= 0) {
         const std::size_t c = static_cast<std::size_t>(x.corner());
-        m = {pos(HZ + c, HZD + c) - k0[HZ + c], pos(HZD + c, HZDD + c), acc(HZD + c, HZDD + c)};
+        m = {hz[c] - k0[HZ + c], hzd[c], hzdd[c]};
       } else {
         const Motion heave{pos(BODY + 0, BODY + 1), pos(BODY + 1, BODY + 2), acc(BODY + 1, BODY + 2)};
         const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), acc(BODY + 4, BODY + 5)};

@@ -25,6 +25,11 @@ struct SimulationOptions {
   double output_rate_hz = 1000.0;
   long max_internal_steps = 2000000;     ///< a run taking more steps is reported as failed
   double max_wall_s = 600.0;             ///< a run taking longer (wall clock) is reported as failed
+  /// How the hub input (a tire law that follows the road signal) moves the wheels on MacPherson
+  /// struts: "prescribed" (the hubs move as the signal; no wheel states, the body sets the steps)
+  /// or "link" (wheel bodies held to the signal by the law's stiff link). docs/model.md, "Where the
+  /// road enters". A solid axle always uses the link.
+  std::string hub_motion = "prescribed";
   /// Checked at every integrator step: a requested stop throws Stopped (common/stop.hpp), not a
   /// failed run. Not a setting: no file names it and toJson leaves it out.
   StopToken stop;

@@ -46,6 +46,8 @@ void SimulationOptions::validate() const {
   check.require(output_rate_hz > 0 && output_rate_hz <= 1e6, "output_rate_hz", "must lie in (0, 1e6], got " + formatNumber(output_rate_hz));
   check.atLeast("max_internal_steps", max_internal_steps, 1);
   check.require(max_wall_s > 0 && max_wall_s <= 1e6, "max_wall_s", "must lie in (0, 1e6] s, got " + formatNumber(max_wall_s));
+  check.require(hub_motion == "prescribed" || hub_motion == "link", "hub_motion",
+                "must be 'prescribed' or 'link', got '" + hub_motion + "'");
 }
 
 nlohmann::json SimulationOptions::toJson() const {
@@ -58,6 +60,7 @@ nlohmann::json SimulationOptions::toJson() const {
           {"obstacle_margin_before_s", obstacle_margin_before_s},
           {"obstacle_margin_after_s", obstacle_margin_after_s},
           {"output_rate_hz", output_rate_hz},
+          {"hub_motion", hub_motion},
           {"output_method", "cubic Hermite interpolation of states recorded at every integrator step; forces from the laws"}};
 }
 

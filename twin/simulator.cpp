@@ -28,7 +28,7 @@ struct Simulator::Impl {
 
   /// `with_filter_states`: the system that also integrates StrutFilter effects' auxiliary states.
   Impl(std::shared_ptr<const Model> m, SimulationOptions o, bool with_filter_states = false)
-      : model(std::move(m)), opt(validated(std::move(o))), sys(*model, with_filter_states) {}
+      : model(std::move(m)), opt(validated(std::move(o))), sys(*model, with_filter_states, opt.hub_motion == "link") {}
 
   static SimulationOptions validated(SimulationOptions o) {
     o.validate();

@@ -96,7 +96,9 @@ void StaticStart::setEquilibrium(State& s) {
     const WarpedStart warp = warpedStart(M, ctx.p);
     load = warp.tire_load_N;
     strut_q = warp.strut_compression_m;
-    if (M.topology() == SuspensionTopology::MacPherson) {
+    if (sys_.prescribed_hubs) {
+      // the hubs' compressions are the Newton's targets below
+    } else if (M.topology() == SuspensionTopology::MacPherson) {
       for (int c = 0; c < 4; ++c) sys_.wheels[c].setOneQ(s, 0, strut_q[c]);
     } else {  // a seat moves by q_h + y sin(phi), y = +-spring_track / 2 (left +)
       for (int ax = 0; ax < 2; ++ax) {
@@ -110,6 +112,7 @@ void StaticStart::setEquilibrium(State& s) {
     // The corner's own tire values (its factors applied; tp itself without).
     LawValueBuffer buf;
     const double rho = M.tire().calcStaticDeflection(load[c], sys_.tires[c].values(ctx, buf));
+    ctx.hub_rho[static_cast<std::size_t>(c)] = rho;
     const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
     const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
     double weight = 1.0, ahead = 0.0;
@@ -122,12 +125,15 @@ void StaticStart::setEquilibrium(State& s) {
       sys_.wheels[c].setOneQ(s, 0, q);
     }
   }
-  // Newton on (heave, pitch, roll) so that the FL, FR, RL hubs sit at their targets.
+  // Newton on (heave, pitch, roll) so that the FL, FR, RL hubs sit at their targets (prescribed
+  // hubs: their struts at their compressions, the hubs on the signal).
   auto residual = [&](const Vec3& x) {
     sys_.heave.setOneQ(s, 0, x[0]);
     sys_.chassis.setOneQ(s, 0, x[2]);  // roll
     sys_.chassis.setOneQ(s, 1, x[1]);  // pitch
     sys_.system.realize(s, Stage::Position);
+    if (sys_.prescribed_hubs)
+      return Vec3(sys_.struts[0].hubAt(s).q - strut_q[0], sys_.struts[1].hubAt(s).q - strut_q[1], sys_.struts[2].hubAt(s).q - strut_q[2]);
     return Vec3(sys_.wheels[0].getBodyOriginLocation(s)[2] - target[0], sys_.wheels[1].getBodyOriginLocation(s)[2] - target[1],
                 sys_.wheels[2].getBodyOriginLocation(s)[2] - target[2]);
   };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/errors.hpp"
 #include "common/format.hpp"
 #include "twin/rosenbrock.hpp"
 
@@ -34,7 +35,21 @@ constexpr double kReplayRefine = 8.0;
 void Stepper::record(const State& s, Knots& knots, std::vector<double>& times) {
   sys_.system.realize(s, Stage::Acceleration);  // a no-op after an integrator step (already realized)
   std::array<double, KNOT> k{};
+  if (sys_.prescribed_hubs) {
+    // The body's coordinates and the auxiliary states: the recorder rebuilds the State at each
+    // output time from them and reads the hubs off the signal there (Recorder::writeRows); the
+    // hubs' heights here are the start's reference.
+    const Vector& z = s.getZ();
+    DTWIN_CHECK(static_cast<std::size_t>(z.size()) <= kMaxZ, "too many auxiliary states for prescribed hubs");
+    for (int i = 0; i < z.size(); ++i) k[ZS + static_cast<std::size_t>(i)] = z[i];
+  }
   for (int c = 0; c < 4; ++c) {
+    if (sys_.prescribed_hubs) {
+      const StrutGeometry::HubAt h = sys_.struts[c].hubAt(s);
+      k[HX + c] = h.p[0];
+      k[HZ + c] = h.path.z;
+      continue;
+    }
     const Vec3 p = sys_.wheels[c].getBodyOriginLocation(s), v = sys_.wheels[c].getBodyOriginVelocity(s);
     const Vec3 a = sys_.wheels[c].getBodyOriginAcceleration(s);
     k[HX + c] = p[0];

@@ -19,7 +19,9 @@ namespace dtwin::sim {
 /// and z acceleration and the main strut's q, rate and acceleration; then the chassis.
 namespace knot {
 enum : std::size_t { HX = 0, HXD = 4, HZ = 8, HZD = 12, HZDD = 16, Q = 20, QD = 24, QDD = 28,
-                     BODY = 32 /* heave, pitch, roll: value, rate, accel (3 each) */, KNOT = 41 };
+                     BODY = 32 /* heave, pitch, roll: value, rate, accel (3 each) */,
+                     ZS = 41 /* prescribed hubs: the system's auxiliary states (at most kMaxZ); else unused */, KNOT = 49 };
+constexpr std::size_t kMaxZ = KNOT - ZS;
 }  // namespace knot
 using Knots = std::vector<std::array<double, knot::KNOT>>;
 using Segments = std::vector<std::pair<double, double>>;  // (end time, max step)

@@ -17,11 +17,23 @@ std::size_t contiguous(const std::vector<int>& slots) {
 
 }  // namespace
 
-VehicleSystem::VehicleSystem(const Model& m, bool filter_states) : model(m) { build(filter_states); }
+VehicleSystem::VehicleSystem(const Model& m, bool filter_states, bool link_hubs) : model(m) { build(filter_states, link_hubs); }
 
-void VehicleSystem::build(bool filter_states) {
+double VehicleSystem::prescribedHubForce(const State& s, int c, double hub_zdd) const {
+  // The wheel's balance along the strut axis z (it slides along it): the road's vertical L, its
+  // weight and inertia, the fore-aft H = traction - m_w a (HubReactionElement) and the strut's F:
+  // L = m_w (z'' + g) + (F - H z_x) / z_z.
+  const VehicleData& d = model.vehicle();
+  const double a = ctx.speed.accel(s.getTime());
+  const double H = (ctx.traction_per_wheel_per_accel - d.wheel_mass) * a;
+  const Vec3 z(struts[c].upper.getBodyRotation(s).z());
+  return d.wheel_mass * (hub_zdd + d.gravity) + (strut_force_[c](s) - H * z[0]) / z[2];
+}
+
+void VehicleSystem::build(bool filter_states, bool link_hubs) {
   const Model& M = model;
   const VehicleData& d = M.vehicle();
+  prescribed_hubs = M.tire().followsSignal() && M.topology() == SuspensionTopology::MacPherson && !link_hubs;
   std::vector<StrutElement*> slider_elems;
   const Rotation xToZ(-Pi / 2, YAxis);  // a slider's x axis along the parent's z
   const Rotation zToX(Pi / 2, YAxis);   // a pin's z axis along the parent's x
@@ -34,7 +46,13 @@ void VehicleSystem::build(bool filter_states) {
     const double x = isFront(c) ? d.a : -d.b;
     const double y = (cornerTrack(c) == Track::Left ? 0.5 : -0.5) * d.track;
     strut_preload[c] = M.staticStrutForce(c);
-    if (M.topology() == SuspensionTopology::MacPherson) {
+    if (prescribed_hubs) {
+      struts[c].upper = chassis;
+      struts[c].st_upper = Vec3(x, y, z_wc);
+      struts[c].is_prescribed = true;
+      struts[c].ctx = &ctx;
+      struts[c].tire = &tires[static_cast<std::size_t>(c)];
+    } else if (M.topology() == SuspensionTopology::MacPherson) {
       wheels[c] = MobilizedBody::Slider(chassis, Transform(xToZ, Vec3(x, y, z_wc)), wheelBody, Transform(xToZ));
       struts[c] = {chassis, wheels[c], Vec3(x, y, z_wc), Vec3(0)};
     }
@@ -61,12 +79,14 @@ void VehicleSystem::build(bool filter_states) {
     }
   }
   for (int c = 0; c < 4; ++c) {
-    massive.push_back({wheels[c], d.wheel_mass});
+    if (!prescribed_hubs) massive.push_back({wheels[c], d.wheel_mass});
     auto* se = new StrutElement(&ctx, &M, &M.strut(), struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
                                 filter_states, forces.getMySubsystemIndex());
       se->placeAt(c);
     se->factors_ = M.strutFactors()[static_cast<std::size_t>(c)];
-    if (M.topology() == SuspensionTopology::MacPherson) {
+    if (prescribed_hubs) {
+      strut_force_[c] = [se](const State& s) { return se->totalForce(s); };
+    } else if (M.topology() == SuspensionTopology::MacPherson) {
       se->bind_slider_ = true;  // the wheel carrier slides along the chassis z at the strut
     } else {
       const int ax = c / 2;
@@ -97,13 +117,23 @@ void VehicleSystem::build(bool filter_states) {
       else if (M.effects()[i]->kind() == EffectKind::TireLoad)
         tc.loads.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
     tires[c] = tc;
-    Force::Custom(forces, new TireElement(&ctx, tc, wheels[c]));
+    if (prescribed_hubs)
+      Force::Custom(forces, new HubReactionElement(&ctx, &struts[c], d.wheel_mass));
+    else
+      Force::Custom(forces, new TireElement(&ctx, tc, wheels[c]));
   }
   for (std::size_t i = 0; i < M.effects().size(); ++i)
     if (M.effects()[i]->kind() == EffectKind::AxleCoupling)
-      for (int ax = 0; ax < 2; ++ax)
-        Force::Custom(forces, new AxleCouplingElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]),
-                                                      &struts[2 * ax], &struts[2 * ax + 1], ax == 0));
+      for (int ax = 0; ax < 2; ++ax) {
+        auto* ce = new AxleCouplingElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), &struts[2 * ax],
+                                           &struts[2 * ax + 1], ax == 0);
+        Force::Custom(forces, ce);
+        if (!prescribed_hubs) continue;
+        for (int side = 0; side < 2; ++side) {  // the coupling pushes the left strut by F, the right by -F
+          auto& f = strut_force_[2 * ax + side];
+          f = [f, ce, sign = side == 0 ? 1.0 : -1.0](const State& s) { return f(s) + sign * ce->pairForce(s); };
+        }
+      }
   for (std::size_t i = 0; i < M.effects().size(); ++i)
     if (M.effects()[i]->kind() == EffectKind::ChassisForce)
       Force::Custom(forces, new ChassisForceElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), heave, chassis));
@@ -117,6 +147,7 @@ void VehicleSystem::build(bool filter_states) {
   chassis_q = chassis.getFirstQIndex(default_state);
   chassis_u = chassis.getFirstUIndex(default_state);
   for (int c = 0; c < 4; ++c) {
+    if (prescribed_hubs) continue;
     if (M.topology() == SuspensionTopology::MacPherson) struts[c].bindSlider(default_state);
     else struts[c].bindAxleSeat(default_state, axle_slider[c / 2], axle[c / 2], struts[c].st_lower[1]);
   }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 
 #include "twin/force_elements.hpp"
 
@@ -17,7 +18,10 @@ namespace dtwin::sim {
 struct VehicleSystem {
   /// `filter_states` selects the system that also integrates the auxiliary states of StrutFilter
   /// effects (used for runs where such an effect is active); without, they are inert.
-  VehicleSystem(const Model& model, bool filter_states);
+  /// `link_hubs`: a tire law that follows the signal (the hub input) holds the wheels to it by its
+  /// stiff link even on MacPherson struts (SimulationOptions::hub_motion "link"); otherwise their
+  /// motion is prescribed there (prescribed_hubs).
+  VehicleSystem(const Model& model, bool filter_states, bool link_hubs = false);
   VehicleSystem(const VehicleSystem&) = delete;
   VehicleSystem& operator=(const VehicleSystem&) = delete;
 
@@ -28,6 +32,11 @@ struct VehicleSystem {
   GeneralForceSubsystem forces{system};
   MobilizedBody::Slider heave;
   MobilizedBody::Universal chassis;
+  /// The hub input on MacPherson struts: no wheel bodies (`wheels` empty handles); each hub moves
+  /// as the road signal under it (TireCorner::hubPath) and its strut acts on the body alone
+  /// (StrutGeometry::is_prescribed), with the wheel's reactions across the slide
+  /// (HubReactionElement). The body alone sets the integrator's steps.
+  bool prescribed_hubs = false;
   std::array<MobilizedBody, 4> wheels;
   std::array<MobilizedBody, 2> axle_slider, axle;  // solid axle only
   std::array<StrutGeometry, 4> struts;               // main suspension strut per corner
@@ -37,8 +46,15 @@ struct VehicleSystem {
   QIndex heave_q, chassis_q;
   UIndex heave_u, chassis_u;
 
+  /// With prescribed hubs: the vertical force the road passes to the hub at corner c to hold the
+  /// wheel on its path, m_w (z_hub'' + g) plus the strut's and any axle coupling's push (and the
+  /// fore-aft reaction's part along the strut axis), for the hub's acceleration z_hub''. Velocity
+  /// stage. (With wheel bodies the tire law gives it: Recorder.)
+  double prescribedHubForce(const State& s, int c, double hub_zdd) const;
+
  private:
-  void build(bool filter_states);
+  void build(bool filter_states, bool link_hubs);
+  std::array<std::function<double(const State&)>, 4> strut_force_;  // prescribed hubs: strut + coupling, compression positive
 };
 
 }  // namespace dtwin::sim

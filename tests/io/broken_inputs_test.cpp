@@ -193,6 +193,7 @@ TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
       {"max_step_s = 0.2", "max_step_s = 1e-320", "max_step_s"},
       {"obstacle_max_step_s = 2e-3", "obstacle_max_step_s = 1e-9", "obstacle_max_step_s"},
       {"accuracy = 3e-4", "accuracy = 1e-300", "accuracy"},
+      {"accuracy = 3e-4", "accuracy = 3e-4\nhub_motion = \"stiff\"", "hub_motion"},
       {"lab_repetitions = 10", "lab_repetitions = 5000000000", "lab_repetitions"},
       {"gibbs_iterations = 20000", "gibbs_iterations = 900000000", "gibbs_iterations"},
       {"duration_s = 3.0", "duration_s = 1e9", "duration_s"},

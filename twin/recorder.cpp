@@ -102,8 +102,14 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
         const std::size_t iz = ZS + static_cast<std::size_t>(i);
         Zv[i] = a[iz] + u * (b[iz] - a[iz]);
       }
-      sys_.system.realize(st, Stage::Velocity);
+      // The body's accelerations from the forces at the rebuilt State: the struts' damping passes
+      // the signal's rate to the body, whose detail the body's steps do not resolve.
+      sys_.system.realize(st, Stage::Acceleration);
     }
+    // Heave, pitch and roll accelerations: the interpolant's (wheel bodies) or the State's.
+    const std::array<double, 3> body_acc =
+        prescribed ? std::array<double, 3>{st.getUDot()[sys_.heave_u], st.getUDot()[sys_.chassis_u + 1], st.getUDot()[sys_.chassis_u]}
+                   : std::array<double, 3>{acc(BODY + 1, BODY + 2), acc(BODY + 4, BODY + 5), acc(BODY + 7, BODY + 8)};
     for (int c = 0; c < 4; ++c) {
       double hx = 0.0, hxd = 0.0;
       if (prescribed) {
@@ -139,9 +145,9 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
     tr.column(col++)[r] = pos(BODY + 0, BODY + 1) - k0[BODY + 0];
     tr.column(col++)[r] = pos(BODY + 3, BODY + 4);
     tr.column(col++)[r] = pos(BODY + 6, BODY + 7);
-    tr.column(col++)[r] = acc(BODY + 1, BODY + 2);
-    tr.column(col++)[r] = acc(BODY + 4, BODY + 5);
-    tr.column(col++)[r] = acc(BODY + 7, BODY + 8);
+    tr.column(col++)[r] = body_acc[0];
+    tr.column(col++)[r] = body_acc[1];
+    tr.column(col++)[r] = body_acc[2];
     for (std::size_t si = 0; si < model.sensors().size(); ++si) {  // before any filter (filterSensors)
       const SensorSpec& x = model.sensors()[si];
       const Model::SensorSlots& sl = model.sensorSlots()[si];
@@ -165,9 +171,9 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
         const std::size_t c = static_cast<std::size_t>(x.corner());
         m = {hz[c] - k0[HZ + c], hzd[c], hzdd[c]};
       } else {
-        const Motion heave{pos(BODY + 0, BODY + 1), pos(BODY + 1, BODY + 2), acc(BODY + 1, BODY + 2)};
-        const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), acc(BODY + 4, BODY + 5)};
-        const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), acc(BODY + 7, BODY + 8)};
+        const Motion heave{pos(BODY + 0, BODY + 1), pos(BODY + 1, BODY + 2), body_acc[0]};
+        const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), body_acc[1]};
+        const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), body_acc[2]};
         const Motion at0{k0[BODY + 0], 0.0, 0.0};
         const std::array<double, 3> where{ctx.p[sl.x], ctx.p[sl.y], ctx.p[sl.z]};
         m = chassisPointMotion(heave, pitch, roll, where);

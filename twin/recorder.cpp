@@ -88,24 +88,7 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
     tr.column(col++)[r] = sc.speed.speed(t);
     // Each hub's height, rate and acceleration, and its strut's compression and rate.
     std::array<double, 4> hz{}, hzd{}, hzdd{}, sq{}, sqd{}, fz{};
-    if (prescribed) {
-      st.setTime(t);
-      Vector &Qv = st.updQ(), &Uv = st.updU();
-      Qv[sys_.heave_q] = pos(BODY + 0, BODY + 1);
-      Uv[sys_.heave_u] = pos(BODY + 1, BODY + 2);
-      Qv[sys_.chassis_q + 1] = pos(BODY + 3, BODY + 4);
-      Uv[sys_.chassis_u + 1] = pos(BODY + 4, BODY + 5);
-      Qv[sys_.chassis_q] = pos(BODY + 6, BODY + 7);
-      Uv[sys_.chassis_u] = pos(BODY + 7, BODY + 8);
-      Vector& Zv = st.updZ();
-      for (int i = 0; i < Zv.size(); ++i) {
-        const std::size_t iz = ZS + static_cast<std::size_t>(i);
-        Zv[i] = a[iz] + u * (b[iz] - a[iz]);
-      }
-      // The body's accelerations from the forces at the rebuilt State: the struts' damping passes
-      // the signal's rate to the body, whose detail the body's steps do not resolve.
-      sys_.system.realize(st, Stage::Acceleration);
-    }
+    if (prescribed) rebuildState(st, t, a, b, h, u);
     // Heave, pitch and roll accelerations: the interpolant's (wheel bodies) or the State's.
     const std::array<double, 3> body_acc =
         prescribed ? std::array<double, 3>{st.getUDot()[sys_.heave_u], st.getUDot()[sys_.chassis_u + 1], st.getUDot()[sys_.chassis_u]}
@@ -182,6 +165,26 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
       tr.column(col++)[r] = (x.quantity == SensorQuantity::DisplacementZ ? m.q : x.quantity == SensorQuantity::VelocityZ ? m.qd : m.qdd) + offset;
     }
   }
+}
+
+void Recorder::rebuildState(State& st, double t, const Knot& a, const Knot& b, double h, double u) const {
+  auto pos = [&](std::size_t iv, std::size_t id) { return h > 0 ? hermite(h, u, a[iv], a[id], b[iv], b[id]) : a[iv]; };
+  st.setTime(t);
+  Vector &Qv = st.updQ(), &Uv = st.updU();
+  Qv[sys_.heave_q] = pos(BODY + 0, BODY + 1);
+  Uv[sys_.heave_u] = pos(BODY + 1, BODY + 2);
+  Qv[sys_.chassis_q + 1] = pos(BODY + 3, BODY + 4);
+  Uv[sys_.chassis_u + 1] = pos(BODY + 4, BODY + 5);
+  Qv[sys_.chassis_q] = pos(BODY + 6, BODY + 7);
+  Uv[sys_.chassis_u] = pos(BODY + 7, BODY + 8);
+  Vector& Zv = st.updZ();
+  for (int i = 0; i < Zv.size(); ++i) {
+    const std::size_t iz = ZS + static_cast<std::size_t>(i);
+    Zv[i] = a[iz] + u * (b[iz] - a[iz]);
+  }
+  // The body's accelerations from the forces at the rebuilt State: the struts' damping passes
+  // the signal's rate to the body, whose detail the body's steps do not resolve.
+  sys_.system.realize(st, Stage::Acceleration);
 }
 
 bool Recorder::filteredSensors() const {

@@ -24,6 +24,10 @@ class Recorder {
   /// Hermite interpolant of the knots: the integrator's dense output, whatever the times.
   void writeRows(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, const std::vector<double>& ts,
                  Trace& tr) const;
+  using Knot = std::array<double, knot::KNOT>;
+  /// Prescribed hubs: `st` set to the body's coordinates and auxiliary states interpolated between
+  /// knots `a` and `b` (span h, fraction u) at time t, realised to accelerations.
+  void rebuildState(State& st, double t, const Knot& a, const Knot& b, double h, double u) const;
   /// Whether a sensor of the model is filtered (its filter state lives on the output grid).
   bool filteredSensors() const;
   /// The filtered sensors' columns of a grid trace (makeOutput), filtered as the logger did.

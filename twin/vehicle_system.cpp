@@ -30,6 +30,22 @@ double VehicleSystem::prescribedHubForce(const State& s, int c, double hub_zdd) 
   return d.wheel_mass * (hub_zdd + d.gravity) + (strut_force_[c](s) - H * z[0]) / z[2];
 }
 
+void VehicleSystem::installAxleCouplings() {
+  const Model& M = model;
+  for (std::size_t i = 0; i < M.effects().size(); ++i)
+    if (M.effects()[i]->kind() == EffectKind::AxleCoupling)
+      for (int ax = 0; ax < 2; ++ax) {
+        auto* ce = new AxleCouplingElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), &struts[2 * ax],
+                                           &struts[2 * ax + 1], ax == 0);
+        Force::Custom(forces, ce);
+        if (!prescribed_hubs) continue;
+        for (int side = 0; side < 2; ++side) {  // the coupling pushes the left strut by F, the right by -F
+          auto& f = strut_force_[2 * ax + side];
+          f = [f, ce, sign = side == 0 ? 1.0 : -1.0](const State& s) { return f(s) + sign * ce->pairForce(s); };
+        }
+      }
+}
+
 void VehicleSystem::build(bool filter_states, bool link_hubs) {
   const Model& M = model;
   const VehicleData& d = M.vehicle();
@@ -122,18 +138,7 @@ void VehicleSystem::build(bool filter_states, bool link_hubs) {
     else
       Force::Custom(forces, new TireElement(&ctx, tc, wheels[c]));
   }
-  for (std::size_t i = 0; i < M.effects().size(); ++i)
-    if (M.effects()[i]->kind() == EffectKind::AxleCoupling)
-      for (int ax = 0; ax < 2; ++ax) {
-        auto* ce = new AxleCouplingElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), &struts[2 * ax],
-                                           &struts[2 * ax + 1], ax == 0);
-        Force::Custom(forces, ce);
-        if (!prescribed_hubs) continue;
-        for (int side = 0; side < 2; ++side) {  // the coupling pushes the left strut by F, the right by -F
-          auto& f = strut_force_[2 * ax + side];
-          f = [f, ce, sign = side == 0 ? 1.0 : -1.0](const State& s) { return f(s) + sign * ce->pairForce(s); };
-        }
-      }
+  installAxleCouplings();
   for (std::size_t i = 0; i < M.effects().size(); ++i)
     if (M.effects()[i]->kind() == EffectKind::ChassisForce)
       Force::Custom(forces, new ChassisForceElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), heave, chassis));

@@ -54,6 +54,9 @@ struct VehicleSystem {
 
  private:
   void build(bool filter_states, bool link_hubs);
+  /// The AxleCoupling effects' elements on each axle (with prescribed hubs, their share of each
+  /// corner's strut_force_ too). After the struts.
+  void installAxleCouplings();
   std::array<std::function<double(const State&)>, 4> strut_force_;  // prescribed hubs: strut + coupling, compression positive
 };
 

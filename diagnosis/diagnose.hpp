@@ -48,7 +48,8 @@ struct DiagnoseOptions {
   int candidates = 6;
   double confirm_within = 2.0;       ///< screening scores within this factor of the best are confirmed side by side
   /// Rounds of the budget per stage (docs/diagnosis.md, "Confirmation"): after a round, the next
-  /// `candidates` of those within the factor are confirmed too, up to this many rounds.
+  /// `candidates` of those within the factor are confirmed too, up to this many rounds, while no
+  /// confirmed candidate leaves the residual at the noise (lack_of_fit_alpha).
   int confirm_rounds = 3;
   /// At most this many causes named by forward stagewise selection (docs/diagnosis.md, "More
   /// than one cause"); 1: the best candidate alone, as before.

@@ -120,7 +120,15 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   // a delay against a low-pass) may remove three times its score, or a tenth of it: the order
   // within the factor is not to be trusted, so the next rounds of the budget confirm the
   // candidates within it that the first left out.
-  for (int r = 1; r < d.options.confirm_rounds; ++r) {
+  // A later round looks for a candidate the screening under-rated: one that removes more than
+  // those confirmed. Once one of them leaves no significant lack of fit, the residual is the
+  // noise's and no candidate can remove more; the rounds stop.
+  auto explained = [&] {
+    return std::any_of(optimised.begin(), optimised.end(), [&](std::size_t i) {
+      return cands[i].fit->comparison.lack_of_fit_p >= d.options.lack_of_fit_alpha;
+    });
+  };
+  for (int r = 1; r < d.options.confirm_rounds && !explained(); ++r) {
     const auto next = chooseConfirmations(cands, d.options, tried);
     if (next.empty()) break;
     round(next, r);

@@ -449,6 +449,13 @@ TEST(DiagnoseStructure, TheHubInputAndASkyhookControllerAreNamed) {
   o.effects = {"tire=hub", "skyhook", "groundhook", "damper_asymmetry"};
   o.causes = 2;
   o.propose_terms = 0;
+  // One confirmation per round: the rounds after the first run only while no confirmed candidate
+  // leaves the residual at the noise.
+  o.candidates = 1;
+  std::vector<std::string> on_hub;  // the models confirmed on top of the hub input, in order
+  o.before_candidate_step = [&](const std::string& model, const std::string& step) {
+    if (step == "optimum" && model.rfind("tire=hub+", 0) == 0) on_hub.push_back(model);
+  };
   const auto r = diagnose(s, s.assembly("M1"), data, {}, o, freshDir("diag_hub_skyhook"));
   ASSERT_EQ(r.verdict, "effect") << r.text();
   ASSERT_GE(r.causes.size(), 2u) << r.text();
@@ -456,6 +463,10 @@ TEST(DiagnoseStructure, TheHubInputAndASkyhookControllerAreNamed) {
   for (const auto& k : r.causes) named.insert(k.name);
   EXPECT_TRUE(named.count("tire=hub")) << r.text();
   EXPECT_TRUE(named.count("skyhook")) << r.text();
+  // The skyhook on the hub input explains the data to the noise: no round follows its own.
+  ASSERT_FALSE(on_hub.empty());
+  EXPECT_GE(r.causes.back().fit.comparison.lack_of_fit_p, o.lack_of_fit_alpha) << r.text();
+  EXPECT_EQ(on_hub.back(), "tire=hub+skyhook") << r.text();
   for (const auto& k : r.causes) {
     if (k.name == "tire=hub") {
       EXPECT_EQ(k.kind, "option");

@@ -10,6 +10,7 @@
 
 #include "calibration/subspace_lm.hpp"
 #include "common/format.hpp"
+#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
 #include "common/distributed.hpp"
@@ -246,6 +247,20 @@ std::vector<double> probeStepsFromJacobian(const Eigen::MatrixXd& J, double thre
     h[static_cast<std::size_t>(k)] = std::clamp(half / 10, 1e-4, 1e-2);
   }
   return h;
+}
+
+std::optional<ProbeFigures> takeOverProbe(const nlohmann::json& last, const std::vector<double>& theta, const std::vector<double>& h,
+                                          double accuracy, const std::vector<double>& lower, const std::vector<double>& upper) {
+  const std::size_t d = theta.size();
+  if (!last.is_object() || !last.contains("at") || !last.contains("probe_step") || !last.contains("accuracy")) return std::nullopt;
+  if (last.value("kept", true) == false || !last.at("accuracy").is_number() || last.at("accuracy").get<double>() != accuracy) return std::nullopt;
+  const std::vector<double> at = numbersFromJson(last.at("at")), step = numbersFromJson(last.at("probe_step"));
+  if (at.size() != d || step.size() != d || h.size() != d || lower.size() != d || upper.size() != d) return std::nullopt;
+  for (std::size_t k = 0; k < d; ++k) {
+    if (!(std::abs(theta[k] - at[k]) <= 0.01 * h[k] * (upper[k] - lower[k]))) return std::nullopt;
+    if (!(step[k] >= 0.8 * h[k] && step[k] <= 1.25 * h[k])) return std::nullopt;
+  }
+  return ProbeFigures{numberFromJson(last.at("roughness")), numberFromJson(last.at("optimum_shift")), numberFromJson(last.at("shift_floor"))};
 }
 
 void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift, double shift_floor) {

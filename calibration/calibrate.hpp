@@ -302,6 +302,9 @@ using ::dtwin::StageProgress;  // common/progress.hpp
 /// `message` says what to tighten.
 struct IntegratorCheck {
   std::string steps = "adaptive";               ///< how the calibration's runs chose their steps
+  /// Frozen steps: whose probes gave the roughness and shift: "own", or "step choice" (the step
+  /// choice's last probe, made at this optimum and accuracy with the same probe steps).
+  std::string probes = "own";
   double accuracy = 0.0, accuracy_check = 0.0;  ///< the study's, and the check's (one tenth)
   double sse = 0.0, sse_check = 0.0;            ///< at the optimum, with each
   double prediction_change = 0.0;               ///< ‖δ‖ (weighted: in noise sd when the weights are 1/σ²)
@@ -332,6 +335,19 @@ double quadraticRoughness(const std::vector<double>& x, const std::vector<double
 /// H⁺ its pseudo-inverse). For residuals r + δ of a linear model it is ‖P δ‖², P the projection
 /// onto J's columns: the exact model's SSE at the biased optimum exceeds its minimum by this much.
 double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g);
+
+/// A frozen-steps probe's figures (probeBias): the roughness, the optimum shift and its floor.
+struct ProbeFigures {
+  double roughness = 0.0, optimum_shift = 0.0, shift_floor = 0.0;
+};
+
+/// The figures of the step choice's last try (`last`, an entry of optimum.json
+/// steps.accuracy_choice) for the integrator check at `theta` with probe steps `h` (scaled by the
+/// bounds' range) and frozen steps at `accuracy`: when the try was made at that accuracy, kept, at
+/// this optimum (every parameter within a hundredth of its probe step) and with probe steps within
+/// 25 % of `h`, the check's own probes would run the same simulations again. Otherwise nullopt.
+std::optional<ProbeFigures> takeOverProbe(const nlohmann::json& last, const std::vector<double>& theta, const std::vector<double>& h,
+                                          double accuracy, const std::vector<double>& lower, const std::vector<double>& upper);
 
 /// Turns an adaptive-steps check into the frozen-steps one: sets roughness, optimum_shift and
 /// shift_floor, the jitter (the roughness, or the shift when it exceeds 4 × shift_floor), `ok` and the message.

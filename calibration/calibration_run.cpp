@@ -368,7 +368,7 @@ void CalibrationRun::chooseStepAccuracy() {
     if (!p.ok) return;
     steps_log_.push_back({{"accuracy", accuracy}, {"optimum_shift", jsonNumber(p.shift)}, {"threshold", jsonNumber(threshold)},
                           {"roughness", jsonNumber(p.roughness)}, {"shift_floor", jsonNumber(p.shift_floor)},
-                          {"probe_step", jsonNumbers(h)}});
+                          {"probe_step", jsonNumbers(h)}, {"at", jsonNumbers(res_.optimum.theta)}});
     if (!(p.shift > 4 * p.shift_floor)) {
       // The shift is within what the SSE's roughness lets central differences see (jumps of the
       // model itself, e.g. a tire force that jumps at touch-down between two stage times): no
@@ -421,9 +421,13 @@ void CalibrationRun::optimum() {
     res_.optimum = optimumFrom(j.at("optimum"));
     // The later stages replay the steps the optimum's polish was made on: frozen again at the same θ.
     if (options_.steps == "frozen") {
-      if (j.contains("steps") && j.at("steps").value("frozen", false))
+      if (j.contains("steps") && j.at("steps").value("frozen", false)) {
         objective_->freezeSteps(numbersFromJson(j.at("steps").at("frozen_at")), j.at("steps").value("accuracy", 0.0));
-      else objective_->thawSteps();
+        // The tries, whose last probe the integrator check may take over (integratorCheck).
+        if (j.at("steps").contains("accuracy_choice")) steps_log_ = j.at("steps").at("accuracy_choice");
+      } else {
+        objective_->thawSteps();
+      }
     }
   } else {
     nlohmann::json screening;

@@ -239,8 +239,15 @@ void CalibrationRun::integratorCheck() {
                               : 1e-1;
       h[k] = std::clamp(half / 10, 1e-4, 1e-2);
     }
-    const BiasProbe p = probeBias(fine, theta, h, true, "integrator check: probes");
-    if (p.ok) applyProbes(res_.integrator, p.roughness, p.shift, p.shift_floor);
+    if (const auto taken = steps_log_.is_array() && !steps_log_.empty()
+                               ? takeOverProbe(steps_log_.back(), theta, h, accuracy, objective_->lower(), objective_->upper())
+                               : std::nullopt) {
+      applyProbes(res_.integrator, taken->roughness, taken->optimum_shift, taken->shift_floor);
+      res_.integrator.probes = "step choice";
+    } else {
+      const BiasProbe p = probeBias(fine, theta, h, true, "integrator check: probes");
+      if (p.ok) applyProbes(res_.integrator, p.roughness, p.shift, p.shift_floor);
+    }
   }
   res_.stage_wall_s.push_back({"integrator check", secondsSince(t0)});
 }

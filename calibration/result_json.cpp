@@ -167,7 +167,7 @@ nlohmann::json gaussNewtonJson(const JointRegionPlan& plan, const std::vector<Ra
 
 // ------------------------------------------------------------------ result JSON
 nlohmann::json IntegratorCheck::toJson() const {
-  return {{"steps", steps}, {"roughness", jsonNumber(roughness)}, {"optimum_shift", jsonNumber(optimum_shift)},
+  return {{"steps", steps}, {"probes", probes}, {"roughness", jsonNumber(roughness)}, {"optimum_shift", jsonNumber(optimum_shift)},
           {"shift_floor", jsonNumber(shift_floor)},
           {"accuracy", accuracy},           {"accuracy_check", accuracy_check}, {"sse", jsonNumber(sse)},
           {"sse_check", jsonNumber(sse_check)}, {"prediction_change", jsonNumber(prediction_change)},

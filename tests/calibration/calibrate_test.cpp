@@ -170,8 +170,19 @@ TEST(Calibrate, FrozenStepsMakeTheObjectiveSmoothAndTheCheckSaysSo) {
   EXPECT_GT(c.roughness, 0.0);
   EXPECT_DOUBLE_EQ(c.jitter, c.optimum_shift > 4 * c.shift_floor ? std::max(c.roughness, c.optimum_shift) : c.roughness);
   EXPECT_EQ(c.ok, c.jitter < 0.5 * c.threshold);
-  std::printf("[ figures  ] M1 lab, frozen steps: roughness %.3g, optimum shift %.3g (floor %.3g), threshold %.3g, accuracy %.3g\n",
-              c.roughness, c.optimum_shift, c.shift_floor, c.threshold, c.accuracy);
+  // The check takes over the step choice's last probe only when it was made at this optimum and
+  // accuracy; its figures are then that probe's.
+  // (Here a design point beat the polished optimum, so the check probes on its own.)
+  const auto& last = opt["steps"]["accuracy_choice"].back();
+  ASSERT_TRUE(last.contains("at"));
+  const bool moved = last["at"].get<std::vector<double>>() != r.optimum.theta;
+  EXPECT_EQ(c.probes, moved ? "own" : c.probes);
+  if (c.probes == "step choice") {
+    EXPECT_EQ(last["roughness"].get<double>(), c.roughness);
+    EXPECT_EQ(last["optimum_shift"].get<double>(), c.optimum_shift);
+  }
+  std::printf("[ figures  ] M1 lab, frozen steps: roughness %.3g, optimum shift %.3g (floor %.3g), threshold %.3g, accuracy %.3g, probes %s\n",
+              c.roughness, c.optimum_shift, c.shift_floor, c.threshold, c.accuracy, c.probes.c_str());
 
   o.steps = "adaptive";
   const auto a = calibrateAssembly(f.study, f.assembly, f.data, "lab", o, (dir / "adaptive").string(), "x");
@@ -181,6 +192,31 @@ TEST(Calibrate, FrozenStepsMakeTheObjectiveSmoothAndTheCheckSaysSo) {
   EXPECT_EQ(a.integrator.steps, "adaptive");
   std::printf("[ figures  ] adaptive steps: jitter %.3g, threshold %.3g\n", a.integrator.jitter, a.integrator.threshold);
   fs::remove_all(dir);
+}
+
+// The integrator check takes over the step choice's last probe only when it would repeat it: the
+// same accuracy, a kept try, the same optimum (within a hundredth of a probe step) and probe steps
+// within 25 %.
+TEST(Calibrate, TheIntegratorCheckTakesOverTheStepChoicesProbeOnlyWhenItWouldRepeatIt) {
+  const std::vector<double> lo{0, 100}, up{10, 300}, theta{4, 200}, h{1e-3, 2e-3};
+  const nlohmann::json last{{"accuracy", 5e-5},    {"at", {4.0, 200.0}}, {"probe_step", {1e-3, 2.2e-3}},
+                            {"roughness", 0.25}, {"optimum_shift", 1.5}, {"shift_floor", 0.125}};
+  const auto taken = takeOverProbe(last, theta, h, 5e-5, lo, up);
+  ASSERT_TRUE(taken.has_value());
+  EXPECT_EQ(taken->roughness, 0.25);
+  EXPECT_EQ(taken->optimum_shift, 1.5);
+  EXPECT_EQ(taken->shift_floor, 0.125);
+  EXPECT_TRUE(takeOverProbe(last, {4 + 0.9e-5 * 10, 200}, h, 5e-5, lo, up).has_value());  // moved 0.9 % of a step
+  EXPECT_FALSE(takeOverProbe(last, {4 + 1.1e-5 * 10, 200}, h, 5e-5, lo, up).has_value());  // 1.1 %
+  EXPECT_FALSE(takeOverProbe(last, theta, h, 4e-5, lo, up).has_value());                    // another accuracy
+  EXPECT_FALSE(takeOverProbe(last, theta, {1e-3, 1.7e-3}, 5e-5, lo, up).has_value());       // its step 29 % longer
+  EXPECT_FALSE(takeOverProbe(last, theta, {0.7e-3, 2e-3}, 5e-5, lo, up).has_value());       // 43 % longer
+  nlohmann::json dropped = last;
+  dropped["kept"] = false;  // a tighter accuracy that did not halve the shift: undone
+  EXPECT_FALSE(takeOverProbe(dropped, theta, h, 5e-5, lo, up).has_value());
+  nlohmann::json old = last;
+  old.erase("at");  // written before the tries recorded where they probed
+  EXPECT_FALSE(takeOverProbe(old, theta, h, 5e-5, lo, up).has_value());
 }
 
 // A calibration interrupted during the design stage resumes from its journal and ends with the

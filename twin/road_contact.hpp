@@ -17,11 +17,49 @@ namespace dtwin {
 using namespace SimTK;
 
 namespace sim {
+/// The run's speed profile with its last values kept: at one time every corner asks the same
+/// distance, speed and acceleration (and the delayed signal's, at t + delay), and the recorder asks
+/// them again; each is computed once. Per run, like RunContext (no locks); the numbers are
+/// SpeedProfile's bit for bit.
+class SpeedMemo {
+ public:
+  SpeedMemo& operator=(const SpeedProfile& p) {
+    profile_ = p;
+    memo_ = {};
+    return *this;
+  }
+  double speed(double t) const { return at(kSpeed, t); }
+  double accel(double t) const { return at(kAccel, t); }
+  double distance(double t) const { return at(kDistance, t); }
+  const SpeedProfile& profile() const { return profile_; }
+
+ private:
+  enum Kind { kSpeed = 0, kAccel = 1, kDistance = 2 };
+  struct Kept {  // the last two times asked and their values
+    std::array<double, 2> t{}, v{};
+    int filled = 0, next = 0;
+  };
+  double at(Kind kind, double t) const {
+    Kept& k = memo_[kind];
+    for (int i = 0; i < k.filled; ++i)
+      if (k.t[static_cast<std::size_t>(i)] == t) return k.v[static_cast<std::size_t>(i)];
+    const double v = kind == kSpeed ? profile_.speed(t) : kind == kAccel ? profile_.accel(t) : profile_.distance(t);
+    const auto slot = static_cast<std::size_t>(k.next);
+    k.t[slot] = t;
+    k.v[slot] = v;
+    k.next ^= 1;
+    k.filled = std::min(k.filled + 1, 2);
+    return v;
+  }
+  SpeedProfile profile_;
+  mutable std::array<Kept, 3> memo_{};
+};
+
 /// Per-run data the force elements read (in the VehicleSystem; the Simulator sets it before each run).
 struct RunContext {
   const double* p = nullptr;
   const Road* road = nullptr;
-  SpeedProfile speed;
+  SpeedMemo speed;
   double traction_per_wheel_per_accel = 0.0;  ///< M/4: traction share per unit acceleration
   /// The chassis's heave, pitch and roll coordinates at the start (StaticStart, static_start.hpp): ChassisForce
   /// effects read the motion from there.

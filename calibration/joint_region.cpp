@@ -94,11 +94,11 @@ JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std
   for (const auto& r : residuals) n = std::max(n, r.size());
   plan.jacobian = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), d);
   for (int j = 0; j < d; ++j) {
-    const auto& rm = residuals[static_cast<std::size_t>(2 * j)];
-    const auto& rp = residuals[static_cast<std::size_t>(2 * j + 1)];
+    const auto& rm = residuals[2 * static_cast<std::size_t>(j)];
+    const auto& rp = residuals[2 * static_cast<std::size_t>(j) + 1];
     const auto k = static_cast<std::size_t>(j);
     const double range = problem.upper[k] - problem.lower[k];
-    const double dz = (stencil[static_cast<std::size_t>(2 * j + 1)][k] - stencil[static_cast<std::size_t>(2 * j)][k]) / range;
+    const double dz = (stencil[2 * static_cast<std::size_t>(j) + 1][k] - stencil[2 * static_cast<std::size_t>(j)][k]) / range;
     bool ok = rm.size() == n && rp.size() == n && dz > 0.0;
     for (std::size_t i = 0; ok && i < n; ++i) ok = std::isfinite(rm[i]) && std::isfinite(rp[i]);
     if (!ok) {
@@ -241,7 +241,7 @@ std::vector<double> physical(const BoxProblem& p, const Eigen::VectorXd& z) {
 
 /// The straight sweep's crossing along axis i, direction s (the reach when it was clipped).
 double crossingOf(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps, int i, int s) {
-  const RaySweep& w = sweeps[static_cast<std::size_t>(2 * i + (s > 0 ? 1 : 0))];
+  const RaySweep& w = sweeps[2 * static_cast<std::size_t>(i) + (s > 0 ? 1 : 0)];
   const double reach = s > 0 ? plan.reach_upper(i) : plan.reach_lower(i);
   return (w.clipped || w.budget_out) ? reach : std::max(w.t_edge, 1e-12);
 }
@@ -461,7 +461,7 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
   for (const auto& tr : traces) traced[static_cast<std::size_t>(tr.axis)] = true;
   for (int i = 0; i < d; ++i)
     for (int s : {-1, +1}) {
-      const RaySweep& w = sweeps[static_cast<std::size_t>(2 * i + (s > 0 ? 1 : 0))];
+      const RaySweep& w = sweeps[2 * static_cast<std::size_t>(i) + (s > 0 ? 1 : 0)];
       r.evaluations += w.evaluations;
       if (w.budget_out)
         r.messages.push_back("axis " + std::to_string(i) + (s > 0 ? " (+)" : " (-)") +

@@ -52,6 +52,7 @@ void readSubsystems(TableReader& top, Study& s) {
       const auto& known = knownSubsystems();
       if (!known.count(sub)) {
         std::vector<std::string> names;
+        names.reserve(known.size());
         for (const auto& [name, options] : known) names.push_back(name);
         throw InputError(r.where(sub), unknownNameRule("subsystem", sub, names));
       }

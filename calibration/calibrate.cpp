@@ -222,7 +222,7 @@ double integratorOptimumShift(const Eigen::MatrixXd& J, const Eigen::VectorXd& g
   DTWIN_CHECK(J.cols() == g.size(), "integratorOptimumShift: J and g disagree");
   const Eigen::MatrixXd H = 2.0 * J.transpose() * J;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
-  const Eigen::VectorXd ev = es.eigenvalues();
+  const Eigen::VectorXd& ev = es.eigenvalues();
   const double tol = std::max(ev.cwiseAbs().maxCoeff(), 1e-300) * 1e-12;
   const Eigen::VectorXd p = es.eigenvectors().transpose() * g;
   double s = 0.0;
@@ -237,7 +237,7 @@ std::vector<double> probeStepsFromJacobian(const Eigen::MatrixXd& J, double thre
   if (d == 0 || !(threshold > 0) || !J.allFinite()) return h;
   const Eigen::MatrixXd H = J.transpose() * J;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
-  const Eigen::VectorXd ev = es.eigenvalues();
+  const Eigen::VectorXd& ev = es.eigenvalues();
   const double tol = std::max(ev.cwiseAbs().maxCoeff(), 1e-300) * 1e-12;
   for (long k = 0; k < d; ++k) {
     double c = 0.0;  // (JᵀJ)⁺_kk

@@ -44,7 +44,7 @@ nlohmann::json readStage(const Distributed* processes, const fs::path& p, const 
     return "F" + os.str();
   });
   if (text.empty()) return nullptr;
-  const nlohmann::json j = nlohmann::json::parse(text.begin() + 1, text.end());
+  nlohmann::json j = nlohmann::json::parse(text.begin() + 1, text.end());
   if (!j.contains("fingerprint") || j["fingerprint"] != fingerprint)
     throw InputError(p.string(), "was made by a different calibration (study, data, assembly or sizes changed); "
                                  "use a new output folder or delete it to start over");
@@ -270,6 +270,7 @@ std::vector<std::vector<double>> CalibrationRun::optimiserStarts(nlohmann::json&
       options_.processes, cand.size(), options_.threads, [&](std::size_t i, int) { return std::vector<double>{objective.sse(cand[i])}; },
         [&](std::size_t done, std::size_t total) { report("optimum: screening", done, total); });
     std::vector<double> fs;
+    fs.reserve(f.size());
     for (const auto& v : f) fs.push_back(v[0]);
     x0 = bestStarts(cand, fs, objective.lower(), objective.upper(), options_.optimizer_starts);
     screening = {{"points", cand.size()},
@@ -453,6 +454,7 @@ void CalibrationRun::optimum() {
         },
         [&](std::size_t done, std::size_t total) { report("optimum", done, total); });
     std::vector<StartResult> starts;
+    starts.reserve(packed.size());
     for (const auto& v : packed) starts.push_back(unpackStart(v));
     // With frozen steps the starts are least-squares runs already and polishOnOwnSteps polishes
     // the best on its own steps: the derivative-free polish would add nothing.
@@ -490,6 +492,7 @@ void CalibrationRun::paperBox(const BoxProblem& bp, nlohmann::json& stage) {
       [&](std::size_t i, int) { return packSweep(calcBoxSweep(sse_, bp, static_cast<int>(i), options_.box)); },
       [&](std::size_t done, std::size_t total) { report("box", done, total); });
   std::vector<SweepResult> sweeps;
+  sweeps.reserve(packed.size());
   for (const auto& v : packed) sweeps.push_back(unpackSweep(v));
   res_.box = collectFeasibleBox(bp, std::move(sweeps));
   res_.region = regionFromBox(res_.box, bp);
@@ -511,6 +514,7 @@ void CalibrationRun::jointRegion(const BoxProblem& bp, nlohmann::json& stage) {
       [&](std::size_t i, int) { return packRay(calcRegionSweep(sse_, plan, static_cast<int>(i), options_.joint)); },
       [&](std::size_t done, std::size_t total) { report("region: sweeps", done, total); });
   std::vector<RaySweep> sweeps;
+  sweeps.reserve(packed.size());
   for (const auto& v : packed) sweeps.push_back(unpackRay(v));
   // A smooth SSE (frozen steps): forward differences are enough for the traces' Jacobians.
   JointRegionOptions traceOptions = options_.joint;
@@ -524,6 +528,7 @@ void CalibrationRun::jointRegion(const BoxProblem& bp, nlohmann::json& stage) {
       },
       [&](std::size_t done, std::size_t total) { report("region: ridges", done, total); });
   std::vector<RidgeTrace> traces;
+  traces.reserve(packed_traces.size());
   for (const auto& v : packed_traces) traces.push_back(unpackTrace(v, static_cast<int>(d_)));
   res_.region = collectJointRegion(plan, sweeps, traces, options_.joint);
   stage["gauss_newton"] = gaussNewtonJson(plan, sweeps, traces);

@@ -161,6 +161,7 @@ void CalibrationRun::profile() {
         },
         [&](std::size_t done, std::size_t total) { report("profile", done, total); });
     std::vector<ProfileEnd> ends;
+    ends.reserve(packed.size());
     for (const auto& v : packed) ends.push_back(unpackProfileEnd(v));
     res_.profile = collectProfile(plan, ends, options_.profile);
     rootWrites(options_.processes, [&] {

@@ -13,7 +13,7 @@ namespace {
 /// H⁻¹ by a pseudo-inverse: a direction the data do not determine gets no weight (and κ 1).
 Eigen::MatrixXd pseudoInverse(const Eigen::MatrixXd& H) {
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  const Eigen::VectorXd sv = svd.singularValues();
+  const Eigen::VectorXd& sv = svd.singularValues();
   const double tol = sv.size() ? sv(0) * 1e-12 * static_cast<double>(H.cols()) : 0.0;
   Eigen::VectorXd inv = Eigen::VectorXd::Zero(sv.size());
   for (Eigen::Index k = 0; k < sv.size(); ++k)
@@ -36,7 +36,7 @@ std::vector<int> timeBlocks(const std::vector<double>& time_s, const std::vector
   for (auto& [set, t] : times) {
     std::sort(t.begin(), t.end());
     t.erase(std::unique(t.begin(), t.end()), t.end());
-    if (t.size() < static_cast<std::size_t>(kBlocks * kMinTimesPerBlock)) return none;
+    if (t.size() < static_cast<std::size_t>(kBlocks) * kMinTimesPerBlock) return none;
     first_block[set] = next;
     next += kBlocks;
   }

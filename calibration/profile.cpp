@@ -390,8 +390,8 @@ ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<Profi
   out.dof = plan.dof;
   for (int j = 0; j < d; ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    const ProfileEnd& lo = ends[static_cast<std::size_t>(2 * j)];
-    const ProfileEnd& hi = ends[static_cast<std::size_t>(2 * j + 1)];
+    const ProfileEnd& lo = ends[2 * static_cast<std::size_t>(j)];
+    const ProfileEnd& hi = ends[2 * static_cast<std::size_t>(j) + 1];
     out.lower.push_back(std::min(lo.theta[jj], plan.low_point[jj][jj]));
     out.upper.push_back(std::max(hi.theta[jj], plan.high_point[jj][jj]));
     out.lower_at_bound.push_back(lo.at_bound);

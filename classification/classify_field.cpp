@@ -381,6 +381,7 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
 
   // Cost-aware recommendation on the joint evidence.
   std::vector<ModelCost> mc;
+  mc.reserve(static_cast<std::size_t>(M));
   for (int m = 0; m < M; ++m)
     mc.push_back({targets[static_cast<std::size_t>(m)].id, out.result.total_log_likelihood[m], out.models[static_cast<std::size_t>(m)].cost_s_per_s});
   RecommendOptions ro;

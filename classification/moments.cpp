@@ -114,8 +114,10 @@ void MomentAccumulator::add(const Eigen::VectorXd& x) {
     return;
   }
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p_);
+  // NOLINTBEGIN(performance-no-automatic-move): `zero` is captured, not the lambda's own: never moved
   mergeSet(
       1, x, [&](const Eigen::VectorXd&) { return zero; }, 0.0, &zero, 0.0, [] {}, true);
+  // NOLINTEND(performance-no-automatic-move)
 }
 
 void MomentAccumulator::addBlock(const Eigen::MatrixXd& X) {
@@ -152,6 +154,7 @@ void MomentAccumulator::merge(const MomentAccumulator& other) {
                                  (track_ ? "true" : "false") + " vs " +
                                  (other.track_ ? "true" : "false") + ")");
   if (&other == this) {  // merging with itself: work on a copy
+    // NOLINTNEXTLINE(performance-unnecessary-copy-initialization): merge() changes other (*this)
     const MomentAccumulator copy = other;
     merge(copy);
     return;

@@ -19,7 +19,7 @@ namespace {
 template <class Ok>
 std::string decimals(double v, Ok ok) {
   for (int d = 1; d <= 12; ++d) {
-    const std::string text = formatFixed(v, d);
+    std::string text = formatFixed(v, d);
     double back = 0;
     if (parseNumber(text, back) && ok(back)) return text;
   }

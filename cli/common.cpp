@@ -86,7 +86,7 @@ bool progressOn(bool quiet, const Distributed* processes) { return !quiet && isR
 namespace dtwin::cli {
 
 std::string messageForCommand(const CommandHandle& handle, const std::string& where, const std::string& rule) {
-  const std::string plain = where.empty() ? rule : where + ": " + rule;
+  std::string plain = where.empty() ? rule : where + ": " + rule;
   const auto dot = where.rfind('.');
   // Only "<options>.<field>" (no path, no spaces) is an option field.
   if (dot == std::string::npos || where.find_first_of(" /:") != std::string::npos || handle.app == nullptr) return plain;

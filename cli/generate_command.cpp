@@ -50,6 +50,7 @@ AssemblySpec chooseAssembly(const Study& study, const std::string& id) {
 
 std::vector<EffectSetting> parseHidden(const std::vector<std::string>& texts, const EffectCatalog& catalog) {
   std::vector<EffectSetting> out;
+  out.reserve(texts.size());
   for (const auto& t : texts) out.push_back(parseEffectSetting(t, "--hidden-effect", catalog));
   return out;
 }

@@ -62,6 +62,7 @@ class ProgressBar {
     if (done < total && now - last_ < std::chrono::milliseconds(100)) return;
     last_ = now;
     const double frac = total ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
+    // NOLINTNEXTLINE(bugprone-incorrect-roundings): frac >= 0, rounded half up, as the bar was
     const int width = 30, fill = static_cast<int>(frac * width + 0.5);
     std::string bar(static_cast<std::size_t>(fill), '#');
     bar.resize(width, '.');

@@ -41,7 +41,7 @@ Seal checkSeal(const nlohmann::json& j) {
 }
 
 std::string setAsideCorrupt(const std::string& path, const std::string& what) {
-  const std::string aside = path + ".corrupt";
+  std::string aside = path + ".corrupt";
   std::error_code ec;
   std::filesystem::rename(path, aside, ec);
   if (ec) {  // cannot rename: at least never read it again

@@ -34,7 +34,7 @@ class InputError : public std::runtime_error {
   /// `where` names the file and the field or line ("study.toml: scenarios.lab.road.height_m"),
   /// `rule` the rule that was broken ("must be > 0, got -0.2"). Both are kept on one line
   /// (printable above): a quoted field that holds a line end cannot split the message.
-  InputError(std::string where, std::string rule)
+  InputError(const std::string& where, const std::string& rule)
       : std::runtime_error(where.empty() ? printable(rule) : printable(where) + ": " + printable(rule)),
         where_(printable(where)), rule_(printable(rule)) {}
   const std::string& where() const { return where_; }

@@ -351,6 +351,7 @@ CandidateSpec optionCandidate(const std::string& name, const AssemblySpec& assem
   const std::string sub = name.substr(0, eq), opt = name.substr(eq + 1);
   const auto& known = knownSubsystems();
   std::vector<std::string> subs;
+  subs.reserve(known.size());
   for (const auto& [k, _] : known) subs.push_back(k);
   if (!known.count(sub)) throw InputError(where, unknownNameRule("subsystem", sub, subs));
   const auto& opts = known.at(sub);

@@ -73,6 +73,7 @@ std::vector<std::vector<double>> posteriorRows(const std::vector<std::string>& s
   for (std::size_t k = 0; k < m; ++k) {
     const std::size_t i = m == 1 ? rows.size() / 2 : k * (rows.size() - 1) / (m - 1);
     std::vector<double> th;
+    th.reserve(col.size());
     for (int c : col) th.push_back(rows[i][static_cast<std::size_t>(c)]);
     out.push_back(th);
   }

@@ -75,6 +75,7 @@ struct Diagnosis {
   std::string findingOf(const std::string& name, const Figures& f) const {
     std::vector<double> values;
     const auto ps = parametersOf(name, f);
+    values.reserve(ps.size());
     for (const auto& p : ps) values.push_back(p.mean);
     // The first value's printed interval, when it has one (a full calibration).
     const bool interval = !ps.empty() && ps[0].interval != "none";
@@ -120,6 +121,7 @@ struct Diagnosis {
   /// The calibration setup with `names` installed, weighted by `weights`.
   calib::CalibrationSetup setupOf(const std::vector<std::string>& names) const {
     std::vector<CandidateSpec> cs;
+    cs.reserve(names.size());
     for (const auto& n : names) cs.push_back(spec(n));
     return candidatesSetup(cs, weights);
   }

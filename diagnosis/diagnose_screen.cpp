@@ -73,10 +73,12 @@ Linearisation linearise(const Diagnosis& d) {
   for (std::size_t k = 0; k < dim; ++k) {
     up[k] = std::min(h[k], obj.upper()[k] - lin.theta_hat[k]);
     down[k] = std::min(h[k], lin.theta_hat[k] - obj.lower()[k]);
+    // NOLINTBEGIN(bugprone-branch-clone): the first and last cases step alike, said apart
     if (up[k] < 0.5 * h[k] && down[k] < 0.5 * h[k]) up[k] = down[k] = h[k];  // a range narrower than the step: both sides
     else if (up[k] < 0.5 * h[k]) up[k] = 0.0, down[k] = h[k];
     else if (down[k] < 0.5 * h[k]) down[k] = 0.0, up[k] = h[k];
     else up[k] = down[k] = h[k];
+    // NOLINTEND(bugprone-branch-clone)
   }
   parallelFor(2 * dim, d.options.threads, [&](std::size_t t, int) {
     const std::size_t k = t / 2;

@@ -116,7 +116,7 @@ void addResponse(DiscrepancyFilter& f, const std::vector<double>& t, const std::
   const double fs = 1.0 / g.dt;
   const std::vector<double> y = onGrid(g, physics), dd = onGrid(g, d);
   int segment = 32;  // the largest power of two within half the grid and 5 s
-  while (static_cast<std::size_t>(2 * segment) <= g.size() / 2 && 2 * segment <= 5.0 * fs) segment *= 2;
+  while (2 * static_cast<std::size_t>(segment) <= g.size() / 2 && 2 * segment <= 5.0 * fs) segment *= 2;
   const CrossSpectra cs = welchCrossSpectra(y, dd, fs, segment);
   f.response_note = "on the calibration drive, " + formatNumber(t[g.begin], 6) + "–" + formatNumber(t[g.end - 1], 6) + " s (" +
                     std::to_string(g.size()) + " times at " + formatNumber(fs, 4) + " Hz" + (g.resampled ? ", resampled" : "") +

@@ -166,7 +166,7 @@ CrossSpectra welchCrossSpectra(const std::vector<double>& x, const std::vector<d
 
 int welchSegmentFor(std::size_t n) {
   int s = 32;
-  while (static_cast<std::size_t>(2 * s) <= n / 2 && s < 512) s *= 2;
+  while (2 * static_cast<std::size_t>(s) <= n / 2 && s < 512) s *= 2;
   return s;
 }
 
@@ -278,6 +278,7 @@ std::vector<SignatureFit> fitDeflectionSignatures(const std::vector<double>& q, 
   std::sort(sq.begin(), sq.end());
   SignatureFit knee{"knee", 0, -std::numeric_limits<double>::infinity(), kNaN};
   for (int p = 1; p <= 99; ++p) {
+    // NOLINTNEXTLINE(bugprone-incorrect-roundings): >= 0, rounded half up, as the results were
     const double g = sq[std::min(n - 1, static_cast<size_t>(p / 100.0 * (n - 1) + 0.5))];
     for (size_t i = 0; i < n; ++i) f[i] = std::pow(std::max(q[i] - g, 0.0), 2);
     const auto [b, e] = fitAffine(f, r, srr);

@@ -290,9 +290,10 @@ void writeMdfLog(const std::string& path, const std::vector<MdfWriteGroup>& grou
         for (std::uint16_t i = 0; i < 6; ++i) cc->Parameter(i, cv.p[i]);
       } else if (cv.kind == "value_to_text") {
         cc->Type(mdf::ConversionType::ValueToText);
-        for (std::uint16_t i = 0; i < cv.texts.size(); ++i) {
-          cc->Parameter(i, cv.p[i]);
-          cc->Reference(i, cv.texts[i]);
+        if (cv.texts.size() >= 0xFFFF) throw std::runtime_error("writeMdfLog: too many conversion texts");
+        for (std::size_t i = 0; i < cv.texts.size(); ++i) {
+          cc->Parameter(static_cast<std::uint16_t>(i), cv.p[i]);
+          cc->Reference(static_cast<std::uint16_t>(i), cv.texts[i]);
         }
         cc->Reference(static_cast<std::uint16_t>(cv.texts.size()), "unknown");
       } else {

@@ -129,6 +129,7 @@ std::string checkChannelName(const std::string& channel, const std::vector<Chann
     }
   }
   std::vector<std::string> names;
+  names.reserve(known.size());
   for (const auto& k : known) names.push_back(k.name);
   const std::string hint = closestName(channel, names);
   return "unknown channel " + inQuotes(channel) +
@@ -215,6 +216,7 @@ LabData parseLabCsv(const std::string& text, const std::string& name, const std:
     r.channel = std::string(f[static_cast<std::size_t>(col[2])]);
     const std::string_view vs = f[static_cast<std::size_t>(col[3])];
     if (!parseNumber(vs, r.value)) throw InputError(at + ": value", "must be a number, got " + inQuotes(vs));
+    // NOLINTNEXTLINE(performance-no-automatic-move): `at` is captured, not the lambda's own
     checker.check(r, [&] { return at; });
     data.records.push_back(std::move(r));
   }

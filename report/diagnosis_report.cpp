@@ -13,6 +13,7 @@
 
 #include "common/format.hpp"
 #include "report/study_report.hpp"
+#include "report/diagnosis_folder.hpp"
 #include "report/svg_plot.hpp"
 #include "common/errors.hpp"
 #include "common/json.hpp"
@@ -28,6 +29,16 @@ using nlohmann::json;
 namespace dtwin::report {
 namespace {
 
+using diagnosis_folder::at;
+using diagnosis_folder::Comparison;
+using diagnosis_folder::dbl;
+using diagnosis_folder::DiagnosisInput;
+using diagnosis_folder::joinEffects;
+using diagnosis_folder::readDiagnosisInput;
+using diagnosis_folder::Series;
+using diagnosis_folder::StateMap;
+using diagnosis_folder::str;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string gq(const std::string& s) { return gnuplotQuote(s); }
@@ -37,19 +48,6 @@ std::string num(double v, int digits = 4) {
   if (!std::isfinite(v)) return "–";
   return formatNumber(v, digits);
 }
-
-/// j[key], or null when j is not an object or has no such key.
-const json& at(const json& j, const char* key) {
-  static const json null;
-  if (!j.is_object()) return null;
-  const auto it = j.find(key);
-  return it == j.end() ? null : *it;
-}
-
-/// A number (null, as nlohmann writes NaN, and anything else: NaN).
-double dbl(const json& j) { return j.is_number() ? j.get<double>() : kNaN; }
-
-std::string str(const json& j) { return j.is_string() ? j.get<std::string>() : std::string(); }
 
 /// A JSON value as short text (strings without quotes, arrays joined with ", ").
 std::string text(const json& j) {
@@ -63,119 +61,6 @@ std::string text(const json& j) {
     return s.empty() ? "–" : s;
   }
   return j.dump();
-}
-
-json readJson(const fs::path& p) {
-  return readJsonFile(p.string(), " (is this the output folder of `twin diagnose`?)");
-}
-
-struct Band {
-  std::string name;
-  double ratio;
-};
-
-struct Series {
-  std::string data_set, scenario, channel, unit;
-  double rms, nrmse, coverage, systematic_rms;
-  std::vector<double> t, measured, predicted, lo, hi;
-  std::vector<Band> bands;
-  std::string key() const { return data_set + "\n" + scenario + "\n" + channel; }
-  std::string name() const { return scenario + " " + channel + " (" + fs::path(data_set).filename().string() + ")"; }
-};
-
-struct MapBin {
-  double centre, mean, se;
-};
-
-struct StateMap {
-  std::string channel, state, feature;
-  double explained = kNaN, knee_at = kNaN;
-  std::vector<MapBin> bins;
-};
-
-struct Comparison {
-  std::string file;
-  std::vector<Series> series;
-  std::vector<StateMap> maps;
-  const Series* find(const std::string& key) const {
-    for (const auto& s : series)
-      if (s.key() == key) return &s;
-    return nullptr;
-  }
-  const StateMap* findMap(const std::string& channel, const std::string& state) const {
-    for (const auto& m : maps)
-      if (m.channel == channel && m.state == state) return &m;
-    return nullptr;
-  }
-};
-
-std::vector<double> numbers(const json& j, const char* what) {
-  if (!j.is_array()) throw InputError("", std::string("field ") + what + " must be an array of numbers");
-  std::vector<double> v;
-  v.reserve(j.size());
-  for (const auto& e : j) v.push_back(dbl(e));
-  return v;
-}
-
-/// Reads a full comparison (diagnosis/compare.hpp Comparison::toJson(true)).
-Comparison readComparison(const fs::path& p) {
-  const json j = readJson(p);
-  Comparison c;
-  c.file = p.string();
-  try {
-    if (!j.is_object() || !at(j, "series").is_array()) throw InputError("", "has no array `series`");
-    for (const auto& e : j["series"]) {
-      Series s;
-      s.data_set = str(at(e, "data_set"));
-      s.scenario = str(at(e, "scenario"));
-      s.channel = str(at(e, "channel"));
-      s.unit = str(at(e, "unit"));
-      if (s.channel.empty()) throw InputError("", "a series has no `channel`");
-      s.rms = dbl(at(e, "rms"));
-      s.nrmse = dbl(at(e, "nrmse"));
-      s.coverage = dbl(at(e, "coverage95"));
-      s.systematic_rms = dbl(at(e, "systematic_rms"));
-      s.t = numbers(at(e, "t"), "t");
-      s.measured = numbers(at(e, "measured_mean"), "measured_mean");
-      s.predicted = numbers(at(e, "predicted_mean"), "predicted_mean");
-      s.lo = numbers(at(e, "band_lo"), "band_lo");
-      s.hi = numbers(at(e, "band_hi"), "band_hi");
-      const std::size_t n = s.t.size();
-      if (n == 0 || s.measured.size() != n || s.predicted.size() != n || s.lo.size() != n || s.hi.size() != n)
-        throw InputError("", "series " + s.channel + ": t, measured_mean, predicted_mean, band_lo and band_hi must be non-empty "
-                                                     "arrays of one length");
-      for (const auto& b : at(e, "bands")) s.bands.push_back({str(at(b, "band")), dbl(at(b, "ratio"))});
-      c.series.push_back(std::move(s));
-    }
-    for (const auto& cm : at(j, "state_maps")) {
-      for (const auto& m : at(cm, "maps")) {
-        StateMap sm;
-        sm.channel = str(at(cm, "channel"));
-        sm.state = str(at(m, "state"));
-        for (const auto& b : at(m, "bins")) sm.bins.push_back({dbl(at(b, "centre")), dbl(at(b, "mean_residual")), dbl(at(b, "se"))});
-        for (const auto& f : at(m, "fits")) {
-          const double e = dbl(at(f, "explained_fraction"));
-          if (std::isfinite(e) && (!std::isfinite(sm.explained) || e > sm.explained)) {
-            sm.explained = e;
-            sm.feature = str(at(f, "feature"));
-            sm.knee_at = dbl(at(f, "knee_at"));
-          }
-        }
-        c.maps.push_back(std::move(sm));
-      }
-    }
-  } catch (const InputError& e) {
-    throw InputError(p.string(), e.rule());
-  } catch (const std::exception& e) {
-    throw InputError(p.string(), std::string("is malformed: ") + jsonErrorInWords(e));
-  }
-  return c;
-}
-
-std::string joinEffects(const json& effects) {
-  std::string s;
-  for (const auto& e : effects) s += (s.empty() ? "" : "+") + str(e);
-  return s.empty() ? "base" : s;
 }
 
 std::string stepLabel(const json& step, std::size_t k) {
@@ -213,53 +98,6 @@ double meanCoverage(const json& figures) {
 }
 
 std::string pct(double v) { return std::isfinite(v) ? num(100.0 * v, 3) + " %" : "–"; }
-
-/// What a diagnosis folder holds for its section: diagnosis.json, and the "before" (base) and
-/// "after" comparisons (report/diagnosis_report.hpp says which comparison is "after").
-struct DiagnosisInput {
-  std::string diag_dir;
-  fs::path dir;
-  json d;  ///< diagnosis.json
-  std::string verdict, effect, assembly;
-  bool has_steps = false;  ///< `steps` exist (--apply)
-  Comparison base, after;
-  std::string after_name, after_label;
-  bool has_after = false;
-  const json& steps() const { return at(d, "steps"); }
-};
-
-/// Reads and checks diagnosis.json, comparisons/base.json and the "after" comparison (InputError
-/// naming the file).
-DiagnosisInput readDiagnosisInput(const std::string& diag_dir) {
-  DiagnosisInput in;
-  in.diag_dir = diag_dir;
-  in.dir = fs::path(diag_dir);
-  if (!fs::is_directory(in.dir)) throw InputError(diag_dir, "is not a folder (give the output folder of `twin diagnose`)");
-  const fs::path diag_file = in.dir / "diagnosis.json";
-  in.d = readJson(diag_file);
-  const json& d = in.d;
-  if (!d.is_object() || !at(d, "verdict").is_string() || !at(d, "base").is_object())
-    throw InputError(diag_file.string(), "is not a diagnosis (needs a string `verdict` and an object `base`)");
-  for (const char* k : {"ranked", "screening", "steps"})
-    if (!at(d, k).is_null() && !at(d, k).is_array()) throw InputError(diag_file.string(), std::string("field `") + k + "` must be an array");
-  in.verdict = str(at(d, "verdict"));
-  in.effect = str(at(d, "effect"));
-  in.assembly = str(at(d, "assembly"));
-  const json& steps = in.steps();
-  in.has_steps = steps.is_array() && !steps.empty();
-
-  in.base = readComparison(in.dir / "comparisons" / "base.json");
-  if (!in.effect.empty()) {
-    in.after_name = in.effect;
-    in.after_label = "with " + in.effect;
-  } else if (in.has_steps && steps.size() > 1) {
-    in.after_name = joinEffects(at(steps[1], "effects"));
-    in.after_label = "with " + in.after_name + " (applied)";
-  }
-  in.has_after = !in.after_name.empty();
-  if (in.has_after) in.after = readComparison(in.dir / "comparisons" / (in.after_name + ".json"));
-  return in;
-}
 
 /// What the parts of a diagnosis section draw into: the plotter (SVG ids "<id_prefix><n>_"), the
 /// section's HTML, its plots and warnings, and its anchor.

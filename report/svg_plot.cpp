@@ -88,7 +88,7 @@ std::string findOnPath(const std::string& exe) {
 }
 
 std::string requireGnuplot(const std::string& who) {
-  const std::string exe = findOnPath("gnuplot");
+  std::string exe = findOnPath("gnuplot");
   if (exe.empty())
     throw InputError("gnuplot", "not found on PATH; " + who + " draws its plots with it: install the Debian package gnuplot-nox "
                                 "(apt-get install gnuplot-nox)");

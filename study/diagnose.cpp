@@ -26,6 +26,7 @@ namespace {
 
 std::vector<calib::DataSet> loadSets(const Study& study, const std::vector<std::string>& args, const std::string& flag) {
   std::vector<calib::DataSet> sets;
+  sets.reserve(args.size());
   for (const auto& a : args) sets.push_back(diag::loadMeasurement(study, diag::parseMeasurementArg(a, flag)));
   return sets;
 }

@@ -351,6 +351,7 @@ LabResult generateLab(const Study& study, const AssemblySpec& assembly, const La
   nlohmann::json noise_free = nlohmann::json::object();
   for (const auto& c : channels) {
     std::vector<double> v;
+    v.reserve(rows.size());
     for (std::size_t r : rows) v.push_back(run.trace.column(c.name)[r]);
     noise_free[c.name] = v;
   }

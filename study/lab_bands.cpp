@@ -48,6 +48,7 @@ std::vector<ChannelBand> bandsOf(const LabData& data, const std::vector<std::vec
     for (double t : data.times(ch)) {
       const std::size_t i = first.at({ch, t});
       std::vector<double> eta;
+      eta.reserve(ok.size());
       for (std::size_t k : ok) eta.push_back(preds[k][i]);
       const std::vector<double> eta_unsorted = eta;
       std::sort(eta.begin(), eta.end());
@@ -100,6 +101,7 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
     return;
   }
   std::vector<double> sd;
+  sd.reserve(ok.size());
   for (std::size_t k : ok) sd.push_back(1.0 / std::sqrt(a.posterior.tau[rows[k]]));
   std::vector<double> sd_sorted = sd;
   std::sort(sd_sorted.begin(), sd_sorted.end());

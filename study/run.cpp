@@ -75,7 +75,7 @@ void checkStudyRecord(const Study& study, const StudyRunOptions& options, const 
 std::string labStage(const Study& study, const AssemblySpec& truth, const StudyRunOptions& options, const fs::path& out,
                      const StageNews& news) {
   if (!options.lab_file.empty()) return options.lab_file;
-  const std::string lab_path = (out / "lab" / "lab.csv").string();
+  std::string lab_path = (out / "lab" / "lab.csv").string();
   if (done(options.processes, sidecarPath(lab_path))) return lab_path;
   rootWrites(options.processes, [&] {
     news.report("lab", 0, 1);
@@ -95,7 +95,7 @@ std::string labStage(const Study& study, const AssemblySpec& truth, const StudyR
 std::string fieldStage(const Study& study, const AssemblySpec& truth, const StudyRunOptions& options, const fs::path& out,
                        const StageNews& news) {
   if (!options.field_file.empty()) return options.field_file;
-  const std::string field_path = (out / "field" / "field.csv").string();
+  std::string field_path = (out / "field" / "field.csv").string();
   if (done(options.processes, sidecarPath(field_path))) return field_path;
   FieldOptions fo;
   fo.threads = options.threads;
@@ -246,7 +246,7 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, cons
   stages["classify"] = since(t0);
   stages["total"] = since(t_all);
 
-  const nlohmann::json s = studySummary(study, options, out, c, stages, calibrated, lab_path, field_path);
+  nlohmann::json s = studySummary(study, options, out, c, stages, calibrated, lab_path, field_path);
   writeFileAtomic((out / "summary.json").string(), s.dump(2) + "\n");
   return s;
 }

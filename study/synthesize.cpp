@@ -54,6 +54,7 @@ std::vector<SynthesizeRun> synthesizeAssemblies(const Study& study, const Synthe
     overrideSize(sized, "roads_per_draw", opt.roads_per_draw, "--roads");
     overrideSize(sized, "road_library", opt.road_library, "--library");
     std::vector<std::string> stages;
+    stages.reserve(targets.size());
     for (const auto& a : targets) stages.push_back("synthesize " + a.id);
     checkCommandWork(sized, stages, request.force);
   }

@@ -67,6 +67,7 @@ Drive quarterCarDrive(const QuarterCar& q, double seconds, double noise_sd, std:
   };
   State x{};
   Drive d;
+  // NOLINTNEXTLINE(bugprone-incorrect-roundings): seconds / h > 0, rounded half up
   const long steps = static_cast<long>(seconds / h + 0.5);
   const long warmup = 20000;  // 2 s for the filters' start to die away
   for (long n = -warmup; n < steps; ++n) {

@@ -15,20 +15,20 @@
 // of N(m, C) with m the weighted mean shrunk towards the region's guess mean with the same weight;
 // where it bends (a thin curved tube, which no common covariance follows), the floor points
 // themselves, each kernel with its own local Gaussian (Region::ridge_cov, sd widened 1.5 times),
-// allotted in proportion to posterior(z_q)·sqrt(det Σ_q); C the weighted posterior covariance shrunk towards the region's Gaussian guess
-// with the weight of ν0 = 10 (d + 1) points, C = (ESS·C_w + ν0·C_guess)/(ESS + ν0), so that a round
-// resting on a handful of heavy points still explores around them with a sensible shape; and
-// h = max(h_min, Silverman's factor (4/(d+2))^{1/(d+4)} ESS^{−1/(d+4)}). Kernels on the heavy
-// points follow a curved ridge, which no single Gaussian or box does, and reach past the region
-// where the posterior does (their support is unbounded).
-// A fraction `broad_share` (0.2) of every such round comes instead from one broad Gaussian,
-// N(m, (broad_scale)² C) at the weighted mean m (broad_scale 2): a defensive component
+// allotted in proportion to posterior(z_q)·sqrt(det Σ_q); C the weighted posterior covariance
+// shrunk towards the region's Gaussian guess with the weight of ν0 = 10 (d + 1) points, C =
+// (ESS·C_w + ν0·C_guess)/(ESS + ν0), so that a round resting on a handful of heavy points still
+// explores around them with a sensible shape; and h = max(h_min, Silverman's factor
+// (4/(d+2))^{1/(d+4)} ESS^{−1/(d+4)}). Kernels on the heavy points follow a curved ridge, which no
+// single Gaussian or box does, and reach past the region where the posterior does (their support is
+// unbounded). A fraction `broad_share` (0.2) of every such round comes instead from one broad
+// Gaussian, N(m, (broad_scale)² C) at the weighted mean m (broad_scale 2): a defensive component
 // (Hesterberg 1995) that keeps the weights bounded in the tails, where the kernels are thin.
 // A round's points are a Latin hypercube in (0,1)^d mapped through Φ⁻¹ (a stratified normal
-// sample); the first round(broad_share · M_r) take the broad component, the others kernel i mod K. Points outside the bounds [0,1]^d have prior 0: they are
-// drawn and counted, never simulated. Each round draws M_r points, enough that about the requested
-// number fall inside the bounds (the inside fraction is measured on a seeded pilot sample of 4096
-// draws, without simulating).
+// sample); the first round(broad_share · M_r) take the broad component, the others kernel i mod K.
+// Points outside the bounds [0,1]^d have prior 0: they are drawn and counted, never simulated. Each
+// round draws M_r points, enough that about the requested number fall inside the bounds (the inside
+// fraction is measured on a seeded pilot sample of 4096 draws, without simulating).
 //
 // \par Design weights (deterministic mixture)
 // Together the rounds are one sample from the mixture of their proposals, of point density
@@ -75,19 +75,21 @@
 namespace dtwin::calib {
 
 struct AdaptiveDesignOptions {
-  bool adaptive = true;      ///< false: round 0 only (the paper's design)
-  int first_points = 200;    ///< round 0 (sizes.lhs_points), >= 2
-  int round_points = 200;    ///< each adaptive round, >= 2
-  int max_rounds = 8;        ///< adaptive rounds after round 0, >= 0
-  double target_ess = 400;   ///< stop only when the importance ESS reaches this, > 0
-  double settle = 0.1;       ///< stop when means moved < settle·sd and sds changed < settle, > 0
-  double kernel_min = 0.5;   ///< smallest kernel factor h_min, in (0, 2]
-  int kernels = 50;          ///< kernels K of a mixture round, >= 1
-  double broad_share = 0.2;  ///< share of a round from the defensive component, in [0, 1)
-  double broad_scale = 2.0;  ///< its sd scale, >= 1
-  double edge_fraction = 0.1;   ///< outer shell of the region checked, in (0, 0.5)
-  double edge_share_max = 0.01; ///< posterior weight in that shell above which a one-round design is warned about, in (0, 1)
-  double tau_a = kDefaultTauPrior, tau_b = kDefaultTauPrior;  ///< Gamma prior of τ (diagnostic weights), finite, >= 0
+  bool adaptive = true;        ///< false: round 0 only (the paper's design)
+  int first_points = 200;      ///< round 0 (sizes.lhs_points), >= 2
+  int round_points = 200;      ///< each adaptive round, >= 2
+  int max_rounds = 8;          ///< adaptive rounds after round 0, >= 0
+  double target_ess = 400;     ///< stop only when the importance ESS reaches this, > 0
+  double settle = 0.1;         ///< stop when means moved < settle·sd and sds changed < settle, > 0
+  double kernel_min = 0.5;     ///< smallest kernel factor h_min, in (0, 2]
+  int kernels = 50;            ///< kernels K of a mixture round, >= 1
+  double broad_share = 0.2;    ///< share of a round from the defensive component, in [0, 1)
+  double broad_scale = 2.0;    ///< its sd scale, >= 1
+  double edge_fraction = 0.1;  ///< outer shell of the region checked, in (0, 0.5)
+  double edge_share_max = 0.01;  ///< posterior weight in that shell above which a one-round design
+                                 ///< is warned about, in (0, 1)
+  double tau_a = kDefaultTauPrior,
+         tau_b = kDefaultTauPrior;  ///< Gamma prior of τ (diagnostic weights), finite, >= 0
   std::uint64_t seed = 1;
   /// Throws InputError whose where() is "design.<field>" (common/validate.hpp).
   void validate() const;
@@ -96,24 +98,28 @@ struct AdaptiveDesignOptions {
 
 struct DesignRound {
   int index = 0;
-  std::string kind;          ///< "uniform" (on `region`) or "gaussian" (kernels at `centres`)
-  Region region;             ///< uniform rounds
-  Eigen::MatrixXd centres;   ///< gaussian rounds: K x d kernel centres, scaled
-  Eigen::MatrixXd cov;       ///< gaussian rounds: the kernels' covariance, scaled
-  Eigen::MatrixXd chol;      ///< its lower Cholesky factor (set by prepare())
+  std::string kind;         ///< "uniform" (on `region`) or "gaussian" (kernels at `centres`)
+  Region region;            ///< uniform rounds
+  Eigen::MatrixXd centres;  ///< gaussian rounds: K x d kernel centres, scaled
+  Eigen::MatrixXd cov;      ///< gaussian rounds: the kernels' covariance, scaled
+  Eigen::MatrixXd chol;     ///< its lower Cholesky factor (set by prepare())
   /// Gaussian rounds: empty, or one entry per centre: that kernel's own covariance (a ridge
   /// kernel's local Gaussian, Region::ridge_cov), or an empty matrix for `cov`.
   std::vector<Eigen::MatrixXd> own_cov;
   std::vector<Eigen::MatrixXd> own_chol;  ///< their Cholesky factors (set by prepare())
-  std::vector<double> own_logdet;         ///< log det of each own_chol (0 where the kernel uses `cov`)
-  double logdet = 0.0;                    ///< log det of `chol` (set by prepare())
+  std::vector<double> own_logdet;  ///< log det of each own_chol (0 where the kernel uses `cov`)
+  double logdet = 0.0;             ///< log det of `chol` (set by prepare())
   /// The lower Cholesky factor of centre c's kernel, and its log determinant.
   bool ownKernel(Eigen::Index c) const {
     const auto k = static_cast<std::size_t>(c);
     return k < own_chol.size() && own_chol[k].size() > 0;
   }
-  const Eigen::MatrixXd& cholOf(Eigen::Index c) const { return ownKernel(c) ? own_chol[static_cast<std::size_t>(c)] : chol; }
-  double logdetOf(Eigen::Index c) const { return ownKernel(c) ? own_logdet[static_cast<std::size_t>(c)] : logdet; }
+  const Eigen::MatrixXd& cholOf(Eigen::Index c) const {
+    return ownKernel(c) ? own_chol[static_cast<std::size_t>(c)] : chol;
+  }
+  double logdetOf(Eigen::Index c) const {
+    return ownKernel(c) ? own_logdet[static_cast<std::size_t>(c)] : logdet;
+  }
   /// Gaussian rounds: the defensive component, taking the first round(broad_share · M) points.
   double broad_share = 0.0;
   Eigen::VectorXd broad_mean;
@@ -132,7 +138,8 @@ struct DesignRound {
 
 /// SSE of the rows of `points` (physical units), which are design rows first .. first+rows−1.
 /// +inf for a failed simulation.
-using DesignEvaluator = std::function<std::vector<double>(const Eigen::MatrixXd& points, int first)>;
+using DesignEvaluator =
+    std::function<std::vector<double>(const Eigen::MatrixXd& points, int first)>;
 
 struct AdaptiveDesign {
   Eigen::MatrixXd points;          ///< N x d, physical units
@@ -150,7 +157,8 @@ struct AdaptiveDesign {
 Eigen::MatrixXd drawRound(const DesignRound& round, int inside, std::uint64_t seed, long& drawn);
 
 /// Runs the rounds from `region` (round 0), evaluating each round's points with `evaluate`.
-AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data, const AdaptiveDesignOptions& options,
+AdaptiveDesign runAdaptiveDesign(const Region& region, int n_data,
+                                 const AdaptiveDesignOptions& options,
                                  const DesignEvaluator& evaluate);
 
 /// log q(z) of the design's mixture at scaled point z (q as above, up to no constant).

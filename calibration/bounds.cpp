@@ -12,7 +12,9 @@ namespace {
 std::string num(double v) { return formatNumber(v); }
 
 /// " N*s/m" or "" for a dimensionless value.
-std::string withUnit(const std::string& unit) { return unit.empty() || unit == "1" ? "" : " " + unit; }
+std::string withUnit(const std::string& unit) {
+  return unit.empty() || unit == "1" ? "" : " " + unit;
+}
 
 }  // namespace
 
@@ -25,21 +27,23 @@ std::string BoundFinding::sentence() const {
   const std::string u = withUnit(unit);
   if (side == "none")
     return name + ": its 95 % interval spans " + formatPrintf("%.0f", 100.0 * interval_span) +
-           " % of its range: these data do not determine it (fix it at a known value, or add data that move it)";
+           " % of its range: these data do not determine it (fix it at a known value, or add data "
+           "that move it)";
   std::string s = name + " is at its " + side + " bound " + num(bound) + u;
   std::string why;
   if (optimum_on_bound) why = "the optimum is " + num(optimum);
   if (std::isfinite(posterior_share))
-    why += (why.empty() ? "" : ", ") + formatPrintf("%.0f", 100.0 * posterior_share) + " % of the posterior lies within " +
-           formatPrintf("%.0f", 100.0 * kNearBound) + " % of the range from it";
+    why += (why.empty() ? "" : ", ") + formatPrintf("%.0f", 100.0 * posterior_share) +
+           " % of the posterior lies within " + formatPrintf("%.0f", 100.0 * kNearBound) +
+           " % of the range from it";
   if (!why.empty()) s += " (" + why + ")";
   s += side == "upper" ? ": the data want more" : ": the data want less";
   if (at_limit()) {
     s += ", and that bound is the physical limit of a road vehicle's value (" + limit_basis +
          "): the structure differs (twin diagnose weighs other structures)";
   } else if (std::isfinite(limit)) {
-    s += "; widen the range (a road vehicle's value may reach " + num(limit) + u + ": " + limit_basis +
-         ") or the structure differs (twin diagnose weighs both)";
+    s += "; widen the range (a road vehicle's value may reach " + num(limit) + u + ": " +
+         limit_basis + ") or the structure differs (twin diagnose weighs both)";
   } else {
     s += "; widen the range or the structure differs (no physical limit is known for this value)";
   }
@@ -91,8 +95,8 @@ std::vector<BoundFinding> findBounds(const BoundInputs& in) {
     const double lo = in.lower[k], hi = in.upper[k], range = hi - lo;
     if (!(range > 0) || k >= in.optimum.size()) continue;
     const double x = in.optimum[k];
-    const bool has_interval = k < in.interval_lo.size() && k < in.interval_hi.size() && std::isfinite(in.interval_lo[k]) &&
-                              std::isfinite(in.interval_hi[k]);
+    const bool has_interval = k < in.interval_lo.size() && k < in.interval_hi.size() &&
+                              std::isfinite(in.interval_lo[k]) && std::isfinite(in.interval_hi[k]);
     for (const char* side : {"lower", "upper"}) {
       const bool upper = std::string(side) == "upper";
       const double b = upper ? hi : lo;
@@ -106,23 +110,28 @@ std::vector<BoundFinding> findBounds(const BoundInputs& in) {
       if (in.design && !in.draws.empty()) {
         long near = 0;
         for (int r : in.draws)
-          if (std::abs((*in.design)(r, static_cast<long>(k)) - b) <= BoundFinding::kNearBound * range) ++near;
+          if (std::abs((*in.design)(r, static_cast<long>(k)) - b) <=
+              BoundFinding::kNearBound * range)
+            ++near;
         f.posterior_share = static_cast<double>(near) / static_cast<double>(in.draws.size());
       }
       if (has_interval) {
-        f.interval_reaches = std::abs((upper ? in.interval_hi[k] : in.interval_lo[k]) - b) <= BoundFinding::kOnBound * range;
+        f.interval_reaches = std::abs((upper ? in.interval_hi[k] : in.interval_lo[k]) - b) <=
+                             BoundFinding::kOnBound * range;
         f.interval_span = (in.interval_hi[k] - in.interval_lo[k]) / range;
       }
       f.limit = k < in.limit_lower.size() ? (upper ? in.limit_upper[k] : in.limit_lower[k]) : nan;
       f.limit_basis = k < in.limit_basis.size() ? in.limit_basis[k] : "";
-      const bool piles_up = std::isfinite(f.posterior_share) && f.posterior_share >= BoundFinding::kPileUp;
+      const bool piles_up =
+          std::isfinite(f.posterior_share) && f.posterior_share >= BoundFinding::kPileUp;
       if (f.optimum_on_bound || piles_up) {
         on.push_back(f);
         break;  // one side per value
       }
     }
     if (!on.empty() && on.back().name == in.names[k]) continue;
-    if (has_interval && (in.interval_hi[k] - in.interval_lo[k]) > BoundFinding::kUndetermined * range) {
+    if (has_interval &&
+        (in.interval_hi[k] - in.interval_lo[k]) > BoundFinding::kUndetermined * range) {
       BoundFinding f;
       f.name = in.names[k];
       f.unit = k < in.units.size() ? in.units[k] : "";
@@ -136,7 +145,8 @@ std::vector<BoundFinding> findBounds(const BoundInputs& in) {
   return on;
 }
 
-std::string boundFindingsText(const std::vector<BoundFinding>& findings, const std::string& indent) {
+std::string boundFindingsText(const std::vector<BoundFinding>& findings,
+                              const std::string& indent) {
   std::string s;
   for (const auto& f : findings) s += indent + "FINDING: " + f.sentence() + "\n";
   return s;

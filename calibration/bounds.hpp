@@ -20,8 +20,8 @@ struct BoundFinding {
   /// "lower" or "upper": the bound the value sits on; "none" for a value the data do not
   /// determine (its interval spans most of its range, no bound preferred).
   std::string side;
-  double bound = 0.0;    ///< the calibration's bound on that side
-  double optimum = 0.0;  ///< the optimiser's value
+  double bound = 0.0;             ///< the calibration's bound on that side
+  double optimum = 0.0;           ///< the optimiser's value
   bool optimum_on_bound = false;  ///< within kOnBound of the range from the bound
   /// The posterior's mass within kNearBound of the range from the bound (NaN: no posterior yet).
   double posterior_share = std::numeric_limits<double>::quiet_NaN();
@@ -46,7 +46,8 @@ struct BoundFinding {
   static constexpr double kNearBound = 0.02;
   /// ... above which the posterior piles up against it.
   static constexpr double kPileUp = 0.5;
-  /// An interval spanning more than this fraction of the range: the data do not determine the value.
+  /// An interval spanning more than this fraction of the range: the data do not determine the
+  /// value.
   static constexpr double kUndetermined = 0.9;
 };
 

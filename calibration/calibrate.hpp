@@ -2,11 +2,12 @@
 // Calibration of one assembly against lab data (docs/method.md §4): bounded multi-start SSE
 // minimisation, the region (the joint 1 % contour by default, or the paper's one-at-a-time box),
 // a design simulated in parallel (a Latin hypercube, then adaptive rounds where the posterior
-// lies), the two-block Griddy Gibbs with design weights, posterior summaries. Every stage is persisted in the assembly's output folder as it
-// finishes, so a killed calibration rerun with the same inputs continues where it stopped and
-// ends with identical results (design points are journalled one by one). In calibration_run.cpp and
-// calibration_run_intervals.cpp each stage is one method of CalibrationRun, and calibrateAssembly
-// lists them in order: objective, optimum, region, design, profile, sampler, summary.
+// lies), the two-block Griddy Gibbs with design weights, posterior summaries. Every stage is
+// persisted in the assembly's output folder as it finishes, so a killed calibration rerun with the
+// same inputs continues where it stopped and ends with identical results (design points are
+// journalled one by one). In calibration_run.cpp and calibration_run_intervals.cpp each stage is
+// one method of CalibrationRun, and calibrateAssembly lists them in order: objective, optimum,
+// region, design, profile, sampler, summary.
 //
 // Outputs in `out_dir` (docs/calibration.md describes every file):
 //   optimum.json        every start of the optimiser and the optimum (stage 1)
@@ -19,16 +20,14 @@
 #include <cstdint>
 #include <functional>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
-#include "common/distributed.hpp"
-#include "common/progress.hpp"
 #include "calibration/adaptive_design.hpp"
 #include "calibration/bounds.hpp"
 #include "calibration/feasible_box.hpp"
@@ -37,10 +36,12 @@
 #include "calibration/profile.hpp"
 #include "calibration/region.hpp"
 #include "calibration/summary.hpp"
+#include "common/distributed.hpp"
+#include "common/progress.hpp"
 #include "io/measurement.hpp"
 #include "io/provenance.hpp"
-#include "twin/simulator.hpp"
 #include "io/study.hpp"
+#include "twin/simulator.hpp"
 
 namespace dtwin::calib {
 
@@ -89,8 +90,8 @@ struct CalibrationSetup {
   /// SSE is a χ² in standard units, so channels of different units can be fitted together.
   std::map<std::string, double> channel_weights;
   bool empty() const {
-    return extra_effects.empty() && extra_calibrated.empty() && channel_weights.empty() && freed.empty() && sensor_models.empty() &&
-           options.empty() && bounds.empty();
+    return extra_effects.empty() && extra_calibrated.empty() && channel_weights.empty() &&
+           freed.empty() && sensor_models.empty() && options.empty() && bounds.empty();
   }
   /// Everything that changes the numbers (part of the resume fingerprint when not empty).
   nlohmann::json toJson() const;
@@ -105,8 +106,8 @@ struct CalibrationSetup {
 /// Thread-safe: each call takes a Simulator from an internal pool (one per concurrent caller).
 class LabObjective {
  public:
-  LabObjective(const Study& study, const AssemblySpec& assembly, const LabData& data, const std::string& scenario,
-               const std::vector<EffectSetting>& extra_effects = {});
+  LabObjective(const Study& study, const AssemblySpec& assembly, const LabData& data,
+               const std::string& scenario, const std::vector<EffectSetting>& extra_effects = {});
   LabObjective(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
                const CalibrationSetup& setup);
   ~LabObjective();
@@ -161,7 +162,11 @@ class LabObjective {
   /// `accuracy` > 0: the steps are chosen at that accuracy instead of the study's.
   bool freezeSteps(const std::vector<double>& theta, double accuracy = 0.0);
   /// Back to adaptive steps.
-  void thawSteps() { plans_.clear(); frozen_at_.clear(); frozen_accuracy_ = 0.0; }
+  void thawSteps() {
+    plans_.clear();
+    frozen_at_.clear();
+    frozen_accuracy_ = 0.0;
+  }
   /// The accuracy the frozen steps were chosen at (0 when not frozen).
   double stepsFrozenAccuracy() const { return frozen_accuracy_; }
   /// Whether the steps are frozen, and the θ they were frozen at (empty when not).
@@ -179,7 +184,8 @@ class LabObjective {
   struct Set {
     ScenarioSpec scenario;
     /// The same run writing only the records' times, every one a sample time (a grid time as
-    /// r / rate, read bit for bit as its grid row): what predict() reads (ScenarioSpec::grid_output).
+    /// r / rate, read bit for bit as its grid row): what predict() reads
+    /// (ScenarioSpec::grid_output).
     ScenarioSpec sampled;
     std::shared_ptr<const Road> road;
     std::size_t first = 0, count = 0;  ///< its records in y_
@@ -204,10 +210,10 @@ class LabObjective {
     bool at_sample = false;  ///< off the output grid: a row of RunResult::samples
     std::size_t index = 0;   ///< the row (of the grid, or of the samples)
   };
-  std::vector<RecordRead> where_;  ///< per record
+  std::vector<RecordRead> where_;         ///< per record
   std::vector<std::size_t> sampled_row_;  ///< per record: its row of the sampled run's samples
-  std::vector<double> t_;          ///< per record: its time [s]
-  std::vector<long> rep_;          ///< per record: its repetition
+  std::vector<double> t_;                 ///< per record: its time [s]
+  std::vector<long> rep_;                 ///< per record: its repetition
   /// The setup's sensor models: the channel columns each distorts and its parameter's index in θ.
   struct SensorModelUse {
     std::string kind;
@@ -217,7 +223,8 @@ class LabObjective {
   std::vector<SensorModelUse> sensor_models_;
   double rate_hz_ = 0.0;  ///< the output grid's rate
   /// Applies the sensor models at θ to eta (the predictions of every record).
-  void distort(const std::vector<double>& theta, const std::vector<RunResult>& runs, std::vector<double>& eta) const;
+  void distort(const std::vector<double>& theta, const std::vector<RunResult>& runs,
+               std::vector<double>& eta) const;
   std::unique_ptr<Pool> pool_;
   std::vector<std::shared_ptr<const StepPlan>> plans_;  ///< per data set, when the steps are frozen
   std::vector<double> frozen_at_;
@@ -228,19 +235,21 @@ class LabObjective {
 /// a study's are taken by fromStudy.
 struct CalibrationOptions {
   int threads = 0;  ///< >= 0; 0: all cores
-  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
+  const Distributed* processes =
+      nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   int optimizer_starts = kDefaultOptimizerStarts;  ///< >= 1
   int lhs_points = kDefaultLhsPoints;              ///< the first Latin hypercube, >= 2
   int gibbs_iterations = kDefaultGibbsIterations;  ///< >= 1, burn-in included
   int gibbs_burn_in = kDefaultGibbsBurnIn;         ///< in [0, gibbs_iterations)
-  double tau_prior_a = kDefaultTauPrior, tau_prior_b = kDefaultTauPrior;  ///< Gamma(a, b) prior of τ, finite, >= 0
+  double tau_prior_a = kDefaultTauPrior,
+         tau_prior_b = kDefaultTauPrior;  ///< Gamma(a, b) prior of τ, finite, >= 0
   std::uint64_t seed = 1;
   OptimizerOptions optimizer;
   /// "joint" (default): the region holds the joint 1 % contour (region.hpp); "paper": the
   /// one-at-a-time box of docs/method.md §4 step 2.
   std::string region = "joint";
-  FeasibleBoxOptions box;        ///< the paper's box sweeps
-  JointRegionOptions joint;      ///< the joint region
+  FeasibleBoxOptions box;    ///< the paper's box sweeps
+  JointRegionOptions joint;  ///< the joint region
   /// Rounds after the first Latin hypercube (adaptive_design.hpp); first_points, seed and the τ
   /// prior are taken from lhs_points, seed and tau_prior_* when the calibration runs.
   AdaptiveDesignOptions design;
@@ -295,34 +304,36 @@ using ::dtwin::StageProgress;  // common/progress.hpp
 /// profile half-width apart: the roughness, the largest departure of the SSE from its
 /// least-squares quadratic along an axis; and the optimum shift, how far the integrator's bias
 /// moves the optimum in SSE units (integratorOptimumShift); jitter = max(roughness, shift), the
-/// shift counted only when it stands above what the roughness alone would make it (4 × shift_floor).
+/// shift counted only when it stands above what the roughness alone would make it (4 ×
+/// shift_floor).
 ///
 /// When the jitter reaches half the 95 % intervals' threshold above the minimum (c s²), the
 /// optimum and the intervals follow the integrator rather than the data: `ok` is false and
 /// `message` says what to tighten.
 struct IntegratorCheck {
-  std::string steps = "adaptive";               ///< how the calibration's runs chose their steps
+  std::string steps = "adaptive";  ///< how the calibration's runs chose their steps
   /// Frozen steps: whose probes gave the roughness and shift: "own", or "step choice" (the step
   /// choice's last probe, made at this optimum and accuracy with the same probe steps).
   std::string probes = "own";
   double accuracy = 0.0, accuracy_check = 0.0;  ///< the study's, and the check's (one tenth)
   double sse = 0.0, sse_check = 0.0;            ///< at the optimum, with each
-  double prediction_change = 0.0;               ///< ‖δ‖ (weighted: in noise sd when the weights are 1/σ²)
-  double roughness = 0.0;                       ///< frozen steps: the SSE's largest departure from a quadratic
-  double optimum_shift = 0.0;                   ///< frozen steps: ½ gᵀ H⁺ g (integratorOptimumShift)
+  double prediction_change = 0.0;  ///< ‖δ‖ (weighted: in noise sd when the weights are 1/σ²)
+  double roughness = 0.0;          ///< frozen steps: the SSE's largest departure from a quadratic
+  double optimum_shift = 0.0;      ///< frozen steps: ½ gᵀ H⁺ g (integratorOptimumShift)
   /// Frozen steps: the shift the roughness alone would show (gradient errors roughness/h per
   /// axis); a shift below 4 times it is not resolved and does not count in the jitter.
   double shift_floor = 0.0;
-  double jitter = 0.0;                          ///< what moves the optimum and the intervals (see above)
-  double threshold = 0.0;                       ///< the intervals' threshold above the minimum, c s²
+  double jitter = 0.0;     ///< what moves the optimum and the intervals (see above)
+  double threshold = 0.0;  ///< the intervals' threshold above the minimum, c s²
   bool ok = true;
-  std::string message;                          ///< empty when ok
+  std::string message;  ///< empty when ok
   nlohmann::json toJson() const;
 };
 
 /// The check from the predictions at the optimum with the study's accuracy (`eta`) and a tenth of
 /// it (`eta_fine`), the data `y`, their weights `w` and the intervals' threshold above the minimum.
-IntegratorCheck assessIntegrator(const std::vector<double>& eta, const std::vector<double>& eta_fine, const std::vector<double>& y,
+IntegratorCheck assessIntegrator(const std::vector<double>& eta,
+                                 const std::vector<double>& eta_fine, const std::vector<double>& y,
                                  const std::vector<double>& w, double accuracy, double threshold);
 
 /// The largest absolute residual of the least-squares quadratic through (x_i, f_i) (at least 4
@@ -346,12 +357,17 @@ struct ProbeFigures {
 /// bounds' range) and frozen steps at `accuracy`: when the try was made at that accuracy, kept, at
 /// this optimum (every parameter within a hundredth of its probe step) and with probe steps within
 /// 25 % of `h`, the check's own probes would run the same simulations again. Otherwise nullopt.
-std::optional<ProbeFigures> takeOverProbe(const nlohmann::json& last, const std::vector<double>& theta, const std::vector<double>& h,
-                                          double accuracy, const std::vector<double>& lower, const std::vector<double>& upper);
+std::optional<ProbeFigures> takeOverProbe(const nlohmann::json& last,
+                                          const std::vector<double>& theta,
+                                          const std::vector<double>& h, double accuracy,
+                                          const std::vector<double>& lower,
+                                          const std::vector<double>& upper);
 
 /// Turns an adaptive-steps check into the frozen-steps one: sets roughness, optimum_shift and
-/// shift_floor, the jitter (the roughness, or the shift when it exceeds 4 × shift_floor), `ok` and the message.
-void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift, double shift_floor = 0.0);
+/// shift_floor, the jitter (the roughness, or the shift when it exceeds 4 × shift_floor), `ok` and
+/// the message.
+void applyProbes(IntegratorCheck& c, double roughness, double optimum_shift,
+                 double shift_floor = 0.0);
 
 /// Probe steps for probeBias from a residual Jacobian J (n x d, scaled units): a tenth of each
 /// parameter's Gauss–Newton half-width √(threshold · (JᵀJ)⁺_kk), in [1e-4, 1e-2] (1e-2 when J is
@@ -362,8 +378,8 @@ std::vector<double> probeStepsFromJacobian(const Eigen::MatrixXd& J, double thre
 struct CalibrationResult {
   std::string assembly, label;
   std::vector<std::string> names;
-  std::vector<std::string> units;         ///< per name ("" when not stated)
-  std::vector<double> lower, upper;       ///< the bounds calibrated within
+  std::vector<std::string> units;    ///< per name ("" when not stated)
+  std::vector<double> lower, upper;  ///< the bounds calibrated within
   /// The study's calibrated values this assembly lacks (LabObjective::leftOut), left out of θ.
   std::vector<std::string> left_out;
   /// Values on their bounds, and values the data do not determine (bounds.hpp): findings.
@@ -371,13 +387,13 @@ struct CalibrationResult {
   std::vector<std::optional<double>> truth;
   int n_data = 0;
   Optimum optimum;
-  Region region;            ///< what the design covers (stage 2)
-  FeasibleBox box;          ///< the paper's box and its sweeps (region = "paper" only)
-  AdaptiveDesign rounds;    ///< the design's rounds, weights and diagnostics (stage 3)
-  ProfileIntervals profile; ///< the profile-likelihood intervals (stage 4)
+  Region region;                     ///< what the design covers (stage 2)
+  FeasibleBox box;                   ///< the paper's box and its sweeps (region = "paper" only)
+  AdaptiveDesign rounds;             ///< the design's rounds, weights and diagnostics (stage 3)
+  ProfileIntervals profile;          ///< the profile-likelihood intervals (stage 4)
   std::string interval = "profile";  ///< which interval ci95 is
-  Eigen::MatrixXd design;   ///< N x d, every round's points
-  std::vector<double> sse;  ///< per design point (+inf: failed)
+  Eigen::MatrixXd design;            ///< N x d, every round's points
+  std::vector<double> sse;           ///< per design point (+inf: failed)
   long design_failures = 0;
   long resumed_points = 0;  ///< design points found in the journal
   GibbsChains chains;
@@ -385,25 +401,28 @@ struct CalibrationResult {
   IntegratorCheck integrator;  ///< stage 6: is the integrator accurate enough for these data?
   std::vector<std::pair<std::string, double>> stage_wall_s;
   double median_run_wall_s = 0.0;  ///< wall time of one simulation (median)
-  std::vector<std::string> warnings;  ///< besides the design's (e.g. steps that could not be frozen)
+  std::vector<std::string>
+      warnings;  ///< besides the design's (e.g. steps that could not be frozen)
   nlohmann::json toJson() const;
 };
 
 /// Calibrates `assembly` against `data`, persisting every stage in `out_dir` (created) and
 /// resuming from what is there. `fingerprint_extra` goes into the resume fingerprint (e.g. the
 /// lab data's content hash) so a resume against different inputs is refused.
-CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const LabData& data,
-                                    const std::string& scenario, const CalibrationOptions& options,
-                                    const std::string& out_dir, const std::string& fingerprint_extra,
+CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly,
+                                    const LabData& data, const std::string& scenario,
+                                    const CalibrationOptions& options, const std::string& out_dir,
+                                    const std::string& fingerprint_extra,
                                     const StageProgress& progress = {});
 
 /// The general form: several data sets (each on its own scenario) and a setup (extra effects,
 /// extra calibrated parameters, channel weights). With one data set and an empty setup it is the
 /// call above, bit for bit (same files, same fingerprint). summary.json records the setup and the
 /// data sets so the calibration can be rebuilt from its folder (readCalibrationFolder, folder.hpp).
-CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
-                                    const CalibrationSetup& setup, const CalibrationOptions& options,
-                                    const std::string& out_dir, const std::string& fingerprint_extra,
+CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& assembly,
+                                    const std::vector<DataSet>& data, const CalibrationSetup& setup,
+                                    const CalibrationOptions& options, const std::string& out_dir,
+                                    const std::string& fingerprint_extra,
                                     const StageProgress& progress = {});
 
 /// Stage 1 of calibrateAssembly alone (the screening, the optimiser's starts and the polish):
@@ -412,9 +431,10 @@ CalibrationResult calibrateAssembly(const Study& study, const AssemblySpec& asse
 /// `out_dir`, so a calibrateAssembly with the same inputs and options later resumes from it and
 /// runs only the stages after it. twin diagnose uses it to weigh a candidate before deciding
 /// whether its intervals are worth computing (docs/diagnosis.md).
-CalibrationResult calibrateOptimum(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
-                                   const CalibrationSetup& setup, const CalibrationOptions& options,
-                                   const std::string& out_dir, const std::string& fingerprint_extra,
+CalibrationResult calibrateOptimum(const Study& study, const AssemblySpec& assembly,
+                                   const std::vector<DataSet>& data, const CalibrationSetup& setup,
+                                   const CalibrationOptions& options, const std::string& out_dir,
+                                   const std::string& fingerprint_extra,
                                    const StageProgress& progress = {});
 
 /// The finite-difference step (scaled units) of polishLeastSquares used by calibrateAssembly's
@@ -426,15 +446,17 @@ inline constexpr double kPolishStepFrozen = 1e-3;
 
 /// How polishLeastSquares differentiates and when it stops.
 struct PolishOptions {
-  int threads = 1;            ///< workers for the runs of one difference Jacobian
-  double h = kPolishStep;     ///< difference step, scaled units
-  double rel_gain = 1e-9;     ///< converged when a step from a fresh Jacobian gains less than rel_gain × SSE
+  int threads = 1;         ///< workers for the runs of one difference Jacobian
+  double h = kPolishStep;  ///< difference step, scaled units
+  double rel_gain =
+      1e-9;  ///< converged when a step from a fresh Jacobian gains less than rel_gain × SSE
   /// Forward differences (d runs, not 2d): for a start far from the optimum on frozen steps, where
   /// the Jacobian only has to point downhill and a later polish with central differences settles.
   bool forward = false;
   /// With a Jacobian (n x d, scaled units), the first iteration's, and the last one is left in it
   /// (subspace_lm.hpp): a second polish from nearly the same point (e.g. on steps chosen at a
-  /// tighter accuracy) skips the first differences, and the integrator probes take their steps from it.
+  /// tighter accuracy) skips the first differences, and the integrator probes take their steps from
+  /// it.
   SubspaceJacobian* carried = nullptr;
 };
 
@@ -444,7 +466,8 @@ struct PolishOptions {
 /// (minimiseOnSubspace); an active set at the box's faces; at most 30 iterations, and it stops when
 /// a step from a fresh Jacobian gains less than rel_gain × SSE. Returns the best point seen
 /// (status "LM_POLISH"); sse is infinite when the run at theta0 fails.
-StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0, const PolishOptions& options = {});
+StartResult polishLeastSquares(const LabObjective& obj, const std::vector<double>& theta0,
+                               const PolishOptions& options = {});
 
 using ::dtwin::fnv1a64;  // io/provenance.hpp
 

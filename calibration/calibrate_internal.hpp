@@ -1,6 +1,7 @@
-// Private to calibration/ (not installed): what the files of calibrateAssembly share, the JSON of the
-// stage files (result_json.cpp), readStage and secondsSince (calibration_run.cpp) and CalibrationRun,
-// one calibration run, whose stages are in calibration_run.cpp and calibration_run_intervals.cpp.
+// Private to calibration/ (not installed): what the files of calibrateAssembly share, the JSON of
+// the stage files (result_json.cpp), readStage and secondsSince (calibration_run.cpp) and
+// CalibrationRun, one calibration run, whose stages are in calibration_run.cpp and
+// calibration_run_intervals.cpp.
 #pragma once
 
 #include <chrono>
@@ -16,11 +17,11 @@
 #include <nlohmann/json.hpp>
 
 #include "calibration/bounds.hpp"
-#include "common/distributed.hpp"
 #include "calibration/calibrate.hpp"
 #include "calibration/correlated.hpp"
 #include "calibration/design_journal.hpp"
 #include "calibration/subspace_lm.hpp"
+#include "common/distributed.hpp"
 
 namespace fs = std::filesystem;
 
@@ -40,9 +41,10 @@ nlohmann::json gaussNewtonJson(const JointRegionPlan& plan, const std::vector<Ra
 /// Reads a stage file when it exists and carries `fingerprint`; null otherwise. Under MPI the
 /// root reads it and every rank decides on the same bytes. The stage files are written sealed
 /// (common/checksum.hpp sealJson): one that is not JSON or fails its checksum was damaged on disk;
-/// the root sets it aside (<file>.corrupt, one note on stderr) and null is returned, so the stage is
-/// redone. A file of another calibration (its fingerprint differs) is an InputError.
-nlohmann::json readStage(const Distributed* processes, const fs::path& p, const std::string& fingerprint);
+/// the root sets it aside (<file>.corrupt, one note on stderr) and null is returned, so the stage
+/// is redone. A file of another calibration (its fingerprint differs) is an InputError.
+nlohmann::json readStage(const Distributed* processes, const fs::path& p,
+                         const std::string& fingerprint);
 double secondsSince(std::chrono::steady_clock::time_point t0);
 
 // ------------------------------------------------------------------ CalibrationRun
@@ -56,10 +58,18 @@ double secondsSince(std::chrono::steady_clock::time_point t0);
 class CalibrationRun {
  public:
   CalibrationRun(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
-                 const CalibrationSetup& setup, const CalibrationOptions& options, const std::string& out_dir,
-                 const std::string& fingerprint_extra, const StageProgress& progress)
-      : study_(study), assembly_(assembly), data_(data), setup_(setup), options_(options), out_dir_(out_dir),
-        fingerprint_extra_(fingerprint_extra), progress_(progress), t_all_(Clock::now()) {}
+                 const CalibrationSetup& setup, const CalibrationOptions& options,
+                 const std::string& out_dir, const std::string& fingerprint_extra,
+                 const StageProgress& progress)
+      : study_(study),
+        assembly_(assembly),
+        data_(data),
+        setup_(setup),
+        options_(options),
+        out_dir_(out_dir),
+        fingerprint_extra_(fingerprint_extra),
+        progress_(progress),
+        t_all_(Clock::now()) {}
 
   void objective();
   void optimum();
@@ -77,8 +87,8 @@ class CalibrationRun {
     double shift_floor = 0.0;
   };
   LabObjective fineObjective(double accuracy) const;
-  BiasProbe probeBias(const LabObjective& fine, const std::vector<double>& theta, const std::vector<double>& h, bool five,
-                      const std::string& stage) const;
+  BiasProbe probeBias(const LabObjective& fine, const std::vector<double>& theta,
+                      const std::vector<double>& h, bool five, const std::string& stage) const;
   void chooseStepAccuracy();
   void summary();
   CalibrationResult take() { return std::move(res_); }
@@ -115,7 +125,8 @@ class CalibrationRun {
 
  private:
   using Clock = std::chrono::steady_clock;
-  using ResumedPoints = std::map<long, std::pair<std::vector<double>, double>>;  ///< design index -> (θ, SSE)
+  using ResumedPoints =
+      std::map<long, std::pair<std::vector<double>, double>>;  ///< design index -> (θ, SSE)
 
   void report(const std::string& stage, std::size_t done, std::size_t total) const {
     if (progress_) progress_(stage, done, total);
@@ -130,9 +141,11 @@ class CalibrationRun {
   BoxProblem boxProblem() const;
   void paperBox(const BoxProblem& bp, nlohmann::json& stage);
   void jointRegion(const BoxProblem& bp, nlohmann::json& stage);
-  ResumedPoints openJournal(const std::string& journal_path, std::unique_ptr<DesignJournal>& journal) const;
-  std::vector<double> evaluateRound(const Eigen::MatrixXd& pts, int first, const std::string& stage, DesignJournal* journal,
-                                    const std::string& journal_path, ResumedPoints& resumed);
+  ResumedPoints openJournal(const std::string& journal_path,
+                            std::unique_ptr<DesignJournal>& journal) const;
+  std::vector<double> evaluateRound(const Eigen::MatrixXd& pts, int first, const std::string& stage,
+                                    DesignJournal* journal, const std::string& journal_path,
+                                    ResumedPoints& resumed);
   void writeDesignTable() const;
   void evaluatedPoints(Eigen::MatrixXd& pts, std::vector<double>& f) const;
   void appendStartEnds(Eigen::MatrixXd& pts, std::vector<double>& f) const;
@@ -152,11 +165,13 @@ class CalibrationRun {
   const StageProgress& progress_;
   const Clock::time_point t_all_;
   std::unique_ptr<LabObjective> objective_;
-  SseFunction sse_;          ///< objective_->sse
-  std::size_t d_ = 0;        ///< calibrated parameters
-  int n_ = 0;                ///< scalar residuals
-  std::string fingerprint_;  ///< of everything that changes the numbers; every stage file carries it
-  std::string posterior_checksum_;  ///< of posterior.csv's bytes (contentChecksum), recorded in summary.json
+  SseFunction sse_;    ///< objective_->sse
+  std::size_t d_ = 0;  ///< calibrated parameters
+  int n_ = 0;          ///< scalar residuals
+  std::string
+      fingerprint_;  ///< of everything that changes the numbers; every stage file carries it
+  std::string posterior_checksum_;  ///< of posterior.csv's bytes (contentChecksum), recorded in
+                                    ///< summary.json
   CalibrationResult res_;
   nlohmann::json steps_log_ = nlohmann::json::array();  ///< chooseStepAccuracy's tries
   /// The Jacobian of the last polish on frozen steps (scaled units): the next polish's first, and

@@ -14,16 +14,17 @@
 
 #include "calibration/lhs.hpp"
 #include "common/checksum.hpp"
+#include "common/distributed.hpp"
+#include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
-#include "common/errors.hpp"
-#include "common/distributed.hpp"
 #include "common/parallel.hpp"
 
 namespace dtwin::calib {
 
 // ------------------------------------------------------------------ persistence helpers
-nlohmann::json readStage(const Distributed* processes, const fs::path& p, const std::string& fingerprint) {
+nlohmann::json readStage(const Distributed* processes, const fs::path& p,
+                         const std::string& fingerprint) {
   // The root reads and checks the file; a damaged one is set aside and every rank redoes the stage.
   const std::string text = onRoot(processes, [&]() -> std::string {
     if (!fs::exists(p)) return std::string();
@@ -46,8 +47,10 @@ nlohmann::json readStage(const Distributed* processes, const fs::path& p, const 
   if (text.empty()) return nullptr;
   nlohmann::json j = nlohmann::json::parse(text.begin() + 1, text.end());
   if (!j.contains("fingerprint") || j["fingerprint"] != fingerprint)
-    throw InputError(p.string(), "was made by a different calibration (study, data, assembly or sizes changed); "
-                                 "use a new output folder or delete it to start over");
+    throw InputError(
+        p.string(),
+        "was made by a different calibration (study, data, assembly or sizes changed); "
+        "use a new output folder or delete it to start over");
   return j;
 }
 
@@ -57,10 +60,19 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 
 namespace {
 
-std::string hex(std::uint64_t v) { return formatPrintf("%016llx", static_cast<unsigned long long>(v)); }
+std::string hex(std::uint64_t v) {
+  return formatPrintf("%016llx", static_cast<unsigned long long>(v));
+}
 
 std::vector<double> packStart(const StartResult& r) {
-  return Packer().put(r.start).put(r.theta).put(r.sse).put(r.evaluations).put(r.nonfinite_evaluations).put(r.status).take();
+  return Packer()
+      .put(r.start)
+      .put(r.theta)
+      .put(r.sse)
+      .put(r.evaluations)
+      .put(r.nonfinite_evaluations)
+      .put(r.status)
+      .take();
 }
 StartResult unpackStart(const std::vector<double>& v) {
   Unpacker u(v);
@@ -129,8 +141,10 @@ std::vector<double> packTrace(const RidgeTrace& r) {
   std::vector<double> z, cross;
   for (const auto& p : r.z) z.insert(z.end(), p.data(), p.data() + p.size());
   for (const auto& c : r.cross) {  // d·d values, or one NaN for an unknown cross-section
-    if (c.size() == 0) cross.push_back(std::numeric_limits<double>::quiet_NaN());
-    else cross.insert(cross.end(), c.data(), c.data() + c.size());
+    if (c.size() == 0)
+      cross.push_back(std::numeric_limits<double>::quiet_NaN());
+    else
+      cross.insert(cross.end(), c.data(), c.data() + c.size());
   }
   return Packer()
       .put(r.axis)
@@ -153,7 +167,8 @@ RidgeTrace unpackTrace(const std::vector<double>& v, int d) {
   r.direction = static_cast<int>(u.integer());
   r.t = u.vec();
   const std::vector<double> z = u.vec();
-  for (std::size_t k = 0; k + static_cast<std::size_t>(d) <= z.size(); k += static_cast<std::size_t>(d))
+  for (std::size_t k = 0; k + static_cast<std::size_t>(d) <= z.size();
+       k += static_cast<std::size_t>(d))
     r.z.push_back(Eigen::Map<const Eigen::VectorXd>(z.data() + k, d));
   r.sse = u.vec();
   const std::vector<double> cross = u.vec();
@@ -176,7 +191,8 @@ RidgeTrace unpackTrace(const std::vector<double>& v, int d) {
 
 }  // namespace
 
-// ------------------------------------------------------------------ CalibrationRun: objective .. design
+// ------------------------------------------------------------------ CalibrationRun: objective ..
+// design
 /// The resume fingerprint: everything that changes the numbers.
 std::string CalibrationRun::resumeFingerprint() const {
   const LabObjective& objective = *objective_;
@@ -234,27 +250,33 @@ void CalibrationRun::objective() {
     // The screening and the optimiser's starts replay the steps of one reference point: the extra
     // start (e.g. a nested model's optimum) that fits best, or the box centre.
     std::vector<double> ref(d_);
-    for (std::size_t k = 0; k < d_; ++k) ref[k] = 0.5 * (objective_->lower()[k] + objective_->upper()[k]);
+    for (std::size_t k = 0; k < d_; ++k)
+      ref[k] = 0.5 * (objective_->lower()[k] + objective_->upper()[k]);
     std::vector<std::vector<double>> extra;
     for (const auto& x : options_.extra_starts)
       if (x.size() == d_) {
         extra.push_back(x);
-        for (std::size_t k = 0; k < d_; ++k) extra.back()[k] = std::clamp(x[k], objective_->lower()[k], objective_->upper()[k]);
+        for (std::size_t k = 0; k < d_; ++k)
+          extra.back()[k] = std::clamp(x[k], objective_->lower()[k], objective_->upper()[k]);
       }
     if (extra.size() == 1) ref = extra[0];
     if (extra.size() > 1) {
       const auto f = distributedMap(
-      options_.processes, extra.size(), options_.threads, [&](std::size_t i, int) { return std::vector<double>{objective_->sse(extra[i])}; },
+          options_.processes, extra.size(), options_.threads,
+          [&](std::size_t i, int) { return std::vector<double>{objective_->sse(extra[i])}; },
           [&](std::size_t done, std::size_t total) { report("optimum: reference", done, total); });
       std::size_t best = 0;
       for (std::size_t i = 1; i < f.size(); ++i)
-        if (std::isfinite(f[i][0]) && !(f[i][0] >= f[best][0])) best = i;  // a failed run never wins
+        if (std::isfinite(f[i][0]) && !(f[i][0] >= f[best][0]))
+          best = i;  // a failed run never wins
       ref = extra[best];
     }
     reference_ = ref;
     if (!objective_->freezeSteps(ref))
-      res_.warnings.push_back("the integrator's steps could not be frozen at the reference point (its run failed); the optimiser's "
-                              "starts chose their steps adaptively");
+      res_.warnings.push_back(
+          "the integrator's steps could not be frozen at the reference point (its run failed); the "
+          "optimiser's "
+          "starts chose their steps adaptively");
   }
 }
 
@@ -264,26 +286,34 @@ std::vector<std::vector<double>> CalibrationRun::optimiserStarts(nlohmann::json&
   const LabObjective& objective = *objective_;
   std::vector<std::vector<double>> x0;
   if (options_.optimizer.screen_per_start > 0) {
-    const auto cand = screeningPoints(objective.lower(), objective.upper(), options_.optimizer_starts,
-                                      options_.optimizer.screen_per_start, options_.seed);
+    const auto cand =
+        screeningPoints(objective.lower(), objective.upper(), options_.optimizer_starts,
+                        options_.optimizer.screen_per_start, options_.seed);
     const auto f = distributedMap(
-      options_.processes, cand.size(), options_.threads, [&](std::size_t i, int) { return std::vector<double>{objective.sse(cand[i])}; },
+        options_.processes, cand.size(), options_.threads,
+        [&](std::size_t i, int) { return std::vector<double>{objective.sse(cand[i])}; },
         [&](std::size_t done, std::size_t total) { report("optimum: screening", done, total); });
     std::vector<double> fs;
     fs.reserve(f.size());
     for (const auto& v : f) fs.push_back(v[0]);
     x0 = bestStarts(cand, fs, objective.lower(), objective.upper(), options_.optimizer_starts);
     screening = {{"points", cand.size()},
-                 {"rule", "the box centre and a Latin hypercube of the bounds; starts = the best, 0.05 apart (scaled)"},
+                 {"rule",
+                  "the box centre and a Latin hypercube of the bounds; starts = the best, 0.05 "
+                  "apart (scaled)"},
                  {"best_sse", jsonNumber(*std::min_element(fs.begin(), fs.end()))}};
   } else {
-    x0 = optimizerStarts(objective.lower(), objective.upper(), options_.optimizer_starts, options_.seed);
+    x0 = optimizerStarts(objective.lower(), objective.upper(), options_.optimizer_starts,
+                         options_.seed);
   }
   report("optimum", 0, static_cast<std::size_t>(options_.optimizer_starts));
   for (std::size_t k = options_.extra_starts.size(); k-- > 0;) {
     auto x = options_.extra_starts[k];
-    if (x.size() != d_) throw InputError("extra optimiser start", "has " + std::to_string(x.size()) + " values, expected " + std::to_string(d_));
-    for (std::size_t i = 0; i < d_; ++i) x[i] = std::clamp(x[i], objective.lower()[i], objective.upper()[i]);
+    if (x.size() != d_)
+      throw InputError("extra optimiser start", "has " + std::to_string(x.size()) +
+                                                    " values, expected " + std::to_string(d_));
+    for (std::size_t i = 0; i < d_; ++i)
+      x[i] = std::clamp(x[i], objective.lower()[i], objective.upper()[i]);
     x0.insert(x0.begin(), x);
   }
   return x0;
@@ -312,8 +342,10 @@ void CalibrationRun::polishOnOwnSteps() {
   if (!std::isfinite(res_.optimum.sse)) return;
   if (!objective_->freezeSteps(res_.optimum.theta)) {
     objective_->thawSteps();
-    res_.warnings.push_back("the integrator's steps could not be frozen at the optimiser's best point (its run failed); the later "
-                            "stages chose their steps adaptively");
+    res_.warnings.push_back(
+        "the integrator's steps could not be frozen at the optimiser's best point (its run "
+        "failed); the later "
+        "stages chose their steps adaptively");
     return;
   }
   polishFrozen();
@@ -347,16 +379,19 @@ void CalibrationRun::polishFrozen() {
 /// tenth and 0.7 of the last, and the optimum polished on them; at most twice. (The shift would go
 /// with the tolerance squared if the error were proportional to it; on the demonstration drive it
 /// went as the tolerance^1.6, hence the exponent 1/1.5.) When a tighter accuracy does not halve
-/// the shift, the shift is not the integrator's: the last accuracy and its optimum are kept. Each try is recorded (steps_log_, optimum.json "steps").
+/// the shift, the shift is not the integrator's: the last accuracy and its optimum are kept. Each
+/// try is recorded (steps_log_, optimum.json "steps").
 void CalibrationRun::chooseStepAccuracy() {
   const double dof = n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : n_;
   const double t = studentQuantile(0.5 + 0.5 * options_.profile.level, dof);
   // The final check (integratorCheck) probes at a tenth of each interval's half-width; so do these
   // probes, the half-widths from the polish's Jacobian (Gauss–Newton), since the roughness and
   // the shift depend on the probe's step.
-  const bool have_j = polish_jacobian_.J.rows() == n_ && polish_jacobian_.J.cols() == static_cast<long>(d_);
+  const bool have_j =
+      polish_jacobian_.J.rows() == n_ && polish_jacobian_.J.cols() == static_cast<long>(d_);
   const std::vector<double> h =
-      have_j ? probeStepsFromJacobian(polish_jacobian_.J, t * t * res_.optimum.sse / dof) : std::vector<double>(d_, kPolishStepFrozen);
+      have_j ? probeStepsFromJacobian(polish_jacobian_.J, t * t * res_.optimum.sse / dof)
+             : std::vector<double>(d_, kPolishStepFrozen);
   double last_shift = 0.0, last_accuracy = 0.0;
   std::vector<double> last_theta;
   Optimum last_optimum;
@@ -367,9 +402,13 @@ void CalibrationRun::chooseStepAccuracy() {
     if (!fine.freezeSteps(res_.optimum.theta)) return;
     const BiasProbe p = probeBias(fine, res_.optimum.theta, h, true, "optimum: integrator bias");
     if (!p.ok) return;
-    steps_log_.push_back({{"accuracy", accuracy}, {"optimum_shift", jsonNumber(p.shift)}, {"threshold", jsonNumber(threshold)},
-                          {"roughness", jsonNumber(p.roughness)}, {"shift_floor", jsonNumber(p.shift_floor)},
-                          {"probe_step", jsonNumbers(h)}, {"at", jsonNumbers(res_.optimum.theta)}});
+    steps_log_.push_back({{"accuracy", accuracy},
+                          {"optimum_shift", jsonNumber(p.shift)},
+                          {"threshold", jsonNumber(threshold)},
+                          {"roughness", jsonNumber(p.roughness)},
+                          {"shift_floor", jsonNumber(p.shift_floor)},
+                          {"probe_step", jsonNumbers(h)},
+                          {"at", jsonNumbers(res_.optimum.theta)}});
     if (!(p.shift > 4 * p.shift_floor)) {
       // The shift is within what the SSE's roughness lets central differences see (jumps of the
       // model itself, e.g. a tire force that jumps at touch-down between two stage times): no
@@ -391,7 +430,8 @@ void CalibrationRun::chooseStepAccuracy() {
     last_accuracy = accuracy;
     last_theta = objective_->stepsFrozenAt();
     last_optimum = res_.optimum;
-    const double tighter = accuracy * std::clamp(std::pow(threshold / 8 / p.shift, 2.0 / 3.0), 0.1, 0.7);
+    const double tighter =
+        accuracy * std::clamp(std::pow(threshold / 8 / p.shift, 2.0 / 3.0), 0.1, 0.7);
     if (!objective_->freezeSteps(res_.optimum.theta, tighter)) {
       objective_->freezeSteps(res_.optimum.theta, accuracy);
       return;
@@ -420,12 +460,15 @@ void CalibrationRun::optimum() {
   const fs::path opt_path = file("optimum.json");
   if (auto j = readStage(options_.processes, opt_path, fingerprint_); !j.is_null()) {
     res_.optimum = optimumFrom(j.at("optimum"));
-    // The later stages replay the steps the optimum's polish was made on: frozen again at the same θ.
+    // The later stages replay the steps the optimum's polish was made on: frozen again at the same
+    // θ.
     if (options_.steps == "frozen") {
       if (j.contains("steps") && j.at("steps").value("frozen", false)) {
-        objective_->freezeSteps(numbersFromJson(j.at("steps").at("frozen_at")), j.at("steps").value("accuracy", 0.0));
+        objective_->freezeSteps(numbersFromJson(j.at("steps").at("frozen_at")),
+                                j.at("steps").value("accuracy", 0.0));
         // The tries, whose last probe the integrator check may take over (integratorCheck).
-        if (j.at("steps").contains("accuracy_choice")) steps_log_ = j.at("steps").at("accuracy_choice");
+        if (j.at("steps").contains("accuracy_choice"))
+          steps_log_ = j.at("steps").at("accuracy_choice");
       } else {
         objective_->thawSteps();
       }
@@ -441,9 +484,11 @@ void CalibrationRun::optimum() {
     const bool lm = objective.stepsFrozen();
     const double dof = n_ > static_cast<int>(d_) ? n_ - static_cast<int>(d_) : std::max(n_, 1);
     const auto packed = distributedMap(
-      options_.processes, x0.size(), options_.threads,
+        options_.processes, x0.size(), options_.threads,
         [&](std::size_t i, int) {
-          if (!lm) return packStart(minimiseFrom(sse_, objective.lower(), objective.upper(), x0[i], options_.optimizer));
+          if (!lm)
+            return packStart(minimiseFrom(sse_, objective.lower(), objective.upper(), x0[i],
+                                          options_.optimizer));
           PolishOptions po;
           po.h = kPolishStepFrozen;
           po.rel_gain = 4e-3 / dof;
@@ -462,13 +507,16 @@ void CalibrationRun::optimum() {
     res_.optimum = collectOptimum(std::move(starts));
     if (options_.steps == "frozen") polishOnOwnSteps();
     rootWrites(options_.processes, [&] {
-      nlohmann::json stage{{"fingerprint", fingerprint_}, {"optimum", optimumJson(res_.optimum)}, {"steps", stepsJson()}};
+      nlohmann::json stage{{"fingerprint", fingerprint_},
+                           {"optimum", optimumJson(res_.optimum)},
+                           {"steps", stepsJson()}};
       if (!screening.is_null()) stage["screening"] = screening;
       writeFileAtomic(opt_path.string(), sealJson(stage).dump(2) + "\n");
     });
   }
   if (!std::isfinite(res_.optimum.sse))
-    throw std::runtime_error("assembly " + assembly_.id + ": every simulation of the optimiser failed; no calibration possible");
+    throw std::runtime_error("assembly " + assembly_.id +
+                             ": every simulation of the optimiser failed; no calibration possible");
   res_.stage_wall_s.push_back({"optimum", secondsSince(t0)});
 }
 
@@ -489,7 +537,9 @@ BoxProblem CalibrationRun::boxProblem() const {
 void CalibrationRun::paperBox(const BoxProblem& bp, nlohmann::json& stage) {
   const auto packed = distributedMap(
       options_.processes, 2 * d_, options_.threads,
-      [&](std::size_t i, int) { return packSweep(calcBoxSweep(sse_, bp, static_cast<int>(i), options_.box)); },
+      [&](std::size_t i, int) {
+        return packSweep(calcBoxSweep(sse_, bp, static_cast<int>(i), options_.box));
+      },
       [&](std::size_t done, std::size_t total) { report("box", done, total); });
   std::vector<SweepResult> sweeps;
   sweeps.reserve(packed.size());
@@ -506,12 +556,15 @@ void CalibrationRun::jointRegion(const BoxProblem& bp, nlohmann::json& stage) {
   const LabObjective& objective = *objective_;
   const auto stencil = jacobianStencil(bp, options_.joint);
   const auto residuals = distributedMap(
-      options_.processes, stencil.size(), options_.threads, [&](std::size_t i, int) { return objective.residuals(stencil[i]); },
+      options_.processes, stencil.size(), options_.threads,
+      [&](std::size_t i, int) { return objective.residuals(stencil[i]); },
       [&](std::size_t done, std::size_t total) { report("region: Jacobian", done, total); });
   const JointRegionPlan plan = planJointRegion(bp, residuals, options_.joint);
   const auto packed = distributedMap(
       options_.processes, 2 * d_, options_.threads,
-      [&](std::size_t i, int) { return packRay(calcRegionSweep(sse_, plan, static_cast<int>(i), options_.joint)); },
+      [&](std::size_t i, int) {
+        return packRay(calcRegionSweep(sse_, plan, static_cast<int>(i), options_.joint));
+      },
       [&](std::size_t done, std::size_t total) { report("region: sweeps", done, total); });
   std::vector<RaySweep> sweeps;
   sweeps.reserve(packed.size());
@@ -523,8 +576,9 @@ void CalibrationRun::jointRegion(const BoxProblem& bp, nlohmann::json& stage) {
   const auto packed_traces = distributedMap(
       options_.processes, 2 * ridgeAxes(plan, options_.joint).size(), options_.threads,
       [&](std::size_t i, int) {
-        return packTrace(calcRidgeTrace([&](const std::vector<double>& th) { return objective.residuals(th); }, plan, sweeps,
-                                        static_cast<int>(i), traceOptions));
+        return packTrace(
+            calcRidgeTrace([&](const std::vector<double>& th) { return objective.residuals(th); },
+                           plan, sweeps, static_cast<int>(i), traceOptions));
       },
       [&](std::size_t done, std::size_t total) { report("region: ridges", done, total); });
   std::vector<RidgeTrace> traces;
@@ -545,35 +599,42 @@ void CalibrationRun::region() {
   } else {
     const BoxProblem bp = boxProblem();
     nlohmann::json stage{{"fingerprint", fingerprint_}};
-    if (options_.region == "paper") paperBox(bp, stage);
-    else jointRegion(bp, stage);
+    if (options_.region == "paper")
+      paperBox(bp, stage);
+    else
+      jointRegion(bp, stage);
     stage["region"] = res_.region.toJson();
-    rootWrites(options_.processes, [&] { writeFileAtomic(box_path.string(), sealJson(stage).dump(2) + "\n"); });
+    rootWrites(options_.processes,
+               [&] { writeFileAtomic(box_path.string(), sealJson(stage).dump(2) + "\n"); });
   }
   res_.stage_wall_s.push_back({"region", secondsSince(t0)});
 }
 
 /// Opens the design journal on the root (`journal`, null on the other ranks) and returns the
 /// points it holds, which every rank learns from the root.
-CalibrationRun::ResumedPoints CalibrationRun::openJournal(const std::string& journal_path,
-                                                          std::unique_ptr<DesignJournal>& journal) const {
+CalibrationRun::ResumedPoints CalibrationRun::openJournal(
+    const std::string& journal_path, std::unique_ptr<DesignJournal>& journal) const {
   const std::size_t d = d_;
-  const std::vector<double> resumed_flat = bytesToDoubles(onRoot(options_.processes, [&]() -> std::string {
-    journal = std::make_unique<DesignJournal>(journal_path, static_cast<int>(d), fingerprint_);
-    std::vector<double> v;
-    for (const auto& e : journal->resumed()) {
-      if (e.index < 0) throw InputError(journal->path(), "design index " + std::to_string(e.index) + " is negative");
-      v.push_back(static_cast<double>(e.index));
-      v.insert(v.end(), e.theta.begin(), e.theta.end());
-      v.push_back(e.sse);
-    }
-    return doublesToBytes(v);
-  }));
+  const std::vector<double> resumed_flat =
+      bytesToDoubles(onRoot(options_.processes, [&]() -> std::string {
+        journal = std::make_unique<DesignJournal>(journal_path, static_cast<int>(d), fingerprint_);
+        std::vector<double> v;
+        for (const auto& e : journal->resumed()) {
+          if (e.index < 0)
+            throw InputError(journal->path(),
+                             "design index " + std::to_string(e.index) + " is negative");
+          v.push_back(static_cast<double>(e.index));
+          v.insert(v.end(), e.theta.begin(), e.theta.end());
+          v.push_back(e.sse);
+        }
+        return doublesToBytes(v);
+      }));
   ResumedPoints resumed;
   for (std::size_t k = 0; k + d + 2 <= resumed_flat.size(); k += d + 2)
-    resumed[static_cast<long>(resumed_flat[k])] = {std::vector<double>(resumed_flat.begin() + static_cast<long>(k) + 1,
-                                                                       resumed_flat.begin() + static_cast<long>(k + 1 + d)),
-                                                   resumed_flat[k + 1 + d]};
+    resumed[static_cast<long>(resumed_flat[k])] = {
+        std::vector<double>(resumed_flat.begin() + static_cast<long>(k) + 1,
+                            resumed_flat.begin() + static_cast<long>(k + 1 + d)),
+        resumed_flat[k + 1 + d]};
   return resumed;
 }
 
@@ -582,8 +643,9 @@ CalibrationRun::ResumedPoints CalibrationRun::openJournal(const std::string& jou
 /// journalled. One process: one loop, each point journalled as it finishes. Several ranks: chunks
 /// of 8 points per worker; the root journals its own points as they finish and the others' at the
 /// end of each chunk (a killed job loses at most one chunk of them).
-std::vector<double> CalibrationRun::evaluateRound(const Eigen::MatrixXd& pts, int first, const std::string& stage,
-                                                  DesignJournal* journal, const std::string& journal_path,
+std::vector<double> CalibrationRun::evaluateRound(const Eigen::MatrixXd& pts, int first,
+                                                  const std::string& stage, DesignJournal* journal,
+                                                  const std::string& journal_path,
                                                   ResumedPoints& resumed) {
   const std::size_t d = d_;
   const std::size_t ranks = static_cast<std::size_t>(processCount(options_.processes));
@@ -603,31 +665,41 @@ std::vector<double> CalibrationRun::evaluateRound(const Eigen::MatrixXd& pts, in
       continue;
     }
     if (it->second.first != point(t))
-      throw InputError(journal_path, "design point " + std::to_string(idx) + " differs from this calibration's design");
+      throw InputError(journal_path, "design point " + std::to_string(idx) +
+                                         " differs from this calibration's design");
     out[t] = it->second.second;
     ++res_.resumed_points;
     resumed.erase(it);
   }
   report(stage, m_all - todo.size(), m_all);
-  const std::size_t chunk = ranks == 1 ? std::max<std::size_t>(todo.size(), 1)
-                                       : 8 * ranks * static_cast<std::size_t>(distributedWorkers(options_.processes, todo.size(), options_.threads));
+  const std::size_t chunk = ranks == 1
+                                ? std::max<std::size_t>(todo.size(), 1)
+                                : 8 * ranks *
+                                      static_cast<std::size_t>(distributedWorkers(
+                                          options_.processes, todo.size(), options_.threads));
   for (std::size_t c0 = 0; c0 < todo.size(); c0 += chunk) {
     const std::size_t m = std::min(chunk, todo.size() - c0);
     const auto sse_of = distributedMap(
-      options_.processes, m, options_.threads,
+        options_.processes, m, options_.threads,
         [&](std::size_t t, int) {
           const std::size_t row = todo[c0 + t];
           const auto th = point(row);
           const double s = objective_->sse(th);
-          if (journal) journal->append(first + static_cast<long>(row), th, s);  // the root's own points, at once
+          if (journal)
+            journal->append(first + static_cast<long>(row), th,
+                            s);  // the root's own points, at once
           return std::vector<double>{s};
         },
-        [&](std::size_t done, std::size_t) { report(stage, m_all - todo.size() + c0 + done, m_all); });
+        [&](std::size_t done, std::size_t) {
+          report(stage, m_all - todo.size() + c0 + done, m_all);
+        });
     for (std::size_t t = 0; t < m; ++t) out[todo[c0 + t]] = sse_of[t][0];
     if (ranks > 1)
       rootWrites(options_.processes, [&] {
         for (std::size_t t = 0; t < m; ++t)
-          if (t % ranks != 0) journal->append(first + static_cast<long>(todo[c0 + t]), point(todo[c0 + t]), sse_of[t][0]);
+          if (t % ranks != 0)
+            journal->append(first + static_cast<long>(todo[c0 + t]), point(todo[c0 + t]),
+                            sse_of[t][0]);
       });
   }
   return out;
@@ -637,7 +709,8 @@ std::vector<double> CalibrationRun::evaluateRound(const Eigen::MatrixXd& pts, in
 void CalibrationRun::writeDesignTable() const {
   std::vector<double> round_of(res_.sse.size());
   for (const auto& r : res_.rounds.rounds)
-    for (int i = r.first; i < r.first + r.count; ++i) round_of[static_cast<std::size_t>(i)] = r.index;
+    for (int i = r.first; i < r.first + r.count; ++i)
+      round_of[static_cast<std::size_t>(i)] = r.index;
   rootWrites(options_.processes, [&] {
     writeDesignTableCsv(file("design.csv").string(), res_.names, res_.design, res_.sse, "sse",
                         {{"round", round_of}, {"log_design_weight", res_.rounds.log_weight}});
@@ -655,12 +728,15 @@ void CalibrationRun::design() {
     ResumedPoints resumed = openJournal(journal_path, journal);
     int round_no = 0;
     const DesignEvaluator evaluate = [&](const Eigen::MatrixXd& pts, int first) {
-      return evaluateRound(pts, first, "design round " + std::to_string(round_no++), journal.get(), journal_path, resumed);
+      return evaluateRound(pts, first, "design round " + std::to_string(round_no++), journal.get(),
+                           journal_path, resumed);
     };
     res_.rounds = runAdaptiveDesign(res_.region, n_, options_.designOptions(), evaluate);
     if (!resumed.empty())
-      throw InputError(journal_path, "holds design point " + std::to_string(resumed.begin()->first) +
-                                         ", which this calibration's design does not have (made by another version?); delete it to start over");
+      throw InputError(journal_path, "holds design point " +
+                                         std::to_string(resumed.begin()->first) +
+                                         ", which this calibration's design does not have (made by "
+                                         "another version?); delete it to start over");
   }
   res_.design = res_.rounds.points;
   res_.sse = res_.rounds.sse;

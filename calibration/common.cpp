@@ -13,8 +13,7 @@ void sequentialFor(int count, const std::function<void(int)>& task) {
 
 void checkBounds(const std::vector<double>& lower, const std::vector<double>& upper,
                  const std::string& where, bool allow_degenerate) {
-  if (lower.empty())
-    throw InputError(where, "bounds must have at least one parameter, got 0");
+  if (lower.empty()) throw InputError(where, "bounds must have at least one parameter, got 0");
   if (lower.size() != upper.size()) {
     std::ostringstream os;
     os << "lower and upper bounds must have the same size, got " << lower.size() << " and "

@@ -43,16 +43,20 @@ void checkBounds(const std::vector<double>& lower, const std::vector<double>& up
 /// The default sizes of a calibration (docs/method.md §4: the paper's), read from the one set
 /// of study-size defaults (io/study_sizes.hpp StudySizes). GibbsOptions, CalibrationOptions and
 /// AdaptiveDesignOptions take their defaults from them.
-inline constexpr int kDefaultOptimizerStarts = static_cast<int>(StudySizes{}.optimizer_starts);  ///< multi-start optimiser starts
-inline constexpr int kDefaultLhsPoints = static_cast<int>(StudySizes{}.lhs_points);  ///< design points of the first Latin hypercube
-inline constexpr int kDefaultGibbsIterations = static_cast<int>(StudySizes{}.gibbs_iterations);  ///< Gibbs iterations S, burn-in included
-inline constexpr int kDefaultGibbsBurnIn = static_cast<int>(StudySizes{}.gibbs_burn_in);  ///< Gibbs iterations discarded from the start
-inline constexpr double kDefaultTauPrior = 1e-3;        ///< shape a and rate b of the Gamma prior of τ
+inline constexpr int kDefaultOptimizerStarts =
+    static_cast<int>(StudySizes{}.optimizer_starts);  ///< multi-start optimiser starts
+inline constexpr int kDefaultLhsPoints =
+    static_cast<int>(StudySizes{}.lhs_points);  ///< design points of the first Latin hypercube
+inline constexpr int kDefaultGibbsIterations =
+    static_cast<int>(StudySizes{}.gibbs_iterations);  ///< Gibbs iterations S, burn-in included
+inline constexpr int kDefaultGibbsBurnIn =
+    static_cast<int>(StudySizes{}.gibbs_burn_in);  ///< Gibbs iterations discarded from the start
+inline constexpr double kDefaultTauPrior = 1e-3;   ///< shape a and rate b of the Gamma prior of τ
 
 /// Stream identifiers for RandomStream(seed, stream, index): one purpose, one stream, so that two
 /// components given the same user seed still draw independent numbers.
-inline constexpr std::uint64_t kStreamLhs = 0x4c48'5300'0000'0001ULL;          // "LHS"
+inline constexpr std::uint64_t kStreamLhs = 0x4c48'5300'0000'0001ULL;              // "LHS"
 inline constexpr std::uint64_t kStreamOptimizerStarts = 0x4f50'5400'0000'0002ULL;  // "OPT"
-inline constexpr std::uint64_t kStreamGibbs = 0x4742'4200'0000'0003ULL;        // "GBB"
+inline constexpr std::uint64_t kStreamGibbs = 0x4742'4200'0000'0003ULL;            // "GBB"
 
 }  // namespace dtwin::calib

@@ -22,9 +22,11 @@ Eigen::MatrixXd pseudoInverse(const Eigen::MatrixXd& H) {
 }
 }  // namespace
 
-std::vector<int> timeBlocks(const std::vector<double>& time_s, const std::vector<int>& set_of, const std::vector<long>& repetition) {
+std::vector<int> timeBlocks(const std::vector<double>& time_s, const std::vector<int>& set_of,
+                            const std::vector<long>& repetition) {
   const std::size_t n = time_s.size();
-  DTWIN_CHECK(set_of.size() == n && repetition.size() == n, "timeBlocks needs a set and a repetition per record");
+  DTWIN_CHECK(set_of.size() == n && repetition.size() == n,
+              "timeBlocks needs a set and a repetition per record");
   std::vector<int> none(n, -1);
   std::map<int, std::vector<double>> times;  // per set, its distinct times (sorted)
   for (std::size_t i = 0; i < n; ++i) {
@@ -43,16 +45,18 @@ std::vector<int> timeBlocks(const std::vector<double>& time_s, const std::vector
   std::vector<int> block(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto& t = times[set_of[i]];
-    const auto rank = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), time_s[i]) - t.begin());
+    const auto rank =
+        static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), time_s[i]) - t.begin());
     block[i] = first_block[set_of[i]] + static_cast<int>(rank * kBlocks / t.size());
   }
   return block;
 }
 
-CorrelationAdjustment blockAdjustment(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, const std::vector<int>& block, double s2,
-                                      double level) {
+CorrelationAdjustment blockAdjustment(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
+                                      const std::vector<int>& block, double s2, double level) {
   const Eigen::Index n = J.rows(), d = J.cols();
-  DTWIN_CHECK(r.size() == n && static_cast<Eigen::Index>(block.size()) == n, "blockAdjustment needs a residual and a block per row");
+  DTWIN_CHECK(r.size() == n && static_cast<Eigen::Index>(block.size()) == n,
+              "blockAdjustment needs a residual and a block per row");
   CorrelationAdjustment a;
   a.kappa.assign(static_cast<std::size_t>(d), 1.0);
   const int B = n ? *std::max_element(block.begin(), block.end()) + 1 : 0;
@@ -74,21 +78,25 @@ CorrelationAdjustment blockAdjustment(const Eigen::MatrixXd& J, const Eigen::Vec
   Eigen::MatrixXd delta(d, B);
   for (int b = 0; b < B; ++b) {
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(H - Hb[static_cast<std::size_t>(b)]);
-    const bool ok = ldlt.info() == Eigen::Success && ldlt.isPositive() && (ldlt.vectorD().array() > 1e-12 * H.diagonal().maxCoeff()).all();
+    const bool ok = ldlt.info() == Eigen::Success && ldlt.isPositive() &&
+                    (ldlt.vectorD().array() > 1e-12 * H.diagonal().maxCoeff()).all();
     delta.col(b) = ok ? Eigen::VectorXd(ldlt.solve(g.col(b))) : Eigen::VectorXd(A * g.col(b));
   }
   const Eigen::VectorXd mean = delta.rowwise().mean();
   delta.colwise() -= mean;
   const Eigen::MatrixXd cov = (static_cast<double>(B - 1) / B) * (delta * delta.transpose());
   for (Eigen::Index j = 0; j < d; ++j)
-    if (A(j, j) > 0 && std::isfinite(cov(j, j))) a.kappa[static_cast<std::size_t>(j)] = cov(j, j) / (s2 * A(j, j));
+    if (A(j, j) > 0 && std::isfinite(cov(j, j)))
+      a.kappa[static_cast<std::size_t>(j)] = cov(j, j) / (s2 * A(j, j));
   a.blocks = B;
   const double t = studentQuantile(0.5 + 0.5 * level, B - 1);
   a.quantile = t * t;
   return a;
 }
 
-nlohmann::json CorrelationAdjustment::toJson() const { return {{"blocks", blocks}, {"kappa", kappa}, {"quantile", quantile}}; }
+nlohmann::json CorrelationAdjustment::toJson() const {
+  return {{"blocks", blocks}, {"kappa", kappa}, {"quantile", quantile}};
+}
 
 CorrelationAdjustment CorrelationAdjustment::fromJson(const nlohmann::json& j) {
   CorrelationAdjustment a;

@@ -51,12 +51,13 @@ inline constexpr int kMinTimesPerBlock = 20;  ///< sample times per block, at le
 /// data set (`set_of`) with one repetition (`repetition`) are split by the rank of their time
 /// (`time_s`) among the set's distinct times into kBlocks blocks; records at one time share a
 /// block, so channels sampled together are counted together.
-std::vector<int> timeBlocks(const std::vector<double>& time_s, const std::vector<int>& set_of, const std::vector<long>& repetition);
+std::vector<int> timeBlocks(const std::vector<double>& time_s, const std::vector<int>& set_of,
+                            const std::vector<long>& repetition);
 
 struct CorrelationAdjustment {
-  int blocks = 0;                ///< B; 0: not applied (every κ_j = 1)
-  std::vector<double> kappa;     ///< κ_j per parameter
-  double quantile = 0.0;         ///< t²_{B−1} at the level
+  int blocks = 0;             ///< B; 0: not applied (every κ_j = 1)
+  std::vector<double> kappa;  ///< κ_j per parameter
+  double quantile = 0.0;      ///< t²_{B−1} at the level
   nlohmann::json toJson() const;
   static CorrelationAdjustment fromJson(const nlohmann::json& j);
 };
@@ -64,7 +65,7 @@ struct CorrelationAdjustment {
 /// κ from the Jacobian J (n × d) of the weighted residuals, the residuals r (n) at the optimum,
 /// the blocks (timeBlocks; each ≥ 0) and s² = SSE*/(n − d). A parameter H does not determine
 /// (a zero column) keeps κ = 1.
-CorrelationAdjustment blockAdjustment(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, const std::vector<int>& block, double s2,
-                                      double level);
+CorrelationAdjustment blockAdjustment(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
+                                      const std::vector<int>& block, double s2, double level);
 
 }  // namespace dtwin::calib

@@ -27,7 +27,8 @@ const std::string kHeaderStart = "# dtwin design journal v";
 const std::string kDimKey = "; dim=";
 const std::string kFingerprintKey = "; fingerprint=";
 const std::string kCheckKey = "; check=";
-constexpr int kVersion = 2;  // v2: a checksum ends every line; v1 (none) is still read and appended to
+constexpr int kVersion =
+    2;  // v2: a checksum ends every line; v1 (none) is still read and appended to
 
 void appendDouble(std::string& out, double v) {
   if (!std::isfinite(v)) {
@@ -41,7 +42,8 @@ void appendDouble(std::string& out, double v) {
 }
 
 std::string headerLine(int version, int dim, const std::string& fingerprint) {
-  const std::string text = kHeaderStart + std::to_string(version) + kDimKey + std::to_string(dim) + kFingerprintKey + fingerprint;
+  const std::string text = kHeaderStart + std::to_string(version) + kDimKey + std::to_string(dim) +
+                           kFingerprintKey + fingerprint;
   return version == 1 ? text + "\n" : text + kCheckKey + lineChecksum(text) + "\n";
 }
 
@@ -85,15 +87,16 @@ bool parseJournal(const std::string& text, const std::string& path, JournalConte
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::string where = path + ": line " + std::to_string(line_no);
     if (line_no == 1) {
-      const std::string rule = "not a dtwin design journal: the header must read '" + kHeaderStart + "<version>" + kDimKey + "<d>" +
-                               kFingerprintKey + "<fingerprint>'";
+      const std::string rule = "not a dtwin design journal: the header must read '" + kHeaderStart +
+                               "<version>" + kDimKey + "<d>" + kFingerprintKey + "<fingerprint>'";
       std::size_t at = kHeaderStart.size();
       if (line.compare(0, at, kHeaderStart) != 0) throw InputError(where, rule);
       const std::size_t dim_at = line.find(kDimKey, at);
       if (dim_at == std::string::npos) throw InputError(where, rule);
       const std::string version = line.substr(at, dim_at - at);
       if (version != "1" && version != "2")
-        throw InputError(where, "journal version " + version + " is not one this program reads (1 or 2)");
+        throw InputError(where,
+                         "journal version " + version + " is not one this program reads (1 or 2)");
       out.version = version == "1" ? 1 : 2;
       if (out.version == 2 && !stripChecksum(line, kCheckKey)) {
         out.corrupt_line = line_no;
@@ -101,7 +104,8 @@ bool parseJournal(const std::string& text, const std::string& path, JournalConte
       }
       const std::size_t fp = line.find(kFingerprintKey, dim_at);
       if (fp == std::string::npos) throw InputError(where, rule);
-      const std::string dim_text = line.substr(dim_at + kDimKey.size(), fp - dim_at - kDimKey.size());
+      const std::string dim_text =
+          line.substr(dim_at + kDimKey.size(), fp - dim_at - kDimKey.size());
       int dim = 0;
       const auto res = std::from_chars(dim_text.data(), dim_text.data() + dim_text.size(), dim);
       if (res.ec != std::errc() || res.ptr != dim_text.data() + dim_text.size() || dim < 1)
@@ -159,7 +163,8 @@ JournalContents readDesignJournal(const std::string& path) {
   if (!parseJournal(text, path, c, complete))
     throw InputError(path, "design journal has no complete header line");
   if (c.corrupt_line > 0)
-    throw InputError(path + ": line " + std::to_string(c.corrupt_line), "fails its checksum (changed after it was written)");
+    throw InputError(path + ": line " + std::to_string(c.corrupt_line),
+                     "fails its checksum (changed after it was written)");
   return c;
 }
 
@@ -178,7 +183,8 @@ DesignJournal::DesignJournal(const std::string& path, int dim, const std::string
   if (exists && !readWholeFile(path, text))  // never truncate a journal we could not read
     throw InputError(path, "design journal exists but cannot be read");
   bool found = exists && parseJournal(text, path, c, complete);
-  if (found && c.corrupt_line > 0) {  // damaged on disk: set aside, and the points are computed again
+  if (found &&
+      c.corrupt_line > 0) {  // damaged on disk: set aside, and the points are computed again
     setAsideCorrupt(path, "line " + std::to_string(c.corrupt_line) + " fails its checksum");
     set_aside_ = true;
     found = false;
@@ -191,13 +197,11 @@ DesignJournal::DesignJournal(const std::string& path, int dim, const std::string
       if (c.dim != dim) os << "dim " << c.dim << " in the file, " << dim << " expected";
       if (c.dim != dim && c.fingerprint != fingerprint) os << "; ";
       if (c.fingerprint != fingerprint)
-        os << "fingerprint '" << c.fingerprint << "' in the file, '" << fingerprint
-           << "' expected";
+        os << "fingerprint '" << c.fingerprint << "' in the file, '" << fingerprint << "' expected";
       os << "); refusing to resume: remove the file or use the study it was made for";
       throw InputError(path, os.str());
     }
-    if (c.discarded_truncated_line &&
-        ::truncate(path.c_str(), static_cast<off_t>(complete)) != 0)
+    if (c.discarded_truncated_line && ::truncate(path.c_str(), static_cast<off_t>(complete)) != 0)
       throw std::runtime_error(systemError(path + ": cannot cut off the truncated last line"));
     resumed_ = std::move(c.entries);
     discarded_ = c.discarded_truncated_line;
@@ -213,7 +217,8 @@ DesignJournal::DesignJournal(const std::string& path, int dim, const std::string
     try {
       writeAll(fd_, headerLine(version_, dim, fingerprint), path);
       if (durable_ && ::fsync(fd_) != 0) {
-        if (StorageError::isStorageFull(errno)) throw StorageError(path, errno);  // delayed allocation
+        if (StorageError::isStorageFull(errno))
+          throw StorageError(path, errno);  // delayed allocation
         throw std::runtime_error(systemError(path + ": fsync"));
       }
     } catch (...) {
@@ -268,14 +273,14 @@ void writeDesignTableCsv(const std::string& path, const std::vector<std::string>
   header.push_back(sse_name);
   for (const auto& [name, values] : extra) {
     if (values.size() != sse.size())
-      throw InputError(path, "column '" + name + "' has " + std::to_string(values.size()) + " values for " +
-                                 std::to_string(design.rows()) + " design points");
+      throw InputError(path, "column '" + name + "' has " + std::to_string(values.size()) +
+                                 " values for " + std::to_string(design.rows()) + " design points");
     header.push_back(name);
   }
   for (const auto& n : header)
     if (n.empty() || n.find_first_of(",\"\r\n") != std::string::npos)
-      throw InputError(path, "column name '" + n +
-                                 "' must be non-empty without commas, quotes or line breaks");
+      throw InputError(
+          path, "column name '" + n + "' must be non-empty without commas, quotes or line breaks");
 
   std::string text;
   for (std::size_t j = 0; j < header.size(); ++j) text += (j ? "," : "") + header[j];

@@ -48,7 +48,8 @@ struct JournalContents {
   std::string fingerprint;
   std::vector<JournalEntry> entries;      ///< complete lines, in file order
   bool discarded_truncated_line = false;  ///< a last line without '\n' was dropped
-  int corrupt_line = 0;  ///< > 0: the first line (1 = the header) that fails its checksum; reading stopped there
+  int corrupt_line =
+      0;  ///< > 0: the first line (1 = the header) that fails its checksum; reading stopped there
 };
 
 /// Reads a journal. Throws InputError (naming the file and line) when the file cannot be read,
@@ -102,6 +103,7 @@ using DesignColumn = std::pair<std::string, std::vector<double>>;
 /// extra column have N entries.
 void writeDesignTableCsv(const std::string& path, const std::vector<std::string>& names,
                          const Eigen::MatrixXd& design, const std::vector<double>& sse,
-                         const std::string& sse_name = "sse", const std::vector<DesignColumn>& extra = {});
+                         const std::string& sse_name = "sse",
+                         const std::vector<DesignColumn>& extra = {});
 
 }  // namespace dtwin::calib

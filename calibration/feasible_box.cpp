@@ -10,15 +10,14 @@
 #include "common/validate.hpp"
 
 namespace dtwin::calib {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 void FeasibleBoxOptions::validate() const {
   const OptionCheck check("feasible_box");
   check.require(initial_step > 0.0 && initial_step <= 1.0, "initial_step",
                 "must lie in (0, 1] (scaled units), got " + formatNumber(initial_step));
-  check.require(growth > 1.0 && std::isfinite(growth), "growth", "must be a finite number > 1, got " + formatNumber(growth));
+  check.require(growth > 1.0 && std::isfinite(growth), "growth",
+                "must be a finite number > 1, got " + formatNumber(growth));
   check.open01("tolerance", tolerance);
   check.atLeast("max_evaluations", max_evaluations, 1);
 }
@@ -33,8 +32,10 @@ void BoxProblem::validate() const {
                                 " values, the bounds have " + std::to_string(lower.size()));
   for (std::size_t j = 0; j < theta_hat.size(); ++j)
     if (!(theta_hat[j] >= lower[j] && theta_hat[j] <= upper[j]))
-      throw InputError(where, "theta_hat[" + std::to_string(j) + "] = " + formatNumber(theta_hat[j], 17) +
-                                  " is outside [" + formatNumber(lower[j], 17) + ", " + formatNumber(upper[j], 17) + "]");
+      throw InputError(where, "theta_hat[" + std::to_string(j) +
+                                  "] = " + formatNumber(theta_hat[j], 17) + " is outside [" +
+                                  formatNumber(lower[j], 17) + ", " + formatNumber(upper[j], 17) +
+                                  "]");
   if (n_data < 1)
     throw InputError(where, "number of data points n must be >= 1, got " + std::to_string(n_data));
   if (!std::isfinite(sse_min) || sse_min < 0.0)
@@ -93,7 +94,9 @@ RaySweep sweepRay(const std::function<double(double t)>& sse_at, double t_max, d
   }
   // 2. Bisection of [inside, outside].
   r.bracketed = true;
-  auto tol = [&] { return relative_tolerance > 0.0 ? relative_tolerance * outside : options.tolerance; };
+  auto tol = [&] {
+    return relative_tolerance > 0.0 ? relative_tolerance * outside : options.tolerance;
+  };
   while (outside - inside > tol() && r.evaluations < options.max_evaluations) {
     const double mid = 0.5 * (inside + outside);
     const double f = eval(mid);
@@ -183,7 +186,8 @@ FeasibleBox calcFeasibleBox(const SseFunction& sse, const BoxProblem& problem,
   });
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
-  for (int i = 0; i < count; ++i) DTWIN_CHECK(done[static_cast<std::size_t>(i)], "parallel_for did not run every sweep");
+  for (int i = 0; i < count; ++i)
+    DTWIN_CHECK(done[static_cast<std::size_t>(i)], "parallel_for did not run every sweep");
   return collectFeasibleBox(problem, std::move(sweeps));
 }
 

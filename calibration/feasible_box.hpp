@@ -47,9 +47,9 @@ struct FeasibleBoxOptions {
 
 /// The problem every sweep shares.
 struct BoxProblem {
-  std::vector<double> theta_hat;  ///< θ̂ (physical units), inside the bounds
-  double sse_min = 0.0;           ///< SSE(θ̂) > 0
-  int n_data = 0;                 ///< n, number of scalar residuals in the SSE, >= 1
+  std::vector<double> theta_hat;     ///< θ̂ (physical units), inside the bounds
+  double sse_min = 0.0;              ///< SSE(θ̂) > 0
+  int n_data = 0;                    ///< n, number of scalar residuals in the SSE, >= 1
   std::vector<double> lower, upper;  ///< bounds (physical units)
   /// T = SSE_min (1 + 2 ln(100) / n).
   double threshold() const;
@@ -59,23 +59,23 @@ struct BoxProblem {
 
 /// Result of one one-sided sweep.
 struct SweepResult {
-  int parameter = 0;        ///< j
-  int direction = 0;        ///< −1 (towards the lower bound) or +1 (towards the upper bound)
-  double edge = 0.0;        ///< edge in physical units
-  double edge_sse = 0.0;    ///< SSE at `edge`: > T (or inf) when bracketed, <= T when clipped
-                            ///< (SSE_min, not re-evaluated, when θ̂ itself is on the bound)
-  bool clipped = false;     ///< the contour reaches the bound: edge = bound
-  bool bracketed = false;   ///< the crossing was bracketed (false with clipped = true is normal)
+  int parameter = 0;       ///< j
+  int direction = 0;       ///< −1 (towards the lower bound) or +1 (towards the upper bound)
+  double edge = 0.0;       ///< edge in physical units
+  double edge_sse = 0.0;   ///< SSE at `edge`: > T (or inf) when bracketed, <= T when clipped
+                           ///< (SSE_min, not re-evaluated, when θ̂ itself is on the bound)
+  bool clipped = false;    ///< the contour reaches the bound: edge = bound
+  bool bracketed = false;  ///< the crossing was bracketed (false with clipped = true is normal)
   int evaluations = 0;
-  std::string message;      ///< empty unless something needs the user's attention
+  std::string message;  ///< empty unless something needs the user's attention
 };
 
 struct FeasibleBox {
-  std::vector<double> lower, upper;             ///< box edges, physical units
+  std::vector<double> lower, upper;                ///< box edges, physical units
   std::vector<bool> lower_clipped, upper_clipped;  ///< edge sits on the calibration bound
-  double threshold = 0.0;                       ///< T
-  int evaluations = 0;                          ///< total over all sweeps
-  std::vector<SweepResult> sweeps;              ///< 2d sweeps, index 2j (lower), 2j+1 (upper)
+  double threshold = 0.0;                          ///< T
+  int evaluations = 0;                             ///< total over all sweeps
+  std::vector<SweepResult> sweeps;                 ///< 2d sweeps, index 2j (lower), 2j+1 (upper)
   /// False when any sweep ran out of budget before bracketing (see SweepResult::message).
   bool complete() const;
   std::string briefReport() const;
@@ -84,13 +84,13 @@ struct FeasibleBox {
 /// One sweep along a ray from θ̂: t >= 0 is the scaled distance from θ̂, t_max where the ray leaves
 /// the calibration bounds. The stepping and bisection of the procedure above, on any ray.
 struct RaySweep {
-  double t_edge = 0.0;     ///< the edge: outer end of the final bracket, or t_max when clipped
-  double edge_sse = 0.0;   ///< SSE at t_edge (as SweepResult::edge_sse)
-  bool clipped = false;    ///< the contour reaches t_max
+  double t_edge = 0.0;    ///< the edge: outer end of the final bracket, or t_max when clipped
+  double edge_sse = 0.0;  ///< SSE at t_edge (as SweepResult::edge_sse)
+  bool clipped = false;   ///< the contour reaches t_max
   bool bracketed = false;
-  bool budget_out = false; ///< max_evaluations ran out before bracketing (t_edge: farthest inside)
-  bool loose = false;      ///< bracketed, but bisection stopped by the budget above the tolerance
-  double bracket = 0.0;    ///< final bracket width (scaled)
+  bool budget_out = false;  ///< max_evaluations ran out before bracketing (t_edge: farthest inside)
+  bool loose = false;       ///< bracketed, but bisection stopped by the budget above the tolerance
+  double bracket = 0.0;     ///< final bracket width (scaled)
   int evaluations = 0;
 };
 

@@ -20,10 +20,10 @@
 namespace dtwin::calib {
 
 // posterior.csv, its reader and writer: io/posterior_file.hpp.
-using dtwin::PosteriorSample;
 using dtwin::checkPosteriorChecksum;
 using dtwin::parsePosteriorCsv;
 using dtwin::posteriorCsv;
+using dtwin::PosteriorSample;
 using dtwin::readPosteriorCsv;
 
 /// A calibration folder read back.

@@ -22,7 +22,8 @@ double sampleGamma(RandomStream& rng, double shape) {
   if (shape < 1.0) {
     const double g = sampleGamma(rng, shape + 1.0);
     double u;
-    do u = rng.uniform(); while (u <= 0.0);
+    do u = rng.uniform();
+    while (u <= 0.0);
     return g * std::pow(u, 1.0 / shape);
   }
   const double d = shape - 1.0 / 3.0;
@@ -46,12 +47,14 @@ void GibbsOptions::validate() const {
   check.atLeast("iterations", iterations, 1);
   check.atLeast("burn_in", burn_in, 0);
   check.require(burn_in < iterations, "burn_in",
-                "must be below iterations (" + std::to_string(iterations) + "), got " + std::to_string(burn_in));
+                "must be below iterations (" + std::to_string(iterations) + "), got " +
+                    std::to_string(burn_in));
   check.nonNegative("a", a);
   check.nonNegative("b", b);
   if (!std::isnan(initial_tau))
     check.require(initial_tau > 0.0 && std::isfinite(initial_tau), "initial_tau",
-                  "must be a finite number > 0 (or NaN for the default n/SSE_min), got " + formatNumber(initial_tau, 17));
+                  "must be a finite number > 0 (or NaN for the default n/SSE_min), got " +
+                      formatNumber(initial_tau, 17));
 }
 
 namespace {
@@ -59,8 +62,8 @@ namespace {
 /// The finite design points sorted by SSE (ties by index: deterministic), and what every
 /// iteration needs of them.
 struct SortedDesign {
-  std::vector<int> order;          ///< design index of each finite point, by SSE
-  int failed = 0;                  ///< points with non-finite SSE (weight 0)
+  std::vector<int> order;  ///< design index of each finite point, by SSE
+  int failed = 0;          ///< points with non-finite SSE (weight 0)
   double sse_min = 0.0;
   std::vector<double> half_delta;  ///< (SSE_m − SSE_min) / 2, sorted order
   std::vector<double> rate;        ///< b + SSE_m / 2: the rate of τ | k
@@ -70,8 +73,8 @@ struct SortedDesign {
 
 /// Sorts the finite points; throws InputError (naming `where`) for a negative or −inf SSE, no
 /// finite SSE at all, or b = 0 with SSE_min = 0.
-SortedDesign sortDesign(const std::vector<double>& sse, const GibbsOptions& options, const std::vector<double>& log_weight,
-                        const std::string& where) {
+SortedDesign sortDesign(const std::vector<double>& sse, const GibbsOptions& options,
+                        const std::vector<double>& log_weight, const std::string& where) {
   SortedDesign s;
   s.order.reserve(sse.size());
   for (std::size_t k = 0; k < sse.size(); ++k) {
@@ -94,9 +97,10 @@ SortedDesign sortDesign(const std::vector<double>& sse, const GibbsOptions& opti
   });
   s.sse_min = sse[static_cast<std::size_t>(s.order.front())];
   if (options.b == 0.0 && s.sse_min == 0.0)
-    throw InputError(where, "b = 0 needs SSE_k > 0 at every design point (the conditional rate "
-                            "b + SSE_k/2 would be 0), but design point " +
-                                std::to_string(s.order.front()) + " has SSE 0");
+    throw InputError(where,
+                     "b = 0 needs SSE_k > 0 at every design point (the conditional rate "
+                     "b + SSE_k/2 would be 0), but design point " +
+                         std::to_string(s.order.front()) + " has SSE 0");
 
   const std::size_t m_all = s.order.size();
   s.half_delta.resize(m_all);
@@ -122,7 +126,8 @@ SortedDesign sortDesign(const std::vector<double>& sse, const GibbsOptions& opti
 /// One draw of k | τ: the cumulative weights over the sorted points (in `cum`, scratch of one
 /// slot per point), cut where exp() underflows to 0, searched for one uniform times their total.
 /// Returns the position in s.order.
-std::size_t drawPoint(const SortedDesign& s, double tau, RandomStream& rng, std::vector<double>& cum) {
+std::size_t drawPoint(const SortedDesign& s, double tau, RandomStream& rng,
+                      std::vector<double>& cum) {
   const std::size_t m_all = s.order.size();
   double total = 0.0;
   std::size_t m = 0;
@@ -160,8 +165,8 @@ std::size_t drawPoint(const SortedDesign& s, double tau, RandomStream& rng, std:
 
 }  // namespace
 
-GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data,
-                           const GibbsOptions& options, const std::vector<double>& log_weight) {
+GibbsChains runGriddyGibbs(const std::vector<double>& sse, int n_data, const GibbsOptions& options,
+                           const std::vector<double>& log_weight) {
   const std::string where = "griddy gibbs";
   options.validate();
   if (n_data < 1)

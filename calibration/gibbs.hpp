@@ -55,10 +55,13 @@ namespace dtwin::calib {
 double sampleGamma(RandomStream& rng, double shape);
 
 struct GibbsOptions {
-  int iterations = kDefaultGibbsIterations;  ///< total iterations S (paper: 50000), including burn-in
-  int burn_in = kDefaultGibbsBurnIn;         ///< discarded from the start (paper: 15000); 0 <= burn_in < iterations
+  int iterations =
+      kDefaultGibbsIterations;  ///< total iterations S (paper: 50000), including burn-in
+  int burn_in =
+      kDefaultGibbsBurnIn;  ///< discarded from the start (paper: 15000); 0 <= burn_in < iterations
   double a = kDefaultTauPrior;  ///< prior shape of τ, finite, >= 0
-  double b = kDefaultTauPrior;  ///< prior rate of τ, finite, >= 0 (b = 0 needs SSE_k > 0 for every point)
+  double b =
+      kDefaultTauPrior;  ///< prior rate of τ, finite, >= 0 (b = 0 needs SSE_k > 0 for every point)
   std::uint64_t seed = 1;
   std::uint64_t chain = 0;  ///< stream index: independent chains from one seed
   /// τ at the start. NaN (default) means n / SSE_min, or (a + n/2)/b when SSE_min = 0.
@@ -68,14 +71,15 @@ struct GibbsOptions {
 };
 
 struct GibbsChains {
-  std::vector<int> index;   ///< design-point index k_t (0-based into the SSE vector), t after burn-in
-  std::vector<double> tau;  ///< τ_t, same length
-  int design_points = 0;    ///< N
-  int failed_points = 0;    ///< design points with non-finite SSE (weight 0)
-  int n_data = 0;           ///< n
-  double sse_min = 0.0;     ///< smallest finite SSE_k
-  double initial_tau = 0.0; ///< τ the chain started from (resolves the NaN default)
-  GibbsOptions options;     ///< as run (records the seed)
+  std::vector<int>
+      index;  ///< design-point index k_t (0-based into the SSE vector), t after burn-in
+  std::vector<double> tau;   ///< τ_t, same length
+  int design_points = 0;     ///< N
+  int failed_points = 0;     ///< design points with non-finite SSE (weight 0)
+  int n_data = 0;            ///< n
+  double sse_min = 0.0;      ///< smallest finite SSE_k
+  double initial_tau = 0.0;  ///< τ the chain started from (resolves the NaN default)
+  GibbsOptions options;      ///< as run (records the seed)
 };
 
 /// Runs the two-block Gibbs sampler. `sse[k]` is SSE at design point k (+inf = failed);

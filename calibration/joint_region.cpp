@@ -22,8 +22,10 @@ double rayExit(const Eigen::VectorXd& z0, const Eigen::VectorXd& a, int s) {
   double t = std::numeric_limits<double>::infinity();
   for (Eigen::Index j = 0; j < z0.size(); ++j) {
     const double v = s * a(j);
-    if (v > 1e-15) t = std::min(t, (1.0 - z0(j)) / v);
-    else if (v < -1e-15) t = std::min(t, -z0(j) / v);
+    if (v > 1e-15)
+      t = std::min(t, (1.0 - z0(j)) / v);
+    else if (v < -1e-15)
+      t = std::min(t, -z0(j) / v);
   }
   return std::max(t, 0.0);
 }
@@ -44,9 +46,11 @@ void JointRegionOptions::validate() const {
   const OptionCheck check("joint_region");
   check.require(jacobian_step > 0.0 && jacobian_step <= 0.5, "jacobian_step",
                 "must lie in (0, 0.5] (scaled units), got " + formatNumber(jacobian_step));
-  check.require(margin >= 1.0 && std::isfinite(margin), "margin", "must be a finite number >= 1, got " + formatNumber(margin));
+  check.require(margin >= 1.0 && std::isfinite(margin), "margin",
+                "must be a finite number >= 1, got " + formatNumber(margin));
   check.open01("relative_tolerance", relative_tolerance);
-  check.require(growth > 1.0 && std::isfinite(growth), "growth", "must be a finite number > 1, got " + formatNumber(growth));
+  check.require(growth > 1.0 && std::isfinite(growth), "growth",
+                "must be a finite number > 1, got " + formatNumber(growth));
   check.atLeast("max_evaluations", max_evaluations, 2);
   check.require(ridge_ratio >= 1.0 && std::isfinite(ridge_ratio), "ridge_ratio",
                 "must be a finite number >= 1, got " + formatNumber(ridge_ratio));
@@ -54,8 +58,10 @@ void JointRegionOptions::validate() const {
 }
 
 nlohmann::json JointRegionOptions::toJson() const {
-  return {{"rule", "principal axes of the Gauss-Newton Hessian at the optimum; extents = margin * the crossings of the 1 % contour by "
-                   "straight sweeps and, along the weak axes, by ridge traces (profiles)"},
+  return {{"rule",
+           "principal axes of the Gauss-Newton Hessian at the optimum; extents = margin * the "
+           "crossings of the 1 % contour by "
+           "straight sweeps and, along the weak axes, by ridge traces (profiles)"},
           {"jacobian_step_scaled", jacobian_step},
           {"margin", margin},
           {"relative_tolerance", relative_tolerance},
@@ -65,7 +71,8 @@ nlohmann::json JointRegionOptions::toJson() const {
           {"ridge_steps", ridge_steps}};
 }
 
-std::vector<std::vector<double>> jacobianStencil(const BoxProblem& problem, const JointRegionOptions& options) {
+std::vector<std::vector<double>> jacobianStencil(const BoxProblem& problem,
+                                                 const JointRegionOptions& options) {
   problem.validate();
   options.validate();
   const std::size_t d = problem.theta_hat.size();
@@ -74,18 +81,21 @@ std::vector<std::vector<double>> jacobianStencil(const BoxProblem& problem, cons
     for (int s : {-1, +1}) {
       auto th = problem.theta_hat;
       const double range = problem.upper[j] - problem.lower[j];
-      th[j] = std::clamp(th[j] + s * options.jacobian_step * range, problem.lower[j], problem.upper[j]);
+      th[j] =
+          std::clamp(th[j] + s * options.jacobian_step * range, problem.lower[j], problem.upper[j]);
       pts.push_back(th);
     }
   return pts;
 }
 
-JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std::vector<double>>& residuals,
+JointRegionPlan planJointRegion(const BoxProblem& problem,
+                                const std::vector<std::vector<double>>& residuals,
                                 const JointRegionOptions& options) {
   problem.validate();
   options.validate();
   const int d = static_cast<int>(problem.theta_hat.size());
-  DTWIN_CHECK(static_cast<int>(residuals.size()) == 2 * d, "planJointRegion needs 2d stencil residuals");
+  DTWIN_CHECK(static_cast<int>(residuals.size()) == 2 * d,
+              "planJointRegion needs 2d stencil residuals");
   JointRegionPlan plan;
   plan.problem = problem;
   plan.evaluations = 2 * d;
@@ -98,15 +108,19 @@ JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std
     const auto& rp = residuals[2 * static_cast<std::size_t>(j) + 1];
     const auto k = static_cast<std::size_t>(j);
     const double range = problem.upper[k] - problem.lower[k];
-    const double dz = (stencil[2 * static_cast<std::size_t>(j) + 1][k] - stencil[2 * static_cast<std::size_t>(j)][k]) / range;
+    const double dz = (stencil[2 * static_cast<std::size_t>(j) + 1][k] -
+                       stencil[2 * static_cast<std::size_t>(j)][k]) /
+                      range;
     bool ok = rm.size() == n && rp.size() == n && dz > 0.0;
     for (std::size_t i = 0; ok && i < n; ++i) ok = std::isfinite(rm[i]) && std::isfinite(rp[i]);
     if (!ok) {
-      plan.messages.push_back("parameter " + std::to_string(j) +
-                              ": a simulation of the Jacobian stencil failed; the region spans this parameter's range");
+      plan.messages.push_back(
+          "parameter " + std::to_string(j) +
+          ": a simulation of the Jacobian stencil failed; the region spans this parameter's range");
       continue;
     }
-    for (std::size_t i = 0; i < n; ++i) plan.jacobian(static_cast<Eigen::Index>(i), j) = (rp[i] - rm[i]) / dz;
+    for (std::size_t i = 0; i < n; ++i)
+      plan.jacobian(static_cast<Eigen::Index>(i), j) = (rp[i] - rm[i]) / dz;
   }
   const Eigen::MatrixXd H = plan.jacobian.transpose() * plan.jacobian;
   Eigen::VectorXd zhat(d);
@@ -130,26 +144,31 @@ JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std
   for (int j = 0; j < d; ++j) (onBound(j) ? active : free).push_back(j);
   if (active.empty()) {
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
-    DTWIN_CHECK(es.info() == Eigen::Success, "eigen-decomposition of the Gauss-Newton Hessian failed");
+    DTWIN_CHECK(es.info() == Eigen::Success,
+                "eigen-decomposition of the Gauss-Newton Hessian failed");
     plan.eigenvalues = es.eigenvalues();
     plan.axes = es.eigenvectors();
   } else {
     const auto nf = static_cast<Eigen::Index>(free.size());
     Eigen::MatrixXd Hff(nf, nf);
     for (Eigen::Index a = 0; a < nf; ++a)
-      for (Eigen::Index b = 0; b < nf; ++b) Hff(a, b) = H(free[static_cast<std::size_t>(a)], free[static_cast<std::size_t>(b)]);
+      for (Eigen::Index b = 0; b < nf; ++b)
+        Hff(a, b) = H(free[static_cast<std::size_t>(a)], free[static_cast<std::size_t>(b)]);
     std::vector<std::pair<double, Eigen::VectorXd>> pairs;
     Eigen::MatrixXd pinv = Eigen::MatrixXd::Zero(nf, nf);
     if (nf > 0) {
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Hff);
-      DTWIN_CHECK(es.info() == Eigen::Success, "eigen-decomposition of the Gauss-Newton Hessian failed");
+      DTWIN_CHECK(es.info() == Eigen::Success,
+                  "eigen-decomposition of the Gauss-Newton Hessian failed");
       const double top = std::max(es.eigenvalues().maxCoeff(), 0.0);
       for (Eigen::Index c = 0; c < nf; ++c) {
         Eigen::VectorXd v = Eigen::VectorXd::Zero(d);
-        for (Eigen::Index a = 0; a < nf; ++a) v(free[static_cast<std::size_t>(a)]) = es.eigenvectors()(a, c);
+        for (Eigen::Index a = 0; a < nf; ++a)
+          v(free[static_cast<std::size_t>(a)]) = es.eigenvectors()(a, c);
         pairs.emplace_back(es.eigenvalues()(c), v);
         const double lam = es.eigenvalues()(c);
-        if (lam > 1e-12 * top && lam > 0.0) pinv += es.eigenvectors().col(c) * es.eigenvectors().col(c).transpose() / lam;
+        if (lam > 1e-12 * top && lam > 0.0)
+          pinv += es.eigenvectors().col(c) * es.eigenvectors().col(c).transpose() / lam;
       }
     }
     for (int j : active) {
@@ -158,10 +177,12 @@ JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std
       Eigen::VectorXd e = Eigen::VectorXd::Zero(d);
       e(j) = 1.0;
       pairs.emplace_back(std::max(H(j, j) - (nf > 0 ? hf.dot(pinv * hf) : 0.0), 0.0), e);
-      plan.messages.push_back("parameter " + std::to_string(j) + " sits on its " + (zhat(j) < 0.5 ? "lower" : "upper") +
+      plan.messages.push_back("parameter " + std::to_string(j) + " sits on its " +
+                              (zhat(j) < 0.5 ? "lower" : "upper") +
                               " bound at the optimum: its axis is its own, one-sided");
     }
-    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::stable_sort(pairs.begin(), pairs.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
     plan.eigenvalues.resize(d);
     plan.axes.resize(d, d);
     for (int c = 0; c < d; ++c) {
@@ -186,7 +207,8 @@ JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std
   return plan;
 }
 
-RaySweep calcRegionSweep(const SseFunction& sse, const JointRegionPlan& plan, int index, const JointRegionOptions& options) {
+RaySweep calcRegionSweep(const SseFunction& sse, const JointRegionPlan& plan, int index,
+                         const JointRegionOptions& options) {
   options.validate();
   const auto& p = plan.problem;
   const int d = static_cast<int>(p.theta_hat.size());
@@ -223,7 +245,8 @@ std::vector<int> ridgeAxes(const JointRegionPlan& plan, const JointRegionOptions
   if (options.ridge_steps == 0 || plan.eigenvalues.size() == 0) return axes;
   const double lam_min = std::max(plan.eigenvalues(0), 0.0);
   for (Eigen::Index i = 0; i < plan.eigenvalues.size(); ++i)
-    if (i == 0 || plan.eigenvalues(i) <= options.ridge_ratio * lam_min) axes.push_back(static_cast<int>(i));
+    if (i == 0 || plan.eigenvalues(i) <= options.ridge_ratio * lam_min)
+      axes.push_back(static_cast<int>(i));
   return axes;
 }
 
@@ -255,7 +278,9 @@ struct RiseLine {
       : sse_min(sse_min_), threshold(threshold_), f_before(sse_min_), f_last(sse_min_) {}
   double g(double f) const { return std::sqrt(std::max(f - sse_min, 0.0)); }
   /// dg/dt through the last two floor points (0 before there are two).
-  double slope() const { return t_last > t_before ? (g(f_last) - g(f_before)) / (t_last - t_before) : 0.0; }
+  double slope() const {
+    return t_last > t_before ? (g(f_last) - g(f_before)) / (t_last - t_before) : 0.0;
+  }
   void push(double t, double f) {
     t_before = t_last;
     f_before = f_last;
@@ -266,10 +291,14 @@ struct RiseLine {
   /// far above the last point's as the line predicts. A point far above it may have left a
   /// bending ridge.
   bool continues(double f_out, double t_out) const {
-    return t_last > t_before && g(f_out) <= g(f_last) + 2.0 * std::max(slope(), 0.0) * (t_out - t_last);
+    return t_last > t_before &&
+           g(f_out) <= g(f_last) + 2.0 * std::max(slope(), 0.0) * (t_out - t_last);
   }
   /// How far ahead of the last point the line reaches the threshold (+inf when it does not rise).
-  double reach() const { return slope() > 0 ? (g(threshold) - g(f_last)) / slope() : std::numeric_limits<double>::infinity(); }
+  double reach() const {
+    return slope() > 0 ? (g(threshold) - g(f_last)) / slope()
+                       : std::numeric_limits<double>::infinity();
+  }
 };
 
 /// σ² B (JᵀJ)⁻¹ Bᵀ (the posterior's cross-section at a floor point), or an empty matrix when J
@@ -317,20 +346,23 @@ RidgeFrame ridgeFrame(const JointRegionPlan& plan, const std::vector<RaySweep>& 
   for (int j = 0, c = 0; j < d; ++j) {
     if (j == i) continue;
     f.B.col(c) = plan.axes.col(j);
-    f.h(c) = std::max(0.05 * (crossingOf(plan, sweeps, j, -1) + crossingOf(plan, sweeps, j, +1)), 1e-9);
+    f.h(c) =
+        std::max(0.05 * (crossingOf(plan, sweeps, j, -1) + crossingOf(plan, sweeps, j, +1)), 1e-9);
     ++c;
   }
   return f;
 }
 }  // namespace
 
-RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
-                          int index, const JointRegionOptions& options) {
+RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPlan& plan,
+                          const std::vector<RaySweep>& sweeps, int index,
+                          const JointRegionOptions& options) {
   options.validate();
   const auto& p = plan.problem;
   const int d = static_cast<int>(p.theta_hat.size());
   const std::vector<int> ridge = ridgeAxes(plan, options);
-  DTWIN_CHECK(index >= 0 && index < 2 * static_cast<int>(ridge.size()), "ridge trace index out of range");
+  DTWIN_CHECK(index >= 0 && index < 2 * static_cast<int>(ridge.size()),
+              "ridge trace index out of range");
   RidgeTrace tr;
   tr.axis = ridge[static_cast<std::size_t>(index / 2)];
   tr.direction = index % 2 == 0 ? -1 : +1;
@@ -350,7 +382,9 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
     r = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
     return r.allFinite();
   };
-  auto point = [&](double t, const Eigen::VectorXd& u) -> Eigen::VectorXd { return z0 + (s * t) * a + B * u; };
+  auto point = [&](double t, const Eigen::VectorXd& u) -> Eigen::VectorXd {
+    return z0 + (s * t) * a + B * u;
+  };
   if (d < 2) {
     tr.message = "one parameter: nothing to re-optimise";
     return tr;
@@ -361,7 +395,9 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
   Eigen::VectorXd u = Eigen::VectorXd::Zero(d - 1), u_prev = u;
   // The floor at t: Levenberg–Marquardt on u from `un` (at most 4 iterations). False when the
   // simulation at the start point fails.
-  const ScaledResiduals scaled = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) { return res(z, r); };
+  const ScaledResiduals scaled = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) {
+    return res(z, r);
+  };
   // The Jacobian is carried along the trace, seeded from the plan's (subspace_lm.hpp); a floor
   // point that lands outside the contour is re-minimised with fresh differences before it counts.
   SubspaceJacobian jac;
@@ -370,12 +406,15 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
   lm.forward = options.forward_differences;
   auto floorAt = [&](double tt, Eigen::VectorXd& un, Eigen::VectorXd& r, double& f) {
     const int computed = jac.computed;
-    if (!minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, un, r, f, &jac, lm)) return false;
+    if (!minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, un, r, f, &jac, lm))
+      return false;
     if (f > T && jac.computed == computed) {
       jac.clear();
       Eigen::VectorXd uf = un, rf;
       double ff = 0.0;
-      if (minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, uf, rf, ff, &jac, lm) && ff < f) {
+      if (minimiseOnSubspace(scaled, z0 + (s * tt) * a, B, h, 3, 0.05 * sigma2, uf, rf, ff, &jac,
+                             lm) &&
+          ff < f) {
         un = uf;
         r = rf;
         f = ff;
@@ -396,7 +435,8 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
     if (!floorAt(t_next, un, r, f)) {
       un = u;
       if (!floorAt(t_next, un, r, f)) {
-        tr.message = "a simulation on the ridge failed at t = " + formatNumber(t_next) + "; the trace stops there";
+        tr.message = "a simulation on the ridge failed at t = " + formatNumber(t_next) +
+                     "; the trace stops there";
         return tr;
       }
     }
@@ -419,21 +459,30 @@ RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPl
     if (f > T) {  // the crossing, interpolated between the last two floor points
       tr.closed = true;
       const double g_in = rise.g(rise.f_before), g_out = rise.g(f);
-      tr.crossing = g_out > g_in ? rise.t_before + (rise.g(T) - g_in) / (g_out - g_in) * (t - rise.t_before) : t;
+      tr.crossing = g_out > g_in
+                        ? rise.t_before + (rise.g(T) - g_in) / (g_out - g_in) * (t - rise.t_before)
+                        : t;
       return tr;
     }
     const double risen = f - rise.f_before;
-    if (risen < 0.5 * sigma2) step *= 1.5;
-    else if (risen > 3.0 * sigma2) step *= 0.6;
-    // Near the end, aim just past the crossing the rise predicts, so that the next point closes the trace.
+    if (risen < 0.5 * sigma2)
+      step *= 1.5;
+    else if (risen > 3.0 * sigma2)
+      step *= 0.6;
+    // Near the end, aim just past the crossing the rise predicts, so that the next point closes the
+    // trace.
     if (rise.reach() < 1.5 * step) step = std::max(1.15 * rise.reach(), min_step);
   }
-  if (t > reach) tr.clipped = true;
-  else tr.message = "the ridge trace used its " + std::to_string(options.ridge_steps) + " steps inside the contour";
+  if (t > reach)
+    tr.clipped = true;
+  else
+    tr.message = "the ridge trace used its " + std::to_string(options.ridge_steps) +
+                 " steps inside the contour";
   return tr;
 }
 
-Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps, const std::vector<RidgeTrace>& traces,
+Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
+                          const std::vector<RidgeTrace>& traces,
                           const JointRegionOptions& options) {
   const auto& p = plan.problem;
   const int d = static_cast<int>(p.theta_hat.size());
@@ -465,7 +514,8 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
       r.evaluations += w.evaluations;
       if (w.budget_out)
         r.messages.push_back("axis " + std::to_string(i) + (s > 0 ? " (+)" : " (-)") +
-                             ": the sweep did not bracket the 1 % contour within its budget; the region takes the bounds' reach");
+                             ": the sweep did not bracket the 1 % contour within its budget; the "
+                             "region takes the bounds' reach");
       crossing(i, s > 0 ? 1 : 0) = crossingOf(plan, sweeps, i, s);
     }
   // Ridge traces: the crossing along a traced axis is where its profile crossed T.
@@ -473,10 +523,13 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
   std::vector<double> floor_sse;
   for (const auto& tr : traces) {
     r.evaluations += tr.evaluations;
-    if (!tr.message.empty()) r.messages.push_back("ridge along axis " + std::to_string(tr.axis) + (tr.direction > 0 ? " (+)" : " (-)") + ": " + tr.message);
+    if (!tr.message.empty())
+      r.messages.push_back("ridge along axis " + std::to_string(tr.axis) +
+                           (tr.direction > 0 ? " (+)" : " (-)") + ": " + tr.message);
     const int col = tr.direction > 0 ? 1 : 0;
     const double reach = tr.direction > 0 ? plan.reach_upper(tr.axis) : plan.reach_lower(tr.axis);
-    const double along = tr.closed ? tr.crossing : (tr.clipped ? reach : (tr.t.empty() ? 0.0 : tr.t.back()));
+    const double along =
+        tr.closed ? tr.crossing : (tr.clipped ? reach : (tr.t.empty() ? 0.0 : tr.t.back()));
     crossing(tr.axis, col) = std::max(crossing(tr.axis, col), along);
     for (std::size_t q = 0; q < tr.z.size(); ++q)
       if (tr.sse[q] <= r.threshold) {
@@ -491,7 +544,9 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
       double e = options.margin * crossing(i, s > 0 ? 1 : 0);
       // Across a ridge: room for the contour's cross-section around every floor point.
       if (!traced[static_cast<std::size_t>(i)])
-        for (const auto& z : floor) e = std::max(e, s * r.axes.col(i).dot(z - r.centre) + options.margin * crossing(i, s > 0 ? 1 : 0));
+        for (const auto& z : floor)
+          e = std::max(
+              e, s * r.axes.col(i).dot(z - r.centre) + options.margin * crossing(i, s > 0 ? 1 : 0));
       e = std::min(e, reach);
       (s > 0 ? r.t_upper(i) : r.t_lower(i)) = s * std::max(e, 1e-12);
     }
@@ -499,13 +554,15 @@ Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySwee
     r.guess_sd(i) = 0.5 * (crossing(i, 0) + crossing(i, 1)) / k;
   }
   r.ridge.resize(static_cast<Eigen::Index>(floor.size()), d);
-  for (std::size_t q = 0; q < floor.size(); ++q) r.ridge.row(static_cast<Eigen::Index>(q)) = floor[q].transpose();
+  for (std::size_t q = 0; q < floor.size(); ++q)
+    r.ridge.row(static_cast<Eigen::Index>(q)) = floor[q].transpose();
   r.ridge_sse = floor_sse;
   return r;
 }
 
-Region calcJointRegion(const SseFunction& sse, const ResidualFunction& residuals, const BoxProblem& problem,
-                       const JointRegionOptions& options, const ParallelFor& parallel_for) {
+Region calcJointRegion(const SseFunction& sse, const ResidualFunction& residuals,
+                       const BoxProblem& problem, const JointRegionOptions& options,
+                       const ParallelFor& parallel_for) {
   const int d = static_cast<int>(problem.theta_hat.size());
   const ParallelFor& run = parallel_for ? parallel_for : ParallelFor(sequentialFor);
   const auto stencil = jacobianStencil(problem, options);
@@ -546,6 +603,5 @@ Region calcJointRegion(const SseFunction& sse, const ResidualFunction& residuals
     if (e) std::rethrow_exception(e);
   return collectJointRegion(plan, sweeps, traces, options);
 }
-
 
 }  // namespace dtwin::calib

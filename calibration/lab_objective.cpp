@@ -10,8 +10,8 @@
 #include <mutex>
 #include <tuple>
 
-#include "common/format.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 
 namespace dtwin::calib {
 
@@ -45,36 +45,45 @@ struct LabObjective::Pool {
 };
 
 LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, const LabData& data,
-                           const std::string& scenario, const std::vector<EffectSetting>& extra_effects)
+                           const std::string& scenario,
+                           const std::vector<EffectSetting>& extra_effects)
     : LabObjective(study, assembly, std::vector<DataSet>{DataSet{"lab data", scenario, data}}, [&] {
         CalibrationSetup s;
         s.extra_effects = extra_effects;
         return s;
       }()) {}
 
-LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, const std::vector<DataSet>& data,
-                           const CalibrationSetup& setup)
+LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly,
+                           const std::vector<DataSet>& data, const CalibrationSetup& setup)
     : pool_(std::make_unique<Pool>()) {
   AssemblySpec spec = assembly;
   spec.freed.insert(spec.freed.end(), setup.freed.begin(), setup.freed.end());
-  for (const auto& swap : setup.options) {  // (subsystem, option); no structured binding: a lambda captures it
+  for (const auto& swap :
+       setup.options) {  // (subsystem, option); no structured binding: a lambda captures it
     const std::string& sub = swap.first;
-    const auto it = std::find_if(spec.options.begin(), spec.options.end(), [&](const auto& o) { return o.first == sub; });
-    if (it == spec.options.end()) throw InputError("calibration setup", "assembly " + assembly.id + " has no subsystem '" + sub + "'");
+    const auto it = std::find_if(spec.options.begin(), spec.options.end(),
+                                 [&](const auto& o) { return o.first == sub; });
+    if (it == spec.options.end())
+      throw InputError("calibration setup",
+                       "assembly " + assembly.id + " has no subsystem '" + sub + "'");
     it->second = swap.second;
   }
   model_ = study.makeModel(spec, setup.extra_effects);
-  if (study.calibrated.empty()) throw InputError(study.path + ": calibrated", "the study names no calibrated parameters");
+  if (study.calibrated.empty())
+    throw InputError(study.path + ": calibrated", "the study names no calibrated parameters");
   if (data.empty()) throw InputError("calibration", "no data sets given");
   const auto channels = Simulator::channels(model_->sensors());
   // A sensor model's parameter distorts the predictions (distort); it is no run parameter.
-  auto sensorModelOf = [&](const std::string& name, const std::string& where) -> std::optional<SensorModelUse> {
+  auto sensorModelOf = [&](const std::string& name,
+                           const std::string& where) -> std::optional<SensorModelUse> {
     for (const auto& m : setup.sensor_models) {
       if (name != m.name + "." + sensorModelParameter(m.kind, where).name) continue;
       SensorModelUse use{m.kind, {}, names_.size()};
       for (const auto& ch : m.channels) {
-        const auto it = std::find_if(channels.begin(), channels.end(), [&](const Channel& k) { return k.name == ch; });
-        if (it == channels.end()) throw InputError(where, "sensor model " + m.name + ": unknown channel '" + ch + "'");
+        const auto it = std::find_if(channels.begin(), channels.end(),
+                                     [&](const Channel& k) { return k.name == ch; });
+        if (it == channels.end())
+          throw InputError(where, "sensor model " + m.name + ": unknown channel '" + ch + "'");
         use.columns.push_back(static_cast<int>(it - channels.begin()));
       }
       return use;
@@ -83,18 +92,21 @@ LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, con
   };
   auto add = [&](const CalibratedParameter& c, const std::string& where) {
     const auto sensor_model = sensorModelOf(c.name, where);
-    if (!sensor_model && model_->lacksOptionParameter(c.name)) {  // e.g. tire.stiffness of an assembly whose road enters at the hub
+    if (!sensor_model &&
+        model_->lacksOptionParameter(
+            c.name)) {  // e.g. tire.stiffness of an assembly whose road enters at the hub
       left_out_.push_back(c.name);
       return;
     }
     const int slot = sensor_model ? -1 : model_->slot(c.name);
     if (!sensor_model && slot < 0)
-      throw InputError(where, "'" + c.name + "' is not a parameter of assembly " + assembly.id + " (" +
-                                  model_->assembly().label() + ")");
+      throw InputError(where, "'" + c.name + "' is not a parameter of assembly " + assembly.id +
+                                  " (" + model_->assembly().label() + ")");
     if (std::find(names_.begin(), names_.end(), c.name) != names_.end())
       throw InputError(where, "'" + c.name + "' is calibrated twice");
     double lower = c.lower, upper = c.upper;
-    if (const auto b = setup.bounds.find(c.name); b != setup.bounds.end()) std::tie(lower, upper) = b->second;
+    if (const auto b = setup.bounds.find(c.name); b != setup.bounds.end())
+      std::tie(lower, upper) = b->second;
     if (!(lower < upper)) throw InputError(where, "'" + c.name + "' needs lower < upper");
     if (sensor_model) sensor_models_.push_back(*sensor_model);
     names_.push_back(c.name);
@@ -106,12 +118,16 @@ LabObjective::LabObjective(const Study& study, const AssemblySpec& assembly, con
   for (const auto& c : study.calibrated) add(c, study.path + ": calibrated");
   for (const auto& c : setup.extra_calibrated) add(c, "calibrated effect parameter");
   for (const auto& m : setup.sensor_models)
-    if (std::none_of(sensor_models_.begin(), sensor_models_.end(), [&](const SensorModelUse& u) { return names_[u.theta_index].rfind(m.name + ".", 0) == 0; }))
-      throw InputError("sensor model " + m.name, "its parameter is not calibrated (add it to extra_calibrated)");
+    if (std::none_of(sensor_models_.begin(), sensor_models_.end(), [&](const SensorModelUse& u) {
+          return names_[u.theta_index].rfind(m.name + ".", 0) == 0;
+        }))
+      throw InputError("sensor model " + m.name,
+                       "its parameter is not calibrated (add it to extra_calibrated)");
   rate_hz_ = study.simulation.output_rate_hz;
   base_values_ = model_->defaultRunValues();
   for (const auto& [c, w] : setup.channel_weights)
-    if (!(std::isfinite(w) && w > 0)) throw InputError("channel weight of " + c, "must be finite and > 0");
+    if (!(std::isfinite(w) && w > 0))
+      throw InputError("channel weight of " + c, "must be finite and > 0");
   for (const auto& ds : data) {
     const std::size_t first = y_.size();
     addDataSet(study, ds, data.size() == 1);
@@ -140,11 +156,13 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
     int col = -1;
     for (std::size_t c = 0; c < channels.size(); ++c)
       if (channels[c].name == r.channel) col = static_cast<int>(c);
-    if (col < 0) throw InputError(prefix + std::to_string(i + 1), "unknown channel '" + r.channel + "'");
+    if (col < 0)
+      throw InputError(prefix + std::to_string(i + 1), "unknown channel '" + r.channel + "'");
     if (!(r.time_s >= 0.0 && r.time_s <= set.scenario.duration_s))
       throw InputError(prefix + std::to_string(i + 1),
-                       "time_s " + formatExact(r.time_s) + " lies outside scenario '" + set.scenario.name + "' (0.." +
-                           formatExact(set.scenario.duration_s) + " s)");
+                       "time_s " + formatExact(r.time_s) + " lies outside scenario '" +
+                           set.scenario.name + "' (0.." + formatExact(set.scenario.duration_s) +
+                           " s)");
     y_.push_back(r.value);
     t_.push_back(r.time_s);
     rep_.push_back(r.repetition);
@@ -170,7 +188,8 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
       w.index = static_cast<std::size_t>(std::llround(t * rate));
     } else {
       w.at_sample = true;
-      w.index = static_cast<std::size_t>(std::lower_bound(extra.begin(), extra.end(), t) - extra.begin());
+      w.index =
+          static_cast<std::size_t>(std::lower_bound(extra.begin(), extra.end(), t) - extra.begin());
     }
   }
   // The sampled run: every record's time a sample time, a grid time as the grid's own r / rate.
@@ -186,13 +205,15 @@ void LabObjective::addDataSet(const Study& study, const DataSet& ds, bool single
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   for (std::size_t i = 0; i < set.count; ++i)
-    sampled_row_.push_back(static_cast<std::size_t>(std::lower_bound(all.begin(), all.end(), sampleTime(i)) - all.begin()));
+    sampled_row_.push_back(static_cast<std::size_t>(
+        std::lower_bound(all.begin(), all.end(), sampleTime(i)) - all.begin()));
   sets_.push_back(std::move(set));
 }
 
 bool LabObjective::sampledPredictions() const {
-  return sensor_models_.empty() && std::none_of(model_->sensors().begin(), model_->sensors().end(),
-                                                [](const SensorSpec& x) { return x.filter.order > 0; });
+  return sensor_models_.empty() &&
+         std::none_of(model_->sensors().begin(), model_->sensors().end(),
+                      [](const SensorSpec& x) { return x.filter.order > 0; });
 }
 
 LabObjective::~LabObjective() = default;
@@ -221,7 +242,8 @@ std::vector<RunResult> LabObjective::runAll(const std::vector<double>& theta, bo
     RunResult r;
     try {
       StepControl steps;
-      if (!plans_.empty()) steps.replay = plans_[static_cast<std::size_t>(&set - sets_.data())].get();
+      if (!plans_.empty())
+        steps.replay = plans_[static_cast<std::size_t>(&set - sets_.data())].get();
       r = sim->run(values, *set.road, sampled ? set.sampled : set.scenario, steps);
     } catch (const InputError& e) {
       // A combination of in-bound values the laws reject (e.g. PAC2002 with an impossible shape):
@@ -265,14 +287,16 @@ bool LabObjective::freezeSteps(const std::vector<double>& theta, double accuracy
     StepControl steps;
     steps.record = plan.get();
     try {
-      ok = sim->run(values, *set.road, sampledPredictions() ? set.sampled : set.scenario, steps).stats.ok;
+      ok = sim->run(values, *set.road, sampledPredictions() ? set.sampled : set.scenario, steps)
+               .stats.ok;
     } catch (const InputError&) {
       ok = false;
     }
     if (!ok) break;
     plans.push_back(std::move(plan));
   }
-  if (!own) pool_->release(std::move(sim), std::nullopt);  // not an evaluation: no wall time recorded
+  if (!own)
+    pool_->release(std::move(sim), std::nullopt);  // not an evaluation: no wall time recorded
   if (!ok) return false;
   plans_ = std::move(plans);
   frozen_at_ = theta;
@@ -301,7 +325,8 @@ std::vector<Trace> LabObjective::traces(const std::vector<double>& theta) const 
 double LabObjective::read(const RunResult& run, std::size_t record, std::size_t column) const {
   const RecordRead& w = where_[record];
   const Trace& tr = w.at_sample ? run.samples : run.trace;
-  DTWIN_CHECK(column < tr.channels().size() && w.index < tr.rows(), "read: record outside its run's output");
+  DTWIN_CHECK(column < tr.channels().size() && w.index < tr.rows(),
+              "read: record outside its run's output");
   return tr.column(column)[w.index];
 }
 
@@ -330,7 +355,8 @@ std::vector<double> LabObjective::predict(const std::vector<double>& theta) cons
   return eta;
 }
 
-void LabObjective::distort(const std::vector<double>& theta, const std::vector<RunResult>& runs, std::vector<double>& eta) const {
+void LabObjective::distort(const std::vector<double>& theta, const std::vector<RunResult>& runs,
+                           std::vector<double>& eta) const {
   std::map<int, SensorDistortion> by_column;
   for (const auto& m : sensor_models_)
     for (int c : m.columns) by_column[c].set(m.kind, theta[m.theta_index]);
@@ -345,7 +371,8 @@ void LabObjective::distort(const std::vector<double>& theta, const std::vector<R
           times.push_back(t_[i]);
         }
       if (records.empty()) continue;
-      const auto v = distortChannel(runs[k].trace.column(static_cast<std::size_t>(column)), rate_hz_, times, d);
+      const auto v = distortChannel(runs[k].trace.column(static_cast<std::size_t>(column)),
+                                    rate_hz_, times, d);
       for (std::size_t j = 0; j < records.size(); ++j) eta[records[j]] = v[j];
     }
   }

@@ -37,5 +37,4 @@ std::vector<int> randomPermutation(RandomStream& rng, int n);
 Eigen::MatrixXd latinHypercube(int n, const std::vector<double>& lower,
                                const std::vector<double>& upper, std::uint64_t seed);
 
-
 }  // namespace dtwin::calib

@@ -15,8 +15,8 @@
 namespace dtwin::calib {
 namespace {
 
-const char* const kAllowedAlgorithms[] = {"LN_BOBYQA",   "LN_SBPLX",        "LN_NELDERMEAD",
-                                          "LN_COBYLA",   "LN_NEWUOA_BOUND", "LN_PRAXIS"};
+const char* const kAllowedAlgorithms[] = {"LN_BOBYQA", "LN_SBPLX",        "LN_NELDERMEAD",
+                                          "LN_COBYLA", "LN_NEWUOA_BOUND", "LN_PRAXIS"};
 
 std::string allowedList() {
   std::string s;
@@ -79,7 +79,8 @@ double objective(unsigned n, const double* z, double* grad, void* data) {
 
 void OptimizerOptions::validate() const {
   const OptionCheck check("optimizer");
-  check.require(std::find(std::begin(kAllowedAlgorithms), std::end(kAllowedAlgorithms), algorithm) != std::end(kAllowedAlgorithms),
+  check.require(std::find(std::begin(kAllowedAlgorithms), std::end(kAllowedAlgorithms),
+                          algorithm) != std::end(kAllowedAlgorithms),
                 "algorithm", "must be one of " + allowedList() + ", got '" + algorithm + "'");
   check.nonNegative("xtol_rel", xtol_rel);
   check.nonNegative("xtol_abs", xtol_abs);
@@ -91,8 +92,9 @@ void OptimizerOptions::validate() const {
   check.atLeast("screen_per_start", screen_per_start, 0);
 }
 
-std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lower, const std::vector<double>& upper,
-                                                 int starts, int per_start, std::uint64_t seed) {
+std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lower,
+                                                 const std::vector<double>& upper, int starts,
+                                                 int per_start, std::uint64_t seed) {
   checkBounds(lower, upper, "optimizer");
   const std::size_t d = lower.size();
   std::vector<std::vector<double>> out;
@@ -112,26 +114,35 @@ std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lowe
   return out;
 }
 
-std::vector<std::vector<double>> bestStarts(const std::vector<std::vector<double>>& candidates, const std::vector<double>& sse,
-                                            const std::vector<double>& lower, const std::vector<double>& upper, int starts) {
-  DTWIN_CHECK(candidates.size() == sse.size() && !candidates.empty(), "bestStarts needs one SSE per candidate");
+std::vector<std::vector<double>> bestStarts(const std::vector<std::vector<double>>& candidates,
+                                            const std::vector<double>& sse,
+                                            const std::vector<double>& lower,
+                                            const std::vector<double>& upper, int starts) {
+  DTWIN_CHECK(candidates.size() == sse.size() && !candidates.empty(),
+              "bestStarts needs one SSE per candidate");
   std::vector<std::size_t> order(candidates.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  auto key = [&](std::size_t i) { return std::isfinite(sse[i]) ? sse[i] : std::numeric_limits<double>::infinity(); };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  auto key = [&](std::size_t i) {
+    return std::isfinite(sse[i]) ? sse[i] : std::numeric_limits<double>::infinity();
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
   std::vector<std::vector<double>> out;
   for (std::size_t i : order) {
     if (static_cast<int>(out.size()) >= starts) break;
     bool near = false;
     for (const auto& s : out) {
       double dmax = 0.0;
-      for (std::size_t j = 0; j < s.size(); ++j) dmax = std::max(dmax, std::abs(s[j] - candidates[i][j]) / (upper[j] - lower[j]));
+      for (std::size_t j = 0; j < s.size(); ++j)
+        dmax = std::max(dmax, std::abs(s[j] - candidates[i][j]) / (upper[j] - lower[j]));
       near = near || dmax < 0.05;
     }
     if (!near) out.push_back(candidates[i]);
   }
   for (std::size_t i : order)  // fewer distinct candidates than starts: fill up in SSE order
-    if (static_cast<int>(out.size()) < starts && std::find(out.begin(), out.end(), candidates[i]) == out.end()) out.push_back(candidates[i]);
+    if (static_cast<int>(out.size()) < starts &&
+        std::find(out.begin(), out.end(), candidates[i]) == out.end())
+      out.push_back(candidates[i]);
   return out;
 }
 
@@ -150,9 +161,9 @@ std::vector<std::vector<double>> optimizerStarts(const std::vector<double>& lowe
   if (starts > 1) {
     // The LHS uses kStreamLhs internally; scrambling the seed with kStreamOptimizerStarts keeps
     // the starts independent of a design drawn with the same user seed.
-    const Eigen::MatrixXd u = latinHypercube(starts - 1, std::vector<double>(d, 0.0),
-                                             std::vector<double>(d, 1.0),
-                                             splitmix64(seed ^ kStreamOptimizerStarts));
+    const Eigen::MatrixXd u =
+        latinHypercube(starts - 1, std::vector<double>(d, 0.0), std::vector<double>(d, 1.0),
+                       splitmix64(seed ^ kStreamOptimizerStarts));
     for (int i = 0; i < starts - 1; ++i) {
       std::vector<double> s(d);
       for (std::size_t j = 0; j < d; ++j)
@@ -176,9 +187,10 @@ StartResult minimiseFrom(const SseFunction& sse, const std::vector<double>& lowe
   std::vector<double> z(d);
   for (std::size_t j = 0; j < d; ++j) {
     if (!(start[j] >= lower[j] && start[j] <= upper[j]))
-      throw InputError("optimizer", "start value " + std::to_string(j) + " = " + formatNumber(start[j], 17) +
-                                        " is outside [" + formatNumber(lower[j], 17) + ", " + formatNumber(upper[j], 17) +
-                                        "]");
+      throw InputError("optimizer", "start value " + std::to_string(j) + " = " +
+                                        formatNumber(start[j], 17) + " is outside [" +
+                                        formatNumber(lower[j], 17) + ", " +
+                                        formatNumber(upper[j], 17) + "]");
     z[j] = (start[j] - lower[j]) / (upper[j] - lower[j]);
   }
 
@@ -237,7 +249,8 @@ Optimum minimiseSse(const SseFunction& sse, const std::vector<double>& lower,
                     const OptimizerOptions& options, const ParallelFor& parallel_for) {
   options.validate();
   checkBounds(lower, upper, "optimizer");
-  if (starts < 1) throw InputError("optimizer", "number of starts must be >= 1, got " + std::to_string(starts));
+  if (starts < 1)
+    throw InputError("optimizer", "number of starts must be >= 1, got " + std::to_string(starts));
   std::vector<std::vector<double>> x0;
   const ParallelFor& run = parallel_for ? parallel_for : ParallelFor(sequentialFor);
   if (options.screen_per_start > 0) {

@@ -57,33 +57,33 @@ struct OptimizerOptions {
   /// supports bound constraints, e.g. "LN_BOBYQA" (default), "LN_SBPLX", "LN_NELDERMEAD",
   /// "LN_COBYLA", "LN_NEWUOA_BOUND".
   std::string algorithm = "LN_BOBYQA";
-  double xtol_rel = 1e-6;    ///< stop when a step changes every scaled z_j by < xtol_rel·|z_j|
-  double xtol_abs = 1e-9;    ///< ... or by < xtol_abs (scaled units; matters for z near 0)
-  double ftol_rel = 1e-10;   ///< stop when SSE changes by < ftol_rel·|SSE|
-  double ftol_abs = 0.0;     ///< ... or by < ftol_abs [SSE units]; 0 = off
-  int maxeval = 2000;        ///< evaluation budget per start (>= 1)
-  double initial_step = 0.1; ///< initial step in scaled units, in (0, 0.5]
-  int screen_per_start = 25; ///< screening points per start (0: no screening), >= 0
+  double xtol_rel = 1e-6;     ///< stop when a step changes every scaled z_j by < xtol_rel·|z_j|
+  double xtol_abs = 1e-9;     ///< ... or by < xtol_abs (scaled units; matters for z near 0)
+  double ftol_rel = 1e-10;    ///< stop when SSE changes by < ftol_rel·|SSE|
+  double ftol_abs = 0.0;      ///< ... or by < ftol_abs [SSE units]; 0 = off
+  int maxeval = 2000;         ///< evaluation budget per start (>= 1)
+  double initial_step = 0.1;  ///< initial step in scaled units, in (0, 0.5]
+  int screen_per_start = 25;  ///< screening points per start (0: no screening), >= 0
   /// Throws InputError whose where() is "optimizer.<field>" (common/validate.hpp).
   void validate() const;
 };
 
 /// One local run.
 struct StartResult {
-  std::vector<double> start;  ///< starting point θ0 (physical units)
-  std::vector<double> theta;  ///< best finite point found by this start (physical units)
-  double sse = 0.0;           ///< SSE(theta); +inf if no evaluation of this start was finite
-  int evaluations = 0;        ///< SSE evaluations made by this start
+  std::vector<double> start;      ///< starting point θ0 (physical units)
+  std::vector<double> theta;      ///< best finite point found by this start (physical units)
+  double sse = 0.0;               ///< SSE(theta); +inf if no evaluation of this start was finite
+  int evaluations = 0;            ///< SSE evaluations made by this start
   int nonfinite_evaluations = 0;  ///< how many of them returned a non-finite SSE
-  std::string status;         ///< NLopt termination reason, e.g. "XTOL_REACHED", "MAXEVAL_REACHED"
+  std::string status;  ///< NLopt termination reason, e.g. "XTOL_REACHED", "MAXEVAL_REACHED"
 };
 
 struct Optimum {
-  std::vector<double> theta;       ///< θ̂, the best over all starts (physical units)
-  double sse = 0.0;                ///< SSE_min = SSE(θ̂); +inf if no start found a finite value
-  int best_start = -1;             ///< index into `starts` of the winner
-  int evaluations = 0;             ///< total over all starts
-  std::vector<StartResult> starts; ///< in start-index order (0 = box centre)
+  std::vector<double> theta;        ///< θ̂, the best over all starts (physical units)
+  double sse = 0.0;                 ///< SSE_min = SSE(θ̂); +inf if no start found a finite value
+  int best_start = -1;              ///< index into `starts` of the winner
+  int evaluations = 0;              ///< total over all starts
+  std::vector<StartResult> starts;  ///< in start-index order (0 = box centre)
   /// One line: "SSE_min 1.234e+05 at [..] (start 2 of 5, 512 evaluations)".
   std::string briefReport() const;
   /// One line per start plus the brief report.
@@ -98,13 +98,16 @@ std::vector<std::vector<double>> optimizerStarts(const std::vector<double>& lowe
 
 /// The screening candidates (physical units): the box centre, then a Latin hypercube of
 /// per_start · starts points of the bounds.
-std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lower, const std::vector<double>& upper,
-                                                 int starts, int per_start, std::uint64_t seed);
+std::vector<std::vector<double>> screeningPoints(const std::vector<double>& lower,
+                                                 const std::vector<double>& upper, int starts,
+                                                 int per_start, std::uint64_t seed);
 
 /// The `starts` best screening candidates by SSE (ties by index, non-finite last), skipping one
 /// within 0.05 scaled units (largest coordinate difference) of a start already taken.
-std::vector<std::vector<double>> bestStarts(const std::vector<std::vector<double>>& candidates, const std::vector<double>& sse,
-                                            const std::vector<double>& lower, const std::vector<double>& upper, int starts);
+std::vector<std::vector<double>> bestStarts(const std::vector<std::vector<double>>& candidates,
+                                            const std::vector<double>& sse,
+                                            const std::vector<double>& lower,
+                                            const std::vector<double>& upper, int starts);
 
 /// One local NLopt run from `start` (physical units, inside the bounds).
 StartResult minimiseFrom(const SseFunction& sse, const std::vector<double>& lower,

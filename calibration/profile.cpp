@@ -46,7 +46,8 @@ double betaContinuedFraction(double a, double b, double x) {
 double incompleteBeta(double a, double b, double x, double y) {
   if (x <= 0.0) return 0.0;
   if (y <= 0.0) return 1.0;
-  const double lbt = std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log(y);
+  const double lbt =
+      std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log(y);
   if (x < (a + 1.0) / (a + b + 2.0)) return std::exp(lbt) * betaContinuedFraction(a, b, x) / a;
   return 1.0 - std::exp(lbt) * betaContinuedFraction(b, a, y) / b;
 }
@@ -61,8 +62,11 @@ double studentCdf(double t, double nu) {
 }  // namespace
 
 double studentQuantile(double p, double nu) {
-  if (!(p > 0.0 && p < 1.0)) throw InputError("student quantile", "p must lie in (0, 1), got " + formatNumber(p));
-  if (!(nu > 0.0 && std::isfinite(nu))) throw InputError("student quantile", "degrees of freedom must be finite and > 0, got " + formatNumber(nu));
+  if (!(p > 0.0 && p < 1.0))
+    throw InputError("student quantile", "p must lie in (0, 1), got " + formatNumber(p));
+  if (!(nu > 0.0 && std::isfinite(nu)))
+    throw InputError("student quantile",
+                     "degrees of freedom must be finite and > 0, got " + formatNumber(nu));
   double lo = -1.0, hi = 1.0;
   while (studentCdf(lo, nu) > p) lo *= 2.0;
   while (studentCdf(hi, nu) < p) hi *= 2.0;
@@ -75,26 +79,34 @@ double studentQuantile(double p, double nu) {
 
 void ProfileOptions::validate() const {
   const std::string where = "profile options";
-  if (!(level > 0.0 && level < 1.0)) throw InputError(where, "level must lie in (0, 1), got " + formatNumber(level));
+  if (!(level > 0.0 && level < 1.0))
+    throw InputError(where, "level must lie in (0, 1), got " + formatNumber(level));
   if (steps < 0) throw InputError(where, "steps must be >= 0, got " + std::to_string(steps));
-  if (lm_iterations < 1) throw InputError(where, "lm_iterations must be >= 1, got " + std::to_string(lm_iterations));
-  if (restarts < 0) throw InputError(where, "restarts must be >= 0, got " + std::to_string(restarts));
-  if (polish_iterations < 0) throw InputError(where, "polish_iterations must be >= 0, got " + std::to_string(polish_iterations));
+  if (lm_iterations < 1)
+    throw InputError(where, "lm_iterations must be >= 1, got " + std::to_string(lm_iterations));
+  if (restarts < 0)
+    throw InputError(where, "restarts must be >= 0, got " + std::to_string(restarts));
+  if (polish_iterations < 0)
+    throw InputError(where,
+                     "polish_iterations must be >= 0, got " + std::to_string(polish_iterations));
 }
 
 nlohmann::json ProfileOptions::toJson() const {
-  return {{"rule", "{v : SSE_profile(v) <= SSE* + c s^2}, c = F(1, n-d) quantile, s^2 = SSE*/(n-d)"},
-          {"level", level},
-          {"steps_per_end", steps},
-          {"lm_iterations", lm_iterations},
-          {"restarts", restarts},
-          {"polish_iterations", polish_iterations}};
+  return {
+      {"rule", "{v : SSE_profile(v) <= SSE* + c s^2}, c = F(1, n-d) quantile, s^2 = SSE*/(n-d)"},
+      {"level", level},
+      {"steps_per_end", steps},
+      {"lm_iterations", lm_iterations},
+      {"restarts", restarts},
+      {"polish_iterations", polish_iterations}};
 }
 
-ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>& sse, int n_data, const std::vector<double>& lower,
-                        const std::vector<double>& upper, const ProfileOptions& options, const CorrelationAdjustment& correlation) {
+ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>& sse, int n_data,
+                        const std::vector<double>& lower, const std::vector<double>& upper,
+                        const ProfileOptions& options, const CorrelationAdjustment& correlation) {
   options.validate();
-  DTWIN_CHECK(static_cast<std::size_t>(points.rows()) == sse.size(), "planProfile needs one SSE per point");
+  DTWIN_CHECK(static_cast<std::size_t>(points.rows()) == sse.size(),
+              "planProfile needs one SSE per point");
   const int d = static_cast<int>(points.cols());
   ProfilePlan p;
   p.lower = lower;
@@ -110,17 +122,20 @@ ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>
       p.best_point.resize(static_cast<std::size_t>(d));
       for (int j = 0; j < d; ++j) p.best_point[static_cast<std::size_t>(j)] = points(k, j);
     }
-  if (!std::isfinite(p.sse_best)) throw InputError("profile interval", "no evaluated point has a finite SSE");
+  if (!std::isfinite(p.sse_best))
+    throw InputError("profile interval", "no evaluated point has a finite SSE");
   p.s2 = p.sse_best / p.dof;
   const double t = studentQuantile(0.5 + 0.5 * options.level, p.dof);
   p.c = t * t;
   p.threshold = p.sse_best + p.c * p.s2;
   p.thresholds.assign(static_cast<std::size_t>(d), p.threshold);
   if (correlation.blocks > 0) {
-    DTWIN_CHECK(static_cast<int>(correlation.kappa.size()) == d, "planProfile: one kappa per parameter");
+    DTWIN_CHECK(static_cast<int>(correlation.kappa.size()) == d,
+                "planProfile: one kappa per parameter");
     p.correlation = correlation;
     for (int j = 0; j < d; ++j)
-      p.thresholds[static_cast<std::size_t>(j)] = p.sse_best + correlation.quantile * p.s2 * correlation.kappa[static_cast<std::size_t>(j)];
+      p.thresholds[static_cast<std::size_t>(j)] =
+          p.sse_best + correlation.quantile * p.s2 * correlation.kappa[static_cast<std::size_t>(j)];
   }
   p.low_point.assign(static_cast<std::size_t>(d), {});
   p.high_point.assign(static_cast<std::size_t>(d), {});
@@ -170,8 +185,8 @@ std::vector<double> physicalOf(const ProfilePlan& plan, const Eigen::VectorXd& z
 /// Restart points for a profile point of parameter j at v (scaled): the evaluated points of lowest
 /// SSE with |z_j − v| <= band, their other coordinates (not the warm start's own, nor each
 /// other's), best first, at most `count`.
-std::vector<Eigen::VectorXd> restartsNear(const ProfilePlan& plan, int j, double v, double band, const Eigen::VectorXd& warm,
-                                          int count) {
+std::vector<Eigen::VectorXd> restartsNear(const ProfilePlan& plan, int j, double v, double band,
+                                          const Eigen::VectorXd& warm, int count) {
   const auto d = static_cast<int>(plan.lower.size());
   std::vector<std::pair<double, Eigen::VectorXd>> cand;
   for (Eigen::Index q = 0; q < plan.points.rows(); ++q) {
@@ -187,7 +202,8 @@ std::vector<Eigen::VectorXd> restartsNear(const ProfilePlan& plan, int j, double
     if ((uq - warm).norm() < 1e-3) continue;
     cand.emplace_back(f, uq);
   }
-  std::stable_sort(cand.begin(), cand.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::stable_sort(cand.begin(), cand.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<Eigen::VectorXd> out;
   for (const auto& c : cand) {
     if (static_cast<int>(out.size()) >= count) break;
@@ -202,18 +218,22 @@ std::vector<Eigen::VectorXd> restartsNear(const ProfilePlan& plan, int j, double
 /// end's carried Jacobian; a point that ends outside the threshold gets `polish_iterations` more
 /// with a fresh Jacobian (a curved valley, or a stale Jacobian), then the restarts `starts()`
 /// (another basin), the lowest fit counting. False when no simulation of it succeeded.
-bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B, const Eigen::VectorXd& h,
-                  const ProfilePlan& plan, double threshold, const ProfileOptions& options, SubspaceJacobian& jac, Eigen::VectorXd& u, double& f,
-                  const std::function<std::vector<Eigen::VectorXd>()>& starts) {
+bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B,
+                  const Eigen::VectorXd& h, const ProfilePlan& plan, double threshold,
+                  const ProfileOptions& options, SubspaceJacobian& jac, Eigen::VectorXd& u,
+                  double& f, const std::function<std::vector<Eigen::VectorXd>()>& starts) {
   Eigen::VectorXd r;
   SubspaceLmSettings lm;
   lm.forward = options.forward_differences;
-  bool ok = minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, u, r, f, &jac, lm);
+  bool ok =
+      minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, u, r, f, &jac, lm);
   if (ok && f > threshold && options.polish_iterations > 0) {
     Eigen::VectorXd up = u, rp;
     double fp = 0.0;
     jac.clear();
-    if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp, &jac, lm) && fp < f) {
+    if (minimiseOnSubspace(res, z0, B, h, options.polish_iterations, 0.05 * plan.s2, up, rp, fp,
+                           &jac, lm) &&
+        fp < f) {
       f = fp;
       u = up;
     }
@@ -222,7 +242,9 @@ bool profilePoint(const ScaledResiduals& res, const Eigen::VectorXd& z0, const E
   for (const Eigen::VectorXd& start : starts()) {
     Eigen::VectorXd ur = start, rr;
     double fr = 0.0;
-    if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr, &jac, lm) && (!ok || fr < f)) {
+    if (minimiseOnSubspace(res, z0, B, h, options.lm_iterations, 0.05 * plan.s2, ur, rr, fr, &jac,
+                           lm) &&
+        (!ok || fr < f)) {
       ok = true;
       f = fr;
       u = ur;
@@ -247,7 +269,8 @@ struct EndBracket {
 /// an outside point, which costs a polish and restarts), or, without a secant, a growing step;
 /// in a bracket, linear interpolation of g, kept 10 % inside it and aimed the same way. It stops
 /// when the predicted crossing is within `tol` of v_in, or the bracket is narrower than that.
-std::optional<double> nextEndTarget(const EndBracket& b, double g_T, double tol, double width_j, int s, int step) {
+std::optional<double> nextEndTarget(const EndBracket& b, double g_T, double tol, double width_j,
+                                    int s, int step) {
   if (!b.have_out) {
     const double dist = std::abs(b.v_in - b.v_prev);
     const bool secant = dist > 0.0 && b.g_in > b.g_prev;
@@ -256,7 +279,8 @@ std::optional<double> nextEndTarget(const EndBracket& b, double g_T, double tol,
     const double grow = 4.0 * std::max(dist, 0.25 * std::max(width_j, 0.08));
     // A secant that puts the end close ahead is followed (down to the tolerance): a step
     // stretched to a minimum length would land outside.
-    const double reach = std::clamp(secant ? ahead - 0.5 * tol : grow, secant ? tol : 0.05 * std::max(width_j, 0.02), grow);
+    const double reach = std::clamp(secant ? ahead - 0.5 * tol : grow,
+                                    secant ? tol : 0.05 * std::max(width_j, 0.02), grow);
     return std::clamp(b.v_in + s * reach, 0.0, 1.0);
   }
   const double span = std::abs(b.v_out - b.v_in);
@@ -271,7 +295,8 @@ std::optional<double> nextEndTarget(const EndBracket& b, double g_T, double tol,
 // Kept whole on purpose: the secant / regula falsi search shares its bracket (v_in, g_in, v_prev,
 // g_prev, v_out, g_out) and the subspace coordinates with the restarts of each step; the scaling,
 // the restart choice and one profile point are the functions above.
-ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index, const ProfileOptions& options) {
+ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index,
+                            const ProfileOptions& options) {
   options.validate();
   const int d = static_cast<int>(plan.lower.size());
   DTWIN_CHECK(index >= 0 && index < 2 * d, "profile end index out of range");
@@ -292,7 +317,8 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   Eigen::VectorXd width(d);
   for (int k = 0; k < d; ++k) {
     const auto kk = static_cast<std::size_t>(k);
-    width(k) = (plan.high_point[kk][kk] - plan.low_point[kk][kk]) / (plan.upper[kk] - plan.lower[kk]);
+    width(k) =
+        (plan.high_point[kk][kk] - plan.low_point[kk][kk]) / (plan.upper[kk] - plan.lower[kk]);
   }
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(d, d - 1);
   Eigen::VectorXd h(d - 1);
@@ -324,7 +350,8 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     best_v = (plan.points(best, j) - plan.lower[jj]) / (plan.upper[jj] - plan.lower[jj]);
   }
   double v_in = z(j), g_in = gOf(end.sse), v_prev = best_v, g_prev = 0.0;
-  bool in_is_floor = false;  // v_in is a profile point (not the evaluated point the end starts from)
+  bool in_is_floor =
+      false;  // v_in is a profile point (not the evaluated point the end starts from)
   bool have_out = false;
   double v_out = bound, g_out = 0.0;
   const double tol = std::max(0.01 * std::max(width(j), 1e-3), 1e-9);
@@ -343,7 +370,9 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
     Eigen::VectorXd un = u;
     double f = 0.0;
     const bool ok = profilePoint(res, z0, B, h, plan, threshold, options, jac, un, f, [&] {
-      return restartsNear(plan, j, target, std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un, options.restarts);
+      return restartsNear(plan, j, target,
+                          std::max(std::abs(target - v_in), 0.05 * std::max(width(j), 0.02)), un,
+                          options.restarts);
     });
     if (ok && f <= threshold) {
       // The secant's other point: the last profile point, or, after the first, the best fit (g =
@@ -375,7 +404,8 @@ ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan
   return end;
 }
 
-ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<ProfileEnd>& ends, const ProfileOptions& options) {
+ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<ProfileEnd>& ends,
+                                const ProfileOptions& options) {
   const int d = static_cast<int>(plan.lower.size());
   DTWIN_CHECK(static_cast<int>(ends.size()) == 2 * d, "a profile needs 2d ends");
   ProfileIntervals out;
@@ -408,15 +438,23 @@ ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<Profi
 }
 
 nlohmann::json ProfileIntervals::toJson() const {
-  return {{"level", level},       {"c", c},
-          {"s2", s2},             {"dof", dof},
-          {"sse_best", sse_best}, {"threshold", threshold},
-          {"lower", lower},       {"upper", upper},
-          {"lower_at_bound", lower_at_bound}, {"upper_at_bound", upper_at_bound},
-          {"evaluations", evaluations}, {"end_evaluations", end_evaluations},
-          {"end_points", end_steps},    {"end_jacobians", end_jacobians},
+  return {{"level", level},
+          {"c", c},
+          {"s2", s2},
+          {"dof", dof},
+          {"sse_best", sse_best},
+          {"threshold", threshold},
+          {"lower", lower},
+          {"upper", upper},
+          {"lower_at_bound", lower_at_bound},
+          {"upper_at_bound", upper_at_bound},
+          {"evaluations", evaluations},
+          {"end_evaluations", end_evaluations},
+          {"end_points", end_steps},
+          {"end_jacobians", end_jacobians},
           {"end_outside_points", end_outside},
-          {"thresholds", thresholds},   {"correlation", correlation.toJson()},
+          {"thresholds", thresholds},
+          {"correlation", correlation.toJson()},
           {"best_point", best_point}};
 }
 
@@ -429,7 +467,8 @@ ProfileIntervals ProfileIntervals::fromJson(const nlohmann::json& j) {
   p.sse_best = j.at("sse_best").get<double>();
   p.threshold = j.at("threshold").get<double>();
   p.thresholds = j.value("thresholds", std::vector<double>{});
-  if (j.contains("correlation")) p.correlation = CorrelationAdjustment::fromJson(j.at("correlation"));
+  if (j.contains("correlation"))
+    p.correlation = CorrelationAdjustment::fromJson(j.at("correlation"));
   p.lower = j.at("lower").get<std::vector<double>>();
   p.upper = j.at("upper").get<std::vector<double>>();
   p.lower_at_bound = j.at("lower_at_bound").get<std::vector<bool>>();

@@ -11,10 +11,10 @@
 //     { v : SSE_p(v) <= SSE* + c s² },   c = F_{1, n−d}(0.95) = t²_{n−d, 0.975}.
 // For a logged drive, whose residuals are correlated in time, parameter j's threshold is
 // SSE* + t²_{B−1} s² κ_j instead (correlated.hpp). The interval does not depend on the prior.
-// Where the data leave a long valley of nearly equal fits that ends at a bound, the posterior spreads its mass along the valley in proportion to parameter
-// volume, and its central interval can exclude a truth at the valley's steep end (the demo's
-// solid-axle assembly, seeds 1001–1008); the profile interval holds every value the data do not
-// reject.
+// Where the data leave a long valley of nearly equal fits that ends at a bound, the posterior
+// spreads its mass along the valley in proportion to parameter volume, and its central interval can
+// exclude a truth at the valley's steep end (the demo's solid-axle assembly, seeds 1001–1008); the
+// profile interval holds every value the data do not reject.
 //
 // \par Computation (no new simulations for step 1)
 // 1. From every evaluated point (the design, the traced ridge floor, the optimum): SSE* is the
@@ -60,7 +60,8 @@ struct ProfileOptions {
   int steps = 12;         ///< profile points per end (0: the evaluated points only)
   int lm_iterations = 2;  ///< Levenberg–Marquardt iterations per profile point, >= 1
   int restarts = 2;       ///< extra starts of a profile point whose warm start ends outside, >= 0
-  int polish_iterations = 2;  ///< further LM iterations, from the warm start's end, when it ends outside, >= 0
+  int polish_iterations =
+      2;  ///< further LM iterations, from the warm start's end, when it ends outside, >= 0
   /// Forward differences (d − 1 runs per Jacobian, not 2(d − 1)): for a smooth SSE (frozen steps;
   /// calibrateAssembly sets it then, and records it in profile.json, not in the options: it
   /// follows from the steps).
@@ -71,8 +72,8 @@ struct ProfileOptions {
 
 /// Step 1: the threshold and the ends found among the evaluated points.
 struct ProfilePlan {
-  std::vector<double> lower, upper;        ///< the calibration bounds (physical)
-  int n_data = 0, dof = 0;                 ///< n and n − d (n when n <= d)
+  std::vector<double> lower, upper;  ///< the calibration bounds (physical)
+  int n_data = 0, dof = 0;           ///< n and n − d (n when n <= d)
   double sse_best = 0.0, s2 = 0.0, c = 0.0, threshold = 0.0;
   /// Per parameter: threshold, or SSE* + t²_{B−1} s² κ_j when the residuals are correlated in
   /// time (correlated.hpp).
@@ -81,29 +82,32 @@ struct ProfilePlan {
   double thresholdOf(int j) const { return thresholds[static_cast<std::size_t>(j)]; }
   std::vector<std::vector<double>> low_point, high_point;  ///< θ at each parameter's ends
   std::vector<double> low_sse, high_sse;
-  Eigen::MatrixXd points;                  ///< every evaluated point (physical), for restarts
-  std::vector<double> sse;                 ///< their SSE (+inf: failed)
-  std::vector<double> best_point;          ///< the point whose SSE is sse_best
+  Eigen::MatrixXd points;          ///< every evaluated point (physical), for restarts
+  std::vector<double> sse;         ///< their SSE (+inf: failed)
+  std::vector<double> best_point;  ///< the point whose SSE is sse_best
 };
 
 /// `points` N x d (physical), `sse` N (+inf: failed). Throws InputError when no SSE is finite.
 /// `correlation` (blockAdjustment; empty: independent residuals) sets each parameter's threshold.
 ProfilePlan planProfile(const Eigen::MatrixXd& points, const std::vector<double>& sse, int n_data,
-                        const std::vector<double>& lower, const std::vector<double>& upper, const ProfileOptions& options,
+                        const std::vector<double>& lower, const std::vector<double>& upper,
+                        const ProfileOptions& options,
                         const CorrelationAdjustment& correlation = {});
 
 struct ProfileEnd {
-  std::vector<double> theta;   ///< the end (physical), inside the threshold
+  std::vector<double> theta;  ///< the end (physical), inside the threshold
   double sse = 0.0;
-  bool at_bound = false;       ///< the profile stays inside up to the calibration bound
+  bool at_bound = false;  ///< the profile stays inside up to the calibration bound
   int evaluations = 0;
-  int steps_taken = 0;         ///< profile points that moved the end
-  int jacobians = 0;           ///< finite-difference Jacobians computed (the rest carried, subspace_lm.hpp)
-  int outside_points = 0;      ///< profile points that landed outside the threshold (brackets of the end)
+  int steps_taken = 0;  ///< profile points that moved the end
+  int jacobians = 0;  ///< finite-difference Jacobians computed (the rest carried, subspace_lm.hpp)
+  int outside_points =
+      0;  ///< profile points that landed outside the threshold (brackets of the end)
 };
 
 /// Step 2 for end `index` in [0, 2d): parameter index / 2, lower end for even indices.
-ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index, const ProfileOptions& options);
+ProfileEnd refineProfileEnd(const ResidualFunction& residuals, const ProfilePlan& plan, int index,
+                            const ProfileOptions& options);
 
 struct ProfileIntervals {
   std::vector<double> lower, upper;
@@ -113,7 +117,8 @@ struct ProfileIntervals {
   CorrelationAdjustment correlation;  ///< blocks 0: the residuals taken as independent
   int dof = 0, evaluations = 0;
   /// The evaluated point whose SSE is sse_best (physical); empty when read from an older
-  /// profile.json. Below the optimiser's optimum, it is the calibration's optimum (CalibrationRun::profile).
+  /// profile.json. Below the optimiser's optimum, it is the calibration's optimum
+  /// (CalibrationRun::profile).
   std::vector<double> best_point;
   /// Per end, in index order (parameter j's lower end at 2j): simulations, profile points that
   /// moved the end, finite-difference Jacobians. Empty when read from an older profile.json.
@@ -123,6 +128,7 @@ struct ProfileIntervals {
 };
 
 /// The intervals from the plan and its 2d refined ends (index order).
-ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<ProfileEnd>& ends, const ProfileOptions& options);
+ProfileIntervals collectProfile(const ProfilePlan& plan, const std::vector<ProfileEnd>& ends,
+                                const ProfileOptions& options);
 
 }  // namespace dtwin::calib

@@ -6,8 +6,8 @@
 #include <limits>
 #include <sstream>
 
-#include "calibration/subspace_lm.hpp"
 #include "calibration/eigen_json.hpp"
+#include "calibration/subspace_lm.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
 
@@ -43,7 +43,8 @@ Region narrowedToCube(const Region& r) {
         // a t_i in [-c_j - rest_max, 1 - c_j - rest_min]
         double t0 = (-r.centre(j) - rest_max) / a, t1 = (1.0 - r.centre(j) - rest_min) / a;
         if (a < 0) std::swap(t0, t1);
-        const double new_lo = std::min(std::max(lo(i), t0), 0.0), new_hi = std::max(std::min(hi(i), t1), 0.0);
+        const double new_lo = std::min(std::max(lo(i), t0), 0.0),
+                     new_hi = std::max(std::min(hi(i), t1), 0.0);
         moved = std::max({moved, new_lo - lo(i), hi(i) - new_hi});
         // Keep the running sums in step with the narrowed interval.
         sum_min += std::min(a * new_lo, a * new_hi) - std::min(a * lo(i), a * hi(i));
@@ -65,8 +66,9 @@ double Region::logVolume() const {
 
 Eigen::VectorXd Region::toScaled(const std::vector<double>& theta) const {
   Eigen::VectorXd z(dim());
-  for (int j = 0; j < dim(); ++j) z(j) = (theta[static_cast<std::size_t>(j)] - lower[static_cast<std::size_t>(j)]) /
-                                         (upper[static_cast<std::size_t>(j)] - lower[static_cast<std::size_t>(j)]);
+  for (int j = 0; j < dim(); ++j)
+    z(j) = (theta[static_cast<std::size_t>(j)] - lower[static_cast<std::size_t>(j)]) /
+           (upper[static_cast<std::size_t>(j)] - lower[static_cast<std::size_t>(j)]);
   return z;
 }
 
@@ -108,7 +110,9 @@ void Region::boundingBox(std::vector<double>& lo, std::vector<double>& hi) const
 
 nlohmann::json Region::toJson() const {
   nlohmann::json j{{"kind", kind},
-                   {"coordinates", "scaled z_j = (theta_j - lower_j)/(upper_j - lower_j); region = {centre + axes t : t_lower <= t <= t_upper}"},
+                   {"coordinates",
+                    "scaled z_j = (theta_j - lower_j)/(upper_j - lower_j); region = {centre + axes "
+                    "t : t_lower <= t <= t_upper}"},
                    {"bounds_lower", lower},
                    {"bounds_upper", upper},
                    {"centre", vectorJson(centre)},
@@ -126,9 +130,11 @@ nlohmann::json Region::toJson() const {
   j["axes"] = nlohmann::json::array();  // column i = axis i
   for (Eigen::Index i = 0; i < axes.cols(); ++i) j["axes"].push_back(vectorJson(axes.col(i)));
   j["ridge"] = nlohmann::json::array();  // traced floor points inside the contour, scaled
-  for (Eigen::Index i = 0; i < ridge.rows(); ++i) j["ridge"].push_back(vectorJson(ridge.row(i).transpose()));
+  for (Eigen::Index i = 0; i < ridge.rows(); ++i)
+    j["ridge"].push_back(vectorJson(ridge.row(i).transpose()));
   j["ridge_sse"] = ridge_sse;
-  j["ridge_cov"] = nlohmann::json::array();  // per ridge row: the local Gaussian's covariance, row by row (null: unknown)
+  j["ridge_cov"] = nlohmann::json::array();  // per ridge row: the local Gaussian's covariance, row
+                                             // by row (null: unknown)
   for (const auto& c : ridge_cov) {
     nlohmann::json m = c.size() == 0 ? nlohmann::json() : nlohmann::json::array();
     for (Eigen::Index i = 0; i < c.rows(); ++i) m.push_back(vectorJson(c.row(i).transpose()));
@@ -160,17 +166,20 @@ Region Region::fromJson(const nlohmann::json& j) {
   const auto& ax = j.at("axes");
   const auto d = static_cast<Eigen::Index>(ax.size());
   r.axes.resize(d, d);
-  for (Eigen::Index i = 0; i < d; ++i) r.axes.col(i) = vectorFromJson(ax[static_cast<std::size_t>(i)]);
+  for (Eigen::Index i = 0; i < d; ++i)
+    r.axes.col(i) = vectorFromJson(ax[static_cast<std::size_t>(i)]);
   const auto& rg = j.at("ridge");
   r.ridge.resize(static_cast<Eigen::Index>(rg.size()), d);
-  for (std::size_t i = 0; i < rg.size(); ++i) r.ridge.row(static_cast<Eigen::Index>(i)) = vectorFromJson(rg[i]).transpose();
+  for (std::size_t i = 0; i < rg.size(); ++i)
+    r.ridge.row(static_cast<Eigen::Index>(i)) = vectorFromJson(rg[i]).transpose();
   r.ridge_sse = j.at("ridge_sse").get<std::vector<double>>();
   if (j.contains("ridge_cov"))
     for (const auto& m : j.at("ridge_cov")) {
       Eigen::MatrixXd c;
       if (!m.is_null()) {
         c.resize(d, d);
-        for (Eigen::Index i = 0; i < d; ++i) c.row(i) = vectorFromJson(m[static_cast<std::size_t>(i)]).transpose();
+        for (Eigen::Index i = 0; i < d; ++i)
+          c.row(i) = vectorFromJson(m[static_cast<std::size_t>(i)]).transpose();
       }
       r.ridge_cov.push_back(c);
     }
@@ -182,7 +191,8 @@ std::string Region::briefReport() const {
   std::vector<double> lo, hi;
   boundingBox(lo, hi);
   os << kind << " region (SSE <= " << formatNumber(threshold) << "), bounding box ";
-  for (std::size_t j = 0; j < lo.size(); ++j) os << (j ? ", " : "") << "[" << formatNumber(lo[j]) << ", " << formatNumber(hi[j]) << "]";
+  for (std::size_t j = 0; j < lo.size(); ++j)
+    os << (j ? ", " : "") << "[" << formatNumber(lo[j]) << ", " << formatNumber(hi[j]) << "]";
   os << " (" << evaluations << " evaluations)";
   for (const auto& m : messages) os << "\n  note: " << m;
   return os.str();

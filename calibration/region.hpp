@@ -1,6 +1,7 @@
 #pragma once
-// The region of θ the design covers (docs/method.md §4 step 2): the paper's one-at-a-time box, or the
-// joint region that holds the whole 1 % likelihood-ratio contour (the default, docs/calibration.md).
+// The region of θ the design covers (docs/method.md §4 step 2): the paper's one-at-a-time box, or
+// the joint region that holds the whole 1 % likelihood-ratio contour (the default,
+// docs/calibration.md).
 //
 // \par Coordinates
 // Scaled z_j = (θ_j − l_j)/(u_j − l_j) ∈ [0, 1] over the calibration bounds l, u (as the
@@ -57,10 +58,10 @@
 // σ̂²/2 per step (shrink x0.6 above 3 σ̂², σ̂² = SSE_min/n). A step whose floor lies outside the
 // contour is halved and retried from the last floor point, down to 1/16 of the first step, before
 // the trace concludes that the contour ends there: a grown step can jump off a thin, bending
-// ridge (on the demo's solid-axle assembly one did, and the truth lay beyond it). The region then holds every traced
-// floor point with the margin (along the traced axis: margin · the crossing; across it: the floor
-// point's offset plus margin · that axis's crossing), and the floor points inside the contour are
-// kept (`ridge`) so the adaptive design can put kernels on them.
+// ridge (on the demo's solid-axle assembly one did, and the truth lay beyond it). The region then
+// holds every traced floor point with the margin (along the traced axis: margin · the crossing;
+// across it: the floor point's offset plus margin · that axis's crossing), and the floor points
+// inside the contour are kept (`ridge`) so the adaptive design can put kernels on them.
 //
 // The region also carries a Gaussian guess of the posterior: mean ẑ + Σ_i a_i (e_i^+ − e_i^−)/2 and
 // sd (e_i^+ + e_i^−) / (2 sqrt(2 ln 100)) along a_i — the Gaussian whose 1 % contour has the
@@ -85,15 +86,17 @@ namespace dtwin::calib {
 using ResidualFunction = std::function<std::vector<double>(const std::vector<double>& theta)>;
 
 struct Region {
-  std::string kind;                 ///< "paper" (one-at-a-time box) or "joint"
-  std::vector<double> lower, upper; ///< the calibration bounds (physical units): the prior's support
-  Eigen::VectorXd centre;           ///< c, scaled
-  Eigen::MatrixXd axes;             ///< A, d x d, orthonormal columns (scaled)
-  Eigen::VectorXd t_lower, t_upper; ///< extents along each axis, t_lower <= 0 <= t_upper (scaled)
+  std::string kind;  ///< "paper" (one-at-a-time box) or "joint"
+  std::vector<double> lower,
+      upper;               ///< the calibration bounds (physical units): the prior's support
+  Eigen::VectorXd centre;  ///< c, scaled
+  Eigen::MatrixXd axes;    ///< A, d x d, orthonormal columns (scaled)
+  Eigen::VectorXd t_lower, t_upper;  ///< extents along each axis, t_lower <= 0 <= t_upper (scaled)
   /// How far the bounds reach from the centre along −a_i / +a_i (max over the cube's corners):
   /// an extent at its reach cannot grow (the prior ends there).
   Eigen::VectorXd reach_lower, reach_upper;
-  /// The Gaussian guess of the posterior (scaled): mean `guess_mean`, sd `guess_sd` along each axis.
+  /// The Gaussian guess of the posterior (scaled): mean `guess_mean`, sd `guess_sd` along each
+  /// axis.
   Eigen::VectorXd guess_mean, guess_sd;
   /// Traced ridge floor points inside the contour (rows, scaled) and their SSE; empty for the
   /// paper's box.
@@ -107,9 +110,9 @@ struct Region {
   /// (adaptive_design.hpp). Empty matrices where the cross-section is unknown; the whole vector
   /// is empty for the paper's box and for a box.json written before it existed.
   std::vector<Eigen::MatrixXd> ridge_cov;
-  double threshold = 0.0;           ///< T of the 1 % contour
+  double threshold = 0.0;  ///< T of the 1 % contour
   double sse_min = 0.0;
-  int evaluations = 0;              ///< simulations spent building the region
+  int evaluations = 0;                ///< simulations spent building the region
   std::vector<std::string> messages;  ///< anything that needs the user's attention
 
   int dim() const { return static_cast<int>(lower.size()); }
@@ -120,11 +123,15 @@ struct Region {
   /// c + A t (scaled).
   Eigen::VectorXd at(const Eigen::VectorXd& t) const { return centre + axes * t; }
   /// Aᵀ (z − c): the region coordinates t of a scaled point.
-  Eigen::VectorXd coordinates(const Eigen::VectorXd& z) const { return axes.transpose() * (z - centre); }
+  Eigen::VectorXd coordinates(const Eigen::VectorXd& z) const {
+    return axes.transpose() * (z - centre);
+  }
   /// z lies in P (the bounds are not checked).
   bool contains(const Eigen::VectorXd& z) const;
   /// A (guess_sd²) Aᵀ: the covariance of the Gaussian guess (scaled).
-  Eigen::MatrixXd guessCovariance() const { return axes * guess_sd.cwiseAbs2().asDiagonal() * axes.transpose(); }
+  Eigen::MatrixXd guessCovariance() const {
+    return axes * guess_sd.cwiseAbs2().asDiagonal() * axes.transpose();
+  }
   /// The side can still grow: its extent is below the reach of the bounds.
   bool openLower(int i) const { return -t_lower(i) < reach_lower(i) * (1.0 - 1e-9); }
   bool openUpper(int i) const { return t_upper(i) < reach_upper(i) * (1.0 - 1e-9); }
@@ -153,11 +160,12 @@ Region regionFromBox(const FeasibleBox& box, const BoxProblem& problem);
 struct JointRegionOptions {
   double jacobian_step = 1e-2;  ///< central-difference step h (scaled), in (0, 0.5]
   double margin = 1.25;         ///< extents = margin · sweep crossing, >= 1
-  double relative_tolerance = 0.05;  ///< bisection stops at this fraction of the crossing, in (0, 1)
-  double growth = 2.0;          ///< sweep step growth, > 1
-  int max_evaluations = 40;     ///< per sweep, >= 2
-  double ridge_ratio = 100.0;   ///< trace every axis with λ_i <= ridge_ratio · λ_min, >= 1
-  int ridge_steps = 30;         ///< steps per ridge trace, halvings included (0: no traces), >= 0
+  double relative_tolerance =
+      0.05;                    ///< bisection stops at this fraction of the crossing, in (0, 1)
+  double growth = 2.0;         ///< sweep step growth, > 1
+  int max_evaluations = 40;    ///< per sweep, >= 2
+  double ridge_ratio = 100.0;  ///< trace every axis with λ_i <= ridge_ratio · λ_min, >= 1
+  int ridge_steps = 30;        ///< steps per ridge trace, halvings included (0: no traces), >= 0
   /// Forward differences in the ridge traces (d − 1 runs per Jacobian, not 2(d − 1)): for a smooth
   /// SSE (frozen steps; calibrateAssembly sets it then, and records it in the stage file, not
   /// in the options: it follows from the steps).
@@ -170,10 +178,10 @@ struct JointRegionOptions {
 /// The Gauss–Newton model at θ̂, from which the sweeps go out.
 struct JointRegionPlan {
   BoxProblem problem;
-  Eigen::MatrixXd jacobian;       ///< n x d, ∂r/∂z (scaled)
-  Eigen::VectorXd eigenvalues;    ///< λ_i of H = JᵀJ, ascending
-  Eigen::MatrixXd axes;           ///< v_i, columns
-  Eigen::VectorXd half_width;     ///< s_i = sqrt(ΔT/λ_i) (capped at √d)
+  Eigen::MatrixXd jacobian;                  ///< n x d, ∂r/∂z (scaled)
+  Eigen::VectorXd eigenvalues;               ///< λ_i of H = JᵀJ, ascending
+  Eigen::MatrixXd axes;                      ///< v_i, columns
+  Eigen::VectorXd half_width;                ///< s_i = sqrt(ΔT/λ_i) (capped at √d)
   Eigen::VectorXd reach_lower, reach_upper;  ///< how far the bounds reach along ∓v_i / +v_i
   std::vector<std::string> messages;
   int evaluations = 0;
@@ -181,11 +189,13 @@ struct JointRegionPlan {
 
 /// The 2d stencil points (physical units) of the central differences: index 2j is θ̂ − h e_j
 /// (clipped to the bound), 2j+1 is θ̂ + h e_j.
-std::vector<std::vector<double>> jacobianStencil(const BoxProblem& problem, const JointRegionOptions& options);
+std::vector<std::vector<double>> jacobianStencil(const BoxProblem& problem,
+                                                 const JointRegionOptions& options);
 
 /// The Gauss–Newton model from the residuals at the stencil points (same order; an empty vector
 /// is a failed simulation).
-JointRegionPlan planJointRegion(const BoxProblem& problem, const std::vector<std::vector<double>>& residuals,
+JointRegionPlan planJointRegion(const BoxProblem& problem,
+                                const std::vector<std::vector<double>>& residuals,
                                 const JointRegionOptions& options);
 
 /// Sweep `index` in [0, 2d): axis i = index / 2, towards −v_i for even indices, +v_i for odd.
@@ -195,20 +205,20 @@ RaySweep calcRegionSweep(const SseFunction& sse, const JointRegionPlan& plan, in
 /// A ridge traced from θ̂ along a weak axis: the profile floor point at each step.
 struct RidgeTrace {
   int axis = 0, direction = 0;
-  std::vector<double> t;             ///< distance along the axis (scaled), one per floor point
-  std::vector<Eigen::VectorXd> z;    ///< the floor points (scaled)
-  std::vector<double> sse;           ///< the profile SSE there
+  std::vector<double> t;           ///< distance along the axis (scaled), one per floor point
+  std::vector<Eigen::VectorXd> z;  ///< the floor points (scaled)
+  std::vector<double> sse;         ///< the profile SSE there
   /// At each floor point, the posterior's cross-section there (scaled, d x d, rank d − 1):
   /// σ² B (JᵀJ)⁻¹ Bᵀ from the trace's carried Jacobian J = ∂r/∂u across the traced axis,
   /// σ² = SSE_min / n. An empty matrix where J was unknown or singular.
   std::vector<Eigen::MatrixXd> cross;
-  bool closed = false;               ///< the profile crossed T (the last point lies outside)
+  bool closed = false;  ///< the profile crossed T (the last point lies outside)
   /// Where the profile crosses T: interpolated between the last two floor points, linearly in
   /// sqrt(SSE − SSE_min) (exact for a quadratic profile). Set when closed.
   double crossing = 0.0;
-  bool clipped = false;              ///< the bounds' reach was passed inside the contour
+  bool clipped = false;  ///< the bounds' reach was passed inside the contour
   int evaluations = 0;
-  std::string message;               ///< why it stopped early, when it did
+  std::string message;  ///< why it stopped early, when it did
 };
 
 /// The axes traced as ridges (ascending): the weakest and every axis with λ_i <= ridge_ratio·λ_min.
@@ -218,14 +228,16 @@ std::vector<int> ridgeAxes(const JointRegionPlan& plan, const JointRegionOptions
 /// for even indices, +v for odd ones. Needs the finished straight sweeps (their crossings set the
 /// step sizes).
 RidgeTrace calcRidgeTrace(const ResidualFunction& residuals, const JointRegionPlan& plan,
-                          const std::vector<RaySweep>& sweeps, int index, const JointRegionOptions& options);
+                          const std::vector<RaySweep>& sweeps, int index,
+                          const JointRegionOptions& options);
 
 /// The region from the plan, its 2d finished sweeps (index order) and its ridge traces.
 Region collectJointRegion(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
                           const std::vector<RidgeTrace>& traces, const JointRegionOptions& options);
 
 /// All of it: stencil (2d residual runs), sweeps (2d), ridge traces, each through `parallel_for`.
-Region calcJointRegion(const SseFunction& sse, const ResidualFunction& residuals, const BoxProblem& problem,
-                       const JointRegionOptions& options = {}, const ParallelFor& parallel_for = sequentialFor);
+Region calcJointRegion(const SseFunction& sse, const ResidualFunction& residuals,
+                       const BoxProblem& problem, const JointRegionOptions& options = {},
+                       const ParallelFor& parallel_for = sequentialFor);
 
 }  // namespace dtwin::calib

@@ -31,7 +31,8 @@ nlohmann::json CalibrationSetup::toJson() const {
   if (!freed.empty()) j["freed"] = freed;
   for (const auto& m : sensor_models)
     j["sensor_models"].push_back({{"name", m.name}, {"kind", m.kind}, {"channels", m.channels}});
-  for (const auto& [sub, opt] : options) j["options"].push_back({{"subsystem", sub}, {"option", opt}});
+  for (const auto& [sub, opt] : options)
+    j["options"].push_back({{"subsystem", sub}, {"option", opt}});
   for (const auto& [name, b] : bounds) j["bounds"][name] = {b.first, b.second};
   return j;
 }
@@ -64,18 +65,24 @@ CalibrationSetup CalibrationSetup::fromJson(const nlohmann::json& j) {
   if (j.contains("freed")) s.freed = j.at("freed").get<std::vector<std::string>>();
   if (j.contains("sensor_models"))
     for (const auto& m : j.at("sensor_models"))
-      s.sensor_models.push_back(
-          {m.at("name").get<std::string>(), m.at("kind").get<std::string>(), m.at("channels").get<std::vector<std::string>>()});
+      s.sensor_models.push_back({m.at("name").get<std::string>(), m.at("kind").get<std::string>(),
+                                 m.at("channels").get<std::vector<std::string>>()});
   if (j.contains("options"))
-    for (const auto& o : j.at("options")) s.options.push_back({o.at("subsystem").get<std::string>(), o.at("option").get<std::string>()});
+    for (const auto& o : j.at("options"))
+      s.options.push_back(
+          {o.at("subsystem").get<std::string>(), o.at("option").get<std::string>()});
   if (j.contains("bounds"))
-    for (const auto& [k, v] : j.at("bounds").items()) s.bounds[k] = {v.at(0).get<double>(), v.at(1).get<double>()};
+    for (const auto& [k, v] : j.at("bounds").items())
+      s.bounds[k] = {v.at(0).get<double>(), v.at(1).get<double>()};
   return s;
 }
 
 // ------------------------------------------------------------------ stage files
 nlohmann::json optimumJson(const Optimum& o) {
-  nlohmann::json j{{"theta", jsonNumbers(o.theta)}, {"sse", jsonNumber(o.sse)}, {"best_start", o.best_start}, {"evaluations", o.evaluations}};
+  nlohmann::json j{{"theta", jsonNumbers(o.theta)},
+                   {"sse", jsonNumber(o.sse)},
+                   {"best_start", o.best_start},
+                   {"evaluations", o.evaluations}};
   for (const auto& s : o.starts)
     j["starts"].push_back({{"start", jsonNumbers(s.start)},
                            {"theta", jsonNumbers(s.theta)},
@@ -105,7 +112,10 @@ Optimum optimumFrom(const nlohmann::json& j) {
 }
 
 nlohmann::json boxJson(const FeasibleBox& b) {
-  nlohmann::json j{{"lower", jsonNumbers(b.lower)}, {"upper", jsonNumbers(b.upper)}, {"threshold", jsonNumber(b.threshold)}, {"evaluations", b.evaluations}};
+  nlohmann::json j{{"lower", jsonNumbers(b.lower)},
+                   {"upper", jsonNumbers(b.upper)},
+                   {"threshold", jsonNumber(b.threshold)},
+                   {"evaluations", b.evaluations}};
   j["lower_clipped"] = b.lower_clipped;
   j["upper_clipped"] = b.upper_clipped;
   for (const auto& s : b.sweeps)
@@ -144,9 +154,14 @@ FeasibleBox boxFrom(const nlohmann::json& j) {
 
 nlohmann::json gaussNewtonJson(const JointRegionPlan& plan, const std::vector<RaySweep>& sweeps,
                                const std::vector<RidgeTrace>& traces) {
-  nlohmann::json gn{{"hessian", "J^T J of the weighted residuals, scaled coordinates"},
-                    {"eigenvalues", jsonNumbers(std::vector<double>(plan.eigenvalues.data(), plan.eigenvalues.data() + plan.eigenvalues.size()))},
-                    {"quadratic_half_width", jsonNumbers(std::vector<double>(plan.half_width.data(), plan.half_width.data() + plan.half_width.size()))}};
+  nlohmann::json gn{
+      {"hessian", "J^T J of the weighted residuals, scaled coordinates"},
+      {"eigenvalues",
+       jsonNumbers(std::vector<double>(plan.eigenvalues.data(),
+                                       plan.eigenvalues.data() + plan.eigenvalues.size()))},
+      {"quadratic_half_width",
+       jsonNumbers(std::vector<double>(plan.half_width.data(),
+                                       plan.half_width.data() + plan.half_width.size()))}};
   for (std::size_t k = 0; k < sweeps.size(); ++k)
     gn["sweeps"].push_back({{"axis", k / 2},
                             {"direction", k % 2 == 0 ? -1 : 1},
@@ -157,9 +172,15 @@ nlohmann::json gaussNewtonJson(const JointRegionPlan& plan, const std::vector<Ra
                             {"evaluations", sweeps[k].evaluations},
                             {"quadratic_guess", plan.half_width(static_cast<long>(k / 2))}});
   for (const auto& tr : traces) {
-    nlohmann::json t{{"axis", tr.axis}, {"direction", tr.direction}, {"t", tr.t}, {"sse", jsonNumbers(tr.sse)}, {"closed", tr.closed},
+    nlohmann::json t{{"axis", tr.axis},
+                     {"direction", tr.direction},
+                     {"t", tr.t},
+                     {"sse", jsonNumbers(tr.sse)},
+                     {"closed", tr.closed},
                      {"crossing", tr.crossing},
-                     {"clipped", tr.clipped}, {"evaluations", tr.evaluations}, {"message", tr.message}};
+                     {"clipped", tr.clipped},
+                     {"evaluations", tr.evaluations},
+                     {"message", tr.message}};
     gn["ridges"].push_back(t);
   }
   return gn;
@@ -167,11 +188,20 @@ nlohmann::json gaussNewtonJson(const JointRegionPlan& plan, const std::vector<Ra
 
 // ------------------------------------------------------------------ result JSON
 nlohmann::json IntegratorCheck::toJson() const {
-  return {{"steps", steps}, {"probes", probes}, {"roughness", jsonNumber(roughness)}, {"optimum_shift", jsonNumber(optimum_shift)},
+  return {{"steps", steps},
+          {"probes", probes},
+          {"roughness", jsonNumber(roughness)},
+          {"optimum_shift", jsonNumber(optimum_shift)},
           {"shift_floor", jsonNumber(shift_floor)},
-          {"accuracy", accuracy},           {"accuracy_check", accuracy_check}, {"sse", jsonNumber(sse)},
-          {"sse_check", jsonNumber(sse_check)}, {"prediction_change", jsonNumber(prediction_change)},
-          {"jitter", jsonNumber(jitter)},     {"threshold", jsonNumber(threshold)}, {"ok", ok}, {"message", message}};
+          {"accuracy", accuracy},
+          {"accuracy_check", accuracy_check},
+          {"sse", jsonNumber(sse)},
+          {"sse_check", jsonNumber(sse_check)},
+          {"prediction_change", jsonNumber(prediction_change)},
+          {"jitter", jsonNumber(jitter)},
+          {"threshold", jsonNumber(threshold)},
+          {"ok", ok},
+          {"message", message}};
 }
 
 nlohmann::json CalibrationResult::toJson() const {
@@ -180,13 +210,15 @@ nlohmann::json CalibrationResult::toJson() const {
   j["label"] = label;
   j["n_data"] = n_data;
   j["sse_min"] = jsonNumber(optimum.sse);
-  j["tau_hat"] = optimum.sse > 0 ? jsonNumber(n_data / optimum.sse) : jsonNumber(std::numeric_limits<double>::infinity());
+  j["tau_hat"] = optimum.sse > 0 ? jsonNumber(n_data / optimum.sse)
+                                 : jsonNumber(std::numeric_limits<double>::infinity());
   std::vector<double> box_lo, box_hi;
   region.boundingBox(box_lo, box_hi);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const auto& p = posterior.parameters[k];
     const bool has_profile = k < profile.lower.size();
-    const double plo = has_profile ? profile.lower[k] : p.q025, phi = has_profile ? profile.upper[k] : p.q975;
+    const double plo = has_profile ? profile.lower[k] : p.q025,
+                 phi = has_profile ? profile.upper[k] : p.q975;
     const bool use_profile = interval == "profile" && has_profile;
     nlohmann::json e{{"mean", p.mean},
                      {"sd", p.sd},
@@ -202,20 +234,24 @@ nlohmann::json CalibrationResult::toJson() const {
       e["truth"] = *truth[k];
       e["truth_in_credible95"] = *truth[k] >= p.q025 && *truth[k] <= p.q975;
       if (has_profile) e["truth_in_profile95"] = *truth[k] >= plo && *truth[k] <= phi;
-      e["truth_in_ci95"] = use_profile ? (*truth[k] >= plo && *truth[k] <= phi) : (*truth[k] >= p.q025 && *truth[k] <= p.q975);
+      e["truth_in_ci95"] = use_profile ? (*truth[k] >= plo && *truth[k] <= phi)
+                                       : (*truth[k] >= p.q025 && *truth[k] <= p.q975);
     }
     j["parameters"][names[k]] = e;
   }
   j["parameter_order"] = names;
   j["bounds"] = nlohmann::json::array();
-  for (std::size_t k = 0; k < names.size() && k < lower.size(); ++k) j["bounds"].push_back({lower[k], upper[k]});
+  for (std::size_t k = 0; k < names.size() && k < lower.size(); ++k)
+    j["bounds"].push_back({lower[k], upper[k]});
   j["units"] = units;
   j["bound_findings"] = nlohmann::json::array();
   for (const auto& f : bounds) j["bound_findings"].push_back(f.toJson());
   if (!left_out.empty()) {
     j["left_out"] = left_out;
-    j["left_out_note"] = "calibrated values of the study that this assembly's options do not have (the hub input has no tire "
-                         "stiffness or damping): not calibrated";
+    j["left_out_note"] =
+        "calibrated values of the study that this assembly's options do not have (the hub input "
+        "has no tire "
+        "stiffness or damping): not calibrated";
   }
   j["tau"] = {{"mean", posterior.tau.mean},
               {"sd", posterior.tau.sd},
@@ -231,10 +267,11 @@ nlohmann::json CalibrationResult::toJson() const {
   j["design"] = rounds.toJson(names);
   j["design"]["failures"] = design_failures;
   j["design"]["resumed_points"] = resumed_points;
-  j["design"]["method"] = rounds.rounds.size() > 1
-                              ? "Latin hypercube in the region, then stratified Gaussian rounds around the posterior; "
-                                "Griddy Gibbs with deterministic-mixture design weights"
-                              : "Latin hypercube in the region, one point per stratum per dimension";
+  j["design"]["method"] =
+      rounds.rounds.size() > 1
+          ? "Latin hypercube in the region, then stratified Gaussian rounds around the posterior; "
+            "Griddy Gibbs with deterministic-mixture design weights"
+          : "Latin hypercube in the region, one point per stratum per dimension";
   for (const auto& w : rounds.warnings) j["warnings"].push_back(w);
   for (const auto& w : warnings) j["warnings"].push_back(w);
   double best = std::numeric_limits<double>::infinity();
@@ -242,8 +279,9 @@ nlohmann::json CalibrationResult::toJson() const {
   j["design"]["sse_min"] = jsonNumber(best);
   j["design"]["better_than_optimum"] = best < optimum.sse;
   if (best < optimum.sse)
-    j["warnings"].push_back("a design point has a lower SSE (" + std::to_string(best) + ") than the optimiser's optimum (" +
-                            std::to_string(optimum.sse) + "): the optimiser stopped in a local minimum; more starts may help");
+    j["warnings"].push_back("a design point has a lower SSE (" + std::to_string(best) +
+                            ") than the optimiser's optimum (" + std::to_string(optimum.sse) +
+                            "): the optimiser stopped in a local minimum; more starts may help");
   j["gibbs"] = {{"iterations", chains.options.iterations},
                 {"burn_in", chains.options.burn_in},
                 {"draws", posterior.draws},

@@ -13,9 +13,10 @@ namespace {
 /// runs; one-sided at a bound) or, with set.forward, from r0 = r(u) to one point (m runs; backward
 /// where the forward point would leave the box). The runs go to set.threads workers; false when a
 /// simulation fails.
-bool differenceJacobian(const ScaledResiduals& residuals, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B,
-                        const Eigen::VectorXd& h, const Eigen::VectorXd& u, const Eigen::VectorXd& r0, const SubspaceLmSettings& set,
-                        Eigen::MatrixXd& J) {
+bool differenceJacobian(const ScaledResiduals& residuals, const Eigen::VectorXd& z0,
+                        const Eigen::MatrixXd& B, const Eigen::VectorXd& h,
+                        const Eigen::VectorXd& u, const Eigen::VectorXd& r0,
+                        const SubspaceLmSettings& set, Eigen::MatrixXd& J) {
   const Eigen::Index m = B.cols(), n = r0.size();
   const bool bounded = set.lower.size() == m && set.upper.size() == m;
   const std::size_t per = set.forward ? 1 : 2;
@@ -55,8 +56,8 @@ bool differenceJacobian(const ScaledResiduals& residuals, const Eigen::VectorXd&
 /// a bound whose step points out of the box is held there and the step solved again for the
 /// others (until no such coordinate is left): clipping the full step instead would move the free
 /// coordinates as if the held one had moved, and stall short of the bounded minimum.
-Eigen::VectorXd dampedStep(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, double mu, const Eigen::VectorXd& u,
-                           const SubspaceLmSettings& set, bool bounded) {
+Eigen::VectorXd dampedStep(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, double mu,
+                           const Eigen::VectorXd& u, const SubspaceLmSettings& set, bool bounded) {
   const Eigen::Index m = J.cols();
   const Eigen::MatrixXd A = J.transpose() * J;
   const Eigen::VectorXd g = J.transpose() * r;
@@ -69,7 +70,8 @@ Eigen::VectorXd dampedStep(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, d
     Eigen::VectorXd gf(k);
     for (Eigen::Index i = 0; i < k; ++i) {
       gf(i) = g(free[static_cast<std::size_t>(i)]);
-      for (Eigen::Index j = 0; j < k; ++j) Af(i, j) = A(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
+      for (Eigen::Index j = 0; j < k; ++j)
+        Af(i, j) = A(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
       Af(i, i) += mu * std::max(Af(i, i), 1e-300);
     }
     const Eigen::VectorXd sf = Af.ldlt().solve(-gf);
@@ -78,7 +80,8 @@ Eigen::VectorXd dampedStep(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, d
     for (Eigen::Index i = 0; i < k; ++i) {
       const Eigen::Index c = free[static_cast<std::size_t>(i)];
       step(c) = sf(i);
-      const bool held = bounded && ((u(c) >= set.upper(c) && sf(i) > 0) || (u(c) <= set.lower(c) && sf(i) < 0));
+      const bool held =
+          bounded && ((u(c) >= set.upper(c) && sf(i) > 0) || (u(c) <= set.lower(c) && sf(i) < 0));
       if (!held) keep.push_back(c);
     }
     if (keep.size() == free.size()) break;
@@ -90,9 +93,10 @@ Eigen::VectorXd dampedStep(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, d
 
 }  // namespace
 
-bool minimiseOnSubspace(const ScaledResiduals& residuals, const Eigen::VectorXd& z0, const Eigen::MatrixXd& B,
-                        const Eigen::VectorXd& h, int iterations, double min_gain, Eigen::VectorXd& u, Eigen::VectorXd& r,
-                        double& f, SubspaceJacobian* carried, const SubspaceLmSettings& settings) {
+bool minimiseOnSubspace(const ScaledResiduals& residuals, const Eigen::VectorXd& z0,
+                        const Eigen::MatrixXd& B, const Eigen::VectorXd& h, int iterations,
+                        double min_gain, Eigen::VectorXd& u, Eigen::VectorXd& r, double& f,
+                        SubspaceJacobian* carried, const SubspaceLmSettings& settings) {
   auto point = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return z0 + B * v; };
   if (!residuals(point(u), r)) return false;
   f = r.squaredNorm();
@@ -145,8 +149,10 @@ bool minimiseOnSubspace(const ScaledResiduals& residuals, const Eigen::VectorXd&
           f = rc.squaredNorm();
           mu = std::max(mu / 10, 1e-9);
           improved = true;
-          if (small && (fresh || !settings.converge_on_fresh)) it = iterations;  // converged
-          else if (small) jac.clear();  // a carried Jacobian's small step: fresh differences next
+          if (small && (fresh || !settings.converge_on_fresh))
+            it = iterations;  // converged
+          else if (small)
+            jac.clear();  // a carried Jacobian's small step: fresh differences next
         } else {
           mu *= 10;
         }

@@ -83,9 +83,9 @@ PosteriorSummary summarisePosterior(const Eigen::MatrixXd& design, const GibbsCh
   options.validate();
   if (chains.index.empty()) throw InputError(where, "the chain is empty (no draws after burn-in)");
   if (chains.index.size() != chains.tau.size())
-    throw InputError(where, "index and tau chains differ in length: " +
-                                std::to_string(chains.index.size()) + " vs " +
-                                std::to_string(chains.tau.size()));
+    throw InputError(
+        where, "index and tau chains differ in length: " + std::to_string(chains.index.size()) +
+                   " vs " + std::to_string(chains.tau.size()));
   if (design.rows() != chains.design_points)
     throw InputError(where, "the design has " + std::to_string(design.rows()) +
                                 " rows but the chains were run on " +
@@ -128,7 +128,8 @@ PosteriorSummary summarisePosterior(const Eigen::MatrixXd& design, const GibbsCh
     os << "design too coarse for the data: design point " << out.top_point << " carries "
        << 100.0 * out.top_share << " % of the " << S << " draws (" << out.distinct_points
        << " distinct points visited); the posterior is essentially a single point, so its "
-          "spread is not resolved. Use more design points (lhs_points, [calibration] round_points, max_rounds) or the adaptive design.";
+          "spread is not resolved. Use more design points (lhs_points, [calibration] round_points, "
+          "max_rounds) or the adaptive design.";
     out.message = os.str();
   }
   return out;

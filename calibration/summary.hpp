@@ -55,7 +55,6 @@ struct PosteriorSummary {
   std::string fullReport() const;
 };
 
-
 /// Geyer initial-monotone-sequence ESS of one chain (S >= 1). NaN for a constant chain.
 double effectiveSampleSize(const std::vector<double>& x);
 

@@ -51,7 +51,8 @@ void ClassifyOptions::validate() const {
     check.positive("prior[" + std::to_string(m) + "]", prior[m]);
     sum += prior[m];
   }
-  check.require(std::abs(sum - 1.0) <= 1e-9, "prior", "must sum to 1 within 1e-9, got " + formatNumber(sum, 17));
+  check.require(std::abs(sum - 1.0) <= 1e-9, "prior",
+                "must sum to 1 within 1e-9, got " + formatNumber(sum, 17));
 }
 
 void ClassifyOptions::validate(int models) const {
@@ -59,7 +60,8 @@ void ClassifyOptions::validate(int models) const {
   const OptionCheck check("classify");
   const auto perModel = [&](const char* field, std::size_t entries) {
     check.require(entries == 0 || static_cast<int>(entries) == models, field,
-                  "has " + std::to_string(entries) + " entries, expected " + std::to_string(models) + " (one per model)");
+                  "has " + std::to_string(entries) + " entries, expected " +
+                      std::to_string(models) + " (one per model)");
   };
   perModel("model_ids", model_ids.size());
   perModel("prior", prior.size());
@@ -196,7 +198,8 @@ std::string ClassificationResult::briefReport() const {
   for (int m = 1; m < models; ++m)
     if (total_log_likelihood[m] > total_log_likelihood[best]) best = m;
   s << "\nJoint evidence: " << model_ids[static_cast<std::size_t>(best)]
-    << " has the largest total log-likelihood (" << formatNumber(total_log_likelihood[best], 8) << ").\n";
+    << " has the largest total log-likelihood (" << formatNumber(total_log_likelihood[best], 8)
+    << ").\n";
   return s.str();
 }
 
@@ -207,8 +210,8 @@ std::string ClassificationResult::fullReport() const {
   for (int m = 0; m < models; ++m) {
     const ProbabilitySpread& p = spread[static_cast<std::size_t>(m)];
     s << "  " << model_ids[static_cast<std::size_t>(m)] << ": " << formatFixed(p.min, 4) << " / "
-      << formatFixed(p.q1, 4) << " / " << formatFixed(p.median, 4) << " / " << formatFixed(p.q3, 4) << " / "
-      << formatFixed(p.max, 4) << ", mean " << formatFixed(p.mean, 4) << "\n";
+      << formatFixed(p.q1, 4) << " / " << formatFixed(p.median, 4) << " / " << formatFixed(p.q3, 4)
+      << " / " << formatFixed(p.max, 4) << ", mean " << formatFixed(p.mean, 4) << "\n";
   }
   s << "Pairwise Bayes factors over all records (Kass-Raftery scale of 2 ln B):\n";
   for (const PairwiseEvidence& e : pairs) {

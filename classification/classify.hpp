@@ -69,21 +69,21 @@ struct ClassificationResult {
   int records = 0;  ///< R
   int models = 0;   ///< M
   std::vector<std::string> model_ids;
-  Eigen::VectorXd log_prior;      ///< M: ln π_m
-  Eigen::MatrixXd log_posterior;  ///< R×M: λ_{r,m} = ℓ_{r,m} + ln π_m (unnormalised)
-  Eigen::VectorXd log_marginal;   ///< R: LSE_m λ_{r,m}
-  Eigen::MatrixXd probability;    ///< R×M: P(M_m | y_r), rows sum to 1
-  std::vector<int> winner;        ///< R: winning model index
-  std::vector<bool> tie;          ///< R: the winner was tied (see header)
-  int tied_records = 0;           ///< number of records with tie set
-  std::vector<int> wins;          ///< M: records won by each model (Σ = R)
+  Eigen::VectorXd log_prior;              ///< M: ln π_m
+  Eigen::MatrixXd log_posterior;          ///< R×M: λ_{r,m} = ℓ_{r,m} + ln π_m (unnormalised)
+  Eigen::VectorXd log_marginal;           ///< R: LSE_m λ_{r,m}
+  Eigen::MatrixXd probability;            ///< R×M: P(M_m | y_r), rows sum to 1
+  std::vector<int> winner;                ///< R: winning model index
+  std::vector<bool> tie;                  ///< R: the winner was tied (see header)
+  int tied_records = 0;                   ///< number of records with tie set
+  std::vector<int> wins;                  ///< M: records won by each model (Σ = R)
   std::vector<ProbabilitySpread> spread;  ///< M: distribution of P(M_m | y_r) over records
   Eigen::VectorXd total_log_likelihood;   ///< M: L_m = Σ_r ℓ_{r,m}
   Eigen::VectorXd joint_probability;      ///< M: softmax(L_m + ln π_m); NaN if every L_m = −∞
   Eigen::MatrixXd log_bayes_factor;       ///< M×M: (a, b) = ln B_ab (antisymmetric)
   std::vector<PairwiseEvidence> pairs;    ///< every pair a < b, in order (0,1), (0,2), ..
-  std::string briefReport() const;  ///< a few lines: wins and the joint evidence
-  std::string fullReport() const;   ///< + the probability spread and every Bayes factor
+  std::string briefReport() const;        ///< a few lines: wins and the joint evidence
+  std::string fullReport() const;         ///< + the probability spread and every Bayes factor
 };
 
 /// Classifies the R records of `log_likelihood` (R×M, ℓ_{r,m} in row r, column m).

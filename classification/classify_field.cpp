@@ -12,11 +12,11 @@
 #include "calibration/calibrate.hpp"
 #include "classification/moments.hpp"
 #include "classification/shrinkage.hpp"
-#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "common/validate.hpp"
+#include "common/json.hpp"
 #include "common/parallel.hpp"
+#include "common/validate.hpp"
 #include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -24,7 +24,6 @@ namespace fs = std::filesystem;
 
 namespace dtwin::classify {
 namespace {
-
 
 nlohmann::json readJsonFile(const fs::path& p) {
   std::ifstream in(p);
@@ -43,24 +42,29 @@ nlohmann::json readJsonFile(const fs::path& p) {
 void FieldClassifyOptions::validate() const {
   const OptionCheck check("field_classify");
   std::set<std::string> seen;
-  for (const auto& id : assemblies) check.require(seen.insert(id).second, "assemblies", id + " appears twice");
-  check.require(covariance == "auto" || covariance == "sample" || covariance == "ledoit-wolf", "covariance",
-                "must be auto, sample or ledoit-wolf, got '" + covariance + "'");
+  for (const auto& id : assemblies)
+    check.require(seen.insert(id).second, "assemblies", id + " appears twice");
+  check.require(covariance == "auto" || covariance == "sample" || covariance == "ledoit-wolf",
+                "covariance", "must be auto, sample or ledoit-wolf, got '" + covariance + "'");
   for (const auto& [id, p] : prior)
-    check.require(std::isfinite(p) && p > 0, "prior", "the prior of " + id + " must be a finite number > 0, got " + formatNumber(p));
+    check.require(std::isfinite(p) && p > 0, "prior",
+                  "the prior of " + id + " must be a finite number > 0, got " + formatNumber(p));
   check.positive("threshold", threshold);
   check.nonNegative("tie_tolerance", tie_tolerance);
   check.atLeast("threads", threads, 0);
   factor.validate();
 }
 
-std::vector<std::pair<std::string, double>> parsePriorList(const std::string& text, const std::string& where) {
+std::vector<std::pair<std::string, double>> parsePriorList(const std::string& text,
+                                                           const std::string& where) {
   std::vector<std::pair<std::string, double>> out;
   std::set<std::string> seen;
   for (const auto& item : splitOn(text, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw InputError(where, "expects ID=PROBABILITY,... (e.g. M1=0.4,M2=0.2,M3=0.2,M4=0.2), got '" + item + "'");
+      throw InputError(
+          where,
+          "expects ID=PROBABILITY,... (e.g. M1=0.4,M2=0.2,M3=0.2,M4=0.2), got '" + item + "'");
     const std::string id = item.substr(0, eq), v = item.substr(eq + 1);
     double p = 0;
     if (!parseNumber(v, p) || !std::isfinite(p) || !(p > 0))
@@ -81,10 +85,14 @@ std::string FieldClassification::recordsCsv() const {
   for (std::size_t r = 0; r < records.size(); ++r) {
     s += std::to_string(records[r]);
     const auto ri = static_cast<Eigen::Index>(r);
-    for (Eigen::Index m = 0; m < log_likelihood.cols(); ++m) s += "," + formatExact(log_likelihood(ri, m));
-    for (Eigen::Index m = 0; m < result.log_posterior.cols(); ++m) s += "," + formatExact(result.log_posterior(ri, m));
-    for (Eigen::Index m = 0; m < result.probability.cols(); ++m) s += "," + formatExact(result.probability(ri, m));
-    s += "," + models[static_cast<std::size_t>(result.winner[r])].id + "," + (result.tie[r] ? "1" : "0") + "\n";
+    for (Eigen::Index m = 0; m < log_likelihood.cols(); ++m)
+      s += "," + formatExact(log_likelihood(ri, m));
+    for (Eigen::Index m = 0; m < result.log_posterior.cols(); ++m)
+      s += "," + formatExact(result.log_posterior(ri, m));
+    for (Eigen::Index m = 0; m < result.probability.cols(); ++m)
+      s += "," + formatExact(result.probability(ri, m));
+    s += "," + models[static_cast<std::size_t>(result.winner[r])].id + "," +
+         (result.tie[r] ? "1" : "0") + "\n";
   }
   return s;
 }
@@ -93,14 +101,16 @@ namespace {
 
 /// The assemblies to compare: those named by the options, else every assembly of the study with
 /// a synthesis in the folder.
-std::vector<AssemblySpec> comparedAssemblies(const Study& study, const fs::path& sdir, const FieldClassifyOptions& opt) {
+std::vector<AssemblySpec> comparedAssemblies(const Study& study, const fs::path& sdir,
+                                             const FieldClassifyOptions& opt) {
   std::vector<AssemblySpec> targets;
   if (opt.assemblies.empty()) {
     for (const auto& a : study.assemblies())
       if (fs::exists(sdir / a.id / "synthesis.json")) targets.push_back(a);
     if (targets.empty())
-      throw InputError(sdir.string(), "holds no synthesis of any assembly of " + study.path +
-                                          " (expected <id>/synthesis.json, written by twin synthesize)");
+      throw InputError(sdir.string(),
+                       "holds no synthesis of any assembly of " + study.path +
+                           " (expected <id>/synthesis.json, written by twin synthesize)");
   } else {
     for (const auto& id : opt.assemblies) targets.push_back(study.assembly(id));
   }
@@ -109,16 +119,19 @@ std::vector<AssemblySpec> comparedAssemblies(const Study& study, const fs::path&
 
 /// Each target's synthesis.json, checked: finished (moments.bin exists), the field data's window
 /// and channel, a recorded cost (step 1 of the file header).
-std::vector<nlohmann::json> readSyntheses(const std::vector<AssemblySpec>& targets, const fs::path& sdir, const FieldData& field,
+std::vector<nlohmann::json> readSyntheses(const std::vector<AssemblySpec>& targets,
+                                          const fs::path& sdir, const FieldData& field,
                                           const std::string& field_channel) {
   const int p = static_cast<int>(field.columnCount());
   std::vector<nlohmann::json> infos;
   for (const auto& a : targets) {
     const fs::path info_path = sdir / a.id / "synthesis.json";
     if (!fs::exists(info_path))
-      throw InputError(info_path.string(), "not found: synthesize assembly " + a.id + " first (twin synthesize)");
+      throw InputError(info_path.string(),
+                       "not found: synthesize assembly " + a.id + " first (twin synthesize)");
     if (!fs::exists(sdir / a.id / "moments.bin"))
-      throw InputError((sdir / a.id / "moments.bin").string(), "not found (the synthesis of " + a.id + " did not finish)");
+      throw InputError((sdir / a.id / "moments.bin").string(),
+                       "not found (the synthesis of " + a.id + " did not finish)");
     const nlohmann::json j = readJsonFile(info_path);
     const std::string where = info_path.string();
     try {
@@ -136,17 +149,24 @@ std::vector<nlohmann::json> readSyntheses(const std::vector<AssemblySpec>& targe
         // Two windows with the same ends and counts can still differ inside: name the first sample.
         const std::string inside =
             first_diff < 0 ? ""
-                           : "; they differ first at sample " + std::to_string(first_diff + 1) + ": " +
-                                 formatExact(w.at(0) + first_diff / rate) + " s in the synthesis (" + formatExact(rate) +
-                                 " Hz), " + formatExact(field.times_s[static_cast<std::size_t>(first_diff)]) + " s in the field data";
-        throw InputError(where, "the synthesis window (" + std::to_string(samples) + " samples, " + formatExact(w.at(0)) + ".." +
-                                    formatExact(w.at(1)) + " s) is not the field data's (" + std::to_string(p) + " samples, " +
-                                    formatExact(field.times_s.front()) + ".." + formatExact(field.times_s.back()) + " s)" +
-                                    inside + "; synthesize with the field data's window (synthesis options t_begin_s, t_end_s)");
+                           : "; they differ first at sample " + std::to_string(first_diff + 1) +
+                                 ": " + formatExact(w.at(0) + first_diff / rate) +
+                                 " s in the synthesis (" + formatExact(rate) + " Hz), " +
+                                 formatExact(field.times_s[static_cast<std::size_t>(first_diff)]) +
+                                 " s in the field data";
+        throw InputError(
+            where,
+            "the synthesis window (" + std::to_string(samples) + " samples, " +
+                formatExact(w.at(0)) + ".." + formatExact(w.at(1)) +
+                " s) is not the field data's (" + std::to_string(p) + " samples, " +
+                formatExact(field.times_s.front()) + ".." + formatExact(field.times_s.back()) +
+                " s)" + inside +
+                "; synthesize with the field data's window (synthesis options t_begin_s, t_end_s)");
       }
       const std::string ch = j.at("channel").get<std::string>();
       if (!field_channel.empty() && ch != field_channel)
-        throw InputError(where, "the synthesis is of channel " + ch + ", the field data of " + field_channel);
+        throw InputError(
+            where, "the synthesis is of channel " + ch + ", the field data of " + field_channel);
       if (!(j.at("cost").at("wall_s_per_simulated_s_median").get<double>() > 0))
         throw InputError(where, "records no cost (no successful run?)");
     } catch (const nlohmann::json::exception& e) {
@@ -159,7 +179,8 @@ std::vector<nlohmann::json> readSyntheses(const std::vector<AssemblySpec>& targe
 
 /// The covariance method for every assembly and why (step 2 of the file header): the requested
 /// one, or for "auto" Ledoit–Wolf when the smallest synthesis has fewer than 2p vectors.
-void chooseCovariance(const std::vector<nlohmann::json>& infos, int p, const std::string& requested, FieldClassification& out) {
+void chooseCovariance(const std::vector<nlohmann::json>& infos, int p, const std::string& requested,
+                      FieldClassification& out) {
   long n_min = std::numeric_limits<long>::max();
   for (const auto& j : infos) n_min = std::min(n_min, j.at("vectors").get<long>());
   if (requested != "auto") {
@@ -167,11 +188,12 @@ void chooseCovariance(const std::vector<nlohmann::json>& infos, int p, const std
     out.covariance_reason = "requested (covariance = " + requested + ")";
   } else if (n_min < 2L * p) {
     out.covariance_method = "ledoit-wolf";
-    out.covariance_reason = "automatic: the smallest synthesis has n = " + std::to_string(n_min) + " vectors < 2p = " +
-                            std::to_string(2L * p) + " (p = " + std::to_string(p) +
-                            " samples per record), so the sample covariance is " +
-                            (n_min <= p ? "singular (n <= p)" : "poorly conditioned") +
-                            "; Ledoit-Wolf shrinkage towards a scaled identity is used for every assembly";
+    out.covariance_reason =
+        "automatic: the smallest synthesis has n = " + std::to_string(n_min) +
+        " vectors < 2p = " + std::to_string(2L * p) + " (p = " + std::to_string(p) +
+        " samples per record), so the sample covariance is " +
+        (n_min <= p ? "singular (n <= p)" : "poorly conditioned") +
+        "; Ledoit-Wolf shrinkage towards a scaled identity is used for every assembly";
   } else {
     out.covariance_method = "sample";
     out.covariance_reason = "automatic: every synthesis has n >= 2p = " + std::to_string(2L * p) +
@@ -185,15 +207,17 @@ Eigen::MatrixXd recordsAsColumns(const FieldData& field) {
   const long R = static_cast<long>(field.rowCount());
   Eigen::MatrixXd Y(p, R);
   for (long r = 0; r < R; ++r)
-    for (int k = 0; k < p; ++k) Y(k, r) = field.at(static_cast<std::size_t>(r), static_cast<std::size_t>(k));
+    for (int k = 0; k < p; ++k)
+      Y(k, r) = field.at(static_cast<std::size_t>(r), static_cast<std::size_t>(k));
   return Y;
 }
 
 /// One assembly's Gaussian model (steps 2–4 of the file header): its moments, the covariance by
 /// `method`, the factor, and ℓ of every record (column of Y) into `loglik`; one assembly's p×p
 /// matrices at a time.
-AssemblyModelInfo fitAssembly(const AssemblySpec& a, const nlohmann::json& j, const fs::path& sdir, const std::string& method,
-                              const FactorOptions& factor, const Eigen::MatrixXd& Y, Eigen::Ref<Eigen::VectorXd> loglik) {
+AssemblyModelInfo fitAssembly(const AssemblySpec& a, const nlohmann::json& j, const fs::path& sdir,
+                              const std::string& method, const FactorOptions& factor,
+                              const Eigen::MatrixXd& Y, Eigen::Ref<Eigen::VectorXd> loglik) {
   const auto t0 = std::chrono::steady_clock::now();
   const int p = static_cast<int>(Y.rows());
   AssemblyModelInfo info;
@@ -216,15 +240,20 @@ AssemblyModelInfo fitAssembly(const AssemblySpec& a, const nlohmann::json& j, co
   {
     const std::string mpath = (sdir / a.id / "moments.bin").string();
     const MomentAccumulator acc = MomentAccumulator::load(mpath);
-    if (acc.dimension() != p) throw InputError(mpath, "dimension " + std::to_string(acc.dimension()) + " differs from the field data's " + std::to_string(p));
+    if (acc.dimension() != p)
+      throw InputError(mpath, "dimension " + std::to_string(acc.dimension()) +
+                                  " differs from the field data's " + std::to_string(p));
     if (acc.count() < 2) throw InputError(mpath, "holds fewer than 2 vectors; no covariance");
     info.vectors = acc.count();
     info.dimension = acc.dimension();
     mean = acc.mean();
     if (method == "ledoit-wolf") {
       if (!acc.tracksFourthMoment())
-        throw InputError(mpath, "was synthesized without the fourth moment, which Ledoit-Wolf needs; resynthesize "
-                                "(twin synthesize tracks it by default) or choose the sample covariance (option covariance)");
+        throw InputError(
+            mpath,
+            "was synthesized without the fourth moment, which Ledoit-Wolf needs; resynthesize "
+            "(twin synthesize tracks it by default) or choose the sample covariance (option "
+            "covariance)");
       LedoitWolfEstimate lw = calcLedoitWolf(acc, true);
       info.shrinkage_intensity = lw.intensity;
       cov = std::move(lw.covariance);
@@ -250,7 +279,8 @@ AssemblyModelInfo fitAssembly(const AssemblySpec& a, const nlohmann::json& j, co
 
 /// The options of classifyRecords: the compared ids, the tie tolerance, and the priors in
 /// comparison order (every compared assembly needs one when any is given).
-ClassifyOptions recordOptions(const std::vector<AssemblySpec>& targets, const FieldClassifyOptions& opt) {
+ClassifyOptions recordOptions(const std::vector<AssemblySpec>& targets,
+                              const FieldClassifyOptions& opt) {
   const OptionCheck check("field_classify");
   ClassifyOptions co;
   for (const auto& a : targets) co.model_ids.push_back(a.id);
@@ -265,16 +295,20 @@ ClassifyOptions recordOptions(const std::vector<AssemblySpec>& targets, const Fi
     double v = -1;
     for (const auto& [id, pv] : opt.prior)
       if (id == a.id) v = pv;
-    check.require(v >= 0, "prior", "gives no probability for " + a.id + " (give one for every compared assembly)");
+    check.require(v >= 0, "prior",
+                  "gives no probability for " + a.id + " (give one for every compared assembly)");
     co.prior.push_back(v);
   }
   return co;
 }
 
 /// summary.json (FieldClassification::summary) of a finished classification.
-nlohmann::json classificationSummary(const Study& study, const FieldData& field, const std::string& field_channel,
-                                     const std::string& synthetic_dir, const FieldClassifyOptions& opt,
-                                     const nlohmann::json& field_info, const std::vector<std::string>& ids,
+nlohmann::json classificationSummary(const Study& study, const FieldData& field,
+                                     const std::string& field_channel,
+                                     const std::string& synthetic_dir,
+                                     const FieldClassifyOptions& opt,
+                                     const nlohmann::json& field_info,
+                                     const std::vector<std::string>& ids,
                                      const FieldClassification& out) {
   const int M = static_cast<int>(ids.size());
   nlohmann::json s;
@@ -287,14 +321,18 @@ nlohmann::json classificationSummary(const Study& study, const FieldData& field,
   if (!field_channel.empty()) s["field"]["channel"] = field_channel;
   s["synthetic_dir"] = synthetic_dir;
   s["assemblies"] = ids;
-  for (int m = 0; m < M; ++m) s["prior"][ids[static_cast<std::size_t>(m)]] = std::exp(out.result.log_prior[m]);
-  s["covariance"] = {{"method", out.covariance_method}, {"reason", out.covariance_reason}, {"requested", opt.covariance}};
+  for (int m = 0; m < M; ++m)
+    s["prior"][ids[static_cast<std::size_t>(m)]] = std::exp(out.result.log_prior[m]);
+  s["covariance"] = {{"method", out.covariance_method},
+                     {"reason", out.covariance_reason},
+                     {"requested", opt.covariance}};
   for (int m = 0; m < M; ++m) {
     const auto& info = out.models[static_cast<std::size_t>(m)];
     const auto& id = info.id;
     s["wins"][id] = out.result.wins[static_cast<std::size_t>(m)];
     const auto& sp = out.result.spread[static_cast<std::size_t>(m)];
-    s["probability"][id] = {{"min", sp.min}, {"q1", sp.q1}, {"median", sp.median}, {"q3", sp.q3}, {"max", sp.max}, {"mean", sp.mean}};
+    s["probability"][id] = {{"min", sp.min}, {"q1", sp.q1},   {"median", sp.median},
+                            {"q3", sp.q3},   {"max", sp.max}, {"mean", sp.mean}};
     s["total_log_likelihood"][id] = jsonNumber(out.result.total_log_likelihood[m]);
     s["joint_probability"][id] = jsonNumber(out.result.joint_probability[m]);
     s["factorization"][id] = info.factorization;
@@ -317,27 +355,33 @@ nlohmann::json classificationSummary(const Study& study, const FieldData& field,
   s["tied_records"] = out.result.tied_records;
   s["bayes_factors"] = nlohmann::json::array();
   for (const auto& pr : out.result.pairs)
-    s["bayes_factors"].push_back({{"a", ids[static_cast<std::size_t>(pr.a)]},
-                                  {"b", ids[static_cast<std::size_t>(pr.b)]},
-                                  {"two_ln_b", jsonNumber(pr.two_ln_b)},
-                                  {"log_bayes_factor", jsonNumber(pr.log_bayes_factor)},
-                                  {"favoured", pr.favoured >= 0 ? nlohmann::json(ids[static_cast<std::size_t>(pr.favoured)]) : nlohmann::json(nullptr)},
-                                  {"category", pr.category},
-                                  {"meaning", "2 ln B_ab = 2 sum_r (loglik_a - loglik_b) over all records; Kass-Raftery scale"}});
+    s["bayes_factors"].push_back(
+        {{"a", ids[static_cast<std::size_t>(pr.a)]},
+         {"b", ids[static_cast<std::size_t>(pr.b)]},
+         {"two_ln_b", jsonNumber(pr.two_ln_b)},
+         {"log_bayes_factor", jsonNumber(pr.log_bayes_factor)},
+         {"favoured", pr.favoured >= 0 ? nlohmann::json(ids[static_cast<std::size_t>(pr.favoured)])
+                                       : nlohmann::json(nullptr)},
+         {"category", pr.category},
+         {"meaning",
+          "2 ln B_ab = 2 sum_r (loglik_a - loglik_b) over all records; Kass-Raftery scale"}});
   const auto& rec = out.recommendation;
   s["recommended"] = rec.recommended;
   s["recommendation_sentence"] = rec.explanation;
   nlohmann::json tl = nlohmann::json::object();
-  for (int m = 0; m < M; ++m) tl[ids[static_cast<std::size_t>(m)]] = jsonNumber(rec.two_ln_b[static_cast<std::size_t>(m)]);
-  s["recommendation"] = {{"recommended", rec.recommended},
-                         {"best_by_evidence", rec.best},
-                         {"candidates", rec.candidates},
-                         {"two_ln_b_vs_best", tl},
-                         {"cost_ratio_best_to_recommended", rec.cost_ratio},
-                         {"threshold_two_ln_b", opt.threshold},
-                         {"rule", "the cheapest assembly (median wall s per simulated s of its synthesis runs) whose joint "
-                                  "evidence is not decisively worse than the best: 2 (L_best - L_m) < threshold"},
-                         {"sentence", rec.explanation}};
+  for (int m = 0; m < M; ++m)
+    tl[ids[static_cast<std::size_t>(m)]] = jsonNumber(rec.two_ln_b[static_cast<std::size_t>(m)]);
+  s["recommendation"] = {
+      {"recommended", rec.recommended},
+      {"best_by_evidence", rec.best},
+      {"candidates", rec.candidates},
+      {"two_ln_b_vs_best", tl},
+      {"cost_ratio_best_to_recommended", rec.cost_ratio},
+      {"threshold_two_ln_b", opt.threshold},
+      {"rule",
+       "the cheapest assembly (median wall s per simulated s of its synthesis runs) whose joint "
+       "evidence is not decisively worse than the best: 2 (L_best - L_m) < threshold"},
+      {"sentence", rec.explanation}};
   s["report"] = out.result.fullReport();
   return s;
 }
@@ -347,11 +391,13 @@ nlohmann::json classificationSummary(const Study& study, const FieldData& field,
 // The steps of the file header: the compared assemblies and their syntheses → the covariance
 // method → one Gaussian model per assembly and ℓ of every record → classification →
 // recommendation → summary.json.
-FieldClassification classifyField(const Study& study, const FieldData& field, const std::string& field_channel,
+FieldClassification classifyField(const Study& study, const FieldData& field,
+                                  const std::string& field_channel,
                                   const std::string& synthetic_dir, const FieldClassifyOptions& opt,
                                   const nlohmann::json& field_info) {
   opt.validate();
-  if (field.rowCount() == 0 || field.columnCount() == 0) throw InputError("field data", "holds no records");
+  if (field.rowCount() == 0 || field.columnCount() == 0)
+    throw InputError("field data", "holds no records");
   const fs::path sdir(synthetic_dir);
   if (!fs::is_directory(sdir)) throw InputError(synthetic_dir, "synthetic data folder not found");
   const std::vector<AssemblySpec> targets = comparedAssemblies(study, sdir, opt);
@@ -374,7 +420,8 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
   for (Eigen::Index r = 0; r < out.log_likelihood.rows(); ++r)
     for (int m = 0; m < M; ++m)
       if (std::isnan(out.log_likelihood(r, m)))
-        throw InputError("field record " + std::to_string(field.runs[static_cast<std::size_t>(r)]), "log likelihood is NaN");
+        throw InputError("field record " + std::to_string(field.runs[static_cast<std::size_t>(r)]),
+                         "log likelihood is NaN");
 
   const ClassifyOptions co = recordOptions(targets, opt);
   out.result = classifyRecords(out.log_likelihood, co);
@@ -383,32 +430,38 @@ FieldClassification classifyField(const Study& study, const FieldData& field, co
   std::vector<ModelCost> mc;
   mc.reserve(static_cast<std::size_t>(M));
   for (int m = 0; m < M; ++m)
-    mc.push_back({targets[static_cast<std::size_t>(m)].id, out.result.total_log_likelihood[m], out.models[static_cast<std::size_t>(m)].cost_s_per_s});
+    mc.push_back({targets[static_cast<std::size_t>(m)].id, out.result.total_log_likelihood[m],
+                  out.models[static_cast<std::size_t>(m)].cost_s_per_s});
   RecommendOptions ro;
   ro.threshold = opt.threshold;
   out.recommendation = recommendAssembly(mc, ro);
-  out.summary = classificationSummary(study, field, field_channel, synthetic_dir, opt, field_info, co.model_ids, out);
+  out.summary = classificationSummary(study, field, field_channel, synthetic_dir, opt, field_info,
+                                      co.model_ids, out);
   return out;
 }
 
-FieldClassification classifyFieldFile(const Study& study, const std::string& field_csv, const std::string& synthetic_dir,
+FieldClassification classifyFieldFile(const Study& study, const std::string& field_csv,
+                                      const std::string& synthetic_dir,
                                       const FieldClassifyOptions& options) {
   if (!fs::exists(field_csv)) throw InputError(field_csv, "field data file not found");
   const FieldData field = readFieldCsv(field_csv);
   std::string channel;
-  nlohmann::json info{{"path", field_csv}, {"fnv1a64", hexId(calib::fnv1a64(readTextFile(field_csv)))}};
+  nlohmann::json info{{"path", field_csv},
+                      {"fnv1a64", hexId(calib::fnv1a64(readTextFile(field_csv)))}};
   const std::string side = sidecarPath(field_csv);
   if (fs::exists(side)) {
     try {
       const nlohmann::json j = readJsonFile(side);
-      if (j.contains("field") && j["field"].contains("channel")) channel = j["field"]["channel"].get<std::string>();
+      if (j.contains("field") && j["field"].contains("channel"))
+        channel = j["field"]["channel"].get<std::string>();
       info["sidecar"] = side;
       if (j.contains("assembly")) info["generated_by"] = j["assembly"];
     } catch (const nlohmann::json::exception&) {
       // a sidecar we cannot read says nothing about the channel
     }
   }
-  if (channel.empty()) info["channel_note"] = "no sidecar with the channel: assumed to be the synthesis's";
+  if (channel.empty())
+    info["channel_note"] = "no sidecar with the channel: assumed to be the synthesis's";
   return classifyField(study, field, channel, synthetic_dir, options, info);
 }
 

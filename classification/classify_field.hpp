@@ -1,6 +1,6 @@
 #pragma once
-// Classification of field records among synthesized assemblies (docs/method.md §5, bullets 2–4): the
-// glue between synthesis.hpp (moments.bin + synthesis.json per assembly), the mathematics
+// Classification of field records among synthesized assemblies (docs/method.md §5, bullets 2–4):
+// the glue between synthesis.hpp (moments.bin + synthesis.json per assembly), the mathematics
 // (moments, shrinkage, mvn, classify, recommend) and the output files. `twin classify` is a thin
 // front end to this; `twin study` can call it too.
 //
@@ -52,7 +52,7 @@ struct FieldClassifyOptions {
   /// Assemblies whose models are built at once (0: all cores); each holds its p×p matrices
   /// (about 0.6 GB at p = 5001). Never changes the numbers.
   int threads = 0;
-  std::string command;      ///< recorded in summary.json
+  std::string command;  ///< recorded in summary.json
   /// InputError whose where() is "field_classify.<field>" (common/validate.hpp): no assembly twice,
   /// a known covariance, each prior finite and > 0, threshold finite and > 0, tie_tolerance
   /// finite and >= 0, and factor.validate().
@@ -61,22 +61,22 @@ struct FieldClassifyOptions {
 
 struct AssemblyModelInfo {
   std::string id, label, dir;
-  std::int64_t vectors = 0;  ///< n
-  int dimension = 0;         ///< p
-  std::string covariance;    ///< "sample" | "ledoit-wolf"
+  std::int64_t vectors = 0;          ///< n
+  int dimension = 0;                 ///< p
+  std::string covariance;            ///< "sample" | "ledoit-wolf"
   double shrinkage_intensity = 0.0;  ///< Ledoit–Wolf ρ (0 for the sample covariance)
   std::string factorization;         ///< GaussianModel::factorization()
   double jitter = 0.0, jitter_absolute = 0.0, log_det = 0.0, relative_min_pivot = 0.0;
-  double cost_s_per_s = 0.0;         ///< from synthesis.json
-  double build_wall_s = 0.0;         ///< load + covariance + factor + evaluate
-  nlohmann::json synthesis;          ///< selected fields of synthesis.json
+  double cost_s_per_s = 0.0;  ///< from synthesis.json
+  double build_wall_s = 0.0;  ///< load + covariance + factor + evaluate
+  nlohmann::json synthesis;   ///< selected fields of synthesis.json
 };
 
 struct FieldClassification {
-  std::vector<long> records;               ///< field run numbers
-  std::vector<AssemblyModelInfo> models;   ///< in comparison order
+  std::vector<long> records;              ///< field run numbers
+  std::vector<AssemblyModelInfo> models;  ///< in comparison order
   std::string covariance_method, covariance_reason;
-  Eigen::MatrixXd log_likelihood;          ///< R×M: ℓ_{r,m}
+  Eigen::MatrixXd log_likelihood;  ///< R×M: ℓ_{r,m}
   ClassificationResult result;
   Recommendation recommendation;
   /// summary.json: wins (id → count), tied_records, probability (id → min, q1, median, q3, max,
@@ -95,18 +95,22 @@ struct FieldClassification {
 /// sidecar says it; "" skips the check). `field_info` goes into summary.json as provenance.
 /// InputError for a bad option, a missing or mismatching synthesis, a Ledoit–Wolf request on
 /// moments without the fourth moment, or a covariance no factorisation accepts.
-FieldClassification classifyField(const Study& study, const FieldData& field, const std::string& field_channel,
-                                  const std::string& synthetic_dir, const FieldClassifyOptions& options,
+FieldClassification classifyField(const Study& study, const FieldData& field,
+                                  const std::string& field_channel,
+                                  const std::string& synthetic_dir,
+                                  const FieldClassifyOptions& options,
                                   const nlohmann::json& field_info = nullptr);
 
 /// Reads a field CSV (and its sidecar FILE.json when present, for the channel) and classifies it.
-FieldClassification classifyFieldFile(const Study& study, const std::string& field_csv, const std::string& synthetic_dir,
+FieldClassification classifyFieldFile(const Study& study, const std::string& field_csv,
+                                      const std::string& synthetic_dir,
                                       const FieldClassifyOptions& options);
 
 /// Writes out_dir/records.csv and out_dir/summary.json atomically.
 void writeFieldClassification(const FieldClassification& c, const std::string& out_dir);
 
 /// Parses "M1=0.25,M2=0.25,..." (CLI --prior); `where` prefixes errors.
-std::vector<std::pair<std::string, double>> parsePriorList(const std::string& text, const std::string& where);
+std::vector<std::pair<std::string, double>> parsePriorList(const std::string& text,
+                                                           const std::string& where);
 
 }  // namespace dtwin::classify

@@ -14,7 +14,9 @@ constexpr const char* kTreeWhere = "moment tree";
 bool siblings(int left_level, long left_index, int right_level, long right_index) {
   return left_level == right_level && left_index % 2 == 0 && right_index == left_index + 1;
 }
-bool siblings(const TreeNode& left, const TreeNode& right) { return siblings(left.level, left.index, right.level, right.index); }
+bool siblings(const TreeNode& left, const TreeNode& right) {
+  return siblings(left.level, left.index, right.level, right.index);
+}
 
 /// True when node (level, index) of an n-leaf tree is its own parent: a left child whose right
 /// sibling would start at or after leaf n (and not the root).
@@ -28,9 +30,11 @@ long nodeEnd(const TreeNode& node, long n) { return std::min(n, (node.index + 1)
 }  // namespace
 
 MomentTree::MomentTree(long leaves, long first) : n_(leaves), first_(first), end_(first) {
-  if (leaves < 1) throw InputError(kTreeWhere, "needs at least 1 leaf, got " + std::to_string(leaves));
+  if (leaves < 1)
+    throw InputError(kTreeWhere, "needs at least 1 leaf, got " + std::to_string(leaves));
   if (first < 0 || first > leaves)
-    throw InputError(kTreeWhere, "a range must start within [0, " + std::to_string(leaves) + "], got " + std::to_string(first));
+    throw InputError(kTreeWhere, "a range must start within [0, " + std::to_string(leaves) +
+                                     "], got " + std::to_string(first));
 }
 
 // Appends a node that starts at end_ and merges while the tail allows: two siblings become their
@@ -61,7 +65,8 @@ void MomentTree::push(TreeNode node) {
 }
 
 void MomentTree::pushLeaf(MomentAccumulator leaf) {
-  if (end_ >= n_) throw InputError(kTreeWhere, "all " + std::to_string(n_) + " leaves are present already");
+  if (end_ >= n_)
+    throw InputError(kTreeWhere, "all " + std::to_string(n_) + " leaves are present already");
   TreeNode node;
   node.level = 0;
   node.index = end_;
@@ -71,21 +76,25 @@ void MomentTree::pushLeaf(MomentAccumulator leaf) {
 
 void MomentTree::append(MomentTree&& right) {
   if (right.n_ != n_ || right.first_ != end_)
-    throw InputError(kTreeWhere, "cannot append leaves [" + std::to_string(right.first_) + ", " + std::to_string(right.end_) +
-                                     ") of a " + std::to_string(right.n_) + "-leaf tree after leaves [" + std::to_string(first_) +
-                                     ", " + std::to_string(end_) + ") of a " + std::to_string(n_) + "-leaf tree");
+    throw InputError(kTreeWhere, "cannot append leaves [" + std::to_string(right.first_) + ", " +
+                                     std::to_string(right.end_) + ") of a " +
+                                     std::to_string(right.n_) + "-leaf tree after leaves [" +
+                                     std::to_string(first_) + ", " + std::to_string(end_) +
+                                     ") of a " + std::to_string(n_) + "-leaf tree");
   for (auto& node : right.nodes_) push(std::move(node));
   right.nodes_.clear();
   right.first_ = right.end_;
 }
 
 const MomentAccumulator& MomentTree::root() const {
-  DTWIN_CHECK(complete() && nodes_.size() == 1, "moment tree: the root is asked for before every leaf is in");
+  DTWIN_CHECK(complete() && nodes_.size() == 1,
+              "moment tree: the root is asked for before every leaf is in");
   return nodes_.front().acc;
 }
 
 MomentAccumulator MomentTree::takeRoot() {
-  DTWIN_CHECK(complete() && nodes_.size() == 1, "moment tree: the root is asked for before every leaf is in");
+  DTWIN_CHECK(complete() && nodes_.size() == 1,
+              "moment tree: the root is asked for before every leaf is in");
   return std::move(nodes_.front().acc);
 }
 
@@ -95,7 +104,8 @@ long MomentTree::nodeCount(long leaves, long first, long end) {
     nodes.emplace_back(0, leaf);
     for (;;) {
       auto& last = nodes.back();
-      if (nodes.size() >= 2 && siblings(nodes[nodes.size() - 2].first, nodes[nodes.size() - 2].second, last.first, last.second)) {
+      if (nodes.size() >= 2 && siblings(nodes[nodes.size() - 2].first,
+                                        nodes[nodes.size() - 2].second, last.first, last.second)) {
         nodes.pop_back();
       } else if (!promotable(last.first, last.second, leaves)) {
         break;
@@ -107,28 +117,33 @@ long MomentTree::nodeCount(long leaves, long first, long end) {
   return static_cast<long>(nodes.size());
 }
 
-MomentTree MomentTree::fromNodes(long leaves, long first, std::vector<TreeNode> nodes, const std::string& where) {
+MomentTree MomentTree::fromNodes(long leaves, long first, std::vector<TreeNode> nodes,
+                                 const std::string& where) {
   MomentTree t(leaves, first);
   for (auto& node : nodes) {
-    if (node.level < 0 || node.level > 62 || node.index < 0 || node.firstLeaf() != t.end_ || node.firstLeaf() >= leaves)
-      throw InputError(where, "node (" + std::to_string(node.level) + ", " + std::to_string(node.index) +
-                                  ") does not continue the leaves [" + std::to_string(first) + ", " + std::to_string(t.end_) + ")");
+    if (node.level < 0 || node.level > 62 || node.index < 0 || node.firstLeaf() != t.end_ ||
+        node.firstLeaf() >= leaves)
+      throw InputError(where, "node (" + std::to_string(node.level) + ", " +
+                                  std::to_string(node.index) + ") does not continue the leaves [" +
+                                  std::to_string(first) + ", " + std::to_string(t.end_) + ")");
     t.end_ = nodeEnd(node, leaves);
     t.nodes_.push_back(std::move(node));
   }
   // Canonical: no two neighbours are siblings and no node could be promoted.
   for (std::size_t i = 0; i < t.nodes_.size(); ++i) {
     const TreeNode& node = t.nodes_[i];
-    if ((i + 1 < t.nodes_.size() && siblings(node, t.nodes_[i + 1])) || promotable(node.level, node.index, leaves))
-      throw InputError(where, "node (" + std::to_string(node.level) + ", " + std::to_string(node.index) +
+    if ((i + 1 < t.nodes_.size() && siblings(node, t.nodes_[i + 1])) ||
+        promotable(node.level, node.index, leaves))
+      throw InputError(where, "node (" + std::to_string(node.level) + ", " +
+                                  std::to_string(node.index) +
                                   ") should have been merged with its sibling");
   }
   return t;
 }
 
 std::vector<double> MomentTree::toVector() const {
-  std::vector<double> v{static_cast<double>(n_), static_cast<double>(first_), static_cast<double>(end_),
-                        static_cast<double>(nodes_.size())};
+  std::vector<double> v{static_cast<double>(n_), static_cast<double>(first_),
+                        static_cast<double>(end_), static_cast<double>(nodes_.size())};
   for (const auto& node : nodes_) {
     const std::vector<double> a = node.acc.toVector();
     v.push_back(node.level);
@@ -144,11 +159,12 @@ MomentTree MomentTree::fromVector(const std::vector<double>& v) {
   auto whole = [&](std::size_t at, const char* what) {
     if (at >= v.size()) throw InputError(where, std::string("ends before its ") + what);
     const double x = v[at];
-    if (!(x >= 0) || x != std::floor(x) || x > 9.0e15) throw InputError(where, std::string(what) + " is not a count");
+    if (!(x >= 0) || x != std::floor(x) || x > 9.0e15)
+      throw InputError(where, std::string(what) + " is not a count");
     return static_cast<long>(x);
   };
-  const long leaves = whole(0, "leaf count"), first = whole(1, "first leaf"), end = whole(2, "end leaf"),
-             count = whole(3, "node count");
+  const long leaves = whole(0, "leaf count"), first = whole(1, "first leaf"),
+             end = whole(2, "end leaf"), count = whole(3, "node count");
   std::size_t at = 4;
   std::vector<TreeNode> nodes;
   for (long k = 0; k < count; ++k) {
@@ -158,13 +174,17 @@ MomentTree MomentTree::fromVector(const std::vector<double>& v) {
     const std::size_t len = static_cast<std::size_t>(whole(at + 2, "node length"));
     at += 3;
     if (at + len > v.size()) throw InputError(where, "ends inside node " + std::to_string(k));
-    node.acc = MomentAccumulator::fromVector(std::vector<double>(v.begin() + static_cast<long>(at), v.begin() + static_cast<long>(at + len)));
+    node.acc = MomentAccumulator::fromVector(std::vector<double>(
+        v.begin() + static_cast<long>(at), v.begin() + static_cast<long>(at + len)));
     at += len;
     nodes.push_back(std::move(node));
   }
-  if (at != v.size()) throw InputError(where, "has " + std::to_string(v.size() - at) + " values after its last node");
+  if (at != v.size())
+    throw InputError(where, "has " + std::to_string(v.size() - at) + " values after its last node");
   MomentTree t = fromNodes(leaves, first, std::move(nodes), where);
-  if (t.end_ != end) throw InputError(where, "its nodes end at leaf " + std::to_string(t.end_) + ", not " + std::to_string(end));
+  if (t.end_ != end)
+    throw InputError(
+        where, "its nodes end at leaf " + std::to_string(t.end_) + ", not " + std::to_string(end));
   return t;
 }
 

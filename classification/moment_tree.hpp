@@ -7,7 +7,8 @@
 // added with MomentAccumulator::addBlock in block order, starting from an empty accumulator).
 // Node (level l, index i) covers the leaves [i·2^l, (i+1)·2^l) ∩ [0, n):
 //     node(0, i)     = leaf i
-//     node(l + 1, k) = node(l, 2k).merge(node(l, 2k + 1)), or node(l, 2k) alone when node(l, 2k + 1)
+//     node(l + 1, k) = node(l, 2k).merge(node(l, 2k + 1)), or node(l, 2k) alone when node(l, 2k +
+//     1)
 //                      covers no leaf (it would start at or after n).
 // The result is node(L, 0) with 2^L >= n. Each node is a function of its leaves only, so any set
 // of workers that computes disjoint nodes and merges siblings gives the result bit for bit
@@ -62,7 +63,8 @@ class MomentTree {
   static long nodeCount(long leaves, long first, long end);
   /// Rebuilds a range from its nodes (for a checkpoint): they must be the canonical list of
   /// [first, end) (InputError naming `where` otherwise).
-  static MomentTree fromNodes(long leaves, long first, std::vector<TreeNode> nodes, const std::string& where);
+  static MomentTree fromNodes(long leaves, long first, std::vector<TreeNode> nodes,
+                              const std::string& where);
 
   /// Flat form, all doubles: leaves, first, end, node count, then per node level, index, length
   /// of its MomentAccumulator::toVector() and that vector.

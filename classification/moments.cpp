@@ -27,7 +27,9 @@ std::size_t flatSize(std::size_t p, bool track) {
 }
 
 // A stored count or dimension must be a non-negative integer below 2^53.
-bool isCount(double v) { return std::isfinite(v) && v >= 0 && v <= 9007199254740992.0 && v == std::floor(v); }
+bool isCount(double v) {
+  return std::isfinite(v) && v >= 0 && v <= 9007199254740992.0 && v == std::floor(v);
+}
 
 }  // namespace
 
@@ -46,13 +48,13 @@ void MomentAccumulator::checkVector(const Eigen::Ref<const Eigen::VectorXd>& x, 
   const std::string name =
       column < 0 ? std::string(what) : std::string(what) + " column " + std::to_string(column);
   if (x.size() != p_)
-    throw InputError(kMomentsWhere, name + " has length " + std::to_string(x.size()) + ", expected " +
-                                 std::to_string(p_));
+    throw InputError(kMomentsWhere, name + " has length " + std::to_string(x.size()) +
+                                        ", expected " + std::to_string(p_));
   if (!x.allFinite()) {
     Eigen::Index i = 0;
     while (std::isfinite(x[i])) ++i;
-    throw InputError(kMomentsWhere, name + " entry " + std::to_string(i) + " is " + formatNumber(x[i], 17) +
-                                 " (must be finite)");
+    throw InputError(kMomentsWhere, name + " entry " + std::to_string(i) + " is " +
+                                        formatNumber(x[i], 17) + " (must be finite)");
   }
 }
 
@@ -86,10 +88,10 @@ void MomentAccumulator::mergeSet(std::int64_t nb, const Eigen::VectorXd& mean_b,
     const Eigen::VectorXd m2b_db = m2b_times(d_b);
     const double sa = d_a.squaredNorm();
     const double sb = d_b.squaredNorm();
-    const double q_a = q_ + 4.0 * d_a.dot(m2a_da) + na * sa * sa - 4.0 * t_.dot(d_a) +
-                       2.0 * sa * tr_a;
-    const double q_bc = q_b + 4.0 * d_b.dot(m2b_db) + nbd * sb * sb - 4.0 * t_b->dot(d_b) +
-                        2.0 * sb * trace_m2b;
+    const double q_a =
+        q_ + 4.0 * d_a.dot(m2a_da) + na * sa * sa - 4.0 * t_.dot(d_a) + 2.0 * sa * tr_a;
+    const double q_bc =
+        q_b + 4.0 * d_b.dot(m2b_db) + nbd * sb * sb - 4.0 * t_b->dot(d_b) + 2.0 * sb * trace_m2b;
     const Eigen::VectorXd t_a = t_ - 2.0 * m2a_da - tr_a * d_a - (na * sa) * d_a;
     const Eigen::VectorXd t_bc = *t_b - 2.0 * m2b_db - trace_m2b * d_b - (nbd * sb) * d_b;
     q_ = q_a + q_bc;
@@ -123,7 +125,7 @@ void MomentAccumulator::add(const Eigen::VectorXd& x) {
 void MomentAccumulator::addBlock(const Eigen::MatrixXd& X) {
   if (X.rows() != p_)
     throw InputError(kMomentsWhere, "block has " + std::to_string(X.rows()) + " rows, expected " +
-                                 std::to_string(p_));
+                                        std::to_string(p_));
   if (X.cols() < 1) throw InputError(kMomentsWhere, "block has no columns");
   for (Eigen::Index j = 0; j < X.cols(); ++j) checkVector(X.col(j), "block", j);
   const Eigen::Index k = X.cols();
@@ -134,9 +136,9 @@ void MomentAccumulator::addBlock(const Eigen::MatrixXd& X) {
   double q_b = 0.0, trace_b = 0.0;
   if (track_) {
     const Eigen::RowVectorXd q = c.colwise().squaredNorm();  // q_j = ‖c_j‖²
-    t_b = c * q.transpose();                                   // T_B = C q
-    q_b = q.squaredNorm();                                     // Q_B = Σ q_j²
-    trace_b = q.sum();                                         // tr(M2_B) = Σ q_j
+    t_b = c * q.transpose();                                 // T_B = C q
+    q_b = q.squaredNorm();                                   // Q_B = Σ q_j²
+    trace_b = q.sum();                                       // tr(M2_B) = Σ q_j
   }
   mergeSet(
       k, mean_b, [&](const Eigen::VectorXd& d) { return Eigen::VectorXd(c * (c.transpose() * d)); },
@@ -146,13 +148,13 @@ void MomentAccumulator::addBlock(const Eigen::MatrixXd& X) {
 void MomentAccumulator::merge(const MomentAccumulator& other) {
   if (other.p_ != p_)
     throw InputError(kMomentsWhere, "cannot merge an accumulator of dimension " +
-                                 std::to_string(other.p_) + " into one of dimension " +
-                                 std::to_string(p_));
+                                        std::to_string(other.p_) + " into one of dimension " +
+                                        std::to_string(p_));
   if (other.track_ != track_)
     throw InputError(kMomentsWhere, std::string("cannot merge accumulators with different "
-                                         "track_fourth_moment (") +
-                                 (track_ ? "true" : "false") + " vs " +
-                                 (other.track_ ? "true" : "false") + ")");
+                                                "track_fourth_moment (") +
+                                        (track_ ? "true" : "false") + " vs " +
+                                        (other.track_ ? "true" : "false") + ")");
   if (&other == this) {  // merging with itself: work on a copy
     // NOLINTNEXTLINE(performance-unnecessary-copy-initialization): merge() changes other (*this)
     const MomentAccumulator copy = other;
@@ -170,7 +172,8 @@ void MomentAccumulator::merge(const MomentAccumulator& other) {
 
 Eigen::MatrixXd MomentAccumulator::covariance() const {
   if (n_ < 2)
-    throw InputError(kMomentsWhere, "covariance needs at least 2 vectors, got " + std::to_string(n_));
+    throw InputError(kMomentsWhere,
+                     "covariance needs at least 2 vectors, got " + std::to_string(n_));
   Eigen::MatrixXd s = m2_.selfadjointView<Eigen::Upper>();
   s /= static_cast<double>(n_ - 1);
   return s;
@@ -178,13 +181,15 @@ Eigen::MatrixXd MomentAccumulator::covariance() const {
 
 const Eigen::VectorXd& MomentAccumulator::getThirdMoment() const {
   if (!track_)
-    throw InputError(kMomentsWhere, "third moment not tracked (set MomentOptions::track_fourth_moment)");
+    throw InputError(kMomentsWhere,
+                     "third moment not tracked (set MomentOptions::track_fourth_moment)");
   return t_;
 }
 
 double MomentAccumulator::getFourthMoment() const {
   if (!track_)
-    throw InputError(kMomentsWhere, "fourth moment not tracked (set MomentOptions::track_fourth_moment)");
+    throw InputError(kMomentsWhere,
+                     "fourth moment not tracked (set MomentOptions::track_fourth_moment)");
   return q_;
 }
 
@@ -215,9 +220,11 @@ MomentAccumulator MomentAccumulator::fromVector(const std::vector<double>& v) {
     throw InputError(where, "has " + std::to_string(v.size()) + " values, fewer than the " +
                                 std::to_string(kHeader) + "-value header");
   if (v[0] != kFlatMagic)
-    throw InputError(where, "header[0] (magic) is " + formatNumber(v[0], 17) + ", expected " + formatNumber(kFlatMagic, 17));
+    throw InputError(where, "header[0] (magic) is " + formatNumber(v[0], 17) + ", expected " +
+                                formatNumber(kFlatMagic, 17));
   if (v[1] != kFormatVersion)
-    throw InputError(where, "header[1] (format version) is " + formatNumber(v[1], 17) + ", expected 1");
+    throw InputError(where,
+                     "header[1] (format version) is " + formatNumber(v[1], 17) + ", expected 1");
   if (!isCount(v[2]) || v[2] < 1 || v[2] > 1e6)
     throw InputError(where, "header[2] (dimension) is " + formatNumber(v[2], 17) +
                                 ", expected an integer in [1, 1e6]");
@@ -225,7 +232,8 @@ MomentAccumulator MomentAccumulator::fromVector(const std::vector<double>& v) {
     throw InputError(where, "header[3] (count) is " + formatNumber(v[3], 17) +
                                 ", expected a non-negative integer");
   if (v[4] != 0.0 && v[4] != 1.0)
-    throw InputError(where, "header[4] (track flag) is " + formatNumber(v[4], 17) + ", expected 0 or 1");
+    throw InputError(where,
+                     "header[4] (track flag) is " + formatNumber(v[4], 17) + ", expected 0 or 1");
   const std::size_t p = static_cast<std::size_t>(v[2]);
   const bool track = v[4] == 1.0;
   if (v.size() != flatSize(p, track))

@@ -120,8 +120,8 @@ class MomentAccumulator {
   // Merges a set B given by its count, mean, and (when tracking) M2_B d for any d, tr(M2_B),
   // T_B and Q_B; `addScatterB` adds M2_B to the upper triangle of m2_.
   template <class M2Times, class AddScatter>
-  void mergeSet(std::int64_t nb, const Eigen::VectorXd& mean_b, M2Times m2b_times,
-                double trace_m2b, const Eigen::VectorXd* t_b, double q_b, AddScatter add_scatter_b,
+  void mergeSet(std::int64_t nb, const Eigen::VectorXd& mean_b, M2Times m2b_times, double trace_m2b,
+                const Eigen::VectorXd* t_b, double q_b, AddScatter add_scatter_b,
                 bool welford_mean);
   void checkVector(const Eigen::Ref<const Eigen::VectorXd>& x, const char* what,
                    Eigen::Index column) const;

@@ -26,7 +26,8 @@ void FactorOptions::validate() const {
   check.require(std::isfinite(jitter_growth) && jitter_growth > 1.0, "jitter_growth",
                 "must be a finite number > 1, got " + formatNumber(jitter_growth));
   check.require(std::isfinite(jitter_max) && jitter_max >= jitter_initial, "jitter_max",
-                "must be a finite number >= jitter_initial (" + formatNumber(jitter_initial) + "), got " + formatNumber(jitter_max));
+                "must be a finite number >= jitter_initial (" + formatNumber(jitter_initial) +
+                    "), got " + formatNumber(jitter_max));
 }
 
 GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov,
@@ -36,27 +37,30 @@ GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd&
   if (p < 1) throw InputError(kGaussianWhere, "mean is empty");
   if (cov.rows() != p || cov.cols() != p)
     throw InputError(kGaussianWhere, "covariance is " + std::to_string(cov.rows()) + "x" +
-                                 std::to_string(cov.cols()) + ", expected " + std::to_string(p) +
-                                 "x" + std::to_string(p) + " (the length of the mean)");
+                                         std::to_string(cov.cols()) + ", expected " +
+                                         std::to_string(p) + "x" + std::to_string(p) +
+                                         " (the length of the mean)");
   if (!mean.allFinite()) throw InputError(kGaussianWhere, "mean has a non-finite entry");
   if (!cov.allFinite()) throw InputError(kGaussianWhere, "covariance has a non-finite entry");
   const double max_abs = cov.cwiseAbs().maxCoeff();
   for (Eigen::Index j = 0; j < p; ++j) {
     if (cov(j, j) < 0.0)
       throw InputError(kGaussianWhere, "covariance diagonal entry " + std::to_string(j) + " is " +
-                                   formatNumber(cov(j, j)) + " (a variance must be >= 0)");
+                                           formatNumber(cov(j, j)) + " (a variance must be >= 0)");
     for (Eigen::Index i = 0; i < j; ++i)
       if (std::abs(cov(i, j) - cov(j, i)) > 1e-10 * max_abs)
-        throw InputError(kGaussianWhere, "covariance is not symmetric: entry (" + std::to_string(i) +
-                                     ", " + std::to_string(j) + ") = " + formatNumber(cov(i, j)) +
-                                     " but (" + std::to_string(j) + ", " + std::to_string(i) +
-                                     ") = " + formatNumber(cov(j, i)));
+        throw InputError(kGaussianWhere, "covariance is not symmetric: entry (" +
+                                             std::to_string(i) + ", " + std::to_string(j) +
+                                             ") = " + formatNumber(cov(i, j)) + " but (" +
+                                             std::to_string(j) + ", " + std::to_string(i) +
+                                             ") = " + formatNumber(cov(j, i)));
   }
   const double max_diag = cov.diagonal().maxCoeff();
   const double mean_diag = cov.diagonal().mean();
-  if (!(max_diag > 0.0)) throw InputError(kGaussianWhere, "covariance is zero on its whole diagonal");
-  const double rel_tol =
-      options.pivot_tolerance < 0.0 ? static_cast<double>(p) * DBL_EPSILON : options.pivot_tolerance;
+  if (!(max_diag > 0.0))
+    throw InputError(kGaussianWhere, "covariance is zero on its whole diagonal");
+  const double rel_tol = options.pivot_tolerance < 0.0 ? static_cast<double>(p) * DBL_EPSILON
+                                                       : options.pivot_tolerance;
   const double tol = rel_tol * max_diag;
   mean_ = mean;
   std::string tried;  // what failed, for the error message
@@ -98,8 +102,9 @@ GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd&
       factorization_ = "ldlt";
       done = true;
     } else {
-      tried += "LDLT has a non-positive pivot (smallest D = " + formatNumber(ldlt.vectorD().minCoeff()) +
-               "); ";
+      tried +=
+          "LDLT has a non-positive pivot (smallest D = " + formatNumber(ldlt.vectorD().minCoeff()) +
+          "); ";
     }
   }
   if (!done) {
@@ -116,11 +121,11 @@ GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd&
     }
     if (!done) {
       factor_.resize(0, 0);
-      throw InputError(kGaussianWhere, "covariance is not positive definite: " + tried +
-                                   "Cholesky with jitter up to " + formatNumber(options.jitter_max) +
-                                   " x mean(diag) = " + formatNumber(options.jitter_max * mean_diag) +
-                                   " also failed (relative pivot tolerance " + formatNumber(rel_tol) +
-                                   ")");
+      throw InputError(kGaussianWhere,
+                       "covariance is not positive definite: " + tried +
+                           "Cholesky with jitter up to " + formatNumber(options.jitter_max) +
+                           " x mean(diag) = " + formatNumber(options.jitter_max * mean_diag) +
+                           " also failed (relative pivot tolerance " + formatNumber(rel_tol) + ")");
     }
   }
   log_det_ = 2.0 * factor_.diagonal().array().log().sum();
@@ -129,8 +134,8 @@ GaussianModel::GaussianModel(const Eigen::VectorXd& mean, const Eigen::MatrixXd&
 double GaussianModel::logPdf(const Eigen::VectorXd& y) const {
   const Eigen::Index p = mean_.size();
   if (y.size() != p)
-    throw InputError(kGaussianWhere, "record has length " + std::to_string(y.size()) + ", expected " +
-                                 std::to_string(p));
+    throw InputError(kGaussianWhere, "record has length " + std::to_string(y.size()) +
+                                         ", expected " + std::to_string(p));
   Eigen::VectorXd z(p);
   if (perm_.size() == 0)
     z = y - mean_;
@@ -144,14 +149,13 @@ Eigen::VectorXd GaussianModel::logPdfBatch(const Eigen::MatrixXd& Y) const {
   const Eigen::Index p = mean_.size();
   if (Y.rows() != p)
     throw InputError(kGaussianWhere, "record matrix has " + std::to_string(Y.rows()) +
-                                 " rows, expected " + std::to_string(p) +
-                                 " (one record per column)");
+                                         " rows, expected " + std::to_string(p) +
+                                         " (one record per column)");
   Eigen::MatrixXd Z(p, Y.cols());
   if (perm_.size() == 0)
     Z = Y.colwise() - mean_;
   else
-    for (Eigen::Index i = 0; i < p; ++i)
-      Z.row(i) = Y.row(perm_[i]).array() - mean_[perm_[i]];
+    for (Eigen::Index i = 0; i < p; ++i) Z.row(i) = Y.row(perm_[i]).array() - mean_[perm_[i]];
   factor_.triangularView<Eigen::Lower>().solveInPlace(Z);  // one TRSM for all records
   const double c = static_cast<double>(p) * kLn2Pi + log_det_;
   return (-0.5 * (Z.colwise().squaredNorm().array() + c)).transpose();

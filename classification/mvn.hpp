@@ -41,11 +41,11 @@ namespace dtwin::classify {
 struct FactorOptions {
   /// Relative pivot threshold (see header); a negative value means p · 2.2e-16.
   double pivot_tolerance = -1.0;
-  bool try_cholesky = true;      ///< step 1 (false skips straight to LDLT/jitter)
-  bool try_ldlt = true;          ///< step 2
-  double jitter_initial = 1e-10; ///< first ε of step 3, > 0
-  double jitter_growth = 10.0;   ///< factor between successive ε, > 1
-  double jitter_max = 1e-3;      ///< largest ε tried, >= jitter_initial
+  bool try_cholesky = true;       ///< step 1 (false skips straight to LDLT/jitter)
+  bool try_ldlt = true;           ///< step 2
+  double jitter_initial = 1e-10;  ///< first ε of step 3, > 0
+  double jitter_growth = 10.0;    ///< factor between successive ε, > 1
+  double jitter_max = 1e-3;       ///< largest ε tried, >= jitter_initial
   /// InputError whose where() is "factor.<field>" (common/validate.hpp).
   void validate() const;
 };

@@ -45,7 +45,8 @@ Recommendation recommendAssembly(const std::vector<ModelCost>& models,
     if (mc.id.empty()) throw InputError(where + ": model " + std::to_string(m), "id is empty");
     if (!ids.insert(mc.id).second) throw InputError(field, "duplicate id");
     if (std::isnan(mc.log_evidence) || mc.log_evidence == std::numeric_limits<double>::infinity())
-      throw InputError(field, "log_evidence must be finite or -inf, got " + formatNumber(mc.log_evidence));
+      throw InputError(field,
+                       "log_evidence must be finite or -inf, got " + formatNumber(mc.log_evidence));
     if (!(std::isfinite(mc.cost) && mc.cost > 0.0))
       throw InputError(field, "cost must be > 0 and finite, got " + formatNumber(mc.cost));
   }
@@ -83,12 +84,11 @@ Recommendation recommendAssembly(const std::vector<ModelCost>& models,
   const std::string thr = formatNumber(options.threshold);
   if (r.recommended_index != r.best_index) {
     const double t = r.two_ln_b[r.recommended_index];
-    r.explanation = rec.id + " is recommended: it is " +
-                    decimals(r.cost_ratio, [](double x) { return x > 1.0; }) +
-                    "x cheaper than " + best.id +
-                    " (the best by evidence) and its evidence is not decisively worse (2 ln B = " +
-                    decimals(t, [&](double x) { return x < options.threshold; }) + " < " + thr +
-                    ").";
+    r.explanation =
+        rec.id + " is recommended: it is " +
+        decimals(r.cost_ratio, [](double x) { return x > 1.0; }) + "x cheaper than " + best.id +
+        " (the best by evidence) and its evidence is not decisively worse (2 ln B = " +
+        decimals(t, [&](double x) { return x < options.threshold; }) + " < " + thr + ").";
   } else {
     bool any_cheaper = false;
     for (const ModelCost& c : models) any_cheaper = any_cheaper || c.cost < best.cost;
@@ -97,10 +97,12 @@ Recommendation recommendAssembly(const std::vector<ModelCost>& models,
     else if (any_cheaper)
       r.explanation = best.id +
                       " is recommended: it has the strongest evidence and every cheaper assembly "
-                      "is decisively worse (2 ln B \u2265 " + thr + ").";
+                      "is decisively worse (2 ln B \u2265 " +
+                      thr + ").";
     else
       r.explanation =
-          best.id + " is recommended: it has the strongest evidence and no other assembly is cheaper.";
+          best.id +
+          " is recommended: it has the strongest evidence and no other assembly is cheaper.";
   }
   return r;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// Cost-aware choice of an assembly (docs/method.md §5): recommend the cheapest assembly whose evidence
-// is not decisively worse than the best one.
+// Cost-aware choice of an assembly (docs/method.md §5): recommend the cheapest assembly whose
+// evidence is not decisively worse than the best one.
 //
 // \par Rule
 // Given per model m its log evidence ℓ_m (e.g. Σ_r ℓ_{r,m} from classify.hpp, or a log marginal
@@ -34,19 +34,19 @@ struct ModelCost {
 
 struct RecommendOptions {
   double threshold = 10.0;  ///< t on 2 ln B, finite and > 0
-  void validate() const;    ///< InputError whose where() is "recommend.<field>" (common/validate.hpp)
+  void validate() const;  ///< InputError whose where() is "recommend.<field>" (common/validate.hpp)
 };
 
 struct Recommendation {
   int recommended_index = -1;
   int best_index = -1;
-  std::string recommended;  ///< id of the recommended model
-  std::string best;         ///< id of the model with the highest evidence
-  std::vector<int> candidate_indices;  ///< in input order
-  std::vector<std::string> candidates; ///< ids, in input order
-  std::vector<double> two_ln_b;        ///< per model, 2 (ℓ_best − ℓ_m) (+∞ for ℓ_m = −∞)
-  double cost_ratio = 1.0;             ///< c_best / c_recommended (>= 1)
-  std::string explanation;             ///< one plain-English sentence
+  std::string recommended;              ///< id of the recommended model
+  std::string best;                     ///< id of the model with the highest evidence
+  std::vector<int> candidate_indices;   ///< in input order
+  std::vector<std::string> candidates;  ///< ids, in input order
+  std::vector<double> two_ln_b;  ///< per model, 2 (ℓ_best − ℓ_m) (+∞ for ℓ_m = −∞)
+  double cost_ratio = 1.0;       ///< c_best / c_recommended (>= 1)
+  std::string explanation;       ///< one plain-English sentence
 };
 
 /// Applies the rule above. InputError on an empty list, a duplicate or empty id, a NaN or +∞

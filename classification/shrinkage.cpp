@@ -39,7 +39,7 @@ LedoitWolfEstimate calcLedoitWolf(const MomentAccumulator& acc, bool form_matrix
   }
   r.d2 = (2.0 * off_sq / (n * n) + diag_dev) / p;
   r.b2_bar = std::max(0.0, (acc.getFourthMoment() - n * s_frob2) / (p * n * n));  // b̄²
-  r.intensity = r.d2 > 0.0 ? std::min(r.b2_bar, r.d2) / r.d2 : 0.0;        // ρ
+  r.intensity = r.d2 > 0.0 ? std::min(r.b2_bar, r.d2) / r.d2 : 0.0;               // ρ
   if (form_matrix) {
     r.covariance = m2.selfadjointView<Eigen::Upper>();
     r.covariance *= (1.0 - r.intensity) / n;

@@ -15,9 +15,9 @@
 // This is also what scikit-learn's ledoit_wolf(assume_centered=False) computes.
 //
 // \par Streaming form of b̄²
-// ‖x xᵀ − S‖²_F = ‖x‖⁴ − 2 xᵀ S x + ‖S‖²_F and Σ_k x_kᵀ S_n x_k = tr(S_n Σ_k x_k x_kᵀ) = n ‖S_n‖²_F,
-// so Σ_k ‖x_k x_kᵀ − S_n‖²_F = Q − n ‖S_n‖²_F with Q = Σ_k ‖x_k − μ‖⁴, the scalar fourth moment
-// that MomentAccumulator keeps when MomentOptions::track_fourth_moment is set (its streaming
+// ‖x xᵀ − S‖²_F = ‖x‖⁴ − 2 xᵀ S x + ‖S‖²_F and Σ_k x_kᵀ S_n x_k = tr(S_n Σ_k x_k x_kᵀ) = n
+// ‖S_n‖²_F, so Σ_k ‖x_k x_kᵀ − S_n‖²_F = Q − n ‖S_n‖²_F with Q = Σ_k ‖x_k − μ‖⁴, the scalar fourth
+// moment that MomentAccumulator keeps when MomentOptions::track_fourth_moment is set (its streaming
 // update needs the p-vector T = Σ ‖x − μ‖² (x − μ) and one O(p²) symmetric matrix-vector product
 // per update; see moments.hpp). Hence
 //     b̄² = (Q − n ‖S_n‖²_F) / (p n²).

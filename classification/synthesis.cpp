@@ -17,14 +17,14 @@
 
 #include "calibration/calibrate.hpp"
 #include "classification/moment_tree.hpp"
-#include "common/json.hpp"
+#include "common/distributed.hpp"
 #include "common/errors.hpp"
+#include "common/json.hpp"
+#include "common/parallel.hpp"
 #include "common/statistics.hpp"
 #include "common/validate.hpp"
-#include "subsystems/random.hpp"
-#include "common/distributed.hpp"
-#include "common/parallel.hpp"
 #include "io/provenance.hpp"
+#include "subsystems/random.hpp"
 #include "twin/simulator.hpp"
 
 namespace fs = std::filesystem;
@@ -41,7 +41,11 @@ double median(std::vector<double> v) {
 }  // namespace
 
 nlohmann::json failureJson(const SynthesisFailure& f) {
-  return {{"draw", f.draw}, {"road", f.road}, {"library_index", f.library_index}, {"road_seed", f.road_seed}, {"message", f.message}};
+  return {{"draw", f.draw},
+          {"road", f.road},
+          {"library_index", f.library_index},
+          {"road_seed", f.road_seed},
+          {"message", f.message}};
 }
 SynthesisFailure failureFrom(const nlohmann::json& j) {
   SynthesisFailure f;
@@ -53,12 +57,16 @@ SynthesisFailure failureFrom(const nlohmann::json& j) {
   return f;
 }
 
-double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 /// "F" + the bytes of `path` as the root reads them, "" when it does not exist: resume decisions
 /// are taken on what the root reads (the same bytes on every MPI rank).
 std::string rootRead(const Distributed* processes, const fs::path& path) {
-  return onRoot(processes, [&]() -> std::string { return fs::exists(path) ? "F" + readTextFile(path.string()) : std::string(); });
+  return onRoot(processes, [&]() -> std::string {
+    return fs::exists(path) ? "F" + readTextFile(path.string()) : std::string();
+  });
 }
 
 std::string rootReadCheckpoint(const Distributed* processes, const SynthesisFiles& files) {
@@ -79,11 +87,15 @@ std::string rootReadCheckpoint(const Distributed* processes, const SynthesisFile
     }
     if (j.is_object() && j.contains("nodes") && j["nodes"].is_array())
       for (const auto& n : j["nodes"]) {
-        const std::string sum = n.value("checksum", std::string()), file = n.value("file", std::string());
-        if (sum.empty() || file.empty()) continue;  // a checkpoint written before checksums were recorded
+        const std::string sum = n.value("checksum", std::string()),
+                          file = n.value("file", std::string());
+        if (sum.empty() || file.empty())
+          continue;  // a checkpoint written before checksums were recorded
         const fs::path node = files.dir / file;
         if (!fs::exists(node) || contentChecksum(readTextFile(node.string())) != sum) {
-          setAsideCorrupt(path.string(), "its node file " + file + (fs::exists(node) ? " fails its checksum" : " is missing"));
+          setAsideCorrupt(
+              path.string(),
+              "its node file " + file + (fs::exists(node) ? " fails its checksum" : " is missing"));
           return std::string();
         }
       }
@@ -102,8 +114,10 @@ nlohmann::json parseRootJson(const std::string& text) {
 
 /// InputError: `path` belongs to a different synthesis.
 [[noreturn]] void refuseForeign(const fs::path& path) {
-  throw InputError(path.string(), "was made by a different synthesis (study, posterior, assembly, sizes, seed, window or "
-                                  "options changed); use a new output folder or delete it to start over");
+  throw InputError(
+      path.string(),
+      "was made by a different synthesis (study, posterior, assembly, sizes, seed, window or "
+      "options changed); use a new output folder or delete it to start over");
 }
 
 namespace {
@@ -116,8 +130,8 @@ std::size_t windowIndex(double t, double rate, double duration, const char* fiel
 /// The sizes (options, else the study's sizes), the posterior checked against the study's
 /// calibrated parameters, the model's slots, the scenario, channel and window, and whether the
 /// roads of a draw branch from one smooth start.
-SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
-                            const SynthesisOptions& opt) {
+SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly,
+                            const PosteriorSample& post, const SynthesisOptions& opt) {
   const OptionCheck check("synthesis");
   SynthesisPlan plan;
   plan.M = opt.draws > 0 ? opt.draws : study.sizes.at("posterior_draws");
@@ -129,7 +143,8 @@ SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, co
   check.atLeast("draws", plan.M, 1);
   check.atLeast("roads_per_draw", plan.R, 1);
   check.require(plan.L >= plan.R, "road_library",
-                "must hold at least the roads per draw (" + std::to_string(plan.R) + "), got " + std::to_string(plan.L));
+                "must hold at least the roads per draw (" + std::to_string(plan.R) + "), got " +
+                    std::to_string(plan.L));
   if (post.size() == 0) throw InputError(post.path, "the posterior sample is empty");
 
   // The posterior's parameters must be the study's calibrated ones the assembly has, in order
@@ -141,19 +156,24 @@ SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, co
     std::string a, b;
     for (const auto& n : post.names) a += (a.empty() ? "" : ",") + n;
     for (const auto& n : plan.names) b += (b.empty() ? "" : ",") + n;
-    throw InputError(post.path + ":1", "parameter columns " + a + " are not the study's calibrated parameters " + b +
+    throw InputError(post.path + ":1", "parameter columns " + a +
+                                           " are not the study's calibrated parameters " + b +
                                            " (" + study.path + ")");
   }
   for (const auto& n : plan.names) {
     const int s = plan.model->slot(n);
-    if (s < 0) throw InputError(study.path + ": calibrated", "'" + n + "' is not a parameter of assembly " + assembly.id);
+    if (s < 0)
+      throw InputError(study.path + ": calibrated",
+                       "'" + n + "' is not a parameter of assembly " + assembly.id);
     plan.slots.push_back(s);
   }
   plan.base = plan.model->defaultRunValues();
   const ScenarioSpec& sc = study.scenario(opt.scenario);
   plan.sc = &sc;
   if (!sc.road->random())
-    throw InputError("scenario " + sc.name, "synthetic field data need a random (iso8608) road to draw a road library from");
+    throw InputError(
+        "scenario " + sc.name,
+        "synthetic field data need a random (iso8608) road to draw a road library from");
   for (const auto& c : measurableChannels(study.sensors))
     if (c.name == opt.channel) plan.unit = c.unit;
   plan.noisy = plan.unit == "N";
@@ -161,9 +181,11 @@ SynthesisPlan planSynthesis(const Study& study, const AssemblySpec& assembly, co
   plan.kb = windowIndex(opt.t_begin_s, plan.rate, sc.duration_s, "t_begin_s");
   plan.ke = windowIndex(opt.t_end_s, plan.rate, sc.duration_s, "t_end_s");
   plan.p = plan.ke - plan.kb + 1;
-  check.require(plan.p <= 46000, "t_end_s", "the window holds " + std::to_string(plan.p) +
-                                                " samples: the covariance would not fit in memory");
-  for (std::size_t k = plan.kb; k <= plan.ke; ++k) plan.times.push_back(static_cast<double>(k) / plan.rate);
+  check.require(plan.p <= 46000, "t_end_s",
+                "the window holds " + std::to_string(plan.p) +
+                    " samples: the covariance would not fit in memory");
+  for (std::size_t k = plan.kb; k <= plan.ke; ++k)
+    plan.times.push_back(static_cast<double>(k) / plan.rate);
   Simulator probe(plan.model, study.simulation);
   plan.branched = opt.branch && probe.branchTime(sc) > 0 && probe.branchTime(sc) < sc.duration_s;
   plan.t_branch = plan.branched ? probe.branchTime(sc) : -1.0;
@@ -179,8 +201,9 @@ struct SynthesisIdentity {
 };
 
 /// The fingerprint of `plan` and the posterior (synthesis.hpp, "Resume").
-SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
-                                    const SynthesisOptions& opt, const SynthesisPlan& plan, bool root) {
+SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& assembly,
+                                    const PosteriorSample& post, const SynthesisOptions& opt,
+                                    const SynthesisPlan& plan, bool root) {
   SynthesisIdentity id;
   id.post_text = root && fs::exists(post.path) ? readTextFile(post.path) : std::string();
   std::string post_rows;
@@ -200,7 +223,9 @@ SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& asse
                     {"block", plan.B},
                     {"leaf_blocks", plan.LB},
                     {"seed", plan.seed},
-                    {"streams", {hexId(kSynthDrawStream), hexId(kSynthRoadStream), hexId(kSynthNoiseStream), hexId(kRoadLibraryStream)}},
+                    {"streams",
+                     {hexId(kSynthDrawStream), hexId(kSynthRoadStream), hexId(kSynthNoiseStream),
+                      hexId(kRoadLibraryStream)}},
                     {"scenario", plan.sc->toJson()},
                     {"simulation", study.simulation.toJson()},
                     {"channel", opt.channel},
@@ -215,12 +240,14 @@ SynthesisIdentity identifySynthesis(const Study& study, const AssemblySpec& asse
 
 /// A finished synthesis of this fingerprint in the folder: `res` filled from its files, true.
 /// False when there is none; InputError when the folder holds a different synthesis.
-bool reuseFinished(const Distributed* processes, const SynthesisFiles& files, const std::string& fingerprint, SynthesisResult& res) {
+bool reuseFinished(const Distributed* processes, const SynthesisFiles& files,
+                   const std::string& fingerprint, SynthesisResult& res) {
   const std::string info_text = rootRead(processes, files.info);
   if (info_text.empty()) return false;
   const nlohmann::json j = parseRootJson(info_text);
   if (!j.is_object() || j.value("fingerprint", "") != fingerprint) refuseForeign(files.info);
-  if (onRoot(processes, [&] { return std::string(fs::exists(files.moments) ? "1" : "0"); }) != "1") return false;
+  if (onRoot(processes, [&] { return std::string(fs::exists(files.moments) ? "1" : "0"); }) != "1")
+    return false;
   res.moments = MomentAccumulator::load(files.moments.string());
   res.info = j;
   res.reused = true;
@@ -233,16 +260,19 @@ bool reuseFinished(const Distributed* processes, const SynthesisFiles& files, co
 
 /// Draw j on `sim`: its posterior row, R distinct library roads, the runs (branched or not), each
 /// run's window plus noise, and what failed (synthesis.hpp, "What is simulated").
-DrawOutput simulateDraw(const SynthesisPlan& plan, const PosteriorSample& post, const std::string& channel, Simulator& sim,
-                        long j) {
+DrawOutput simulateDraw(const SynthesisPlan& plan, const PosteriorSample& post,
+                        const std::string& channel, Simulator& sim, long j) {
   const long R = plan.R, L = plan.L;
   DrawOutput out;
   out.vectors.resize(static_cast<std::size_t>(R));
   // θ_j, τ_j: a row of the posterior sample.
   RandomStream draw_rs(plan.seed, kSynthDrawStream, static_cast<std::uint64_t>(j));
-  const std::size_t row = std::min(post.size() - 1, static_cast<std::size_t>(draw_rs.uniform() * static_cast<double>(post.size())));
+  const std::size_t row =
+      std::min(post.size() - 1,
+               static_cast<std::size_t>(draw_rs.uniform() * static_cast<double>(post.size())));
   std::vector<double> values = plan.base;
-  for (std::size_t k = 0; k < plan.slots.size(); ++k) values[static_cast<std::size_t>(plan.slots[k])] = post.theta[row][k];
+  for (std::size_t k = 0; k < plan.slots.size(); ++k)
+    values[static_cast<std::size_t>(plan.slots[k])] = post.theta[row][k];
   const double sigma = 1.0 / std::sqrt(post.tau[row]);
   // R distinct library roads.
   RandomStream road_rs(plan.seed, kSynthRoadStream, static_cast<std::uint64_t>(j));
@@ -272,7 +302,8 @@ DrawOutput simulateDraw(const SynthesisPlan& plan, const PosteriorSample& post, 
   }
   for (long r = 0; r < R; ++r) {
     const auto fail = [&](const std::string& msg) {
-      out.failures.push_back({j, r, idx[static_cast<std::size_t>(r)], road_seeds[static_cast<std::size_t>(r)], msg});
+      out.failures.push_back(
+          {j, r, idx[static_cast<std::size_t>(r)], road_seeds[static_cast<std::size_t>(r)], msg});
     };
     if (!input_error.empty()) {
       fail(input_error);
@@ -308,18 +339,24 @@ DrawOutput simulateDraw(const SynthesisPlan& plan, const PosteriorSample& post, 
 
 /// synthesis.json (SynthesisResult::info): provenance, sizes, streams, noise, window, moments,
 /// cost and wall time.
-nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
-                             const SynthesisOptions& opt, const SynthesisPlan& plan, const SynthesisIdentity& id,
-                             const Reduction& red, const MomentAccumulator& acc, const SynthesisResult& res, double wall_total,
-                             int workers, int ranks) {
+nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly,
+                             const PosteriorSample& post, const SynthesisOptions& opt,
+                             const SynthesisPlan& plan, const SynthesisIdentity& id,
+                             const Reduction& red, const MomentAccumulator& acc,
+                             const SynthesisResult& res, double wall_total, int workers,
+                             int ranks) {
   const long M = plan.M, R = plan.R;
   nlohmann::json j;
   stampProvenance(j, opt.command);
   j["study"] = study.path;
   j["assembly"] = assembly.id;
   j["label"] = assembly.label();
-  j["posterior"] = {{"path", post.path}, {"rows", post.size()}, {"parameters", plan.names}, {"values_fnv1a64", id.post_hash},
-                    {"file_fnv1a64", id.post_text.empty() ? std::string() : hexId(calib::fnv1a64(id.post_text))}};
+  j["posterior"] = {
+      {"path", post.path},
+      {"rows", post.size()},
+      {"parameters", plan.names},
+      {"values_fnv1a64", id.post_hash},
+      {"file_fnv1a64", id.post_text.empty() ? std::string() : hexId(calib::fnv1a64(id.post_text))}};
   j["draws"] = M;
   j["roads_per_draw"] = R;
   j["road_library"] = plan.L;
@@ -329,21 +366,34 @@ nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, c
   j["vectors"] = acc.count();
   j["failures"] = res.failures;
   j["failure_list"] = nlohmann::json::array();
-  for (std::size_t i = 0; i < red.sink.failures.size() && i < 1000; ++i) j["failure_list"].push_back(failureJson(red.sink.failures[i]));
+  for (std::size_t i = 0; i < red.sink.failures.size() && i < 1000; ++i)
+    j["failure_list"].push_back(failureJson(red.sink.failures[i]));
   if (red.sink.failures.size() > 1000) j["failure_list_truncated"] = true;
   j["seed"] = plan.seed;
-  j["streams"] = {
-      {"draw", {{"constant", hexId(kSynthDrawStream)},
-                {"rule", "draw j uses posterior row floor(u * rows), u the first uniform of RandomStream(seed, draw, j)"}}},
-      {"road", {{"constant", hexId(kSynthRoadStream)},
-                {"rule", "draw j's library indices: floor(u * library) from RandomStream(seed, road, j), redrawn while one repeats"}}},
-      {"road_library", {{"constant", hexId(kRoadLibraryStream)},
-                        {"rule", "library road i has seed RandomStream(seed, road_library, i).bits() >> 11 (not the field data's stream)"}}},
-      {"noise", {{"constant", hexId(kSynthNoiseStream)},
-                 {"rule", "vector (j, r) adds sigma_j * N(0, 1) from RandomStream(seed, noise, j * roads_per_draw + r) in time order"}}}};
-  j["noise"] = {{"applied", plan.noisy},
-                {"rule", plan.noisy ? "N(0, 1/tau_j) per value, tau_j from the posterior row of draw j"
-                                    : "none: the channel is not in N (as twin generate field)"}};
+  j["streams"] = {{"draw",
+                   {{"constant", hexId(kSynthDrawStream)},
+                    {"rule",
+                     "draw j uses posterior row floor(u * rows), u the first uniform of "
+                     "RandomStream(seed, draw, j)"}}},
+                  {"road",
+                   {{"constant", hexId(kSynthRoadStream)},
+                    {"rule",
+                     "draw j's library indices: floor(u * library) from RandomStream(seed, road, "
+                     "j), redrawn while one repeats"}}},
+                  {"road_library",
+                   {{"constant", hexId(kRoadLibraryStream)},
+                    {"rule",
+                     "library road i has seed RandomStream(seed, road_library, i).bits() >> 11 "
+                     "(not the field data's stream)"}}},
+                  {"noise",
+                   {{"constant", hexId(kSynthNoiseStream)},
+                    {"rule",
+                     "vector (j, r) adds sigma_j * N(0, 1) from RandomStream(seed, noise, j * "
+                     "roads_per_draw + r) in time order"}}}};
+  j["noise"] = {
+      {"applied", plan.noisy},
+      {"rule", plan.noisy ? "N(0, 1/tau_j) per value, tau_j from the posterior row of draw j"
+                          : "none: the channel is not in N (as twin generate field)"}};
   j["scenario"] = plan.sc->toJson();
   j["simulation"] = study.simulation.toJson();
   j["branched"] = plan.branched;
@@ -353,20 +403,29 @@ nlohmann::json synthesisInfo(const Study& study, const AssemblySpec& assembly, c
   j["window_s"] = {plan.times.front(), plan.times.back()};
   j["samples"] = plan.p;
   j["output_rate_hz"] = plan.rate;
-  j["moments"] = {{"file", "moments.bin"},
-                  {"format", "MomentAccumulator::save: 8-byte tag DTWMOM01, then doubles (little-endian): magic, version, p, n, "
-                             "track flag, mean (p), packed upper triangle of M2 column by column (p(p+1)/2), [T (p), Q]"},
-                  {"dimension", plan.p},
-                  {"count", acc.count()},
-                  {"track_fourth_moment", opt.track_fourth_moment},
-                  {"accumulation", "fixed blocks of `block` draws, addBlock in (draw, road) order; leaves of `leaf_blocks` blocks "
-                                   "in block order; leaves merged in a fixed binary tree (node (l+1, k) = node (l, 2k) merged with "
-                                   "node (l, 2k+1))"}};
-  j["cost"] = {{"wall_s_per_simulated_s_median", res.cost_s_per_s},
-               {"run_wall_s_median", res.median_run_wall_s},
-               {"runs_measured", red.sink.costs.size()},
-               {"rule", std::string("median over the successful runs of wall time / simulated time") +
-                            (plan.branched ? "; a branched run carries an even share of its draw's common smooth part" : "")}};
+  j["moments"] = {
+      {"file", "moments.bin"},
+      {"format",
+       "MomentAccumulator::save: 8-byte tag DTWMOM01, then doubles (little-endian): magic, "
+       "version, p, n, "
+       "track flag, mean (p), packed upper triangle of M2 column by column (p(p+1)/2), [T (p), Q]"},
+      {"dimension", plan.p},
+      {"count", acc.count()},
+      {"track_fourth_moment", opt.track_fourth_moment},
+      {"accumulation",
+       "fixed blocks of `block` draws, addBlock in (draw, road) order; leaves of `leaf_blocks` "
+       "blocks "
+       "in block order; leaves merged in a fixed binary tree (node (l+1, k) = node (l, 2k) merged "
+       "with "
+       "node (l, 2k+1))"}};
+  j["cost"] = {
+      {"wall_s_per_simulated_s_median", res.cost_s_per_s},
+      {"run_wall_s_median", res.median_run_wall_s},
+      {"runs_measured", red.sink.costs.size()},
+      {"rule", std::string("median over the successful runs of wall time / simulated time") +
+                   (plan.branched
+                        ? "; a branched run carries an even share of its draw's common smooth part"
+                        : "")}};
   j["wall_s"] = wall_total;
   j["resumed_blocks"] = res.resumed_blocks;
   j["threads"] = workers;
@@ -388,10 +447,12 @@ void SynthesisOptions::validate() const {
   check.atLeast("leaf_blocks", leaf_blocks, 1);
   check.finite("t_begin_s", t_begin_s);
   check.finite("t_end_s", t_end_s);
-  check.require(t_begin_s <= t_end_s, "t_begin_s",
-                "must be <= t_end_s (" + formatExact(t_end_s) + " s), got " + formatExact(t_begin_s) + " s");
-  check.require(checkpoint_interval_s >= 0, "checkpoint_interval_s",  // +inf: no checkpoint
-                "must be >= 0 s (0: after every block), got " + formatNumber(checkpoint_interval_s));
+  check.require(
+      t_begin_s <= t_end_s, "t_begin_s",
+      "must be <= t_end_s (" + formatExact(t_end_s) + " s), got " + formatExact(t_begin_s) + " s");
+  check.require(
+      checkpoint_interval_s >= 0, "checkpoint_interval_s",  // +inf: no checkpoint
+      "must be >= 0 s (0: after every block), got " + formatNumber(checkpoint_interval_s));
   const std::string channel_rule = checkChannelName(channel, measurableChannels());
   check.require(channel_rule.empty(), "channel", channel_rule);
 }
@@ -400,8 +461,9 @@ void SynthesisOptions::validate() const {
 // The stages: plan (sizes, model, window) → identity (fingerprint) → reuse a finished synthesis,
 // or resume from its checkpoint → simulate the remaining draws, reduced in block order (threads
 // or MPI ranks) → synthesis.json and moments.bin.
-SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assembly, const PosteriorSample& post,
-                                   const SynthesisOptions& opt, const std::string& out_dir, const ProgressFn& progress) {
+SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assembly,
+                                   const PosteriorSample& post, const SynthesisOptions& opt,
+                                   const std::string& out_dir, const ProgressFn& progress) {
   const auto t_all = Clock::now();
   opt.validate();
   const SynthesisPlan plan = planSynthesis(study, assembly, post, opt);
@@ -431,7 +493,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   const long first_draw = std::min(plan.M, red.sink.next_block * plan.B);
   const long todo = plan.M - first_draw;
   const int ranks = processCount(opt.processes);
-  const int workers = distributedWorkers(opt.processes, static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
+  const int workers = distributedWorkers(
+      opt.processes, static_cast<std::size_t>(std::max<long>(todo, 1)), opt.threads);
   std::vector<std::unique_ptr<Simulator>> sims(static_cast<std::size_t>(workers));
   const DrawFn draw = [&](long j, int w) {
     auto& sim = sims[static_cast<std::size_t>(w)];
@@ -443,10 +506,11 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   if (progress) progress(static_cast<std::size_t>(first_draw), static_cast<std::size_t>(plan.M));
   if (ranks == 1) {
     std::size_t done = static_cast<std::size_t>(first_draw);
-    reduceOnThreads(plan, opt.threads, first_draw, plan.M, draw, red.sink, [&] { red.checkpointIfDue(t_run); },
-                    [&] {
-                      if (progress) progress(++done, static_cast<std::size_t>(plan.M));
-                    });
+    reduceOnThreads(
+        plan, opt.threads, first_draw, plan.M, draw, red.sink, [&] { red.checkpointIfDue(t_run); },
+        [&] {
+          if (progress) progress(++done, static_cast<std::size_t>(plan.M));
+        });
   } else {
     reduceOnRanks(*opt.processes, plan, opt.threads, ranks, draw, red, t_run, progress);
   }
@@ -468,7 +532,8 @@ SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assem
   res.failure_list = red.sink.failures;
   res.cost_s_per_s = median(red.sink.costs);
   res.median_run_wall_s = median(red.sink.run_walls);
-  nlohmann::json info = synthesisInfo(study, assembly, post, opt, plan, id, red, acc, res, wall_total, workers, ranks);
+  nlohmann::json info = synthesisInfo(study, assembly, post, opt, plan, id, red, acc, res,
+                                      wall_total, workers, ranks);
   red.writeResults(acc, info);
   res.info = std::move(info);
   res.moments = std::move(acc);

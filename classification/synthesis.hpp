@@ -67,12 +67,15 @@ namespace dtwin::classify {
 
 using calib::PosteriorSample;  // calibration/folder.hpp
 
-
 /// Stream constants of RandomStream(seed, stream, index) (ASCII tags; recorded in synthesis.json).
-inline constexpr std::uint64_t kSynthDrawStream = 0x53594E5444524157ULL;    // "SYNTDRAW"; index: draw j
-inline constexpr std::uint64_t kSynthRoadStream = 0x53594E54524F4144ULL;    // "SYNTROAD"; index: draw j
-inline constexpr std::uint64_t kSynthNoiseStream = 0x53594E544E4F4953ULL;   // "SYNTNOIS"; index: j * R + r
-inline constexpr std::uint64_t kRoadLibraryStream = 0x524F41444C494252ULL;  // "ROADLIBR"; index: library road i
+inline constexpr std::uint64_t kSynthDrawStream =
+    0x53594E5444524157ULL;  // "SYNTDRAW"; index: draw j
+inline constexpr std::uint64_t kSynthRoadStream =
+    0x53594E54524F4144ULL;  // "SYNTROAD"; index: draw j
+inline constexpr std::uint64_t kSynthNoiseStream =
+    0x53594E544E4F4953ULL;  // "SYNTNOIS"; index: j * R + r
+inline constexpr std::uint64_t kRoadLibraryStream =
+    0x524F41444C494252ULL;  // "ROADLIBR"; index: library road i
 
 /// Seed of library road i: RandomStream(seed, kRoadLibraryStream, i).bits() >> 11 (53 bits, as
 /// fieldRoadSeed). `twin simulate --scenario field --seed <it>` reproduces the road.
@@ -83,9 +86,11 @@ struct SynthesisOptions {
   long roads_per_draw = 0;  ///< R; <= 0: sizes.roads_per_draw
   long road_library = 0;    ///< L (>= R); <= 0: sizes.road_library
   long block = 16;          ///< B draws per block (changes the numbers at the rounding level)
-  long leaf_blocks = 2;     ///< blocks per leaf of the accumulation tree (changes the numbers at the rounding level)
-  int threads = 0;          ///< <= 0: all cores (never changes the numbers)
-  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
+  long leaf_blocks =
+      2;  ///< blocks per leaf of the accumulation tree (changes the numbers at the rounding level)
+  int threads = 0;  ///< <= 0: all cores (never changes the numbers)
+  const Distributed* processes =
+      nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
   std::optional<std::uint64_t> seed;  ///< default: the study's seed
   std::string scenario = "field";
   std::string channel = "hub_force_fl_N";
@@ -93,9 +98,9 @@ struct SynthesisOptions {
   /// Accumulate the third/fourth moments needed by Ledoit–Wolf (classify's default when
   /// M·R < 2p); costs ~10 % of the accumulation time and 8 (p + 1) bytes.
   bool track_fourth_moment = true;
-  bool branch = true;                  ///< share the smooth start among the roads of a draw
-  double checkpoint_interval_s = 30.0; ///< at most this long between checkpoints (0: every block)
-  std::string command;                 ///< recorded in synthesis.json
+  bool branch = true;                   ///< share the smooth start among the roads of a draw
+  double checkpoint_interval_s = 30.0;  ///< at most this long between checkpoints (0: every block)
+  std::string command;                  ///< recorded in synthesis.json
   /// InputError whose where() is "synthesis.<field>" (common/validate.hpp): block >= 1, a finite
   /// window with t_begin_s <= t_end_s, checkpoint_interval_s >= 0, a known channel. The sizes
   /// (draws, roads_per_draw, road_library: <= 0 for the study's) are checked once resolved.
@@ -103,10 +108,10 @@ struct SynthesisOptions {
 };
 
 struct SynthesisFailure {
-  long draw = 0;                  ///< j
-  long road = 0;                  ///< r
-  long library_index = 0;         ///< i
-  std::uint64_t road_seed = 0;    ///< librarySeed(seed, i)
+  long draw = 0;                ///< j
+  long road = 0;                ///< r
+  long library_index = 0;       ///< i
+  std::uint64_t road_seed = 0;  ///< librarySeed(seed, i)
   std::string message;
 };
 
@@ -114,17 +119,17 @@ struct SynthesisResult {
   std::string assembly;
   std::string fingerprint;
   MomentAccumulator moments{1};
-  std::vector<double> times_s;      ///< the window's times (p of them)
+  std::vector<double> times_s;  ///< the window's times (p of them)
   long draws = 0, roads_per_draw = 0, road_library = 0, block = 0;
-  long simulations = 0;             ///< M·R
+  long simulations = 0;  ///< M·R
   long failures = 0;
   std::vector<SynthesisFailure> failure_list;  ///< in (j, r) order
-  double cost_s_per_s = 0.0;        ///< median wall seconds per simulated second of the runs
+  double cost_s_per_s = 0.0;  ///< median wall seconds per simulated second of the runs
   double median_run_wall_s = 0.0;
-  double wall_s = 0.0;              ///< this invocation
-  long resumed_blocks = 0;          ///< blocks taken from a checkpoint
-  bool reused = false;              ///< the synthesis had finished before: files reused
-  nlohmann::json info;              ///< the content of synthesis.json
+  double wall_s = 0.0;      ///< this invocation
+  long resumed_blocks = 0;  ///< blocks taken from a checkpoint
+  bool reused = false;      ///< the synthesis had finished before: files reused
+  nlohmann::json info;      ///< the content of synthesis.json
 };
 
 /// Synthesizes `assembly` from `posterior` (whose θ names must be the study's calibrated
@@ -132,7 +137,8 @@ struct SynthesisResult {
 /// header). `progress(done, total)` counts draws (resumed ones included); it is called one call
 /// at a time, possibly from worker threads; an exception it throws stops the synthesis (the last
 /// checkpoint stays valid). InputError for bad options or inputs.
-SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assembly, const PosteriorSample& posterior,
+SynthesisResult synthesizeAssembly(const Study& study, const AssemblySpec& assembly,
+                                   const PosteriorSample& posterior,
                                    const SynthesisOptions& options, const std::string& out_dir,
                                    const ProgressFn& progress = {});
 

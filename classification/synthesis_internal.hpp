@@ -20,10 +20,10 @@
 #include "classification/moments.hpp"
 #include "classification/synthesis.hpp"
 #include "common/checksum.hpp"
+#include "common/distributed.hpp"
+#include "common/errors.hpp"
 #include "common/files.hpp"
 #include "common/json.hpp"
-#include "common/errors.hpp"
-#include "common/distributed.hpp"
 #include "twin/simulator.hpp"
 
 namespace fs = std::filesystem;
@@ -53,21 +53,22 @@ double secondsSince(Clock::time_point t0);
 
 /// Everything a synthesis fixes before it simulates (synthesis.hpp, "What is simulated").
 struct SynthesisPlan {
-  long M = 0, R = 0, L = 0, B = 0;      ///< draws, roads per draw, library roads, draws per block
+  long M = 0, R = 0, L = 0, B = 0;  ///< draws, roads per draw, library roads, draws per block
   std::uint64_t seed = 0;
-  std::vector<std::string> names;       ///< the study's calibrated parameters (= the posterior's columns)
+  std::vector<std::string>
+      names;  ///< the study's calibrated parameters (= the posterior's columns)
   std::shared_ptr<const Model> model;
-  std::vector<int> slots;               ///< run-value slot of each calibrated parameter
-  std::vector<double> base;             ///< the model's default run values
-  const ScenarioSpec* sc = nullptr;     ///< the field scenario (random road)
-  std::string unit;                     ///< of the channel
-  bool noisy = false;                   ///< noise N(0, 1/τ) is added (channels in N)
-  double rate = 0.0;                    ///< output grid [Hz]
-  std::size_t kb = 0, ke = 0, p = 0;    ///< the window: first and last grid index, samples
-  std::vector<double> times;            ///< the window's times
-  bool branched = false;                ///< the roads of a draw share the smooth start
+  std::vector<int> slots;             ///< run-value slot of each calibrated parameter
+  std::vector<double> base;           ///< the model's default run values
+  const ScenarioSpec* sc = nullptr;   ///< the field scenario (random road)
+  std::string unit;                   ///< of the channel
+  bool noisy = false;                 ///< noise N(0, 1/τ) is added (channels in N)
+  double rate = 0.0;                  ///< output grid [Hz]
+  std::size_t kb = 0, ke = 0, p = 0;  ///< the window: first and last grid index, samples
+  std::vector<double> times;          ///< the window's times
+  bool branched = false;              ///< the roads of a draw share the smooth start
   double t_branch = -1.0;
-  long LB = 1;                          ///< blocks per leaf of the accumulation tree
+  long LB = 1;  ///< blocks per leaf of the accumulation tree
   long blocks() const { return (M + B - 1) / B; }
   long leaves() const { return (blocks() + LB - 1) / LB; }
   long blockSize(long b) const { return std::min(B, M - b * B); }
@@ -77,7 +78,10 @@ struct SynthesisPlan {
 struct SynthesisFiles {
   fs::path dir, moments, info, checkpoint;
   explicit SynthesisFiles(const std::string& out_dir)
-      : dir(out_dir), moments(dir / "moments.bin"), info(dir / "synthesis.json"), checkpoint(dir / "checkpoint.json") {}
+      : dir(out_dir),
+        moments(dir / "moments.bin"),
+        info(dir / "synthesis.json"),
+        checkpoint(dir / "checkpoint.json") {}
 };
 
 std::string rootRead(const Distributed* processes, const fs::path& path);
@@ -89,7 +93,8 @@ std::string rootReadCheckpoint(const Distributed* processes, const SynthesisFile
 nlohmann::json parseRootJson(const std::string& text);
 [[noreturn]] void refuseForeign(const fs::path& path);
 
-// ------------------------------------------------------------------ the reduction (synthesis_reduction.cpp)
+// ------------------------------------------------------------------ the reduction
+// (synthesis_reduction.cpp)
 /// Adds a synthesis's blocks, in block order, to the leaves of a MomentTree: a leaf is
 /// `leaf_blocks` blocks added with addBlock to an empty accumulator, then pushed into the tree
 /// (synthesis.hpp, "Accumulation"). Also keeps the failures and run costs in draw order. Not
@@ -97,7 +102,11 @@ nlohmann::json parseRootJson(const std::string& text);
 class LeafSink {
  public:
   LeafSink(const SynthesisPlan& plan, const MomentOptions& mo, MomentTree& tree)
-      : next_block(tree.end() * plan.LB), plan_(plan), mo_(mo), tree_(tree), leaf_(static_cast<int>(plan.p), mo) {}
+      : next_block(tree.end() * plan.LB),
+        plan_(plan),
+        mo_(mo),
+        tree_(tree),
+        leaf_(static_cast<int>(plan.p), mo) {}
 
   /// Adds block next_block (vectors in (draw, road) order; failed runs left out) and moves on.
   void add(PendingBlock& blk) {
@@ -109,7 +118,9 @@ class LeafSink {
       Eigen::Index c = 0;
       for (const auto& d : blk.draws)
         for (const auto& v : d.vectors)
-          if (!v.empty()) X.col(c++) = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(plan_.p));
+          if (!v.empty())
+            X.col(c++) =
+                Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(plan_.p));
       leaf_.addBlock(X);
     }
     for (const auto& d : blk.draws) addRecords(d);
@@ -146,10 +157,16 @@ class LeafSink {
 /// keeps next_block, the failures and the costs.
 class Reduction {
  public:
-  Reduction(const SynthesisPlan& plan, const SynthesisOptions& opt, const SynthesisFiles& files, std::string assembly,
-            std::string fingerprint, bool root)
-      : tree(plan.leaves()), sink(plan, momentOptions(opt), tree), plan_(plan), opt_(opt), files_(files),
-        assembly_(std::move(assembly)), fingerprint_(std::move(fingerprint)), root_(root) {}
+  Reduction(const SynthesisPlan& plan, const SynthesisOptions& opt, const SynthesisFiles& files,
+            std::string assembly, std::string fingerprint, bool root)
+      : tree(plan.leaves()),
+        sink(plan, momentOptions(opt), tree),
+        plan_(plan),
+        opt_(opt),
+        files_(files),
+        assembly_(std::move(assembly)),
+        fingerprint_(std::move(fingerprint)),
+        root_(root) {}
 
   /// Continues from checkpoint.json when the folder has one (InputError when it is another
   /// synthesis's or does not match its node files).
@@ -157,7 +174,8 @@ class Reduction {
     const std::string ckpt_text = rootReadCheckpoint(opt_.processes, files_);
     if (ckpt_text.empty()) return;
     const nlohmann::json j = parseRootJson(ckpt_text);
-    if (!j.is_object() || j.value("fingerprint", "") != fingerprint_ || !j.contains("nodes")) refuseForeign(files_.checkpoint);
+    if (!j.is_object() || j.value("fingerprint", "") != fingerprint_ || !j.contains("nodes"))
+      refuseForeign(files_.checkpoint);
     const long next_leaf = j.at("next_leaf").get<long>();
     if (root_) {
       std::vector<TreeNode> nodes;
@@ -167,13 +185,17 @@ class Reduction {
         node.index = n.at("index").get<long>();
         node.acc = MomentAccumulator::load((files_.dir / n.at("file").get<std::string>()).string());
         if (node.acc.dimension() != static_cast<int>(plan_.p))
-          throw InputError(files_.checkpoint.string(), "does not match " + n.at("file").get<std::string>() + "; delete the folder to start over");
+          throw InputError(files_.checkpoint.string(), "does not match " +
+                                                           n.at("file").get<std::string>() +
+                                                           "; delete the folder to start over");
         nodes.push_back(std::move(node));
       }
       tree = MomentTree::fromNodes(plan_.leaves(), 0, std::move(nodes), files_.checkpoint.string());
       if (tree.end() != next_leaf)
-        throw InputError(files_.checkpoint.string(), "its nodes end at leaf " + std::to_string(tree.end()) + ", not at next_leaf " +
-                                                         std::to_string(next_leaf) + "; delete the folder to start over");
+        throw InputError(files_.checkpoint.string(),
+                         "its nodes end at leaf " + std::to_string(tree.end()) +
+                             ", not at next_leaf " + std::to_string(next_leaf) +
+                             "; delete the folder to start over");
       for (const auto& n : j.at("nodes")) {
         node_files_.push_back(n.at("file").get<std::string>());
         node_sums_.push_back(n.value("checksum", std::string()));
@@ -235,14 +257,21 @@ class Reduction {
     std::vector<std::string> files, sums;
     nlohmann::json nodes = nlohmann::json::array();
     for (const auto& node : tree.nodes()) {
-      const std::string file = "node_" + std::to_string(node.level) + "_" + std::to_string(node.index) + ".bin";
+      const std::string file =
+          "node_" + std::to_string(node.level) + "_" + std::to_string(node.index) + ".bin";
       const auto known = std::find(node_files_.begin(), node_files_.end(), file);
-      std::string sum = known == node_files_.end() ? std::string() : node_sums_[static_cast<std::size_t>(known - node_files_.begin())];
+      std::string sum = known == node_files_.end()
+                            ? std::string()
+                            : node_sums_[static_cast<std::size_t>(known - node_files_.begin())];
       if (known == node_files_.end()) {
         node.acc.save((files_.dir / file).string());
         sum = contentChecksum(readTextFile((files_.dir / file).string()));
       }
-      nodes.push_back({{"level", node.level}, {"index", node.index}, {"file", file}, {"vectors", node.acc.count()}, {"checksum", sum}});
+      nodes.push_back({{"level", node.level},
+                       {"index", node.index},
+                       {"file", file},
+                       {"vectors", node.acc.count()},
+                       {"checksum", sum}});
       files.push_back(file);
       sums.push_back(sum);
     }
@@ -278,9 +307,11 @@ class Reduction {
 /// Simulates draw j on worker w (each worker has its own Simulator, made on first use).
 using DrawFn = std::function<DrawOutput(long j, int w)>;
 
-void reduceOnThreads(const SynthesisPlan& plan, int threads, long first_draw, long end_draw, const DrawFn& draw, LeafSink& sink,
-                     const std::function<void()>& after_block, const std::function<void()>& tick);
-void reduceOnRanks(const Distributed& processes, const SynthesisPlan& plan, int threads, int ranks, const DrawFn& draw, Reduction& red,
-                   Clock::time_point t_run, const ProgressFn& progress);
+void reduceOnThreads(const SynthesisPlan& plan, int threads, long first_draw, long end_draw,
+                     const DrawFn& draw, LeafSink& sink, const std::function<void()>& after_block,
+                     const std::function<void()>& tick);
+void reduceOnRanks(const Distributed& processes, const SynthesisPlan& plan, int threads, int ranks,
+                   const DrawFn& draw, Reduction& red, Clock::time_point t_run,
+                   const ProgressFn& progress);
 
 }  // namespace dtwin::classify

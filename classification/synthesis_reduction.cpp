@@ -19,8 +19,11 @@ std::vector<double> packDraw(const DrawOutput& d) {
   for (const auto& v : d.vectors) pk.put(v);
   pk.put(static_cast<double>(d.failures.size()));
   for (const auto& f : d.failures)
-    pk.put(static_cast<double>(f.draw)).put(static_cast<double>(f.road)).put(static_cast<double>(f.library_index))
-        .put(static_cast<double>(f.road_seed)).put(f.message);
+    pk.put(static_cast<double>(f.draw))
+        .put(static_cast<double>(f.road))
+        .put(static_cast<double>(f.library_index))
+        .put(static_cast<double>(f.road_seed))
+        .put(f.message);
   pk.put(d.cost).put(d.run_wall);
   return pk.take();
 }
@@ -48,8 +51,9 @@ DrawOutput unpackDraw(const std::vector<double>& v) {
 /// as soon as its predecessors are (one reducer at a time; a finished block whose predecessor is
 /// still running waits in `pending`). `after_block` runs after each block is added (under the
 /// reducer's lock); `tick` after each draw.
-void reduceOnThreads(const SynthesisPlan& plan, int threads, long first_draw, long end_draw, const DrawFn& draw, LeafSink& sink,
-                     const std::function<void()>& after_block, const std::function<void()>& tick) {
+void reduceOnThreads(const SynthesisPlan& plan, int threads, long first_draw, long end_draw,
+                     const DrawFn& draw, LeafSink& sink, const std::function<void()>& after_block,
+                     const std::function<void()>& tick) {
   std::mutex state_m, reduce_m, progress_m;
   std::map<long, PendingBlock> pending;  // guarded by state_m
   auto reduce = [&]() {
@@ -74,26 +78,27 @@ void reduceOnThreads(const SynthesisPlan& plan, int threads, long first_draw, lo
       if (it == pending.end() || it->second.remaining > 0) return;
     }
   };
-  parallelFor(static_cast<std::size_t>(end_draw - first_draw), threads, [&](std::size_t task, int w) {
-    const long j = first_draw + static_cast<long>(task);
-    DrawOutput out = draw(j, w);
-    {
-      std::lock_guard<std::mutex> sl(state_m);
-      const long b = j / plan.B;
-      auto& blk = pending[b];
-      if (blk.draws.empty()) {
-        blk.draws.resize(static_cast<std::size_t>(plan.blockSize(b)));
-        blk.remaining = plan.blockSize(b);
-      }
-      blk.draws[static_cast<std::size_t>(j - b * plan.B)] = std::move(out);
-      --blk.remaining;
-    }
-    reduce();
-    if (tick) {
-      std::lock_guard<std::mutex> pl(progress_m);
-      tick();
-    }
-  });
+  parallelFor(static_cast<std::size_t>(end_draw - first_draw), threads,
+              [&](std::size_t task, int w) {
+                const long j = first_draw + static_cast<long>(task);
+                DrawOutput out = draw(j, w);
+                {
+                  std::lock_guard<std::mutex> sl(state_m);
+                  const long b = j / plan.B;
+                  auto& blk = pending[b];
+                  if (blk.draws.empty()) {
+                    blk.draws.resize(static_cast<std::size_t>(plan.blockSize(b)));
+                    blk.remaining = plan.blockSize(b);
+                  }
+                  blk.draws[static_cast<std::size_t>(j - b * plan.B)] = std::move(out);
+                  --blk.remaining;
+                }
+                reduce();
+                if (tick) {
+                  std::lock_guard<std::mutex> pl(progress_m);
+                  tick();
+                }
+              });
   reduce();
 }
 
@@ -117,8 +122,9 @@ std::vector<double> packSink(const LeafSink& s) {
 /// the root appends the round's nodes to its tree. Every node is the tree's own, so the moments
 /// are those of one process bit for bit. Rounds (at most kRoundLeaves leaves per rank, so that a
 /// checkpoint comes every few minutes) are balanced: q = ⌈leaves left / (K · rounds left)⌉.
-void reduceOnRanks(const Distributed& processes, const SynthesisPlan& plan, int threads, int ranks, const DrawFn& draw, Reduction& red,
-                   Clock::time_point t_run, const ProgressFn& progress) {
+void reduceOnRanks(const Distributed& processes, const SynthesisPlan& plan, int threads, int ranks,
+                   const DrawFn& draw, Reduction& red, Clock::time_point t_run,
+                   const ProgressFn& progress) {
   constexpr long kRoundLeaves = 8;
   const Distributed& D = processes;
   const long leaf_draws = plan.LB * plan.B;
@@ -131,17 +137,21 @@ void reduceOnRanks(const Distributed& processes, const SynthesisPlan& plan, int 
     const long lo = std::min(L1, L0 + q * D.rank()), hi = std::min(L1, lo + q);
     MomentTree part(n_leaves, lo);
     std::size_t done = static_cast<std::size_t>(std::min(plan.M, L0 * leaf_draws));
-    const auto packed = distributedMap(&D, static_cast<std::size_t>(ranks), threads, [&](std::size_t r, int) -> std::vector<double> {
-      DTWIN_CHECK(static_cast<int>(r) == D.rank(), "a rank's leaves computed on another rank");
-      LeafSink sink(plan, red.sink.moments(), part);
-      const long j0 = std::min(plan.M, lo * leaf_draws), j1 = std::min(plan.M, hi * leaf_draws);
-      reduceOnThreads(plan, threads, j0, j1, draw, sink, nullptr, [&] {
-        if (progress) progress(std::min<std::size_t>(static_cast<std::size_t>(plan.M), done += static_cast<std::size_t>(ranks)),
-                               static_cast<std::size_t>(plan.M));
-      });
-      DTWIN_CHECK(sink.atLeafBoundary(), "a rank's draws end inside a leaf");
-      return packSink(sink);
-    });
+    const auto packed = distributedMap(
+        &D, static_cast<std::size_t>(ranks), threads,
+        [&](std::size_t r, int) -> std::vector<double> {
+          DTWIN_CHECK(static_cast<int>(r) == D.rank(), "a rank's leaves computed on another rank");
+          LeafSink sink(plan, red.sink.moments(), part);
+          const long j0 = std::min(plan.M, lo * leaf_draws), j1 = std::min(plan.M, hi * leaf_draws);
+          reduceOnThreads(plan, threads, j0, j1, draw, sink, nullptr, [&] {
+            if (progress)
+              progress(std::min<std::size_t>(static_cast<std::size_t>(plan.M),
+                                             done += static_cast<std::size_t>(ranks)),
+                       static_cast<std::size_t>(plan.M));
+          });
+          DTWIN_CHECK(sink.atLeafBoundary(), "a rank's draws end inside a leaf");
+          return packSink(sink);
+        });
     // The parts, combined along the binomial tree of ranks: after step s, rank r (r divisible by
     // 2^(s+1)) holds the leaves of ranks r .. r + 2^(s+1) − 1.
     const auto t_combine = Clock::now();
@@ -150,10 +160,12 @@ void reduceOnRanks(const Distributed& processes, const SynthesisPlan& plan, int 
         D.sendDoubles(D.rank() - s, part.toVector());
         break;
       }
-      if (D.rank() % (2 * s) == 0 && D.rank() + s < ranks) part.append(MomentTree::fromVector(D.receiveDoubles(D.rank() + s)));
+      if (D.rank() % (2 * s) == 0 && D.rank() + s < ranks)
+        part.append(MomentTree::fromVector(D.receiveDoubles(D.rank() + s)));
     }
     if (D.isRoot()) {
-      DTWIN_CHECK(part.first() == L0 && part.end() == L1, "the ranks' parts do not cover the round");
+      DTWIN_CHECK(part.first() == L0 && part.end() == L1,
+                  "the ranks' parts do not cover the round");
       red.tree.append(std::move(part));
     }
     red.combine_s += secondsSince(t_combine);

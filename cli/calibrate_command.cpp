@@ -12,8 +12,8 @@
 #include "common/folder_lock.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
-#include "io/provenance.hpp"
 #include "diagnosis/measurements.hpp"
+#include "io/provenance.hpp"
 #include "study/calibrate.hpp"
 
 namespace dtwin::cli {
@@ -29,14 +29,16 @@ struct CalibrateConfig {
   bool quiet = false, force = false;
 };
 
-/// The lab data file and its scenario: --data FILE[@SCENARIO] (calibrationData, study/calibrate.hpp).
-/// The older --scenario NAME is still accepted, with a note.
+/// The lab data file and its scenario: --data FILE[@SCENARIO] (calibrationData,
+/// study/calibrate.hpp). The older --scenario NAME is still accepted, with a note.
 std::pair<std::string, std::string> calibrationDataOf(const CalibrateConfig& cfg) {
   if (cfg.scenario.empty()) return calibrationData(cfg.data, "--data");
   const diag::MeasurementSpec spec = diag::parseMeasurementArg(cfg.data, "--data");
   if (!spec.scenario.empty() && spec.scenario != cfg.scenario)
-    throw InputError("--scenario", "'" + cfg.scenario + "' differs from the scenario of --data " + cfg.data + ": give it once, as --data FILE@SCENARIO");
-  deprecationNote("twin calibrate --data FILE --scenario NAME", "twin calibrate --data FILE@NAME", cfg.processes);
+    throw InputError("--scenario", "'" + cfg.scenario + "' differs from the scenario of --data " +
+                                       cfg.data + ": give it once, as --data FILE@SCENARIO");
+  deprecationNote("twin calibrate --data FILE --scenario NAME", "twin calibrate --data FILE@NAME",
+                  cfg.processes);
   return calibrationData(cfg.data, "--data", cfg.scenario);
 }
 
@@ -56,7 +58,8 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   opt.processes = cfg.processes;
   if (cfg.seed) opt.seed = *cfg.seed;
   cfg.calibration.applyTo(opt);
-  req.validate(study);  // before anything is printed; main() shows a field as its flag (field_flags below)
+  req.validate(
+      study);  // before anything is printed; main() shows a field as its flag (field_flags below)
   checkCalibrateWork(study, req, cfg.calibration, cfg.force);
   const FolderLock lock(cfg.out, "--out", cfg.processes);  // one run at a time in the folder
   const bool bar_on = progressOn(cfg.quiet, cfg.processes);
@@ -91,32 +94,48 @@ CommandHandle addCalibrateCommand(CLI::App& root, const CommandContext& context)
   cfg->processes = context.processes;
   auto* c = addSubcommand(root, "calibrate");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
-  c->add_option("--data", cfg->data,
-                "Lab data FILE[@SCENARIO] (repetition,time_s,channel,value), e.g. from `twin generate lab`; SCENARIO: the "
-                "study's scenario it was measured on (default: the one its JSON sidecar names, else lab)")
+  c->add_option(
+       "--data", cfg->data,
+       "Lab data FILE[@SCENARIO] (repetition,time_s,channel,value), e.g. from `twin generate lab`; "
+       "SCENARIO: the "
+       "study's scenario it was measured on (default: the one its JSON sidecar names, else lab)")
       ->required();
-  c->add_option("--assembly", cfg->assembly, "Assembly ids (M1, M2, ...; comma separated or repeated) or 'all'")
+  c->add_option("--assembly", cfg->assembly,
+                "Assembly ids (M1, M2, ...; comma separated or repeated) or 'all'")
       ->capture_default_str()
       ->delimiter(',')
       ->multi_option_policy(CLI::MultiOptionPolicy::Join);
   c->add_option("--scenario", cfg->scenario, "Deprecated: give --data FILE@SCENARIO");
   c->add_option("--out", cfg->out,
-                "Output folder; each assembly writes OUT/<id>/ (summary.json, posterior.csv, design.csv, the stages' files); "
+                "Output folder; each assembly writes OUT/<id>/ (summary.json, posterior.csv, "
+                "design.csv, the stages' files); "
                 "a rerun into it resumes")
       ->required();
-  c->add_option("--threads", cfg->threads, "Worker threads per process (0: all cores, shared among the MPI ranks of a machine)")->capture_default_str()->check(CLI::Range(0, 1024));
+  c->add_option(
+       "--threads", cfg->threads,
+       "Worker threads per process (0: all cores, shared among the MPI ranks of a machine)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
   c->add_option("--free", cfg->free,
-                "A fixed value calibrated too, over the range `twin diagnose` gives it (comma separated or repeated): a per-corner or "
-                "per-axle factor such as suspension.damping@rr (over [0.2, 2]), or a vehicle value such as wheel.mass_kg (±50 %)")
+                "A fixed value calibrated too, over the range `twin diagnose` gives it (comma "
+                "separated or repeated): a per-corner or "
+                "per-axle factor such as suspension.damping@rr (over [0.2, 2]), or a vehicle value "
+                "such as wheel.mass_kg (±50 %)")
       ->delimiter(',');
-  cfg->calibration.addTo(c, CalibrationFlags::kSizes | CalibrationFlags::kRegion | CalibrationFlags::kRounds | CalibrationFlags::kSteps);
+  cfg->calibration.addTo(c, CalibrationFlags::kSizes | CalibrationFlags::kRegion |
+                                CalibrationFlags::kRounds | CalibrationFlags::kSteps);
   addSeedOption(c, cfg->seed, "Seed of the design and the sampler (default: the study's seed)");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   addForceOption(c, cfg->force);
-  addExamples(c, {
-               "twin calibrate --study data/studies/demo.toml --data out/lab.csv --assembly M3 --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --out out/calibration",
-               "twin calibrate --study data/studies/demo.toml --data out/lab.csv@lab --assembly M4 --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --out out/calibration",
-               "twin calibrate --study data/studies/demo.toml --data out/lab.csv --assembly M1 --free suspension.damping@rr --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --out out/calibration_rr"});
+  addExamples(c, {"twin calibrate --study data/studies/demo.toml --data out/lab.csv --assembly M3 "
+                  "--lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 "
+                  "--out out/calibration",
+                  "twin calibrate --study data/studies/demo.toml --data out/lab.csv@lab --assembly "
+                  "M4 --lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps "
+                  "0 --out out/calibration",
+                  "twin calibrate --study data/studies/demo.toml --data out/lab.csv --assembly M1 "
+                  "--free suspension.damping@rr --lhs-points 20 --iterations 600 --burn-in 200 "
+                  "--max-rounds 0 --ridge-steps 0 --out out/calibration_rr"});
   CommandHandle handle{c, [cfg, command_line] { return runCalibrate(*cfg, command_line); }, {}};
   CalibrationFlags::addFieldFlags(handle);
   return handle;

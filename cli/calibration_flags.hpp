@@ -18,10 +18,10 @@ namespace dtwin::cli {
 struct CalibrationFlags : CalibrationOverrides {
   /// Which flags a command offers (an OR of these).
   enum Set : unsigned {
-    kSizes = 1,     ///< --lhs-points, --iterations, --burn-in, --starts
-    kRegion = 2,    ///< --region, --design, --interval
-    kSteps = 4,     ///< --steps
-    kRounds = 8,    ///< --max-rounds, --ridge-steps
+    kSizes = 1,   ///< --lhs-points, --iterations, --burn-in, --starts
+    kRegion = 2,  ///< --region, --design, --interval
+    kSteps = 4,   ///< --steps
+    kRounds = 8,  ///< --max-rounds, --ridge-steps
   };
 
   /// Adds the flags of `which` to `app`, storing into this object (which must outlive the parse).

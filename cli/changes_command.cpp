@@ -34,13 +34,16 @@ int runChanges(const ChangesConfig& cfg, const std::string& command) {
       const std::filesystem::path leaf = p.filename().empty() ? p.parent_path() : p;
       return (leaf.parent_path().filename() / leaf.filename()).string();
     };
-    const std::string title = "What changed: " + shortName(cfg.before) + " -> " + shortName(cfg.after) + " (" + r.assembly + ")";
-    writeFileAtomic((std::filesystem::path(cfg.out) / "changes.html").string(), changesPage(r.toJson(), title));
+    const std::string title = "What changed: " + shortName(cfg.before) + " -> " +
+                              shortName(cfg.after) + " (" + r.assembly + ")";
+    writeFileAtomic((std::filesystem::path(cfg.out) / "changes.html").string(),
+                    changesPage(r.toJson(), title));
   }
   if (!cfg.quiet) {
     std::printf("%s", r.text().c_str());
     if (!cfg.out.empty())
-      std::printf("wrote %s, %s\n", (std::filesystem::path(cfg.out) / "changes.json").string().c_str(),
+      std::printf("wrote %s, %s\n",
+                  (std::filesystem::path(cfg.out) / "changes.json").string().c_str(),
                   (std::filesystem::path(cfg.out) / "changes.html").string().c_str());
   }
   return 0;
@@ -52,15 +55,22 @@ CommandHandle addChangesCommand(CLI::App& root, const CommandContext& context) {
   const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<ChangesConfig>();
   auto* c = addSubcommand(root, "changes");
-  c->add_option("--before", cfg->before, "The first drive's calibration folder (twin calibrate's OUT/<id>)")->required();
-  c->add_option("--after", cfg->after, "The second drive's calibration folder, of the same car")->required();
-  c->add_option("--out", cfg->out, "Output folder: changes.json and changes.html (the list as a page); default: print only");
+  c->add_option("--before", cfg->before,
+                "The first drive's calibration folder (twin calibrate's OUT/<id>)")
+      ->required();
+  c->add_option("--after", cfg->after, "The second drive's calibration folder, of the same car")
+      ->required();
+  c->add_option(
+      "--out", cfg->out,
+      "Output folder: changes.json and changes.html (the list as a page); default: print only");
   c->add_option("--level", cfg->level,
-                "Family-wise error rate of the significance rule (Holm over every value both calibrations hold)")
+                "Family-wise error rate of the significance rule (Holm over every value both "
+                "calibrations hold)")
       ->capture_default_str()
       ->check(CLI::Range(1e-6, 0.49));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
-  addExamples(c, {"twin changes --before out/coverage/M3/seed_1001 --after out/coverage/M3/seed_1002 --out out/changes"});
+  addExamples(c, {"twin changes --before out/coverage/M3/seed_1001 --after "
+                  "out/coverage/M3/seed_1002 --out out/changes"});
   return CommandHandle{c, [cfg, command_line] { return runChanges(*cfg, command_line); }, {}};
 }
 

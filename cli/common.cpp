@@ -6,15 +6,16 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "common/errors.hpp"
 #include "common/distributed.hpp"
+#include "common/errors.hpp"
 #include "io/work.hpp"
 
 namespace fs = std::filesystem;
 
 namespace dtwin::cli {
 
-CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, const std::string& help) {
+CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed,
+                           const std::string& help) {
   return app
       ->add_option_function<std::string>(
           "--seed",
@@ -23,7 +24,8 @@ CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, co
             const char* end = v.data() + v.size();
             const auto [p, ec] = std::from_chars(v.data(), end, x);
             if (v.empty() || ec != std::errc() || p != end)
-              throw CLI::ValidationError("--seed", "must be an integer in [0, 18446744073709551615], got '" + v + "'");
+              throw CLI::ValidationError(
+                  "--seed", "must be an integer in [0, 18446744073709551615], got '" + v + "'");
             seed = x;
           },
           help)
@@ -32,7 +34,8 @@ CLI::Option* addSeedOption(CLI::App* app, std::optional<std::uint64_t>& seed, co
 
 void addForceOption(CLI::App* app, bool& force) {
   app->add_flag("--force", force,
-                "Run even when the estimated work exceeds the limits (docs/study-file.md, Limits); the sizes' own limits still hold");
+                "Run even when the estimated work exceeds the limits (docs/study-file.md, Limits); "
+                "the sizes' own limits still hold");
 }
 
 fs::path installPrefix() {
@@ -44,8 +47,10 @@ fs::path installPrefix() {
 
 std::string defaultStudy() {
   const fs::path prefix = installPrefix();
-  const std::string beside = prefix.empty() ? std::string() : (prefix / "share" / "dtwin" / "data").string();
-  for (const std::string& dir : {std::string(DTWIN_SOURCE_DATA_DIR), beside, std::string(DTWIN_INSTALL_DATA_DIR)}) {
+  const std::string beside =
+      prefix.empty() ? std::string() : (prefix / "share" / "dtwin" / "data").string();
+  for (const std::string& dir :
+       {std::string(DTWIN_SOURCE_DATA_DIR), beside, std::string(DTWIN_INSTALL_DATA_DIR)}) {
     if (dir.empty()) continue;
     const fs::path p = fs::path(dir) / "studies" / "demo.toml";
     if (fs::exists(p)) return p.string();
@@ -56,7 +61,8 @@ std::string defaultStudy() {
 std::string installedDocDir() {
   const fs::path prefix = installPrefix();
   std::error_code ec;
-  if (!prefix.empty() && fs::is_directory(prefix / "share" / "doc" / "dtwin", ec)) return (prefix / "share" / "doc" / "dtwin").string();
+  if (!prefix.empty() && fs::is_directory(prefix / "share" / "doc" / "dtwin", ec))
+    return (prefix / "share" / "doc" / "dtwin").string();
   return DTWIN_INSTALL_DOC_DIR;
 }
 
@@ -66,8 +72,11 @@ std::string joinArgs(int argc, char** argv) {
   return s;
 }
 
-void deprecationNote(const std::string& old_shape, const std::string& new_shape, const Distributed* processes) {
-  if (isRootProcess(processes)) std::fprintf(stderr, "twin: note: `%s` is deprecated; use `%s`\n", old_shape.c_str(), new_shape.c_str());
+void deprecationNote(const std::string& old_shape, const std::string& new_shape,
+                     const Distributed* processes) {
+  if (isRootProcess(processes))
+    std::fprintf(stderr, "twin: note: `%s` is deprecated; use `%s`\n", old_shape.c_str(),
+                 new_shape.c_str());
 }
 
 void addExamples(CLI::App* app, const std::vector<std::string>& examples) {
@@ -78,18 +87,22 @@ void addExamples(CLI::App* app, const std::vector<std::string>& examples) {
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
 
-
-bool progressOn(bool quiet, const Distributed* processes) { return !quiet && isRootProcess(processes); }
+bool progressOn(bool quiet, const Distributed* processes) {
+  return !quiet && isRootProcess(processes);
+}
 
 }  // namespace dtwin::cli
 
 namespace dtwin::cli {
 
-std::string messageForCommand(const CommandHandle& handle, const std::string& where, const std::string& rule) {
+std::string messageForCommand(const CommandHandle& handle, const std::string& where,
+                              const std::string& rule) {
   std::string plain = where.empty() ? rule : where + ": " + rule;
   const auto dot = where.rfind('.');
   // Only "<options>.<field>" (no path, no spaces) is an option field.
-  if (dot == std::string::npos || where.find_first_of(" /:") != std::string::npos || handle.app == nullptr) return plain;
+  if (dot == std::string::npos || where.find_first_of(" /:") != std::string::npos ||
+      handle.app == nullptr)
+    return plain;
   const std::string field = where.substr(dot + 1);
   std::string flag;
   if (auto it = handle.field_flags.find(field); it != handle.field_flags.end()) {

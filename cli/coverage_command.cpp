@@ -4,13 +4,13 @@
 #include <filesystem>
 #include <memory>
 
-#include "study/coverage.hpp"
 #include "cli/calibration_flags.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "common/folder_lock.hpp"
 #include "io/study.hpp"
+#include "study/coverage.hpp"
 
 namespace fs = std::filesystem;
 
@@ -30,12 +30,14 @@ struct CoverageConfig {
 int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
   for (const auto& id : cfg.assemblies) study.assembly(id);  // validates the ids
-  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out)) throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
+  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out))
+    throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
   {
     std::vector<std::string> stages;
     for (const auto& id : cfg.assemblies) stages.push_back("calibrate " + id);
     if (stages.empty()) stages.push_back("calibrate");
-    checkCommandWork(cfg.calibration.sized(study), stages, cfg.force, cfg.seeds);  // each seed is one calibration
+    checkCommandWork(cfg.calibration.sized(study), stages, cfg.force,
+                     cfg.seeds);  // each seed is one calibration
   }
   calib::CoverageOptions o;
   o.seeds = cfg.seeds;
@@ -48,29 +50,40 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   o.calibration.processes = cfg.processes;
   cfg.calibration.applyTo(o.calibration);
   o.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
-  const FolderLock lock(cfg.out, "--out", nullptr);  // one run at a time in the folder (on the root alone: command registry)
-  const std::size_t n_asm = cfg.assemblies.empty() ? study.assemblies().size() : cfg.assemblies.size();
+  const FolderLock lock(
+      cfg.out, "--out",
+      nullptr);  // one run at a time in the folder (on the root alone: command registry)
+  const std::size_t n_asm =
+      cfg.assemblies.empty() ? study.assemblies().size() : cfg.assemblies.size();
   if (!cfg.quiet)
-    std::printf("coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n", n_asm, n_asm == 1 ? "y" : "ies",
-                cfg.seeds, cfg.first_seed, cfg.first_seed + cfg.seeds - 1, o.calibration.region.c_str(),
-                o.calibration.design.adaptive ? "adaptive" : "lhs", cfg.out.c_str());
+    std::printf(
+        "coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n",
+        n_asm, n_asm == 1 ? "y" : "ies", cfg.seeds, cfg.first_seed, cfg.first_seed + cfg.seeds - 1,
+        o.calibration.region.c_str(), o.calibration.design.adaptive ? "adaptive" : "lhs",
+        cfg.out.c_str());
   const bool bar_on = progressOn(cfg.quiet, cfg.processes);
   ProgressBar bar("coverage", bar_on, stderrIsTerminal());
   std::string current;
-  const calib::CoverageResult r = calib::runCoverage(
-      study, o, [&](const std::string& a, std::uint64_t seed, int index, int count, const std::string& stage, std::size_t done, std::size_t total) {
-        const std::string label = a + " seed " + std::to_string(seed) + " (" + std::to_string(index + 1) + "/" + std::to_string(count) + ") " + stage;
-        if (label != current) {
-          current = label;
-          bar.restart(label);
-          if (!stderrIsTerminal() && !cfg.quiet && stage == "lab data") std::printf("  %s\n", label.c_str()), std::fflush(stdout);
-        }
-        bar.update(done, total);
-      });
+  const calib::CoverageResult r =
+      calib::runCoverage(study, o,
+                         [&](const std::string& a, std::uint64_t seed, int index, int count,
+                             const std::string& stage, std::size_t done, std::size_t total) {
+                           const std::string label = a + " seed " + std::to_string(seed) + " (" +
+                                                     std::to_string(index + 1) + "/" +
+                                                     std::to_string(count) + ") " + stage;
+                           if (label != current) {
+                             current = label;
+                             bar.restart(label);
+                             if (!stderrIsTerminal() && !cfg.quiet && stage == "lab data")
+                               std::printf("  %s\n", label.c_str()), std::fflush(stdout);
+                           }
+                           bar.update(done, total);
+                         });
   bar.finish();
   if (!cfg.quiet) {
-    std::printf("\n%s\nmedian calibration %.1f s, total %.0f s; %s/coverage.json, %s/coverage.md\n", r.markdown().c_str(),
-                r.median_calibration_wall_s, r.wall_s, cfg.out.c_str(), cfg.out.c_str());
+    std::printf("\n%s\nmedian calibration %.1f s, total %.0f s; %s/coverage.json, %s/coverage.md\n",
+                r.markdown().c_str(), r.median_calibration_wall_s, r.wall_s, cfg.out.c_str(),
+                cfg.out.c_str());
   }
   return 0;
 }
@@ -82,19 +95,31 @@ CommandHandle addCoverageCommand(CLI::App& root, const CommandContext& context) 
   auto cfg = std::make_shared<CoverageConfig>();
   cfg->processes = context.processes;
   auto* c = addSubcommand(root, "coverage");
-  c->add_option("--study", cfg->study, "Study file (TOML); its calibrated truths are what is covered")->capture_default_str();
-  c->add_option("--out", cfg->out, "Output folder (a rerun into it resumes): <id>/lab_<seed>.csv + .json, <id>/seed_<seed>/, coverage.json, coverage.md")->required();
-  c->add_option("--assembly", cfg->assemblies, "Assembly ids (comma separated or repeated; default: all)")->delimiter(',');
-  c->add_option("--seeds", cfg->seeds, "Number of noise seeds N")->capture_default_str()->check(CLI::Range(2, 100000));
-  c->add_option("--first-seed", cfg->first_seed, "Noise seed of the first data set (seeds first .. first + N - 1)")
+  c->add_option("--study", cfg->study,
+                "Study file (TOML); its calibrated truths are what is covered")
+      ->capture_default_str();
+  c->add_option("--out", cfg->out,
+                "Output folder (a rerun into it resumes): <id>/lab_<seed>.csv + .json, "
+                "<id>/seed_<seed>/, coverage.json, coverage.md")
+      ->required();
+  c->add_option("--assembly", cfg->assemblies,
+                "Assembly ids (comma separated or repeated; default: all)")
+      ->delimiter(',');
+  c->add_option("--seeds", cfg->seeds, "Number of noise seeds N")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 100000));
+  c->add_option("--first-seed", cfg->first_seed,
+                "Noise seed of the first data set (seeds first .. first + N - 1)")
       ->capture_default_str()
       ->check(CLI::Range(0LL, (1LL << 62)));
-  c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+  c->add_option("--threads", cfg->threads, "Worker threads (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
   cfg->calibration.addTo(c, CalibrationFlags::kSizes | CalibrationFlags::kRegion);
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success");
   addForceOption(c, cfg->force);
-  addExamples(c, {
-               "twin coverage --study data/studies/demo.toml --assembly M3 --seeds 2 --region paper --lhs-points 20 --iterations 600 --burn-in 200 --out out/coverage"});
+  addExamples(c, {"twin coverage --study data/studies/demo.toml --assembly M3 --seeds 2 --region "
+                  "paper --lhs-points 20 --iterations 600 --burn-in 200 --out out/coverage"});
   CommandHandle handle{c, [cfg, command_line] { return runCoverage(*cfg, command_line); }, {}};
   // Library errors name CoverageOptions and CalibrationOptions fields ("coverage.out_dir",
   // "calibration.gibbs_burn_in"); the fields whose flag is not "--" + the field with '_' as '-':

@@ -3,24 +3,24 @@
 // (cli/command_registry.cpp).
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
 #include <algorithm>
 #include <csignal>
-#include <stdexcept>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
-#include <unistd.h>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
 
 #include "cli/commands.hpp"
 #include "cli/parse_error_text.hpp"
-#include "dtwin/version.hpp"
+#include "common/distributed.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/names.hpp"
-#include "common/distributed.hpp"
+#include "dtwin/version.hpp"
 
 using namespace dtwin;
 using namespace dtwin::cli;
@@ -30,7 +30,8 @@ namespace {
 /// The names of an app's subcommands.
 std::vector<std::string> subcommandNames(const CLI::App& app) {
   std::vector<std::string> names;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
   return names;
 }
 
@@ -44,7 +45,8 @@ std::string unknownCommand(const CLI::App& root, int argc, char** argv) {
     if (word.empty() || word[0] == '-') return "";  // an option: CLI11 checks it
     const std::vector<std::string> names = subcommandNames(*app);
     const auto found = std::find(names.begin(), names.end(), word);
-    if (found == names.end()) return (path.empty() ? "" : path + ": ") + unknownNameRule("command", word, names);
+    if (found == names.end())
+      return (path.empty() ? "" : path + ": ") + unknownNameRule("command", word, names);
     app = app->get_subcommand(word);
     path += (path.empty() ? "" : " ") + word;
   }
@@ -55,7 +57,9 @@ std::string unknownCommand(const CLI::App& root, int argc, char** argv) {
 // death by the same signal (so a shell or scheduler sees it). Every file is written whole or not at
 // all (atomic renames, a journal whose cut last line is dropped), so nothing half-written remains.
 extern "C" void stoppedResumable(int sig) {
-  const char line[] = "\ntwin: stopped by a signal; the finished work is kept: rerun the same command to resume where it stopped\n";
+  const char line[] =
+      "\ntwin: stopped by a signal; the finished work is kept: rerun the same command to resume "
+      "where it stopped\n";
   (void)!::write(STDERR_FILENO, line, sizeof line - 1);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
@@ -70,7 +74,8 @@ extern "C" void stoppedPlain(int sig) {
 /// The stop handlers of the root process (the other ranks die silently: one line per job).
 void sayWhenStopped(bool root, bool resumable) {
   if (!root) return;
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, resumable ? stoppedResumable : stoppedPlain);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP})
+    ::signal(sig, resumable ? stoppedResumable : stoppedPlain);
 }
 
 /// A CLI11 parse error as one line: "<what> (see twin <command> --help)", naming the deepest
@@ -83,7 +88,8 @@ std::string parseErrorLine(const CLI::App& root, const CLI::ParseError& e) {
     path += " " + app->get_name();
   }
   std::string what = parseErrorText(*app, e);
-  if (dynamic_cast<const CLI::RequiredError*>(&e) && oneLine(e.what()) == "A subcommand is required") {
+  if (dynamic_cast<const CLI::RequiredError*>(&e) &&
+      oneLine(e.what()) == "A subcommand is required") {
     what = "a subcommand is required (";
     for (const auto& n : subcommandNames(*app)) what += n + ", ";
     what.resize(what.size() - 2);
@@ -94,7 +100,10 @@ std::string parseErrorLine(const CLI::App& root, const CLI::ParseError& e) {
 
 int runTwin(int argc, char** argv, const Distributed& dist, std::string& error) {
   const CommandContext context{joinArgs(argc, argv), &dist};
-  CLI::App app{"twin: a multibody digital twin of a ground vehicle (Simbody), with Bayesian choice of subsystem fidelity", "twin"};
+  CLI::App app{
+      "twin: a multibody digital twin of a ground vehicle (Simbody), with Bayesian choice of "
+      "subsystem fidelity",
+      "twin"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string(kVersion) + " (" + kGitDescribe + ")\n" + kSimbody);
 
@@ -105,12 +114,14 @@ int runTwin(int argc, char** argv, const Distributed& dist, std::string& error) 
     distributed.push_back(e.value.distributed);
     resumable.push_back(e.value.resumable);
     if (commands.back().app->get_name() != e.name)
-      throw std::logic_error("command registry: the entry '" + e.name + "' adds '" + commands.back().app->get_name() + "'");
+      throw std::logic_error("command registry: the entry '" + e.name + "' adds '" +
+                             commands.back().app->get_name() + "'");
   }
 
   // The overview lists the commands by task (the registry's groups), not as CLI11 would; the
   // subcommands keep CLI11's formatter (each took a copy when it was added).
-  app.formatter_fn([](const CLI::App*, const std::string&, CLI::AppFormatMode) { return topLevelHelp(); });
+  app.formatter_fn(
+      [](const CLI::App*, const std::string&, CLI::AppFormatMode) { return topLevelHelp(); });
   if (argc < 2) {  // `twin` alone: the overview
     if (dist.isRoot()) std::printf("%s", topLevelHelp().c_str());
     return 0;
@@ -124,7 +135,8 @@ int runTwin(int argc, char** argv, const Distributed& dist, std::string& error) 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success))
+      return app.exit(e);  // --help, --version
     error = "error: " + parseErrorLine(app, e);
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 2;
@@ -143,11 +155,14 @@ int runTwin(int argc, char** argv, const Distributed& dist, std::string& error) 
       return commands[i].run();
     }
   } catch (const InputError& e) {
-    error = oneLine(std::string("error: ") + (chosen ? messageForCommand(*chosen, e.where(), e.rule()) : std::string(e.what())));
+    error =
+        oneLine(std::string("error: ") +
+                (chosen ? messageForCommand(*chosen, e.where(), e.rule()) : std::string(e.what())));
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 2;
   } catch (const StorageError& e) {  // the disk filled: what to do, not an internal error
-    error = oneLine(std::string(e.what()) + "; free space and rerun the same command" + (resumes ? " — it resumes where it stopped" : ""));
+    error = oneLine(std::string(e.what()) + "; free space and rerun the same command" +
+                    (resumes ? " — it resumes where it stopped" : ""));
     std::fprintf(stderr, "twin: %s\n", error.c_str());
     return 1;
   } catch (const std::exception& e) {
@@ -168,7 +183,7 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
-  Distributed dist;  // the process context, passed down explicitly (CommandContext)
+  Distributed dist;         // the process context, passed down explicitly (CommandContext)
   dist.init(&argc, &argv);  // MPI when started by mpirun; otherwise one process
   std::string error;
   const int rc = runTwin(argc, argv, dist, error);

@@ -30,7 +30,8 @@ std::vector<std::string> longFlags(const CLI::App& app) {
 
 /// What a value of type `type` (CLI11's type name: FLOAT, INT, UINT, TEXT, ...) is, in words.
 std::string kindOf(const std::string& type) {
-  if (type.find("FLOAT") != std::string::npos || type.find("NUMBER") != std::string::npos) return "a number";
+  if (type.find("FLOAT") != std::string::npos || type.find("NUMBER") != std::string::npos)
+    return "a number";
   if (type.find("UINT") != std::string::npos) return "a whole number of 0 or more";
   if (type.find("INT") != std::string::npos) return "a whole number";
   if (type.find("BOOL") != std::string::npos) return "true or false";
@@ -83,15 +84,20 @@ std::string validationText(const CLI::App& app, const std::string& name, const s
   if (std::regex_match(rule, m, range)) {
     double v = 0;
     const std::string where = rangeText(m[2], m[3]);
-    if (isNumber(m[1], v)) return name + ": " + std::string(m[1]) + " is out of range (it takes " + kind + " " + where + ")";
-    return name + ": '" + std::string(m[1]) + "' is not " + kind + " (it takes " + kind + " " + where + ")";
+    if (isNumber(m[1], v))
+      return name + ": " + std::string(m[1]) + " is out of range (it takes " + kind + " " + where +
+             ")";
+    return name + ": '" + std::string(m[1]) + "' is not " + kind + " (it takes " + kind + " " +
+           where + ")";
   }
-  if (std::regex_match(rule, m, member)) return name + ": " + unknownNameRule("value", m[1], setMembers(m[2]));
+  if (std::regex_match(rule, m, member))
+    return name + ": " + unknownNameRule("value", m[1], setMembers(m[2]));
   if (std::regex_match(rule, m, missing)) {
     const std::string what = m[1] == "File" ? "file" : m[1] == "Directory" ? "folder" : "path";
     return name + ": " + what + " '" + std::string(m[2]) + "' not found";
   }
-  if (std::regex_match(rule, m, parsing)) return name + ": '" + std::string(m[1]) + "' is not " + kindOf(m[2]);
+  if (std::regex_match(rule, m, parsing))
+    return name + ": '" + std::string(m[1]) + "' is not " + kindOf(m[2]);
   return "";
 }
 
@@ -102,10 +108,12 @@ std::string extrasText(const CLI::App& app) {
     if (arg.size() < 2 || arg[0] != '-') continue;
     const std::string flag = arg.substr(0, arg.find('='));
     const std::string hint = closestName(flag, longFlags(app));
-    return "unknown option '" + flag + "'" + (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)");
+    return "unknown option '" + flag + "'" +
+           (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)");
   }
   if (!left.empty())
-    return "unexpected argument '" + left.front() + "': every input is given by its option (e.g. --data FILE)";
+    return "unexpected argument '" + left.front() +
+           "': every input is given by its option (e.g. --data FILE)";
   return "unexpected arguments";
 }
 
@@ -127,11 +135,15 @@ std::string parseErrorText(const CLI::App& app, const CLI::ParseError& e) {
     const std::regex flag_many(R"(^(\S+): too many inputs for a flag$)");
     if (std::regex_match(what, m, convert)) {
       const CLI::Option* opt = findOption(app, m[1]);
-      return std::string(m[1]) + ": '" + std::string(m[2]) + "' is not " + (opt ? kindOf(opt->get_type_name()) : std::string("a valid value"));
+      return std::string(m[1]) + ": '" + std::string(m[2]) + "' is not " +
+             (opt ? kindOf(opt->get_type_name()) : std::string("a valid value"));
     }
-    if (std::regex_match(what, m, allowed)) return std::string(m[2]) + ": '" + std::string(m[1]) + "' is not an allowed value";
-    if (std::regex_match(what, m, flag_value)) return std::string(m[1]) + " is a switch: give it alone, or =true / =false";
-    if (std::regex_match(what, m, flag_many)) return std::string(m[1]) + " is a switch and takes no value";
+    if (std::regex_match(what, m, allowed))
+      return std::string(m[2]) + ": '" + std::string(m[1]) + "' is not an allowed value";
+    if (std::regex_match(what, m, flag_value))
+      return std::string(m[1]) + " is a switch: give it alone, or =true / =false";
+    if (std::regex_match(what, m, flag_many))
+      return std::string(m[1]) + " is a switch and takes no value";
   }
   if (dynamic_cast<const CLI::ValidationError*>(&e)) {
     const std::regex named(R"(^(-?-?[A-Za-z0-9_][A-Za-z0-9_-]*): (.*)$)");
@@ -143,22 +155,27 @@ std::string parseErrorText(const CLI::App& app, const CLI::ParseError& e) {
     const std::regex count(R"(^Expected (exactly|at least) (\d+) arguments? to (\S+), got (\d+)$)");
     if (std::regex_match(what, m, missing)) {
       const std::string kind = kindOf(m[2]);
-      return std::string(m[1]) + " needs a value" + (kind == "a value" ? std::string() : " (" + kind + ")");
+      return std::string(m[1]) + " needs a value" +
+             (kind == "a value" ? std::string() : " (" + kind + ")");
     }
     if (std::regex_match(what, m, count))
-      return std::string(m[3]) + " takes " + std::string(m[1]) + " " + std::string(m[2]) + " value(s), got " + std::string(m[4]);
+      return std::string(m[3]) + " takes " + std::string(m[1]) + " " + std::string(m[2]) +
+             " value(s), got " + std::string(m[4]);
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e)) {
     const std::regex required(R"(^(\S+) is required$)");
-    if (std::regex_match(what, m, required)) return "the option " + std::string(m[1]) + " is required";
+    if (std::regex_match(what, m, required))
+      return "the option " + std::string(m[1]) + " is required";
   }
   if (dynamic_cast<const CLI::ExcludesError*>(&e)) {
     const std::regex excludes(R"(^(\S+) excludes (\S+)$)");
-    if (std::regex_match(what, m, excludes)) return std::string(m[1]) + " and " + std::string(m[2]) + " cannot be given together";
+    if (std::regex_match(what, m, excludes))
+      return std::string(m[1]) + " and " + std::string(m[2]) + " cannot be given together";
   }
   if (dynamic_cast<const CLI::RequiresError*>(&e)) {
     const std::regex requires_(R"(^(\S+) requires (\S+)$)");
-    if (std::regex_match(what, m, requires_)) return std::string(m[1]) + " needs " + std::string(m[2]) + " as well";
+    if (std::regex_match(what, m, requires_))
+      return std::string(m[1]) + " needs " + std::string(m[2]) + " as well";
   }
   return lowerFirst(what);
 }

@@ -17,9 +17,12 @@ class ProgressBar {
   /// `enabled` false: nothing; true: a bar on a terminal, else lines (see the header note).
   /// `line_every` and `out` are for tests.
   ProgressBar(std::string label, bool enabled, bool terminal,
-              std::chrono::milliseconds line_every = std::chrono::seconds(30), std::FILE* out = stderr)
+              std::chrono::milliseconds line_every = std::chrono::seconds(30),
+              std::FILE* out = stderr)
       : label_(std::move(label)),
-        mode_(!enabled ? Mode::Off : terminal ? Mode::Bar : Mode::Lines),
+        mode_(!enabled   ? Mode::Off
+              : terminal ? Mode::Bar
+                         : Mode::Lines),
         line_every_(line_every),
         out_(out) {}
   ~ProgressBar() { finish(); }
@@ -51,7 +54,10 @@ class ProgressBar {
       const bool due = now - last_line_ >= line_every_;
       const bool closing = done >= total && lines_in_stage_ > 0;
       if (!due && !closing) return;
-      if (closing) lines_in_stage_ = 0; else ++lines_in_stage_;
+      if (closing)
+        lines_in_stage_ = 0;
+      else
+        ++lines_in_stage_;
       last_line_ = now;
       std::fprintf(out_, "%s: %zu/%zu %.0f%% %s\n", label_.c_str(), done, total,
                    100 * (total ? static_cast<double>(done) / static_cast<double>(total) : 1.0),
@@ -66,8 +72,8 @@ class ProgressBar {
     const int width = 30, fill = static_cast<int>(frac * width + 0.5);
     std::string bar(static_cast<std::size_t>(fill), '#');
     bar.resize(width, '.');
-    std::fprintf(out_, "\r%-22s [%s] %zu/%zu %3.0f%% ETA %s   ", label_.c_str(), bar.c_str(), done, total, 100 * frac,
-                 eta(now, done, total).c_str());
+    std::fprintf(out_, "\r%-22s [%s] %zu/%zu %3.0f%% ETA %s   ", label_.c_str(), bar.c_str(), done,
+                 total, 100 * frac, eta(now, done, total).c_str());
     std::fflush(out_);
     drawn_ = true;
   }
@@ -87,7 +93,8 @@ class ProgressBar {
     char text[48] = "ETA --";
     if (fresh > 0 && done < total) {
       const double rest = elapsed / static_cast<double>(fresh) * static_cast<double>(total - done);
-      std::snprintf(text, sizeof text, "ETA %dm%02ds", static_cast<int>(rest) / 60, static_cast<int>(rest) % 60);
+      std::snprintf(text, sizeof text, "ETA %dm%02ds", static_cast<int>(rest) / 60,
+                    static_cast<int>(rest) % 60);
     } else if (done >= total) {
       std::snprintf(text, sizeof text, "done in %.1fs", elapsed);
     }

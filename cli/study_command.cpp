@@ -2,12 +2,12 @@
 #include <cstdio>
 #include <memory>
 
-#include "study/run.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "common/folder_lock.hpp"
 #include "io/study.hpp"
+#include "study/run.hpp"
 
 namespace dtwin::cli {
 namespace {
@@ -19,10 +19,12 @@ struct StudyConfig {
   bool quiet = false, force = false;
 };
 
-int runStudyCommand(const StudyConfig& cfg, const std::string& command, const CLI::Option* study_flag) {
+int runStudyCommand(const StudyConfig& cfg, const std::string& command,
+                    const CLI::Option* study_flag) {
   std::string study_file = cfg.study;
   if (!cfg.positional.empty()) {  // the older shape `twin study FILE`
-    if (study_flag->count() > 0) throw InputError("--study", "give the study file once (--study FILE)");
+    if (study_flag->count() > 0)
+      throw InputError("--study", "give the study file once (--study FILE)");
     deprecationNote("twin study FILE", "twin study --study FILE", cfg.processes);
     study_file = cfg.positional;
   }
@@ -55,7 +57,8 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command, const CL
   };
   const auto s = study::runStudy(study, o, cfg.out, progress, log);
   bar.finish();
-  if (!cfg.quiet && isRootProcess(cfg.processes)) {  // under MPI the other ranks do not run the classification
+  if (!cfg.quiet &&
+      isRootProcess(cfg.processes)) {  // under MPI the other ranks do not run the classification
     std::printf("wins:");
     for (auto& [id, n] : s["wins"].items()) std::printf(" %s %d", id.c_str(), n.get<int>());
     std::printf("\n%s\nstages [s]:", s["recommendation_sentence"].get<std::string>().c_str());
@@ -72,20 +75,27 @@ CommandHandle addStudyCommand(CLI::App& root, const CommandContext& context) {
   auto cfg = std::make_shared<StudyConfig>();
   cfg->processes = context.processes;
   auto* c = addSubcommand(root, "study");
-  auto* study_flag = c->add_option("--study", cfg->study, "Study file (TOML); default: the embedded demo study")->capture_default_str();
+  auto* study_flag =
+      c->add_option("--study", cfg->study, "Study file (TOML); default: the embedded demo study")
+          ->capture_default_str();
   c->add_option("study_file", cfg->positional, "Deprecated: give --study FILE");
   c->add_option("--out", cfg->out,
-                "Study folder (created; a rerun into it resumes): summary.json, study.json, lab/, field/, calibration/, synthetic/, "
+                "Study folder (created; a rerun into it resumes): summary.json, study.json, lab/, "
+                "field/, calibration/, synthetic/, "
                 "classification/")
       ->capture_default_str();
   c->add_option("--lab", cfg->lab, "Use these lab data (CSV) instead of generating them");
-  c->add_option("--field", cfg->field, "Use these field records (CSV matrix) instead of generating them");
-  c->add_option("--threads", cfg->threads, "Worker threads (0: all cores; never changes the numbers)")->check(CLI::Range(0, 1024));
+  c->add_option("--field", cfg->field,
+                "Use these field records (CSV matrix) instead of generating them");
+  c->add_option("--threads", cfg->threads,
+                "Worker threads (0: all cores; never changes the numbers)")
+      ->check(CLI::Range(0, 1024));
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
   addForceOption(c, cfg->force);
-  addExamples(c, {
-               "twin study --study data/studies/demo.toml --out out/study"});
-  return {c, [cfg, command_line, study_flag] { return runStudyCommand(*cfg, command_line, study_flag); }};
+  addExamples(c, {"twin study --study data/studies/demo.toml --out out/study"});
+  return {c, [cfg, command_line, study_flag] {
+            return runStudyCommand(*cfg, command_line, study_flag);
+          }};
 }
 
 }  // namespace dtwin::cli

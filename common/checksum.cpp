@@ -46,12 +46,12 @@ std::string setAsideCorrupt(const std::string& path, const std::string& what) {
   std::filesystem::rename(path, aside, ec);
   if (ec) {  // cannot rename: at least never read it again
     std::filesystem::remove(path, ec);
-    std::fprintf(stderr, "twin: note: %s: %s: the stage is redone, not trusted (removed)\n", printable(path).c_str(),
-                 printable(what).c_str());
+    std::fprintf(stderr, "twin: note: %s: %s: the stage is redone, not trusted (removed)\n",
+                 printable(path).c_str(), printable(what).c_str());
     return std::string();
   }
-  std::fprintf(stderr, "twin: note: %s: %s: the stage is redone, not trusted (set aside as %s)\n", printable(path).c_str(),
-               printable(what).c_str(), printable(aside).c_str());
+  std::fprintf(stderr, "twin: note: %s: %s: the stage is redone, not trusted (set aside as %s)\n",
+               printable(path).c_str(), printable(what).c_str(), printable(aside).c_str());
   std::fflush(stderr);
   return aside;
 }

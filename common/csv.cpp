@@ -14,7 +14,8 @@ std::string_view trim(std::string_view s) {
 }
 }  // namespace
 
-CsvReader::CsvReader(const std::string& text, std::string name, char sep) : text_(text), name_(std::move(name)), sep_(sep) {
+CsvReader::CsvReader(const std::string& text, std::string name, char sep)
+    : text_(text), name_(std::move(name)), sep_(sep) {
   if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
 }
 
@@ -23,7 +24,8 @@ std::string CsvReader::where() const { return name_ + ":" + std::to_string(line_
 bool CsvReader::next() {
   while (pos_ < text_.size()) {
     const std::size_t end = text_.find('\n', pos_);
-    std::string_view line = text_.substr(pos_, end == std::string_view::npos ? std::string_view::npos : end - pos_);
+    std::string_view line =
+        text_.substr(pos_, end == std::string_view::npos ? std::string_view::npos : end - pos_);
     pos_ = end == std::string_view::npos ? text_.size() : end + 1;
     ++line_;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
@@ -75,7 +77,8 @@ bool CsvReader::next() {
         i = s;
       } else {
         const std::size_t s = line.find(sep_, i);
-        fields_.push_back(trim(line.substr(i, s == std::string_view::npos ? std::string_view::npos : s - i)));
+        fields_.push_back(
+            trim(line.substr(i, s == std::string_view::npos ? std::string_view::npos : s - i)));
         if (s == std::string_view::npos) break;
         i = s + 1;
       }

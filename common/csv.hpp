@@ -38,7 +38,8 @@ class CsvReader {
   std::size_t pos_ = 0;
   long line_ = 0;
   std::vector<std::string_view> fields_;
-  std::deque<std::string> unquoted_;  // fields that held "" (rare): their unescaped text (stable addresses)
+  std::deque<std::string>
+      unquoted_;  // fields that held "" (rare): their unescaped text (stable addresses)
 };
 
 }  // namespace dtwin

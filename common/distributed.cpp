@@ -64,7 +64,6 @@ bool launchedByMpi() {
 }
 #endif
 
-
 void addField(std::string& out, const std::string& s) { out += std::to_string(s.size()) + ":" + s; }
 std::string nextField(const std::string& in, std::size_t& pos) {
   const std::size_t colon = in.find(':', pos);
@@ -144,7 +143,8 @@ int Distributed::finish(int rc, const std::string& message) {
   std::fflush(stdout);
   std::fflush(stderr);
   auto say = [&](const std::string& text) {
-    const std::string line = "twin: rank " + std::to_string(rank_) + " of " + std::to_string(size_) + ": " + text + "\n";
+    const std::string line =
+        "twin: rank " + std::to_string(rank_) + " of " + std::to_string(size_) + ": " + text + "\n";
     const int fd = saved_stderr_ >= 0 ? saved_stderr_ : STDERR_FILENO;
     if (::write(fd, line.data(), line.size()) < 0) {
     }
@@ -157,7 +157,8 @@ int Distributed::finish(int rc, const std::string& message) {
     MPI_Test(&req, &arrived, MPI_STATUS_IGNORE);
     if (arrived) break;
     if (rc != 0 && std::chrono::steady_clock::now() - t0 > std::chrono::seconds(120)) {
-      say((message.empty() ? std::string("failed") : message) + " (the other ranks did not stop: aborting the job)");
+      say((message.empty() ? std::string("failed") : message) +
+          " (the other ranks did not stop: aborting the job)");
       MPI_Abort(MPI_COMM_WORLD, rc);
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -168,7 +169,8 @@ int Distributed::finish(int rc, const std::string& message) {
   for (int r : rcs)
     if (job == 0 && r != 0) job = r;
   if (rank_ != 0 && rc != 0 && rcs[0] != rc) say(message.empty() ? std::string("failed") : message);
-  if (rank_ == 0 && rc == 0 && job != 0) std::fprintf(stderr, "twin: error: another rank failed (exit code %d)\n", job);
+  if (rank_ == 0 && rc == 0 && job != 0)
+    std::fprintf(stderr, "twin: error: another rank failed (exit code %d)\n", job);
   std::fflush(stderr);
   MPI_Comm_free(&comms_->work);
   MPI_Comm_free(&comms_->exit);
@@ -193,7 +195,8 @@ void Distributed::barrier() const {
 #endif
 }
 
-std::string Distributed::broadcastFromRoot(const std::string& payload, const std::exception_ptr& error) const {
+std::string Distributed::broadcastFromRoot(const std::string& payload,
+                                           const std::exception_ptr& error) const {
 #ifdef DTWIN_HAVE_MPI
   if (mpi_ && size_ > 1) {
     std::string msg;
@@ -212,7 +215,8 @@ std::string Distributed::broadcastFromRoot(const std::string& payload, const std
   return payload;
 }
 
-void Distributed::gatherMap(std::vector<std::vector<double>>& out, long long local_fail, const std::exception_ptr& error) const {
+void Distributed::gatherMap(std::vector<std::vector<double>>& out, long long local_fail,
+                            const std::exception_ptr& error) const {
   if (error && local_fail < 0) local_fail = rank_;  // defensive: an error not tied to a task
 #ifdef DTWIN_HAVE_MPI
   if (mpi_ && size_ > 1) {
@@ -239,15 +243,17 @@ void Distributed::gatherMap(std::vector<std::vector<double>>& out, long long loc
     std::vector<int> counts(size), displs(size);
     long long total = 0;
     for (std::size_t r = 0; r < size; ++r) {
-      DTWIN_CHECK(all[2 * r] <= INT_MAX, "a rank's results exceed 2^31 doubles: use smaller batches");
+      DTWIN_CHECK(all[2 * r] <= INT_MAX,
+                  "a rank's results exceed 2^31 doubles: use smaller batches");
       counts[r] = static_cast<int>(all[2 * r]);
       displs[r] = static_cast<int>(total);
       total += all[2 * r];
-      DTWIN_CHECK(total <= INT_MAX, "the gathered results exceed 2^31 doubles: use smaller batches");
+      DTWIN_CHECK(total <= INT_MAX,
+                  "the gathered results exceed 2^31 doubles: use smaller batches");
     }
     std::vector<double> recv(static_cast<std::size_t>(total));
-    MPI_Allgatherv(buf.data(), counts[static_cast<std::size_t>(rank_)], MPI_DOUBLE, recv.data(), counts.data(), displs.data(),
-                   MPI_DOUBLE, comms_->work);
+    MPI_Allgatherv(buf.data(), counts[static_cast<std::size_t>(rank_)], MPI_DOUBLE, recv.data(),
+                   counts.data(), displs.data(), MPI_DOUBLE, comms_->work);
     for (std::size_t r = 0; r < size; ++r) {
       std::size_t pos = static_cast<std::size_t>(displs[r]);
       const std::size_t end = pos + static_cast<std::size_t>(counts[r]);
@@ -256,7 +262,8 @@ void Distributed::gatherMap(std::vector<std::vector<double>>& out, long long loc
         const std::size_t len = static_cast<std::size_t>(recv[pos++]);
         DTWIN_CHECK(pos + len <= end, "gathered results are shorter than expected");
         if (r != static_cast<std::size_t>(rank_))
-          out[i].assign(recv.begin() + static_cast<long>(pos), recv.begin() + static_cast<long>(pos + len));
+          out[i].assign(recv.begin() + static_cast<long>(pos),
+                        recv.begin() + static_cast<long>(pos + len));
         pos += len;
       }
       DTWIN_CHECK(pos == end, "gathered results are longer than expected");
@@ -278,7 +285,8 @@ void Distributed::sendDoubles(int to, const std::vector<double>& values) const {
     long long n = static_cast<long long>(values.size());
     MPI_Send(&n, 1, MPI_LONG_LONG, to, 1, comms_->work);
     for (long long at = 0; at < n; at += kPiece)
-      MPI_Send(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, to, 2, comms_->work);
+      MPI_Send(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, to, 2,
+               comms_->work);
     return;
   }
 #endif
@@ -296,7 +304,8 @@ std::vector<double> Distributed::receiveDoubles(int from) const {
     DTWIN_CHECK(n >= 0, "receiveDoubles: a negative length");
     std::vector<double> values(static_cast<std::size_t>(n));
     for (long long at = 0; at < n; at += kPiece)
-      MPI_Recv(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, from, 2, comms_->work, MPI_STATUS_IGNORE);
+      MPI_Recv(values.data() + at, static_cast<int>(std::min(kPiece, n - at)), MPI_DOUBLE, from, 2,
+               comms_->work, MPI_STATUS_IGNORE);
     return values;
   }
 #endif

@@ -12,7 +12,8 @@
 //
 // The collective that spreads simulations:
 //
-//   auto results = distributedMap(processes, n, threads, [&](std::size_t i, int worker) -> std::vector<double> {
+//   auto results = distributedMap(processes, n, threads, [&](std::size_t i, int worker) ->
+//   std::vector<double> {
 //     ... simulate task i, using state private to `worker` ...
 //   });
 //
@@ -30,7 +31,8 @@
 //  * only the root (rank 0) writes files and prints; a decision that depends on a file (resume)
 //    is taken from what the root read (onRoot), never from each rank's own view of a shared
 //    filesystem;
-//  * main() creates the Distributed object, calls init() first and returns finish(rc, message): an error on any rank ends the
+//  * main() creates the Distributed object, calls init() first and returns finish(rc, message): an
+//  error on any rank ends the
 //    whole job (MPI_Abort after a grace period) instead of leaving the others waiting forever.
 #include <algorithm>
 #include <cstddef>
@@ -86,7 +88,8 @@ class Distributed {
   /// which this rank computed its own entries; `local_fail` is the lowest failing task index of
   /// this rank (or -1) and `error` its exception. Throws the lowest failing task's error on
   /// every rank.
-  void gatherMap(std::vector<std::vector<double>>& out, long long local_fail, const std::exception_ptr& error) const;
+  void gatherMap(std::vector<std::vector<double>>& out, long long local_fail,
+                 const std::exception_ptr& error) const;
   /// Point to point, for reductions along a tree of ranks: `values` to rank `to`, which must call
   /// receiveDoubles(from this rank). Any length (sent in pieces of at most 2^27 doubles).
   void sendDoubles(int to, const std::vector<double>& values) const;
@@ -123,11 +126,14 @@ inline int distributedWorkers(const Distributed* processes, std::size_t n, int t
 }
 
 /// See the top of this file. `progress(done, n)` (optional) is called one call at a time as this
-/// rank's tasks finish (done estimated from this rank's share under MPI), and with (n, n) at the end.
+/// rank's tasks finish (done estimated from this rank's share under MPI), and with (n, n) at the
+/// end.
 template <class F>
-std::vector<std::vector<double>> distributedMap(const Distributed* processes, std::size_t n, int threads, F f,
-                                                const std::function<void(std::size_t, std::size_t)>& progress = nullptr) {
-  const std::size_t size = static_cast<std::size_t>(processCount(processes)), rank = static_cast<std::size_t>(processRank(processes));
+std::vector<std::vector<double>> distributedMap(
+    const Distributed* processes, std::size_t n, int threads, F f,
+    const std::function<void(std::size_t, std::size_t)>& progress = nullptr) {
+  const std::size_t size = static_cast<std::size_t>(processCount(processes)),
+                    rank = static_cast<std::size_t>(processRank(processes));
   std::vector<std::vector<double>> out(n);
   std::mutex m;
   std::size_t done = 0;
@@ -154,7 +160,8 @@ std::vector<std::vector<double>> distributedMap(const Distributed* processes, st
         out[i] = f(i, w);
       } catch (...) {
         std::lock_guard<std::mutex> lock(m);
-        if (local_fail < 0 || static_cast<long long>(i) < local_fail) local_fail = static_cast<long long>(i);
+        if (local_fail < 0 || static_cast<long long>(i) < local_fail)
+          local_fail = static_cast<long long>(i);
         throw;
       }
       tick();
@@ -194,8 +201,8 @@ void rootWrites(const Distributed* processes, F write) {
   });
 }
 
-/// A file's bytes as the root reads them (InputError if it cannot be read), on every rank: files the root wrote in
-/// this run are never read from another rank's view of a shared filesystem.
+/// A file's bytes as the root reads them (InputError if it cannot be read), on every rank: files
+/// the root wrote in this run are never read from another rank's view of a shared filesystem.
 std::string rootFileBytes(const Distributed* processes, const std::string& path);
 
 /// Packing of mixed values into the doubles distributedMap carries (integers up to 2^53 exactly,
@@ -230,7 +237,8 @@ class Unpacker {
   std::vector<double> vec() {
     const std::size_t k = static_cast<std::size_t>(at());
     check(k);
-    std::vector<double> r(v_.begin() + static_cast<long>(pos_), v_.begin() + static_cast<long>(pos_ + k));
+    std::vector<double> r(v_.begin() + static_cast<long>(pos_),
+                          v_.begin() + static_cast<long>(pos_ + k));
     pos_ += k;
     return r;
   }
@@ -238,7 +246,8 @@ class Unpacker {
     const std::size_t k = static_cast<std::size_t>(at());
     check(k);
     std::string s(k, '\0');
-    for (std::size_t j = 0; j < k; ++j) s[j] = static_cast<char>(static_cast<unsigned char>(v_[pos_ + j]));
+    for (std::size_t j = 0; j < k; ++j)
+      s[j] = static_cast<char>(static_cast<unsigned char>(v_[pos_ + j]));
     pos_ += k;
     return s;
   }
@@ -249,7 +258,8 @@ class Unpacker {
     return v_[pos_++];
   }
   void check(std::size_t k) const {
-    if (pos_ + k > v_.size()) throw std::logic_error("internal error: Unpacker read past the end of a packed result");
+    if (pos_ + k > v_.size())
+      throw std::logic_error("internal error: Unpacker read past the end of a packed result");
   }
   const std::vector<double>& v_;
   std::size_t pos_ = 0;

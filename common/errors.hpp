@@ -20,11 +20,16 @@ inline std::string printable(const std::string& text) {
   std::string out;
   out.reserve(text.size());
   for (unsigned char c : text) {
-    if (c >= 0x20 && c != 0x7f) out += static_cast<char>(c);
-    else if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else if (c == '\t') out += "\\t";
-    else out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    if (c >= 0x20 && c != 0x7f)
+      out += static_cast<char>(c);
+    else if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else if (c == '\t')
+      out += "\\t";
+    else
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
   }
   return out;
 }
@@ -35,8 +40,10 @@ class InputError : public std::runtime_error {
   /// `rule` the rule that was broken ("must be > 0, got -0.2"). Both are kept on one line
   /// (printable above): a quoted field that holds a line end cannot split the message.
   InputError(const std::string& where, const std::string& rule)
-      : std::runtime_error(where.empty() ? printable(rule) : printable(where) + ": " + printable(rule)),
-        where_(printable(where)), rule_(printable(rule)) {}
+      : std::runtime_error(where.empty() ? printable(rule)
+                                         : printable(where) + ": " + printable(rule)),
+        where_(printable(where)),
+        rule_(printable(rule)) {}
   const std::string& where() const { return where_; }
   const std::string& rule() const { return rule_; }
 
@@ -51,7 +58,9 @@ class InputError : public std::runtime_error {
 class StorageError : public std::runtime_error {
  public:
   StorageError(const std::string& path, int error_number)
-      : std::runtime_error(printable(path) + ": cannot write: " + reason(error_number)), path_(printable(path)), errno_(error_number) {}
+      : std::runtime_error(printable(path) + ": cannot write: " + reason(error_number)),
+        path_(printable(path)),
+        errno_(error_number) {}
   const std::string& path() const { return path_; }
   int errorNumber() const { return errno_; }
 
@@ -61,7 +70,9 @@ class StorageError : public std::runtime_error {
   }
   /// "the disk is full (No space left on device)", and the like for EDQUOT and EFBIG.
   static std::string reason(int error_number) {
-    const char* what = error_number == EDQUOT ? "the disk quota is used up" : error_number == EFBIG ? "the file size limit is reached" : "the disk is full";
+    const char* what = error_number == EDQUOT  ? "the disk quota is used up"
+                       : error_number == EFBIG ? "the file size limit is reached"
+                                               : "the disk is full";
     return std::string(what) + " (" + std::strerror(error_number) + ")";
   }
 
@@ -79,9 +90,9 @@ inline std::string internalErrorText(const std::string& what) {
 
 }  // namespace dtwin
 
-#define DTWIN_CHECK(cond, msg)                                                          \
-  do {                                                                                  \
-    if (!(cond))                                                                        \
-      throw std::logic_error(std::string("internal error: ") + (msg) + " [" #cond "] (" \
-                             __FILE__ ":" + std::to_string(__LINE__) + ")");            \
+#define DTWIN_CHECK(cond, msg)                                                                \
+  do {                                                                                        \
+    if (!(cond))                                                                              \
+      throw std::logic_error(std::string("internal error: ") + (msg) +                        \
+                             " [" #cond "] (" __FILE__ ":" + std::to_string(__LINE__) + ")"); \
   } while (0)

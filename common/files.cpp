@@ -16,7 +16,8 @@ namespace dtwin {
 
 std::string readTextFile(const std::string& path, const std::string& hint) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a folder, not a file" + hint);
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, "is a folder, not a file" + hint);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot be read" + hint);
   std::ostringstream s;
@@ -54,8 +55,11 @@ void writeFileAtomic(const std::string& path, const std::string& content) {
   const fs::path p(path);
   std::error_code ec;
   if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-  if (ec && StorageError::isStorageFull(ec.value())) throw StorageError(p.parent_path().string(), ec.value());
-  if (ec) throw InputError(path, "cannot create folder " + p.parent_path().string() + ": " + ec.message());
+  if (ec && StorageError::isStorageFull(ec.value()))
+    throw StorageError(p.parent_path().string(), ec.value());
+  if (ec)
+    throw InputError(path,
+                     "cannot create folder " + p.parent_path().string() + ": " + ec.message());
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0 && StorageError::isStorageFull(errno)) throw StorageError(path, errno);

@@ -39,7 +39,8 @@ std::string holderOf(int fd) {
 
 /// Takes the lock on this process; returns the open descriptor (-1, after a note, on a filesystem
 /// without locks). `created` tells whether the folder was made here.
-int lockFolder(const std::string& dir, const std::string& path, const std::string& flag, bool& created) {
+int lockFolder(const std::string& dir, const std::string& path, const std::string& flag,
+               bool& created) {
   const std::string where = flag + " " + dir;
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
@@ -58,8 +59,9 @@ int lockFolder(const std::string& dir, const std::string& path, const std::strin
     while (rc != 0 && errno == EINTR);
     if (rc != 0 && (errno == ENOLCK || errno == ENOSYS || errno == EOPNOTSUPP || errno == EINVAL)) {
       // A filesystem without locks (some cluster filesystems): run as before, and say so.
-      std::fprintf(stderr, "twin: note: %s: %s\n", where.c_str(),
-                   systemError("the folder cannot be locked; a second run into it is not detected").c_str());
+      std::fprintf(
+          stderr, "twin: note: %s: %s\n", where.c_str(),
+          systemError("the folder cannot be locked; a second run into it is not detected").c_str());
       ::close(fd);
       return -1;
     }
@@ -71,12 +73,14 @@ int lockFolder(const std::string& dir, const std::string& path, const std::strin
         errno = err;
         throw InputError(where, systemError("cannot lock " + path));
       }
-      throw InputError(where, "in use by another twin run" + (holder.empty() ? std::string() : " (" + holder + ")") +
+      throw InputError(where, "in use by another twin run" +
+                                  (holder.empty() ? std::string() : " (" + holder + ")") +
                                   "; wait for it or choose another folder");
     }
-    struct stat locked{}, named{};
-    if (::fstat(fd, &locked) != 0 || ::stat(path.c_str(), &named) != 0 || locked.st_ino != named.st_ino ||
-        locked.st_dev != named.st_dev) {
+    struct stat locked {
+    }, named{};
+    if (::fstat(fd, &locked) != 0 || ::stat(path.c_str(), &named) != 0 ||
+        locked.st_ino != named.st_ino || locked.st_dev != named.st_dev) {
       ::close(fd);  // its holder removed it as it ended: lock the new one
       continue;
     }
@@ -90,12 +94,14 @@ int lockFolder(const std::string& dir, const std::string& path, const std::strin
     }
     return fd;
   }
-  throw InputError(where, "cannot lock " + path + ": it keeps being removed (another twin run starting and ending?)");
+  throw InputError(where, "cannot lock " + path +
+                              ": it keeps being removed (another twin run starting and ending?)");
 }
 
 }  // namespace
 
-FolderLock::FolderLock(const std::string& dir, const std::string& flag, const Distributed* processes)
+FolderLock::FolderLock(const std::string& dir, const std::string& flag,
+                       const Distributed* processes)
     : dir_(dir), path_((std::filesystem::path(dir) / ".lock").string()) {
   if (dir.empty()) return;  // no folder: nothing to lock
   onRoot(processes, [&]() -> std::string {

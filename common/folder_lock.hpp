@@ -29,7 +29,7 @@ class FolderLock {
  private:
   std::string dir_, path_;
   bool created_dir_ = false;  ///< the folder did not exist before
-  int fd_ = -1;  ///< open on the root while the lock is held; -1 elsewhere
+  int fd_ = -1;               ///< open on the root while the lock is held; -1 elsewhere
 };
 
 }  // namespace dtwin

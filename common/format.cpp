@@ -1,8 +1,8 @@
 #include "common/format.hpp"
 
-#include <cstdarg>
 #include <charconv>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <sstream>
 
@@ -45,7 +45,8 @@ std::vector<std::string> splitOn(std::string_view text, char sep) {
   std::size_t start = 0;
   for (;;) {
     const std::size_t at = text.find(sep, start);
-    parts.emplace_back(text.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start));
+    parts.emplace_back(
+        text.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start));
     if (at == std::string_view::npos) return parts;
     start = at + 1;
   }

@@ -11,7 +11,8 @@ std::string closestName(const std::string& name, const std::vector<std::string>&
     for (std::size_t i = 1; i <= a.size(); ++i) {
       cur[0] = i;
       for (std::size_t j = 1; j <= b.size(); ++j)
-        cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        cur[j] =
+            std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
       std::swap(prev, cur);
     }
     return prev[b.size()];
@@ -28,11 +29,13 @@ std::string closestName(const std::string& name, const std::vector<std::string>&
   return best;
 }
 
-std::string unknownNameRule(const std::string& what, const std::string& name, const std::vector<std::string>& known) {
+std::string unknownNameRule(const std::string& what, const std::string& name,
+                            const std::vector<std::string>& known) {
   std::string list;
   for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
   const std::string hint = closestName(name, known);
-  return "unknown " + what + " '" + name + "' (known: " + list + (hint.empty() ? "" : "; did you mean '" + hint + "'?") + ")";
+  return "unknown " + what + " '" + name + "' (known: " + list +
+         (hint.empty() ? "" : "; did you mean '" + hint + "'?") + ")";
 }
 
 }  // namespace dtwin

@@ -11,6 +11,7 @@ namespace dtwin {
 std::string closestName(const std::string& name, const std::vector<std::string>& known);
 
 /// "unknown <what> 'name' (known: a, b, c; did you mean 'b'?)".
-std::string unknownNameRule(const std::string& what, const std::string& name, const std::vector<std::string>& known);
+std::string unknownNameRule(const std::string& what, const std::string& name,
+                            const std::vector<std::string>& known);
 
 }  // namespace dtwin

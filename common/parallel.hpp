@@ -2,10 +2,10 @@
 // A small parallel loop for embarrassingly parallel runs (field data, designs, road libraries).
 //
 //   const int workers = workerCount(threads, n);
-//   std::vector<std::unique_ptr<Simulator>> sims(workers);   // one per worker: a Simulator is single-thread
-//   parallelFor(n, threads, [&](std::size_t i, int w) {
-//     if (!sims[w]) sims[w] = std::make_unique<Simulator>(model, options);   // model: shared_ptr<const Model>
-//     results[i] = sims[w]->run(...);                                        // write by index, never append
+//   std::vector<std::unique_ptr<Simulator>> sims(workers);   // one per worker: a Simulator is
+//   single-thread parallelFor(n, threads, [&](std::size_t i, int w) {
+//     if (!sims[w]) sims[w] = std::make_unique<Simulator>(model, options);   // model:
+//     shared_ptr<const Model> results[i] = sims[w]->run(...); // write by index, never append
 //   });
 //
 // Tasks are handed out in increasing index order; results must be stored by index and random

@@ -14,6 +14,7 @@ using SayFn = std::function<void(const std::string&)>;
 /// threads), never concurrently.
 using ProgressFn = std::function<void(std::size_t done, std::size_t total)>;
 
-using StageProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+using StageProgress =
+    std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
 
 }  // namespace dtwin

@@ -30,12 +30,16 @@ class Registry {
 
   /// `what` names an entry in errors ("tire option"). Throws std::logic_error for a repeated or
   /// empty name, or an entry without a description (a programming error, found at first use).
-  Registry(std::string what, std::vector<Entry> entries) : what_(std::move(what)), entries_(std::move(entries)) {
+  Registry(std::string what, std::vector<Entry> entries)
+      : what_(std::move(what)), entries_(std::move(entries)) {
     for (std::size_t i = 0; i < entries_.size(); ++i) {
       if (entries_[i].name.empty() || entries_[i].description.empty())
-        throw std::logic_error("registry of " + what_ + "s: entry " + std::to_string(i) + " needs a name and a description");
+        throw std::logic_error("registry of " + what_ + "s: entry " + std::to_string(i) +
+                               " needs a name and a description");
       for (std::size_t j = 0; j < i; ++j)
-        if (entries_[j].name == entries_[i].name) throw std::logic_error("registry of " + what_ + "s: '" + entries_[i].name + "' registered twice");
+        if (entries_[j].name == entries_[i].name)
+          throw std::logic_error("registry of " + what_ + "s: '" + entries_[i].name +
+                                 "' registered twice");
     }
   }
 

@@ -28,15 +28,20 @@ class TableReader {
 
   std::string where(const std::string& key) const {
     const toml::node* n = t_.get(key);
-    const int line = n ? static_cast<int>(n->source().begin.line) : static_cast<int>(t_.source().begin.line);
+    const int line =
+        n ? static_cast<int>(n->source().begin.line) : static_cast<int>(t_.source().begin.line);
     return file_ + ":" + std::to_string(line) + ": " + field(key);
   }
-  std::string field(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
+  std::string field(const std::string& key) const {
+    return prefix_.empty() ? key : prefix_ + "." + key;
+  }
   bool has(const std::string& key) const { return t_.contains(key); }
   /// A path as the file gives it, resolved against the file's folder unless absolute.
   std::string resolvePath(const std::string& p) const {
     namespace fs = std::filesystem;
-    return fs::path(p).is_absolute() ? p : (fs::path(file_).parent_path() / p).lexically_normal().string();
+    return fs::path(p).is_absolute()
+               ? p
+               : (fs::path(file_).parent_path() / p).lexically_normal().string();
   }
   /// True when `key` holds a table (an inline { ... } or a [section]).
   bool isTable(const std::string& key) const {
@@ -49,7 +54,8 @@ class TableReader {
     const toml::node* n = t_.get(key);
     if (!n) return std::nullopt;
     if (auto v = n->value<double>()) {
-      if (!std::isfinite(*v)) throw InputError(where(key), "must be a finite number, got " + formatNumber(*v));
+      if (!std::isfinite(*v))
+        throw InputError(where(key), "must be a finite number, got " + formatNumber(*v));
       return *v;
     }
     throw InputError(where(key), "must be a number");
@@ -117,7 +123,9 @@ class TableReader {
       if (!used_.count(key)) {
         std::vector<std::string> known(used_.begin(), used_.end());
         const std::string hint = closestName(key, known);
-        throw InputError(where(key), "unknown field" + (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
+        throw InputError(
+            where(key),
+            "unknown field" + (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
       }
     }
   }

@@ -31,7 +31,8 @@ std::optional<Dimension> symbol(const std::string& s) {
   return std::nullopt;
 }
 
-/// Recursive descent over: term = factor (('*' | '/') factor)*; factor = (symbol | '(' term ')') ['^' number].
+/// Recursive descent over: term = factor (('*' | '/') factor)*; factor = (symbol | '(' term ')')
+/// ['^' number].
 class UnitParser {
  public:
   explicit UnitParser(const std::string& text) : t_(text) {}
@@ -51,7 +52,9 @@ class UnitParser {
     while (i_ < t_.size() && std::isspace(static_cast<unsigned char>(t_[i_]))) ++i_;
   }
   void fail(const std::string& why) {
-    if (err_.empty()) err_ = "unit '" + t_ + "': " + why + " (SI symbols " + kSymbols + ", joined by *, / and ^, e.g. \"N*s/m\")";
+    if (err_.empty())
+      err_ = "unit '" + t_ + "': " + why + " (SI symbols " + kSymbols +
+             ", joined by *, / and ^, e.g. \"N*s/m\")";
   }
   std::optional<Dimension> term() {
     auto d = factor();
@@ -80,15 +83,19 @@ class UnitParser {
       ++i_;
     } else {
       const std::size_t b = i_;
-      while (i_ < t_.size() && (std::isalnum(static_cast<unsigned char>(t_[i_])) || t_[i_] == '_')) ++i_;
+      while (i_ < t_.size() && (std::isalnum(static_cast<unsigned char>(t_[i_])) || t_[i_] == '_'))
+        ++i_;
       const std::string s = t_.substr(b, i_ - b);
       if (s.empty()) {
-        fail(i_ < t_.size() ? "expected a symbol at '" + t_.substr(i_, 1) + "'" : "expected a symbol at the end");
+        fail(i_ < t_.size() ? "expected a symbol at '" + t_.substr(i_, 1) + "'"
+                            : "expected a symbol at the end");
         return std::nullopt;
       }
       d = symbol(s);
       if (!d) {
-        fail("unknown symbol '" + s + "'" + (s.size() > 1 && symbol(s.substr(1)) ? " (prefixes are not allowed: values are SI)" : ""));
+        fail("unknown symbol '" + s + "'" +
+             (s.size() > 1 && symbol(s.substr(1)) ? " (prefixes are not allowed: values are SI)"
+                                                  : ""));
         return std::nullopt;
       }
     }

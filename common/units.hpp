@@ -14,8 +14,12 @@ struct Dimension {
   double mass = 0.0, length = 0.0, time = 0.0;
   bool operator==(const Dimension& o) const;
   bool operator!=(const Dimension& o) const { return !(*this == o); }
-  Dimension operator*(const Dimension& o) const { return {mass + o.mass, length + o.length, time + o.time}; }
-  Dimension operator/(const Dimension& o) const { return {mass - o.mass, length - o.length, time - o.time}; }
+  Dimension operator*(const Dimension& o) const {
+    return {mass + o.mass, length + o.length, time + o.time};
+  }
+  Dimension operator/(const Dimension& o) const {
+    return {mass - o.mass, length - o.length, time - o.time};
+  }
   Dimension pow(double e) const { return {mass * e, length * e, time * e}; }
   static Dimension force() { return {1, 1, -2}; }
 };

@@ -36,11 +36,13 @@ class OptionCheck {
   }
   /// v > 0 and finite.
   void positive(const std::string& field, double v) const {
-    require(std::isfinite(v) && v > 0.0, field, "must be a finite number > 0, got " + formatNumber(v));
+    require(std::isfinite(v) && v > 0.0, field,
+            "must be a finite number > 0, got " + formatNumber(v));
   }
   /// v >= 0 and finite.
   void nonNegative(const std::string& field, double v) const {
-    require(std::isfinite(v) && v >= 0.0, field, "must be a finite number >= 0, got " + formatNumber(v));
+    require(std::isfinite(v) && v >= 0.0, field,
+            "must be a finite number >= 0, got " + formatNumber(v));
   }
   /// v in (0, 1).
   void open01(const std::string& field, double v) const {
@@ -48,8 +50,9 @@ class OptionCheck {
   }
   /// v in [lo, hi] and finite.
   void inRange(const std::string& field, double v, double lo, double hi) const {
-    require(std::isfinite(v) && v >= lo && v <= hi, field,
-            "must lie in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " + formatNumber(v));
+    require(
+        std::isfinite(v) && v >= lo && v <= hi, field,
+        "must lie in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " + formatNumber(v));
   }
   void atLeast(const std::string& field, long long v, long long min) const {
     require(v >= min, field, "must be >= " + std::to_string(min) + ", got " + std::to_string(v));
@@ -57,7 +60,9 @@ class OptionCheck {
   void atMost(const std::string& field, long long v, long long max) const {
     require(v <= max, field, "must be <= " + std::to_string(max) + ", got " + std::to_string(v));
   }
-  void nonEmpty(const std::string& field, const std::string& v) const { require(!v.empty(), field, "must not be empty"); }
+  void nonEmpty(const std::string& field, const std::string& v) const {
+    require(!v.empty(), field, "must not be empty");
+  }
   const std::string& options() const { return options_; }
 
  private:

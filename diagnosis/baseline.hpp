@@ -34,14 +34,15 @@ struct RoadInput {
 };
 
 /// The road input of scenario `sc` (its road built for `vehicle` with `seed`) up to `duration_s`.
-RoadInput roadInput(const ScenarioSpec& sc, const VehicleData& vehicle, std::uint64_t seed, double dt_s, double duration_s);
+RoadInput roadInput(const ScenarioSpec& sc, const VehicleData& vehicle, std::uint64_t seed,
+                    double dt_s, double duration_s);
 
 enum class FirInput { Height, Velocity };
 
 struct FirBaseline {
   std::string channel;
-  double dt_s = 0.02;   ///< tap spacing Δ
-  int taps = 50;        ///< L per wheel (memory L Δ)
+  double dt_s = 0.02;  ///< tap spacing Δ
+  int taps = 50;       ///< L per wheel (memory L Δ)
   FirInput input = FirInput::Height;
   /// The wheels whose road enters (0 fl, 1 fr, 2 rl, 3 rr), in the order of the coefficients.
   std::vector<int> corners{0, 1, 2, 3};
@@ -52,7 +53,8 @@ struct FirBaseline {
   std::vector<double> cv_sse;
   std::vector<double> coef;  ///< b, then h_{c,j} wheel by wheel, then g_j on the model's prediction
   long training_records = 0;
-  /// No filter: the cross-validation chose to predict 0 (FirSearch::allow_none); taps 0, no wheels, coef {0}.
+  /// No filter: the cross-validation chose to predict 0 (FirSearch::allow_none); taps 0, no wheels,
+  /// coef {0}.
   bool none() const { return taps == 0; }
   /// Taps on the model's own prediction after the road's (a discrepancy filter, discrepancy.hpp;
   /// 0 for the baseline): predict() then needs `model`, the prediction as u[0] against time.
@@ -64,11 +66,13 @@ struct FirBaseline {
 };
 
 /// The forms an FIR is chosen among (fitFir): every combination of taps, input, wheels and ridge
-/// is scored by two-fold cross-validation on the training data, and the best is fitted on all of it.
+/// is scored by two-fold cross-validation on the training data, and the best is fitted on all of
+/// it.
 struct FirSearch {
   std::vector<int> taps{50};  ///< L per wheel (a form's memory L Δ)
   std::vector<FirInput> inputs{FirInput::Height, FirInput::Velocity};
-  bool front_only = true;  ///< also the front wheels alone (when the rear wheels' road differs from theirs)
+  bool front_only =
+      true;  ///< also the front wheels alone (when the rear wheels' road differs from theirs)
   std::vector<double> ridges{1e-9, 1e-7, 1e-5, 1e-3, 1e-1};
   /// Taps on the model's prediction (fitFir's `models`), each count a candidate; {0}: none.
   std::vector<int> model_taps{0};
@@ -87,20 +91,23 @@ struct FirSearch {
 /// coefficients of the form fitted.
 /// `models` (needed when search.model_taps holds a count above 0): per training set, the model's
 /// prediction as u[0] against time, whose taps enter after the road's.
-FirBaseline fitFir(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
-                   double dt_s, const FirSearch& search, const std::vector<const RoadInput*>& models = {});
+FirBaseline fitFir(const std::string& channel, const std::vector<const LabData*>& train,
+                   const std::vector<const RoadInput*>& inputs, double dt_s,
+                   const FirSearch& search, const std::vector<const RoadInput*>& models = {});
 
-/// The baseline of `channel` fitted by least squares (with a ridge, below) on every record of `channel` in each
-/// `train` data set, read with its road input. Wheels whose road repeats another's exactly (one
-/// signal for both tracks) enter once. `input` empty: the form whose two-fold cross-validated
-/// error is lowest (each data set's records split at its middle time; each half predicted by the
-/// FIR fitted on the other), among height and velocity, from every wheel and from the front ones
-/// alone (the rear wheels' road is the front's, later: near-collinear taps), and ridges λ from
-/// 1e-9 to 0.1 (a least-squares FIR has any gain in a band the training drive leaves unexcited,
-/// and a faster drive excites it). `input` given: that input from every distinct wheel, λ = 1e-9.
-/// Throws InputError when the data hold fewer records of the channel than coefficients.
-FirBaseline fitFirBaseline(const std::string& channel, const std::vector<const LabData*>& train, const std::vector<const RoadInput*>& inputs,
-                           double dt_s = 0.02, int taps = 50, std::optional<FirInput> input = std::nullopt);
+/// The baseline of `channel` fitted by least squares (with a ridge, below) on every record of
+/// `channel` in each `train` data set, read with its road input. Wheels whose road repeats
+/// another's exactly (one signal for both tracks) enter once. `input` empty: the form whose
+/// two-fold cross-validated error is lowest (each data set's records split at its middle time; each
+/// half predicted by the FIR fitted on the other), among height and velocity, from every wheel and
+/// from the front ones alone (the rear wheels' road is the front's, later: near-collinear taps),
+/// and ridges λ from 1e-9 to 0.1 (a least-squares FIR has any gain in a band the training drive
+/// leaves unexcited, and a faster drive excites it). `input` given: that input from every distinct
+/// wheel, λ = 1e-9. Throws InputError when the data hold fewer records of the channel than
+/// coefficients.
+FirBaseline fitFirBaseline(const std::string& channel, const std::vector<const LabData*>& train,
+                           const std::vector<const RoadInput*>& inputs, double dt_s = 0.02,
+                           int taps = 50, std::optional<FirInput> input = std::nullopt);
 
 /// The fit percentage (100 (1 − ‖y − ŷ‖ / ‖y − mean y‖)) of `baseline` on every record of its
 /// channel in `data`; NaN when `data` holds none.

@@ -33,8 +33,8 @@
 namespace dtwin::diag {
 
 struct CandidateSpec {
-  std::string name;                        ///< as the user writes it (--effects, --apply)
-  std::string kind;                        ///< "effect" | "parameter" | "sensor" | "input" | "range" | "option" | "place"
+  std::string name;  ///< as the user writes it (--effects, --apply)
+  std::string kind;  ///< "effect" | "parameter" | "sensor" | "input" | "range" | "option" | "place"
   /// The diagnosed parameters (effects: the non-shape ones): default_value is the off value;
   /// prior_lower/upper the range a calibration searches. A range candidate: the widened value,
   /// prior_lower/upper its widened range, default_value unused (it is calibrated already, not
@@ -46,15 +46,16 @@ struct CandidateSpec {
   std::vector<std::pair<std::string, std::string>> options;
   /// range: the study's bounds of the value (the widened ones are parameters[0]'s prior range).
   double study_lower = 0.0, study_upper = 0.0;
-  std::vector<std::string> calibrated_names;  ///< each parameter's name in a calibration ("bump_stop.gap_m", "wheel.mass_kg")
-  std::string signature;                   ///< the expected residual, in words (with range_note)
+  std::vector<std::string> calibrated_names;  ///< each parameter's name in a calibration
+                                              ///< ("bump_stop.gap_m", "wheel.mass_kg")
+  std::string signature;                      ///< the expected residual, in words (with range_note)
   /// parameter: how its search range was clipped to the value's valid set (a mass stays
   /// positive, the CG between the axles), in words; "" when the range was not clipped.
   std::string range_note;
-  ResidualSignature residual_signature;    ///< effects only
-  std::string engagement_threshold;        ///< effects only (Effect::engagementThreshold)
-  std::string sensor_kind;                 ///< sensors: lowpass | lowpass2 | gain | delay
-  std::vector<std::string> channels;       ///< sensors: the channels distorted
+  ResidualSignature residual_signature;  ///< effects only
+  std::string engagement_threshold;      ///< effects only (Effect::engagementThreshold)
+  std::string sensor_kind;               ///< sensors: lowpass | lowpass2 | gain | delay
+  std::vector<std::string> channels;     ///< sensors: the channels distorted
   /// parameter: a fixed value of the assembly's laws, a run parameter already (calibrated
   /// without AssemblySpec::freed and without a rebuild); false for a freeable vehicle value.
   bool law_value = false;
@@ -71,34 +72,40 @@ struct CandidateSpec {
   /// factor's finding names its place and, given the first value's 95 % interval
   /// (`lower`, `upper`, finite), says it: "the rear-right damper gives about 55 % of the damping of
   /// the other three (95 %: 51 % to 59 %)".
-  std::string finding(const std::vector<double>& values, double lower = std::numeric_limits<double>::quiet_NaN(),
+  std::string finding(const std::vector<double>& values,
+                      double lower = std::numeric_limits<double>::quiet_NaN(),
                       double upper = std::numeric_limits<double>::quiet_NaN()) const;
 };
 
 /// The sensor-model groups of `channels`: channels of one unit suffix ("_N", "_mps2") share a
 /// group, named by their longest common prefix up to an underscore ("hub_force" for
 /// hub_force_fl_N ... hub_force_rr_N); a lone channel is named by itself without its unit.
-std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(const std::vector<std::string>& channels);
+std::vector<std::pair<std::string, std::vector<std::string>>> channelGroups(
+    const std::vector<std::string>& channels);
 
 /// The candidate `name` for `assembly` of `study` on data with the fitted `channels`.
 /// InputError(where, rule) for an unknown effect, a value that cannot be freed, an unknown sensor
 /// model or a channel group not in the data (each names what is known).
-CandidateSpec candidateSpec(const std::string& name, const Study& study, const AssemblySpec& assembly,
-                            const std::vector<std::string>& channels, const std::string& where);
+CandidateSpec candidateSpec(const std::string& name, const Study& study,
+                            const AssemblySpec& assembly, const std::vector<std::string>& channels,
+                            const std::string& where);
 
 /// Every candidate of the default catalogue: each effect of the study's catalogue, each freeable
 /// vehicle value the assembly has, the per-corner and per-axle factors (cornerCandidates), and
 /// each sensor model on each channel group, the place of each sensor whose position is not declared
 /// measured (sensorPlaceCandidates); when `measured_road` (a data set's road is a measured
 /// signal, RoadSetting::measured), the road signal's gain, delay and place (each form of
-/// roadSignalForms the study leaves at 0) and, unless the assembly has it, the hub input (tire=hub).
+/// roadSignalForms the study leaves at 0) and, unless the assembly has it, the hub input
+/// (tire=hub).
 std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpec& assembly,
-                                           const std::vector<std::string>& channels, bool measured_road = false);
+                                           const std::vector<std::string>& channels,
+                                           bool measured_road = false);
 
-/// The sensor-place candidates of the default catalogue: "free:sensors.NAME.x_m" and ".y_m" for each
-/// chassis sensor whose channel is in `channels`, whose position the study does not declare
+/// The sensor-place candidates of the default catalogue: "free:sensors.NAME.x_m" and ".y_m" for
+/// each chassis sensor whose channel is in `channels`, whose position the study does not declare
 /// measured and does not calibrate.
-std::vector<std::string> sensorPlaceCandidates(const Study& study, const std::vector<std::string>& channels);
+std::vector<std::string> sensorPlaceCandidates(const Study& study,
+                                               const std::vector<std::string>& channels);
 
 /// The per-corner and per-axle candidates of the default catalogue: the factors
 /// ("free:suspension.damping@rr"), for each value with factors that the assembly's laws have, its

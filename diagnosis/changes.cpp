@@ -23,7 +23,8 @@ std::string unitOf(const calib::CalibrationFolder& f, const std::string& name) {
   if (!s.contains("parameter_order") || !s.contains("units")) return "";
   const auto& order = s["parameter_order"];
   for (std::size_t i = 0; i < order.size() && i < s["units"].size(); ++i)
-    if (order[i].is_string() && order[i].get<std::string>() == name && s["units"][i].is_string()) return s["units"][i].get<std::string>();
+    if (order[i].is_string() && order[i].get<std::string>() == name && s["units"][i].is_string())
+      return s["units"][i].get<std::string>();
   return "";
 }
 
@@ -33,8 +34,8 @@ double lowerBound(const calib::CalibrationFolder& f, const std::string& name) {
   if (!s.contains("parameter_order") || !s.contains("bounds")) return std::nan("");
   const auto& order = s["parameter_order"];
   for (std::size_t i = 0; i < order.size() && i < s["bounds"].size(); ++i)
-    if (order[i].is_string() && order[i].get<std::string>() == name && s["bounds"][i].is_array() && !s["bounds"][i].empty() &&
-        s["bounds"][i][0].is_number())
+    if (order[i].is_string() && order[i].get<std::string>() == name && s["bounds"][i].is_array() &&
+        !s["bounds"][i].empty() && s["bounds"][i][0].is_number())
       return s["bounds"][i][0].get<double>();
   return std::nan("");
 }
@@ -58,23 +59,27 @@ std::string describe(const ValueChange& c) {
   const std::string unit = c.unit.empty() || c.unit == "1" ? "" : " " + c.unit;
   if (c.ratio) {
     s += c.change >= 1 ? " rose to " : " fell to ";
-    s += number(c.change) + " x its first value (95 %: " + number(c.lo) + " to " + number(c.hi) + ")";
+    s += number(c.change) + " x its first value (95 %: " + number(c.lo) + " to " + number(c.hi) +
+         ")";
   } else {
-    s += " moved by " + std::string(c.change >= 0 ? "+" : "") + number(c.change) + unit + " (95 %: " + number(c.lo) + " to " +
-         number(c.hi) + unit + ")";
+    s += " moved by " + std::string(c.change >= 0 ? "+" : "") + number(c.change) + unit +
+         " (95 %: " + number(c.lo) + " to " + number(c.hi) + unit + ")";
   }
   s += ": " + number(c.first.estimate) + " -> " + number(c.second.estimate) + unit;
   s += c.significant ? "; significant" : "; no significant change";
   if (!c.trusted) {
     std::string why = !c.first.trusted ? "first: " + c.first.note : "";
-    if (!c.second.trusted) why += (why.empty() ? "" : "; ") + std::string("second: ") + c.second.note;
+    if (!c.second.trusted)
+      why += (why.empty() ? "" : "; ") + std::string("second: ") + c.second.note;
     s += " (intervals not to be trusted: " + why + ")";
   }
   if (c.first.centred || c.second.centred)
     s += c.first.centred && c.second.centred
-             ? " (both optima lie outside their intervals: the profile search met better fits; the intervals' centres are compared)"
+             ? " (both optima lie outside their intervals: the profile search met better fits; the "
+               "intervals' centres are compared)"
              : std::string(" (the ") + (c.first.centred ? "first" : "second") +
-                   " calibration's optimum lies outside its interval: the profile search met a better fit; the interval's centre is compared)";
+                   " calibration's optimum lies outside its interval: the profile search met a "
+                   "better fit; the interval's centre is compared)";
   return s;
 }
 
@@ -86,8 +91,10 @@ ValueEstimate valueEstimate(const calib::CalibrationFolder& folder, const std::s
   if (!s.contains("parameters") || !s["parameters"].is_object() || !s["parameters"].contains(name))
     throw InputError(where, "missing: the calibration has no such value");
   const auto& p = s["parameters"][name];
-  if (!p.is_object() || !p.contains("optimum") || !p["optimum"].is_number()) throw InputError(where + ".optimum", "must be a number");
-  if (!p.contains("ci95") || !p["ci95"].is_array() || p["ci95"].size() != 2 || !p["ci95"][0].is_number() || !p["ci95"][1].is_number())
+  if (!p.is_object() || !p.contains("optimum") || !p["optimum"].is_number())
+    throw InputError(where + ".optimum", "must be a number");
+  if (!p.contains("ci95") || !p["ci95"].is_array() || p["ci95"].size() != 2 ||
+      !p["ci95"][0].is_number() || !p["ci95"][1].is_number())
     throw InputError(where + ".ci95", "must be two numbers [lower, upper]");
   ValueEstimate e;
   e.optimum = p["optimum"].get<double>();
@@ -102,15 +109,18 @@ ValueEstimate valueEstimate(const calib::CalibrationFolder& folder, const std::s
     e.centred = true;
     e.estimate = e.lo > 0 ? std::sqrt(e.lo * e.hi) : 0.5 * (e.lo + e.hi);
   }
-  if (s.contains("integrator_check") && s["integrator_check"].is_object() && s["integrator_check"].contains("ok") &&
-      s["integrator_check"]["ok"].is_boolean() && !s["integrator_check"]["ok"].get<bool>()) {
+  if (s.contains("integrator_check") && s["integrator_check"].is_object() &&
+      s["integrator_check"].contains("ok") && s["integrator_check"]["ok"].is_boolean() &&
+      !s["integrator_check"]["ok"].get<bool>()) {
     e.trusted = false;
     e.note = "the integrator limits the calibration's intervals";
   }
   for (const auto& b : folder.bound_findings)
     if (b.name == name) {
       e.trusted = false;
-      e.note += (e.note.empty() ? "" : "; ") + std::string(b.side == "none" ? "the data do not determine it" : "on its " + b.side + " bound");
+      e.note += (e.note.empty() ? "" : "; ") + std::string(b.side == "none"
+                                                               ? "the data do not determine it"
+                                                               : "on its " + b.side + " bound");
     }
   return e;
 }
@@ -118,26 +128,30 @@ ValueEstimate valueEstimate(const calib::CalibrationFolder& folder, const std::s
 std::vector<bool> holmRejections(const std::vector<double>& p, double level) {
   std::vector<std::size_t> order(p.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p[a] < p[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return p[a] < p[b]; });
   std::vector<bool> reject(p.size(), false);
   const std::size_t m = p.size();
   for (std::size_t k = 0; k < m; ++k) {
-    if (!(p[order[k]] <= level / static_cast<double>(m - k))) break;  // step down: stop at the first acceptance
+    if (!(p[order[k]] <= level / static_cast<double>(m - k)))
+      break;  // step down: stop at the first acceptance
     reject[order[k]] = true;
   }
   return reject;
 }
 
-ChangeReport compareCalibrations(const calib::CalibrationFolder& first, const calib::CalibrationFolder& second, double level) {
-  if (!(level > 0 && level < 0.5)) throw InputError("changes.level", "must lie in (0, 0.5), got " + formatNumber(level));
+ChangeReport compareCalibrations(const calib::CalibrationFolder& first,
+                                 const calib::CalibrationFolder& second, double level) {
+  if (!(level > 0 && level < 0.5))
+    throw InputError("changes.level", "must lie in (0, 0.5), got " + formatNumber(level));
   ChangeReport r;
   r.first_dir = first.dir;
   r.second_dir = second.dir;
   r.assembly = first.assembly;
   r.level = level;
   if (first.assembly != second.assembly)
-    r.notes.push_back("the calibrations are of different assemblies (" + first.assembly + ", " + second.assembly +
-                      "): values of the same name are compared");
+    r.notes.push_back("the calibrations are of different assemblies (" + first.assembly + ", " +
+                      second.assembly + "): values of the same name are compared");
   const auto names1 = parameterNames(first), names2 = parameterNames(second);
   for (const auto& n : names1)
     if (std::find(names2.begin(), names2.end(), n) == names2.end()) r.only_first.push_back(n);
@@ -153,7 +167,8 @@ ChangeReport compareCalibrations(const calib::CalibrationFolder& first, const ca
     c.second = valueEstimate(second, n);
     c.trusted = c.first.trusted && c.second.trusted;
     const double b1 = lowerBound(first, n), b2 = lowerBound(second, n);
-    c.ratio = c.first.lo > 0 && c.second.lo > 0 && c.first.optimum > 0 && c.second.optimum > 0 && !(b1 < 0) && !(b2 < 0);
+    c.ratio = c.first.lo > 0 && c.second.lo > 0 && c.first.optimum > 0 && c.second.optimum > 0 &&
+              !(b1 < 0) && !(b2 < 0);
     // A centred estimate of a value compared by difference: the arithmetic centre.
     for (ValueEstimate* e : {&c.first, &c.second})
       if (e->centred && !c.ratio) e->estimate = 0.5 * (e->lo + e->hi);
@@ -178,19 +193,22 @@ ChangeReport compareCalibrations(const calib::CalibrationFolder& first, const ca
   }
   const auto reject = holmRejections(p, level);
   for (std::size_t i = 0; i < r.changes.size(); ++i) r.changes[i].significant = reject[i];
-  std::stable_sort(r.changes.begin(), r.changes.end(), [](const ValueChange& a, const ValueChange& b) {
-    if (a.significant != b.significant) return a.significant;
-    return std::fabs(a.z) > std::fabs(b.z);
-  });
+  std::stable_sort(r.changes.begin(), r.changes.end(),
+                   [](const ValueChange& a, const ValueChange& b) {
+                     if (a.significant != b.significant) return a.significant;
+                     return std::fabs(a.z) > std::fabs(b.z);
+                   });
   for (auto& c : r.changes) {
     c.sentence = describe(c);
-    if (!c.trusted && c.significant) r.notes.push_back(c.name + ": a significant change whose intervals are not to be trusted");
+    if (!c.trusted && c.significant)
+      r.notes.push_back(c.name + ": a significant change whose intervals are not to be trusted");
   }
   return r;
 }
 
 std::size_t ChangeReport::significantCount() const {
-  return static_cast<std::size_t>(std::count_if(changes.begin(), changes.end(), [](const ValueChange& c) { return c.significant; }));
+  return static_cast<std::size_t>(std::count_if(
+      changes.begin(), changes.end(), [](const ValueChange& c) { return c.significant; }));
 }
 
 nlohmann::json ChangeReport::toJson() const {
@@ -199,14 +217,18 @@ nlohmann::json ChangeReport::toJson() const {
   j["second"] = second_dir;
   j["assembly"] = assembly;
   j["level"] = level;
-  j["rule"] = "Holm's step-down rule over every value both calibrations hold, family-wise " + formatNumber(100 * level) +
-              " %; each value's 95 % intervals read as normal estimates (log scale for positive values)";
+  j["rule"] =
+      "Holm's step-down rule over every value both calibrations hold, family-wise " +
+      formatNumber(100 * level) +
+      " %; each value's 95 % intervals read as normal estimates (log scale for positive values)";
   j["significant"] = significantCount();
   j["changes"] = nlohmann::json::array();
   for (const auto& c : changes) {
     auto est = [](const ValueEstimate& e) {
-      return nlohmann::json{{"optimum", e.optimum}, {"estimate", e.estimate}, {"optimum_outside_interval", e.centred}, {"ci95", {e.lo, e.hi}},
-                            {"interval", e.interval}, {"trusted", e.trusted}, {"note", e.note}};
+      return nlohmann::json{
+          {"optimum", e.optimum}, {"estimate", e.estimate}, {"optimum_outside_interval", e.centred},
+          {"ci95", {e.lo, e.hi}}, {"interval", e.interval}, {"trusted", e.trusted},
+          {"note", e.note}};
     };
     j["changes"].push_back({{"name", c.name},
                             {"unit", c.unit},
@@ -230,8 +252,9 @@ nlohmann::json ChangeReport::toJson() const {
 std::string ChangeReport::text() const {
   std::string s;
   const std::size_t k = significantCount();
-  s += std::to_string(k) + " of " + std::to_string(changes.size()) + " values changed significantly (Holm, family-wise " +
-       formatNumber(100 * level) + " %)" + (k ? ":" : "") + "\n";
+  s += std::to_string(k) + " of " + std::to_string(changes.size()) +
+       " values changed significantly (Holm, family-wise " + formatNumber(100 * level) + " %)" +
+       (k ? ":" : "") + "\n";
   for (const auto& c : changes)
     if (c.significant) s += "  " + c.sentence + "\n";
   if (k < changes.size()) s += "unchanged within their intervals:\n";

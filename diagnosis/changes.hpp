@@ -29,29 +29,32 @@ struct ValueEstimate {
   /// outside the interval (centred true).
   double estimate = 0;
   bool centred = false;
-  std::string interval;                ///< "profile" | "posterior" (summary.json "interval")
-  bool trusted = true;                 ///< false: the integrator check flagged the calibration, or the value sits on a bound
-  std::string note;                    ///< why not trusted
+  std::string interval;  ///< "profile" | "posterior" (summary.json "interval")
+  bool trusted =
+      true;  ///< false: the integrator check flagged the calibration, or the value sits on a bound
+  std::string note;  ///< why not trusted
 };
 
 struct ValueChange {
   std::string name, unit;
   ValueEstimate first, second;
-  bool ratio = false;      ///< a positive value: the change is second / first (else second - first)
-  double change = 0;       ///< the ratio or the difference
-  double lo = 0, hi = 0;   ///< its 95 % interval (one value at a time)
-  double z = 0, p = 1;     ///< the standardized change and its two-sided p-value
+  bool ratio = false;     ///< a positive value: the change is second / first (else second - first)
+  double change = 0;      ///< the ratio or the difference
+  double lo = 0, hi = 0;  ///< its 95 % interval (one value at a time)
+  double z = 0, p = 1;    ///< the standardized change and its two-sided p-value
   bool significant = false;  ///< by Holm's rule over every compared value at `level`
   bool trusted = true;       ///< both estimates trusted
-  std::string sentence;      ///< "suspension.damping fell to 0.55 x its first value (95 %: 0.50-0.61): 2481 -> 1365 N*s/m; significant"
+  std::string sentence;  ///< "suspension.damping fell to 0.55 x its first value (95 %: 0.50-0.61):
+                         ///< 2481 -> 1365 N*s/m; significant"
 };
 
 struct ChangeReport {
   std::string first_dir, second_dir, assembly;
-  double level = 0.05;               ///< family-wise error rate of the significance rule
-  std::vector<ValueChange> changes;  ///< every value both calibrated: significant first, then by |z|
+  double level = 0.05;  ///< family-wise error rate of the significance rule
+  std::vector<ValueChange>
+      changes;  ///< every value both calibrated: significant first, then by |z|
   std::vector<std::string> only_first, only_second;  ///< values calibrated in one folder only
-  std::vector<std::string> notes;    ///< e.g. the assemblies differ; an interval not to be trusted
+  std::vector<std::string> notes;  ///< e.g. the assemblies differ; an interval not to be trusted
   std::size_t significantCount() const;
   nlohmann::json toJson() const;
   /// The lines `twin changes` prints: the significant changes, then the rest, then the notes.
@@ -63,7 +66,8 @@ struct ChangeReport {
 ValueEstimate valueEstimate(const calib::CalibrationFolder& folder, const std::string& name);
 
 /// The change list from `first` to `second`. `level` in (0, 0.5).
-ChangeReport compareCalibrations(const calib::CalibrationFolder& first, const calib::CalibrationFolder& second, double level = 0.05);
+ChangeReport compareCalibrations(const calib::CalibrationFolder& first,
+                                 const calib::CalibrationFolder& second, double level = 0.05);
 
 /// Holm's step-down rule: which of the p-values are rejected at family-wise level `level`.
 std::vector<bool> holmRejections(const std::vector<double>& p, double level);

@@ -12,8 +12,8 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
-#include "common/validate.hpp"
 #include "common/parallel.hpp"
+#include "common/validate.hpp"
 
 namespace dtwin::diag {
 namespace {
@@ -42,10 +42,12 @@ std::string unitOf(const std::string& channel) {
 
 }  // namespace
 
-std::string describeScenarioWindow(const ScenarioSpec& sc, const VehicleData& v, double t0, double t1) {
+std::string describeScenarioWindow(const ScenarioSpec& sc, const VehicleData& v, double t0,
+                                   double t1) {
   std::vector<std::string> parts = sc.road->describeWindow(sc, v, t0, t1);
   if (sc.speed.trace) {  // a measured speed: the mean acceleration over the window, if it is marked
-    const double a = t1 > t0 ? (sc.speed.speed(t1) - sc.speed.speed(t0)) / (t1 - t0) : sc.speed.accel(t0);
+    const double a =
+        t1 > t0 ? (sc.speed.speed(t1) - sc.speed.speed(t0)) / (t1 - t0) : sc.speed.accel(t0);
     if (a > 0.5) parts.push_back("accelerating");
     if (a < -0.5) parts.push_back("braking");
     if (sc.speed.speed(t0) < 0.1 && sc.speed.speed(t1) < 0.1) parts.push_back("at rest");
@@ -59,11 +61,13 @@ std::string describeScenarioWindow(const ScenarioSpec& sc, const VehicleData& v,
 
 std::vector<std::vector<double>> posteriorRows(const std::vector<std::string>& sample_names,
                                                const std::vector<std::vector<double>>& rows,
-                                               const std::vector<std::string>& names, int count, const std::string& where) {
+                                               const std::vector<std::string>& names, int count,
+                                               const std::string& where) {
   std::vector<int> col;
   for (const auto& n : names) {
     const auto it = std::find(sample_names.begin(), sample_names.end(), n);
-    if (it == sample_names.end()) throw InputError(where, "has no column '" + n + "' (the calibrated parameters differ)");
+    if (it == sample_names.end())
+      throw InputError(where, "has no column '" + n + "' (the calibrated parameters differ)");
     col.push_back(static_cast<int>(it - sample_names.begin()));
   }
   if (rows.empty()) throw InputError(where, "holds no posterior rows");
@@ -106,7 +110,8 @@ struct Pooled {
 /// What every series of one comparison shares.
 struct SeriesContext {
   const calib::LabObjective& objective;
-  const std::vector<const std::vector<double>*>& ok;  ///< the predictions of the draws that simulated
+  const std::vector<const std::vector<double>*>&
+      ok;  ///< the predictions of the draws that simulated
   const std::map<std::string, ChannelNoise>& noise;
   const CompareOptions& options;
   const VehicleData& vehicle;
@@ -137,15 +142,16 @@ void poolStates(Pooled& pl, const std::string& ch, const At& at, double residual
   pl.state["tire_defl_" + c + "_m"].push_back(at.column("tire_defl_" + c + "_m"));
   pl.state["speed_mps"].push_back(at.column("speed_mps"));
   const std::string l = front ? "fl" : "rl", r = front ? "fr" : "rr";
-  pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(at.column("susp_defl_" + l + "_m") -
-                                                                                   at.column("susp_defl_" + r + "_m"));
+  pl.state[std::string("roll_defl_") + (front ? "front" : "rear") + "_m"].push_back(
+      at.column("susp_defl_" + l + "_m") - at.column("susp_defl_" + r + "_m"));
 }
 
 /// One (data set, channel): the predictive mean and band at every measured time, the error
 /// figures, the windows of large residual (fitted series) and the bands; the residual is pooled
 /// into `pl` for the force-state maps. `offset`: the data set's first record in the objective.
-SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds, const std::string& ch, std::size_t offset,
-                               const RunResult& run, const ScenarioSpec& scenario, Pooled& pl) {
+SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds,
+                               const std::string& ch, std::size_t offset, const RunResult& run,
+                               const ScenarioSpec& scenario, Pooled& pl) {
   const auto& measured = cx.objective.measured();
   SeriesComparison sc;
   sc.data_set = ds.name;
@@ -164,7 +170,8 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
   std::map<double, std::vector<std::size_t>> by_time;
   for (std::size_t k = 0; k < ds.data.records.size(); ++k)
     if (ds.data.records[k].channel == ch) by_time[ds.data.records[k].time_s].push_back(offset + k);
-  double ss = 0, ss_sys = 0, ss_noise = 0, ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+  double ss = 0, ss_sys = 0, ss_noise = 0, ymin = std::numeric_limits<double>::infinity(),
+         ymax = -ymin;
   double y_sum = 0, y_sq = 0;  // the measured values' sum and sum of squares (the fit percentage)
   long n_rec = 0, covered = 0;
   std::vector<At> samples;  // where each measured time reads the run
@@ -202,7 +209,8 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
     ss_noise += sc.noise_variance / static_cast<double>(idx.size());
     ymin = std::min(ymin, ym);
     ymax = std::max(ymax, ym);
-    if (sc.fitted) sc.lack_of_fit += static_cast<double>(idx.size()) * (ym - pm) * (ym - pm) / sc.noise_variance;
+    if (sc.fitted)
+      sc.lack_of_fit += static_cast<double>(idx.size()) * (ym - pm) * (ym - pm) / sc.noise_variance;
     samples.push_back(At{cx.objective, run, idx[0]});
     poolStates(pl, ch, samples.back(), ym - pm);
   }
@@ -227,7 +235,8 @@ SeriesComparison compareSeries(const SeriesContext& cx, const calib::DataSet& ds
     for (const auto& at : samples) road.push_back(at.column("road_" + c + "_m"));
   }
   addResidualBands(sc, road);
-  sc.frequency_response = seriesResponse(sc.t, road, "road_" + c + "_m", sc.measured_mean, sc.predicted_mean);
+  sc.frequency_response =
+      seriesResponse(sc.t, road, "road_" + c + "_m", sc.measured_mean, sc.predicted_mean);
   return sc;
 }
 
@@ -239,11 +248,14 @@ ChannelMaps stateMaps(const std::string& ch, const Pooled& pl, int state_bins) {
   for (const auto& [name, values] : pl.state) {
     StateMap m;
     m.state = name;
-    m.bins = binByState(values, pl.residual, std::min<int>(state_bins, static_cast<int>(values.size() / 2)));
+    m.bins = binByState(values, pl.residual,
+                        std::min<int>(state_bins, static_cast<int>(values.size() / 2)));
     const bool rate_like = name.find("_rate_") != std::string::npos;
-    m.fits = rate_like ? fitRateSignatures(values, pl.residual) : fitDeflectionSignatures(values, pl.residual);
-    std::sort(m.fits.begin(), m.fits.end(),
-              [](const SignatureFit& a, const SignatureFit& b) { return a.explained_fraction > b.explained_fraction; });
+    m.fits = rate_like ? fitRateSignatures(values, pl.residual)
+                       : fitDeflectionSignatures(values, pl.residual);
+    std::sort(m.fits.begin(), m.fits.end(), [](const SignatureFit& a, const SignatureFit& b) {
+      return a.explained_fraction > b.explained_fraction;
+    });
     cm.maps.push_back(std::move(m));
   }
   return cm;
@@ -264,40 +276,53 @@ void lackOfFit(Comparison& out, int fitted_parameters) {
   double inv_d2 = 0.0;
   for (const auto& x : out.series)
     if (x.fitted && x.noise_dof > 0) {
-      const double share = static_cast<double>(x.t.size()) / static_cast<double>(std::max<long>(1, fitted_points));
+      const double share =
+          static_cast<double>(x.t.size()) / static_cast<double>(std::max<long>(1, fitted_points));
       inv_d2 += share * share / static_cast<double>(x.noise_dof);
     }
   out.noise_dof_effective = inv_d2 > 0 ? 1.0 / inv_d2 : std::numeric_limits<double>::infinity();
   out.lack_of_fit_z = fDeviate(out.lack_of_fit / k, k, out.noise_dof_effective);
   out.lack_of_fit_p = 1.0 - normalCdf(out.lack_of_fit_z);
-  out.systematic_rms_sd = fitted_points > 0 ? std::sqrt(std::max(0.0, out.lack_of_fit - k) / static_cast<double>(fitted_points)) : 0.0;
+  out.systematic_rms_sd =
+      fitted_points > 0
+          ? std::sqrt(std::max(0.0, out.lack_of_fit - k) / static_cast<double>(fitted_points))
+          : 0.0;
 }
 
 }  // namespace
 
 std::string windowsNote(const WindowSummary& s) {
   if (s.found == 0) return "";
-  const auto pct = [](double x) { return 100.0 * x >= 9.5 ? formatPrintf("%.0f", 100.0 * x) : formatNumber(100.0 * x, 2); };
-  std::string out = std::to_string(s.found) + (s.found == 1 ? " window" : " windows") + " over " + pct(s.time_share) + " % of the record";
-  if (100.0 * s.time_share >= 49.5) out += ": the model misses throughout, not in a few places";  // "over 50 %" and more
+  const auto pct = [](double x) {
+    return 100.0 * x >= 9.5 ? formatPrintf("%.0f", 100.0 * x) : formatNumber(100.0 * x, 2);
+  };
+  std::string out = std::to_string(s.found) + (s.found == 1 ? " window" : " windows") + " over " +
+                    pct(s.time_share) + " % of the record";
+  if (100.0 * s.time_share >= 49.5)
+    out += ": the model misses throughout, not in a few places";  // "over 50 %" and more
   if (s.merged < s.found)
-    out += "; merged to " + std::to_string(s.merged) + " (neighbours closer than " + formatNumber(s.merge_gap_s, 3) + " s),";
+    out += "; merged to " + std::to_string(s.merged) + " (neighbours closer than " +
+           formatNumber(s.merge_gap_s, 3) + " s),";
   else
     out += ";";
   if (s.listed < s.merged)
-    out += " the " + std::to_string(s.listed) + " largest, listed, hold " + pct(s.listed_share) + " % of the residual";
+    out += " the " + std::to_string(s.listed) + " largest, listed, hold " + pct(s.listed_share) +
+           " % of the residual";
   else
-    out += std::string(s.listed == 1 ? " it holds " : " together they hold ") + pct(s.listed_share) + " % of the residual";
+    out += std::string(s.listed == 1 ? " it holds " : " together they hold ") +
+           pct(s.listed_share) + " % of the residual";
   return out;
 }
 
-void addWindows(SeriesComparison& sc, const CompareOptions& o, const std::function<LabelledWindow(const Window&)>& describe) {
+void addWindows(SeriesComparison& sc, const CompareOptions& o,
+                const std::function<LabelledWindow(const Window&)>& describe) {
   o.validate();
   WindowRankOptions ro;
   ro.max_merged = static_cast<std::size_t>(o.window_max_merged);
   ro.max_listed = static_cast<std::size_t>(o.window_max_listed);
   ro.listed_share = o.window_listed_share;
-  WindowRanking r = rankWindows(sc.t, sc.z, o.window_threshold, o.window_merge_s, o.window_min_s, ro);
+  WindowRanking r =
+      rankWindows(sc.t, sc.z, o.window_threshold, o.window_merge_s, o.window_min_s, ro);
   sc.windows.clear();
   for (std::size_t k = 0; k < r.summary.listed; ++k) sc.windows.push_back(describe(r.ranked[k]));
   sc.all_windows = std::move(r.found);
@@ -313,28 +338,35 @@ void addResidualBands(SeriesComparison& sc, const std::vector<double>& road) {
     sc.bands_note = "no spectrum: fewer than 64 times";
     return;
   }
-  DTWIN_CHECK(sc.measured_mean.size() == n && sc.predicted_mean.size() == n && sc.repetitions.size() == n,
-              "a series' values and times differ in number");
+  DTWIN_CHECK(
+      sc.measured_mean.size() == n && sc.predicted_mean.size() == n && sc.repetitions.size() == n,
+      "a series' values and times differ in number");
   DTWIN_CHECK(road.empty() || road.size() == n, "the road input and the times differ in number");
   const UniformGrid g = uniformGrid(sc.t);
-  const std::string gaps = std::to_string(g.gaps) + (g.gaps == 1 ? " gap" : " gaps") + " in the times (steps longer than " +
-                           formatNumber(g.gap_step_s, 3) + " s)";
+  const std::string gaps = std::to_string(g.gaps) + (g.gaps == 1 ? " gap" : " gaps") +
+                           " in the times (steps longer than " + formatNumber(g.gap_step_s, 3) +
+                           " s)";
   if (g.size() < 64) {
     sc.bands_note = "no spectrum: " + gaps + ", and no stretch between gaps holds 64 times";
     return;
   }
-  const std::string stretch = "the longest stretch between gaps, " + formatNumber(sc.t[g.begin], 6) + "–" +
-                              formatNumber(sc.t[g.end - 1], 6) + " s (" + std::to_string(g.size()) + " of " + std::to_string(n) + " times)";
+  const std::string stretch = "the longest stretch between gaps, " +
+                              formatNumber(sc.t[g.begin], 6) + "–" +
+                              formatNumber(sc.t[g.end - 1], 6) + " s (" + std::to_string(g.size()) +
+                              " of " + std::to_string(n) + " times)";
   if (!g.steady) {
-    sc.bands_note = "no spectrum: the sampling rate changes within " + (g.gaps ? stretch : std::string("the record")) + ", from " +
+    sc.bands_note = "no spectrum: the sampling rate changes within " +
+                    (g.gaps ? stretch : std::string("the record")) + ", from " +
                     formatNumber(g.rate_lo_hz, 4) + " to " + formatNumber(g.rate_hi_hz, 4) + " Hz";
     return;
   }
   std::vector<std::string> parts;
   if (g.gaps) parts.push_back("the spectrum of " + stretch);
   if (g.resampled)
-    parts.push_back("resampled to a uniform " + formatFixed(1.0 / g.dt, 1) + " Hz grid by linear interpolation: the clock jitters by up to " +
-                    formatNumber(100.0 * g.jitter, 3) + " % of a step (the noise floor follows the interpolation)");
+    parts.push_back("resampled to a uniform " + formatFixed(1.0 / g.dt, 1) +
+                    " Hz grid by linear interpolation: the clock jitters by up to " +
+                    formatNumber(100.0 * g.jitter, 3) +
+                    " % of a step (the noise floor follows the interpolation)");
   for (std::size_t k = 0; k < parts.size(); ++k) sc.bands_note += (k ? "; " : "") + parts[k];
   if (!sc.fitted) {
     sc.bands_note = "no spectrum: no noise estimate for this channel";
@@ -348,31 +380,38 @@ void addResidualBands(SeriesComparison& sc, const std::vector<double>& road) {
   const std::vector<double> r = onGrid(g, res);
   std::vector<double> u;
   if (!road.empty()) u = onGrid(g, road);
-  sc.bands = bandAnalysis(r, 1.0 / g.dt, sc.noise_variance / rbar, road.empty() ? nullptr : &u, welchSegmentFor(r.size()), 0.01,
-                          gridNoiseAutocorrelation(g));
+  sc.bands = bandAnalysis(r, 1.0 / g.dt, sc.noise_variance / rbar, road.empty() ? nullptr : &u,
+                          welchSegmentFor(r.size()), 0.01, gridNoiseAutocorrelation(g));
 }
 
-Comparison compareModel(const calib::LabObjective& objective, const std::vector<calib::DataSet>& sets,
-                        const std::vector<std::vector<double>>& draws, const std::map<std::string, ChannelNoise>& noise,
+Comparison compareModel(const calib::LabObjective& objective,
+                        const std::vector<calib::DataSet>& sets,
+                        const std::vector<std::vector<double>>& draws,
+                        const std::map<std::string, ChannelNoise>& noise,
                         const CompareOptions& options) {
   options.validate();
   if (draws.empty()) throw InputError("compare", "needs at least one posterior draw");
   Comparison out;
   out.draws = static_cast<long>(draws.size());
   std::vector<std::vector<double>> preds(draws.size());
-  parallelFor(draws.size(), options.threads, [&](std::size_t i, int) { preds[i] = objective.predict(draws[i]); });
+  parallelFor(draws.size(), options.threads,
+              [&](std::size_t i, int) { preds[i] = objective.predict(draws[i]); });
   std::vector<const std::vector<double>*> ok;
   for (const auto& p : preds)
-    if (p.empty()) ++out.failures;
-    else ok.push_back(&p);
-  if (ok.empty()) throw std::runtime_error("compare: every simulation of the posterior draws failed");
+    if (p.empty())
+      ++out.failures;
+    else
+      ok.push_back(&p);
+  if (ok.empty())
+    throw std::runtime_error("compare: every simulation of the posterior draws failed");
   if (out.failures > 0)
     out.notes.push_back(std::to_string(out.failures) + " of " + std::to_string(draws.size()) +
                         " posterior draws failed to simulate and were left out");
   // The central run (states for the maps, road input for coherence): the draws' mean.
   std::vector<double> centre(draws[0].size(), 0.0);
   for (const auto& d : draws)
-    for (std::size_t k = 0; k < d.size(); ++k) centre[k] += d[k] / static_cast<double>(draws.size());
+    for (std::size_t k = 0; k < d.size(); ++k)
+      centre[k] += d[k] / static_cast<double>(draws.size());
   std::vector<RunResult> runs = objective.runs(centre);
   if (runs.empty()) runs = objective.runs(draws[0]);
   if (runs.empty()) throw std::runtime_error("compare: the run at the posterior mean failed");
@@ -384,14 +423,17 @@ Comparison compareModel(const calib::LabObjective& objective, const std::vector<
   std::size_t offset = 0;
   for (std::size_t s = 0; s < sets.size(); ++s) {
     for (const auto& ch : sets[s].data.channels()) {
-      out.series.push_back(compareSeries(cx, sets[s], ch, offset, runs[s], scenarios[s], pooled[ch]));
-      if (std::find(channel_order.begin(), channel_order.end(), ch) == channel_order.end()) channel_order.push_back(ch);
+      out.series.push_back(
+          compareSeries(cx, sets[s], ch, offset, runs[s], scenarios[s], pooled[ch]));
+      if (std::find(channel_order.begin(), channel_order.end(), ch) == channel_order.end())
+        channel_order.push_back(ch);
     }
     offset += sets[s].data.records.size();
   }
   // In state: pooled force-state maps per channel.
   for (const auto& ch : channel_order)
-    if (pooled[ch].residual.size() >= 8) out.maps.push_back(stateMaps(ch, pooled[ch], options.state_bins));
+    if (pooled[ch].residual.size() >= 8)
+      out.maps.push_back(stateMaps(ch, pooled[ch], options.state_bins));
   lackOfFit(out, options.fitted_parameters);
   return out;
 }
@@ -404,38 +446,69 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
                       {"dof", lack_of_fit_dof},
                       {"z", lack_of_fit_z},
                       {"p_value", lack_of_fit_p},
-                      {"noise_dof_effective", std::isfinite(noise_dof_effective) ? nlohmann::json(noise_dof_effective) : nlohmann::json("inf")},
-                      {"test", "F = X / (points - parameters), X = sum over times of R_t (mean_t - prediction_t)^2 / sigma_c^2, against "
-                               "F(points - parameters, noise dof) (Paulson's normal approximation; chi2 when sigma is known)"}};
+                      {"noise_dof_effective", std::isfinite(noise_dof_effective)
+                                                  ? nlohmann::json(noise_dof_effective)
+                                                  : nlohmann::json("inf")},
+                      {"test",
+                       "F = X / (points - parameters), X = sum over times of R_t (mean_t - "
+                       "prediction_t)^2 / sigma_c^2, against "
+                       "F(points - parameters, noise dof) (Paulson's normal approximation; chi2 "
+                       "when sigma is known)"}};
   j["systematic_rms_noise_sd"] = systematic_rms_sd;
   j["notes"] = notes;
   j["series"] = nlohmann::json::array();
   for (const auto& s : series) {
-    nlohmann::json e{{"data_set", s.data_set}, {"scenario", s.scenario}, {"channel", s.channel}, {"unit", s.unit},
-                     {"fitted", s.fitted}, {"noise_variance", s.noise_variance}, {"noise_source", s.noise_source},
-                     {"points", s.t.size()}, {"rms", s.rms}, {"nrmse", s.nrmse}, {"fit_percent", s.fit_percent},
-                     {"baseline_fit_percent", jsonNumber(s.baseline_fit_percent)}, {"max_abs_error", s.max_abs},
-                     {"max_error_at_s", s.max_at_s}, {"coverage95", s.coverage}, {"systematic_rms", s.systematic_rms},
+    nlohmann::json e{{"data_set", s.data_set},
+                     {"scenario", s.scenario},
+                     {"channel", s.channel},
+                     {"unit", s.unit},
+                     {"fitted", s.fitted},
+                     {"noise_variance", s.noise_variance},
+                     {"noise_source", s.noise_source},
+                     {"points", s.t.size()},
+                     {"rms", s.rms},
+                     {"nrmse", s.nrmse},
+                     {"fit_percent", s.fit_percent},
+                     {"baseline_fit_percent", jsonNumber(s.baseline_fit_percent)},
+                     {"max_abs_error", s.max_abs},
+                     {"max_error_at_s", s.max_at_s},
+                     {"coverage95", s.coverage},
+                     {"systematic_rms", s.systematic_rms},
                      {"lack_of_fit_chi2", s.lack_of_fit}};
     e["windows"] = nlohmann::json::array();  // the listed ones, largest share first
     for (const auto& w : s.windows)
-      e["windows"].push_back({{"t_begin_s", w.window.t_begin}, {"t_end_s", w.window.t_end}, {"peak_z", w.window.peak_z},
-                              {"share_of_chi2", w.window.share}, {"label", w.label}, {"speed_mps", w.speed_mps}});
+      e["windows"].push_back({{"t_begin_s", w.window.t_begin},
+                              {"t_end_s", w.window.t_end},
+                              {"peak_z", w.window.peak_z},
+                              {"share_of_chi2", w.window.share},
+                              {"label", w.label},
+                              {"speed_mps", w.speed_mps}});
     const WindowSummary& ws = s.window_summary;
-    e["windows_summary"] = {{"found", ws.found}, {"merged", ws.merged}, {"listed", ws.listed}, {"merge_gap_s", ws.merge_gap_s},
-                            {"time_share", ws.time_share}, {"merged_share_of_chi2", ws.merged_share},
+    e["windows_summary"] = {{"found", ws.found},
+                            {"merged", ws.merged},
+                            {"listed", ws.listed},
+                            {"merge_gap_s", ws.merge_gap_s},
+                            {"time_share", ws.time_share},
+                            {"merged_share_of_chi2", ws.merged_share},
                             {"listed_share_of_chi2", ws.listed_share}};
     if (!s.windows_note.empty()) e["windows_note"] = s.windows_note;
     nlohmann::json rows = nlohmann::json::array();  // every window found, chronological
     for (const auto& w : s.all_windows) rows.push_back({w.t_begin, w.t_end, w.peak_z, w.share});
-    e["all_windows"] = {{"columns", {"t_begin_s", "t_end_s", "peak_z", "share_of_chi2"}}, {"rows", std::move(rows)}};
+    e["all_windows"] = {{"columns", {"t_begin_s", "t_end_s", "peak_z", "share_of_chi2"}},
+                        {"rows", std::move(rows)}};
     e["bands"] = nlohmann::json::array();
     for (const auto& b : s.bands)
-      e["bands"].push_back({{"band", b.band}, {"lo_hz", b.lo_hz}, {"hi_hz", b.hi_hz}, {"residual_power", b.residual_power},
-                            {"noise_power", b.noise_power}, {"ratio", b.ratio}, {"coherence_with_road", b.coherence},
+      e["bands"].push_back({{"band", b.band},
+                            {"lo_hz", b.lo_hz},
+                            {"hi_hz", b.hi_hz},
+                            {"residual_power", b.residual_power},
+                            {"noise_power", b.noise_power},
+                            {"ratio", b.ratio},
+                            {"coherence_with_road", b.coherence},
                             {"significant", b.significant}});
     if (!s.bands_note.empty()) e["bands_note"] = s.bands_note;
-    if (s.discrepancy) e["discrepancy"] = s.discrepancy->toJson(s.baseline_fit_percent, with_series_data);
+    if (s.discrepancy)
+      e["discrepancy"] = s.discrepancy->toJson(s.baseline_fit_percent, with_series_data);
     e["frequency_response"] = s.frequency_response.toJson(with_series_data);
     if (with_series_data) {
       e["t"] = s.t;
@@ -450,12 +523,19 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
   for (const auto& cm : maps) {
     nlohmann::json c{{"channel", cm.channel}, {"maps", nlohmann::json::array()}};
     for (const auto& m : cm.maps) {
-      nlohmann::json mm{{"state", m.state}, {"bins", nlohmann::json::array()}, {"fits", nlohmann::json::array()}};
+      nlohmann::json mm{
+          {"state", m.state}, {"bins", nlohmann::json::array()}, {"fits", nlohmann::json::array()}};
       for (const auto& b : m.bins)
-        mm["bins"].push_back({{"lo", b.lo}, {"hi", b.hi}, {"centre", b.centre}, {"mean_residual", b.mean}, {"se", b.se},
+        mm["bins"].push_back({{"lo", b.lo},
+                              {"hi", b.hi},
+                              {"centre", b.centre},
+                              {"mean_residual", b.mean},
+                              {"se", b.se},
                               {"count", b.count}});
       for (const auto& f : m.fits) {
-        nlohmann::json fj{{"feature", f.feature}, {"coefficient", f.coefficient}, {"explained_fraction", f.explained_fraction}};
+        nlohmann::json fj{{"feature", f.feature},
+                          {"coefficient", f.coefficient},
+                          {"explained_fraction", f.explained_fraction}};
         if (f.feature == "knee") fj["knee_at"] = f.knee_at;
         mm["fits"].push_back(fj);
       }
@@ -467,18 +547,24 @@ nlohmann::json Comparison::toJson(bool with_series_data) const {
 }
 
 std::string comparisonTable(const Comparison& c) {
-  const bool baseline = std::any_of(c.series.begin(), c.series.end(), [](const SeriesComparison& x) { return !std::isnan(x.baseline_fit_percent); });
-  std::string s = formatPrintf("%-28s %-12s %-20s %10s %8s %7s %10s %9s %10s%s\n", "data set", "scenario", "channel", "RMS", "NRMSE",
-                               "fit %", "max |err|", "coverage", "syst. RMS", baseline ? "  FIR fit %" : "");
+  const bool baseline =
+      std::any_of(c.series.begin(), c.series.end(),
+                  [](const SeriesComparison& x) { return !std::isnan(x.baseline_fit_percent); });
+  std::string s = formatPrintf("%-28s %-12s %-20s %10s %8s %7s %10s %9s %10s%s\n", "data set",
+                               "scenario", "channel", "RMS", "NRMSE", "fit %", "max |err|",
+                               "coverage", "syst. RMS", baseline ? "  FIR fit %" : "");
   for (const auto& x : c.series) {
     std::string name = x.data_set;
     if (name.size() > 28) name = "…" + name.substr(name.size() - 27);
-    s += formatPrintf("%-28s %-12s %-20s %10.4g %8.4f %7.1f %10.4g %8.1f%% %10.4g%s\n", name.c_str(), x.scenario.c_str(), x.channel.c_str(),
-                      x.rms, x.nrmse, x.fit_percent, x.max_abs, 100.0 * x.coverage, x.systematic_rms,
+    s += formatPrintf("%-28s %-12s %-20s %10.4g %8.4f %7.1f %10.4g %8.1f%% %10.4g%s\n",
+                      name.c_str(), x.scenario.c_str(), x.channel.c_str(), x.rms, x.nrmse,
+                      x.fit_percent, x.max_abs, 100.0 * x.coverage, x.systematic_rms,
                       baseline ? formatPrintf(" %10.1f", x.baseline_fit_percent).c_str() : "");
   }
-  s += formatPrintf("lack of fit: chi2 = %.1f on %ld dof (z = %.1f, p = %.2g); systematic residual %.3f noise sd\n", c.lack_of_fit,
-                    c.lack_of_fit_dof, c.lack_of_fit_z, c.lack_of_fit_p, c.systematic_rms_sd);
+  s += formatPrintf(
+      "lack of fit: chi2 = %.1f on %ld dof (z = %.1f, p = %.2g); systematic residual %.3f noise "
+      "sd\n",
+      c.lack_of_fit, c.lack_of_fit_dof, c.lack_of_fit_z, c.lack_of_fit_p, c.systematic_rms_sd);
   return s;
 }
 
@@ -488,7 +574,9 @@ StageWork estimateCompareWork(const std::vector<calib::DataSet>& sets, std::size
   for (const auto& s : sets) {
     w.simulations += runs;
     w.simulated_s += runs * dataSpan(s.data);
-    w.memory_bytes += 8.0 * runs * static_cast<double>(s.data.records.size());  // one prediction per record and draw
+    w.memory_bytes +=
+        8.0 * runs *
+        static_cast<double>(s.data.records.size());  // one prediction per record and draw
   }
   return w;
 }

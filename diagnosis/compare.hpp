@@ -40,16 +40,16 @@ struct StateMap {
 /// One (data set, channel).
 struct SeriesComparison {
   std::string data_set, scenario, channel, unit;
-  bool fitted = false;                 ///< has a noise estimate (weighed in the lack-of-fit test)
-  double noise_variance = 0.0;         ///< per measured value [unit²]
-  long noise_dof = 0;                  ///< of its estimate (0: known, from the study)
+  bool fitted = false;          ///< has a noise estimate (weighed in the lack-of-fit test)
+  double noise_variance = 0.0;  ///< per measured value [unit²]
+  long noise_dof = 0;           ///< of its estimate (0: known, from the study)
   std::string noise_source;
-  std::vector<double> t;               ///< distinct times, ascending
-  std::vector<int> repetitions;        ///< values at each time
-  std::vector<double> measured_mean;   ///< mean over repetitions
-  std::vector<double> predicted_mean;  ///< mean over the posterior draws
+  std::vector<double> t;                 ///< distinct times, ascending
+  std::vector<int> repetitions;          ///< values at each time
+  std::vector<double> measured_mean;     ///< mean over repetitions
+  std::vector<double> predicted_mean;    ///< mean over the posterior draws
   std::vector<double> band_lo, band_hi;  ///< 95 % posterior predictive band (draw spread + noise)
-  std::vector<double> z;               ///< (measured mean − predicted mean) / its standard deviation
+  std::vector<double> z;  ///< (measured mean − predicted mean) / its standard deviation
   // Error figures over every measured value (each repetition):
   double rms = 0, nrmse = 0, max_abs = 0, max_at_s = 0, coverage = 0;
   /// The fit percentage of system identification (MATLAB's `compare`): 100 (1 − ‖y − ŷ‖ / ‖y −
@@ -103,7 +103,7 @@ struct Comparison {
 
 struct CompareOptions {
   int threads = 0;
-  double window_threshold = 4.0;   ///< |z| that opens a window
+  double window_threshold = 4.0;  ///< |z| that opens a window
   double window_merge_s = 0.05, window_min_s = 0.0;
   /// Many windows (rankWindows): merged until at most window_max_merged remain; the fewest of the
   /// largest holding window_listed_share of their share are listed, at most window_max_listed.
@@ -118,13 +118,15 @@ struct CompareOptions {
 };
 
 /// Compares `objective`'s assembly at the posterior `draws` (θ rows in objective.names() order;
-/// at least one) with the measurements `sets` (the data sets the objective was built from, same order). The states for the maps and the road
-/// input come from the run at the draws' mean. `noise` (estimateChannelNoise) gives σ² per
-/// channel; channels absent from it are compared with σ² = 0 (not fitted). Throws InputError for
-/// bad options (options.validate()) or no draws.
-Comparison compareModel(const calib::LabObjective& objective, const std::vector<calib::DataSet>& sets,
+/// at least one) with the measurements `sets` (the data sets the objective was built from, same
+/// order). The states for the maps and the road input come from the run at the draws' mean. `noise`
+/// (estimateChannelNoise) gives σ² per channel; channels absent from it are compared with σ² = 0
+/// (not fitted). Throws InputError for bad options (options.validate()) or no draws.
+Comparison compareModel(const calib::LabObjective& objective,
+                        const std::vector<calib::DataSet>& sets,
                         const std::vector<std::vector<double>>& draws,
-                        const std::map<std::string, ChannelNoise>& noise, const CompareOptions& options = {});
+                        const std::map<std::string, ChannelNoise>& noise,
+                        const CompareOptions& options = {});
 
 /// The work of compareModel() (io/work.hpp): `draws` posterior rows (plus the run at their
 /// mean) over every data set, each simulated up to its last record.
@@ -151,12 +153,14 @@ void addResidualBands(SeriesComparison& sc, const std::vector<double>& road);
 
 /// What the vehicle is doing in [t0, t1] of a scenario (obstacle crossings of each axle, rough
 /// section, smooth road), e.g. "front wheels on the bump".
-std::string describeScenarioWindow(const ScenarioSpec& scenario, const VehicleData& vehicle, double t0, double t1);
+std::string describeScenarioWindow(const ScenarioSpec& scenario, const VehicleData& vehicle,
+                                   double t0, double t1);
 
 /// Evenly spaced rows (at most `count`) of a posterior sample, reordered to `names`.
 std::vector<std::vector<double>> posteriorRows(const std::vector<std::string>& sample_names,
                                                const std::vector<std::vector<double>>& rows,
-                                               const std::vector<std::string>& names, int count, const std::string& where);
+                                               const std::vector<std::string>& names, int count,
+                                               const std::string& where);
 
 /// Plain-text table of a comparison's error figures (one line per series).
 std::string comparisonTable(const Comparison& c);

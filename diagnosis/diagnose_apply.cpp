@@ -8,8 +8,8 @@
 
 #include <Eigen/Dense>
 
-#include "subsystems/effect.hpp"
 #include "common/parallel.hpp"
+#include "subsystems/effect.hpp"
 
 namespace dtwin::diag {
 
@@ -39,7 +39,8 @@ void propose(Diagnosis& d) {
       for (int c = 0; c < 4; ++c) {
         const auto& q = t.column(std::string("susp_defl_") + corners[c] + "_m");
         const auto& v = t.column(std::string("susp_rate_") + corners[c] + "_mps");
-        const auto& qo = t.column(std::string("susp_defl_") + corners[c ^ 1] + "_m");  // the other side of the axle
+        const auto& qo = t.column(std::string("susp_defl_") + corners[c ^ 1] +
+                                  "_m");  // the other side of the axle
         const auto& vo = t.column(std::string("susp_rate_") + corners[c ^ 1] + "_mps");
         for (std::size_t i = 0; i < q.size(); ++i)
           peak = std::max(peak, std::abs(library[j].f({q[i], v[i], q[i] - qo[i], v[i] - vo[i]})));
@@ -80,7 +81,8 @@ void propose(Diagnosis& d) {
   for (std::size_t k = 0; k < used.size(); ++k)
     for (long i = 0; i < n; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      G(i, static_cast<long>(k)) = std::sqrt(w[ii]) * (eta[used[k]][ii] - lin.eta_hat[ii]) / amplitude[used[k]];
+      G(i, static_cast<long>(k)) =
+          std::sqrt(w[ii]) * (eta[used[k]][ii] - lin.eta_hat[ii]) / amplitude[used[k]];
     }
   Eigen::MatrixXd Gp = lin.project(G);
   std::vector<double> norm(used.size(), 0.0);
@@ -92,10 +94,12 @@ void propose(Diagnosis& d) {
   const double gain = fit.bic_empty - fit.bic;
   const std::string lib_words = std::to_string(used.size()) + " strut-force terms";
   if (fit.chosen.empty() || gain <= d.options.bic_strong) {
-    res.proposal_note = "No proposal: no subset of the " + lib_words + " explains the residual (best BIC gain " + fmt("%.1f", gain) + ").";
+    res.proposal_note = "No proposal: no subset of the " + lib_words +
+                        " explains the residual (best BIC gain " + fmt("%.1f", gain) + ").";
     return;
   }
-  const double excess = std::max(fit.sse_empty - static_cast<double>(n - static_cast<long>(lin.theta_hat.size())), 1e-12);
+  const double excess = std::max(
+      fit.sse_empty - static_cast<double>(n - static_cast<long>(lin.theta_hat.size())), 1e-12);
   const double ln_n = std::log(static_cast<double>(n));
   for (std::size_t i = 0; i < fit.chosen.size(); ++i) {
     const std::size_t k = fit.chosen[i], j = used[k];
@@ -108,29 +112,35 @@ void propose(Diagnosis& d) {
     t.explained = std::clamp((fit.drop_sse[i] - fit.sse) / excess, 0.0, 1.0);
     res.proposal.push_back(t);
   }
-  std::sort(res.proposal.begin(), res.proposal.end(), [](const ProposedTerm& a, const ProposedTerm& b) { return a.delta_bic < b.delta_bic; });
+  std::sort(res.proposal.begin(), res.proposal.end(),
+            [](const ProposedTerm& a, const ProposedTerm& b) { return a.delta_bic < b.delta_bic; });
   // A term the subset keeps for a small BIC gain (between ln n and bic_strong) is not worth a
   // user's effect: only the strongly supported ones are proposed.
-  const auto weak = std::find_if(res.proposal.begin(), res.proposal.end(),
-                                 [&](const ProposedTerm& t) { return t.delta_bic >= -d.options.bic_strong; });
+  const auto weak =
+      std::find_if(res.proposal.begin(), res.proposal.end(),
+                   [&](const ProposedTerm& t) { return t.delta_bic >= -d.options.bic_strong; });
   const std::size_t dropped = static_cast<std::size_t>(res.proposal.end() - weak);
   res.proposal.erase(weak, res.proposal.end());
   if (res.proposal.empty()) {
-    res.proposal_note = "No proposal: no term of the " + lib_words + " explains the residual strongly (ΔBIC below −" +
+    res.proposal_note = "No proposal: no term of the " + lib_words +
+                        " explains the residual strongly (ΔBIC below −" +
                         fmt("%.0f", d.options.bic_strong) + ").";
     return;
   }
-  for (std::size_t i = 0; i < res.proposal.size(); ++i) res.proposal[i].name = "proposed_" + std::to_string(i + 1);
+  for (std::size_t i = 0; i < res.proposal.size(); ++i)
+    res.proposal[i].name = "proposed_" + std::to_string(i + 1);
   double kept_share = 0;
   for (const auto& t : res.proposal) kept_share += t.explained;
-  res.proposal_note = "A sparse regression of the residual on " + lib_words + " (best subset by BIC, linearised at the base optimum) proposes " +
-                      std::to_string(res.proposal.size()) + " term" + (res.proposal.size() > 1 ? "s" : "") + " (ΔBIC " +
-                      fmt("%.1f", res.proposal.front().delta_bic) + " for the first; together about " +
-                      fmt("%.0f", 100 * std::min(1.0, kept_share)) + " % of the excess residual" +
-                      (dropped ? "; " + std::to_string(dropped) + " weaker term" + (dropped > 1 ? "s" : "") + " with ΔBIC above −" +
-                                     fmt("%.0f", d.options.bic_strong) + " left out"
-                               : std::string()) +
-                      "): paste it into the study file, or pass proposal.toml to --apply, and apply it.";
+  res.proposal_note =
+      "A sparse regression of the residual on " + lib_words +
+      " (best subset by BIC, linearised at the base optimum) proposes " +
+      std::to_string(res.proposal.size()) + " term" + (res.proposal.size() > 1 ? "s" : "") +
+      " (ΔBIC " + fmt("%.1f", res.proposal.front().delta_bic) + " for the first; together about " +
+      fmt("%.0f", 100 * std::min(1.0, kept_share)) + " % of the excess residual" +
+      (dropped ? "; " + std::to_string(dropped) + " weaker term" + (dropped > 1 ? "s" : "") +
+                     " with ΔBIC above −" + fmt("%.0f", d.options.bic_strong) + " left out"
+               : std::string()) +
+      "): paste it into the study file, or pass proposal.toml to --apply, and apply it.";
   res.summary += " " + res.proposal_note;
 }
 
@@ -147,7 +157,8 @@ void apply(Diagnosis& d) {
   for (const auto& effect : effects) {
     acc.push_back(effect);
     std::vector<double> start, theta;
-    const Figures* confirmed = nullptr;  // a calibration with exactly these effects, in full, already made
+    const Figures* confirmed =
+        nullptr;  // a calibration with exactly these effects, in full, already made
     auto look = [&](const std::vector<Candidate>& cands) {
       for (const auto& c : cands)
         if (c.fit && c.fit->full && c.fit->effects == acc) confirmed = &*c.fit;
@@ -165,7 +176,10 @@ void apply(Diagnosis& d) {
     }
     // A step that fails ends the table at the steps before it (res.failures says why).
     Figures step;
-    if (!d.isolated("applying " + joinEffects(acc), [&] { step = d.calibrateWith(acc, "apply " + joinEffects(acc), start, theta); })) break;
+    if (!d.isolated("applying " + joinEffects(acc), [&] {
+          step = d.calibrateWith(acc, "apply " + joinEffects(acc), start, theta);
+        }))
+      break;
     res.steps.push_back(std::move(step));
   }
 }

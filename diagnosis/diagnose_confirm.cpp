@@ -1,5 +1,6 @@
-// The confirmation stage of diagnose() (docs/diagnosis.md, step 3): the candidates re-calibrated with
-// their effect, the base refined and the candidates weighed; then the forward stagewise selection.
+// The confirmation stage of diagnose() (docs/diagnosis.md, step 3): the candidates re-calibrated
+// with their effect, the base refined and the candidates weighed; then the forward stagewise
+// selection.
 #include "diagnosis/diagnose_internal.hpp"
 
 #include <algorithm>
@@ -21,12 +22,15 @@ namespace dtwin::diag {
 /// then the best of each kind (effect, parameter, sensor, ...) not already in, by score; at most
 /// options.candidates in all (the work budget). A later round passes the indices the rounds before
 /// took as `tried`: they are left out, and options are not added again.
-std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options,
+std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands,
+                                             const DiagnoseOptions& options,
                                              const std::set<std::size_t>& tried) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cands.size(); ++i)
-    if (cands[i].gate.empty() && cands[i].failed.empty() && cands[i].p_value < options.screen_alpha) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cands[a].score > cands[b].score; });
+    if (cands[i].gate.empty() && cands[i].failed.empty() && cands[i].p_value < options.screen_alpha)
+      order.push_back(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cands[a].score > cands[b].score; });
   std::vector<std::size_t> chosen;
   if (order.empty()) return chosen;
   const double best = cands[order.front()].score;
@@ -36,18 +40,21 @@ std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands
   std::vector<std::size_t> rest;
   std::set<std::string> kinds;
   for (std::size_t i : order)
-    if (!tried.count(i) && cands[i].score * options.confirm_within >= best) (kinds.insert(cands[i].kind).second ? chosen : rest).push_back(i);
+    if (!tried.count(i) && cands[i].score * options.confirm_within >= best)
+      (kinds.insert(cands[i].kind).second ? chosen : rest).push_back(i);
   for (std::size_t i : rest) chosen.push_back(i);
   // Beyond the factor, the best of each kind not confirmed yet (in the first round only).
   if (tried.empty())
     for (std::size_t i : order)
       if (kinds.insert(cands[i].kind).second) chosen.push_back(i);
-  if (chosen.size() > static_cast<std::size_t>(options.candidates)) chosen.resize(static_cast<std::size_t>(options.candidates));
+  if (chosen.size() > static_cast<std::size_t>(options.candidates))
+    chosen.resize(static_cast<std::size_t>(options.candidates));
   // Another option of a subsystem is not nested in the model: no score can screen it, so it is
   // always confirmed, beyond the budget.
   if (tried.empty())
     for (std::size_t i = 0; i < cands.size(); ++i)
-      if (cands[i].kind == "option" && cands[i].gate.empty() && cands[i].failed.empty()) chosen.push_back(i);
+      if (cands[i].kind == "option" && cands[i].gate.empty() && cands[i].failed.empty())
+        chosen.push_back(i);
   return chosen;
 }
 
@@ -61,7 +68,8 @@ bool isInert(const Diagnosis& d, const Candidate& c) {
   const auto own = d.parametersOf(c.effect, *c.fit);
   return !own.empty() && std::all_of(own.begin(), own.end(), [&](const EffectParameter& p) {
     for (const auto& ps : spec.parameters)
-      if (c.effect + "." + ps.name == p.name || ps.name == p.name || (spec.calibrated_names.size() == 1 && spec.calibrated_names[0] == p.name))
+      if (c.effect + "." + ps.name == p.name || ps.name == p.name ||
+          (spec.calibrated_names.size() == 1 && spec.calibrated_names[0] == p.name))
         return std::abs(p.optimum - ps.default_value) <= 1e-6 * (ps.prior_upper - ps.prior_lower);
     return false;
   });
@@ -73,7 +81,11 @@ void weigh(const Diagnosis& d, Candidate& c, const Figures& ref) {
   const Comparison& base = d.res.base.comparison;
   const double base_excess = base.lack_of_fit - static_cast<double>(base.lack_of_fit_dof);
   c.delta_bic = c.fit->bic - ref.bic;
-  c.explained = base_excess > 0 ? std::clamp((ref.comparison.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess, 0.0, 1.0) : 0.0;
+  c.explained =
+      base_excess > 0
+          ? std::clamp((ref.comparison.lack_of_fit - c.fit->comparison.lack_of_fit) / base_excess,
+                       0.0, 1.0)
+          : 0.0;
   if (c.fit->holdout && ref.holdout && ref.holdout->systematic_rms_sd > 0)
     c.holdout_change = c.fit->holdout->systematic_rms_sd / ref.holdout->systematic_rms_sd;
 }
@@ -93,12 +105,17 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
   auto calibrate = [&](Candidate& c, const std::string& stage, bool full) {
     return d.isolatedStep(
         [&] {
-          if (d.options.before_candidate_step) d.options.before_candidate_step(joinEffects(d.withInstalled(c.effect)), full ? "full" : "optimum");
-          c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, c.screening_estimate, c.screening_theta, full);
+          if (d.options.before_candidate_step)
+            d.options.before_candidate_step(joinEffects(d.withInstalled(c.effect)),
+                                            full ? "full" : "optimum");
+          c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, c.screening_estimate,
+                                  c.screening_theta, full);
         },
         [&](const std::string& reason) {
           c.fit.reset();
-          c.failed = std::string(full ? "its calibration in full failed: " : "its confirming calibration failed: ") + reason;
+          c.failed = std::string(full ? "its calibration in full failed: "
+                                      : "its confirming calibration failed: ") +
+                     reason;
         });
   };
   // First every candidate's optimum (its evidence), then the full calibration (intervals, the
@@ -109,7 +126,8 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
     for (std::size_t k = 0; k < chosen.size(); ++k) {
       auto& c = cands[chosen[k]];
       tried.insert(chosen[k]);
-      const std::string stage = "confirm " + c.effect + on_top + " (" + std::to_string(k + 1) + "/" + std::to_string(chosen.size()) +
+      const std::string stage = "confirm " + c.effect + on_top + " (" + std::to_string(k + 1) +
+                                "/" + std::to_string(chosen.size()) +
                                 (r > 0 ? ", round " + std::to_string(r + 1) : "") + ")";
       if (calibrate(c, stage, false)) optimised.push_back(chosen[k]);
     }
@@ -143,7 +161,9 @@ std::vector<std::size_t> confirm(Diagnosis& d) {
     // On top of causes already named (a later stage of the stagewise selection) the evidence
     // decides alone; only the final model's intervals are reported, so it alone is calibrated in
     // full, once the selection ends (furtherCauses).
-    if (d.installed.empty() && c.evidence_gap <= margin && !calibrate(c, "confirm " + c.effect + " in full", true)) continue;
+    if (d.installed.empty() && c.evidence_gap <= margin &&
+        !calibrate(c, "confirm " + c.effect + " in full", true))
+      continue;
     c.confirmed = true;
     c.finding = d.findingOf(c.effect, *c.fit);
     c.inert = isInert(d, c);
@@ -179,7 +199,8 @@ void refineBase(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
   }
   if (!better.empty()) {
     Figures refined;
-    if (d.isolated("the refined base's calibration", [&] { refined = d.calibrateWith({}, "base (refined)", {}, better); })) {
+    if (d.isolated("the refined base's calibration",
+                   [&] { refined = d.calibrateWith({}, "base (refined)", {}, better); })) {
       res.base_unrefined_sse = res.base.sse_min;
       res.base = std::move(refined);
     } else {
@@ -190,12 +211,12 @@ void refineBase(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
 
 }  // namespace
 
-/// Refine (the end of step 3): the evidence for an effect must not come from a base optimum the optimiser
-/// missed. The base is polished again from every strongly favoured candidate's base parameters
-/// (its effect switched off); when that fits better, the base is re-calibrated from there and
-/// becomes the reference of every ΔBIC and of the lack-of-fit figures (first stage only: a later
-/// stage's reference is the previous stage's confirmed fit). Then each confirmed candidate is
-/// weighed against the stage's reference (ΔBIC, share of the base's excess residual it removes,
+/// Refine (the end of step 3): the evidence for an effect must not come from a base optimum the
+/// optimiser missed. The base is polished again from every strongly favoured candidate's base
+/// parameters (its effect switched off); when that fits better, the base is re-calibrated from
+/// there and becomes the reference of every ΔBIC and of the lack-of-fit figures (first stage only:
+/// a later stage's reference is the previous stage's confirmed fit). Then each confirmed candidate
+/// is weighed against the stage's reference (ΔBIC, share of the base's excess residual it removes,
 /// held-out change) and the stage's candidates are ranked: confirmed by log evidence, then by
 /// score, gated last.
 void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
@@ -205,7 +226,9 @@ void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
   const Figures& ref = d.installed.empty() ? res.base : *d.reference;
   for (std::size_t i : to_confirm) weigh(d, cands[i], ref);
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
-    auto cls = [](const Candidate& c) { return c.confirmed ? 0 : (c.gate.empty() && c.failed.empty() ? 1 : 2); };
+    auto cls = [](const Candidate& c) {
+      return c.confirmed ? 0 : (c.gate.empty() && c.failed.empty() ? 1 : 2);
+    };
     if (cls(a) != cls(b)) return cls(a) < cls(b);
     if (a.confirmed) return a.fit->log_evidence > b.fit->log_evidence;
     return a.score > b.score;
@@ -264,8 +287,11 @@ void structureFirst(Diagnosis& d, const std::vector<const Candidate*>& named) {
       c.confirmed = false;
       c.holdout_change.reset();
       const std::string stage = "structure " + c.effect + " on " + joinEffects(d.installed);
-      if (!d.isolatedStep([&] { c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, own, {}, false); },
-                          [&](const std::string& reason) { c.failed = "its confirming calibration failed: " + reason; })) {
+      if (!d.isolatedStep(
+              [&] { c.fit = d.calibrateWith(d.withInstalled(c.effect), stage, own, {}, false); },
+              [&](const std::string& reason) {
+                c.failed = "its confirming calibration failed: " + reason;
+              })) {
         c.fit.reset();
         res.further.back().candidates.push_back(c);
         continue;
@@ -299,12 +325,14 @@ void structureFirst(Diagnosis& d, const std::vector<const Candidate*>& named) {
 /// (ΔBIC against the model with them), and the best strong one becomes the next cause.
 void furtherCauses(Diagnosis& d) {
   auto& res = d.res;
-  while (static_cast<int>(res.causes.size()) < d.options.causes && res.causes.back().fit.comparison.lack_of_fit_p < d.options.lack_of_fit_alpha) {
+  while (static_cast<int>(res.causes.size()) < d.options.causes &&
+         res.causes.back().fit.comparison.lack_of_fit_p < d.options.lack_of_fit_alpha) {
     d.installed.push_back(res.causes.back().name);
     d.reference = &res.causes.back().fit;
     std::vector<std::string> catalogue;
     for (const auto& e : d.catalogue)
-      if (std::find(d.installed.begin(), d.installed.end(), e) == d.installed.end()) catalogue.push_back(e);
+      if (std::find(d.installed.begin(), d.installed.end(), e) == d.installed.end())
+        catalogue.push_back(e);
     d.catalogue = catalogue;
     res.further.push_back({d.installed, {}});
     // The stage's own screening (the model with the causes so far, linearised) failing ends the
@@ -327,8 +355,10 @@ void furtherCauses(Diagnosis& d) {
   if (!res.causes.back().fit.full) {
     const std::vector<std::string> effects = res.causes.back().fit.effects;
     Figures all;
-    if (d.isolated("the calibration in full of " + joinEffects(effects),
-                   [&] { all = d.calibrateWith(effects, "final " + joinEffects(effects) + " in full", {}, {}, true); }))
+    if (d.isolated("the calibration in full of " + joinEffects(effects), [&] {
+          all =
+              d.calibrateWith(effects, "final " + joinEffects(effects) + " in full", {}, {}, true);
+        }))
       res.causes.back().fit = std::move(all);
   }
   const Figures& all = res.causes.back().fit;
@@ -339,7 +369,8 @@ void furtherCauses(Diagnosis& d) {
   // The proposal (an unexplained verdict) linearises the base model again.
   d.installed.clear();
   d.reference = nullptr;
-  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
+  d.base_obj =
+      std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
 }
 
 }  // namespace dtwin::diag

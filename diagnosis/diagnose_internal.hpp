@@ -34,26 +34,32 @@ std::vector<double> offValues(const CandidateSpec& c);
 /// fitted data and their weights, the catalogue, every calibration's optimum and the result
 /// being built. Each stage below reads and extends it.
 struct Diagnosis {
-  Diagnosis(const Study& s, const AssemblySpec& a, const DiagnoseOptions& o, std::string out, const DiagnoseProgress& p)
+  Diagnosis(const Study& s, const AssemblySpec& a, const DiagnoseOptions& o, std::string out,
+            const DiagnoseProgress& p)
       : study(s), assembly(a), options(o), out_dir(std::move(out)), progress(p) {}
   const Study& study;
   const AssemblySpec& assembly;
   const DiagnoseOptions& options;
   const std::string out_dir;
   const DiagnoseProgress& progress;
-  std::map<std::string, ChannelNoise> noise;          ///< per fitted channel
-  std::map<std::string, double> weights;              ///< 1/σ_c² per fitted channel
-  std::vector<calib::DataSet> fit_sets, hold_sets;    ///< the fitted channels of the fit and held-out data
-  std::string data_hash;                              ///< of fit_sets: a calibration folder's identity
-  std::vector<std::string> catalogue;                 ///< the candidates ranked (no installed effect)
-  std::map<std::string, CandidateSpec> specs;         ///< every candidate of the catalogue and of options.apply
-  std::map<std::string, std::vector<double>> optima;  ///< every calibration's optimum, by joinEffects(effects)
-  std::map<std::string, std::vector<std::string>> optima_names;  ///< ... and the names of its values
+  std::map<std::string, ChannelNoise> noise;  ///< per fitted channel
+  std::map<std::string, double> weights;      ///< 1/σ_c² per fitted channel
+  std::vector<calib::DataSet> fit_sets,
+      hold_sets;                       ///< the fitted channels of the fit and held-out data
+  std::string data_hash;               ///< of fit_sets: a calibration folder's identity
+  std::vector<std::string> catalogue;  ///< the candidates ranked (no installed effect)
+  std::map<std::string, CandidateSpec>
+      specs;  ///< every candidate of the catalogue and of options.apply
+  std::map<std::string, std::vector<double>>
+      optima;  ///< every calibration's optimum, by joinEffects(effects)
+  std::map<std::string, std::vector<std::string>>
+      optima_names;  ///< ... and the names of its values
   /// The optimiser's extra starts of each calibration folder, fixed by its first call: a folder
   /// calibrated again (in full after its optimum, or from another stage) resumes the same
   /// calibration instead of meeting a different one.
   std::map<std::string, std::vector<std::vector<double>>> starts_of;
-  std::unique_ptr<calib::LabObjective> base_obj;      ///< the current stage's reference model on fit_sets (screening, refinement)
+  std::unique_ptr<calib::LabObjective>
+      base_obj;  ///< the current stage's reference model on fit_sets (screening, refinement)
   DiagnosisResult res;
   /// Forward stagewise (docs/diagnosis.md, "More than one cause"): the causes installed so far.
   /// Empty in the first stage, whose reference is the base; later stages screen and confirm on
@@ -83,7 +89,9 @@ struct Diagnosis {
     return spec(name).finding(values, interval ? ps[0].q025 : nan, interval ? ps[0].q975 : nan);
   }
   /// The candidates of the current stage.
-  std::vector<Candidate>& stage() { return installed.empty() ? res.candidates : res.further.back().candidates; }
+  std::vector<Candidate>& stage() {
+    return installed.empty() ? res.candidates : res.further.back().candidates;
+  }
   /// `name` installed on top of the causes of the current stage.
   std::vector<std::string> withInstalled(const std::string& name) const {
     auto e = installed;
@@ -111,7 +119,9 @@ struct Diagnosis {
   /// isolatedStep, recording "<what> failed: <reason>" in res.failures.
   template <class F>
   bool isolated(const std::string& what, F&& step) {
-    return isolatedStep(step, [&](const std::string& reason) { res.failures.push_back(what + " failed: " + reason); });
+    return isolatedStep(step, [&](const std::string& reason) {
+      res.failures.push_back(what + " failed: " + reason);
+    });
   }
 
   void report(const std::string& stage, std::size_t done, std::size_t total) const {
@@ -131,16 +141,18 @@ struct Diagnosis {
   /// the refined base and has its own folder. full = false: the optimum alone
   /// (calib::calibrateOptimum), compared at the optimum; a later full call resumes from it.
   Figures calibrateWith(const std::vector<std::string>& effects, const std::string& stage,
-                        const std::vector<double>& effect_start = {}, const std::vector<double>& theta_start = {},
-                        bool full = true);
+                        const std::vector<double>& effect_start = {},
+                        const std::vector<double>& theta_start = {}, bool full = true);
 
  private:
   /// The optimiser's extra starts of a calibration with `effects` (see calibrateWith).
-  std::vector<std::vector<double>> extraStarts(const std::vector<std::string>& effects, const std::vector<double>& effect_start,
+  std::vector<std::vector<double>> extraStarts(const std::vector<std::string>& effects,
+                                               const std::vector<double>& effect_start,
                                                const std::vector<double>& theta_start) const;
-  /// The model calibrated with `setup` compared with the data at evenly spaced posterior rows of `r`.
-  void compareFigures(Figures& f, const calib::CalibrationResult& r, const calib::CalibrationSetup& setup,
-                      const std::string& stage) const;
+  /// The model calibrated with `setup` compared with the data at evenly spaced posterior rows of
+  /// `r`.
+  void compareFigures(Figures& f, const calib::CalibrationResult& r,
+                      const calib::CalibrationSetup& setup, const std::string& stage) const;
 };
 
 // ------------------------------------------------------------------ screen (diagnose_screen.cpp)
@@ -178,31 +190,39 @@ struct ProbeGroup {
 };
 
 Linearisation linearise(const Diagnosis& d);
-std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate, double at = std::numeric_limits<double>::quiet_NaN(),
+std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate,
+                                 double at = std::numeric_limits<double>::quiet_NaN(),
                                  long theta_index = -1);
 void screen(Diagnosis& d);
 
-// ------------------------------------------------------------------ confirm, refine, further causes (diagnose_confirm.cpp)
+// ------------------------------------------------------------------ confirm, refine, further
+// causes (diagnose_confirm.cpp)
 std::vector<std::size_t> confirm(Diagnosis& d);
 void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm);
 void furtherCauses(Diagnosis& d);
-/// The other structures of the first stage weighed on top of a first cause that is one (diagnose_confirm.cpp).
+/// The other structures of the first stage weighed on top of a first cause that is one
+/// (diagnose_confirm.cpp).
 void structureFirst(Diagnosis& d, const std::vector<const Candidate*>& named);
 
 // ------------------------------------------------------------------ verdict (diagnose_verdict.cpp)
 void explainStage(Diagnosis& d, const Comparison& ref);
-std::vector<const Candidate*> strongOf(const std::vector<Candidate>& cands, const DiagnoseOptions& options);
-std::vector<const Candidate*> alikeOf(const std::vector<const Candidate*>& named, const DiagnoseOptions& options);
+std::vector<const Candidate*> strongOf(const std::vector<Candidate>& cands,
+                                       const DiagnoseOptions& options);
+std::vector<const Candidate*> alikeOf(const std::vector<const Candidate*>& named,
+                                      const DiagnoseOptions& options);
 Cause causeOf(const Candidate& c, const std::vector<const Candidate*>& alike);
 void verdict(Diagnosis& d);
 
-// ------------------------------------------------------------------ propose, apply (diagnose_apply.cpp)
+// ------------------------------------------------------------------ propose, apply
+// (diagnose_apply.cpp)
 void propose(Diagnosis& d);
 void apply(Diagnosis& d);
 
-/// The candidates a stage confirms, in order (docs/diagnosis.md, "Confirmation"; diagnose_confirm.cpp).
-/// `tried`: the indices a round before took (left out; the factor still counts from the best score of all).
-std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands, const DiagnoseOptions& options,
+/// The candidates a stage confirms, in order (docs/diagnosis.md, "Confirmation";
+/// diagnose_confirm.cpp). `tried`: the indices a round before took (left out; the factor still
+/// counts from the best score of all).
+std::vector<std::size_t> chooseConfirmations(const std::vector<Candidate>& cands,
+                                             const DiagnoseOptions& options,
                                              const std::set<std::size_t>& tried = {});
 
 }  // namespace dtwin::diag

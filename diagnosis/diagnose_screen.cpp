@@ -35,13 +35,15 @@ double towardFar(const ParameterSpec& p, double f) {
 
 /// A parameter whose off value is at a prior bound adds strength (a bar rate); one whose off
 /// value lies inside the prior only shapes the effect of the others (a gap) and is scanned.
-bool isStrength(const ParameterSpec& p) { return p.default_value <= p.prior_lower || p.default_value >= p.prior_upper; }
+bool isStrength(const ParameterSpec& p) {
+  return p.default_value <= p.prior_lower || p.default_value >= p.prior_upper;
+}
 
 /// A length parameter's name without its unit suffix: "gap_m" -> "gap".
 std::string withoutUnit(const std::string& parameter) {
   const std::string suffix = "_m";
-  const bool has =
-      parameter.size() > suffix.size() && parameter.compare(parameter.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const bool has = parameter.size() > suffix.size() &&
+                   parameter.compare(parameter.size() - suffix.size(), suffix.size(), suffix) == 0;
   std::string w = has ? parameter.substr(0, parameter.size() - suffix.size()) : parameter;
   std::replace(w.begin(), w.end(), '_', ' ');
   return w;
@@ -59,7 +61,8 @@ Linearisation linearise(const Diagnosis& d) {
   const auto& w = obj.weights();
   const std::size_t n = y.size(), dim = lin.theta_hat.size();
   lin.r.resize(static_cast<long>(n));
-  for (std::size_t i = 0; i < n; ++i) lin.r[static_cast<long>(i)] = std::sqrt(w[i]) * (y[i] - lin.eta_hat[i]);
+  for (std::size_t i = 0; i < n; ++i)
+    lin.r[static_cast<long>(i)] = std::sqrt(w[i]) * (y[i] - lin.eta_hat[i]);
   Eigen::MatrixXd J(static_cast<long>(n), static_cast<long>(dim));
   std::vector<std::vector<double>> plus(dim), minus(dim);
   std::vector<double> h(dim);
@@ -74,27 +77,34 @@ Linearisation linearise(const Diagnosis& d) {
     up[k] = std::min(h[k], obj.upper()[k] - lin.theta_hat[k]);
     down[k] = std::min(h[k], lin.theta_hat[k] - obj.lower()[k]);
     // NOLINTBEGIN(bugprone-branch-clone): the first and last cases step alike, said apart
-    if (up[k] < 0.5 * h[k] && down[k] < 0.5 * h[k]) up[k] = down[k] = h[k];  // a range narrower than the step: both sides
-    else if (up[k] < 0.5 * h[k]) up[k] = 0.0, down[k] = h[k];
-    else if (down[k] < 0.5 * h[k]) down[k] = 0.0, up[k] = h[k];
-    else up[k] = down[k] = h[k];
+    if (up[k] < 0.5 * h[k] && down[k] < 0.5 * h[k])
+      up[k] = down[k] = h[k];  // a range narrower than the step: both sides
+    else if (up[k] < 0.5 * h[k])
+      up[k] = 0.0, down[k] = h[k];
+    else if (down[k] < 0.5 * h[k])
+      down[k] = 0.0, up[k] = h[k];
+    else
+      up[k] = down[k] = h[k];
     // NOLINTEND(bugprone-branch-clone)
   }
   parallelFor(2 * dim, d.options.threads, [&](std::size_t t, int) {
     const std::size_t k = t / 2;
     auto th = lin.theta_hat;
     th[k] += t % 2 == 0 ? up[k] : -down[k];
-    (t % 2 == 0 ? plus[k] : minus[k]) = (t % 2 == 0 ? up[k] : down[k]) == 0.0 ? lin.eta_hat : obj.predict(th);
+    (t % 2 == 0 ? plus[k] : minus[k]) =
+        (t % 2 == 0 ? up[k] : down[k]) == 0.0 ? lin.eta_hat : obj.predict(th);
   });
   for (std::size_t k = 0; k < dim; ++k) {
     if (plus[k].empty() || minus[k].empty())
-      throw std::runtime_error("diagnose: a sensitivity run at the base optimum failed (" + obj.names()[k] + " = " +
-                               fmt("%.6g", lin.theta_hat[k]) + ")");
+      throw std::runtime_error("diagnose: a sensitivity run at the base optimum failed (" +
+                               obj.names()[k] + " = " + fmt("%.6g", lin.theta_hat[k]) + ")");
     for (std::size_t i = 0; i < n; ++i)
-      J(static_cast<long>(i), static_cast<long>(k)) = std::sqrt(w[i]) * (plus[k][i] - minus[k][i]) / (up[k] + down[k]);
+      J(static_cast<long>(i), static_cast<long>(k)) =
+          std::sqrt(w[i]) * (plus[k][i] - minus[k][i]) / (up[k] + down[k]);
   }
   lin.qr.compute(J);
-  lin.Q = lin.qr.householderQ() * Eigen::MatrixXd::Identity(static_cast<long>(n), static_cast<long>(dim));
+  lin.Q = lin.qr.householderQ() *
+          Eigen::MatrixXd::Identity(static_cast<long>(n), static_cast<long>(dim));
   lin.J = std::move(J);
   return lin;
 }
@@ -102,17 +112,20 @@ Linearisation linearise(const Diagnosis& d) {
 /// The probes of effect `e` (docs/diagnosis.md, screening): every strength parameter at 5, 20 and
 /// 60 % of the way to its far prior end, for every point of the scan (10, 30, 60 % of the prior)
 /// of the parameters whose off value lies inside their prior.
-std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate, double at, long theta_index) {
+std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate, double at,
+                                 long theta_index) {
   if (candidate.kind == "option") return {};  // not nested: no score test (always confirmed)
   if (candidate.kind == "range") {
-    // Beyond the study's bound the value sits at (the upper one when unknown), 5, 20 and 60 % of the
-    // way to its physical limit.
+    // Beyond the study's bound the value sits at (the upper one when unknown), 5, 20 and 60 % of
+    // the way to its physical limit.
     const bool lower = std::isfinite(at) && at - candidate.study_lower < candidate.study_upper - at;
     const double b = lower ? candidate.study_lower : candidate.study_upper;
-    const double lim = lower ? candidate.parameters[0].prior_lower : candidate.parameters[0].prior_upper;
+    const double lim =
+        lower ? candidate.parameters[0].prior_lower : candidate.parameters[0].prior_upper;
     std::vector<ProbeGroup> groups;
     if (lim == b) return groups;
-    for (double level : {0.05, 0.2, 0.6}) groups.push_back({e, {{b + level * (lim - b)}}, theta_index});
+    for (double level : {0.05, 0.2, 0.6})
+      groups.push_back({e, {{b + level * (lim - b)}}, theta_index});
     return groups;
   }
   const auto& ps = candidate.parameters;
@@ -121,7 +134,8 @@ std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate, 
   // A sensor's place enters its reading linearly (a = heave − x·pitch'' + y·roll''): both
   // coordinates are directions of one group, so the test sees any place, not only the scanned ones.
   const bool linear = candidate.kind == "place";
-  for (std::size_t k = 0; k < ps.size(); ++k) (k == 0 || linear || isStrength(ps[k]) ? strength : scan).push_back(k);
+  for (std::size_t k = 0; k < ps.size(); ++k)
+    (k == 0 || linear || isStrength(ps[k]) ? strength : scan).push_back(k);
   std::vector<std::vector<double>> scans{off};
   for (std::size_t k : scan) {
     std::vector<std::vector<double>> next;
@@ -153,10 +167,10 @@ namespace {
 /// `eff_obj` (per catalogue effect; the reference model for a range candidate's probes). A probe
 /// whose run throws fails its candidate: `failed` (per catalogue effect) gets the message of its
 /// first such probe, in job order (whatever the thread count).
-std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::vector<ProbeGroup>& groups,
-                                                const std::vector<double>& theta_hat,
-                                                const std::vector<std::unique_ptr<calib::LabObjective>>& eff_obj,
-                                                std::vector<std::string>& failed) {
+std::vector<std::vector<double>> simulateProbes(
+    const Diagnosis& d, const std::vector<ProbeGroup>& groups, const std::vector<double>& theta_hat,
+    const std::vector<std::unique_ptr<calib::LabObjective>>& eff_obj,
+    std::vector<std::string>& failed) {
   std::vector<std::pair<std::size_t, std::size_t>> jobs;  // (group, column)
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t c = 0; c < groups[g].cols.size(); ++c) jobs.push_back({g, c});
@@ -174,7 +188,8 @@ std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::v
       }
       for (double v : g.cols[jobs[j].second]) th.push_back(v);
       probe_eta[j] = eff_obj[g.effect]->predict(th);
-    } catch (const std::exception& e) {  // this candidate's alone (an InputError is a failed run: LabObjective)
+    } catch (const std::exception&
+                 e) {  // this candidate's alone (an InputError is a failed run: LabObjective)
       probe_eta[j].clear();
       errors[j] = oneLine(e.what());
     }
@@ -191,7 +206,8 @@ std::vector<std::vector<double>> simulateProbes(const Diagnosis& d, const std::v
 /// contributions with span(J) projected out), rank(g⊥) degrees of freedom. Each candidate keeps its
 /// largest S, its largest ‖g⊥‖², and the linearised estimate of the effect's and the base
 /// parameters at its best probe. Returns, per catalogue effect, whether every probe group failed.
-std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std::vector<ProbeGroup>& groups,
+std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin,
+                              const std::vector<ProbeGroup>& groups,
                               const std::vector<std::vector<double>>& probe_eta) {
   const auto& w = d.base_obj->weights();
   const std::size_t n = lin.eta_hat.size(), dim = lin.theta_hat.size();
@@ -208,12 +224,14 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
         continue;
       }
       for (std::size_t i = 0; i < n; ++i)
-        G(static_cast<long>(i), static_cast<long>(c)) = std::sqrt(w[i]) * (probe_eta[j][i] - lin.eta_hat[i]);
+        G(static_cast<long>(i), static_cast<long>(c)) =
+            std::sqrt(w[i]) * (probe_eta[j][i] - lin.eta_hat[i]);
     }
     if (failed) continue;
     all_failed[e] = false;
     const long k_range = groups[g].theta_index;
-    const Eigen::MatrixXd Gp = k_range >= 0 ? lin.projectWithout(static_cast<std::size_t>(k_range), G) : lin.project(G);
+    const Eigen::MatrixXd Gp =
+        k_range >= 0 ? lin.projectWithout(static_cast<std::size_t>(k_range), G) : lin.project(G);
     auto& cand = d.stage()[e];
     cand.max_signal = std::max(cand.max_signal, Gp.squaredNorm());
     // S = rᵀ Gp (Gpᵀ Gp)⁺ Gpᵀ r (rank-revealing: a column the base absorbs entirely drops out).
@@ -244,7 +262,8 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
     for (std::size_t col = 0; col < groups[g].cols.size(); ++col)
       for (std::size_t k = 0; k < ps.size(); ++k)
         if (groups[g].cols[col][k] != ps[k].default_value && (k == 0 || isStrength(ps[k]))) {
-          const double v = ps[k].default_value + coef[static_cast<long>(col)] * (groups[g].cols[col][k] - ps[k].default_value);
+          const double v = ps[k].default_value + coef[static_cast<long>(col)] *
+                                                     (groups[g].cols[col][k] - ps[k].default_value);
           est[k] = std::clamp(v, ps[k].prior_lower, ps[k].prior_upper);
         }
     cand.screening_estimate = est;
@@ -252,8 +271,8 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin, const std:
     const Eigen::VectorXd dtheta = lin.qr.solve(lin.r - G * coef);
     cand.screening_theta = lin.theta_hat;
     for (std::size_t k = 0; k < dim; ++k)
-      cand.screening_theta[k] =
-          std::clamp(lin.theta_hat[k] + dtheta[static_cast<long>(k)], d.base_obj->lower()[k], d.base_obj->upper()[k]);
+      cand.screening_theta[k] = std::clamp(lin.theta_hat[k] + dtheta[static_cast<long>(k)],
+                                           d.base_obj->lower()[k], d.base_obj->upper()[k]);
   }
   return all_failed;
 }
@@ -263,25 +282,30 @@ double maxCompression(const Diagnosis& d, const std::vector<double>& theta_hat) 
   double max_compression = -std::numeric_limits<double>::infinity();
   for (const auto& t : d.base_obj->traces(theta_hat))
     for (const char* c : {"fl", "fr", "rl", "rr"})
-      for (double q : t.column(std::string("susp_defl_") + c + "_m")) max_compression = std::max(max_compression, q);
+      for (double q : t.column(std::string("susp_defl_") + c + "_m"))
+        max_compression = std::max(max_compression, q);
   return max_compression;
 }
 
 /// The p-value of every candidate (Bonferroni over `probes`) and its gate: why an effect cannot
 /// matter in these data (no plausible value changes them; an engagement threshold the travel
 /// never reaches; a contribution below the noise; a failed probe).
-void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::size_t probes, const std::vector<bool>& all_failed) {
+void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::size_t probes,
+                    const std::vector<bool>& all_failed) {
   const double bonferroni = static_cast<double>(probes);
   std::optional<double> max_compression;  // one more run, only when a threshold gate needs it
   for (std::size_t e = 0; e < d.catalogue.size(); ++e) {
     auto& c = d.stage()[e];
     c.p_value = std::min(1.0, bonferroni * chi2Upper(c.score, c.score_dof));
-    if (!c.failed.empty() || !c.gate.empty()) continue;  // failed, or gated before its probes (screen)
+    if (!c.failed.empty() || !c.gate.empty())
+      continue;  // failed, or gated before its probes (screen)
     const auto& spec = d.spec(c.effect);
     if (spec.kind == "option") continue;  // not screened: always confirmed
     const auto& names = d.base_obj->names();
-    if (spec.kind == "range" && std::find(names.begin(), names.end(), spec.calibrated_names[0]) == names.end()) {
-      c.gate = "this model has no " + spec.calibrated_names[0] + " to widen (" + joinEffects(d.installed) + " leaves it out)";
+    if (spec.kind == "range" &&
+        std::find(names.begin(), names.end(), spec.calibrated_names[0]) == names.end()) {
+      c.gate = "this model has no " + spec.calibrated_names[0] + " to widen (" +
+               joinEffects(d.installed) + " leaves it out)";
       continue;
     }
     if (all_failed[e]) {
@@ -290,27 +314,33 @@ void gateCandidates(Diagnosis& d, const std::vector<double>& theta_hat, std::siz
       const std::string& threshold = spec.engagement_threshold;
       if (!threshold.empty()) {
         if (!max_compression) max_compression = maxCompression(d, theta_hat);
-        const double smallest = spec.parameters[parameterIndex(spec.parameters, threshold)].prior_lower;
-        c.gate = "the suspension never compresses beyond the smallest plausible " + withoutUnit(threshold) + " (" +
-                 fmt("%.3g", *max_compression) + " m < " + fmt("%.3g", smallest) + " m): " + inWords(c.effect) + " cannot act here";
+        const double smallest =
+            spec.parameters[parameterIndex(spec.parameters, threshold)].prior_lower;
+        c.gate = "the suspension never compresses beyond the smallest plausible " +
+                 withoutUnit(threshold) + " (" + fmt("%.3g", *max_compression) + " m < " +
+                 fmt("%.3g", smallest) + " m): " + inWords(c.effect) + " cannot act here";
       } else {
         c.gate = spec.kind == "effect" ? "exerts no force in these runs at any plausible value"
                                        : "changes nothing in these data at any plausible value";
       }
     } else if (c.max_signal < 1.0) {
-      c.gate = "its largest plausible contribution, after re-calibrating the base parameters, is below the noise (" +
-               fmt("%.2g", c.max_signal) + " noise variances in total): these data cannot show it";
+      c.gate =
+          "its largest plausible contribution, after re-calibrating the base parameters, is below "
+          "the noise (" +
+          fmt("%.2g", c.max_signal) + " noise variances in total): these data cannot show it";
     }
   }
 }
 
 }  // namespace
 
-/// Screen (docs/diagnosis.md, `twin diagnose` step 2): at the base optimum θ̂, every catalogue effect's
-/// contribution at a few probe values, with what re-calibrating θ could absorb projected out,
-/// scored against the residual; fills res.candidates (score, p-value, gate, screening estimates).
+/// Screen (docs/diagnosis.md, `twin diagnose` step 2): at the base optimum θ̂, every catalogue
+/// effect's contribution at a few probe values, with what re-calibrating θ could absorb projected
+/// out, scored against the residual; fills res.candidates (score, p-value, gate, screening
+/// estimates).
 void screen(Diagnosis& d) {
-  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(d.installed));
+  d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets,
+                                                     d.setupOf(d.installed));
   const Linearisation lin = linearise(d);
   std::vector<ProbeGroup> groups;
   auto& cands = d.stage();
@@ -329,15 +359,19 @@ void screen(Diagnosis& d) {
     long index = -1;
     if (spec.kind == "range") {
       const auto it = std::find(names.begin(), names.end(), spec.calibrated_names[0]);
-      if (it == names.end()) continue;  // the model lacks the value (another option left it out): gated below
+      if (it == names.end())
+        continue;  // the model lacks the value (another option left it out): gated below
       index = static_cast<long>(it - names.begin());
       at = lin.theta_hat[static_cast<std::size_t>(index)];
     }
     if (spec.kind == "option") continue;  // not nested: not screened (always confirmed)
     try {
       const auto model = d.withInstalled(d.catalogue[e]);
-      if (d.options.before_candidate_step) d.options.before_candidate_step(joinEffects(model), "screen");
-      if (spec.addsParameters()) eff_obj[e] = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf(model));
+      if (d.options.before_candidate_step)
+        d.options.before_candidate_step(joinEffects(model), "screen");
+      if (spec.addsParameters())
+        eff_obj[e] = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets,
+                                                           d.setupOf(model));
     } catch (const InputError&) {
       throw;
     } catch (const std::exception& ex) {
@@ -349,10 +383,13 @@ void screen(Diagnosis& d) {
     std::string lacks;
     if (eff_obj[e])
       for (const auto& n : eff_obj[e]->leftOut())
-        if (std::find(spec.calibrated_names.begin(), spec.calibrated_names.end(), n) != spec.calibrated_names.end())
+        if (std::find(spec.calibrated_names.begin(), spec.calibrated_names.end(), n) !=
+            spec.calibrated_names.end())
           lacks += (lacks.empty() ? "" : ", ") + n;
     if (!lacks.empty()) {
-      cands[e].gate = "this model has no " + lacks + (d.installed.empty() ? "" : " (" + joinEffects(d.installed) + " leaves it out)");
+      cands[e].gate =
+          "this model has no " + lacks +
+          (d.installed.empty() ? "" : " (" + joinEffects(d.installed) + " leaves it out)");
       eff_obj[e].reset();
       continue;
     }

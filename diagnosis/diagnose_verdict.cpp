@@ -1,5 +1,5 @@
-// The verdict of diagnose() (docs/diagnosis.md, step 4): every candidate's why, the cause(s) named or
-// the residual left unexplained, and the result's JSON and text.
+// The verdict of diagnose() (docs/diagnosis.md, step 4): every candidate's why, the cause(s) named
+// or the residual left unexplained, and the result's JSON and text.
 #include "diagnosis/diagnose_internal.hpp"
 
 #include <algorithm>
@@ -30,12 +30,14 @@ std::string locate(const Comparison& c) {
   std::vector<W> ws;
   for (const auto& s : c.series)
     for (const auto& w : s.windows)
-      ws.push_back({w.window.share, s.channel + " in " + s.scenario + " " + fmt("%.3f", w.window.t_begin) + "-" +
+      ws.push_back({w.window.share, s.channel + " in " + s.scenario + " " +
+                                        fmt("%.3f", w.window.t_begin) + "-" +
                                         fmt("%.3f", w.window.t_end) + " s (" + w.label + ", " +
                                         fmt("%.0f", 100 * w.window.share) + " % of its residual)"});
   std::sort(ws.begin(), ws.end(), [](const W& a, const W& b) { return a.share > b.share; });
   std::string out;
-  for (std::size_t i = 0; i < std::min<std::size_t>(2, ws.size()); ++i) out += (i ? "; " : "") + ws[i].text;
+  for (std::size_t i = 0; i < std::min<std::size_t>(2, ws.size()); ++i)
+    out += (i ? "; " : "") + ws[i].text;
   std::set<std::string> bands;
   for (const auto& s : c.series)
     for (const auto& b : s.bands)
@@ -53,10 +55,12 @@ std::string locate(const Comparison& c) {
       if (!m.fits.empty() && m.fits[0].explained_fraction > best) {
         best = m.fits[0].explained_fraction;
         map = cm.channel + " vs " + m.state + " looks " + m.fits[0].feature +
-              (m.fits[0].feature == "knee" ? " (beyond " + fmt("%.3g", m.fits[0].knee_at) + ")" : "") + " (" +
-              fmt("%.0f", 100 * best) + " % of the map)";
+              (m.fits[0].feature == "knee" ? " (beyond " + fmt("%.3g", m.fits[0].knee_at) + ")"
+                                           : "") +
+              " (" + fmt("%.0f", 100 * best) + " % of the map)";
       }
-  if (!map.empty() && best > 0.3) out += std::string(out.empty() ? "" : "; ") + "force-state map: " + map;
+  if (!map.empty() && best > 0.3)
+    out += std::string(out.empty() ? "" : "; ") + "force-state map: " + map;
   return out.empty() ? "no localised structure" : out;
 }
 
@@ -70,8 +74,9 @@ std::string windowFixed(const Comparison& base, const Comparison& with) {
       const double after = chi2In(with.series[i], win.window.t_begin, win.window.t_end);
       if (before - after > best_drop) {
         best_drop = before - after;
-        where = "removes " + fmt("%.0f", before > 0 ? 100 * (before - after) / before : 0.0) + " % of the residual of " +
-                base.series[i].channel + " in " + base.series[i].scenario + " " + fmt("%.3f", win.window.t_begin) + "-" +
+        where = "removes " + fmt("%.0f", before > 0 ? 100 * (before - after) / before : 0.0) +
+                " % of the residual of " + base.series[i].channel + " in " +
+                base.series[i].scenario + " " + fmt("%.3f", win.window.t_begin) + "-" +
                 fmt("%.3f", win.window.t_end) + " s (" + win.label + ")";
       }
     }
@@ -83,12 +88,13 @@ std::string bandFixed(const Comparison& base, const Comparison& with) {
   double band_drop = 0.0;
   std::string band;
   for (std::size_t i = 0; i < base.series.size() && i < with.series.size(); ++i)
-    for (std::size_t b = 0; b < base.series[i].bands.size() && b < with.series[i].bands.size(); ++b) {
+    for (std::size_t b = 0; b < base.series[i].bands.size() && b < with.series[i].bands.size();
+         ++b) {
       const double before = base.series[i].bands[b].ratio, after = with.series[i].bands[b].ratio;
       if (before - after > band_drop && before > 2.0) {
         band_drop = before - after;
-        band = base.series[i].bands[b].band + " band of " + base.series[i].channel + " from " + fmt("%.3g", before) + "x to " +
-               fmt("%.3g", after) + "x the noise floor";
+        band = base.series[i].bands[b].band + " band of " + base.series[i].channel + " from " +
+               fmt("%.3g", before) + "x to " + fmt("%.3g", after) + "x the noise floor";
       }
     }
   return band;
@@ -108,31 +114,39 @@ std::string signatureSeen(const Comparison& base, const CandidateSpec& candidate
           if (f.feature == sig.feature && f.explained_fraction > ef) {
             ef = f.explained_fraction;
             txt = cm.channel + " vs " + m.state + " shows a " + f.feature +
-                  (f.feature == "knee" ? " beyond " + fmt("%.3g", f.knee_at) : "") + " (" + fmt("%.0f", 100 * ef) + " % of that map)";
+                  (f.feature == "knee" ? " beyond " + fmt("%.3g", f.knee_at) : "") + " (" +
+                  fmt("%.0f", 100 * ef) + " % of that map)";
           }
   return !txt.empty() && ef > 0.1 ? txt : "";
 }
 
 /// One plain sentence per candidate: why it is ranked where it is.
 /// `best_score`: the best screening score of the ungated candidates.
-std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Comparison& base, const DiagnoseOptions& options,
-                  double best_score) {
-  if (!c.failed.empty()) return c.effect + ": failed, left out of the verdict: " + c.failed + (c.failed.back() == '.' ? "" : ".");
+std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Comparison& base,
+                  const DiagnoseOptions& options, double best_score) {
+  if (!c.failed.empty())
+    return c.effect + ": failed, left out of the verdict: " + c.failed +
+           (c.failed.back() == '.' ? "" : ".");
   if (!c.gate.empty()) return c.effect + ": not a candidate: " + c.gate + ".";
   if (!c.confirmed)
-    return c.effect + ": screening score " + fmt("%.3g", c.score) + " (p = " + fmt("%.2g", c.p_value) + ")" +
+    return c.effect + ": screening score " + fmt("%.3g", c.score) +
+           " (p = " + fmt("%.2g", c.p_value) + ")" +
            (c.p_value < options.screen_alpha
                 ? (c.score * options.confirm_within >= best_score
-                       ? ", within a factor " + fmt("%.3g", options.confirm_within) + " of the best score but beyond the budget of " +
-                             std::to_string(options.candidates) + " confirmations per round and " + std::to_string(options.confirm_rounds) +
-                             " rounds (--candidates)"
+                       ? ", within a factor " + fmt("%.3g", options.confirm_within) +
+                             " of the best score but beyond the budget of " +
+                             std::to_string(options.candidates) + " confirmations per round and " +
+                             std::to_string(options.confirm_rounds) + " rounds (--candidates)"
                        : ", more than a factor " + fmt("%.3g", options.confirm_within) +
                              " below the best score and not the best of its kind: not confirmed")
                 : ": explains nothing beyond noise") +
            ".";
-  std::string s = c.effect + ": " + (c.delta_bic < 0 ? "ΔBIC " : "ΔBIC +") + fmt("%.1f", c.delta_bic) + ", explains " +
-                  fmt("%.0f", 100 * c.explained) + " % of the excess residual";
-  if (c.inert) s += "; its parameters stay at their off values, so it is no cause (the change is the reference's optimum polished further)";
+  std::string s = c.effect + ": " + (c.delta_bic < 0 ? "ΔBIC " : "ΔBIC +") +
+                  fmt("%.1f", c.delta_bic) + ", explains " + fmt("%.0f", 100 * c.explained) +
+                  " % of the excess residual";
+  if (c.inert)
+    s += "; its parameters stay at their off values, so it is no cause (the change is the "
+         "reference's optimum polished further)";
   const std::string where = windowFixed(base, c.fit->comparison);
   if (!where.empty()) s += "; " + where;
   const std::string band = bandFixed(base, c.fit->comparison);
@@ -140,10 +154,12 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
   if (!c.finding.empty() && c.delta_bic < 0) s += "; " + c.finding;
   if (!c.fit->full)
     s += c.evidence_gap <= std::max(options.full_within, options.ambiguity_log_evidence)
-             ? "; calibrated to its optimum (on top of causes already named the evidence decides; the final model alone is calibrated "
+             ? "; calibrated to its optimum (on top of causes already named the evidence decides; "
+               "the final model alone is calibrated "
                "in full)"
              : "; calibrated to its optimum only (log evidence " + fmt("%.1f", c.evidence_gap) +
-                   " below the best candidate's: it can be neither the verdict nor ambiguous with it, so no intervals)";
+                   " below the best candidate's: it can be neither the verdict nor ambiguous with "
+                   "it, so no intervals)";
   const std::string sig = signatureSeen(base, spec);
   if (!sig.empty()) s += "; its signature is in the data: " + sig;
   if (c.holdout_change) s += "; held-out systematic error x" + fmt("%.2f", *c.holdout_change);
@@ -151,44 +167,56 @@ std::string whyOf(const Candidate& c, const CandidateSpec& spec, const Compariso
 }
 
 /// A candidate's finding in words, or its name when it has none (an effect).
-std::string inWordsOf(const Candidate& c) { return c.finding.empty() ? inWords(c.effect) + " (" + c.effect + ")" : c.finding + " (" + c.effect + ")"; }
+std::string inWordsOf(const Candidate& c) {
+  return c.finding.empty() ? inWords(c.effect) + " (" + c.effect + ")"
+                           : c.finding + " (" + c.effect + ")";
+}
 
 /// What would tell `a` from `b` apart, in words.
 std::string separatedBy(const Candidate& a, const Candidate& b) {
   auto timing = [](const Candidate& c) {
     return c.effect.rfind("lowpass", 0) == 0 || c.effect.rfind("delay", 0) == 0;
   };
-  const auto factorOf = [](const Candidate& c) { return parseCornerFactor(c.effect.rfind("free:", 0) == 0 ? c.effect.substr(5) : ""); };
+  const auto factorOf = [](const Candidate& c) {
+    return parseCornerFactor(c.effect.rfind("free:", 0) == 0 ? c.effect.substr(5) : "");
+  };
   if (const auto fa = factorOf(a), fb = factorOf(b); fa && fb) {
     if (fa->value == fb->value && fa->place >= 4 && fb->place >= 4)
-      return "they are one model while the whole " + fa->value + " is calibrated: only the ratio between the axles is known";
-    return "a scenario that loads the corners unevenly (a bump under one wheel, a roll or warp input) or a force or travel "
+      return "they are one model while the whole " + fa->value +
+             " is calibrated: only the ratio between the axles is known";
+    return "a scenario that loads the corners unevenly (a bump under one wheel, a roll or warp "
+           "input) or a force or travel "
            "channel at each corner would separate them";
   }
   if (timing(a) && timing(b))
-    return "a step input or the phase above 20 Hz would separate them (a delay shifts the phase in proportion to frequency "
+    return "a step input or the phase above 20 Hz would separate them (a delay shifts the phase in "
+           "proportion to frequency "
            "and keeps the amplitude; a low-pass lowers the amplitude too)";
   if (a.kind != b.kind)
-    return "a scenario that excites one and not the other (another speed, a step, a sweep) would separate them";
+    return "a scenario that excites one and not the other (another speed, a step, a sweep) would "
+           "separate them";
   return "more data (another scenario) would separate them";
 }
 
 /// The look-alikes of the named candidate `best` (within ambiguity_log_evidence), in words: "The
 /// data cannot yet tell it from: the hub_force channels look delayed by 8 ms (delay:hub_force);
 /// they differ by ΔBIC 3.1; a step input ... would separate them."
-std::string lookAlikes(const Candidate& best, const std::vector<const Candidate*>& alike, const DiagnoseOptions& options) {
+std::string lookAlikes(const Candidate& best, const std::vector<const Candidate*>& alike,
+                       const DiagnoseOptions& options) {
   std::string s = "Ambiguous: " + inWordsOf(best);
   for (const Candidate* c : alike) s += " or " + inWordsOf(*c);
   if (alike.size() == 1) {
     s += ": they differ by ΔBIC " + fmt("%.1f", alike.front()->fit->bic - best.fit->bic);
   } else {
     s += ": behind the first by ΔBIC ";
-    for (std::size_t i = 0; i < alike.size(); ++i) s += (i ? ", " : "") + fmt("%.1f", alike[i]->fit->bic - best.fit->bic) + " (" + alike[i]->effect + ")";
+    for (std::size_t i = 0; i < alike.size(); ++i)
+      s += (i ? ", " : "") + fmt("%.1f", alike[i]->fit->bic - best.fit->bic) + " (" +
+           alike[i]->effect + ")";
   }
-  s += ", less than " + fmt("%.0f", 2 * options.ambiguity_log_evidence) + "; " + separatedBy(best, *alike.front()) + ".";
+  s += ", less than " + fmt("%.0f", 2 * options.ambiguity_log_evidence) + "; " +
+       separatedBy(best, *alike.front()) + ".";
   return s;
 }
-
 
 }  // namespace
 
@@ -201,13 +229,15 @@ void explainStage(Diagnosis& d, const Comparison& ref) {
   for (auto& c : cands) {
     const auto& spec = d.spec(c.effect);
     c.why = whyOf(c, spec, ref, d.options, best_score);
-    if (!spec.range_note.empty()) c.why.insert(c.why.size() - 1, " (" + spec.range_note + ")");  // before the full stop
+    if (!spec.range_note.empty())
+      c.why.insert(c.why.size() - 1, " (" + spec.range_note + ")");  // before the full stop
   }
 }
 
 /// The confirmed candidates with strong evidence (ΔBIC < −bic_strong against the stage's
 /// reference), best first.
-std::vector<const Candidate*> strongOf(const std::vector<Candidate>& cands, const DiagnoseOptions& options) {
+std::vector<const Candidate*> strongOf(const std::vector<Candidate>& cands,
+                                       const DiagnoseOptions& options) {
   std::vector<const Candidate*> named;
   for (const auto& c : cands)
     if (c.confirmed && c.delta_bic < -options.bic_strong && !c.inert) named.push_back(&c);
@@ -215,10 +245,13 @@ std::vector<const Candidate*> strongOf(const std::vector<Candidate>& cands, cons
 }
 
 /// The strong candidates within ambiguity_log_evidence of the first.
-std::vector<const Candidate*> alikeOf(const std::vector<const Candidate*>& named, const DiagnoseOptions& options) {
+std::vector<const Candidate*> alikeOf(const std::vector<const Candidate*>& named,
+                                      const DiagnoseOptions& options) {
   std::vector<const Candidate*> alike;
   for (std::size_t i = 1; i < named.size(); ++i)
-    if (named.front()->fit->log_evidence - named[i]->fit->log_evidence < options.ambiguity_log_evidence) alike.push_back(named[i]);
+    if (named.front()->fit->log_evidence - named[i]->fit->log_evidence <
+        options.ambiguity_log_evidence)
+      alike.push_back(named[i]);
   return alike;
 }
 
@@ -240,22 +273,33 @@ namespace {
 /// A cause in one sentence: "Wrong vehicle value: the wheel mass is about 35 kg, not 29.46 kg
 /// (free:wheel.mass_kg, ΔBIC −512.3, explains 64 % of the excess residual)".
 std::string causeInWords(const Cause& k) {
-  const std::string evidence = "ΔBIC " + fmt("%.1f", k.delta_bic) + ", explains " + fmt("%.0f", 100 * k.explained) + " % of the excess residual";
-  if (const auto f = parseCornerFactor(k.name.rfind("free:", 0) == 0 ? k.name.substr(5) : std::string()); k.kind == "parameter" && f)
-    return std::string(f->place < 4 ? "Fault at one corner: " : "Fault on one axle: ") + k.finding + " (" + k.name + ", " + evidence + ")";
-  if (k.kind == "parameter") return "Wrong vehicle value: " + k.finding + " (" + k.name + ", " + evidence + ")";
-  if (k.kind == "sensor") return "Sensor distortion: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  const std::string evidence = "ΔBIC " + fmt("%.1f", k.delta_bic) + ", explains " +
+                               fmt("%.0f", 100 * k.explained) + " % of the excess residual";
+  if (const auto f =
+          parseCornerFactor(k.name.rfind("free:", 0) == 0 ? k.name.substr(5) : std::string());
+      k.kind == "parameter" && f)
+    return std::string(f->place < 4 ? "Fault at one corner: " : "Fault on one axle: ") + k.finding +
+           " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "parameter")
+    return "Wrong vehicle value: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "sensor")
+    return "Sensor distortion: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "input") return "Road signal: " + k.finding + " (" + k.name + ", " + evidence + ")";
-  if (k.kind == "place") return "Sensor place: " + k.finding + " (" + k.name + ", " + evidence + ")";
-  if (k.kind == "range") return "Far from the prior: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "place")
+    return "Sensor place: " + k.finding + " (" + k.name + ", " + evidence + ")";
+  if (k.kind == "range")
+    return "Far from the prior: " + k.finding + " (" + k.name + ", " + evidence + ")";
   if (k.kind == "option") return "Structure: " + k.finding + " (" + k.name + ", " + evidence + ")";
-  if (k.name.find('@') != std::string::npos) return "Missing effect at one corner: " + inWords(k.name) + " (" + k.name + ", " + evidence + ")";
+  if (k.name.find('@') != std::string::npos)
+    return "Missing effect at one corner: " + inWords(k.name) + " (" + k.name + ", " + evidence +
+           ")";
   return "Missing effect: " + k.name + " (" + evidence + ")";
 }
 
 /// The summary of a verdict "effect": the cause, or the causes strongest first, and how far the
 /// integrator's jitter limits the evidence.
-std::string effectSummary(const Diagnosis& d, const Candidate& best, const std::vector<const Candidate*>& alike) {
+std::string effectSummary(const Diagnosis& d, const Candidate& best,
+                          const std::vector<const Candidate*>& alike) {
   const auto& res = d.res;
   const auto& options = d.options;
   const Cause& first = res.causes.front();
@@ -265,7 +309,8 @@ std::string effectSummary(const Diagnosis& d, const Candidate& best, const std::
   } else {
     double total = 0;
     for (const auto& k : res.causes) total += k.explained;
-    s = std::to_string(res.causes.size()) + " causes, each strong against the model with those before it (together " +
+    s = std::to_string(res.causes.size()) +
+        " causes, each strong against the model with those before it (together " +
         fmt("%.0f", 100 * std::min(1.0, total)) + " % of the excess residual):";
     std::string apply;
     for (std::size_t i = 0; i < res.causes.size(); ++i) {
@@ -274,17 +319,20 @@ std::string effectSummary(const Diagnosis& d, const Candidate& best, const std::
     }
     s += " Apply them together with --apply " + apply + ".";
   }
-  // The evidence is a difference of two minimised SSEs, each as uncertain as the integrator's jitter.
+  // The evidence is a difference of two minimised SSEs, each as uncertain as the integrator's
+  // jitter.
   const double jitter = res.base.integrator.jitter + first.fit.integrator.jitter;
   if (!first.fit.integrator.ok || !res.base.integrator.ok)
     s += -first.delta_bic > options.bic_strong + 2 * jitter
-             ? " The integrator's jitter in the SSE (" + fmt("%.3g", jitter) + ") is far below this evidence, so the verdict stands, but the intervals do not (note below)."
+             ? " The integrator's jitter in the SSE (" + fmt("%.3g", jitter) +
+                   ") is far below this evidence, so the verdict stands, but the intervals do not "
+                   "(note below)."
              : " Caution: the integrator's jitter in the SSE (" + fmt("%.3g", jitter) +
-                   ") is comparable with this evidence: tighten [simulation] accuracy and rerun before trusting the verdict (note below).";
+                   ") is comparable with this evidence: tighten [simulation] accuracy and rerun "
+                   "before trusting the verdict (note below).";
   if (!alike.empty()) s += " " + lookAlikes(best, alike, options);
   return s;
 }
-
 
 }  // namespace
 
@@ -305,13 +353,16 @@ void verdict(Diagnosis& d) {
   if (named.empty()) {
     if (base_bad) {
       res.verdict = "unexplained";
-      res.summary = "Unexplained residual: the base model leaves a significant lack of fit (z = " + fmt("%.1f", base.lack_of_fit_z) +
+      res.summary = "Unexplained residual: the base model leaves a significant lack of fit (z = " +
+                    fmt("%.1f", base.lack_of_fit_z) +
                     ") that no catalogue effect explains. Where: " + res.unexplained_location + ".";
     } else {
       res.verdict = "none";
-      res.summary = "No missing effect found: the residual is consistent with the measurement noise (lack of fit z = " +
-                    fmt("%.1f", base.lack_of_fit_z) + ", p = " + fmt("%.2g", base.lack_of_fit_p) +
-                    ") and no catalogue effect passes the screening and the evidence test.";
+      res.summary =
+          "No missing effect found: the residual is consistent with the measurement noise (lack of "
+          "fit z = " +
+          fmt("%.1f", base.lack_of_fit_z) + ", p = " + fmt("%.2g", base.lack_of_fit_p) +
+          ") and no catalogue effect passes the screening and the evidence test.";
     }
     return;
   }
@@ -323,9 +374,13 @@ void verdict(Diagnosis& d) {
     for (std::size_t i = 0; i < named.size() && i < 3; ++i)
       best += (i ? ", " : "") + named[i]->effect + " ΔBIC " + fmt("%.1f", named[i]->delta_bic);
     res.verdict = "none";
-    res.summary = "No missing effect found: the residual is consistent with the measurement noise (lack of fit z = " +
-                  fmt("%.1f", base.lack_of_fit_z) + ", p = " + fmt("%.2g", base.lack_of_fit_p) + "). Candidates that fit it slightly better (" +
-                  best + ") have no excess residual to explain and are not named; --apply adds one to see what it changes.";
+    res.summary =
+        "No missing effect found: the residual is consistent with the measurement noise (lack of "
+        "fit z = " +
+        fmt("%.1f", base.lack_of_fit_z) + ", p = " + fmt("%.2g", base.lack_of_fit_p) +
+        "). Candidates that fit it slightly better (" + best +
+        ") have no excess residual to explain and are not named; --apply adds one to see what it "
+        "changes.";
     return;
   }
   const auto alike = alikeOf(named, options);
@@ -341,7 +396,9 @@ void verdict(Diagnosis& d) {
   const Candidate* lead = named.front();
   for (const Candidate* o : named) {
     if (o->kind != "option" || o == named.front()) continue;
-    if (std::any_of(res.causes.begin(), res.causes.end(), [&](const Cause& k) { return k.name == o->effect; })) continue;
+    if (std::any_of(res.causes.begin(), res.causes.end(),
+                    [&](const Cause& k) { return k.name == o->effect; }))
+      continue;
     auto chain = std::move(res.causes);
     auto stages = std::move(res.further);
     res.causes = {causeOf(*o, {})};
@@ -352,7 +409,8 @@ void verdict(Diagnosis& d) {
       res.further = std::move(stages);
       d.installed.clear();
       d.reference = nullptr;
-      d.base_obj = std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
+      d.base_obj =
+          std::make_unique<calib::LabObjective>(d.study, d.assembly, d.fit_sets, d.setupOf({}));
       continue;
     }
     const double bic_chain = chain.back().fit.bic, bic_alt = res.causes.back().fit.bic;
@@ -361,8 +419,10 @@ void verdict(Diagnosis& d) {
       for (const auto& k : c) w += (w.empty() ? "" : " + ") + k.name;
       return w;
     };
-    const std::string weighed = "The structure " + o->effect + " was weighed at its best: " + words(res.causes) + " reaches BIC " +
-                                fmt("%.1f", bic_alt) + ", " + words(chain) + " BIC " + fmt("%.1f", bic_chain);
+    const std::string weighed = "The structure " + o->effect +
+                                " was weighed at its best: " + words(res.causes) + " reaches BIC " +
+                                fmt("%.1f", bic_alt) + ", " + words(chain) + " BIC " +
+                                fmt("%.1f", bic_chain);
     if (bic_alt < bic_chain) {
       res.structure_note = weighed + ": the first is kept.";
       lead = o;
@@ -383,10 +443,13 @@ void verdict(Diagnosis& d) {
     std::string names;
     for (std::size_t i = 0; i < res.causes.size(); ++i)
       names += (i ? (i + 1 == res.causes.size() ? " and " : ", ") : "") + res.causes[i].name;
-    res.summary = std::string("Unexplained residual: the best catalogue ") + (res.causes.size() == 1 ? "effect, " : "causes, ") + names +
-                  ", explain" + (res.causes.size() == 1 ? "s" : "") + " only " + fmt("%.0f", 100 * total) +
-                  " % of the excess residual and a significant lack of fit remains (z = " + fmt("%.1f", last.fit.comparison.lack_of_fit_z) + "); " +
-                  (res.causes.size() == 1 ? "it is" : "they are") + " not named. Where: " + res.unexplained_location + ".";
+    res.summary = std::string("Unexplained residual: the best catalogue ") +
+                  (res.causes.size() == 1 ? "effect, " : "causes, ") + names + ", explain" +
+                  (res.causes.size() == 1 ? "s" : "") + " only " + fmt("%.0f", 100 * total) +
+                  " % of the excess residual and a significant lack of fit remains (z = " +
+                  fmt("%.1f", last.fit.comparison.lack_of_fit_z) + "); " +
+                  (res.causes.size() == 1 ? "it is" : "they are") +
+                  " not named. Where: " + res.unexplained_location + ".";
     return;
   }
   res.verdict = "effect";
@@ -395,22 +458,28 @@ void verdict(Diagnosis& d) {
   res.named_kind = first.kind;
   res.finding = first.finding;
   res.ambiguous_with = first.ambiguous_with;
-  res.summary = lead == named.front() ? effectSummary(d, *lead, alike) : effectSummary(d, *lead, {});
+  res.summary =
+      lead == named.front() ? effectSummary(d, *lead, alike) : effectSummary(d, *lead, {});
   if (!res.structure_note.empty()) res.summary += " " + res.structure_note;
   if (after_bad)
-    res.summary += " A smaller significant residual remains (z = " + fmt("%.1f", last.fit.comparison.lack_of_fit_z) + "): " + locate(last.fit.comparison) + ".";
+    res.summary += " A smaller significant residual remains (z = " +
+                   fmt("%.1f", last.fit.comparison.lack_of_fit_z) +
+                   "): " + locate(last.fit.comparison) + ".";
 }
 
 namespace {
 /// The "screening" (every candidate) and "ranked" (the confirmed ones) arrays of one stage into
 /// `j`; `ref_log_evidence`: the stage's reference model's.
-void candidatesJson(const std::vector<Candidate>& candidates, double ref_log_evidence, nlohmann::json& j) {
+void candidatesJson(const std::vector<Candidate>& candidates, double ref_log_evidence,
+                    nlohmann::json& j) {
   j["ranked"] = nlohmann::json::array();
   j["screening"] = nlohmann::json::array();
   for (const auto& c : candidates) {
-    nlohmann::json s{{"effect", c.effect},     {"kind", c.kind},           {"score", c.score},         {"score_dof", c.score_dof}, {"p_value", c.p_value},
-                     {"max_signal", c.max_signal}, {"gate", c.gate},       {"confirmed", c.confirmed}, {"why", c.why},
-                     {"signature", c.signature}};
+    nlohmann::json s{{"effect", c.effect},   {"kind", c.kind},
+                     {"score", c.score},     {"score_dof", c.score_dof},
+                     {"p_value", c.p_value}, {"max_signal", c.max_signal},
+                     {"gate", c.gate},       {"confirmed", c.confirmed},
+                     {"why", c.why},         {"signature", c.signature}};
     if (!c.failed.empty()) s["failed"] = c.failed;
     j["screening"].push_back(s);
     if (!c.confirmed) continue;
@@ -445,23 +514,31 @@ nlohmann::json DiagnosisResult::toJson() const {
   if (verdict != "none") j["unexplained_location"] = unexplained_location;
   j["fitted_channels"] = fitted_channels;
   j["left_out_channels"] = left_out_channels;
-  j["failed"] = nlohmann::json::array();  // every candidate that failed, of every stage, and what failed beyond one
+  j["failed"] = nlohmann::json::array();  // every candidate that failed, of every stage, and what
+                                          // failed beyond one
   for (const auto& c : candidates)
     if (!c.failed.empty()) j["failed"].push_back({{"candidate", c.effect}, {"reason", c.failed}});
   for (const auto& st : further)
     for (const auto& c : st.candidates)
-      if (!c.failed.empty()) j["failed"].push_back({{"candidate", c.effect}, {"on_top_of", st.installed}, {"reason", c.failed}});
+      if (!c.failed.empty())
+        j["failed"].push_back(
+            {{"candidate", c.effect}, {"on_top_of", st.installed}, {"reason", c.failed}});
   for (const auto& f : failures) j["failed"].push_back({{"reason", f}});
   j["base"] = base.toJson();
   if (!base_refined_from.empty())
-    j["base_refined"] = {{"from", base_refined_from}, {"sse_min_weighted_before", base_unrefined_sse}};
+    j["base_refined"] = {{"from", base_refined_from},
+                         {"sse_min_weighted_before", base_unrefined_sse}};
   candidatesJson(candidates, base.log_evidence, j);
   j["causes"] = nlohmann::json::array();
   for (const auto& k : causes) {
-    nlohmann::json c{{"name", k.name},           {"kind", k.kind},
-                     {"finding", k.finding},     {"delta_bic", k.delta_bic},
-                     {"explained_fraction", k.explained}, {"lack_of_fit_z_after", k.fit.comparison.lack_of_fit_z},
-                     {"parameters", paramsJson(k.parameters)}, {"ambiguous_with", k.ambiguous_with},
+    nlohmann::json c{{"name", k.name},
+                     {"kind", k.kind},
+                     {"finding", k.finding},
+                     {"delta_bic", k.delta_bic},
+                     {"explained_fraction", k.explained},
+                     {"lack_of_fit_z_after", k.fit.comparison.lack_of_fit_z},
+                     {"parameters", paramsJson(k.parameters)},
+                     {"ambiguous_with", k.ambiguous_with},
                      {"folder", k.fit.folder}};
     j["causes"].push_back(c);
   }
@@ -476,7 +553,8 @@ nlohmann::json DiagnosisResult::toJson() const {
     j["further_stages"].push_back(f);
   }
   j["evidence_estimator"] =
-      "BIC = SSE_w,min + k ln n with SSE_w = sum of (y - eta)^2 / sigma_c^2 (sigma_c^2 from the repetitions); log evidence ~ -BIC/2";
+      "BIC = SSE_w,min + k ln n with SSE_w = sum of (y - eta)^2 / sigma_c^2 (sigma_c^2 from the "
+      "repetitions); log evidence ~ -BIC/2";
   if (!proposal.empty() || !proposal_note.empty()) {
     j["proposal"] = {{"note", proposal_note}, {"terms", nlohmann::json::array()}};
     for (const auto& t : proposal) j["proposal"]["terms"].push_back(t.toJson());
@@ -500,10 +578,12 @@ std::string DiagnosisResult::text() const {
   std::string s;
   s += "Diagnosis of " + assembly + ": " + verdict + "\n  " + summary + "\n\n";
   if (!base_refined_from.empty())
-    s += "  (The base optimum was improved from " + base_refined_from + "'s fit with the effect off: weighted SSE " +
-         fmt("%.1f", base_unrefined_sse) + " -> " + fmt("%.1f", base.sse_min) + "; every ΔBIC is against the improved base.)\n\n";
+    s += "  (The base optimum was improved from " + base_refined_from +
+         "'s fit with the effect off: weighted SSE " + fmt("%.1f", base_unrefined_sse) + " -> " +
+         fmt("%.1f", base.sse_min) + "; every ΔBIC is against the improved base.)\n\n";
   if (!base.bounds.empty()) {
-    s += "Values on their bounds (the base calibration; docs/calibration.md):\n" + calib::boundFindingsText(base.bounds, "  ") + "\n";
+    s += "Values on their bounds (the base calibration; docs/calibration.md):\n" +
+         calib::boundFindingsText(base.bounds, "  ") + "\n";
   }
   s += "Ranked candidates (confirmed by re-calibration first):\n";
   int k = 0;
@@ -515,13 +595,18 @@ std::string DiagnosisResult::text() const {
       if (c.confirmed || c.gate.empty()) s += "  " + std::to_string(++k) + ". " + c.why + "\n";
   }
   if (causes.size() > 1) {
-    s += "\nCauses (forward stagewise, strongest first; parameters from the joint fit " + causes.back().fit.folder + "):\n";
+    s += "\nCauses (forward stagewise, strongest first; parameters from the joint fit " +
+         causes.back().fit.folder + "):\n";
     for (const auto& c : causes) {
-      s += "  " + c.name + ": explains " + fmt("%.0f", 100 * c.explained) + " % of the excess residual (ΔBIC " + fmt("%.1f", c.delta_bic) +
-           "; lack of fit z " + fmt("%.1f", c.fit.comparison.lack_of_fit_z) + " after it)\n";
+      s += "  " + c.name + ": explains " + fmt("%.0f", 100 * c.explained) +
+           " % of the excess residual (ΔBIC " + fmt("%.1f", c.delta_bic) + "; lack of fit z " +
+           fmt("%.1f", c.fit.comparison.lack_of_fit_z) + " after it)\n";
       for (const auto& p : c.parameters)
         s += "    " + p.name + ": optimum " + fmt("%.4g", p.optimum) + " " + p.unit +
-             (p.interval == "none" ? std::string() : "  (95 % " + p.interval + " [" + fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) + "])") + "\n";
+             (p.interval == "none" ? std::string()
+                                   : "  (95 % " + p.interval + " [" + fmt("%.4g", p.q025) + ", " +
+                                         fmt("%.4g", p.q975) + "])") +
+             "\n";
     }
   }
   if (!failures.empty()) {
@@ -530,11 +615,11 @@ std::string DiagnosisResult::text() const {
   }
   if (!causes.empty() && causes.back().fit.full && !causes.back().fit.values.empty()) {
     const Figures& all = causes.back().fit;
-    s += "\nThe model with " + (causes.size() > 1 ? std::string("every cause") : "the cause") + " (" + joinEffects(all.effects) +
-         "), its calibrated values:\n";
+    s += "\nThe model with " + (causes.size() > 1 ? std::string("every cause") : "the cause") +
+         " (" + joinEffects(all.effects) + "), its calibrated values:\n";
     for (const auto& p : all.values)
-      s += "  " + p.name + ": optimum " + fmt("%.5g", p.optimum) + " " + p.unit + "  (95 % " + p.interval + " [" + fmt("%.5g", p.q025) +
-           ", " + fmt("%.5g", p.q975) + "])\n";
+      s += "  " + p.name + ": optimum " + fmt("%.5g", p.optimum) + " " + p.unit + "  (95 % " +
+           p.interval + " [" + fmt("%.5g", p.q025) + ", " + fmt("%.5g", p.q975) + "])\n";
     if (!all.left_out.empty()) {
       s += "  (left out, this model has no such value:";
       for (const auto& n : all.left_out) s += " " + n;
@@ -546,22 +631,34 @@ std::string DiagnosisResult::text() const {
     if (c.confirmed && c.fit->full && !c.fit->effect_parameters.empty()) {
       bool named = false;
       for (const auto& k : causes) named = named || k.name == c.effect;
-      s += "\n  " + c.effect + " posterior" + (named || causes.empty() ? "" : " (calibrated in full; not among the causes)") + ":\n";
+      s += "\n  " + c.effect + " posterior" +
+           (named || causes.empty() ? "" : " (calibrated in full; not among the causes)") + ":\n";
       const bool resolved = c.fit->importance_ess >= Figures::kResolvedEss;
       for (const auto& p : c.fit->effect_parameters) {
         // An unresolved design (a posterior on a handful of points) gives a mean and an sd that
         // mean nothing: the optimum is printed instead, with the profile interval.
-        s += "    " + p.name + (resolved ? " = " + fmt("%.4g", p.mean) + " ± " + fmt("%.2g", p.sd) : ": optimum " + fmt("%.4g", p.optimum)) +
-             " " + p.unit + "  (95 % " + (p.interval == "profile" ? "profile likelihood" : "posterior") + " [" + fmt("%.4g", p.q025) + ", " +
-             fmt("%.4g", p.q975) + "])" + (c.fit->integrator.ok ? "" : "  NOT TO BE TRUSTED: the integrator limits it (note below)") +
-             (resolved || p.interval == "profile" ? "" : "  NOT TO BE TRUSTED: the posterior is not resolved") + "\n";
+        s += "    " + p.name +
+             (resolved ? " = " + fmt("%.4g", p.mean) + " ± " + fmt("%.2g", p.sd)
+                       : ": optimum " + fmt("%.4g", p.optimum)) +
+             " " + p.unit + "  (95 % " +
+             (p.interval == "profile" ? "profile likelihood" : "posterior") + " [" +
+             fmt("%.4g", p.q025) + ", " + fmt("%.4g", p.q975) + "])" +
+             (c.fit->integrator.ok ? ""
+                                   : "  NOT TO BE TRUSTED: the integrator limits it (note below)") +
+             (resolved || p.interval == "profile"
+                  ? ""
+                  : "  NOT TO BE TRUSTED: the posterior is not resolved") +
+             "\n";
       }
       if (!resolved)
-        s += "    (the posterior is not resolved: importance ESS " + fmt("%.1f", c.fit->importance_ess) + " < " +
-             fmt("%.0f", Figures::kResolvedEss) + ", so no mean ± sd; raise --lhs-points, or [calibration] round_points or max_rounds in the study; see " + c.fit->folder +
-             "/summary.json)\n";
+        s += "    (the posterior is not resolved: importance ESS " +
+             fmt("%.1f", c.fit->importance_ess) + " < " + fmt("%.0f", Figures::kResolvedEss) +
+             ", so no mean ± sd; raise --lhs-points, or [calibration] round_points or max_rounds "
+             "in the study; see " +
+             c.fit->folder + "/summary.json)\n";
     }
-  // Every calibration whose integrator check failed (the base, the confirmed candidates, the steps).
+  // Every calibration whose integrator check failed (the base, the confirmed candidates, the
+  // steps).
   std::vector<const Figures*> fits{&base};
   for (const auto& c : candidates)
     if (c.fit) fits.push_back(&*c.fit);
@@ -571,26 +668,32 @@ std::string DiagnosisResult::text() const {
     if (!f->integrator.ok && noted.insert(f->folder).second)
       s += "\n  note (" + f->label + ", " + f->folder + "): " + f->integrator.message + "\n";
   if (!proposal.empty()) {
-    s += "\nProposed terms (strut force a * TERM at every strut; ready to paste into the study file):\n";
+    s += "\nProposed terms (strut force a * TERM at every strut; ready to paste into the study "
+         "file):\n";
     for (const auto& t : proposal)
       s += "  " + t.name + ": " + t.force + ", a ≈ " + fmt("%.3g", t.coefficient) + " " + t.unit +
-           (t.gap > 0 ? ", g = " + fmt("%.3g", t.gap) + " m" : "") + ", ΔBIC " + fmt("%.1f", t.delta_bic) +
-           ", explains " + fmt("%.0f", 100 * t.explained) + " % of the excess residual\n";
+           (t.gap > 0 ? ", g = " + fmt("%.3g", t.gap) + " m" : "") + ", ΔBIC " +
+           fmt("%.1f", t.delta_bic) + ", explains " + fmt("%.0f", 100 * t.explained) +
+           " % of the excess residual\n";
     s += "\n" + proposalToml();
   }
   if (!left_out_channels.empty()) {
     s += "\n  Compared but not fitted: ";
-    for (std::size_t i = 0; i < left_out_channels.size(); ++i) s += (i ? "; " : "") + left_out_channels[i];
+    for (std::size_t i = 0; i < left_out_channels.size(); ++i)
+      s += (i ? "; " : "") + left_out_channels[i];
     s += "\n";
   }
   if (!steps.empty()) {
     s += "\nBefore/after (effects added in turn):\n";
-    s += formatPrintf("  %-40s %12s %12s %10s %12s\n", "model", "syst. RMS/σ", "coverage", "log evid.", "Δ log evid.");
+    s += formatPrintf("  %-40s %12s %12s %10s %12s\n", "model", "syst. RMS/σ", "coverage",
+                      "log evid.", "Δ log evid.");
     for (const auto& st : steps) {
       double cov = 0.0;
-      for (const auto& x : st.comparison.series) cov += x.coverage / static_cast<double>(st.comparison.series.size());
-      s += formatPrintf("  %-40s %12.3f %11.1f%% %10.1f %12.1f\n", st.label.c_str(), st.comparison.systematic_rms_sd, 100 * cov,
-                        st.log_evidence, st.log_evidence - steps.front().log_evidence);
+      for (const auto& x : st.comparison.series)
+        cov += x.coverage / static_cast<double>(st.comparison.series.size());
+      s += formatPrintf("  %-40s %12.3f %11.1f%% %10.1f %12.1f\n", st.label.c_str(),
+                        st.comparison.systematic_rms_sd, 100 * cov, st.log_evidence,
+                        st.log_evidence - steps.front().log_evidence);
     }
     s += "\n  Per channel (RMS, NRMSE):\n";
     for (std::size_t i = 0; i < steps.front().comparison.series.size(); ++i) {
@@ -598,7 +701,8 @@ std::string DiagnosisResult::text() const {
       std::string line = "    " + f.scenario + " " + f.channel + ":";
       for (const auto& st : steps)
         if (i < st.comparison.series.size())
-          line += "  " + fmt("%.4g", st.comparison.series[i].rms) + " (" + fmt("%.3f", st.comparison.series[i].nrmse) + ")";
+          line += "  " + fmt("%.4g", st.comparison.series[i].rms) + " (" +
+                  fmt("%.3f", st.comparison.series[i].nrmse) + ")";
       s += line + "\n";
     }
   }

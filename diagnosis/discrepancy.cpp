@@ -22,11 +22,14 @@ constexpr double kSameGain = 0.05, kSamePhaseDeg = 3.0;
 constexpr double kReadShare = 0.01;
 
 /// "0.5–2 Hz"
-std::string hz(double lo, double hi) { return formatNumber(lo, 3) + "–" + formatNumber(hi, 3) + " Hz"; }
+std::string hz(double lo, double hi) {
+  return formatNumber(lo, 3) + "–" + formatNumber(hi, 3) + " Hz";
+}
 
 /// The distinct times of `channel`'s records in `data`, ascending, with the mean of `values`
 /// (one per record) at each.
-void distinctTimes(const LabData& data, const std::string& channel, const std::vector<double>& values, std::vector<double>& t,
+void distinctTimes(const LabData& data, const std::string& channel,
+                   const std::vector<double>& values, std::vector<double>& t,
                    std::vector<double>& mean) {
   std::map<double, std::pair<double, int>> at;
   for (std::size_t i = 0; i < data.records.size(); ++i)
@@ -55,8 +58,10 @@ RoadInput modelSignal(const std::vector<double>& t, const std::vector<double>& v
   for (std::size_t k = 0; k < n; ++k) {
     const double time = static_cast<double>(k) * m.dt_s;
     while (i + 1 < t.size() && t[i + 1] <= time) ++i;
-    if (time <= t[i] || i + 1 == t.size()) m.u[0][k] = v[i];
-    else m.u[0][k] = v[i] + (v[i + 1] - v[i]) * (time - t[i]) / (t[i + 1] - t[i]);
+    if (time <= t[i] || i + 1 == t.size())
+      m.u[0][k] = v[i];
+    else
+      m.u[0][k] = v[i] + (v[i + 1] - v[i]) * (time - t[i]) / (t[i + 1] - t[i]);
   }
   return m;
 }
@@ -64,14 +69,17 @@ RoadInput modelSignal(const std::vector<double>& t, const std::vector<double>& v
 /// The words of one band (b.read set).
 std::string bandWords(const DiscrepancyBand& b) {
   const std::string where = b.band + " band, " + hz(b.lo_hz, b.hi_hz);
-  if (!b.read) return where + ": the model has little there (" + formatFixed(100 * b.model_share, 1) + " % of its power); not read";
+  if (!b.read)
+    return where + ": the model has little there (" + formatFixed(100 * b.model_share, 1) +
+           " % of its power); not read";
   if (std::abs(b.gain - 1) < kSameGain && std::abs(b.phase_deg) < kSamePhaseDeg)
-    return where + ": the car responds as the model (gain within " + formatFixed(100 * kSameGain, 0) + " %, phase within " +
-           formatFixed(kSamePhaseDeg, 0) + "°)";
+    return where + ": the car responds as the model (gain within " +
+           formatFixed(100 * kSameGain, 0) + " %, phase within " + formatFixed(kSamePhaseDeg, 0) +
+           "°)";
   std::string s = "at " + hz(b.lo_hz, b.hi_hz) + " (" + b.band + ") the car responds ";
   if (std::abs(b.phase_deg) >= kSamePhaseDeg)
-    s += formatFixed(std::abs(b.phase_deg), 0) + "° " + (b.phase_deg > 0 ? "earlier" : "later") + " than the model (" +
-         formatNumber(std::abs(b.lead_ms), 2) + " ms), with ";
+    s += formatFixed(std::abs(b.phase_deg), 0) + "° " + (b.phase_deg > 0 ? "earlier" : "later") +
+         " than the model (" + formatNumber(std::abs(b.lead_ms), 2) + " ms), with ";
   else
     s += "in phase with the model, with ";
   return s + formatNumber(b.gain, 2) + " times its gain";
@@ -86,45 +94,59 @@ std::string reading(const std::vector<DiscrepancyBand>& bands) {
     if (!b.read) continue;
     const std::complex<double> r = std::polar(b.gain, b.phase_deg * kRadPerDeg) - 1.0;
     if (std::abs(r) < kSameGain && std::abs(b.phase_deg) < kSamePhaseDeg) continue;
-    if (b.model_share * b.filter_ratio * b.filter_ratio > largest) largest = b.model_share * b.filter_ratio * b.filter_ratio, most = &b;
+    if (b.model_share * b.filter_ratio * b.filter_ratio > largest)
+      largest = b.model_share * b.filter_ratio * b.filter_ratio, most = &b;
   }
   if (!most) return "the car responds as the model in every band it excites";
   const std::complex<double> r = std::polar(most->gain, most->phase_deg * kRadPerDeg) - 1.0;
   const std::string where = "most of the filter is in the " + most->band + " band: ";
   if (std::abs(r.real()) >= std::abs(r.imag()))
-    return where + (r.real() < 0 ? "less of the road reaches the channel than the model lets through: damping the model lacks, or an "
-                                   "actuator against the body's motion (a skyhook would)"
-                                 : "more of the road reaches the channel than the model lets through: a stiffer path, or a force that "
-                                   "adds to the road's push (a feed-forward in phase with the road would)");
-  return where + (r.imag() > 0 ? "earlier than the model: a force ahead of the model's, in phase with the road's velocity (a "
+    return where + (r.real() < 0
+                        ? "less of the road reaches the channel than the model lets through: "
+                          "damping the model lacks, or an "
+                          "actuator against the body's motion (a skyhook would)"
+                        : "more of the road reaches the channel than the model lets through: a "
+                          "stiffer path, or a force that "
+                          "adds to the road's push (a feed-forward in phase with the road would)");
+  return where + (r.imag() > 0 ? "earlier than the model: a force ahead of the model's, in phase "
+                                 "with the road's velocity (a "
                                  "feed-forward or a skyhook would)"
-                               : "later than the model: a lag the model lacks (a compliance, a controller's or a sensor's delay would)");
+                               : "later than the model: a lag the model lacks (a compliance, a "
+                                 "controller's or a sensor's delay would)");
 }
 
 /// The car over the model per bin and per band on one drive: ŷ the physics and d the filter's
 /// output at the distinct times t.
-void addResponse(DiscrepancyFilter& f, const std::vector<double>& t, const std::vector<double>& physics, const std::vector<double>& d) {
+void addResponse(DiscrepancyFilter& f, const std::vector<double>& t,
+                 const std::vector<double>& physics, const std::vector<double>& d) {
   if (t.size() < 64) {
-    f.response_note = "no response: fewer than 64 times of " + f.channel + " on the calibration drive";
+    f.response_note =
+        "no response: fewer than 64 times of " + f.channel + " on the calibration drive";
     return;
   }
   const UniformGrid g = uniformGrid(t);
   if (g.size() < 64 || !g.steady) {
-    f.response_note = "no response: the calibration drive's times hold no steady stretch of 64 times";
+    f.response_note =
+        "no response: the calibration drive's times hold no steady stretch of 64 times";
     return;
   }
   const double fs = 1.0 / g.dt;
   const std::vector<double> y = onGrid(g, physics), dd = onGrid(g, d);
   int segment = 32;  // the largest power of two within half the grid and 5 s
-  while (2 * static_cast<std::size_t>(segment) <= g.size() / 2 && 2 * segment <= 5.0 * fs) segment *= 2;
+  while (2 * static_cast<std::size_t>(segment) <= g.size() / 2 && 2 * segment <= 5.0 * fs)
+    segment *= 2;
   const CrossSpectra cs = welchCrossSpectra(y, dd, fs, segment);
-  f.response_note = "on the calibration drive, " + formatNumber(t[g.begin], 6) + "–" + formatNumber(t[g.end - 1], 6) + " s (" +
-                    std::to_string(g.size()) + " times at " + formatNumber(fs, 4) + " Hz" + (g.resampled ? ", resampled" : "") +
-                    "), Welch segments of " + formatNumber(segment / fs, 3) + " s";
+  f.response_note = "on the calibration drive, " + formatNumber(t[g.begin], 6) + "–" +
+                    formatNumber(t[g.end - 1], 6) + " s (" + std::to_string(g.size()) +
+                    " times at " + formatNumber(fs, 4) + " Hz" +
+                    (g.resampled ? ", resampled" : "") + "), Welch segments of " +
+                    formatNumber(segment / fs, 3) + " s";
   double total = 0, peak = 0;
-  for (std::size_t k = 1; k < cs.freq_hz.size(); ++k) total += cs.pxx[k], peak = std::max(peak, cs.pxx[k]);
+  for (std::size_t k = 1; k < cs.freq_hz.size(); ++k)
+    total += cs.pxx[k], peak = std::max(peak, cs.pxx[k]);
   for (std::size_t k = 1; k < cs.freq_hz.size(); ++k) {
-    if (!(cs.pxx[k] > 1e-3 * peak)) continue;  // where the model has little power the ratio is noise
+    if (!(cs.pxx[k] > 1e-3 * peak))
+      continue;  // where the model has little power the ratio is noise
     const std::complex<double> r = 1.0 + cs.pxy[k] / cs.pxx[k];
     f.freq_hz.push_back(cs.freq_hz[k]);
     f.gain.push_back(std::abs(r));
@@ -162,11 +184,16 @@ void DiscrepancyOptions::validate() const {
   check.positive("dt_s", dt_s);
   check.require(!taps.empty(), "taps", "must list at least one order");
   check.require(!model_taps.empty(), "model_taps", "must list at least one order (0: none)");
-  for (const int n : model_taps) check.require(n >= 0 && n <= 500, "model_taps", "must each lie in [0, 500], got " + std::to_string(n));
-  for (const int n : taps) check.require(n >= 1 && n <= 500, "taps", "must each lie in [1, 500], got " + std::to_string(n));
+  for (const int n : model_taps)
+    check.require(n >= 0 && n <= 500, "model_taps",
+                  "must each lie in [0, 500], got " + std::to_string(n));
+  for (const int n : taps)
+    check.require(n >= 1 && n <= 500, "taps",
+                  "must each lie in [1, 500], got " + std::to_string(n));
 }
 
-DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<DiscrepancyDrive>& calibration,
+DiscrepancyFilter fitDiscrepancy(const std::string& channel,
+                                 const std::vector<DiscrepancyDrive>& calibration,
                                  const DiscrepancyOptions& options) {
   options.validate();
   DTWIN_CHECK(!calibration.empty(), "fitDiscrepancy: no calibration drive");
@@ -180,7 +207,8 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
   std::vector<double> t, physics;
   for (std::size_t s = 0; s < calibration.size(); ++s) {
     const DiscrepancyDrive& d = calibration[s];
-    DTWIN_CHECK(d.data && d.physics && d.road && d.physics->size() == d.data->records.size(), "fitDiscrepancy: a drive's predictions");
+    DTWIN_CHECK(d.data && d.physics && d.road && d.physics->size() == d.data->records.size(),
+                "fitDiscrepancy: a drive's predictions");
     for (std::size_t i = 0; i < d.data->records.size(); ++i)
       if (d.data->records[i].channel == channel) {
         LabRecord r = d.data->records[i];
@@ -195,7 +223,9 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
   }
   std::size_t records = 0;
   for (const auto& r : residual) records += r.records.size();
-  if (records == 0) throw InputError("discrepancy " + channel, "the calibration drive holds no records of " + channel);
+  if (records == 0)
+    throw InputError("discrepancy " + channel,
+                     "the calibration drive holds no records of " + channel);
   FirSearch search;
   search.taps = options.taps;
   search.model_taps = options.model_taps;
@@ -207,9 +237,12 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
     f.cv_sse_chosen = *std::min_element(f.fir.cv_sse.begin(), f.fir.cv_sse.end());
   }
   if (f.fir.none()) {
-    f.response_note = "no filter: the car responds as the model, as far as the calibration drive tells";
-    f.summary = "no filter: on the calibration drive no linear filter of the road predicted the residual better than nothing (two-fold "
-                "cross-validation); the physics alone is the prediction";
+    f.response_note =
+        "no filter: the car responds as the model, as far as the calibration drive tells";
+    f.summary =
+        "no filter: on the calibration drive no linear filter of the road predicted the residual "
+        "better than nothing (two-fold "
+        "cross-validation); the physics alone is the prediction";
     return f;
   }
   // The response on the drive with the most times of the channel.
@@ -220,31 +253,49 @@ DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<D
   }
   distinctTimes(*calibration[best].data, channel, *calibration[best].physics, t, physics);
   std::vector<double> d(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) d[i] = f.fir.predict(*calibration[best].road, t[i], &model[best]);
+  for (std::size_t i = 0; i < t.size(); ++i)
+    d[i] = f.fir.predict(*calibration[best].road, t[i], &model[best]);
   addResponse(f, t, physics, d);
   std::string words;
   for (const auto& b : f.bands)
-    if (b.read && !(std::abs(b.gain - 1) < kSameGain && std::abs(b.phase_deg) < kSamePhaseDeg)) words += (words.empty() ? "" : "; ") + b.words;
+    if (b.read && !(std::abs(b.gain - 1) < kSameGain && std::abs(b.phase_deg) < kSamePhaseDeg))
+      words += (words.empty() ? "" : "; ") + b.words;
   if (f.bands.empty())
-    f.summary = "the filter is fitted, but its response against the model's could not be estimated (" + f.response_note + ")";
+    f.summary =
+        "the filter is fitted, but its response against the model's could not be estimated (" +
+        f.response_note + ")";
   else
-    f.summary = (words.empty() ? std::string("the car responds as the model in every band read") : words) + ": " + reading(f.bands);
+    f.summary =
+        (words.empty() ? std::string("the car responds as the model in every band read") : words) +
+        ": " + reading(f.bands);
   return f;
 }
 
 std::string DiscrepancyFilter::describe() const {
   if (fir.none()) return fir.describe();
-  const bool front = fir.corners.size() <= 2 && std::all_of(fir.corners.begin(), fir.corners.end(), [](int c) { return c < 2; });
-  const std::string wheels = front ? (fir.corners.size() == 1 ? "the front wheels (one signal)" : "the 2 front wheels")
-                                   : (fir.corners.size() == 4 ? "the 4 wheels" : std::to_string(fir.corners.size()) + " distinct wheel signals");
-  std::string s = "FIR from the road's " + std::string(fir.input == FirInput::Height ? "height" : "vertical velocity") + " under " + wheels +
-                  (fir.model_taps ? " and from the model's own prediction (" + std::to_string(fir.model_taps) + (fir.model_taps == 1 ? " tap)" : " taps)") : std::string()) +
-                  " to the residual, " + std::to_string(fir.taps) + " taps each at " + formatNumber(fir.dt_s) + " s (memory " +
-                  formatNumber(fir.taps * fir.dt_s, 3) + " s), ridge " + formatNumber(fir.ridge) + ", least squares on " +
-                  std::to_string(fir.training_records) + " records";
+  const bool front = fir.corners.size() <= 2 && std::all_of(fir.corners.begin(), fir.corners.end(),
+                                                            [](int c) { return c < 2; });
+  const std::string wheels =
+      front ? (fir.corners.size() == 1 ? "the front wheels (one signal)" : "the 2 front wheels")
+            : (fir.corners.size() == 4
+                   ? "the 4 wheels"
+                   : std::to_string(fir.corners.size()) + " distinct wheel signals");
+  std::string s =
+      "FIR from the road's " +
+      std::string(fir.input == FirInput::Height ? "height" : "vertical velocity") + " under " +
+      wheels +
+      (fir.model_taps ? " and from the model's own prediction (" + std::to_string(fir.model_taps) +
+                            (fir.model_taps == 1 ? " tap)" : " taps)")
+                      : std::string()) +
+      " to the residual, " + std::to_string(fir.taps) + " taps each at " + formatNumber(fir.dt_s) +
+      " s (memory " + formatNumber(fir.taps * fir.dt_s, 3) + " s), ridge " +
+      formatNumber(fir.ridge) + ", least squares on " + std::to_string(fir.training_records) +
+      " records";
   if (candidates > 1)
-    s += " (chosen among " + std::to_string(candidates) + " forms and no filter by two-fold cross-validation: residual sum of squares " +
-         formatNumber(cv_sse_chosen, 4) + " against " + formatNumber(cv_sse_none, 4) + " without a filter)";
+    s += " (chosen among " + std::to_string(candidates) +
+         " forms and no filter by two-fold cross-validation: residual sum of squares " +
+         formatNumber(cv_sse_chosen, 4) + " against " + formatNumber(cv_sse_none, 4) +
+         " without a filter)";
   return s;
 }
 
@@ -268,16 +319,25 @@ nlohmann::json DiscrepancyFilter::toJson() const {
   }
   j["bands"] = nlohmann::json::array();
   for (const auto& b : bands)
-    j["bands"].push_back({{"band", b.band}, {"lo_hz", b.lo_hz}, {"hi_hz", b.hi_hz}, {"gain", b.gain}, {"phase_deg", b.phase_deg},
-                          {"lead_ms", b.lead_ms}, {"model_share", b.model_share}, {"filter_ratio", b.filter_ratio}, {"read", b.read},
+    j["bands"].push_back({{"band", b.band},
+                          {"lo_hz", b.lo_hz},
+                          {"hi_hz", b.hi_hz},
+                          {"gain", b.gain},
+                          {"phase_deg", b.phase_deg},
+                          {"lead_ms", b.lead_ms},
+                          {"model_share", b.model_share},
+                          {"filter_ratio", b.filter_ratio},
+                          {"read", b.read},
                           {"words", b.words}});
   j["response"] = {{"freq_hz", freq_hz}, {"gain", gain}, {"phase_deg", phase_deg}};
   return j;
 }
 
-SeriesDiscrepancy scoreDiscrepancy(const DiscrepancyFilter& filter, const std::vector<double>& t, const std::vector<double>& physics,
-                                   const LabData& data, const RoadInput& road) {
-  DTWIN_CHECK(t.size() == physics.size(), "scoreDiscrepancy: times and predictions differ in number");
+SeriesDiscrepancy scoreDiscrepancy(const DiscrepancyFilter& filter, const std::vector<double>& t,
+                                   const std::vector<double>& physics, const LabData& data,
+                                   const RoadInput& road) {
+  DTWIN_CHECK(t.size() == physics.size(),
+              "scoreDiscrepancy: times and predictions differ in number");
   SeriesDiscrepancy out;
   out.filter = filter;
   const RoadInput model = modelSignal(t, physics);

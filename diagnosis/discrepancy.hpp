@@ -20,10 +20,12 @@
 namespace dtwin::diag {
 
 struct DiscrepancyOptions {
-  double dt_s = 0.02;                ///< the taps' spacing Δ
-  std::vector<int> taps{5, 10, 25, 50};  ///< the road's orders cross-validated (memory L Δ: 0.1 to 1 s)
+  double dt_s = 0.02;  ///< the taps' spacing Δ
+  std::vector<int> taps{5, 10, 25,
+                        50};  ///< the road's orders cross-validated (memory L Δ: 0.1 to 1 s)
   /// Taps on the model's own prediction cross-validated: 0 (a filter of the road alone), 1 (a gain
-  /// on the prediction), 10 (a short filter of it: the model's response reshaped, a resonance moved).
+  /// on the prediction), 10 (a short filter of it: the model's response reshaped, a resonance
+  /// moved).
   std::vector<int> model_taps{0, 1, 10};
   /// Throws InputError("discrepancy.<field>", rule) for a field out of range.
   void validate() const;
@@ -39,17 +41,21 @@ struct DiscrepancyBand {
   double phase_deg = 0;    ///< arg R: > 0 the car responds earlier than the model
   double lead_ms = 0;      ///< the phase as a time at the band's centre √(lo hi) (> 0 earlier)
   double model_share = 0;  ///< the band's share of the physics prediction's power
-  double filter_ratio = 0; ///< √(Σ P_dd / Σ P_ŷŷ): the filter's RMS in the band over the model's
-  bool read = false;       ///< the model has power enough there (model_share ≥ 1 %) for R to mean something
-  std::string words;       ///< e.g. "the car responds 40° earlier at 0.5–2 Hz than the model (64 ms), with 1.3 times its gain"
+  double filter_ratio = 0;  ///< √(Σ P_dd / Σ P_ŷŷ): the filter's RMS in the band over the model's
+  bool read =
+      false;  ///< the model has power enough there (model_share ≥ 1 %) for R to mean something
+  std::string words;  ///< e.g. "the car responds 40° earlier at 0.5–2 Hz than the model (64 ms),
+                      ///< with 1.3 times its gain"
 };
 
 /// The discrepancy filter of one channel.
 struct DiscrepancyFilter {
   std::string channel;
-  FirBaseline fir;  ///< from the road to the residual; fir.none(): the cross-validation chose no filter
+  FirBaseline
+      fir;  ///< from the road to the residual; fir.none(): the cross-validation chose no filter
   /// The two-fold cross-validated residual sum of squares of no filter and of the form chosen.
-  double cv_sse_none = std::numeric_limits<double>::quiet_NaN(), cv_sse_chosen = std::numeric_limits<double>::quiet_NaN();
+  double cv_sse_none = std::numeric_limits<double>::quiet_NaN(),
+         cv_sse_chosen = std::numeric_limits<double>::quiet_NaN();
   int candidates = 0;  ///< forms scored (no filter included)
   /// The car over the model per Welch bin (0 < f ≤ the Nyquist frequency, bins where the model
   /// has 0.1 % of its peak power), on the calibration drive: what compare.html draws.
@@ -58,7 +64,8 @@ struct DiscrepancyFilter {
   std::string response_note;  ///< where the response was estimated, or why there is none
   /// The bands in words and what would do that (e.g. "a feed-forward ... would").
   std::string summary;
-  /// "FIR from the road's vertical velocity under the 2 front wheels, 10 taps at 0.02 s (memory 0.2 s), ridge 1e-05: ..."
+  /// "FIR from the road's vertical velocity under the 2 front wheels, 10 taps at 0.02 s (memory 0.2
+  /// s), ridge 1e-05: ..."
   std::string describe() const;
   nlohmann::json toJson() const;
 };
@@ -79,13 +86,15 @@ struct DiscrepancyDrive {
 /// channel (a uniform grid of its distinct times, uniformGrid; Welch segments of up to 5 s).
 /// Throws InputError when the drives hold fewer records of `channel` than the smallest form's
 /// coefficients.
-DiscrepancyFilter fitDiscrepancy(const std::string& channel, const std::vector<DiscrepancyDrive>& calibration,
+DiscrepancyFilter fitDiscrepancy(const std::string& channel,
+                                 const std::vector<DiscrepancyDrive>& calibration,
                                  const DiscrepancyOptions& options = {});
 
 /// The hybrid on one compared series (a drive the filter was not fitted to).
 struct SeriesDiscrepancy {
   DiscrepancyFilter filter;
-  /// 100 (1 − ‖y − ŷ − d‖ / ‖y − mean y‖) over every measured value, as SeriesComparison::fit_percent.
+  /// 100 (1 − ‖y − ŷ − d‖ / ‖y − mean y‖) over every measured value, as
+  /// SeriesComparison::fit_percent.
   double hybrid_fit_percent = std::numeric_limits<double>::quiet_NaN();
   /// The physics alone recomputed from the same records (equals SeriesComparison::fit_percent).
   double physics_fit_percent = std::numeric_limits<double>::quiet_NaN();
@@ -100,7 +109,8 @@ struct SeriesDiscrepancy {
 /// Scores `filter` on a series: its distinct times `t` (ascending) and the physics prediction
 /// there (`physics`), the measured values the records of filter.channel in `data` (each
 /// repetition), `road` the drive's road input.
-SeriesDiscrepancy scoreDiscrepancy(const DiscrepancyFilter& filter, const std::vector<double>& t, const std::vector<double>& physics,
-                                   const LabData& data, const RoadInput& road);
+SeriesDiscrepancy scoreDiscrepancy(const DiscrepancyFilter& filter, const std::vector<double>& t,
+                                   const std::vector<double>& physics, const LabData& data,
+                                   const RoadInput& road);
 
 }  // namespace dtwin::diag

@@ -11,10 +11,13 @@
 namespace dtwin::diag {
 namespace {
 
-constexpr double kHalfTurn = 3.14159265358979323846;  // π (names distinct from signal.cpp's: unity builds)
+constexpr double kHalfTurn =
+    3.14159265358979323846;  // π (names distinct from signal.cpp's: unity builds)
 constexpr double kDegPerRad = 180.0 / kHalfTurn;
 
-[[noreturn]] void refuse(const std::string& where, const std::string& rule) { throw std::invalid_argument(where + ": " + rule); }
+[[noreturn]] void refuse(const std::string& where, const std::string& rule) {
+  throw std::invalid_argument(where + ": " + rule);
+}
 
 /// arg z in degrees, in (−180°, 180°].
 double phaseDegrees(std::complex<double> z) {
@@ -22,12 +25,14 @@ double phaseDegrees(std::complex<double> z) {
   return p <= -180.0 ? p + 360.0 : p;
 }
 
-/// The bins of a band, with signal.hpp's rule: lo <= f < hi, the last bin included when hi reaches it.
+/// The bins of a band, with signal.hpp's rule: lo <= f < hi, the last bin included when hi reaches
+/// it.
 bool binInBand(const std::vector<double>& f, std::size_t k, double lo, double hi) {
   return f[k] >= lo && (f[k] < hi || (k + 1 == f.size() && hi >= f[k]));
 }
 
-double bandMeanOf(const std::vector<double>& f, const std::vector<double>& v, double lo, double hi) {
+double bandMeanOf(const std::vector<double>& f, const std::vector<double>& v, double lo,
+                  double hi) {
   double sum = 0;
   int n = 0;
   for (std::size_t k = 0; k < f.size(); ++k)
@@ -57,7 +62,8 @@ nlohmann::json responseJson(const FrequencyResponse& r) {
 
 }  // namespace
 
-FrequencyResponse frequencyResponse(const std::vector<double>& u, const std::vector<double>& y, double fs_hz, int segment) {
+FrequencyResponse frequencyResponse(const std::vector<double>& u, const std::vector<double>& y,
+                                    double fs_hz, int segment) {
   const CrossSpectra c = welchCrossSpectra(u, y, fs_hz, segment);
   FrequencyResponse r;
   r.freq_hz = c.freq_hz;
@@ -79,20 +85,25 @@ FrequencyResponse frequencyResponse(const std::vector<double>& u, const std::vec
     r.magnitude[k] = std::abs(r.h[k]);
     r.phase_deg[k] = phaseDegrees(r.h[k]);
     r.coherence[k] = g2;
-    const double eps = g2 > 0 ? std::sqrt((1.0 - g2) / (g2 * two_nd)) : std::numeric_limits<double>::infinity();
+    const double eps =
+        g2 > 0 ? std::sqrt((1.0 - g2) / (g2 * two_nd)) : std::numeric_limits<double>::infinity();
     r.magnitude_error[k] = eps;
     r.phase_sd_deg[k] = std::min(eps, max_phase_sd) * kDegPerRad;
   }
   return r;
 }
 
-ResponseComparison compareResponses(const std::vector<double>& u, const std::vector<double>& measured,
-                                    const std::vector<double>& predicted, double fs_hz, int segment, double level) {
+ResponseComparison compareResponses(const std::vector<double>& u,
+                                    const std::vector<double>& measured,
+                                    const std::vector<double>& predicted, double fs_hz, int segment,
+                                    double level) {
   const char* where = "compareResponses";
   if (measured.size() != u.size() || predicted.size() != u.size())
-    refuse(where, "the input, measured and predicted values must have the same length, got " + std::to_string(u.size()) + ", " +
-                   std::to_string(measured.size()) + " and " + std::to_string(predicted.size()));
-  if (!(level > 0 && level < 1)) refuse(where, "level must be in (0, 1), got " + formatNumber(level));
+    refuse(where, "the input, measured and predicted values must have the same length, got " +
+                      std::to_string(u.size()) + ", " + std::to_string(measured.size()) + " and " +
+                      std::to_string(predicted.size()));
+  if (!(level > 0 && level < 1))
+    refuse(where, "level must be in (0, 1), got " + formatNumber(level));
   ResponseComparison out;
   out.level = level;
   out.measured = frequencyResponse(u, measured, fs_hz, segment);
@@ -105,14 +116,16 @@ ResponseComparison compareResponses(const std::vector<double>& u, const std::vec
   const std::size_t m = r.freq_hz.size();
   out.residual_coherence.assign(m, 0.0);
   out.differs.assign(m, false);
-  std::vector<double> s(m, std::numeric_limits<double>::infinity());  // sd of each part of ln(Ĥ_m/Ĥ_p)
+  std::vector<double> s(m,
+                        std::numeric_limits<double>::infinity());  // sd of each part of ln(Ĥ_m/Ĥ_p)
   for (std::size_t k = 0; k < m; ++k) {
     const double d = r.pxx[k] * r.pyy[k];
     const double g2 = d > 0 ? std::min(1.0, std::norm(r.pxy[k]) / d) : 0.0;
     out.residual_coherence[k] = g2;
     out.differs[k] = k > 0 && g2 > out.coherence_threshold;
     const double hp = out.predicted.magnitude[k];
-    if (r.pxx[k] > 0 && hp > 0 && nd > 1) s[k] = std::sqrt(r.pyy[k] * (1.0 - g2) / (2.0 * (nd - 1.0) * r.pxx[k])) / hp;
+    if (r.pxx[k] > 0 && hp > 0 && nd > 1)
+      s[k] = std::sqrt(r.pyy[k] * (1.0 - g2) / (2.0 * (nd - 1.0) * r.pxx[k])) / hp;
   }
   const double chi2_level = -2.0 * std::log(1.0 - level);  // χ²₂ quantile
   const auto& f = r.freq_hz;
@@ -122,7 +135,9 @@ ResponseComparison compareResponses(const std::vector<double>& u, const std::vec
     double wsum = 0, gain = 0;
     std::complex<double> phasor(0.0, 0.0);
     for (std::size_t k = 1; k < m; ++k) {
-      if (!binInBand(f, k, b.lo_hz, b.hi_hz) || !(out.measured.magnitude[k] > 0) || !std::isfinite(s[k])) continue;
+      if (!binInBand(f, k, b.lo_hz, b.hi_hz) || !(out.measured.magnitude[k] > 0) ||
+          !std::isfinite(s[k]))
+        continue;
       const std::complex<double> ratio = out.measured.h[k] / out.predicted.h[k];
       const double w = 1.0 / std::max(s[k] * s[k], 1e-300);
       wsum += w;
@@ -131,27 +146,31 @@ ResponseComparison compareResponses(const std::vector<double>& u, const std::vec
       ++rb.bins;
     }
     if (rb.bins == 0) continue;  // a band narrower than a bin, or no response in it
-    const double lg = gain / wsum, ph = std::arg(phasor), sd = std::sqrt(std::min(rb.bins, 2) / wsum);
+    const double lg = gain / wsum, ph = std::arg(phasor),
+                 sd = std::sqrt(std::min(rb.bins, 2) / wsum);
     rb.gain_ratio = std::exp(lg);
     rb.gain_ratio_error = sd;
     rb.phase_difference_deg = phaseDegrees(phasor);
     rb.phase_difference_sd_deg = std::min(sd, kHalfTurn / std::sqrt(3.0)) * kDegPerRad;
     rb.coherence_measured = bandMeanOf(f, out.measured.coherence, b.lo_hz, b.hi_hz);
     rb.coherence_predicted = bandMeanOf(f, out.predicted.coherence, b.lo_hz, b.hi_hz);
-    rb.chi2 = sd > 0 ? (lg * lg + ph * ph) / (sd * sd) : (lg != 0 || ph != 0 ? std::numeric_limits<double>::infinity() : 0.0);
+    rb.chi2 = sd > 0 ? (lg * lg + ph * ph) / (sd * sd)
+                     : (lg != 0 || ph != 0 ? std::numeric_limits<double>::infinity() : 0.0);
     rb.differs = rb.chi2 > chi2_level;
     out.bands.push_back(rb);
   }
   return out;
 }
 
-SeriesResponse seriesResponse(const std::vector<double>& t, const std::vector<double>& road, const std::string& input,
-                              const std::vector<double>& measured, const std::vector<double>& predicted) {
+SeriesResponse seriesResponse(const std::vector<double>& t, const std::vector<double>& road,
+                              const std::string& input, const std::vector<double>& measured,
+                              const std::vector<double>& predicted) {
   const char* where = "seriesResponse";
   const std::size_t n = t.size();
   if (measured.size() != n || predicted.size() != n || (!road.empty() && road.size() != n))
-    refuse(where, "the times, road, measured and predicted values must have the same length, got " + std::to_string(n) + ", " +
-                   std::to_string(road.size()) + ", " + std::to_string(measured.size()) + " and " + std::to_string(predicted.size()));
+    refuse(where, "the times, road, measured and predicted values must have the same length, got " +
+                      std::to_string(n) + ", " + std::to_string(road.size()) + ", " +
+                      std::to_string(measured.size()) + " and " + std::to_string(predicted.size()));
   SeriesResponse sr;
   sr.input = road.empty() ? "" : input;
   if (road.empty()) {
@@ -164,13 +183,14 @@ SeriesResponse seriesResponse(const std::vector<double>& t, const std::vector<do
   }
   const UniformGrid g = uniformGrid(t);
   if (g.size() < 64) {
-    sr.note = "no frequency response: " + std::to_string(g.gaps) + (g.gaps == 1 ? " gap" : " gaps") +
+    sr.note = "no frequency response: " + std::to_string(g.gaps) +
+              (g.gaps == 1 ? " gap" : " gaps") +
               " in the times, and no stretch between gaps holds 64 times";
     return sr;
   }
   if (!g.steady) {
-    sr.note = "no frequency response: the sampling rate changes from " + formatNumber(g.rate_lo_hz, 4) + " to " +
-              formatNumber(g.rate_hi_hz, 4) + " Hz";
+    sr.note = "no frequency response: the sampling rate changes from " +
+              formatNumber(g.rate_lo_hz, 4) + " to " + formatNumber(g.rate_hi_hz, 4) + " Hz";
     return sr;
   }
   const std::vector<double> u = onGrid(g, road);
@@ -181,14 +201,17 @@ SeriesResponse seriesResponse(const std::vector<double>& t, const std::vector<do
   }
   std::vector<std::string> parts;
   if (g.gaps)
-    parts.push_back("the response of the longest stretch between gaps, " + formatNumber(t[g.begin], 6) + "–" +
-                    formatNumber(t[g.end - 1], 6) + " s (" + std::to_string(g.size()) + " of " + std::to_string(n) + " times)");
+    parts.push_back("the response of the longest stretch between gaps, " +
+                    formatNumber(t[g.begin], 6) + "–" + formatNumber(t[g.end - 1], 6) + " s (" +
+                    std::to_string(g.size()) + " of " + std::to_string(n) + " times)");
   if (g.resampled)
     parts.push_back("resampled to a uniform " + formatFixed(1.0 / g.dt, 1) +
-                    " Hz grid by linear interpolation (input and outputs alike: the interpolation's loss cancels in the ratio)");
+                    " Hz grid by linear interpolation (input and outputs alike: the "
+                    "interpolation's loss cancels in the ratio)");
   for (std::size_t k = 0; k < parts.size(); ++k) sr.note += (k ? "; " : "") + parts[k];
   sr.fs_hz = 1.0 / g.dt;
-  sr.response = compareResponses(u, onGrid(g, measured), onGrid(g, predicted), sr.fs_hz, welchSegmentFor(g.size()));
+  sr.response = compareResponses(u, onGrid(g, measured), onGrid(g, predicted), sr.fs_hz,
+                                 welchSegmentFor(g.size()));
   sr.computed = true;
   return sr;
 }
@@ -213,11 +236,18 @@ nlohmann::json SeriesResponse::toJson(bool with_bins) const {
   }
   j["bands"] = nlohmann::json::array();
   for (const auto& b : r.bands)
-    j["bands"].push_back({{"band", b.band}, {"lo_hz", b.lo_hz}, {"hi_hz", b.hi_hz}, {"bins", b.bins},
-                          {"gain_ratio", b.gain_ratio}, {"gain_ratio_error", b.gain_ratio_error},
-                          {"phase_difference_deg", b.phase_difference_deg}, {"phase_difference_sd_deg", b.phase_difference_sd_deg},
-                          {"coherence_measured", b.coherence_measured}, {"coherence_predicted", b.coherence_predicted},
-                          {"chi2", jsonNumber(b.chi2)}, {"differs", b.differs}});
+    j["bands"].push_back({{"band", b.band},
+                          {"lo_hz", b.lo_hz},
+                          {"hi_hz", b.hi_hz},
+                          {"bins", b.bins},
+                          {"gain_ratio", b.gain_ratio},
+                          {"gain_ratio_error", b.gain_ratio_error},
+                          {"phase_difference_deg", b.phase_difference_deg},
+                          {"phase_difference_sd_deg", b.phase_difference_sd_deg},
+                          {"coherence_measured", b.coherence_measured},
+                          {"coherence_predicted", b.coherence_predicted},
+                          {"chi2", jsonNumber(b.chi2)},
+                          {"differs", b.differs}});
   return j;
 }
 

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "common/json.hpp"
 #include "common/errors.hpp"
+#include "common/json.hpp"
 #include "io/provenance.hpp"
 #include "twin/trace.hpp"
 
@@ -21,7 +21,9 @@ MeasurementSpec parseMeasurementArg(const std::string& text, const std::string& 
   } else {
     s.path = text.substr(0, at);
     s.scenario = text.substr(at + 1);
-    if (s.scenario.empty()) throw InputError(flag + " " + text, "'@' must be followed by a scenario name (FILE@SCENARIO)");
+    if (s.scenario.empty())
+      throw InputError(flag + " " + text,
+                       "'@' must be followed by a scenario name (FILE@SCENARIO)");
   }
   if (s.path.empty()) throw InputError(flag + " " + text, "names no file (FILE[@SCENARIO])");
   return s;
@@ -37,14 +39,15 @@ calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec) 
   ds.road_seed = facts.road_seed;
   ds.scenario = dataScenario(spec.path, spec.scenario, facts);
   if (ds.scenario.empty())
-    throw InputError(spec.path, "no scenario: name it as " + spec.path + "@SCENARIO (the file has no sidecar naming one)");
+    throw InputError(spec.path, "no scenario: name it as " + spec.path +
+                                    "@SCENARIO (the file has no sidecar naming one)");
   const ScenarioSpec& sc = study.scenario(ds.scenario);  // InputError lists the known names
   for (std::size_t i = 0; i < ds.data.records.size(); ++i) {
     const auto& r = ds.data.records[i];
     if (r.time_s > sc.duration_s)
       throw InputError(spec.path + ":" + std::to_string(i + 2) + ": time_s",
-                       formatExact(r.time_s) + " s lies after the end of scenario '" + sc.name + "' (" +
-                           formatExact(sc.duration_s) + " s)");
+                       formatExact(r.time_s) + " s lies after the end of scenario '" + sc.name +
+                           "' (" + formatExact(sc.duration_s) + " s)");
   }
   return ds;
 }
@@ -75,7 +78,9 @@ double sensorNoiseSd(const Study& study, const std::string& channel) {
 }
 }  // namespace
 
-bool isForce(const std::string& channel) { return channel.size() > 2 && channel.compare(channel.size() - 2, 2, "_N") == 0; }
+bool isForce(const std::string& channel) {
+  return channel.size() > 2 && channel.compare(channel.size() - 2, 2, "_N") == 0;
+}
 
 ChannelNoise estimateNoise(const Study& study, const LabData& data, const std::string& channel) {
   Accum a;
@@ -97,8 +102,9 @@ ChannelNoise estimateNoise(const Study& study, const LabData& data, const std::s
   return n;
 }
 
-std::map<std::string, ChannelNoise> estimateChannelNoise(const Study& study, const std::vector<calib::DataSet>& sets,
-                                                        std::vector<std::string>* left_out) {
+std::map<std::string, ChannelNoise> estimateChannelNoise(const Study& study,
+                                                         const std::vector<calib::DataSet>& sets,
+                                                         std::vector<std::string>* left_out) {
   std::map<std::string, Accum> acc;
   std::vector<std::string> order;
   for (const auto& s : sets)
@@ -121,8 +127,10 @@ std::map<std::string, ChannelNoise> estimateChannelNoise(const Study& study, con
       n.source = "study [noise]";
     } else {
       if (left_out)
-        left_out->push_back(c + (acc[c].dof > 0 ? " (its repetitions agree exactly: no noise to weigh it by)"
-                                                 : " (one repetition, and no [noise] variance for its unit nor a sensor noise_sd)"));
+        left_out->push_back(c + (acc[c].dof > 0
+                                     ? " (its repetitions agree exactly: no noise to weigh it by)"
+                                     : " (one repetition, and no [noise] variance for its unit nor "
+                                       "a sensor noise_sd)"));
       continue;
     }
     out[c] = n;

@@ -24,9 +24,10 @@ MeasurementSpec parseMeasurementArg(const std::string& text, const std::string& 
 /// Reads, validates and ties one file to its scenario. The scenario is spec.scenario, else the
 /// "scenario" of the file's sidecar (FILE with .json, written by `twin generate lab`); a file
 /// with neither is refused. The random road's seed comes from the sidecar's road.seed (else the
-/// study's seed is used: a measurement on a real road needs a csv-road scenario). Errors (InputError, one line): unreadable or malformed file (the lab
-/// reader's rules: unknown channel, wrong unit suffix, NaN, non-monotone time, ...), unknown
-/// scenario, a time after the end of the scenario (file:line, the rule broken).
+/// study's seed is used: a measurement on a real road needs a csv-road scenario). Errors
+/// (InputError, one line): unreadable or malformed file (the lab reader's rules: unknown channel,
+/// wrong unit suffix, NaN, non-monotone time, ...), unknown scenario, a time after the end of the
+/// scenario (file:line, the rule broken).
 calib::DataSet loadMeasurement(const Study& study, const MeasurementSpec& spec);
 
 /// The noise of one channel of one data set: the pooled within-(channel, time) variance of the
@@ -46,7 +47,8 @@ bool isForce(const std::string& channel);
 /// Per channel over all data sets (pooled pure error; study [noise] for N channels without
 /// repetitions). Channels with no noise estimate (zero variance) are left out: a diagnosis cannot
 /// weigh them (they are compared but not fitted); `left_out` lists them with the reason.
-std::map<std::string, ChannelNoise> estimateChannelNoise(const Study& study, const std::vector<calib::DataSet>& sets,
-                                                        std::vector<std::string>* left_out = nullptr);
+std::map<std::string, ChannelNoise> estimateChannelNoise(
+    const Study& study, const std::vector<calib::DataSet>& sets,
+    std::vector<std::string>* left_out = nullptr);
 
 }  // namespace dtwin::diag

@@ -35,7 +35,11 @@ std::vector<LibraryTerm> termLibrary(double q_comp, double q_reb) {
       {"v^3", "N*s^3/m^3", [](const S& s) { return s.v * s.v * s.v; }, 0, {}},
       {"q * v", "N*s/m^2", [](const S& s) { return s.q * s.v; }, 0, {}},
       {"sign(v)", "N", [](const S& s) { return sgn(s.v); }, 0, {}},
-      {"sign(v) * sqrt(abs(v))", "N*s^0.5/m^0.5", [](const S& s) { return sgn(s.v) * std::sqrt(std::abs(s.v)); }, 0, {}},
+      {"sign(v) * sqrt(abs(v))",
+       "N*s^0.5/m^0.5",
+       [](const S& s) { return sgn(s.v) * std::sqrt(std::abs(s.v)); },
+       0,
+       {}},
       {"(v < 0 ? v : 0)", "N*s/m", [](const S& s) { return s.v < 0 ? s.v : 0.0; }, 0, {}},
       {"dq * abs(dq)", "N/m^2", [](const S& s) { return s.dq * std::abs(s.dq); }, 0, {}},
       {"dq^3", "N/m^3", [](const S& s) { return s.dq * s.dq * s.dq; }, 0, {}},
@@ -45,14 +49,18 @@ std::vector<LibraryTerm> termLibrary(double q_comp, double q_reb) {
   for (double frac : {0.2, 0.4, 0.6, 0.8}) {
     if (q_comp > 0) {
       const double g = asPrinted(frac * q_comp);  // so the proposal is the term simulated
-      lib.push_back({"max(q - " + num(g) + ", 0)", "N/m", [g](const S& s) { return std::max(s.q - g, 0.0); }, g, "max(q - g, 0)"});
-      lib.push_back({"max(q - " + num(g) + ", 0)^2", "N/m^2", [g](const S& s) { return std::pow(std::max(s.q - g, 0.0), 2); }, g,
+      lib.push_back({"max(q - " + num(g) + ", 0)", "N/m",
+                     [g](const S& s) { return std::max(s.q - g, 0.0); }, g, "max(q - g, 0)"});
+      lib.push_back({"max(q - " + num(g) + ", 0)^2", "N/m^2",
+                     [g](const S& s) { return std::pow(std::max(s.q - g, 0.0), 2); }, g,
                      "max(q - g, 0)^2"});
     }
     if (q_reb > 0) {
       const double g = asPrinted(frac * q_reb);
-      lib.push_back({"max(-q - " + num(g) + ", 0)", "N/m", [g](const S& s) { return std::max(-s.q - g, 0.0); }, g, "max(-q - g, 0)"});
-      lib.push_back({"max(-q - " + num(g) + ", 0)^2", "N/m^2", [g](const S& s) { return std::pow(std::max(-s.q - g, 0.0), 2); }, g,
+      lib.push_back({"max(-q - " + num(g) + ", 0)", "N/m",
+                     [g](const S& s) { return std::max(-s.q - g, 0.0); }, g, "max(-q - g, 0)"});
+      lib.push_back({"max(-q - " + num(g) + ", 0)^2", "N/m^2",
+                     [g](const S& s) { return std::pow(std::max(-s.q - g, 0.0), 2); }, g,
                      "max(-q - g, 0)^2"});
     }
   }
@@ -74,10 +82,13 @@ SubsetFit bestSubsetByBic(const Eigen::MatrixXd& G, const Eigen::VectorXd& r, in
     Eigen::VectorXd bb(k);
     for (long i = 0; i < k; ++i) {
       bb[i] = b[static_cast<long>(s[static_cast<std::size_t>(i)])];
-      for (long j = 0; j < k; ++j) A(i, j) = gram(static_cast<long>(s[static_cast<std::size_t>(i)]), static_cast<long>(s[static_cast<std::size_t>(j)]));
+      for (long j = 0; j < k; ++j)
+        A(i, j) = gram(static_cast<long>(s[static_cast<std::size_t>(i)]),
+                       static_cast<long>(s[static_cast<std::size_t>(j)]));
     }
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(A);
-    if (ldlt.info() != Eigen::Success || ldlt.rcond() < 1e-10) return std::numeric_limits<double>::infinity();
+    if (ldlt.info() != Eigen::Success || ldlt.rcond() < 1e-10)
+      return std::numeric_limits<double>::infinity();
     const Eigen::VectorXd c = ldlt.solve(bb);
     if (coef) *coef = c;
     return r.squaredNorm() - bb.dot(c);
@@ -118,14 +129,23 @@ std::string ProposedTerm::toml() const {
   const double far = 5.0 * coefficient;
   std::string g;
   if (gap > 0)
-    g = ", g = { value = " + num(gap) + ", unit = \"m\", lower = " + num(0.5 * gap) + ", upper = " + num(2 * gap) + ", shape = true }";
-  return "[user_effects." + name + "]\nelement = \"strut\"\nforce = \"" + force + "\"\nparameters = { a = { value = 0, unit = \"" + unit +
-         "\", lower = " + num(std::min(0.0, far)) + ", upper = " + num(std::max(0.0, far)) + " }" + g + " }\n";
+    g = ", g = { value = " + num(gap) + ", unit = \"m\", lower = " + num(0.5 * gap) +
+        ", upper = " + num(2 * gap) + ", shape = true }";
+  return "[user_effects." + name + "]\nelement = \"strut\"\nforce = \"" + force +
+         "\"\nparameters = { a = { value = 0, unit = \"" + unit +
+         "\", lower = " + num(std::min(0.0, far)) + ", upper = " + num(std::max(0.0, far)) + " }" +
+         g + " }\n";
 }
 
 nlohmann::json ProposedTerm::toJson() const {
-  return {{"name", name}, {"force", force}, {"unit", unit}, {"gap_m", gap}, {"coefficient", coefficient}, {"delta_bic", delta_bic},
-          {"explained_fraction", explained}, {"toml", toml()}};
+  return {{"name", name},
+          {"force", force},
+          {"unit", unit},
+          {"gap_m", gap},
+          {"coefficient", coefficient},
+          {"delta_bic", delta_bic},
+          {"explained_fraction", explained},
+          {"toml", toml()}};
 }
 
 }  // namespace dtwin::diag

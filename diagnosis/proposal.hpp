@@ -21,7 +21,8 @@ struct StrutSample {
 };
 
 struct LibraryTerm {
-  std::string expr;  ///< in the strut variables q, v, dq, dv (subsystems/user_effect.hpp), e.g. "max(q - 0.012, 0)^2"
+  std::string expr;  ///< in the strut variables q, v, dq, dv (subsystems/user_effect.hpp), e.g.
+                     ///< "max(q - 0.012, 0)^2"
   std::string unit;  ///< of its coefficient a (the force a·TERM is in N)
   std::function<double(const StrutSample&)> f;  ///< the same term, to size its probe
   /// Knees: the gap g [m] the expression writes as a number; the pasted table writes `g_expr`
@@ -40,23 +41,25 @@ std::vector<LibraryTerm> termLibrary(double q_comp, double q_reb);
 /// The best subset S (|S| ≤ max_terms) of the columns of G for the residual r by BIC = ‖r − G_S c‖²
 /// + |S| ln n (r in noise units, so the SSE is a χ²). Exhaustive over every subset.
 struct SubsetFit {
-  std::vector<std::size_t> chosen;   ///< column indices, ascending; empty: nothing beats the empty model
-  std::vector<double> coef;          ///< least-squares coefficients of the chosen columns
-  double sse_empty = 0, sse = 0;     ///< ‖r‖² and the chosen subset's SSE
+  std::vector<std::size_t>
+      chosen;                ///< column indices, ascending; empty: nothing beats the empty model
+  std::vector<double> coef;  ///< least-squares coefficients of the chosen columns
+  double sse_empty = 0, sse = 0;  ///< ‖r‖² and the chosen subset's SSE
   double bic_empty = 0, bic = 0;
-  std::vector<double> drop_sse;      ///< per chosen column: the SSE of the subset without it
+  std::vector<double> drop_sse;  ///< per chosen column: the SSE of the subset without it
 };
 SubsetFit bestSubsetByBic(const Eigen::MatrixXd& G, const Eigen::VectorXd& r, int max_terms);
 
 /// One proposed term, ready to paste.
 struct ProposedTerm {
-  std::string name;          ///< proposed_1, ...
-  std::string force;         ///< "a * (TERM)", a knee's gap written g
-  std::string unit;          ///< of a
-  double gap = 0;            ///< a knee's g [m] (a shape parameter in the table); 0: none
-  double coefficient = 0;    ///< the linearised estimate of a
-  double delta_bic = 0;      ///< BIC without this term − BIC with it, negated: < 0 favours the term
-  double explained = 0;      ///< share of the residual's excess over the noise it removes (alone, given the others)
+  std::string name;        ///< proposed_1, ...
+  std::string force;       ///< "a * (TERM)", a knee's gap written g
+  std::string unit;        ///< of a
+  double gap = 0;          ///< a knee's g [m] (a shape parameter in the table); 0: none
+  double coefficient = 0;  ///< the linearised estimate of a
+  double delta_bic = 0;    ///< BIC without this term − BIC with it, negated: < 0 favours the term
+  double explained =
+      0;  ///< share of the residual's excess over the noise it removes (alone, given the others)
   /// The [user_effects.NAME] table: a = { value = 0, unit, prior [0, 5 â] (or [5 â, 0]) }, and a
   /// knee's g = { value = gap, unit = "m", range [gap / 2, 2 gap], shape = true }.
   std::string toml() const;

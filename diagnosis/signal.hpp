@@ -19,7 +19,6 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
-#include <complex>
 #include <string>
 #include <vector>
 
@@ -41,7 +40,6 @@ struct Spectrum {
   std::vector<double> value;
 };
 
-
 /// One-sided Welch power spectral density [unit²/Hz] of x sampled at fs_hz [W67].
 ///
 /// x is cut into K segments of L samples with 50 % overlap (hop L/2; K = 1 + ⌊(N − L)/(L/2)⌋,
@@ -62,24 +60,27 @@ Spectrum welchPsd(const std::vector<double>& x, double fs_hz, int segment);
 /// linear filtering of x; for independent x and y, E[C] ≈ 1/K (the estimator's bias floor). Bins
 /// where P_xx·P_yy vanishes (e.g. DC after mean removal of a constant) get C = 0.
 /// Throws if the sizes differ, or as welchPsd.
-Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment);
+Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, double fs_hz,
+                   int segment);
 
 /// The Welch auto and cross spectra of two records (frequency_response.hpp's H1 estimate and
 /// coherence are made of them), with the settings and scaling of welchPsd:
 /// pxx = welchPsd(x), pyy = welchPsd(y), pxy(f_k) = c_k / (K · fs · U) · Σ_segments conj(X_k) Y_k.
 struct CrossSpectra {
   std::vector<double> freq_hz;
-  std::vector<double> pxx, pyy;            ///< [x unit²/Hz], [y unit²/Hz]
-  std::vector<std::complex<double>> pxy;   ///< [x unit · y unit/Hz]
-  int segment = 0;                         ///< L, the segment length used
-  int segments = 0;                        ///< K
+  std::vector<double> pxx, pyy;           ///< [x unit²/Hz], [y unit²/Hz]
+  std::vector<std::complex<double>> pxy;  ///< [x unit · y unit/Hz]
+  int segment = 0;                        ///< L, the segment length used
+  int segments = 0;                       ///< K
   /// The effective number of independent averages, n_d = ν_W / 2 with ν_W the equivalent degrees
-  /// of freedom of the Welch PSD (see bandAnalysis): ≈ 0.95 K for Hann at 50 % overlap (1 for K = 1).
+  /// of freedom of the Welch PSD (see bandAnalysis): ≈ 0.95 K for Hann at 50 % overlap (1 for K =
+  /// 1).
   double averages = 0;
 };
 
 /// welchPsd of x and y and their cross spectrum, in one pass. Throws as coherence.
-CrossSpectra welchCrossSpectra(const std::vector<double>& x, const std::vector<double>& y, double fs_hz, int segment);
+CrossSpectra welchCrossSpectra(const std::vector<double>& x, const std::vector<double>& y,
+                               double fs_hz, int segment);
 /// The phase of pxy is y's lead over x: y(t) = x(t + τ) gives arg pxy = 2π f τ, and pxy / pxx is
 /// the H1 estimate of the frequency response from x to y.
 
@@ -88,8 +89,8 @@ CrossSpectra welchCrossSpectra(const std::vector<double>& x, const std::vector<d
 int welchSegmentFor(std::size_t n);
 
 /// ∫_{f_lo}^{f_hi} S(f) df over a spectrum on the grid of welchPsd, by the trapezoid rule written
-/// on the bins: Σ_{k: f_lo <= f_k < f_hi} S_k·Δ_k with Δ_k = Δf, except Δ_0 = Δ_M = Δf/2 (the DC and
-/// Nyquist bins are half inside [0, fs/2]). Bands that partition [0, fs/2] thus add up to the
+/// on the bins: Σ_{k: f_lo <= f_k < f_hi} S_k·Δ_k with Δ_k = Δf, except Δ_0 = Δ_M = Δf/2 (the DC
+/// and Nyquist bins are half inside [0, fs/2]). Bands that partition [0, fs/2] thus add up to the
 /// trapezoid integral over the whole spectrum. A band with f_hi >= f_M includes the last bin.
 /// Returns 0 when no bin falls in the band. Throws if the spectrum has fewer than 2 bins, its
 /// sizes differ, or f_hi < f_lo.
@@ -107,7 +108,8 @@ struct Band {
 
 /// The standard bands of a road vehicle: "body" 0.5–2 Hz (sprung-mass heave/pitch/roll),
 /// "mid" 2–8 Hz, "wheel_hop" 8–20 Hz (unsprung-mass modes), "high" 20 Hz–fs/2. Bands are clipped
-/// at the Nyquist frequency fs/2; a band starting at or above fs/2 is omitted. Throws if fs_hz <= 0.
+/// at the Nyquist frequency fs/2; a band starting at or above fs/2 is omitted. Throws if fs_hz <=
+/// 0.
 std::vector<Band> vehicleBands(double fs_hz);
 
 /// The verdict on one band of a residual.
@@ -126,14 +128,16 @@ struct BandReport {
 /// Under H0 (residual = white noise of variance σ² = noise_variance) each Welch bin estimate is
 /// P̂_k ~ P·χ²_{ν_W}/ν_W with, for the Hann window at 50 % overlap [W67; PW93 eq. 292b],
 ///
-///     ν_W = 2K / (1 + 2 Σ_{m=1}^{K−1} (1 − m/K) ρ²(m)),   ρ(m) = Σ_n w[n] w[n + m·L/2] / Σ_n w[n]²,
+///     ν_W = 2K / (1 + 2 Σ_{m=1}^{K−1} (1 − m/K) ρ²(m)),   ρ(m) = Σ_n w[n] w[n + m·L/2] / Σ_n
+///     w[n]²,
 ///
 /// the correlation of the white-noise periodograms of segments m hops apart. For the periodic Hann
 /// window ρ(1) = 1/6 (the sum runs over the L/2 samples two neighbouring segments share) and
 /// ρ(m>1) = 0, so ν_W ≈ 1.89 K, as [PW93 eq. 292c] (FrfEstimate.QuarterCarOnARandomRoad... checks
-/// n_d = ν_W/2 against the scatter of an H1 estimate). Summing the M_b bins of a band, the power estimates of neighbouring Hann
-/// bins are correlated too (ρ² = 4/9 adjacent, 1/36 two apart), so a band holds about M_b/1.94
-/// independent bins; only every second bin is counted: ν = ν_W · max(1, M_b/2). Flagged when
+/// n_d = ν_W/2 against the scatter of an H1 estimate). Summing the M_b bins of a band, the power
+/// estimates of neighbouring Hann bins are correlated too (ρ² = 4/9 adjacent, 1/36 two apart), so a
+/// band holds about M_b/1.94 independent bins; only every second bin is counted: ν = ν_W · max(1,
+/// M_b/2). Flagged when
 ///
 ///     residual_power / noise_power > χ²_{ν, 1−α} / ν,
 ///
@@ -147,24 +151,26 @@ struct BandReport {
 /// `noise_acf` (optional) is the noise's autocorrelation in lags of a sample, ρ(0), ρ(1), ...
 /// (gridNoiseAutocorrelation): the floor is then 2σ²/fs (ρ(0) + 2 Σ_m ρ(m) cos(2π f m/fs)) instead
 /// of white; empty: white. Throws if noise_acf[0] is not > 0.
-std::vector<BandReport> bandAnalysis(const std::vector<double>& residual, double fs_hz, double noise_variance,
-                                     const std::vector<double>* input, int segment, double alpha = 0.01,
+std::vector<BandReport> bandAnalysis(const std::vector<double>& residual, double fs_hz,
+                                     double noise_variance, const std::vector<double>* input,
+                                     int segment, double alpha = 0.01,
                                      const std::vector<double>& noise_acf = {});
 
 /// One bin of a force-state map.
 struct Bin {
-  double lo, hi;   ///< smallest and largest state value in the bin
-  double centre;   ///< mean state in the bin
-  double mean;     ///< mean residual in the bin
-  double se;       ///< standard error of that mean, s/√n with the sample deviation s (n−1); NaN if n < 2
-  long count;      ///< samples in the bin
+  double lo, hi;  ///< smallest and largest state value in the bin
+  double centre;  ///< mean state in the bin
+  double mean;    ///< mean residual in the bin
+  double se;  ///< standard error of that mean, s/√n with the sample deviation s (n−1); NaN if n < 2
+  long count;  ///< samples in the bin
 };
 
 /// Force-state map: the residual averaged in `bins` equal-count (quantile) bins of the state.
 /// Samples are sorted by state (stable) and bin b gets the sorted samples [⌊b·N/B⌋, ⌊(b+1)·N/B⌋),
 /// so counts differ by at most one; tied state values may fall in two neighbouring bins.
 /// Throws if sizes differ, bins < 1 or bins > N.
-std::vector<Bin> binByState(const std::vector<double>& state, const std::vector<double>& residual, int bins);
+std::vector<Bin> binByState(const std::vector<double>& state, const std::vector<double>& residual,
+                            int bins);
 
 /// One candidate signature fitted to a force-state map.
 struct SignatureFit {
@@ -181,7 +187,8 @@ struct SignatureFit {
 ///   "linear" q (a stiffness error).
 /// Returned sorted by explained_fraction, best first. A feature that is constant over the data
 /// gets b = 0 (only the intercept). Throws if sizes differ or there are fewer than 3 samples.
-std::vector<SignatureFit> fitDeflectionSignatures(const std::vector<double>& q, const std::vector<double>& r);
+std::vector<SignatureFit> fitDeflectionSignatures(const std::vector<double>& q,
+                                                  const std::vector<double>& r);
 
 /// Least squares r ≈ a + b·f(v) for features of a rate-like state v [m/s], v > 0 in compression:
 ///   "step"              tanh(v/v_s), v_s = 0.05·std(v) (Coulomb friction, a smoothed sign(v)),
@@ -189,13 +196,14 @@ std::vector<SignatureFit> fitDeflectionSignatures(const std::vector<double>& q, 
 ///   "compression_slope" v·[v > 0] (a compression damping error),
 ///   "linear"            v (a symmetric damping error).
 /// Sorted by explained_fraction, best first; knee_at is NaN. Throws as fitDeflectionSignatures.
-std::vector<SignatureFit> fitRateSignatures(const std::vector<double>& v, const std::vector<double>& r);
+std::vector<SignatureFit> fitRateSignatures(const std::vector<double>& v,
+                                            const std::vector<double>& r);
 
 /// A time window where the standardised residual is large.
 struct Window {
   double t_begin, t_end;  ///< times of the first and last sample of the window [s]
   double peak_z;          ///< max |z| in the window
-  double share;           ///< Σ_{window} z² / Σ_{record} z² (every sample between t_begin and t_end)
+  double share;  ///< Σ_{window} z² / Σ_{record} z² (every sample between t_begin and t_end)
 };
 
 /// Windows in time where |z| exceeds `threshold`: maximal runs of consecutive samples with
@@ -204,24 +212,25 @@ struct Window {
 /// t_end − t_begin < min_length_s are then dropped. Chronological order. t must be strictly
 /// increasing. Throws if sizes differ, t is not increasing, or threshold, merge_gap_s or
 /// min_length_s is negative.
-std::vector<Window> exceedanceWindows(const std::vector<double>& t, const std::vector<double>& z, double threshold,
-                                      double merge_gap_s, double min_length_s);
+std::vector<Window> exceedanceWindows(const std::vector<double>& t, const std::vector<double>& z,
+                                      double threshold, double merge_gap_s, double min_length_s);
 
 /// How many windows a record has and how much of it they hold (see rankWindows).
 struct WindowSummary {
-  std::size_t found = 0;      ///< windows at the requested merge gap (exceedanceWindows)
-  std::size_t merged = 0;     ///< windows once neighbours are merged (= found when they are few)
-  std::size_t listed = 0;     ///< the largest merged windows, the ones listed
-  double merge_gap_s = 0;     ///< the merge gap of the merged windows (the requested one when few)
-  double time_share = 0;      ///< share of the record's samples inside the found windows
-  double merged_share = 0;    ///< Σ share of the merged windows
-  double listed_share = 0;    ///< Σ share of the listed windows
+  std::size_t found = 0;    ///< windows at the requested merge gap (exceedanceWindows)
+  std::size_t merged = 0;   ///< windows once neighbours are merged (= found when they are few)
+  std::size_t listed = 0;   ///< the largest merged windows, the ones listed
+  double merge_gap_s = 0;   ///< the merge gap of the merged windows (the requested one when few)
+  double time_share = 0;    ///< share of the record's samples inside the found windows
+  double merged_share = 0;  ///< Σ share of the merged windows
+  double listed_share = 0;  ///< Σ share of the listed windows
 };
 
 /// The windows of a record, ranked.
 struct WindowRanking {
   std::vector<Window> found;   ///< exceedanceWindows at the requested merge gap, chronological
-  std::vector<Window> ranked;  ///< merged, largest share first (ties: earlier first); the first summary.listed are listed
+  std::vector<Window> ranked;  ///< merged, largest share first (ties: earlier first); the first
+                               ///< summary.listed are listed
   WindowSummary summary;
 };
 
@@ -229,7 +238,8 @@ struct WindowRanking {
 struct WindowRankOptions {
   std::size_t max_merged = 200;  ///< merge neighbours while more windows than this remain
   std::size_t max_listed = 20;   ///< list at most this many
-  double listed_share = 0.8;     ///< list the fewest windows holding this share of the merged windows' share
+  double listed_share =
+      0.8;  ///< list the fewest windows holding this share of the merged windows' share
 };
 
 /// The windows of exceedanceWindows ranked by their share of the residual, merged and cut to the
@@ -245,8 +255,9 @@ struct WindowRankOptions {
 ///    `listed_share` of the merged windows' share are listed, at most max_listed.
 /// time_share counts the samples from the first to the last of each found window over all samples.
 /// Throws as exceedanceWindows, and if max_merged or max_listed is 0 or listed_share ∉ (0, 1].
-WindowRanking rankWindows(const std::vector<double>& t, const std::vector<double>& z, double threshold, double merge_gap_s,
-                          double min_length_s, const WindowRankOptions& options = {});
+WindowRanking rankWindows(const std::vector<double>& t, const std::vector<double>& z,
+                          double threshold, double merge_gap_s, double min_length_s,
+                          const WindowRankOptions& options = {});
 
 /// A uniform time base for the spectrum of a record sampled at strictly increasing times t
 /// (docs/measurements.md, "Sample times"):
@@ -258,21 +269,23 @@ WindowRanking rankWindows(const std::vector<double>& t, const std::vector<double
 ///    (the whole record when there is none);
 ///  * **steady rate**: the stretch is cut into blocks of max(64, n/16) steps; the rate is steady
 ///    when every block's mean step is within max(5 %, 4 σ/√B) of the stretch's mean step dt (σ =
-///    1.4826 MAD, B the block's steps): jitter averages out over a block, a change of rate does not;
+///    1.4826 MAD, B the block's steps): jitter averages out over a block, a change of rate does
+///    not;
 ///  * **uniform**: every step within 1e-6 of dt: the samples are used as they are;
 ///  * **resampled**: otherwise, onto the grid t[begin] + k·dt, k = 0 .. end − begin − 1, by linear
 ///    interpolation between the measured times (onGrid).
 struct UniformGrid {
-  std::size_t begin = 0, end = 0;  ///< the stretch of t used, [begin, end)
-  std::size_t gaps = 0;            ///< steps of the whole record counted as gaps
-  double gap_step_s = 0;           ///< a step longer than this is a gap
-  double dt = 0;                   ///< the grid's step: the stretch's mean step [s]
-  double jitter = 0;               ///< max |step − dt| / dt within the stretch
-  bool steady = true;              ///< false: the rate changes within the stretch (no grid)
+  std::size_t begin = 0, end = 0;         ///< the stretch of t used, [begin, end)
+  std::size_t gaps = 0;                   ///< steps of the whole record counted as gaps
+  double gap_step_s = 0;                  ///< a step longer than this is a gap
+  double dt = 0;                          ///< the grid's step: the stretch's mean step [s]
+  double jitter = 0;                      ///< max |step − dt| / dt within the stretch
+  bool steady = true;                     ///< false: the rate changes within the stretch (no grid)
   double rate_lo_hz = 0, rate_hi_hz = 0;  ///< the slowest and fastest block of the stretch [Hz]
-  bool resampled = false;          ///< the grid is interpolated (index, weight below)
-  std::vector<std::size_t> index;  ///< resampled: grid time k lies in [t[index[k]], t[index[k] + 1]]
-  std::vector<double> weight;      ///< resampled: its place u ∈ [0, 1] there
+  bool resampled = false;                 ///< the grid is interpolated (index, weight below)
+  std::vector<std::size_t>
+      index;                   ///< resampled: grid time k lies in [t[index[k]], t[index[k] + 1]]
+  std::vector<double> weight;  ///< resampled: its place u ∈ [0, 1] there
   std::size_t size() const { return end - begin; }
 };
 

@@ -1,7 +1,7 @@
 // The column map of a log import (log_import.hpp ImportMapping): the mapping file's reader, the
 // command line's column and separator forms, the units and their factors to SI, the masks.
-#include "io/log_import.hpp"
 #include "io/import_units.hpp"
+#include "io/log_import.hpp"
 
 #include <array>
 #include <cctype>
@@ -44,11 +44,14 @@ ImportMask readMask(const toml::table& t, const std::string& file, const std::st
   TableReader r(t, file, field);
   ImportMask k;
   const auto col = r.string("column");
-  if (!col || col->empty()) throw InputError(r.where("column"), "is required (the log's column the mask reads)");
+  if (!col || col->empty())
+    throw InputError(r.where("column"), "is required (the log's column the mask reads)");
   k.source.column = *col;
   k.source.where = r.where("column");
   const auto unit = r.string("unit");
-  if (!unit) throw InputError(r.where("unit"), "is required (the unit of the column and of the thresholds, e.g. \"rad/s\")");
+  if (!unit)
+    throw InputError(r.where("unit"),
+                     "is required (the unit of the column and of the thresholds, e.g. \"rad/s\")");
   k.source.unit = *unit;
   const auto [factor, si] = anyUnit(*unit, r.where("unit"));
   k.si = si;
@@ -57,13 +60,20 @@ ImportMask readMask(const toml::table& t, const std::string& file, const std::st
   if (k.source.scale == 0) throw InputError(r.where("scale"), "must not be 0");
   for (const char* side : {"above", "below"})
     if (auto v = r.number(side)) {
-      if (*v < 0) throw InputError(r.where(side), "must be >= 0 (a mask compares the magnitude |value|), got " + formatNumber(*v));
+      if (*v < 0)
+        throw InputError(
+            r.where(side),
+            "must be >= 0 (a mask compares the magnitude |value|), got " + formatNumber(*v));
       (std::string(side) == "above" ? k.above : k.below) = *v * factor;
     }
-  if (!k.above && !k.below) throw InputError(r.where("above"), "a mask needs above or below (or both)");
+  if (!k.above && !k.below)
+    throw InputError(r.where("above"), "a mask needs above or below (or both)");
   k.pad_s = r.number("pad_s", 0.0);
   if (!(k.pad_s >= 0 && k.pad_s <= 60))
-    throw InputError(r.where("pad_s"), "must lie in [0, 60] s (rows this close to a masked one are masked too), got " + formatNumber(k.pad_s));
+    throw InputError(
+        r.where("pad_s"),
+        "must lie in [0, 60] s (rows this close to a masked one are masked too), got " +
+            formatNumber(k.pad_s));
   r.finish();
   return k;
 }
@@ -74,7 +84,8 @@ ImportColumn readColumn(TableReader& r, const std::string& key, const std::strin
   if (const toml::table* t = r.isTable(key) ? r.table(key) : nullptr) {
     TableReader cr(*t, r.file(), r.field(key));
     const auto col = cr.string("column");
-    if (!col || col->empty()) throw InputError(cr.where("column"), "is required (the log's column name)");
+    if (!col || col->empty())
+      throw InputError(cr.where("column"), "is required (the log's column name)");
     c.column = *col;
     c.unit = cr.string("unit").value_or(default_unit);
     if (cr.has("unit")) c.unit_where = cr.where("unit");
@@ -88,8 +99,11 @@ ImportColumn readColumn(TableReader& r, const std::string& key, const std::strin
   const auto s = r.string(key);  // the short form: just the column name
   c.column = s.value_or("");
   c.unit = default_unit;
-  if (c.column.empty()) throw InputError(r.where(key), "must be a column name or { column, unit, offset, scale }");
-  if (c.unit.empty()) throw InputError(r.where(key), "needs a unit: write { column = \"" + c.column + "\", unit = \"...\" }");
+  if (c.column.empty())
+    throw InputError(r.where(key), "must be a column name or { column, unit, offset, scale }");
+  if (c.unit.empty())
+    throw InputError(r.where(key),
+                     "needs a unit: write { column = \"" + c.column + "\", unit = \"...\" }");
   return c;
 }
 
@@ -98,23 +112,30 @@ ImportColumn readColumn(TableReader& r, const std::string& key, const std::strin
 char parseSeparator(const std::string& text, const std::string& where) {
   if (text == "tab" || text == "\t") return '\t';
   if (text == "whitespace" || text == " ") return ' ';
-  if (text.size() != 1 || text == "\"" || text == "\n" || text == "\r" || std::isalnum(static_cast<unsigned char>(text[0])) ||
-      text == "." || text == "-" || text == "+")
-    throw InputError(where, "must be one character such as \",\", \";\" or \"|\", or \"tab\" or \"whitespace\" (a run of spaces and tabs), got \"" +
-                                text + "\"");
+  if (text.size() != 1 || text == "\"" || text == "\n" || text == "\r" ||
+      std::isalnum(static_cast<unsigned char>(text[0])) || text == "." || text == "-" ||
+      text == "+")
+    throw InputError(where,
+                     "must be one character such as \",\", \";\" or \"|\", or \"tab\" or "
+                     "\"whitespace\" (a run of spaces and tabs), got \"" +
+                         text + "\"");
   return text[0];
 }
 
 double unitFactor(const std::string& unit, const std::string& si, const std::string& where) {
   for (const auto& u : kUnits)
     if (unit == u.name) {
-      if (si != u.si) throw InputError(where, "unit '" + unit + "' is in " + u.si + ", but this needs " + si + " (" + unitList(si) + ")");
+      if (si != u.si)
+        throw InputError(where, "unit '" + unit + "' is in " + u.si + ", but this needs " + si +
+                                    " (" + unitList(si) + ")");
       return u.factor;
     }
-  throw InputError(where, "unknown unit '" + unit + "' (known for " + si + ": " + unitList(si) + ")");
+  throw InputError(where,
+                   "unknown unit '" + unit + "' (known for " + si + ": " + unitList(si) + ")");
 }
 
-ImportColumn parseImportColumn(const std::string& text, const std::string& flag, const std::string& default_unit) {
+ImportColumn parseImportColumn(const std::string& text, const std::string& flag,
+                               const std::string& default_unit) {
   const std::vector<std::string> parts = splitOn(text, ':');
   if (parts[0].empty() || parts.size() > 4)
     throw InputError(flag, "expects COLUMN[:UNIT[:OFFSET[:SCALE]]], got '" + text + "'");
@@ -136,7 +157,9 @@ ImportColumn parseImportColumn(const std::string& text, const std::string& flag,
 std::string ImportMask::text() const {
   std::string s;
   if (above) s = "|" + source.column + "| > " + formatNumber(*above) + " " + si;
-  if (below) s += (s.empty() ? "" : " or ") + std::string("|") + source.column + "| < " + formatNumber(*below) + " " + si;
+  if (below)
+    s += (s.empty() ? "" : " or ") + std::string("|") + source.column + "| < " +
+         formatNumber(*below) + " " + si;
   if (pad_s > 0) s += " (and " + formatNumber(pad_s) + " s around)";
   return s;
 }
@@ -150,14 +173,18 @@ void readWindowAndMasks(TableReader& r, const std::string& path, ImportMapping& 
       throw InputError(m.window_where, "must be [start, end] in seconds from the log's first row");
     m.window_s = std::array<double, 2>{*(*w)[0].value<double>(), *(*w)[1].value<double>()};
     if (!((*m.window_s)[0] >= 0 && (*m.window_s)[0] < (*m.window_s)[1]))
-      throw InputError(m.window_where, "must be [start, end] with 0 <= start < end, got [" + formatNumber((*m.window_s)[0]) + ", " +
+      throw InputError(m.window_where, "must be [start, end] with 0 <= start < end, got [" +
+                                           formatNumber((*m.window_s)[0]) + ", " +
                                            formatNumber((*m.window_s)[1]) + "]");
   }
   if (r.has("run_in_s")) {
     m.run_in_s = *r.number("run_in_s");
     if (!(m.run_in_s >= 0 && m.run_in_s <= 3600))
-      throw InputError(r.where("run_in_s"), "must lie in [0, 3600] s, got " + formatNumber(m.run_in_s));
-    if (!m.window_s) throw InputError(r.where("run_in_s"), "needs window_s (the run-in is the log before the window)");
+      throw InputError(r.where("run_in_s"),
+                       "must lie in [0, 3600] s, got " + formatNumber(m.run_in_s));
+    if (!m.window_s)
+      throw InputError(r.where("run_in_s"),
+                       "needs window_s (the run-in is the log before the window)");
   }
   if (r.isTable("exclude")) {
     m.exclude.push_back(readMask(*r.table("exclude"), path, r.field("exclude")));
@@ -165,7 +192,9 @@ void readWindowAndMasks(TableReader& r, const std::string& path, ImportMapping& 
     for (std::size_t i = 0; i < ex->size(); ++i) {
       const auto* t = (*ex)[i].as_table();
       const std::string field = r.field("exclude") + "[" + std::to_string(i) + "]";
-      if (!t) throw InputError(r.where("exclude"), field + " must be a table { column, unit, above, below }");
+      if (!t)
+        throw InputError(r.where("exclude"),
+                         field + " must be a table { column, unit, above, below }");
       m.exclude.push_back(readMask(*t, path, field));
     }
   }
@@ -178,7 +207,8 @@ ImportMapping readImportMapping(const std::string& path) {
   try {
     root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
+    throw InputError(path + ":" + std::to_string(e.source().begin.line),
+                     "malformed TOML: " + std::string(e.description()));
   }
   TableReader top(root, path, "");
   ImportMapping m;
@@ -188,13 +218,19 @@ ImportMapping readImportMapping(const std::string& path) {
   TableReader r(*it, path, "import");
   if (!r.has("time")) throw InputError(r.where("time"), "is required (the log's time column)");
   m.time = readColumn(r, "time", "s");
-  if (!r.has("speed")) throw InputError(r.where("speed"), "is required (the log's speed column, e.g. { column = \"speed\", unit = \"km/h\" })");
+  if (!r.has("speed"))
+    throw InputError(
+        r.where("speed"),
+        "is required (the log's speed column, e.g. { column = \"speed\", unit = \"km/h\" })");
   m.speed = readColumn(r, "speed", "");
   if (r.has("road")) m.road = readColumn(r, "road", "");
   if (r.has("road_left") || r.has("road_right")) {
-    if (m.road) throw InputError(r.where("road_left"), "give either road (both tracks) or road_left and road_right");
+    if (m.road)
+      throw InputError(r.where("road_left"),
+                       "give either road (both tracks) or road_left and road_right");
     if (!r.has("road_left") || !r.has("road_right"))
-      throw InputError(r.where(r.has("road_left") ? "road_right" : "road_left"), "is required with the other track's column");
+      throw InputError(r.where(r.has("road_left") ? "road_right" : "road_left"),
+                       "is required with the other track's column");
     m.road_left = readColumn(r, "road_left", "");
     m.road_right = readColumn(r, "road_right", "");
   }
@@ -202,44 +238,57 @@ ImportMapping readImportMapping(const std::string& path) {
     m.highpass_given = true;
     m.highpass_hz = *r.number("highpass_hz");
     if (!(m.highpass_hz >= 1e-3 && m.highpass_hz <= 10))
-      throw InputError(r.where("highpass_hz"), "must lie in [1e-3, 10] Hz, got " + formatNumber(m.highpass_hz));
+      throw InputError(r.where("highpass_hz"),
+                       "must lie in [1e-3, 10] Hz, got " + formatNumber(m.highpass_hz));
   }
   if (r.has("speed_lowpass_hz")) {
     m.speed_lowpass_hz = *r.number("speed_lowpass_hz");
     if (!(m.speed_lowpass_hz >= 0.01 && m.speed_lowpass_hz <= 100))
-      throw InputError(r.where("speed_lowpass_hz"), "must lie in [0.01, 100] Hz, got " + formatNumber(m.speed_lowpass_hz));
+      throw InputError(r.where("speed_lowpass_hz"),
+                       "must lie in [0.01, 100] Hz, got " + formatNumber(m.speed_lowpass_hz));
   }
   if (auto sep = r.string("separator")) m.separator = parseSeparator(*sep, r.where("separator"));
   m.decimal_comma = r.boolean("decimal_comma").value_or(false);
   if (auto k = r.integer("header_line")) {
-    if (*k < 1 || *k > 1000) throw InputError(r.where("header_line"), "must lie in [1, 1000], got " + std::to_string(*k));
+    if (*k < 1 || *k > 1000)
+      throw InputError(r.where("header_line"), "must lie in [1, 1000], got " + std::to_string(*k));
     m.header_line = *k;
   }
   if (auto k = r.integer("skip_rows")) {
-    if (*k < 0 || *k > 1000) throw InputError(r.where("skip_rows"), "must lie in [0, 1000], got " + std::to_string(*k));
+    if (*k < 0 || *k > 1000)
+      throw InputError(r.where("skip_rows"), "must lie in [0, 1000], got " + std::to_string(*k));
     m.skip_rows = *k;
   }
   if (auto k = r.integer("max_dropout_rows")) {
-    if (*k < 0 || *k > 1000000) throw InputError(r.where("max_dropout_rows"), "must lie in [0, 1e6], got " + std::to_string(*k));
+    if (*k < 0 || *k > 1000000)
+      throw InputError(r.where("max_dropout_rows"),
+                       "must lie in [0, 1e6], got " + std::to_string(*k));
     m.max_dropout_rows = *k;
   }
   if (m.decimal_comma && m.separator == ',')
-    throw InputError(r.where("decimal_comma"), "needs a separator other than ',' (e.g. separator = \";\")");
+    throw InputError(r.where("decimal_comma"),
+                     "needs a separator other than ',' (e.g. separator = \";\")");
   readWindowAndMasks(r, path, m);
   const toml::array* chans = r.array("channels");
-  if (!chans || chans->empty()) throw InputError(r.where("channels"), "needs at least one [[import.channels]] (column, channel, unit)");
+  if (!chans || chans->empty())
+    throw InputError(r.where("channels"),
+                     "needs at least one [[import.channels]] (column, channel, unit)");
   for (std::size_t i = 0; i < chans->size(); ++i) {
     const auto* t = (*chans)[i].as_table();
     const std::string field = "import.channels[" + std::to_string(i) + "]";
-    if (!t) throw InputError(r.where("channels"), field + " must be a table (column, channel, unit)");
+    if (!t)
+      throw InputError(r.where("channels"), field + " must be a table (column, channel, unit)");
     TableReader cr(*t, path, field);
     ImportChannel c;
     const auto ch = cr.string("channel");
-    if (!ch || ch->empty()) throw InputError(cr.where("channel"), "is required (a channel of the twin or of a sensor, e.g. seat_mps2)");
+    if (!ch || ch->empty())
+      throw InputError(cr.where("channel"),
+                       "is required (a channel of the twin or of a sensor, e.g. seat_mps2)");
     c.channel = *ch;
     c.source.where = cr.where("column");
     const auto col = cr.string("column");
-    if (!col || col->empty()) throw InputError(cr.where("column"), "is required (the log's column name)");
+    if (!col || col->empty())
+      throw InputError(cr.where("column"), "is required (the log's column name)");
     c.source.column = *col;
     const auto unit = cr.string("unit");
     if (!unit) throw InputError(cr.where("unit"), "is required (" + unitList("") + ")");

@@ -22,18 +22,37 @@ struct Unit {
 };
 // Every unit a log may give, with the SI unit it converts to.
 const Unit kUnits[] = {
-    {"s", "s", 1.0},           {"ms", "s", 1e-3},          {"us", "s", 1e-6},         {"ns", "s", 1e-9},
+    {"s", "s", 1.0},
+    {"ms", "s", 1e-3},
+    {"us", "s", 1e-6},
+    {"ns", "s", 1e-9},
     {"clock", "s", 1.0},  // HH:MM:SS[.fff], optionally after a date (parseClockTime)
-    {"m/s", "m/s", 1.0},       {"mps", "m/s", 1.0},        {"km/h", "m/s", 1.0 / 3.6}, {"kmh", "m/s", 1.0 / 3.6},
-    {"kph", "m/s", 1.0 / 3.6}, {"mph", "m/s", 0.44704},    {"kn", "m/s", 1852.0 / 3600.0}, {"ft/s", "m/s", 0.3048},
+    {"m/s", "m/s", 1.0},
+    {"mps", "m/s", 1.0},
+    {"km/h", "m/s", 1.0 / 3.6},
+    {"kmh", "m/s", 1.0 / 3.6},
+    {"kph", "m/s", 1.0 / 3.6},
+    {"mph", "m/s", 0.44704},
+    {"kn", "m/s", 1852.0 / 3600.0},
+    {"ft/s", "m/s", 0.3048},
     {"mm/s", "m/s", 1e-3},
-    {"m", "m", 1.0},           {"mm", "m", 1e-3},          {"cm", "m", 1e-2},         {"in", "m", 0.0254},
-    {"m/s^2", "m/s^2", 1.0},   {"m/s2", "m/s^2", 1.0},     {"mps2", "m/s^2", 1.0},    {"g", "m/s^2", 9.80665},
+    {"m", "m", 1.0},
+    {"mm", "m", 1e-3},
+    {"cm", "m", 1e-2},
+    {"in", "m", 0.0254},
+    {"m/s^2", "m/s^2", 1.0},
+    {"m/s2", "m/s^2", 1.0},
+    {"mps2", "m/s^2", 1.0},
+    {"g", "m/s^2", 9.80665},
     {"ft/s^2", "m/s^2", 0.3048},
-    {"N", "N", 1.0},           {"kN", "N", 1e3},
-    {"rad", "rad", 1.0},       {"deg", "rad", kPi / 180.0},
-    {"rad/s^2", "rad/s^2", 1.0}, {"deg/s^2", "rad/s^2", kPi / 180.0},
-    {"rad/s", "rad/s", 1.0},   {"deg/s", "rad/s", kPi / 180.0},
+    {"N", "N", 1.0},
+    {"kN", "N", 1e3},
+    {"rad", "rad", 1.0},
+    {"deg", "rad", kPi / 180.0},
+    {"rad/s^2", "rad/s^2", 1.0},
+    {"deg/s^2", "rad/s^2", kPi / 180.0},
+    {"rad/s", "rad/s", 1.0},
+    {"deg/s", "rad/s", kPi / 180.0},
 };
 
 /// Every mapped column's factor to SI, resolved before a row is read (a wrong unit is named
@@ -58,8 +77,8 @@ struct LogRows {
 /// GROUP/NAME), its unit checked against the mapping's, on the time base of the time channel's
 /// group (others interpolated linearly onto it), with the CSV's checks. `provenance`: the groups
 /// and channels read, the resampling and the rows it dropped.
-LogRows readMdfRows(const std::string& bytes, const std::string& name, const ImportMapping& m, const ImportUnits& u,
-                    nlohmann::json& provenance);
+LogRows readMdfRows(const std::string& bytes, const std::string& name, const ImportMapping& m,
+                    const ImportUnits& u, nlohmann::json& provenance);
 
 /// A mask's unit: its factor to SI and the SI unit (import_mapping.cpp).
 std::pair<double, std::string> anyUnit(const std::string& unit, const std::string& where);

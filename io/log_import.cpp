@@ -5,9 +5,9 @@
 #include "io/mdf_log.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <cctype>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -20,10 +20,10 @@
 #include "common/json.hpp"
 #include "common/names.hpp"
 #include "common/statistics.hpp"
-#include "subsystems/time_road.hpp"
+#include "common/toml_reader.hpp"
 #include "io/provenance.hpp"
 #include "io/study.hpp"
-#include "common/toml_reader.hpp"
+#include "subsystems/time_road.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;
@@ -33,18 +33,21 @@ namespace dtwin {
 namespace {
 
 /// The index of `c`'s column in the header, or an InputError naming the log and the mapping field.
-std::size_t columnIndex(const std::vector<std::string>& header, const ImportColumn& c, const std::string& log_name) {
+std::size_t columnIndex(const std::vector<std::string>& header, const ImportColumn& c,
+                        const std::string& log_name) {
   std::size_t found = header.size();
   for (std::size_t i = 0; i < header.size(); ++i)
     if (header[i] == c.column) {
       if (found != header.size())
-        throw InputError(log_name + ":1", "column '" + c.column + "' appears twice in the header (" + c.where + ")");
+        throw InputError(log_name + ":1",
+                         "column '" + c.column + "' appears twice in the header (" + c.where + ")");
       found = i;
     }
   if (found == header.size()) {
     const std::string hint = closestName(c.column, header);
-    throw InputError(log_name + ":1", "no column '" + c.column + "' (" + c.where + ")" +
-                                          (hint.empty() ? std::string() : "; did you mean '" + hint + "'?"));
+    throw InputError(log_name + ":1",
+                     "no column '" + c.column + "' (" + c.where + ")" +
+                         (hint.empty() ? std::string() : "; did you mean '" + hint + "'?"));
   }
   return found;
 }
@@ -52,14 +55,16 @@ std::size_t columnIndex(const std::vector<std::string>& header, const ImportColu
 bool isMissing(std::string_view f) {
   if (f.empty()) return true;
   std::string s(f);
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   return s == "nan" || s == "na" || s == "n/a" || s == "null" || s == "-nan";
 }
 
 /// The base study's text with every relative path (the vehicle, a scenario's speed trace or road
 /// file) made absolute in place: the rest of the file (its order, which sets the assemblies, and
 /// its comments) is kept byte for byte.
-std::string absolutizedStudyText(const std::string& text, const toml::table& root, const fs::path& folder, const std::string& name) {
+std::string absolutizedStudyText(const std::string& text, const toml::table& root,
+                                 const fs::path& folder, const std::string& name) {
   struct Patch {
     std::size_t line, begin, end;  // 1-based line, [begin, end) 1-based columns
     std::string with;
@@ -71,7 +76,9 @@ std::string absolutizedStudyText(const std::string& text, const toml::table& roo
     if (!p.is_relative()) return;
     const auto& src = n->source();
     if (src.begin.line != src.end.line)
-      throw InputError(name + ":" + std::to_string(src.begin.line), "a path written over several lines cannot be rewritten: write it on one line");
+      throw InputError(
+          name + ":" + std::to_string(src.begin.line),
+          "a path written over several lines cannot be rewritten: write it on one line");
     std::string quoted = "\"";
     for (char c : (folder / p).lexically_normal().string()) {
       if (c == '\\' || c == '"') quoted += '\\';
@@ -89,12 +96,17 @@ std::string absolutizedStudyText(const std::string& text, const toml::table& roo
   std::vector<std::string> lines;
   std::istringstream in(text);
   for (std::string l; std::getline(in, l);) lines.push_back(l);
-  std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) { return a.line != b.line ? a.line > b.line : a.begin > b.begin; });
+  std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {
+    return a.line != b.line ? a.line > b.line : a.begin > b.begin;
+  });
   for (const auto& pt : patches) {
     std::string& l = lines.at(pt.line - 1);
     const std::size_t b = pt.begin - 1, e = pt.end - 1;
-    if (e > l.size() || e <= b || (l[b] != '"' && l[b] != '\'') || (l[e - 1] != '"' && l[e - 1] != '\''))
-      throw InputError(name + ":" + std::to_string(pt.line), "cannot locate the path on this line to make it absolute: write it as an absolute path");
+    if (e > l.size() || e <= b || (l[b] != '"' && l[b] != '\'') ||
+        (l[e - 1] != '"' && l[e - 1] != '\''))
+      throw InputError(
+          name + ":" + std::to_string(pt.line),
+          "cannot locate the path on this line to make it absolute: write it as an absolute path");
     l.replace(b, e - b, pt.with);
   }
   std::string out;
@@ -127,7 +139,8 @@ bool parseClockTime(std::string_view text, ClockTime& out) {
   // Exactly `n` digits (n > 0) or, with n == 0, one or two.
   auto digits = [&](int n, long& v) {
     const std::size_t begin = i;
-    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && (n == 0 ? i - begin < 2 : static_cast<int>(i - begin) < n))
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) &&
+           (n == 0 ? i - begin < 2 : static_cast<int>(i - begin) < n))
       ++i;
     const std::size_t len = i - begin;
     if (len == 0 || (n > 0 && static_cast<int>(len) != n)) return false;
@@ -143,7 +156,9 @@ bool parseClockTime(std::string_view text, ClockTime& out) {
   if (text.size() >= 10 && (text[4] == '-' || text[4] == '/')) {
     const char sep = text[4];
     if (!digits(4, y) || !take(sep) || !digits(2, mo) || !take(sep) || !digits(2, d)) return false;
-    if (mo < 1 || mo > 12 || d < 1 || d > static_cast<long>(daysInMonth(y, static_cast<unsigned>(mo)))) return false;
+    if (mo < 1 || mo > 12 || d < 1 ||
+        d > static_cast<long>(daysInMonth(y, static_cast<unsigned>(mo))))
+      return false;
     if (!take('T') && !take(' ')) return false;
     r.has_date = true;
     r.day = daysFromCivil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d));
@@ -156,7 +171,8 @@ bool parseClockTime(std::string_view text, ClockTime& out) {
     ++i;
     double scale = 0.1;
     const std::size_t begin = i;
-    for (; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i, scale *= 0.1) frac += (text[i] - '0') * scale;
+    for (; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i, scale *= 0.1)
+      frac += (text[i] - '0') * scale;
     if (i == begin) return false;
   }
   double offset_s = 0.0;
@@ -183,15 +199,18 @@ namespace {
 /// The mapping's sensors the study does not have yet. One it has, mounted and filtered the same
 /// (a second drive of the same car imported into the first drive's study), is kept as it is; a
 /// sensor of the same name mounted otherwise is an error.
-std::vector<SensorSpec> newSensors(const Study& base, const ImportMapping& m, const std::string& base_study) {
+std::vector<SensorSpec> newSensors(const Study& base, const ImportMapping& m,
+                                   const std::string& base_study) {
   std::vector<SensorSpec> out;
   for (const auto& x : m.sensors) {
     bool known = false;
     for (const auto& y : base.sensors)
       if (y.name == x.name) {
         if (y.toJson() != x.toJson())
-          throw InputError(m.source + ": sensors." + x.name, "the study " + base_study + " has a sensor of this name already, otherwise (" +
-                                                                  y.toJson().dump() + "): rename one");
+          throw InputError(m.source + ": sensors." + x.name,
+                           "the study " + base_study +
+                               " has a sensor of this name already, otherwise (" +
+                               y.toJson().dump() + "): rename one");
         known = true;
       }
     if (!known) out.push_back(x);
@@ -201,13 +220,17 @@ std::vector<SensorSpec> newSensors(const Study& base, const ImportMapping& m, co
 
 /// The channels a log may fill: the study's sensors and the mapping's, and a check of the
 /// scenario's name against the study.
-std::vector<Channel> checkTarget(const Study& base, const ImportMapping& m, const std::string& base_study, const std::string& scenario) {
+std::vector<Channel> checkTarget(const Study& base, const ImportMapping& m,
+                                 const std::string& base_study, const std::string& scenario) {
   std::vector<SensorSpec> sensors = base.sensors;
   for (const auto& x : newSensors(base, m, base_study)) sensors.push_back(x);
   for (const auto& sc : base.scenarios)
-    if (sc.name == scenario) throw InputError("--scenario " + scenario, "the study " + base_study + " already has a scenario of this name");
+    if (sc.name == scenario)
+      throw InputError("--scenario " + scenario,
+                       "the study " + base_study + " already has a scenario of this name");
   bool name_ok = !scenario.empty();
-  for (char ch : scenario) name_ok = name_ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-');
+  for (char ch : scenario)
+    name_ok = name_ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-');
   if (!name_ok) throw InputError("--scenario " + scenario, "must be letters, digits, '_' and '-'");
   return measurableChannels(sensors);
 }
@@ -225,11 +248,13 @@ ImportUnits resolveUnits(const ImportMapping& m, const std::vector<Channel>& kno
       if (c->unit == k.name && std::string(k.si) == "m/s") velocity = true;
     u.road.push_back(unitFactor(c->unit, velocity ? "m/s" : "m", c->unitWhere()));
     if (c != u.road_cols.front() && velocity != u.road_velocity)
-      throw InputError(c->where, "both tracks must be heights (m, mm) or both road velocities (m/s, mm/s)");
+      throw InputError(c->where,
+                       "both tracks must be heights (m, mm) or both road velocities (m/s, mm/s)");
     u.road_velocity = velocity;
   }
   if (m.highpass_given && !u.road_velocity)
-    throw InputError(m.source == "command line" ? std::string("--highpass-hz") : m.source + ": import.highpass_hz",
+    throw InputError(m.source == "command line" ? std::string("--highpass-hz")
+                                                : m.source + ": import.highpass_hz",
                      "applies to a road velocity (m/s, mm/s) only; the road here is " +
                          (u.road_cols.empty() ? std::string("not mapped") : "a height"));
   for (const auto& c : m.channels) {
@@ -251,8 +276,10 @@ class ClockCounter {
   bool seconds(std::string_view cell, bool first, double& out) {
     ClockTime c;
     if (!parseClockTime(cell, c)) return false;
-    if (first) day0_ = c.day;
-    else if (!c.has_date && c.seconds < previous_ - 43200.0) ++day_;
+    if (first)
+      day0_ = c.day;
+    else if (!c.has_date && c.seconds < previous_ - 43200.0)
+      ++day_;
     if (c.has_date) day_ = c.day - day0_;
     previous_ = c.seconds;
     out = static_cast<double>(day_) * 86400.0 + c.seconds;
@@ -267,7 +294,8 @@ class ClockCounter {
 /// Reads the log row by row with every check of importLog (io/log_import.hpp).
 class LogRowReader {
  public:
-  LogRowReader(const std::string& text, const std::string& name, const ImportMapping& m, const ImportUnits& u)
+  LogRowReader(const std::string& text, const std::string& name, const ImportMapping& m,
+               const ImportUnits& u)
       : csv_(text, name, m.separator), name_(name), m_(m), u_(u) {}
 
   LogRows read(const StageProgress& progress) {
@@ -290,7 +318,9 @@ class LogRowReader {
   void header() {
     bool any = csv_.next();
     while (any && csv_.line() < m_.header_line) any = csv_.next();
-    if (!any) throw InputError(name_ + ":" + std::to_string(m_.header_line), "no header row of column names at or after this line (header_line)");
+    if (!any)
+      throw InputError(name_ + ":" + std::to_string(m_.header_line),
+                       "no header row of column names at or after this line (header_line)");
     for (auto f : csv_.fields()) header_.emplace_back(f);
     i_time_ = columnIndex(header_, m_.time, name_);
     i_speed_ = columnIndex(header_, *m_.speed, name_);
@@ -320,7 +350,9 @@ class LogRowReader {
   double number(std::size_t col) {
     double x = 0;
     const auto f = csv_.fields()[col];
-    if (!parse(f, x)) throw cellError(col, isMissing(f) ? "is empty or NaN (a required column has no gaps)" : "'" + std::string(f) + "' is not a number");
+    if (!parse(f, x))
+      throw cellError(col, isMissing(f) ? "is empty or NaN (a required column has no gaps)"
+                                        : "'" + std::string(f) + "' is not a number");
     if (!std::isfinite(x)) throw cellError(col, "'" + std::string(f) + "' is not a finite number");
     return x;
   }
@@ -328,29 +360,41 @@ class LogRowReader {
   void row() {
     const auto& f = csv_.fields();
     if (f.size() != header_.size())
-      throw InputError(csv_.where(), "expected " + std::to_string(header_.size()) + " columns (as the header), got " + std::to_string(f.size()));
+      throw InputError(csv_.where(), "expected " + std::to_string(header_.size()) +
+                                         " columns (as the header), got " +
+                                         std::to_string(f.size()));
     auto& t = rows_.t;
     const bool clock = m_.time.unit == "clock";
     double ti = 0;
-    if (!clock) ti = number(i_time_) * u_.time;
+    if (!clock)
+      ti = number(i_time_) * u_.time;
     else if (!clock_.seconds(f[i_time_], t.empty(), ti))
       throw cellError(i_time_, "'" + std::string(f[i_time_]) +
-                                   "' is not a clock time (HH:MM:SS[.fff], optionally after a date YYYY-MM-DD and 'T' or a space)");
+                                   "' is not a clock time (HH:MM:SS[.fff], optionally after a date "
+                                   "YYYY-MM-DD and 'T' or a space)");
     if (!t.empty() && ti == t.back())
-      throw cellError(i_time_, "time " + std::string(f[i_time_]) + " repeats the row before (line " + std::to_string(lines_.back()) + ")");
+      throw cellError(i_time_, "time " + std::string(f[i_time_]) +
+                                   " repeats the row before (line " +
+                                   std::to_string(lines_.back()) + ")");
     if (!t.empty() && ti < t.back())
       throw cellError(i_time_, "time goes backwards: " + std::string(f[i_time_]) + " after " +
-                                   (clock ? previous_time_ : formatNumber(t.back() / u_.time, 12)) + " (line " + std::to_string(lines_.back()) + ")");
+                                   (clock ? previous_time_ : formatNumber(t.back() / u_.time, 12)) +
+                                   " (line " + std::to_string(lines_.back()) + ")");
     if (clock) previous_time_.assign(f[i_time_]);
     double vi = (number(i_speed_) - m_.speed->offset) * m_.speed->scale * u_.speed;
     if (vi < 0 && vi >= -0.2) vi = 0.0;  // a logger's noise about standstill
-    if (vi < 0) throw cellError(i_speed_, "speed " + std::string(f[i_speed_]) + " " + m_.speed->unit + " is negative (beyond the 0.2 m/s of noise at rest)");
-    if (vi > 100) throw cellError(i_speed_, "speed " + std::string(f[i_speed_]) + " " + m_.speed->unit + " exceeds 100 m/s");
+    if (vi < 0)
+      throw cellError(i_speed_, "speed " + std::string(f[i_speed_]) + " " + m_.speed->unit +
+                                    " is negative (beyond the 0.2 m/s of noise at rest)");
+    if (vi > 100)
+      throw cellError(i_speed_, "speed " + std::string(f[i_speed_]) + " " + m_.speed->unit +
+                                    " exceeds 100 m/s");
     t.push_back(ti);
     rows_.v.push_back(vi);
     lines_.push_back(csv_.line());
     for (std::size_t k = 0; k < u_.road_cols.size(); ++k)
-      rows_.road[k].push_back((number(i_road_[k]) - u_.road_cols[k]->offset) * u_.road_cols[k]->scale * u_.road[k]);
+      rows_.road[k].push_back((number(i_road_[k]) - u_.road_cols[k]->offset) *
+                              u_.road_cols[k]->scale * u_.road[k]);
     for (std::size_t k = 0; k < m_.channels.size(); ++k) channelCell(k);
     for (std::size_t k = 0; k < m_.exclude.size(); ++k) maskCell(k);
   }
@@ -363,7 +407,9 @@ class LogRowReader {
       rows_.mask[k].push_back(std::numeric_limits<double>::quiet_NaN());
       return;
     }
-    if (!parse(cell, x) || !std::isfinite(x)) throw cellError(i_mask_[k], "'" + std::string(cell) + "' is not a finite number (a mask's column)");
+    if (!parse(cell, x) || !std::isfinite(x))
+      throw cellError(i_mask_[k],
+                      "'" + std::string(cell) + "' is not a finite number (a mask's column)");
     const auto& src = m_.exclude[k].source;
     rows_.mask[k].push_back(std::abs((x - src.offset) * src.scale * mask_factor_[k]));
   }
@@ -375,16 +421,19 @@ class LogRowReader {
     if (isMissing(cell) || (parse(cell, x) && std::isnan(x))) {
       if (run_[k]++ == 0) run_start_[k] = csv_.line();
       if (run_[k] > m_.max_dropout_rows)
-        throw cellError(i_ch_[k], "empty or NaN from line " + std::to_string(run_start_[k]) + " on: more than max_dropout_rows = " +
+        throw cellError(i_ch_[k], "empty or NaN from line " + std::to_string(run_start_[k]) +
+                                      " on: more than max_dropout_rows = " +
                                       std::to_string(m_.max_dropout_rows) + " rows in a row");
       rows_.values[k].push_back(std::numeric_limits<double>::quiet_NaN());
       ++rows_.dropped_cells;
       return;
     }
     if (!parse(cell, x)) throw cellError(i_ch_[k], "'" + std::string(cell) + "' is not a number");
-    if (!std::isfinite(x)) throw cellError(i_ch_[k], "'" + std::string(cell) + "' is not a finite number");
+    if (!std::isfinite(x))
+      throw cellError(i_ch_[k], "'" + std::string(cell) + "' is not a finite number");
     run_[k] = 0;
-    rows_.values[k].push_back((x - m_.channels[k].source.offset) * m_.channels[k].source.scale * u_.channel[k]);
+    rows_.values[k].push_back((x - m_.channels[k].source.offset) * m_.channels[k].source.scale *
+                              u_.channel[k]);
   }
 
   CsvReader csv_;
@@ -431,8 +480,10 @@ RunSpan runSpan(const ImportMapping& m, const std::vector<double>& t, const std:
   if (!m.window_s) return s;
   const auto [a, b] = *m.window_s;
   if (b > t.back() || a >= t.back())
-    throw InputError(m.window_where, "window [" + formatNumber(a) + ", " + formatNumber(b) + "] s ends after the log " + log_name +
-                                         " (its rows span 0.." + formatNumber(t.back()) + " s from its first row)");
+    throw InputError(m.window_where, "window [" + formatNumber(a) + ", " + formatNumber(b) +
+                                         "] s ends after the log " + log_name +
+                                         " (its rows span 0.." + formatNumber(t.back()) +
+                                         " s from its first row)");
   s.window_begin = a;
   s.window_end = b;
   const double from = std::max(0.0, a - m.run_in_s);
@@ -445,11 +496,12 @@ RunSpan runSpan(const ImportMapping& m, const std::vector<double>& t, const std:
 }
 
 /// speed.csv and road.csv ("" without a mapped road) from the run's rows, times from 0.
-void writeInputs(ImportResult& res, const ImportUnits& u, const std::vector<double>& t, const std::vector<double>& v,
-                 const std::vector<std::vector<double>>& road) {
+void writeInputs(ImportResult& res, const ImportUnits& u, const std::vector<double>& t,
+                 const std::vector<double>& v, const std::vector<std::vector<double>>& road) {
   std::string s = "time_s,speed_mps\n";
   s.reserve(t.size() * 24);
-  for (std::size_t i = 0; i < t.size(); ++i) s += formatExact(t[i]) + "," + formatExact(v[i]) + "\n";
+  for (std::size_t i = 0; i < t.size(); ++i)
+    s += formatExact(t[i]) + "," + formatExact(v[i]) + "\n";
   res.speed_csv = std::move(s);
   if (u.road_cols.empty()) return;
   const bool two = u.road_cols.size() == 2;
@@ -465,22 +517,32 @@ void writeInputs(ImportResult& res, const ImportUnits& u, const std::vector<doub
 
 /// The study: the base file's text (paths made absolute), then the drive and the mapping's
 /// sensors as new tables at its end.
-std::string importedStudyText(const std::string& log_name, const ImportMapping& m, const ImportUnits& u, const std::string& base_study,
+std::string importedStudyText(const std::string& log_name, const ImportMapping& m,
+                              const ImportUnits& u, const std::string& base_study,
                               const std::string& scenario, double duration_s, double start_m) {
   const std::string base_text = readTextFile(base_study);
   toml::table root;
   try {
     root = toml::parse(base_text, base_study);
   } catch (const toml::parse_error& e) {
-    throw InputError(base_study + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
+    throw InputError(base_study + ":" + std::to_string(e.source().begin.line),
+                     "malformed TOML: " + std::string(e.description()));
   }
   std::ostringstream study;
-  study << "# Written by `twin import` from " << log_name << " (mapping " << m.source << "): the study " << base_study
-        << "\n# with its relative paths made absolute, and the drive added at the end as scenario '" << scenario << "'.\n"
-        << absolutizedStudyText(base_text, root, fs::absolute(base_study).parent_path(), base_study) << "\n"
-        << "# ---- added by twin import ----\n[scenarios." << scenario << "]\nduration_s = " << formatExact(duration_s)
-        << "\nspeed = { csv = \"speed.csv\"" << (start_m != 0 ? ", start_m = " + formatExact(start_m) : std::string())
-        << " }" << (start_m != 0 ? "  # start_m: the distance driven before the run's first row (a window of the log)" : "") << "\n";
+  study
+      << "# Written by `twin import` from " << log_name << " (mapping " << m.source
+      << "): the study " << base_study
+      << "\n# with its relative paths made absolute, and the drive added at the end as scenario '"
+      << scenario << "'.\n"
+      << absolutizedStudyText(base_text, root, fs::absolute(base_study).parent_path(), base_study)
+      << "\n"
+      << "# ---- added by twin import ----\n[scenarios." << scenario
+      << "]\nduration_s = " << formatExact(duration_s) << "\nspeed = { csv = \"speed.csv\""
+      << (start_m != 0 ? ", start_m = " + formatExact(start_m) : std::string()) << " }"
+      << (start_m != 0
+              ? "  # start_m: the distance driven before the run's first row (a window of the log)"
+              : "")
+      << "\n";
   if (!u.road_cols.empty()) {
     study << "road = { type = \"csv_time\", path = \"road.csv\"";
     if (u.road_velocity) study << ", highpass_hz = " << formatExact(m.highpass_hz);
@@ -489,11 +551,14 @@ std::string importedStudyText(const std::string& log_name, const ImportMapping& 
     study << "road = { type = \"flat\" }  # no road column was mapped\n";
   }
   for (const auto& x : m.sensors) {
-    study << "\n[sensors." << x.name << "]\nbody = \"" << x.mount << "\"\nquantity = \"" << sensorQuantityName(x.quantity) << "\"\n";
+    study << "\n[sensors." << x.name << "]\nbody = \"" << x.mount << "\"\nquantity = \""
+          << sensorQuantityName(x.quantity) << "\"\n";
     if (x.corner() < 0)
-      study << "position_m = [" << formatExact(x.position_m[0]) << ", " << formatExact(x.position_m[1]) << ", " << formatExact(x.position_m[2]) << "]\n";
+      study << "position_m = [" << formatExact(x.position_m[0]) << ", "
+            << formatExact(x.position_m[1]) << ", " << formatExact(x.position_m[2]) << "]\n";
     if (x.filter.order > 0) {
-      study << "filter = { order = " << x.filter.order << ", cutoff_hz = " << formatExact(x.filter.cutoff_hz);
+      study << "filter = { order = " << x.filter.order
+            << ", cutoff_hz = " << formatExact(x.filter.cutoff_hz);
       if (x.filter.order == 2) study << ", damping = " << formatExact(x.filter.damping);
       study << " }\n";
     }
@@ -506,47 +571,66 @@ std::string importedStudyText(const std::string& log_name, const ImportMapping& 
 /// The window and the masks: what was kept and what was dropped, and why.
 nlohmann::json windowJson(const ImportResult& res, const ImportMapping& m) {
   nlohmann::json masks = nlohmann::json::array();
-  for (const auto& [text, count] : res.masked) masks.push_back({{"mask", text}, {"rows_dropped", count}});
+  for (const auto& [text, count] : res.masked)
+    masks.push_back({{"mask", text}, {"rows_dropped", count}});
   nlohmann::json j = {{"rows_outside_window", res.outside_window}, {"masks", masks}};
   if (m.window_s) {
     j["window_s"] = *m.window_s;
     j["run_in_s"] = m.run_in_s;
     j["run_from_log_s"] = res.t0_s;
     j["start_m"] = res.start_m;
-    j["rule"] = "measurements are the rows with times in window_s (s from the log's first row); the run starts run_in_s before it "
-                "(at the log's first row at the earliest), its speed and road are the log's from there, and start_m is the distance "
-                "driven before the run's first row";
+    j["rule"] =
+        "measurements are the rows with times in window_s (s from the log's first row); the run "
+        "starts run_in_s before it "
+        "(at the log's first row at the earliest), its speed and road are the log's from there, "
+        "and start_m is the distance "
+        "driven before the run's first row";
   }
   return j;
 }
 
 /// How the files were made: the log, the mapping in full, the counts.
-nlohmann::json importSidecar(const ImportResult& res, const std::string& log_text, const std::string& log_name, const ImportMapping& m,
+nlohmann::json importSidecar(const ImportResult& res, const std::string& log_text,
+                             const std::string& log_name, const ImportMapping& m,
                              const ImportUnits& u, const std::string& base_study) {
   nlohmann::json cols = nlohmann::json::array();
   for (const auto& c : m.channels)
-    cols.push_back({{"column", c.source.column}, {"channel", c.channel}, {"unit", c.source.unit}, {"offset", c.source.offset}, {"scale", c.source.scale}});
+    cols.push_back({{"column", c.source.column},
+                    {"channel", c.channel},
+                    {"unit", c.source.unit},
+                    {"offset", c.source.offset},
+                    {"scale", c.source.scale}});
   nlohmann::json rj = nullptr;
   if (!u.road_cols.empty()) {
-    rj = {{"form", u.road_velocity ? "velocity" : "height"}, {"tracks", u.road_cols.size() == 2 ? "left and right" : "identical"}};
+    rj = {{"form", u.road_velocity ? "velocity" : "height"},
+          {"tracks", u.road_cols.size() == 2 ? "left and right" : "identical"}};
     rj["columns"] = nlohmann::json::array();
-    for (const auto* c : u.road_cols) rj["columns"].push_back({{"column", c->column}, {"unit", c->unit}});
+    for (const auto* c : u.road_cols)
+      rj["columns"].push_back({{"column", c->column}, {"unit", c->unit}});
     if (u.road_velocity) rj["highpass_hz"] = m.highpass_hz;
   }
   return {{"made_by", "twin import"},
           {"program", programInfo()},
           {"created_utc", utcNow()},
           {"scenario", {{"name", res.scenario}, {"duration_s", res.duration_s}}},
-          {"source", {{"file", log_name}, {"content", hexId(fnv1a64(log_text))}, {"rows", res.rows}, {"t0_s", res.t0_s}}},
-          {"mapping", {{"file", m.source},
-                       {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
-                       {"speed", {{"column", m.speed->column}, {"unit", m.speed->unit}, {"lowpass_hz", m.speed_lowpass_hz}}},
-                       {"road", rj},
-                       {"channels", cols},
-                       {"max_dropout_rows", m.max_dropout_rows},
-                       {"header_line", m.header_line},
-                       {"skip_rows", m.skip_rows},
-                       {"decimal_comma", m.decimal_comma}}},
+          {"source",
+           {{"file", log_name},
+            {"content", hexId(fnv1a64(log_text))},
+            {"rows", res.rows},
+            {"t0_s", res.t0_s}}},
+          {"mapping",
+           {{"file", m.source},
+            {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
+            {"speed",
+             {{"column", m.speed->column},
+              {"unit", m.speed->unit},
+              {"lowpass_hz", m.speed_lowpass_hz}}},
+            {"road", rj},
+            {"channels", cols},
+            {"max_dropout_rows", m.max_dropout_rows},
+            {"header_line", m.header_line},
+            {"skip_rows", m.skip_rows},
+            {"decimal_comma", m.decimal_comma}}},
           {"dropped_cells", res.dropped_cells},
           {"window", windowJson(res, m)},
           {"records", res.data.records.size()},
@@ -555,11 +639,13 @@ nlohmann::json importSidecar(const ImportResult& res, const std::string& log_tex
 
 }  // namespace
 
-ImportResult importLog(const std::string& log_text, const std::string& log_name, const ImportMapping& m,
-                       const std::string& base_study, const std::string& scenario, const StageProgress& progress) {
+ImportResult importLog(const std::string& log_text, const std::string& log_name,
+                       const ImportMapping& m, const std::string& base_study,
+                       const std::string& scenario, const StageProgress& progress) {
   ImportResult res;
   res.scenario = scenario;
-  const Study base = loadStudy(base_study, /*scenarios_required=*/false);  // the drive is its scenario
+  const Study base =
+      loadStudy(base_study, /*scenarios_required=*/false);  // the drive is its scenario
   const std::vector<Channel> known = checkTarget(base, m, base_study, scenario);
   ImportMapping added = m;  // the study gains the mapping's new sensors only
   added.sensors = newSensors(base, m, base_study);
@@ -567,9 +653,12 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   // An MF4 log (by its extension or its identification) or a CSV: the same rows, the same checks.
   const bool mdf = isMdfLog(log_name, log_text);
   nlohmann::json mdf_read;
-  LogRows rows = mdf ? readMdfRows(log_text, log_name, m, units, mdf_read) : LogRowReader(log_text, log_name, m, units).read(progress);
+  LogRows rows = mdf ? readMdfRows(log_text, log_name, m, units, mdf_read)
+                     : LogRowReader(log_text, log_name, m, units).read(progress);
   auto& t = rows.t;
-  if (t.size() < 2) throw InputError(log_name, "holds " + std::to_string(t.size()) + " data rows; a drive needs at least 2");
+  if (t.size() < 2)
+    throw InputError(log_name,
+                     "holds " + std::to_string(t.size()) + " data rows; a drive needs at least 2");
   res.rows = static_cast<long>(t.size());
   res.dropped_cells = rows.dropped_cells;
   const double log_t0 = t.front();
@@ -593,7 +682,8 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   res.duration_s = tr.back();
   res.masked.resize(m.exclude.size());
   for (std::size_t k = 0; k < m.exclude.size(); ++k) res.masked[k].first = m.exclude[k].text();
-  // Per mask, the rows it masks: those past a threshold (or empty), and those within its pad_s of one.
+  // Per mask, the rows it masks: those past a threshold (or empty), and those within its pad_s of
+  // one.
   std::vector<std::vector<char>> hit(m.exclude.size(), std::vector<char>(t.size(), 0));
   for (std::size_t k = 0; k < m.exclude.size(); ++k) {
     const auto& mk = m.exclude[k];
@@ -606,7 +696,8 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     double last = -std::numeric_limits<double>::infinity();  // the latest hit at or before row i
     for (std::size_t i = 0; i < t.size(); ++i) {
       if (hit[k][i]) last = t[i];
-      if (t[i] - last <= mk.pad_s * (1 + 1e-9)) padded[i] = 1;  // rows exactly pad_s away count, whatever the rounding
+      if (t[i] - last <= mk.pad_s * (1 + 1e-9))
+        padded[i] = 1;  // rows exactly pad_s away count, whatever the rounding
     }
     double next = std::numeric_limits<double>::infinity();  // the earliest hit at or after row i
     for (std::size_t i = t.size(); i-- > 0;) {
@@ -627,10 +718,13 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
     }
     if (masked) continue;
     for (std::size_t k = 0; k < m.channels.size(); ++k)
-      if (!std::isnan(rows.values[k][i])) res.data.records.push_back({1, tr[i - span.first], m.channels[k].channel, rows.values[k][i]});
+      if (!std::isnan(rows.values[k][i]))
+        res.data.records.push_back(
+            {1, tr[i - span.first], m.channels[k].channel, rows.values[k][i]});
   }
   if (res.data.records.empty())
-    throw InputError(m.window_s ? m.window_where : log_name, "leaves no measurement: every row is outside the window or masked");
+    throw InputError(m.window_s ? m.window_where : log_name,
+                     "leaves no measurement: every row is outside the window or masked");
   // The records' checks (plausible ranges, ...), each named by the log's channel and time.
   res.lab_csv = labCsvText(
       res.data,
@@ -639,11 +733,13 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
         std::string column = r.channel;
         for (const auto& c : m.channels)
           if (c.channel == r.channel) column = c.source.column;
-        return log_name + ": channel '" + column + "' at " + formatNumber(res.t0_s + r.time_s, 12) + " s";
+        return log_name + ": channel '" + column + "' at " + formatNumber(res.t0_s + r.time_s, 12) +
+               " s";
       },
       known);
   writeInputs(res, units, tr, vr, road);
-  res.study_toml = importedStudyText(log_name, added, units, base_study, scenario, res.duration_s, res.start_m);
+  res.study_toml =
+      importedStudyText(log_name, added, units, base_study, scenario, res.duration_s, res.start_m);
   res.sidecar = importSidecar(res, log_text, log_name, m, units, base_study);
   if (mdf) res.sidecar["source"]["mdf"] = mdf_read;  // the groups and channels read, the resampling
   return res;
@@ -663,13 +759,15 @@ void writeImport(const ImportResult& r, const std::string& out_dir) {
     writeFileAtomic((tmp / "speed.csv").string(), r.speed_csv);
     if (!r.road_csv.empty()) writeFileAtomic((tmp / "road.csv").string(), r.road_csv);
     writeFileAtomic((tmp / "study.toml").string(), r.study_toml);
-    (void)loadStudy((tmp / "study.toml").string());  // the study reads back (the drive's scenario included)
-    if (fs::exists(out)) fs::remove(out);            // an empty folder
+    (void)loadStudy(
+        (tmp / "study.toml").string());    // the study reads back (the drive's scenario included)
+    if (fs::exists(out)) fs::remove(out);  // an empty folder
     fs::rename(tmp, out);
   } catch (const InputError& e) {
     fs::remove_all(tmp, ec);
     std::string where = e.where();
-    for (std::size_t at; (at = where.find(tmp.string())) != std::string::npos;) where.replace(at, tmp.string().size(), out.string());
+    for (std::size_t at; (at = where.find(tmp.string())) != std::string::npos;)
+      where.replace(at, tmp.string().size(), out.string());
     throw InputError(where, e.rule());
   } catch (...) {
     fs::remove_all(tmp, ec);

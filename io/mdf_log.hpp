@@ -18,15 +18,16 @@ bool isMdfLog(const std::string& name, std::string_view bytes);
 /// marks a sample invalid) at its group's master times.
 struct MdfChannelData {
   std::string name, unit;
-  std::string conversion = "identity";  ///< identity, linear, rational, value-to-value, range-to-value
+  std::string conversion =
+      "identity";  ///< identity, linear, rational, value-to-value, range-to-value
   std::vector<double> values;
 };
 
 /// One channel group: its master channel (time) and the channels read from it.
 struct MdfGroupData {
-  std::string name;                    ///< the group's acquisition name ("" when the file gives none)
+  std::string name;  ///< the group's acquisition name ("" when the file gives none)
   std::string master = "Time", master_unit = "s";
-  std::vector<double> time;            ///< the master's values, as the file gives them
+  std::vector<double> time;  ///< the master's values, as the file gives them
   std::vector<MdfChannelData> channels;
 };
 
@@ -53,7 +54,8 @@ MdfDirectory readMdfDirectory(const std::string& bytes, const std::string& name)
 /// Reads the named channels of group `group` (an index into MdfDirectory::groups) with their
 /// master. InputError for a channel with a text conversion or whose data is cut short, and for a
 /// file whose DZ blocks do not inflate cleanly to their declared sizes.
-MdfGroupData readMdfGroup(const std::string& bytes, const std::string& name, std::size_t group, const std::vector<std::string>& channels);
+MdfGroupData readMdfGroup(const std::string& bytes, const std::string& name, std::size_t group,
+                          const std::vector<std::string>& channels);
 
 /// A conversion written with a channel (writeMdfLog): the stored values are raw, the file's
 /// conversion makes them physical. linear: phys = p[0] + p[1] raw; rational: phys = (p[0] raw² +

@@ -28,15 +28,20 @@ PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& na
     const auto& f = csv.fields();
     if (header.empty()) {
       header.assign(f.begin(), f.end());
-      if (header.size() < 3 || header[header.size() - 2] != "tau" || header.back() != "design_index") {
+      if (header.size() < 3 || header[header.size() - 2] != "tau" ||
+          header.back() != "design_index") {
         std::string got;
         for (const auto& h : header) got += (got.empty() ? "" : ",") + h;
-        throw InputError(at, "header must be the calibrated parameter names, then tau, then design_index "
-                             "(as `twin calibrate` writes posterior.csv), got '" + got + "'");
+        throw InputError(
+            at,
+            "header must be the calibrated parameter names, then tau, then design_index "
+            "(as `twin calibrate` writes posterior.csv), got '" +
+                got + "'");
       }
       std::set<std::string> seen;
       for (std::size_t c = 0; c + 2 < header.size(); ++c) {
-        if (header[c].empty()) throw InputError(at, "header: column " + std::to_string(c + 1) + " has no name");
+        if (header[c].empty())
+          throw InputError(at, "header: column " + std::to_string(c + 1) + " has no name");
         if (header[c] == "tau" || header[c] == "design_index" || !seen.insert(header[c]).second)
           throw InputError(at, "header: column '" + header[c] + "' appears twice");
         ps.names.push_back(header[c]);
@@ -44,26 +49,33 @@ PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& na
       continue;
     }
     if (f.size() != header.size())
-      throw InputError(at, "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
+      throw InputError(at, "expected " + std::to_string(header.size()) + " fields, got " +
+                               std::to_string(f.size()));
     std::vector<double> th(ps.names.size());
     for (std::size_t c = 0; c < ps.names.size(); ++c) {
-      if (!parseNumber(f[c], th[c])) throw InputError(at + ": " + ps.names[c], "must be a number, got '" + std::string(f[c]) + "'");
-      if (!std::isfinite(th[c])) throw InputError(at + ": " + ps.names[c], "must be finite, got " + std::string(f[c]));
+      if (!parseNumber(f[c], th[c]))
+        throw InputError(at + ": " + ps.names[c],
+                         "must be a number, got '" + std::string(f[c]) + "'");
+      if (!std::isfinite(th[c]))
+        throw InputError(at + ": " + ps.names[c], "must be finite, got " + std::string(f[c]));
     }
     double tau = 0;
     const std::string ft(f[ps.names.size()]);
     if (!parseNumber(ft, tau)) throw InputError(at + ": tau", "must be a number, got '" + ft + "'");
-    if (!(std::isfinite(tau) && tau > 0)) throw InputError(at + ": tau", "must be a finite number > 0 (a precision), got " + ft);
+    if (!(std::isfinite(tau) && tau > 0))
+      throw InputError(at + ": tau", "must be a finite number > 0 (a precision), got " + ft);
     const std::string_view fd = f.back();
     long k = -1;
     const auto r = std::from_chars(fd.data(), fd.data() + fd.size(), k);
     if (r.ec != std::errc() || r.ptr != fd.data() + fd.size() || k < 0)
-      throw InputError(at + ": design_index", "must be an integer >= 0, got '" + std::string(fd) + "'");
+      throw InputError(at + ": design_index",
+                       "must be an integer >= 0, got '" + std::string(fd) + "'");
     ps.theta.push_back(std::move(th));
     ps.tau.push_back(tau);
     ps.design_index.push_back(k);
   }
-  if (header.empty()) throw InputError(name, "empty file (expected the header <parameters>,tau,design_index)");
+  if (header.empty())
+    throw InputError(name, "empty file (expected the header <parameters>,tau,design_index)");
   if (ps.tau.empty()) throw InputError(name, "no rows after the header (line 1)");
   return ps;
 }
@@ -78,11 +90,13 @@ void checkPosteriorChecksum(const std::string& path, const std::string& text) {
   } catch (const std::exception&) {
     return;  // not a calibration's summary: nothing recorded to check against
   }
-  if (!j.is_object() || !j.contains("posterior_checksum") || !j["posterior_checksum"].is_string()) return;
+  if (!j.is_object() || !j.contains("posterior_checksum") || !j["posterior_checksum"].is_string())
+    return;
   const std::string recorded = j["posterior_checksum"].get<std::string>();
   if (recorded != contentChecksum(text))
     throw InputError(path, "fails its checksum (" + summary.string() + " records " + recorded +
-                               "): it changed after the calibration wrote it and is not used; rerun that calibration into its folder to write it again");
+                               "): it changed after the calibration wrote it and is not used; "
+                               "rerun that calibration into its folder to write it again");
 }
 
 PosteriorSample readPosteriorCsv(const std::string& path) {
@@ -92,9 +106,11 @@ PosteriorSample readPosteriorCsv(const std::string& path) {
   return parsePosteriorCsv(text, path);
 }
 
-std::string posteriorCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& theta,
+std::string posteriorCsv(const std::vector<std::string>& names,
+                         const std::vector<std::vector<double>>& theta,
                          const std::vector<double>& tau, const std::vector<long>& design_index) {
-  DTWIN_CHECK(theta.size() == tau.size() && tau.size() == design_index.size(), "posterior columns of unequal length");
+  DTWIN_CHECK(theta.size() == tau.size() && tau.size() == design_index.size(),
+              "posterior columns of unequal length");
   std::string csv;
   for (const auto& nm : names) csv += nm + ",";
   csv += "tau,design_index\n";

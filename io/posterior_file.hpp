@@ -1,8 +1,8 @@
 #pragma once
 // posterior.csv, the posterior sample a calibration writes (one row per kept Gibbs iteration: the
 // calibrated values, then tau, then design_index): its reader and its writer.
-#include <string>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace dtwin {
@@ -34,7 +34,8 @@ void checkPosteriorChecksum(const std::string& path, const std::string& text);
 PosteriorSample parsePosteriorCsv(const std::string& text, const std::string& name);
 
 /// The text of posterior.csv (numbers round-trip exactly): the inverse of parsePosteriorCsv.
-std::string posteriorCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& theta,
+std::string posteriorCsv(const std::vector<std::string>& names,
+                         const std::vector<std::vector<double>>& theta,
                          const std::vector<double>& tau, const std::vector<long>& design_index);
 
 }  // namespace dtwin

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "common/hash.hpp"  // fnv1a64, hexId
-#include "twin/run_types.hpp"
 #include "io/study.hpp"
+#include "twin/run_types.hpp"
 
 namespace dtwin {
 
@@ -20,19 +20,20 @@ std::string utcNow();
 /// (programInfo()), "command" (the command line) and "created_utc" (utcNow()). Returns j.
 nlohmann::json& stampProvenance(nlohmann::json& j, const std::string& command);
 
-
 /// The sidecar of one simulation run (or of a set of runs); `road` describes the road(s)
 /// (Road::describe() for one road).
-nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioSpec& scenario, const nlohmann::json& road,
-                         std::uint64_t seed, const std::vector<double>& values, const SimulationOptions& options,
-                         const RunStats& stats, const std::vector<Channel>& channels, const std::string& command);
+nlohmann::json runRecord(const Study& study, const Model& model, const ScenarioSpec& scenario,
+                         const nlohmann::json& road, std::uint64_t seed,
+                         const std::vector<double>& values, const SimulationOptions& options,
+                         const RunStats& stats, const std::vector<Channel>& channels,
+                         const std::string& command);
 
 /// "out/m1.csv" -> "out/m1.json".
 std::string sidecarPath(const std::string& csv_path);
 /// What a data file's JSON sidecar says of where it was measured: the scenario ("scenario":
-/// {"name": ..} as `twin generate lab` writes it, or a string; "" when it names none) and the random
-/// road's seed (road.seed). Empty without a sidecar; InputError naming the sidecar when it is not
-/// valid JSON.
+/// {"name": ..} as `twin generate lab` writes it, or a string; "" when it names none) and the
+/// random road's seed (road.seed). Empty without a sidecar; InputError naming the sidecar when it
+/// is not valid JSON.
 struct SidecarFacts {
   std::string scenario;
   std::optional<std::uint64_t> road_seed;
@@ -41,6 +42,7 @@ SidecarFacts readSidecarFacts(const std::string& csv_path);
 /// The scenario data file `csv_path` was measured on: `given` when not empty (InputError
 /// "PATH@GIVEN: its sidecar ... says it was measured on scenario 'X'" when the sidecar names
 /// another), else the sidecar's, else "".
-std::string dataScenario(const std::string& csv_path, const std::string& given, const SidecarFacts& facts);
+std::string dataScenario(const std::string& csv_path, const std::string& given,
+                         const SidecarFacts& facts);
 
 }  // namespace dtwin

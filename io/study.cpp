@@ -1,19 +1,19 @@
 #include "io/study.hpp"
 
+#include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/toml_reader.hpp"
 #include "io/measurement.hpp"
 #include "io/speed_trace_file.hpp"
 #include "io/vehicle_file.hpp"
 #include "twin/road_setting.hpp"
-#include "common/toml_reader.hpp"
 
 namespace dtwin {
 namespace {
@@ -39,14 +39,16 @@ void readStudyTable(TableReader& top, Study& s) {
   }
 }
 
-/// [subsystems]: the options of each subsystem, in the file's order (the assemblies are their combinations).
+/// [subsystems]: the options of each subsystem, in the file's order (the assemblies are their
+/// combinations).
 void readSubsystems(TableReader& top, Study& s) {
   const std::string& path = top.file();
   if (auto* t = top.table("subsystems")) {
     TableReader r(*t, path, "subsystems");
     // toml++ iterates keys alphabetically; assemblies follow the file's order.
     std::vector<std::pair<int, std::string>> keys;
-    for (auto&& [k, n] : *t) keys.push_back({static_cast<int>(n.source().begin.line), std::string(k.str())});
+    for (auto&& [k, n] : *t)
+      keys.push_back({static_cast<int>(n.source().begin.line), std::string(k.str())});
     std::sort(keys.begin(), keys.end());
     for (const auto& [line, sub] : keys) {
       const auto& known = knownSubsystems();
@@ -61,9 +63,11 @@ void readSubsystems(TableReader& top, Study& s) {
       for (std::size_t i = 0; i < opts.size(); ++i) {
         const auto& o = opts[i];
         const auto& ko = known.at(sub);
-        if (std::find(opts.begin(), opts.begin() + static_cast<long>(i), o) != opts.begin() + static_cast<long>(i))
+        if (std::find(opts.begin(), opts.begin() + static_cast<long>(i), o) !=
+            opts.begin() + static_cast<long>(i))
           throw InputError(r.where(sub), "option '" + o + "' is listed twice");
-        if (std::find(ko.begin(), ko.end(), o) == ko.end()) throw InputError(r.where(sub), unknownNameRule(sub + " option", o, ko));
+        if (std::find(ko.begin(), ko.end(), o) == ko.end())
+          throw InputError(r.where(sub), unknownNameRule(sub + " option", o, ko));
       }
       s.subsystems.push_back({sub, opts});
     }
@@ -74,7 +78,9 @@ void readSubsystems(TableReader& top, Study& s) {
   for (const auto& req : {"tire", "suspension"}) {
     bool found = false;
     for (auto& [n, o] : s.subsystems) found |= n == req;
-    if (!found) throw InputError(path + ": subsystems", std::string("must name the '") + req + "' subsystem's options");
+    if (!found)
+      throw InputError(path + ": subsystems",
+                       std::string("must name the '") + req + "' subsystem's options");
   }
 }
 
@@ -93,9 +99,12 @@ void readAssemblies(TableReader& top, Study& s) {
       bool known = false;
       for (std::size_t k = 1; k <= n && !known; ++k) known = id == "M" + std::to_string(k);
       if (!known)
-        throw InputError(r.where("include"), "names assembly '" + id + "', which [subsystems] does not define (it defines M1.." +
-                                                 "M" + std::to_string(n) + ")");
-      if (!seen.insert(id).second) throw InputError(r.where("include"), "names assembly '" + id + "' twice");
+        throw InputError(r.where("include"),
+                         "names assembly '" + id +
+                             "', which [subsystems] does not define (it defines M1.." + "M" +
+                             std::to_string(n) + ")");
+      if (!seen.insert(id).second)
+        throw InputError(r.where("include"), "names assembly '" + id + "' twice");
     }
   }
 }
@@ -107,7 +116,8 @@ void readCalibrated(TableReader& top, Study& s) {
     int i = 0;
     for (auto&& el : *a) {
       const auto* t = el.as_table();
-      if (!t) throw InputError(top.where("calibrated"), "must be an array of tables [[calibrated]]");
+      if (!t)
+        throw InputError(top.where("calibrated"), "must be an array of tables [[calibrated]]");
       TableReader r(*t, path, "calibrated[" + std::to_string(i++) + "]");
       CalibratedParameter c;
       auto n = r.string("name");
@@ -117,7 +127,9 @@ void readCalibrated(TableReader& top, Study& s) {
       c.lower = r.required("lower");
       c.upper = r.required("upper");
       if (!(c.lower < c.upper))
-        throw InputError(r.where("lower"), "lower bound must be < upper bound, got " + std::to_string(c.lower) + " >= " + std::to_string(c.upper));
+        throw InputError(r.where("lower"), "lower bound must be < upper bound, got " +
+                                               std::to_string(c.lower) +
+                                               " >= " + std::to_string(c.upper));
       c.truth = r.number("truth");
       if (c.truth && (*c.truth < c.lower || *c.truth > c.upper))
         throw InputError(r.where("truth"), "must lie within [lower, upper]");
@@ -151,20 +163,26 @@ void readUserEffects(TableReader& top, EffectCatalog& catalog) {
     const std::string name(key.str());
     const std::string field = "user_effects." + name;
     auto* ut = node.as_table();
-    if (!ut) throw InputError(path + ":" + std::to_string(node.source().begin.line) + ": " + field, "must be a table (element, force, parameters)");
+    if (!ut)
+      throw InputError(path + ":" + std::to_string(node.source().begin.line) + ": " + field,
+                       "must be a table (element, force, parameters)");
     TableReader r(*ut, path, field);
     UserEffectSpec u;
     u.name = name;
     u.where = path + ":" + std::to_string(ut->source().begin.line) + ": " + field;
     u.element = r.string("element").value_or("");
-    if (u.element.empty()) throw InputError(r.where("element"), "is required (\"strut\", \"tire\", \"axle_roll\" or \"chassis\")");
+    if (u.element.empty())
+      throw InputError(r.where("element"),
+                       "is required (\"strut\", \"tire\", \"axle_roll\" or \"chassis\")");
     u.force = r.string("force").value_or("");
     if (auto* pt = r.table("parameters")) {
       TableReader pr(*pt, path, field + ".parameters");
       for (auto&& [pk, pn] : *pt) {
         const std::string pname(pk.str());
         const toml::table* one = pr.table(pname);
-        if (!one) throw InputError(pr.where(pname), "must be { value, unit, lower, upper } (optionally shape = true)");
+        if (!one)
+          throw InputError(pr.where(pname),
+                           "must be { value, unit, lower, upper } (optionally shape = true)");
         TableReader vr(*one, path, field + ".parameters." + pname);
         UserEffectParameter p;
         p.name = pname;
@@ -197,7 +215,8 @@ void readEffects(TableReader& top, Study& s) {
       TableReader er(*et, path, "effects." + eff);
       for (auto&& [pk, pn] : *et) {
         const std::string key(pk.str());
-        es.values.push_back({eff + "." + key, er.required(key), er.where(key), path + " [effects." + eff + "]"});
+        es.values.push_back(
+            {eff + "." + key, er.required(key), er.where(key), path + " [effects." + eff + "]"});
       }
       er.finish();
       s.effects.push_back(es);
@@ -207,31 +226,39 @@ void readEffects(TableReader& top, Study& s) {
 }
 
 /// speed = { csv = "FILE" }: a measured speed trace (path relative to the study file), which must
-/// cover the scenario from time 0 to its duration, at most 100 m/s; the ramp's fields may not be given too.
+/// cover the scenario from time 0 to its duration, at most 100 m/s; the ramp's fields may not be
+/// given too.
 void readSpeedTrace(TableReader& rs, const std::string& csv, ScenarioSpec& sc) {
   namespace fs = std::filesystem;
   for (const char* f : {"v_final_mps", "ramp_s"})
-    if (rs.has(f)) throw InputError(rs.where(f), "give either csv (a measured speed trace) or v_final_mps and ramp_s, not both");
+    if (rs.has(f))
+      throw InputError(
+          rs.where(f),
+          "give either csv (a measured speed trace) or v_final_mps and ramp_s, not both");
   const std::string file = rs.resolvePath(csv);
   auto trace = std::make_shared<const SpeedTrace>(readSpeedTraceCsv(file));
   if (trace->startTime() > 0 || trace->endTime() < sc.duration_s)
-    throw InputError(rs.where("csv"), "the speed trace " + file + " covers " + formatNumber(trace->startTime()) + ".." +
-                                          formatNumber(trace->endTime()) + " s but the scenario needs 0.." +
-                                          formatNumber(sc.duration_s) + " s");
+    throw InputError(rs.where("csv"),
+                     "the speed trace " + file + " covers " + formatNumber(trace->startTime()) +
+                         ".." + formatNumber(trace->endTime()) + " s but the scenario needs 0.." +
+                         formatNumber(sc.duration_s) + " s");
   const auto& v = trace->speeds();
   const auto top = std::max_element(v.begin(), v.end());
   if (*top > 100)
-    throw InputError(rs.where("csv"), "the speed trace " + file + " reaches " + formatNumber(*top) + " m/s at sample " +
-                                          std::to_string(top - v.begin()) + "; at most 100 m/s");
+    throw InputError(rs.where("csv"), "the speed trace " + file + " reaches " + formatNumber(*top) +
+                                          " m/s at sample " + std::to_string(top - v.begin()) +
+                                          "; at most 100 m/s");
   sc.speed.trace = std::move(trace);
 }
 
-/// [scenarios.NAME]: duration, speed profile and road (one of the registered road types), in the file's order.
+/// [scenarios.NAME]: duration, speed profile and road (one of the registered road types), in the
+/// file's order.
 void readScenarios(TableReader& top, Study& s, bool required) {
   const std::string& path = top.file();
   if (auto* t = top.table("scenarios")) {
     std::vector<std::pair<int, std::string>> keys;
-    for (auto&& [k, n] : *t) keys.push_back({static_cast<int>(n.source().begin.line), std::string(k.str())});
+    for (auto&& [k, n] : *t)
+      keys.push_back({static_cast<int>(n.source().begin.line), std::string(k.str())});
     std::sort(keys.begin(), keys.end());
     TableReader outer(*t, path, "scenarios");
     for (const auto& [line, key] : keys) {
@@ -240,19 +267,23 @@ void readScenarios(TableReader& top, Study& s, bool required) {
       ScenarioSpec sc;
       sc.name = key;
       sc.duration_s = r.positive("duration_s", 15.0);
-      if (sc.duration_s > 86400) throw InputError(r.where("duration_s"), "must be at most 86400 s, got " + formatNumber(sc.duration_s));
+      if (sc.duration_s > 86400)
+        throw InputError(r.where("duration_s"),
+                         "must be at most 86400 s, got " + formatNumber(sc.duration_s));
       if (auto* sp = r.table("speed")) {
         TableReader rs(*sp, path, r.field("speed"));
         sc.speed.start_m = rs.number("start_m", 0.0);
         if (!(std::isfinite(sc.speed.start_m) && std::abs(sc.speed.start_m) <= 1e7))
-          throw InputError(rs.where("start_m"), "must be a finite distance of at most 1e7 m, got " + formatNumber(sc.speed.start_m));
+          throw InputError(rs.where("start_m"), "must be a finite distance of at most 1e7 m, got " +
+                                                    formatNumber(sc.speed.start_m));
         if (auto csv = rs.string("csv")) {
           readSpeedTrace(rs, *csv, sc);
         } else {
           sc.speed.v_final_mps = rs.number("v_final_mps", 8.9408);
           sc.speed.ramp_s = rs.number("ramp_s", 5.0);
           if (sc.speed.v_final_mps < 0 || sc.speed.v_final_mps > 100)
-            throw InputError(rs.where("v_final_mps"), "must lie in [0, 100] m/s, got " + formatNumber(sc.speed.v_final_mps));
+            throw InputError(rs.where("v_final_mps"),
+                             "must lie in [0, 100] m/s, got " + formatNumber(sc.speed.v_final_mps));
           if (sc.speed.ramp_s < 0) throw InputError(rs.where("ramp_s"), "must be >= 0");
         }
         rs.finish();
@@ -311,15 +342,19 @@ void readSizes(TableReader& top, Study& s) {
       const std::string key(k.str());
       if (!StudySizes{}.asMap().count(key)) continue;  // reported by finish()
       const long v = *r.integer(key);
-      if (v <= 0) throw InputError(r.where(key), "must be a positive integer, got " + std::to_string(v));
+      if (v <= 0)
+        throw InputError(r.where(key), "must be a positive integer, got " + std::to_string(v));
       const long most = StudySizes::maximum(key);
       if (v > most)
-        throw InputError(r.where(key), "must be at most " + std::to_string(most) + " (docs/study-file.md, Limits), got " + std::to_string(v));
+        throw InputError(r.where(key), "must be at most " + std::to_string(most) +
+                                           " (docs/study-file.md, Limits), got " +
+                                           std::to_string(v));
       s.sizes.at(key) = v;
     }
     if (s.sizes.gibbs_burn_in >= s.sizes.gibbs_iterations)
       throw InputError(r.where(t->contains("gibbs_burn_in") ? "gibbs_burn_in" : "gibbs_iterations"),
-                       "gibbs_burn_in (" + std::to_string(s.sizes.gibbs_burn_in) + ") must be below gibbs_iterations (" +
+                       "gibbs_burn_in (" + std::to_string(s.sizes.gibbs_burn_in) +
+                           ") must be below gibbs_iterations (" +
                            std::to_string(s.sizes.gibbs_iterations) + ")");
     r.finish();
   }
@@ -329,7 +364,8 @@ void readSizes(TableReader& top, Study& s) {
 void readSensors(TableReader& top, Study& s) { s.sensors = readSensorTables(top); }
 }  // namespace
 
-std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<SensorSpec>& existing) {
+std::vector<SensorSpec> readSensorTables(TableReader& top,
+                                         const std::vector<SensorSpec>& existing) {
   std::vector<SensorSpec> out;
   const std::string& path = top.file();
   auto* t = top.table("sensors");
@@ -340,17 +376,23 @@ std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<Sen
     const std::string name(key.str());
     const std::string field = "sensors." + name;
     auto* st = node.as_table();
-    if (!st) throw InputError(path + ":" + std::to_string(node.source().begin.line) + ": " + field, "must be a table");
+    if (!st)
+      throw InputError(path + ":" + std::to_string(node.source().begin.line) + ": " + field,
+                       "must be a table");
     TableReader r(*st, path, field);
     const std::string where = path + ":" + std::to_string(st->source().begin.line) + ": " + field;
     SensorSpec x;
     x.name = name;
     x.mount = r.string("body").value_or("chassis");
     const auto q = r.string("quantity");
-    if (!q) throw InputError(r.where("quantity"), "is required (\"displacement_z\", \"velocity_z\" or \"acceleration_z\")");
+    if (!q)
+      throw InputError(r.where("quantity"),
+                       "is required (\"displacement_z\", \"velocity_z\" or \"acceleration_z\")");
     x.quantity = parseSensorQuantity(*q, r.where("quantity"));
     if (auto* a = r.array("position_m")) {
-      if (a->size() != 3) throw InputError(r.where("position_m"), "must be [x, y, z] in metres (3 numbers), got " + std::to_string(a->size()));
+      if (a->size() != 3)
+        throw InputError(r.where("position_m"), "must be [x, y, z] in metres (3 numbers), got " +
+                                                    std::to_string(a->size()));
       for (std::size_t i = 0; i < 3; ++i) {
         const auto v = (*a)[i].value<double>();
         if (!v) throw InputError(r.where("position_m"), "must be [x, y, z] in metres (3 numbers)");
@@ -360,7 +402,8 @@ std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<Sen
     if (auto* f = r.table("filter")) {
       TableReader fr(*f, path, field + ".filter");
       const auto order = fr.integer("order");
-      if (!order) throw InputError(fr.where("order"), "is required (1 or 2; leave filter out for none)");
+      if (!order)
+        throw InputError(fr.where("order"), "is required (1 or 2; leave filter out for none)");
       x.filter.order = static_cast<int>(*order);
       x.filter.cutoff_hz = fr.number("cutoff_hz", 0.0);
       x.filter.damping = fr.number("damping", x.filter.damping);
@@ -370,16 +413,20 @@ std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<Sen
     if (r.has("position_sd_m")) {
       x.position_sd_m = r.number("position_sd_m", -1.0);
       if (!(x.position_sd_m >= 0.0))  // a negative number would read as "not declared"
-        throw InputError(r.where("position_sd_m"), "must be a finite number of metres in [0, 10], got " + formatNumber(x.position_sd_m));
+        throw InputError(
+            r.where("position_sd_m"),
+            "must be a finite number of metres in [0, 10], got " + formatNumber(x.position_sd_m));
     }
     r.finish();
     try {
       x.validate(field);
     } catch (const InputError& e) {  // the line of the sensor's table
-      throw InputError(path + ":" + std::to_string(st->source().begin.line) + ": " + e.where(), e.rule());
+      throw InputError(path + ":" + std::to_string(st->source().begin.line) + ": " + e.where(),
+                       e.rule());
     }
     if (std::find(taken.begin(), taken.end(), x.channel()) != taken.end())
-      throw InputError(where, "its channel " + x.channel() + " is already a channel of the twin: choose another sensor name");
+      throw InputError(where, "its channel " + x.channel() +
+                                  " is already a channel of the twin: choose another sensor name");
     taken.push_back(x.channel());
     out.push_back(x);
   }
@@ -401,17 +448,23 @@ void readLab(TableReader& top, Study& s) {
         auto v = el.value<double>();
         if (!v) throw InputError(r.where("times_s"), "must be an array of numbers (seconds)");
         const std::string item = "element " + std::to_string(i) + " (" + std::to_string(*v) + ")";
-        if (!std::isfinite(*v) || *v < 0) throw InputError(r.where("times_s"), item + " must be a finite time >= 0");
+        if (!std::isfinite(*v) || *v < 0)
+          throw InputError(r.where("times_s"), item + " must be a finite time >= 0");
         if (!lab.times_s.empty() && !(*v > lab.times_s.back()))
-          throw InputError(r.where("times_s"), item + " must be greater than the one before it (times strictly increasing)");
+          throw InputError(
+              r.where("times_s"),
+              item + " must be greater than the one before it (times strictly increasing)");
         const double k = *v * s.simulation.output_rate_hz;
         if (std::abs(k - std::round(k)) > 1e-6)
-          throw InputError(r.where("times_s"), item + " is not on the output grid (multiples of 1/output_rate_hz = " +
-                                                   std::to_string(1.0 / s.simulation.output_rate_hz) + " s)");
+          throw InputError(r.where("times_s"),
+                           item + " is not on the output grid (multiples of 1/output_rate_hz = " +
+                               std::to_string(1.0 / s.simulation.output_rate_hz) + " s)");
         lab.times_s.push_back(std::round(k) / s.simulation.output_rate_hz);
         ++i;
       }
-      if (lab.times_s.empty()) throw InputError(r.where("times_s"), "must list at least one time (or leave it out for automatic times)");
+      if (lab.times_s.empty())
+        throw InputError(r.where("times_s"),
+                         "must list at least one time (or leave it out for automatic times)");
     }
     lab.channels = r.strings("channels");
     std::vector<std::string> known;
@@ -420,21 +473,30 @@ void readLab(TableReader& top, Study& s) {
       const auto& c = lab.channels[i];
       if (std::find(known.begin(), known.end(), c) == known.end()) {
         const std::string hint = closestName(c, known);
-        throw InputError(r.where("channels"), "unknown channel '" + c + "'" +
-                                                  (hint.empty() ? std::string(" (see `twin list`)") : " (did you mean '" + hint + "'?)"));
+        throw InputError(r.where("channels"),
+                         "unknown channel '" + c + "'" +
+                             (hint.empty() ? std::string(" (see `twin list`)")
+                                           : " (did you mean '" + hint + "'?)"));
       }
-      if (std::find(lab.channels.begin(), lab.channels.begin() + static_cast<long>(i), c) != lab.channels.begin() + static_cast<long>(i))
+      if (std::find(lab.channels.begin(), lab.channels.begin() + static_cast<long>(i), c) !=
+          lab.channels.begin() + static_cast<long>(i))
         throw InputError(r.where("channels"), "channel '" + c + "' listed twice");
     }
     if (r.has("auto_times")) {
-      if (!lab.times_s.empty()) throw InputError(r.where("auto_times"), "give either times_s or auto_times, not both");
+      if (!lab.times_s.empty())
+        throw InputError(r.where("auto_times"), "give either times_s or auto_times, not both");
       lab.auto_times = *r.integer("auto_times");
-      if (lab.auto_times <= 0) throw InputError(r.where("auto_times"), "must be a positive integer, got " + std::to_string(lab.auto_times));
+      if (lab.auto_times <= 0)
+        throw InputError(r.where("auto_times"),
+                         "must be a positive integer, got " + std::to_string(lab.auto_times));
     }
     if (r.has("min_separation_s")) {
-      if (!lab.times_s.empty()) throw InputError(r.where("min_separation_s"), "applies to automatic times only (times_s is given)");
+      if (!lab.times_s.empty())
+        throw InputError(r.where("min_separation_s"),
+                         "applies to automatic times only (times_s is given)");
       lab.min_separation_s = *r.number("min_separation_s");
-      if (!(lab.min_separation_s >= 0)) throw InputError(r.where("min_separation_s"), "must be >= 0");
+      if (!(lab.min_separation_s >= 0))
+        throw InputError(r.where("min_separation_s"), "must be >= 0");
     }
     r.finish();
   }
@@ -448,49 +510,67 @@ void readCalibrationSettings(TableReader& top, Study& s) {
     auto& c = s.calibration;
     if (auto v = r.string("region")) {
       if (*v != "joint" && *v != "paper")
-        throw InputError(r.where("region"), "must be \"joint\" (the joint 1 % likelihood-ratio region, default) or \"paper\" "
-                                            "(the paper's one-at-a-time box), got \"" + *v + "\"");
+        throw InputError(
+            r.where("region"),
+            "must be \"joint\" (the joint 1 % likelihood-ratio region, default) or \"paper\" "
+            "(the paper's one-at-a-time box), got \"" +
+                *v + "\"");
       c.region = *v;
     }
     if (auto v = r.string("design")) {
       if (*v != "adaptive" && *v != "lhs")
-        throw InputError(r.where("design"), "must be \"adaptive\" (Latin hypercube, then rounds where the posterior lies) or "
-                                            "\"lhs\" (one Latin hypercube), got \"" + *v + "\"");
+        throw InputError(
+            r.where("design"),
+            "must be \"adaptive\" (Latin hypercube, then rounds where the posterior lies) or "
+            "\"lhs\" (one Latin hypercube), got \"" +
+                *v + "\"");
       c.design = *v;
     }
     if (auto v = r.integer("round_points")) {
       c.round_points = *v;
-      if (c.round_points < 2) throw InputError(r.where("round_points"), "must be an integer >= 2, got " + std::to_string(c.round_points));
+      if (c.round_points < 2)
+        throw InputError(r.where("round_points"),
+                         "must be an integer >= 2, got " + std::to_string(c.round_points));
     }
     if (auto v = r.integer("max_rounds")) {
       c.max_rounds = *v;
       if (c.max_rounds < 0 || c.max_rounds > 100)
-        throw InputError(r.where("max_rounds"), "must be an integer in [0, 100], got " + std::to_string(c.max_rounds));
+        throw InputError(r.where("max_rounds"),
+                         "must be an integer in [0, 100], got " + std::to_string(c.max_rounds));
     }
     if (auto v = r.number("target_ess")) {
       c.target_ess = *v;
-      if (!(std::isfinite(c.target_ess) && c.target_ess > 0)) throw InputError(r.where("target_ess"), "must be a finite number > 0");
+      if (!(std::isfinite(c.target_ess) && c.target_ess > 0))
+        throw InputError(r.where("target_ess"), "must be a finite number > 0");
     }
     if (auto v = r.string("interval")) {
       if (*v != "profile" && *v != "posterior")
-        throw InputError(r.where("interval"), "must be \"profile\" (the profile-likelihood interval, default) or \"posterior\" "
-                                              "(the posterior's central interval), got \"" + *v + "\"");
+        throw InputError(
+            r.where("interval"),
+            "must be \"profile\" (the profile-likelihood interval, default) or \"posterior\" "
+            "(the posterior's central interval), got \"" +
+                *v + "\"");
       c.interval = *v;
     }
     if (auto v = r.string("steps")) {
       if (*v != "frozen" && *v != "adaptive")
-        throw InputError(r.where("steps"), "must be \"frozen\" (one step sequence per stage, a smooth SSE; default) or \"adaptive\" "
-                                           "(each run chooses its own steps), got \"" + *v + "\"");
+        throw InputError(r.where("steps"),
+                         "must be \"frozen\" (one step sequence per stage, a smooth SSE; default) "
+                         "or \"adaptive\" "
+                         "(each run chooses its own steps), got \"" +
+                             *v + "\"");
       c.steps = *v;
     }
     if (auto v = r.number("margin")) {
       c.margin = *v;
-      if (!(std::isfinite(c.margin) && c.margin >= 1 && c.margin <= 10)) throw InputError(r.where("margin"), "must be a number in [1, 10]");
+      if (!(std::isfinite(c.margin) && c.margin >= 1 && c.margin <= 10))
+        throw InputError(r.where("margin"), "must be a number in [1, 10]");
     }
     if (auto v = r.integer("ridge_steps")) {
       c.ridge_steps = *v;
       if (c.ridge_steps < 0 || c.ridge_steps > 1000)
-        throw InputError(r.where("ridge_steps"), "must be an integer in [0, 1000], got " + std::to_string(c.ridge_steps));
+        throw InputError(r.where("ridge_steps"),
+                         "must be an integer in [0, 1000], got " + std::to_string(c.ridge_steps));
     }
     r.finish();
   }
@@ -505,16 +585,20 @@ void checkCalibratedAgainstVehicle(const Study& s) {
     if (!table.contains(c.name)) throw InputError(where + ".name", table.unknownRule(c.name));
     const auto& spec = table.at(c.name).spec;
     if (!c.unit.empty() && c.unit != spec.unit)
-      throw InputError(where + ".unit", "unit of '" + c.name + "' must be \"" + spec.unit + "\", got \"" + c.unit + "\"");
+      throw InputError(where + ".unit", "unit of '" + c.name + "' must be \"" + spec.unit +
+                                            "\", got \"" + c.unit + "\"");
     for (double b : {c.lower, c.upper}) {
       const std::string rule = checkParameterValue(spec, b);
       if (!rule.empty()) throw InputError(where, "bound of " + c.name + " " + rule);
     }
     if (c.name == "chassis.cg_x_m") {  // the CG stays between the axles at every value searched
-      const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
+      const double a = table.value("geometry.cg_to_front_axle_m"),
+                   b = table.value("geometry.cg_to_rear_axle_m");
       if (!(c.lower > -b && c.upper < a))
-        throw InputError(where, "bounds of chassis.cg_x_m must keep the CG between the axles: inside (" + formatNumber(-b) + ", " +
-                                    formatNumber(a) + ") m, got [" + formatNumber(c.lower) + ", " + formatNumber(c.upper) + "]");
+        throw InputError(where,
+                         "bounds of chassis.cg_x_m must keep the CG between the axles: inside (" +
+                             formatNumber(-b) + ", " + formatNumber(a) + ") m, got [" +
+                             formatNumber(c.lower) + ", " + formatNumber(c.upper) + "]");
     }
   }
 }
@@ -527,8 +611,10 @@ void checkScenarioSamples(const Study& s) {
     const double samples = sc.duration_s * s.simulation.output_rate_hz;
     if (samples > 1e7)
       throw InputError(s.path + ": scenarios." + sc.name + ".duration_s",
-                       "gives " + formatNumber(samples, 3) + " output samples at simulation.output_rate_hz = " +
-                           formatNumber(s.simulation.output_rate_hz) + " Hz; at most 1e7 (docs/study-file.md, Limits)");
+                       "gives " + formatNumber(samples, 3) +
+                           " output samples at simulation.output_rate_hz = " +
+                           formatNumber(s.simulation.output_rate_hz) +
+                           " Hz; at most 1e7 (docs/study-file.md, Limits)");
   }
 }
 
@@ -541,7 +627,8 @@ toml::table parseTomlFile(const std::string& path, const std::string& kind) {
   try {
     return toml::parse_file(path);
   } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line), "malformed TOML: " + std::string(e.description()));
+    throw InputError(path + ":" + std::to_string(e.source().begin.line),
+                     "malformed TOML: " + std::string(e.description()));
   }
 }
 

@@ -12,11 +12,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "subsystems/effect_catalog.hpp"
 #include "io/study_sizes.hpp"
+#include "subsystems/effect_catalog.hpp"
 #include "twin/model.hpp"
-#include "twin/scenario.hpp"
 #include "twin/run_types.hpp"
+#include "twin/scenario.hpp"
 
 namespace dtwin {
 
@@ -42,11 +42,11 @@ struct EffectSetting {
 
 /// Optional [lab] table: which channels the lab data carry and at which times (docs/study-file.md).
 struct LabSettings {
-  std::vector<double> times_s;           ///< explicit times (empty: automatic)
-  std::vector<std::string> channels;     ///< empty: {"hub_force_fl_N"}
-  long auto_times = 5;                   ///< how many automatic times
-  double min_separation_s = 0.02;        ///< minimum spacing of automatic times
-  std::string where;                     ///< "file:line: lab" for errors
+  std::vector<double> times_s;        ///< explicit times (empty: automatic)
+  std::vector<std::string> channels;  ///< empty: {"hub_force_fl_N"}
+  long auto_times = 5;                ///< how many automatic times
+  double min_separation_s = 0.02;     ///< minimum spacing of automatic times
+  std::string where;                  ///< "file:line: lab" for errors
   /// The channels to generate: `channels`, or hub_force_fl_N if none are given.
   std::vector<std::string> channelsOrDefault() const;
   nlohmann::json toJson() const;
@@ -62,12 +62,15 @@ struct CalibrationSettings {
   double target_ess = 400.0;     ///< importance ESS at which the rounds may stop, > 0
   double margin = 1.25;          ///< joint region: extents = margin x the contour's, >= 1
   long ridge_steps = 30;         ///< joint region: steps per ridge trace (0: no traces)
-  std::string interval = "profile";  ///< the 95 % interval summaries print as ci95: "profile" or "posterior"
+  std::string interval =
+      "profile";  ///< the 95 % interval summaries print as ci95: "profile" or "posterior"
   /// "frozen" (default): the integrator's steps are chosen once per stage and replayed, so the SSE
   /// is smooth in θ; "adaptive": every run chooses its own (docs/calibration.md).
   std::string steps = "frozen";
   /// "adaptive" or "lhs", the default resolved.
-  std::string designOrDefault() const { return design.empty() ? (region == "paper" ? "lhs" : "adaptive") : design; }
+  std::string designOrDefault() const {
+    return design.empty() ? (region == "paper" ? "lhs" : "adaptive") : design;
+  }
   nlohmann::json toJson() const;
 };
 
@@ -100,22 +103,23 @@ struct Study {
   void addUserEffects(const std::vector<UserEffectSpec>& specs);
 
   std::vector<AssemblySpec> assemblies() const;
-  AssemblySpec assembly(const std::string& id) const;  ///< InputError if unknown
+  AssemblySpec assembly(const std::string& id) const;           ///< InputError if unknown
   const ScenarioSpec& scenario(const std::string& name) const;  ///< InputError if unknown
   /// Every parameter with its value: declarations, vehicle file, [fixed], calibrated truths,
   /// [effects], then `overrides` (e.g. --set), in that order of precedence.
   ParameterTable parameterTable(const std::vector<ParameterSetting>& overrides = {}) const;
   /// Builds the model of one assembly with extra effects installed (e.g. from --effect).
-  std::shared_ptr<const Model> makeModel(const AssemblySpec& a, const std::vector<EffectSetting>& extra_effects = {},
+  std::shared_ptr<const Model> makeModel(const AssemblySpec& a,
+                                         const std::vector<EffectSetting>& extra_effects = {},
                                          const std::vector<ParameterSetting>& overrides = {}) const;
   nlohmann::json toJson() const;
 };
 
-
 /// The [sensors.NAME] tables of a TOML file (a study, or an import mapping), validated: InputError
 /// naming file:line: sensors.NAME.field. Their channels may not repeat the twin's own nor those of
 /// `existing`.
-std::vector<SensorSpec> readSensorTables(TableReader& top, const std::vector<SensorSpec>& existing = {});
+std::vector<SensorSpec> readSensorTables(TableReader& top,
+                                         const std::vector<SensorSpec>& existing = {});
 
 /// The [user_effects.NAME] tables of a TOML file that holds nothing else (e.g. the proposal
 /// `twin diagnose` writes), each checked as the study file's are (Study::addUserEffects adds
@@ -133,6 +137,7 @@ ParameterSetting parseSetting(const std::string& text, const std::string& where)
 /// Parses "effect[:param=value,...]" (CLI --effect, --hidden-effect), the effect's name checked
 /// against `catalog`; a library term "term:EXPR[:a=value]" (subsystems/effect.hpp kTermPrefix)
 /// takes its settings after the last colon.
-EffectSetting parseEffectSetting(const std::string& text, const std::string& where, const EffectCatalog& catalog);
+EffectSetting parseEffectSetting(const std::string& text, const std::string& where,
+                                 const EffectCatalog& catalog);
 
 }  // namespace dtwin

@@ -134,9 +134,10 @@ class Arguments {
   bool flag(const std::string& name) const;                            ///< Bool
   /// Int or None, in [0, 2^64 - 1] (the range of `twin --seed`).
   std::optional<std::uint64_t> seed(const std::string& name) const;
-  std::vector<double> window(const std::string& name) const;           ///< Window (empty for None)
-  std::vector<std::string> settings(const std::string& name) const;    ///< Settings, as `--set` texts
-  std::vector<std::string> effects(const std::string& name) const;     ///< Effects, as `--effect` texts
+  std::vector<double> window(const std::string& name) const;         ///< Window (empty for None)
+  std::vector<std::string> settings(const std::string& name) const;  ///< Settings, as `--set` texts
+  std::vector<std::string> effects(
+      const std::string& name) const;  ///< Effects, as `--effect` texts
 
  private:
   const Param& param(const std::string& name, std::size_t* index = nullptr) const;

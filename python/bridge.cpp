@@ -17,7 +17,8 @@ namespace dtwin::python {
 // ------------------------------------------------------------------ exceptions
 namespace {
 Exceptions& exceptionSlots() {
-  static Exceptions* e = new Exceptions();  // never destroyed: Python objects outlive no interpreter
+  static Exceptions* e =
+      new Exceptions();  // never destroyed: Python objects outlive no interpreter
   return *e;
 }
 }  // namespace
@@ -34,9 +35,12 @@ void registerExceptions(py::module_& m) {
     return type;
   };
   e.input_error = make("InputError", PyExc_ValueError,
-                       "Bad input (a file, a field, an argument, a value): the one line `twin` prints after 'twin: error: '.");
-  e.storage_error = make("StorageError", PyExc_OSError, "A write failed because the disk (or the quota) is full.");
-  e.simulation_error = make("SimulationError", PyExc_RuntimeError, "A simulation failed (its step or wall-clock budget, divergence).");
+                       "Bad input (a file, a field, an argument, a value): the one line `twin` "
+                       "prints after 'twin: error: '.");
+  e.storage_error = make("StorageError", PyExc_OSError,
+                         "A write failed because the disk (or the quota) is full.");
+  e.simulation_error = make("SimulationError", PyExc_RuntimeError,
+                            "A simulation failed (its step or wall-clock budget, divergence).");
 }
 
 std::string Keywords::message(const std::string& where, const std::string& rule) const {
@@ -89,7 +93,8 @@ void writeTo(const char* stream, const std::string& text) {
 }  // namespace
 
 Callbacks::Callbacks(py::object progress, bool quiet) : state_(std::make_shared<State>()) {
-  if (!progress.is_none() && !PyCallable_Check(progress.ptr())) throw py::type_error("progress: must be None or a callable (stage, done, total)");
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw py::type_error("progress: must be None or a callable (stage, done, total)");
   state_->progress = std::move(progress);
   state_->quiet = quiet;
 }
@@ -128,7 +133,8 @@ StageProgress Callbacks::progress() {
       const double elapsed = std::chrono::duration<double>(now - state->stage_start).count();
       char line[96];
       std::snprintf(line, sizeof line, ": %zu/%zu %.0f%% (%.0f s)\n", done, total,
-                    100.0 * (total ? static_cast<double>(done) / static_cast<double>(total) : 1.0), elapsed);
+                    100.0 * (total ? static_cast<double>(done) / static_cast<double>(total) : 1.0),
+                    elapsed);
       writeTo("stderr", stage + line);
     } catch (py::error_already_set& e) {
       state->keep(e);
@@ -209,7 +215,8 @@ std::exception_ptr runWatched(const std::function<void()>& work, Callbacks& call
 }
 }  // namespace
 
-void runReleased(const std::function<void()>& work, const Keywords& keywords, Callbacks* callbacks) {
+void runReleased(const std::function<void()>& work, const Keywords& keywords,
+                 Callbacks* callbacks) {
   // The library's exceptions leave the released section before they are translated: Python's
   // error state is set with the GIL held.
   std::exception_ptr failure;
@@ -223,20 +230,24 @@ void runReleased(const std::function<void()>& work, const Keywords& keywords, Ca
       failure = std::current_exception();
     }
   }
-  if (callbacks) callbacks->raiseIfCallbackRaised();  // a callback's or a signal handler's exception comes first
+  if (callbacks)
+    callbacks->raiseIfCallbackRaised();  // a callback's or a signal handler's exception comes first
   if (!failure) return;
   try {
     std::rethrow_exception(failure);
   } catch (const InputError& e) {
     raiseAs(exceptions().input_error, oneLine(keywords.message(e.where(), e.rule())));
   } catch (const StorageError& e) {
-    raiseAs(exceptions().storage_error, oneLine(std::string(e.what()) + "; free space and call again"));
+    raiseAs(exceptions().storage_error,
+            oneLine(std::string(e.what()) + "; free space and call again"));
   } catch (py::error_already_set&) {
     throw;
   } catch (const std::exception& e) {
-    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), oneLine(internalErrorText(e.what())));
+    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError),
+            oneLine(internalErrorText(e.what())));
   } catch (const Stopped&) {
-    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError), "internal error: the call stopped with no exception to raise");
+    raiseAs(py::reinterpret_borrow<py::object>(PyExc_RuntimeError),
+            "internal error: the call stopped with no exception to raise");
   }
 }
 
@@ -284,14 +295,17 @@ std::string pathText(const py::handle& value, const std::string& keyword) {
     const py::object p = py::module_::import("os").attr("fspath")(value);
     if (py::isinstance<py::str>(p)) return p.cast<std::string>();
   }
-  throw py::type_error(keyword + ": expects a str or a path, got " + py::str(py::type::handle_of(value)).cast<std::string>());
+  throw py::type_error(keyword + ": expects a str or a path, got " +
+                       py::str(py::type::handle_of(value)).cast<std::string>());
 }
 
 std::vector<std::string> stringList(const py::object& value, const std::string& keyword) {
   std::vector<std::string> out;
   if (value.is_none()) return out;
-  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) return {pathText(value, keyword)};
-  for (const auto& v : value) out.push_back(pathText(v, keyword));  // a sequence (checked by the call's arguments)
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__"))
+    return {pathText(value, keyword)};
+  for (const auto& v : value)
+    out.push_back(pathText(v, keyword));  // a sequence (checked by the call's arguments)
   return out;
 }
 
@@ -299,7 +313,8 @@ std::string literal(const py::handle& value) { return py::repr(value).cast<std::
 
 std::string defaultStudyPath() {
   // The module's own folder: <prefix>/lib/python3.X/dist-packages/ after `cmake --install`
-  // (data in <prefix>/share/dtwin/data), or the package folder dtwin/ of the wheel (data beside it).
+  // (data in <prefix>/share/dtwin/data), or the package folder dtwin/ of the wheel (data beside
+  // it).
   std::vector<std::string> dirs{DTWIN_SOURCE_DATA_DIR};
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&defaultStudyPath), &info) != 0 && info.dli_fname != nullptr) {
@@ -307,7 +322,8 @@ std::string defaultStudyPath() {
     const std::filesystem::path here = std::filesystem::canonical(info.dli_fname, ec).parent_path();
     if (!ec) {
       dirs.push_back((here / "data").string());
-      dirs.push_back((here.parent_path().parent_path().parent_path() / "share" / "dtwin" / "data").string());
+      dirs.push_back(
+          (here.parent_path().parent_path().parent_path() / "share" / "dtwin" / "data").string());
     }
   }
   dirs.push_back(DTWIN_INSTALL_DATA_DIR);

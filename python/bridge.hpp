@@ -29,8 +29,9 @@ struct Exceptions {
 const Exceptions& exceptions();
 void registerExceptions(py::module_& m);
 
-/// How one call names its inputs in errors: the library names option fields ("calibration.gibbs_burn_in")
-/// and some command-line flags ("--data"); a call shows them as its keyword arguments.
+/// How one call names its inputs in errors: the library names option fields
+/// ("calibration.gibbs_burn_in") and some command-line flags ("--data"); a call shows them as its
+/// keyword arguments.
 struct Keywords {
   std::set<std::string> names;                ///< the call's keyword arguments
   std::map<std::string, std::string> fields;  ///< option field -> keyword, where they differ
@@ -72,7 +73,8 @@ class Callbacks {
 /// thread runs Python's signal handlers every 50 ms (PyErr_CheckSignals: on the main thread, Ctrl-C
 /// raises KeyboardInterrupt there): an exception they raise stops the work through
 /// callbacks->stop(), and it, or a callback's own exception, is raised once the work has ended.
-void runReleased(const std::function<void()>& work, const Keywords& keywords, Callbacks* callbacks = nullptr);
+void runReleased(const std::function<void()>& work, const Keywords& keywords,
+                 Callbacks* callbacks = nullptr);
 
 /// A JSON value as Python objects (dict, list, str, int, float, bool, None); a number that is
 /// not finite becomes None, as in the files the library writes.

@@ -36,7 +36,9 @@ class CallText {
     first_ = false;
     return *this;
   }
-  CallText& add(const std::string& keyword, const std::string& value) { return add(keyword, py::str(value)); }
+  CallText& add(const std::string& keyword, const std::string& value) {
+    return add(keyword, py::str(value));
+  }
   std::string str() const { return text_ + ")"; }
 
  private:
@@ -90,10 +92,14 @@ Study withStop(const Study& study, const StopToken& stop) {
 
 /// The call's keywords, with the option fields the calibration keywords set under other names.
 Keywords calibrationKeywords(const Arguments& a) {
-  return a.keywords({{"gibbs_iterations", "iterations"}, {"gibbs_burn_in", "burn_in"}, {"optimizer_starts", "starts"}});
+  return a.keywords({{"gibbs_iterations", "iterations"},
+                     {"gibbs_burn_in", "burn_in"},
+                     {"optimizer_starts", "starts"}});
 }
 
-nlohmann::json readJsonFile(const std::string& path) { return nlohmann::json::parse(readTextFile(path)); }
+nlohmann::json readJsonFile(const std::string& path) {
+  return nlohmann::json::parse(readTextFile(path));
+}
 
 std::string withoutFinalNewline(std::string s) {
   while (!s.empty() && s.back() == '\n') s.pop_back();
@@ -126,23 +132,29 @@ py::object simulate(const PyStudy& s, const Arguments& a) {
   if (!a.isNone("integrator")) req.simulation.integrator = a.str("integrator");
   req.simulation.accuracy = a.optionalReal("accuracy").value_or(req.simulation.accuracy);
   req.simulation.max_step_s = a.optionalReal("max_step").value_or(req.simulation.max_step_s);
-  req.simulation.obstacle_max_step_s = a.optionalReal("obstacle_step").value_or(req.simulation.obstacle_max_step_s);
-  req.simulation.output_rate_hz = a.optionalReal("output_rate").value_or(req.simulation.output_rate_hz);
+  req.simulation.obstacle_max_step_s =
+      a.optionalReal("obstacle_step").value_or(req.simulation.obstacle_max_step_s);
+  req.simulation.output_rate_hz =
+      a.optionalReal("output_rate").value_or(req.simulation.output_rate_hz);
   req.keep_values = true;
   CallText call(studyCall(s, "simulate"));
-  addAll(call, a, {"assembly", "scenario", "set", "effects", "seed", "channels", "window", "integrator", "accuracy", "max_step",
-                   "obstacle_step", "output_rate", "out"});
+  addAll(call, a,
+         {"assembly", "scenario", "set", "effects", "seed", "channels", "window", "integrator",
+          "accuracy", "max_step", "obstacle_step", "output_rate", "out"});
   req.command = call.str();
 
-  const Keywords keywords =
-      a.keywords({{"effect", "effects"}, {"max_step_s", "max_step"}, {"obstacle_max_step_s", "obstacle_step"}, {"output_rate_hz", "output_rate"}});
+  const Keywords keywords = a.keywords({{"effect", "effects"},
+                                        {"max_step_s", "max_step"},
+                                        {"obstacle_max_step_s", "obstacle_step"},
+                                        {"output_rate_hz", "output_rate"}});
   Callbacks callbacks(py::none(), true);
   req.simulation.stop = callbacks.stop();
   std::vector<SimulateRun> runs;
   runReleased(
       [&] {
         for (const auto& t : sets) req.sets.push_back(parseSetting(t, "--set"));
-        for (const auto& e : effect_texts) req.effects.push_back(parseEffectSetting(e, "--effect", study.effectCatalog()));
+        for (const auto& e : effect_texts)
+          req.effects.push_back(parseEffectSetting(e, "--effect", study.effectCatalog()));
         req.window = win;
         runs = simulateScenario(study, req);
       },
@@ -150,7 +162,8 @@ py::object simulate(const PyStudy& s, const Arguments& a) {
   std::string failed;
   for (const auto& r : runs) {
     for (const auto& note : r.off_effects)
-      if (PyErr_WarnEx(PyExc_UserWarning, ("dtwin: " + note).c_str(), 1) != 0) throw py::error_already_set();
+      if (PyErr_WarnEx(PyExc_UserWarning, ("dtwin: " + note).c_str(), 1) != 0)
+        throw py::error_already_set();
     if (!r.ok) failed += (failed.empty() ? "" : "; ") + r.assembly + ": " + r.message;
   }
   if (!failed.empty()) {
@@ -175,7 +188,9 @@ py::object calibrate(const PyStudy& s, const Arguments& a) {
   const bool force = a.flag("force");
   CallText call(studyCall(s, "calibrate"));
   call.add("data", data).add("assembly", a["assembly"]).add("out", out);
-  addAll(call, a, {"lhs_points", "iterations", "burn_in", "starts", "region", "design", "interval", "steps", "max_rounds", "ridge_steps", "seed"});
+  addAll(call, a,
+         {"lhs_points", "iterations", "burn_in", "starts", "region", "design", "interval", "steps",
+          "max_rounds", "ridge_steps", "seed"});
   Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();
   const SayFn say = callbacks.say();
@@ -197,7 +212,9 @@ py::object calibrate(const PyStudy& s, const Arguments& a) {
         req.validate(study);
         checkCalibrateWork(study, req, overrides, force);
         const auto progress_of = [&](const AssemblySpec& as) -> StageProgress {
-          return [&, id = as.id](const std::string& stage, std::size_t d, std::size_t t) { stage_progress(id + " " + stage, d, t); };
+          return [&, id = as.id](const std::string& stage, std::size_t d, std::size_t t) {
+            stage_progress(id + " " + stage, d, t);
+          };
         };
         calibrateAssemblies(study, req, say, progress_of, [&](const CalibrateRun& run) {
           if (say) say(withoutFinalNewline(run.text()));
@@ -206,7 +223,8 @@ py::object calibrate(const PyStudy& s, const Arguments& a) {
       },
       calibrationKeywords(a), &callbacks);
   py::dict result;
-  for (const auto& id : done) result[py::str(id)] = toPython(readJsonFile((fs::path(out) / id / "summary.json").string()));
+  for (const auto& id : done)
+    result[py::str(id)] = toPython(readJsonFile((fs::path(out) / id / "summary.json").string()));
   return std::move(result);
 }
 
@@ -267,8 +285,9 @@ py::object diagnose(const PyStudy& s, const Arguments& a) {
   o.threads = a.smallInteger("threads");
   o.processes = nullptr;  // this process alone
   CallText call(studyCall(s, "diagnose"));
-  addAll(call, a, {"data", "assembly", "holdout", "effects", "apply", "candidates", "causes", "propose", "lhs_points", "iterations",
-                   "burn_in", "starts", "steps", "out"});
+  addAll(call, a,
+         {"data", "assembly", "holdout", "effects", "apply", "candidates", "causes", "propose",
+          "lhs_points", "iterations", "burn_in", "starts", "steps", "out"});
   o.command = call.str();
   Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();
@@ -290,7 +309,8 @@ py::object diagnose(const PyStudy& s, const Arguments& a) {
         // The pages `twin diagnose` writes beside diagnosis.json (report.html needs gnuplot).
         try {
           const std::string page = (fs::path(req.out) / "compare.html").string();
-          writeFileAtomic(page, diagnosisPage(run.result, study.name + ", " + req.assembly, req.data));
+          writeFileAtomic(page,
+                          diagnosisPage(run.result, study.name + ", " + req.assembly, req.data));
           if (say) say("wrote " + page);
         } catch (const InputError& e) {
           if (say) say(std::string("note: no interactive page (") + e.what() + ")");
@@ -327,8 +347,10 @@ py::object importLog(const Arguments& a) {
   req.window = a.window("window");
   req.run_in = a.optionalReal("run_in").value_or(-1.0);
   CallText call("python: dtwin.import_log(");
-  addAll(call, a, {"log", "map", "out", "study", "scenario", "time", "speed", "road", "road_left", "road_right", "channel", "highpass_hz",
-                   "speed_lowpass_hz", "separator", "window", "run_in"});
+  addAll(
+      call, a,
+      {"log", "map", "out", "study", "scenario", "time", "speed", "road", "road_left", "road_right",
+       "channel", "highpass_hz", "speed_lowpass_hz", "separator", "window", "run_in"});
   req.command = call.str();
   Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();
@@ -336,14 +358,16 @@ py::object importLog(const Arguments& a) {
   ImportResult r;
   runReleased(
       [&] {
-        const StageProgress bytes = [&](const std::string&, std::size_t d, std::size_t t) { stage_progress("import " + req.log, d, t); };
+        const StageProgress bytes = [&](const std::string&, std::size_t d, std::size_t t) {
+          stage_progress("import " + req.log, d, t);
+        };
         r = importDrive(req, bytes);
         if (say)
-          say("imported " + std::to_string(r.rows) + " rows (" + formatNumber(r.duration_s, 6) + " s of driving, " +
-              std::to_string(r.data.records.size()) + " records) into " + req.out + "/ (study.toml, scenario '" + r.scenario + "')");
+          say("imported " + std::to_string(r.rows) + " rows (" + formatNumber(r.duration_s, 6) +
+              " s of driving, " + std::to_string(r.data.records.size()) + " records) into " +
+              req.out + "/ (study.toml, scenario '" + r.scenario + "')");
       },
-      a.keywords(),
-      &callbacks);
+      a.keywords(), &callbacks);
   return toPython(r.sidecar);
 }
 

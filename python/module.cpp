@@ -31,14 +31,15 @@ are in each call's docstring and in dtwin.pyi). Long calls release the GIL; thei
 sys.stdout (quiet=True: none). Ctrl-C stops a call within about a second with KeyboardInterrupt,
 leaving whole files only.)";
 
-
-
 using T = ArgType;
 using D = Default;
 
 /// The calibration sizes of calibrate and diagnose (keyword-only, None: the study's).
 CallSignature& sizes(CallSignature& c) {
-  return c.arg("lhs_points", T::Int).arg("iterations", T::Int).arg("burn_in", T::Int).arg("starts", T::Int);
+  return c.arg("lhs_points", T::Int)
+      .arg("iterations", T::Int)
+      .arg("burn_in", T::Int)
+      .arg("starts", T::Int);
 }
 
 /// Defines a method of dtwin.Study from its table: the table binds and checks the arguments.
@@ -46,19 +47,34 @@ template <class F>
 void method(py::class_<PyStudy>& c, CallSignature sig, const std::string& summary, F&& f) {
   auto table = std::make_shared<const CallSignature>(std::move(sig));
   const std::string doc = table->doc(summary);
-  c.def(table->name().c_str(), [table, f](const PyStudy& s, const py::args& args, const py::kwargs& kwargs) { return f(s, table->bind(args, kwargs)); },
-        doc.c_str());
+  c.def(
+      table->name().c_str(),
+      [table, f](const PyStudy& s, const py::args& args, const py::kwargs& kwargs) {
+        return f(s, table->bind(args, kwargs));
+      },
+      doc.c_str());
 }
 
 /// dtwin.Study: the study file and its calls (simulate, calibrate, compare, diagnose).
 void bindStudy(py::module_& m) {
-  py::class_<PyStudy> study(m, "Study", "A study file (TOML), read and checked once; errors raise dtwin.InputError naming file, line and field.");
-  auto init = std::make_shared<const CallSignature>(CallSignature("__init__", true, "Study").arg("path", T::Path));
-  study.def(py::init([init](const py::args& args, const py::kwargs& kwargs) { return loadStudyFile(init->bind(args, kwargs)); }),
-            init->doc("Reads the study file `path` (None: the default study, dtwin.default_study()).").c_str());
-  study.def_property_readonly("path", [](const PyStudy& s) { return s.study->path; }, "str: the study file.")
-      .def_property_readonly("name", [](const PyStudy& s) { return s.study->name; }, "str: the study's name.")
-      .def_property_readonly("seed", [](const PyStudy& s) { return s.study->seed; }, "int: the study's seed.")
+  py::class_<PyStudy> study(m, "Study",
+                            "A study file (TOML), read and checked once; errors raise "
+                            "dtwin.InputError naming file, line and field.");
+  auto init = std::make_shared<const CallSignature>(
+      CallSignature("__init__", true, "Study").arg("path", T::Path));
+  study.def(
+      py::init([init](const py::args& args, const py::kwargs& kwargs) {
+        return loadStudyFile(init->bind(args, kwargs));
+      }),
+      init->doc("Reads the study file `path` (None: the default study, dtwin.default_study()).")
+          .c_str());
+  study
+      .def_property_readonly(
+          "path", [](const PyStudy& s) { return s.study->path; }, "str: the study file.")
+      .def_property_readonly(
+          "name", [](const PyStudy& s) { return s.study->name; }, "str: the study's name.")
+      .def_property_readonly(
+          "seed", [](const PyStudy& s) { return s.study->seed; }, "int: the study's seed.")
       .def_property_readonly(
           "assemblies",
           [](const PyStudy& s) {
@@ -75,36 +91,45 @@ void bindStudy(py::module_& m) {
             return out;
           },
           "list[str]: the scenario names.")
-      .def("to_dict", [](const PyStudy& s) { return toPython(s.study->toJson()); },
-           CallSignature("to_dict", true).doc("The study as read (a dict), as the `study` record of outputs.").c_str())
-      .def("__repr__", [](const PyStudy& s) { return "dtwin.Study(" + literal(py::str(s.study->path)) + ")"; },
-           CallSignature("__repr__", true).doc("dtwin.Study('<path>').").c_str());
+      .def(
+          "to_dict", [](const PyStudy& s) { return toPython(s.study->toJson()); },
+          CallSignature("to_dict", true)
+              .doc("The study as read (a dict), as the `study` record of outputs.")
+              .c_str())
+      .def(
+          "__repr__",
+          [](const PyStudy& s) { return "dtwin.Study(" + literal(py::str(s.study->path)) + ")"; },
+          CallSignature("__repr__", true).doc("dtwin.Study('<path>').").c_str());
 
-  method(study,
-         CallSignature("simulate", true)
-             .arg("assembly", T::Str, D::of("M1"))
-             .arg("scenario", T::Str, D::of("lab"))
-             .keywordOnly()
-             .arg("set", T::Settings)
-             .arg("effects", T::Effects)
-             .arg("seed", T::Int)
-             .arg("channels", T::Names)
-             .arg("window", T::Window)
-             .arg("integrator", T::Str)
-             .arg("accuracy", T::Float)
-             .arg("max_step", T::Float)
-             .arg("obstacle_step", T::Float)
-             .arg("output_rate", T::Float)
-             .arg("out", T::Path),
-         R"(One run of an assembly over a scenario (`twin simulate`): {column: numpy array}, the columns
+  method(
+      study,
+      CallSignature("simulate", true)
+          .arg("assembly", T::Str, D::of("M1"))
+          .arg("scenario", T::Str, D::of("lab"))
+          .keywordOnly()
+          .arg("set", T::Settings)
+          .arg("effects", T::Effects)
+          .arg("seed", T::Int)
+          .arg("channels", T::Names)
+          .arg("window", T::Window)
+          .arg("integrator", T::Str)
+          .arg("accuracy", T::Float)
+          .arg("max_step", T::Float)
+          .arg("obstacle_step", T::Float)
+          .arg("output_rate", T::Float)
+          .arg("out", T::Path),
+      R"(One run of an assembly over a scenario (`twin simulate`): {column: numpy array}, the columns
 and rows `twin simulate --out` writes, the same values to the last bit. assembly="all": {id: columns}.
 set: {"tire.stiffness": 2.0e5} or ["NAME=VALUE"]; effects: ["bump_stop:stiffness=5e6,gap_m=0.03"] or
 {"bump_stop": {"stiffness": 5e6}}; channels: a list (time_s always); window: (T0, T1); out: also write
 the CSV and its sidecar. Raises dtwin.SimulationError when the run fails.)",
-         &simulate);
+      &simulate);
 
   CallSignature calibrate_sig("calibrate", true);
-  calibrate_sig.arg("data", T::Path, D::required()).keywordOnly().arg("assembly", T::Names, D::of("all")).arg("out", T::Path, D::required())
+  calibrate_sig.arg("data", T::Path, D::required())
+      .keywordOnly()
+      .arg("assembly", T::Names, D::of("all"))
+      .arg("out", T::Path, D::required())
       .arg("threads", T::Int, D::of(0));
   sizes(calibrate_sig)
       .arg("region", T::Str)
@@ -117,30 +142,32 @@ the CSV and its sidecar. Raises dtwin.SimulationError when the run fails.)",
       .arg("force", T::Bool, D::of(false))
       .arg("quiet", T::Bool, D::of(false))
       .arg("progress", T::Progress);
-  method(study, std::move(calibrate_sig),
-         R"(Griddy Gibbs calibration against lab data FILE[@SCENARIO] (`twin calibrate`), each assembly into
+  method(
+      study, std::move(calibrate_sig),
+      R"(Griddy Gibbs calibration against lab data FILE[@SCENARIO] (`twin calibrate`), each assembly into
 OUT/<id>/ (a call with the same arguments resumes). Returns {id: summary}, each OUT/<id>/summary.json
 as a dict. assembly: "all", "M1", "M1,M3" or a list. Ctrl-C stops it (KeyboardInterrupt).)",
-         &calibrate);
+      &calibrate);
 
-  method(study,
-         CallSignature("compare", true)
-             .arg("calibration", T::Path, D::required())
-             .arg("data", T::Paths, D::required())
-             .keywordOnly()
-             .arg("baseline", T::Paths)
-             .arg("discrepancy", T::Paths)
-             .arg("draws", T::Int, D::of(30))
-             .arg("threads", T::Int, D::of(0))
-             .arg("out", T::Path)
-             .arg("force", T::Bool, D::of(false))
-             .arg("quiet", T::Bool, D::of(false)),
-         R"(A calibration folder's model against measurement files FILE[@SCENARIO] (`twin compare`): the
+  method(
+      study,
+      CallSignature("compare", true)
+          .arg("calibration", T::Path, D::required())
+          .arg("data", T::Paths, D::required())
+          .keywordOnly()
+          .arg("baseline", T::Paths)
+          .arg("discrepancy", T::Paths)
+          .arg("draws", T::Int, D::of(30))
+          .arg("threads", T::Int, D::of(0))
+          .arg("out", T::Path)
+          .arg("force", T::Bool, D::of(false))
+          .arg("quiet", T::Bool, D::of(false)),
+      R"(A calibration folder's model against measurement files FILE[@SCENARIO] (`twin compare`): the
 compare.json dict (fit per channel, failing windows and bands, the series). baseline: the drive(s) an
 FIR from the road is fitted on; discrepancy: the drive(s) a filter from the road to the model's
 residual is fitted on (the hybrid's fit and the filter in words). out: also write OUT/compare.json
 and OUT/compare.html.)",
-         &compare);
+      &compare);
 
   CallSignature diagnose_sig("diagnose", true);
   diagnose_sig.arg("data", T::Paths, D::required())
@@ -193,9 +220,13 @@ void bindImport(py::module_& m) {
                                                          .arg("quiet", T::Bool, D::of(false))
                                                          .arg("progress", T::Progress));
   m.def(
-      "import_log", [table](const py::args& args, const py::kwargs& kwargs) { return importLog(table->bind(args, kwargs)); },
+      "import_log",
+      [table](const py::args& args, const py::kwargs& kwargs) {
+        return importLog(table->bind(args, kwargs));
+      },
       table
-          ->doc(R"(A logger's CSV or MF4 log into OUT/ (measurements.csv + .json, speed.csv, road.csv, study.toml), as
+          ->doc(
+              R"(A logger's CSV or MF4 log into OUT/ (measurements.csv + .json, speed.csv, road.csv, study.toml), as
 `twin import`: the mapping from `map` (a TOML file) or from time/speed/road/channel. Returns the
 measurements.json dict; OUT/study.toml is the study that holds the drive (scenario `scenario`).)")
           .c_str());
@@ -214,7 +245,10 @@ PYBIND11_MODULE(dtwin, m) {
   options.disable_function_signatures();
   registerExceptions(m);
   m.def("default_study", &defaultStudyPath,
-        CallSignature("default_study", false).doc("The path of the default study (data/studies/demo.toml), as `twin`'s --study default.").c_str());
+        CallSignature("default_study", false)
+            .doc("The path of the default study (data/studies/demo.toml), as `twin`'s --study "
+                 "default.")
+            .c_str());
   bindStudy(m);
   bindImport(m);
 }

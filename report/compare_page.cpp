@@ -16,23 +16,24 @@ namespace {
 
 /// What the page draws of one series of compare.json.
 nlohmann::json slimSeries(const nlohmann::json& s) {
-  nlohmann::json c{{"channel", s.at("channel")},
-                   {"unit", s.value("unit", "")},
-                   {"fit", s.value("fit_percent", nlohmann::json())},
-                   {"baseline_fit", s.value("baseline_fit_percent", nlohmann::json())},
-                   {"rms", s.value("rms", nlohmann::json())},
-                   {"coverage", s.value("coverage95", nlohmann::json())},
-                   {"noise_sd", s.contains("noise_variance") && s.at("noise_variance").is_number()
-                                    ? nlohmann::json(std::sqrt(s.at("noise_variance").get<double>()))
-                                    : nlohmann::json()},
-                   {"t", s.at("t")},
-                   {"y", s.at("measured_mean")},
-                   {"models", nlohmann::json::array()},
-                   {"windows", nlohmann::json::array()},
-                   {"bands", s.value("bands", nlohmann::json::array())},
-                   {"bands_note", s.value("bands_note", "")},
-                   {"frf", s.value("frequency_response", nlohmann::json())},
-                   {"windows_note", s.value("windows_note", "")}};
+  nlohmann::json c{
+      {"channel", s.at("channel")},
+      {"unit", s.value("unit", "")},
+      {"fit", s.value("fit_percent", nlohmann::json())},
+      {"baseline_fit", s.value("baseline_fit_percent", nlohmann::json())},
+      {"rms", s.value("rms", nlohmann::json())},
+      {"coverage", s.value("coverage95", nlohmann::json())},
+      {"noise_sd", s.contains("noise_variance") && s.at("noise_variance").is_number()
+                       ? nlohmann::json(std::sqrt(s.at("noise_variance").get<double>()))
+                       : nlohmann::json()},
+      {"t", s.at("t")},
+      {"y", s.at("measured_mean")},
+      {"models", nlohmann::json::array()},
+      {"windows", nlohmann::json::array()},
+      {"bands", s.value("bands", nlohmann::json::array())},
+      {"bands_note", s.value("bands_note", "")},
+      {"frf", s.value("frequency_response", nlohmann::json())},
+      {"windows_note", s.value("windows_note", "")}};
   if (s.contains("discrepancy")) {  // twin compare --discrepancy: the filter and the three fits
     const auto& d = s.at("discrepancy");
     c["discrepancy"] = {{"physics_fit", d.value("physics_fit_percent", nlohmann::json())},
@@ -47,7 +48,10 @@ nlohmann::json slimSeries(const nlohmann::json& s) {
                         {"response", d.value("response", nlohmann::json::object())}};
   }
   for (const auto& w : s.value("windows", nlohmann::json::array()))
-    c["windows"].push_back({{"t0", w.at("t_begin_s")}, {"t1", w.at("t_end_s")}, {"z", w.at("peak_z")}, {"share", w.at("share_of_chi2")},
+    c["windows"].push_back({{"t0", w.at("t_begin_s")},
+                            {"t1", w.at("t_end_s")},
+                            {"z", w.at("peak_z")},
+                            {"share", w.at("share_of_chi2")},
                             {"label", w.value("label", "")}});
   return c;
 }
@@ -499,17 +503,21 @@ std::string comparePage(const std::vector<PageModel>& models, const std::string&
   nlohmann::json data{{"title", title}, {"sets", nlohmann::json::array()}};
   if (models.size() > 1) data["windows_of"] = models.front().label;
   std::map<std::string, std::size_t> set_index;
-  std::map<std::string, std::pair<std::size_t, std::size_t>> channel_at;  // data set@scenario#channel -> (set, channel)
-  const auto keyOf = [](const nlohmann::json& s) { return s.value("data_set", "") + "@" + s.value("scenario", ""); };
+  std::map<std::string, std::pair<std::size_t, std::size_t>>
+      channel_at;  // data set@scenario#channel -> (set, channel)
+  const auto keyOf = [](const nlohmann::json& s) {
+    return s.value("data_set", "") + "@" + s.value("scenario", "");
+  };
   if (!models.empty())
     for (const auto& s : models.front().comparison.value("series", nlohmann::json::array())) {
       if (!s.contains("t")) continue;
       const std::string key = keyOf(s);
       if (!set_index.count(key)) {
         set_index[key] = data["sets"].size();
-        data["sets"].push_back({{"name", std::filesystem::path(s.value("data_set", "")).filename().string()},
-                                {"scenario", s.value("scenario", "")},
-                                {"channels", nlohmann::json::array()}});
+        data["sets"].push_back(
+            {{"name", std::filesystem::path(s.value("data_set", "")).filename().string()},
+             {"scenario", s.value("scenario", "")},
+             {"channels", nlohmann::json::array()}});
       }
       auto& channels = data["sets"][set_index[key]]["channels"];
       channel_at[key + "#" + s.value("channel", "")] = {set_index[key], channels.size()};
@@ -518,27 +526,40 @@ std::string comparePage(const std::vector<PageModel>& models, const std::string&
   for (const auto& m : models)
     for (const auto& s : m.comparison.value("series", nlohmann::json::array())) {
       const auto at = channel_at.find(keyOf(s) + "#" + s.value("channel", ""));
-      if (at == channel_at.end() || !s.contains("predicted_mean") || s.at("predicted_mean").size() != s.at("t").size()) continue;
+      if (at == channel_at.end() || !s.contains("predicted_mean") ||
+          s.at("predicted_mean").size() != s.at("t").size())
+        continue;
       data["sets"][at->second.first]["channels"][at->second.second]["models"].push_back(
-          {{"label", m.label}, {"p", s.at("predicted_mean")}, {"lo", s.at("band_lo")}, {"hi", s.at("band_hi")},
-           {"fit", s.value("fit_percent", nlohmann::json())}, {"rms", s.value("rms", nlohmann::json())},
+          {{"label", m.label},
+           {"p", s.at("predicted_mean")},
+           {"lo", s.at("band_lo")},
+           {"hi", s.at("band_hi")},
+           {"fit", s.value("fit_percent", nlohmann::json())},
+           {"rms", s.value("rms", nlohmann::json())},
            {"coverage", s.value("coverage95", nlohmann::json())}});
     }
-  if (data["sets"].empty()) throw InputError("compare page", "the comparison holds no series data to draw");
-  return timeSeriesPage(data,
-                        "Measured (black), the prediction (blue; with several models one colour each, the last with its 95 % "
-                        "band), and the residual under each; the failing windows that hold the most of the residual shaded red. Lines are drawn as the min and max of "
-                        "each pixel column of what is in view; the figures and tables are the comparison's own.");
+  if (data["sets"].empty())
+    throw InputError("compare page", "the comparison holds no series data to draw");
+  return timeSeriesPage(
+      data,
+      "Measured (black), the prediction (blue; with several models one colour each, the last with "
+      "its 95 % "
+      "band), and the residual under each; the failing windows that hold the most of the residual "
+      "shaded red. Lines are drawn as the min and max of "
+      "each pixel column of what is in view; the figures and tables are the comparison's own.");
 }
 
 std::string timeSeriesPage(const nlohmann::json& data, const std::string& note) {
   const std::string title = data.value("title", std::string("twin"));
-  std::string html = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>" + report::htmlEscape(title) + "</title>\n<style>";
+  std::string html = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>" +
+                     report::htmlEscape(title) + "</title>\n<style>";
   html += assets::kUplotCss;
   html += kStyle;
   html += "</style></head><body>\n<h1>" + report::htmlEscape(title) + "</h1>\n";
-  html += "<p class=note>" + report::htmlEscape(note) + "</p>\n<div id=sets></div>\n<pre id=selftest></pre>\n";
-  html += "<script type=\"application/json\" id=data>" + scriptSafe(data.dump()) + "</script>\n<script>";
+  html += "<p class=note>" + report::htmlEscape(note) +
+          "</p>\n<div id=sets></div>\n<pre id=selftest></pre>\n";
+  html += "<script type=\"application/json\" id=data>" + scriptSafe(data.dump()) +
+          "</script>\n<script>";
   html += assets::kUplotJs;
   html += "</script>\n<script>";
   html += kScript;
@@ -546,13 +567,16 @@ std::string timeSeriesPage(const nlohmann::json& data, const std::string& note) 
   return html;
 }
 
-std::string comparePage(const CompareRun& run, const std::string& study_name, const std::vector<std::string>& data) {
-  std::string title = "twin compare: " + study_name + ", " + run.assembly.id + " (" + run.assembly.label() + ") against";
+std::string comparePage(const CompareRun& run, const std::string& study_name,
+                        const std::vector<std::string>& data) {
+  std::string title = "twin compare: " + study_name + ", " + run.assembly.id + " (" +
+                      run.assembly.label() + ") against";
   for (const auto& d : data) title += " " + std::filesystem::path(d).filename().string();
   return comparePage(run.comparison.toJson(true), title);
 }
 
-std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what, const std::vector<std::string>& data) {
+std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what,
+                          const std::vector<std::string>& data) {
   std::vector<PageModel> models{{"base", r.base.comparison.toJson(true)}};
   const auto plus = [](const std::vector<std::string>& effects) {
     std::string s;
@@ -560,9 +584,11 @@ std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& wha
     return s;
   };
   if (r.steps.size() > 1)
-    for (std::size_t k = 1; k < r.steps.size(); ++k) models.push_back({plus(r.steps[k].effects), r.steps[k].comparison.toJson(true)});
+    for (std::size_t k = 1; k < r.steps.size(); ++k)
+      models.push_back({plus(r.steps[k].effects), r.steps[k].comparison.toJson(true)});
   else
-    for (std::size_t k = 1; k < r.causes.size(); ++k) models.push_back({plus(r.causes[k].fit.effects), r.causes[k].fit.comparison.toJson(true)});
+    for (std::size_t k = 1; k < r.causes.size(); ++k)
+      models.push_back({plus(r.causes[k].fit.effects), r.causes[k].fit.comparison.toJson(true)});
   std::string title = "twin diagnose: " + what + " against";
   for (const auto& d : data) title += " " + std::filesystem::path(d).filename().string();
   return comparePage(models, title);

@@ -4,10 +4,10 @@
 // and panned together in time with one cursor read out across them; the failing windows that the
 // comparison listed (the few that hold the most of the residual) shaded and tabled, largest share
 // first, under each channel's count of windows in words (a row zooms to its window); the
-// residual's spectrum against the noise per band when the time base allows one. Self-contained: uPlot (report/vendor/uplot)
-// and the data are inlined, nothing is fetched at view time. The lines are decimated for display
-// only (min and max per pixel column of what is in view); the numbers in the page are the
-// comparison's, in full.
+// residual's spectrum against the noise per band when the time base allows one. Self-contained:
+// uPlot (report/vendor/uplot) and the data are inlined, nothing is fetched at view time. The lines
+// are decimated for display only (min and max per pixel column of what is in view); the numbers in
+// the page are the comparison's, in full.
 #include <string>
 #include <vector>
 
@@ -38,21 +38,23 @@ std::string comparePage(const nlohmann::json& compare, const std::string& title)
 
 /// The page of `twin compare --out DIR` (DIR/compare.html): `run` (study/diagnose.hpp) of the study
 /// named `study_name` against the measurement files `data`, titled without absolute paths.
-std::string comparePage(const CompareRun& run, const std::string& study_name, const std::vector<std::string>& data);
+std::string comparePage(const CompareRun& run, const std::string& study_name,
+                        const std::vector<std::string>& data);
 
 /// The page of a diagnosis (`twin diagnose --out DIR` writes DIR/compare.html): the base, then
 /// each applied effect (--apply) or each cause in turn, overlaid; titled "twin diagnose: `what`
 /// against" and the data's file names.
-std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what, const std::vector<std::string>& data);
+std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what,
+                          const std::vector<std::string>& data);
 
 /// The page itself, from the data its script draws: {"title", "sets": [{"name", "scenario",
 /// "channels": [{"channel", "unit", "t", "y" (measured, null where none), optionally "points"
 /// ([{"label", "v"}]: measured values drawn as points, aligned with t, null elsewhere: the lab's
 /// repetitions), "models": [{"label", "p", "lo", "hi", "fit", "rms", "coverage"}], "windows",
-/// "bands", "bands_note", optionally "windows_note"}], optionally "view": [t0, t1] (the first view) and "no_gaps" (true: a long step is no gap)}], optionally "windows_of",
-/// "no_windows" (true: no window table) and "whole" (the whole-record button's text)}.
-/// `note` is the sentence under the title. comparePage builds this from comparisons;
-/// report/lab_page.hpp from a study's lab bands.
+/// "bands", "bands_note", optionally "windows_note"}], optionally "view": [t0, t1] (the first view)
+/// and "no_gaps" (true: a long step is no gap)}], optionally "windows_of", "no_windows" (true: no
+/// window table) and "whole" (the whole-record button's text)}. `note` is the sentence under the
+/// title. comparePage builds this from comparisons; report/lab_page.hpp from a study's lab bands.
 std::string timeSeriesPage(const nlohmann::json& data, const std::string& note);
 
 }  // namespace dtwin

@@ -33,7 +33,8 @@ json readJson(const fs::path& p) {
 }
 
 std::vector<double> numbers(const json& j, const char* what) {
-  if (!j.is_array()) throw InputError("", std::string("field ") + what + " must be an array of numbers");
+  if (!j.is_array())
+    throw InputError("", std::string("field ") + what + " must be an array of numbers");
   std::vector<double> v;
   v.reserve(j.size());
   for (const auto& e : j) v.push_back(dbl(e));
@@ -46,7 +47,8 @@ Comparison readComparison(const fs::path& p) {
   Comparison c;
   c.file = p.string();
   try {
-    if (!j.is_object() || !at(j, "series").is_array()) throw InputError("", "has no array `series`");
+    if (!j.is_object() || !at(j, "series").is_array())
+      throw InputError("", "has no array `series`");
     for (const auto& e : j["series"]) {
       Series s;
       s.data_set = str(at(e, "data_set"));
@@ -64,10 +66,14 @@ Comparison readComparison(const fs::path& p) {
       s.lo = numbers(at(e, "band_lo"), "band_lo");
       s.hi = numbers(at(e, "band_hi"), "band_hi");
       const std::size_t n = s.t.size();
-      if (n == 0 || s.measured.size() != n || s.predicted.size() != n || s.lo.size() != n || s.hi.size() != n)
-        throw InputError("", "series " + s.channel + ": t, measured_mean, predicted_mean, band_lo and band_hi must be non-empty "
-                                                     "arrays of one length");
-      for (const auto& b : at(e, "bands")) s.bands.push_back({str(at(b, "band")), dbl(at(b, "ratio"))});
+      if (n == 0 || s.measured.size() != n || s.predicted.size() != n || s.lo.size() != n ||
+          s.hi.size() != n)
+        throw InputError(
+            "", "series " + s.channel +
+                    ": t, measured_mean, predicted_mean, band_lo and band_hi must be non-empty "
+                    "arrays of one length");
+      for (const auto& b : at(e, "bands"))
+        s.bands.push_back({str(at(b, "band")), dbl(at(b, "ratio"))});
       c.series.push_back(std::move(s));
     }
     for (const auto& cm : at(j, "state_maps")) {
@@ -75,7 +81,8 @@ Comparison readComparison(const fs::path& p) {
         StateMap sm;
         sm.channel = str(at(cm, "channel"));
         sm.state = str(at(m, "state"));
-        for (const auto& b : at(m, "bins")) sm.bins.push_back({dbl(at(b, "centre")), dbl(at(b, "mean_residual")), dbl(at(b, "se"))});
+        for (const auto& b : at(m, "bins"))
+          sm.bins.push_back({dbl(at(b, "centre")), dbl(at(b, "mean_residual")), dbl(at(b, "se"))});
         for (const auto& f : at(m, "fits")) {
           const double e = dbl(at(f, "explained_fraction"));
           if (std::isfinite(e) && (!std::isfinite(sm.explained) || e > sm.explained)) {
@@ -101,14 +108,17 @@ DiagnosisInput readDiagnosisInput(const std::string& diag_dir) {
   DiagnosisInput in;
   in.diag_dir = diag_dir;
   in.dir = fs::path(diag_dir);
-  if (!fs::is_directory(in.dir)) throw InputError(diag_dir, "is not a folder (give the output folder of `twin diagnose`)");
+  if (!fs::is_directory(in.dir))
+    throw InputError(diag_dir, "is not a folder (give the output folder of `twin diagnose`)");
   const fs::path diag_file = in.dir / "diagnosis.json";
   in.d = readJson(diag_file);
   const json& d = in.d;
   if (!d.is_object() || !at(d, "verdict").is_string() || !at(d, "base").is_object())
-    throw InputError(diag_file.string(), "is not a diagnosis (needs a string `verdict` and an object `base`)");
+    throw InputError(diag_file.string(),
+                     "is not a diagnosis (needs a string `verdict` and an object `base`)");
   for (const char* k : {"ranked", "screening", "steps"})
-    if (!at(d, k).is_null() && !at(d, k).is_array()) throw InputError(diag_file.string(), std::string("field `") + k + "` must be an array");
+    if (!at(d, k).is_null() && !at(d, k).is_array())
+      throw InputError(diag_file.string(), std::string("field `") + k + "` must be an array");
   in.verdict = str(at(d, "verdict"));
   in.effect = str(at(d, "effect"));
   in.assembly = str(at(d, "assembly"));

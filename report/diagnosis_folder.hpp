@@ -37,7 +37,9 @@ struct Series {
   std::vector<double> t, measured, predicted, lo, hi;
   std::vector<Band> bands;
   std::string key() const { return data_set + "\n" + scenario + "\n" + channel; }
-  std::string name() const { return scenario + " " + channel + " (" + fs::path(data_set).filename().string() + ")"; }
+  std::string name() const {
+    return scenario + " " + channel + " (" + fs::path(data_set).filename().string() + ")";
+  }
 };
 
 struct MapBin {

@@ -22,9 +22,11 @@
 namespace dtwin::report {
 
 struct DiagnosisSectionOptions {
-  std::string anchor = "diagnosis";  ///< id of the section heading; sub-sections get "<anchor>-<part>"
-  std::string id_prefix = "d";       ///< SVG ids of plot n become "<id_prefix><n>_<id>" (distinct per section on a page)
-  std::string heading_prefix;        ///< put before the heading text (e.g. "6. " in the study report)
+  std::string anchor =
+      "diagnosis";  ///< id of the section heading; sub-sections get "<anchor>-<part>"
+  std::string id_prefix =
+      "d";  ///< SVG ids of plot n become "<id_prefix><n>_<id>" (distinct per section on a page)
+  std::string heading_prefix;  ///< put before the heading text (e.g. "6. " in the study report)
   /// InputError whose where() is "diagnosis_section.<field>" (common/validate.hpp): a non-empty
   /// anchor and id_prefix.
   void validate() const;
@@ -36,17 +38,19 @@ struct DiagnosisSectionOptions {
 /// InputError (naming the file) when diagnosis.json or a needed comparisons/*.json file is
 /// missing or malformed, or (naming the Debian package gnuplot-nox) when gnuplot is not on PATH,
 /// checked before anything is read.
-std::string diagnosisSectionHtml(const std::string& diag_dir, const DiagnosisSectionOptions& options = {},
+std::string diagnosisSectionHtml(const std::string& diag_dir,
+                                 const DiagnosisSectionOptions& options = {},
                                  nlohmann::json* drawn = nullptr);
 
 /// Writes the diagnosis-only page `out_html` (atomically; `command` is recorded on it) and
 /// returns what it drew: the `drawn` object of diagnosisSectionHtml plus {"html", "wall_s",
 /// "diagnoses": [drawn + "folder"]}. Same errors.
-nlohmann::json writeDiagnosisReport(const std::string& diag_dir, const std::string& out_html, const std::string& command);
+nlohmann::json writeDiagnosisReport(const std::string& diag_dir, const std::string& out_html,
+                                    const std::string& command);
 
 /// The same page with one section per folder (anchors "diagnosis-<k>", SVG ids "d<k>p<n>_");
 /// "plots", "svg_count" and "warnings" of the result cover every section.
-nlohmann::json writeDiagnosisReport(const std::vector<std::string>& diag_dirs, const std::string& out_html,
-                                    const std::string& command);
+nlohmann::json writeDiagnosisReport(const std::vector<std::string>& diag_dirs,
+                                    const std::string& out_html, const std::string& command);
 
 }  // namespace dtwin::report

@@ -16,10 +16,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-
 /// gnuplot's arrow from (x, graph 0) to (x, graph 1).
 std::string vline(double x, const std::string& style) {
-  return "set arrow from " + plotNumber(x) + ", graph 0 to " + plotNumber(x) + ", graph 1 nohead " + style + "\n";
+  return "set arrow from " + plotNumber(x) + ", graph 0 to " + plotNumber(x) + ", graph 1 nohead " +
+         style + "\n";
 }
 
 }  // namespace
@@ -38,7 +38,8 @@ Density weightedDensity(const std::vector<double>& v, double lo, double hi, int 
   double mean = 0.0;
   for (std::size_t k = 0; k < d.atoms.size(); ++k) mean += d.mass[k] * d.atoms[k];
   double var = 0.0;
-  for (std::size_t k = 0; k < d.atoms.size(); ++k) var += d.mass[k] * (d.atoms[k] - mean) * (d.atoms[k] - mean);
+  for (std::size_t k = 0; k < d.atoms.size(); ++k)
+    var += d.mass[k] * (d.atoms[k] - mean) * (d.atoms[k] - mean);
   std::vector<double> sorted = v;
   std::sort(sorted.begin(), sorted.end());
   const double iqr = quantileSorted(sorted, 0.75) - quantileSorted(sorted, 0.25);
@@ -81,7 +82,9 @@ std::vector<std::array<double, 2>> projectedRegion(const calib::Region& r, int i
     if (v[1] < 0 || (v[1] == 0 && v[0] < 0)) v = {-v[0], -v[1]};  // angle in [0, π)
     g.push_back(v);
   }
-  std::sort(g.begin(), g.end(), [](const auto& a, const auto& b) { return std::atan2(a[1], a[0]) < std::atan2(b[1], b[0]); });
+  std::sort(g.begin(), g.end(), [](const auto& a, const auto& b) {
+    return std::atan2(a[1], a[0]) < std::atan2(b[1], b[0]);
+  });
   // Start at the lowest vertex c − Σ g (every generator points up), walk +2g in angle order,
   // then −2g: a convex polygon, counter-clockwise.
   std::array<double, 2> p = c;
@@ -129,32 +132,40 @@ std::string densityPanel(GnuplotSvg& gp, const ParameterMarks& m, bool labelled,
   }
   for (double a : dn.atoms) rug << plotNumber(a) << ' ' << plotNumber(0.05 * fmax) << '\n';
   std::ostringstream s;
-  s << "unset arrow\nunset label\n" << gnuplotTics("x", m.lo, m.hi, target_ticks, labelled) << "unset ytics\n"
+  s << "unset arrow\nunset label\n"
+    << gnuplotTics("x", m.lo, m.hi, target_ticks, labelled) << "unset ytics\n"
     << "set yrange [0:" << plotNumber(fmax > 0 ? 1.08 * fmax : 1.0) << "]\n";
   if (!m.sample.empty()) {
     std::vector<double> sorted = m.sample;
     std::sort(sorted.begin(), sorted.end());
-    for (double q : {quantileSorted(sorted, 0.025), quantileSorted(sorted, 0.975)}) s << vline(q, "lw 1 dt 2 lc rgb '#222222'");
+    for (double q : {quantileSorted(sorted, 0.025), quantileSorted(sorted, 0.975)})
+      s << vline(q, "lw 1 dt 2 lc rgb '#222222'");
   }
   if (m.profile)
-    for (double q : {m.profile->first, m.profile->second}) s << vline(q, "lw 2 dt 3 lc rgb '#2a8a3a'");
+    for (double q : {m.profile->first, m.profile->second})
+      s << vline(q, "lw 2 dt 3 lc rgb '#2a8a3a'");
   if (m.optimum) s << vline(*m.optimum, "lw 1.5 dt 4 lc rgb '#000000'");
   if (m.truth) s << vline(*m.truth, "lw 2 lc rgb '#c03020'");
-  s << "set xlabel " << (labelled ? gnuplotQuote(axisLabel(m.name, m.unit)) : std::string("''")) << " noenhanced\n";
+  s << "set xlabel " << (labelled ? gnuplotQuote(axisLabel(m.name, m.unit)) : std::string("''"))
+    << " noenhanced\n";
   if (dn.x.empty()) {
     s << "plot 1/0 notitle\n";
     return s.str();
   }
-  s << "plot " << gp.data(data.str()) << " using 1:2 with filledcurves y1=0 lc rgb '#4a7fc0' fs solid 0.35 notitle, '' using 1:2 "
-    << "with lines lw 1.5 lc rgb '#1f4f90' notitle, " << gp.data(rug.str()) << " using 1:2 with impulses lc rgb '#555555' notitle\n";
+  s << "plot " << gp.data(data.str())
+    << " using 1:2 with filledcurves y1=0 lc rgb '#4a7fc0' fs solid 0.35 notitle, '' using 1:2 "
+    << "with lines lw 1.5 lc rgb '#1f4f90' notitle, " << gp.data(rug.str())
+    << " using 1:2 with impulses lc rgb '#555555' notitle\n";
   return s.str();
 }
 
 double sampleCorrelation(const std::vector<double>& a, const std::vector<double>& b) {
   const std::size_t n = std::min(a.size(), b.size());
   if (n < 2) return 0.0;
-  const double ma = std::accumulate(a.begin(), a.begin() + static_cast<long>(n), 0.0) / static_cast<double>(n);
-  const double mb = std::accumulate(b.begin(), b.begin() + static_cast<long>(n), 0.0) / static_cast<double>(n);
+  const double ma =
+      std::accumulate(a.begin(), a.begin() + static_cast<long>(n), 0.0) / static_cast<double>(n);
+  const double mb =
+      std::accumulate(b.begin(), b.begin() + static_cast<long>(n), 0.0) / static_cast<double>(n);
   double sab = 0, saa = 0, sbb = 0;
   for (std::size_t k = 0; k < n; ++k) {
     sab += (a[k] - ma) * (b[k] - mb);
@@ -167,37 +178,47 @@ double sampleCorrelation(const std::vector<double>& a, const std::vector<double>
 namespace {
 
 /// One panel below the diagonal: parameter `x` across, `y` up.
-std::string pairPanel(GnuplotSvg& gp, const ParameterMarks& x, const ParameterMarks& y, int ix, int iy,
-                      const std::optional<calib::Region>& region, bool xlab, bool ylab) {
+std::string pairPanel(GnuplotSvg& gp, const ParameterMarks& x, const ParameterMarks& y, int ix,
+                      int iy, const std::optional<calib::Region>& region, bool xlab, bool ylab) {
   std::map<std::pair<double, double>, long> mass;
   const std::size_t n = std::min(x.sample.size(), y.sample.size());
   for (std::size_t k = 0; k < n; ++k) ++mass[{x.sample[k], y.sample[k]}];
   long most = 1;
   for (const auto& [p, c] : mass) most = std::max(most, c);
   std::ostringstream pts;
-  for (const auto& [p, c] : mass) pts << plotNumber(p.first) << ' ' << plotNumber(p.second) << ' ' << plotNumber(0.25 + 1.6 * std::sqrt(double(c) / most)) << '\n';
+  for (const auto& [p, c] : mass)
+    pts << plotNumber(p.first) << ' ' << plotNumber(p.second) << ' '
+        << plotNumber(0.25 + 1.6 * std::sqrt(double(c) / most)) << '\n';
   std::ostringstream s;
-  s << "unset arrow\nunset label\nunset object\n" << gnuplotTics("x", x.lo, x.hi, 4, xlab) << gnuplotTics("y", y.lo, y.hi, 4, ylab)
-    << "set xlabel " << (xlab ? gnuplotQuote(axisLabel(x.name, x.unit)) : std::string("''")) << " noenhanced\n"
-    << "set ylabel " << (ylab ? gnuplotQuote(axisLabel(y.name, y.unit)) : std::string("''")) << " noenhanced\n";
+  s << "unset arrow\nunset label\nunset object\n"
+    << gnuplotTics("x", x.lo, x.hi, 4, xlab) << gnuplotTics("y", y.lo, y.hi, 4, ylab)
+    << "set xlabel " << (xlab ? gnuplotQuote(axisLabel(x.name, x.unit)) : std::string("''"))
+    << " noenhanced\n"
+    << "set ylabel " << (ylab ? gnuplotQuote(axisLabel(y.name, y.unit)) : std::string("''"))
+    << " noenhanced\n";
   if (x.profile && y.profile)
-    s << "set object 1 rect from " << plotNumber(x.profile->first) << "," << plotNumber(y.profile->first) << " to " << plotNumber(x.profile->second) << ","
+    s << "set object 1 rect from " << plotNumber(x.profile->first) << ","
+      << plotNumber(y.profile->first) << " to " << plotNumber(x.profile->second) << ","
       << plotNumber(y.profile->second) << " fs empty border lc rgb '#2a8a3a' dt 3 lw 1.5\n";
-  std::string plot = "plot " + gp.data(pts.str()) + " using 1:2:3 with points pt 7 ps variable lc rgb '#4a7fc0' notitle";
+  std::string plot = "plot " + gp.data(pts.str()) +
+                     " using 1:2:3 with points pt 7 ps variable lc rgb '#4a7fc0' notitle";
   if (region) {
     std::ostringstream poly;
-    for (const auto& v : projectedRegion(*region, ix, iy)) poly << plotNumber(v[0]) << ' ' << plotNumber(v[1]) << '\n';
+    for (const auto& v : projectedRegion(*region, ix, iy))
+      poly << plotNumber(v[0]) << ' ' << plotNumber(v[1]) << '\n';
     plot += ", " + gp.data(poly.str()) + " using 1:2 with lines lw 1 lc rgb '#777777' notitle";
   }
   if (x.optimum && y.optimum) {
     std::ostringstream o;
     o << plotNumber(*x.optimum) << ' ' << plotNumber(*y.optimum) << '\n';
-    plot += ", " + gp.data(o.str()) + " using 1:2 with points pt 2 ps 1.4 lw 2 lc rgb '#000000' notitle";
+    plot += ", " + gp.data(o.str()) +
+            " using 1:2 with points pt 2 ps 1.4 lw 2 lc rgb '#000000' notitle";
   }
   if (x.truth && y.truth) {
     std::ostringstream t;
     t << plotNumber(*x.truth) << ' ' << plotNumber(*y.truth) << '\n';
-    plot += ", " + gp.data(t.str()) + " using 1:2 with points pt 3 ps 1.6 lw 2 lc rgb '#c03020' notitle";
+    plot += ", " + gp.data(t.str()) +
+            " using 1:2 with points pt 3 ps 1.6 lw 2 lc rgb '#c03020' notitle";
   }
   s << plot << "\n";
   return s.str();
@@ -205,14 +226,16 @@ std::string pairPanel(GnuplotSvg& gp, const ParameterMarks& x, const ParameterMa
 
 }  // namespace
 
-std::string pairPlot(GnuplotSvg& gp, const std::vector<ParameterMarks>& params, const std::optional<calib::Region>& region,
-                     const std::string& title) {
+std::string pairPlot(GnuplotSvg& gp, const std::vector<ParameterMarks>& params,
+                     const std::optional<calib::Region>& region, const std::string& title) {
   const int d = static_cast<int>(params.size());
   const int size = std::clamp(150 * d, 500, 1400);
   std::ostringstream s;
   // Both ends of a region edge may lie outside a panel: `clip two` still draws the part inside.
-  s << "set multiplot layout " << d << "," << d << " margins 0.13,0.98,0.1,0.94 spacing 0.012,0.012 title " << gnuplotQuote(title)
-    << " noenhanced\nset key off\nset grid\nset clip two\nset style fill transparent solid 0.35 noborder\n"
+  s << "set multiplot layout " << d << "," << d
+    << " margins 0.13,0.98,0.1,0.94 spacing 0.012,0.012 title " << gnuplotQuote(title)
+    << " noenhanced\nset key off\nset grid\nset clip two\nset style fill transparent solid 0.35 "
+       "noborder\n"
     << "set xlabel font ',8'\nset ylabel font ',8' offset 1,0\nset tics font ',8'\n";
   for (int r = 0; r < d; ++r)
     for (int c = 0; c < d; ++c) {
@@ -220,16 +243,20 @@ std::string pairPlot(GnuplotSvg& gp, const std::vector<ParameterMarks>& params, 
       const auto& pr = params[static_cast<std::size_t>(r)];
       const auto& pc = params[static_cast<std::size_t>(c)];
       if (r == c) {
-        s << "set ylabel " << (left ? gnuplotQuote(axisLabel(pr.name, pr.unit)) : std::string("''")) << " noenhanced\n"
+        s << "set ylabel " << (left ? gnuplotQuote(axisLabel(pr.name, pr.unit)) : std::string("''"))
+          << " noenhanced\n"
           << densityPanel(gp, pr, bottom, 4);
       } else if (r > c) {
         s << pairPanel(gp, pc, pr, c, r, region, bottom, left);
       } else {
         // Above the diagonal: the posterior correlation of the two.
         const double rho = sampleCorrelation(pc.sample, pr.sample);
-        s << "unset arrow\nunset label\nunset object\nunset xtics\nunset ytics\nunset xlabel\nunset ylabel\nunset grid\n"
-          << "set xrange [0:1]\nset yrange [0:1]\nset border 0\nset label 1 " << gnuplotQuote("ρ = " + formatPrintf("%.2f", rho))
-          << " at 0.5,0.5 center font ',11' textcolor rgb '" << (std::abs(rho) > 0.7 ? "#b03020" : "#333333") << "'\n"
+        s << "unset arrow\nunset label\nunset object\nunset xtics\nunset ytics\nunset "
+             "xlabel\nunset ylabel\nunset grid\n"
+          << "set xrange [0:1]\nset yrange [0:1]\nset border 0\nset label 1 "
+          << gnuplotQuote("ρ = " + formatPrintf("%.2f", rho))
+          << " at 0.5,0.5 center font ',11' textcolor rgb '"
+          << (std::abs(rho) > 0.7 ? "#b03020" : "#333333") << "'\n"
           << "plot 1/0 notitle\nset border 31\nset grid\n";
       }
     }

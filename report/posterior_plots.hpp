@@ -37,7 +37,7 @@ std::vector<std::array<double, 2>> projectedRegion(const calib::Region& r, int i
 /// What the posterior figures mark for one calibrated value.
 struct ParameterMarks {
   std::string name, unit;
-  std::vector<double> sample;                        ///< the posterior sample (one value per row)
+  std::vector<double> sample;  ///< the posterior sample (one value per row)
   std::optional<double> truth, optimum;
   std::optional<std::pair<double, double>> profile;  ///< the profile-likelihood 95 % interval
   double lo = 0, hi = 0;                             ///< the axis range (set by axisRange)
@@ -49,13 +49,14 @@ void axisRange(ParameterMarks& m, const std::vector<double>& extra = {});
 /// The gnuplot commands of one density panel: the weighted density, the posterior's central 95 %
 /// (dashed), the profile interval (dotted green), the optimum (dash-dot black) and the truth (red),
 /// x ticks human and labelled "name [unit]" (unlabelled ticks when !labelled), no y ticks.
-std::string densityPanel(GnuplotSvg& gp, const ParameterMarks& m, bool labelled = true, int target_ticks = 4);
+std::string densityPanel(GnuplotSvg& gp, const ParameterMarks& m, bool labelled = true,
+                         int target_ticks = 4);
 
 /// The pair plot of `params` (d >= 2): density panels on the diagonal, below it every pair's
 /// posterior design points (area ∝ posterior mass), the region's projection, the profile box, the
 /// optimum and the truth; above it the posterior correlation. Returns the <svg>.
-std::string pairPlot(GnuplotSvg& gp, const std::vector<ParameterMarks>& params, const std::optional<calib::Region>& region,
-                     const std::string& title);
+std::string pairPlot(GnuplotSvg& gp, const std::vector<ParameterMarks>& params,
+                     const std::optional<calib::Region>& region, const std::string& title);
 
 /// Posterior correlation of two equally long samples (0 when either is constant).
 double sampleCorrelation(const std::vector<double>& a, const std::vector<double>& b);

@@ -14,10 +14,11 @@
 // interactive view of section 1 (<stem>_lab.html: uPlot, zoom and one cursor; report/lab_page.hpp),
 // linked from the page; the page itself stays static for print.
 // Axes carry units and human ticks (report/ticks.hpp); the title is the study's name and every
-// path is relative to the page's folder. Plots are drawn by gnuplot (Debian package gnuplot-nox) run as a subprocess with the svg
-// terminal; its output is inlined (ids made unique per plot; report/svg_plot.hpp).
-// Without gnuplot on PATH the call throws InputError naming the package, before any work is done
-// (callers that compute the bands first check requireGnuplot() before, as `twin report` does).
+// path is relative to the page's folder. Plots are drawn by gnuplot (Debian package gnuplot-nox)
+// run as a subprocess with the svg terminal; its output is inlined (ids made unique per plot;
+// report/svg_plot.hpp). Without gnuplot on PATH the call throws InputError naming the package,
+// before any work is done (callers that compute the bands first check requireGnuplot() before, as
+// `twin report` does).
 #include <string>
 #include <vector>
 
@@ -38,7 +39,8 @@ struct ReportSection {
 };
 
 struct ReportOptions {
-  std::vector<ReportSection> appendix;  ///< extra sections after the provenance (none: the page as before)
+  std::vector<ReportSection>
+      appendix;  ///< extra sections after the provenance (none: the page as before)
   /// InputError whose where() is "report.<field>" (common/validate.hpp): every appendix section
   /// has an id and svg_count >= 0.
   void validate() const;
@@ -51,8 +53,9 @@ struct ReportOptions {
 /// "kind", "assembly"}...], "svg_count",
 /// "assemblies", "draws", "prediction_failures", "noise_sd", "warnings", "wall_s"}.
 /// InputError when a needed file is missing or malformed, or when gnuplot is not installed.
-nlohmann::json writeStudyReport(const study::LabBands& bands, const std::string& study_dir, const std::string& out_html,
-                                const std::string& command, const ReportOptions& options = {});
+nlohmann::json writeStudyReport(const study::LabBands& bands, const std::string& study_dir,
+                                const std::string& out_html, const std::string& command,
+                                const ReportOptions& options = {});
 
 /// `text` with & < > " ' replaced by character references (HTML text and attribute values).
 std::string htmlEscape(const std::string& text);

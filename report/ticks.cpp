@@ -40,7 +40,8 @@ std::string tickLabel(double v, double step, double magnitude) {
   if (mag < 1e-3) {
     // Digits after the point of the mantissa: enough to tell ticks `step` apart.
     const int e = static_cast<int>(std::floor(std::log10(std::abs(v))));
-    const int d = step > 0 ? std::clamp(e - static_cast<int>(std::floor(std::log10(step) + 1e-9)), 0, 6) : 3;
+    const int d =
+        step > 0 ? std::clamp(e - static_cast<int>(std::floor(std::log10(step) + 1e-9)), 0, 6) : 3;
     std::string s = formatPrintf("%.*e", d, v);
     // "2.0e-05" -> "2e-05": drop a mantissa's trailing zeros and point.
     const auto epos = s.find('e');
@@ -54,7 +55,10 @@ std::string tickLabel(double v, double step, double magnitude) {
   double scale = 1.0;
   std::string suffix;
   if (mag >= 1e4) {
-    static const struct { double s; const char* p; } kSi[] = {{1e12, "T"}, {1e9, "G"}, {1e6, "M"}, {1e3, "k"}};
+    static const struct {
+      double s;
+      const char* p;
+    } kSi[] = {{1e12, "T"}, {1e9, "G"}, {1e6, "M"}, {1e3, "k"}};
     for (const auto& si : kSi)
       if (mag >= si.s) {
         scale = si.s;
@@ -65,7 +69,9 @@ std::string tickLabel(double v, double step, double magnitude) {
   const double s = step > 0 ? step / scale : 1.0;
   // Decimals: the step's own (2.5 needs one, 0.25 two), at most 9.
   int decimals = 0;
-  while (decimals < 9 && std::abs(s * std::pow(10.0, decimals) - std::round(s * std::pow(10.0, decimals))) > 1e-6 * s * std::pow(10.0, decimals))
+  while (decimals < 9 &&
+         std::abs(s * std::pow(10.0, decimals) - std::round(s * std::pow(10.0, decimals))) >
+             1e-6 * s * std::pow(10.0, decimals))
     ++decimals;
   std::string out = formatPrintf("%.*f", decimals, v / scale);
   if (out.find_first_not_of("-0.") == std::string::npos) out = "0";
@@ -97,11 +103,12 @@ std::string gnuplotTics(const std::string& axis, double lo, double hi, int targe
   double magnitude = 0.0;  // one suffix for the whole axis: the largest tick's
   for (double t : ticks) magnitude = std::max(magnitude, std::abs(t));
   std::ostringstream s;
-  s << "set " << axis << "range [" << formatPrintf("%.17g", lo) << ":" << formatPrintf("%.17g", hi) << "]\nset " << axis
-    << "tics (";
+  s << "set " << axis << "range [" << formatPrintf("%.17g", lo) << ":" << formatPrintf("%.17g", hi)
+    << "]\nset " << axis << "tics (";
   bool first = true;
   for (double t : ticks) {
-    s << (first ? "" : ", ") << '"' << (labelled ? tickLabel(t, step, magnitude) : std::string()) << "\" " << formatPrintf("%.17g", t);
+    s << (first ? "" : ", ") << '"' << (labelled ? tickLabel(t, step, magnitude) : std::string())
+      << "\" " << formatPrintf("%.17g", t);
     first = false;
   }
   s << ")\n";

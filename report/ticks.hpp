@@ -7,7 +7,8 @@
 //   tickLabel(150000.0, 20000.0)    -> "150k"
 //   tickLabel(-3.5e6, 5e5)          -> "-3.5M"
 //   tickLabel(0.0125, 0.0025)       -> "0.0125"
-//   gnuplotTics("x", 0.0, 153970.0) -> "set xrange [0:153970]\nset xtics (\"0\" 0, \"20k\" 20000, ...)\n"
+//   gnuplotTics("x", 0.0, 153970.0) -> "set xrange [0:153970]\nset xtics (\"0\" 0, \"20k\" 20000,
+//   ...)\n"
 #include <string>
 #include <vector>
 
@@ -30,7 +31,8 @@ std::string tickLabel(double v, double step, double magnitude = 0.0);
 /// gnuplot commands setting `axis` ("x", "y", "x2"...) to the range [lo, hi] with niceTicks of
 /// it, labelled by tickLabel (or with empty labels when !labelled: the inner panels of a grid).
 /// An empty or degenerate range is widened by a thousandth of its magnitude (or 1 at zero) first.
-std::string gnuplotTics(const std::string& axis, double lo, double hi, int target = 6, bool labelled = true);
+std::string gnuplotTics(const std::string& axis, double lo, double hi, int target = 6,
+                        bool labelled = true);
 
 /// [lo, hi] widened by `fraction` of its span on each side (a margin for points at the edges);
 /// a zero span is widened by `fraction` of the magnitude (or of 1 at zero).

@@ -1,17 +1,17 @@
 #include "study/bench.hpp"
 
-#include <algorithm>
 #include <unistd.h>
-#include <filesystem>
-#include <cstdio>
-#include <cmath>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 
 #include "common/errors.hpp"
-#include "subsystems/user_effect.hpp"
 #include "common/files.hpp"
 #include "io/log_import.hpp"
 #include "io/mdf_log.hpp"
+#include "subsystems/user_effect.hpp"
 #include "twin/simulator.hpp"
 
 namespace dtwin {
@@ -22,7 +22,8 @@ double peak(const Trace& t) {
 }
 }  // namespace
 
-BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const ScenarioSpec& sc, int runs, bool reference) {
+BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const ScenarioSpec& sc, int runs,
+                       bool reference) {
   DTWIN_CHECK(runs >= 1, "runs >= 1");
   auto model = study.makeModel(a);
   auto road = makeRoad(sc, model->vehicle(), study.seed);
@@ -40,7 +41,9 @@ BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const Scenario
     row.ok = row.ok && r.stats.ok;
   }
   std::sort(walls.begin(), walls.end());
-  row.median_wall_s = walls.size() % 2 ? walls[walls.size() / 2] : 0.5 * (walls[walls.size() / 2 - 1] + walls[walls.size() / 2]);
+  row.median_wall_s = walls.size() % 2
+                          ? walls[walls.size() / 2]
+                          : 0.5 * (walls[walls.size() / 2 - 1] + walls[walls.size() / 2]);
   row.min_wall_s = walls.front();
   row.max_wall_s = walls.back();
   row.simulated_s = r.stats.sim_s;
@@ -64,14 +67,24 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs) {
   log.reserve(static_cast<std::size_t>(rows) * 64);
   char line[256];
   std::uint64_t state = 12345;
-  MdfWriteGroup mf4{"bench", "time", "s", {}, {{"speed_kmh", "km/h", {}, {}}, {"road_l_mm", "mm", {}, {}}, {"road_r_mm", "mm", {}, {}},
-                                              {"seat_g", "g", {}, {}}, {"hub_g", "deg/s^2", {}, {}}}};  // hub_g: as the mapping reads it
+  MdfWriteGroup mf4{"bench",
+                    "time",
+                    "s",
+                    {},
+                    {{"speed_kmh", "km/h", {}, {}},
+                     {"road_l_mm", "mm", {}, {}},
+                     {"road_r_mm", "mm", {}, {}},
+                     {"seat_g", "g", {}, {}},
+                     {"hub_g", "deg/s^2", {}, {}}}};  // hub_g: as the mapping reads it
   for (long k = 0; k < rows; ++k) {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;  // a fixed LCG: the same log every time
+    state = state * 6364136223846793005ULL +
+            1442695040888963407ULL;  // a fixed LCG: the same log every time
     const double jitter = (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 0.004;
     const double t = 0.01 * static_cast<double>(k) + jitter;
-    const double x[] = {40 + 20 * std::sin(t / 30), 3 * std::sin(1.1 * t), 3 * std::cos(1.3 * t), 1 + 0.05 * std::sin(7 * t), 0.3 * std::sin(11 * t)};
-    std::snprintf(line, sizeof line, "%.4f,%.2f,%.3f,%.3f,%.5f,%.5f,%ld,ok\n", t, x[0], x[1], x[2], x[3], x[4], k);
+    const double x[] = {40 + 20 * std::sin(t / 30), 3 * std::sin(1.1 * t), 3 * std::cos(1.3 * t),
+                        1 + 0.05 * std::sin(7 * t), 0.3 * std::sin(11 * t)};
+    std::snprintf(line, sizeof line, "%.4f,%.2f,%.3f,%.3f,%.5f,%.5f,%ld,ok\n", t, x[0], x[1], x[2],
+                  x[3], x[4], k);
     log += line;
     mf4.time.push_back(t);
     for (std::size_t c = 0; c < 5; ++c) mf4.channels[c].values.push_back(x[c]);
@@ -89,7 +102,8 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs) {
   b.rows = rows;
   b.bytes = static_cast<double>(log.size());
   std::vector<double> walls;
-  const auto tmp = std::filesystem::temp_directory_path() / ("dtwin_bench_import_" + std::to_string(::getpid()));
+  const auto tmp =
+      std::filesystem::temp_directory_path() / ("dtwin_bench_import_" + std::to_string(::getpid()));
   for (int r = 0; r < runs; ++r) {
     std::filesystem::remove_all(tmp);
     const auto t0 = std::chrono::steady_clock::now();
@@ -103,7 +117,8 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs) {
   b.min_s = walls.front();
   b.max_s = walls.back();
   // The same log as MF4, written by mdflib into a temporary folder, read from there as a file.
-  const auto mdir = std::filesystem::temp_directory_path() / ("dtwin_bench_mf4_" + std::to_string(::getpid()));
+  const auto mdir =
+      std::filesystem::temp_directory_path() / ("dtwin_bench_mf4_" + std::to_string(::getpid()));
   std::filesystem::create_directories(mdir);
   for (bool compress : {false, true}) {
     const std::string path = (mdir / (compress ? "bench_dz.mf4" : "bench.mf4")).string();
@@ -129,7 +144,8 @@ BenchImport benchImport(const std::string& study_path, long rows, int runs) {
   return b;
 }
 
-BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario, long evaluations, int runs) {
+BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario, long evaluations,
+                                int runs) {
   UserEffectSpec spec;
   spec.name = "user_damper_asymmetry";
   spec.element = "strut";
@@ -144,15 +160,18 @@ BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario,
   s.base_damping = 2500;
   BenchUserEffect r;
   r.evaluations = evaluations;
-  std::vector<double> rates(4096);  // both signs, never the same twice in a row; read, not computed, in the timed loop
-  for (std::size_t i = 0; i < rates.size(); ++i) rates[i] = std::sin(1e-3 * static_cast<double>(i * 7919 % 6283));
+  std::vector<double> rates(
+      4096);  // both signs, never the same twice in a row; read, not computed, in the timed loop
+  for (std::size_t i = 0; i < rates.size(); ++i)
+    rates[i] = std::sin(1e-3 * static_cast<double>(i * 7919 % 6283));
   auto time = [&](const Effect& e, double& sink) {
     const auto t0 = std::chrono::steady_clock::now();
     for (long i = 0; i < evaluations; ++i) {
       s.rate_mps = rates[static_cast<std::size_t>(i) & 4095];
       sink += e.calcStrutForce(s, p);
     }
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e9 / static_cast<double>(evaluations);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e9 /
+           static_cast<double>(evaluations);
   };
   std::vector<double> tb, tu;
   double sink_b = 0, sink_u = 0;
@@ -166,9 +185,12 @@ BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario,
   r.user_ns = tu[tu.size() / 2];
   for (double v = -2.0; v <= 2.0; v += 1e-3) {
     s.rate_mps = v;
-    r.max_abs_difference = std::max(r.max_abs_difference, std::abs(user->calcStrutForce(s, p) - builtin->calcStrutForce(s, p)));
+    r.max_abs_difference = std::max(
+        r.max_abs_difference, std::abs(user->calcStrutForce(s, p) - builtin->calcStrutForce(s, p)));
   }
-  if (sink_b != sink_u) r.max_abs_difference = std::max(r.max_abs_difference, std::abs(sink_b - sink_u) / static_cast<double>(evaluations));
+  if (sink_b != sink_u)
+    r.max_abs_difference = std::max(r.max_abs_difference,
+                                    std::abs(sink_b - sink_u) / static_cast<double>(evaluations));
   // Inside the twin: whole runs with each effect, the user one added to a copy of the study.
   Study with = study;
   with.addUserEffects({spec});
@@ -176,13 +198,17 @@ BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario,
   r.scenario = scenario;
   const AssemblySpec a = with.assemblies().front();
   auto runOnce = [&](const std::string& name, RunResult* keep) {
-    auto model = with.makeModel(a, {EffectSetting{name, {{name + ".ratio", 2.2, "twin bench", "twin bench"}}}});
+    auto model = with.makeModel(
+        a, {EffectSetting{name, {{name + ".ratio", 2.2, "twin bench", "twin bench"}}}});
     Simulator sim(model, with.simulation);
     auto road = makeRoad(sc, model->vehicle(), with.seed);
     const auto t0 = std::chrono::steady_clock::now();
     RunResult res = sim.run(model->defaultRunValues(), *road, sc);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!res.stats.ok) throw std::runtime_error("twin bench: the run with " + name + " failed: " + res.stats.message);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!res.stats.ok)
+      throw std::runtime_error("twin bench: the run with " + name +
+                               " failed: " + res.stats.message);
     if (keep) *keep = std::move(res);
     return wall;
   };
@@ -216,7 +242,8 @@ double handMedian(std::vector<double> v) {
 std::pair<double, double> handMaxDiff(const Trace& simbody, const HandOdeRun& hand) {
   const auto& ts = simbody.column("time_s");
   const auto& fs = simbody.column("hub_force_fl_N");
-  DTWIN_CHECK(ts.size() == hand.time_s.size(), "benchHandOde: the two output grids differ in length");
+  DTWIN_CHECK(ts.size() == hand.time_s.size(),
+              "benchHandOde: the two output grids differ in length");
   double worst = 0, at = 0;
   for (std::size_t i = 0; i < ts.size(); ++i)
     if (const double d = std::abs(fs[i] - hand.hub_force_N[0][i]); d > worst) {
@@ -227,12 +254,14 @@ std::pair<double, double> handMaxDiff(const Trace& simbody, const HandOdeRun& ha
 }
 }  // namespace
 
-HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& sc, int runs) {
+HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& sc,
+                          int runs) {
   if (runs < 1) throw InputError("twin bench --hand-ode", "--runs must be >= 1");
   const auto model = study.makeModel(a);
   const auto road = makeRoad(sc, model->vehicle(), study.seed);
   const auto values = model->defaultRunValues();
-  const HandOde probe(*model, values, *road, sc.speed);  // InputError for an assembly it does not model
+  const HandOde probe(*model, values, *road,
+                      sc.speed);  // InputError for an assembly it does not model
   HandOdeBench b;
   b.assembly = a.id;
   b.label = a.label();
@@ -241,18 +270,22 @@ HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const Scena
   b.accuracy = study.simulation.accuracy;
   Simulator sim(model, study.simulation);
   SimulationOptions quiet = study.simulation;
-  quiet.output_rate_hz = 0.1;  // two output rows: what is left is the equilibrium and the integration
+  quiet.output_rate_hz =
+      0.1;  // two output rows: what is left is the equilibrium and the integration
   Simulator sim_quiet(model, quiet);
   // Warm-up, counts and agreement (the Simbody run records its steps to count its Jacobians).
   StepPlan plan;
   const RunResult ref = sim.run(values, *road, sc, StepControl{nullptr, &plan});
-  if (!ref.stats.ok) throw std::runtime_error("twin bench --hand-ode: the Simbody run failed: " + ref.stats.message);
+  if (!ref.stats.ok)
+    throw std::runtime_error("twin bench --hand-ode: the Simbody run failed: " + ref.stats.message);
   sim_quiet.run(values, *road, sc);
   const HandOdeRun hand = runHandOde(*model, values, *road, sc, study.simulation);
   b.simbody_steps = ref.stats.steps;
   b.simbody_attempts = ref.stats.steps_attempted;
-  b.simbody_jacobians = static_cast<long>(std::count(plan.new_jacobian.begin(), plan.new_jacobian.end(), 1));
-  b.simbody_evaluations = 1 + 4 * b.simbody_steps + 3 * (b.simbody_attempts - b.simbody_steps) + HandOde::kStates * b.simbody_jacobians;
+  b.simbody_jacobians =
+      static_cast<long>(std::count(plan.new_jacobian.begin(), plan.new_jacobian.end(), 1));
+  b.simbody_evaluations = 1 + 4 * b.simbody_steps + 3 * (b.simbody_attempts - b.simbody_steps) +
+                          HandOde::kStates * b.simbody_jacobians;
   b.hand_steps = hand.steps;
   b.hand_attempts = hand.attempts;
   b.hand_evaluations = hand.evaluations;
@@ -287,8 +320,10 @@ HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const Scena
       probe.rhs(6.0 + 1e-6 * i, y, yd);
       sink += yd[7];
     }
-    b.hand_rhs_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
-    if (!std::isfinite(sink)) throw std::runtime_error("twin bench --hand-ode: non-finite right-hand side");
+    b.hand_rhs_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
+    if (!std::isfinite(sink))
+      throw std::runtime_error("twin bench --hand-ode: non-finite right-hand side");
   }
   // Both at tight tolerance (untimed): the difference of the models themselves.
   SimulationOptions tight = study.simulation;
@@ -296,7 +331,8 @@ HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const Scena
   tight.max_step_s = 1e-3;
   tight.obstacle_max_step_s = 2.5e-5;
   const RunResult ref_tight = Simulator(model, tight).run(values, *road, sc);
-  b.tight_max_diff_fl_N = handMaxDiff(ref_tight.trace, runHandOde(*model, values, *road, sc, tight)).first;
+  b.tight_max_diff_fl_N =
+      handMaxDiff(ref_tight.trace, runHandOde(*model, values, *road, sc, tight)).first;
   return b;
 }
 

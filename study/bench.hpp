@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "study/hand_ode.hpp"
 #include "io/study.hpp"
+#include "study/hand_ode.hpp"
 
 namespace dtwin {
 
@@ -14,7 +14,7 @@ struct BenchRow {
   double simulated_s = 0;
   double real_time_factor = 0;  ///< simulated seconds per wall second
   long steps = 0;
-  double peak_fl_N = 0;         ///< peak front-left hub force of the run
+  double peak_fl_N = 0;            ///< peak front-left hub force of the run
   double reference_peak_fl_N = 0;  ///< same at tight tolerance (bump scenarios; 0 if not computed)
   bool ok = true;
 };
@@ -22,7 +22,8 @@ struct BenchRow {
 /// Runs `scenario` `runs` times (after one warm-up) for the assembly and returns the figures.
 /// If `reference` is true, also runs once at tight tolerance (accuracy 1e-8, steps <= 2.5e-5 s
 /// near obstacles) to compare the peak front-left force.
-BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario, int runs, bool reference);
+BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario,
+                       int runs, bool reference);
 
 /// `twin import` on a synthetic logger CSV of `rows` rows at 100 Hz (time with clock jitter,
 /// speed in km/h, left and right road heights in mm, two accelerometers in g, two unused
@@ -30,7 +31,7 @@ BenchRow benchAssembly(const Study& study, const AssemblySpec& a, const Scenario
 /// log written as MF4 (plain and compressed) into a temporary folder and imported the same way.
 struct BenchImport {
   long rows = 0;
-  double bytes = 0;             ///< size of the log
+  double bytes = 0;                           ///< size of the log
   double median_s = 0, min_s = 0, max_s = 0;  ///< importLog + writeImport, wall
   /// The same log as an MF4 file (mdflib's writer, one channel group, 64-bit floats; the counter
   /// and the note left out), plain and with its data in DZ blocks: its size and the same timing.
@@ -55,7 +56,8 @@ struct BenchUserEffect {
   long steps = 0;                            ///< integrator steps of the built-in run
   bool identical_traces = false;
 };
-BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario, long evaluations, int runs);
+BenchUserEffect benchUserEffect(const Study& study, const std::string& scenario, long evaluations,
+                                int runs);
 
 /// `twin bench --hand-ode`: the study's simulator and the hand ODE on `scenario` for assembly `a`,
 /// `runs` timed runs each (after one warm-up), alternating, medians reported.
@@ -83,6 +85,7 @@ struct HandOdeBench {
   double ratio() const { return simbody_median_s / hand_median_s; }
 };
 /// InputError for an assembly the hand ODE does not model (HandOde), or `runs` < 1.
-HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario, int runs);
+HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario,
+                          int runs);
 
 }  // namespace dtwin

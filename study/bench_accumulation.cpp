@@ -1,11 +1,11 @@
 #include "study/bench_accumulation.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <random>
-#include <unistd.h>
 
 #include "classification/moment_tree.hpp"
 #include "classification/synthesis.hpp"
@@ -19,7 +19,9 @@ using classify::MomentTree;
 
 namespace {
 using AccClock = std::chrono::steady_clock;
-double accSince(AccClock::time_point t0) { return std::chrono::duration<double>(AccClock::now() - t0).count(); }
+double accSince(AccClock::time_point t0) {
+  return std::chrono::duration<double>(AccClock::now() - t0).count();
+}
 double accMedian(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0.0 : v[v.size() / 2];
@@ -31,7 +33,8 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
   DTWIN_CHECK(ranks >= 1 && c.leaves >= 1, "modelSynthesisWall: ranks and leaves >= 1");
   const long leaf_draws = c.leaf_blocks * c.block, n = c.leaves;
   auto leafTime = [&](long leaf) {
-    const double d = static_cast<double>(std::max(0L, std::min(leaf_draws, c.draws - leaf * leaf_draws)));
+    const double d =
+        static_cast<double>(std::max(0L, std::min(leaf_draws, c.draws - leaf * leaf_draws)));
     return d * c.draw_s + d * static_cast<double>(c.roads) * c.add_per_vector_s;
   };
   const double node_s = c.pack_s + c.node_bytes / c.link_bytes_per_s + c.unpack_s;
@@ -46,7 +49,8 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
     long L0 = 0;
     double since_ckpt = 0;
     while (L0 < n) {
-      const long left = n - L0, rounds = accCeilDiv(left, kRoundLeaves * ranks), q = accCeilDiv(left, ranks * rounds);
+      const long left = n - L0, rounds = accCeilDiv(left, kRoundLeaves * ranks),
+                 q = accCeilDiv(left, ranks * rounds);
       const long L1 = std::min(n, L0 + q * ranks);
       auto lo = [&](long r) { return std::min(L1, L0 + q * r); };
       auto hi = [&](long r) { return std::min(L1, lo(r) + q); };
@@ -54,7 +58,8 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
       for (long r = 0; r < ranks; ++r) {
         double t = 0;
         for (long l = lo(r); l < hi(r); ++l) t += leafTime(l);
-        t += static_cast<double>((hi(r) - lo(r)) - MomentTree::nodeCount(n, lo(r), hi(r))) * c.merge_s;
+        t += static_cast<double>((hi(r) - lo(r)) - MomentTree::nodeCount(n, lo(r), hi(r))) *
+             c.merge_s;
         compute = std::max(compute, t);
       }
       // The binomial combination: at step s rank r receives the part of ranks r+s .. r+2s−1.
@@ -64,13 +69,17 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
         for (long r = 0; r + s < ranks; r += 2 * s) {
           const long from = lo(r + s), to = hi(std::min<long>(ranks - 1, r + 2 * s - 1));
           const long m = MomentTree::nodeCount(n, from, to);
-          const long before = MomentTree::nodeCount(n, lo(r), from), after = MomentTree::nodeCount(n, lo(r), to);
-          step = std::max(step, static_cast<double>(m) * node_s + static_cast<double>(before + m - after) * c.merge_s);
+          const long before = MomentTree::nodeCount(n, lo(r), from),
+                     after = MomentTree::nodeCount(n, lo(r), to);
+          step = std::max(step, static_cast<double>(m) * node_s +
+                                    static_cast<double>(before + m - after) * c.merge_s);
         }
         combine += step;
       }
-      // The root appends the round to its list, and saves the new nodes when a checkpoint is due (30 s).
-      const long before = MomentTree::nodeCount(n, 0, L0), part = MomentTree::nodeCount(n, L0, L1), after = MomentTree::nodeCount(n, 0, L1);
+      // The root appends the round to its list, and saves the new nodes when a checkpoint is due
+      // (30 s).
+      const long before = MomentTree::nodeCount(n, 0, L0), part = MomentTree::nodeCount(n, L0, L1),
+                 after = MomentTree::nodeCount(n, 0, L1);
       combine += static_cast<double>(before + part - after) * c.merge_s;
       since_ckpt += compute + combine;
       if (since_ckpt >= 30.0 && L1 < n) {
@@ -82,7 +91,8 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
       ++row.rounds;
       L0 = L1;
     }
-    const double bcast = std::ceil(std::log2(static_cast<double>(ranks))) * node_s;  // the root's moments to every rank
+    const double bcast = std::ceil(std::log2(static_cast<double>(ranks))) *
+                         node_s;  // the root's moments to every rank
     row.wall_s += bcast;
     row.combine_s += bcast;
   }
@@ -94,16 +104,19 @@ ScalingRow modelSynthesisWall(const AccumulationCosts& c, int ranks) {
     double t = 0;
     for (long b0 = 0; b0 < blocks; b0 += per_round) {
       const long d = std::min(c.draws, (b0 + per_round) * c.block) - b0 * c.block;
-      t += static_cast<double>(accCeilDiv(d, ranks)) * c.draw_s + static_cast<double>(d * c.roads) * c.add_per_vector_s;
+      t += static_cast<double>(accCeilDiv(d, ranks)) * c.draw_s +
+           static_cast<double>(d * c.roads) * c.add_per_vector_s;
     }
     row.ordered_wall_s = t;
   }
   return row;
 }
 
-AccumulationBench benchAccumulation(const Study& study, const AssemblySpec& assembly, int draws_timed, double link_gb_per_s) {
+AccumulationBench benchAccumulation(const Study& study, const AssemblySpec& assembly,
+                                    int draws_timed, double link_gb_per_s) {
   if (draws_timed < 1) throw InputError("twin bench --accumulation", "--runs must be >= 1");
-  if (!(link_gb_per_s > 0)) throw InputError("twin bench --accumulation", "--link-gb-per-s must be > 0");
+  if (!(link_gb_per_s > 0))
+    throw InputError("twin bench --accumulation", "--link-gb-per-s must be > 0");
   const ScenarioSpec& sc = study.scenario("field");
   AccumulationBench b;
   b.assembly = assembly.id;
@@ -114,7 +127,8 @@ AccumulationBench benchAccumulation(const Study& study, const AssemblySpec& asse
   c.block = classify::SynthesisOptions{}.block;
   c.leaf_blocks = classify::SynthesisOptions{}.leaf_blocks;
   c.leaves = accCeilDiv(accCeilDiv(c.draws, c.block), c.leaf_blocks);
-  c.p = static_cast<int>(std::lround(5.0 * study.simulation.output_rate_hz)) + 1;  // the default 10–15 s window
+  c.p = static_cast<int>(std::lround(5.0 * study.simulation.output_rate_hz)) +
+        1;  // the default 10–15 s window
   c.link_bytes_per_s = link_gb_per_s * 1e9;
 
   // One draw: R library roads from one smooth start, at the assembly's default values.
@@ -127,16 +141,20 @@ AccumulationBench benchAccumulation(const Study& study, const AssemblySpec& asse
     std::vector<std::shared_ptr<const Road>> roads;
     std::vector<const Road*> ptrs;
     for (long r = 0; r < c.roads; ++r) {
-      roads.push_back(makeRoad(sc, model->vehicle(), classify::librarySeed(study.seed, static_cast<std::uint64_t>(j * c.roads + r))));
+      roads.push_back(
+          makeRoad(sc, model->vehicle(),
+                   classify::librarySeed(study.seed, static_cast<std::uint64_t>(j * c.roads + r))));
       ptrs.push_back(roads.back().get());
     }
     const auto t0 = AccClock::now();
     if (branched) {
       for (const auto& run : sim.runBranched(values, ptrs, sc))
-        if (!run.stats.ok) throw std::runtime_error("twin bench --accumulation: a run failed: " + run.stats.message);
+        if (!run.stats.ok)
+          throw std::runtime_error("twin bench --accumulation: a run failed: " + run.stats.message);
     } else {
       for (const Road* road : ptrs)
-        if (!sim.run(values, *road, sc).stats.ok) throw std::runtime_error("twin bench --accumulation: a run failed");
+        if (!sim.run(values, *road, sc).stats.ok)
+          throw std::runtime_error("twin bench --accumulation: a run failed");
     }
     if (j > 0) draw_walls.push_back(accSince(t0));
   }
@@ -153,7 +171,9 @@ AccumulationBench benchAccumulation(const Study& study, const AssemblySpec& asse
   std::vector<double> add_s, merge_s, pack_s, unpack_s, save_s;
   MomentAccumulator a(c.p, mo), other(c.p, mo);
   other.addBlock(X);
-  const std::string tmp = (std::filesystem::temp_directory_path() / ("dtwin_bench_node_" + std::to_string(::getpid()) + ".bin")).string();
+  const std::string tmp = (std::filesystem::temp_directory_path() /
+                           ("dtwin_bench_node_" + std::to_string(::getpid()) + ".bin"))
+                              .string();
   for (int k = 0; k < 3; ++k) {
     auto t0 = AccClock::now();
     a.addBlock(X);

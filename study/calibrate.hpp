@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "calibration/calibrate.hpp"
-#include "diagnosis/candidates.hpp"
 #include "common/progress.hpp"
+#include "diagnosis/candidates.hpp"
 #include "io/study.hpp"
 
 namespace dtwin {
@@ -26,7 +26,7 @@ struct CalibrateRequest {
   /// (diagnosis/candidates.hpp): a per-corner or per-axle factor ("suspension.damping@rr", over
   /// [0.2, 2]), a freeable vehicle value or a law's fixed value (±50 % about the file's value).
   std::vector<std::string> free;
-  std::string command;                  ///< recorded in every output
+  std::string command;  ///< recorded in every output
   /// InputError naming the field ("calibrate.data", "calibrate.out", ...) or the options' own.
   void validate(const Study& study) const;
 };
@@ -35,7 +35,8 @@ struct CalibrateRequest {
 /// `twin coverage` and `twin diagnose`, the keywords of the Python module): -1 or "" leaves the
 /// study's value.
 struct CalibrationOverrides {
-  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1, max_rounds = -1, ridge_steps = -1;
+  long lhs_points = -1, iterations = -1, burn_in = -1, starts = -1, max_rounds = -1,
+       ridge_steps = -1;
   std::string region, design, interval, steps;
 
   /// The given values over `opt` (the study's options, CalibrationOptions::fromStudy): a region
@@ -49,12 +50,14 @@ struct CalibrationOverrides {
 /// The lab data of `twin calibrate --data FILE[@SCENARIO]`: the file, and the scenario it was
 /// measured on: `scenario` when given, else the one after '@', else the one its JSON sidecar
 /// names, else lab (InputError when the sidecar names another). `field` names the argument.
-std::pair<std::string, std::string> calibrationData(const std::string& data, const std::string& field,
+std::pair<std::string, std::string> calibrationData(const std::string& data,
+                                                    const std::string& field,
                                                     const std::string& scenario = "");
 
 /// The work of `request` with `overrides` checked against the limits (io/work.hpp; InputError
 /// above them unless `force`), before anything runs.
-void checkCalibrateWork(const Study& study, const CalibrateRequest& request, const CalibrationOverrides& overrides, bool force);
+void checkCalibrateWork(const Study& study, const CalibrateRequest& request,
+                        const CalibrationOverrides& overrides, bool force);
 
 /// One calibrated assembly.
 struct CalibrateRun {
@@ -71,8 +74,8 @@ struct CalibrateRun {
 };
 
 /// The SSE weights of a calibration against `set`. One channel, or forces only: none (the SSE in
-/// newtons; the Gibbs sampler's τ estimates their one noise, docs/method.md). Other channels, which may
-/// be in different units (an accelerometer and a string pot): 1/σ_c², σ_c from the data's
+/// newtons; the Gibbs sampler's τ estimates their one noise, docs/method.md). Other channels, which
+/// may be in different units (an accelerometer and a string pot): 1/σ_c², σ_c from the data's
 /// repetitions, else the sensor's noise_sd, else the study's [noise] for forces, so that the SSE
 /// is a χ² and τ ≈ 1 when the stated noises are right. A channel with none of these is an
 /// InputError naming it: fitted unweighted, a channel in metres would weigh nothing beside one in
@@ -82,7 +85,8 @@ std::map<std::string, double> channelWeights(const Study& study, const calib::Da
 /// How `value` of CalibrateRequest::free is calibrated in `assembly`: the diagnosis's "free:"
 /// candidate. InputError("calibrate.free", rule) for a value that cannot be freed there (unknown,
 /// calibrated already, a factor of a value the assembly lacks, ...).
-diag::CandidateSpec freedValueSpec(const Study& study, const AssemblySpec& assembly, const std::string& value);
+diag::CandidateSpec freedValueSpec(const Study& study, const AssemblySpec& assembly,
+                                   const std::string& value);
 
 /// The targets of `request` (every assembly when none is named).
 std::vector<AssemblySpec> calibrationTargets(const Study& study, const CalibrateRequest& request);

@@ -7,14 +7,14 @@
 #include <filesystem>
 #include <map>
 #include <optional>
-#include <tuple>
 #include <sstream>
+#include <tuple>
 
+#include "common/distributed.hpp"
 #include "common/errors.hpp"
 #include "common/validate.hpp"
-#include "common/distributed.hpp"
-#include "study/generate.hpp"
 #include "io/provenance.hpp"
+#include "study/generate.hpp"
 
 namespace fs = std::filesystem;
 
@@ -27,7 +27,9 @@ std::string fmt(double v, int digits = 4) { return formatNumber(v, digits); }
 
 void CoverageOptions::validate() const {
   const OptionCheck check("coverage");
-  check.require(seeds >= 2, "seeds", "must be >= 2 (a coverage needs several noise seeds), got " + std::to_string(seeds));
+  check.require(
+      seeds >= 2, "seeds",
+      "must be >= 2 (a coverage needs several noise seeds), got " + std::to_string(seeds));
   check.require(!out_dir.empty(), "out_dir", "an output folder is required");
   calibration.validate();
 }
@@ -64,7 +66,9 @@ nlohmann::json CoverageResult::toJson() const {
                          {"sd_ratio_to_optima", r.optimum_ratio()},
                          {"rmse_over_mean_sd", r.rmse_ratio()}});
   for (const auto& [a, t] : totals)
-    j["assemblies"][a] = {{"covered", t.first}, {"pairs", t.second}, {"coverage", t.second ? static_cast<double>(t.first) / t.second : 0.0}};
+    j["assemblies"][a] = {{"covered", t.first},
+                          {"pairs", t.second},
+                          {"coverage", t.second ? static_cast<double>(t.first) / t.second : 0.0}};
   j["median_calibration_wall_s"] = median_calibration_wall_s;
   j["wall_s"] = wall_s;
   return j;
@@ -72,17 +76,22 @@ nlohmann::json CoverageResult::toJson() const {
 
 std::string CoverageResult::markdown() const {
   std::ostringstream s;
-  s << "| assembly | parameter | truth | ci95 holds the truth | Wilson 95 % | profile holds | posterior holds | mean width profile | "
-       "mean width posterior | mean sd | sd of means | mean sd / sd of means | sd of θ̂ | mean sd / sd of θ̂ | RMSE of means / mean sd |\n"
+  s << "| assembly | parameter | truth | ci95 holds the truth | Wilson 95 % | profile holds | "
+       "posterior holds | mean width profile | "
+       "mean width posterior | mean sd | sd of means | mean sd / sd of means | sd of θ̂ | mean sd / "
+       "sd of θ̂ | RMSE of means / mean sd |\n"
        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
-    s << "| " << r.assembly << " | " << r.parameter << " | " << fmt(r.truth, 6) << " | " << r.covered << "/" << r.seeds << " ("
-      << fmt(100.0 * r.covered / std::max(r.seeds, 1), 3) << " %, " << r.interval << ") | " << fmt(100 * r.wilson_low, 3) << "–"
-      << fmt(100 * r.wilson_high, 3) << " % | " << r.covered_profile << "/" << r.seeds << " | " << r.covered_posterior << "/" << r.seeds
-      << " | " << fmt(r.mean_width_profile) << " | " << fmt(r.mean_width_posterior) << " | " << fmt(r.mean_sd) << " | "
-      << fmt(r.sd_of_means) << " | " << fmt(r.sd_ratio(), 3) << " | " << fmt(r.sd_of_optima) << " | " << fmt(r.optimum_ratio(), 3)
-      << " | " << fmt(r.rmse_ratio(), 3) << " |\n";
-  s << "\n| assembly | (parameter, seed) pairs whose ci95 holds the truth | profile | posterior |\n|---|---|---|---|\n";
+    s << "| " << r.assembly << " | " << r.parameter << " | " << fmt(r.truth, 6) << " | "
+      << r.covered << "/" << r.seeds << " (" << fmt(100.0 * r.covered / std::max(r.seeds, 1), 3)
+      << " %, " << r.interval << ") | " << fmt(100 * r.wilson_low, 3) << "–"
+      << fmt(100 * r.wilson_high, 3) << " % | " << r.covered_profile << "/" << r.seeds << " | "
+      << r.covered_posterior << "/" << r.seeds << " | " << fmt(r.mean_width_profile) << " | "
+      << fmt(r.mean_width_posterior) << " | " << fmt(r.mean_sd) << " | " << fmt(r.sd_of_means)
+      << " | " << fmt(r.sd_ratio(), 3) << " | " << fmt(r.sd_of_optima) << " | "
+      << fmt(r.optimum_ratio(), 3) << " | " << fmt(r.rmse_ratio(), 3) << " |\n";
+  s << "\n| assembly | (parameter, seed) pairs whose ci95 holds the truth | profile | posterior "
+       "|\n|---|---|---|---|\n";
   for (const auto& [a, t] : totals) {
     int prof = 0, post = 0;
     for (const auto& r : rows)
@@ -90,9 +99,10 @@ std::string CoverageResult::markdown() const {
         prof += r.covered_profile;
         post += r.covered_posterior;
       }
-    s << "| " << a << " | " << t.first << "/" << t.second << " (" << fmt(100.0 * t.first / std::max(t.second, 1), 3) << " %) | " << prof
-      << "/" << t.second << " (" << fmt(100.0 * prof / std::max(t.second, 1), 3) << " %) | " << post << "/" << t.second << " ("
-      << fmt(100.0 * post / std::max(t.second, 1), 3) << " %) |\n";
+    s << "| " << a << " | " << t.first << "/" << t.second << " ("
+      << fmt(100.0 * t.first / std::max(t.second, 1), 3) << " %) | " << prof << "/" << t.second
+      << " (" << fmt(100.0 * prof / std::max(t.second, 1), 3) << " %) | " << post << "/" << t.second
+      << " (" << fmt(100.0 * post / std::max(t.second, 1), 3) << " %) |\n";
   }
   return s.str();
 }
@@ -101,8 +111,9 @@ namespace {
 
 /// One noise seed of one assembly: its lab data (generated at the study's truths, written to
 /// `adir`) calibrated as `twin calibrate` would, in adir/seed_<seed>/.
-CalibrationResult calibrateSeed(const Study& study, const AssemblySpec& a, const fs::path& adir, std::uint64_t seed,
-                                const CoverageOptions& options, const StageProgress& progress) {
+CalibrationResult calibrateSeed(const Study& study, const AssemblySpec& a, const fs::path& adir,
+                                std::uint64_t seed, const CoverageOptions& options,
+                                const StageProgress& progress) {
   LabOptions lo;
   lo.seed = seed;
   lo.command = options.command;
@@ -110,15 +121,19 @@ CalibrationResult calibrateSeed(const Study& study, const AssemblySpec& a, const
   const std::string lab_path = (adir / ("lab_" + std::to_string(seed) + ".csv")).string();
   rootWrites(options.calibration.processes, [&] {
     writeLabCsv(lab_path, lab.data, measurableChannels(study.sensors));
-    writeFileAtomic(fs::path(lab_path).replace_extension(".json").string(), lab.provenance.dump(2) + "\n");
+    writeFileAtomic(fs::path(lab_path).replace_extension(".json").string(),
+                    lab.provenance.dump(2) + "\n");
   });
   CalibrationOptions co = options.calibration;
   co.command = options.command;
   co.data_path = lab_path;
   std::ostringstream csv;
-  for (const auto& r : lab.data.records) csv << r.repetition << ',' << formatExact(r.time_s) << ',' << r.channel << ',' << formatExact(r.value) << '\n';
+  for (const auto& r : lab.data.records)
+    csv << r.repetition << ',' << formatExact(r.time_s) << ',' << r.channel << ','
+        << formatExact(r.value) << '\n';
   const std::string hash = std::to_string(fnv1a64(csv.str()));
-  return calibrateAssembly(study, a, lab.data, "lab", co, (adir / ("seed_" + std::to_string(seed))).string(), hash, progress);
+  return calibrateAssembly(study, a, lab.data, "lab", co,
+                           (adir / ("seed_" + std::to_string(seed))).string(), hash, progress);
 }
 
 /// The row of one parameter (with a truth) over the seeds' summaries (summary.json's content).
@@ -132,14 +147,17 @@ CoverageRow coverageRow(const std::string& assembly, const std::string& paramete
   double sse = 0.0;
   for (const auto& s : summaries) {
     const auto& e = s.at("parameters").at(parameter);
-    const double lo = e.at("ci95")[0].get<double>(), hi = e.at("ci95")[1].get<double>(), m = e.at("mean").get<double>();
+    const double lo = e.at("ci95")[0].get<double>(), hi = e.at("ci95")[1].get<double>(),
+                 m = e.at("mean").get<double>();
     const auto& cr = e.at("credible95");
     const auto& pr = e.contains("profile95") ? e.at("profile95") : cr;
     row.interval = e.at("interval").get<std::string>();
     ++row.seeds;
     row.covered += (row.truth >= lo && row.truth <= hi) ? 1 : 0;
-    row.covered_profile += (row.truth >= pr[0].get<double>() && row.truth <= pr[1].get<double>()) ? 1 : 0;
-    row.covered_posterior += (row.truth >= cr[0].get<double>() && row.truth <= cr[1].get<double>()) ? 1 : 0;
+    row.covered_profile +=
+        (row.truth >= pr[0].get<double>() && row.truth <= pr[1].get<double>()) ? 1 : 0;
+    row.covered_posterior +=
+        (row.truth >= cr[0].get<double>() && row.truth <= cr[1].get<double>()) ? 1 : 0;
     row.mean_width += hi - lo;
     row.mean_width_profile += pr[1].get<double>() - pr[0].get<double>();
     row.mean_width_posterior += cr[1].get<double>() - cr[0].get<double>();
@@ -170,25 +188,32 @@ void writeCoverage(const Study& study, const CoverageOptions& options, const Cov
   nlohmann::json j = res.toJson();
   stampProvenance(j, options.command);
   j["study"] = study.path;
-  j["seeds"] = {{"first", options.first_seed}, {"count", options.seeds}, {"rule", "lab noise seed s = first .. first + count - 1"}};
+  j["seeds"] = {{"first", options.first_seed},
+                {"count", options.seeds},
+                {"rule", "lab noise seed s = first .. first + count - 1"}};
   j["calibration_options"] = options.calibration.toJson();
   rootWrites(options.calibration.processes, [&] {
     writeFileAtomic((fs::path(options.out_dir) / "coverage.json").string(), j.dump(2) + "\n");
-    std::string md = "# Coverage of the 95 % intervals\n\nStudy `" + study.path + "`, noise seeds " + std::to_string(options.first_seed) + "–" +
-                     std::to_string(options.first_seed + static_cast<std::uint64_t>(options.seeds) - 1) + ", region `" +
-                     options.calibration.region + "`, design `" + (options.calibration.design.adaptive ? "adaptive" : "lhs") +
-                     "`, ci95 = the `" + options.calibration.interval + "` interval.\n\n" + res.markdown();
+    std::string md =
+        "# Coverage of the 95 % intervals\n\nStudy `" + study.path + "`, noise seeds " +
+        std::to_string(options.first_seed) + "–" +
+        std::to_string(options.first_seed + static_cast<std::uint64_t>(options.seeds) - 1) +
+        ", region `" + options.calibration.region + "`, design `" +
+        (options.calibration.design.adaptive ? "adaptive" : "lhs") + "`, ci95 = the `" +
+        options.calibration.interval + "` interval.\n\n" + res.markdown();
     writeFileAtomic((fs::path(options.out_dir) / "coverage.md").string(), md);
   });
 }
 
 }  // namespace
 
-CoverageResult runCoverage(const Study& study, const CoverageOptions& options, const CoverageProgress& progress) {
+CoverageResult runCoverage(const Study& study, const CoverageOptions& options,
+                           const CoverageProgress& progress) {
   options.validate();
   const auto t_all = std::chrono::steady_clock::now();
   std::vector<AssemblySpec> targets;
-  if (options.assemblies.empty()) targets = study.assemblies();
+  if (options.assemblies.empty())
+    targets = study.assemblies();
   else
     for (const auto& id : options.assemblies) targets.push_back(study.assembly(id));
   CoverageResult res;
@@ -206,9 +231,10 @@ CoverageResult runCoverage(const Study& study, const CoverageOptions& options, c
       const std::uint64_t seed = options.first_seed + static_cast<std::uint64_t>(k);
       if (progress) progress(a.id, seed, index, count, "lab data", 0, 1);
       const CalibrationResult cr =
-          calibrateSeed(study, a, adir, seed, options, [&](const std::string& stage, std::size_t done, std::size_t total) {
-            if (progress) progress(a.id, seed, index, count, stage, done, total);
-          });
+          calibrateSeed(study, a, adir, seed, options,
+                        [&](const std::string& stage, std::size_t done, std::size_t total) {
+                          if (progress) progress(a.id, seed, index, count, stage, done, total);
+                        });
       walls.push_back(cr.stage_wall_s.back().second);
       summaries.push_back(cr.toJson());
       order = cr.names;

@@ -36,12 +36,13 @@
 namespace dtwin::calib {
 
 struct CoverageOptions {
-  int seeds = 20;                    ///< N noise seeds, >= 2
-  std::uint64_t first_seed = 1001;   ///< noise seed of the first data set
+  int seeds = 20;                       ///< N noise seeds, >= 2
+  std::uint64_t first_seed = 1001;      ///< noise seed of the first data set
   std::vector<std::string> assemblies;  ///< empty: every assembly of the study
-  CalibrationOptions calibration;    ///< as `twin calibrate` would use (CalibrationOptions::fromStudy)
-  std::string out_dir;               ///< required
-  std::string command;               ///< recorded in coverage.json
+  CalibrationOptions
+      calibration;      ///< as `twin calibrate` would use (CalibrationOptions::fromStudy)
+  std::string out_dir;  ///< required
+  std::string command;  ///< recorded in coverage.json
   /// Throws InputError whose where() is "coverage.<field>" (common/validate.hpp), then validates
   /// `calibration`. runCoverage calls it.
   void validate() const;
@@ -51,16 +52,16 @@ struct CoverageOptions {
 struct CoverageRow {
   std::string assembly, parameter;
   double truth = 0.0;
-  std::string interval;          ///< which interval ci95 is ("profile" or "posterior")
-  int seeds = 0, covered = 0;    ///< seeds whose ci95 holds the truth
+  std::string interval;        ///< which interval ci95 is ("profile" or "posterior")
+  int seeds = 0, covered = 0;  ///< seeds whose ci95 holds the truth
   int covered_profile = 0, covered_posterior = 0;  ///< the same for each interval
-  double wilson_low = 0.0, wilson_high = 0.0;  ///< 95 % Wilson interval of covered / seeds
-  double mean_width = 0.0;       ///< mean width of ci95
+  double wilson_low = 0.0, wilson_high = 0.0;      ///< 95 % Wilson interval of covered / seeds
+  double mean_width = 0.0;                         ///< mean width of ci95
   double mean_width_profile = 0.0, mean_width_posterior = 0.0;
-  double mean_sd = 0.0;          ///< mean posterior sd
-  double sd_of_means = 0.0;      ///< sd of the posterior means across seeds
-  double rmse = 0.0;             ///< root mean square of (posterior mean − truth)
-  double sd_of_optima = 0.0;     ///< sd of the optimiser's θ̂ across seeds
+  double mean_sd = 0.0;       ///< mean posterior sd
+  double sd_of_means = 0.0;   ///< sd of the posterior means across seeds
+  double rmse = 0.0;          ///< root mean square of (posterior mean − truth)
+  double sd_of_optima = 0.0;  ///< sd of the optimiser's θ̂ across seeds
   double sd_ratio() const { return sd_of_means > 0 ? mean_sd / sd_of_means : 0.0; }
   double optimum_ratio() const { return sd_of_optima > 0 ? mean_sd / sd_of_optima : 0.0; }
   double rmse_ratio() const { return mean_sd > 0 ? rmse / mean_sd : 0.0; }
@@ -78,12 +79,14 @@ struct CoverageResult {
 };
 
 /// Progress: assembly, seed, index of the data set (0-based), data sets in all, stage, done, total.
-using CoverageProgress = std::function<void(const std::string& assembly, std::uint64_t seed, int index, int count,
-                                            const std::string& stage, std::size_t done, std::size_t total)>;
+using CoverageProgress =
+    std::function<void(const std::string& assembly, std::uint64_t seed, int index, int count,
+                       const std::string& stage, std::size_t done, std::size_t total)>;
 
 /// Runs the benchmark (see the top of this file); writes coverage.json and coverage.md atomically
 /// at the end.
-CoverageResult runCoverage(const Study& study, const CoverageOptions& options, const CoverageProgress& progress = {});
+CoverageResult runCoverage(const Study& study, const CoverageOptions& options,
+                           const CoverageProgress& progress = {});
 
 /// 95 % Wilson score interval of k successes in m trials.
 std::pair<double, double> wilsonInterval(int k, int m);

@@ -18,8 +18,8 @@
 namespace dtwin {
 
 struct CompareRequest {
-  std::string calibration;         ///< a calibration folder (summary.json + posterior.csv)
-  std::vector<std::string> data;   ///< measurement files FILE[@SCENARIO]
+  std::string calibration;        ///< a calibration folder (summary.json + posterior.csv)
+  std::vector<std::string> data;  ///< measurement files FILE[@SCENARIO]
   /// Measurement files (the calibration drive) the FIR baseline is fitted on, per channel; each
   /// compared series then also gets the baseline's fit percentage (diagnosis/baseline.hpp).
   std::vector<std::string> baseline;
@@ -28,12 +28,13 @@ struct CompareRequest {
   /// percentage and the filter in words (diagnosis/discrepancy.hpp). Without `baseline`, the FIR
   /// baseline is fitted on these files too.
   std::vector<std::string> discrepancy;
-  std::string out;                 ///< folder for compare.json; "" writes nothing
-  int draws = 30;                  ///< posterior rows (evenly spaced) for the predictive band
-  int threads = 0;                 ///< worker threads (0: all cores)
-  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
-  bool force = false;              ///< run even above the work limits (io/work.hpp)
-  std::string command;             ///< recorded in compare.json
+  std::string out;  ///< folder for compare.json; "" writes nothing
+  int draws = 30;   ///< posterior rows (evenly spaced) for the predictive band
+  int threads = 0;  ///< worker threads (0: all cores)
+  const Distributed* processes =
+      nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
+  bool force = false;   ///< run even above the work limits (io/work.hpp)
+  std::string command;  ///< recorded in compare.json
 };
 
 struct CompareRun {
@@ -41,7 +42,8 @@ struct CompareRun {
   diag::Comparison comparison;
   std::string written;  ///< the compare.json written ("" without --out)
   nlohmann::json json;  ///< what compare.json holds (built with or without --out)
-  std::map<std::string, std::string> baseline;  ///< per channel: the FIR baseline, described (--baseline)
+  std::map<std::string, std::string>
+      baseline;  ///< per channel: the FIR baseline, described (--baseline)
   /// The table, the windows and bands where the model fails, the state maps and the notes, as
   /// `twin compare` prints them: per series the windows' counts in words and the largest windows,
   /// largest share first (at most 8; compare.html lists every listed one, compare.json every one).
@@ -50,7 +52,8 @@ struct CompareRun {
 
 /// Compares the calibrated model of `request.calibration` with `request.data` (InputError for a
 /// bad request or a file that cannot be read; the work is checked before anything runs).
-CompareRun compareMeasurements(const Study& study, const CompareRequest& request, const SayFn& say = {});
+CompareRun compareMeasurements(const Study& study, const CompareRequest& request,
+                               const SayFn& say = {});
 
 struct DiagnoseRequest {
   std::string assembly = "M1";
@@ -59,7 +62,8 @@ struct DiagnoseRequest {
   /// The options; `options.apply` may hold .toml files (a diagnosis's proposal.toml): their
   /// [user_effects] join the study's catalogue and are applied in their order.
   diag::DiagnoseOptions options;
-  std::string out;     ///< the folder (resumable); "" runs in a temporary folder and writes no result files
+  std::string
+      out;  ///< the folder (resumable); "" runs in a temporary folder and writes no result files
   bool force = false;  ///< run even above the work limits (io/work.hpp)
 };
 
@@ -67,14 +71,15 @@ struct DiagnoseRun {
   diag::DiagnosisResult result;
   diag::DiagnoseOptions options;  ///< as run (the .toml items of apply replaced by their effects)
   std::string written;            ///< the diagnosis.json written ("" without an out folder)
-  nlohmann::json json;            ///< what diagnosis.json holds (built with or without an out folder)
+  nlohmann::json json;  ///< what diagnosis.json holds (built with or without an out folder)
 };
 
 /// Diagnoses `request.assembly` of `study` on the measurements (docs/diagnosis.md): the work is
 /// checked first, then diagnose() runs with calibrations under OUT/calibrations, and
 /// OUT/diagnosis.json, OUT/proposal.toml (when the sparse regression proposes terms) and
 /// OUT/comparisons/*.json (base, every confirmed candidate, every applied step) are written.
-DiagnoseRun diagnoseMeasurements(const Study& study, const DiagnoseRequest& request, const SayFn& say = {},
+DiagnoseRun diagnoseMeasurements(const Study& study, const DiagnoseRequest& request,
+                                 const SayFn& say = {},
                                  const diag::DiagnoseProgress& progress = {});
 
 }  // namespace dtwin

@@ -40,11 +40,14 @@ struct Ros34pw2Stepper::Impl : rosenbrock_detail::Ros34pw2Core {
   }
 };
 
-Ros34pw2Stepper::Ros34pw2Stepper(Rhs f, RosenbrockOptions options) : impl_(std::make_unique<Impl>(std::move(f), options)) {}
+Ros34pw2Stepper::Ros34pw2Stepper(Rhs f, RosenbrockOptions options)
+    : impl_(std::make_unique<Impl>(std::move(f), options)) {}
 Ros34pw2Stepper::~Ros34pw2Stepper() = default;
 Ros34pw2Stepper::Ros34pw2Stepper(Ros34pw2Stepper&&) noexcept = default;
 Ros34pw2Stepper& Ros34pw2Stepper::operator=(Ros34pw2Stepper&&) noexcept = default;
-void Ros34pw2Stepper::initialize(double t0, const Eigen::VectorXd& y0) { impl_->initialize(t0, y0); }
+void Ros34pw2Stepper::initialize(double t0, const Eigen::VectorXd& y0) {
+  impl_->initialize(t0, y0);
+}
 void Ros34pw2Stepper::setMaximumStepSize(double h) { impl_->setMaximumStepSize(h); }
 void Ros34pw2Stepper::step(double t_stop) { impl_->step(t_stop); }
 double Ros34pw2Stepper::time() const { return impl_->t; }
@@ -57,44 +60,57 @@ long Ros34pw2Stepper::jacobians() const { return impl_->n_jacs; }
 
 // ----------------------------------------------------------------------------- the vehicle
 //
-// Kinematics (those the simulator's VehicleSystem builds): the chassis frame sits at the CG, height z, with
-// rotation R = Rx(phi) Ry(theta) (Simbody's Universal: about x, then about the new y). Wheel i's
-// centre, body and strut slide along the chassis z through (x_i, y_i, w) in the chassis, w the
-// wheel centre below the CG (R0 - cg_height): s_i = R (x_i, y_i, w + u_i) from the CG. The
+// Kinematics (those the simulator's VehicleSystem builds): the chassis frame sits at the CG, height
+// z, with rotation R = Rx(phi) Ry(theta) (Simbody's Universal: about x, then about the new y).
+// Wheel i's centre, body and strut slide along the chassis z through (x_i, y_i, w) in the chassis,
+// w the wheel centre below the CG (R0 - cg_height): s_i = R (x_i, y_i, w + u_i) from the CG. The
 // wheel bodies turn with the chassis (inertia 1e-3 kg m^2 about every axis, as in the simulator).
 //
 // Equations of motion (Kane's form, no simplification: full rotation, every velocity product):
 //   sum_b [ Jv_b^T m_b (Jv_b qdd + a_b) + Jw_b^T (I_b (Jw_b qdd + wd_b) + w x I_b w) ] = Q,
 // with the partial velocities, for q = (z, phi, theta, u_1..u_4):
-//   angular velocity w = phid e_x + thetad e_y',  e_y' = Rx(phi) e_y,  so Jw = [0, e_x, e_y', 0...],
-//   and its velocity-product part wd = phid thetad (e_x x e_y');
-//   wheel i: v_i = zd e_z + w x s_i + ud_i e_z',  e_z' = R e_z, so Jv_i = [e_z, e_x x s_i,
-//   e_y' x s_i, e_z' (column 3 + i)], a_i = wd x s_i + w x (w x s_i) + 2 ud_i w x e_z';
-//   chassis: v = zd e_z (the heave slider), its rotation Jw above, I_b = R diag(ixx, iyy, izz) R^T.
+//   angular velocity w = phid e_x + thetad e_y',  e_y' = Rx(phi) e_y,  so Jw = [0, e_x, e_y',
+//   0...], and its velocity-product part wd = phid thetad (e_x x e_y'); wheel i: v_i = zd e_z + w x
+//   s_i + ud_i e_z',  e_z' = R e_z, so Jv_i = [e_z, e_x x s_i, e_y' x s_i, e_z' (column 3 + i)],
+//   a_i = wd x s_i + w x (w x s_i) + 2 ud_i w x e_z'; chassis: v = zd e_z (the heave slider), its
+//   rotation Jw above, I_b = R diag(ixx, iyy, izz) R^T.
 // A wheel's isotropic inertia only adds iw to the roll and pitch diagonal (e_x . e_y' = 0, and
-// its velocity-product terms vanish). Applied loads (force_elements.hpp's force elements): gravity and
-// the d'Alembert load -m a(t) e_x at every mass centre; at each hub the tire (traction, 0, Fz)
+// its velocity-product terms vanish). Applied loads (force_elements.hpp's force elements): gravity
+// and the d'Alembert load -m a(t) e_x at every mass centre; at each hub the tire (traction, 0, Fz)
 // and the traction's moment (0, -(z_hub - h_road) F_x, 0) about it; the strut as the generalised
 // force -F on u_i (a mobility force, as StrutGeometry::apply does for a slider).
-HandOde::HandOde(const Model& m, std::vector<double> values, const Road& road, const SpeedProfile& speed)
+HandOde::HandOde(const Model& m, std::vector<double> values, const Road& road,
+                 const SpeedProfile& speed)
     : model_(m), values_(std::move(values)), road_(road), speed_(speed) {
   if (m.topology() != SuspensionTopology::MacPherson)
-    throw InputError("assembly " + m.assembly().id, "the hand-written ODE models a MacPherson suspension only");
+    throw InputError("assembly " + m.assembly().id,
+                     "the hand-written ODE models a MacPherson suspension only");
   if (!m.effects().empty())
-    throw InputError("assembly " + m.assembly().id, "the hand-written ODE models no effects (it has " +
-                                                        std::to_string(m.effects().size()) + ")");
+    throw InputError("assembly " + m.assembly().id,
+                     "the hand-written ODE models no effects (it has " +
+                         std::to_string(m.effects().size()) + ")");
   if (values_.size() != m.runParameterNames().size())
-    throw InputError("run parameters", "expected " + std::to_string(m.runParameterNames().size()) + " values");
+    throw InputError("run parameters",
+                     "expected " + std::to_string(m.runParameterNames().size()) + " values");
   if (m.tire().followsSignal())
-    throw InputError("assembly " + m.assembly().id, "the hand-written ODE models a tire under the road, not the '" + m.tire().name() + "' input");
-  if (values_[static_cast<std::size_t>(m.roadGainSlot())] != 1.0 || values_[static_cast<std::size_t>(m.roadDelaySlot())] != 0.0)
-    throw InputError("run parameters", "the hand-written ODE reads the road as logged (road.gain 1, road.delay_s 0)");
+    throw InputError("assembly " + m.assembly().id,
+                     "the hand-written ODE models a tire under the road, not the '" +
+                         m.tire().name() + "' input");
+  if (values_[static_cast<std::size_t>(m.roadGainSlot())] != 1.0 ||
+      values_[static_cast<std::size_t>(m.roadDelaySlot())] != 0.0)
+    throw InputError("run parameters",
+                     "the hand-written ODE reads the road as logged (road.gain 1, road.delay_s 0)");
   for (std::size_t f = 0; f < roadSignalForms().size(); ++f)
     if (values_[static_cast<std::size_t>(m.roadFormSlot()) + f] != 0.0)
-      throw InputError("run parameters", std::string("the hand-written ODE reads the road under both axles (") + roadSignalForms()[f].name + " 0)");
+      throw InputError("run parameters",
+                       std::string("the hand-written ODE reads the road under both axles (") +
+                           roadSignalForms()[f].name + " 0)");
   for (int c = 0; c < 4; ++c)
-    if (!m.strutFactors()[static_cast<std::size_t>(c)].empty() || !m.tireFactors()[static_cast<std::size_t>(c)].empty())
-      throw InputError("assembly " + m.assembly().id, "the hand-written ODE has the same struts and tires at every corner (no per-corner factors)");
+    if (!m.strutFactors()[static_cast<std::size_t>(c)].empty() ||
+        !m.tireFactors()[static_cast<std::size_t>(c)].empty())
+      throw InputError("assembly " + m.assembly().id,
+                       "the hand-written ODE has the same struts and tires at every corner (no "
+                       "per-corner factors)");
   const VehicleData& d = m.vehicle();
   mc_ = d.chassis_mass;
   mw_ = d.wheel_mass;
@@ -118,7 +134,8 @@ HandOde::HandOde(const Model& m, std::vector<double> values, const Road& road, c
   }
 }
 
-double HandOde::tireForce(int corner, double t, double hub_x, double hub_z, double hub_zd, double* hub_above_road) const {
+double HandOde::tireForce(int corner, double t, double hub_x, double hub_z, double hub_zd,
+                          double* hub_above_road) const {
   const ParamValues p(values_.data() + tire0_, ntire_);
   const double v = speed_.speed(t);
   const double x_road = speed_.distance(t) + hub_x - a_;  // docs/model.md, "Forward motion"
@@ -186,7 +203,8 @@ void HandOde::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) con
     const Eigen::Vector3d cols[4] = {ez, fr.ex.cross(s), fr.eyp.cross(s), fr.ezc};
     const int idx[4] = {0, 1, 2, 3 + c};
     const Eigen::Vector3d v = y[7] * ez + fr.w.cross(s) + ud * fr.ezc;
-    const Eigen::Vector3d a_bias = fr.wd.cross(s) + fr.w.cross(fr.w.cross(s)) + 2.0 * ud * fr.w.cross(fr.ezc);
+    const Eigen::Vector3d a_bias =
+        fr.wd.cross(s) + fr.w.cross(fr.w.cross(s)) + 2.0 * ud * fr.w.cross(fr.ezc);
     const double hub_z = y[0] + s.z();
     double above = 0;  // hub height above the road: the traction's lever arm
     const double fz = tireForce(c, t, s.x(), hub_z, v.z(), &above);
@@ -214,8 +232,10 @@ HandOde::Hub HandOde::hub(int corner, const Eigen::VectorXd& y, const Eigen::Vec
   const Eigen::Vector3d s = fr.R * Eigen::Vector3d(k.x, k.y, w_ + y[3 + corner]);
   const Eigen::Vector3d ez(0, 0, 1);
   const Eigen::Vector3d v = y[7] * ez + fr.w.cross(s) + ud * fr.ezc;
-  const Eigen::Vector3d a_bias = fr.wd.cross(s) + fr.w.cross(fr.w.cross(s)) + 2.0 * ud * fr.w.cross(fr.ezc);
-  const Eigen::Vector3d a = ydot[7] * ez + ydot[8] * fr.ex.cross(s) + ydot[9] * fr.eyp.cross(s) + ydot[10 + corner] * fr.ezc + a_bias;
+  const Eigen::Vector3d a_bias =
+      fr.wd.cross(s) + fr.w.cross(fr.w.cross(s)) + 2.0 * ud * fr.w.cross(fr.ezc);
+  const Eigen::Vector3d a = ydot[7] * ez + ydot[8] * fr.ex.cross(s) + ydot[9] * fr.eyp.cross(s) +
+                            ydot[10 + corner] * fr.ezc + a_bias;
   return {s.x(), v.x(), y[0] + s.z(), v.z(), a.z()};
 }
 
@@ -225,17 +245,20 @@ Eigen::VectorXd HandOde::equilibrium() const {
   std::array<double, 3> target{};
   for (int c = 0; c < 3; ++c) {
     const double rho = model_.tire().calcStaticDeflection(model_.staticTireLoad(c), tp);
-    target[static_cast<std::size_t>(c)] = road_.sample(cornerTrack(c), isFront(c) ? 0.0 : -wb).height_m + R0_ - rho;
+    target[static_cast<std::size_t>(c)] =
+        road_.sample(cornerTrack(c), isFront(c) ? 0.0 : -wb).height_m + R0_ - rho;
   }
   // Newton on (heave, pitch, roll) for the FL, FR, RL hub heights: the iteration of the
-  // simulator's StaticStart (its start, difference step and tolerance), so both runs start from the same state.
+  // simulator's StaticStart (its start, difference step and tolerance), so both runs start from the
+  // same state.
   Eigen::VectorXd y = Eigen::VectorXd::Zero(kStates);
   auto residual = [&](const Eigen::Vector3d& x) {
     const HandFrame fr(x[2], x[1], 0.0, 0.0);
     Eigen::Vector3d r;
     for (int c = 0; c < 3; ++c) {
       const Corner& k = corners_[static_cast<std::size_t>(c)];
-      r[c] = x[0] + (fr.R * Eigen::Vector3d(k.x, k.y, w_)).z() - target[static_cast<std::size_t>(c)];
+      r[c] =
+          x[0] + (fr.R * Eigen::Vector3d(k.x, k.y, w_)).z() - target[static_cast<std::size_t>(c)];
     }
     return r;
   };
@@ -262,27 +285,30 @@ namespace {
 
 double handHermite(double h, double u, double y0, double m0, double y1, double m1) {
   const double u2 = u * u, u3 = u2 * u;
-  return (2 * u3 - 3 * u2 + 1) * y0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * y1 + (u3 - u2) * h * m1;
+  return (2 * u3 - 3 * u2 + 1) * y0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * y1 +
+         (u3 - u2) * h * m1;
 }
 
 }  // namespace
 
-HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const Road& road, const ScenarioSpec& sc,
-                      const SimulationOptions& o) {
+HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const Road& road,
+                      const ScenarioSpec& sc, const SimulationOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   const HandOde ode(m, values, road, sc.speed);
   RosenbrockOptions ro;  // as the simulator's Stepper::integrate sets them
   ro.accuracy = o.accuracy;
   ro.max_step_s = o.max_step_s;
   ro.max_steps = o.max_internal_steps;
-  Ros34pw2Stepper st([&ode](double t, const Eigen::VectorXd& y, Eigen::VectorXd& yd) { ode.rhs(t, y, yd); }, ro);
+  Ros34pw2Stepper st(
+      [&ode](double t, const Eigen::VectorXd& y, Eigen::VectorXd& yd) { ode.rhs(t, y, yd); }, ro);
   st.initialize(0.0, ode.equilibrium());
   // Knots: per step and corner the hub's (x, xd, z, zd, zdd), as the simulator's Stepper::record.
   std::vector<double> times;
   std::vector<std::array<HandOde::Hub, 4>> knots;
   auto record = [&] {
     std::array<HandOde::Hub, 4> k;
-    for (int c = 0; c < 4; ++c) k[static_cast<std::size_t>(c)] = ode.hub(c, st.state(), st.derivative());
+    for (int c = 0; c < 4; ++c)
+      k[static_cast<std::size_t>(c)] = ode.hub(c, st.state(), st.derivative());
     knots.push_back(k);
     times.push_back(st.time());
   };
@@ -296,7 +322,8 @@ HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const R
   }
   // The output grid and its dense output (the simulator's Recorder::makeOutput / writeRows).
   HandOdeRun r;
-  const std::size_t n = static_cast<std::size_t>(std::floor(times.back() * o.output_rate_hz + 1e-9)) + 1;
+  const std::size_t n =
+      static_cast<std::size_t>(std::floor(times.back() * o.output_rate_hz + 1e-9)) + 1;
   r.time_s.resize(n);
   for (auto& col : r.hub_force_N) col.resize(n);
   std::size_t j = 0;

@@ -8,8 +8,8 @@
 //    that both models are integrated by the same method at the same tolerance.
 //  * HandOde: the nonlinear equations of motion of a MacPherson assembly (chassis heave z, roll
 //    phi, pitch theta, four wheel travels u_i along the chassis z), derived by hand from the
-//    kinematics the simulator builds in Simbody (twin/vehicle_system.cpp), with the project's own force
-//    laws (the model's tire law, its strut law) and the scenario's road and speed.
+//    kinematics the simulator builds in Simbody (twin/vehicle_system.cpp), with the project's own
+//    force laws (the model's tire law, its strut law) and the scenario's road and speed.
 //  * benchHandOde: the wall time of one run of each, their step and evaluation counts, and how
 //    closely their front-left hub forces agree (`twin bench --hand-ode`, docs/performance.md).
 #include <array>
@@ -77,9 +77,9 @@ class HandOde {
   /// `values` is a run vector of `m` (m.defaultRunValues()); `road` must outlive this object.
   HandOde(const Model& m, std::vector<double> values, const Road& road, const SpeedProfile& speed);
 
-  /// The simulator's start state (the simulator's StaticStart, twin/static_start.hpp): wheels at zero travel and
-  /// rest, and heave, pitch and roll such that the FL, FR and RL hubs sit at the road height plus
-  /// R0 minus the static deflection under their static tire loads.
+  /// The simulator's start state (the simulator's StaticStart, twin/static_start.hpp): wheels at
+  /// zero travel and rest, and heave, pitch and roll such that the FL, FR and RL hubs sit at the
+  /// road height plus R0 minus the static deflection under their static tire loads.
   Eigen::VectorXd equilibrium() const;
   /// ydot = f(t, y) (sizes kStates).
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) const;
@@ -91,7 +91,8 @@ class HandOde {
   Hub hub(int corner, const Eigen::VectorXd& y, const Eigen::VectorXd& ydot) const;
   /// The tire's normal force [N] for a hub at (x, z) moving at zd: TireCorner::eval of the
   /// simulator. `hub_above_road` (if given) receives z minus the road height under the hub.
-  double tireForce(int corner, double t, double hub_x, double hub_z, double hub_zd, double* hub_above_road = nullptr) const;
+  double tireForce(int corner, double t, double hub_x, double hub_z, double hub_zd,
+                   double* hub_above_road = nullptr) const;
   /// The main strut's force [N] at travel q and rate qd (its preload: Model::staticStrutForce).
   double strutForce(int corner, double q, double qd) const;
 
@@ -122,7 +123,7 @@ struct HandOdeRun {
   long steps = 0, attempts = 0, evaluations = 0, jacobians = 0;
   double wall_s = 0;  ///< equilibrium, integration and output
 };
-HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario,
-                      const SimulationOptions& options);
+HandOdeRun runHandOde(const Model& m, const std::vector<double>& values, const Road& road,
+                      const ScenarioSpec& scenario, const SimulationOptions& options);
 
 }  // namespace dtwin

@@ -13,14 +13,19 @@ namespace {
 /// --window and --run-in over the mapping (given once: in the file or as the flag).
 void applyWindowFlags(const ImportRequest& cfg, ImportMapping& m) {
   if (!cfg.window.empty()) {
-    if (m.window_s) throw InputError("--window", "the mapping file gives window_s already (" + m.window_where + "): give the window once");
+    if (m.window_s)
+      throw InputError("--window", "the mapping file gives window_s already (" + m.window_where +
+                                       "): give the window once");
     if (cfg.window.size() != 2 || !(cfg.window[0] >= 0 && cfg.window[0] < cfg.window[1]))
-      throw InputError("--window", "expects START,END in seconds from the log's first row with 0 <= START < END");
+      throw InputError(
+          "--window",
+          "expects START,END in seconds from the log's first row with 0 <= START < END");
     m.window_s = std::array<double, 2>{cfg.window[0], cfg.window[1]};
     m.window_where = "--window";
   }
   if (cfg.run_in >= 0) {
-    if (!m.window_s) throw InputError("--run-in", "needs a window (--window or the mapping's window_s)");
+    if (!m.window_s)
+      throw InputError("--run-in", "needs a window (--window or the mapping's window_s)");
     m.run_in_s = cfg.run_in;
   }
 }
@@ -30,14 +35,21 @@ void applyWindowFlags(const ImportRequest& cfg, ImportMapping& m) {
 ImportMapping mappingFromFlags(const ImportRequest& cfg) {
   ImportMapping m;
   m.source = "command line";
-  if (cfg.time.empty()) throw InputError("--time", "is required without --map (the log's time column, COLUMN[:UNIT], unit s or ms)");
+  if (cfg.time.empty())
+    throw InputError(
+        "--time", "is required without --map (the log's time column, COLUMN[:UNIT], unit s or ms)");
   m.time = parseImportColumn(cfg.time, "--time", "s");
-  if (cfg.speed.empty()) throw InputError("--speed", "is required without --map (COLUMN:UNIT, unit km/h, m/s or mph)");
+  if (cfg.speed.empty())
+    throw InputError("--speed", "is required without --map (COLUMN:UNIT, unit km/h, m/s or mph)");
   m.speed = parseImportColumn(cfg.speed, "--speed");
   if (!cfg.road.empty()) m.road = parseImportColumn(cfg.road, "--road");
   if (!cfg.road_left.empty() || !cfg.road_right.empty()) {
-    if (m.road) throw InputError("--road-left", "give either --road (both tracks) or --road-left and --road-right");
-    if (cfg.road_left.empty() || cfg.road_right.empty()) throw InputError(cfg.road_left.empty() ? "--road-left" : "--road-right", "is required with the other track");
+    if (m.road)
+      throw InputError("--road-left",
+                       "give either --road (both tracks) or --road-left and --road-right");
+    if (cfg.road_left.empty() || cfg.road_right.empty())
+      throw InputError(cfg.road_left.empty() ? "--road-left" : "--road-right",
+                       "is required with the other track");
     m.road_left = parseImportColumn(cfg.road_left, "--road-left");
     m.road_right = parseImportColumn(cfg.road_right, "--road-right");
   }
@@ -47,10 +59,13 @@ ImportMapping mappingFromFlags(const ImportRequest& cfg) {
   }
   m.speed_lowpass_hz = cfg.speed_lowpass_hz;
   if (!cfg.separator.empty()) m.separator = parseSeparator(cfg.separator, "--separator");
-  if (cfg.channels.empty()) throw InputError("--channel", "is required without --map (COLUMN:CHANNEL:UNIT, repeatable)");
+  if (cfg.channels.empty())
+    throw InputError("--channel", "is required without --map (COLUMN:CHANNEL:UNIT, repeatable)");
   for (const auto& text : cfg.channels) {
     const auto a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
-    if (b == std::string::npos) throw InputError("--channel", "expects COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]], got '" + text + "'");
+    if (b == std::string::npos)
+      throw InputError("--channel",
+                       "expects COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]], got '" + text + "'");
     ImportChannel c;
     c.channel = text.substr(a + 1, b - a - 1);
     c.source = parseImportColumn(text.substr(0, a) + ":" + text.substr(b + 1), "--channel " + text);
@@ -62,10 +77,15 @@ ImportMapping mappingFromFlags(const ImportRequest& cfg) {
 }  // namespace
 
 ImportMapping importMapping(const ImportRequest& cfg) {
-  const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() || !cfg.road_left.empty() ||
-                     !cfg.road_right.empty() || !cfg.channels.empty() || cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
-  if (!cfg.map.empty() && flags) throw InputError("--map", "give the mapping either in the file or as flags (--time, --speed, --road, --channel), not both");
-  if (cfg.map.empty() && !flags) throw InputError("--map", "is required (or the flags --time, --speed, --channel)");
+  const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() ||
+                     !cfg.road_left.empty() || !cfg.road_right.empty() || !cfg.channels.empty() ||
+                     cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
+  if (!cfg.map.empty() && flags)
+    throw InputError("--map",
+                     "give the mapping either in the file or as flags (--time, --speed, --road, "
+                     "--channel), not both");
+  if (cfg.map.empty() && !flags)
+    throw InputError("--map", "is required (or the flags --time, --speed, --channel)");
   ImportMapping mapping = cfg.map.empty() ? mappingFromFlags(cfg) : readImportMapping(cfg.map);
   applyWindowFlags(cfg, mapping);
   return mapping;
@@ -77,8 +97,10 @@ ImportResult importDrive(const ImportRequest& request, const StageProgress& prog
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(request.log, ec);
   if (!ec && bytes > 4000000000ULL)
-    throw InputError(request.log, "is " + formatNumber(static_cast<double>(bytes) / 1e9, 3) +
-                                      " GB; twin import holds a log in memory, at most 4 GB: split it into drives");
+    throw InputError(
+        request.log,
+        "is " + formatNumber(static_cast<double>(bytes) / 1e9, 3) +
+            " GB; twin import holds a log in memory, at most 4 GB: split it into drives");
   const std::string text = readTextFile(request.log, " (a logger's CSV or MF4 file)");
   ImportResult r = importLog(text, request.log, mapping, request.study, request.scenario, progress);
   r.sidecar["command"] = request.command;

@@ -12,10 +12,11 @@
 namespace dtwin {
 
 struct ImportRequest {
-  std::string log;       ///< the logger's CSV file
-  std::string map;       ///< the mapping file (TOML, [import]); "" gives the mapping as the columns below
-  std::string out;       ///< the new output folder
-  std::string study;     ///< the study the drive joins
+  std::string log;  ///< the logger's CSV file
+  std::string
+      map;  ///< the mapping file (TOML, [import]); "" gives the mapping as the columns below
+  std::string out;                 ///< the new output folder
+  std::string study;               ///< the study the drive joins
   std::string scenario = "drive";  ///< the drive's scenario in the written study
   /// The mapping without a file (--time, --speed, --road, --road-left, --road-right, --channel
   /// COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]], --separator); all empty with a mapping file.

@@ -13,8 +13,8 @@
 #include "calibration/summary.hpp"
 #include "common/errors.hpp"
 #include "common/json.hpp"
-#include "common/validate.hpp"
 #include "common/parallel.hpp"
+#include "common/validate.hpp"
 #include "io/provenance.hpp"
 
 namespace fs = std::filesystem;
@@ -24,24 +24,29 @@ namespace dtwin::study {
 
 namespace {
 
-json readJson(const fs::path& p) { return readJsonFile(p.string(), " (is this a `twin study` folder?)"); }
+json readJson(const fs::path& p) {
+  return readJsonFile(p.string(), " (is this a `twin study` folder?)");
+}
 
 /// Rows ⌊(k + ½)·S / K⌋ of a sample of S rows, K = min(S, draws).
 std::vector<std::size_t> evenRows(std::size_t S, int draws) {
   const std::size_t K = std::min<std::size_t>(S, static_cast<std::size_t>(draws));
   std::vector<std::size_t> rows;
   for (std::size_t k = 0; k < K; ++k)
-    rows.push_back(static_cast<std::size_t>((static_cast<double>(k) + 0.5) * static_cast<double>(S) / static_cast<double>(K)));
+    rows.push_back(static_cast<std::size_t>((static_cast<double>(k) + 0.5) *
+                                            static_cast<double>(S) / static_cast<double>(K)));
   return rows;
 }
 
 /// The band of every channel of `data` from the predictions of its records by the draws `ok`
 /// (`preds[k][i]`: draw k, record i; every repetition at (channel, t) has the same prediction).
 std::vector<ChannelBand> bandsOf(const LabData& data, const std::vector<std::vector<double>>& preds,
-                                 const std::vector<std::size_t>& ok, const std::vector<double>& sd) {
+                                 const std::vector<std::size_t>& ok,
+                                 const std::vector<double>& sd) {
   std::vector<ChannelBand> out;
   std::map<std::pair<std::string, double>, std::size_t> first;  // (channel, t) -> its first record
-  for (std::size_t i = 0; i < data.records.size(); ++i) first.emplace(std::make_pair(data.records[i].channel, data.records[i].time_s), i);
+  for (std::size_t i = 0; i < data.records.size(); ++i)
+    first.emplace(std::make_pair(data.records[i].channel, data.records[i].time_s), i);
   for (const auto& ch : data.channels()) {
     ChannelBand p;
     p.channel = ch;
@@ -89,15 +94,18 @@ LabData denseGrid(const LabData& lab, int points) {
 
 /// The bands of one assembly from its predictions on the dense data (rows that failed are empty
 /// vectors).
-void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std::vector<std::vector<double>>& preds,
-               const LabData& dense, std::vector<std::string>& warnings) {
+void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows,
+               const std::vector<std::vector<double>>& preds, const LabData& dense,
+               std::vector<std::string>& warnings) {
   std::vector<std::size_t> ok;
   for (std::size_t k = 0; k < rows.size(); ++k)
     if (preds[k].size() == dense.records.size()) ok.push_back(k);
   a.drawn = rows.size();
   a.failures = rows.size() - ok.size();
   if (ok.empty()) {
-    warnings.push_back(a.assembly.id + ": every posterior draw failed to simulate the lab scenario; no predictive band");
+    warnings.push_back(
+        a.assembly.id +
+        ": every posterior draw failed to simulate the lab scenario; no predictive band");
     return;
   }
   std::vector<double> sd;
@@ -113,7 +121,8 @@ void summarise(AssemblyBands& a, const std::vector<std::size_t>& rows, const std
 
 std::size_t ChannelBand::at(double t) const {
   const auto it = std::lower_bound(times.begin(), times.end(), t);
-  return it != times.end() && *it == t ? static_cast<std::size_t>(it - times.begin()) : times.size();
+  return it != times.end() && *it == t ? static_cast<std::size_t>(it - times.begin())
+                                       : times.size();
 }
 
 void LabBandOptions::validate() const {
@@ -123,7 +132,8 @@ void LabBandOptions::validate() const {
   check.atLeast("grid_points", grid_points, 2);
 }
 
-double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd, double p) {
+double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<double>& sd,
+                             double p) {
   double lo = mean[0] - 10 * sd[0], hi = mean[0] + 10 * sd[0];
   for (std::size_t k = 0; k < mean.size(); ++k) {
     lo = std::min(lo, mean[k] - 10 * sd[k]);
@@ -132,7 +142,8 @@ double normalMixtureQuantile(const std::vector<double>& mean, const std::vector<
   for (int it = 0; it < 200 && hi - lo > 1e-12 * (std::abs(lo) + std::abs(hi) + 1e-300); ++it) {
     const double mid = 0.5 * (lo + hi);
     double f = 0.0;
-    for (std::size_t k = 0; k < mean.size(); ++k) f += 0.5 * std::erfc(-(mid - mean[k]) / (sd[k] * std::sqrt(2.0)));
+    for (std::size_t k = 0; k < mean.size(); ++k)
+      f += 0.5 * std::erfc(-(mid - mean[k]) / (sd[k] * std::sqrt(2.0)));
     (f / static_cast<double>(mean.size()) < p ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
@@ -149,14 +160,17 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
   out.draws = options.draws;
   out.study_path = record.value("study", summary.value("study", std::string()));
   if (out.study_path.empty() || !fs::exists(out.study_path))
-    throw InputError((dir / "study.json").string(), "names the study file '" + out.study_path + "', which does not exist");
+    throw InputError((dir / "study.json").string(),
+                     "names the study file '" + out.study_path + "', which does not exist");
   out.study = loadStudy(out.study_path);
-  if (record.contains("fingerprint") &&
-      record["fingerprint"].value("study_file", "") != std::to_string(fnv1a64(readTextFile(out.study_path))))
-    out.warnings.push_back("the study file " + out.study_path +
-                           " changed after the study was run: the predictive bands use its current content");
+  if (record.contains("fingerprint") && record["fingerprint"].value("study_file", "") !=
+                                            std::to_string(fnv1a64(readTextFile(out.study_path))))
+    out.warnings.push_back(
+        "the study file " + out.study_path +
+        " changed after the study was run: the predictive bands use its current content");
   out.lab_path = summary.contains("paths") ? summary["paths"].value("lab", "") : "";
-  if (out.lab_path.empty() || !fs::exists(out.lab_path)) out.lab_path = (dir / "lab" / "lab.csv").string();
+  if (out.lab_path.empty() || !fs::exists(out.lab_path))
+    out.lab_path = (dir / "lab" / "lab.csv").string();
   out.lab = readLabCsv(out.lab_path, measurableChannels(out.study.sensors));
   // One set of runs predicts the lab times and the dense grid: the lab times are in the grid.
   const LabData dense = denseGrid(out.lab, options.grid_points);
@@ -170,12 +184,14 @@ LabBands predictLabBands(const std::string& study_dir, const LabBandOptions& opt
     a.posterior = calib::readPosteriorCsv(post.string());
     objectives.push_back(std::make_unique<calib::LabObjective>(out.study, spec, dense, "lab"));
     if (objectives.back()->names() != a.posterior.names)
-      throw InputError(a.posterior.path, "its parameter columns are not the study's calibrated parameters");
+      throw InputError(a.posterior.path,
+                       "its parameter columns are not the study's calibrated parameters");
     rows.push_back(evenRows(a.posterior.size(), options.draws));
     out.assemblies.push_back(std::move(a));
   }
   if (out.assemblies.empty())
-    throw InputError((dir / "calibration").string(), "holds no <id>/posterior.csv of the study's assemblies");
+    throw InputError((dir / "calibration").string(),
+                     "holds no <id>/posterior.csv of the study's assemblies");
 
   std::vector<std::pair<std::size_t, std::size_t>> jobs;
   std::vector<std::vector<std::vector<double>>> preds(out.assemblies.size());

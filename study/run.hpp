@@ -25,11 +25,12 @@
 namespace dtwin::study {
 
 struct StudyRunOptions {
-  int threads = 0;              ///< 0: all cores (never changes the numbers)
-  const Distributed* processes = nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
-  std::string lab_file;         ///< use these lab data instead of generating them
-  std::string field_file;       ///< use these field records instead of generating them
-  std::string command;          ///< recorded in every output
+  int threads = 0;  ///< 0: all cores (never changes the numbers)
+  const Distributed* processes =
+      nullptr;  ///< the process context (common/distributed.hpp); nullptr: this process alone
+  std::string lab_file;    ///< use these lab data instead of generating them
+  std::string field_file;  ///< use these field records instead of generating them
+  std::string command;     ///< recorded in every output
   /// InputError whose where() is "study.<field>" (common/validate.hpp): threads >= 0.
   void validate() const;
 };
@@ -40,7 +41,8 @@ using StudyProgress = StageProgress;  // common/progress.hpp
 using StudyLog = std::function<void(const std::string& line)>;
 
 /// Runs (or resumes) the study into `out_dir`; returns the content of OUT/summary.json.
-nlohmann::json runStudy(const Study& study, const StudyRunOptions& options, const std::string& out_dir,
-                        const StudyProgress& progress = {}, const StudyLog& log = {});
+nlohmann::json runStudy(const Study& study, const StudyRunOptions& options,
+                        const std::string& out_dir, const StudyProgress& progress = {},
+                        const StudyLog& log = {});
 
 }  // namespace dtwin::study

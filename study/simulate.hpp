@@ -9,23 +9,24 @@
 #include <utility>
 #include <vector>
 
+#include "io/study.hpp"
 #include "twin/simulator.hpp"
 #include "twin/trace.hpp"
-#include "io/study.hpp"
 
 namespace dtwin {
 
 struct SimulateRequest {
   std::string assembly = "M1";  ///< an assembly id, or "all"
   std::string scenario = "lab";
-  std::string out;  ///< a .csv file (one assembly) or a folder (all); "" writes no file (the values are kept)
+  std::string out;  ///< a .csv file (one assembly) or a folder (all); "" writes no file (the values
+                    ///< are kept)
   std::vector<ParameterSetting> sets;  ///< overrides (--set)
   std::vector<EffectSetting> effects;  ///< added effects (--effect)
   std::vector<std::string> channels;   ///< written channels (time_s always); empty: all
   std::optional<std::pair<double, double>> window;  ///< rows with t0 <= time_s <= t1
-  std::optional<std::uint64_t> seed;   ///< of random roads; unset: the study's
-  SimulationOptions simulation;        ///< the integration (the study's, with overrides)
-  std::string command;                 ///< recorded in every sidecar
+  std::optional<std::uint64_t> seed;                ///< of random roads; unset: the study's
+  SimulationOptions simulation;  ///< the integration (the study's, with overrides)
+  std::string command;           ///< recorded in every sidecar
   /// Keep each run's written rows and channels in SimulateRun::values (always when out is "").
   bool keep_values = false;
   /// InputError naming the field ("simulate.channels", "simulate.out", ...) for a bad request.
@@ -48,7 +49,8 @@ struct SimulateRun {
 };
 
 /// Runs the request (validated first), calling `on_run` after each run; returns every run.
-std::vector<SimulateRun> simulateScenario(const Study& study, const SimulateRequest& request,
-                                          const std::function<void(const SimulateRun&)>& on_run = {});
+std::vector<SimulateRun> simulateScenario(
+    const Study& study, const SimulateRequest& request,
+    const std::function<void(const SimulateRun&)>& on_run = {});
 
 }  // namespace dtwin

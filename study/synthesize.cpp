@@ -19,31 +19,41 @@ std::string SynthesizeRun::text() const {
   const auto& j = r.info;
   char line[1024];
   std::snprintf(line, sizeof line,
-                "%-4s %-24s %ld draws x %ld roads (library %ld) -> %lld vectors of %zu samples (%s %g..%g s), failures %ld, "
+                "%-4s %-24s %ld draws x %ld roads (library %ld) -> %lld vectors of %zu samples (%s "
+                "%g..%g s), failures %ld, "
                 "cost %.4g s/s (median run %.3f s), %s%.1f s -> %s\n",
-                assembly.id.c_str(), assembly.label().c_str(), r.draws, r.roads_per_draw, r.road_library,
-                static_cast<long long>(r.moments.count()), r.times_s.size(), j["channel"].get<std::string>().c_str(), r.times_s.front(),
-                r.times_s.back(), r.failures, r.cost_s_per_s, r.median_run_wall_s,
-                r.reused ? "reused finished files, "
-                         : (r.resumed_blocks ? ("resumed at block " + std::to_string(r.resumed_blocks) + ", ").c_str() : ""),
+                assembly.id.c_str(), assembly.label().c_str(), r.draws, r.roads_per_draw,
+                r.road_library, static_cast<long long>(r.moments.count()), r.times_s.size(),
+                j["channel"].get<std::string>().c_str(), r.times_s.front(), r.times_s.back(),
+                r.failures, r.cost_s_per_s, r.median_run_wall_s,
+                r.reused
+                    ? "reused finished files, "
+                    : (r.resumed_blocks
+                           ? ("resumed at block " + std::to_string(r.resumed_blocks) + ", ").c_str()
+                           : ""),
                 r.wall_s, (fs::path(dir) / "moments.bin").string().c_str());
   std::string out = line;
   for (std::size_t k = 0; k < r.failure_list.size() && k < 5; ++k) {
-    std::snprintf(line, sizeof line, "       failed: draw %ld road %ld (library road %ld, seed %llu): %s\n", r.failure_list[k].draw,
-                  r.failure_list[k].road, r.failure_list[k].library_index,
-                  static_cast<unsigned long long>(r.failure_list[k].road_seed), r.failure_list[k].message.c_str());
+    std::snprintf(line, sizeof line,
+                  "       failed: draw %ld road %ld (library road %ld, seed %llu): %s\n",
+                  r.failure_list[k].draw, r.failure_list[k].road, r.failure_list[k].library_index,
+                  static_cast<unsigned long long>(r.failure_list[k].road_seed),
+                  r.failure_list[k].message.c_str());
     out += line;
   }
   return out;
 }
 
-std::vector<SynthesizeRun> synthesizeAssemblies(const Study& study, const SynthesizeRequest& request, const StageProgress& progress,
-                                                const std::function<void(const SynthesizeRun&)>& done) {
+std::vector<SynthesizeRun> synthesizeAssemblies(
+    const Study& study, const SynthesizeRequest& request, const StageProgress& progress,
+    const std::function<void(const SynthesizeRun&)>& done) {
   const auto& opt = request.options;
   study.scenario(opt.scenario);  // validates the name
   std::vector<AssemblySpec> targets;
-  if (request.assembly == "all") targets = study.assemblies();
-  else targets.push_back(study.assembly(request.assembly));
+  if (request.assembly == "all")
+    targets = study.assemblies();
+  else
+    targets.push_back(study.assembly(request.assembly));
   if (!fs::is_directory(request.calibration))
     throw InputError(request.calibration, "calibration folder not found (--calibration)");
   if (fs::exists(request.out) && !fs::is_directory(request.out))
@@ -63,7 +73,8 @@ std::vector<SynthesizeRun> synthesizeAssemblies(const Study& study, const Synthe
   for (const auto& a : targets) {
     const std::string p = (fs::path(request.calibration) / a.id / "posterior.csv").string();
     if (!fs::exists(p))
-      throw InputError(p, "not found: calibrate assembly " + a.id + " first (twin calibrate --assembly " + a.id + ")");
+      throw InputError(p, "not found: calibrate assembly " + a.id +
+                              " first (twin calibrate --assembly " + a.id + ")");
     posteriors.push_back(calib::readPosteriorCsv(p));
   }
   nlohmann::json index;
@@ -77,15 +88,20 @@ std::vector<SynthesizeRun> synthesizeAssemblies(const Study& study, const Synthe
     const auto& a = run.assembly;
     run.dir = (fs::path(request.out) / a.id).string();
     const std::string stage = a.id + " synthesize";
-    run.result = classify::synthesizeAssembly(study, a, posteriors[i], opt, run.dir, [&](std::size_t d, std::size_t t) {
-      if (progress) progress(stage, d, t);
-    });
-    index["assemblies"].push_back({{"assembly", a.id}, {"label", a.label()}, {"synthesis", (fs::path(a.id) / "synthesis.json").string()},
+    run.result = classify::synthesizeAssembly(study, a, posteriors[i], opt, run.dir,
+                                              [&](std::size_t d, std::size_t t) {
+                                                if (progress) progress(stage, d, t);
+                                              });
+    index["assemblies"].push_back({{"assembly", a.id},
+                                   {"label", a.label()},
+                                   {"synthesis", (fs::path(a.id) / "synthesis.json").string()},
                                    {"moments", (fs::path(a.id) / "moments.bin").string()}});
     if (done) done(run);
     runs.push_back(std::move(run));
   }
-  rootWrites(opt.processes, [&] { writeFileAtomic((fs::path(request.out) / "synthesize.json").string(), index.dump(2) + "\n"); });
+  rootWrites(opt.processes, [&] {
+    writeFileAtomic((fs::path(request.out) / "synthesize.json").string(), index.dump(2) + "\n");
+  });
   return runs;
 }
 

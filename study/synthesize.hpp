@@ -17,9 +17,9 @@
 namespace dtwin {
 
 struct SynthesizeRequest {
-  std::string calibration;             ///< folder written by `twin calibrate` (reads <id>/posterior.csv)
-  std::string assembly = "all";        ///< an assembly id or "all"
-  std::string out;                     ///< each assembly writes OUT/<id>/; OUT/synthesize.json indexes them
+  std::string calibration;       ///< folder written by `twin calibrate` (reads <id>/posterior.csv)
+  std::string assembly = "all";  ///< an assembly id or "all"
+  std::string out;  ///< each assembly writes OUT/<id>/; OUT/synthesize.json indexes them
   classify::SynthesisOptions options;  ///< command and processes included
   bool force = false;                  ///< run even above the work limits (io/work.hpp)
 };
@@ -38,8 +38,8 @@ struct SynthesizeRun {
 /// synthesizes each assembly in the study's order and writes OUT/synthesize.json on the root.
 /// `progress(stage, done, total)` with stage "<id> synthesize"; `done` is called after each
 /// assembly. InputError for a bad request or file.
-std::vector<SynthesizeRun> synthesizeAssemblies(const Study& study, const SynthesizeRequest& request,
-                                                const StageProgress& progress = {},
-                                                const std::function<void(const SynthesizeRun&)>& done = {});
+std::vector<SynthesizeRun> synthesizeAssemblies(
+    const Study& study, const SynthesizeRequest& request, const StageProgress& progress = {},
+    const std::function<void(const SynthesizeRun&)>& done = {});
 
 }  // namespace dtwin

@@ -22,10 +22,12 @@ enum class EffectKind {
   Strut,         ///< adds a force along every suspension strut (chassis side), from q and dq/dt
   TireInput,     ///< modifies the road the tire sees (effective road)
   TireForce,     ///< multiplies the tire law's normal force by a factor (1 when off)
-  AxleCoupling,  ///< a force pair between the left and right struts of an axle, from both deflections
+  AxleCoupling,  ///< a force pair between the left and right struts of an axle, from both
+                 ///< deflections
   StrutFilter,   ///< a series element with one auxiliary state z [N] per strut (see calcFilterRate)
-  TireLoad,      ///< adds a vertical force to the tire law's, at every wheel in contact (calcTireLoad)
-  ChassisForce,  ///< a vertical force between ground and the chassis at its mass centre (calcChassisForce)
+  TireLoad,  ///< adds a vertical force to the tire law's, at every wheel in contact (calcTireLoad)
+  ChassisForce,  ///< a vertical force between ground and the chassis at its mass centre
+                 ///< (calcChassisForce)
 };
 
 /// Both main struts of one axle, for AxleCoupling effects (deflections compression positive).
@@ -38,8 +40,8 @@ struct AxleState {
 
 /// The chassis's motion from its start, for ChassisForce effects.
 struct ChassisState {
-  double heave_m = 0.0;         ///< mass-centre height above its height at t = 0 [m]
-  double heave_rate_mps = 0.0;  ///< its rate [m/s]
+  double heave_m = 0.0;                    ///< mass-centre height above its height at t = 0 [m]
+  double heave_rate_mps = 0.0;             ///< its rate [m/s]
   double pitch_rad = 0.0, roll_rad = 0.0;  ///< from their values at t = 0
   double time_s = 0.0, speed_mps = 0.0;
 };
@@ -75,7 +77,8 @@ class Effect {
   /// compression: the effect exerts no force until the deflection exceeds it (the bump stop's
   /// gap_m). When no plausible value of the effect changes these data, the diagnosis then says why
   /// ("the suspension never compresses beyond the smallest plausible gap (0.008 m < 0.01 m): a bump
-  /// stop cannot act here", the parameter's name without "_m" and the effect's in words). Empty: none.
+  /// stop cannot act here", the parameter's name without "_m" and the effect's in words). Empty:
+  /// none.
   virtual std::string engagementThreshold() const { return ""; }
   /// Strut and StrutFilter effects: whether the effect reads the absolute motion at the corner
   /// (StrutState's body, wheel and road velocities; a controller's sensors). The simulator
@@ -97,7 +100,10 @@ class Effect {
   /// AxleCoupling effects: the force [N] on the left strut of an axle (strut sign convention:
   /// positive pushes the wheel down and the chassis up); the right strut gets its negative.
   /// q_left, q_right: suspension deflections (compression positive); front: front axle.
-  virtual double calcAxleCouplingForce(double q_left, double q_right, bool front, ParamValues p) const { return 0.0; }
+  virtual double calcAxleCouplingForce(double q_left, double q_right, bool front,
+                                       ParamValues p) const {
+    return 0.0;
+  }
   /// AxleCoupling effects, what the simulator calls: by default calcAxleCouplingForce of the
   /// deflections; an effect that reads rates, time or speed overrides this.
   virtual double calcAxleForce(const AxleState& a, ParamValues p) const {
@@ -116,7 +122,9 @@ class Effect {
   /// StrutFilter effects: dz/dt [N/s] of the strut's auxiliary state z [N] (z = 0 at rest).
   virtual double calcFilterRate(const StrutState& s, double z, ParamValues p) const { return 0.0; }
   /// StrutFilter effects: extra strut force [N] given the auxiliary state z.
-  virtual double calcFilteredStrutForce(const StrutState& s, double z, ParamValues p) const { return 0.0; }
+  virtual double calcFilteredStrutForce(const StrutState& s, double z, ParamValues p) const {
+    return 0.0;
+  }
 };
 
 /// The corners an effect can be installed at on its own ("bump_stop@rr"), in the twin's corner
@@ -141,8 +149,9 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 /// One effect parameter for an effect's parameters(): off value (default_value), valid range
 /// [lo, hi] (lo excluded when !lo_inclusive) and prior range [prior_lo, prior_hi] (inside the valid
 /// range, containing the off value: what the diagnosis searches).
-ParameterSpec effectParameter(std::string name, std::string unit, std::string description, double off, double lo, double hi,
-                              double prior_lo, double prior_hi, bool lo_inclusive = true);
+ParameterSpec effectParameter(std::string name, std::string unit, std::string description,
+                              double off, double lo, double hi, double prior_lo, double prior_hi,
+                              bool lo_inclusive = true);
 
 /// What the effect registry holds of an effect: its factory.
 using EffectFactory = std::function<std::unique_ptr<Effect>()>;
@@ -153,9 +162,10 @@ using EffectEntry = RegistryEntry<EffectFactory>;
 /// table in effect.cpp (names unique). A new effect is one line there (docs/extending.md).
 const Registry<EffectFactory>& effectRegistry();
 
-/// The prefix of a library term (twin diagnose's proposal, docs/diagnosis.md): makeEffect("term:EXPR")
-/// is the strut force a * (EXPR), EXPR in the user-effect variables q and v, with one parameter a
-/// (off: 0). Such effects are made on demand and never listed by effectNames().
+/// The prefix of a library term (twin diagnose's proposal, docs/diagnosis.md):
+/// makeEffect("term:EXPR") is the strut force a * (EXPR), EXPR in the user-effect variables q and
+/// v, with one parameter a (off: 0). Such effects are made on demand and never listed by
+/// effectNames().
 inline constexpr const char* kTermPrefix = "term:";
 
 /// The built-in effect `name`, or a library term. Throws InputError(where, "unknown effect 'x'

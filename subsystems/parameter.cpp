@@ -14,12 +14,13 @@ std::string checkParameterValue(const ParameterSpec& spec, double v) {
   }
   const bool below = spec.min_inclusive ? v < spec.min_value : v <= spec.min_value;
   if (below) {
-    os << "must be " << (spec.min_inclusive ? ">= " : "> ") << spec.min_value << (spec.unit == "1" ? "" : " " + spec.unit)
-       << ", got " << v;
+    os << "must be " << (spec.min_inclusive ? ">= " : "> ") << spec.min_value
+       << (spec.unit == "1" ? "" : " " + spec.unit) << ", got " << v;
     return os.str();
   }
   if (v > spec.max_value) {
-    os << "must be <= " << spec.max_value << (spec.unit == "1" ? "" : " " + spec.unit) << ", got " << v;
+    os << "must be <= " << spec.max_value << (spec.unit == "1" ? "" : " " + spec.unit) << ", got "
+       << v;
     return os.str();
   }
   return {};

@@ -10,9 +10,9 @@ namespace dtwin {
 /// Description of one scalar parameter of a law. Values are passed to laws as a span of doubles
 /// in the order of the law's `parameters()` list.
 struct ParameterSpec {
-  std::string name;         ///< local name, e.g. "stiffness"
-  std::string unit;         ///< SI unit, e.g. "N/m"; "1" for dimensionless
-  std::string description;  ///< one line
+  std::string name;            ///< local name, e.g. "stiffness"
+  std::string unit;            ///< SI unit, e.g. "N/m"; "1" for dimensionless
+  std::string description;     ///< one line
   double default_value = 0.0;  ///< for effects: the "off" value; for laws: informative only
   double min_value = -std::numeric_limits<double>::infinity();  ///< physically valid range
   double max_value = std::numeric_limits<double>::infinity();
@@ -35,7 +35,8 @@ class ParamValues {
  public:
   ParamValues() = default;
   ParamValues(const double* data, std::size_t size) : data_(data), size_(size) {}
-  ParamValues(const std::vector<double>& v) : data_(v.data()), size_(v.size()) {}  // NOLINT: implicit by design
+  ParamValues(const std::vector<double>& v)
+      : data_(v.data()), size_(v.size()) {}  // NOLINT: implicit by design
   double operator[](std::size_t i) const { return data_[i]; }
   std::size_t size() const { return size_; }
   const double* data() const { return data_; }

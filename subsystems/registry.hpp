@@ -15,7 +15,8 @@ using Factory = std::unique_ptr<T> (*)();
 /// description given, and a factory.
 template <class L, class Base>
 RegistryEntry<Factory<Base>> lawEntry(std::string description) {
-  return {L().name(), std::move(description), [] { return std::unique_ptr<Base>(std::make_unique<L>()); }};
+  return {L().name(), std::move(description),
+          [] { return std::unique_ptr<Base>(std::make_unique<L>()); }};
 }
 
 }  // namespace dtwin

@@ -22,7 +22,8 @@ constexpr double kHuge = 1e12;
 
 RoadSample Road::sampleAveraged(Track t, double x, double L) const {
   const double a = x - 0.5 * L, b = x + 0.5 * L;
-  return {(integral(t, b) - integral(t, a)) / L, (sample(t, b).height_m - sample(t, a).height_m) / L};
+  return {(integral(t, b) - integral(t, a)) / L,
+          (sample(t, b).height_m - sample(t, a).height_m) / L};
 }
 
 Interval FlatRoad::extent() const { return {-kHuge, kHuge}; }
@@ -49,15 +50,20 @@ double BumpRoad::integral(Track, double x) const {
 Interval BumpRoad::extent() const { return {-kHuge, kHuge}; }
 
 nlohmann::json BumpRoad::describe() const {
-  return {{"type", "bump"}, {"shape", "one-cosine"}, {"start_x_m", x0_}, {"height_m", H_}, {"length_m", L_}};
+  return {{"type", "bump"},
+          {"shape", "one-cosine"},
+          {"start_x_m", x0_},
+          {"height_m", H_},
+          {"length_m", L_}};
 }
 
 // ------------------------------------------------------------------ grid
-GridRoad::GridRoad(double x0_m, double dx_m, std::vector<double> left_m, std::vector<double> right_m,
-                   nlohmann::json description)
+GridRoad::GridRoad(double x0_m, double dx_m, std::vector<double> left_m,
+                   std::vector<double> right_m, nlohmann::json description)
     : x0_(x0_m), dx_(dx_m), description_(std::move(description)) {
   DTWIN_CHECK(dx_m > 0.0, "grid spacing must be positive");
-  DTWIN_CHECK(left_m.size() == right_m.size() && left_m.size() >= 2, "grid road needs >= 2 equal-length tracks");
+  DTWIN_CHECK(left_m.size() == right_m.size() && left_m.size() >= 2,
+              "grid road needs >= 2 equal-length tracks");
   h_[0] = std::move(left_m);
   h_[1] = std::move(right_m);
   for (int t = 0; t < 2; ++t) {
@@ -85,8 +91,10 @@ RoadSample GridRoad::sample(Track t, double x) const {
   if (s >= static_cast<double>(n - 1)) return {h.back(), 0.0};
   const std::size_t i = static_cast<std::size_t>(s);
   const double u = s - static_cast<double>(i), u2 = u * u, u3 = u2 * u;
-  const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
-  const double d00 = 6 * u2 - 6 * u, d10 = 3 * u2 - 4 * u + 1, d01 = -6 * u2 + 6 * u, d11 = 3 * u2 - 2 * u;
+  const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2,
+               h11 = u3 - u2;
+  const double d00 = 6 * u2 - 6 * u, d10 = 3 * u2 - 4 * u + 1, d01 = -6 * u2 + 6 * u,
+               d11 = 3 * u2 - 2 * u;
   return {h00 * h[i] + h10 * dx_ * m[i] + h01 * h[i + 1] + h11 * dx_ * m[i + 1],
           (d00 * h[i] + d01 * h[i + 1]) / dx_ + d10 * m[i] + d11 * m[i + 1]};
 }
@@ -107,11 +115,14 @@ double GridRoad::integral(Track t, double x) const {
   return P[i] + dx_ * (h[i] * I00 + dx_ * m[i] * I10 + h[i + 1] * I01 + dx_ * m[i + 1] * I11);
 }
 
-Interval GridRoad::extent() const { return {x0_, x0_ + dx_ * static_cast<double>(h_[0].size() - 1)}; }
+Interval GridRoad::extent() const {
+  return {x0_, x0_ + dx_ * static_cast<double>(h_[0].size() - 1)};
+}
 
 // ------------------------------------------------------------------ ISO 8608
 double isoClassGd0(char c) {
-  if (c < 'A' || c > 'H') throw InputError("", std::string("ISO 8608 class must be A..H, got '") + c + "'");
+  if (c < 'A' || c > 'H')
+    throw InputError("", std::string("ISO 8608 class must be A..H, got '") + c + "'");
   return 16e-6 * std::pow(4.0, c - 'A');
 }
 
@@ -130,11 +141,13 @@ double gdIntegral(double gd0, double w, double a, double b) {
 }
 
 std::vector<double> isoTrack(const IsoRoadSpec& s, std::size_t N, std::uint64_t stream_id) {
-  const double period = static_cast<double>(N) * s.dx_m, dn = 1.0 / period, gd0 = isoClassGd0(s.road_class);
+  const double period = static_cast<double>(N) * s.dx_m, dn = 1.0 / period,
+               gd0 = isoClassGd0(s.road_class);
   RandomStream rng(s.seed, 0x150'8608ULL, stream_id);
   std::vector<std::complex<double>> spec(N, 0.0);
   for (std::size_t k = 1; k < N / 2; ++k) {
-    const double phase = 2.0 * kPi * rng.uniform();  // drawn for every bin: band changes keep phases
+    const double phase =
+        2.0 * kPi * rng.uniform();  // drawn for every bin: band changes keep phases
     const double a = std::max(s.n_min, (k - 0.5) * dn), b = std::min(s.n_max, (k + 0.5) * dn);
     const double var = gdIntegral(gd0, s.waviness, a, b);
     if (var <= 0.0) continue;
@@ -151,9 +164,11 @@ std::vector<double> isoTrack(const IsoRoadSpec& s, std::size_t N, std::uint64_t 
 }  // namespace
 
 std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& s) {
-  if (!(s.n_min > 0 && s.n_max > s.n_min)) throw InputError("", "ISO road band needs 0 < n_min < n_max");
+  if (!(s.n_min > 0 && s.n_max > s.n_min))
+    throw InputError("", "ISO road band needs 0 < n_min < n_max");
   if (!(s.dx_m > 0 && s.n_max < 0.25 / s.dx_m))
-    throw InputError("", "ISO road grid spacing must resolve n_max with >= 4 points per wavelength");
+    throw InputError("",
+                     "ISO road grid spacing must resolve n_max with >= 4 points per wavelength");
   if (!(s.length_m > 0)) throw InputError("", "ISO road length must be > 0");
   // Period P = N dx >= max(length, 4 / n_min), so that several bins lie below the band's low end.
   const double need = std::max(s.length_m, 4.0 / s.n_min);
@@ -161,34 +176,39 @@ std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& s) {
   std::size_t N = 1024;
   while (static_cast<double>(N) * s.dx_m < need || N < n_pts) N *= 2;
   std::vector<double> left = isoTrack(s, N, 0);
-  std::vector<double> right = s.coherence == IsoRoadSpec::Coherence::Identical ? left : isoTrack(s, N, 1);
+  std::vector<double> right =
+      s.coherence == IsoRoadSpec::Coherence::Identical ? left : isoTrack(s, N, 1);
   left.resize(std::min(N, n_pts));
   right.resize(left.size());
   for (std::size_t j = 0; j < left.size(); ++j) {
     const double x = s.x_begin_m + s.dx_m * static_cast<double>(j);
     double w = 1.0;
-    if (x < s.smooth_until_m) w = 0.0;
-    else if (x < s.smooth_until_m + s.taper_m) w = 0.5 * (1.0 - std::cos(kPi * (x - s.smooth_until_m) / s.taper_m));
+    if (x < s.smooth_until_m)
+      w = 0.0;
+    else if (x < s.smooth_until_m + s.taper_m)
+      w = 0.5 * (1.0 - std::cos(kPi * (x - s.smooth_until_m) / s.taper_m));
     left[j] *= w;
     right[j] *= w;
   }
-  nlohmann::json d = {{"type", "iso8608"},
-                      {"class", std::string(1, s.road_class)},
-                      {"gd_n0_m3", isoClassGd0(s.road_class)},
-                      {"n0_cycles_per_m", 0.1},
-                      {"waviness", s.waviness},
-                      {"band_cycles_per_m", {s.n_min, s.n_max}},
-                      {"dx_m", s.dx_m},
-                      {"x_begin_m", s.x_begin_m},
-                      {"length_m", s.length_m},
-                      {"period_m", static_cast<double>(N) * s.dx_m},
-                      {"tracks", s.coherence == IsoRoadSpec::Coherence::Identical ? "identical" : "independent"},
-                      {"seed", s.seed}};
+  nlohmann::json d = {
+      {"type", "iso8608"},
+      {"class", std::string(1, s.road_class)},
+      {"gd_n0_m3", isoClassGd0(s.road_class)},
+      {"n0_cycles_per_m", 0.1},
+      {"waviness", s.waviness},
+      {"band_cycles_per_m", {s.n_min, s.n_max}},
+      {"dx_m", s.dx_m},
+      {"x_begin_m", s.x_begin_m},
+      {"length_m", s.length_m},
+      {"period_m", static_cast<double>(N) * s.dx_m},
+      {"tracks", s.coherence == IsoRoadSpec::Coherence::Identical ? "identical" : "independent"},
+      {"seed", s.seed}};
   if (s.smooth_until_m > -1e299) {
     d["smooth_until_m"] = s.smooth_until_m;
     d["taper_m"] = s.taper_m;
   }
-  return std::make_shared<GridRoad>(s.x_begin_m, s.dx_m, std::move(left), std::move(right), std::move(d));
+  return std::make_shared<GridRoad>(s.x_begin_m, s.dx_m, std::move(left), std::move(right),
+                                    std::move(d));
 }
 
 // ------------------------------------------------------------------ CSV
@@ -198,11 +218,13 @@ std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
   // The heights in m, mm or cm (the same unit on both tracks).
   static const std::pair<const char*, double> kUnits[] = {{"m", 1.0}, {"mm", 1e-3}, {"cm", 1e-2}};
   const char* kHeader = "'distance_m,left_m,right_m' (or left_mm,right_mm or left_cm,right_cm)";
-  if (!csv.next()) throw InputError(path + ":1", std::string("empty file; expected header ") + kHeader);
+  if (!csv.next())
+    throw InputError(path + ":1", std::string("empty file; expected header ") + kHeader);
   double scale = 0;
   if (const auto& h = csv.fields(); h.size() == 3 && h[0] == "distance_m")
     for (const auto& [unit, factor] : kUnits)
-      if (h[1] == std::string("left_") + unit && h[2] == std::string("right_") + unit) scale = factor;
+      if (h[1] == std::string("left_") + unit && h[2] == std::string("right_") + unit)
+        scale = factor;
   if (scale == 0) {
     std::string got;
     for (auto f : csv.fields()) got += (got.empty() ? "" : ",") + std::string(f);
@@ -213,12 +235,14 @@ std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
   while (csv.next()) {
     const auto& f = csv.fields();
     if (f.size() > 3) throw InputError(csv.where(), "expected 3 columns, got more");
-    if (f.size() < 3) throw InputError(csv.where(), "expected 3 columns, got " + std::to_string(f.size()));
+    if (f.size() < 3)
+      throw InputError(csv.where(), "expected 3 columns, got " + std::to_string(f.size()));
     double v[3];
     for (std::size_t c = 0; c < 3; ++c)
       if (!parseNumber(f[c], v[c]) || !std::isfinite(v[c]))
         throw InputError(csv.where(), "value '" + std::string(f[c]) + "' is not a finite number");
-    if (!x.empty() && !(v[0] > x.back())) throw InputError(csv.where(), "distance_m must increase strictly");
+    if (!x.empty() && !(v[0] > x.back()))
+      throw InputError(csv.where(), "distance_m must increase strictly");
     x.push_back(v[0]);
     l.push_back(v[1] * scale);
     r.push_back(v[2] * scale);
@@ -230,8 +254,9 @@ std::shared_ptr<const GridRoad> loadRoadCsv(const std::string& path) {
   for (std::size_t i = 2; i < x.size(); ++i)
     if (std::abs((x[i] - x[i - 1]) - step) > 1e-6 * std::max(1.0, step) + 1e-9 * std::abs(x[i]))
       throw InputError(path + ":" + std::to_string(lines[i]),
-                       "distance_m must be uniformly spaced (step " + std::to_string(x[i] - x[i - 1]) +
-                           " m differs from the first step " + std::to_string(step) + " m)");
+                       "distance_m must be uniformly spaced (step " +
+                           std::to_string(x[i] - x[i - 1]) + " m differs from the first step " +
+                           std::to_string(step) + " m)");
   const double dx = (x.back() - x.front()) / static_cast<double>(x.size() - 1);
   nlohmann::json d = {{"type", "csv"}, {"path", path}, {"rows", x.size()}, {"dx_m", dx}};
   return std::make_shared<GridRoad>(x.front(), dx, std::move(l), std::move(r), std::move(d));

@@ -85,22 +85,23 @@ class GridRoad final : public Road {
 /// bin within the band), so the profile's mean square over a period equals the integral of Gd
 /// over the band exactly; the band edges are stated in every description.
 struct IsoRoadSpec {
-  char road_class = 'D';          ///< A..H (geometric mean of the class)
-  double n_min = 0.011;           ///< lowest spatial frequency kept [cycles/m]
-  double n_max = 2.83;            ///< highest [cycles/m]
-  double waviness = 2.0;          ///< w
-  double dx_m = 0.01;             ///< grid spacing
-  double x_begin_m = 0.0;         ///< first grid point
-  double length_m = 200.0;        ///< covered length
-  double smooth_until_m = -1e300; ///< flat before this x, raised-cosine taper after it
-  double taper_m = 1.0;           ///< taper length
+  char road_class = 'D';           ///< A..H (geometric mean of the class)
+  double n_min = 0.011;            ///< lowest spatial frequency kept [cycles/m]
+  double n_max = 2.83;             ///< highest [cycles/m]
+  double waviness = 2.0;           ///< w
+  double dx_m = 0.01;              ///< grid spacing
+  double x_begin_m = 0.0;          ///< first grid point
+  double length_m = 200.0;         ///< covered length
+  double smooth_until_m = -1e300;  ///< flat before this x, raised-cosine taper after it
+  double taper_m = 1.0;            ///< taper length
   enum class Coherence { Independent, Identical } coherence = Coherence::Independent;
   unsigned long long seed = 1;
 };
 
 /// Gd(n0) [m^3] of an ISO 8608 class (geometric mean): A 16e-6, B 64e-6, ..., H 262144e-6.
 double isoClassGd0(char road_class);
-/// RMS height over the band for w = 2: sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)) (the integral of Gd(n) over the band).
+/// RMS height over the band for w = 2: sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)) (the integral of Gd(n)
+/// over the band).
 double isoRmsHeight(char road_class, double n_min, double n_max);
 std::shared_ptr<const GridRoad> makeIsoRoad(const IsoRoadSpec& spec);
 

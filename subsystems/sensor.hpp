@@ -30,9 +30,11 @@ struct SensorFilter {
 };
 
 struct SensorSpec {
-  std::string name;                       ///< the study's [sensors.NAME]
-  std::string mount = "chassis";          ///< "chassis" or a wheel centre: "wheel_fl", "wheel_fr", "wheel_rl", "wheel_rr"
-  std::array<double, 3> position_m{0, 0, 0};  ///< chassis: from the centre of mass in chassis axes (x forward, y left, z up)
+  std::string name;  ///< the study's [sensors.NAME]
+  std::string mount =
+      "chassis";  ///< "chassis" or a wheel centre: "wheel_fl", "wheel_fr", "wheel_rl", "wheel_rr"
+  std::array<double, 3> position_m{
+      0, 0, 0};  ///< chassis: from the centre of mass in chassis axes (x forward, y left, z up)
   SensorQuantity quantity = SensorQuantity::AccelerationZ;
   SensorFilter filter;
   /// Standard deviation of the sensor's noise in its unit (0: unknown). Weighs the channel when
@@ -45,7 +47,9 @@ struct SensorSpec {
   bool positionMeasured() const { return position_sd_m >= 0.0; }
 
   /// A relative sensor: travel or its rate (between the chassis and the wheel of `mount`).
-  bool relative() const { return quantity == SensorQuantity::Travel || quantity == SensorQuantity::TravelRate; }
+  bool relative() const {
+    return quantity == SensorQuantity::Travel || quantity == SensorQuantity::TravelRate;
+  }
   /// The output channel: NAME plus the unit suffix (_m, _mps, _mps2), e.g. "seat_mps2".
   std::string channel() const;
   /// "m", "m/s" or "m/s^2".
@@ -53,8 +57,9 @@ struct SensorSpec {
   /// The wheel's corner (0 fl, 1 fr, 2 rl, 3 rr), or -1 on the chassis.
   int corner() const;
   /// InputError(where + ".<field>", rule) for a bad name, mount, position (a wheel sensor sits at
-  /// the wheel centre: position must be 0), a travel sensor not on a wheel, filter (order 0-2; 0 < cutoff_hz <= 1e4; 0 < ζ <= 10)
-  /// noise_sd (finite, >= 0) or position_sd_m (finite, >= 0 when declared; a chassis sensor's only).
+  /// the wheel centre: position must be 0), a travel sensor not on a wheel, filter (order 0-2; 0 <
+  /// cutoff_hz <= 1e4; 0 < ζ <= 10) noise_sd (finite, >= 0) or position_sd_m (finite, >= 0 when
+  /// declared; a chassis sensor's only).
   void validate(const std::string& where) const;
   nlohmann::json toJson() const;
 };
@@ -76,7 +81,8 @@ struct Motion {
 /// pitched by `pitch` about the rolled y axis (R = Rx(roll) Ry(pitch): pitch positive nose down,
 /// roll positive right side down). Exact, not small-angle: z = heave + y sin φ + (z_p cos θ −
 /// x sin θ) cos φ, and its first and second derivatives by the chain rule.
-Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion& roll, const std::array<double, 3>& p);
+Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion& roll,
+                          const std::array<double, 3>& p);
 
 /// The height in chassis axes (z up, from the centre of mass) of a point whose chassis-axis x and y
 /// are fixed (a MacPherson wheel centre slides along the chassis z axis; a solid axle's wheel
@@ -85,7 +91,8 @@ Motion chassisPointMotion(const Motion& heave, const Motion& pitch, const Motion
 ///   z = ((z_w − h − y sin φ) / cos φ + x sin θ) / cos θ,
 /// with its first derivative by the chain rule (qdd is not computed: 0). A travel sensor reads
 /// z − z(0) of the wheel centre: the wheel moving up toward the body is compression, positive.
-Motion chassisAxisHeight(const Motion& world_z, const Motion& heave, const Motion& pitch, const Motion& roll, double x, double y);
+Motion chassisAxisHeight(const Motion& world_z, const Motion& heave, const Motion& pitch,
+                         const Motion& roll, double x, double y);
 
 /// `u` sampled at `rate_hz` filtered by `f`, starting at rest at u[0] (y(0) = u[0], y'(0) = 0).
 /// Exact for an input that is linear between samples: each step is the matrix exponential of the
@@ -93,7 +100,8 @@ Motion chassisAxisHeight(const Motion& world_z, const Motion& heave, const Motio
 /// the error is at most max|H| (ω/rate_hz)²/8 (the linear reading's). Order 0 returns u.
 std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const SensorFilter& f);
 
-/// How a logger may have distorted a channel (twin diagnose's sensor candidates, docs/diagnosis.md):
+/// How a logger may have distorted a channel (twin diagnose's sensor candidates,
+/// docs/diagnosis.md):
 ///   lowpass   a first-order low-pass,           parameter time_constant_s τ = 1/ωc (off: 0)
 ///   lowpass2  a second-order Butterworth,       parameter time_constant_s τ = 1/ωc (off: 0)
 ///   gain      a gain error y = g u,             parameter gain g (off: 1)
@@ -119,7 +127,7 @@ struct SensorDistortion {
 /// `grid` (a channel sampled at `rate_hz` from t = 0, starting at rest) distorted by `d`, read at
 /// `times`: filtered exactly (lowPass), then read at t − delay_s by the four-point Lagrange cubic
 /// of the grid (exact at a grid time; clamped to the grid's ends), then scaled.
-std::vector<double> distortChannel(const std::vector<double>& grid, double rate_hz, const std::vector<double>& times,
-                                   const SensorDistortion& d);
+std::vector<double> distortChannel(const std::vector<double>& grid, double rate_hz,
+                                   const std::vector<double>& times, const SensorDistortion& d);
 
 }  // namespace dtwin

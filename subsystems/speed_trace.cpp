@@ -66,15 +66,22 @@ std::vector<double> pchipSlopes(const std::vector<double>& t, const std::vector<
 SpeedTrace::SpeedTrace(std::vector<double> t_s, std::vector<double> v_mps, std::string name)
     : t_(std::move(t_s)), v_(std::move(v_mps)), name_(std::move(name)) {
   if (t_.size() != v_.size())
-    throw InputError(name_, "has " + std::to_string(t_.size()) + " times but " + std::to_string(v_.size()) + " speeds");
-  if (t_.size() < 2) throw InputError(name_, "a speed trace needs at least 2 samples, got " + std::to_string(t_.size()));
+    throw InputError(name_, "has " + std::to_string(t_.size()) + " times but " +
+                                std::to_string(v_.size()) + " speeds");
+  if (t_.size() < 2)
+    throw InputError(name_,
+                     "a speed trace needs at least 2 samples, got " + std::to_string(t_.size()));
   for (std::size_t k = 0; k < t_.size(); ++k) {
     const std::string at = "sample " + std::to_string(k) + ": ";
-    if (!std::isfinite(t_[k])) throw InputError(name_, at + "time must be finite, got " + formatNumber(t_[k]));
-    if (!std::isfinite(v_[k])) throw InputError(name_, at + "speed must be finite, got " + formatNumber(v_[k]));
-    if (v_[k] < 0) throw InputError(name_, at + "speed must be >= 0, got " + formatNumber(v_[k], 17));
+    if (!std::isfinite(t_[k]))
+      throw InputError(name_, at + "time must be finite, got " + formatNumber(t_[k]));
+    if (!std::isfinite(v_[k]))
+      throw InputError(name_, at + "speed must be finite, got " + formatNumber(v_[k]));
+    if (v_[k] < 0)
+      throw InputError(name_, at + "speed must be >= 0, got " + formatNumber(v_[k], 17));
     if (k > 0 && !(t_[k] > t_[k - 1]))
-      throw InputError(name_, at + "time must increase, got " + formatNumber(t_[k], 17) + " after " + formatNumber(t_[k - 1], 17));
+      throw InputError(name_, at + "time must increase, got " + formatNumber(t_[k], 17) +
+                                  " after " + formatNumber(t_[k - 1], 17));
   }
   d_ = pchipSlopes(t_, v_);
   cum_.assign(t_.size(), 0.0);
@@ -90,7 +97,8 @@ SpeedTrace::SpeedTrace(std::vector<double> t_s, std::vector<double> v_mps, std::
   for (std::size_t b = 0; b < nb; ++b) {
     const double tb = t_.front() + static_cast<double>(b) / bucket_scale_;
     const auto it = std::upper_bound(t_.begin(), t_.end(), tb);
-    bucket_[b] = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(it - t_.begin() - 1, 0, static_cast<std::ptrdiff_t>(nb) - 2));
+    bucket_[b] = static_cast<std::size_t>(
+        std::clamp<std::ptrdiff_t>(it - t_.begin() - 1, 0, static_cast<std::ptrdiff_t>(nb) - 2));
   }
   offset_ = integral(0.0);
 }
@@ -129,7 +137,8 @@ double SpeedTrace::integral(double t) const {
   const std::size_t k = interval(t);
   const double h = t_[k + 1] - t_[k];
   const Hermite b = basisIntegral((t - t_[k]) / h);
-  return cum_[k] + h * (b.h00 * v_[k] + b.h10 * h * d_[k] + b.h01 * v_[k + 1] + b.h11 * h * d_[k + 1]);
+  return cum_[k] +
+         h * (b.h00 * v_[k] + b.h10 * h * d_[k] + b.h01 * v_[k + 1] + b.h11 * h * d_[k + 1]);
 }
 
 double SpeedTrace::distance(double t) const { return integral(t) - offset_; }
@@ -138,12 +147,14 @@ double SpeedTrace::timeAtDistance(double x) const {
   if (x <= 0) return 0.0;
   const double target = x + offset_;
   if (target >= cum_.back()) {
-    if (v_.back() <= 0) return target == cum_.back() ? t_.back() : std::numeric_limits<double>::infinity();
+    if (v_.back() <= 0)
+      return target == cum_.back() ? t_.back() : std::numeric_limits<double>::infinity();
     return t_.back() + (target - cum_.back()) / v_.back();
   }
   // The integral is non-decreasing: the first time it reaches `target`, by bisection on the
   // interval that holds it (the first knot at or above it bounds the search).
-  const std::size_t hi = static_cast<std::size_t>(std::lower_bound(cum_.begin(), cum_.end(), target) - cum_.begin());
+  const std::size_t hi =
+      static_cast<std::size_t>(std::lower_bound(cum_.begin(), cum_.end(), target) - cum_.begin());
   double a = std::max(0.0, t_[hi == 0 ? 0 : hi - 1]), b = t_[hi];
   if (target <= cum_.front()) {  // before the first sample (the trace starts after time 0)
     a = 0.0;

@@ -40,9 +40,9 @@ class SpeedTrace {
   /// ∫ from t_[0] to t of the speed.
   double integral(double t) const;
 
-  std::vector<double> t_, v_, d_;  ///< sample times, speeds, PCHIP slopes dv/dt at the samples
-  std::vector<double> cum_;        ///< ∫ from t_[0] to t_[k] of the speed
-  double offset_ = 0;              ///< integral(0)
+  std::vector<double> t_, v_, d_;    ///< sample times, speeds, PCHIP slopes dv/dt at the samples
+  std::vector<double> cum_;          ///< ∫ from t_[0] to t_[k] of the speed
+  double offset_ = 0;                ///< integral(0)
   std::vector<std::size_t> bucket_;  ///< interval() at the start of each equal bucket of the span
   double bucket_scale_ = 0;          ///< buckets per second
   std::string name_;

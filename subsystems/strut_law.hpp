@@ -13,9 +13,9 @@
 namespace dtwin {
 
 struct StrutState {
-  double deflection_m = 0.0;  ///< q, compression positive, 0 at design ride height
-  double rate_mps = 0.0;      ///< dq/dt
-  double preload_N = 0.0;     ///< static force at q = 0 (set by the assembly from equilibrium)
+  double deflection_m = 0.0;    ///< q, compression positive, 0 at design ride height
+  double rate_mps = 0.0;        ///< dq/dt
+  double preload_N = 0.0;       ///< static force at q = 0 (set by the assembly from equilibrium)
   double base_stiffness = 0.0;  ///< k of the main spring [N/m] (effects such as asymmetry read it)
   double base_damping = 0.0;    ///< c of the main damper [N*s/m]
   // The run's context on a main strut, for effects (the laws ignore it; 0 elsewhere):
@@ -25,9 +25,12 @@ struct StrutState {
   double other_rate_mps = 0.0;      ///< its dq/dt
   bool front = true;                ///< on the front axle
   // The absolute motion at the corner, for effects that read it (Effect::needsMotion; 0 otherwise):
-  double body_velocity_mps = 0.0;   ///< world-vertical velocity of the strut's upper end on the body (up positive)
-  double wheel_velocity_mps = 0.0;  ///< world-vertical velocity of its lower end (the wheel centre; a solid axle's seat)
-  double road_velocity_mps = 0.0;   ///< vertical velocity of the road signal under the corner's wheel, dh/dt
+  double body_velocity_mps =
+      0.0;  ///< world-vertical velocity of the strut's upper end on the body (up positive)
+  double wheel_velocity_mps =
+      0.0;  ///< world-vertical velocity of its lower end (the wheel centre; a solid axle's seat)
+  double road_velocity_mps =
+      0.0;  ///< vertical velocity of the road signal under the corner's wheel, dh/dt
 };
 
 /// The law of a suspension's main strut. The contract every registered law keeps (checked over
@@ -72,7 +75,8 @@ class LinearStrut final : public StrutLaw {
   std::vector<ParameterSpec> specs_;
 };
 
-/// Every strut law, in the order `twin list` shows them (docs: the "strut law" table of docs/model.md).
+/// Every strut law, in the order `twin list` shows them (docs: the "strut law" table of
+/// docs/model.md).
 const Registry<Factory<StrutLaw>>& strutLawRegistry();
 /// Factory keyed by study-file option name. Throws InputError listing the known names.
 std::unique_ptr<StrutLaw> makeStrutLaw(const std::string& name, const std::string& where);

@@ -31,22 +31,26 @@ const Layout kLayouts[] = {
     {{"velocity_mps", nullptr}, 1, TimeRoadLog::Form::Velocity, 1.0},
     {{"left_mps", "right_mps"}, 2, TimeRoadLog::Form::Velocity, 1.0},
 };
-const char* kHeaders = "time_s,height_m | time_s,left_m,right_m | time_s,velocity_mps | time_s,left_mps,right_mps (or _mm or _cm for heights, _mmps for velocities)";
+const char* kHeaders =
+    "time_s,height_m | time_s,left_m,right_m | time_s,velocity_mps | time_s,left_mps,right_mps (or "
+    "_mm or _cm for heights, _mmps for velocities)";
 }  // namespace
 
 TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
   CsvReader csv(text, name);
-  if (!csv.next()) throw InputError(name + ":1", std::string("empty file; expected a header ") + kHeaders);
+  if (!csv.next())
+    throw InputError(name + ":1", std::string("empty file; expected a header ") + kHeaders);
   const auto& h = csv.fields();
   const Layout* layout = nullptr;
   for (const auto& l : kLayouts)
-    if (h.size() == static_cast<std::size_t>(l.count) + 1 && h[0] == "time_s" && h[1] == l.columns[0] &&
-        (l.count == 1 || h[2] == l.columns[1]))
+    if (h.size() == static_cast<std::size_t>(l.count) + 1 && h[0] == "time_s" &&
+        h[1] == l.columns[0] && (l.count == 1 || h[2] == l.columns[1]))
       layout = &l;
   if (!layout) {
     std::string got;
     for (auto f : h) got += (got.empty() ? "" : ",") + std::string(f);
-    throw InputError(csv.where(), "header must be " + std::string(kHeaders) + ", got '" + got + "'");
+    throw InputError(csv.where(),
+                     "header must be " + std::string(kHeaders) + ", got '" + got + "'");
   }
   TimeRoadLog log;
   log.form = layout->form;
@@ -56,19 +60,23 @@ TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
   while (csv.next()) {
     const auto& f = csv.fields();
     if (f.size() != n)
-      throw InputError(csv.where(), "expected " + std::to_string(n) + " columns, got " + std::to_string(f.size()));
+      throw InputError(csv.where(), "expected " + std::to_string(n) + " columns, got " +
+                                        std::to_string(f.size()));
     double v[3] = {0, 0, 0};
     for (std::size_t c = 0; c < n; ++c)
       if (!parseNumber(f[c], v[c]) || !std::isfinite(v[c]))
-        throw InputError(csv.where(), std::string(c == 0 ? "time_s" : layout->columns[c - 1]) + ": '" + std::string(f[c]) +
-                                          "' is not a finite number");
+        throw InputError(csv.where(), std::string(c == 0 ? "time_s" : layout->columns[c - 1]) +
+                                          ": '" + std::string(f[c]) + "' is not a finite number");
     if (!log.t_s.empty() && !(v[0] > log.t_s.back()))
-      throw InputError(csv.where(), "time_s: must increase, got " + std::string(f[0]) + " after " + formatNumber(log.t_s.back(), 17));
+      throw InputError(csv.where(), "time_s: must increase, got " + std::string(f[0]) + " after " +
+                                        formatNumber(log.t_s.back(), 17));
     log.t_s.push_back(v[0]);
     log.left.push_back(v[1] * layout->scale);
     log.right.push_back((layout->count == 1 ? v[1] : v[2]) * layout->scale);
   }
-  if (log.t_s.size() < 2) throw InputError(name, "a road log needs at least 2 rows, got " + std::to_string(log.t_s.size()));
+  if (log.t_s.size() < 2)
+    throw InputError(name,
+                     "a road log needs at least 2 rows, got " + std::to_string(log.t_s.size()));
   return log;
 }
 
@@ -76,14 +84,17 @@ TimeRoadLog readTimeRoadCsv(const std::string& path) {
   return parseTimeRoadCsv(readTextFile(path, " (a road against time)"), path);
 }
 
-std::vector<double> zeroPhaseHighPass(const std::vector<double>& t, const std::vector<double>& u, double cutoff_hz) {
+std::vector<double> zeroPhaseHighPass(const std::vector<double>& t, const std::vector<double>& u,
+                                      double cutoff_hz) {
   DTWIN_CHECK(t.size() == u.size() && cutoff_hz > 0, "zeroPhaseHighPass: sizes or cut-off");
   if (u.empty()) return u;
   const double wc = 2.0 * kPi * cutoff_hz;
   std::vector<double> y(u.size());
   y[0] = u[0];
-  for (std::size_t k = 1; k < u.size(); ++k) y[k] = y[k - 1] + (1.0 - std::exp(-wc * (t[k] - t[k - 1]))) * (u[k] - y[k - 1]);
-  for (std::size_t k = u.size() - 1; k-- > 0;) y[k] = y[k + 1] + (1.0 - std::exp(-wc * (t[k + 1] - t[k]))) * (y[k] - y[k + 1]);
+  for (std::size_t k = 1; k < u.size(); ++k)
+    y[k] = y[k - 1] + (1.0 - std::exp(-wc * (t[k] - t[k - 1]))) * (u[k] - y[k - 1]);
+  for (std::size_t k = u.size() - 1; k-- > 0;)
+    y[k] = y[k + 1] + (1.0 - std::exp(-wc * (t[k + 1] - t[k]))) * (y[k] - y[k + 1]);
   for (std::size_t k = 0; k < u.size(); ++k) y[k] = u[k] - y[k];
   return y;
 }
@@ -96,8 +107,10 @@ std::vector<double> threePointSlopes(const std::vector<double>& x, const std::ve
   std::vector<double> m(n, 0.0);
   if (n < 2) return m;
   for (std::size_t i = 0; i < n; ++i) {
-    if (i == 0) m[i] = (y[1] - y[0]) / (x[1] - x[0]);
-    else if (i + 1 == n) m[i] = (y[n - 1] - y[n - 2]) / (x[n - 1] - x[n - 2]);
+    if (i == 0)
+      m[i] = (y[1] - y[0]) / (x[1] - x[0]);
+    else if (i + 1 == n)
+      m[i] = (y[n - 1] - y[n - 2]) / (x[n - 1] - x[n - 2]);
     else {
       const double a = x[i] - x[i - 1], b = x[i + 1] - x[i];
       m[i] = (b * (y[i] - y[i - 1]) / a + a * (y[i + 1] - y[i]) / b) / (a + b);
@@ -107,7 +120,8 @@ std::vector<double> threePointSlopes(const std::vector<double>& x, const std::ve
 }
 }  // namespace
 
-std::vector<double> roadHeightFromVelocity(const std::vector<double>& t, const std::vector<double>& v, double highpass_hz) {
+std::vector<double> roadHeightFromVelocity(const std::vector<double>& t,
+                                           const std::vector<double>& v, double highpass_hz) {
   // The exact integral of the velocity's cubic Hermite interpolant (three-point slopes a):
   // h(t1) − h(t0) = Δt (v0 + v1)/2 + Δt² (a0 − a1)/12, fourth order where the trapezoid is second
   // (at 100 Hz it loses 3 % of a 10 Hz content's height, this 0.3 %).
@@ -120,12 +134,15 @@ std::vector<double> roadHeightFromVelocity(const std::vector<double>& t, const s
   return zeroPhaseHighPass(t, h, highpass_hz);
 }
 
-std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const std::function<double(double)>& distance,
-                                                const TimeRoadOptions& o, nlohmann::json description) {
+std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log,
+                                                const std::function<double(double)>& distance,
+                                                const TimeRoadOptions& o,
+                                                nlohmann::json description) {
   DTWIN_CHECK(o.dx_m > 0 && o.highpass_hz > 0, "roadFromTimeLog: options");
   std::vector<double> left = log.left, right = log.right;
   const bool velocity = log.form == TimeRoadLog::Form::Velocity;
-  std::vector<double> rate_l, rate_r;  // a velocity log's own dh/dt (its drift removed as the heights' is)
+  std::vector<double> rate_l,
+      rate_r;  // a velocity log's own dh/dt (its drift removed as the heights' is)
   if (velocity) {
     left = roadHeightFromVelocity(log.t_s, log.left, o.highpass_hz);
     right = log.identical_tracks ? left : roadHeightFromVelocity(log.t_s, log.right, o.highpass_hz);
@@ -137,9 +154,11 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const st
   for (const auto* h : {&left, &right})
     for (std::size_t k = 0; k < h->size(); ++k)
       if (!(std::abs((*h)[k]) <= 10.0))
-        throw InputError(log.name, std::string("the road height at time_s = ") + formatNumber(log.t_s[k]) + " is " + formatNumber((*h)[k]) +
-                                       " m, beyond the 10 m a road can rise or fall here: check the unit" +
-                                       (log.form == TimeRoadLog::Form::Velocity ? " and highpass_hz" : ""));
+        throw InputError(log.name,
+                         std::string("the road height at time_s = ") + formatNumber(log.t_s[k]) +
+                             " is " + formatNumber((*h)[k]) +
+                             " m, beyond the 10 m a road can rise or fall here: check the unit" +
+                             (log.form == TimeRoadLog::Form::Velocity ? " and highpass_hz" : ""));
   std::vector<double> x, hl, hr, kept;
   for (std::size_t k = 0; k < log.t_s.size(); ++k) {
     const double d = distance(log.t_s[k]);
@@ -150,15 +169,19 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const st
     kept.push_back(static_cast<double>(k));
   }
   if (x.size() < 2)
-    throw InputError(log.name, "the vehicle moves past fewer than two of its samples: no profile against distance");
+    throw InputError(
+        log.name,
+        "the vehicle moves past fewer than two of its samples: no profile against distance");
   const double x_lo = std::min(o.x_from_m, x.front()), x_hi = x.back();
   const double points = (x_hi - x_lo) / o.dx_m + 1;
   if (!(points <= 1e7))
-    throw InputError(log.name, "the profile would need " + formatNumber(points, 3) + " grid points of dx_m = " + formatNumber(o.dx_m) +
+    throw InputError(log.name, "the profile would need " + formatNumber(points, 3) +
+                                   " grid points of dx_m = " + formatNumber(o.dx_m) +
                                    " m (at most 1e7): raise dx_m");
   // Slopes at the kept samples: a velocity log's own, dh/dx = (dh/dt) / (dx/dt), where the
   // vehicle moves at more than 0.5 m/s (at 100 Hz the profile then holds a 10 Hz content of the
-  // signal to 0.6 %, a 20 Hz one to 4 %); else, and for a height log, three-point (parabola) slopes.
+  // signal to 0.6 %, a 20 Hz one to 4 %); else, and for a height log, three-point (parabola)
+  // slopes.
   auto slopes = [&](const std::vector<double>& h, const std::vector<double>& rate) {
     std::vector<double> m = threePointSlopes(x, h);
     if (rate.empty()) return m;
@@ -187,11 +210,13 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log, const st
     }
     while (x[j + 1] < xi) ++j;
     const double hseg = x[j + 1] - x[j], u = (xi - x[j]) / hseg;
-    const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+    const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u),
+                 h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
     gl[i] = h00 * hl[j] + h10 * hseg * ml[j] + h01 * hl[j + 1] + h11 * hseg * ml[j + 1];
     gr[i] = h00 * hr[j] + h10 * hseg * mr[j] + h01 * hr[j + 1] + h11 * hseg * mr[j + 1];
   }
-  return std::make_shared<GridRoad>(x_lo, o.dx_m, std::move(gl), std::move(gr), std::move(description));
+  return std::make_shared<GridRoad>(x_lo, o.dx_m, std::move(gl), std::move(gr),
+                                    std::move(description));
 }
 
 }  // namespace dtwin

@@ -63,8 +63,10 @@ enum : std::size_t { Cz, C, R0, QFZ2, QFZ3, QV2, QFCX, QFCY, PPFZ1, FZ0, V0, P, 
 
 Pac2002Tire::Pac2002Tire() {
   specs_.resize(pac::N);
-  specs_[pac::Cz] = spec("stiffness", "N/m", "vertical stiffness Cz at the nominal load", 0, kInf, true, false);
-  specs_[pac::C] = spec("damping", "N*s/m", "VERTICAL_DAMPING on the deflection rate", 0, kInf, true);
+  specs_[pac::Cz] =
+      spec("stiffness", "N/m", "vertical stiffness Cz at the nominal load", 0, kInf, true, false);
+  specs_[pac::C] =
+      spec("damping", "N*s/m", "VERTICAL_DAMPING on the deflection rate", 0, kInf, true);
   specs_[pac::R0] = spec("unloaded_radius_m", "m", "UNLOADED_RADIUS R0", 0, kInf, true, false);
   specs_[pac::QFZ2] = spec("qfz2", "1", "QFZ2 quadratic stiffness coefficient", 0, kInf);
   specs_[pac::QFZ3] = spec("qfz3", "1", "QFZ3 camber dependency of stiffness", -kInf, kInf);
@@ -74,7 +76,8 @@ Pac2002Tire::Pac2002Tire() {
   specs_[pac::PPFZ1] = spec("ppfz1", "1", "PPFZ1 pressure effect on stiffness", -kInf, kInf);
   specs_[pac::FZ0] = spec("fnomin_N", "N", "FNOMIN nominal load Fz0", 0, kInf, false, false);
   specs_[pac::V0] = spec("longvl_mps", "m/s", "LONGVL measurement speed V0", 0, kInf, false, false);
-  specs_[pac::P] = spec("inflation_pressure_Pa", "Pa", "INFLPRES inflation pressure p", 0, kInf, false, false);
+  specs_[pac::P] =
+      spec("inflation_pressure_Pa", "Pa", "INFLPRES inflation pressure p", 0, kInf, false, false);
   specs_[pac::P0] = spec("nompres_Pa", "Pa", "NOMPRES nominal pressure p0", 0, kInf, false, false);
 }
 
@@ -89,7 +92,8 @@ std::string Pac2002Tire::checkCombination(ParamValues p) const {
   const double a = p[pac::Cz] * p[pac::R0] / p[pac::FZ0];
   if (a * a <= 4.0 * p[pac::QFZ2])
     return "PAC2002 needs (stiffness*R0/Fz0)^2 > 4*qfz2 so that qFz1 is real (stiffness " +
-           std::to_string(p[pac::Cz]) + " N/m is too low for qfz2 " + std::to_string(p[pac::QFZ2]) + ")";
+           std::to_string(p[pac::Cz]) + " N/m is too low for qfz2 " + std::to_string(p[pac::QFZ2]) +
+           ")";
   return {};
 }
 
@@ -121,9 +125,14 @@ double Pac2002Tire::operatingDeflection(ParamValues p) const {
 
 // ---------------------------------------------------------------- the hub's own motion
 HubInput::HubInput() {
-  specs_ = {spec("link_stiffness", "N/m", "stiffness k_l of the link that holds the wheel centre to the signal", 0.0, kInf, false, false),
-            spec("link_damping", "N*s/m", "damping c_l of that link, on the signal's rate minus the hub's", 0.0, kInf),
-            spec("unloaded_radius_m", "m", "the wheel centre's height above the signal at zero load", 0.0, kInf, true, false)};
+  specs_ = {
+      spec("link_stiffness", "N/m",
+           "stiffness k_l of the link that holds the wheel centre to the signal", 0.0, kInf, false,
+           false),
+      spec("link_damping", "N*s/m",
+           "damping c_l of that link, on the signal's rate minus the hub's", 0.0, kInf),
+      spec("unloaded_radius_m", "m", "the wheel centre's height above the signal at zero load", 0.0,
+           kInf, true, false)};
   specs_[0].default_value = 1e8;
   specs_[1].default_value = 1e5;
 }
@@ -137,11 +146,17 @@ double HubInput::calcNormalForce(const TireState& s, ParamValues p) const {
 // class and one line here (docs/extending.md).
 const Registry<Factory<TireLaw>>& tireLawRegistry() {
   static const Registry<Factory<TireLaw>> r(
-      "tire option", {
-                         lawEntry<FialaTire, TireLaw>("Fiala's vertical law: linear stiffness on the deflection, contact damping (paper eq. 2)"),
-                         lawEntry<Pac2002Tire, TireLaw>("PAC2002's vertical law (MFeval): quadratic in the deflection, speed, pressure and camber terms (paper eq. 3)"),
-                         lawEntry<HubInput, TireLaw>("the road signal is the wheel centre's own motion (a hub-motion estimate): the wheel follows it through a stiff two-sided link, with no tire compliance and no lift-off"),
-                     });
+      "tire option",
+      {
+          lawEntry<FialaTire, TireLaw>("Fiala's vertical law: linear stiffness on the deflection, "
+                                       "contact damping (paper eq. 2)"),
+          lawEntry<Pac2002Tire, TireLaw>(
+              "PAC2002's vertical law (MFeval): quadratic in the deflection, speed, pressure and "
+              "camber terms (paper eq. 3)"),
+          lawEntry<HubInput, TireLaw>(
+              "the road signal is the wheel centre's own motion (a hub-motion estimate): the wheel "
+              "follows it through a stiff two-sided link, with no tire compliance and no lift-off"),
+      });
   return r;
 }
 

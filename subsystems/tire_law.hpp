@@ -24,23 +24,25 @@ namespace dtwin {
 
 /// Inputs of a vertical tire law at one instant.
 struct TireState {
-  double deflection_m = 0.0;         ///< rho_z, positive in contact
+  double deflection_m = 0.0;  ///< rho_z, positive in contact
   /// Rate the damping term acts on. The twin passes -dz_hub/dt (paper eq. 2): see
   /// docs/model.md, "tire damping".
   double deflection_rate_mps = 0.0;
-  double wheel_speed_radps = 0.0;    ///< |Omega|
-  double forward_speed_mps = 0.0;    ///< vehicle forward speed v (read by tire-force effects, not by the laws)
-  double fx_N = 0.0;                 ///< longitudinal force (PAC2002 load-response term)
-  double fy_N = 0.0;                 ///< lateral force
-  double camber_rad = 0.0;           ///< inclination angle gamma
+  double wheel_speed_radps = 0.0;  ///< |Omega|
+  double forward_speed_mps =
+      0.0;            ///< vehicle forward speed v (read by tire-force effects, not by the laws)
+  double fx_N = 0.0;  ///< longitudinal force (PAC2002 load-response term)
+  double fy_N = 0.0;  ///< lateral force
+  double camber_rad = 0.0;  ///< inclination angle gamma
   // Read by effects only (the laws ignore them):
-  double road_height_m = 0.0;        ///< road height under the wheel (before tire-input effects)
-  double time_s = 0.0;               ///< simulation time
-  bool front = true;                 ///< on the front axle
-  double normal_force_N = 0.0;       ///< the law's normal force (set before TireLoad effects run)
+  double road_height_m = 0.0;   ///< road height under the wheel (before tire-input effects)
+  double time_s = 0.0;          ///< simulation time
+  bool front = true;            ///< on the front axle
+  double normal_force_N = 0.0;  ///< the law's normal force (set before TireLoad effects run)
   /// The vertical velocity of the road under the wheel, dh/dt = slope x (forward speed of the
   /// contact point) [m/s]: the full deflection rate is road_rate_mps + deflection_rate_mps. Read by
-  /// laws that follow the road signal (HubInput); the tire laws ignore it (see deflection_rate_mps).
+  /// laws that follow the road signal (HubInput); the tire laws ignore it (see
+  /// deflection_rate_mps).
   double road_rate_mps = 0.0;
 };
 
@@ -49,7 +51,8 @@ inline constexpr double kContactDampingRamp_m = 1e-3;
 
 /// The damping force b d(rho_z)/dt with its touch-down ramp: b rate min(1, rho_z / ramp).
 inline double contactDampingForce(double b, const TireState& s) {
-  const double ramp = s.deflection_m < kContactDampingRamp_m ? s.deflection_m / kContactDampingRamp_m : 1.0;
+  const double ramp =
+      s.deflection_m < kContactDampingRamp_m ? s.deflection_m / kContactDampingRamp_m : 1.0;
   return b * s.deflection_rate_mps * ramp;
 }
 
@@ -76,7 +79,9 @@ class TireLaw {
   /// left out of its assemblies).
   virtual bool followsSignal() const { return false; }
   /// Unloaded radius R0 [m] (every law has one).
-  double unloadedRadius(ParamValues p) const { return p[parameterIndex(parameters(), "unloaded_radius_m")]; }
+  double unloadedRadius(ParamValues p) const {
+    return p[parameterIndex(parameters(), "unloaded_radius_m")];
+  }
 
   /// Static deflection [m] under `load_N` at zero speed (solved numerically, any monotone law).
   double calcStaticDeflection(double load_N, ParamValues p) const;
@@ -85,8 +90,9 @@ class TireLaw {
 /// Fiala ("Fiala Wheel 2DOF", vertical motion mapped as linear stiffness and damping), paper eq. 2:
 ///   Fz = k rho_z + b d(rho_z)/dt,  clamped >= 0 (the damping with its touch-down ramp).
 /// The paper writes "- b z'" with z the hub height; on a flat road d(rho_z)/dt = -z'. The twin
-/// passes -z' as the rate (TireState::deflection_rate_mps). Parameters are in N/m and N s/m and share the calibrated bounds of PAC2002
-/// (docs/method.md §1 explains why the paper's Simulink bounds are not used).
+/// passes -z' as the rate (TireState::deflection_rate_mps). Parameters are in N/m and N s/m and
+/// share the calibrated bounds of PAC2002 (docs/method.md §1 explains why the paper's Simulink
+/// bounds are not used).
 class FialaTire final : public TireLaw {
  public:
   FialaTire();
@@ -145,7 +151,8 @@ class HubInput final : public TireLaw {
   std::vector<ParameterSpec> specs_;
 };
 
-/// Every tire law, in the order `twin list` shows them (docs: the "tire law" table of docs/model.md).
+/// Every tire law, in the order `twin list` shows them (docs: the "tire law" table of
+/// docs/model.md).
 const Registry<Factory<TireLaw>>& tireLawRegistry();
 /// Factory keyed by study-file option name. Throws InputError listing the known names.
 std::unique_ptr<TireLaw> makeTireLaw(const std::string& name, const std::string& where);

@@ -5,8 +5,8 @@
 // Four elements, each with the state variables its expression may use (userEffectVariables; the
 // table in docs/extending.md, "Effects written as expressions"):
 //   strut      a force along every main suspension strut, the built-in strut effects' sign
-//              (positive pushes the wheel down and the chassis up): q, v, dq, dv, k, c, t, u, front,
-//              and the absolute motion at the corner vb (body), vw (wheel), vr (road signal)
+//              (positive pushes the wheel down and the chassis up): q, v, dq, dv, k, c, t, u,
+//              front, and the absolute motion at the corner vb (body), vw (wheel), vr (road signal)
 //   tire       a vertical force added to the tire law's at every wheel in contact (the sum is kept
 //              >= 0): qt, vt, fz, zr, t, u, front
 //   axle_roll  a force pair on each axle's main struts, F on the left and -F on the right:
@@ -33,17 +33,18 @@ namespace dtwin {
 
 struct UserEffectParameter {
   std::string name, unit;
-  double value = 0.0;                 ///< the off value
-  double lower = 0.0, upper = 0.0;    ///< the prior range (and the valid range), lower < upper
-  bool shape = false;                 ///< held at its value while a diagnosis calibrates the others
+  double value = 0.0;               ///< the off value
+  double lower = 0.0, upper = 0.0;  ///< the prior range (and the valid range), lower < upper
+  bool shape = false;               ///< held at its value while a diagnosis calibrates the others
 };
 
 struct UserEffectSpec {
-  std::string name;      ///< the effect's name (a study's [user_effects.NAME])
-  std::string element;   ///< where the force acts: "strut", "tire", "axle_roll" or "chassis"
-  std::string force;     ///< the expression
+  std::string name;     ///< the effect's name (a study's [user_effects.NAME])
+  std::string element;  ///< where the force acts: "strut", "tire", "axle_roll" or "chassis"
+  std::string force;    ///< the expression
   std::vector<UserEffectParameter> parameters;
-  std::string where;     ///< names the definition in errors, e.g. "study.toml:12: user_effects.soft_stop"
+  std::string
+      where;  ///< names the definition in errors, e.g. "study.toml:12: user_effects.soft_stop"
   /// Whether makeUserEffect checks the units (off only for the diagnosis's own library terms,
   /// whose coefficient's unit follows from the term).
   bool check_units = true;

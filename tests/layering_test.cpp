@@ -3,8 +3,8 @@
 // include fails the suite instead of waiting for a reviewer.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -26,18 +26,27 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"calibration", {"common", "subsystems", "twin", "io", "calibration"}},
       {"classification", {"common", "subsystems", "twin", "io", "calibration", "classification"}},
       {"diagnosis", {"common", "subsystems", "twin", "io", "calibration", "diagnosis"}},
-      {"study", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study"}},
-      {"report", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report"}},
-      {"cli", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report", "cli"}},
+      {"study",
+       {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis",
+        "study"}},
+      {"report",
+       {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study",
+        "report"}},
+      {"cli",
+       {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study",
+        "report", "cli"}},
       // The Python module: at the level of cli/, beside it (neither includes the other).
-      {"python", {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study", "report", "python"}},
+      {"python",
+       {"common", "subsystems", "twin", "io", "calibration", "classification", "diagnosis", "study",
+        "report", "python"}},
   };
   return a;
 }
 
 const std::set<std::string>& projectFolders() {
-  static const std::set<std::string> f = {"common",    "subsystems", "twin",  "io",     "calibration",
-                                          "classification", "diagnosis",  "study", "report", "cli", "python"};
+  static const std::set<std::string> f = {
+      "common",    "subsystems", "twin",   "io",  "calibration", "classification",
+      "diagnosis", "study",      "report", "cli", "python"};
   return f;
 }
 
@@ -75,8 +84,9 @@ TEST(Layering, NoLibraryIncludesAFolderAboveIt) {
         if (!std::regex_search(line, m, inc)) continue;
         const std::string target = m[1];
         if (!projectFolders().count(target)) continue;  // e.g. "dtwin/version.hpp" (generated)
-        EXPECT_TRUE(ok.count(target)) << fs::relative(e.path(), root).string() << ":" << n << " includes " << target
-                                      << "/, which is not beneath " << folder << "/";
+        EXPECT_TRUE(ok.count(target))
+            << fs::relative(e.path(), root).string() << ":" << n << " includes " << target
+            << "/, which is not beneath " << folder << "/";
       }
     }
   }
@@ -105,11 +115,13 @@ std::vector<fs::path> sourceFiles(const fs::path& root, bool with_tests) {
 // new folder fails here until it is placed.
 TEST(Layering, EveryFolderWithSourcesIsPlaced) {
   const fs::path root(DTWIN_SOURCE_DIR);
-  const std::set<std::string> not_code = {"build", "data", "docs", "scripts", "cmake", "out", "third_party", "tests"};
+  const std::set<std::string> not_code = {"build", "data", "docs",        "scripts",
+                                          "cmake", "out",  "third_party", "tests"};
   for (const auto& e : fs::directory_iterator(root)) {
     if (!e.is_directory()) continue;
     const std::string name = e.path().filename().string();
-    if (name.empty() || name[0] == '.' || not_code.count(name) || name.rfind("build", 0) == 0) continue;
+    if (name.empty() || name[0] == '.' || not_code.count(name) || name.rfind("build", 0) == 0)
+      continue;
     bool has_code = false;
     for (const auto& f : fs::recursive_directory_iterator(e.path())) {
       const auto ext = f.path().extension().string();
@@ -119,7 +131,8 @@ TEST(Layering, EveryFolderWithSourcesIsPlaced) {
       }
     }
     if (has_code) {
-      EXPECT_TRUE(allowed().count(name)) << name << "/ holds C++ sources but has no place in the layering";
+      EXPECT_TRUE(allowed().count(name))
+          << name << "/ holds C++ sources but has no place in the layering";
     }
   }
   for (const auto& f : projectFolders()) EXPECT_TRUE(allowed().count(f)) << f;
@@ -138,7 +151,8 @@ TEST(Layering, IoRunsNothing) {
     const std::string self = "io/" + e.path().filename().string();
     includesOf(root, self, seen);
     for (const auto& s : seen)
-      for (const char* banned : {"twin/simulator.hpp", "twin/rosenbrock.hpp", "common/distributed.hpp", "common/parallel.hpp"})
+      for (const char* banned : {"twin/simulator.hpp", "twin/rosenbrock.hpp",
+                                 "common/distributed.hpp", "common/parallel.hpp"})
         EXPECT_NE(s, banned) << self << " reaches " << banned;
   }
   EXPECT_GT(files, 8);
@@ -155,7 +169,8 @@ TEST(Layering, NoLibraryReadsAProcessWideInstance) {
     std::ifstream in(p);
     std::string line;
     for (int n = 1; std::getline(in, line); ++n)
-      EXPECT_FALSE(std::regex_search(line, global)) << rel << ":" << n << " reads Distributed::instance()";
+      EXPECT_FALSE(std::regex_search(line, global))
+          << rel << ":" << n << " reads Distributed::instance()";
   }
 }
 
@@ -167,10 +182,10 @@ TEST(Layering, NoSourceFileIsOverEightHundredLines) {
     std::ifstream in(p);
     std::size_t lines = 0;
     for (std::string line; std::getline(in, line);) ++lines;
-    EXPECT_LE(lines, 800u) << fs::relative(p, root).string() << " has " << lines << " lines; split it by responsibility";
+    EXPECT_LE(lines, 800u) << fs::relative(p, root).string() << " has " << lines
+                           << " lines; split it by responsibility";
   }
 }
-
 
 // Headers stay short (an interface, not an implementation: at most 500 lines), open with
 // `#pragma once`, and every file names a project header by its folder in quotes
@@ -198,7 +213,8 @@ TEST(Layering, HeadersAreShortGuardedAndIncludesNameTheirFolder) {
             << rel << ":" << lines << ": #include \"" << inc << "\" does not name a project folder";
       }
       if (std::regex_search(line, m, angled)) {
-        EXPECT_FALSE(folders.count(m[1])) << rel << ":" << lines << ": a project header in angle brackets";
+        EXPECT_FALSE(folders.count(m[1]))
+            << rel << ":" << lines << ": a project header in angle brackets";
       }
     }
     if (p.extension() != ".hpp") continue;
@@ -212,13 +228,15 @@ TEST(Layering, HeadersAreShortGuardedAndIncludesNameTheirFolder) {
 // no twin/ or io/ header but the study's sizes.
 TEST(Layering, TheCalibrationsMathematicsDoesNotIncludeTheSimulator) {
   const fs::path root(DTWIN_SOURCE_DIR);
-  for (const char* h : {"common.hpp", "gibbs.hpp", "region.hpp", "optimize.hpp", "profile.hpp", "summary.hpp", "adaptive_design.hpp",
-                        "feasible_box.hpp", "lhs.hpp", "subspace_lm.hpp", "design_journal.hpp"}) {
+  for (const char* h : {"common.hpp", "gibbs.hpp", "region.hpp", "optimize.hpp", "profile.hpp",
+                        "summary.hpp", "adaptive_design.hpp", "feasible_box.hpp", "lhs.hpp",
+                        "subspace_lm.hpp", "design_journal.hpp"}) {
     std::set<std::string> seen;
     includesOf(root, std::string("calibration/") + h, seen);
     ASSERT_TRUE(fs::exists(root / "calibration" / h)) << h;
     for (const auto& s : seen)
-      EXPECT_TRUE(s.rfind("twin/", 0) != 0 || s == "io/study_sizes.hpp") << "calibration/" << h << " reaches " << s;
+      EXPECT_TRUE(s.rfind("twin/", 0) != 0 || s == "io/study_sizes.hpp")
+          << "calibration/" << h << " reaches " << s;
   }
 }
 
@@ -227,16 +245,19 @@ TEST(Layering, TheCalibrationsMathematicsDoesNotIncludeTheSimulator) {
 // use cases (generate, coverage, synthesize, calibrate, diagnose, the whole study) are study/'s.
 TEST(Layering, EachConcernHasOneHome) {
   const fs::path root(DTWIN_SOURCE_DIR);
-  for (const char* m : {"study", "study_sizes", "measurement", "log_import", "provenance", "work"}) {
+  for (const char* m :
+       {"study", "study_sizes", "measurement", "log_import", "provenance", "work"}) {
     EXPECT_TRUE(fs::exists(root / "io" / (std::string(m) + ".hpp"))) << m;
     EXPECT_FALSE(fs::exists(root / "twin" / (std::string(m) + ".hpp"))) << m;
   }
-  for (const char* m : {"generate", "coverage", "synthesize", "calibrate", "diagnose", "run", "bench", "hand_ode"}) {
+  for (const char* m : {"generate", "coverage", "synthesize", "calibrate", "diagnose", "run",
+                        "bench", "hand_ode"}) {
     EXPECT_TRUE(fs::exists(root / "study" / (std::string(m) + ".hpp"))) << m;
     for (const char* below : {"twin", "io", "calibration", "classification", "diagnosis"})
       if (std::string(m) != "calibrate" && std::string(m) != "diagnose") {
         EXPECT_FALSE(fs::exists(root / below / (std::string(m) + ".hpp"))) << below << "/" << m;
       }
   }
-  for (const char* m : {"distributed", "parallel", "run_error"}) EXPECT_TRUE(fs::exists(root / "common" / (std::string(m) + ".hpp"))) << m;
+  for (const char* m : {"distributed", "parallel", "run_error"})
+    EXPECT_TRUE(fs::exists(root / "common" / (std::string(m) + ".hpp"))) << m;
 }

@@ -15,7 +15,9 @@ inline const dtwin::Study& shippedStudy(const std::string& name) {
   static std::map<std::string, std::unique_ptr<const dtwin::Study>> loaded;
   std::lock_guard<std::mutex> lock(m);
   auto& s = loaded[name];
-  if (!s) s = std::make_unique<const dtwin::Study>(dtwin::loadStudy(std::string(DTWIN_SOURCE_DIR) + "/data/studies/" + name + ".toml"));
+  if (!s)
+    s = std::make_unique<const dtwin::Study>(
+        dtwin::loadStudy(std::string(DTWIN_SOURCE_DIR) + "/data/studies/" + name + ".toml"));
   return *s;
 }
 

@@ -1,8 +1,8 @@
 // Private to twin/ (not installed): the Simbody force elements of the vehicle (tires, struts, axle
 // couplings, a prescribed hub's reactions, chassis forces, gravity with the frame's acceleration);
 // the per-run data they read are twin/road_contact.hpp's (namespace dtwin::sim, with the
-// simulator's parts: vehicle_system.hpp builds the system from them). Included by those parts alone, which are kept out of the unity batches (CMakeLists.txt):
-// SimTK is open.
+// simulator's parts: vehicle_system.hpp builds the system from them). Included by those parts
+// alone, which are kept out of the unity batches (CMakeLists.txt): SimTK is open.
 #pragma once
 
 #include <algorithm>
@@ -69,7 +69,8 @@ struct StrutGeometry {
     h.q = (h.path.z - h.p[2]) / h.z[2];
     return h;
   }
-  Kin prescribedKin(const State& s, Vec3* station_velocity = nullptr, TireCorner::HubPath* path = nullptr) const {
+  Kin prescribedKin(const State& s, Vec3* station_velocity = nullptr,
+                    TireCorner::HubPath* path = nullptr) const {
     const Vec3 v = upper.findStationVelocityInGround(s, st_upper);
     const HubAt h = hubAt(s, v[0]);
     const Vec3 zdot = upper.getBodyAngularVelocity(s) % Vec3(h.z);
@@ -82,10 +83,13 @@ struct StrutGeometry {
     if (is_prescribed) return prescribedKin(s);
     if (is_axle_seat) {
       const double phi = s.getQ()[qr];
-      return {s.getQ()[qh] + seat_y * std::sin(phi), s.getU()[uh] + seat_y * std::cos(phi) * s.getU()[ur]};
+      return {s.getQ()[qh] + seat_y * std::sin(phi),
+              s.getU()[uh] + seat_y * std::cos(phi) * s.getU()[ur]};
     }
-    const Vec3 pu = upper.findStationLocationInGround(s, st_upper), pl = lower.findStationLocationInGround(s, st_lower);
-    const Vec3 vu = upper.findStationVelocityInGround(s, st_upper), vl = lower.findStationVelocityInGround(s, st_lower);
+    const Vec3 pu = upper.findStationLocationInGround(s, st_upper),
+               pl = lower.findStationLocationInGround(s, st_lower);
+    const Vec3 vu = upper.findStationVelocityInGround(s, st_upper),
+               vl = lower.findStationVelocityInGround(s, st_lower);
     const UnitVec3 z = upper.getBodyRotation(s).z();
     const Vec3 w = upper.getBodyAngularVelocity(s);
     const Vec3 d = pl - pu;
@@ -99,7 +103,8 @@ struct StrutGeometry {
       const Kin k = prescribedKin(s, &v, &path);
       const Vec3 z(upper.getBodyRotation(s).z()), w = upper.getBodyAngularVelocity(s);
       const Vec3 zdot = w % z, zddot = upper.getBodyAngularAcceleration(s) % z + w % zdot;
-      const double hdd = tire->hubAccel(*ctx, s.getTime(), upper.findStationLocationInGround(s, st_upper)[0], v[0]);
+      const double hdd = tire->hubAccel(*ctx, s.getTime(),
+                                        upper.findStationLocationInGround(s, st_upper)[0], v[0]);
       const double pdd = upper.findStationAccelerationInGround(s, st_upper)[2];
       return (hdd - pdd - 2 * k.qd * zdot[2] - k.q * zddot[2]) / z[2];
     }
@@ -107,12 +112,14 @@ struct StrutGeometry {
       const double phi = s.getQ()[qr], w = s.getU()[ur];
       return s.getUDot()[uh] + seat_y * (std::cos(phi) * s.getUDot()[ur] - std::sin(phi) * w * w);
     }
-    const Vec3 au = upper.findStationAccelerationInGround(s, st_upper), al = lower.findStationAccelerationInGround(s, st_lower);
+    const Vec3 au = upper.findStationAccelerationInGround(s, st_upper),
+               al = lower.findStationAccelerationInGround(s, st_lower);
     return ~(al - au) * Vec3(upper.getBodyRotation(s).z());
   }
   /// Applies the strut force F (positive pushes the ends apart along upper's z). `k`: the strut's
   /// kinematics at `s` where the caller has them (a prescribed hub's compression places the force).
-  void apply(const State& s, double F, Vector_<SpatialVec>& bodyForces, Vector& mobilityForces, const Kin* k = nullptr) const {
+  void apply(const State& s, double F, Vector_<SpatialVec>& bodyForces, Vector& mobilityForces,
+             const Kin* k = nullptr) const {
     if (is_slider) {
       mobilityForces[ui] -= F;  // compression positive: the force pushes the slider back down
       return;
@@ -123,7 +130,8 @@ struct StrutGeometry {
       // corner is vertical, F / z_z at the hub: the strut's push along z plus the slide's
       // reaction to the push's tilt (HubReactionElement adds the fore-aft reactions).
       const double q = k ? k->q : hubAt(s).q;
-      upper.applyForceToBodyPoint(s, st_upper + Vec3(0, 0, q), Vec3(0, 0, F / upper.getBodyRotation(s).z()[2]), bodyForces);
+      upper.applyForceToBodyPoint(s, st_upper + Vec3(0, 0, q),
+                                  Vec3(0, 0, F / upper.getBodyRotation(s).z()[2]), bodyForces);
       return;
     }
     if (is_axle_seat) {
@@ -136,7 +144,8 @@ struct StrutGeometry {
     lower.applyForceToBodyPoint(s, st_lower, -F * z, bodyForces);
   }
   /// Call after realizeTopology for solid-axle spring seats (`slider` carries `pin`).
-  void bindAxleSeat(const State& s, const MobilizedBody& slider, const MobilizedBody& pin, double y) {
+  void bindAxleSeat(const State& s, const MobilizedBody& slider, const MobilizedBody& pin,
+                    double y) {
     is_axle_seat = true;
     qh = slider.getFirstQIndex(s);
     uh = slider.getFirstUIndex(s);
@@ -158,8 +167,10 @@ namespace {
 
 class TireElement : public Force::Custom::Implementation {
  public:
-  TireElement(const RunContext* ctx, TireCorner tc, MobilizedBody wheel) : ctx_(ctx), tc_(std::move(tc)), wheel_(wheel) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+  TireElement(const RunContext* ctx, TireCorner tc, MobilizedBody wheel)
+      : ctx_(ctx), tc_(std::move(tc)), wheel_(wheel) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector&) const override {
     const Vec3 p = wheel_.getBodyOriginLocation(s), v = wheel_.getBodyOriginVelocity(s);
     const double t = s.getTime();
     const TireEval e = tc_.eval(*ctx_, t, p[0], v[0], p[2], v[2]);
@@ -180,9 +191,18 @@ class TireElement : public Force::Custom::Implementation {
 class StrutElement : public Force::Custom::Implementation {
  public:
   /// `filter_states`: allocate one auxiliary state (a Z of `sub`) per installed StrutFilter effect.
-  StrutElement(const RunContext* ctx, const Model* m, const StrutLaw* law, StrutGeometry g, std::size_t p0, int preload_slot,
-               double preload, bool with_effects, bool filter_states = false, SubsystemIndex sub = SubsystemIndex())
-      : ctx_(ctx), m_(m), law_(law), g_(g), p0_(p0), preload_slot_(preload_slot), preload_(preload), effects_(with_effects), sub_(sub) {
+  StrutElement(const RunContext* ctx, const Model* m, const StrutLaw* law, StrutGeometry g,
+               std::size_t p0, int preload_slot, double preload, bool with_effects,
+               bool filter_states = false, SubsystemIndex sub = SubsystemIndex())
+      : ctx_(ctx),
+        m_(m),
+        law_(law),
+        g_(g),
+        p0_(p0),
+        preload_slot_(preload_slot),
+        preload_(preload),
+        effects_(with_effects),
+        sub_(sub) {
     if (with_effects && filter_states)
       for (std::size_t i = 0; i < m->effects().size(); ++i)
         if (m->effects()[i]->kind() == EffectKind::StrutFilter) filter_effects_.push_back(i);
@@ -193,7 +213,8 @@ class StrutElement : public Force::Custom::Implementation {
         motion_ = motion_ || (strut && e->needsMotion());
       }
   }
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector& mobilityForces) const override {
     StrutGeometry::Kin k;
     const double F = totalForce(s, &k);
     g_.apply(s, F, bodyForces, mobilityForces, &k);
@@ -216,7 +237,8 @@ class StrutElement : public Force::Custom::Implementation {
   }
   void realizeTopology(State& s) const override {
     zi_.clear();
-    for (std::size_t j = 0; j < filter_effects_.size(); ++j) zi_.push_back(s.allocateZ(sub_, Vector(1, 0.0)));
+    for (std::size_t j = 0; j < filter_effects_.size(); ++j)
+      zi_.push_back(s.allocateZ(sub_, Vector(1, 0.0)));
   }
   /// The auxiliary states' derivatives (z = 0 at rest: the equilibrium start needs no setting).
   void realizeAcceleration(const State& s) const override {
@@ -233,9 +255,10 @@ class StrutElement : public Force::Custom::Implementation {
   /// Call before the system's topology is realized (it keeps the StrutFilter states of its own).
   void placeAt(int corner) {
     corner_ = corner;
-    filter_effects_.erase(std::remove_if(filter_effects_.begin(), filter_effects_.end(),
-                                         [&](std::size_t i) { return !m_->effectActsAt(i, corner); }),
-                          filter_effects_.end());
+    filter_effects_.erase(
+        std::remove_if(filter_effects_.begin(), filter_effects_.end(),
+                       [&](std::size_t i) { return !m_->effectActsAt(i, corner); }),
+        filter_effects_.end());
   }
   /// Binds slider struts to their state indices (after realizeTopology).
   void bind(const State& s) {
@@ -276,8 +299,8 @@ class StrutElement : public Force::Custom::Implementation {
       } else if (motion_) {
         ss.body_velocity_mps = g_.upper.findStationVelocityInGround(s, g_.st_upper)[2];
         ss.wheel_velocity_mps = g_.lower.findStationVelocityInGround(s, g_.st_lower)[2];
-        ss.road_velocity_mps =
-            tire_->roadRate(*ctx_, ss.time_s, wheel_.getBodyOriginLocation(s)[0], wheel_.getBodyOriginVelocity(s)[0]);
+        ss.road_velocity_mps = tire_->roadRate(*ctx_, ss.time_s, wheel_.getBodyOriginLocation(s)[0],
+                                               wheel_.getBodyOriginVelocity(s)[0]);
       }
     }
     return ss;
@@ -300,7 +323,8 @@ class StrutElement : public Force::Custom::Implementation {
       const auto& effs = m_->effects();
       for (std::size_t i = 0; i < effs.size(); ++i)
         if (effs[i]->kind() == EffectKind::Strut && m_->effectActsAt(i, corner_))
-          F += effs[i]->calcStrutForce(ss, ParamValues(p + m_->effectSlots()[i][0], effs[i]->parameters().size()));
+          F += effs[i]->calcStrutForce(
+              ss, ParamValues(p + m_->effectSlots()[i][0], effs[i]->parameters().size()));
     }
     return F;
   }
@@ -328,10 +352,11 @@ class StrutElement : public Force::Custom::Implementation {
 /// solid-axle spring seats). Installed only when such an effect is.
 class AxleCouplingElement : public Force::Custom::Implementation {
  public:
-  AxleCouplingElement(const RunContext* ctx, const Effect* eff, std::size_t slot, const StrutGeometry* left,
-                      const StrutGeometry* right, bool front)
+  AxleCouplingElement(const RunContext* ctx, const Effect* eff, std::size_t slot,
+                      const StrutGeometry* left, const StrutGeometry* right, bool front)
       : ctx_(ctx), eff_(eff), slot_(slot), left_(left), right_(right), front_(front) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector& mobilityForces) const override {
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector& mobilityForces) const override {
     StrutGeometry::Kin l, r;
     const double F = pairForce(s, &l, &r);
     if (F == 0.0) return;
@@ -340,7 +365,8 @@ class AxleCouplingElement : public Force::Custom::Implementation {
   }
   /// The force on the left strut (the right one takes its opposite), compression positive; `left`
   /// and `right` receive the struts' kinematics.
-  double pairForce(const State& s, StrutGeometry::Kin* left = nullptr, StrutGeometry::Kin* right = nullptr) const {
+  double pairForce(const State& s, StrutGeometry::Kin* left = nullptr,
+                   StrutGeometry::Kin* right = nullptr) const {
     const auto l = left_->kin(s), r = right_->kin(s);
     if (left) *left = l;
     if (right) *right = r;
@@ -372,16 +398,21 @@ class AxleCouplingElement : public Force::Custom::Implementation {
 /// against it. The wheel's weight and vertical inertia go to the road, which moves the hub.
 class HubReactionElement : public Force::Custom::Implementation {
  public:
-  HubReactionElement(const RunContext* ctx, const StrutGeometry* g, double wheel_mass) : ctx_(ctx), g_(g), m_w_(wheel_mass) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+  HubReactionElement(const RunContext* ctx, const StrutGeometry* g, double wheel_mass)
+      : ctx_(ctx), g_(g), m_w_(wheel_mass) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector&) const override {
     const double a = ctx_->speed.accel(s.getTime());
     const double fx = ctx_->traction_per_wheel_per_accel * a;
     const StrutGeometry::HubAt h = g_->hubAt(s);
     const double H = fx - m_w_ * a;
-    g_->upper.applyForceToBodyPoint(s, g_->st_upper + Vec3(0, 0, h.q), Vec3(H, 0, -H * h.z[0] / h.z[2]), bodyForces);
+    g_->upper.applyForceToBodyPoint(s, g_->st_upper + Vec3(0, 0, h.q),
+                                    Vec3(H, 0, -H * h.z[0] / h.z[2]), bodyForces);
     LawValueBuffer buf;
     const double R0 = g_->tire->values(*ctx_, buf)[g_->tire->r0];
-    g_->upper.applyBodyTorque(s, Vec3(0, -(R0 - ctx_->hub_rho[static_cast<std::size_t>(g_->tire->corner)]) * fx, 0), bodyForces);
+    g_->upper.applyBodyTorque(
+        s, Vec3(0, -(R0 - ctx_->hub_rho[static_cast<std::size_t>(g_->tire->corner)]) * fx, 0),
+        bodyForces);
   }
   Real calcPotentialEnergy(const State&) const override { return 0; }
 
@@ -397,9 +428,11 @@ class HubReactionElement : public Force::Custom::Implementation {
 class ChassisForceElement : public Force::Custom::Implementation {
  public:
   /// `heave`: the chassis's vertical Slider; `chassis`: its Universal (q0 roll, q1 pitch).
-  ChassisForceElement(const RunContext* ctx, const Effect* eff, std::size_t slot, MobilizedBody heave, MobilizedBody chassis)
+  ChassisForceElement(const RunContext* ctx, const Effect* eff, std::size_t slot,
+                      MobilizedBody heave, MobilizedBody chassis)
       : ctx_(ctx), eff_(eff), slot_(slot), heave_(heave), chassis_(chassis) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector&) const override {
     ChassisState c;
     c.heave_m = heave_.getOneQ(s, 0) - ctx_->heave0;
     c.heave_rate_mps = heave_.getOneU(s, 0);
@@ -407,7 +440,8 @@ class ChassisForceElement : public Force::Custom::Implementation {
     c.roll_rad = chassis_.getOneQ(s, 0) - ctx_->roll0;
     c.time_s = s.getTime();
     c.speed_mps = ctx_->speed.speed(c.time_s);
-    const double F = eff_->calcChassisForce(c, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
+    const double F =
+        eff_->calcChassisForce(c, ParamValues(ctx_->p + slot_, eff_->parameters().size()));
     if (F != 0.0) bodyForces[chassis_.getMobilizedBodyIndex()][1] += Vec3(0, 0, F);
   }
   Real calcPotentialEnergy(const State&) const override { return 0; }
@@ -424,10 +458,13 @@ class ChassisForceElement : public Force::Custom::Implementation {
 /// Simbody's UniformGravity, which walks every body's mass properties on each evaluation.
 class BodyLoadElement : public Force::Custom::Implementation {
  public:
-  BodyLoadElement(const RunContext* ctx, const std::vector<std::pair<MobilizedBody, double>>& bodies, double g) : ctx_(ctx), g_(g) {
+  BodyLoadElement(const RunContext* ctx,
+                  const std::vector<std::pair<MobilizedBody, double>>& bodies, double g)
+      : ctx_(ctx), g_(g) {
     for (auto& [b, m] : bodies) bodies_.push_back({b.getMobilizedBodyIndex(), m});
   }
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector&) const override {
     const double a = ctx_->speed.accel(s.getTime());
     for (auto& [i, m] : bodies_) bodyForces[i][1] += Vec3(-m * a, 0, -m * g_);
   }

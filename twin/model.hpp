@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "common/registry.hpp"
-#include "subsystems/sensor.hpp"
 #include "subsystems/effect.hpp"
 #include "subsystems/effect_catalog.hpp"
+#include "subsystems/sensor.hpp"
 #include "subsystems/strut_law.hpp"
 #include "subsystems/tire_law.hpp"
 #include "twin/parameters.hpp"
@@ -28,16 +28,16 @@ enum class SuspensionTopology { MacPherson, SolidAxle };
 
 /// One assembly: an option per subsystem plus optional effects.
 struct AssemblySpec {
-  std::string id;                                ///< "M1"
+  std::string id;                                            ///< "M1"
   std::vector<std::pair<std::string, std::string>> options;  ///< (subsystem, option), study order
-  std::vector<std::string> effects;              ///< installed effect names
+  std::vector<std::string> effects;                          ///< installed effect names
   /// Fixed vehicle values made run parameters (freeableVehicleParameters(); twin diagnose's
   /// "free:" candidates): a run whose value differs rebuilds its multibody system.
   std::vector<std::string> freed;
   // A per-corner or per-axle factor ("suspension.damping@rr", twin/parameters.hpp) in `freed` is
   // made a run parameter without a rebuild (calibrated or freed at any value, 1 included).
   std::string option(const std::string& subsystem) const;
-  std::string label() const;                     ///< "pac2002 + macpherson [+ bump_stop] [+ free wheel.mass_kg]"
+  std::string label() const;  ///< "pac2002 + macpherson [+ bump_stop] [+ free wheel.mass_kg]"
 };
 
 /// The fixed vehicle values that can be freed (AssemblySpec::freed): the masses, inertias, CG
@@ -56,10 +56,10 @@ const Registry<SuspensionTopology>& suspensionOptions();
 /// Forms add: corner c meets the signal with weight 1 + Σ λ_f (weight_f[c] − 1), read ahead by
 /// the wheelbase times Σ λ_f no_lag_f[c].
 struct RoadSignalForm {
-  const char* name;         ///< "road.fl_only"
-  const char* whose;        ///< "the front-left wheel's": the signal, in words
+  const char* name;   ///< "road.fl_only"
+  const char* whose;  ///< "the front-left wheel's": the signal, in words
   const char* description;
-  double weight[4];         ///< fl, fr, rl, rr at λ = 1
+  double weight[4];  ///< fl, fr, rl, rr at λ = 1
   double no_lag[4];
 };
 const std::vector<RoadSignalForm>& roadSignalForms();
@@ -68,13 +68,15 @@ const std::vector<RoadSignalForm>& roadSignalForms();
 const std::map<std::string, std::vector<std::string>>& knownSubsystems();
 
 /// A table declaring every parameter a vehicle can have: fixed data (masses, geometry), the
-/// parameters of every tire and suspension option, and every effect of `catalog` (pre-set to "off").
+/// parameters of every tire and suspension option, and every effect of `catalog` (pre-set to
+/// "off").
 ParameterTable declareVehicleParameters(const EffectCatalog& catalog);
 
 /// Declares the parameters of `effect` (installed as `name`) not yet in `table`, at their off
 /// values: an effect made on demand (a library term, subsystems/effect.hpp kTermPrefix) is not
 /// among declareVehicleParameters's.
-void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name, const std::string& where);
+void declareEffectParameters(ParameterTable& table, const Effect& effect, const std::string& name,
+                             const std::string& where);
 
 /// Fixed (topology-level) vehicle data, read once per model.
 struct VehicleData {
@@ -86,7 +88,8 @@ struct VehicleData {
   double wheelbase() const { return a + b; }
   /// Total mass including wheels (and axles for a solid axle).
   double total_mass(SuspensionTopology t) const {
-    return chassis_mass + 4 * wheel_mass + (t == SuspensionTopology::SolidAxle ? 2 * axle_mass : 0.0);
+    return chassis_mass + 4 * wheel_mass +
+           (t == SuspensionTopology::SolidAxle ? 2 * axle_mass : 0.0);
   }
 };
 
@@ -129,7 +132,8 @@ class Model {
   /// `where` names the source (study file) for error messages.
   /// `sensors` (the study's [sensors], validated there) add output channels to every run;
   /// `catalog` (the study's) makes the assembly's effects.
-  Model(AssemblySpec assembly, ParameterTable table, const std::string& where, std::vector<SensorSpec> sensors = {},
+  Model(AssemblySpec assembly, ParameterTable table, const std::string& where,
+        std::vector<SensorSpec> sensors = {},
         std::shared_ptr<const EffectCatalog> catalog = std::make_shared<const EffectCatalog>());
 
   const AssemblySpec& assembly() const { return assembly_; }
@@ -167,7 +171,9 @@ class Model {
   /// -1 when it acts at every corner.
   const std::vector<int>& effectCorners() const { return effect_corners_; }
   /// Whether effect i acts at `corner`.
-  bool effectActsAt(std::size_t i, int corner) const { return effect_corners_[i] < 0 || effect_corners_[i] == corner; }
+  bool effectActsAt(std::size_t i, int corner) const {
+    return effect_corners_[i] < 0 || effect_corners_[i] == corner;
+  }
 
   /// Per sensor (sensors() order): the run slots of its chassis position x, y, z (-1 for a wheel
   /// or travel sensor) and of its offset, the sensors' run parameters
@@ -198,7 +204,8 @@ class Model {
   const std::array<std::vector<ScaledParameter>, 4>& tireFactors() const { return tire_factors_; }
   /// A law's `n` parameters at p + p0 as one corner uses them: the run vector itself when
   /// `factors` is empty (nothing multiplied), else a copy in `buf` with each factor applied.
-  static ParamValues scaledLawValues(const double* p, std::size_t p0, std::size_t n, const std::vector<ScaledParameter>& factors,
+  static ParamValues scaledLawValues(const double* p, std::size_t p0, std::size_t n,
+                                     const std::vector<ScaledParameter>& factors,
                                      LawValueBuffer& buf);
 
   /// Run slots of the freed vehicle values (AssemblySpec::freed), in that order.

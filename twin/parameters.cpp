@@ -27,7 +27,8 @@ void ParameterTable::set(const std::string& name, double value, const std::strin
   if (it == entries_.end()) throw InputError(where, unknownRule(name));
   auto& e = it->second;
   if (unit && *unit != e.spec.unit)
-    throw InputError(where, "unit of '" + name + "' must be \"" + e.spec.unit + "\", got \"" + *unit + "\"");
+    throw InputError(
+        where, "unit of '" + name + "' must be \"" + e.spec.unit + "\", got \"" + *unit + "\"");
   const std::string rule = checkParameterValue(e.spec, value);
   if (!rule.empty()) throw InputError(where, name + " " + rule);
   e.value = value;
@@ -38,7 +39,8 @@ void ParameterTable::set(const std::string& name, double value, const std::strin
 std::string ParameterTable::unknownRule(const std::string& name) const {
   if (const std::string rule = cornerFactorRule(name); !rule.empty()) return rule;
   const std::string hint = closestName(name, names());
-  return "unknown parameter '" + name + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)");
+  return "unknown parameter '" + name + "'" +
+         (hint.empty() ? "" : " (did you mean '" + hint + "'?)");
 }
 
 double ParameterTable::value(const std::string& name) const { return at(name).value; }
@@ -58,7 +60,8 @@ std::vector<std::string> ParameterTable::missing() const {
 
 nlohmann::json ParameterTable::toJson() const {
   nlohmann::json j = nlohmann::json::object();
-  for (auto& [k, e] : entries_) j[k] = {{"value", e.value}, {"unit", e.spec.unit}, {"source", e.source}};
+  for (auto& [k, e] : entries_)
+    j[k] = {{"value", e.value}, {"unit", e.spec.unit}, {"source", e.source}};
   return j;
 }
 
@@ -74,7 +77,8 @@ std::optional<CornerFactor> parseCornerFactor(const std::string& name) {
   const auto at = name.find('@');
   if (at == std::string::npos) return std::nullopt;
   const std::string value = name.substr(0, at), place = name.substr(at + 1);
-  if (std::find(std::begin(kCornerFactorValues), std::end(kCornerFactorValues), value) == std::end(kCornerFactorValues))
+  if (std::find(std::begin(kCornerFactorValues), std::end(kCornerFactorValues), value) ==
+      std::end(kCornerFactorValues))
     return std::nullopt;
   const auto p = std::find(std::begin(kFactorPlaces), std::end(kFactorPlaces), place);
   if (p == std::end(kFactorPlaces)) return std::nullopt;
@@ -88,13 +92,15 @@ std::string cornerFactorName(const std::string& value, int place) {
 std::vector<std::string> cornerFactorNames() {
   std::vector<std::string> out;
   for (const char* v : kCornerFactorValues)
-    for (int p = 0; p < static_cast<int>(std::size(kFactorPlaces)); ++p) out.push_back(cornerFactorName(v, p));
+    for (int p = 0; p < static_cast<int>(std::size(kFactorPlaces)); ++p)
+      out.push_back(cornerFactorName(v, p));
   return out;
 }
 
 void declareCornerFactors(ParameterTable& table) {
-  static const char* const words[] = {"the front left corner", "the front right corner", "the rear left corner",
-                                      "the rear right corner", "both front corners", "both rear corners"};
+  static const char* const words[] = {"the front left corner", "the front right corner",
+                                      "the rear left corner",  "the rear right corner",
+                                      "both front corners",    "both rear corners"};
   for (const char* v : kCornerFactorValues)
     for (int p = 0; p < static_cast<int>(std::size(kFactorPlaces)); ++p) {
       ParameterSpec s;
@@ -115,11 +121,14 @@ std::string cornerFactorRule(const std::string& name) {
   const auto at = name.find('@');
   if (at == std::string::npos || parseCornerFactor(name)) return {};
   const std::string value = name.substr(0, at), place = name.substr(at + 1);
-  if (place.find('.') != std::string::npos) return {};  // an effect's value at one corner ("bump_stop@rr.gap_m"), no factor
-  if (std::find(std::begin(kCornerFactorValues), std::end(kCornerFactorValues), value) == std::end(kCornerFactorValues))
+  if (place.find('.') != std::string::npos)
+    return {};  // an effect's value at one corner ("bump_stop@rr.gap_m"), no factor
+  if (std::find(std::begin(kCornerFactorValues), std::end(kCornerFactorValues), value) ==
+      std::end(kCornerFactorValues))
     return "'" + name + "': " + value + " has no per-corner or per-axle factor (values with one: " +
            joinedNames(std::begin(kCornerFactorValues), std::end(kCornerFactorValues)) + ")";
-  return "'" + name + "': unknown place '" + place + "' (places: " + joinedNames(std::begin(kFactorPlaces), std::end(kFactorPlaces)) + ")";
+  return "'" + name + "': unknown place '" + place +
+         "' (places: " + joinedNames(std::begin(kFactorPlaces), std::end(kFactorPlaces)) + ")";
 }
 
 }  // namespace dtwin

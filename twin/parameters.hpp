@@ -15,9 +15,9 @@
 namespace dtwin {
 
 struct ParameterEntry {
-  ParameterSpec spec;   ///< full dotted name in spec.name, unit, valid range
+  ParameterSpec spec;  ///< full dotted name in spec.name, unit, valid range
   double value = 0.0;
-  std::string source;   ///< e.g. "data/vehicle/midsize.toml: chassis.mass_kg (chosen ...)"
+  std::string source;  ///< e.g. "data/vehicle/midsize.toml: chassis.mass_kg (chosen ...)"
   bool has_value = false;
 };
 
@@ -29,8 +29,8 @@ class ParameterTable {
   const ParameterEntry& at(const std::string& name) const;
   /// Sets a value; throws InputError(where, rule) for unknown names, wrong units (if `unit` is
   /// given) or values outside the valid range.
-  void set(const std::string& name, double value, const std::string& source, const std::string& where,
-           const std::optional<std::string>& unit = std::nullopt);
+  void set(const std::string& name, double value, const std::string& source,
+           const std::string& where, const std::optional<std::string>& unit = std::nullopt);
   double value(const std::string& name) const;
   std::vector<std::string> names() const;
   /// The rule for a name the table does not hold: a malformed per-corner factor named as such
@@ -48,7 +48,8 @@ class ParameterTable {
 /// value of kCornerFactorValues and each place of kFactorPlaces a dimensionless factor
 /// "<value>@<place>" (default 1, > 0). The value used at corner c is
 /// value x factor(axle of c) x factor(c), each factor applied only when it is a run parameter.
-inline constexpr const char* kCornerFactorValues[] = {"suspension.stiffness", "suspension.damping", "tire.stiffness", "tire.damping"};
+inline constexpr const char* kCornerFactorValues[] = {"suspension.stiffness", "suspension.damping",
+                                                      "tire.stiffness", "tire.damping"};
 /// The places: the four corners (Corner order, twin/model.hpp) and the two axles.
 inline constexpr const char* kFactorPlaces[] = {"fl", "fr", "rl", "rr", "front", "rear"};
 /// The prior range a calibration or a diagnosis may search a factor over.

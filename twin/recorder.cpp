@@ -13,26 +13,31 @@ namespace {
 
 double hermite(double h, double u, double y0, double m0, double y1, double m1) {
   const double u2 = u * u, u3 = u2 * u;
-  return (2 * u3 - 3 * u2 + 1) * y0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * y1 + (u3 - u2) * h * m1;
+  return (2 * u3 - 3 * u2 + 1) * y0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * y1 +
+         (u3 - u2) * h * m1;
 }
 double hermiteD(double h, double u, double y0, double m0, double y1, double m1) {
   const double u2 = u * u;
-  return ((6 * u2 - 6 * u) * y0 + (-6 * u2 + 6 * u) * y1) / h + (3 * u2 - 4 * u + 1) * m0 + (3 * u2 - 2 * u) * m1;
+  return ((6 * u2 - 6 * u) * y0 + (-6 * u2 + 6 * u) * y1) / h + (3 * u2 - 4 * u + 1) * m0 +
+         (3 * u2 - 2 * u) * m1;
 }
 
 }  // namespace
 
-void Recorder::finish(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, RunResult& res) const {
+void Recorder::finish(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
+                      RunResult& res) const {
   if (times.empty()) {  // the integrator could not even start: an empty trace with its channels
     for (auto& ch : runChannels(sys_.model.sensors())) res.trace.addChannel(ch);
     return;
   }
   res.stats.knots = static_cast<long>(knots.size());
   res.stats.sim_s = times.back();
-  if (!sc.grid_output && !sc.sample_times_s.empty() && !filteredSensors()) {  // the samples alone (ScenarioSpec::grid_output)
+  if (!sc.grid_output && !sc.sample_times_s.empty() &&
+      !filteredSensors()) {  // the samples alone (ScenarioSpec::grid_output)
     for (auto& ch : runChannels(sys_.model.sensors())) res.trace.addChannel(ch);
     if (res.stats.ok) {
-      DTWIN_CHECK(std::is_sorted(sc.sample_times_s.begin(), sc.sample_times_s.end()) && sc.sample_times_s.front() >= 0 &&
+      DTWIN_CHECK(std::is_sorted(sc.sample_times_s.begin(), sc.sample_times_s.end()) &&
+                      sc.sample_times_s.front() >= 0 &&
                       sc.sample_times_s.back() <= times.back() + 1e-9,
                   "sample_times_s must be ascending and within the run");
       writeRows(knots, times, sc, sc.sample_times_s, res.samples);
@@ -41,7 +46,8 @@ void Recorder::finish(const Knots& knots, const std::vector<double>& times, cons
   }
   makeOutput(knots, times, sc, res.trace);
   if (!sc.sample_times_s.empty() && res.stats.ok) {
-    DTWIN_CHECK(std::is_sorted(sc.sample_times_s.begin(), sc.sample_times_s.end()) && sc.sample_times_s.front() >= 0 &&
+    DTWIN_CHECK(std::is_sorted(sc.sample_times_s.begin(), sc.sample_times_s.end()) &&
+                    sc.sample_times_s.front() >= 0 &&
                     sc.sample_times_s.back() <= times.back() + 1e-9,
                 "sample_times_s must be ascending and within the run");
     writeRows(knots, times, sc, sc.sample_times_s, res.samples);
@@ -49,16 +55,19 @@ void Recorder::finish(const Knots& knots, const std::vector<double>& times, cons
   }
 }
 
-void Recorder::makeOutput(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, Trace& tr) const {
-  const std::size_t n = static_cast<std::size_t>(std::floor(times.back() * opt_.output_rate_hz + 1e-9)) + 1;
+void Recorder::makeOutput(const Knots& knots, const std::vector<double>& times,
+                          const ScenarioSpec& sc, Trace& tr) const {
+  const std::size_t n =
+      static_cast<std::size_t>(std::floor(times.back() * opt_.output_rate_hz + 1e-9)) + 1;
   std::vector<double> ts(n);
-  for (std::size_t r = 0; r < n; ++r) ts[r] = std::min(static_cast<double>(r) / opt_.output_rate_hz, times.back());
+  for (std::size_t r = 0; r < n; ++r)
+    ts[r] = std::min(static_cast<double>(r) / opt_.output_rate_hz, times.back());
   writeRows(knots, times, sc, ts, tr);
   filterSensors(tr);
 }
 
-void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, const std::vector<double>& ts,
-                         Trace& tr) const {
+void Recorder::writeRows(const Knots& knots, const std::vector<double>& times,
+                         const ScenarioSpec& sc, const std::vector<double>& ts, Trace& tr) const {
   const Model& model = sys_.model;
   const RunContext& ctx = sys_.ctx;
   const auto& tires = sys_.tires;
@@ -81,8 +90,12 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
     const auto& b = knots[j1];
     const double h = times[j1] - times[j];
     const double u = h > 0 ? std::clamp((t - times[j]) / h, 0.0, 1.0) : 0.0;
-    auto pos = [&](std::size_t iv, std::size_t id) { return h > 0 ? hermite(h, u, a[iv], a[id], b[iv], b[id]) : a[iv]; };
-    auto acc = [&](std::size_t iv, std::size_t id) { return h > 0 ? hermiteD(h, u, a[iv], a[id], b[iv], b[id]) : a[id]; };
+    auto pos = [&](std::size_t iv, std::size_t id) {
+      return h > 0 ? hermite(h, u, a[iv], a[id], b[iv], b[id]) : a[iv];
+    };
+    auto acc = [&](std::size_t iv, std::size_t id) {
+      return h > 0 ? hermiteD(h, u, a[iv], a[id], b[iv], b[id]) : a[id];
+    };
     std::size_t col = 0;
     tr.column(col++)[r] = t;
     tr.column(col++)[r] = sc.speed.speed(t);
@@ -91,8 +104,11 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
     if (prescribed) rebuildState(st, t, a, b, h, u);
     // Heave, pitch and roll accelerations: the interpolant's (wheel bodies) or the State's.
     const std::array<double, 3> body_acc =
-        prescribed ? std::array<double, 3>{st.getUDot()[sys_.heave_u], st.getUDot()[sys_.chassis_u + 1], st.getUDot()[sys_.chassis_u]}
-                   : std::array<double, 3>{acc(BODY + 1, BODY + 2), acc(BODY + 4, BODY + 5), acc(BODY + 7, BODY + 8)};
+        prescribed
+            ? std::array<double, 3>{st.getUDot()[sys_.heave_u], st.getUDot()[sys_.chassis_u + 1],
+                                    st.getUDot()[sys_.chassis_u]}
+            : std::array<double, 3>{acc(BODY + 1, BODY + 2), acc(BODY + 4, BODY + 5),
+                                    acc(BODY + 7, BODY + 8)};
     for (int c = 0; c < 4; ++c) {
       double hx = 0.0, hxd = 0.0;
       if (prescribed) {
@@ -131,7 +147,8 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
     tr.column(col++)[r] = body_acc[0];
     tr.column(col++)[r] = body_acc[1];
     tr.column(col++)[r] = body_acc[2];
-    for (std::size_t si = 0; si < model.sensors().size(); ++si) {  // before any filter (filterSensors)
+    for (std::size_t si = 0; si < model.sensors().size();
+         ++si) {  // before any filter (filterSensors)
       const SensorSpec& x = model.sensors()[si];
       const Model::SensorSlots& sl = model.sensorSlots()[si];
       const double offset = ctx.p[sl.offset];  // run parameters: a calibration may move them
@@ -141,12 +158,15 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
         // positive) of a potentiometer parallel to the chassis z axis, wherever its body end is.
         const auto c = static_cast<std::size_t>(x.corner());
         const double cx = isFront(x.corner()) ? model.vehicle().a : -model.vehicle().b;
-        const double cy = (cornerTrack(x.corner()) == Track::Left ? 0.5 : -0.5) * model.vehicle().track;
+        const double cy =
+            (cornerTrack(x.corner()) == Track::Left ? 0.5 : -0.5) * model.vehicle().track;
         const Motion heave{pos(BODY + 0, BODY + 1), pos(BODY + 1, BODY + 2), 0.0};
         const Motion pitch{pos(BODY + 3, BODY + 4), pos(BODY + 4, BODY + 5), 0.0};
         const Motion roll{pos(BODY + 6, BODY + 7), pos(BODY + 7, BODY + 8), 0.0};
         m = chassisAxisHeight({hz[c], hzd[c], 0.0}, heave, pitch, roll, cx, cy);
-        m.q -= chassisAxisHeight({k0[HZ + c], 0, 0}, {k0[BODY + 0], 0, 0}, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, cx, cy).q;
+        m.q -= chassisAxisHeight({k0[HZ + c], 0, 0}, {k0[BODY + 0], 0, 0}, {k0[BODY + 3], 0, 0},
+                                 {k0[BODY + 6], 0, 0}, cx, cy)
+                   .q;
         tr.column(col++)[r] = (x.quantity == SensorQuantity::Travel ? m.q : m.qd) + offset;
         continue;
       }
@@ -162,13 +182,19 @@ void Recorder::writeRows(const Knots& knots, const std::vector<double>& times, c
         m = chassisPointMotion(heave, pitch, roll, where);
         m.q -= chassisPointMotion(at0, {k0[BODY + 3], 0, 0}, {k0[BODY + 6], 0, 0}, where).q;
       }
-      tr.column(col++)[r] = (x.quantity == SensorQuantity::DisplacementZ ? m.q : x.quantity == SensorQuantity::VelocityZ ? m.qd : m.qdd) + offset;
+      tr.column(col++)[r] = (x.quantity == SensorQuantity::DisplacementZ ? m.q
+                             : x.quantity == SensorQuantity::VelocityZ   ? m.qd
+                                                                         : m.qdd) +
+                            offset;
     }
   }
 }
 
-void Recorder::rebuildState(State& st, double t, const Knot& a, const Knot& b, double h, double u) const {
-  auto pos = [&](std::size_t iv, std::size_t id) { return h > 0 ? hermite(h, u, a[iv], a[id], b[iv], b[id]) : a[iv]; };
+void Recorder::rebuildState(State& st, double t, const Knot& a, const Knot& b, double h,
+                            double u) const {
+  auto pos = [&](std::size_t iv, std::size_t id) {
+    return h > 0 ? hermite(h, u, a[iv], a[id], b[iv], b[id]) : a[iv];
+  };
   st.setTime(t);
   Vector &Qv = st.updQ(), &Uv = st.updU();
   Qv[sys_.heave_q] = pos(BODY + 0, BODY + 1);
@@ -188,17 +214,21 @@ void Recorder::rebuildState(State& st, double t, const Knot& a, const Knot& b, d
 }
 
 bool Recorder::filteredSensors() const {
-  return std::any_of(sys_.model.sensors().begin(), sys_.model.sensors().end(), [](const SensorSpec& x) { return x.filter.order > 0; });
+  return std::any_of(sys_.model.sensors().begin(), sys_.model.sensors().end(),
+                     [](const SensorSpec& x) { return x.filter.order > 0; });
 }
 
 void Recorder::filterSensors(Trace& grid) const {
   const auto& sensors = sys_.model.sensors();
   const std::size_t first = runChannels().size();
   for (std::size_t i = 0; i < sensors.size(); ++i)
-    if (sensors[i].filter.order > 0) grid.column(first + i) = lowPass(grid.column(first + i), opt_.output_rate_hz, sensors[i].filter);
+    if (sensors[i].filter.order > 0)
+      grid.column(first + i) =
+          lowPass(grid.column(first + i), opt_.output_rate_hz, sensors[i].filter);
 }
 
-void Recorder::resampleFilteredSensors(const Trace& grid, const std::vector<double>& ts, Trace& samples) const {
+void Recorder::resampleFilteredSensors(const Trace& grid, const std::vector<double>& ts,
+                                       Trace& samples) const {
   const auto& sensors = sys_.model.sensors();
   const std::size_t first = runChannels().size();
   for (std::size_t i = 0; i < sensors.size(); ++i) {
@@ -206,7 +236,8 @@ void Recorder::resampleFilteredSensors(const Trace& grid, const std::vector<doub
     const auto& g = grid.column(first + i);
     auto& s = samples.column(first + i);
     const double last = static_cast<double>(g.size() - 1) / opt_.output_rate_hz;
-    for (std::size_t r = 0; r < ts.size(); ++r) s[r] = gridSample(std::min(ts[r], last), opt_.output_rate_hz, g.size()).of(g);
+    for (std::size_t r = 0; r < ts.size(); ++r)
+      s[r] = gridSample(std::min(ts[r], last), opt_.output_rate_hz, g.size()).of(g);
   }
 }
 

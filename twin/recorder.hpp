@@ -15,15 +15,17 @@ class Recorder {
   Recorder(const VehicleSystem& sys, const SimulationOptions& opt) : sys_(sys), opt_(opt) {}
 
   /// Fills knot count, simulated time and the output trace of `res` from the recorded knots.
-  void finish(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, RunResult& res) const;
+  void finish(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
+              RunResult& res) const;
 
  private:
   /// The output grid (output_rate_hz) over the knots' span, the filtered sensors filtered.
-  void makeOutput(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, Trace& tr) const;
+  void makeOutput(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
+                  Trace& tr) const;
   /// The output channels at the ascending times `ts` (within the knots' span), from the cubic
   /// Hermite interpolant of the knots: the integrator's dense output, whatever the times.
-  void writeRows(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc, const std::vector<double>& ts,
-                 Trace& tr) const;
+  void writeRows(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
+                 const std::vector<double>& ts, Trace& tr) const;
   using Knot = std::array<double, knot::KNOT>;
   /// Prescribed hubs: `st` set to the body's coordinates and auxiliary states interpolated between
   /// knots `a` and `b` (span h, fraction u) at time t, realised to accelerations.
@@ -34,7 +36,8 @@ class Recorder {
   void filterSensors(Trace& grid) const;
   /// A filtered sensor at extra output times: the filtered grid column read there (its filter
   /// state lives on the grid; twin/trace.hpp GridSample, the four-point cubic).
-  void resampleFilteredSensors(const Trace& grid, const std::vector<double>& ts, Trace& samples) const;
+  void resampleFilteredSensors(const Trace& grid, const std::vector<double>& ts,
+                               Trace& samples) const;
 
   const VehicleSystem& sys_;
   const SimulationOptions& opt_;

@@ -43,7 +43,9 @@ class SpeedMemo {
     Kept& k = memo_[kind];
     for (int i = 0; i < k.filled; ++i)
       if (k.t[static_cast<std::size_t>(i)] == t) return k.v[static_cast<std::size_t>(i)];
-    const double v = kind == kSpeed ? profile_.speed(t) : kind == kAccel ? profile_.accel(t) : profile_.distance(t);
+    const double v = kind == kSpeed   ? profile_.speed(t)
+                     : kind == kAccel ? profile_.accel(t)
+                                      : profile_.distance(t);
     const auto slot = static_cast<std::size_t>(k.next);
     k.t[slot] = t;
     k.v[slot] = v;
@@ -55,14 +57,15 @@ class SpeedMemo {
   mutable std::array<Kept, 3> memo_{};
 };
 
-/// Per-run data the force elements read (in the VehicleSystem; the Simulator sets it before each run).
+/// Per-run data the force elements read (in the VehicleSystem; the Simulator sets it before each
+/// run).
 struct RunContext {
   const double* p = nullptr;
   const Road* road = nullptr;
   SpeedMemo speed;
   double traction_per_wheel_per_accel = 0.0;  ///< M/4: traction share per unit acceleration
-  /// The chassis's heave, pitch and roll coordinates at the start (StaticStart, static_start.hpp): ChassisForce
-  /// effects read the motion from there.
+  /// The chassis's heave, pitch and roll coordinates at the start (StaticStart, static_start.hpp):
+  /// ChassisForce effects read the motion from there.
   double heave0 = 0.0, pitch0 = 0.0, roll0 = 0.0;
   /// Run slots of the road signal's gain and delay (Model::roadGainSlot, roadDelaySlot).
   std::size_t gain_slot = 0, delay_slot = 0;
@@ -106,14 +109,17 @@ struct TireCorner {
   std::vector<std::pair<const Effect*, std::size_t>> filters;  // tire-input effects, first slot
   std::vector<std::pair<const Effect*, std::size_t>> scalers;  // tire-force effects, first slot
   std::vector<std::pair<const Effect*, std::size_t>> loads;    // tire-load effects, first slot
-  std::vector<Model::ScaledParameter> factors;                 // this corner's factors (Model::tireFactors)
+  std::vector<Model::ScaledParameter> factors;  // this corner's factors (Model::tireFactors)
 
   /// The tire law's parameters at this corner: the run vector's own without factors.
-  ParamValues values(const RunContext& c, LawValueBuffer& buf) const { return Model::scaledLawValues(c.p, p0, np, factors, buf); }
+  ParamValues values(const RunContext& c, LawValueBuffer& buf) const {
+    return Model::scaledLawValues(c.p, p0, np, factors, buf);
+  }
 
   /// Where the road signal is read for a wheel at road distance x_road (the delay's read-ahead,
   /// see eval) and the forward speed of that point along the signal (hub_xd: the hub's own).
-  static void signalPoint(const RunContext& c, double t, double x_road, double hub_xd, double& x, double& contact_speed) {
+  static void signalPoint(const RunContext& c, double t, double x_road, double hub_xd, double& x,
+                          double& contact_speed) {
     const double delay = c.p[c.delay_slot];
     x = x_road;  // the form's read-ahead is in x_road already (eval, roadRate)
     if (delay == 0.0) {
@@ -128,13 +134,15 @@ struct TireCorner {
   double roadRate(const RunContext& c, double t, double hub_x, double hub_xd) const {
     double x = 0.0, contact_speed = 0.0, weight = 1.0, ahead = 0.0;
     c.signalAt(corner, weight, ahead);
-    signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a + ahead, hub_xd, x, contact_speed);
+    signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a + ahead, hub_xd, x,
+                contact_speed);
     return weight * c.road->sample(cornerTrack(corner), x).slope * contact_speed;
   }
   /// The road the wheel meets at road distance x_road (tire-input effects and the signal's gain
   /// applied), the speed at which the wheel travels along it, and the road before the tire-input
   /// effects (road_h, gain applied).
-  RoadSample signalUnder(const RunContext& c, double t, double x_road, double hub_xd, double& contact_speed, double& road_h) const {
+  RoadSample signalUnder(const RunContext& c, double t, double x_road, double hub_xd,
+                         double& contact_speed, double& road_h) const {
     const Track tr = cornerTrack(corner);
     // The road signal's delay d relative to the measured channels (positive: logged late) and its
     // gain g: the wheel meets g h(x + s(t + d) - s(t)), read ahead by the distance travelled in d
@@ -145,7 +153,8 @@ struct TireCorner {
     signalPoint(c, t, x_road + ahead, hub_xd, x, contact_speed);
     RoadSample rs = c.road->sample(tr, x);
     road_h = rs.height_m;  // the road under the wheel, before tire-input effects
-    for (auto& [eff, s] : filters) rs = eff->filterRoad(*c.road, tr, x, ParamValues(c.p + s, eff->parameters().size()));
+    for (auto& [eff, s] : filters)
+      rs = eff->filterRoad(*c.road, tr, x, ParamValues(c.p + s, eff->parameters().size()));
     if (gain != 1.0) {
       rs.height_m *= gain;
       rs.slope *= gain;
@@ -163,17 +172,22 @@ struct TireCorner {
     LawValueBuffer buf;
     const double R0 = values(c, buf)[r0];
     double contact_speed = 0.0, road_h = 0.0;
-    const RoadSample rs = signalUnder(c, t, c.speed.distance(t) + hub_x - model->vehicle().a, hub_xd, contact_speed, road_h);
-    return {rs.height_m + R0 - c.hub_rho[static_cast<std::size_t>(corner)], rs.slope * contact_speed};
+    const RoadSample rs = signalUnder(c, t, c.speed.distance(t) + hub_x - model->vehicle().a,
+                                      hub_xd, contact_speed, road_h);
+    return {rs.height_m + R0 - c.hub_rho[static_cast<std::size_t>(corner)],
+            rs.slope * contact_speed};
   }
   /// The prescribed hub's vertical acceleration: the rate's central difference over +-10 us (the
   /// road's interpolant has no second derivative of its own; it jumps at the signal's nodes).
   /// For the recorded outputs only: no force reads it.
   double hubAccel(const RunContext& c, double t, double hub_x, double hub_xd) const {
     constexpr double dt = 1e-5;
-    return (hubPath(c, t + dt, hub_x + hub_xd * dt, hub_xd).zd - hubPath(c, t - dt, hub_x - hub_xd * dt, hub_xd).zd) / (2 * dt);
+    return (hubPath(c, t + dt, hub_x + hub_xd * dt, hub_xd).zd -
+            hubPath(c, t - dt, hub_x - hub_xd * dt, hub_xd).zd) /
+           (2 * dt);
   }
-  TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z, double hub_zd) const {
+  TireEval eval(const RunContext& c, double t, double hub_x, double hub_xd, double hub_z,
+                double hub_zd) const {
     TireEval e;
     LawValueBuffer buf;
     const ParamValues p = values(c, buf);
@@ -200,11 +214,13 @@ struct TireCorner {
     ts.time_s = t;
     ts.front = isFront(corner);
     e.fz = model->tire().calcNormalForce(ts, p);
-    for (auto& [eff, s] : scalers) e.fz *= eff->tireForceFactor(ts, ParamValues(c.p + s, eff->parameters().size()));
+    for (auto& [eff, s] : scalers)
+      e.fz *= eff->tireForceFactor(ts, ParamValues(c.p + s, eff->parameters().size()));
     if (!loads.empty() && e.rho > 0) {  // added at a wheel in contact; the tire cannot pull
       ts.normal_force_N = e.fz;
       double add = 0.0;
-      for (auto& [eff, s] : loads) add += eff->calcTireLoad(ts, ParamValues(c.p + s, eff->parameters().size()));
+      for (auto& [eff, s] : loads)
+        add += eff->calcTireLoad(ts, ParamValues(c.p + s, eff->parameters().size()));
       e.fz = std::max(0.0, e.fz + add);
     }
     return e;

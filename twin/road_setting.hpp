@@ -31,9 +31,11 @@ class RoadSetting {
   virtual nlohmann::json toJson() const = 0;
   /// The road under a vehicle during a scenario; `seed` is used by random roads only. Throws
   /// InputError when the road cannot serve the scenario (a CSV profile too short).
-  virtual std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v, std::uint64_t seed) const = 0;
+  virtual std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v,
+                                           std::uint64_t seed) const = 0;
   /// What the time window [t0, t1] of a run crosses, in words ("front wheels climbing the bump").
-  virtual std::vector<std::string> describeWindow(const ScenarioSpec& s, const VehicleData& v, double t0, double t1) const = 0;
+  virtual std::vector<std::string> describeWindow(const ScenarioSpec& s, const VehicleData& v,
+                                                  double t0, double t1) const = 0;
   /// When the front axle reaches the road's main feature (a bump, the rough section); 0 if none.
   virtual double featureTime_s() const { return 0.0; }
   /// A random road with a smooth lead-in: when its rough section starts (> 0), else < 0. Runs on

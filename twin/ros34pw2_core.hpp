@@ -61,7 +61,9 @@ class Ros34pw2Core {
   virtual void beginJacobian() { tmp = y0; }
   virtual void evaluateComponent(int j, double v, double restore, Eigen::VectorXd& out);
   /// f at the accepted state (t_new, y) into `out`: the state the integrator reports.
-  virtual void evaluateAccepted(double t_new, const Eigen::VectorXd& y, Eigen::VectorXd& out) { evaluate(t_new, y, out); }
+  virtual void evaluateAccepted(double t_new, const Eigen::VectorXd& y, Eigen::VectorXd& out) {
+    evaluate(t_new, y, out);
+  }
   /// The accepted state back at (t, y0) after a step end whose f was not finite.
   virtual void restoreAccepted() {}
   /// A step of a system with no variables to time `t_new`.

@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/Dense>
 #include <Simbody.h>
+#include <Eigen/Dense>
 
 namespace dtwin {
 
@@ -56,12 +56,15 @@ const Tableau& ros34pw2() {
                             {8.7173304301691801e-01, 0, 0, 0},
                             {8.4457060015369423e-01, -1.1299064236484185e-01, 0, 0},
                             {0, 0, 1.0, 0}};
-    const double gm[4][4] = {{g, 0, 0, 0},
-                             {-8.7173304301691801e-01, g, 0, 0},
-                             {-9.0338057013044082e-01, 5.4180672388095326e-02, g, 0},
-                             {2.4212380706095346e-01, -1.2232505839045147e+00, 5.4526025533510214e-01, g}};
-    const double b[4] = {2.4212380706095346e-01, -1.2232505839045147e+00, 1.5452602553351020e+00, 4.3586652150845900e-01};
-    const double bh[4] = {3.7810903145819369e-01, -9.6042292212423178e-02, 5.0000000000000000e-01, 2.1793326075422950e-01};
+    const double gm[4][4] = {
+        {g, 0, 0, 0},
+        {-8.7173304301691801e-01, g, 0, 0},
+        {-9.0338057013044082e-01, 5.4180672388095326e-02, g, 0},
+        {2.4212380706095346e-01, -1.2232505839045147e+00, 5.4526025533510214e-01, g}};
+    const double b[4] = {2.4212380706095346e-01, -1.2232505839045147e+00, 1.5452602553351020e+00,
+                         4.3586652150845900e-01};
+    const double bh[4] = {3.7810903145819369e-01, -9.6042292212423178e-02, 5.0000000000000000e-01,
+                          2.1793326075422950e-01};
     for (int i = 0; i < 4; ++i) {
       for (int j = 0; j < 4; ++j) {
         r.a[i][j] = a[i][j];
@@ -86,11 +89,17 @@ std::string fmt(double v) { return formatNumber(v, 10); }
 namespace rosenbrock_detail {
 
 Ros34pw2Core::Ros34pw2Core(RosenbrockOptions o, std::string w) : opt(o), who(std::move(w)) {
-  if (!(opt.accuracy > 0 && opt.accuracy < 1)) throw std::invalid_argument(who + ": accuracy must be in (0, 1), got " + fmt(opt.accuracy));
-  if (!(opt.max_step_s > 0)) throw std::invalid_argument(who + ": max_step_s must be > 0, got " + fmt(opt.max_step_s));
-  if (!(opt.initial_step_s > 0)) throw std::invalid_argument(who + ": initial_step_s must be > 0, got " + fmt(opt.initial_step_s));
-  if (opt.jacobian_max_age < 0) throw std::invalid_argument(who + ": jacobian_max_age must be >= 0");
-  if (opt.jacobian_refresh_rejections < 1) throw std::invalid_argument(who + ": jacobian_refresh_rejections must be >= 1");
+  if (!(opt.accuracy > 0 && opt.accuracy < 1))
+    throw std::invalid_argument(who + ": accuracy must be in (0, 1), got " + fmt(opt.accuracy));
+  if (!(opt.max_step_s > 0))
+    throw std::invalid_argument(who + ": max_step_s must be > 0, got " + fmt(opt.max_step_s));
+  if (!(opt.initial_step_s > 0))
+    throw std::invalid_argument(who + ": initial_step_s must be > 0, got " +
+                                fmt(opt.initial_step_s));
+  if (opt.jacobian_max_age < 0)
+    throw std::invalid_argument(who + ": jacobian_max_age must be >= 0");
+  if (opt.jacobian_refresh_rejections < 1)
+    throw std::invalid_argument(who + ": jacobian_refresh_rejections must be >= 1");
   if (opt.max_steps <= 0) throw std::invalid_argument(who + ": max_steps must be > 0");
   if (!(opt.fixed_step_s >= 0)) throw std::invalid_argument(who + ": fixed_step_s must be >= 0");
   hmax = opt.max_step_s;
@@ -115,8 +124,11 @@ void Ros34pw2Core::reset(int size, double t0) {
 }
 
 void Ros34pw2Core::checkStart() {
-  if (!y0.allFinite()) throw std::runtime_error(who + ": initial state is not finite at t = " + fmt(t) + " s");
-  if (!f0.allFinite()) throw std::runtime_error(who + ": non-finite state derivative at the initial state, t = " + fmt(t) + " s");
+  if (!y0.allFinite())
+    throw std::runtime_error(who + ": initial state is not finite at t = " + fmt(t) + " s");
+  if (!f0.allFinite())
+    throw std::runtime_error(
+        who + ": non-finite state derivative at the initial state, t = " + fmt(t) + " s");
   initialized = true;
 }
 
@@ -149,8 +161,8 @@ void Ros34pw2Core::computeJacobian() {
     ft = (f - f0) / dt;
   }
   if (!J.allFinite() || !ft.allFinite())
-    throw std::runtime_error(who + ": the finite-difference Jacobian is not finite at t = " + fmt(t) +
-                             " s (NaN/Inf from a force next to the current state?)");
+    throw std::runtime_error(who + ": the finite-difference Jacobian is not finite at t = " +
+                             fmt(t) + " s (NaN/Inf from a force next to the current state?)");
   ++n_jacs;
   step_new_jac = true;
   have_jac = true;
@@ -226,9 +238,12 @@ void Ros34pw2Core::accept(double t_next) {
 
 void Ros34pw2Core::step(double t_stop) {
   if (!initialized) throw std::logic_error(who + ": step() before initialize()");
-  if (!(t_stop > t)) throw std::invalid_argument(who + ": t_stop = " + fmt(t_stop) + " is not after the current time " + fmt(t));
+  if (!(t_stop > t))
+    throw std::invalid_argument(who + ": t_stop = " + fmt(t_stop) +
+                                " is not after the current time " + fmt(t));
   if (n_steps >= opt.max_steps)
-    throw std::runtime_error(who + ": more than " + std::to_string(opt.max_steps) + " steps (t = " + fmt(t) + " s)");
+    throw std::runtime_error(who + ": more than " + std::to_string(opt.max_steps) +
+                             " steps (t = " + fmt(t) + " s)");
   const bool fixed = opt.fixed_step_s > 0;
   int rejections = 0;  // of this step
   step_new_jac = false;
@@ -270,28 +285,37 @@ void Ros34pw2Core::step(double t_stop) {
       return;
     }
     // Rejected (error too large, or something non-finite).
-    if (fixed) throw std::runtime_error(who + ": non-finite state or derivative at t = " + fmt(t) + " s (fixed step " + fmt(h) + " s)");
-    const bool nonfinite = !ok || !std::isfinite(e) || passed;  // passed but not committed: f(y_new) not finite
-    const double fac = nonfinite ? 0.2 : std::min(0.9, std::max(0.2, 0.9 * std::pow(e, -1.0 / 3.0)));
+    if (fixed)
+      throw std::runtime_error(who + ": non-finite state or derivative at t = " + fmt(t) +
+                               " s (fixed step " + fmt(h) + " s)");
+    const bool nonfinite =
+        !ok || !std::isfinite(e) || passed;  // passed but not committed: f(y_new) not finite
+    const double fac =
+        nonfinite ? 0.2 : std::min(0.9, std::max(0.2, 0.9 * std::pow(e, -1.0 / 3.0)));
     h_prop = h * fac;
     last_rejected = true;
     const double hmin = 64 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t));
     if (h_prop < hmin) {
       std::string why = nonfinite ? "the state derivative is not finite (NaN/Inf from a force?)"
                                   : "the error test keeps failing (error norm " + fmt(e) + ")";
-      throw std::runtime_error(who + ": step size underflow at t = " + fmt(t) + " s (h = " + fmt(h_prop) + " s): " + why);
+      throw std::runtime_error(who + ": step size underflow at t = " + fmt(t) +
+                               " s (h = " + fmt(h_prop) + " s): " + why);
     }
     ++rejections;
-    if (!jac_fresh && (rejections >= opt.jacobian_refresh_rejections || nonfinite)) computeJacobian();
+    if (!jac_fresh && (rejections >= opt.jacobian_refresh_rejections || nonfinite))
+      computeJacobian();
   }
 }
 
 /// The preconditions of a step to `t_next` chosen by the caller (stepTo, stepToIfAccurate).
 void Ros34pw2Core::checkPlannedStep(const char* what, double t_next) const {
   if (!initialized) throw std::logic_error(who + ": " + what + " before initialize()");
-  if (!(t_next > t)) throw std::invalid_argument(who + ": t_next = " + fmt(t_next) + " is not after the current time " + fmt(t));
+  if (!(t_next > t))
+    throw std::invalid_argument(who + ": t_next = " + fmt(t_next) +
+                                " is not after the current time " + fmt(t));
   if (n_steps >= opt.max_steps)
-    throw std::runtime_error(who + ": more than " + std::to_string(opt.max_steps) + " steps (t = " + fmt(t) + " s)");
+    throw std::runtime_error(who + ": more than " + std::to_string(opt.max_steps) +
+                             " steps (t = " + fmt(t) + " s)");
 }
 
 double Ros34pw2Core::stepToIfAccurate(double t_next, bool new_jacobian, double max_error) {
@@ -321,22 +345,24 @@ void Ros34pw2Core::stepTo(double t_next, bool new_jacobian) {
   }
   if (new_jacobian || !have_jac) computeJacobian();
   if (!attempt(t_next - t) || !commit(t_next))
-    throw std::runtime_error(who + ": non-finite state or derivative in the frozen step from t = " + fmt(t) + " s to " + fmt(t_next) +
-                             " s");
+    throw std::runtime_error(who + ": non-finite state or derivative in the frozen step from t = " +
+                             fmt(t) + " s to " + fmt(t_next) + " s");
   accept(t_next);
 }
 
 }  // namespace rosenbrock_detail
 
 // ----------------------------------------------------------------------------- Simbody
-/// f evaluated by realizing a SimTK::State through Acceleration: Y = [q; u; z], YDot its derivative.
+/// f evaluated by realizing a SimTK::State through Acceleration: Y = [q; u; z], YDot its
+/// derivative.
 struct RosenbrockIntegrator::Impl : rosenbrock_detail::Ros34pw2Core {
   const SimTK::System& system;
   SimTK::State state;  ///< accepted state, realized through Acceleration
   SimTK::State work;   ///< scratch for stage and Jacobian evaluations
   int nq = 0, nu = 0, nz = 0;
 
-  Impl(const SimTK::System& sys, RosenbrockOptions o) : Ros34pw2Core(o, "RosenbrockIntegrator"), system(sys) {}
+  Impl(const SimTK::System& sys, RosenbrockOptions o)
+      : Ros34pw2Core(o, "RosenbrockIntegrator"), system(sys) {}
 
   void realize(SimTK::State& s) {
     ++n_evals;
@@ -344,10 +370,12 @@ struct RosenbrockIntegrator::Impl : rosenbrock_detail::Ros34pw2Core {
       system.realize(s, SimTK::Stage::Acceleration);
     } catch (const SimTK::Exception::Base&) {
       // Simbody's own text (file, line, method) means nothing to a user: plain words instead.
-      throw std::runtime_error("the multibody model could not be evaluated at t = " + fmt(s.getTime()) +
-                               " s (Simbody refused the state: non-finite forces or a configuration it cannot realise)");
+      throw std::runtime_error(
+          "the multibody model could not be evaluated at t = " + fmt(s.getTime()) +
+          " s (Simbody refused the state: non-finite forces or a configuration it cannot realise)");
     } catch (const std::exception& e) {
-      throw std::runtime_error("the multibody model could not be evaluated at t = " + fmt(s.getTime()) + " s: " + e.what());
+      throw std::runtime_error("the multibody model could not be evaluated at t = " +
+                               fmt(s.getTime()) + " s: " + e.what());
     }
   }
 
@@ -375,9 +403,12 @@ struct RosenbrockIntegrator::Impl : rosenbrock_detail::Ros34pw2Core {
 
   /// Sets one component of Y on the scratch State, invalidating only the stages it affects.
   void setComponent(int j, double v) {
-    if (j < nq) work.updQ()[j] = v;
-    else if (j < nq + nu) work.updU()[j - nq] = v;
-    else work.updZ()[j - nq - nu] = v;
+    if (j < nq)
+      work.updQ()[j] = v;
+    else if (j < nq + nu)
+      work.updU()[j - nq] = v;
+    else
+      work.updZ()[j - nq - nu] = v;
   }
 
   void evaluateComponent(int j, double v, double restore, Eigen::VectorXd& out) override {
@@ -407,12 +438,14 @@ struct RosenbrockIntegrator::Impl : rosenbrock_detail::Ros34pw2Core {
 
   void initialize(const SimTK::State& s) {
     if (s.getNQErr() + s.getNUErr() + s.getNUDotErr() > 0)
-      throw std::invalid_argument("RosenbrockIntegrator: the system has constraints; this integrator does no projection");
+      throw std::invalid_argument(
+          "RosenbrockIntegrator: the system has constraints; this integrator does no projection");
     if (SimTK::MultibodySystem::isInstanceOf(system))
       if (const auto& mbs = SimTK::MultibodySystem::downcast(system);
           mbs.hasMatterSubsystem() && mbs.getMatterSubsystem().getNumQuaternionsInUse(s) > 0)
-        throw std::invalid_argument("RosenbrockIntegrator: the system uses quaternions, which this integrator does not "
-                                    "normalise; use Euler angles (SimbodyMatterSubsystem::setUseEulerAngles)");
+        throw std::invalid_argument(
+            "RosenbrockIntegrator: the system uses quaternions, which this integrator does not "
+            "normalise; use Euler angles (SimbodyMatterSubsystem::setUseEulerAngles)");
     state = s;
     work = s;
     nq = s.getNQ();
@@ -422,7 +455,8 @@ struct RosenbrockIntegrator::Impl : rosenbrock_detail::Ros34pw2Core {
     const SimTK::Vector& wu = s.getUWeights();
     const SimTK::Vector& wz = s.getZWeights();
     auto inv = [](double w) { return w > 0 && std::isfinite(w) ? 1.0 / w : 1.0; };
-    for (int i = 0; i < nq; ++i) unit[i] = nq == nu ? inv(wu[i]) : 1.0;  // nq == nu: q_i has the unit of u_i
+    for (int i = 0; i < nq; ++i)
+      unit[i] = nq == nu ? inv(wu[i]) : 1.0;  // nq == nu: q_i has the unit of u_i
     for (int i = 0; i < nu; ++i) unit[nq + i] = inv(wu[i]);
     for (int i = 0; i < nz; ++i) unit[nq + nu + i] = inv(wz[i]);
     const SimTK::Vector& Y = state.getY();
@@ -443,7 +477,9 @@ RosenbrockIntegrator& RosenbrockIntegrator::operator=(RosenbrockIntegrator&&) no
 void RosenbrockIntegrator::initialize(const SimTK::State& s) { impl_->initialize(s); }
 void RosenbrockIntegrator::setMaximumStepSize(double h) { impl_->setMaximumStepSize(h); }
 void RosenbrockIntegrator::step(double t_stop) { impl_->step(t_stop); }
-void RosenbrockIntegrator::stepTo(double t_next, bool new_jacobian) { impl_->stepTo(t_next, new_jacobian); }
+void RosenbrockIntegrator::stepTo(double t_next, bool new_jacobian) {
+  impl_->stepTo(t_next, new_jacobian);
+}
 double RosenbrockIntegrator::stepToIfAccurate(double t_next, bool new_jacobian, double max_error) {
   return impl_->stepToIfAccurate(t_next, new_jacobian, max_error);
 }
@@ -454,7 +490,6 @@ long RosenbrockIntegrator::steps() const { return impl_->n_steps; }
 long RosenbrockIntegrator::attempts() const { return impl_->n_attempts; }
 long RosenbrockIntegrator::evaluations() const { return impl_->n_evals; }
 long RosenbrockIntegrator::jacobians() const { return impl_->n_jacs; }
-
 
 namespace rosenbrock_detail {
 Transformed::Transformed(const Tableau& t) {

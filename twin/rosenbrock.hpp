@@ -42,8 +42,9 @@ struct RosenbrockOptions {
   /// Relative tolerance rtol. Absolute tolerances: atol_i = accuracy * unit_i, where unit_i is
   /// the variable's "unit change" from Simbody's weights (1/State::getUWeights() for u and, if
   /// nq == nu, for the q with the same index; 1/State::getZWeights() for z; all 1 unless a
-  /// subsystem sets them; 1 for q when nq != nu). A step is accepted when the weighted RMS norm of the embedded error estimate,
-  /// sqrt(mean_i (err_i / sc_i)^2) with sc_i = atol_i + rtol * max(|y_i|, |y_new_i|), is <= 1.
+  /// subsystem sets them; 1 for q when nq != nu). A step is accepted when the weighted RMS norm of
+  /// the embedded error estimate, sqrt(mean_i (err_i / sc_i)^2) with sc_i = atol_i + rtol *
+  /// max(|y_i|, |y_new_i|), is <= 1.
   double accuracy = 1e-3;
   double max_step_s = 0.02;
   double initial_step_s = 1e-3;
@@ -54,7 +55,7 @@ struct RosenbrockOptions {
   /// the road, not the Jacobian: 2 cut the Jacobians from ~300 to ~45 per 15 s run and the
   /// evaluations by 30 %, with unchanged accuracy.
   int jacobian_refresh_rejections = 2;
-  long max_steps = 2000000;   ///< step() throws once this many steps were taken
+  long max_steps = 2000000;  ///< step() throws once this many steps were taken
   /// Include the (finite-difference) d(YDot)/dt term of the non-autonomous Rosenbrock form,
   /// computed together with the Jacobian (1 extra evaluation) and reused with it. Either choice
   /// keeps order 3 (rosenbrock.cpp, "Time dependence"). Off by default: on the vehicle a stale

@@ -15,16 +15,17 @@ namespace dtwin {
 
 struct SimulationOptions {
   /// rosenbrock (ROS34PW2, L-stable: the solid axle's wheel/axle interface is stiff) | rk-merson |
-  /// rk3 | rk-feldberg | cpodes | semi-explicit-euler2 (Simbody's). docs/performance.md compares them.
+  /// rk3 | rk-feldberg | cpodes | semi-explicit-euler2 (Simbody's). docs/performance.md compares
+  /// them.
   std::string integrator = "rosenbrock";
-  double accuracy = 3e-4;                ///< integrator relative accuracy (docs/performance.md: error << noise)
-  double max_step_s = 0.2;               ///< largest step anywhere
-  double obstacle_max_step_s = 2e-3;     ///< largest step while a wheel crosses an obstacle
+  double accuracy = 3e-4;   ///< integrator relative accuracy (docs/performance.md: error << noise)
+  double max_step_s = 0.2;  ///< largest step anywhere
+  double obstacle_max_step_s = 2e-3;  ///< largest step while a wheel crosses an obstacle
   double obstacle_margin_before_s = 0.02;
   double obstacle_margin_after_s = 0.05;
   double output_rate_hz = 1000.0;
-  long max_internal_steps = 2000000;     ///< a run taking more steps is reported as failed
-  double max_wall_s = 600.0;             ///< a run taking longer (wall clock) is reported as failed
+  long max_internal_steps = 2000000;  ///< a run taking more steps is reported as failed
+  double max_wall_s = 600.0;          ///< a run taking longer (wall clock) is reported as failed
   /// How the hub input (a tire law that follows the road signal) moves the wheels on MacPherson
   /// struts: "prescribed" (the hubs move as the signal; no wheel states, the body sets the steps)
   /// or "link" (wheel bodies held to the signal by the law's stiff link). docs/model.md, "Where the
@@ -42,12 +43,12 @@ struct SimulationOptions {
 
 struct RunStats {
   bool ok = true;
-  std::string message;     ///< why a run failed
-  long steps = 0;          ///< integrator steps taken
+  std::string message;  ///< why a run failed
+  long steps = 0;       ///< integrator steps taken
   long steps_attempted = 0;
-  long knots = 0;          ///< recorded states
-  double wall_s = 0.0;     ///< wall time of the run (integration + output)
-  double sim_s = 0.0;      ///< simulated time
+  long knots = 0;       ///< recorded states
+  double wall_s = 0.0;  ///< wall time of the run (integration + output)
+  double sim_s = 0.0;   ///< simulated time
 };
 
 /// A frozen step sequence (docs/calibration.md, "A smooth objective"): the end time of every step
@@ -57,8 +58,9 @@ struct RunStats {
 /// parameters, one sequence makes every output a smooth function of them: the same arithmetic on
 /// other numbers.
 struct StepPlan {
-  std::vector<double> times;                ///< end time of every step, ascending
-  std::vector<unsigned char> new_jacobian;  ///< per step: 1 when a Jacobian was computed at its start
+  std::vector<double> times;  ///< end time of every step, ascending
+  std::vector<unsigned char>
+      new_jacobian;  ///< per step: 1 when a Jacobian was computed at its start
   std::size_t size() const { return times.size(); }
 };
 
@@ -72,7 +74,7 @@ struct StepControl {
 };
 
 struct RunResult {
-  Trace trace;    ///< every channel on the output grid (rows at k / output_rate_hz)
+  Trace trace;  ///< every channel on the output grid (rows at k / output_rate_hz)
   /// Every channel at the scenario's sample_times_s (rows in that order), from the same dense
   /// output as the grid; empty when there are none or the run failed.
   Trace samples;

@@ -40,17 +40,24 @@ nlohmann::json SpeedProfile::toJson() const {
     std::string bytes;
     for (const auto* v : {&trace->times(), &trace->speeds()})
       bytes.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
-    j = {{"csv", trace->name()}, {"samples", trace->times().size()}, {"content", hexId(fnv1a64(bytes))}};
+    j = {{"csv", trace->name()},
+         {"samples", trace->times().size()},
+         {"content", hexId(fnv1a64(bytes))}};
   }
-  if (start_m != 0.0) j["start_m"] = start_m;  // absent when 0: the fingerprints of every study before it stay
+  if (start_m != 0.0)
+    j["start_m"] = start_m;  // absent when 0: the fingerprints of every study before it stay
   return j;
 }
 
 nlohmann::json ScenarioSpec::toJson() const {
-  return {{"name", name}, {"duration_s", duration_s}, {"speed", speed.toJson()}, {"road", road->toJson()}};
+  return {{"name", name},
+          {"duration_s", duration_s},
+          {"speed", speed.toJson()},
+          {"road", road->toJson()}};
 }
 
-std::shared_ptr<const Road> makeRoad(const ScenarioSpec& s, const VehicleData& v, std::uint64_t seed) {
+std::shared_ptr<const Road> makeRoad(const ScenarioSpec& s, const VehicleData& v,
+                                     std::uint64_t seed) {
   return s.road->make(s, v, seed);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Scenarios: a speed profile, a road (one of the road types of twin/road_setting.hpp), a duration. The vehicle stays in place and the road moves
-// under it; road coordinate x = s(t) + (x_hub - a), so the front axle starts at x = 0.
+// Scenarios: a speed profile, a road (one of the road types of twin/road_setting.hpp), a duration.
+// The vehicle stays in place and the road moves under it; road coordinate x = s(t) + (x_hub - a),
+// so the front axle starts at x = 0.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -29,9 +30,10 @@ struct SpeedProfile {
   double speed(double t) const;
   double accel(double t) const;
   double distance(double t) const;
-  double timeAtDistance(double x) const;  ///< inverse of distance (0 at or before start_m); +inf if never reached
-  /// {"v_final_mps", "ramp_s"}, or for a trace {"csv", "samples", "content"} (a hash of the samples,
-  /// so fingerprints change with the file's numbers).
+  double timeAtDistance(
+      double x) const;  ///< inverse of distance (0 at or before start_m); +inf if never reached
+  /// {"v_final_mps", "ramp_s"}, or for a trace {"csv", "samples", "content"} (a hash of the
+  /// samples, so fingerprints change with the file's numbers).
   nlohmann::json toJson() const;
 };
 
@@ -56,6 +58,7 @@ struct ScenarioSpec {
 
 /// Builds the road of a scenario for a vehicle; `seed` is used by random roads only.
 /// Throws InputError when a CSV road does not cover the distance the wheels travel.
-std::shared_ptr<const Road> makeRoad(const ScenarioSpec& s, const VehicleData& v, std::uint64_t seed);
+std::shared_ptr<const Road> makeRoad(const ScenarioSpec& s, const VehicleData& v,
+                                     std::uint64_t seed);
 
 }  // namespace dtwin

@@ -40,13 +40,14 @@ class Simulator {
   const Model& model() const;
   const SimulationOptions& options() const;
 
-  /// Simulates `scenario` on `road` with run parameters `values` (layout: model().runParameterNames()).
-  /// Never throws for a diverging simulation: stats.ok = false and stats.message say why.
-  /// Throws InputError for invalid `values`.
-  /// `steps` replays or records a step sequence (StepControl); InputError when one is given and
-  /// the integrator is not rosenbrock. A replayed plan that does not fit the scenario (a segment
-  /// end that is not one of its steps, too few steps) fails the run (stats.ok = false).
-  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario, StepControl steps = {});
+  /// Simulates `scenario` on `road` with run parameters `values` (layout:
+  /// model().runParameterNames()). Never throws for a diverging simulation: stats.ok = false and
+  /// stats.message say why. Throws InputError for invalid `values`. `steps` replays or records a
+  /// step sequence (StepControl); InputError when one is given and the integrator is not
+  /// rosenbrock. A replayed plan that does not fit the scenario (a segment end that is not one of
+  /// its steps, too few steps) fails the run (stats.ok = false).
+  RunResult run(const std::vector<double>& values, const Road& road, const ScenarioSpec& scenario,
+                StepControl steps = {});
 
   /// Runs `scenario` once per road, sharing the smooth start (docs/method.md §5: "the 0-6 s smooth
   /// part is identical for every road of one θ: simulate it once").
@@ -69,7 +70,8 @@ class Simulator {
   /// (i.e. they are makeRoad(scenario, ...) with different seeds). Invalid `values`: InputError as
   /// for run(). A failure of the common part fails every result (same message); a failure of a
   /// branch fails that result only. Never throws for a diverging simulation.
-  std::vector<RunResult> runBranched(const std::vector<double>& values, const std::vector<const Road*>& roads,
+  std::vector<RunResult> runBranched(const std::vector<double>& values,
+                                     const std::vector<const Road*>& roads,
                                      const ScenarioSpec& scenario);
 
   /// The branch time runBranched() would use for `scenario` (see there), or a negative value if
@@ -79,7 +81,9 @@ class Simulator {
   /// Channel names and units every run produces (runChannels(), twin/run_types.hpp).
   static std::vector<Channel> channels() { return runChannels(); }
   /// channels(), then one channel per sensor: runChannels(sensors).
-  static std::vector<Channel> channels(const std::vector<SensorSpec>& sensors) { return runChannels(sensors); }
+  static std::vector<Channel> channels(const std::vector<SensorSpec>& sensors) {
+    return runChannels(sensors);
+  }
 
  private:
   struct Impl;
@@ -100,7 +104,8 @@ class Simulator {
 /// obstacle_max_step_s while a front or rear wheel (`wheelbase` behind) is within the margins of
 /// an obstacle, and a segment ends at a random road's branch time (its rough start less
 /// obstacle_margin_before_s), so that the smooth lead-in is shared bit for bit.
-std::vector<std::pair<double, double>> integrationSegments(const Road& road, const ScenarioSpec& sc, const SimulationOptions& opt,
+std::vector<std::pair<double, double>> integrationSegments(const Road& road, const ScenarioSpec& sc,
+                                                           const SimulationOptions& opt,
                                                            double wheelbase);
 
 }  // namespace dtwin

@@ -20,12 +20,14 @@ WarpedStart warpedStart(const Model& M, const double* p) {
   static constexpr double w[4] = {1.0, -1.0, -1.0, 1.0};
   const bool axle = M.topology() == SuspensionTopology::SolidAxle;
   const double e = axle ? v.track / v.spring_track : 1.0;
-  const auto s0 = static_cast<std::size_t>(M.suspensionSlots().front()), t0 = static_cast<std::size_t>(M.tireSlots().front());
+  const auto s0 = static_cast<std::size_t>(M.suspensionSlots().front()),
+             t0 = static_cast<std::size_t>(M.tireSlots().front());
   const std::size_t ns = M.strut().parameters().size(), nt = M.tireSlots().size();
   // The main-strut compression whose force is the preload plus dF (Newton on the law).
   auto compression = [&](int c, double dF) {
     LawValueBuffer buf;
-    const ParamValues law = Model::scaledLawValues(p, s0, ns, M.strutFactors()[static_cast<std::size_t>(c)], buf);
+    const ParamValues law =
+        Model::scaledLawValues(p, s0, ns, M.strutFactors()[static_cast<std::size_t>(c)], buf);
     const double preload = M.staticStrutForce(c);
     auto excess = [&](double q) {
       StrutState ss;
@@ -52,14 +54,16 @@ WarpedStart warpedStart(const Model& M, const double* p) {
     for (int c = 0; c < 4; ++c) {
       LawValueBuffer buf;
       const double W = std::max(0.0, M.staticTireLoad(c) + w[c] * d);
-      const double rho = M.tire().calcStaticDeflection(W, Model::scaledLawValues(p, t0, nt, M.tireFactors()[static_cast<std::size_t>(c)], buf));
+      const double rho = M.tire().calcStaticDeflection(
+          W, Model::scaledLawValues(p, t0, nt, M.tireFactors()[static_cast<std::size_t>(c)], buf));
       const double wheel = axle ? (rho + (W - M.staticTireLoad(c)) / k_wa) / e : rho;
       r += w[c] * (wheel + compression(c, w[c] * d * e));
     }
     return r;
   };
   double d = 0.0, r = residual(0.0);
-  for (int it = 0; it < 20 && std::abs(r) > 1e-13; ++it) {  // secant-Newton: the residual is nearly linear in d
+  for (int it = 0; it < 20 && std::abs(r) > 1e-13;
+       ++it) {  // secant-Newton: the residual is nearly linear in d
     const double h = 1.0, slope = (residual(d + h) - r) / h;
     if (!(slope > 0)) break;
     d -= r / slope;
@@ -114,10 +118,12 @@ void StaticStart::setEquilibrium(State& s) {
     const double rho = M.tire().calcStaticDeflection(load[c], sys_.tires[c].values(ctx, buf));
     ctx.hub_rho[static_cast<std::size_t>(c)] = rho;
     const double x_road = -(isFront(c) ? 0.0 : d.wheelbase());
-    const double delay = ctx.p[ctx.delay_slot], shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
+    const double delay = ctx.p[ctx.delay_slot],
+                 shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
     double weight = 1.0, ahead = 0.0;
     ctx.signalAt(c, weight, ahead);
-    target[c] = weight * ctx.road->sample(cornerTrack(c), x_road + ahead + shift).height_m + R0 - rho;
+    target[c] =
+        weight * ctx.road->sample(cornerTrack(c), x_road + ahead + shift).height_m + R0 - rho;
     if (M.topology() == SuspensionTopology::SolidAxle) {
       const double* p = ctx.p;
       const double k = p[M.interfaceSlots()[0]], F0 = p[M.interfacePreloadSlot()];
@@ -133,8 +139,10 @@ void StaticStart::setEquilibrium(State& s) {
     sys_.chassis.setOneQ(s, 1, x[1]);  // pitch
     sys_.system.realize(s, Stage::Position);
     if (sys_.prescribed_hubs)
-      return Vec3(sys_.struts[0].hubAt(s).q - strut_q[0], sys_.struts[1].hubAt(s).q - strut_q[1], sys_.struts[2].hubAt(s).q - strut_q[2]);
-    return Vec3(sys_.wheels[0].getBodyOriginLocation(s)[2] - target[0], sys_.wheels[1].getBodyOriginLocation(s)[2] - target[1],
+      return Vec3(sys_.struts[0].hubAt(s).q - strut_q[0], sys_.struts[1].hubAt(s).q - strut_q[1],
+                  sys_.struts[2].hubAt(s).q - strut_q[2]);
+    return Vec3(sys_.wheels[0].getBodyOriginLocation(s)[2] - target[0],
+                sys_.wheels[1].getBodyOriginLocation(s)[2] - target[1],
                 sys_.wheels[2].getBodyOriginLocation(s)[2] - target[2]);
   };
   Vec3 x(d.cg_height, 0, 0);

@@ -18,7 +18,8 @@ namespace {
 /// line and method) is replaced; the integrators' and the laws' messages are ours already.
 std::string failureInWords(const std::exception& e) {
   if (dynamic_cast<const SimTK::Exception::Base*>(&e))
-    return "the multibody model could not be evaluated (Simbody refused the state: non-finite forces or a configuration it "
+    return "the multibody model could not be evaluated (Simbody refused the state: non-finite "
+           "forces or a configuration it "
            "cannot realise)";
   return e.what();
 }
@@ -33,14 +34,16 @@ constexpr double kReplayRefine = 8.0;
 }  // namespace
 
 void Stepper::record(const State& s, Knots& knots, std::vector<double>& times) {
-  sys_.system.realize(s, Stage::Acceleration);  // a no-op after an integrator step (already realized)
+  sys_.system.realize(s,
+                      Stage::Acceleration);  // a no-op after an integrator step (already realized)
   std::array<double, KNOT> k{};
   if (sys_.prescribed_hubs) {
     // The body's coordinates and the auxiliary states: the recorder rebuilds the State at each
     // output time from them and reads the hubs off the signal there (Recorder::writeRows); the
     // hubs' heights here are the start's reference.
     const Vector& z = s.getZ();
-    DTWIN_CHECK(static_cast<std::size_t>(z.size()) <= kMaxZ, "too many auxiliary states for prescribed hubs");
+    DTWIN_CHECK(static_cast<std::size_t>(z.size()) <= kMaxZ,
+                "too many auxiliary states for prescribed hubs");
     for (int i = 0; i < z.size(); ++i) k[ZS + static_cast<std::size_t>(i)] = z[i];
   }
   for (int c = 0; c < 4; ++c) {
@@ -50,7 +53,8 @@ void Stepper::record(const State& s, Knots& knots, std::vector<double>& times) {
       k[HZ + c] = h.path.z;
       continue;
     }
-    const Vec3 p = sys_.wheels[c].getBodyOriginLocation(s), v = sys_.wheels[c].getBodyOriginVelocity(s);
+    const Vec3 p = sys_.wheels[c].getBodyOriginLocation(s),
+               v = sys_.wheels[c].getBodyOriginVelocity(s);
     const Vec3 a = sys_.wheels[c].getBodyOriginAcceleration(s);
     k[HX + c] = p[0];
     k[HXD + c] = v[0];
@@ -64,29 +68,36 @@ void Stepper::record(const State& s, Knots& knots, std::vector<double>& times) {
   }
   // Heave (slider) and pitch/roll (universal) coordinates: their q-dot is u, so read the State.
   const Vector &q = s.getQ(), &u = s.getU(), &ud = s.getUDot();
-  const double vals[9] = {q[sys_.heave_q], u[sys_.heave_u], ud[sys_.heave_u],
+  const double vals[9] = {q[sys_.heave_q],       u[sys_.heave_u],       ud[sys_.heave_u],
                           q[sys_.chassis_q + 1], u[sys_.chassis_u + 1], ud[sys_.chassis_u + 1],
-                          q[sys_.chassis_q], u[sys_.chassis_u], ud[sys_.chassis_u]};
+                          q[sys_.chassis_q],     u[sys_.chassis_u],     ud[sys_.chassis_u]};
   for (int i = 0; i < 9; ++i) k[BODY + i] = vals[i];
   knots.push_back(k);
   times.push_back(s.getTime());
 }
 
-std::unique_ptr<Integrator> Stepper::makeIntegrator(const std::string& method) { return integrators().at(method, "simulation.integrator").value(sys_.system); }
+std::unique_ptr<Integrator> Stepper::makeIntegrator(const std::string& method) {
+  return integrators().at(method, "simulation.integrator").value(sys_.system);
+}
 
-RunStats Stepper::integrate(const State& s0, const Segments& segs, std::size_t i0, std::size_t i1, bool record_start, Knots& knots,
-                            std::vector<double>& times, State* end, StepControl steps) {
+RunStats Stepper::integrate(const State& s0, const Segments& segs, std::size_t i0, std::size_t i1,
+                            bool record_start, Knots& knots, std::vector<double>& times, State* end,
+                            StepControl steps) {
   RunStats st;
   const std::string& method = opt_.integrator;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(opt_.max_wall_s);
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(opt_.max_wall_s);
   long checks = 0;
   auto checkFinite = [&](double time) {
-    opt_.stop.throwIfRequested();  // Stopped is no std::exception: it leaves the run (docs/python.md)
+    opt_.stop
+        .throwIfRequested();  // Stopped is no std::exception: it leaves the run (docs/python.md)
     for (double v : knots.back())
-      if (!std::isfinite(v)) throw std::runtime_error("state became non-finite at t = " + std::to_string(time) + " s");
+      if (!std::isfinite(v))
+        throw std::runtime_error("state became non-finite at t = " + std::to_string(time) + " s");
     if (++checks % 256 == 0 && std::chrono::steady_clock::now() > deadline)
-      throw std::runtime_error("the run took longer than " + formatNumber(opt_.max_wall_s) +
-                               " s of wall time (simulation.max_wall_s) at t = " + std::to_string(time) + " s");
+      throw std::runtime_error(
+          "the run took longer than " + formatNumber(opt_.max_wall_s) +
+          " s of wall time (simulation.max_wall_s) at t = " + std::to_string(time) + " s");
   };
   if (method == "rosenbrock") {
     RosenbrockOptions ro;
@@ -109,10 +120,12 @@ RunStats Stepper::integrate(const State& s0, const Segments& segs, std::size_t i
         while (integ.getTime() < t_end - 1e-12) {
           if (plan) {
             if (k >= plan->size() || plan->times[k] > t_end + 1e-12)
-              throw std::runtime_error("the frozen step sequence does not fit this scenario (" +
-                                       (k >= plan->size() ? std::string("it ends at t = ") + formatNumber(integ.getTime()) + " s"
-                                                          : "no step ends at the segment end t = " + formatNumber(t_end) + " s") +
-                                       "); it was recorded on another scenario or road");
+              throw std::runtime_error(
+                  "the frozen step sequence does not fit this scenario (" +
+                  (k >= plan->size()
+                       ? std::string("it ends at t = ") + formatNumber(integ.getTime()) + " s"
+                       : "no step ends at the segment end t = " + formatNumber(t_end) + " s") +
+                  "); it was recorded on another scenario or road");
             // A planned step far too large for these parameters (its error norm above
             // kReplayRefine) is split into m equal parts, m from the error's third-order growth;
             // the rest are replayed as they are.
@@ -120,7 +133,10 @@ RunStats Stepper::integrate(const State& s0, const Segments& segs, std::size_t i
             const double e = integ.stepToIfAccurate(t_k, plan->new_jacobian[k] != 0, kReplayRefine);
             ++k;
             if (!(e <= kReplayRefine)) {
-              const int m = std::isfinite(e) ? std::clamp(static_cast<int>(std::ceil(1.25 * std::cbrt(e))), 2, 64) : 16;
+              const int m =
+                  std::isfinite(e)
+                      ? std::clamp(static_cast<int>(std::ceil(1.25 * std::cbrt(e))), 2, 64)
+                      : 16;
               const double t0 = integ.getTime();
               for (int j = 1; j < m; ++j) {
                 integ.stepTo(t0 + (t_k - t0) * j / m, false);
@@ -161,15 +177,18 @@ RunStats Stepper::integrate(const State& s0, const Segments& segs, std::size_t i
         integ->setMaximumStepSize(hmax);
         while (integ->getTime() < t_end - 1e-12) {
           const auto status = integ->stepTo(t_end, t_end);
-          if (integ->isSimulationOver() && integ->getTerminationReason() == Integrator::AnUnrecoverableErrorOccurred)
+          if (integ->isSimulationOver() &&
+              integ->getTerminationReason() == Integrator::AnUnrecoverableErrorOccurred)
             throw std::runtime_error("integrator failed");
-          if (status == Integrator::TimeHasAdvanced || status == Integrator::ReachedScheduledEvent ||
+          if (status == Integrator::TimeHasAdvanced ||
+              status == Integrator::ReachedScheduledEvent ||
               status == Integrator::ReachedReportTime) {
             const State& s = integ->getState();
             if (times.empty() || s.getTime() > times.back()) record(s, knots, times);
           }
           if (integ->getNumStepsTaken() > opt_.max_internal_steps)
-            throw std::runtime_error("more than " + std::to_string(opt_.max_internal_steps) + " integrator steps");
+            throw std::runtime_error("more than " + std::to_string(opt_.max_internal_steps) +
+                                     " integrator steps");
           checkFinite(integ->getTime());
         }
       }

@@ -1,5 +1,6 @@
 #include "twin/trace.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -7,20 +8,21 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
-#include "common/json.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/json.hpp"
 
 namespace dtwin {
 
 std::size_t gridIndex(double t, double rate, double duration, const std::string& where) {
   const double k = t * rate;
   if (!std::isfinite(t) || std::abs(k - std::round(k)) > 1e-6)
-    throw InputError(where, formatExact(t) + " s is not on the output grid (multiples of " + formatExact(1.0 / rate) + " s)");
+    throw InputError(where, formatExact(t) + " s is not on the output grid (multiples of " +
+                                formatExact(1.0 / rate) + " s)");
   if (t < 0 || t > duration + 1e-9)
-    throw InputError(where, formatExact(t) + " s lies outside the scenario (0 .. " + formatExact(duration) + " s)");
+    throw InputError(where, formatExact(t) + " s lies outside the scenario (0 .. " +
+                                formatExact(duration) + " s)");
   return static_cast<std::size_t>(std::llround(k));
 }
 

@@ -30,10 +30,12 @@ class Trace {
   const std::vector<double>& column(std::size_t i) const { return columns_[i]; }
   /// CSV text: header of channel names, then rows; `selected` empty means all channels;
   /// rows with time outside [t_lo, t_hi] are skipped. Numbers use the shortest exact form.
-  std::string toCsv(const std::vector<std::string>& selected = {}, double t_lo = -1e300, double t_hi = 1e300) const;
+  std::string toCsv(const std::vector<std::string>& selected = {}, double t_lo = -1e300,
+                    double t_hi = 1e300) const;
   /// The rows and channels toCsv writes, as a trace: the same columns in the same order, the
   /// same rows, the same values (the Python module's simulate returns these).
-  Trace select(const std::vector<std::string>& selected = {}, double t_lo = -1e300, double t_hi = 1e300) const;
+  Trace select(const std::vector<std::string>& selected = {}, double t_lo = -1e300,
+               double t_hi = 1e300) const;
 
  private:
   /// The column indices of `selected` (all when empty), and whether row `r` lies in [t_lo, t_hi]
@@ -56,25 +58,25 @@ class Trace {
 /// first and last, the maximum taken over the four rows' span. For content at frequency f the
 /// interior bound is 3/128 (2 pi f h)^4 of its amplitude: 6e-6 at 20 Hz and 1 kHz output.
 struct GridSample {
-  std::size_t row = 0;                  ///< first row of the stencil
-  int count = 1;                        ///< rows used: 1 (on the grid) or 4
+  std::size_t row = 0;  ///< first row of the stencil
+  int count = 1;        ///< rows used: 1 (on the grid) or 4
   std::array<double, 4> weight{1.0, 0.0, 0.0, 0.0};
   /// The value of `column` at the time (the column has the grid's rows).
   double of(const std::vector<double>& column) const {
     double v = 0.0;
-    for (int i = 0; i < count; ++i) v += weight[static_cast<std::size_t>(i)] * column[row + static_cast<std::size_t>(i)];
+    for (int i = 0; i < count; ++i)
+      v += weight[static_cast<std::size_t>(i)] * column[row + static_cast<std::size_t>(i)];
     return v;
   }
 };
 /// The stencil of time `t` (seconds, >= 0) on a grid of `rows` rows at `rate` Hz. Precondition
-/// (checked, std::logic_error): t lies within the grid (t <= (rows - 1) / rate + 1e-6 rows), rate > 0,
-/// rows >= 1. With fewer than four rows an off-grid time is read linearly.
+/// (checked, std::logic_error): t lies within the grid (t <= (rows - 1) / rate + 1e-6 rows), rate >
+/// 0, rows >= 1. With fewer than four rows an off-grid time is read linearly.
 GridSample gridSample(double t, double rate, std::size_t rows);
 /// True when `t` lies on the grid of `rate` Hz (within 1e-6 rows).
 bool onGrid(double t, double rate);
 /// The row of time `t` on the grid of `rate` Hz over [0, duration]; InputError(where, ...) when
 /// `t` is not on the grid or lies outside.
 std::size_t gridIndex(double t, double rate, double duration, const std::string& where);
-
 
 }  // namespace dtwin

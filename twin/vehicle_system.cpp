@@ -11,13 +11,16 @@ namespace {
 
 std::size_t contiguous(const std::vector<int>& slots) {
   DTWIN_CHECK(!slots.empty(), "empty slot list");
-  for (std::size_t i = 1; i < slots.size(); ++i) DTWIN_CHECK(slots[i] == slots[0] + static_cast<int>(i), "slots not contiguous");
+  for (std::size_t i = 1; i < slots.size(); ++i)
+    DTWIN_CHECK(slots[i] == slots[0] + static_cast<int>(i), "slots not contiguous");
   return static_cast<std::size_t>(slots[0]);
 }
 
 }  // namespace
 
-VehicleSystem::VehicleSystem(const Model& m, bool filter_states, bool link_hubs) : model(m) { build(filter_states, link_hubs); }
+VehicleSystem::VehicleSystem(const Model& m, bool filter_states, bool link_hubs) : model(m) {
+  build(filter_states, link_hubs);
+}
 
 double VehicleSystem::prescribedHubForce(const State& s, int c, double hub_zdd) const {
   // The wheel's balance along the strut axis z (it slides along it): the road's vertical L, its
@@ -35,13 +38,17 @@ void VehicleSystem::installAxleCouplings() {
   for (std::size_t i = 0; i < M.effects().size(); ++i)
     if (M.effects()[i]->kind() == EffectKind::AxleCoupling)
       for (int ax = 0; ax < 2; ++ax) {
-        auto* ce = new AxleCouplingElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), &struts[2 * ax],
-                                           &struts[2 * ax + 1], ax == 0);
+        auto* ce = new AxleCouplingElement(&ctx, M.effects()[i].get(),
+                                           static_cast<std::size_t>(M.effectSlots()[i][0]),
+                                           &struts[2 * ax], &struts[2 * ax + 1], ax == 0);
         Force::Custom(forces, ce);
         if (!prescribed_hubs) continue;
-        for (int side = 0; side < 2; ++side) {  // the coupling pushes the left strut by F, the right by -F
+        for (int side = 0; side < 2;
+             ++side) {  // the coupling pushes the left strut by F, the right by -F
           auto& f = strut_force_[2 * ax + side];
-          f = [f, ce, sign = side == 0 ? 1.0 : -1.0](const State& s) { return f(s) + sign * ce->pairForce(s); };
+          f = [f, ce, sign = side == 0 ? 1.0 : -1.0](const State& s) {
+            return f(s) + sign * ce->pairForce(s);
+          };
         }
       }
 }
@@ -49,13 +56,19 @@ void VehicleSystem::installAxleCouplings() {
 void VehicleSystem::build(bool filter_states, bool link_hubs) {
   const Model& M = model;
   const VehicleData& d = M.vehicle();
-  prescribed_hubs = M.tire().followsSignal() && M.topology() == SuspensionTopology::MacPherson && !link_hubs;
+  prescribed_hubs =
+      M.tire().followsSignal() && M.topology() == SuspensionTopology::MacPherson && !link_hubs;
   std::vector<StrutElement*> slider_elems;
   const Rotation xToZ(-Pi / 2, YAxis);  // a slider's x axis along the parent's z
   const Rotation zToX(Pi / 2, YAxis);   // a pin's z axis along the parent's x
-  heave = MobilizedBody::Slider(matter.Ground(), Transform(xToZ), Body::Massless(), Transform(xToZ));
-  chassis = MobilizedBody::Universal(heave, Transform(), Body::Rigid(MassProperties(d.chassis_mass, Vec3(0), Inertia(d.ixx, d.iyy, d.izz))), Transform());
-  const double z_wc = -(d.cg_height - M.table().value("tire.unloaded_radius_m"));  // wheel centre below CG
+  heave =
+      MobilizedBody::Slider(matter.Ground(), Transform(xToZ), Body::Massless(), Transform(xToZ));
+  chassis = MobilizedBody::Universal(
+      heave, Transform(),
+      Body::Rigid(MassProperties(d.chassis_mass, Vec3(0), Inertia(d.ixx, d.iyy, d.izz))),
+      Transform());
+  const double z_wc =
+      -(d.cg_height - M.table().value("tire.unloaded_radius_m"));  // wheel centre below CG
   const Body::Rigid wheelBody(MassProperties(d.wheel_mass, Vec3(0), Inertia(1e-3)));
   std::vector<std::pair<MobilizedBody, double>> massive = {{chassis, d.chassis_mass}};
   for (int c = 0; c < 4; ++c) {
@@ -69,25 +82,32 @@ void VehicleSystem::build(bool filter_states, bool link_hubs) {
       struts[c].ctx = &ctx;
       struts[c].tire = &tires[static_cast<std::size_t>(c)];
     } else if (M.topology() == SuspensionTopology::MacPherson) {
-      wheels[c] = MobilizedBody::Slider(chassis, Transform(xToZ, Vec3(x, y, z_wc)), wheelBody, Transform(xToZ));
+      wheels[c] = MobilizedBody::Slider(chassis, Transform(xToZ, Vec3(x, y, z_wc)), wheelBody,
+                                        Transform(xToZ));
       struts[c] = {chassis, wheels[c], Vec3(x, y, z_wc), Vec3(0)};
     }
   }
   if (M.topology() == SuspensionTopology::SolidAxle) {
-    const Body::Rigid axleBody(MassProperties(d.axle_mass, Vec3(0), Inertia(d.axle_ixx, d.axle_ixx, d.axle_ixx)));
+    const Body::Rigid axleBody(
+        MassProperties(d.axle_mass, Vec3(0), Inertia(d.axle_ixx, d.axle_ixx, d.axle_ixx)));
     for (int ax = 0; ax < 2; ++ax) {
       const double x = ax == 0 ? d.a : -d.b;
-      axle_slider[ax] = MobilizedBody::Slider(chassis, Transform(xToZ, Vec3(x, 0, z_wc)), Body::Massless(), Transform(xToZ));
+      axle_slider[ax] = MobilizedBody::Slider(chassis, Transform(xToZ, Vec3(x, 0, z_wc)),
+                                              Body::Massless(), Transform(xToZ));
       axle[ax] = MobilizedBody::Pin(axle_slider[ax], Transform(zToX), axleBody, Transform(zToX));
       massive.push_back({axle[ax], d.axle_mass});
       for (int side = 0; side < 2; ++side) {
         const int c = 2 * ax + side;
         const double sgn = side == 0 ? 1.0 : -1.0;
-        wheels[c] = MobilizedBody::Slider(axle[ax], Transform(xToZ, Vec3(0, sgn * 0.5 * d.track, 0)), wheelBody, Transform(xToZ));
-        struts[c] = {chassis, axle[ax], Vec3(x, sgn * 0.5 * d.spring_track, z_wc), Vec3(0, sgn * 0.5 * d.spring_track, 0)};
+        wheels[c] = MobilizedBody::Slider(
+            axle[ax], Transform(xToZ, Vec3(0, sgn * 0.5 * d.track, 0)), wheelBody, Transform(xToZ));
+        struts[c] = {chassis, axle[ax], Vec3(x, sgn * 0.5 * d.spring_track, z_wc),
+                     Vec3(0, sgn * 0.5 * d.spring_track, 0)};
         // Wheel/axle compliant interface (paper eq. 5): no effects, preload from the data.
         StrutGeometry iface{axle[ax], wheels[c], Vec3(0, sgn * 0.5 * d.track, 0), Vec3(0)};
-        auto* ie = new StrutElement(&ctx, &M, &M.interfaceLaw(), iface, contiguous(M.interfaceSlots()), M.interfacePreloadSlot(), 0.0, false);
+        auto* ie =
+            new StrutElement(&ctx, &M, &M.interfaceLaw(), iface, contiguous(M.interfaceSlots()),
+                             M.interfacePreloadSlot(), 0.0, false);
         ie->bind_slider_ = true;  // the wheel slides on the axle along the axle's z
         slider_elems.push_back(ie);
         Force::Custom(forces, ie);
@@ -96,9 +116,10 @@ void VehicleSystem::build(bool filter_states, bool link_hubs) {
   }
   for (int c = 0; c < 4; ++c) {
     if (!prescribed_hubs) massive.push_back({wheels[c], d.wheel_mass});
-    auto* se = new StrutElement(&ctx, &M, &M.strut(), struts[c], contiguous(M.suspensionSlots()), -1, strut_preload[c], true,
-                                filter_states, forces.getMySubsystemIndex());
-      se->placeAt(c);
+    auto* se =
+        new StrutElement(&ctx, &M, &M.strut(), struts[c], contiguous(M.suspensionSlots()), -1,
+                         strut_preload[c], true, filter_states, forces.getMySubsystemIndex());
+    se->placeAt(c);
     se->factors_ = M.strutFactors()[static_cast<std::size_t>(c)];
     if (prescribed_hubs) {
       strut_force_[c] = [se](const State& s) { return se->totalForce(s); };
@@ -127,9 +148,11 @@ void VehicleSystem::build(bool filter_states, bool link_hubs) {
       if (!M.effectActsAt(i, c))
         continue;  // installed at another corner
       else if (M.effects()[i]->kind() == EffectKind::TireInput)
-        tc.filters.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
+        tc.filters.push_back(
+            {M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
       else if (M.effects()[i]->kind() == EffectKind::TireForce)
-        tc.scalers.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
+        tc.scalers.push_back(
+            {M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
       else if (M.effects()[i]->kind() == EffectKind::TireLoad)
         tc.loads.push_back({M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0])});
     tires[c] = tc;
@@ -141,7 +164,9 @@ void VehicleSystem::build(bool filter_states, bool link_hubs) {
   installAxleCouplings();
   for (std::size_t i = 0; i < M.effects().size(); ++i)
     if (M.effects()[i]->kind() == EffectKind::ChassisForce)
-      Force::Custom(forces, new ChassisForceElement(&ctx, M.effects()[i].get(), static_cast<std::size_t>(M.effectSlots()[i][0]), heave, chassis));
+      Force::Custom(forces, new ChassisForceElement(&ctx, M.effects()[i].get(),
+                                                    static_cast<std::size_t>(M.effectSlots()[i][0]),
+                                                    heave, chassis));
   Force::Custom(forces, new BodyLoadElement(&ctx, massive, d.gravity));
   ctx.traction_per_wheel_per_accel = d.total_mass(M.topology()) / 4.0;
   system.realizeTopology();
@@ -153,8 +178,10 @@ void VehicleSystem::build(bool filter_states, bool link_hubs) {
   chassis_u = chassis.getFirstUIndex(default_state);
   for (int c = 0; c < 4; ++c) {
     if (prescribed_hubs) continue;
-    if (M.topology() == SuspensionTopology::MacPherson) struts[c].bindSlider(default_state);
-    else struts[c].bindAxleSeat(default_state, axle_slider[c / 2], axle[c / 2], struts[c].st_lower[1]);
+    if (M.topology() == SuspensionTopology::MacPherson)
+      struts[c].bindSlider(default_state);
+    else
+      struts[c].bindAxleSeat(default_state, axle_slider[c / 2], axle[c / 2], struts[c].st_lower[1]);
   }
 }
 

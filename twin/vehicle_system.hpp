@@ -39,7 +39,7 @@ struct VehicleSystem {
   bool prescribed_hubs = false;
   std::array<MobilizedBody, 4> wheels;
   std::array<MobilizedBody, 2> axle_slider, axle;  // solid axle only
-  std::array<StrutGeometry, 4> struts;               // main suspension strut per corner
+  std::array<StrutGeometry, 4> struts;             // main suspension strut per corner
   std::array<TireCorner, 4> tires;
   std::array<double, 4> strut_preload{};
   State default_state;
@@ -57,7 +57,8 @@ struct VehicleSystem {
   /// The AxleCoupling effects' elements on each axle (with prescribed hubs, their share of each
   /// corner's strut_force_ too). After the struts.
   void installAxleCouplings();
-  std::array<std::function<double(const State&)>, 4> strut_force_;  // prescribed hubs: strut + coupling, compression positive
+  std::array<std::function<double(const State&)>, 4>
+      strut_force_;  // prescribed hubs: strut + coupling, compression positive
 };
 
 }  // namespace dtwin::sim

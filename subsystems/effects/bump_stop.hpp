@@ -12,7 +12,8 @@ class BumpStopEffect final : public Effect {
   std::string name() const override { return "bump_stop"; }
   std::string description() const override { return "progressive rubber bump stop in compression"; }
   std::string signature() const override {
-    return "residual grows like a knee in force vs suspension deflection beyond the gap; only at large compression (bump peaks)";
+    return "residual grows like a knee in force vs suspension deflection beyond the gap; only at "
+           "large compression (bump peaks)";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   bool screenedAtEachCorner() const override { return true; }  // a part that wears at one strut

@@ -13,7 +13,8 @@ class DamperAsymmetryEffect final : public Effect {
   std::string name() const override { return "damper_asymmetry"; }
   std::string description() const override { return "rebound/compression damping ratio"; }
   std::string signature() const override {
-    return "residual linear in deflection rate on the rebound side only (slope change at zero rate)";
+    return "residual linear in deflection rate on the rebound side only (slope change at zero "
+           "rate)";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   bool screenedAtEachCorner() const override { return true; }  // a part that wears at one strut

@@ -1,5 +1,6 @@
 #pragma once
-// The `groundhook` effect (docs/model.md, "Controlled suspensions"; registered in subsystems/effect.cpp).
+// The `groundhook` effect (docs/model.md, "Controlled suspensions"; registered in
+// subsystems/effect.cpp).
 #include "subsystems/effect.hpp"
 
 namespace dtwin {
@@ -14,15 +15,19 @@ class GroundhookEffect final : public Effect {
   GroundhookEffect();
   std::string name() const override { return "groundhook"; }
   std::string description() const override {
-    return "groundhook controller: an actuator force -c_gh vw on the wheel at each corner (its reaction on the body), vw the wheel's absolute vertical velocity";
+    return "groundhook controller: an actuator force -c_gh vw on the wheel at each corner (its "
+           "reaction on the body), vw the wheel's absolute vertical velocity";
   }
   std::string signature() const override {
-    return "wheel hop (10-15 Hz) damped against the ground: wheel-hop band residual, with the reaction felt by the body";
+    return "wheel hop (10-15 Hz) damped against the ground: wheel-hop band residual, with the "
+           "reaction felt by the body";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
   bool needsMotion() const override { return true; }
-  double calcStrutForce(const StrutState& s, ParamValues p) const override { return p[0] * s.wheel_velocity_mps; }
+  double calcStrutForce(const StrutState& s, ParamValues p) const override {
+    return p[0] * s.wheel_velocity_mps;
+  }
 
  private:
   std::vector<ParameterSpec> specs_;

@@ -11,10 +11,12 @@ class ProgressiveSpringEffect final : public Effect {
   ProgressiveSpringEffect();
   std::string name() const override { return "progressive_spring"; }
   std::string description() const override {
-    return "progressive strut spring: extra force k3 q^3 (tangent stiffness 3 k3 q^2), both directions";
+    return "progressive strut spring: extra force k3 q^3 (tangent stiffness 3 k3 q^2), both "
+           "directions";
   }
   std::string signature() const override {
-    return "residual grows cubically with |suspension deflection|, odd in deflection (compression and rebound); "
+    return "residual grows cubically with |suspension deflection|, odd in deflection (compression "
+           "and rebound); "
            "large-travel events (bump peaks, wheel drops), not small motions; independent of rate";
   }
   EffectKind kind() const override { return EffectKind::Strut; }

@@ -1,5 +1,6 @@
 #pragma once
-// The `road_feedforward` effect (docs/model.md, "Controlled suspensions"; registered in subsystems/effect.cpp).
+// The `road_feedforward` effect (docs/model.md, "Controlled suspensions"; registered in
+// subsystems/effect.cpp).
 #include "subsystems/effect.hpp"
 
 namespace dtwin {
@@ -17,11 +18,13 @@ class RoadFeedforwardEffect final : public Effect {
   RoadFeedforwardEffect();
   std::string name() const override { return "road_feedforward"; }
   std::string description() const override {
-    return "feed-forward actuator: a strut force G vr through a first-order low-pass (time constant tau), vr the road signal's vertical "
+    return "feed-forward actuator: a strut force G vr through a first-order low-pass (time "
+           "constant tau), vr the road signal's vertical "
            "velocity under the wheel (auxiliary state per strut)";
   }
   std::string signature() const override {
-    return "a force in phase with the road's vertical velocity, lagged by tau: residual coherent with the road input at every "
+    return "a force in phase with the road's vertical velocity, lagged by tau: residual coherent "
+           "with the road input at every "
            "frequency below 1/(2 pi tau)";
   }
   EffectKind kind() const override { return EffectKind::StrutFilter; }
@@ -31,7 +34,9 @@ class RoadFeedforwardEffect final : public Effect {
   double calcFilterRate(const StrutState& s, double z, ParamValues p) const override {
     return p[0] != 0.0 ? (p[0] * s.road_velocity_mps - z) / p[1] : 0.0;
   }
-  double calcFilteredStrutForce(const StrutState&, double z, ParamValues p) const override { return p[0] != 0.0 ? z : 0.0; }
+  double calcFilteredStrutForce(const StrutState&, double z, ParamValues p) const override {
+    return p[0] != 0.0 ? z : 0.0;
+  }
 
  private:
   std::vector<ParameterSpec> specs_;

@@ -1,5 +1,6 @@
 #pragma once
-// The `skyhook` effect (docs/model.md, "Controlled suspensions"; registered in subsystems/effect.cpp).
+// The `skyhook` effect (docs/model.md, "Controlled suspensions"; registered in
+// subsystems/effect.cpp).
 #include "subsystems/effect.hpp"
 
 namespace dtwin {
@@ -16,16 +17,20 @@ class SkyhookEffect final : public Effect {
   SkyhookEffect();
   std::string name() const override { return "skyhook"; }
   std::string description() const override {
-    return "skyhook controller: an actuator force -c_sky vb on the body at each corner, vb the body's absolute vertical velocity there";
+    return "skyhook controller: an actuator force -c_sky vb on the body at each corner, vb the "
+           "body's absolute vertical velocity there";
   }
   std::string signature() const override {
-    return "the body's motion damped against the sky: body-mode (1-2 Hz) residual that a passive damper cannot remove without "
+    return "the body's motion damped against the sky: body-mode (1-2 Hz) residual that a passive "
+           "damper cannot remove without "
            "passing more of the road to the body; the wheel-hop band little changed";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }
   bool needsMotion() const override { return true; }
-  double calcStrutForce(const StrutState& s, ParamValues p) const override { return -p[0] * s.body_velocity_mps; }
+  double calcStrutForce(const StrutState& s, ParamValues p) const override {
+    return -p[0] * s.body_velocity_mps;
+  }
 
  private:
   std::vector<ParameterSpec> specs_;

@@ -1,5 +1,6 @@
 #pragma once
-// The `speed_dependent_tire_stiffness` effect (docs/model.md, "Effects"; registered in subsystems/effect.cpp).
+// The `speed_dependent_tire_stiffness` effect (docs/model.md, "Effects"; registered in
+// subsystems/effect.cpp).
 #include "subsystems/effect.hpp"
 
 namespace dtwin {
@@ -12,10 +13,12 @@ class SpeedDependentTireStiffnessEffect final : public Effect {
   SpeedDependentTireStiffnessEffect();
   std::string name() const override { return "speed_dependent_tire_stiffness"; }
   std::string description() const override {
-    return "tire normal force scaled by (1 + c_v v), v the forward speed: the tire stiffens with speed";
+    return "tire normal force scaled by (1 + c_v v), v the forward speed: the tire stiffens with "
+           "speed";
   }
   std::string signature() const override {
-    return "residual proportional to the tire force (about the tire deflection) times the speed: none at rest, "
+    return "residual proportional to the tire force (about the tire deflection) times the speed: "
+           "none at rest, "
            "growing with speed; largest at tire-force peaks (obstacles) and in the wheel-hop band";
   }
   EffectKind kind() const override { return EffectKind::TireForce; }

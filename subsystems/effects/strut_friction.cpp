@@ -5,8 +5,10 @@
 namespace dtwin {
 
 StrutFrictionEffect::StrutFrictionEffect() {
-  specs_ = {effectParameter("force_N", "N", "Coulomb friction force level (off: 0)", 0.0, 0.0, kUnbounded, 0.0, 500.0),
-            effectParameter("smoothing_velocity_mps", "m/s", "tanh smoothing velocity", 0.01, 0.0, kUnbounded, 0.001, 0.05, false)};
+  specs_ = {effectParameter("force_N", "N", "Coulomb friction force level (off: 0)", 0.0, 0.0,
+                            kUnbounded, 0.0, 500.0),
+            effectParameter("smoothing_velocity_mps", "m/s", "tanh smoothing velocity", 0.01, 0.0,
+                            kUnbounded, 0.001, 0.05, false)};
   specs_[1].shape = true;
 }
 double StrutFrictionEffect::calcStrutForce(const StrutState& s, ParamValues v) const {

@@ -10,9 +10,12 @@ class StrutFrictionEffect final : public Effect {
  public:
   StrutFrictionEffect();
   std::string name() const override { return "strut_friction"; }
-  std::string description() const override { return "Coulomb friction in the strut, tanh-smoothed"; }
+  std::string description() const override {
+    return "Coulomb friction in the strut, tanh-smoothed";
+  }
   std::string signature() const override {
-    return "residual is a step in force vs deflection rate at zero rate; strongest on small, slow motions";
+    return "residual is a step in force vs deflection rate at zero rate; strongest on small, slow "
+           "motions";
   }
   EffectKind kind() const override { return EffectKind::Strut; }
   bool screenedAtEachCorner() const override { return true; }  // a part that wears at one strut

@@ -13,9 +13,12 @@ class TireEnvelopingEffect final : public Effect {
  public:
   TireEnvelopingEffect();
   std::string name() const override { return "tire_enveloping"; }
-  std::string description() const override { return "effective road: moving average over the contact length"; }
+  std::string description() const override {
+    return "effective road: moving average over the contact length";
+  }
   std::string signature() const override {
-    return "at short obstacles the measured peak is lower and wider than the model's; residual > 20 Hz near obstacles";
+    return "at short obstacles the measured peak is lower and wider than the model's; residual > "
+           "20 Hz near obstacles";
   }
   EffectKind kind() const override { return EffectKind::TireInput; }
   const std::vector<ParameterSpec>& parameters() const override { return specs_; }

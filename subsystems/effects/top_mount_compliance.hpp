@@ -1,5 +1,6 @@
 #pragma once
-// The `top_mount_compliance` effect (docs/model.md, "Effects"; registered in subsystems/effect.cpp).
+// The `top_mount_compliance` effect (docs/model.md, "Effects"; registered in
+// subsystems/effect.cpp).
 #include "subsystems/effect.hpp"
 
 namespace dtwin {
@@ -16,11 +17,13 @@ class TopMountComplianceEffect final : public Effect {
   TopMountComplianceEffect();
   std::string name() const override { return "top_mount_compliance"; }
   std::string description() const override {
-    return "rubber top mount of compliance C in series with the damper: damper force low-pass filtered with "
+    return "rubber top mount of compliance C in series with the damper: damper force low-pass "
+           "filtered with "
            "tau = c C (auxiliary state per strut)";
   }
   std::string signature() const override {
-    return "damping force attenuated and lagged above the corner frequency 1/(2 pi c C) (above 12 Hz over the prior at c = 2500 N s/m): "
+    return "damping force attenuated and lagged above the corner frequency 1/(2 pi c C) (above 12 "
+           "Hz over the prior at c = 2500 N s/m): "
            "residual concentrated in the wheel-hop band (10-20 Hz), little in body modes (1-2 Hz)";
   }
   EffectKind kind() const override { return EffectKind::StrutFilter; }

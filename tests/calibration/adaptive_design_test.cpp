@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "calibration/adaptive_design.hpp"
@@ -58,7 +58,8 @@ TEST(AdaptiveDesign, MixtureDensityMatchesDirectFormulas) {
   u.region = square();
   u.drawn = 300;
   const double vol = 0.7 * 0.4;
-  const Eigen::Vector2d inside = u.region.at(Eigen::Vector2d(0.1, 0.1)), outside = u.region.at(Eigen::Vector2d(0.5, 0.0));
+  const Eigen::Vector2d inside = u.region.at(Eigen::Vector2d(0.1, 0.1)),
+                        outside = u.region.at(Eigen::Vector2d(0.5, 0.0));
   EXPECT_NEAR(logMixtureDensity({u}, inside), std::log(300 / vol), 1e-12);
   EXPECT_EQ(logMixtureDensity({u}, outside), -std::numeric_limits<double>::infinity());
   DesignRound g;
@@ -72,11 +73,14 @@ TEST(AdaptiveDesign, MixtureDensityMatchesDirectFormulas) {
   g.prepare();
   auto normal = [&](const Eigen::Vector2d& x, const Eigen::Vector2d& m) {
     const Eigen::Vector2d e = x - m;
-    return std::exp(-0.5 * e.dot(g.cov.inverse() * e)) / (2 * M_PI * std::sqrt(g.cov.determinant()));
+    return std::exp(-0.5 * e.dot(g.cov.inverse() * e)) /
+           (2 * M_PI * std::sqrt(g.cov.determinant()));
   };
   const Eigen::Vector2d x(0.45, 0.52);
-  const double q = 300 / vol * (u.region.contains(x) ? 1.0 : 0.0) +
-                   100 * 0.5 * (normal(x, g.centres.row(0).transpose()) + normal(x, g.centres.row(1).transpose()));
+  const double q =
+      300 / vol * (u.region.contains(x) ? 1.0 : 0.0) +
+      100 * 0.5 *
+          (normal(x, g.centres.row(0).transpose()) + normal(x, g.centres.row(1).transpose()));
   EXPECT_NEAR(logMixtureDensity({u, g}, x), std::log(q), 1e-12);
 }
 
@@ -92,7 +96,8 @@ TEST(AdaptiveDesign, WeightedGibbsDrawsInProportionToTheDesignWeights) {
   EXPECT_NEAR(share, 0.75, 4 * std::sqrt(0.75 * 0.25 / c.index.size()));
   // Equal weights are the unweighted sampler, bit for bit.
   const std::vector<double> sse = {10.0, 12.0, 15.0, 30.0};
-  const GibbsChains a = runGriddyGibbs(sse, 5, o), b = runGriddyGibbs(sse, 5, o, {-2.0, -2.0, -2.0, -2.0});
+  const GibbsChains a = runGriddyGibbs(sse, 5, o),
+                    b = runGriddyGibbs(sse, 5, o, {-2.0, -2.0, -2.0, -2.0});
   EXPECT_EQ(a.index, b.index);
   EXPECT_EQ(a.tau, b.tau);
   EXPECT_THROW(runGriddyGibbs(sse, 5, o, {0.0, 1.0}), InputError);
@@ -117,7 +122,8 @@ TEST(AdaptiveDesign, RidgeTraceAndKernelRoundsFollowACurvedRidge) {
   for (int i = 0; i < g; ++i)
     for (int j = 0; j < g; ++j) {
       const double z1 = (i + 0.5) / g, z2 = (j + 0.5) / g;
-      const double w = std::exp(-(1e-3 + 0.5 * n) * (std::log(1e-3 + 0.5 * f(z1, z2)) - std::log(1e-3 + 0.5 * sse0)));
+      const double w = std::exp(-(1e-3 + 0.5 * n) *
+                                (std::log(1e-3 + 0.5 * f(z1, z2)) - std::log(1e-3 + 0.5 * sse0)));
       sw += w;
       m[0] += w * z1;
       m[1] += w * z2;
@@ -141,7 +147,8 @@ TEST(AdaptiveDesign, RidgeTraceAndKernelRoundsFollowACurvedRidge) {
   };
   const SseFunction sse = [&](const std::vector<double>& t) { return f(t[0], t[1]); };
   const ResidualFunction residuals = [&](const std::vector<double>& t) {
-    return std::vector<double>{std::sqrt(A) * (t[1] - 0.5 - 2.0 * (t[0] - 0.5) * (t[0] - 0.5)), std::sqrt(B) * (t[0] - 0.5), std::sqrt(sse0)};
+    return std::vector<double>{std::sqrt(A) * (t[1] - 0.5 - 2.0 * (t[0] - 0.5) * (t[0] - 0.5)),
+                               std::sqrt(B) * (t[0] - 0.5), std::sqrt(sse0)};
   };
   BoxProblem bp;
   bp.theta_hat = {0.5, 0.5};
@@ -153,7 +160,8 @@ TEST(AdaptiveDesign, RidgeTraceAndKernelRoundsFollowACurvedRidge) {
   ASSERT_GT(r.ridge.rows(), 4) << "the weak axis should have been traced";
   // The trace follows the bend: its far floor points lie off the straight axis by about 2 t².
   double bent = 0;
-  for (Eigen::Index k = 0; k < r.ridge.rows(); ++k) bent = std::max(bent, std::abs(r.ridge(k, 1) - 0.5 - 2 * std::pow(r.ridge(k, 0) - 0.5, 2)));
+  for (Eigen::Index k = 0; k < r.ridge.rows(); ++k)
+    bent = std::max(bent, std::abs(r.ridge(k, 1) - 0.5 - 2 * std::pow(r.ridge(k, 0) - 0.5, 2)));
   EXPECT_LT(bent, 0.002) << "ridge floor points off the true floor";
   AdaptiveDesignOptions o;
   o.first_points = 200;
@@ -178,7 +186,8 @@ TEST(AdaptiveDesign, RidgeTraceAndKernelRoundsFollowACurvedRidge) {
   double w_sum = 0, a[2] = {0, 0}, b[2] = {0, 0};
   for (Eigen::Index k = 0; k < d.points.rows(); ++k) {
     const auto kk = static_cast<std::size_t>(k);
-    w[kk] = std::exp(d.log_weight[kk] - (1e-3 + 0.5 * n) * (std::log(1e-3 + 0.5 * d.sse[kk]) - std::log(1e-3 + 0.5 * sse0)));
+    w[kk] = std::exp(d.log_weight[kk] - (1e-3 + 0.5 * n) * (std::log(1e-3 + 0.5 * d.sse[kk]) -
+                                                            std::log(1e-3 + 0.5 * sse0)));
     w_sum += w[kk];
     for (int c = 0; c < 2; ++c) {
       a[c] += w[kk] * d.points(k, c);
@@ -190,7 +199,8 @@ TEST(AdaptiveDesign, RidgeTraceAndKernelRoundsFollowACurvedRidge) {
     EXPECT_NEAR(a[c], m[c], 0.1 * sd[c]) << "z" << c + 1;
     EXPECT_NEAR(std::sqrt(b[c] / w_sum - a[c] * a[c]), sd[c], 0.1 * sd[c]) << "z" << c + 1;
     std::vector<std::pair<double, double>> pw;
-    for (Eigen::Index k = 0; k < d.points.rows(); ++k) pw.push_back({d.points(k, c), w[static_cast<std::size_t>(k)] / w_sum});
+    for (Eigen::Index k = 0; k < d.points.rows(); ++k)
+      pw.push_back({d.points(k, c), w[static_cast<std::size_t>(k)] / w_sum});
     std::sort(pw.begin(), pw.end());
     double cum = 0, lo = 0, hi = 0;
     for (const auto& [x, q] : pw) {
@@ -198,7 +208,8 @@ TEST(AdaptiveDesign, RidgeTraceAndKernelRoundsFollowACurvedRidge) {
       if (cum < 0.975 && cum + q >= 0.975) hi = x;
       cum += q;
     }
-    const double glo = gridQuantile(c == 0 ? w1 : w2, 0.025), ghi = gridQuantile(c == 0 ? w1 : w2, 0.975);
+    const double glo = gridQuantile(c == 0 ? w1 : w2, 0.025),
+                 ghi = gridQuantile(c == 0 ? w1 : w2, 0.975);
     EXPECT_NEAR(lo, glo, 0.1 * (ghi - glo)) << "z" << c + 1 << " 2.5 % quantile";
     EXPECT_NEAR(hi, ghi, 0.1 * (ghi - glo)) << "z" << c + 1 << " 97.5 % quantile";
   }
@@ -214,7 +225,8 @@ TEST(AdaptiveDesign, OneRoundIsThePapersUniformDesign) {
   AdaptiveDesignOptions o;
   o.adaptive = false;
   o.first_points = 150;
-  const AdaptiveDesign d = runAdaptiveDesign(r, 10, o, [](const Eigen::MatrixXd& p, int) { return std::vector<double>(p.rows(), 5.0); });
+  const AdaptiveDesign d = runAdaptiveDesign(
+      r, 10, o, [](const Eigen::MatrixXd& p, int) { return std::vector<double>(p.rows(), 5.0); });
   ASSERT_EQ(d.rounds.size(), 1u);
   EXPECT_EQ(d.rounds[0].kind, "uniform");
   EXPECT_NEAR(static_cast<double>(d.points.rows()), 150.0, 15.0);
@@ -247,8 +259,8 @@ struct Tube {
   double bend = 0.0;
   int n = 5995;
   explicit Tube(double b) : bend(b) {
-    C << 1.18e-5, 5.07e-5, 4.6e-6, 5.0e-7, 5.07e-5, 2.56e-4, 2.07e-5, 6.4e-6, 4.6e-6, 2.07e-5, 2.93e-6, 2.8e-7, 5.0e-7, 6.4e-6,
-        2.8e-7, 6.1e-7;
+    C << 1.18e-5, 5.07e-5, 4.6e-6, 5.0e-7, 5.07e-5, 2.56e-4, 2.07e-5, 6.4e-6, 4.6e-6, 2.07e-5,
+        2.93e-6, 2.8e-7, 5.0e-7, 6.4e-6, 2.8e-7, 6.1e-7;
     P = C.inverse();
     U = Eigen::LLT<Eigen::Matrix4d>(P).matrixU();
   }
@@ -279,7 +291,8 @@ struct Tube {
     o.seed = 3;
     return runAdaptiveDesign(r, n, o, [&](const Eigen::MatrixXd& p, int) {
       std::vector<double> s;
-      for (Eigen::Index i = 0; i < p.rows(); ++i) s.push_back(sse({p(i, 0), p(i, 1), p(i, 2), p(i, 3)}));
+      for (Eigen::Index i = 0; i < p.rows(); ++i)
+        s.push_back(sse({p(i, 0), p(i, 1), p(i, 2), p(i, 3)}));
       return s;
     });
   }
@@ -308,8 +321,11 @@ TEST(AdaptiveDesign, RidgeKernelsCarryTheExactCrossSectionOfAGaussianPosterior) 
   const Eigen::MatrixXd W = svd.matrixV().rightCols(3);
   for (std::size_t q = 0; q < r.ridge_cov.size(); ++q) {
     ASSERT_EQ(r.ridge_cov[q].rows(), 4) << "ridge point " << q;
-    const Eigen::MatrixXd got = W.transpose() * r.ridge_cov[q] * W, want = W.transpose() * cross * W;
-    EXPECT_LT((got - want).norm(), 1e-4 * want.norm()) << "ridge point " << q << "\n" << got << "\n" << want;
+    const Eigen::MatrixXd got = W.transpose() * r.ridge_cov[q] * W,
+                          want = W.transpose() * cross * W;
+    EXPECT_LT((got - want).norm(), 1e-4 * want.norm()) << "ridge point " << q << "\n"
+                                                       << got << "\n"
+                                                       << want;
   }
   const AdaptiveDesign d = tube.design(r, 1);
   ASSERT_EQ(d.rounds.size(), 2u);
@@ -326,6 +342,8 @@ TEST(AdaptiveDesign, ABentTubeIsFollowedByLocalKernels) {
   const AdaptiveDesign d = tube.design(r, 1);
   ASSERT_EQ(d.rounds.size(), 2u);
   const auto& own = d.rounds[1].own_cov;
-  EXPECT_GT(std::count_if(own.begin(), own.end(), [](const Eigen::MatrixXd& m) { return m.size() > 0; }), 25);
+  EXPECT_GT(
+      std::count_if(own.begin(), own.end(), [](const Eigen::MatrixXd& m) { return m.size() > 0; }),
+      25);
   EXPECT_GT(d.rounds[1].ess, 0.25 * d.rounds[1].count) << "round 0 ESS " << d.rounds[0].ess;
 }

@@ -67,7 +67,8 @@ TEST(Bounds, ALowerBoundAtThePhysicalLimitSaysTheStructureDiffers) {
 TEST(Bounds, APosteriorPiledAgainstABoundIsAFindingEvenWithTheOptimumInside) {
   BoundInputs in = twoValues();
   Eigen::MatrixXd design(4, 2);
-  design << 3000, 1990, 3000, 1995, 3000, 1999, 3000, 1500;  // mass: 3 of 4 draws within 2 % (20 kg) of 2000
+  design << 3000, 1990, 3000, 1995, 3000, 1999, 3000,
+      1500;  // mass: 3 of 4 draws within 2 % (20 kg) of 2000
   in.design = &design;
   in.draws = {0, 1, 2, 3};
   in.optimum[1] = 1900.0;
@@ -108,5 +109,6 @@ TEST(Bounds, FindingsRoundTripThroughJson) {
   const BoundFinding back = BoundFinding::fromJson(f[0].toJson());
   EXPECT_EQ(back.sentence(), f[0].sentence());
   EXPECT_TRUE(std::isnan(back.limit));
-  EXPECT_NE(back.sentence().find("no physical limit is known"), std::string::npos) << back.sentence();
+  EXPECT_NE(back.sentence().find("no physical limit is known"), std::string::npos)
+      << back.sentence();
 }

@@ -46,10 +46,14 @@ TEST_F(CalibrateCli, BadInputExitsTwoWithOneLine) {
   struct Case {
     std::string args, expect;
   } cases[] = {
-      {"calibrate --data " + (kTmp() / "missing.csv").string() + " --out " + (kTmp() / "o").string(), "lab data file not found"},
-      {"calibrate --data " + lab + " --assembly M9 --out " + (kTmp() / "o").string(), "unknown assembly 'M9'"},
+      {"calibrate --data " + (kTmp() / "missing.csv").string() + " --out " +
+           (kTmp() / "o").string(),
+       "lab data file not found"},
+      {"calibrate --data " + lab + " --assembly M9 --out " + (kTmp() / "o").string(),
+       "unknown assembly 'M9'"},
       // The library names the field (calibration.gibbs_burn_in); the CLI shows it as the flag.
-      {"calibrate --data " + lab + " --iterations 100 --burn-in 100 --out " + (kTmp() / "o").string(),
+      {"calibrate --data " + lab + " --iterations 100 --burn-in 100 --out " +
+           (kTmp() / "o").string(),
        "error: --burn-in: must be below the number of Gibbs iterations (100), got 100"},
       {"calibrate --data " + lab + "@nowhere --out " + (kTmp() / "o").string(), "nowhere"},
   };
@@ -63,16 +67,22 @@ TEST_F(CalibrateCli, BadInputExitsTwoWithOneLine) {
 }
 
 TEST_F(CalibrateCli, KilledRunResumesToIdenticalFiles) {
-  const std::string base = std::string(DTWIN_TWIN_EXE) + " calibrate --quiet --assembly M3 --starts 1 --lhs-points 300 --max-rounds 1 --ridge-steps 0 --iterations 2000 " +
+  const std::string base = std::string(DTWIN_TWIN_EXE) +
+                           " calibrate --quiet --assembly M3 --starts 1 --lhs-points 300 "
+                           "--max-rounds 1 --ridge-steps 0 --iterations 2000 " +
                            "--burn-in 500 --threads 1 --data " + (kTmp() / "lab.csv").string();
   ASSERT_EQ(std::system((base + " --out " + (kTmp() / "whole").string()).c_str()), 0);
   // Start the same calibration in the background, kill it with SIGKILL once the design journal
   // holds 30 points, then rerun the same command.
   const fs::path cut = kTmp() / "cut", journal = cut / "M3" / "design_journal.csv";
-  ASSERT_EQ(std::system((base + " --out " + cut.string() + " & echo $! > " + (kTmp() / "pid").string()).c_str()), 0);
+  ASSERT_EQ(
+      std::system(
+          (base + " --out " + cut.string() + " & echo $! > " + (kTmp() / "pid").string()).c_str()),
+      0);
   const auto t0 = std::chrono::steady_clock::now();
   while (!(fs::exists(journal) && lines(journal) >= 31)) {
-    ASSERT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(120)) << "the design stage never started";
+    ASSERT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(120))
+        << "the design stage never started";
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ASSERT_EQ(std::system(("kill -9 $(cat " + (kTmp() / "pid").string() + ")").c_str()), 0);

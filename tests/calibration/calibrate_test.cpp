@@ -76,9 +76,12 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
   Fixture f;
   const fs::path dir = fs::temp_directory_path() / "dtwin_calibrate_threads";
   fs::remove_all(dir);
-  const auto r1 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(1), (dir / "t1").string(), "x");
-  const auto r2 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "t2").string(), "x");
-  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json", "profile.json"})
+  const auto r1 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(1),
+                                    (dir / "t1").string(), "x");
+  const auto r2 = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2),
+                                    (dir / "t2").string(), "x");
+  for (const char* file :
+       {"posterior.csv", "design.csv", "optimum.json", "box.json", "profile.json"})
     EXPECT_EQ(slurp(dir / "t1" / file), slurp(dir / "t2" / file)) << file;
   EXPECT_FALSE(slurp(dir / "t1" / "posterior.csv").empty());
   EXPECT_EQ(r1.posterior.parameters[0].mean, r2.posterior.parameters[0].mean);
@@ -95,7 +98,8 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
   }
   EXPECT_EQ(r1.region.kind, "joint");
   EXPECT_TRUE(r1.region.contains(r1.region.toScaled(r1.optimum.theta)));
-  EXPECT_EQ(r1.rounds.rounds.size(), 3u);  // round 0 and two adaptive rounds (they never settle at these sizes)
+  EXPECT_EQ(r1.rounds.rounds.size(),
+            3u);  // round 0 and two adaptive rounds (they never settle at these sizes)
   std::vector<double> lo, hi;
   r1.region.boundingBox(lo, hi);
   for (std::size_t k = 0; k < r1.names.size(); ++k) {
@@ -124,7 +128,8 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
   }
   // The profile's threshold rests on the best SSE evaluated anywhere (the optimum, or a design
   // point that beat it: this test's optimiser is cut short at 40 evaluations).
-  EXPECT_LE(j["profile"]["sse_best"].get<double>(), std::min(j["sse_min"].get<double>(), best_design));
+  EXPECT_LE(j["profile"]["sse_best"].get<double>(),
+            std::min(j["sse_min"].get<double>(), best_design));
   EXPECT_GT(j["profile"]["threshold"].get<double>(), j["profile"]["sse_best"].get<double>());
   // Along a traced ridge the region reaches margin x the profile's crossing (or the bounds' reach).
   const auto box = nlohmann::json::parse(slurp(dir / "t1" / "box.json"));
@@ -132,9 +137,11 @@ TEST(Calibrate, ThreadCountDoesNotChangeResults) {
   for (const auto& tr : box["gauss_newton"]["ridges"]) {
     const int i = tr["axis"].get<int>(), s = tr["direction"].get<int>();
     if (!tr["closed"].get<bool>()) continue;
-    const double want = std::min(1.25 * tr["crossing"].get<double>(), s > 0 ? r1.region.reach_upper(i) : r1.region.reach_lower(i));
+    const double want = std::min(1.25 * tr["crossing"].get<double>(),
+                                 s > 0 ? r1.region.reach_upper(i) : r1.region.reach_lower(i));
     EXPECT_GT(tr["crossing"].get<double>(), 0.0);
-    EXPECT_GE(s > 0 ? r1.region.t_upper(i) : -r1.region.t_lower(i), want * (1 - 1e-12)) << "ridge axis " << i << " direction " << s;
+    EXPECT_GE(s > 0 ? r1.region.t_upper(i) : -r1.region.t_lower(i), want * (1 - 1e-12))
+        << "ridge axis " << i << " direction " << s;
   }
   fs::remove_all(dir);
 }
@@ -150,7 +157,8 @@ TEST(Calibrate, FrozenStepsMakeTheObjectiveSmoothAndTheCheckSaysSo) {
   fs::remove_all(dir);
   CalibrationOptions o = smallOptions(2);
   ASSERT_EQ(o.steps, "frozen");
-  const auto r = calibrateAssembly(f.study, f.assembly, f.data, "lab", o, (dir / "frozen").string(), "x");
+  const auto r =
+      calibrateAssembly(f.study, f.assembly, f.data, "lab", o, (dir / "frozen").string(), "x");
   const auto opt = nlohmann::json::parse(slurp(dir / "frozen" / "optimum.json"));
   ASSERT_TRUE(opt["steps"]["frozen"].get<bool>());
   EXPECT_EQ(opt["steps"]["frozen_at"].size(), r.names.size());
@@ -168,7 +176,9 @@ TEST(Calibrate, FrozenStepsMakeTheObjectiveSmoothAndTheCheckSaysSo) {
   // keeps small jumps even with frozen steps (docs/calibration.md), which the check measures.
   EXPECT_LT(c.roughness, c.threshold) << "roughness " << c.roughness;
   EXPECT_GT(c.roughness, 0.0);
-  EXPECT_DOUBLE_EQ(c.jitter, c.optimum_shift > 4 * c.shift_floor ? std::max(c.roughness, c.optimum_shift) : c.roughness);
+  EXPECT_DOUBLE_EQ(c.jitter, c.optimum_shift > 4 * c.shift_floor
+                                 ? std::max(c.roughness, c.optimum_shift)
+                                 : c.roughness);
   EXPECT_EQ(c.ok, c.jitter < 0.5 * c.threshold);
   // The check takes over the step choice's last probe only when it was made at this optimum and
   // accuracy; its figures are then that probe's.
@@ -181,16 +191,20 @@ TEST(Calibrate, FrozenStepsMakeTheObjectiveSmoothAndTheCheckSaysSo) {
     EXPECT_EQ(last["roughness"].get<double>(), c.roughness);
     EXPECT_EQ(last["optimum_shift"].get<double>(), c.optimum_shift);
   }
-  std::printf("[ figures  ] M1 lab, frozen steps: roughness %.3g, optimum shift %.3g (floor %.3g), threshold %.3g, accuracy %.3g, probes %s\n",
-              c.roughness, c.optimum_shift, c.shift_floor, c.threshold, c.accuracy, c.probes.c_str());
+  std::printf(
+      "[ figures  ] M1 lab, frozen steps: roughness %.3g, optimum shift %.3g (floor %.3g), "
+      "threshold %.3g, accuracy %.3g, probes %s\n",
+      c.roughness, c.optimum_shift, c.shift_floor, c.threshold, c.accuracy, c.probes.c_str());
 
   o.steps = "adaptive";
-  const auto a = calibrateAssembly(f.study, f.assembly, f.data, "lab", o, (dir / "adaptive").string(), "x");
+  const auto a =
+      calibrateAssembly(f.study, f.assembly, f.data, "lab", o, (dir / "adaptive").string(), "x");
   const auto opt_a = nlohmann::json::parse(slurp(dir / "adaptive" / "optimum.json"));
   EXPECT_FALSE(opt_a["steps"]["frozen"].get<bool>());
   EXPECT_NE(opt_a["optimum"]["starts"][0]["status"], "LM");
   EXPECT_EQ(a.integrator.steps, "adaptive");
-  std::printf("[ figures  ] adaptive steps: jitter %.3g, threshold %.3g\n", a.integrator.jitter, a.integrator.threshold);
+  std::printf("[ figures  ] adaptive steps: jitter %.3g, threshold %.3g\n", a.integrator.jitter,
+              a.integrator.threshold);
   fs::remove_all(dir);
 }
 
@@ -199,18 +213,22 @@ TEST(Calibrate, FrozenStepsMakeTheObjectiveSmoothAndTheCheckSaysSo) {
 // within 25 %.
 TEST(Calibrate, TheIntegratorCheckTakesOverTheStepChoicesProbeOnlyWhenItWouldRepeatIt) {
   const std::vector<double> lo{0, 100}, up{10, 300}, theta{4, 200}, h{1e-3, 2e-3};
-  const nlohmann::json last{{"accuracy", 5e-5},    {"at", {4.0, 200.0}}, {"probe_step", {1e-3, 2.2e-3}},
-                            {"roughness", 0.25}, {"optimum_shift", 1.5}, {"shift_floor", 0.125}};
+  const nlohmann::json last{
+      {"accuracy", 5e-5},  {"at", {4.0, 200.0}},   {"probe_step", {1e-3, 2.2e-3}},
+      {"roughness", 0.25}, {"optimum_shift", 1.5}, {"shift_floor", 0.125}};
   const auto taken = takeOverProbe(last, theta, h, 5e-5, lo, up);
   ASSERT_TRUE(taken.has_value());
   EXPECT_EQ(taken->roughness, 0.25);
   EXPECT_EQ(taken->optimum_shift, 1.5);
   EXPECT_EQ(taken->shift_floor, 0.125);
-  EXPECT_TRUE(takeOverProbe(last, {4 + 0.9e-5 * 10, 200}, h, 5e-5, lo, up).has_value());  // moved 0.9 % of a step
+  EXPECT_TRUE(takeOverProbe(last, {4 + 0.9e-5 * 10, 200}, h, 5e-5, lo, up)
+                  .has_value());  // moved 0.9 % of a step
   EXPECT_FALSE(takeOverProbe(last, {4 + 1.1e-5 * 10, 200}, h, 5e-5, lo, up).has_value());  // 1.1 %
-  EXPECT_FALSE(takeOverProbe(last, theta, h, 4e-5, lo, up).has_value());                    // another accuracy
-  EXPECT_FALSE(takeOverProbe(last, theta, {1e-3, 1.7e-3}, 5e-5, lo, up).has_value());       // its step 29 % longer
-  EXPECT_FALSE(takeOverProbe(last, theta, {0.7e-3, 2e-3}, 5e-5, lo, up).has_value());       // 43 % longer
+  EXPECT_FALSE(takeOverProbe(last, theta, h, 4e-5, lo, up).has_value());  // another accuracy
+  EXPECT_FALSE(takeOverProbe(last, theta, {1e-3, 1.7e-3}, 5e-5, lo, up)
+                   .has_value());  // its step 29 % longer
+  EXPECT_FALSE(
+      takeOverProbe(last, theta, {0.7e-3, 2e-3}, 5e-5, lo, up).has_value());  // 43 % longer
   nlohmann::json dropped = last;
   dropped["kept"] = false;  // a tighter accuracy that did not halve the shift: undone
   EXPECT_FALSE(takeOverProbe(dropped, theta, h, 5e-5, lo, up).has_value());
@@ -225,24 +243,29 @@ TEST(Calibrate, InterruptedDesignResumesToIdenticalResults) {
   Fixture f;
   const fs::path dir = fs::temp_directory_path() / "dtwin_calibrate_resume";
   fs::remove_all(dir);
-  calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "whole").string(), "x");
+  calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "whole").string(),
+                    "x");
   struct Stop {};
   int seen = 0;
   auto interrupt = [&](const std::string& stage, std::size_t done, std::size_t) {
     if (stage == "design round 1" && done >= 5 && ++seen > 0) throw Stop{};
   };
-  EXPECT_THROW(calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "x", interrupt),
+  EXPECT_THROW(calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2),
+                                 (dir / "cut").string(), "x", interrupt),
                Stop);
   const auto journal = slurp(dir / "cut" / "design_journal.csv");
   EXPECT_FALSE(fs::exists(dir / "cut" / "posterior.csv"));
-  const auto r = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "x");
+  const auto r = calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2),
+                                   (dir / "cut").string(), "x");
   EXPECT_GE(r.resumed_points, r.rounds.rounds[0].count + 5);  // all of round 0 and part of round 1
   EXPECT_LT(r.resumed_points, r.design.rows());
-  for (const char* file : {"posterior.csv", "design.csv", "optimum.json", "box.json", "profile.json"})
+  for (const char* file :
+       {"posterior.csv", "design.csv", "optimum.json", "box.json", "profile.json"})
     EXPECT_EQ(slurp(dir / "whole" / file), slurp(dir / "cut" / file)) << file;
   // Different data: refused with a clear message, nothing overwritten.
   try {
-    calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(), "other data");
+    calibrateAssembly(f.study, f.assembly, f.data, "lab", smallOptions(2), (dir / "cut").string(),
+                      "other data");
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different calibration"), std::string::npos) << e.what();
@@ -268,8 +291,10 @@ TEST(Calibrate, PaperRegionIsTheOneAtATimeBox) {
   for (double w : r.rounds.log_weight) EXPECT_EQ(w, 0.0);
   for (Eigen::Index k = 0; k < r.design.rows(); ++k)
     for (std::size_t j = 0; j < r.names.size(); ++j) {
-      EXPECT_GE(r.design(k, static_cast<long>(j)), r.box.lower[j] - 1e-9 * std::abs(r.box.lower[j]));
-      EXPECT_LE(r.design(k, static_cast<long>(j)), r.box.upper[j] + 1e-9 * std::abs(r.box.upper[j]));
+      EXPECT_GE(r.design(k, static_cast<long>(j)),
+                r.box.lower[j] - 1e-9 * std::abs(r.box.lower[j]));
+      EXPECT_LE(r.design(k, static_cast<long>(j)),
+                r.box.upper[j] + 1e-9 * std::abs(r.box.upper[j]));
     }
   const auto j = nlohmann::json::parse(slurp(dir / "summary.json"));
   EXPECT_EQ(j["options"]["region"], "paper");
@@ -307,9 +332,11 @@ TEST(CalibrationOptions, BadValuesNameTheField) {
       {[](CalibrationOptions& o) { o.lhs_points = 1; }, "calibration.lhs_points"},
       {[](CalibrationOptions& o) { o.gibbs_iterations = 0; }, "calibration.gibbs_iterations"},
       {[](CalibrationOptions& o) { o.gibbs_burn_in = -1; }, "calibration.gibbs_burn_in"},
-      {[](CalibrationOptions& o) { o.gibbs_burn_in = o.gibbs_iterations; }, "calibration.gibbs_burn_in"},
+      {[](CalibrationOptions& o) { o.gibbs_burn_in = o.gibbs_iterations; },
+       "calibration.gibbs_burn_in"},
       {[](CalibrationOptions& o) { o.tau_prior_a = -1; }, "calibration.tau_prior_a"},
-      {[](CalibrationOptions& o) { o.tau_prior_b = std::numeric_limits<double>::infinity(); }, "calibration.tau_prior_b"},
+      {[](CalibrationOptions& o) { o.tau_prior_b = std::numeric_limits<double>::infinity(); },
+       "calibration.tau_prior_b"},
       {[](CalibrationOptions& o) { o.region = "box"; }, "calibration.region"},
       {[](CalibrationOptions& o) { o.interval = "hpd"; }, "calibration.interval"},
       {[](CalibrationOptions& o) { o.polish_step = 0.6; }, "calibration.polish_step"},
@@ -355,9 +382,11 @@ TEST(LabObjective, RejectsTimesOutsideTheScenarioAndAcceptsOffGridTimes) {
 TEST(LabObjective, PredictionsWithoutTheGridAreTheGridsNumbers) {
   Fixture f;
   LabData d;
-  const std::vector<std::string> names = {"hub_force_fl_N", "chassis_heave_acc_mps2", "susp_defl_rr_m"};
+  const std::vector<std::string> names = {"hub_force_fl_N", "chassis_heave_acc_mps2",
+                                          "susp_defl_rr_m"};
   for (int k = 0; k < 300; ++k)
-    for (const auto& ch : names) d.records.push_back({1, k % 2 ? 5.8 + 0.001 * k : 5.8005 + 0.0025 * k, ch, 0.0});
+    for (const auto& ch : names)
+      d.records.push_back({1, k % 2 ? 5.8 + 0.001 * k : 5.8005 + 0.0025 * k, ch, 0.0});
   LabObjective obj(f.study, f.assembly, d, "lab");
   const auto theta = truthOf(f.study);
   const auto eta = obj.predict(theta);
@@ -367,9 +396,11 @@ TEST(LabObjective, PredictionsWithoutTheGridAreTheGridsNumbers) {
   EXPECT_GT(runs[0].trace.rows(), 0u);  // runs() keeps the grid
   const auto channels = Simulator::channels(obj.model().sensors());
   for (std::size_t i = 0; i < eta.size(); ++i) {
-    const auto it = std::find_if(channels.begin(), channels.end(), [&](const Channel& c) { return c.name == d.records[i].channel; });
+    const auto it = std::find_if(channels.begin(), channels.end(),
+                                 [&](const Channel& c) { return c.name == d.records[i].channel; });
     ASSERT_NE(it, channels.end());
-    EXPECT_EQ(eta[i], obj.read(runs[0], i, static_cast<std::size_t>(it - channels.begin()))) << "record " << i;
+    EXPECT_EQ(eta[i], obj.read(runs[0], i, static_cast<std::size_t>(it - channels.begin())))
+        << "record " << i;
   }
 }
 
@@ -381,7 +412,8 @@ TEST(LabObjective, OffGridTimesMatchAFinerOutputGrid) {
   LabData d;
   for (int k = 0; k < 400; ++k)
     for (const char* ch : {"hub_force_fl_N", "chassis_heave_acc_mps2", "susp_defl_rr_m"})
-      d.records.push_back({1, 5.8005 + 0.0025 * k, ch, 0.0});  // odd multiples of 0.5 ms: off the 1 kHz grid
+      d.records.push_back(
+          {1, 5.8005 + 0.0025 * k, ch, 0.0});  // odd multiples of 0.5 ms: off the 1 kHz grid
   LabObjective coarse(f.study, f.assembly, d, "lab");
   Study fine_study = f.study;
   fine_study.simulation.output_rate_hz = 2000.0;
@@ -389,7 +421,8 @@ TEST(LabObjective, OffGridTimesMatchAFinerOutputGrid) {
   const auto a = coarse.predict(truthOf(f.study)), b = fine.predict(truthOf(f.study));
   ASSERT_EQ(a.size(), d.records.size());
   ASSERT_EQ(b.size(), d.records.size());
-  double worst[3] = {0, 0, 0}, range_lo[3] = {1e300, 1e300, 1e300}, range_hi[3] = {-1e300, -1e300, -1e300};
+  double worst[3] = {0, 0, 0}, range_lo[3] = {1e300, 1e300, 1e300},
+         range_hi[3] = {-1e300, -1e300, -1e300};
   for (std::size_t i = 0; i < a.size(); ++i) {
     worst[i % 3] = std::max(worst[i % 3], std::abs(a[i] - b[i]));
     range_lo[i % 3] = std::min(range_lo[i % 3], b[i]);
@@ -398,6 +431,7 @@ TEST(LabObjective, OffGridTimesMatchAFinerOutputGrid) {
   for (int c = 0; c < 3; ++c) {
     const double range = range_hi[c] - range_lo[c];
     EXPECT_GT(range, 0.0) << c;
-    EXPECT_LT(worst[c], 1e-9 * range) << "channel " << c << ": worst " << worst[c] << " of range " << range;
+    EXPECT_LT(worst[c], 1e-9 * range)
+        << "channel " << c << ": worst " << worst[c] << " of range " << range;
   }
 }

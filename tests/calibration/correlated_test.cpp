@@ -30,7 +30,8 @@ TEST(Correlated, ADriveIsCutIntoBlocksOfConsecutiveTimesAndLabRepetitionsAreNot)
   EXPECT_EQ(b.front(), 0);
   EXPECT_EQ(b.back(), kBlocks - 1);
   for (std::size_t i = 1; i < b.size(); ++i) EXPECT_LE(b[i - 1], b[i]);
-  for (std::size_t i = 0; i < b.size(); i += 2) EXPECT_EQ(b[i], b[i + 1]) << "channels at one time share a block";
+  for (std::size_t i = 0; i < b.size(); i += 2)
+    EXPECT_EQ(b[i], b[i + 1]) << "channels at one time share a block";
   // A second repetition (lab data): no blocks.
   auto rep2 = rep;
   rep2.back() = 2;
@@ -70,7 +71,8 @@ LineFit fitLine(std::mt19937_64& rng, int n, double rho, double b_true) {
   const double t_iid = studentQuantile(0.975, n - 2);
   const auto blocks = timeBlocks(t, std::vector<int>(t.size(), 0), std::vector<long>(t.size(), 1));
   const CorrelationAdjustment adj = blockAdjustment(X, r, blocks, s2, 0.95);
-  return {beta(1), t_iid * std::sqrt(s2 * A(1, 1)), std::sqrt(adj.quantile * adj.kappa[1] * s2 * A(1, 1)), adj.kappa[1]};
+  return {beta(1), t_iid * std::sqrt(s2 * A(1, 1)),
+          std::sqrt(adj.quantile * adj.kappa[1] * s2 * A(1, 1)), adj.kappa[1]};
 }
 
 }  // namespace
@@ -89,8 +91,11 @@ TEST(Correlated, IndependentResidualsKeepTheirCoverage) {
     hit_iid += std::abs(f.b - 2.0) <= f.half_iid;
     hit_blocks += std::abs(f.b - 2.0) <= f.half_blocks;
   }
-  std::printf("[ coverage ] independent errors, %d seeds: independent %.3f, block-adjusted %.3f, mean kappa %.3f\n", seeds,
-              static_cast<double>(hit_iid) / seeds, static_cast<double>(hit_blocks) / seeds, sum / seeds);
+  std::printf(
+      "[ coverage ] independent errors, %d seeds: independent %.3f, block-adjusted %.3f, mean "
+      "kappa %.3f\n",
+      seeds, static_cast<double>(hit_iid) / seeds, static_cast<double>(hit_blocks) / seeds,
+      sum / seeds);
   EXPECT_GT(sum / seeds, 0.9);
   EXPECT_LT(sum / seeds, 1.3);
   EXPECT_GT(static_cast<double>(hit_blocks) / seeds, 0.93);
@@ -111,8 +116,10 @@ TEST(Correlated, BlockAdjustedIntervalsHoldTheTruthAtTheirLevelUnderAR1Errors) {
       hit_iid += std::abs(f.b - 2.0) <= f.half_iid;
       hit_blocks += std::abs(f.b - 2.0) <= f.half_blocks;
     }
-    const double iid = static_cast<double>(hit_iid) / seeds, blocks = static_cast<double>(hit_blocks) / seeds;
-    std::printf("[ coverage ] AR(1) rho %.2f, %d seeds: independent %.3f, block-adjusted %.3f\n", rho, seeds, iid, blocks);
+    const double iid = static_cast<double>(hit_iid) / seeds,
+                 blocks = static_cast<double>(hit_blocks) / seeds;
+    std::printf("[ coverage ] AR(1) rho %.2f, %d seeds: independent %.3f, block-adjusted %.3f\n",
+                rho, seeds, iid, blocks);
     EXPECT_LT(iid, 0.7) << "the independent interval should be far too narrow here";
     EXPECT_GT(blocks, rho < 0.92 ? 0.93 : 0.91);
     EXPECT_LT(blocks, 0.985);

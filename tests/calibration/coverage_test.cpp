@@ -6,8 +6,8 @@
 
 #include <filesystem>
 
-#include "study/coverage.hpp"
 #include "common/errors.hpp"
+#include "study/coverage.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;
@@ -28,7 +28,8 @@ TEST(Coverage, WilsonIntervalMatchesReferenceValues) {
 }
 
 TEST(Coverage, TinyRunCountsAndResumes) {
-  const Study study = loadStudy(dtwin_test::writeTinyStudy(fs::path(::testing::TempDir()) / "tiny.toml").string());
+  const Study study =
+      loadStudy(dtwin_test::writeTinyStudy(fs::path(::testing::TempDir()) / "tiny.toml").string());
   CoverageOptions o;
   o.seeds = 2;
   o.assemblies = {"M3"};
@@ -57,14 +58,15 @@ TEST(Coverage, TinyRunCountsAndResumes) {
   ASSERT_EQ(r.totals.size(), 1u);
   EXPECT_EQ(r.totals[0].second.first, covered);
   EXPECT_EQ(r.totals[0].second.second, 8);
-  for (const char* f : {"coverage.json", "coverage.md", "M3/lab_1001.csv", "M3/lab_1002.json", "M3/seed_1001/summary.json",
-                        "M3/seed_1002/posterior.csv"})
+  for (const char* f : {"coverage.json", "coverage.md", "M3/lab_1001.csv", "M3/lab_1002.json",
+                        "M3/seed_1001/summary.json", "M3/seed_1002/posterior.csv"})
     EXPECT_TRUE(fs::exists(fs::path(o.out_dir) / f)) << f;
   const auto j = nlohmann::json::parse(dtwin_test::slurp(fs::path(o.out_dir) / "coverage.json"));
   EXPECT_TRUE(j.contains("program"));
   EXPECT_EQ(j["seeds"]["first"], 1001);
   // The two seeds' data differ (independent noise), so do their calibrations.
-  EXPECT_NE(dtwin_test::slurp(fs::path(o.out_dir) / "M3/lab_1001.csv"), dtwin_test::slurp(fs::path(o.out_dir) / "M3/lab_1002.csv"));
+  EXPECT_NE(dtwin_test::slurp(fs::path(o.out_dir) / "M3/lab_1001.csv"),
+            dtwin_test::slurp(fs::path(o.out_dir) / "M3/lab_1002.csv"));
   // A rerun resumes every calibration and gives the same table.
   const CoverageResult again = runCoverage(study, o);
   EXPECT_EQ(again.markdown(), r.markdown());

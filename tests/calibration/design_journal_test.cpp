@@ -53,7 +53,8 @@ TEST(DesignJournal, WriteAndReloadRoundTripsExactly) {
     EXPECT_EQ(c.entries[k].theta, thetas[k]);  // bit-exact
     EXPECT_EQ(c.entries[k].sse, sses[k]);
   }
-  EXPECT_NE(readFile(path).find(",inf,"), std::string::npos);  // +inf written as "inf" (then the checksum)
+  EXPECT_NE(readFile(path).find(",inf,"),
+            std::string::npos);  // +inf written as "inf" (then the checksum)
 
   // Reopening resumes the same entries and keeps appending.
   {
@@ -103,14 +104,18 @@ TEST(DesignJournal, TruncatedLastLineIsDiscardedAndCutOff) {
 
 TEST(DesignJournal, ForeignDesignIsRefused) {
   const std::string path = tempPath("foreign.journal");
-  { DesignJournal j(path, 4, "hash-A"); j.append(0, {1, 2, 3, 4}, 5); }
+  {
+    DesignJournal j(path, 4, "hash-A");
+    j.append(0, {1, 2, 3, 4}, 5);
+  }
   try {
     DesignJournal j(path, 4, "hash-B");
     FAIL() << "no throw";
   } catch (const InputError& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find(path), std::string::npos) << m;
-    EXPECT_NE(m.find("fingerprint 'hash-A' in the file, 'hash-B' expected"), std::string::npos) << m;
+    EXPECT_NE(m.find("fingerprint 'hash-A' in the file, 'hash-B' expected"), std::string::npos)
+        << m;
     EXPECT_NE(m.find("refusing to resume"), std::string::npos) << m;
   }
   try {
@@ -127,13 +132,17 @@ TEST(DesignJournal, ForeignDesignIsRefused) {
 TEST(DesignJournal, CorruptCompleteLineIsAnErrorWithLineNumber) {
   // A journal of version 1 (no checksums): a malformed complete line is an error naming it.
   const std::string path = tempPath("corrupt.journal");
-  { std::ofstream(path, std::ios::binary) << "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1,2,3\n1,2.0,abc,4\n"; }
+  {
+    std::ofstream(path, std::ios::binary)
+        << "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1,2,3\n1,2.0,abc,4\n";
+  }
   try {
     readDesignJournal(path);
     FAIL() << "no throw";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("line 3: parameter 2 must be a finite number, got 'abc'"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   const std::string p2 = tempPath("notajournal.csv");
   { std::ofstream(p2) << "a,b,c\n1,2,3\n"; }
@@ -142,7 +151,10 @@ TEST(DesignJournal, CorruptCompleteLineIsAnErrorWithLineNumber) {
 
 TEST(DesignJournal, VersionOneJournalsAreReadAndAppendedToInTheirVersion) {
   const std::string path = tempPath("v1.journal");
-  { std::ofstream(path, std::ios::binary) << "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1.5,2.5,10\n"; }
+  {
+    std::ofstream(path, std::ios::binary)
+        << "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1.5,2.5,10\n";
+  }
   {
     DesignJournal j(path, 2, "fp");
     EXPECT_FALSE(j.setAside());
@@ -150,7 +162,8 @@ TEST(DesignJournal, VersionOneJournalsAreReadAndAppendedToInTheirVersion) {
     EXPECT_EQ(j.resumed()[0].theta, (std::vector<double>{1.5, 2.5}));
     j.append(1, {3.5, 4.5}, 20.0);
   }
-  EXPECT_EQ(readFile(path), "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1.5,2.5,10\n1,3.5,4.5,20\n");
+  EXPECT_EQ(readFile(path),
+            "# dtwin design journal v1; dim=2; fingerprint=fp\n0,1.5,2.5,10\n1,3.5,4.5,20\n");
   const JournalContents c = readDesignJournal(path);
   EXPECT_EQ(c.version, 1);
   ASSERT_EQ(c.entries.size(), 2u);
@@ -159,7 +172,10 @@ TEST(DesignJournal, VersionOneJournalsAreReadAndAppendedToInTheirVersion) {
 
 TEST(DesignJournal, EveryLineCarriesTheChecksumOfItsText) {
   const std::string path = tempPath("checksum.journal");
-  { DesignJournal j(path, 2, "fp"); j.append(7, {1.25, -3.0}, 0.5); }
+  {
+    DesignJournal j(path, 2, "fp");
+    j.append(7, {1.25, -3.0}, 0.5);
+  }
   const std::string text = readFile(path);
   const std::string header = "# dtwin design journal v2; dim=2; fingerprint=fp";
   const std::string line = "7,1.25,-3,0.5";
@@ -172,7 +188,7 @@ TEST(DesignJournal, EveryLineCarriesTheChecksumOfItsText) {
     return std::string(buf);
   };
   EXPECT_EQ(text, header + "; check=" + fnv(header) + "\n" + line + "," + fnv(line) + "\n");
-  EXPECT_EQ(fnv(""), "811c9dc5");  // the offset basis: FNV-1a of nothing
+  EXPECT_EQ(fnv(""), "811c9dc5");   // the offset basis: FNV-1a of nothing
   EXPECT_EQ(fnv("a"), "e40c292c");  // the published test vector
 }
 
@@ -193,7 +209,8 @@ TEST(DesignJournal, ALineChangedOnDiskIsDetectedAndTheJournalSetAside) {
     readDesignJournal(path);
     FAIL() << "no throw";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(path + ": line 17: fails its checksum"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path + ": line 17: fails its checksum"), std::string::npos)
+        << e.what();
   }
   {
     DesignJournal j(path, 2, "fp");
@@ -277,7 +294,8 @@ TEST(DesignTableCsv, WrittenAtomicallyAndReadsBack) {
   }
   EXPECT_FALSE(std::getline(in, line));
   // No temporary file left behind.
-  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path()))
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::filesystem::path(path).parent_path()))
     EXPECT_EQ(e.path().filename().string().find("dtwin_calib_design.csv.tmp"), std::string::npos);
   try {
     writeDesignTableCsv(path, {"a,b", "c"}, design, sse);

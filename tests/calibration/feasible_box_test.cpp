@@ -118,13 +118,12 @@ TEST(FeasibleBox, BudgetExhaustedIsReportedNotHidden) {
 
 TEST(FeasibleBox, SweepsAreIndependentOfExecutionOrder) {
   const FeasibleBox seq = calcFeasibleBox(quadraticSse, problem());
-  const FeasibleBox thr = calcFeasibleBox(quadraticSse, problem(), {},
-                                          [](int n, const std::function<void(int)>& task) {
-                                            std::vector<std::thread> pool;
-                                            for (int i = n - 1; i >= 0; --i)
-                                              pool.emplace_back(task, i);
-                                            for (auto& t : pool) t.join();
-                                          });
+  const FeasibleBox thr =
+      calcFeasibleBox(quadraticSse, problem(), {}, [](int n, const std::function<void(int)>& task) {
+        std::vector<std::thread> pool;
+        for (int i = n - 1; i >= 0; --i) pool.emplace_back(task, i);
+        for (auto& t : pool) t.join();
+      });
   EXPECT_EQ(seq.lower, thr.lower);
   EXPECT_EQ(seq.upper, thr.upper);
   EXPECT_EQ(seq.evaluations, thr.evaluations);
@@ -147,7 +146,8 @@ TEST(FeasibleBox, ZeroSseMinIsRefusedWithExplanation) {
     FAIL() << "no throw";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("theta_hat[1] = 1000000 is outside [500, 7000]"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   FeasibleBoxOptions opt;
   opt.growth = 1.0;

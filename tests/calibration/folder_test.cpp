@@ -46,7 +46,9 @@ const char* kPosterior = "a,b,tau,design_index\n1,2,0.5,3\n";
 }  // namespace
 
 TEST(CalibrationFolder, ReadsPosteriorCsv) {
-  const auto ps = parsePosteriorCsv(std::string("\xEF\xBB\xBF") + "a,b,tau,design_index\r\n1,2,0.5,3\r\n\r\n4,5e3,1e-4,0\n", "p.csv");
+  const auto ps = parsePosteriorCsv(
+      std::string("\xEF\xBB\xBF") + "a,b,tau,design_index\r\n1,2,0.5,3\r\n\r\n4,5e3,1e-4,0\n",
+      "p.csv");
   ASSERT_EQ(ps.size(), 2u);
   EXPECT_EQ(ps.names, (std::vector<std::string>{"a", "b"}));
   EXPECT_EQ(ps.theta[1], (std::vector<double>{4, 5000}));
@@ -55,23 +57,31 @@ TEST(CalibrationFolder, ReadsPosteriorCsv) {
 }
 
 TEST(CalibrationFolder, PosteriorCsvErrorsNameFileLineAndRule) {
-  EXPECT_EQ(errorOf(""), "post.csv: empty file (expected the header <parameters>,tau,design_index)");
-  EXPECT_NE(errorOf("a,b,design_index\n1,2,3\n").find("post.csv:1: header must be"), std::string::npos);
-  EXPECT_NE(errorOf("tau,design_index\n1,2\n").find("post.csv:1: header must be"), std::string::npos);
-  EXPECT_NE(errorOf("a,a,tau,design_index\n").find("post.csv:1: header: column 'a' appears twice"), std::string::npos);
+  EXPECT_EQ(errorOf(""),
+            "post.csv: empty file (expected the header <parameters>,tau,design_index)");
+  EXPECT_NE(errorOf("a,b,design_index\n1,2,3\n").find("post.csv:1: header must be"),
+            std::string::npos);
+  EXPECT_NE(errorOf("tau,design_index\n1,2\n").find("post.csv:1: header must be"),
+            std::string::npos);
+  EXPECT_NE(errorOf("a,a,tau,design_index\n").find("post.csv:1: header: column 'a' appears twice"),
+            std::string::npos);
   EXPECT_EQ(errorOf("a,tau,design_index\n"), "post.csv: no rows after the header (line 1)");
   EXPECT_EQ(errorOf("a,tau,design_index\n1,2,3\n1,2\n"), "post.csv:3: expected 3 fields, got 2");
   EXPECT_EQ(errorOf("a,tau,design_index\nx,2,3\n"), "post.csv:2: a: must be a number, got 'x'");
   EXPECT_EQ(errorOf("a,tau,design_index\nnan,2,3\n"), "post.csv:2: a: must be finite, got nan");
-  EXPECT_EQ(errorOf("a,tau,design_index\n1,0,3\n"), "post.csv:2: tau: must be a finite number > 0 (a precision), got 0");
-  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,-1\n"), "post.csv:2: design_index: must be an integer >= 0, got '-1'");
-  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,1.5\n"), "post.csv:2: design_index: must be an integer >= 0, got '1.5'");
+  EXPECT_EQ(errorOf("a,tau,design_index\n1,0,3\n"),
+            "post.csv:2: tau: must be a finite number > 0 (a precision), got 0");
+  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,-1\n"),
+            "post.csv:2: design_index: must be an integer >= 0, got '-1'");
+  EXPECT_EQ(errorOf("a,tau,design_index\n1,2,1.5\n"),
+            "post.csv:2: design_index: must be an integer >= 0, got '1.5'");
   EXPECT_THROW(readPosteriorCsv("/nonexistent/posterior.csv"), InputError);
 }
 
 TEST(CalibrationFolder, PosteriorCsvRoundTripsExactly) {
   const std::vector<std::string> names{"tire.stiffness", "tire.damping"};
-  const std::vector<std::vector<double>> theta{{180000.0 + 1.0 / 3.0, 2999.999999999}, {1e-300, 0.1 + 0.2}};
+  const std::vector<std::vector<double>> theta{{180000.0 + 1.0 / 3.0, 2999.999999999},
+                                               {1e-300, 0.1 + 0.2}};
   const std::vector<double> tau{5.5e-5, std::numeric_limits<double>::denorm_min()};
   const std::vector<long> index{0, 1234567};
   const auto back = parsePosteriorCsv(posteriorCsv(names, theta, tau, index), "rt.csv");
@@ -83,7 +93,9 @@ TEST(CalibrationFolder, PosteriorCsvRoundTripsExactly) {
 
 TEST(CalibrationFolder, ReadsSummaryAndPosterior) {
   const fs::path dir = tempDir("ok");
-  writeText(dir / "summary.json", R"({"assembly": "M3", "setup": {"extra_effects": [], "extra_calibrated": [], "channel_weights": {}}})");
+  writeText(
+      dir / "summary.json",
+      R"({"assembly": "M3", "setup": {"extra_effects": [], "extra_calibrated": [], "channel_weights": {}}})");
   writeText(dir / "posterior.csv", kPosterior);
   const auto f = readCalibrationFolder(dir.string());
   EXPECT_EQ(f.assembly, "M3");
@@ -105,8 +117,10 @@ TEST(CalibrationFolder, APosteriorChangedAfterItWasWrittenIsRefused) {
   std::string changed = text;
   changed[changed.find("4,5")] = '8';  // the middle row's first value
   writeText(dir / "posterior.csv", changed);
-  const std::string rule = (dir / "posterior.csv").string() + ": fails its checksum (" + (dir / "summary.json").string() + " records " +
-                           sum + "): it changed after the calibration wrote it and is not used; rerun that calibration into its folder to write it again";
+  const std::string rule = (dir / "posterior.csv").string() + ": fails its checksum (" +
+                           (dir / "summary.json").string() + " records " + sum +
+                           "): it changed after the calibration wrote it and is not used; rerun "
+                           "that calibration into its folder to write it again";
   EXPECT_EQ(folderError(dir), rule);
   try {
     readPosteriorCsv((dir / "posterior.csv").string());
@@ -115,27 +129,35 @@ TEST(CalibrationFolder, APosteriorChangedAfterItWasWrittenIsRefused) {
     EXPECT_EQ(std::string(e.what()), rule);
   }
   writeText(dir / "summary.json", R"({"assembly": "M3"})");
-  EXPECT_EQ(readCalibrationFolder(dir.string()).posterior.theta[1][0], 8.0);  // nothing recorded to check against
+  EXPECT_EQ(readCalibrationFolder(dir.string()).posterior.theta[1][0],
+            8.0);  // nothing recorded to check against
 }
 
 TEST(CalibrationFolder, EveryBrokenPartIsNamed) {
   const fs::path dir = tempDir("broken");
-  EXPECT_EQ(folderError(dir / "missing"), (dir / "missing").string() +
-                                              ": is not a folder (give one written by `twin calibrate` or `twin diagnose`)");
-  EXPECT_EQ(folderError(dir), dir.string() + ": has no summary.json (give a folder written by `twin calibrate` or `twin diagnose`)");
+  EXPECT_EQ(folderError(dir / "missing"),
+            (dir / "missing").string() +
+                ": is not a folder (give one written by `twin calibrate` or `twin diagnose`)");
+  EXPECT_EQ(
+      folderError(dir),
+      dir.string() +
+          ": has no summary.json (give a folder written by `twin calibrate` or `twin diagnose`)");
   writeText(dir / "optimum.json", "{}");  // a diagnosis candidate calibrated to its optimum only
   EXPECT_NE(folderError(dir).find("holds only an optimum"), std::string::npos) << folderError(dir);
   fs::remove(dir / "optimum.json");
   writeText(dir / "summary.json", "{\"assembly\": ");
-  EXPECT_NE(folderError(dir).find((dir / "summary.json").string() + ": is not valid JSON"), std::string::npos);
+  EXPECT_NE(folderError(dir).find((dir / "summary.json").string() + ": is not valid JSON"),
+            std::string::npos);
   writeText(dir / "summary.json", "[1, 2]");
   EXPECT_EQ(folderError(dir), (dir / "summary.json").string() + ": must hold a JSON object");
   writeText(dir / "summary.json", "{}");
   EXPECT_EQ(folderError(dir), (dir / "summary.json").string() + ": assembly: is missing");
   writeText(dir / "summary.json", R"({"assembly": 3})");
-  EXPECT_EQ(folderError(dir), (dir / "summary.json").string() + ": assembly: must be a non-empty string (an assembly id), got 3");
+  EXPECT_EQ(folderError(dir), (dir / "summary.json").string() +
+                                  ": assembly: must be a non-empty string (an assembly id), got 3");
   writeText(dir / "summary.json", R"({"assembly": "M1", "setup": {"extra_effects": 7}})");
-  EXPECT_NE(folderError(dir).find((dir / "summary.json").string() + ": setup: is malformed"), std::string::npos);
+  EXPECT_NE(folderError(dir).find((dir / "summary.json").string() + ": setup: is malformed"),
+            std::string::npos);
   writeText(dir / "summary.json", R"({"assembly": "M1"})");
   EXPECT_EQ(folderError(dir), (dir / "posterior.csv").string() + ": posterior file not found");
 }

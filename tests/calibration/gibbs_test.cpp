@@ -123,13 +123,13 @@ TEST(GriddyGibbs, MatchesNormalGammaPosteriorOfLinearModel) {
     ASSERT_GT(d.ess, 1000.0) << d.name;
     EXPECT_NEAR(d.mean, m.mean, 4.0 * std::sqrt(m.var / d.ess)) << d.name;
     EXPECT_NEAR(d.sd * d.sd, m.var, 4.0 * std::sqrt((m.m4 - m.var * m.var) / d.ess)) << d.name;
-    std::cout << d.name << ": mean " << d.mean << " (exact " << m.mean << "), var "
-              << d.sd * d.sd << " (exact " << m.var << ", analytic " << cov(j, j) << "), ESS "
-              << d.ess << "\n";
+    std::cout << d.name << ": mean " << d.mean << " (exact " << m.mean << "), var " << d.sd * d.sd
+              << " (exact " << m.var << ", analytic " << cov(j, j) << "), ESS " << d.ess << "\n";
   }
   double tau_var = 0;  // E[Var(τ|k)] + Var(E[τ|k]) under the grid marginal
   for (std::size_t k = 0; k < N; ++k)
-    tau_var += w[k] * (tau_k[k] / (b + 0.5 * sse[k]) + (tau_k[k] - grid_tau) * (tau_k[k] - grid_tau));
+    tau_var +=
+        w[k] * (tau_k[k] / (b + 0.5 * sse[k]) + (tau_k[k] - grid_tau) * (tau_k[k] - grid_tau));
   EXPECT_NEAR(s.tau.mean, grid_tau, 4.0 * std::sqrt(tau_var / s.tau.ess));
   EXPECT_NEAR(s.tau.sd * s.tau.sd / tau_var, 1.0, 0.05);
   std::cout << "tau: mean " << s.tau.mean << " (exact grid " << grid_tau << ", analytic "
@@ -208,7 +208,7 @@ TEST(GriddyGibbs, SeededAndChainsIndependent) {
   opt.chain = 1;
   const GibbsChains c = runGriddyGibbs(sse, 10, opt);
   EXPECT_NE(a.index, c.index);
-  EXPECT_EQ(a.options.seed, opt.seed);  // the seed is recorded
+  EXPECT_EQ(a.options.seed, opt.seed);         // the seed is recorded
   EXPECT_DOUBLE_EQ(a.initial_tau, 10 / 50.0);  // default n / SSE_min
 }
 
@@ -219,7 +219,8 @@ TEST(GriddyGibbs, InvalidInputsNameTheRule) {
     FAIL() << "no throw";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("none of the 3 design points has a finite SSE"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   GibbsOptions opt;
   opt.iterations = 100;

@@ -32,7 +32,8 @@ TEST(IntegratorCheck, FailsWhenTheJitterReachesHalfTheThreshold) {
   const auto c = assessIntegrator(eta, fine, y, w, 3e-4, 0.79);
   EXPECT_FALSE(c.ok);
   EXPECT_NE(c.message.find("moves the SSE by about 0.4"), std::string::npos) << c.message;
-  EXPECT_NE(c.message.find("tighten [simulation] accuracy (to 3e-05 or less)"), std::string::npos) << c.message;
+  EXPECT_NE(c.message.find("tighten [simulation] accuracy (to 3e-05 or less)"), std::string::npos)
+      << c.message;
   // No interval threshold (no profile): nothing to compare with.
   EXPECT_TRUE(assessIntegrator(eta, fine, y, w, 3e-4, 0.0).ok);
 }

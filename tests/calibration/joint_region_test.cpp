@@ -27,7 +27,8 @@ namespace {
 /// Student-t quantile with ν degrees of freedom, by bisection on the CDF (Simpson's rule on the
 /// density; exact to ~1e-9 for the values used here).
 double studentQuantileBySimpson(double p, double nu) {
-  const double c = std::exp(std::lgamma(0.5 * (nu + 1)) - std::lgamma(0.5 * nu)) / std::sqrt(nu * M_PI);
+  const double c =
+      std::exp(std::lgamma(0.5 * (nu + 1)) - std::lgamma(0.5 * nu)) / std::sqrt(nu * M_PI);
   auto pdf = [&](double x) { return c * std::pow(1.0 + x * x / nu, -0.5 * (nu + 1)); };
   auto cdf = [&](double x) {  // x >= 0
     const int m = 4000;
@@ -49,7 +50,9 @@ struct Linear {
   Eigen::MatrixXd X;
   Eigen::VectorXd y;
   std::vector<double> lower{0.0, 0.0}, upper{10.0, 10.0};
-  double sse(const std::vector<double>& th) const { return (y - X * Eigen::Vector2d(th[0], th[1])).squaredNorm(); }
+  double sse(const std::vector<double>& th) const {
+    return (y - X * Eigen::Vector2d(th[0], th[1])).squaredNorm();
+  }
   std::vector<double> residuals(const std::vector<double>& th) const {
     const Eigen::VectorXd r = X * Eigen::Vector2d(th[0], th[1]) - y;
     return std::vector<double>(r.data(), r.data() + r.size());
@@ -91,7 +94,9 @@ std::vector<Interval> exactProfile(const Linear& p) {
   const double t = studentQuantile(0.975, p.n - 2);
   const Eigen::Matrix2d inv = XtX.inverse();
   std::vector<Interval> out;
-  for (int j = 0; j < 2; ++j) out.push_back({hat(j) - t * std::sqrt(s2 * inv(j, j)), hat(j) + t * std::sqrt(s2 * inv(j, j)), 0.0});
+  for (int j = 0; j < 2; ++j)
+    out.push_back(
+        {hat(j) - t * std::sqrt(s2 * inv(j, j)), hat(j) + t * std::sqrt(s2 * inv(j, j)), 0.0});
   return out;
 }
 
@@ -115,7 +120,8 @@ std::vector<Interval> exactIntervals(const Linear& p, double a, double b) {
 
 /// The calibration chain of calibrateAssembly on the linear problem: optimum, region, design,
 /// Griddy Gibbs with design weights, summary (and, when asked, the profile intervals).
-PosteriorSummary calibrate(const Linear& p, const std::string& region, std::uint64_t seed, AdaptiveDesign* design_out = nullptr,
+PosteriorSummary calibrate(const Linear& p, const std::string& region, std::uint64_t seed,
+                           AdaptiveDesign* design_out = nullptr,
                            ProfileIntervals* profile_out = nullptr) {
   const SseFunction sse = [&](const std::vector<double>& th) { return p.sse(th); };
   const Optimum opt = minimiseSse(sse, p.lower, p.upper, 4, seed);
@@ -125,9 +131,11 @@ PosteriorSummary calibrate(const Linear& p, const std::string& region, std::uint
   bp.n_data = p.n;
   bp.lower = p.lower;
   bp.upper = p.upper;
-  const Region r = region == "paper"
-                       ? regionFromBox(calcFeasibleBox(sse, bp), bp)
-                       : calcJointRegion(sse, [&](const std::vector<double>& th) { return p.residuals(th); }, bp);
+  const Region r =
+      region == "paper"
+          ? regionFromBox(calcFeasibleBox(sse, bp), bp)
+          : calcJointRegion(
+                sse, [&](const std::vector<double>& th) { return p.residuals(th); }, bp);
   AdaptiveDesignOptions ao;
   ao.adaptive = region != "paper";
   ao.first_points = 200;
@@ -143,7 +151,9 @@ PosteriorSummary calibrate(const Linear& p, const std::string& region, std::uint
     const ProfileOptions po;
     const ProfilePlan plan = planProfile(design.points, design.sse, p.n, p.lower, p.upper, po);
     std::vector<ProfileEnd> ends;
-    for (int i = 0; i < 4; ++i) ends.push_back(refineProfileEnd([&](const std::vector<double>& th) { return p.residuals(th); }, plan, i, po));
+    for (int i = 0; i < 4; ++i)
+      ends.push_back(refineProfileEnd(
+          [&](const std::vector<double>& th) { return p.residuals(th); }, plan, i, po));
     *profile_out = collectProfile(plan, ends, po);
   }
   GibbsOptions go;
@@ -160,7 +170,8 @@ TEST(JointRegion, LinearGaussianRidgeIntervalsWithinTenPercentOfExact) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     const Linear p = makeProblem(seed);
     const Eigen::Matrix2d inv = (p.X.transpose() * p.X).inverse();
-    ASSERT_NEAR(inv(0, 1) / std::sqrt(inv(0, 0) * inv(1, 1)), 0.99, 1e-9) << "the posterior correlation of the test problem";
+    ASSERT_NEAR(inv(0, 1) / std::sqrt(inv(0, 0) * inv(1, 1)), 0.99, 1e-9)
+        << "the posterior correlation of the test problem";
     const auto exact = exactIntervals(p, 1e-3, 1e-3);
     AdaptiveDesign design;
     ProfileIntervals profile;
@@ -170,8 +181,10 @@ TEST(JointRegion, LinearGaussianRidgeIntervalsWithinTenPercentOfExact) {
     const auto t_exact = exactProfile(p);
     for (int j = 0; j < 2; ++j) {
       const double width = t_exact[j].hi - t_exact[j].lo;
-      EXPECT_NEAR(profile.lower[static_cast<std::size_t>(j)], t_exact[j].lo, 0.02 * width) << "seed " << seed << " theta" << j + 1;
-      EXPECT_NEAR(profile.upper[static_cast<std::size_t>(j)], t_exact[j].hi, 0.02 * width) << "seed " << seed << " theta" << j + 1;
+      EXPECT_NEAR(profile.lower[static_cast<std::size_t>(j)], t_exact[j].lo, 0.02 * width)
+          << "seed " << seed << " theta" << j + 1;
+      EXPECT_NEAR(profile.upper[static_cast<std::size_t>(j)], t_exact[j].hi, 0.02 * width)
+          << "seed " << seed << " theta" << j + 1;
       // Never beyond the exact ends (every end is a point inside the threshold; the threshold rests
       // on the best evaluated SSE, a hair above the exact minimum, and an end the secant puts on
       // the crossing lies on that threshold, hence the 1e-3 of slack).
@@ -198,8 +211,10 @@ TEST(JointRegion, PaperBoxFailsTheSameProblem) {
   for (int j = 0; j < 2; ++j) {
     const double width = exact[j].hi - exact[j].lo;
     const auto& q = post.parameters[static_cast<std::size_t>(j)];
-    EXPECT_LT(q.q975 - q.q025, 0.5 * width) << "theta" << j + 1 << ": the paper's box should be far too narrow";
-    const bool within = std::abs(q.q025 - exact[j].lo) <= 0.1 * width && std::abs(q.q975 - exact[j].hi) <= 0.1 * width;
+    EXPECT_LT(q.q975 - q.q025, 0.5 * width)
+        << "theta" << j + 1 << ": the paper's box should be far too narrow";
+    const bool within = std::abs(q.q025 - exact[j].lo) <= 0.1 * width &&
+                        std::abs(q.q975 - exact[j].hi) <= 0.1 * width;
     EXPECT_FALSE(within) << "theta" << j + 1;
   }
 }
@@ -218,7 +233,8 @@ TEST(JointRegion, StudentQuantilesMatchTables) {
 // The optimum on a bound (as an effect switched off): θ2's lower bound lies above its
 // unconstrained estimate. The region gives θ2 its own one-sided axis, so the design lies inside
 // the bounds; the profile interval of θ2 starts at the bound and ends where the closed form says:
-// SSE(θ2) − SSE* = ((θ2 − θ̂2)² − (b − θ̂2)²) / V22 = t² s², i.e. θ2 = θ̂2 + sqrt((b − θ̂2)² + t² s² V22).
+// SSE(θ2) − SSE* = ((θ2 − θ̂2)² − (b − θ̂2)²) / V22 = t² s², i.e. θ2 = θ̂2 + sqrt((b − θ̂2)² + t² s²
+// V22).
 TEST(JointRegion, OptimumOnABoundGetsAOneSidedAxis) {
   Linear p = makeProblem(4);
   const Eigen::Matrix2d V = (p.X.transpose() * p.X).inverse();
@@ -229,7 +245,8 @@ TEST(JointRegion, OptimumOnABoundGetsAOneSidedAxis) {
   p.lower[1] = b;
   const double sse_star = sse_u + (b - th_u(1)) * (b - th_u(1)) / V(1, 1);
   const double t = studentQuantileBySimpson(0.975, p.n - 2);
-  const double upper_exact = th_u(1) + std::sqrt((b - th_u(1)) * (b - th_u(1)) + t * t * sse_star / (p.n - 2) * V(1, 1));
+  const double upper_exact =
+      th_u(1) + std::sqrt((b - th_u(1)) * (b - th_u(1)) + t * t * sse_star / (p.n - 2) * V(1, 1));
   AdaptiveDesign design;
   ProfileIntervals profile;
   calibrate(p, "joint", 4, &design, &profile);

@@ -31,8 +31,9 @@ TEST(Lhs, ExactlyOnePointPerStratumPerDimension) {
         const int m = std::min(n - 1, static_cast<int>(std::floor((x(i, j) - kLo[j]) / h)));
         ++count[static_cast<std::size_t>(m)];
       }
-      for (int m = 0; m < n; ++m) EXPECT_EQ(count[static_cast<std::size_t>(m)], 1)
-          << "n " << n << " dim " << j << " stratum " << m;
+      for (int m = 0; m < n; ++m)
+        EXPECT_EQ(count[static_cast<std::size_t>(m)], 1)
+            << "n " << n << " dim " << j << " stratum " << m;
     }
   }
 }
@@ -107,14 +108,16 @@ TEST(Lhs, InvalidInputsNameTheRule) {
     latinHypercube(0, kLo, kHi, 1);
     FAIL() << "no throw";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("number of points must be >= 1, got 0"),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("number of points must be >= 1, got 0"), std::string::npos)
+        << e.what();
   }
   try {
     latinHypercube(5, {0.0, 2.0}, {1.0, 1.0}, 1);
     FAIL() << "no throw";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("bounds of parameter 1 must be finite with lower <= upper"),
-              std::string::npos) << e.what();
+    EXPECT_NE(
+        std::string(e.what()).find("bounds of parameter 1 must be finite with lower <= upper"),
+        std::string::npos)
+        << e.what();
   }
 }

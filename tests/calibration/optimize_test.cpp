@@ -2,8 +2,8 @@
 // minimum on the bound, failed evaluations, and independence of the execution order.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -171,7 +171,8 @@ TEST(Optimize, ScreeningFindsTheDeepBasinUnscreenedStartsMiss) {
   const auto starts = bestStarts(cand, fs, {0.0, 0.0}, {1.0, 1.0}, 2);
   ASSERT_EQ(starts.size(), 2u);
   EXPECT_EQ(f(starts[0]), *std::min_element(fs.begin(), fs.end()));
-  EXPECT_GE(std::max(std::abs(starts[0][0] - starts[1][0]), std::abs(starts[0][1] - starts[1][1])), 0.05);
+  EXPECT_GE(std::max(std::abs(starts[0][0] - starts[1][0]), std::abs(starts[0][1] - starts[1][1])),
+            0.05);
 }
 
 TEST(Optimize, AllEvaluationsFailingGivesInfiniteSse) {
@@ -200,16 +201,16 @@ TEST(Optimize, ExceptionFromTheModelIsRethrown) {
 
 TEST(Optimize, ResultDoesNotDependOnExecutionOrderOrThreads) {
   const Optimum seq = minimiseSse(quadratic, kLo, kHi, 6, 77);
-  const Optimum rev = minimiseSse(quadratic, kLo, kHi, 6, 77, {},
-                                  [](int n, const std::function<void(int)>& task) {
-                                    for (int i = n - 1; i >= 0; --i) task(i);
-                                  });
-  const Optimum thr = minimiseSse(quadratic, kLo, kHi, 6, 77, {},
-                                  [](int n, const std::function<void(int)>& task) {
-                                    std::vector<std::thread> pool;
-                                    for (int i = 0; i < n; ++i) pool.emplace_back(task, i);
-                                    for (auto& t : pool) t.join();
-                                  });
+  const Optimum rev =
+      minimiseSse(quadratic, kLo, kHi, 6, 77, {}, [](int n, const std::function<void(int)>& task) {
+        for (int i = n - 1; i >= 0; --i) task(i);
+      });
+  const Optimum thr =
+      minimiseSse(quadratic, kLo, kHi, 6, 77, {}, [](int n, const std::function<void(int)>& task) {
+        std::vector<std::thread> pool;
+        for (int i = 0; i < n; ++i) pool.emplace_back(task, i);
+        for (auto& t : pool) t.join();
+      });
   expectSame(seq, rev);
   expectSame(seq, thr);
 }
@@ -232,14 +233,14 @@ TEST(Optimize, OptionsAreValidatedWithClearMessages) {
     minimiseSse(quadratic, kLo, kHi, 0, 1);
     FAIL() << "no throw";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("number of starts must be >= 1, got 0"),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("number of starts must be >= 1, got 0"), std::string::npos)
+        << e.what();
   }
 }
 
 TEST(Optimize, EveryAllowedAlgorithmSolvesTheQuadratic) {
-  for (const char* alg : {"LN_BOBYQA", "LN_SBPLX", "LN_NELDERMEAD", "LN_COBYLA",
-                          "LN_NEWUOA_BOUND", "LN_PRAXIS"}) {
+  for (const char* alg :
+       {"LN_BOBYQA", "LN_SBPLX", "LN_NELDERMEAD", "LN_COBYLA", "LN_NEWUOA_BOUND", "LN_PRAXIS"}) {
     OptimizerOptions opt;
     opt.algorithm = alg;
     opt.maxeval = 5000;

@@ -29,7 +29,8 @@ double valley(const std::vector<double>& z) {
   return kSse0 + kK * a * a + kB * b * b;
 }
 std::vector<double> valleyResiduals(const std::vector<double>& z) {
-  return {std::sqrt(kK) * std::max(kWall - z[0], 0.0), std::sqrt(kB) * (z[1] - 0.5), std::sqrt(kSse0)};
+  return {std::sqrt(kK) * std::max(kWall - z[0], 0.0), std::sqrt(kB) * (z[1] - 0.5),
+          std::sqrt(kSse0)};
 }
 
 }  // namespace
@@ -47,14 +48,16 @@ TEST(Profile, ThresholdIsTheFQuantileOfTheEstimatedVariance) {
   // Inside (<= 46 + 3.95): 0.2 (SSE 50 > threshold? 50 > 49.95, outside) and 0.5.
   EXPECT_DOUBLE_EQ(p.low_point[0][0], 0.5);
   EXPECT_DOUBLE_EQ(p.high_point[0][0], 0.5);
-  // The point of the best SSE, which a calibration takes as its optimum when it beats the optimiser's.
+  // The point of the best SSE, which a calibration takes as its optimum when it beats the
+  // optimiser's.
   ASSERT_EQ(p.best_point.size(), 1u);
   EXPECT_DOUBLE_EQ(p.best_point[0], 0.5);
   EXPECT_THROW(planProfile(pts, {INFINITY, NAN, INFINITY}, kN, {0.0}, {1.0}, {}), InputError);
 }
 
 TEST(Profile, ValleyToABoundThePosteriorMissesAndTheProfileHolds) {
-  // A uniform design over the square (the paper's Griddy Gibbs over it is the flat-prior posterior).
+  // A uniform design over the square (the paper's Griddy Gibbs over it is the flat-prior
+  // posterior).
   const Eigen::MatrixXd x = latinHypercube(20000, {0.0, 0.0}, {1.0, 1.0}, 5);
   std::vector<double> sse;
   for (Eigen::Index k = 0; k < x.rows(); ++k) sse.push_back(valley({x(k, 0), x(k, 1)}));
@@ -64,7 +67,8 @@ TEST(Profile, ValleyToABoundThePosteriorMissesAndTheProfileHolds) {
   const GibbsChains chains = runGriddyGibbs(sse, kN, go);
   const PosteriorSummary post = summarisePosterior(x, chains, {"z1", "z2"});
   const double truth = kWall + 0.01;  // a truth just inside the wall: SSE there is SSE0
-  EXPECT_GT(post.parameters[0].q025, truth) << "the posterior spreads over the valley and its central interval misses the wall end";
+  EXPECT_GT(post.parameters[0].q025, truth)
+      << "the posterior spreads over the valley and its central interval misses the wall end";
   const ProfileOptions po;
   const ProfilePlan plan = planProfile(x, sse, kN, {0.0, 0.0}, {1.0, 1.0}, po);
   std::vector<ProfileEnd> ends;
@@ -151,7 +155,8 @@ TEST(Profile, AnEndTheSecantPutsOnTheCrossingStopsWithoutAnOutsidePoint) {
     const int j = i / 2;
     const double exact = 0.5 + (i % 2 == 0 ? -exact_half : exact_half);
     EXPECT_NEAR(e.theta[static_cast<std::size_t>(j)], exact, 0.01 * 2 * exact_half) << "end " << i;
-    EXPECT_LE(std::abs(e.theta[static_cast<std::size_t>(j)] - 0.5), exact_half + 1e-9) << "end " << i << " overshoots";
+    EXPECT_LE(std::abs(e.theta[static_cast<std::size_t>(j)] - 0.5), exact_half + 1e-9)
+        << "end " << i << " overshoots";
     EXPECT_GE(e.steps_taken, 1) << "end " << i;
     EXPECT_EQ(e.outside_points, 0) << "end " << i << " (" << e.evaluations << " runs)";
   }
@@ -166,7 +171,8 @@ TEST(Profile, ACurvedProfileIsBracketedWithFewOutsidePoints) {
   const double a = 100.0, b = 4e4, rho = 0.6;
   auto res = [&](const std::vector<double>& z) {
     const double e0 = z[0] - 0.5, e1 = z[1] - 0.5;
-    return std::vector<double>{a * e0 + b * e0 * e0 * e0, a * (e1 - rho * e0) / std::sqrt(1 - rho * rho), std::sqrt(46.0)};
+    return std::vector<double>{a * e0 + b * e0 * e0 * e0,
+                               a * (e1 - rho * e0) / std::sqrt(1 - rho * rho), std::sqrt(46.0)};
   };
   auto sseOf = [&](double z0, double z1) {
     const auto r = res({z0, z1});
@@ -179,7 +185,8 @@ TEST(Profile, ACurvedProfileIsBracketedWithFewOutsidePoints) {
   for (Eigen::Index k = 0; k < x.rows(); ++k) sse.push_back(sseOf(x(k, 0), x(k, 1)));
   const ProfileOptions po;
   const ProfilePlan plan = planProfile(x, sse, kN, {0.0, 0.0}, {1.0, 1.0}, po);
-  // The profile in θ_0 is 46 + (a e + b e³)² (θ_1 takes up the rest): its crossing of the threshold.
+  // The profile in θ_0 is 46 + (a e + b e³)² (θ_1 takes up the rest): its crossing of the
+  // threshold.
   auto crossing = [&](double sign) {
     double lo = 0.0, hi = 0.5;
     for (int it = 0; it < 200; ++it) {

@@ -62,8 +62,9 @@ struct Quadratic {
 TEST(Region, JointRegionHoldsTheAnalyticContourOnItsPrincipalAxes) {
   const Quadratic q;
   JointRegionOptions o;
-  const Region r = calcJointRegion([&](const std::vector<double>& t) { return q.sse(t); },
-                                   [&](const std::vector<double>& t) { return q.residuals(t); }, q.problem(), o);
+  const Region r =
+      calcJointRegion([&](const std::vector<double>& t) { return q.sse(t); },
+                      [&](const std::vector<double>& t) { return q.residuals(t); }, q.problem(), o);
   EXPECT_EQ(r.kind, "joint");
   const double dT = r.threshold - q.sse_min;
   EXPECT_DOUBLE_EQ(r.threshold, q.sse_min * (1 + 2 * std::log(100.0) / q.n));
@@ -75,8 +76,10 @@ TEST(Region, JointRegionHoldsTheAnalyticContourOnItsPrincipalAxes) {
     EXPECT_NEAR((q.H * a - lam * a).norm() / lam, 0.0, 1e-6) << "axis " << i;
     // ... and its extents are margin x the semi-axis sqrt(ΔT/λ), to the bisection tolerance.
     const double semi = std::sqrt(dT / lam);
-    EXPECT_NEAR(r.t_upper(i), o.margin * semi, o.margin * o.relative_tolerance * semi * 1.01) << "axis " << i;
-    EXPECT_NEAR(-r.t_lower(i), o.margin * semi, o.margin * o.relative_tolerance * semi * 1.01) << "axis " << i;
+    EXPECT_NEAR(r.t_upper(i), o.margin * semi, o.margin * o.relative_tolerance * semi * 1.01)
+        << "axis " << i;
+    EXPECT_NEAR(-r.t_lower(i), o.margin * semi, o.margin * o.relative_tolerance * semi * 1.01)
+        << "axis " << i;
     EXPECT_GE(r.t_upper(i), o.margin * semi * 0.999);  // the outer end of the bracket: conservative
     // The Gaussian guess has the contour's semi-axis as its 3.03-sigma point.
     EXPECT_NEAR(r.guess_sd(i), semi / std::sqrt(2 * std::log(100.0)), 0.06 * semi);
@@ -84,7 +87,8 @@ TEST(Region, JointRegionHoldsTheAnalyticContourOnItsPrincipalAxes) {
   // Every point of the analytic contour lies in the region; the paper's box misses most of it.
   const Eigen::Matrix3d L = (q.H / dT).llt().matrixL();
   BoxProblem bp = q.problem();
-  const FeasibleBox box = calcFeasibleBox([&](const std::vector<double>& t) { return q.sse(t); }, bp);
+  const FeasibleBox box =
+      calcFeasibleBox([&](const std::vector<double>& t) { return q.sse(t); }, bp);
   const Region paper = regionFromBox(box, bp);
   int outside_paper = 0, total = 0;
   const Eigen::MatrixXd u = latinHypercube(2000, {-1, -1, -1}, {1, 1, 1}, 5);
@@ -111,8 +115,9 @@ TEST(Region, JointRegionHoldsTheAnalyticContourOnItsPrincipalAxes) {
 TEST(Region, ExtentsStopAtTheReachOfTheBounds) {
   Quadratic q;
   q.H *= 1e-4;  // a flat SSE: the contour is far wider than the bounds
-  const Region r = calcJointRegion([&](const std::vector<double>& t) { return q.sse(t); },
-                                   [&](const std::vector<double>& t) { return q.residuals(t); }, q.problem());
+  const Region r =
+      calcJointRegion([&](const std::vector<double>& t) { return q.sse(t); },
+                      [&](const std::vector<double>& t) { return q.residuals(t); }, q.problem());
   for (int i = 0; i < 3; ++i) {
     EXPECT_NEAR(r.t_upper(i), r.reach_upper(i), 1e-12);
     EXPECT_NEAR(-r.t_lower(i), r.reach_lower(i), 1e-12);
@@ -134,10 +139,13 @@ TEST(Region, FailedStencilRunLeavesTheParameterUnidentifiedAndSaysSo) {
   const auto stencil = jacobianStencil(bp, {});
   ASSERT_EQ(stencil.size(), 6u);
   std::vector<std::vector<double>> res;
-  for (std::size_t k = 0; k < stencil.size(); ++k) res.push_back(k == 4 ? std::vector<double>{} : q.residuals(stencil[k]));
+  for (std::size_t k = 0; k < stencil.size(); ++k)
+    res.push_back(k == 4 ? std::vector<double>{} : q.residuals(stencil[k]));
   const JointRegionPlan plan = planJointRegion(bp, res, {});
   ASSERT_EQ(plan.messages.size(), 1u);
-  EXPECT_NE(plan.messages[0].find("parameter 2: a simulation of the Jacobian stencil failed"), std::string::npos) << plan.messages[0];
+  EXPECT_NE(plan.messages[0].find("parameter 2: a simulation of the Jacobian stencil failed"),
+            std::string::npos)
+      << plan.messages[0];
   EXPECT_NEAR(plan.eigenvalues(0), 0.0, 1e-9);  // the zero column
 }
 
@@ -154,15 +162,18 @@ TEST(Region, RaySweepFindsTheCrossingWithRelativeTolerance) {
   const RaySweep c = sweepRay([](double t) { return 1 + t * t; }, 0.5, 2.0, 1.0, o, 0.01);
   EXPECT_TRUE(c.clipped);
   EXPECT_DOUBLE_EQ(c.t_edge, 0.5);
-  const RaySweep f = sweepRay([](double t) { return t > 0.3 ? std::numeric_limits<double>::infinity() : 1.0; }, 10.0, 2.0, 1.0, o, 0.01, 1e-3);
+  const RaySweep f =
+      sweepRay([](double t) { return t > 0.3 ? std::numeric_limits<double>::infinity() : 1.0; },
+               10.0, 2.0, 1.0, o, 0.01, 1e-3);
   EXPECT_TRUE(f.bracketed);
   EXPECT_NEAR(f.t_edge, 0.3, 1e-3);
 }
 
 TEST(Region, JsonRoundTripKeepsEverything) {
   const Quadratic q;
-  const Region r = calcJointRegion([&](const std::vector<double>& t) { return q.sse(t); },
-                                   [&](const std::vector<double>& t) { return q.residuals(t); }, q.problem());
+  const Region r =
+      calcJointRegion([&](const std::vector<double>& t) { return q.sse(t); },
+                      [&](const std::vector<double>& t) { return q.residuals(t); }, q.problem());
   const Region b = Region::fromJson(nlohmann::json::parse(r.toJson().dump()));
   EXPECT_EQ(b.kind, r.kind);
   EXPECT_EQ(b.lower, r.lower);
@@ -176,7 +187,8 @@ TEST(Region, JsonRoundTripKeepsEverything) {
 TEST(Region, PaperRegionIsTheAxisAlignedBox) {
   const Quadratic q;
   const BoxProblem bp = q.problem();
-  const FeasibleBox box = calcFeasibleBox([&](const std::vector<double>& t) { return q.sse(t); }, bp);
+  const FeasibleBox box =
+      calcFeasibleBox([&](const std::vector<double>& t) { return q.sse(t); }, bp);
   const Region r = regionFromBox(box, bp);
   EXPECT_EQ(r.kind, "paper");
   EXPECT_TRUE(r.axes.isIdentity());
@@ -210,17 +222,28 @@ TEST(Region, NarrowingToTheCubeKeepsEveryInsidePointAndDropsTheOutside) {
   r.kind = "joint";
   r.lower.assign(5, 0.0);
   r.upper.assign(5, 1.0);
-  r.centre = (Eigen::VectorXd(5) << 0.08877413463783913, 0.38435170252447104, 0.11754107502685072, 0.06774368808923359, 0.0009445007594765247).finished();
-  const double cols[5][5] = {{0.26712290933346494, 0.9600538513766921, 0.01713319610429118, -0.010802052682654106, 0.08081907581195638},
-                             {0.8423096274602613, -0.26991726337730676, -0.11872599186803139, -0.14046622896892394, 0.4287569705472597},
-                             {-0.41548832031108046, 0.03895161274766554, 0.1099822071752355, 0.08263521582057747, 0.8982914687119005},
-                             {0.14085767965724175, -0.05305123259782617, 0.9865800955220901, -0.03911709300107349, -0.0497418230083927},
-                             {0.16336588555643028, -0.03331083865490487, 0.013199305689742693, 0.985796037889443, -0.015294622429337526}};
+  r.centre = (Eigen::VectorXd(5) << 0.08877413463783913, 0.38435170252447104, 0.11754107502685072,
+              0.06774368808923359, 0.0009445007594765247)
+                 .finished();
+  const double cols[5][5] = {{0.26712290933346494, 0.9600538513766921, 0.01713319610429118,
+                              -0.010802052682654106, 0.08081907581195638},
+                             {0.8423096274602613, -0.26991726337730676, -0.11872599186803139,
+                              -0.14046622896892394, 0.4287569705472597},
+                             {-0.41548832031108046, 0.03895161274766554, 0.1099822071752355,
+                              0.08263521582057747, 0.8982914687119005},
+                             {0.14085767965724175, -0.05305123259782617, 0.9865800955220901,
+                              -0.03911709300107349, -0.0497418230083927},
+                             {0.16336588555643028, -0.03331083865490487, 0.013199305689742693,
+                              0.985796037889443, -0.015294622429337526}};
   r.axes.resize(5, 5);
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 5; ++j) r.axes(j, i) = cols[i][j];
-  r.t_lower = (Eigen::VectorXd(5) << -0.4048724071720531, -0.4770757129335271, -0.4129487010243425, -0.0019234446530410594, -0.0009849412048386773).finished();
-  r.t_upper = (Eigen::VectorXd(5) << 0.059416519268255495, 0.006026251066001799, 0.003488107629418721, 0.35931745146947547, 0.11092731175566213).finished();
+  r.t_lower = (Eigen::VectorXd(5) << -0.4048724071720531, -0.4770757129335271, -0.4129487010243425,
+               -0.0019234446530410594, -0.0009849412048386773)
+                  .finished();
+  r.t_upper = (Eigen::VectorXd(5) << 0.059416519268255495, 0.006026251066001799,
+               0.003488107629418721, 0.35931745146947547, 0.11092731175566213)
+                  .finished();
   const Region n = narrowedToCube(r);
   for (int i = 0; i < 5; ++i) {
     EXPECT_LE(n.t_lower(i), 0.0);

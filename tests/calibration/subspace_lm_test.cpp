@@ -31,7 +31,8 @@ struct Quadratic {
     return [this](const Eigen::VectorXd& z, Eigen::VectorXd& r) {
       ++runs;
       r.resize(static_cast<Eigen::Index>(t.size()));
-      for (std::size_t i = 0; i < t.size(); ++i) r(static_cast<Eigen::Index>(i)) = y[i] - z(0) - z(1) * t[i] - z(2) * t[i] * t[i];
+      for (std::size_t i = 0; i < t.size(); ++i)
+        r(static_cast<Eigen::Index>(i)) = y[i] - z(0) - z(1) * t[i] - z(2) * t[i] * t[i];
       return true;
     };
   }
@@ -67,13 +68,15 @@ ScaledResiduals expSineFit(int ia, int ib, int ic, int& runs) {
   std::vector<double> t, y;
   for (int i = 0; i < 40; ++i) {
     t.push_back(0.1 * i);
-    y.push_back(2.0 * std::exp(-0.7 * t.back()) + 0.3 * std::sin(3.0 * t.back()) + 0.01 * std::cos(17.0 * i));
+    y.push_back(2.0 * std::exp(-0.7 * t.back()) + 0.3 * std::sin(3.0 * t.back()) +
+                0.01 * std::cos(17.0 * i));
   }
   return [t, y, ia, ib, ic, &runs](const Eigen::VectorXd& z, Eigen::VectorXd& r) {
     ++runs;
     r.resize(static_cast<Eigen::Index>(t.size()));
     for (std::size_t i = 0; i < t.size(); ++i)
-      r(static_cast<Eigen::Index>(i)) = y[i] - z(ia) * std::exp(-z(ib) * t[i]) - z(ic) * std::sin(3.0 * t[i]);
+      r(static_cast<Eigen::Index>(i)) =
+          y[i] - z(ia) * std::exp(-z(ib) * t[i]) - z(ic) * std::sin(3.0 * t[i]);
     return true;
   };
 }
@@ -89,8 +92,9 @@ TEST(SubspaceLm, BoxedFitReachesTheClosedFormBoundedMinimum) {
   Eigen::VectorXd u = Eigen::Vector3d(0.9, -0.5, 0.8), r;  // from far away, near a corner
   double f = 0.0;
   SubspaceJacobian jac;
-  ASSERT_TRUE(minimiseOnSubspace(q.residuals(), Eigen::VectorXd::Zero(3), Eigen::MatrixXd::Identity(3, 3),
-                                 Eigen::VectorXd::Constant(3, 1e-3), 50, 0.0, u, r, f, &jac, box(1)));
+  ASSERT_TRUE(
+      minimiseOnSubspace(q.residuals(), Eigen::VectorXd::Zero(3), Eigen::MatrixXd::Identity(3, 3),
+                         Eigen::VectorXd::Constant(3, 1e-3), 50, 0.0, u, r, f, &jac, box(1)));
   EXPECT_DOUBLE_EQ(u(1), 1.0) << "b must rest on its upper bound";
   EXPECT_NEAR(u(0), expect(0), 1e-6);
   EXPECT_NEAR(u(2), expect(2), 1e-6);
@@ -107,13 +111,15 @@ TEST(SubspaceLm, DifferencesAtABoundAreOneSidedAndExact) {
   std::vector<double> t, y;
   for (int i = 0; i < 41; ++i) {
     t.push_back(-1.0 + i / 20.0);
-    y.push_back(0.2 + 1.4 * t.back() - 0.3 * (t.back() * t.back() - 1.0 / 3.0) + 0.01 * std::sin(7.0 * i));
+    y.push_back(0.2 + 1.4 * t.back() - 0.3 * (t.back() * t.back() - 1.0 / 3.0) +
+                0.01 * std::sin(7.0 * i));
   }
   const ScaledResiduals res = [&](const Eigen::VectorXd& zz, Eigen::VectorXd& r) {
     const Eigen::VectorXd z = zz.cwiseMax(-2.0).cwiseMin(2.0);
     r.resize(static_cast<Eigen::Index>(t.size()));
     for (std::size_t i = 0; i < t.size(); ++i)
-      r(static_cast<Eigen::Index>(i)) = y[i] - z(0) - z(1) * t[i] - z(2) * (t[i] * t[i] - 1.0 / 3.0);
+      r(static_cast<Eigen::Index>(i)) =
+          y[i] - z(0) - z(1) * t[i] - z(2) * (t[i] * t[i] - 1.0 / 3.0);
     return true;
   };
   Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
@@ -129,8 +135,8 @@ TEST(SubspaceLm, DifferencesAtABoundAreOneSidedAndExact) {
   set.upper = Eigen::Vector3d::Constant(2.0);
   Eigen::VectorXd u = Eigen::Vector3d(0.5, -2.0, 0.5), r;
   double f = 0.0;
-  ASSERT_TRUE(minimiseOnSubspace(res, Eigen::VectorXd::Zero(3), Eigen::MatrixXd::Identity(3, 3), Eigen::VectorXd::Constant(3, 0.1),
-                                 1, 0.0, u, r, f, nullptr, set));
+  ASSERT_TRUE(minimiseOnSubspace(res, Eigen::VectorXd::Zero(3), Eigen::MatrixXd::Identity(3, 3),
+                                 Eigen::VectorXd::Constant(3, 0.1), 1, 0.0, u, r, f, nullptr, set));
   EXPECT_NEAR(u(0), expect(0), 0.01);
   EXPECT_NEAR(u(1), expect(1), 0.01);
   EXPECT_NEAR(u(2), expect(2), 0.01);
@@ -142,8 +148,10 @@ TEST(SubspaceLm, ThreadCountDoesNotChangeTheResult) {
   double f1 = 0.0, f2 = 0.0;
   const Eigen::MatrixXd B = Eigen::MatrixXd::Identity(3, 3);
   const Eigen::VectorXd h = Eigen::VectorXd::Constant(3, 1e-3);
-  ASSERT_TRUE(minimiseOnSubspace(q1.residuals(), Eigen::VectorXd::Zero(3), B, h, 50, 0.0, u1, r1, f1, nullptr, box(1)));
-  ASSERT_TRUE(minimiseOnSubspace(q2.residuals(), Eigen::VectorXd::Zero(3), B, h, 50, 0.0, u2, r2, f2, nullptr, box(2)));
+  ASSERT_TRUE(minimiseOnSubspace(q1.residuals(), Eigen::VectorXd::Zero(3), B, h, 50, 0.0, u1, r1,
+                                 f1, nullptr, box(1)));
+  ASSERT_TRUE(minimiseOnSubspace(q2.residuals(), Eigen::VectorXd::Zero(3), B, h, 50, 0.0, u2, r2,
+                                 f2, nullptr, box(2)));
   EXPECT_EQ(u1, u2);
   EXPECT_EQ(f1, f2);
   EXPECT_EQ(q1.runs.load(), q2.runs.load());
@@ -162,13 +170,15 @@ TEST(SubspaceLm, CarriedJacobianNeedsFewerRunsOnANonlinearFit) {
   Eigen::VectorXd u_carry = Eigen::Vector3d(1.0, 1.5, 0.0), u_fresh = u_carry, r;
   double f_carry = 0.0, f_fresh = 0.0;
   SubspaceJacobian jac;
-  ASSERT_TRUE(minimiseOnSubspace(res, Eigen::VectorXd::Zero(3), B, h, 50, 0.0, u_carry, r, f_carry, &jac, set));
+  ASSERT_TRUE(minimiseOnSubspace(res, Eigen::VectorXd::Zero(3), B, h, 50, 0.0, u_carry, r, f_carry,
+                                 &jac, set));
   const int runs_carry = runs;
   // Fresh differences at every iteration: one iteration per call, the Jacobian never carried.
   runs = 0;
   for (int it = 0; it < 50; ++it) {
     const double before = f_fresh;
-    ASSERT_TRUE(minimiseOnSubspace(res, Eigen::VectorXd::Zero(3), B, h, 1, 0.0, u_fresh, r, f_fresh, nullptr, set));
+    ASSERT_TRUE(minimiseOnSubspace(res, Eigen::VectorXd::Zero(3), B, h, 1, 0.0, u_fresh, r, f_fresh,
+                                   nullptr, set));
     if (it > 0 && before - f_fresh <= 1e-12 * before) break;
   }
   EXPECT_NEAR(f_carry, f_fresh, 1e-9 * f_fresh + 1e-12);
@@ -206,10 +216,12 @@ TEST(Profile, CarriedJacobianReachesTheSameFloorForFewerRuns) {
     ASSERT_TRUE(minimiseOnSubspace(res, z0, B, h, 2, 1e-6, u_carry, r, f_carry, &jac));
     runs_carry += runs;
     const double tol = std::max(2.0 * (f_fresh - f_true), 1e-4 * f_true);
-    EXPECT_LE(f_carry - f_true, tol) << "v = " << v << ": carried " << f_carry << ", fresh " << f_fresh << ", floor " << f_true;
+    EXPECT_LE(f_carry - f_true, tol)
+        << "v = " << v << ": carried " << f_carry << ", fresh " << f_fresh << ", floor " << f_true;
   }
   std::printf("carried %d runs, fresh %d\n", runs_carry, runs_fresh);
-  EXPECT_LT(runs_carry, runs_fresh / 2) << runs_carry << " runs carried, " << runs_fresh << " fresh";
+  EXPECT_LT(runs_carry, runs_fresh / 2)
+      << runs_carry << " runs carried, " << runs_fresh << " fresh";
   EXPECT_GE(jac.computed, 1);
   EXPECT_GT(jac.reused, jac.computed);
 }

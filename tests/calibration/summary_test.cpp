@@ -111,7 +111,8 @@ TEST(PosteriorSummary, InconsistentInputsAreRejected) {
     FAIL() << "no throw";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("the design has 3 rows but the chains were run on 4"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   ch.design_points = 3;
   ch.index.clear();

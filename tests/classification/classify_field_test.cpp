@@ -19,8 +19,8 @@
 #include "classification/classify_field.hpp"
 #include "classification/synthesis.hpp"
 #include "common/errors.hpp"
-#include "study/generate.hpp"
 #include "io/provenance.hpp"
+#include "study/generate.hpp"
 #include "twin/trace.hpp"
 
 namespace fs = std::filesystem;
@@ -56,7 +56,8 @@ struct World {
     for (const char* id : {"M3", "M4"}) {
       fs::create_directories(dir / "calib" / id);
       std::ofstream((dir / "calib" / id / "posterior.csv").string())
-          << "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
+          << "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_"
+             "index\n"
              "180000,3000,30000,2500,5.5e-05,0\n"
              "182000,2900,31000,2400,5.6e-05,1\n";
       SynthesisOptions so;
@@ -67,8 +68,9 @@ struct World {
       so.threads = 2;
       so.t_begin_s = 10.0;
       so.t_end_s = 10.5;
-      synthesizeAssembly(study, study.assembly(id), calib::readPosteriorCsv((dir / "calib" / id / "posterior.csv").string()), so,
-                         (dir / "synth" / id).string());
+      synthesizeAssembly(study, study.assembly(id),
+                         calib::readPosteriorCsv((dir / "calib" / id / "posterior.csv").string()),
+                         so, (dir / "synth" / id).string());
     }
   }
 };
@@ -80,7 +82,8 @@ World& world() {
 
 int run(const std::string& args, std::string* err = nullptr) {
   const std::string e = (world().dir / "stderr.txt").string();
-  const int rc = std::system((std::string(DTWIN_TWIN_EXE) + " " + args + " > /dev/null 2> " + e).c_str());
+  const int rc =
+      std::system((std::string(DTWIN_TWIN_EXE) + " " + args + " > /dev/null 2> " + e).c_str());
   if (err) *err = slurp(e);
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
@@ -123,7 +126,8 @@ TEST(ClassifyField, FieldRecordsOfM3AgainstM3AndM4) {
   EXPECT_EQ(s["wins"]["M3"].get<int>() + s["wins"]["M4"].get<int>(), 6);
   EXPECT_EQ(s["recommended"], c.recommendation.recommended);
   EXPECT_FALSE(s["recommendation_sentence"].get<std::string>().empty());
-  for (const char* key : {"probability", "bayes_factors", "factorization", "covariance", "cost_s_per_s", "program", "field", "models"})
+  for (const char* key : {"probability", "bayes_factors", "factorization", "covariance",
+                          "cost_s_per_s", "program", "field", "models"})
     EXPECT_TRUE(s.contains(key)) << key;
   ASSERT_EQ(s["bayes_factors"].size(), 1u);
   EXPECT_FALSE(s["bayes_factors"][0]["category"].get<std::string>().empty());
@@ -147,13 +151,15 @@ TEST(ClassifyField, PriorsSampleCovarianceAndMismatchedWindows) {
   o.covariance = "sample";  // 16 vectors for p = 501: singular, rescued by jitter (reported)
   const auto c = classifyFieldFile(w.study, w.field_csv, (w.dir / "synth").string(), o);
   EXPECT_EQ(c.covariance_method, "sample");
-  for (const auto& m : c.models) EXPECT_NE(m.factorization.find("jitter"), std::string::npos) << m.factorization;
+  for (const auto& m : c.models)
+    EXPECT_NE(m.factorization.find("jitter"), std::string::npos) << m.factorization;
   EXPECT_NEAR(std::exp(c.result.log_prior[0]), 0.9, 1e-15);
   EXPECT_THROW(parsePriorList("M3=0.5,M3=0.5", "--prior"), InputError);
   EXPECT_THROW(parsePriorList("M3", "--prior"), InputError);
   FieldClassifyOptions bad;
   bad.prior = {{"M3", 1.0}};
-  EXPECT_THROW(classifyFieldFile(w.study, w.field_csv, (w.dir / "synth").string(), bad), InputError);  // no prior for M4
+  EXPECT_THROW(classifyFieldFile(w.study, w.field_csv, (w.dir / "synth").string(), bad),
+               InputError);  // no prior for M4
   // Field data over another window than the syntheses'.
   const FieldData f = readFieldCsv(w.field_csv);
   FieldData shorter = f;
@@ -162,7 +168,8 @@ TEST(ClassifyField, PriorsSampleCovarianceAndMismatchedWindows) {
   for (std::size_t r = 0; r < f.rowCount(); ++r)
     for (std::size_t k = 0; k < 201; ++k) shorter.values.push_back(f.at(r, k));
   try {
-    classifyField(w.study, shorter, "hub_force_fl_N", (w.dir / "synth").string(), FieldClassifyOptions{});
+    classifyField(w.study, shorter, "hub_force_fl_N", (w.dir / "synth").string(),
+                  FieldClassifyOptions{});
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is not the field data's"), std::string::npos) << e.what();
@@ -172,12 +179,16 @@ TEST(ClassifyField, PriorsSampleCovarianceAndMismatchedWindows) {
   FieldData shifted = f;
   shifted.times_s[7] += 0.0004;
   try {
-    classifyField(w.study, shifted, "hub_force_fl_N", (w.dir / "synth").string(), FieldClassifyOptions{});
+    classifyField(w.study, shifted, "hub_force_fl_N", (w.dir / "synth").string(),
+                  FieldClassifyOptions{});
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("differ first at sample 8"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("differ first at sample 8"), std::string::npos)
+        << e.what();
   }
-  EXPECT_THROW(classifyField(w.study, f, "susp_defl_fl_m", (w.dir / "synth").string(), FieldClassifyOptions{}), InputError);
+  EXPECT_THROW(classifyField(w.study, f, "susp_defl_fl_m", (w.dir / "synth").string(),
+                             FieldClassifyOptions{}),
+               InputError);
 }
 
 TEST(ClassifyField, CommandLine) {
@@ -186,21 +197,38 @@ TEST(ClassifyField, CommandLine) {
   const std::string d = w.dir.string();
   std::string err;
   // synthesize from the same posteriors reuses nothing (other folder) and ends like the library.
-  ASSERT_EQ(run("synthesize" + study + " --calibration " + d + "/calib --assembly M3 --out " + d + "/cli_synth --draws 8 --roads 2 "
-                "--library 30 --block 4 --threads 2 --window 10,10.5 --quiet", &err), 0) << err;
-  EXPECT_TRUE(slurp(w.dir / "cli_synth" / "M3" / "moments.bin") == slurp(w.dir / "synth" / "M3" / "moments.bin"));
-  ASSERT_EQ(run("classify" + study + " --field " + w.field_csv + " --synthetic " + d + "/synth --out " + d +
-                "/cli_cls --threshold 6 --quiet", &err), 0) << err;
+  ASSERT_EQ(run("synthesize" + study + " --calibration " + d + "/calib --assembly M3 --out " + d +
+                    "/cli_synth --draws 8 --roads 2 "
+                    "--library 30 --block 4 --threads 2 --window 10,10.5 --quiet",
+                &err),
+            0)
+      << err;
+  EXPECT_TRUE(slurp(w.dir / "cli_synth" / "M3" / "moments.bin") ==
+              slurp(w.dir / "synth" / "M3" / "moments.bin"));
+  ASSERT_EQ(run("classify" + study + " --field " + w.field_csv + " --synthetic " + d +
+                    "/synth --out " + d + "/cli_cls --threshold 6 --quiet",
+                &err),
+            0)
+      << err;
   EXPECT_TRUE(fs::exists(w.dir / "cli_cls" / "records.csv"));
   const auto s = nlohmann::json::parse(slurp(w.dir / "cli_cls" / "summary.json"));
   EXPECT_EQ(s["recommendation"]["threshold_two_ln_b"], 6.0);
   // Bad input: exit code 2, one line.
-  EXPECT_EQ(run("classify" + study + " --field " + w.field_csv + " --synthetic " + d + "/nowhere --out " + d + "/x", &err), 2);
+  EXPECT_EQ(run("classify" + study + " --field " + w.field_csv + " --synthetic " + d +
+                    "/nowhere --out " + d + "/x",
+                &err),
+            2);
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_NE(err.find("synthetic data folder not found"), std::string::npos) << err;
-  EXPECT_EQ(run("synthesize" + study + " --calibration " + d + "/calib --assembly M1 --out " + d + "/x", &err), 2);
+  EXPECT_EQ(
+      run("synthesize" + study + " --calibration " + d + "/calib --assembly M1 --out " + d + "/x",
+          &err),
+      2);
   EXPECT_NE(err.find("posterior.csv: not found"), std::string::npos) << err;
-  EXPECT_EQ(run("classify" + study + " --field " + w.field_csv + " --synthetic " + d + "/synth --prior M3=2 --out " + d + "/x", &err), 2);
+  EXPECT_EQ(run("classify" + study + " --field " + w.field_csv + " --synthetic " + d +
+                    "/synth --prior M3=2 --out " + d + "/x",
+                &err),
+            2);
 }
 
 // Options errors name the field as "field_classify.<field>" (common/validate.hpp); the factor

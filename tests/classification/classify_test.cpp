@@ -87,11 +87,11 @@ TEST(Classify, NonUniformPriorGivesHandComputedPosterior) {
 
 TEST(Classify, TiesPickTheLowestIndexAndSetTheFlag) {
   Eigen::MatrixXd ll(5, 3);
-  ll << -3.0, -1.0, -1.0,                // exact tie between 1 and 2
-      -1.0 - 5e-13, -1.0, -7.0,          // within 1e-12 relative: tie, lowest index wins
-      -1.0 - 1e-9, -1.0, -7.0,           // a real difference: no tie
-      -2.0, -2.0, -2.0,                  // three-way tie
-      1e-13, 0.0, -5.0;                  // near zero: the absolute floor applies
+  ll << -3.0, -1.0, -1.0,        // exact tie between 1 and 2
+      -1.0 - 5e-13, -1.0, -7.0,  // within 1e-12 relative: tie, lowest index wins
+      -1.0 - 1e-9, -1.0, -7.0,   // a real difference: no tie
+      -2.0, -2.0, -2.0,          // three-way tie
+      1e-13, 0.0, -5.0;          // near zero: the absolute floor applies
   const ClassificationResult res = classifyRecords(ll);
   EXPECT_EQ(res.winner, (std::vector<int>{1, 0, 1, 0, 0}));
   EXPECT_EQ(res.tie, (std::vector<bool>{true, true, false, true, true}));

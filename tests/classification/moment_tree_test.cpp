@@ -22,7 +22,8 @@ MomentAccumulator leaf(long i) {
   std::normal_distribution<double> g(0.0, 1.0);
   Eigen::MatrixXd X(kDim, 3 + i % 4);
   for (Eigen::Index c = 0; c < X.cols(); ++c)
-    for (Eigen::Index r = 0; r < kDim; ++r) X(r, c) = 50.0 * static_cast<double>(i) + (1.0 + r) * g(rng);
+    for (Eigen::Index r = 0; r < kDim; ++r)
+      X(r, c) = 50.0 * static_cast<double>(i) + (1.0 + r) * g(rng);
   MomentOptions mo;
   mo.track_fourth_moment = true;
   MomentAccumulator a(kDim, mo);
@@ -70,7 +71,8 @@ TEST(MomentTree, EverySplitOfTheLeavesGivesTheTreesBits) {
         MomentTree left_first = range(n, 0, a);
         left_first.append(range(n, a, b));
         left_first.append(range(n, b, n));
-        EXPECT_EQ(bits(left_first.root()), want) << n << " leaves split at " << a << ", " << b << " (left first)";
+        EXPECT_EQ(bits(left_first.root()), want)
+            << n << " leaves split at " << a << ", " << b << " (left first)";
       }
   }
 }
@@ -84,8 +86,10 @@ TEST(MomentTree, TheRootHoldsTheMomentsOfEveryVector) {
   for (long i = 0; i < n; ++i) all.merge(leaf(i));
   const MomentAccumulator& r = t.root();
   EXPECT_EQ(r.count(), all.count());
-  EXPECT_LT((r.mean() - all.mean()).cwiseAbs().maxCoeff(), 1e-12 * all.mean().cwiseAbs().maxCoeff());
-  EXPECT_LT((r.covariance() - all.covariance()).cwiseAbs().maxCoeff(), 1e-11 * all.covariance().cwiseAbs().maxCoeff());
+  EXPECT_LT((r.mean() - all.mean()).cwiseAbs().maxCoeff(),
+            1e-12 * all.mean().cwiseAbs().maxCoeff());
+  EXPECT_LT((r.covariance() - all.covariance()).cwiseAbs().maxCoeff(),
+            1e-11 * all.covariance().cwiseAbs().maxCoeff());
   EXPECT_NEAR(r.getFourthMoment(), all.getFourthMoment(), 1e-11 * all.getFourthMoment());
 }
 
@@ -113,7 +117,8 @@ TEST(MomentTree, FlatFormRoundTripsAndRejectsWhatIsNotCanonical) {
   EXPECT_EQ(back.first(), 3);
   EXPECT_EQ(back.end(), 9);
   ASSERT_EQ(back.nodes().size(), t.nodes().size());
-  for (std::size_t k = 0; k < t.nodes().size(); ++k) EXPECT_EQ(bits(back.nodes()[k].acc), bits(t.nodes()[k].acc));
+  for (std::size_t k = 0; k < t.nodes().size(); ++k)
+    EXPECT_EQ(bits(back.nodes()[k].acc), bits(t.nodes()[k].acc));
   std::vector<double> cut(v.begin(), v.end() - 1);
   EXPECT_THROW(MomentTree::fromVector(cut), InputError);
   // Two sibling leaves left unmerged are not a canonical list.
@@ -124,6 +129,6 @@ TEST(MomentTree, FlatFormRoundTripsAndRejectsWhatIsNotCanonical) {
   loose[1].acc = leaf(5);
   EXPECT_THROW(MomentTree::fromNodes(n, 4, std::move(loose), "checkpoint.json"), InputError);
   MomentTree a = range(n, 0, 4);
-  EXPECT_THROW(a.append(range(n, 5, 7)), InputError);  // a gap
+  EXPECT_THROW(a.append(range(n, 5, 7)), InputError);      // a gap
   EXPECT_THROW(a.append(range(n + 1, 4, 7)), InputError);  // another tree
 }

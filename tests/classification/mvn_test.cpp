@@ -45,8 +45,8 @@ TEST(GaussianModel, OneDimensionalClosedForm) {
   EXPECT_EQ(g.factorization(), "cholesky");
   EXPECT_EQ(g.jitter(), 0.0);
   for (double y : {-2.0, 1.5, 3.1}) {
-    const double expected = -0.5 * std::log(2 * M_PI * sigma * sigma) -
-                            (y - mu) * (y - mu) / (2 * sigma * sigma);
+    const double expected =
+        -0.5 * std::log(2 * M_PI * sigma * sigma) - (y - mu) * (y - mu) / (2 * sigma * sigma);
     EXPECT_NEAR(g.logPdf(Eigen::VectorXd::Constant(1, y)), expected, 1e-14);
   }
   EXPECT_NEAR(g.logDeterminant(), std::log(sigma * sigma), 1e-15);
@@ -59,7 +59,8 @@ TEST(GaussianModel, MatchesBruteForceForSmallDimensions) {
     const Eigen::VectorXd mu = randomVector(p, rng, 3.0);
     GaussianModel g(mu, s);
     EXPECT_EQ(g.factorization(), "cholesky") << p;
-    EXPECT_NEAR(g.logDeterminant(), std::log(s.determinant()), 1e-12 * (1 + std::abs(g.logDeterminant())));
+    EXPECT_NEAR(g.logDeterminant(), std::log(s.determinant()),
+                1e-12 * (1 + std::abs(g.logDeterminant())));
     for (int t = 0; t < 5; ++t) {
       const Eigen::VectorXd y = mu + randomVector(p, rng, 2.0);
       const double ref = bruteLogPdf(y, mu, s);
@@ -98,7 +99,8 @@ TEST(GaussianModel, LdltPathMatchesBruteForce) {
     GaussianModel g(mu, s, o);
     EXPECT_EQ(g.factorization(), "ldlt");
     EXPECT_EQ(g.jitter(), 0.0);
-    EXPECT_NEAR(g.logDeterminant(), std::log(s.determinant()), 1e-12 * (1 + std::abs(g.logDeterminant())));
+    EXPECT_NEAR(g.logDeterminant(), std::log(s.determinant()),
+                1e-12 * (1 + std::abs(g.logDeterminant())));
     for (int t = 0; t < 4; ++t) {
       const Eigen::VectorXd y = mu + randomVector(p, rng, 2.0);
       const double ref = bruteLogPdf(y, mu, s);
@@ -159,8 +161,8 @@ TEST(GaussianModel, RankDeficientSampleCovarianceFallsBackAndStaysFinite) {
   const Eigen::MatrixXd sj = s + g.jitterAbsolute() * Eigen::MatrixXd::Identity(p, p);
   const Eigen::LLT<Eigen::MatrixXd> llt(sj);
   const Eigen::VectorXd z = llt.matrixL().solve(y - acc.mean());
-  const double ref = -0.5 * (p * kLn2Pi + 2 * llt.matrixLLT().diagonal().array().log().sum() +
-                             z.squaredNorm());
+  const double ref =
+      -0.5 * (p * kLn2Pi + 2 * llt.matrixLLT().diagonal().array().log().sum() + z.squaredNorm());
   EXPECT_NEAR(lp, ref, 1e-6 * std::abs(ref));
   EXPECT_TRUE(std::isfinite(g.logPdfBatch(y.replicate(1, 3)).sum()));
 }

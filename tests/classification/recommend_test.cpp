@@ -62,7 +62,8 @@ TEST(Recommend, TiesAndPrecisionOfTheSentence) {
   const Recommendation r1 =
       recommendAssembly({{"A", 0.0, 3.0}, {"B", -1.0, 1.0}, {"C", -0.5, 1.0}});
   EXPECT_EQ(r1.recommended, "C");
-  const Recommendation r2 = recommendAssembly({{"A", 0.0, 3.0}, {"B", -1.0, 1.0}, {"C", -1.0, 1.0}});
+  const Recommendation r2 =
+      recommendAssembly({{"A", 0.0, 3.0}, {"B", -1.0, 1.0}, {"C", -1.0, 1.0}});
   EXPECT_EQ(r2.recommended, "B");
   // The best is also the cheapest.
   const Recommendation r3 = recommendAssembly({{"A", 0.0, 1.0}, {"B", -1.0, 2.0}});
@@ -74,8 +75,8 @@ TEST(Recommend, TiesAndPrecisionOfTheSentence) {
   EXPECT_NE(r4.explanation.find("1.03x cheaper than A"), std::string::npos) << r4.explanation;
   EXPECT_NE(r4.explanation.find("(2 ln B = 9.996 < 10)"), std::string::npos) << r4.explanation;
   // −∞ evidence is never a candidate.
-  const Recommendation r5 = recommendAssembly(
-      {{"A", -3.0, 2.0}, {"B", -std::numeric_limits<double>::infinity(), 0.1}});
+  const Recommendation r5 =
+      recommendAssembly({{"A", -3.0, 2.0}, {"B", -std::numeric_limits<double>::infinity(), 0.1}});
   EXPECT_EQ(r5.recommended, "A");
   EXPECT_EQ(r5.candidates, (std::vector<std::string>{"A"}));
 }

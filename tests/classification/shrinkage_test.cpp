@@ -19,7 +19,8 @@ Eigen::MatrixXd makeData(int p, int n, std::uint64_t seed, double corr) {
   Eigen::MatrixXd x(p, n);
   for (int k = 0; k < n; ++k) {
     const double common = rng.normal();
-    for (int i = 0; i < p; ++i) x(i, k) = 3.0 + 0.5 * i + (1.0 + 0.2 * i) * rng.normal() + corr * common;
+    for (int i = 0; i < p; ++i)
+      x(i, k) = 3.0 + 0.5 * i + (1.0 + 0.2 * i) * rng.normal() + corr * common;
   }
   return x;
 }
@@ -41,8 +42,7 @@ BruteLw bruteForce(const Eigen::MatrixXd& x) {
   r.m = s.trace() / p;
   r.d2 = norm2(s - r.m * id);
   double sum = 0.0;
-  for (Eigen::Index k = 0; k < x.cols(); ++k)
-    sum += norm2(c.col(k) * c.col(k).transpose() - s);
+  for (Eigen::Index k = 0; k < x.cols(); ++k) sum += norm2(c.col(k) * c.col(k).transpose() - s);
   r.b2_bar = sum / (n * n);
   const double b2 = std::min(r.b2_bar, r.d2);
   r.rho = b2 / r.d2;
@@ -58,7 +58,8 @@ MomentAccumulator accumulate(const Eigen::MatrixXd& x, int mode) {
   if (mode == 0) {
     for (Eigen::Index k = 0; k < n; ++k) acc.add(x.col(k));
   } else if (mode == 1) {
-    for (Eigen::Index k = 0; k < n; k += 8) acc.addBlock(x.middleCols(k, std::min<Eigen::Index>(8, n - k)));
+    for (Eigen::Index k = 0; k < n; k += 8)
+      acc.addBlock(x.middleCols(k, std::min<Eigen::Index>(8, n - k)));
   } else {  // three partial accumulators merged in order
     const Eigen::Index a = n / 3, b = 2 * n / 3;
     MomentAccumulator p1(static_cast<int>(x.rows()), o), p2 = p1, p3 = p1;
@@ -77,7 +78,10 @@ MomentAccumulator accumulate(const Eigen::MatrixXd& x, int mode) {
 TEST(LedoitWolf, MatchesBruteForceEstimator) {
   // (p, n, correlation): many samples (little shrinkage), few samples (strong shrinkage),
   // more dimensions than samples.
-  struct Case { int p, n; double corr; };
+  struct Case {
+    int p, n;
+    double corr;
+  };
   for (const Case& cs : {Case{6, 200, 1.5}, Case{10, 15, 0.3}, Case{25, 12, 0.0}}) {
     const Eigen::MatrixXd x = makeData(cs.p, cs.n, 100 + cs.p, cs.corr);
     const BruteLw ref = bruteForce(x);
@@ -132,7 +136,8 @@ TEST(LedoitWolf, FullShrinkageWhenNoiseExceedsDispersion) {
   const LedoitWolfEstimate flat = calcLedoitWolf(accumulate(x, 1));
   EXPECT_EQ(flat.d2, 0.0);
   EXPECT_EQ(flat.intensity, 0.0);
-  EXPECT_LT((flat.covariance - 0.25 * Eigen::MatrixXd::Identity(p, p)).cwiseAbs().maxCoeff(), 1e-16);
+  EXPECT_LT((flat.covariance - 0.25 * Eigen::MatrixXd::Identity(p, p)).cwiseAbs().maxCoeff(),
+            1e-16);
 }
 
 TEST(LedoitWolf, FewSamplesShrinkMoreThanMany) {

@@ -11,9 +11,9 @@
 #include <stdexcept>
 
 #include "classification/synthesis.hpp"
-#include "study/generate.hpp"
 #include "common/checksum.hpp"
 #include "common/errors.hpp"
+#include "study/generate.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;
@@ -26,7 +26,9 @@ const Study& demo() { return dtwin_test::shippedStudy("demo"); }
 
 using dtwin_test::slurp;
 
-fs::path tempDir(const std::string& name) { return dtwin_test::freshDir("dtwin_synthesis_" + name); }
+fs::path tempDir(const std::string& name) {
+  return dtwin_test::freshDir("dtwin_synthesis_" + name);
+}
 using dtwin_test::writeText;
 
 // A small posterior around the demo study's truth (tau ~ 1/18000 N^-2).
@@ -66,13 +68,17 @@ TEST(Synthesis, LibrarySeedsAreA53BitStreamOfTheirOwn) {
 
 TEST(Synthesis, PosteriorMustNameTheStudysCalibratedParameters) {
   const fs::path dir = tempDir("names");
-  const auto ps = posterior(dir, "tire.damping,tire.stiffness,suspension.stiffness,suspension.damping,tau,design_index\n"
-                                 "3000,180000,30000,2500,5.5e-05,0\n");
+  const auto ps = posterior(
+      dir,
+      "tire.damping,tire.stiffness,suspension.stiffness,suspension.damping,tau,design_index\n"
+      "3000,180000,30000,2500,5.5e-05,0\n");
   try {
     synthesizeAssembly(demo(), demo().assembly("M3"), ps, tiny(1), (dir / "out").string());
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("are not the study's calibrated parameters"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("are not the study's calibrated parameters"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -122,13 +128,15 @@ TEST(Synthesis, ResumesAfterAnInterruptionBitIdentically) {
   {  // the checkpoint names the tree's nodes so far, each in its own file
     const auto ck = nlohmann::json::parse(slurp(dir / "cut" / "checkpoint.json"));
     ASSERT_FALSE(ck["nodes"].empty());
-    for (const auto& n : ck["nodes"]) EXPECT_TRUE(fs::exists(dir / "cut" / n["file"].get<std::string>())) << n.dump();
+    for (const auto& n : ck["nodes"])
+      EXPECT_TRUE(fs::exists(dir / "cut" / n["file"].get<std::string>())) << n.dump();
   }
   const auto r = synthesizeAssembly(demo(), a, ps, o, out);
   EXPECT_GE(r.resumed_blocks, 1);
   EXPECT_LT(r.resumed_blocks, 3);
   EXPECT_FALSE(r.reused);
-  EXPECT_TRUE(slurp(dir / "full" / "moments.bin") == slurp(dir / "cut" / "moments.bin")) << "resumed moments differ";
+  EXPECT_TRUE(slurp(dir / "full" / "moments.bin") == slurp(dir / "cut" / "moments.bin"))
+      << "resumed moments differ";
   EXPECT_FALSE(fs::exists(dir / "cut" / "checkpoint.json"));
   for (const auto& e : fs::directory_iterator(dir / "cut"))
     EXPECT_EQ(e.path().filename().string().rfind("node_", 0), std::string::npos) << e.path();
@@ -165,15 +173,19 @@ TEST(Synthesis, ADamagedCheckpointIsSetAsideAndTheSynthesisRedone) {
     EXPECT_EQ(j["nodes"][0]["checksum"], contentChecksum(slurp(node)));  // of the node file's bytes
     const fs::path target = damage == "checkpoint" ? ck : node;
     std::string bytes = slurp(target);
-    bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x10);  // one byte in the middle
+    bytes[bytes.size() / 2] =
+        static_cast<char>(bytes[bytes.size() / 2] ^ 0x10);  // one byte in the middle
     writeText(target, bytes);
     ::testing::internal::CaptureStderr();
     const auto r = synthesizeAssembly(demo(), a, ps, o, cut.string());
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(r.resumed_blocks, 0) << damage;  // nothing of it trusted
-    EXPECT_TRUE(slurp(cut / "moments.bin") == full) << damage << ": moments differ from the undisturbed run's";
+    EXPECT_TRUE(slurp(cut / "moments.bin") == full)
+        << damage << ": moments differ from the undisturbed run's";
     EXPECT_TRUE(fs::exists(cut / "checkpoint.json.corrupt")) << damage;
-    const std::string what = damage == "checkpoint" ? "" : "its node file " + node.filename().string() + " fails its checksum";
+    const std::string what = damage == "checkpoint" ? ""
+                                                    : "its node file " + node.filename().string() +
+                                                          " fails its checksum";
     EXPECT_EQ(err.rfind("twin: note: " + ck.string() + ": " + what, 0), 0u) << err;
     EXPECT_NE(err.find("the stage is redone, not trusted"), std::string::npos) << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
@@ -184,9 +196,11 @@ TEST(Synthesis, ADamagedCheckpointIsSetAsideAndTheSynthesisRedone) {
 // vectors are left out; the result stays deterministic.
 TEST(Synthesis, FailedRunsAreCountedAndSkipped) {
   const fs::path dir = tempDir("failures");
-  const auto ps = posterior(dir, "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
-                                 "180000,3000,30000,2500,5.5e-05,0\n"
-                                 "-1,3000,30000,2500,5.5e-05,1\n");
+  const auto ps = posterior(
+      dir,
+      "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
+      "180000,3000,30000,2500,5.5e-05,0\n"
+      "-1,3000,30000,2500,5.5e-05,1\n");
   const auto a = demo().assembly("M3");
   const auto r1 = synthesizeAssembly(demo(), a, ps, tiny(2), (dir / "a").string());
   const auto r2 = synthesizeAssembly(demo(), a, ps, tiny(1), (dir / "b").string());
@@ -195,7 +209,8 @@ TEST(Synthesis, FailedRunsAreCountedAndSkipped) {
   EXPECT_EQ(r1.failures % 2, 0);  // a rejected θ fails both roads of its draw
   EXPECT_EQ(r1.moments.count() + r1.failures, 12);
   ASSERT_EQ(r1.failure_list.size(), static_cast<std::size_t>(r1.failures));
-  EXPECT_NE(r1.failure_list[0].message.find("stiffness"), std::string::npos) << r1.failure_list[0].message;
+  EXPECT_NE(r1.failure_list[0].message.find("stiffness"), std::string::npos)
+      << r1.failure_list[0].message;
   EXPECT_TRUE(slurp(dir / "a" / "moments.bin") == slurp(dir / "b" / "moments.bin"));
   const auto j = nlohmann::json::parse(slurp(dir / "a" / "synthesis.json"));
   EXPECT_EQ(j["failures"], r1.failures);

@@ -32,7 +32,8 @@ std::vector<std::string> listedCommands(const std::string& help) {
       in_group = line.back() == ':' && line != "Options:";
       continue;
     }
-    if (in_group && line.size() > 2 && line[2] != ' ') names.push_back(line.substr(2, line.find(' ', 2) - 2));
+    if (in_group && line.size() > 2 && line[2] != ' ')
+      names.push_back(line.substr(2, line.find(' ', 2) - 2));
   }
   return names;
 }
@@ -69,7 +70,8 @@ std::vector<std::string> examples(bool (*take)(const std::string&)) {
     EXPECT_FALSE(ex.empty()) << "twin " << cmd << " --help has no examples";
     EXPECT_LE(ex.size(), 3u) << cmd;
     for (const auto& e : ex) {
-      EXPECT_EQ(e.rfind("twin " + cmd + " ", 0) == 0 || e == "twin " + cmd, true) << cmd << " example: " << e;
+      EXPECT_EQ(e.rfind("twin " + cmd + " ", 0) == 0 || e == "twin " + cmd, true)
+          << cmd << " example: " << e;
       all.push_back(e);
     }
   }
@@ -84,7 +86,8 @@ void runExamples(const std::string& folder, const std::vector<std::string>& list
   for (const auto& e : list) {
     SCOPED_TRACE(e);
     const auto t0 = std::chrono::steady_clock::now();
-    const std::string cmd = "cd '" + dir.string() + "' && " + DTWIN_TWIN_EXE + e.substr(4) + " > log.txt 2>&1";
+    const std::string cmd =
+        "cd '" + dir.string() + "' && " + DTWIN_TWIN_EXE + e.substr(4) + " > log.txt 2>&1";
     const int st = std::system(cmd.c_str());
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("%6.1f s  %s\n", s, e.c_str());
@@ -105,10 +108,12 @@ bool slowCommand(const std::string& c) { return c == "study" || c == "report"; }
 TEST(HelpText, GroupsTheCommandsByTask) {
   const auto r = runTwin("--help");
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* s : {"Simulate, calibrate and choose an assembly:", "Measured drives:", "Tools:", "share/doc/dtwin", "docs/"})
+  for (const char* s : {"Simulate, calibrate and choose an assembly:", "Measured drives:", "Tools:",
+                        "share/doc/dtwin", "docs/"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s << " in\n" << r.out;
-  const std::vector<std::string> expected = {"simulate", "generate", "calibrate", "coverage", "synthesize", "classify", "study",
-                                             "report",   "import",   "compare",   "diagnose", "changes", "list",       "bench",    "help"};
+  const std::vector<std::string> expected = {
+      "simulate", "generate", "calibrate", "coverage", "synthesize", "classify", "study", "report",
+      "import",   "compare",  "diagnose",  "changes",  "list",       "bench",    "help"};
   EXPECT_EQ(listedCommands(r.out), expected) << r.out;
   EXPECT_EQ(r.out.find("Griddy"), std::string::npos) << "tasks, not internals";
   // `twin` alone and `twin help` print the same overview.
@@ -148,7 +153,8 @@ TEST(HelpText, NoIssueOrSessionWording) {
   std::string all = top.out;
   for (const auto& cmd : listedCommands(top.out)) all += runTwin(cmd + " --help").out;
   all += runTwin("generate lab --help").out + runTwin("generate field --help").out;
-  for (const char* s : {"issue ", "Issue ", "session", "Session"}) EXPECT_EQ(all.find(s), std::string::npos) << s;
+  for (const char* s : {"issue ", "Issue ", "session", "Session"})
+    EXPECT_EQ(all.find(s), std::string::npos) << s;
 }
 
 // Every command's examples but those of the slow commands, in order.
@@ -157,6 +163,4 @@ TEST(HelpExamples, RunAsWritten) {
 }
 
 // The slow commands' examples (they read only shipped files and each other's output).
-TEST(HelpExamplesSlow, RunAsWritten) {
-  runExamples("examples_slow", examples(slowCommand));
-}
+TEST(HelpExamplesSlow, RunAsWritten) { runExamples("examples_slow", examples(slowCommand)); }

@@ -40,7 +40,8 @@ TEST(Progress, AShortRunOffATerminalPrintsNothing) {
     ProgressBar bar("calibrate", true, false, 1h, f);
     for (std::size_t i = 0; i <= 10; ++i) bar.update(i, 10);
   }
-  EXPECT_EQ(contents(f), "") << "no line before the interval, and no closing line for a stage that printed none";
+  EXPECT_EQ(contents(f), "")
+      << "no line before the interval, and no closing line for a stage that printed none";
   std::fclose(f);
 }
 

@@ -27,7 +27,8 @@ namespace fs = std::filesystem;
 
 /// What the child reports through a pipe: "storage <what>", "input <what>", "other <what>" or
 /// "none" (nothing thrown).
-std::string inChildWithFileLimit(rlim_t bytes, void (*write)(const std::string&), const std::string& path) {
+std::string inChildWithFileLimit(rlim_t bytes, void (*write)(const std::string&),
+                                 const std::string& path) {
   int fds[2];
   if (::pipe(fds) != 0) return "pipe failed";
   const pid_t pid = ::fork();
@@ -52,7 +53,8 @@ std::string inChildWithFileLimit(rlim_t bytes, void (*write)(const std::string&)
   ::close(fds[1]);
   std::string got;
   char buf[512];
-  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;) got.append(buf, static_cast<std::size_t>(n));
+  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;)
+    got.append(buf, static_cast<std::size_t>(n));
   ::close(fds[0]);
   int st = 0;
   ::waitpid(pid, &st, 0);
@@ -64,11 +66,14 @@ std::string inChildWithFileLimit(rlim_t bytes, void (*write)(const std::string&)
 TEST(StorageError, AtomicWriteOverTheFileLimitIsAStorageError) {
   const fs::path dir = dtwin_test::freshDir("storage_atomic");
   const std::string path = (dir / "sub" / "summary.json").string();
-  const std::string got = inChildWithFileLimit(4096, [](const std::string& p) { dtwin::writeFileAtomic(p, std::string(100000, 'x')); }, path);
-  EXPECT_EQ(got, "storage " + path + ": cannot write: the file size limit is reached (" + std::strerror(EFBIG) + ") errno=" +
-                     std::to_string(EFBIG));
+  const std::string got = inChildWithFileLimit(
+      4096, [](const std::string& p) { dtwin::writeFileAtomic(p, std::string(100000, 'x')); },
+      path);
+  EXPECT_EQ(got, "storage " + path + ": cannot write: the file size limit is reached (" +
+                     std::strerror(EFBIG) + ") errno=" + std::to_string(EFBIG));
   EXPECT_FALSE(fs::exists(path)) << "the old file or none, never a part";
-  for (const auto& e : fs::directory_iterator(dir / "sub")) ADD_FAILURE() << "left behind: " << e.path();
+  for (const auto& e : fs::directory_iterator(dir / "sub"))
+    ADD_FAILURE() << "left behind: " << e.path();
 }
 
 TEST(StorageError, AppendOverTheFileLimitIsAStorageError) {
@@ -81,12 +86,16 @@ TEST(StorageError, AppendOverTheFileLimitIsAStorageError) {
         dtwin::writeAll(fd, std::string(5000, 'y'), p);
       },
       path);
-  EXPECT_EQ(got.rfind("storage " + path + ": cannot write: the file size limit is reached", 0), 0u) << got;
+  EXPECT_EQ(got.rfind("storage " + path + ": cannot write: the file size limit is reached", 0), 0u)
+      << got;
 }
 
 TEST(StorageError, TheReasonOfEachErrno) {
-  EXPECT_EQ(dtwin::StorageError("a.csv", ENOSPC).what(), std::string("a.csv: cannot write: the disk is full (") + std::strerror(ENOSPC) + ")");
-  EXPECT_EQ(dtwin::StorageError("a.csv", EDQUOT).what(), std::string("a.csv: cannot write: the disk quota is used up (") + std::strerror(EDQUOT) + ")");
+  EXPECT_EQ(dtwin::StorageError("a.csv", ENOSPC).what(),
+            std::string("a.csv: cannot write: the disk is full (") + std::strerror(ENOSPC) + ")");
+  EXPECT_EQ(dtwin::StorageError("a.csv", EDQUOT).what(),
+            std::string("a.csv: cannot write: the disk quota is used up (") +
+                std::strerror(EDQUOT) + ")");
   EXPECT_TRUE(dtwin::StorageError::isStorageFull(ENOSPC));
   EXPECT_TRUE(dtwin::StorageError::isStorageFull(EDQUOT));
   EXPECT_TRUE(dtwin::StorageError::isStorageFull(EFBIG));
@@ -99,19 +108,26 @@ TEST(StorageError, CalibrateOnAFullDiskSaysFreeSpaceAndRerun) {
   const fs::path dir = dtwin_test::freshDir("storage_cli");
   const std::string src = DTWIN_SOURCE_DIR;
   // Lab data first (small files), then a calibration whose files outgrow 20 kB.
-  auto r = dtwin_test::runTwin("generate lab --study " + src + "/data/studies/demo.toml --repetitions 2 --out " + (dir / "lab.csv").string() + " --quiet", dir);
+  auto r = dtwin_test::runTwin("generate lab --study " + src +
+                                   "/data/studies/demo.toml --repetitions 2 --out " +
+                                   (dir / "lab.csv").string() + " --quiet",
+                               dir);
   ASSERT_EQ(r.code, 0) << r.err;
   // SIGXFSZ ignored (a shell `trap '' XFSZ` is inherited through exec), the write gets EFBIG.
-  const std::string cmd = "cd '" + dir.string() + "' && (trap '' XFSZ; prlimit --fsize=20000 " + DTWIN_TWIN_EXE +
-                          " calibrate --study " + src + "/data/studies/demo.toml --data lab.csv --assembly M3 --lhs-points 20 "
-                          "--iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --quiet --out cal) > out.txt 2> err.txt";
+  const std::string cmd = "cd '" + dir.string() + "' && (trap '' XFSZ; prlimit --fsize=20000 " +
+                          DTWIN_TWIN_EXE + " calibrate --study " + src +
+                          "/data/studies/demo.toml --data lab.csv --assembly M3 --lhs-points 20 "
+                          "--iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 --quiet "
+                          "--out cal) > out.txt 2> err.txt";
   const int st = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(st)) << "killed by a signal";
   const std::string err = dtwin_test::slurp(dir / "err.txt");
   EXPECT_EQ(WEXITSTATUS(st), 1) << err;
   EXPECT_EQ(err.rfind("twin: cal/M3/", 0), 0u) << err;
   EXPECT_NE(err.find(": cannot write: the file size limit is reached ("), std::string::npos) << err;
-  EXPECT_NE(err.find("; free space and rerun the same command — it resumes where it stopped\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("; free space and rerun the same command — it resumes where it stopped\n"),
+            std::string::npos)
+      << err;
   EXPECT_EQ(err.find("internal error"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
 }

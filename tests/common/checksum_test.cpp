@@ -23,7 +23,7 @@ using namespace dtwin;
 using dtwin_test::slurp;
 
 TEST(Checksum, LineChecksumIsThe32BitFnv1a) {
-  EXPECT_EQ(lineChecksum(""), "811c9dc5");  // the offset basis
+  EXPECT_EQ(lineChecksum(""), "811c9dc5");   // the offset basis
   EXPECT_EQ(lineChecksum("a"), "e40c292c");  // published test vectors
   EXPECT_EQ(lineChecksum("foobar"), "bf9cf968");
   EXPECT_NE(lineChecksum("7,1.25,-3,0.5"), lineChecksum("7,1.25,-8,0.5"));
@@ -32,13 +32,15 @@ TEST(Checksum, LineChecksumIsThe32BitFnv1a) {
 }
 
 TEST(Checksum, SealedJsonHoldsThroughSpacingAndBreaksOnAChangedValue) {
-  const nlohmann::json stage{{"fingerprint", "abc"},
-                             {"optimum", {{"theta", {0.1, 1.0 / 3.0, 180000.0, 1e-300, -2.5e17}}, {"sse", 12345.678901234567}}},
-                             {"count", 42},
-                             {"flag", true}};
+  const nlohmann::json stage{
+      {"fingerprint", "abc"},
+      {"optimum",
+       {{"theta", {0.1, 1.0 / 3.0, 180000.0, 1e-300, -2.5e17}}, {"sse", 12345.678901234567}}},
+      {"count", 42},
+      {"flag", true}};
   const nlohmann::json sealed = sealJson(stage);
   EXPECT_EQ(checkSeal(stage), Seal::absent);  // a file written before checksums: trusted as before
-  for (int indent : {-1, 0, 2, 4})  // the file's spacing does not matter, its values do
+  for (int indent : {-1, 0, 2, 4})            // the file's spacing does not matter, its values do
     EXPECT_EQ(checkSeal(nlohmann::json::parse(sealed.dump(indent))), Seal::holds) << indent;
   EXPECT_EQ(sealJson(sealed), sealed);  // sealing again gives the same checksum
   std::string text = sealed.dump(2);
@@ -65,7 +67,9 @@ TEST(Checksum, ADamagedFileIsSetAsideWithOneNote) {
   EXPECT_EQ(aside, f.string() + ".corrupt");
   EXPECT_FALSE(fs::exists(f));
   EXPECT_EQ(slurp(aside), "{\"a\":1}\n");  // the latest damaged one replaces an older one
-  EXPECT_EQ(err, "twin: note: " + f.string() + ": fails its checksum: the stage is redone, not trusted (set aside as " + aside + ")\n");
+  EXPECT_EQ(err, "twin: note: " + f.string() +
+                     ": fails its checksum: the stage is redone, not trusted (set aside as " +
+                     aside + ")\n");
 }
 
 TEST(FolderLock, ASecondHolderIsRefusedWithTheFirstNamed) {
@@ -94,7 +98,8 @@ TEST(FolderLock, ASecondHolderIsRefusedWithTheFirstNamed) {
   EXPECT_FALSE(fs::exists(dir / ".lock"));
   EXPECT_TRUE(fs::exists(dir / "result.csv"));  // a folder with results stays
   const FolderLock none("", "--out", nullptr);  // no folder: nothing to lock
-  EXPECT_THROW(FolderLock((dir / "result.csv").string(), "--out", nullptr), InputError);  // a file, not a folder
+  EXPECT_THROW(FolderLock((dir / "result.csv").string(), "--out", nullptr),
+               InputError);  // a file, not a folder
 }
 
 TEST(FolderLock, ALockFileRemovedByItsEndingHolderIsNotTrusted) {
@@ -144,5 +149,6 @@ TEST(FolderLock, AKilledHolderNeverBlocksTheNextRun) {
   ::waitpid(child, &status, 0);
   EXPECT_TRUE(WIFSIGNALED(status));
   const FolderLock next(dir.string(), "--out", nullptr);  // the kernel released it
-  EXPECT_NE(slurp(dir / ".lock").find("pid " + std::to_string(::getpid()) + ","), std::string::npos);
+  EXPECT_NE(slurp(dir / ".lock").find("pid " + std::to_string(::getpid()) + ","),
+            std::string::npos);
 }

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "common/errors.hpp"
 #include "common/distributed.hpp"
+#include "common/errors.hpp"
 #include "common/run_error.hpp"
 
 using namespace dtwin;
@@ -31,30 +31,32 @@ TEST(Distributed, SingleProcessWithoutLauncher) {
 TEST(Distributed, MapReturnsEveryResultInIndexOrderForAnyThreadCount) {
   const Distributed one;
   for (const Distributed* processes : {static_cast<const Distributed*>(nullptr), &one})
-  for (int threads : {1, 2, 4}) {
-    std::atomic<int> calls{0};
-    std::vector<std::size_t> last;
-    const auto r = distributedMap(
-        processes, 37, threads,
-        [&](std::size_t i, int w) {
-          EXPECT_LT(w, distributedWorkers(processes, 37, threads));
-          ++calls;
-          return std::vector<double>(i % 4, static_cast<double>(i) + 0.5);
-        },
-        [&](std::size_t done, std::size_t total) {
-          EXPECT_EQ(total, 37u);
-          last.push_back(done);
-        });
-    EXPECT_EQ(calls.load(), 37);
-    ASSERT_EQ(r.size(), 37u);
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      ASSERT_EQ(r[i].size(), i % 4) << i;
-      for (double v : r[i]) EXPECT_EQ(v, static_cast<double>(i) + 0.5);
+    for (int threads : {1, 2, 4}) {
+      std::atomic<int> calls{0};
+      std::vector<std::size_t> last;
+      const auto r = distributedMap(
+          processes, 37, threads,
+          [&](std::size_t i, int w) {
+            EXPECT_LT(w, distributedWorkers(processes, 37, threads));
+            ++calls;
+            return std::vector<double>(i % 4, static_cast<double>(i) + 0.5);
+          },
+          [&](std::size_t done, std::size_t total) {
+            EXPECT_EQ(total, 37u);
+            last.push_back(done);
+          });
+      EXPECT_EQ(calls.load(), 37);
+      ASSERT_EQ(r.size(), 37u);
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        ASSERT_EQ(r[i].size(), i % 4) << i;
+        for (double v : r[i]) EXPECT_EQ(v, static_cast<double>(i) + 0.5);
+      }
+      ASSERT_FALSE(last.empty());
+      EXPECT_EQ(last.back(), 37u);
     }
-    ASSERT_FALSE(last.empty());
-    EXPECT_EQ(last.back(), 37u);
-  }
-  EXPECT_TRUE(distributedMap(nullptr, 0, 2, [](std::size_t, int) { return std::vector<double>{1.0}; }).empty());
+  EXPECT_TRUE(distributedMap(nullptr, 0, 2, [](std::size_t, int) {
+                return std::vector<double>{1.0};
+              }).empty());
 }
 
 TEST(Distributed, MapRethrowsTheLowestFailingIndexWithItsType) {
@@ -78,13 +80,14 @@ TEST(Distributed, MapRethrowsTheLowestFailingIndexWithItsType) {
 }
 
 TEST(Distributed, PackerRoundTrip) {
-  const std::vector<double> v = Packer()
-                                    .put(3.25)
-                                    .put(std::vector<double>{1, 2, std::numeric_limits<double>::infinity()})
-                                    .put(std::string("status \xC3\xA9\n,\0x", 11))
-                                    .put(static_cast<double>((1ULL << 53) - 1))
-                                    .put(std::vector<double>{})
-                                    .take();
+  const std::vector<double> v =
+      Packer()
+          .put(3.25)
+          .put(std::vector<double>{1, 2, std::numeric_limits<double>::infinity()})
+          .put(std::string("status \xC3\xA9\n,\0x", 11))
+          .put(static_cast<double>((1ULL << 53) - 1))
+          .put(std::vector<double>{})
+          .take();
   Unpacker u(v);
   EXPECT_EQ(u.num(), 3.25);
   const auto a = u.vec();
@@ -137,7 +140,8 @@ TEST(Distributed, OnRootRunsHereAndPassesErrorsOn) {
   const Distributed one;
   for (const Distributed* processes : {static_cast<const Distributed*>(nullptr), &one}) {
     EXPECT_EQ(onRoot(processes, [] { return std::string("abc"); }), "abc");
-    EXPECT_THROW(onRoot(processes, []() -> std::string { throw InputError("x", "y"); }), InputError);
+    EXPECT_THROW(onRoot(processes, []() -> std::string { throw InputError("x", "y"); }),
+                 InputError);
   }
   one.barrier();  // a no-op with one process
 }

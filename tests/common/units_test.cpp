@@ -37,7 +37,8 @@ TEST(Units, DerivedSymbolsAndPowersReduceToMassLengthTime) {
 }
 
 TEST(Units, FormatReadsBack) {
-  for (const char* u : {"N", "N*s/m", "N/m^2", "N*s^2/m^2", "kg", "m/s", "1", "N*s^0.5/m^0.5", "kg*m^2", "m^-1", "1/s"}) {
+  for (const char* u : {"N", "N*s/m", "N/m^2", "N*s^2/m^2", "kg", "m/s", "1", "N*s^0.5/m^0.5",
+                        "kg*m^2", "m^-1", "1/s"}) {
     const Dimension d = parse(u);
     EXPECT_EQ(parse(formatUnit(d)), d) << u << " -> " << formatUnit(d);
   }
@@ -60,5 +61,6 @@ TEST(Units, BadUnitsAreOneSentence) {
   EXPECT_NE(ruleOf("(N/m").find("a '(' is not closed"), std::string::npos);
   EXPECT_NE(ruleOf("m^x").find("'^' must be followed by a number"), std::string::npos);
   EXPECT_NE(ruleOf("m s").find("unexpected 's'"), std::string::npos);
-  for (const char* u : {"", "Ns", "kN", "N/", "(N/m", "m^x", "m s"}) EXPECT_EQ(ruleOf(u).find('\n'), std::string::npos);
+  for (const char* u : {"", "Ns", "kN", "N/", "(N/m", "m^x", "m s"})
+    EXPECT_EQ(ruleOf(u).find('\n'), std::string::npos);
 }

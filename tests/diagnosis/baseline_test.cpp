@@ -43,8 +43,10 @@ TEST(FirBaseline, RecoversAKnownFirFromItsOutput) {
   const Known k(10, 0.0, 7);
   const FirBaseline b = fitFirBaseline("seat_mps2", {&k.data}, {&k.in}, 0.02, 10);
   ASSERT_EQ(b.coef.size(), k.truth.coef.size());
-  for (std::size_t i = 0; i < b.coef.size(); ++i) EXPECT_NEAR(b.coef[i], k.truth.coef[i], 1e-6 * (1 + std::abs(k.truth.coef[i]))) << i;
-  EXPECT_NEAR(firFitPercent(b, k.data, k.in), 100.0, 1e-4);  // the ridge and the normal equations: 2.5e-7 of the signal
+  for (std::size_t i = 0; i < b.coef.size(); ++i)
+    EXPECT_NEAR(b.coef[i], k.truth.coef[i], 1e-6 * (1 + std::abs(k.truth.coef[i]))) << i;
+  EXPECT_NEAR(firFitPercent(b, k.data, k.in), 100.0,
+              1e-4);  // the ridge and the normal equations: 2.5e-7 of the signal
   EXPECT_EQ(b.training_records, 2901);
   EXPECT_NE(b.describe().find("10 taps each at 0.02 s"), std::string::npos) << b.describe();
 }
@@ -117,7 +119,8 @@ TEST(FirBaseline, TheInputFormIsChosenByCrossValidationOnTheTrainingData) {
   for (std::size_t i = 1; i < truth.coef.size(); ++i) truth.coef[i] = 0.02 * g(rng);
   const auto recordsOf = [&](const RoadInput& in) {
     LabData d;
-    for (int k = 0; k <= 2900; ++k) d.records.push_back({1, 0.01 * k, "seat_mps2", truth.predict(in, 0.01 * k) + 0.01 * g(rng)});
+    for (int k = 0; k <= 2900; ++k)
+      d.records.push_back({1, 0.01 * k, "seat_mps2", truth.predict(in, 0.01 * k) + 0.01 * g(rng)});
     return d;
   };
   const RoadInput train = walk(0.0), test = walk(0.5);  // another drive, its signal 0.5 m off
@@ -127,7 +130,8 @@ TEST(FirBaseline, TheInputFormIsChosenByCrossValidationOnTheTrainingData) {
   ASSERT_EQ(chosen.cv_sse.size(), 20u);
   EXPECT_EQ(chosen.input, FirInput::Velocity);
   EXPECT_NE(chosen.describe().find("vertical velocity"), std::string::npos) << chosen.describe();
-  const FirBaseline height = fitFirBaseline("seat_mps2", {&train_data}, {&train}, 0.02, 8, FirInput::Height);
+  const FirBaseline height =
+      fitFirBaseline("seat_mps2", {&train_data}, {&train}, 0.02, 8, FirInput::Height);
   EXPECT_TRUE(height.cv_sse.empty());
   EXPECT_GT(firFitPercent(chosen, test_data, test), firFitPercent(height, test_data, test));
   // A channel that follows the height: the height form.

@@ -26,7 +26,8 @@ struct Truth {
 };
 
 /// A calibration folder (summary.json only) whose estimates are the truths scattered by their sd.
-calib::CalibrationFolder folder(const std::string& dir, const std::vector<Truth>& truths, std::mt19937_64& rng, bool integrator_ok = true) {
+calib::CalibrationFolder folder(const std::string& dir, const std::vector<Truth>& truths,
+                                std::mt19937_64& rng, bool integrator_ok = true) {
   calib::CalibrationFolder f;
   f.dir = dir;
   f.assembly = "M1";
@@ -62,7 +63,8 @@ std::vector<Truth> sedan(double damping) {
 
 TEST(Changes, HolmStepsDownAndStopsAtTheFirstAcceptance) {
   // m = 3, level 0.05: 0.01 <= 0.05/3 rejected; 0.03 > 0.05/2 accepted, so 0.04 is accepted too.
-  EXPECT_EQ(diag::holmRejections({0.01, 0.04, 0.03}, 0.05), (std::vector<bool>{true, false, false}));
+  EXPECT_EQ(diag::holmRejections({0.01, 0.04, 0.03}, 0.05),
+            (std::vector<bool>{true, false, false}));
   // 0.001 <= 0.0167, 0.02 <= 0.025, 0.04 <= 0.05: all three.
   EXPECT_EQ(diag::holmRejections({0.04, 0.001, 0.02}, 0.05), (std::vector<bool>{true, true, true}));
   EXPECT_EQ(diag::holmRejections({}, 0.05), std::vector<bool>{});
@@ -73,7 +75,8 @@ TEST(Changes, IntervalsHoldTheTruthAndNothingIsNamedOnAnUnchangedCar) {
   const int pairs = 2000;
   int held = 0, values = 0, false_alarm_pairs = 0, damper_first = 0, damper_significant = 0;
   for (int k = 0; k < pairs; ++k) {
-    // An unchanged car: every change interval should hold 1 (or 0), and Holm names nothing in >= 95 %.
+    // An unchanged car: every change interval should hold 1 (or 0), and Holm names nothing in >= 95
+    // %.
     const auto a = folder("drive1", sedan(2500), rng), b = folder("drive2", sedan(2500), rng);
     const auto r = diag::compareCalibrations(a, b);
     ASSERT_EQ(r.changes.size(), 5u);
@@ -92,10 +95,13 @@ TEST(Changes, IntervalsHoldTheTruthAndNothingIsNamedOnAnUnchangedCar) {
   }
   // Binomial: 95 % of 10 000 values, sd 0.22 %; 5 % of 2000 pairs, sd 0.49 %.
   const double coverage = static_cast<double>(held) / values;
-  std::printf("change intervals holding the truth: %d of %d (%.2f %%); unchanged pairs with a value named: %d of %d\n", held, values,
-              100 * coverage, false_alarm_pairs, pairs);
+  std::printf(
+      "change intervals holding the truth: %d of %d (%.2f %%); unchanged pairs with a value named: "
+      "%d of %d\n",
+      held, values, 100 * coverage, false_alarm_pairs, pairs);
   EXPECT_NEAR(coverage, 0.95, 0.01) << held << " of " << values;
-  EXPECT_LE(static_cast<double>(false_alarm_pairs) / pairs, 0.05 + 0.015) << false_alarm_pairs << " of " << pairs;
+  EXPECT_LE(static_cast<double>(false_alarm_pairs) / pairs, 0.05 + 0.015)
+      << false_alarm_pairs << " of " << pairs;
   EXPECT_EQ(damper_first, pairs);
   EXPECT_EQ(damper_significant, pairs);
 }
@@ -113,13 +119,15 @@ TEST(Changes, RatiosForPositiveValuesDifferencesOtherwiseAndTheSentence) {
   const auto& d = r.changes[0].name == "suspension.damping" ? r.changes[0] : r.changes[1];
   EXPECT_TRUE(d.ratio);
   EXPECT_NEAR(d.change, 0.55, 1e-6);
-  EXPECT_NE(d.sentence.find("suspension.damping fell to 0.55 x its first value"), std::string::npos) << d.sentence;
+  EXPECT_NE(d.sentence.find("suspension.damping fell to 0.55 x its first value"), std::string::npos)
+      << d.sentence;
   EXPECT_NE(d.sentence.find("; significant"), std::string::npos) << d.sentence;
   const auto& o = r.changes[0].name == "suspension.damping" ? r.changes[1] : r.changes[0];
   EXPECT_EQ(o.name, "sensors.seat.offset_mps2");
   EXPECT_FALSE(o.ratio);
   EXPECT_NEAR(o.change, 0.03, 1e-6);
-  for (std::size_t i = 2; i < r.changes.size(); ++i) EXPECT_FALSE(r.changes[i].significant) << r.changes[i].name;
+  for (std::size_t i = 2; i < r.changes.size(); ++i)
+    EXPECT_FALSE(r.changes[i].significant) << r.changes[i].name;
   const auto j = r.toJson();
   EXPECT_EQ(j["significant"], 2);
   EXPECT_EQ(j["changes"][0]["significant"], true);
@@ -169,8 +177,10 @@ TEST(Changes, AnOptimumOutsideItsIntervalIsReplacedByTheIntervalsCentre) {
     f->summary["units"] = {"N/m"};
     f->summary["bounds"] = {{10000, 1e9}};
   }
-  a.summary["parameters"]["suspension.stiffness"] = {{"optimum", 30000.0}, {"ci95", {29600.0, 30400.0}}};
-  b.summary["parameters"]["suspension.stiffness"] = {{"optimum", 28500.0}, {"ci95", {29600.0, 30400.0}}};  // optimum outside
+  a.summary["parameters"]["suspension.stiffness"] = {{"optimum", 30000.0},
+                                                     {"ci95", {29600.0, 30400.0}}};
+  b.summary["parameters"]["suspension.stiffness"] = {
+      {"optimum", 28500.0}, {"ci95", {29600.0, 30400.0}}};  // optimum outside
   const auto r = dtwin::diag::compareCalibrations(a, b);
   ASSERT_EQ(r.changes.size(), 1u);
   const auto& c = r.changes[0];
@@ -179,5 +189,7 @@ TEST(Changes, AnOptimumOutsideItsIntervalIsReplacedByTheIntervalsCentre) {
   EXPECT_DOUBLE_EQ(c.second.estimate, std::sqrt(29600.0 * 30400.0));
   EXPECT_FALSE(c.significant);  // the optimum alone would read 0.95 x, z = -5.2
   EXPECT_NEAR(c.change, std::sqrt(29600.0 * 30400.0) / 30000.0, 1e-12);
-  EXPECT_NE(c.sentence.find("the second calibration's optimum lies outside its interval"), std::string::npos) << c.sentence;
+  EXPECT_NE(c.sentence.find("the second calibration's optimum lies outside its interval"),
+            std::string::npos)
+      << c.sentence;
 }

@@ -11,9 +11,9 @@
 #include <regex>
 
 #include "diagnosis/compare.hpp"
-#include "subsystems/effect.hpp"
-#include "study/generate.hpp"
 #include "io/log_import.hpp"
+#include "study/generate.hpp"
+#include "subsystems/effect.hpp"
 
 using namespace dtwin;
 using namespace dtwin::diag;
@@ -52,7 +52,8 @@ TEST(Compare, ModelDataAreCoveredAndShowNoLackOfFit) {
     EXPECT_LT(x.systematic_rms, 0.35 * std::sqrt(x.noise_variance)) << x.channel;
     EXPECT_EQ(x.t.size(), 201u);
     EXPECT_NEAR(x.rms, std::sqrt(x.noise_variance), 0.1 * std::sqrt(x.noise_variance));
-    // The fit percentage: 100 (1 − ‖y − ŷ‖ / ‖y − mean y‖) = 100 (1 − RMS / sd(y)) over the records.
+    // The fit percentage: 100 (1 − ‖y − ŷ‖ / ‖y − mean y‖) = 100 (1 − RMS / sd(y)) over the
+    // records.
     double sum = 0, sq = 0, n = 0;
     for (const auto& r : ds.data.records)
       if (r.channel == x.channel) {
@@ -101,7 +102,8 @@ TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
   calib::DataSet at_own{"jitter.csv", "diag_bump", {}};
   for (int k = 1; k < 280; ++k) {
     const double t = 0.01 * k + jitter(rng);
-    for (const char* ch : {"hub_force_fl_N", "hub_force_rl_N"}) at_own.data.records.push_back({1, t, ch, 0.0});
+    for (const char* ch : {"hub_force_fl_N", "hub_force_rl_N"})
+      at_own.data.records.push_back({1, t, ch, 0.0});
   }
   {  // the model's values at the jittered times, plus noise
     calib::LabObjective truth(s, s.assemblies().front(), {at_own}, {});
@@ -116,7 +118,8 @@ TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
     EXPECT_EQ(x.noise_source, "study [noise]") << x.channel;
     EXPECT_NEAR(x.coverage, 0.95, 0.04) << x.channel;
     EXPECT_NE(x.bands_note.find("jitter"), std::string::npos) << x.bands_note;
-    EXPECT_NE(x.bands_note.find("resampled to a uniform 100.0 Hz grid"), std::string::npos) << x.bands_note;
+    EXPECT_NE(x.bands_note.find("resampled to a uniform 100.0 Hz grid"), std::string::npos)
+        << x.bands_note;
     EXPECT_FALSE(x.bands.empty()) << x.channel;
   }
   EXPECT_GT(c.lack_of_fit_p, 1e-3) << "z = " << c.lack_of_fit_z;
@@ -125,7 +128,8 @@ TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
   for (std::size_t i = 0; i < nominal.data.records.size(); ++i)
     nominal.data.records[i].time_s += 0.02;
   calib::LabObjective obj_nominal(s, s.assemblies().front(), {nominal}, {});
-  const auto bad = compareModel(obj_nominal, {nominal}, {truthOf(s)}, estimateChannelNoise(s, {nominal}));
+  const auto bad =
+      compareModel(obj_nominal, {nominal}, {truthOf(s)}, estimateChannelNoise(s, {nominal}));
   EXPECT_LT(bad.lack_of_fit_p, 1e-6) << "z = " << bad.lack_of_fit_z;
 
   // A gap of 0.2 s in the log: compared all the same; the spectrum is the longest stretch's,
@@ -146,14 +150,16 @@ TEST(Compare, JitteredSampleTimesAreComparedAtTheirOwnTimes) {
   const auto g = without({{1.0, 1.2}});
   for (const auto& x : g.series) {
     EXPECT_FALSE(x.bands.empty()) << x.channel;
-    EXPECT_NE(x.bands_note.find("longest stretch between gaps, 1.2"), std::string::npos) << x.bands_note;
+    EXPECT_NE(x.bands_note.find("longest stretch between gaps, 1.2"), std::string::npos)
+        << x.bands_note;
     EXPECT_NE(x.bands_note.find("jitter"), std::string::npos) << x.bands_note;
   }
   // Gaps every 0.6 s: no stretch holds 64 times, so no spectrum (and the note says why).
   const auto h = without({{0.6, 0.7}, {1.2, 1.3}, {1.8, 1.9}, {2.4, 2.5}});
   for (const auto& x : h.series) {
     EXPECT_TRUE(x.bands.empty()) << x.channel;
-    EXPECT_NE(x.bands_note.find("no stretch between gaps holds 64 times"), std::string::npos) << x.bands_note;
+    EXPECT_NE(x.bands_note.find("no stretch between gaps holds 64 times"), std::string::npos)
+        << x.bands_note;
   }
 }
 
@@ -161,7 +167,8 @@ TEST(Compare, InjectedBurstIsLocatedAndLabelled) {
   const Study s = loadStudy(kDemo);
   auto ds = labSet(s, 8);
   for (auto& r : ds.data.records)
-    if (r.channel == "hub_force_fl_N" && r.time_s >= 1.6 - 1e-9 && r.time_s <= 1.7 + 1e-9) r.value += 700.0;
+    if (r.channel == "hub_force_fl_N" && r.time_s >= 1.6 - 1e-9 && r.time_s <= 1.7 + 1e-9)
+      r.value += 700.0;
   calib::LabObjective obj(s, s.assemblies().front(), {ds}, {});
   const auto c = compareModel(obj, {ds}, {truthOf(s)}, estimateChannelNoise(s, {ds}));
   const auto& fl = c.series[0];
@@ -189,13 +196,20 @@ TEST(Compare, WindowsAreLabelledFromTheScenario) {
   const auto m = s.makeModel(s.assemblies().front());
   const auto& sc = s.scenario("diag_bump");
   const double wb = m->vehicle().wheelbase();
-  EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), 1.05, 1.10).find("front wheels climbing"), std::string::npos);
-  EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), 1.45, 1.50).find("front wheels leaving"), std::string::npos);
+  EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), 1.05, 1.10).find("front wheels climbing"),
+            std::string::npos);
+  EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), 1.45, 1.50).find("front wheels leaving"),
+            std::string::npos);
   const double tr = 1.0 + wb / 4.0;
-  EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), tr + 0.01, tr + 0.02).find("rear wheels climbing"), std::string::npos);
-  EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), 0.1, 0.2).find("before the bump"), std::string::npos);
+  EXPECT_NE(
+      describeScenarioWindow(sc, m->vehicle(), tr + 0.01, tr + 0.02).find("rear wheels climbing"),
+      std::string::npos);
+  EXPECT_NE(describeScenarioWindow(sc, m->vehicle(), 0.1, 0.2).find("before the bump"),
+            std::string::npos);
   EXPECT_EQ(describeScenarioWindow(sc, m->vehicle(), 0.1, 0.2).find("rear"), std::string::npos);
-  EXPECT_NE(describeScenarioWindow(s.scenario("diag_rough"), m->vehicle(), 1.0, 1.2).find("rough road"), std::string::npos);
+  EXPECT_NE(
+      describeScenarioWindow(s.scenario("diag_rough"), m->vehicle(), 1.0, 1.2).find("rough road"),
+      std::string::npos);
 }
 
 // Every registered effect's residual signature (Effect::residualSignature) names a force-state map
@@ -214,7 +228,8 @@ TEST(Compare, EveryEffectsSignatureIsAMapAndFitTheComparisonMakes) {
       for (const auto& m : cm.maps)
         if (m.state.rfind(sig.state_map, 0) == 0)
           for (const auto& f : m.fits) found = found || f.feature == sig.feature;
-    EXPECT_TRUE(found) << name << ": no map " << sig.state_map << "* with a fit '" << sig.feature << "'";
+    EXPECT_TRUE(found) << name << ": no map " << sig.state_map << "* with a fit '" << sig.feature
+                       << "'";
   }
 }
 
@@ -226,19 +241,26 @@ TEST(Compare, TheUnknownCarsPotFitsAtTheTruthOnceItsFilterIsDeclared) {
   const fs::path dir = dtwin_test::freshDir("compare_unknown_car");
   const std::string drives = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
   const ImportMapping m = readImportMapping(drives + "unknown_car_map.toml");
-  writeImport(importLog(dtwin_test::slurp(drives + "unknown_car_a.csv"), "a.csv", m, kDemo, "drive_a"), (dir / "A").string());
-  writeImport(importLog(dtwin_test::slurp(drives + "unknown_car_b.csv"), "b.csv", m, (dir / "A" / "study.toml").string(), "drive_b"),
+  writeImport(
+      importLog(dtwin_test::slurp(drives + "unknown_car_a.csv"), "a.csv", m, kDemo, "drive_a"),
+      (dir / "A").string());
+  writeImport(importLog(dtwin_test::slurp(drives + "unknown_car_b.csv"), "b.csv", m,
+                        (dir / "A" / "study.toml").string(), "drive_b"),
               (dir / "B").string());
   // The car as the script made it (its HIDDEN and SEAT).
   std::string text = dtwin_test::slurp(dir / "B" / "study.toml");
-  text = std::regex_replace(text, std::regex(R"(position_m = \[0\.9, -0\.4, 0\.3\])"), "position_m = [1.15, -0.35, 0.25]");
-  text += "\n[fixed]\n\"chassis.mass_kg\" = 1620.0\n\"chassis.pitch_inertia_kgm2\" = 2550.0\n\"chassis.roll_inertia_kgm2\" = 560.0\n"
-          "\"chassis.cg_height_m\" = 0.58\n\"chassis.cg_x_m\" = 0.06\n";
+  text = std::regex_replace(text, std::regex(R"(position_m = \[0\.9, -0\.4, 0\.3\])"),
+                            "position_m = [1.15, -0.35, 0.25]");
+  text +=
+      "\n[fixed]\n\"chassis.mass_kg\" = 1620.0\n\"chassis.pitch_inertia_kgm2\" = "
+      "2550.0\n\"chassis.roll_inertia_kgm2\" = 560.0\n"
+      "\"chassis.cg_height_m\" = 0.58\n\"chassis.cg_x_m\" = 0.06\n";
   const std::vector<double> truth{205000.0, 2600.0, 34000.0, 2300.0};
   auto potRmsInNoiseSd = [&](const std::string& study_text, const std::string& name) {
     dtwin_test::writeText(dir / "B" / name, study_text);
     const Study s = loadStudy((dir / "B" / name).string());
-    const auto set = loadMeasurement(s, parseMeasurementArg((dir / "B" / "measurements.csv").string() + "@drive_b", "test"));
+    const auto set = loadMeasurement(
+        s, parseMeasurementArg((dir / "B" / "measurements.csv").string() + "@drive_b", "test"));
     calib::LabObjective obj(s, s.assemblies().front(), {set}, {});
     const auto c = compareModel(obj, {set}, {truth}, estimateChannelNoise(s, {set}));
     for (const auto& x : c.series)
@@ -249,7 +271,8 @@ TEST(Compare, TheUnknownCarsPotFitsAtTheTruthOnceItsFilterIsDeclared) {
   const double with = potRmsInNoiseSd(text, "truth.toml");
   EXPECT_LT(with, 1.5);
   EXPECT_GT(with, 0.8);  // the pot's own noise is in the data
-  const std::string unfiltered = std::regex_replace(text, std::regex(R"(filter = \{ order = 1, cutoff_hz = 30(\.0)? \})"), "");
+  const std::string unfiltered =
+      std::regex_replace(text, std::regex(R"(filter = \{ order = 1, cutoff_hz = 30(\.0)? \})"), "");
   ASSERT_NE(unfiltered, text);
   EXPECT_GT(potRmsInNoiseSd(unfiltered, "truth_unfiltered.toml"), 3.0);
 }

@@ -52,7 +52,8 @@ std::function<LabelledWindow(const Window&)> labeller(const std::vector<Burst>& 
   return [bursts](const Window& w) {
     LabelledWindow lw{w, "background", 10.0};
     for (std::size_t k = 0; k < bursts.size(); ++k)
-      if (w.t_begin <= 0.5 * (bursts[k].t0 + bursts[k].t1) && w.t_end >= 0.5 * (bursts[k].t0 + bursts[k].t1))
+      if (w.t_begin <= 0.5 * (bursts[k].t0 + bursts[k].t1) &&
+          w.t_end >= 0.5 * (bursts[k].t0 + bursts[k].t1))
         lw.label = "burst " + std::to_string(k);
     return lw;
   };
@@ -102,8 +103,10 @@ TEST(CompareWindows, ALongRecordThatFailsThroughoutListsTheBurstsFirst) {
   EXPECT_EQ(sc.windows[0].label, "burst 1");
   EXPECT_EQ(sc.windows[1].label, "burst 0");
   EXPECT_EQ(sc.windows[2].label, "burst 2");
-  for (std::size_t k = 3; k < sc.windows.size(); ++k) EXPECT_EQ(sc.windows[k].label, "background") << k;
-  for (std::size_t k = 1; k < sc.windows.size(); ++k) EXPECT_GE(sc.windows[k - 1].window.share, sc.windows[k].window.share) << k;
+  for (std::size_t k = 3; k < sc.windows.size(); ++k)
+    EXPECT_EQ(sc.windows[k].label, "background") << k;
+  for (std::size_t k = 1; k < sc.windows.size(); ++k)
+    EXPECT_GE(sc.windows[k - 1].window.share, sc.windows[k].window.share) << k;
   // Each window's share is what the record holds between its ends; none is longer than
   // 2 × 909 s / 200.
   double held = 0;
@@ -117,9 +120,12 @@ TEST(CompareWindows, ALongRecordThatFailsThroughoutListsTheBurstsFirst) {
   const std::string& note = sc.windows_note;
   std::printf("[ note ] %s\n", note.c_str());
   EXPECT_NE(note.find(std::to_string(found.size()) + " windows over "), std::string::npos) << note;
-  EXPECT_NE(note.find("the model misses throughout, not in a few places"), std::string::npos) << note;
+  EXPECT_NE(note.find("the model misses throughout, not in a few places"), std::string::npos)
+      << note;
   EXPECT_NE(note.find("merged to " + std::to_string(s.merged) + " "), std::string::npos) << note;
-  EXPECT_NE(note.find("the 20 largest, listed, hold " + formatPrintf("%.0f", 100 * held) + " % of the residual"), std::string::npos)
+  EXPECT_NE(note.find("the 20 largest, listed, hold " + formatPrintf("%.0f", 100 * held) +
+                      " % of the residual"),
+            std::string::npos)
       << note;
   // compare.json: the listed windows, their counts, and every window found.
   Comparison c;
@@ -162,12 +168,15 @@ TEST(CompareWindows, ScatteredExceedancesAndThreeBurstsListTheBursts) {
   EXPECT_EQ(sc.windows[0].label, "burst 1");
   EXPECT_EQ(sc.windows[1].label, "burst 0");
   EXPECT_EQ(sc.windows[2].label, "burst 2");
-  const double bursts_share = shareIn(t, z, 100.0, 100.5) + shareIn(t, z, 500.0, 500.5) + shareIn(t, z, 800.0, 800.5);
+  const double bursts_share =
+      shareIn(t, z, 100.0, 100.5) + shareIn(t, z, 500.0, 500.5) + shareIn(t, z, 800.0, 800.5);
   EXPECT_NEAR(s.listed_share, bursts_share, 1e-9);
   std::printf("[ note ] %s\n", sc.windows_note.c_str());
   EXPECT_EQ(sc.windows_note.find("throughout"), std::string::npos) << sc.windows_note;
-  EXPECT_NE(sc.windows_note.find(std::to_string(s.found) + " windows over "), std::string::npos) << sc.windows_note;
-  EXPECT_NE(sc.windows_note.find("; the 3 largest, listed, hold " + formatPrintf("%.0f", 100 * bursts_share) + " % of the residual"),
+  EXPECT_NE(sc.windows_note.find(std::to_string(s.found) + " windows over "), std::string::npos)
+      << sc.windows_note;
+  EXPECT_NE(sc.windows_note.find("; the 3 largest, listed, hold " +
+                                 formatPrintf("%.0f", 100 * bursts_share) + " % of the residual"),
             std::string::npos)
       << sc.windows_note;
 }
@@ -189,7 +198,8 @@ TEST(CompareWindows, FewWindowsAreAllListedLargestFirst) {
   EXPECT_EQ(sc.window_summary.listed, 3u);
   EXPECT_DOUBLE_EQ(sc.all_windows[0].t_begin, 2.0) << "every window, in time order";
   EXPECT_EQ(sc.windows_note, "3 windows over 4 % of the record; together they hold " +
-                                 formatPrintf("%.0f", 100 * sc.window_summary.listed_share) + " % of the residual");
+                                 formatPrintf("%.0f", 100 * sc.window_summary.listed_share) +
+                                 " % of the residual");
   SeriesComparison none = series(t, std::vector<double>(t.size(), 0.5));
   addWindows(none, CompareOptions{}, labeller({}));
   EXPECT_TRUE(none.windows.empty());
@@ -229,16 +239,22 @@ TEST(CompareSpectrum, AJitteredRecordIsResampledAndHasASpectrum) {
   sc.noise_variance = sigma * sigma;
   for (std::size_t i = 0; i < n; ++i) {
     sc.predicted_mean.push_back(std::sin(0.3 * t[i]));
-    sc.measured_mean.push_back(sc.predicted_mean.back() + 0.1 * std::sin(2 * kPi * 5.0 * t[i]) + noise(rng));
+    sc.measured_mean.push_back(sc.predicted_mean.back() + 0.1 * std::sin(2 * kPi * 5.0 * t[i]) +
+                               noise(rng));
     sc.repetitions.push_back(1);
   }
   addResidualBands(sc, {});
   ASSERT_EQ(sc.bands.size(), 4u) << sc.bands_note;
   std::printf("[ note ] %s\n", sc.bands_note.c_str());
-  for (const auto& b : sc.bands) std::printf("[ band ] %s: residual / noise power %.3f\n", b.band.c_str(), b.ratio);
-  EXPECT_EQ(sc.bands_note.rfind("resampled to a uniform 110.0 Hz grid by linear interpolation: the clock jitters by up to ", 0), 0u)
+  for (const auto& b : sc.bands)
+    std::printf("[ band ] %s: residual / noise power %.3f\n", b.band.c_str(), b.ratio);
+  EXPECT_EQ(sc.bands_note.rfind("resampled to a uniform 110.0 Hz grid by linear interpolation: the "
+                                "clock jitters by up to ",
+                                0),
+            0u)
       << sc.bands_note;
-  EXPECT_EQ(sc.bands_note.find("longest stretch"), std::string::npos) << "jitter is no gap: " << sc.bands_note;
+  EXPECT_EQ(sc.bands_note.find("longest stretch"), std::string::npos)
+      << "jitter is no gap: " << sc.bands_note;
   for (const auto& b : sc.bands) {
     EXPECT_EQ(b.significant, b.band == "mid") << b.band << " " << b.ratio;
     if (b.band != "mid") {
@@ -264,7 +280,8 @@ TEST(CompareSpectrum, ARateChangeOrTooFewTimesGiveNoSpectrumAndSayWhy) {
   sc.repetitions.assign(t.size(), 1);
   addResidualBands(sc, {});
   EXPECT_TRUE(sc.bands.empty());
-  EXPECT_EQ(sc.bands_note, "no spectrum: the sampling rate changes within the record, from 100 to 125 Hz");
+  EXPECT_EQ(sc.bands_note,
+            "no spectrum: the sampling rate changes within the record, from 100 to 125 Hz");
   SeriesComparison few = series({0.0, 0.1, 0.2}, {0.0, 0.0, 0.0});
   addResidualBands(few, {});
   EXPECT_EQ(few.bands_note, "no spectrum: fewer than 64 times");
@@ -277,5 +294,7 @@ TEST(CompareSpectrum, ARateChangeOrTooFewTimesGiveNoSpectrumAndSayWhy) {
   gappy.repetitions.assign(holes.size(), 1);
   addResidualBands(gappy, {});
   EXPECT_TRUE(gappy.bands.empty());
-  EXPECT_EQ(gappy.bands_note, "no spectrum: 19 gaps in the times (steps longer than 0.015 s), and no stretch between gaps holds 64 times");
+  EXPECT_EQ(gappy.bands_note,
+            "no spectrum: 19 gaps in the times (steps longer than 0.015 s), and no stretch between "
+            "gaps holds 64 times");
 }

@@ -1,9 +1,10 @@
-// The diagnosis's acceptance test, end to end on the real twin (slow): data with a hidden effect on two
-// scenarios (diag_bump, diag_rough; 4 hub forces at 200 Hz, 3 repetitions), `diagnose` from the
+// The diagnosis's acceptance test, end to end on the real twin (slow): data with a hidden effect on
+// two scenarios (diag_bump, diag_rough; 4 hub forces at 200 Hz, 3 repetitions), `diagnose` from the
 // base assembly M1 names it first, recovers its main parameter within 20 %, and adding it cuts
-// the systematic residual RMS by >= 50 % (or, for an effect too weak for that, to the noise); data without a hidden effect give "none"; data with an
-// effect outside the catalogue given to the diagnosis give "unexplained" with a location, not a
-// misnamed effect. The same cases over more seeds: scripts/diagnosis_matrix.py (docs/diagnosis.md).
+// the systematic residual RMS by >= 50 % (or, for an effect too weak for that, to the noise); data
+// without a hidden effect give "none"; data with an effect outside the catalogue given to the
+// diagnosis give "unexplained" with a location, not a misnamed effect. The same cases over more
+// seeds: scripts/diagnosis_matrix.py (docs/diagnosis.md).
 #include <gtest/gtest.h>
 
 #include "test_util.hpp"
@@ -34,7 +35,9 @@ struct Case {
   std::string main_parameter;
   double main_value;
 };
-void PrintTo(const Case& c, std::ostream* os) { *os << (c.hidden.empty() ? "no hidden effect" : c.hidden); }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << (c.hidden.empty() ? "no hidden effect" : c.hidden);
+}
 
 /// A fresh output folder (a previous run's calibrations would be resumed or refused).
 std::string freshDir(const std::string& name) {
@@ -88,8 +91,9 @@ DiagnoseOptions trustedIntervals(const Study& s, DiagnoseOptions o) {
 
 Study study() {
   // One file per process: ctest -j runs the cases in parallel processes.
-  static const fs::path p = dtwin_test::writeDemoStudy(fs::temp_directory_path() / ("diag_study_" + std::to_string(::getpid()) + ".toml"),
-                                                        "lab_repetitions = 3\noptimizer_starts = 2\n");
+  static const fs::path p = dtwin_test::writeDemoStudy(
+      fs::temp_directory_path() / ("diag_study_" + std::to_string(::getpid()) + ".toml"),
+      "lab_repetitions = 3\noptimizer_starts = 2\n");
   return loadStudy(p.string());
 }
 
@@ -103,7 +107,8 @@ TEST_P(HiddenEffect, IsNamedRecoveredAndAddingItCutsTheError) {
   const std::string effect = c.hidden.substr(0, c.hidden.find(':'));
   auto o = smallOptions(s);
   o.apply = {effect};
-  const auto r = diagnose(s, s.assemblies().front(), makeData(s, c.hidden, 1), {}, o, freshDir("diag_" + effect));
+  const auto r = diagnose(s, s.assemblies().front(), makeData(s, c.hidden, 1), {}, o,
+                          freshDir("diag_" + effect));
   ASSERT_EQ(r.verdict, "effect") << r.text();
   EXPECT_EQ(r.named_effect, effect) << r.text();
   const Candidate* named = nullptr;
@@ -121,7 +126,9 @@ TEST_P(HiddenEffect, IsNamedRecoveredAndAddingItCutsTheError) {
   EXPECT_EQ(named->fit->effect_parameters.front().interval == "none", false);
   for (const auto& k : r.candidates)
     if (k.confirmed) {
-      EXPECT_EQ(k.fit->full, k.evidence_gap <= std::max(o.full_within, o.ambiguity_log_evidence)) << k.effect << "\n" << r.text();
+      EXPECT_EQ(k.fit->full, k.evidence_gap <= std::max(o.full_within, o.ambiguity_log_evidence))
+          << k.effect << "\n"
+          << r.text();
       EXPECT_EQ(k.fit->effect_parameters.front().interval == "none", !k.fit->full) << k.effect;
     }
   ASSERT_EQ(r.steps.size(), 2u);
@@ -130,23 +137,27 @@ TEST_P(HiddenEffect, IsNamedRecoveredAndAddingItCutsTheError) {
   // effect whose base error is below twice that (speed-dependent tire stiffness: 0.23) cannot
   // show a 50 % cut; then no significant lack of fit may remain.
   const auto& after_fit = r.steps[1].comparison;
-  const double before = r.steps[0].comparison.systematic_rms_sd, after = after_fit.systematic_rms_sd;
+  const double before = r.steps[0].comparison.systematic_rms_sd,
+               after = after_fit.systematic_rms_sd;
   EXPECT_TRUE(after <= 0.5 * before || after_fit.lack_of_fit_p > 1e-3)
-      << "systematic RMS " << before << " -> " << after << ", lack of fit after z = " << after_fit.lack_of_fit_z;
+      << "systematic RMS " << before << " -> " << after
+      << ", lack of fit after z = " << after_fit.lack_of_fit_z;
   EXPECT_LT(after, before);
 }
 
 // The hidden settings of scripts/diagnosis_matrix.py.
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, HiddenEffect,
-    ::testing::Values(Case{"bump_stop:stiffness=5e6,gap_m=0.02", "gap_m", 0.02},
-                      Case{"damper_asymmetry:ratio=1.6", "ratio", 1.6},
-                      Case{"strut_friction:force_N=150", "force_N", 150.0},
-                      Case{"tire_enveloping:length_m=0.2", "length_m", 0.2},
-                      Case{"progressive_spring:stiffness3=1e7", "stiffness3", 1e7},
-                      Case{"speed_dependent_tire_stiffness:c_v=0.008", "c_v", 0.008},
-                      Case{"anti_roll_bar:stiffness_front_N_per_m=20000,stiffness_rear_N_per_m=10000", "stiffness_front_N_per_m", 2e4},
-                      Case{"top_mount_compliance:compliance_m_per_N=3e-6", "compliance_m_per_N", 3e-6}),
+    ::testing::Values(
+        Case{"bump_stop:stiffness=5e6,gap_m=0.02", "gap_m", 0.02},
+        Case{"damper_asymmetry:ratio=1.6", "ratio", 1.6},
+        Case{"strut_friction:force_N=150", "force_N", 150.0},
+        Case{"tire_enveloping:length_m=0.2", "length_m", 0.2},
+        Case{"progressive_spring:stiffness3=1e7", "stiffness3", 1e7},
+        Case{"speed_dependent_tire_stiffness:c_v=0.008", "c_v", 0.008},
+        Case{"anti_roll_bar:stiffness_front_N_per_m=20000,stiffness_rear_N_per_m=10000",
+             "stiffness_front_N_per_m", 2e4},
+        Case{"top_mount_compliance:compliance_m_per_N=3e-6", "compliance_m_per_N", 3e-6}),
     [](const auto& info) { return info.param.hidden.substr(0, info.param.hidden.find(':')); });
 
 TEST(Diagnose, NoHiddenEffectGivesNone) {
@@ -165,7 +176,8 @@ TEST(Diagnose, AnEffectOutsideTheCatalogueIsUnexplained) {
   auto o = smallOptions(s);
   for (const auto& e : effectNames())
     if (e != "top_mount_compliance") o.effects.push_back(e);
-  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "top_mount_compliance:compliance_m_per_N=3e-6", 1), {}, o,
+  const auto r = diagnose(s, s.assemblies().front(),
+                          makeData(s, "top_mount_compliance:compliance_m_per_N=3e-6", 1), {}, o,
                           freshDir("diag_ooc"));
   EXPECT_EQ(r.verdict, "unexplained") << r.text();
   EXPECT_TRUE(r.named_effect.empty()) << r.text();
@@ -173,9 +185,9 @@ TEST(Diagnose, AnEffectOutsideTheCatalogueIsUnexplained) {
   EXPECT_LT(r.base.comparison.lack_of_fit_p, 1e-3) << r.text();
 }
 
-// Known answers beyond the catalogue (label diag16, about 15 min on 2 cores; kept out of the default run like
-// the matrix): causes that are not catalogue forces are named for what they are, with their
-// value, and applying them cuts the systematic error by half.
+// Known answers beyond the catalogue (label diag16, about 15 min on 2 cores; kept out of the
+// default run like the matrix): causes that are not catalogue forces are named for what they are,
+// with their value, and applying them cuts the systematic error by half.
 
 namespace {
 
@@ -187,7 +199,8 @@ const Candidate* findCandidate(const DiagnosisResult& r, const std::string& name
 
 /// Names `expected` (its kind), recovers its parameter within `tol` of `truth`, and applying it
 /// cuts the systematic RMS by half.
-void expectNamed(const DiagnosisResult& r, const std::string& expected, const std::string& kind, double truth, double tol) {
+void expectNamed(const DiagnosisResult& r, const std::string& expected, const std::string& kind,
+                 double truth, double tol) {
   ASSERT_EQ(r.verdict, "effect") << r.text();
   EXPECT_EQ(r.named_effect, expected) << r.text();
   EXPECT_EQ(r.named_kind, kind) << r.text();
@@ -196,10 +209,12 @@ void expectNamed(const DiagnosisResult& r, const std::string& expected, const st
   ASSERT_TRUE(c->fit);
   ASSERT_FALSE(c->fit->effect_parameters.empty());
   EXPECT_NEAR(c->fit->effect_parameters[0].mean / truth, 1.0, tol) << r.text();
-  EXPECT_LE(c->fit->effect_parameters[0].q025, truth) << r.text();  // the truth inside the printed interval
+  EXPECT_LE(c->fit->effect_parameters[0].q025, truth)
+      << r.text();  // the truth inside the printed interval
   EXPECT_GE(c->fit->effect_parameters[0].q975, truth) << r.text();
   ASSERT_EQ(r.steps.size(), 2u);
-  EXPECT_LE(r.steps[1].comparison.systematic_rms_sd, 0.5 * r.steps[0].comparison.systematic_rms_sd) << r.text();
+  EXPECT_LE(r.steps[1].comparison.systematic_rms_sd, 0.5 * r.steps[0].comparison.systematic_rms_sd)
+      << r.text();
 }
 
 }  // namespace
@@ -209,7 +224,9 @@ TEST(Diagnose16, AWheelMassTwentyPercentHeavierIsNamed) {
   auto o = trustedIntervals(s, smallOptions(s));
   o.apply = {"free:wheel.mass_kg"};
   const double truth = 1.2 * 29.46;
-  const auto data = makeData(s, "", 1, [&](LabOptions& l) { l.hidden_values = {{"wheel.mass_kg", truth, "test", "test"}}; });
+  const auto data = makeData(s, "", 1, [&](LabOptions& l) {
+    l.hidden_values = {{"wheel.mass_kg", truth, "test", "test"}};
+  });
   const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_mass"));
   expectNamed(r, "free:wheel.mass_kg", "parameter", truth, 0.05);
   EXPECT_NE(r.summary.find("wheel mass is about"), std::string::npos) << r.summary;
@@ -223,7 +240,9 @@ TEST(Diagnose16, APitchInertiaThirtyFivePercentHighIsNamed) {
   auto o = trustedIntervals(s, smallOptions(s));
   o.apply = {"free:chassis.pitch_inertia_kgm2"};
   const double truth = 1.35 * 2100.0;
-  const auto data = makeData(s, "", 1, [&](LabOptions& l) { l.hidden_values = {{"chassis.pitch_inertia_kgm2", truth, "test", "test"}}; });
+  const auto data = makeData(s, "", 1, [&](LabOptions& l) {
+    l.hidden_values = {{"chassis.pitch_inertia_kgm2", truth, "test", "test"}};
+  });
   const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_pitch"));
   expectNamed(r, "free:chassis.pitch_inertia_kgm2", "parameter", truth, 0.1);
 }
@@ -234,7 +253,9 @@ TEST(Diagnose16, TheCgEightCentimetresForwardIsNamed) {
   const Study s = study();
   auto o = trustedIntervals(s, smallOptions(s));
   o.apply = {"free:chassis.cg_x_m"};
-  const auto data = makeData(s, "", 1, [&](LabOptions& l) { l.hidden_values = {{"chassis.cg_x_m", 0.08, "test", "test"}}; });
+  const auto data = makeData(s, "", 1, [&](LabOptions& l) {
+    l.hidden_values = {{"chassis.cg_x_m", 0.08, "test", "test"}};
+  });
   const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_cg"));
   expectNamed(r, "free:chassis.cg_x_m", "parameter", 0.08, 0.2);
   EXPECT_NE(r.summary.find("ahead of the vehicle file's position"), std::string::npos) << r.summary;
@@ -245,7 +266,9 @@ TEST(Diagnose16, A25HzSensorLowPassIsNamed) {
   auto o = trustedIntervals(s, smallOptions(s));
   o.apply = {"lowpass:hub_force"};
   const double tau = 1.0 / (2 * kPi * 25.0);
-  const auto data = makeData(s, "", 1, [&](LabOptions& l) { l.hidden_sensor = {{"lowpass", tau}}; });
+  const auto data = makeData(s, "", 1, [&](LabOptions& l) {
+    l.hidden_sensor = {{"lowpass", tau}};
+  });
   const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_lowpass"));
   expectNamed(r, "lowpass:hub_force", "sensor", tau, 0.2);
   EXPECT_NE(r.summary.find("look filtered at about"), std::string::npos) << r.summary;
@@ -258,7 +281,9 @@ TEST(Diagnose16, APure8msDelayIsNamedNotItsLowPassLookAlike) {
   const Study s = study();
   auto o = trustedIntervals(s, smallOptions(s));
   o.apply = {"delay:hub_force"};
-  const auto data = makeData(s, "", 1, [&](LabOptions& l) { l.hidden_sensor = {{"delay", 0.008}}; });
+  const auto data = makeData(s, "", 1, [&](LabOptions& l) {
+    l.hidden_sensor = {{"delay", 0.008}};
+  });
   const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_delay"));
   expectNamed(r, "delay:hub_force", "sensor", 0.008, 0.1);
   EXPECT_NE(r.summary.find("delayed by"), std::string::npos) << r.summary;
@@ -270,7 +295,9 @@ TEST(Diagnose16, APure8msDelayIsNamedNotItsLowPassLookAlike) {
 namespace {
 /// Both hidden causes named, in the order of their shares, each main parameter within `tol` of
 /// its truth, and applying both (in the order found) halves the systematic error.
-void expectTwoCauses(const DiagnosisResult& r, const std::map<std::string, std::pair<std::string, double>>& truth, double tol) {
+void expectTwoCauses(const DiagnosisResult& r,
+                     const std::map<std::string, std::pair<std::string, double>>& truth,
+                     double tol) {
   ASSERT_EQ(r.verdict, "effect") << r.text();
   ASSERT_GE(r.causes.size(), 2u) << r.text();
   for (std::size_t i = 0; i < 2; ++i) {
@@ -289,7 +316,9 @@ void expectTwoCauses(const DiagnosisResult& r, const std::map<std::string, std::
   EXPECT_GE(r.causes[0].explained, r.causes[1].explained) << r.text();  // the stronger first
   EXPECT_EQ(r.named_effect, r.causes[0].name);
   ASSERT_GE(r.steps.size(), 3u);
-  EXPECT_LE(r.steps.back().comparison.systematic_rms_sd, 0.5 * r.steps.front().comparison.systematic_rms_sd) << r.text();
+  EXPECT_LE(r.steps.back().comparison.systematic_rms_sd,
+            0.5 * r.steps.front().comparison.systematic_rms_sd)
+      << r.text();
 }
 }  // namespace
 
@@ -298,8 +327,10 @@ TEST(Diagnose16, TwoHiddenCatalogueEffectsAreBothNamed) {
   const Study s = study();
   auto o = smallOptions(s);
   o.apply = {"bump_stop", "damper_asymmetry"};
-  auto data = makeData(s, "bump_stop:stiffness=5e6,gap_m=0.02", 1,
-                       [&](LabOptions& l) { l.hidden_effects.push_back(parseEffectSetting("damper_asymmetry:ratio=1.6", "test", s.effectCatalog())); });
+  auto data = makeData(s, "bump_stop:stiffness=5e6,gap_m=0.02", 1, [&](LabOptions& l) {
+    l.hidden_effects.push_back(
+        parseEffectSetting("damper_asymmetry:ratio=1.6", "test", s.effectCatalog()));
+  });
   const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_two_effects"));
   expectTwoCauses(r, {{"bump_stop", {"gap_m", 0.02}}, {"damper_asymmetry", {"ratio", 1.6}}}, 0.2);
 }
@@ -310,10 +341,12 @@ TEST(Diagnose16, AnEffectAndAWrongVehicleValueAreBothNamed) {
   auto o = smallOptions(s);
   o.apply = {"bump_stop", "free:wheel.mass_kg"};
   const double mass = 1.2 * 29.46;
-  auto data = makeData(s, "bump_stop:stiffness=5e6,gap_m=0.02", 1,
-                       [&](LabOptions& l) { l.hidden_values = {{"wheel.mass_kg", mass, "test", "test"}}; });
+  auto data = makeData(s, "bump_stop:stiffness=5e6,gap_m=0.02", 1, [&](LabOptions& l) {
+    l.hidden_values = {{"wheel.mass_kg", mass, "test", "test"}};
+  });
   const auto r = diagnose(s, s.assemblies().front(), data, {}, o, freshDir("diag16_effect_value"));
-  expectTwoCauses(r, {{"bump_stop", {"gap_m", 0.02}}, {"free:wheel.mass_kg", {"wheel.mass_kg", mass}}}, 0.2);
+  expectTwoCauses(
+      r, {{"bump_stop", {"gap_m", 0.02}}, {"free:wheel.mass_kg", {"wheel.mass_kg", mass}}}, 0.2);
 }
 
 TEST(Diagnose16, AHiddenUserDefinedEffectIsNamed) {
@@ -322,14 +355,16 @@ TEST(Diagnose16, AHiddenUserDefinedEffectIsNamed) {
   // saturating at c2 v0).
   static const fs::path p = dtwin_test::writeDemoStudy(
       fs::temp_directory_path() / ("diag16_user_" + std::to_string(::getpid()) + ".toml"),
-      "lab_repetitions = 3\noptimizer_starts = 2\n\n[user_effects.digressive_damper]\nelement = \"strut\"\n"
+      "lab_repetitions = 3\noptimizer_starts = 2\n\n[user_effects.digressive_damper]\nelement = "
+      "\"strut\"\n"
       "force = \"c2 * v0 * tanh(v / v0)\"\n"
       "parameters = { c2 = { value = 0, unit = \"N*s/m\", lower = 0, upper = 8000 }, "
       "v0 = { value = 0.2, unit = \"m/s\", lower = 0.05, upper = 1, shape = true } }\n");
   const Study s = loadStudy(p.string());
   auto o = smallOptions(s);
   o.apply = {"digressive_damper"};
-  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "digressive_damper:c2=3000", 1), {}, o, freshDir("diag16_user"));
+  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "digressive_damper:c2=3000", 1),
+                          {}, o, freshDir("diag16_user"));
   expectNamed(r, "digressive_damper", "effect", 3000.0, 0.2);
 }
 
@@ -340,13 +375,15 @@ TEST(Diagnose16, AHiddenChassisElementWrittenAsAnExpressionIsNamed) {
   // effect takes another name, as a study must give it).
   static const fs::path p = dtwin_test::writeDemoStudy(
       fs::temp_directory_path() / ("diag16_body_damper_" + std::to_string(::getpid()) + ".toml"),
-      "lab_repetitions = 3\noptimizer_starts = 2\n\n[user_effects.body_damper]\nelement = \"chassis\"\n"
+      "lab_repetitions = 3\noptimizer_starts = 2\n\n[user_effects.body_damper]\nelement = "
+      "\"chassis\"\n"
       "force = \"-cs * w\"\n"
       "parameters = { cs = { value = 0, unit = \"N*s/m\", lower = 0, upper = 8000 } }\n");
   const Study s = loadStudy(p.string());
   auto o = smallOptions(s);
   o.apply = {"body_damper"};
-  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "body_damper:cs=2500", 1), {}, o, freshDir("diag16_body_damper"));
+  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "body_damper:cs=2500", 1), {}, o,
+                          freshDir("diag16_body_damper"));
   expectNamed(r, "body_damper", "effect", 2500.0, 0.2);
 }
 
@@ -380,7 +417,8 @@ TEST(Diagnose16, ATermOnlyTheRegressionFindsIsProposedAppliedAndCutsTheError) {
   o.effects = {pasted.name};  // the catalogue: only the pasted term (the rest were screened above)
   const auto a = diagnose(with, with.assemblies().front(), data, {}, o, dir);
   ASSERT_EQ(a.steps.size(), 2u) << a.text();
-  EXPECT_LE(a.steps[1].comparison.systematic_rms_sd, 0.5 * a.steps[0].comparison.systematic_rms_sd) << a.text();
+  EXPECT_LE(a.steps[1].comparison.systematic_rms_sd, 0.5 * a.steps[0].comparison.systematic_rms_sd)
+      << a.text();
 }
 
 // Candidates of structure (docs/diagnosis.md, "Candidates of structure"). A value the data push
@@ -395,17 +433,24 @@ TEST(DiagnoseStructure, AValueBeyondItsRangeIsAFindingAndWideningItIsTheVerdict)
   o.effects = {"widen:suspension.stiffness", "bump_stop"};
   o.causes = 1;
   o.propose_terms = 0;
-  const auto r = diagnose(s, s.assemblies().front(), makeData(s, "", 1), {}, o, freshDir("diag_widen"));
+  const auto r =
+      diagnose(s, s.assemblies().front(), makeData(s, "", 1), {}, o, freshDir("diag_widen"));
   bool finding = false;
   for (const auto& b : r.base.bounds)
-    finding = finding || (b.name == "suspension.stiffness" && b.side == "upper" && b.optimum_on_bound && b.bound == 25e3);
+    finding = finding || (b.name == "suspension.stiffness" && b.side == "upper" &&
+                          b.optimum_on_bound && b.bound == 25e3);
   EXPECT_TRUE(finding) << r.text();
-  EXPECT_NE(r.text().find("FINDING: suspension.stiffness is at its upper bound 25000"), std::string::npos) << r.text();
+  EXPECT_NE(r.text().find("FINDING: suspension.stiffness is at its upper bound 25000"),
+            std::string::npos)
+      << r.text();
   ASSERT_EQ(r.verdict, "effect") << r.text();
   EXPECT_EQ(r.named_effect, "widen:suspension.stiffness") << r.text();
   EXPECT_EQ(r.named_kind, "range");
-  EXPECT_NE(r.summary.find("Far from the prior: the suspension stiffness is about"), std::string::npos) << r.summary;
-  EXPECT_NE(r.summary.find("stiffer than the study's range allows (25000 N/m)"), std::string::npos) << r.summary;
+  EXPECT_NE(r.summary.find("Far from the prior: the suspension stiffness is about"),
+            std::string::npos)
+      << r.summary;
+  EXPECT_NE(r.summary.find("stiffer than the study's range allows (25000 N/m)"), std::string::npos)
+      << r.summary;
   ASSERT_FALSE(r.causes.empty());
   ASSERT_EQ(r.causes[0].parameters.size(), 1u) << r.text();
   EXPECT_NEAR(r.causes[0].parameters[0].optimum / 30e3, 1.0, 0.03) << r.text();
@@ -415,11 +460,13 @@ namespace {
 /// The demo study with the tire options pac2002 (M1) and hub (M2) on MacPherson struts.
 Study hubStudy() {
   static const fs::path p = [] {
-    const fs::path path = fs::temp_directory_path() / ("diag_hub_study_" + std::to_string(::getpid()) + ".toml");
+    const fs::path path =
+        fs::temp_directory_path() / ("diag_hub_study_" + std::to_string(::getpid()) + ".toml");
     dtwin_test::writeDemoStudy(path, "lab_repetitions = 3\noptimizer_starts = 2\n");
     std::string t = dtwin_test::slurp(path);
     t = std::regex_replace(t, std::regex("tire = \\[[^\\]]*\\]"), "tire = [\"pac2002\", \"hub\"]");
-    t = std::regex_replace(t, std::regex("suspension = \\[[^\\]]*\\]"), "suspension = [\"macpherson\"]");
+    t = std::regex_replace(t, std::regex("suspension = \\[[^\\]]*\\]"),
+                           "suspension = [\"macpherson\"]");
     dtwin_test::writeText(path, t);
     return path;
   }();
@@ -442,7 +489,8 @@ TEST(DiagnoseStructure, TheHubInputAndASkyhookControllerAreNamed) {
     l.repetitions = 3;
     l.seed = 3;
     l.channels = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
-    l.hidden_effects.push_back(parseEffectSetting("skyhook:damping=3000", "test", s.effectCatalog()));
+    l.hidden_effects.push_back(
+        parseEffectSetting("skyhook:damping=3000", "test", s.effectCatalog()));
     data.push_back({sc + ".csv", sc, generateLab(s, s.assembly("M2"), l).data, 3});
   }
   auto o = smallOptions(s);
@@ -470,7 +518,8 @@ TEST(DiagnoseStructure, TheHubInputAndASkyhookControllerAreNamed) {
   for (const auto& k : r.causes) {
     if (k.name == "tire=hub") {
       EXPECT_EQ(k.kind, "option");
-      EXPECT_NE(k.finding.find("the road signal behaves as the hub's motion"), std::string::npos) << k.finding;
+      EXPECT_NE(k.finding.find("the road signal behaves as the hub's motion"), std::string::npos)
+          << k.finding;
     }
     if (k.name == "skyhook") {
       ASSERT_EQ(k.parameters.size(), 1u) << r.text();

@@ -43,7 +43,8 @@ TEST(DiagnoseOptions, DefaultsAreValidAndEveryFieldIsChecked) {
       {"screen_alpha", [](DiagnoseOptions& o) { o.screen_alpha = 0.0; }},
       {"screen_alpha", [](DiagnoseOptions& o) { o.screen_alpha = 1.0; }},
       {"bic_strong", [](DiagnoseOptions& o) { o.bic_strong = -1.0; }},
-      {"ambiguity_log_evidence", [](DiagnoseOptions& o) { o.ambiguity_log_evidence = std::nan(""); }},
+      {"ambiguity_log_evidence",
+       [](DiagnoseOptions& o) { o.ambiguity_log_evidence = std::nan(""); }},
       {"full_within", [](DiagnoseOptions& o) { o.full_within = -1.0; }},
       {"full_within", [](DiagnoseOptions& o) { o.full_within = std::nan(""); }},
       {"explained_min", [](DiagnoseOptions& o) { o.explained_min = 1.5; }},
@@ -65,7 +66,9 @@ TEST(DiagnoseOptions, EffectsMustBeKnownAndNamedOnce) {
   // diagnose() judges it against the study's catalogue, before the data are read.
   const Study s = loadStudy(kDemo);
   const std::vector<calib::DataSet> fit(1);
-  const auto [where, rule] = inputError([&] { diagnose(s, s.assemblies().front(), fit, {}, o, dtwin_test::freshDir("diag_names").string()); });
+  const auto [where, rule] = inputError([&] {
+    diagnose(s, s.assemblies().front(), fit, {}, o, dtwin_test::freshDir("diag_names").string());
+  });
   EXPECT_EQ(where, "diagnose.effects");
   EXPECT_EQ(rule.rfind("unknown effect 'bumpstop' (known: ", 0), 0u) << rule;
   EXPECT_NE(rule.find("did you mean 'bump_stop'?"), std::string::npos) << rule;
@@ -109,31 +112,38 @@ TEST(Diagnose, RefusesNoDataAndAnInstalledEffectByField) {
   Study s = loadStudy(kDemo);
   const AssemblySpec a = s.assemblies().front();
   const std::string out = dtwin_test::freshDir("diag_options").string();
-  EXPECT_EQ(inputError([&] { diagnose(s, a, {}, {}, DiagnoseOptions(), out); }).first, "diagnose.fit");
+  EXPECT_EQ(inputError([&] { diagnose(s, a, {}, {}, DiagnoseOptions(), out); }).first,
+            "diagnose.fit");
   s.effects.push_back(EffectSetting{"bump_stop", {}});
   const std::vector<calib::DataSet> fit(1);  // never read: the catalogue is checked first
   DiagnoseOptions o;
   o.effects = {"bump_stop"};
   const auto [where, rule] = inputError([&] { diagnose(s, a, fit, {}, o, out); });
   EXPECT_EQ(where, "diagnose.effects");
-  EXPECT_EQ(rule, "'bump_stop' is already installed in assembly " + a.id + " or the study's [effects]");
+  EXPECT_EQ(rule,
+            "'bump_stop' is already installed in assembly " + a.id + " or the study's [effects]");
   o.effects = {};
   o.apply = {"bump_stop"};
   EXPECT_EQ(inputError([&] { diagnose(s, a, fit, {}, o, out); }).first, "diagnose.apply");
 }
 
 namespace {
-/// `twin diagnose --data <diag_bump lab data> <args>` in a fresh folder `name`, which must exit with
-/// code 2; returns its standard error.
+/// `twin diagnose --data <diag_bump lab data> <args>` in a fresh folder `name`, which must exit
+/// with code 2; returns its standard error.
 std::string failingDiagnose(const std::string& name, const std::string& args) {
   const std::string dir = dtwin_test::freshDir(name).string();
   const std::string twin = DTWIN_TWIN_EXE;
   const std::string data = dir + "/bump.csv";
-  EXPECT_EQ(std::system((twin + " generate lab --scenario diag_bump --times all --rate 50 --repetitions 2 --channels hub_force_fl_N"
-                                " --out " + data + " --quiet").c_str()),
+  EXPECT_EQ(std::system((twin +
+                         " generate lab --scenario diag_bump --times all --rate 50 --repetitions 2 "
+                         "--channels hub_force_fl_N"
+                         " --out " +
+                         data + " --quiet")
+                            .c_str()),
             0);
   const std::string err = dir + "/err.txt";
-  const int st = std::system((twin + " diagnose --data " + data + " " + args + " --quiet 2> " + err).c_str());
+  const int st =
+      std::system((twin + " diagnose --data " + data + " " + args + " --quiet 2> " + err).c_str());
   EXPECT_TRUE(WIFEXITED(st));
   EXPECT_EQ(WEXITSTATUS(st), 2);
   return dtwin_test::slurp(err);
@@ -144,17 +154,23 @@ std::string failingDiagnose(const std::string& name, const std::string& args) {
 // and what is known.
 TEST(Diagnose, TheCliRefusesAFreedValueOrChannelGroupItDoesNotHave) {
   std::string text = failingDiagnose("diag_options_free", "--apply free:wheel.mas_kg");
-  EXPECT_NE(text.find("twin: error: --apply: unknown fixed value that can be freed in assembly M1 'wheel.mas_kg'"), std::string::npos)
+  EXPECT_NE(text.find("twin: error: --apply: unknown fixed value that can be freed in assembly M1 "
+                      "'wheel.mas_kg'"),
+            std::string::npos)
       << text;
   EXPECT_NE(text.find("wheel.mass_kg"), std::string::npos) << text;
   text = failingDiagnose("diag_options_group", "--effects lowpass:seat");
-  EXPECT_NE(text.find("--effects: unknown channel group of the fitted data 'seat'"), std::string::npos) << text;
+  EXPECT_NE(text.find("--effects: unknown channel group of the fitted data 'seat'"),
+            std::string::npos)
+      << text;
 }
 
 // The CLI shows the field as its flag.
 TEST(Diagnose, TheCliNamesTheFlagOfABadField) {
   const std::string text = failingDiagnose("diag_options_cli", "--effects warp_drive");
-  EXPECT_NE(text.find("twin: error: --effects: unknown effect 'warp_drive' (known: bump_stop, "), std::string::npos) << text;
+  EXPECT_NE(text.find("twin: error: --effects: unknown effect 'warp_drive' (known: bump_stop, "),
+            std::string::npos)
+      << text;
 }
 
 namespace {
@@ -164,7 +180,8 @@ calib::DataSet flatSet(double span, double rate, long reps) {
   s.name = "flat";
   s.scenario = "diag_bump";
   for (long r = 1; r <= reps; ++r)
-    for (double t = 0; t <= span + 1e-9; t += 1.0 / rate) s.data.records.push_back({r, t, "hub_force_fl_N", 0.0});
+    for (double t = 0; t <= span + 1e-9; t += 1.0 / rate)
+      s.data.records.push_back({r, t, "hub_force_fl_N", 0.0});
   return s;
 }
 }  // namespace
@@ -198,12 +215,16 @@ TEST(DiagnoseWork, EstimatesScaleWithTheSizesThatDriveThem) {
   EXPECT_GT(stage(w, "diagnose screening").simulations, 0.0);
   // The demo's diagnosis runs without --force; twice the data span, twice the work.
   EXPECT_LT(total(w), WorkLimits().simulated_s);
-  EXPECT_NEAR(total(estimateDiagnoseWork(s, a, {flatSet(4.0, 10.0, 3)}, {}, o)), 2 * total(w), 1e-6 * total(w));
+  EXPECT_NEAR(total(estimateDiagnoseWork(s, a, {flatSet(4.0, 10.0, 3)}, {}, o)), 2 * total(w),
+              1e-6 * total(w));
   // Further causes: one more screening and confirmation per cause after the first.
-  EXPECT_GT(stage(w, "diagnose further causes").simulations, stage(w, "diagnose screening").simulations);
+  EXPECT_GT(stage(w, "diagnose further causes").simulations,
+            stage(w, "diagnose screening").simulations);
   auto one = o;
   one.causes = 1;
-  EXPECT_EQ(stage(estimateDiagnoseWork(s, a, {set}, {}, one), "diagnose further causes").simulations, 0.0);
+  EXPECT_EQ(
+      stage(estimateDiagnoseWork(s, a, {set}, {}, one), "diagnose further causes").simulations,
+      0.0);
   // No candidates, no confirmations; each applied effect one more calibration.
   o.candidates = 0;
   EXPECT_EQ(stage(estimateDiagnoseWork(s, a, {set}, {}, o), "diagnose confirm").simulations, 0.0);
@@ -212,7 +233,8 @@ TEST(DiagnoseWork, EstimatesScaleWithTheSizesThatDriveThem) {
             stage(w, "diagnose base").simulations / 2);
   // Ten million design points: refused, naming the data and --force.
   o.calibration.lhs_points = 10000000;
-  const auto [where, rule] = inputError([&] { checkWork(estimateDiagnoseWork(s, a, {set}, {}, o), "--data", false); });
+  const auto [where, rule] =
+      inputError([&] { checkWork(estimateDiagnoseWork(s, a, {set}, {}, o), "--data", false); });
   EXPECT_EQ(where, "--data");
   EXPECT_NE(rule.find("estimated work"), std::string::npos) << rule;
   EXPECT_NE(rule.find("--force"), std::string::npos) << rule;
@@ -255,8 +277,12 @@ TEST(DiagnoseText, AnUnresolvedPosteriorPrintsTheOptimumNotAMeanAndSd) {
   c.fit = f;
   r.candidates = {c};
   std::string t = r.text();
-  EXPECT_NE(t.find("time_constant_s: optimum 4.723e-05 s  (95 % profile likelihood [0, 0.0001969])"), std::string::npos) << t;
-  EXPECT_NE(t.find("the posterior is not resolved: importance ESS 1.0 < 10"), std::string::npos) << t;
+  EXPECT_NE(
+      t.find("time_constant_s: optimum 4.723e-05 s  (95 % profile likelihood [0, 0.0001969])"),
+      std::string::npos)
+      << t;
+  EXPECT_NE(t.find("the posterior is not resolved: importance ESS 1.0 < 10"), std::string::npos)
+      << t;
   EXPECT_EQ(t.find("2.6e-18"), std::string::npos) << t;  // the meaningless sd is not printed
   r.candidates[0].fit->importance_ess = 250.0;
   t = r.text();
@@ -266,7 +292,8 @@ TEST(DiagnoseText, AnUnresolvedPosteriorPrintsTheOptimumNotAMeanAndSd) {
 
 namespace {
 /// A screened candidate of `kind` with screening score `score` (an option is not screened: p = 1).
-dtwin::diag::Candidate screenedCandidate(const std::string& name, const std::string& kind, double score) {
+dtwin::diag::Candidate screenedCandidate(const std::string& name, const std::string& kind,
+                                         double score) {
   dtwin::diag::Candidate c;
   c.effect = name;
   c.kind = kind;
@@ -282,9 +309,10 @@ dtwin::diag::Candidate screenedCandidate(const std::string& name, const std::str
 TEST(DiagnoseConfirm, TheBudgetGoesToEachKindsBestFirst) {
   using dtwin::diag::Candidate;
   auto cand = screenedCandidate;
-  const std::vector<Candidate> cands = {cand("free:road.fl_only", "input", 7.0e5), cand("free:road.fr_only", "input", 6.95e5),
-                                        cand("place:seat", "place", 6.9e5),        cand("free:tire.stiffness@fl", "parameter", 5.2e5),
-                                        cand("gain:seat", "sensor", 1.0e5),         cand("tire=hub", "option", 0.0)};
+  const std::vector<Candidate> cands = {
+      cand("free:road.fl_only", "input", 7.0e5), cand("free:road.fr_only", "input", 6.95e5),
+      cand("place:seat", "place", 6.9e5),        cand("free:tire.stiffness@fl", "parameter", 5.2e5),
+      cand("gain:seat", "sensor", 1.0e5),        cand("tire=hub", "option", 0.0)};
   dtwin::diag::DiagnoseOptions o;
   o.confirm_within = 2.0;
   auto names = [&](const std::vector<std::size_t>& idx) {
@@ -297,11 +325,12 @@ TEST(DiagnoseConfirm, TheBudgetGoesToEachKindsBestFirst) {
             (std::vector<std::string>{"free:road.fl_only", "place:seat", "tire=hub"}));
   o.candidates = 4;
   EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o)),
-            (std::vector<std::string>{"free:road.fl_only", "place:seat", "free:tire.stiffness@fl", "free:road.fr_only", "tire=hub"}));
+            (std::vector<std::string>{"free:road.fl_only", "place:seat", "free:tire.stiffness@fl",
+                                      "free:road.fr_only", "tire=hub"}));
   o.candidates = 6;  // every one within the factor, then the sensor model as its kind's best
   EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o)),
-            (std::vector<std::string>{"free:road.fl_only", "place:seat", "free:tire.stiffness@fl", "free:road.fr_only", "gain:seat",
-                                      "tire=hub"}));
+            (std::vector<std::string>{"free:road.fl_only", "place:seat", "free:tire.stiffness@fl",
+                                      "free:road.fr_only", "gain:seat", "tire=hub"}));
 }
 
 // A later round of the budget: the candidates a round before took, and those promising no more
@@ -312,10 +341,11 @@ TEST(DiagnoseConfirm, ALaterRoundTakesTheNextWithinTheFactor) {
   auto cand = screenedCandidate;
   // Scores as on a car whose controller moves the sensor's fitted place: the sensor model and the
   // widened range screen best, the controllers just behind.
-  const std::vector<Candidate> cands = {cand("lowpass:seat", "sensor", 1505), cand("widen:chassis.pitch_inertia_kgm2", "range", 1299),
-                                        cand("groundhook", "effect", 1206),  cand("lowpass2:seat", "sensor", 1151),
-                                        cand("skyhook", "effect", 1123),     cand("free:chassis.mass_kg", "parameter", 736),
-                                        cand("tire=hub", "option", 0.0)};
+  const std::vector<Candidate> cands = {
+      cand("lowpass:seat", "sensor", 1505), cand("widen:chassis.pitch_inertia_kgm2", "range", 1299),
+      cand("groundhook", "effect", 1206),   cand("lowpass2:seat", "sensor", 1151),
+      cand("skyhook", "effect", 1123),      cand("free:chassis.mass_kg", "parameter", 736),
+      cand("tire=hub", "option", 0.0)};
   dtwin::diag::DiagnoseOptions o;
   o.candidates = 2;
   auto names = [&](const std::vector<std::size_t>& idx) {
@@ -323,10 +353,13 @@ TEST(DiagnoseConfirm, ALaterRoundTakesTheNextWithinTheFactor) {
     for (auto i : idx) out.push_back(cands[i].effect);
     return out;
   };
-  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o)),
-            (std::vector<std::string>{"lowpass:seat", "widen:chassis.pitch_inertia_kgm2", "tire=hub"}));
-  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 6})), (std::vector<std::string>{"groundhook", "lowpass2:seat"}));
-  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 2, 3, 6})), (std::vector<std::string>{"skyhook"}));
+  EXPECT_EQ(
+      names(dtwin::diag::chooseConfirmations(cands, o)),
+      (std::vector<std::string>{"lowpass:seat", "widen:chassis.pitch_inertia_kgm2", "tire=hub"}));
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 6})),
+            (std::vector<std::string>{"groundhook", "lowpass2:seat"}));
+  EXPECT_EQ(names(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 2, 3, 6})),
+            (std::vector<std::string>{"skyhook"}));
   // Every one within the factor taken: the parameter beyond it (736 < 1505 / 2) is not.
   EXPECT_TRUE(dtwin::diag::chooseConfirmations(cands, o, {0, 1, 2, 3, 4, 6}).empty());
 }

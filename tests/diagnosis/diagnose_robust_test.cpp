@@ -37,11 +37,13 @@ namespace {
 /// The demo study with the tire options pac2002 (M1) and hub (M2) on MacPherson struts.
 Study hubStudy() {
   static const fs::path p = [] {
-    const fs::path path = fs::temp_directory_path() / ("diag_robust_study_" + std::to_string(::getpid()) + ".toml");
+    const fs::path path =
+        fs::temp_directory_path() / ("diag_robust_study_" + std::to_string(::getpid()) + ".toml");
     dtwin_test::writeDemoStudy(path, "lab_repetitions = 3\noptimizer_starts = 1\n");
     std::string t = dtwin_test::slurp(path);
     t = std::regex_replace(t, std::regex("tire = \\[[^\\]]*\\]"), "tire = [\"pac2002\", \"hub\"]");
-    t = std::regex_replace(t, std::regex("suspension = \\[[^\\]]*\\]"), "suspension = [\"macpherson\"]");
+    t = std::regex_replace(t, std::regex("suspension = \\[[^\\]]*\\]"),
+                           "suspension = [\"macpherson\"]");
     dtwin_test::writeText(path, t);
     return path;
   }();
@@ -100,7 +102,8 @@ TEST(DiagnoseRobust, AnOptionThatLeavesOutCalibratedValuesIsConfirmedWithAHoldou
   o.candidates = 0;  // the option alone is confirmed (beyond the budget)
   o.causes = 2;
   DiagnosisResult r;
-  ASSERT_NO_THROW(r = diagnose(s, s.assembly("M1"), fit, hold, o, dtwin_test::freshDir("diag_robust_hub").string()));
+  ASSERT_NO_THROW(r = diagnose(s, s.assembly("M1"), fit, hold, o,
+                               dtwin_test::freshDir("diag_robust_hub").string()));
   const Candidate* hub = find(r.candidates, "tire=hub");
   ASSERT_NE(hub, nullptr) << r.text();
   EXPECT_TRUE(hub->failed.empty()) << hub->failed;
@@ -121,7 +124,8 @@ TEST(DiagnoseRobust, AnOptionThatLeavesOutCalibratedValuesIsConfirmedWithAHoldou
   const Candidate* factor = find(r.further.front().candidates, "free:tire.stiffness@fl");
   ASSERT_NE(factor, nullptr) << r.text();
   EXPECT_TRUE(factor->failed.empty()) << factor->failed;
-  EXPECT_EQ(factor->gate, "this model has no tire.stiffness@fl (tire=hub leaves it out)") << r.text();
+  EXPECT_EQ(factor->gate, "this model has no tire.stiffness@fl (tire=hub leaves it out)")
+      << r.text();
   EXPECT_FALSE(factor->confirmed);
   EXPECT_TRUE(r.failures.empty()) << r.text();
 }
@@ -135,7 +139,8 @@ TEST(DiagnoseRobust, ACandidateThatThrowsIsReportedAndTheRunGoesOn) {
   const std::string dir = dtwin_test::freshDir("diag_robust_inject").string();
   const std::vector<calib::DataSet> sets{hubData(s, "diag_bump"), hubData(s, "diag_bump", 4)};
   for (std::size_t k = 0; k < sets.size(); ++k)
-    dtwin_test::writeText(dir + "/data" + std::to_string(k) + ".csv", labCsvText(sets[k].data, measurableChannels(s.sensors)));
+    dtwin_test::writeText(dir + "/data" + std::to_string(k) + ".csv",
+                          labCsvText(sets[k].data, measurableChannels(s.sensors)));
   DiagnoseRequest request;
   request.assembly = "M1";
   request.data = {dir + "/data0.csv@diag_bump"};
@@ -149,7 +154,8 @@ TEST(DiagnoseRobust, ACandidateThatThrowsIsReportedAndTheRunGoesOn) {
   request.options.before_candidate_step = [&](const std::string& model, const std::string& step) {
     steps.push_back(model + " " + step);
     if (model == "tire=hub" && step == "compare")
-      throw std::logic_error("internal error: injected [false] (tests/diagnosis/diagnose_robust_test.cpp:1)");
+      throw std::logic_error(
+          "internal error: injected [false] (tests/diagnosis/diagnose_robust_test.cpp:1)");
   };
   DiagnoseRun run;
   ASSERT_NO_THROW(run = diagnoseMeasurements(s, request));
@@ -159,11 +165,13 @@ TEST(DiagnoseRobust, ACandidateThatThrowsIsReportedAndTheRunGoesOn) {
   const Candidate* hub = find(r.candidates, "tire=hub");
   ASSERT_NE(hub, nullptr) << r.text();
   EXPECT_EQ(hub->failed,
-            "its confirming calibration failed: internal error: injected [false] (tests/diagnosis/diagnose_robust_test.cpp:1)")
+            "its confirming calibration failed: internal error: injected [false] "
+            "(tests/diagnosis/diagnose_robust_test.cpp:1)")
       << r.text();
   EXPECT_FALSE(hub->confirmed);
   EXPECT_FALSE(hub->fit);
-  EXPECT_NE(r.text().find("tire=hub: failed, left out of the verdict: its confirming calibration failed: internal error: injected"),
+  EXPECT_NE(r.text().find("tire=hub: failed, left out of the verdict: its confirming calibration "
+                          "failed: internal error: injected"),
             std::string::npos)
       << r.text();
   // The other candidate went through its screening (and, within the budget, its confirmation).
@@ -183,6 +191,7 @@ TEST(DiagnoseRobust, ACandidateThatThrowsIsReportedAndTheRunGoesOn) {
     if (c.at("effect") == "tire=hub") listed = c.value("failed", "") == hub->failed;
   EXPECT_TRUE(listed) << j.at("screening").dump();
   EXPECT_TRUE(fs::exists(request.out + "/calibrations/base/summary.json"));
-  EXPECT_TRUE(fs::exists(request.out + "/calibrations/tire=hub/optimum.json")) << "the optimum it reached is kept";
+  EXPECT_TRUE(fs::exists(request.out + "/calibrations/tire=hub/optimum.json"))
+      << "the optimum it reached is kept";
   EXPECT_TRUE(fs::exists(request.out + "/comparisons/base.json"));
 }

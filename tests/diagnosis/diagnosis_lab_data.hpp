@@ -1,6 +1,6 @@
-// The diagnosis tests' lab data (tests/diagnosis/diagnose_e2e_test.cpp, diagnose_corner_test.cpp): M1 on
-// the two diagnosis scenarios, diag_bump and diag_rough, 4 hub forces at 200 Hz, 3 repetitions,
-// with a hidden effect or values set by the caller.
+// The diagnosis tests' lab data (tests/diagnosis/diagnose_e2e_test.cpp, diagnose_corner_test.cpp):
+// M1 on the two diagnosis scenarios, diag_bump and diag_rough, 4 hub forces at 200 Hz, 3
+// repetitions, with a hidden effect or values set by the caller.
 #pragma once
 
 #include <cstdint>
@@ -15,8 +15,9 @@ namespace dtwin_test {
 
 /// Lab data of the study's first assembly with `hidden` ("effect:param=value,...", or "" for none)
 /// switched on; `more` adjusts the options (hidden values, another effect) before each scenario.
-inline std::vector<dtwin::calib::DataSet> diagnosisLabData(const dtwin::Study& s, const std::string& hidden, std::uint64_t seed,
-                                                          const std::function<void(dtwin::LabOptions&)>& more = {}) {
+inline std::vector<dtwin::calib::DataSet> diagnosisLabData(
+    const dtwin::Study& s, const std::string& hidden, std::uint64_t seed,
+    const std::function<void(dtwin::LabOptions&)>& more = {}) {
   std::vector<dtwin::calib::DataSet> sets;
   for (const std::string sc : {"diag_bump", "diag_rough"}) {
     dtwin::LabOptions o;
@@ -26,7 +27,8 @@ inline std::vector<dtwin::calib::DataSet> diagnosisLabData(const dtwin::Study& s
     o.repetitions = 3;
     o.seed = seed;
     o.channels = {"hub_force_fl_N", "hub_force_fr_N", "hub_force_rl_N", "hub_force_rr_N"};
-    if (!hidden.empty()) o.hidden_effects.push_back(dtwin::parseEffectSetting(hidden, "test", s.effectCatalog()));
+    if (!hidden.empty())
+      o.hidden_effects.push_back(dtwin::parseEffectSetting(hidden, "test", s.effectCatalog()));
     if (more) more(o);
     const auto lab = dtwin::generateLab(s, s.assemblies().front(), o);
     sets.push_back({sc + ".csv", sc, lab.data, seed});  // the rough road was made with `seed`

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <complex>
+#include <cstdio>
 #include <functional>
 #include <random>
 #include <stdexcept>
@@ -57,8 +57,10 @@ Drive quarterCarDrive(const QuarterCar& q, double seconds, double noise_sd, std:
   double w = 0;
   const auto rate = [&](const State& x) {
     const double strut = q.ks * (x[0] - x[2]) + q.cs * (x[1] - x[3]);
-    return State{x[1], -strut / q.ms, x[3], (strut - q.kt * (x[2] - x[6])) / q.mu,
-                 x[5], wf * wf * (w - x[4]) - 2 * zf * wf * x[5], x[7], wf * wf * (x[4] - x[6]) - 2 * zf * wf * x[7]};
+    return State{x[1], -strut / q.ms,
+                 x[3], (strut - q.kt * (x[2] - x[6])) / q.mu,
+                 x[5], wf * wf * (w - x[4]) - 2 * zf * wf * x[5],
+                 x[7], wf * wf * (x[4] - x[6]) - 2 * zf * wf * x[7]};
   };
   const auto axpy = [](const State& x, double a, const State& k) {
     State y;
@@ -73,10 +75,12 @@ Drive quarterCarDrive(const QuarterCar& q, double seconds, double noise_sd, std:
   for (long n = -warmup; n < steps; ++n) {
     if (n >= 0 && n % per_sample == 0) {
       d.road.push_back(x[6]);
-      d.accel.push_back(-(q.ks * (x[0] - x[2]) + q.cs * (x[1] - x[3])) / q.ms + noise_sd * white(rng));
+      d.accel.push_back(-(q.ks * (x[0] - x[2]) + q.cs * (x[1] - x[3])) / q.ms +
+                        noise_sd * white(rng));
     }
     w = 0.01 * white(rng);
-    const State k1 = rate(x), k2 = rate(axpy(x, h / 2, k1)), k3 = rate(axpy(x, h / 2, k2)), k4 = rate(axpy(x, h, k3));
+    const State k1 = rate(x), k2 = rate(axpy(x, h / 2, k1)), k3 = rate(axpy(x, h / 2, k2)),
+                k4 = rate(axpy(x, h, k3));
     for (int i = 0; i < 8; ++i) x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
   }
   return d;
@@ -99,7 +103,8 @@ TEST(FrfEstimate, QuarterCarOnARandomRoadMatchesItsAnalyticResponseWithinTheStat
   ASSERT_EQ(d.road.size(), 30000u);
   const FrequencyResponse r = frequencyResponse(d.road, d.accel, fs, 1024);
   EXPECT_EQ(r.segments, 57);
-  EXPECT_NEAR(r.averages / r.segments, 0.946, 0.005);  // Hann at 50 % overlap: ν_W = 2K / (1 + 2 (1 − 1/K) / 36)
+  EXPECT_NEAR(r.averages / r.segments, 0.946,
+              0.005);  // Hann at 50 % overlap: ν_W = 2K / (1 + 2 (1 − 1/K) / 36)
   int bins = 0, within_mag = 0, within_phase = 0;
   double z2 = 0;
   for (std::size_t k = 0; k < r.freq_hz.size(); ++k) {
@@ -107,11 +112,13 @@ TEST(FrfEstimate, QuarterCarOnARandomRoadMatchesItsAnalyticResponseWithinTheStat
     if (f < 0.5 || f > 25 || r.coherence[k] <= 0.5) continue;
     const cd H = q.bodyAcceleration(f);
     const double eps = r.magnitude_error[k];
-    const double z = std::abs(r.h[k] - H) / (eps * std::abs(H));  // both parts of Ĥ − H have sd ε|H|
+    const double z =
+        std::abs(r.h[k] - H) / (eps * std::abs(H));  // both parts of Ĥ − H have sd ε|H|
     ++bins;
     z2 += z * z;
     within_mag += std::abs(r.magnitude[k] - std::abs(H)) <= 3 * eps * std::abs(H);
-    within_phase += std::abs(wrapDeg(r.phase_deg[k] - std::arg(H) * 180 / kPi)) <= 3 * r.phase_sd_deg[k];
+    within_phase +=
+        std::abs(wrapDeg(r.phase_deg[k] - std::arg(H) * 180 / kPi)) <= 3 * r.phase_sd_deg[k];
   }
   ASSERT_GT(bins, 200);  // 0.5–25 Hz at 0.098 Hz: about 250 bins, nearly all coherent
   EXPECT_GE(within_mag, 0.95 * bins) << within_mag << " of " << bins;
@@ -120,12 +127,16 @@ TEST(FrfEstimate, QuarterCarOnARandomRoadMatchesItsAnalyticResponseWithinTheStat
   const double calibration = z2 / bins / 2;
   EXPECT_GT(calibration, 0.6) << calibration;
   EXPECT_LT(calibration, 1.6) << calibration;
-  std::printf("quarter car: %d bins with coherence > 0.5 in 0.5-25 Hz; magnitude within 3 sd: %d, phase: %d; "
-              "mean |H^-H|^2/(2 eps^2 |H|^2) = %.3f\n", bins, within_mag, within_phase, calibration);
+  std::printf(
+      "quarter car: %d bins with coherence > 0.5 in 0.5-25 Hz; magnitude within 3 sd: %d, phase: "
+      "%d; "
+      "mean |H^-H|^2/(2 eps^2 |H|^2) = %.3f\n",
+      bins, within_mag, within_phase, calibration);
   // At the body mode and at wheel hop the estimate is close in plain numbers too.
   for (double f : {1.2, 11.9}) {
     const std::size_t k = static_cast<std::size_t>(std::lround(f / (fs / 1024)));
-    EXPECT_NEAR(r.magnitude[k] / std::abs(q.bodyAcceleration(r.freq_hz[k])), 1.0, 0.05) << f << " Hz";
+    EXPECT_NEAR(r.magnitude[k] / std::abs(q.bodyAcceleration(r.freq_hz[k])), 1.0, 0.05)
+        << f << " Hz";
   }
 }
 
@@ -137,7 +148,8 @@ TEST(FrfEstimate, APureGainAndDelayAreRecovered) {
   const std::size_t n = 20000;
   std::vector<double> u(n), y(n);
   for (double& v : u) v = white(rng);
-  for (std::size_t i = 0; i < n; ++i) y[i] = (i >= delay ? gain * u[i - delay] : 0.0) + 0.1 * gain * white(rng);
+  for (std::size_t i = 0; i < n; ++i)
+    y[i] = (i >= delay ? gain * u[i - delay] : 0.0) + 0.1 * gain * white(rng);
   const FrequencyResponse r = frequencyResponse(u, y, fs, 256);
   // Gain: every bin but DC within 3 stated sd (plus the Hann segments' misalignment by 3 of 256
   // samples, 0.2 %); the delay from the unwrapped phase's least-squares slope through the origin.
@@ -156,7 +168,8 @@ TEST(FrfEstimate, APureGainAndDelayAreRecovered) {
   const double tau = -sxy / sxx;
   EXPECT_NEAR(tau, delay / fs, 2e-4) << tau;
   EXPECT_GT(r.coherence[20], 0.98);
-  EXPECT_NEAR(r.magnitude_error[20], std::sqrt((1 - r.coherence[20]) / (2 * r.averages * r.coherence[20])), 1e-12);
+  EXPECT_NEAR(r.magnitude_error[20],
+              std::sqrt((1 - r.coherence[20]) / (2 * r.averages * r.coherence[20])), 1e-12);
 }
 
 // u(t), a sum of sinusoids 0.3–20 Hz with random phases, at any time.
@@ -165,7 +178,8 @@ struct Multisine {
   explicit Multisine(std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> ph(0, 2 * kPi);
-    for (double x = 0.3; x < 20; x += 0.0731) f.push_back(x), a.push_back(0.01 / std::sqrt(1 + x * x / 25)), phi.push_back(ph(rng));
+    for (double x = 0.3; x < 20; x += 0.0731)
+      f.push_back(x), a.push_back(0.01 / std::sqrt(1 + x * x / 25)), phi.push_back(ph(rng));
   }
   double operator()(double t) const {
     double s = 0;
@@ -217,8 +231,8 @@ TEST(FrfEstimate, AJitteredClockIsResampledAndTheGainAndDelayStillRead) {
 }
 
 TEST(FrfEstimate, AgreeingResponsesDifferAtAboutTheStatedRate) {
-  // Predicted: a filtered road; measured: the same plus white noise. Over 100 seeds the bins and the
-  // bands flagged at 95 % should be about 5 %.
+  // Predicted: a filtered road; measured: the same plus white noise. Over 100 seeds the bins and
+  // the bands flagged at 95 % should be about 5 %.
   const double fs = 100;
   long bins = 0, bins_flagged = 0, bands = 0, bands_flagged = 0;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
@@ -238,9 +252,10 @@ TEST(FrfEstimate, AgreeingResponsesDifferAtAboutTheStatedRate) {
     for (std::size_t k = 1; k < c.differs.size(); ++k) bins += 1, bins_flagged += c.differs[k];
     for (const auto& b : c.bands) bands += 1, bands_flagged += b.differs;
   }
-  const double bin_rate = static_cast<double>(bins_flagged) / bins, band_rate = static_cast<double>(bands_flagged) / bands;
-  std::printf("agreeing responses: %.2f %% of %ld bins and %.1f %% of %ld bands flagged at 95 %%\n", 100 * bin_rate, bins,
-              100 * band_rate, bands);
+  const double bin_rate = static_cast<double>(bins_flagged) / bins,
+               band_rate = static_cast<double>(bands_flagged) / bands;
+  std::printf("agreeing responses: %.2f %% of %ld bins and %.1f %% of %ld bands flagged at 95 %%\n",
+              100 * bin_rate, bins, 100 * band_rate, bands);
   EXPECT_GT(bin_rate, 0.03);
   EXPECT_LT(bin_rate, 0.08);
   EXPECT_GT(band_rate, 0.015);
@@ -252,7 +267,8 @@ TEST(FrfEstimate, SkipsWithANoteAndRefusesBadArguments) {
   for (std::size_t i = 0; i < t.size(); ++i) t[i] = 0.01 * i;
   EXPECT_EQ(seriesResponse(t, {}, "road_fl_m", v, v).note, "no frequency response: no road input");
   EXPECT_FALSE(seriesResponse(t, v, "road_fl_m", v, v).computed);
-  EXPECT_EQ(seriesResponse(t, v, "road_fl_m", v, v).note, "no frequency response: fewer than 64 times");
+  EXPECT_EQ(seriesResponse(t, v, "road_fl_m", v, v).note,
+            "no frequency response: fewer than 64 times");
   std::vector<double> t2(200), flat(200, 0.0), x(200);
   for (std::size_t i = 0; i < t2.size(); ++i) t2[i] = 0.01 * i, x[i] = std::sin(0.3 * i);
   const SeriesResponse s = seriesResponse(t2, flat, "road_fl_m", x, x);
@@ -261,7 +277,8 @@ TEST(FrfEstimate, SkipsWithANoteAndRefusesBadArguments) {
   EXPECT_THROW(compareResponses(x, x, flat, 100, 64, 1.0), std::invalid_argument);
   EXPECT_THROW(compareResponses(x, std::vector<double>(199), x, 100, 64), std::invalid_argument);
   EXPECT_THROW(frequencyResponse(x, x, 0.0, 64), std::invalid_argument);
-  EXPECT_THROW(seriesResponse(t2, x, "road_fl_m", x, std::vector<double>(3)), std::invalid_argument);
+  EXPECT_THROW(seriesResponse(t2, x, "road_fl_m", x, std::vector<double>(3)),
+               std::invalid_argument);
 }
 
 }  // namespace

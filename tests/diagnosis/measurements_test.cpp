@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "diagnosis/measurements.hpp"
 #include "common/errors.hpp"
+#include "diagnosis/measurements.hpp"
 
 namespace fs = std::filesystem;
 using namespace dtwin;
@@ -47,7 +47,9 @@ TEST(Measurements, ParsesFileAndScenario) {
 
 TEST(Measurements, LoadsAValidFileTiedToItsScenario) {
   const Study s = loadStudy(kDemo);
-  const auto p = writeFile("ok.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,3700\n1,1.005,hub_force_fl_N,3710\n");
+  const auto p = writeFile(
+      "ok.csv",
+      "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,3700\n1,1.005,hub_force_fl_N,3710\n");
   const auto ds = loadMeasurement(s, parseMeasurementArg(p.string() + "@diag_bump", "--data"));
   EXPECT_EQ(ds.scenario, "diag_bump");
   EXPECT_EQ(ds.data.records.size(), 2u);
@@ -55,7 +57,8 @@ TEST(Measurements, LoadsAValidFileTiedToItsScenario) {
 
 TEST(Measurements, BadInputsGiveOneLineErrorsNamingTheProblem) {
   const Study s = loadStudy(kDemo);
-  const auto ok = writeFile("m.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,3700\n");
+  const auto ok =
+      writeFile("m.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,3700\n");
   // Unknown scenario: names it and lists the known ones.
   std::string e = errorOf(s, ok.string() + "@nowhere");
   EXPECT_NE(e.find("nowhere"), std::string::npos) << e;
@@ -63,23 +66,28 @@ TEST(Measurements, BadInputsGiveOneLineErrorsNamingTheProblem) {
   e = errorOf(s, ok.string());
   EXPECT_NE(e.find("no scenario"), std::string::npos) << e;
   // Unknown channel (with the closest known name).
-  const auto ch = writeFile("ch.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fx_N,3700\n");
+  const auto ch =
+      writeFile("ch.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fx_N,3700\n");
   e = errorOf(s, ch.string() + "@diag_bump");
   EXPECT_NE(e.find("hub_force_fx_N"), std::string::npos) << e;
   EXPECT_NE(e.find("ch.csv:2"), std::string::npos) << e;
   // Wrong unit suffix.
-  const auto unit = writeFile("unit.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_kN,3.7\n");
+  const auto unit =
+      writeFile("unit.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_kN,3.7\n");
   e = errorOf(s, unit.string() + "@diag_bump");
   EXPECT_NE(e.find("wrong unit suffix"), std::string::npos) << e;
   // NaN value.
-  const auto nan = writeFile("nan.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,nan\n");
+  const auto nan =
+      writeFile("nan.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,nan\n");
   e = errorOf(s, nan.string() + "@diag_bump");
   EXPECT_NE(e.find("nan.csv:2"), std::string::npos) << e;
   // A time off the 1 kHz output grid is accepted (compared with the output interpolated there).
-  const auto grid = writeFile("grid.csv", "repetition,time_s,channel,value\n1,1.0003,hub_force_fl_N,3700\n");
+  const auto grid =
+      writeFile("grid.csv", "repetition,time_s,channel,value\n1,1.0003,hub_force_fl_N,3700\n");
   EXPECT_NO_THROW(loadMeasurement(s, parseMeasurementArg(grid.string() + "@diag_bump", "--data")));
   // A time after the end of the scenario (diag_bump lasts 3 s).
-  const auto late = writeFile("late.csv", "repetition,time_s,channel,value\n1,3.5,hub_force_fl_N,3700\n");
+  const auto late =
+      writeFile("late.csv", "repetition,time_s,channel,value\n1,3.5,hub_force_fl_N,3700\n");
   e = errorOf(s, late.string() + "@diag_bump");
   EXPECT_NE(e.find("after the end"), std::string::npos) << e;
   // A missing file.
@@ -89,7 +97,8 @@ TEST(Measurements, BadInputsGiveOneLineErrorsNamingTheProblem) {
 
 TEST(Measurements, ScenarioComesFromTheSidecarWhenNotGiven) {
   const Study s = loadStudy(kDemo);
-  const auto p = writeFile("side.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,3700\n");
+  const auto p =
+      writeFile("side.csv", "repetition,time_s,channel,value\n1,1.0,hub_force_fl_N,3700\n");
   writeFile("side.json", R"({"scenario": {"name": "diag_rough"}})");
   EXPECT_EQ(loadMeasurement(s, parseMeasurementArg(p.string(), "--data")).scenario, "diag_rough");
 }
@@ -99,9 +108,10 @@ TEST(Measurements, NoiseFromRepetitionsIsThePooledPureError) {
   const Study s = loadStudy(kDemo);
   LabData d;
   // t = 1.0: 1, 2, 3 (mean 2, SS 2); t = 1.001: 10, 14 (mean 12, SS 8). dof = 2 + 1 = 3.
-  d.records = {{1, 1.0, "hub_force_fl_N", 1}, {1, 1.001, "hub_force_fl_N", 10}, {2, 1.0, "hub_force_fl_N", 2},
-               {2, 1.001, "hub_force_fl_N", 14}, {3, 1.0, "hub_force_fl_N", 3},
-               {1, 1.0, "susp_defl_fl_m", 0.01}, {2, 1.0, "susp_defl_fl_m", 0.01}};
+  d.records = {{1, 1.0, "hub_force_fl_N", 1},   {1, 1.001, "hub_force_fl_N", 10},
+               {2, 1.0, "hub_force_fl_N", 2},   {2, 1.001, "hub_force_fl_N", 14},
+               {3, 1.0, "hub_force_fl_N", 3},   {1, 1.0, "susp_defl_fl_m", 0.01},
+               {2, 1.0, "susp_defl_fl_m", 0.01}};
   const auto n = estimateNoise(s, d, "hub_force_fl_N");
   EXPECT_DOUBLE_EQ(n.variance, 10.0 / 3.0);
   EXPECT_EQ(n.dof, 3);
@@ -126,10 +136,12 @@ TEST(Measurements, NoiseFromRepetitionsIsThePooledPureError) {
 // name the sensor's channel.
 TEST(Measurements, SensorNoiseWeighsASingleRepetition) {
   const fs::path dir = dtwin_test::freshDir("meas_sensor_noise");
-  const Study s = loadStudy(dtwin_test::writeDemoStudy(dir / "study.toml",
-                                                       "lab_repetitions = 2\n[sensors.seat]\nquantity = \"acceleration_z\"\n"
-                                                       "noise_sd = 0.05\n[sensors.bare]\nquantity = \"acceleration_z\"\n")
-                                .string());
+  const Study s =
+      loadStudy(dtwin_test::writeDemoStudy(
+                    dir / "study.toml",
+                    "lab_repetitions = 2\n[sensors.seat]\nquantity = \"acceleration_z\"\n"
+                    "noise_sd = 0.05\n[sensors.bare]\nquantity = \"acceleration_z\"\n")
+                    .string());
   LabData one;
   for (int k = 0; k < 10; ++k) {
     one.records.push_back({1, 0.1 * k, "seat_mps2", 0.01 * k});
@@ -145,9 +157,11 @@ TEST(Measurements, SensorNoiseWeighsASingleRepetition) {
   ASSERT_EQ(left_out.size(), 1u);
   EXPECT_NE(left_out[0].find("noise_sd"), std::string::npos) << left_out[0];
   LabData two = one;
-  for (int k = 0; k < 10; ++k) two.records.push_back({2, 0.1 * k, "seat_mps2", 0.01 * k + (k % 2 ? 0.1 : -0.1)});
+  for (int k = 0; k < 10; ++k)
+    two.records.push_back({2, 0.1 * k, "seat_mps2", 0.01 * k + (k % 2 ? 0.1 : -0.1)});
   EXPECT_EQ(estimateNoise(s, two, "seat_mps2").source, "repetitions");
   const auto f = writeFile("sensor.csv", "repetition,time_s,channel,value\n1,0.5,seat_mps2,0.2\n");
   EXPECT_NO_THROW(loadMeasurement(s, parseMeasurementArg(f.string() + "@diag_rough", "--data")));
-  EXPECT_NE(errorOf(loadStudy(kDemo), f.string() + "@diag_rough").find("seat_mps2"), std::string::npos);
+  EXPECT_NE(errorOf(loadStudy(kDemo), f.string() + "@diag_rough").find("seat_mps2"),
+            std::string::npos);
 }

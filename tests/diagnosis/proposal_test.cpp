@@ -10,10 +10,10 @@
 
 #include "common/errors.hpp"
 #include "diagnosis/proposal.hpp"
+#include "io/study.hpp"
 #include "subsystems/effect.hpp"
 #include "subsystems/user_effect.hpp"
 #include "test_util.hpp"
-#include "io/study.hpp"
 
 using namespace dtwin;
 using namespace dtwin::diag;
@@ -24,7 +24,8 @@ TEST(Proposal, BestSubsetFindsTheSparseTruthAndItsBic) {
   const long n = 2000, m = 12;
   Eigen::MatrixXd G(n, m);
   for (long i = 0; i < n; ++i)
-    for (long j = 0; j < m; ++j) G(i, j) = z(rng) + (j > 0 ? 0.3 * G(i, j - 1) : 0.0);  // correlated columns
+    for (long j = 0; j < m; ++j)
+      G(i, j) = z(rng) + (j > 0 ? 0.3 * G(i, j - 1) : 0.0);  // correlated columns
   Eigen::VectorXd r(n);
   for (long i = 0; i < n; ++i) r[i] = 0.4 * G(i, 3) - 0.25 * G(i, 8) + z(rng);
   const auto fit = bestSubsetByBic(G, r, 3);
@@ -53,12 +54,14 @@ TEST(Proposal, LibraryKneesSitOnTheStatesReached) {
   for (const auto& t : lib)
     if (t.expr.rfind("max(", 0) == 0) {
       ++knees;
-      EXPECT_EQ(t.f({-1.0, 0.0, 0.0, 0.0}) == 0.0, t.expr.rfind("max(q", 0) == 0) << t.expr;  // a compression knee is 0 in rebound
+      EXPECT_EQ(t.f({-1.0, 0.0, 0.0, 0.0}) == 0.0, t.expr.rfind("max(q", 0) == 0)
+          << t.expr;  // a compression knee is 0 in rebound
       EXPECT_GT(t.gap, 0.0) << t.expr;
     }
   EXPECT_EQ(knees, 16);
   bool has = false;
-  for (const auto& t : lib) has = has || t.expr == "max(-q - 0.03, 0)^2";  // 60 % of the 5 cm rebound
+  for (const auto& t : lib)
+    has = has || t.expr == "max(-q - 0.03, 0)^2";  // 60 % of the 5 cm rebound
   EXPECT_TRUE(has);
   EXPECT_EQ(termLibrary(0.0, 0.0).size(), lib.size() - 16);  // no travel: no knees
 }
@@ -68,7 +71,8 @@ TEST(Proposal, ALibraryTermIsAnEffectAndTheTableReadsBack) {
   ASSERT_EQ(e->parameters().size(), 1u);
   EXPECT_EQ(e->parameters()[0].name, "a");
   const auto names = effectNames();
-  EXPECT_EQ(std::find(names.begin(), names.end(), std::string(kTermPrefix) + "max(-q - 0.03, 0)^2"), names.end());
+  EXPECT_EQ(std::find(names.begin(), names.end(), std::string(kTermPrefix) + "max(-q - 0.03, 0)^2"),
+            names.end());
   ProposedTerm t;
   t.name = "proposed_test_1";
   t.force = "a * (max(-q - g, 0)^2)";

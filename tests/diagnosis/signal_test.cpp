@@ -78,7 +78,8 @@ TEST(Signal, ParsevalAndBandAdditivity) {
   const double fs = 200;
   std::vector<double> ar = whiteNoise(1 << 17, 1.0, 2);
   for (size_t i = 1; i < ar.size(); ++i) ar[i] += 0.5 * ar[i - 1];  // AR(1), coloured
-  const std::vector<double> x = add(add(ar, sine(ar.size(), 1.5, 23.3, fs)), whiteNoise(ar.size(), 0.7, 3));
+  const std::vector<double> x =
+      add(add(ar, sine(ar.size(), 1.5, 23.3, fs)), whiteNoise(ar.size(), 0.7, 3));
   const Spectrum s = welchPsd(x, fs, 1024);
   const double total = bandIntegral(s, 0, fs / 2);
   EXPECT_NEAR(total, variance(x), 0.01 * variance(x));
@@ -128,7 +129,9 @@ TEST(Signal, BandAnalysisFlagsOnlyTheBandWithAMissingSinusoid) {
   const auto rep = bandAnalysis(r, fs, sigma * sigma, &input, 1024);
   ASSERT_EQ(rep.size(), 4u);
   for (const BandReport& b : rep) {
-    EXPECT_NEAR(b.noise_power, 2 * sigma * sigma / fs * (b.hi_hz - b.lo_hz), 2 * sigma * sigma / fs * 0.2) << b.band;
+    EXPECT_NEAR(b.noise_power, 2 * sigma * sigma / fs * (b.hi_hz - b.lo_hz),
+                2 * sigma * sigma / fs * 0.2)
+        << b.band;
     EXPECT_EQ(b.significant, b.band == "mid") << b.band << " ratio " << b.ratio;
     EXPECT_GE(b.coherence, 0.0);
     EXPECT_LE(b.coherence, 1.0);
@@ -138,7 +141,8 @@ TEST(Signal, BandAnalysisFlagsOnlyTheBandWithAMissingSinusoid) {
   EXPECT_NEAR(rep[3].ratio, 1.0, 0.05);  // 80 Hz of white noise: ratio ≈ 1
   EXPECT_TRUE(std::isnan(bandAnalysis(r, fs, sigma * sigma, nullptr, 1024)[0].coherence));
   // The noise variance too small by 30 %: all bands flagged.
-  for (const BandReport& b : bandAnalysis(r, fs, 0.7 * sigma * sigma, nullptr, 1024)) EXPECT_TRUE(b.significant) << b.band;
+  for (const BandReport& b : bandAnalysis(r, fs, 0.7 * sigma * sigma, nullptr, 1024))
+    EXPECT_TRUE(b.significant) << b.band;
 }
 
 TEST(Signal, BandAnalysisFalseAlarmRateOnWhiteNoiseIsSmall) {
@@ -146,7 +150,8 @@ TEST(Signal, BandAnalysisFalseAlarmRateOnWhiteNoiseIsSmall) {
   int flagged = 0, tests = 0;
   double mean_ratio = 0;
   for (uint64_t seed = 100; seed < 150; ++seed) {
-    for (const BandReport& b : bandAnalysis(whiteNoise(30000, sigma, seed), fs, sigma * sigma, nullptr, 1024, 0.01)) {
+    for (const BandReport& b :
+         bandAnalysis(whiteNoise(30000, sigma, seed), fs, sigma * sigma, nullptr, 1024, 0.01)) {
       flagged += b.significant;
       mean_ratio += b.ratio;
       ++tests;
@@ -212,14 +217,16 @@ TEST(Signal, RateSignatures) {
   const size_t n = 20000;
   const std::vector<double> v = whiteNoise(n, 0.3, 12), e = whiteNoise(n, 10.0, 13);
   std::vector<double> r(n);
-  for (size_t i = 0; i < n; ++i) r[i] = 200.0 * ((v[i] > 0) - (v[i] < 0)) + e[i];  // Coulomb friction
+  for (size_t i = 0; i < n; ++i)
+    r[i] = 200.0 * ((v[i] > 0) - (v[i] < 0)) + e[i];  // Coulomb friction
   const auto coulomb = fitRateSignatures(v, r);
   ASSERT_EQ(coulomb.size(), 4u);
   EXPECT_EQ(coulomb[0].feature, "step");
   EXPECT_NEAR(coulomb[0].coefficient, 200, 10);
   EXPECT_GT(coulomb[0].explained_fraction, 0.95);
 
-  for (size_t i = 0; i < n; ++i) r[i] = 1500.0 * (v[i] < 0 ? v[i] : 0.0) + e[i];  // rebound damping error
+  for (size_t i = 0; i < n; ++i)
+    r[i] = 1500.0 * (v[i] < 0 ? v[i] : 0.0) + e[i];  // rebound damping error
   const auto rebound = fitRateSignatures(v, r);
   EXPECT_EQ(rebound[0].feature, "rebound_slope");
   EXPECT_NEAR(rebound[0].coefficient, 1500, 30);
@@ -248,13 +255,15 @@ TEST(Signal, ExceedanceWindowsFindMergeAndDrop) {
   EXPECT_NEAR(w[0].share, 50 * 25.0 / total, 1e-12);
   EXPECT_DOUBLE_EQ(w[1].t_begin, 5.00);
   EXPECT_DOUBLE_EQ(w[1].t_end, 5.24);
-  EXPECT_NEAR(w[1].share, (20 * 3.5 * 3.5 + 5 * 0.01) / total, 1e-12);  // includes the 5 gap samples
+  EXPECT_NEAR(w[1].share, (20 * 3.5 * 3.5 + 5 * 0.01) / total,
+              1e-12);  // includes the 5 gap samples
   EXPECT_DOUBLE_EQ(w[2].t_begin, 12.00);
   EXPECT_DOUBLE_EQ(w[2].t_end, 12.99);
   EXPECT_DOUBLE_EQ(w[2].peak_z, 6.0);
   EXPECT_NEAR(w[2].share, (99 * 16.0 + 36.0) / total, 1e-12);
   // Without merging the close pair splits in two; with no minimum length the short ones stay.
-  EXPECT_EQ(exceedanceWindows(t, z, 3.0, 0.0, 0.1).size(), 2u);  // the two 0.09 s halves are dropped
+  EXPECT_EQ(exceedanceWindows(t, z, 3.0, 0.0, 0.1).size(),
+            2u);  // the two 0.09 s halves are dropped
   EXPECT_EQ(exceedanceWindows(t, z, 3.0, 0.0, 0.0).size(), 6u);
 }
 
@@ -329,7 +338,8 @@ TEST(Signal, LinearResamplingKeepsSincSquaredOfASinusoid) {
   const double h = 1.0 / 110, A = 2.0;
   const size_t n = 100000, P = 4000;
   std::vector<double> t(n);
-  for (size_t i = 0; i < n; ++i) t[i] = (i + std::abs(std::fmod(static_cast<double>(i) / P, 1.0) * 2 - 1)) * h;
+  for (size_t i = 0; i < n; ++i)
+    t[i] = (i + std::abs(std::fmod(static_cast<double>(i) / P, 1.0) * 2 - 1)) * h;
   const UniformGrid g = uniformGrid(t);
   EXPECT_TRUE(g.resampled);
   EXPECT_TRUE(g.steady);
@@ -337,7 +347,8 @@ TEST(Signal, LinearResamplingKeepsSincSquaredOfASinusoid) {
   EXPECT_EQ(g.size(), n);
   EXPECT_NEAR(g.dt, h, 1e-7 * h);
   EXPECT_NEAR(g.jitter, 2.0 / P, 1e-6);
-  for (const auto& [f, band] : std::vector<std::pair<double, std::string>>{{5.0, "mid"}, {15.0, "wheel_hop"}, {40.0, "high"}}) {
+  for (const auto& [f, band] : std::vector<std::pair<double, std::string>>{
+           {5.0, "mid"}, {15.0, "wheel_hop"}, {40.0, "high"}}) {
     std::vector<double> x(n);
     for (size_t i = 0; i < n; ++i) x[i] = A * std::sin(2 * kPi * f * t[i] + 0.3);
     const std::vector<double> y = onGrid(g, x);
@@ -395,8 +406,10 @@ TEST(Signal, ResampledWhiteNoiseMatchesItsInterpolatedFloor) {
     EXPECT_FALSE(b.significant) << b.band;
   }
   EXPECT_LT(white[3].ratio, 0.85) << "the white floor overstates the resampled noise near Nyquist";
-  std::printf("[ floor ] high band of resampled white noise: %.3f of the interpolated floor, %.3f of the white floor\n", fitted[3].ratio,
-              white[3].ratio);
+  std::printf(
+      "[ floor ] high band of resampled white noise: %.3f of the interpolated floor, %.3f of the "
+      "white floor\n",
+      fitted[3].ratio, white[3].ratio);
   EXPECT_THROW(bandAnalysis(y, 1.0 / g.dt, 1.0, nullptr, 1024, 0.01, {0.0}), std::invalid_argument);
 }
 
@@ -477,7 +490,11 @@ TEST(Signal, BadInputsThrowWithAClearMessage) {
   std::vector<double> inc(64);
   for (size_t i = 0; i < inc.size(); ++i) inc[i] = 0.1 * i;
   expectInvalid([&] { rankWindows(inc, x, 3, 0, 0, {200, 0, 0.8}); }, "max_listed must be >= 1");
-  expectInvalid([&] { rankWindows(inc, x, 3, 0, 0, {200, 20, 1.5}); }, "listed share must lie in (0, 1]");
+  expectInvalid(
+      [&] {
+        rankWindows(inc, x, 3, 0, 0, {200, 20, 1.5});
+      },
+      "listed share must lie in (0, 1]");
   expectInvalid([&] { uniformGrid(x); }, "strictly increasing");
   expectInvalid([&] { uniformGrid({1.0}); }, "at least 2 times");
   expectInvalid([&] { onGrid(uniformGrid(inc), y); }, "one value per time");

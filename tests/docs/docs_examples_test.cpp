@@ -1,8 +1,8 @@
 // Every example in the docs holds as written: each TOML block of docs/*.md and README.md parses,
 // and each `twin` command in their shell blocks names a real command and only flags that command
 // takes. The shell blocks that run in seconds (listing, generating, importing, simulating) run as
-// written, in order, in a scratch folder beside the repository's data; the long walks (calibrations,
-// diagnoses) run under the label `docs` (DocsExamplesLong).
+// written, in order, in a scratch folder beside the repository's data; the long walks
+// (calibrations, diagnoses) run under the label `docs` (DocsExamplesLong).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -76,8 +76,10 @@ std::vector<std::string> shellLines(const std::string& body) {
   std::string joined;
   for (std::string l; std::getline(in, l);) {
     const auto hash = l.find(" #");
-    if (l.rfind("#", 0) == 0) l.clear();
-    else if (hash != std::string::npos) l = l.substr(0, hash);
+    if (l.rfind("#", 0) == 0)
+      l.clear();
+    else if (hash != std::string::npos)
+      l = l.substr(0, hash);
     while (!l.empty() && l.back() == ' ') l.pop_back();
     if (!l.empty() && l.back() == '\\') {
       joined += l.substr(0, l.size() - 1) + " ";
@@ -111,7 +113,8 @@ std::vector<TwinCall> twinCalls(const std::string& line) {
     c.command = tok[j++];
     if (c.command == "generate" && j < tok.size() && tok[j][0] != '-') c.command += " " + tok[j++];
     for (; j < tok.size() && tok[j] != ";"; ++j)
-      if (tok[j].rfind("--", 0) == 0 && tok[j].size() > 2) c.flags.push_back(tok[j].substr(0, tok[j].find('=')));
+      if (tok[j].rfind("--", 0) == 0 && tok[j].size() > 2)
+        c.flags.push_back(tok[j].substr(0, tok[j].find('=')));
     out.push_back(c);
   }
   return out;
@@ -130,11 +133,13 @@ bool isShell(const Block& b) {
 
 /// Commands that finish in seconds on the shipped data.
 bool isShort(const Block& b) {
-  const std::set<std::string> quick = {"list", "generate lab", "import", "simulate", "help", "changes"};
+  const std::set<std::string> quick = {"list",     "generate lab", "import",
+                                       "simulate", "help",         "changes"};
   bool any = false;
   for (const auto& l : shellLines(b.body)) {
-    if (l.find("mpirun") != std::string::npos || l.find("cmake") != std::string::npos || l.find("scripts/") != std::string::npos ||
-        l.find("python") != std::string::npos || l.find("ctest") != std::string::npos)
+    if (l.find("mpirun") != std::string::npos || l.find("cmake") != std::string::npos ||
+        l.find("scripts/") != std::string::npos || l.find("python") != std::string::npos ||
+        l.find("ctest") != std::string::npos)
       return false;
     for (const auto& c : twinCalls(l)) {
       if (!quick.count(c.command)) return false;
@@ -154,7 +159,8 @@ TEST(DocsExamples, EveryTomlBlockParses) {
     try {
       (void)toml::parse(b.body);
     } catch (const toml::parse_error& e) {
-      ADD_FAILURE() << b.file << ":" << b.line + static_cast<int>(e.source().begin.line) << ": " << e.description();
+      ADD_FAILURE() << b.file << ":" << b.line + static_cast<int>(e.source().begin.line) << ": "
+                    << e.description();
     }
   }
   EXPECT_GE(n, 5);
@@ -167,17 +173,21 @@ TEST(DocsExamples, EveryTwinCommandTakesTheFlagsItIsGiven) {
     if (!isShell(b)) continue;
     for (const auto& line : shellLines(b.body))
       for (const auto& c : twinCalls(line)) {
-        if (c.command.find_first_of("$<") != std::string::npos || c.command == "CMD") continue;  // a placeholder
+        if (c.command.find_first_of("$<") != std::string::npos || c.command == "CMD")
+          continue;  // a placeholder
         ++calls;
         if (!help.count(c.command)) {
           const fs::path out = fs::temp_directory_path() / "dtwin_docs_help.txt";
-          const int code = shell(std::string(DTWIN_TWIN_EXE) + " " + c.command + " --help > " + out.string() + " 2>&1");
-          ASSERT_EQ(code, 0) << b.file << ":" << b.line << ": `twin " << c.command << "` is not a command";
+          const int code = shell(std::string(DTWIN_TWIN_EXE) + " " + c.command + " --help > " +
+                                 out.string() + " 2>&1");
+          ASSERT_EQ(code, 0) << b.file << ":" << b.line << ": `twin " << c.command
+                             << "` is not a command";
           help[c.command] = dtwin_test::slurp(out);
         }
         for (const auto& f : c.flags)
           EXPECT_TRUE(std::regex_search(help[c.command], std::regex(f + "([^a-z-]|$)")))
-              << b.file << ":" << b.line << ": twin " << c.command << " takes no flag " << f << "\n  in: " << line;
+              << b.file << ":" << b.line << ": twin " << c.command << " takes no flag " << f
+              << "\n  in: " << line;
       }
   }
   EXPECT_GE(calls, 40);
@@ -190,10 +200,12 @@ namespace {
 void runBlocks(bool all) {
   std::map<std::string, std::vector<Block>> pages;
   for (const auto& b : allBlocks())
-    if ((b.lang == "bash" || b.lang == "sh") && !shellLines(b.body).empty()) pages[b.file].push_back(b);
+    if ((b.lang == "bash" || b.lang == "sh") && !shellLines(b.body).empty())
+      pages[b.file].push_back(b);
   int ran = 0;
   for (const auto& [page, blocks] : pages) {
-    const fs::path dir = dtwin_test::freshDir("docs_" + std::regex_replace(page, std::regex("[/.]"), "_") + (all ? "_all" : ""));
+    const fs::path dir = dtwin_test::freshDir(
+        "docs_" + std::regex_replace(page, std::regex("[/.]"), "_") + (all ? "_all" : ""));
     fs::create_symlink(kSrc / "data", dir / "data");
     fs::create_symlink(fs::path(DTWIN_TWIN_EXE).parent_path().parent_path(), dir / "build");
     for (const auto& b : blocks) {
@@ -201,16 +213,21 @@ void runBlocks(bool all) {
       bool runnable = true;
       for (const auto& l : shellLines(b.body))
         for (const auto& c : twinCalls(l)) runnable = runnable && c.command != "CMD";
-      // A placeholder the reader fills in ("<the causes' folder>") is not a command to run as written.
+      // A placeholder the reader fills in ("<the causes' folder>") is not a command to run as
+      // written.
       if (std::regex_search(b.body, std::regex("<[a-z][a-z' ]*>"))) runnable = false;
-      if (!runnable || b.body.find("mpirun") != std::string::npos || b.body.find("cmake") != std::string::npos ||
-          b.body.find("scripts/") != std::string::npos || b.body.find("ctest") != std::string::npos ||
+      if (!runnable || b.body.find("mpirun") != std::string::npos ||
+          b.body.find("cmake") != std::string::npos ||
+          b.body.find("scripts/") != std::string::npos ||
+          b.body.find("ctest") != std::string::npos ||
           b.body.find("#!/bin/bash") != std::string::npos)
         continue;
-      dtwin_test::writeText(dir / "block.sh", "set -euo pipefail\nexport PATH=\"" + fs::path(DTWIN_TWIN_EXE).parent_path().string() +
-                                                   ":$PATH\"\n" + b.body);
+      dtwin_test::writeText(dir / "block.sh", "set -euo pipefail\nexport PATH=\"" +
+                                                  fs::path(DTWIN_TWIN_EXE).parent_path().string() +
+                                                  ":$PATH\"\n" + b.body);
       const int code = shell("cd " + dir.string() + " && bash block.sh > block.out 2>&1");
-      EXPECT_EQ(code, 0) << page << ":" << b.line << " fails as written:\n" << dtwin_test::slurp(dir / "block.out");
+      EXPECT_EQ(code, 0) << page << ":" << b.line << " fails as written:\n"
+                         << dtwin_test::slurp(dir / "block.out");
       std::printf("ran %s:%d\n", page.c_str(), b.line);
       ++ran;
     }

@@ -32,16 +32,20 @@ TEST(RegistryDocs, RegistriesMdIsWhatTheRegistriesHold) {
   const auto generated = lines(dtwin_test::slurp(out));
   const auto doc = lines(dtwin_test::slurp(std::string(DTWIN_SOURCE_DIR) + "/docs/registries.md"));
   ASSERT_GT(generated.size(), 50u);
-  for (const char* must : {"## Tire laws", "## Strut laws", "## Suspension options", "## Effects", "## Road types", "## Sensor quantities",
-                           "## Sensor models", "## Integrators", "## Commands", "## Variables of user-defined effects"}) {
+  for (const char* must :
+       {"## Tire laws", "## Strut laws", "## Suspension options", "## Effects", "## Road types",
+        "## Sensor quantities", "## Sensor models", "## Integrators", "## Commands",
+        "## Variables of user-defined effects"}) {
     bool found = false;
     for (const auto& l : generated) found = found || l.rfind(must, 0) == 0;
     EXPECT_TRUE(found) << "twin list --registries has no section " << must;
   }
   // Line by line, so that a failure names the first row that differs.
   for (std::size_t i = 0; i < std::max(generated.size(), doc.size()); ++i) {
-    const std::string g = i < generated.size() ? generated[i] : "(end)", d = i < doc.size() ? doc[i] : "(end)";
+    const std::string g = i < generated.size() ? generated[i] : "(end)",
+                      d = i < doc.size() ? doc[i] : "(end)";
     ASSERT_EQ(d, g) << "docs/registries.md line " << i + 1
-                    << " differs from `twin list --registries`; regenerate: ./build/cli/twin list --registries > docs/registries.md";
+                    << " differs from `twin list --registries`; regenerate: ./build/cli/twin list "
+                       "--registries > docs/registries.md";
   }
 }

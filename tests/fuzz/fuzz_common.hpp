@@ -26,7 +26,8 @@ void guarded(F&& read) {
     read();
   } catch (const InputError& e) {
     const std::string what = e.what();
-    if (what.empty() || what.find('\n') != std::string::npos || what.find('\r') != std::string::npos) {
+    if (what.empty() || what.find('\n') != std::string::npos ||
+        what.find('\r') != std::string::npos) {
       std::fprintf(stderr, "fuzz: InputError that is not one non-empty line: [%s]\n", what.c_str());
       std::abort();
     }

@@ -1,8 +1,8 @@
 // Fuzz harness: the field CSV reader (io/measurement.hpp parseFieldCsv).
 #include <string>
 
-#include "tests/fuzz/fuzz_common.hpp"
 #include "io/measurement.hpp"
+#include "tests/fuzz/fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -2,8 +2,8 @@
 // data do with an accepted file (channels, repetitions, times).
 #include <string>
 
-#include "tests/fuzz/fuzz_common.hpp"
 #include "io/measurement.hpp"
+#include "tests/fuzz/fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

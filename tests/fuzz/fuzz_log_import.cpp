@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include "tests/fuzz/fuzz_common.hpp"
 #include "io/log_import.hpp"
+#include "tests/fuzz/fuzz_common.hpp"
 
 namespace {
 
@@ -54,11 +54,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   static const dtwin::ImportMapping mappings[2] = {
       [] {
-        writeBytes(scratch() / "seconds.toml", reinterpret_cast<const uint8_t*>(kSeconds), std::char_traits<char>::length(kSeconds));
+        writeBytes(scratch() / "seconds.toml", reinterpret_cast<const uint8_t*>(kSeconds),
+                   std::char_traits<char>::length(kSeconds));
         return dtwin::readImportMapping((scratch() / "seconds.toml").string());
       }(),
       [] {
-        writeBytes(scratch() / "clock.toml", reinterpret_cast<const uint8_t*>(kClock), std::char_traits<char>::length(kClock));
+        writeBytes(scratch() / "clock.toml", reinterpret_cast<const uint8_t*>(kClock),
+                   std::char_traits<char>::length(kClock));
         return dtwin::readImportMapping((scratch() / "clock.toml").string());
       }()};
   static const std::string study = (sourceDir() / "data" / "studies" / "demo.toml").string();

@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/fuzz/fuzz_common.hpp"
 #include "io/log_import.hpp"
+#include "tests/fuzz/fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace dtwin::fuzz;
@@ -60,19 +60,22 @@ uint64_t get64(const uint8_t* d, size_t at) {
   return v;
 }
 void put64(uint8_t* d, size_t at, uint64_t v) {
-  for (int i = 0; i < 8; ++i, v >>= 8) d[at + static_cast<size_t>(i)] = static_cast<uint8_t>(v & 0xff);
+  for (int i = 0; i < 8; ++i, v >>= 8)
+    d[at + static_cast<size_t>(i)] = static_cast<uint8_t>(v & 0xff);
 }
 
 std::vector<FoundBlock> findBlocks(const uint8_t* d, size_t size) {
   std::vector<FoundBlock> out;
   for (size_t at = 64; at + 24 <= size; at += 8)
-    if (d[at] == '#' && d[at + 1] == '#' && d[at + 2] >= 'A' && d[at + 2] <= 'Z' && d[at + 3] >= 'A' && d[at + 3] <= 'Z')
+    if (d[at] == '#' && d[at + 1] == '#' && d[at + 2] >= 'A' && d[at + 2] <= 'Z' &&
+        d[at + 3] >= 'A' && d[at + 3] <= 'Z')
       out.push_back({at, get64(d, at + 8), get64(d, at + 16)});
   return out;
 }
 
-const char* const kMdf4Ids[] = {"HD", "MD", "TX", "FH", "CH", "AT", "EV", "DG", "CG", "SI", "CN", "CC", "CA", "DT", "SR",
-                                "RD", "SD", "DL", "DZ", "HL", "DV", "DI", "RV", "RI", "LD", "DS", "CL", "CV", "CU"};
+const char* const kMdf4Ids[] = {"HD", "MD", "TX", "FH", "CH", "AT", "EV", "DG", "CG", "SI",
+                                "CN", "CC", "CA", "DT", "SR", "RD", "SD", "DL", "DZ", "HL",
+                                "DV", "DI", "RV", "RI", "LD", "DS", "CL", "CV", "CU"};
 
 /// A DZ block's records inflated, changed and deflated again into the block's room: a stream
 /// whose checksum passes. False when the block is not one to do this with.
@@ -82,7 +85,8 @@ bool rewriteDz(uint8_t* d, size_t size, const FoundBlock& b, std::minstd_rand& r
   if (original == 0 || original > (1u << 20) || packed > room) return false;
   std::vector<uint8_t> raw(original);
   uLongf raw_size = static_cast<uLongf>(original);
-  if (uncompress(raw.data(), &raw_size, d + b.at + 48, static_cast<uLong>(packed)) != Z_OK) return false;
+  if (uncompress(raw.data(), &raw_size, d + b.at + 48, static_cast<uLong>(packed)) != Z_OK)
+    return false;
   raw.resize(raw_size);
   if (raw.empty()) return false;
   const int edits = 1 + static_cast<int>(rng() % 4);
@@ -91,15 +95,26 @@ bool rewriteDz(uint8_t* d, size_t size, const FoundBlock& b, std::minstd_rand& r
     if (rng() % 2 == 0 || raw.size() < 8) {
       raw[at] = static_cast<uint8_t>(rng());
     } else {
-      static const double special[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
-                                       -std::numeric_limits<double>::infinity(), 1e300, -1e300, 5e-324, -0.0, 0.0, 1e9, -1.0};
+      static const double special[] = {std::numeric_limits<double>::quiet_NaN(),
+                                       std::numeric_limits<double>::infinity(),
+                                       -std::numeric_limits<double>::infinity(),
+                                       1e300,
+                                       -1e300,
+                                       5e-324,
+                                       -0.0,
+                                       0.0,
+                                       1e9,
+                                       -1.0};
       const double v = special[rng() % (sizeof special / sizeof special[0])];
       std::memcpy(raw.data() + (at / 8 * 8 + 8 <= raw.size() ? at / 8 * 8 : raw.size() - 8), &v, 8);
     }
   }
   std::vector<uint8_t> z(compressBound(static_cast<uLong>(raw.size())));
   uLongf z_size = static_cast<uLongf>(z.size());
-  if (compress2(z.data(), &z_size, raw.data(), static_cast<uLong>(raw.size()), static_cast<int>(rng() % 10)) != Z_OK || z_size > room) return false;
+  if (compress2(z.data(), &z_size, raw.data(), static_cast<uLong>(raw.size()),
+                static_cast<int>(rng() % 10)) != Z_OK ||
+      z_size > room)
+    return false;
   std::memcpy(d + b.at + 48, z.data(), z_size);
   put64(d, b.at + 32, raw.size());
   put64(d, b.at + 40, z_size);
@@ -108,7 +123,8 @@ bool rewriteDz(uint8_t* d, size_t size, const FoundBlock& b, std::minstd_rand& r
 
 }  // namespace
 
-extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max_size, unsigned int seed) {
+extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max_size,
+                                          unsigned int seed) {
   std::minstd_rand rng(seed);
   const std::vector<FoundBlock> blocks = findBlocks(data, size);
   const unsigned kind = static_cast<unsigned>(rng() % 10);
@@ -125,7 +141,8 @@ extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max
     }
     case 4:
     case 5: {  // a link redirected: to another block, itself, into a block, past the end, to 0
-      if (b.links == 0 || b.links > (size - b.at - 24) / 8) return LLVMFuzzerMutate(data, size, max_size);
+      if (b.links == 0 || b.links > (size - b.at - 24) / 8)
+        return LLVMFuzzerMutate(data, size, max_size);
       const size_t slot = b.at + 24 + 8 * static_cast<size_t>(rng() % b.links);
       const unsigned where = static_cast<unsigned>(rng() % 10);
       const uint64_t to = where < 6    ? blocks[rng() % blocks.size()].at
@@ -137,7 +154,8 @@ extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max
       return size;
     }
     case 6:
-    case 7: {  // a DZ block: its records changed under a passing checksum, a stream byte, its sizes, its zip type
+    case 7: {  // a DZ block: its records changed under a passing checksum, a stream byte, its
+               // sizes, its zip type
       std::vector<FoundBlock> dz;
       for (const auto& x : blocks)
         if (data[x.at + 2] == 'D' && data[x.at + 3] == 'Z') dz.push_back(x);
@@ -147,22 +165,34 @@ extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max
       if (how < 3 && rewriteDz(data, size, z, rng)) return size;
       if (z.at + 48 > size) return LLVMFuzzerMutate(data, size, max_size);
       if (how == 3 && z.at + 49 < size) {
-        data[z.at + 48 + rng() % std::min<size_t>(size - z.at - 48, z.length > 48 ? z.length - 48 : 1)] ^= static_cast<uint8_t>(1 + rng() % 255);
+        data[z.at + 48 +
+             rng() % std::min<size_t>(size - z.at - 48, z.length > 48 ? z.length - 48 : 1)] ^=
+            static_cast<uint8_t>(1 + rng() % 255);
       } else if (how == 4) {
-        const size_t field = z.at + (rng() % 2 == 0 ? 32 : 40);  // the original or the compressed size
+        const size_t field =
+            z.at + (rng() % 2 == 0 ? 32 : 40);  // the original or the compressed size
         const uint64_t v = get64(data, field);
         const uint64_t choices[] = {v + 8, v - 8, v * 2, v / 2, 0, v + 1};
         put64(data, field, choices[rng() % 6]);
       } else {
         data[z.at + 26] = static_cast<uint8_t>(rng() % 3);  // zip type
-        if (rng() % 2 == 0) put64(data, z.at + 28, rng() % 3 == 0 ? 0 : rng() % 64);  // the transposition's columns (and the size's low bytes)
+        if (rng() % 2 == 0)
+          put64(data, z.at + 28,
+                rng() % 3 == 0
+                    ? 0
+                    : rng() % 64);  // the transposition's columns (and the size's low bytes)
       }
       return size;
     }
     default: {  // the block's length or link count
       const size_t field = b.at + (rng() % 2 == 0 ? 8 : 16);
       const uint64_t v = get64(data, field);
-      const uint64_t choices[] = {v + 8, v - 8, 0, v * 2, std::numeric_limits<uint64_t>::max() - rng() % 64, static_cast<uint64_t>(rng() % 64)};
+      const uint64_t choices[] = {v + 8,
+                                  v - 8,
+                                  0,
+                                  v * 2,
+                                  std::numeric_limits<uint64_t>::max() - rng() % 64,
+                                  static_cast<uint64_t>(rng() % 64)};
       put64(data, field, choices[rng() % 6]);
       return size;
     }

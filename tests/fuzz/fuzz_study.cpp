@@ -3,8 +3,8 @@
 // naming "../vehicle/midsize_sedan.toml" (as data/studies/*.toml do) finds it.
 #include <filesystem>
 
-#include "tests/fuzz/fuzz_common.hpp"
 #include "io/study.hpp"
+#include "tests/fuzz/fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace fs = std::filesystem;
@@ -12,8 +12,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const fs::path study = [] {
     fs::create_directories(scratch() / "studies");
     fs::create_directories(scratch() / "vehicle");
-    fs::copy_file(sourceDir() / "data/vehicle/midsize_sedan.toml", scratch() / "vehicle/midsize_sedan.toml",
-                  fs::copy_options::overwrite_existing);
+    fs::copy_file(sourceDir() / "data/vehicle/midsize_sedan.toml",
+                  scratch() / "vehicle/midsize_sedan.toml", fs::copy_options::overwrite_existing);
     return scratch() / "studies/fuzz.toml";
   }();
   writeBytes(study, data, size);

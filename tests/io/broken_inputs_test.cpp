@@ -52,16 +52,19 @@ struct TomlCase {
 
 /// Every `key = <number>` of a TOML text (plain or inside an inline table), each replaced by each
 /// of `bad` in turn.
-std::vector<TomlCase> numberMutations(const std::string& text, const std::vector<std::string>& bad) {
+std::vector<TomlCase> numberMutations(const std::string& text,
+                                      const std::vector<std::string>& bad) {
   static const std::regex kv(R"(([A-Za-z_][A-Za-z_0-9]*)\s*=\s*(-?[0-9][0-9.eE+\-]*))");
   std::vector<TomlCase> out;
   const auto ls = lines(text);
   for (std::size_t i = 0; i < ls.size(); ++i) {
     const std::string code = ls[i].substr(0, ls[i].find('#'));
-    for (auto it = std::sregex_iterator(code.begin(), code.end(), kv); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(code.begin(), code.end(), kv); it != std::sregex_iterator();
+         ++it) {
       for (const auto& b : bad) {
         auto copy = ls;
-        copy[i] = code.substr(0, it->position(2)) + b + code.substr(it->position(2) + it->length(2));
+        copy[i] =
+            code.substr(0, it->position(2)) + b + code.substr(it->position(2) + it->length(2));
         out.push_back({i + 1, (*it)[1].str(), b, join(copy)});
       }
     }
@@ -70,13 +73,16 @@ std::vector<TomlCase> numberMutations(const std::string& text, const std::vector
 }
 
 /// The checks every case must pass.
-void expectRejected(const Result& r, const std::string& names_file, const std::string& names_field, const fs::path& must_not_exist) {
+void expectRejected(const Result& r, const std::string& names_file, const std::string& names_field,
+                    const fs::path& must_not_exist) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
   EXPECT_EQ(r.err.rfind("twin: error: ", 0), 0u) << r.err;
-  EXPECT_NE(r.err.find(names_file), std::string::npos) << "names the file " << names_file << ": " << r.err;
+  EXPECT_NE(r.err.find(names_file), std::string::npos)
+      << "names the file " << names_file << ": " << r.err;
   if (!names_field.empty()) {
-    EXPECT_NE(r.err.find(names_field), std::string::npos) << "names the field " << names_field << ": " << r.err;
+    EXPECT_NE(r.err.find(names_field), std::string::npos)
+        << "names the field " << names_field << ": " << r.err;
   }
   EXPECT_FALSE(fs::exists(must_not_exist)) << "nothing may be written: " << must_not_exist;
 }
@@ -96,7 +102,8 @@ TEST(BrokenInputs, EveryNumberOfTheStudyFile) {
     const fs::path study = dir / ("study_" + std::to_string(n++) + ".toml");
     writeText(study, std::regex_replace(c.text, std::regex(R"(vehicle = "[^"]*")"), vehicle));
     const fs::path out = dir / "out" / "lab.csv";
-    const Result r = twin("generate lab --quiet --study " + study.string() + " --out " + out.string(), dir);
+    const Result r =
+        twin("generate lab --quiet --study " + study.string() + " --out " + out.string(), dir);
     expectRejected(r, study.string(), c.key, dir / "out");
   }
 }
@@ -109,13 +116,16 @@ TEST(BrokenInputs, EveryNumberOfTheVehicleFile) {
   const std::string study_text = slurp(kSrc + "/data/studies/demo.toml");
   int n = 0;
   for (const auto& c : cases) {
-    SCOPED_TRACE("midsize_sedan.toml line " + std::to_string(c.line) + ": " + c.key + " = " + c.bad);
+    SCOPED_TRACE("midsize_sedan.toml line " + std::to_string(c.line) + ": " + c.key + " = " +
+                 c.bad);
     const fs::path vehicle = dir / ("vehicle_" + std::to_string(n) + ".toml");
     const fs::path study = dir / ("study_" + std::to_string(n++) + ".toml");
     writeText(vehicle, c.text);
-    writeText(study, std::regex_replace(study_text, std::regex(R"(vehicle = "[^"]*")"), "vehicle = \"" + vehicle.string() + "\""));
+    writeText(study, std::regex_replace(study_text, std::regex(R"(vehicle = "[^"]*")"),
+                                        "vehicle = \"" + vehicle.string() + "\""));
     const fs::path out = dir / "out" / "lab.csv";
-    const Result r = twin("generate lab --quiet --study " + study.string() + " --out " + out.string(), dir);
+    const Result r =
+        twin("generate lab --quiet --study " + study.string() + " --out " + out.string(), dir);
     expectRejected(r, vehicle.string(), "", dir / "out");
   }
 }
@@ -147,8 +157,10 @@ TEST(BrokenInputs, LabCsvBrokenAsLoggersAndEditorsBreakThem) {
   const std::size_t ncol = cells(header).size();
   std::vector<std::pair<std::string, std::string>> cases;  // (what, text)
   for (std::size_t col = 0; col < ncol; ++col)
-    for (const std::string bad : {"", "abc", "nan", "inf", "-inf", "1e308", "-1e308", "1,2", "0x10"})
-      cases.push_back({"column " + std::to_string(col + 1) + " = '" + bad + "'", withCell(col, bad)});
+    for (const std::string bad :
+         {"", "abc", "nan", "inf", "-inf", "1e308", "-1e308", "1,2", "0x10"})
+      cases.push_back(
+          {"column " + std::to_string(col + 1) + " = '" + bad + "'", withCell(col, bad)});
   {
     auto copy = ls;
     copy[2] = row + ",7";
@@ -171,7 +183,9 @@ TEST(BrokenInputs, LabCsvBrokenAsLoggersAndEditorsBreakThem) {
     SCOPED_TRACE(what);
     const fs::path lab = dir / ("lab_" + std::to_string(n++) + ".csv");
     writeText(lab, text);
-    const Result r = twin("calibrate --quiet --assembly M1 --data " + lab.string() + " --out " + (dir / "cal").string(), dir);
+    const Result r = twin("calibrate --quiet --assembly M1 --data " + lab.string() + " --out " +
+                              (dir / "cal").string(),
+                          dir);
     expectRejected(r, lab.string(), "", dir / "cal");
   }
 }
@@ -181,15 +195,17 @@ TEST(BrokenInputs, LabCsvBrokenAsLoggersAndEditorsBreakThem) {
 // work, with the field named.
 TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
   const fs::path dir = freshDir("broken_unbounded");
-  const std::string base = std::regex_replace(slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
-                                              "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  const std::string base = std::regex_replace(
+      slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
+      "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
   struct Case {
     std::string from, to, field;
   };
   const std::vector<Case> cases = {
       {"dx_m = 0.01, tracks", "dx_m = 1e-320, tracks", "dx_m"},
       // 8000 s at 15 m/s on a 0.01 m grid: each value fine alone, but 1.2e7 grid points a track
-      {"duration_s = 3.0\nspeed = { v_final_mps = 15.0", "duration_s = 8000.0\nspeed = { v_final_mps = 15.0", "dx_m"},
+      {"duration_s = 3.0\nspeed = { v_final_mps = 15.0",
+       "duration_s = 8000.0\nspeed = { v_final_mps = 15.0", "dx_m"},
       {"max_step_s = 0.2", "max_step_s = 1e-320", "max_step_s"},
       {"obstacle_max_step_s = 2e-3", "obstacle_max_step_s = 1e-9", "obstacle_max_step_s"},
       {"accuracy = 3e-4", "accuracy = 1e-300", "accuracy"},
@@ -198,7 +214,8 @@ TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
       {"gibbs_iterations = 20000", "gibbs_iterations = 900000000", "gibbs_iterations"},
       {"duration_s = 3.0", "duration_s = 1e9", "duration_s"},
       {"v_final_mps = 4.0", "v_final_mps = 1e9", "v_final_mps"},
-      {"output_rate_hz = 1000.0", "output_rate_hz = 900000.0", "duration_s"},  // 15 s x 9e5 Hz > 1e7 samples
+      {"output_rate_hz = 1000.0", "output_rate_hz = 900000.0",
+       "duration_s"},  // 15 s x 9e5 Hz > 1e7 samples
       {R"(tire = ["pac2002", "fiala"])", R"(tire = ["pac2002", "fiala", "pac2002"])", "tire"},
       {"[noise]", "[simulation.extra]\nx = 1\n[noise]", "simulation"},
   };
@@ -213,7 +230,9 @@ TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
     writeText(study, text);
     // generate lab runs one short simulation when a study is accepted: a case that slips through
     // fails the test quickly instead of running a study.
-    const Result r = twin("generate lab --quiet --study " + study.string() + " --out " + (dir / "out" / "lab.csv").string(), dir);
+    const Result r = twin("generate lab --quiet --study " + study.string() + " --out " +
+                              (dir / "out" / "lab.csv").string(),
+                          dir);
     expectRejected(r, study.string(), c.field, dir / "out");
   }
   // Sizes that are each inside their limits but multiply up past the work limit: refused by the
@@ -221,18 +240,24 @@ TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
   std::string big = base;
   big.replace(big.find("posterior_draws = 100"), 21, "posterior_draws = 900000");
   writeText(dir / "big.toml", big);
-  Result r = twin("study --study " + (dir / "big.toml").string() + " --quiet --out " + (dir / "out").string(), dir);
+  Result r = twin(
+      "study --study " + (dir / "big.toml").string() + " --quiet --out " + (dir / "out").string(),
+      dir);
   expectRejected(r, (dir / "big.toml").string(), "estimated work", dir / "out");
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
-  r = twin("calibrate --study " + (dir / "big.toml").string() + " --data " + kSrc + "/tests/fuzz/seeds/lab/two_channels.csv" +
+  r = twin("calibrate --study " + (dir / "big.toml").string() + " --data " + kSrc +
+               "/tests/fuzz/seeds/lab/two_channels.csv" +
                " --assembly M1 --lhs-points 2000000 --out " + (dir / "out").string(),
            dir);
   expectRejected(r, "--lhs-points", "at most", dir / "out");
   // A vehicle path that is a folder, and a study path that is a folder.
   std::string folder = base;
-  folder = std::regex_replace(folder, std::regex(R"(vehicle = "[^"]*")"), "vehicle = \"" + dir.string() + "\"");
+  folder = std::regex_replace(folder, std::regex(R"(vehicle = "[^"]*")"),
+                              "vehicle = \"" + dir.string() + "\"");
   writeText(dir / "folder_vehicle.toml", folder);
-  r = twin("generate lab --quiet --study " + (dir / "folder_vehicle.toml").string() + " --out " + (dir / "out" / "l.csv").string(), dir);
+  r = twin("generate lab --quiet --study " + (dir / "folder_vehicle.toml").string() + " --out " +
+               (dir / "out" / "l.csv").string(),
+           dir);
   expectRejected(r, dir.string(), "is a folder", dir / "out");
   r = twin("list --study " + dir.string(), dir);
   expectRejected(r, dir.string(), "is a folder", dir / "out");
@@ -242,14 +267,22 @@ TEST(BrokenInputs, UnboundedWorkIsRefusedBeforeItStarts) {
 // trace behind.
 TEST(BrokenInputs, FailuresWriteNothing) {
   const fs::path dir = freshDir("broken_nothing_written");
-  const std::string base = std::regex_replace(slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
-                                              "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
-  writeText(dir / "bad_lab.csv", "repetition,time_s,channel,value\n1,6,hub_force_fl_N,1\n\n1,5,hub_force_fl_N,2\n");
-  Result r = twin("study --quiet --lab " + (dir / "bad_lab.csv").string() + " --out " + (dir / "out").string(), dir);
+  const std::string base = std::regex_replace(
+      slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
+      "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  writeText(dir / "bad_lab.csv",
+            "repetition,time_s,channel,value\n1,6,hub_force_fl_N,1\n\n1,5,hub_force_fl_N,2\n");
+  Result r = twin(
+      "study --quiet --lab " + (dir / "bad_lab.csv").string() + " --out " + (dir / "out").string(),
+      dir);
   expectRejected(r, "bad_lab.csv:4", "time_s", dir / "out");  // line 4: the blank line 3 is counted
-  r = twin("study --quiet --lab " + (dir / "missing.csv").string() + " --out " + (dir / "out").string(), dir);
+  r = twin(
+      "study --quiet --lab " + (dir / "missing.csv").string() + " --out " + (dir / "out").string(),
+      dir);
   expectRejected(r, "missing.csv", "", dir / "out");
-  r = twin("study --quiet --field " + (dir / "bad_lab.csv").string() + " --out " + (dir / "out").string(), dir);
+  r = twin("study --quiet --field " + (dir / "bad_lab.csv").string() + " --out " +
+               (dir / "out").string(),
+           dir);
   expectRejected(r, "bad_lab.csv", "", dir / "out");
 
   // A simulation that fails (step budget, wall-clock budget): exit 1, one line, no trace file.
@@ -258,8 +291,8 @@ TEST(BrokenInputs, FailuresWriteNothing) {
     std::string text = base;
     text.replace(text.find("output_rate_hz = 1000.0"), 23, "output_rate_hz = 1000.0\n" + budget);
     writeText(dir / "budget.toml", text);
-    r = twin("simulate --quiet --study " + (dir / "budget.toml").string() + " --assembly M1 --scenario lab --out " +
-                 (dir / "out" / "trace.csv").string(),
+    r = twin("simulate --quiet --study " + (dir / "budget.toml").string() +
+                 " --assembly M1 --scenario lab --out " + (dir / "out" / "trace.csv").string(),
              dir);
     EXPECT_EQ(r.code, 1) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
@@ -273,7 +306,8 @@ TEST(BrokenInputs, FailuresWriteNothing) {
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
   std::map<std::string, std::string> m;
   for (const auto& e : fs::recursive_directory_iterator(dir))
-    m[fs::relative(e.path(), dir).string()] = e.is_regular_file() ? slurp(e.path()) : std::string("<dir>");
+    m[fs::relative(e.path(), dir).string()] =
+        e.is_regular_file() ? slurp(e.path()) : std::string("<dir>");
   return m;
 }
 
@@ -286,8 +320,9 @@ TEST(BrokenInputs, EveryCommandLeavesItsOutputFolderByteIdenticalOnFailure) {
   writeText(out / "previous.csv", "a,b\n1,2\n");
   writeText(out / "M1" / "summary.json", "{\"assembly\": \"M1\"}\n");
   writeText(out / "report.html", "<html>earlier</html>\n");
-  const std::string demo = std::regex_replace(slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
-                                              "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  const std::string demo = std::regex_replace(
+      slurp(kSrc + "/data/studies/demo.toml"), std::regex(R"(vehicle = "[^"]*")"),
+      "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
   std::string broken = demo;
   broken.replace(broken.find("variance_N2 = 18000.0"), 21, "variance_N2 = nan");
   writeText(dir / "broken.toml", broken);
@@ -307,11 +342,15 @@ TEST(BrokenInputs, EveryCommandLeavesItsOutputFolderByteIdenticalOnFailure) {
       "coverage" + b + " --out " + o,
       "synthesize" + b + " --calibration " + o + " --out " + o,
       "synthesize" + g + " --calibration " + o + " --out " + o,  // no posterior.csv in out/M1
-      "classify" + g + " --field " + (dir / "bad_field.csv").string() + " --synthetic " + o + " --out " + o,
+      "classify" + g + " --field " + (dir / "bad_field.csv").string() + " --synthetic " + o +
+          " --out " + o,
       "study --study " + (dir / "broken.toml").string() + " --out " + o,
-      "study --study " + (dir / "good.toml").string() + " --lab " + (dir / "bad_lab.csv").string() + " --out " + o,
-      "study --study " + (dir / "good.toml").string() + " --field " + (dir / "bad_field.csv").string() + " --out " + o,
-      "compare" + g + " --calibration " + o + "/M1 --data " + (dir / "bad_lab.csv").string() + " --out " + o,
+      "study --study " + (dir / "good.toml").string() + " --lab " + (dir / "bad_lab.csv").string() +
+          " --out " + o,
+      "study --study " + (dir / "good.toml").string() + " --field " +
+          (dir / "bad_field.csv").string() + " --out " + o,
+      "compare" + g + " --calibration " + o + "/M1 --data " + (dir / "bad_lab.csv").string() +
+          " --out " + o,
       "diagnose" + g + " --data " + (dir / "bad_lab.csv").string() + " --out " + o,
       "report --study-dir " + o + " --out " + o,  // not a study folder
   };
@@ -321,7 +360,8 @@ TEST(BrokenInputs, EveryCommandLeavesItsOutputFolderByteIdenticalOnFailure) {
     const Result r = twin(c + " --quiet", dir / "..");
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
-    EXPECT_EQ(r.err.find("--help)"), std::string::npos) << "an input error, not a command-line one: " << r.err;
+    EXPECT_EQ(r.err.find("--help)"), std::string::npos)
+        << "an input error, not a command-line one: " << r.err;
     EXPECT_EQ(snapshot(dir), before) << "the folder changed";
   }
 }
@@ -335,14 +375,17 @@ TEST(BrokenInputs, CommandLinesGetOneLineNamingTheCommand) {
       {"simulat", "unknown command 'simulat'"},
       {"simulat", "did you mean 'simulate'"},
       {"generate lb --out x.csv", "generate: unknown command 'lb'"},
-      {"--bogus", "(see twin --help)"},  // `twin` alone prints the overview (tests/cli/help_examples_test.cpp)
+      {"--bogus",
+       "(see twin --help)"},  // `twin` alone prints the overview (tests/cli/help_examples_test.cpp)
       {"generate", "(see twin generate --help)"},
       {"simulate --bogus --out " + (dir / "o" / "x.csv").string(), "--bogus"},
       {"simulate --out", "--out"},
       {"simulate --seed -3 --out " + (dir / "o" / "x.csv").string(), "--seed: must be an integer"},
-      {"simulate --seed 99999999999999999999999 --out " + (dir / "o" / "x.csv").string(), "--seed: must be an integer"},
+      {"simulate --seed 99999999999999999999999 --out " + (dir / "o" / "x.csv").string(),
+       "--seed: must be an integer"},
       {"calibrate --seed 1e3 --data x.csv --out " + (dir / "o").string(), "--seed"},
-      {"calibrate --threads -1 --data x.csv --out " + (dir / "o").string(), "(see twin calibrate --help)"},
+      {"calibrate --threads -1 --data x.csv --out " + (dir / "o").string(),
+       "(see twin calibrate --help)"},
       {"simulate --accuracy -1 --out " + (dir / "o" / "x.csv").string(), "--accuracy"},
       {"simulate --max-step 0 --out " + (dir / "o" / "x.csv").string(), "--max-step"},
       {"simulate --output-rate -1000 --out " + (dir / "o" / "x.csv").string(), "--output-rate"},

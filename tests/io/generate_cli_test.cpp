@@ -47,7 +47,8 @@ TEST(GenerateCli, LabWritesTidyCsvAndSidecar) {
 
 TEST(GenerateCli, FieldWritesMatrix) {
   const std::string out = ::testing::TempDir() + "/gen/field.csv";
-  const auto r = twin("generate field --out " + out + " --runs 2 --threads 2 --window 10,10.01 --assembly M3");
+  const auto r =
+      twin("generate field --out " + out + " --runs 2 --threads 2 --window 10,10.01 --assembly M3");
   ASSERT_EQ(r.code, 0) << r.err;
   const FieldData d = readFieldCsv(out);
   EXPECT_EQ(d.rowCount(), 2u);
@@ -66,10 +67,13 @@ TEST(GenerateCli, BadInputsExitTwo) {
   };
   const std::vector<Case> cases = {
       {"generate lab --out " + out + " --assembly M9", "unknown assembly 'M9'"},
-      {"generate lab --out " + ::testing::TempDir() + "/gen_bad/lab.txt", "--out: must name a .csv file"},
-      {"generate lab --study /nonexistent/s.toml --out " + out, "/nonexistent/s.toml: study file not found"},
+      {"generate lab --out " + ::testing::TempDir() + "/gen_bad/lab.txt",
+       "--out: must name a .csv file"},
+      {"generate lab --study /nonexistent/s.toml --out " + out,
+       "/nonexistent/s.toml: study file not found"},
       {"generate lab --out " + out + " --scenario moon", "unknown scenario 'moon'"},
-      {"generate field --out " + out + " --runs 1 --channel hub_force_fl_kN", "wrong unit suffix '_kN'"},
+      {"generate field --out " + out + " --runs 1 --channel hub_force_fl_kN",
+       "wrong unit suffix '_kN'"},
       {"generate field --out " + out + " --runs 1 --window 10,99", "lies outside the scenario"},
   };
   for (const auto& c : cases) {
@@ -87,16 +91,20 @@ TEST(GenerateCli, BadInputsExitTwo) {
 
 TEST(GenerateCli, HiddenEffectIsUsedRecordedAndPrinted) {
   const std::string dir = ::testing::TempDir() + "/gen_hidden";
-  const std::string common = " --scenario diag_bump --repetitions 2 --times all --window 0.9,2.0 --rate 200";
+  const std::string common =
+      " --scenario diag_bump --repetitions 2 --times all --window 0.9,2.0 --rate 200";
   const auto base = twin("generate lab --out " + dir + "/base.csv" + common + " --quiet");
   ASSERT_EQ(base.code, 0) << base.err;
   const auto r = twin("generate lab --out " + dir + "/hidden.csv" + common +
-                      " --channels hub_force_fl_N,susp_defl_fl_m --hidden-effect bump_stop:stiffness=2e6,gap_m=0.02");
+                      " --channels hub_force_fl_N,susp_defl_fl_m --hidden-effect "
+                      "bump_stop:stiffness=2e6,gap_m=0.02");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("hidden effect used to make the data: bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)\n"),
+  EXPECT_NE(r.out.find("hidden effect used to make the data: bump_stop (exponent=2, gap_m=0.02 m, "
+                       "stiffness=2e+06 N/m^n)\n"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("times: all samples in [0.9,2] at 200 Hz (221 times)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("times: all samples in [0.9,2] at 200 Hz (221 times)"), std::string::npos)
+      << r.out;
 
   // Times: 0.9, 0.905, ..., 2.0 for every repetition and channel.
   std::vector<double> expected;
@@ -129,27 +137,40 @@ TEST(GenerateCli, HiddenEffectIsUsedRecordedAndPrinted) {
   EXPECT_EQ(j["hidden_effects"][0]["parameters"],
             nlohmann::json({{"stiffness", 2e6}, {"gap_m", 0.02}, {"exponent", 2.0}}));
   EXPECT_EQ(j["lab"]["times"]["source"], "all");
-  EXPECT_NE(j["lab"]["times"]["rule"].get<std::string>().find("all samples in [0.9,2] at 200 Hz"), std::string::npos);
+  EXPECT_NE(j["lab"]["times"]["rule"].get<std::string>().find("all samples in [0.9,2] at 200 Hz"),
+            std::string::npos);
   EXPECT_FALSE(nlohmann::json::parse(slurp(dir + "/base.json")).contains("hidden_effects"));
 
   // Field data with a hidden effect: recorded and printed too, and different from the base.
   const std::string fcommon = " --scenario diag_rough --runs 1 --threads 1 --window 0,3";
   ASSERT_EQ(twin("generate field --out " + dir + "/fbase.csv" + fcommon + " --quiet").code, 0);
-  const auto f = twin("generate field --out " + dir + "/fhid.csv" + fcommon + " --hidden-effect damper_asymmetry:ratio=2.5");
+  const auto f = twin("generate field --out " + dir + "/fhid.csv" + fcommon +
+                      " --hidden-effect damper_asymmetry:ratio=2.5");
   ASSERT_EQ(f.code, 0) << f.err;
-  EXPECT_NE(f.out.find("hidden effect used to make the data: damper_asymmetry (ratio=2.5)\n"), std::string::npos) << f.out;
+  EXPECT_NE(f.out.find("hidden effect used to make the data: damper_asymmetry (ratio=2.5)\n"),
+            std::string::npos)
+      << f.out;
   const FieldData fb = readFieldCsv(dir + "/fbase.csv"), fh = readFieldCsv(dir + "/fhid.csv");
   ASSERT_EQ(fb.values.size(), fh.values.size());
   double fdiff = 0;
-  for (std::size_t i = 0; i < fb.values.size(); ++i) fdiff = std::max(fdiff, std::abs(fb.values[i] - fh.values[i]));
+  for (std::size_t i = 0; i < fb.values.size(); ++i)
+    fdiff = std::max(fdiff, std::abs(fb.values[i] - fh.values[i]));
   EXPECT_GT(fdiff, 200.0);
-  EXPECT_EQ(nlohmann::json::parse(slurp(dir + "/fhid.json"))["hidden_effects"][0]["parameters"]["ratio"], 2.5);
+  EXPECT_EQ(
+      nlohmann::json::parse(slurp(dir + "/fhid.json"))["hidden_effects"][0]["parameters"]["ratio"],
+      2.5);
 }
 
 TEST(GenerateCli, TimesAutoIsTheDefault) {
   const std::string dir = ::testing::TempDir() + "/gen_auto";
-  ASSERT_EQ(twin("generate lab --scenario diag_bump --repetitions 2 --quiet --out " + dir + "/a.csv").code, 0);
-  ASSERT_EQ(twin("generate lab --scenario diag_bump --repetitions 2 --quiet --times auto --out " + dir + "/b.csv").code, 0);
+  ASSERT_EQ(
+      twin("generate lab --scenario diag_bump --repetitions 2 --quiet --out " + dir + "/a.csv")
+          .code,
+      0);
+  ASSERT_EQ(twin("generate lab --scenario diag_bump --repetitions 2 --quiet --times auto --out " +
+                 dir + "/b.csv")
+                .code,
+            0);
   EXPECT_EQ(slurp(dir + "/a.csv"), slurp(dir + "/b.csv"));
   EXPECT_EQ(nlohmann::json::parse(slurp(dir + "/a.json"))["lab"]["times"]["source"], "automatic");
 }
@@ -162,13 +183,21 @@ TEST(GenerateCli, BadDiagnosisFlagsExitTwoWithOneLine) {
   const std::vector<Case> cases = {
       {"generate lab --scenario diag_bump --times all --rate 300 --out " + out,
        "--rate: must divide the output rate 1000 Hz into an integer step"},
-      {"generate lab --scenario diag_bump --rate 200 --out " + out, "--rate: needs every sample kept (times mode all)"},
-      {"generate lab --scenario diag_bump --times all --window 0,9 --out " + out, "--window: 0 .. 9 s lies outside"},
-      {"generate lab --scenario diag_bump --times all --channels hub_force_fl_N,bogus_m --out " + out, "--channels: unknown channel"},
-      {"generate lab --scenario diag_bump --hidden-effect bump_stp:stiffness=1 --out " + out, "--hidden-effect"},
+      {"generate lab --scenario diag_bump --rate 200 --out " + out,
+       "--rate: needs every sample kept (times mode all)"},
+      {"generate lab --scenario diag_bump --times all --window 0,9 --out " + out,
+       "--window: 0 .. 9 s lies outside"},
+      {"generate lab --scenario diag_bump --times all --channels hub_force_fl_N,bogus_m --out " +
+           out,
+       "--channels: unknown channel"},
+      {"generate lab --scenario diag_bump --hidden-effect bump_stp:stiffness=1 --out " + out,
+       "--hidden-effect"},
       {"generate lab --scenario diag_bump --hidden-effect bump_stop:stiffnes=1 --out " + out,
        "--hidden-effect stiffnes: unknown parameter 'bump_stop.stiffnes'"},
-      {"generate field --scenario diag_rough --runs 1 --window 0,3 --hidden-effect warp_drive --out " + out, "--hidden-effect"},
+      {"generate field --scenario diag_rough --runs 1 --window 0,3 --hidden-effect warp_drive "
+       "--out " +
+           out,
+       "--hidden-effect"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.args);

@@ -12,9 +12,9 @@
 #include <sstream>
 
 #include "common/errors.hpp"
-#include "test_util.hpp"
 #include "io/log_import.hpp"
 #include "io/study.hpp"
+#include "test_util.hpp"
 #include "twin/simulator.hpp"
 
 using namespace dtwin;
@@ -51,7 +51,8 @@ noise_sd = 0.05
 std::string makeLog(const std::function<void(int, std::string&)>& edit = {}) {
   std::string log = "t,v,zr,az,defl,unused\n";
   for (int k = 0; k <= 400; ++k) {
-    std::string line = std::to_string(5000 + 10 * k) + ",36," + std::to_string(2.0 * std::sin(0.05 * k)) + "," +
+    std::string line = std::to_string(5000 + 10 * k) + ",36," +
+                       std::to_string(2.0 * std::sin(0.05 * k)) + "," +
                        std::to_string(1.0 + 0.01 * k / 400.0) + ",3,x";
     if (edit) edit(k, line);
     log += line + "\n";
@@ -65,7 +66,8 @@ struct Cli {
 };
 Cli twin(const std::string& args) {
   const std::string dir = ::testing::TempDir();
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + dir + "/imp_out.txt 2> " + dir + "/imp_err.txt";
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + dir +
+                          "/imp_out.txt 2> " + dir + "/imp_err.txt";
   const int st = std::system(cmd.c_str());
   return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, dtwin_test::slurp(dir + "/imp_err.txt")};
 }
@@ -85,10 +87,10 @@ TEST(LogImport, ConvertsUnitsAndWritesAStudyThatReadsBack) {
   ASSERT_EQ(r.data.records.size(), 802u);
   EXPECT_EQ(r.data.records[0].channel, "seat_mps2");
   EXPECT_EQ(r.data.records[0].time_s, 0.0);
-  EXPECT_NEAR(r.data.records[800].value, 0.01 * 9.80665, 1e-12);   // (1.01 g − 1 g) in m/s²
-  EXPECT_DOUBLE_EQ(r.data.records[801].value, -0.003);               // 3 mm, scale −1
+  EXPECT_NEAR(r.data.records[800].value, 0.01 * 9.80665, 1e-12);  // (1.01 g − 1 g) in m/s²
+  EXPECT_DOUBLE_EQ(r.data.records[801].value, -0.003);            // 3 mm, scale −1
   EXPECT_DOUBLE_EQ(r.data.records[801].time_s, 4.0);
-  EXPECT_NE(r.speed_csv.find("\n0.01,10\n"), std::string::npos);      // 36 km/h = 10 m/s, at 10 ms
+  EXPECT_NE(r.speed_csv.find("\n0.01,10\n"), std::string::npos);  // 36 km/h = 10 m/s, at 10 ms
   EXPECT_EQ(r.road_csv.substr(0, 16), "time_s,height_m\n");
   writeImport(r, (dir / "out").string());
   const Study s = loadStudy((dir / "out" / "study.toml").string());
@@ -102,9 +104,12 @@ TEST(LogImport, ConvertsUnitsAndWritesAStudyThatReadsBack) {
   // order sets them), and its comments.
   const auto base = loadStudy(kDemo).assemblies(), now = s.assemblies();
   ASSERT_EQ(now.size(), base.size());
-  for (std::size_t i = 0; i < base.size(); ++i) EXPECT_EQ(now[i].id + " " + now[i].label(), base[i].id + " " + base[i].label());
-  EXPECT_NE(dtwin_test::slurp(dir / "out" / "study.toml").find("# The paper's demonstration study"), std::string::npos);
-  const LabData back = readLabCsv((dir / "out" / "measurements.csv").string(), measurableChannels(s.sensors));
+  for (std::size_t i = 0; i < base.size(); ++i)
+    EXPECT_EQ(now[i].id + " " + now[i].label(), base[i].id + " " + base[i].label());
+  EXPECT_NE(dtwin_test::slurp(dir / "out" / "study.toml").find("# The paper's demonstration study"),
+            std::string::npos);
+  const LabData back =
+      readLabCsv((dir / "out" / "measurements.csv").string(), measurableChannels(s.sensors));
   EXPECT_EQ(back.records.size(), 802u);
   const auto side = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "measurements.json"));
   EXPECT_EQ(side["scenario"]["name"], "drive");
@@ -133,7 +138,9 @@ TEST(LogImport, ShortDropoutsAreSkippedLongOnesRefused) {
     importLog(makeLog(gap(10, 16)), "log.csv", m, kDemo, "drive");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("log.csv:17: column 'az': empty or NaN from line 12 on"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("log.csv:17: column 'az': empty or NaN from line 12 on"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -161,21 +168,29 @@ TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
   dtwin_test::writeText(dir / "wrong_unit.toml", wrong_unit);
   const std::vector<Case> cases = {
       {"missing_column", renamed, map, "log.csv:1: no column 't' ("},
-      {"non_numeric", spoil(7, "5070,36,0.1,1.0,abc,x"), map, "log.csv:9: column 'defl': 'abc' is not a number"},
-      {"backwards", spoil(7, "5055,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': time goes backwards: 5055 after 5060"},
-      {"duplicated", spoil(7, "5060,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': time 5060 repeats the row before (line 8)"},
-      {"nan_time", spoil(7, "nan,36,0.1,1.0,3,x"), map, "log.csv:9: column 't': 'nan' is not a finite number"},
+      {"non_numeric", spoil(7, "5070,36,0.1,1.0,abc,x"), map,
+       "log.csv:9: column 'defl': 'abc' is not a number"},
+      {"backwards", spoil(7, "5055,36,0.1,1.0,3,x"), map,
+       "log.csv:9: column 't': time goes backwards: 5055 after 5060"},
+      {"duplicated", spoil(7, "5060,36,0.1,1.0,3,x"), map,
+       "log.csv:9: column 't': time 5060 repeats the row before (line 8)"},
+      {"nan_time", spoil(7, "nan,36,0.1,1.0,3,x"), map,
+       "log.csv:9: column 't': 'nan' is not a finite number"},
       {"empty_speed", spoil(7, "5070,,0.1,1.0,3,x"), map, "log.csv:9: column 'v': is empty or NaN"},
-      {"columns", spoil(7, "5070,36,0.1,1.0,3"), map, "log.csv:9: expected 6 columns (as the header), got 5"},
-      {"unknown_unit", makeLog(), (dir / "bad_unit.toml").string(), "bad_unit.toml:3: import.speed.unit: unknown unit 'km/s'"},
-      {"wrong_unit", makeLog(), (dir / "wrong_unit.toml").string(), "wrong_unit.toml:15: import.channels[1].unit: unit 'g' is in m/s^2, but this needs m"},
+      {"columns", spoil(7, "5070,36,0.1,1.0,3"), map,
+       "log.csv:9: expected 6 columns (as the header), got 5"},
+      {"unknown_unit", makeLog(), (dir / "bad_unit.toml").string(),
+       "bad_unit.toml:3: import.speed.unit: unknown unit 'km/s'"},
+      {"wrong_unit", makeLog(), (dir / "wrong_unit.toml").string(),
+       "wrong_unit.toml:15: import.channels[1].unit: unit 'g' is in m/s^2, but this needs m"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
     const fs::path log = dir / "log.csv";
     dtwin_test::writeText(log, c.log);
     const fs::path out = dir / ("out_" + c.name);
-    const Cli r = twin("import --log " + log.string() + " --map " + c.map + " --out " + out.string());
+    const Cli r =
+        twin("import --log " + log.string() + " --map " + c.map + " --out " + out.string());
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // one line
@@ -188,7 +203,9 @@ TEST(LogImport, BadLogsGiveOneLineErrorsAndWriteNothing) {
 TEST(LogImport, FlagsMapTheLogAndAnExistingFolderIsKept) {
   const fs::path dir = dtwin_test::freshDir("import_flags");
   dtwin_test::writeText(dir / "log.csv", makeLog());
-  const std::string base = "import --log " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --road zr:mm --channel defl:susp_defl_fl_m:mm";
+  const std::string base =
+      "import --log " + (dir / "log.csv").string() +
+      " --time t:ms --speed v:km/h --road zr:mm --channel defl:susp_defl_fl_m:mm";
   Cli r = twin(base + " --out " + (dir / "out").string());
   ASSERT_EQ(r.code, 0) << r.err;
   const Study s = loadStudy((dir / "out" / "study.toml").string());
@@ -200,8 +217,10 @@ TEST(LogImport, FlagsMapTheLogAndAnExistingFolderIsKept) {
   EXPECT_EQ(dtwin_test::slurp(dir / "out" / "measurements.csv"), before);
   r = twin(base + " --map x.toml --out " + (dir / "out2").string());
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--map: give the mapping either in the file or as flags"), std::string::npos) << r.err;
-  r = twin("import --log " + (dir / "log.csv").string() + " --time t:ms --speed v:km/h --channel defl:susp_defl_fl_m:furlong --out " +
+  EXPECT_NE(r.err.find("--map: give the mapping either in the file or as flags"), std::string::npos)
+      << r.err;
+  r = twin("import --log " + (dir / "log.csv").string() +
+           " --time t:ms --speed v:km/h --channel defl:susp_defl_fl_m:furlong --out " +
            (dir / "out3").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("unknown unit 'furlong'"), std::string::npos) << r.err;
@@ -241,10 +260,13 @@ TEST(LogImport, SpeedLowPassSmoothsAQuantisedSpeed) {
   while (std::getline(in, line)) v.push_back(std::stod(line.substr(line.find(',') + 1)));
   ASSERT_EQ(v.size(), 1001u);
   for (double x : v) EXPECT_GE(x, 0.0);
-  for (int k = 500; k <= 900; k += 50) EXPECT_NEAR(v[static_cast<std::size_t>(k)], 0.02 * (k - 200) / 3.6, 0.01) << k;
+  for (int k = 500; k <= 900; k += 50)
+    EXPECT_NEAR(v[static_cast<std::size_t>(k)], 0.02 * (k - 200) / 3.6, 0.01) << k;
   // The steps of 0.1 km/h (0.028 m/s every 5th sample) are gone: neighbouring samples differ by
   // about the ramp's 0.0056 m/s per sample.
-  for (int k = 500; k < 900; ++k) EXPECT_LT(std::abs(v[static_cast<std::size_t>(k) + 1] - v[static_cast<std::size_t>(k)]), 0.008) << k;
+  for (int k = 500; k < 900; ++k)
+    EXPECT_LT(std::abs(v[static_cast<std::size_t>(k) + 1] - v[static_cast<std::size_t>(k)]), 0.008)
+        << k;
   EXPECT_EQ(r.sidecar["mapping"]["speed"]["lowpass_hz"], 1.0);
 }
 
@@ -253,7 +275,9 @@ TEST(LogImport, SpeedLowPassSmoothsAQuantisedSpeed) {
 TEST(LogImport, PreambleUnitsRowSemicolonsAndDecimalCommas) {
   const fs::path dir = dtwin_test::freshDir("import_european");
   std::string log = "Logger;XY-200\nDate;2026-11-26\n\nZeit;Geschw;Beschl\ns;km/h;g\n";
-  for (int k = 0; k <= 200; ++k) log += std::to_string(k / 100) + "," + (k % 100 < 10 ? "0" : "") + std::to_string(k % 100) + ";36,0;1,0" + std::to_string(k % 10) + "\n";
+  for (int k = 0; k <= 200; ++k)
+    log += std::to_string(k / 100) + "," + (k % 100 < 10 ? "0" : "") + std::to_string(k % 100) +
+           ";36,0;1,0" + std::to_string(k % 10) + "\n";
   dtwin_test::writeText(dir / "log.csv", log);
   dtwin_test::writeText(dir / "map.toml", R"([import]
 time = "Zeit"
@@ -270,7 +294,8 @@ unit = "g"
 offset = 1.0
 )");
   const ImportMapping m = readImportMapping((dir / "map.toml").string());
-  const ImportResult r = importLog(dtwin_test::slurp(dir / "log.csv"), "log.csv", m, kDemo, "drive");
+  const ImportResult r =
+      importLog(dtwin_test::slurp(dir / "log.csv"), "log.csv", m, kDemo, "drive");
   EXPECT_EQ(r.rows, 201);
   EXPECT_DOUBLE_EQ(r.duration_s, 2.0);
   EXPECT_NEAR(r.data.records[3].value, 0.03 * 9.80665, 1e-12);
@@ -284,7 +309,9 @@ offset = 1.0
     readImportMapping((dir / "bad.toml").string());
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("import.decimal_comma: needs a separator other than ','"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("import.decimal_comma: needs a separator other than ','"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -311,8 +338,9 @@ TEST(LogImport, ClockTimesParseWithDatesFractionsAndOffsets) {
   ASSERT_TRUE(parseClockTime("2000-03-01T23:30:00-0100", c));
   EXPECT_EQ(c.day, 30 * 365 + 7 + 31 + 29 + 1);
   EXPECT_DOUBLE_EQ(c.seconds, 0.5 * 3600);
-  for (const char* bad : {"", "12:00", "25:00:00", "12:60:00", "12:00:00.", "12:00:00x", "2001-02-29 12:00:00", "2000-13-01 00:00:00",
-                          "2000-01-01T12:00:00+2", "1.5", "12:0:00"})
+  for (const char* bad :
+       {"", "12:00", "25:00:00", "12:60:00", "12:00:00.", "12:00:00x", "2001-02-29 12:00:00",
+        "2000-13-01 00:00:00", "2000-01-01T12:00:00+2", "1.5", "12:0:00"})
     EXPECT_FALSE(parseClockTime(bad, c)) << bad;
 }
 
@@ -342,9 +370,13 @@ unit = "m/s^2"
     return std::string(b);
   };
   // 23:59:58.50 for 3 s at 100 Hz, with a date, then without one.
-  const ImportResult dated = importLog(log([&](int k) { return (k < 150 ? "2026-11-26T" : "2026-11-27T") + hms(86398.5 + 0.01 * k); }),
-                                       "dated.csv", m, kDemo, "drive");
-  const ImportResult bare = importLog(log([&](int k) { return hms(86398.5 + 0.01 * k); }), "bare.csv", m, kDemo, "drive");
+  const ImportResult dated =
+      importLog(log([&](int k) {
+                  return (k < 150 ? "2026-11-26T" : "2026-11-27T") + hms(86398.5 + 0.01 * k);
+                }),
+                "dated.csv", m, kDemo, "drive");
+  const ImportResult bare =
+      importLog(log([&](int k) { return hms(86398.5 + 0.01 * k); }), "bare.csv", m, kDemo, "drive");
   for (const auto* r : {&dated, &bare}) {
     EXPECT_EQ(r->rows, 301);
     EXPECT_DOUBLE_EQ(r->t0_s, 86398.5);
@@ -353,16 +385,23 @@ unit = "m/s^2"
     EXPECT_DOUBLE_EQ(r->data.records[200].value, 0.2);
   }
   try {
-    importLog(log([&](int k) { return k == 7 ? std::string("12:00:0x") : hms(100 + 0.01 * k); }), "odd.csv", m, kDemo, "drive");
+    importLog(log([&](int k) { return k == 7 ? std::string("12:00:0x") : hms(100 + 0.01 * k); }),
+              "odd.csv", m, kDemo, "drive");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("odd.csv:9: column 'stamp': '12:00:0x' is not a clock time"), std::string::npos) << e.what();
+    EXPECT_NE(
+        std::string(e.what()).find("odd.csv:9: column 'stamp': '12:00:0x' is not a clock time"),
+        std::string::npos)
+        << e.what();
   }
   try {
-    importLog(log([&](int k) { return hms(100 + 0.01 * (k == 7 ? 5 : k)); }), "back.csv", m, kDemo, "drive");
+    importLog(log([&](int k) { return hms(100 + 0.01 * (k == 7 ? 5 : k)); }), "back.csv", m, kDemo,
+              "drive");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("back.csv:9: column 'stamp': time goes backwards: 00:01:40.05 after 00:01:40.06"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find(
+                  "back.csv:9: column 'stamp': time goes backwards: 00:01:40.05 after 00:01:40.06"),
+              std::string::npos)
         << e.what();
   }
 }
@@ -377,17 +416,22 @@ TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
     log += row;
   }
   dtwin_test::writeText(dir / "log.txt", log);
-  const Cli r = twin("import --log " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
-                     " --separator whitespace --quiet --out " + (dir / "out").string());
+  const Cli r =
+      twin("import --log " + (dir / "log.txt").string() +
+           " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
+           " --separator whitespace --quiet --out " + (dir / "out").string());
   ASSERT_EQ(r.code, 0) << r.err;
   const LabData back = readLabCsv((dir / "out" / "measurements.csv").string());
   ASSERT_EQ(back.records.size(), 201u);
   EXPECT_DOUBLE_EQ(back.records[150].time_s, 1.5);
   EXPECT_DOUBLE_EQ(back.records[150].value, 0.15);
-  EXPECT_NE(dtwin_test::slurp(dir / "out" / "speed.csv").find("\n1.5,15\n"), std::string::npos);  // 54 km/h
+  EXPECT_NE(dtwin_test::slurp(dir / "out" / "speed.csv").find("\n1.5,15\n"),
+            std::string::npos);  // 54 km/h
   for (const char* bad : {"'a'", "'.'", "'\"'"}) {
-    const Cli b = twin("import --log " + (dir / "log.txt").string() + " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
-                       " --separator " + bad + " --out " + (dir / "bad").string());
+    const Cli b =
+        twin("import --log " + (dir / "log.txt").string() +
+             " --time time_ms:ms --speed speed_kph:kph --channel acc:chassis_heave_acc_mps2:m/s^2" +
+             " --separator " + bad + " --out " + (dir / "bad").string());
     EXPECT_EQ(b.code, 2) << bad;
     EXPECT_NE(b.err.find("--separator: must be one character such as"), std::string::npos) << b.err;
   }
@@ -402,25 +446,32 @@ TEST(LogImport, AColumnAlignedLogWithWhitespaceBetweenFields) {
 TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
   const fs::path dir = dtwin_test::freshDir("import_compare");
   const std::string drive = std::string(DTWIN_SOURCE_DIR) + "/data/drives/";
-  Cli r = twin("import --log " + drive + "stop_and_go.csv --map " + drive + "stop_and_go_map.toml --quiet --out " + (dir / "drive").string());
+  Cli r = twin("import --log " + drive + "stop_and_go.csv --map " + drive +
+               "stop_and_go_map.toml --quiet --out " + (dir / "drive").string());
   ASSERT_EQ(r.code, 0) << r.err;
   fs::create_directories(dir / "cal");
   dtwin_test::writeText(dir / "cal" / "summary.json", R"({"assembly": "M1"})");
-  dtwin_test::writeText(dir / "cal" / "posterior.csv",
-                        "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
-                        "180000,3000,30000,2500,1,0\n");
+  dtwin_test::writeText(
+      dir / "cal" / "posterior.csv",
+      "tire.stiffness,tire.damping,suspension.stiffness,suspension.damping,tau,design_index\n"
+      "180000,3000,30000,2500,1,0\n");
   const std::string out = (dir / "out.txt").string();
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " compare --study " + (dir / "drive" / "study.toml").string() + " --calibration " +
-                          (dir / "cal").string() + " --data " + (dir / "drive" / "measurements.csv").string() + " --draws 1 > " + out + " 2>&1";
+  const std::string cmd =
+      std::string(DTWIN_TWIN_EXE) + " compare --study " + (dir / "drive" / "study.toml").string() +
+      " --calibration " + (dir / "cal").string() + " --data " +
+      (dir / "drive" / "measurements.csv").string() + " --draws 1 > " + out + " 2>&1";
   const int st = std::system(cmd.c_str());
   ASSERT_EQ(WEXITSTATUS(st), 0) << dtwin_test::slurp(out);
   std::istringstream text(dtwin_test::slurp(out));
   std::vector<double> shares;
   int rest = 0, bands = 0, counted = 0;
   for (std::string line; std::getline(text, line);) {
-    if (line.find("  windows: drive seat_mps2: ") == 0 && line.find(" windows over ") != std::string::npos) ++counted;
+    if (line.find("  windows: drive seat_mps2: ") == 0 &&
+        line.find(" windows over ") != std::string::npos)
+      ++counted;
     if (line.find("  fails: drive seat_mps2 ") != 0) continue;
-    if (line.find("  fails: drive seat_mps2 band ") == 0) {  // the spectrum, of the longest stretch between the dropouts
+    if (line.find("  fails: drive seat_mps2 band ") ==
+        0) {  // the spectrum, of the longest stretch between the dropouts
       ++bands;
       continue;
     }
@@ -435,8 +486,10 @@ TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
   EXPECT_EQ(counted, 1) << dtwin_test::slurp(out);
   EXPECT_EQ(shares.size(), 8u) << dtwin_test::slurp(out);
   EXPECT_EQ(rest, 1) << dtwin_test::slurp(out);
-  EXPECT_GE(bands, 1) << "the hidden damper asymmetry shows in the spectrum: " << dtwin_test::slurp(out);
-  EXPECT_TRUE(std::is_sorted(shares.rbegin(), shares.rend())) << "largest share first: " << dtwin_test::slurp(out);
+  EXPECT_GE(bands, 1) << "the hidden damper asymmetry shows in the spectrum: "
+                      << dtwin_test::slurp(out);
+  EXPECT_TRUE(std::is_sorted(shares.rbegin(), shares.rend()))
+      << "largest share first: " << dtwin_test::slurp(out);
   EXPECT_NE(dtwin_test::slurp(out).find("lack of fit: chi2 = "), std::string::npos);
 }
 
@@ -446,22 +499,26 @@ TEST(LogImport, TheDemonstrationDriveComparesWithNoHandEditing) {
 // how many rows were dropped and why.
 TEST(LogImport, AWindowAndAMaskChooseTheMeasuredRows) {
   const fs::path dir = dtwin_test::freshDir("import_window");
-  dtwin_test::writeText(dir / "map.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
-                                                                          "\nwindow_s = [1.0, 3.0]\nrun_in_s = 0.5\n"
-                                                                          "exclude = { column = \"zr\", unit = \"mm\", above = 1.5 }"));
+  dtwin_test::writeText(
+      dir / "map.toml",
+      std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
+                                    "\nwindow_s = [1.0, 3.0]\nrun_in_s = 0.5\n"
+                                    "exclude = { column = \"zr\", unit = \"mm\", above = 1.5 }"));
   const ImportMapping m = readImportMapping((dir / "map.toml").string());
   ASSERT_TRUE(m.window_s);
   ASSERT_EQ(m.exclude.size(), 1u);
   const ImportResult r = importLog(makeLog(), "log.csv", m, kDemo, "drive");
-  EXPECT_NEAR(r.t0_s, 5.5, 1e-12);       // logger time of the run's first row: 1.0 − 0.5 s in
-  EXPECT_NEAR(r.duration_s, 3.0, 1e-12);  // 0.5 s of run-in, the 2 s window, 0.5 s past it (the inputs)
-  EXPECT_NEAR(r.start_m, 5.0, 1e-9);      // 0.5 s at 10 m/s
+  EXPECT_NEAR(r.t0_s, 5.5, 1e-12);  // logger time of the run's first row: 1.0 − 0.5 s in
+  EXPECT_NEAR(r.duration_s, 3.0,
+              1e-12);                 // 0.5 s of run-in, the 2 s window, 0.5 s past it (the inputs)
+  EXPECT_NEAR(r.start_m, 5.0, 1e-9);  // 0.5 s at 10 m/s
   long masked = 0, kept_rows = 0;
   for (int k = 100; k <= 300; ++k) {  // the window's rows: |2 sin(0.05 k)| mm against 1.5 mm
     const double zr = std::stod(std::to_string(2.0 * std::sin(0.05 * k)));
     (std::abs(zr) > 1.5 ? masked : kept_rows) += 1;
   }
-  EXPECT_EQ(r.outside_window, 401 - 201);  // the run-in and run-out rows are simulated, not measured
+  EXPECT_EQ(r.outside_window,
+            401 - 201);  // the run-in and run-out rows are simulated, not measured
   ASSERT_EQ(r.masked.size(), 1u);
   EXPECT_EQ(r.masked[0].second, masked);
   EXPECT_EQ(r.masked[0].first, "|zr| > 0.0015 m");
@@ -484,18 +541,24 @@ TEST(LogImport, AWindowAndAMaskChooseTheMeasuredRows) {
 // the count is the brute-force one, and the sidecar's text says so.
 TEST(LogImport, AMaskPadDropsTheRowsAroundWhatItMasks) {
   const fs::path dir = dtwin_test::freshDir("import_pad");
-  dtwin_test::writeText(dir / "map.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
-                                                                          "\nexclude = { column = \"zr\", unit = \"mm\", above = 1.5, pad_s = 0.05 }"));
+  dtwin_test::writeText(
+      dir / "map.toml",
+      std::string(kMapping).replace(
+          std::string(kMapping).find("\n\n[[import.channels]]"), 0,
+          "\nexclude = { column = \"zr\", unit = \"mm\", above = 1.5, pad_s = 0.05 }"));
   const ImportMapping m = readImportMapping((dir / "map.toml").string());
   ASSERT_EQ(m.exclude.size(), 1u);
   EXPECT_EQ(m.exclude[0].pad_s, 0.05);
   const ImportResult r = importLog(makeLog(), "log.csv", m, kDemo, "drive");
   std::vector<bool> past(401);
-  for (int k = 0; k <= 400; ++k) past[static_cast<std::size_t>(k)] = std::abs(std::stod(std::to_string(2.0 * std::sin(0.05 * k)))) > 1.5;
+  for (int k = 0; k <= 400; ++k)
+    past[static_cast<std::size_t>(k)] =
+        std::abs(std::stod(std::to_string(2.0 * std::sin(0.05 * k)))) > 1.5;
   long masked = 0, past_only = 0;
   for (int k = 0; k <= 400; ++k) {
     bool near = false;
-    for (int j = std::max(0, k - 5); j <= std::min(400, k + 5); ++j) near = near || past[static_cast<std::size_t>(j)];  // 10 ms rows: ±50 ms
+    for (int j = std::max(0, k - 5); j <= std::min(400, k + 5); ++j)
+      near = near || past[static_cast<std::size_t>(j)];  // 10 ms rows: ±50 ms
     masked += near;
     past_only += past[static_cast<std::size_t>(k)];
   }
@@ -504,8 +567,11 @@ TEST(LogImport, AMaskPadDropsTheRowsAroundWhatItMasks) {
   EXPECT_GT(masked, past_only + 20);  // the pad drops more than the threshold alone
   EXPECT_EQ(r.masked[0].first, "|zr| > 0.0015 m (and 0.05 s around)");
   EXPECT_EQ(static_cast<long>(r.data.records.size()), 2 * (401 - masked));
-  dtwin_test::writeText(dir / "bad.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
-                                                                          "\nexclude = { column = \"zr\", unit = \"mm\", above = 1.5, pad_s = -1 }"));
+  dtwin_test::writeText(
+      dir / "bad.toml",
+      std::string(kMapping).replace(
+          std::string(kMapping).find("\n\n[[import.channels]]"), 0,
+          "\nexclude = { column = \"zr\", unit = \"mm\", above = 1.5, pad_s = -1 }"));
   try {
     readImportMapping((dir / "bad.toml").string());
     FAIL() << "a negative pad accepted";
@@ -519,9 +585,13 @@ TEST(LogImport, AMaskPadDropsTheRowsAroundWhatItMasks) {
 TEST(LogImport, BadWindowsAndMasksAreOneLineErrors) {
   const fs::path dir = dtwin_test::freshDir("import_window_bad");
   auto errorOf = [&](const std::string& extra) {
-    dtwin_test::writeText(dir / "map.toml", std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0, "\n" + extra));
+    dtwin_test::writeText(
+        dir / "map.toml",
+        std::string(kMapping).replace(std::string(kMapping).find("\n\n[[import.channels]]"), 0,
+                                      "\n" + extra));
     try {
-      importLog(makeLog(), "log.csv", readImportMapping((dir / "map.toml").string()), kDemo, "drive");
+      importLog(makeLog(), "log.csv", readImportMapping((dir / "map.toml").string()), kDemo,
+                "drive");
     } catch (const InputError& e) {
       return std::string(e.what());
     }
@@ -584,8 +654,12 @@ TEST(LogImport, AWindowPredictsWhatTheWholeDrivePredictsThere) {
   // 1e-6 of its range. The accelerometer, read between integrator steps by the dense output (a
   // cubic Hermite of the velocity), carries that interpolation's error, which differs between two
   // step sequences: about 1e-5 of its range at a 1 ms step, so within 1e-4.
-  for (const auto& [channel, tol] : std::vector<std::pair<std::string, double>>{
-           {"chassis_pitch_rad", 1e-6}, {"chassis_roll_rad", 1e-6}, {"susp_defl_fl_m", 1e-6}, {"susp_defl_rl_m", 1e-6}, {"seat_mps2", 1e-4}}) {
+  for (const auto& [channel, tol] :
+       std::vector<std::pair<std::string, double>>{{"chassis_pitch_rad", 1e-6},
+                                                   {"chassis_roll_rad", 1e-6},
+                                                   {"susp_defl_fl_m", 1e-6},
+                                                   {"susp_defl_rl_m", 1e-6},
+                                                   {"seat_mps2", 1e-4}}) {
     const auto& ya = a.samples.column(channel);
     const auto& yb = b.trace.column(channel);
     ASSERT_EQ(ya.size(), at.size());
@@ -597,7 +671,8 @@ TEST(LogImport, AWindowPredictsWhatTheWholeDrivePredictsThere) {
     }
     EXPECT_GT(at.size(), 2000u);
     EXPECT_GT(hi - lo, 0.0) << channel;
-    EXPECT_LT(worst, tol * (hi - lo)) << channel << ": worst " << worst << " of a range " << hi - lo;
+    EXPECT_LT(worst, tol * (hi - lo))
+        << channel << ": worst " << worst << " of a range " << hi - lo;
   }
 }
 

@@ -14,10 +14,10 @@
 #include <limits>
 #include <sstream>
 
-#include "test_util.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "io/mdf_log.hpp"
+#include "test_util.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;
@@ -44,7 +44,8 @@ MdfWriteGroup demoGroup(std::size_t rows) {
     std::string cell;
     for (std::size_t k = 0; k < names.size(); ++k) {
       std::getline(ls, cell, ',');
-      const double v = cell.empty() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(cell.c_str(), nullptr);
+      const double v = cell.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                    : std::strtod(cell.c_str(), nullptr);
       (k == 0 ? g.time : g.channels[k - 1].values).push_back(v);
     }
   }
@@ -53,14 +54,20 @@ MdfWriteGroup demoGroup(std::size_t rows) {
 
 std::uint64_t get64(const std::string& b, std::uint64_t at) {
   std::uint64_t v = 0;
-  for (int i = 7; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b.at(at + static_cast<std::uint64_t>(i)));
+  for (int i = 7; i >= 0; --i)
+    v = (v << 8) | static_cast<unsigned char>(b.at(at + static_cast<std::uint64_t>(i)));
   return v;
 }
 void put64(std::string& b, std::uint64_t at, std::uint64_t v) {
-  for (int i = 0; i < 8; ++i, v >>= 8) b.at(at + static_cast<std::uint64_t>(i)) = static_cast<char>(v & 0xff);
+  for (int i = 0; i < 8; ++i, v >>= 8)
+    b.at(at + static_cast<std::uint64_t>(i)) = static_cast<char>(v & 0xff);
 }
-std::uint64_t link(const std::string& b, std::uint64_t at, int k) { return get64(b, at + 24 + 8 * static_cast<std::uint64_t>(k)); }
-void setLink(std::string& b, std::uint64_t at, int k, std::uint64_t to) { put64(b, at + 24 + 8 * static_cast<std::uint64_t>(k), to); }
+std::uint64_t link(const std::string& b, std::uint64_t at, int k) {
+  return get64(b, at + 24 + 8 * static_cast<std::uint64_t>(k));
+}
+void setLink(std::string& b, std::uint64_t at, int k, std::uint64_t to) {
+  put64(b, at + 24 + 8 * static_cast<std::uint64_t>(k), to);
+}
 
 std::string hex(std::uint64_t v) {
   std::ostringstream s;
@@ -82,10 +89,14 @@ Blocks blocksOf(const std::string& b) {
   x.data = link(b, x.dg, 2);
   for (std::uint64_t at = x.data; at != 0 && x.dz == 0;) {
     const std::string id = b.substr(at, 4);
-    if (id == "##DZ") x.dz = at;
-    else if (id == "##HL") at = link(b, at, 0);
-    else if (id == "##DL") at = link(b, at, 1);
-    else at = 0;
+    if (id == "##DZ")
+      x.dz = at;
+    else if (id == "##HL")
+      at = link(b, at, 0);
+    else if (id == "##DL")
+      at = link(b, at, 1);
+    else
+      at = 0;
   }
   return x;
 }
@@ -100,12 +111,15 @@ struct ImportRun {
 ImportRun importBytes(const fs::path& dir, const std::string& name, const std::string& bytes) {
   const fs::path log = dir / (name + ".mf4"), out = dir / ("out_" + name);
   dtwin_test::writeText(log, bytes);
-  const auto r = dtwin_test::runTwin("import --log " + log.string() + " --map " + kDrives + "stop_and_go_map.toml --quiet --out " + out.string(), dir);
+  const auto r = dtwin_test::runTwin("import --log " + log.string() + " --map " + kDrives +
+                                         "stop_and_go_map.toml --quiet --out " + out.string(),
+                                     dir);
   return {r.code, r.err, fs::exists(out) || fs::exists(dir / ("out_" + name + ".import-tmp"))};
 }
 
 /// Exit code 2, one line "twin: error: DIR/NAME.mf4: <expect...>", nothing written.
-void expectRefused(const fs::path& dir, const std::string& name, const std::string& bytes, const std::string& expect) {
+void expectRefused(const fs::path& dir, const std::string& name, const std::string& bytes,
+                   const std::string& expect) {
   SCOPED_TRACE(name);
   const ImportRun r = importBytes(dir, name, bytes);
   EXPECT_EQ(r.code, 2) << r.err;
@@ -154,31 +168,51 @@ TEST(MdfDamage, ALinkToTheWrongBlockIsNamed) {
   const Blocks x = blocksOf(good);
   std::string b = good;
   setLink(b, x.cn, 0, x.cg);  // cn_cn_next -> the channel group
-  expectRefused(dir, "cn_next_to_cg", b, "block ##CN at " + hex(x.cn) + ": link 'cn_cn_next' points to a ##CG block (allowed: ##CN)");
+  expectRefused(
+      dir, "cn_next_to_cg", b,
+      "block ##CN at " + hex(x.cn) + ": link 'cn_cn_next' points to a ##CG block (allowed: ##CN)");
   b = good;
   setLink(b, x.cg, 1, x.dg);  // cg_cn_first -> the data group
-  expectRefused(dir, "cg_cn_to_dg", b, "block ##CG at " + hex(x.cg) + ": link 'cg_cn_first' points to a ##DG block (allowed: ##CN)");
+  expectRefused(
+      dir, "cg_cn_to_dg", b,
+      "block ##CG at " + hex(x.cg) + ": link 'cg_cn_first' points to a ##DG block (allowed: ##CN)");
   b = good;
   setLink(b, x.dg, 2, x.cn);  // dg_data -> a channel
-  expectRefused(dir, "dg_data_to_cn", b, "block ##DG at " + hex(x.dg) + ": link 'dg_data' points to a ##CN block (allowed: ##DT, ##DV, ##DZ, ##DL, ##LD, ##HL)");
+  expectRefused(
+      dir, "dg_data_to_cn", b,
+      "block ##DG at " + hex(x.dg) +
+          ": link 'dg_data' points to a ##CN block (allowed: ##DT, ##DV, ##DZ, ##DL, ##LD, ##HL)");
   b = good;
   setLink(b, x.cn, 4, x.cn2);  // cn_cc_conversion -> a channel
-  expectRefused(dir, "cn_cc_to_cn", b, "block ##CN at " + hex(x.cn) + ": link 'cn_cc_conversion' points to a ##CN block (allowed: ##CC)");
+  expectRefused(dir, "cn_cc_to_cn", b,
+                "block ##CN at " + hex(x.cn) +
+                    ": link 'cn_cc_conversion' points to a ##CN block (allowed: ##CC)");
   b = good;
   setLink(b, x.cn, 2, x.hd);  // cn_tx_name -> the header
-  expectRefused(dir, "cn_name_to_hd", b, "link 'cn_tx_name' points to a ##HD block (allowed: ##TX)");
+  expectRefused(dir, "cn_name_to_hd", b,
+                "link 'cn_tx_name' points to a ##HD block (allowed: ##TX)");
   b = good;
   setLink(b, x.cn2, 0, x.cn);  // the second channel's next is the first: a cycle
-  expectRefused(dir, "cn_cycle", b, "block ##CN at " + hex(x.cn2) + ": link 'cn_cn_next' leads back to the ##CN block at " + hex(x.cn) + " on its own path");
+  expectRefused(dir, "cn_cycle", b,
+                "block ##CN at " + hex(x.cn2) +
+                    ": link 'cn_cn_next' leads back to the ##CN block at " + hex(x.cn) +
+                    " on its own path");
   b = good;
   setLink(b, x.cn, 1, x.cn);  // a channel composed of itself
-  expectRefused(dir, "cn_composition_self", b, "link 'cn_composition' leads back to the ##CN block at " + hex(x.cn));
+  expectRefused(dir, "cn_composition_self", b,
+                "link 'cn_composition' leads back to the ##CN block at " + hex(x.cn));
   b = good;
   setLink(b, x.cn, 0, good.size() + 64);
-  expectRefused(dir, "cn_next_past_end", b, "block ##CN at " + hex(x.cn) + ": link 'cn_cn_next' points to byte " + hex(good.size() + 64) + ", outside the file's blocks");
+  expectRefused(dir, "cn_next_past_end", b,
+                "block ##CN at " + hex(x.cn) + ": link 'cn_cn_next' points to byte " +
+                    hex(good.size() + 64) + ", outside the file's blocks");
   b = good;
-  put64(b, x.cn + 8, 24 + 8 * 8 + 16);  // a channel's length: its links, but not its 72 bytes of fields
-  expectRefused(dir, "cn_short", b, "block ##CN at " + hex(x.cn) + ": runs 104 bytes, too few for its 8 links and the 72 bytes of fields a ##CN block has");
+  put64(b, x.cn + 8,
+        24 + 8 * 8 + 16);  // a channel's length: its links, but not its 72 bytes of fields
+  expectRefused(
+      dir, "cn_short", b,
+      "block ##CN at " + hex(x.cn) +
+          ": runs 104 bytes, too few for its 8 links and the 72 bytes of fields a ##CN block has");
   b = good;
   setLink(b, x.cn, 0, x.cn + 4);  // into the middle of a block
   expectRefused(dir, "cn_next_mid_block", b, "link 'cn_cn_next' points to '");
@@ -192,16 +226,21 @@ TEST(MdfDamage, BlockIdsThatAreNotMdf4AreNamed) {
   const Blocks x = blocksOf(good);
   std::string b = good;
   b.replace(x.cn, 4, "##CO");
-  expectRefused(dir, "cn_as_co", b, "block ##CG at " + hex(x.cg) + ": link 'cg_cn_first' points to '##CO' at " + hex(x.cn) + ", not an MDF 4 block id (allowed: ##CN)");
+  expectRefused(dir, "cn_as_co", b,
+                "block ##CG at " + hex(x.cg) + ": link 'cg_cn_first' points to '##CO' at " +
+                    hex(x.cn) + ", not an MDF 4 block id (allowed: ##CN)");
   b = good;
   b.replace(x.cn2, 4, "##CO");
-  expectRefused(dir, "cn2_as_co", b, "block ##CN at " + hex(x.cn) + ": link 'cn_cn_next' points to '##CO'");
+  expectRefused(dir, "cn2_as_co", b,
+                "block ##CN at " + hex(x.cn) + ": link 'cn_cn_next' points to '##CO'");
   b = good;
   b.replace(x.hd, 4, "##HX");
-  expectRefused(dir, "hd_renamed", b, "block ##HX at 0x40: the block after the identification must be the header, ##HD");
+  expectRefused(dir, "hd_renamed", b,
+                "block ##HX at 0x40: the block after the identification must be the header, ##HD");
   b = good;
   b.replace(x.cg, 4, "##CX");
-  expectRefused(dir, "cg_renamed", b, "block ##DG at " + hex(x.dg) + ": link 'dg_cg_first' points to '##CX'");
+  expectRefused(dir, "cg_renamed", b,
+                "block ##DG at " + hex(x.dg) + ": link 'dg_cg_first' points to '##CX'");
   b = good;
   b.replace(x.dg, 4, "##DX");
   expectRefused(dir, "dg_renamed", b, "block ##HD at 0x40: link 'hd_dg_first' points to '##DX'");
@@ -212,7 +251,8 @@ TEST(MdfDamage, BlockIdsThatAreNotMdf4AreNamed) {
   b.replace(8, 8, "3.30    ");
   b[28] = static_cast<char>(330 & 0xff);
   b[29] = static_cast<char>(330 >> 8);
-  expectRefused(dir, "mdf3", b, "is MDF 3.30 (version number 330): only MDF 4 (.mf4) logs are read");
+  expectRefused(dir, "mdf3", b,
+                "is MDF 3.30 (version number 330): only MDF 4 (.mf4) logs are read");
 }
 
 // A DZ block whose zlib stream fails its checksum, ends early, inflates to another size than it
@@ -225,46 +265,63 @@ TEST(MdfDamage, ACompressedBlockThatFailsItsCheckIsNamed) {
   const std::uint64_t packed = get64(good, dz + 40), size = get64(good, dz + 32);
   const std::string where = "block ##DZ at " + hex(dz) + ": ";
   std::string b = good;
-  b[dz + 48 + packed - 1] = static_cast<char>(b[dz + 48 + packed - 1] ^ 0x55);  // the adler-32 checksum
-  expectRefused(dir, "dz_checksum", b, where + "compressed data fail their check (zlib: incorrect data check)");
+  b[dz + 48 + packed - 1] =
+      static_cast<char>(b[dz + 48 + packed - 1] ^ 0x55);  // the adler-32 checksum
+  expectRefused(dir, "dz_checksum", b,
+                where + "compressed data fail their check (zlib: incorrect data check)");
   b = good;
   put64(b, dz + 40, packed / 2);  // the stream cut short
   expectRefused(dir, "dz_cut", b, where + "compressed data end before their zlib stream does");
   b = good;
   put64(b, dz + 32, size + 8);
-  expectRefused(dir, "dz_size_larger", b, where + "compressed data inflate to " + std::to_string(size) + " bytes; the block declares " + std::to_string(size + 8));
+  expectRefused(dir, "dz_size_larger", b,
+                where + "compressed data inflate to " + std::to_string(size) +
+                    " bytes; the block declares " + std::to_string(size + 8));
   b = good;
-  put64(b, dz + 32, size - 8);  // the data group then holds less than its records: found before any inflating
-  expectRefused(dir, "dz_size_smaller", b, "block ##DG at " + hex(blocksOf(good).dg) + ": its data blocks hold " + std::to_string(size - 8) +
-                                               " bytes of records where its channel groups declare " + std::to_string(size));
+  put64(b, dz + 32,
+        size - 8);  // the data group then holds less than its records: found before any inflating
+  expectRefused(dir, "dz_size_smaller", b,
+                "block ##DG at " + hex(blocksOf(good).dg) + ": its data blocks hold " +
+                    std::to_string(size - 8) +
+                    " bytes of records where its channel groups declare " + std::to_string(size));
   b = good;
   b[dz + 26] = 7;
-  expectRefused(dir, "dz_zip_type", b, where + "zip type 7 is neither 0 (deflate) nor 1 (transposition + deflate)");
+  expectRefused(dir, "dz_zip_type", b,
+                where + "zip type 7 is neither 0 (deflate) nor 1 (transposition + deflate)");
   b = good;
   b[dz + 48 + 2] = static_cast<char>(b[dz + 48 + 2] ^ 0xff);  // the first deflate block's header
   const ImportRun r = importBytes(dir, "dz_stream", b);
   EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_NE(r.err.find(where + "compressed data fail their check (zlib: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(where + "compressed data fail their check (zlib: "), std::string::npos)
+      << r.err;
 }
 
 // The user's file: the records stored inside the zlib stream as they are (level 0), one byte of a
 // value changed. Read without the checksum, the value is silently another; the import refuses it.
 TEST(MdfDamage, AChangedValueInsideAStreamFailsItsChecksum) {
-  if (std::system("python3 -c 'import zlib' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3 is not installed";
+  if (std::system("python3 -c 'import zlib' > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "python3 is not installed";
   const fs::path dir = dtwin_test::freshDir("mdf_damage_stored");
   const fs::path log = dir / "stored.mf4";
   const std::string script = std::string(DTWIN_SOURCE_DIR) + "/tests/io/write_mf4.py";
-  const std::string units = " --units GPS_Speed=km/h,Road_L=mm,Road_R=mm,AccZ_Seat=g,Cabin_Temp=degC";
-  ASSERT_EQ(std::system(("python3 " + script + " " + kDrives + "stop_and_go.csv " + log.string() + " --data deflate --level 0" + units).c_str()), 0);
+  const std::string units =
+      " --units GPS_Speed=km/h,Road_L=mm,Road_R=mm,AccZ_Seat=g,Cabin_Temp=degC";
+  ASSERT_EQ(std::system(("python3 " + script + " " + kDrives + "stop_and_go.csv " + log.string() +
+                         " --data deflate --level 0" + units)
+                            .c_str()),
+            0);
   const std::string good = dtwin_test::slurp(log);
   const ImportRun ok = importBytes(dir, "stored_good", good);
   ASSERT_EQ(ok.code, 0) << ok.err;
   const std::uint64_t dz = blocksOf(good).dz;
   ASSERT_NE(dz, 0u);
   std::string b = good;
-  const std::uint64_t at = dz + 48 + 2 + 5 + 8 * 6 * 10 + 2;  // zlib's and the stored block's headers, then row 10's Time
+  const std::uint64_t at = dz + 48 + 2 + 5 + 8 * 6 * 10 +
+                           2;  // zlib's and the stored block's headers, then row 10's Time
   b[at] = static_cast<char>(b[at] ^ 0x01);
-  expectRefused(dir, "stored_changed", b, "block ##DZ at " + hex(dz) + ": compressed data fail their check (zlib: incorrect data check)");
+  expectRefused(dir, "stored_changed", b,
+                "block ##DZ at " + hex(dz) +
+                    ": compressed data fail their check (zlib: incorrect data check)");
 }
 
 // A value no sensor gives (the plausibility check of the imported measurements) names the log,
@@ -276,7 +333,8 @@ TEST(MdfDamage, AnImplausibleValueNamesTheLog) {
     if (c.name == "AccZ_Seat") c.values[400] = 1e200;
   writeMdfLog((dir / "value.mf4").string(), {g}, true);
   expectRefused(dir, "value", dtwin_test::slurp(dir / "value.mf4"),
-                "channel 'AccZ_Seat' at " + formatNumber(g.time[400], 12) + " s: value: must lie in the plausible range");
+                "channel 'AccZ_Seat' at " + formatNumber(g.time[400], 12) +
+                    " s: value: must lie in the plausible range");
 }
 
 // The damaged seeds of the fuzzer (tests/fuzz/seeds/mf4_import/damaged_*.mf4; docs/fuzzing.md):
@@ -287,24 +345,38 @@ TEST(MdfDamage, TheFuzzersDamagedSeedsAreRefused) {
   const fs::path dir = dtwin_test::freshDir("mdf_damage_seeds");
   const fs::path seeds = fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"damaged_cn_next_to_cg", "block ##CN at 0x1d8: link 'cn_cn_next' points to a ##CG block (allowed: ##CN)"},
-      {"damaged_cn_composition_self", "block ##CN at 0x1d8: link 'cn_composition' leads back to the ##CN block at 0x1d8"},
-      {"damaged_cn_cycle", "block ##CN at 0x2c0: link 'cn_cn_next' leads back to the ##CN block at 0x1d8"},
-      {"damaged_cn_as_co", "block ##CG at 0x710: link 'cg_cn_first' points to '##CO' at 0x1d8, not an MDF 4 block id (allowed: ##CN)"},
-      {"damaged_hd_renamed", "block ##HX at 0x40: the block after the identification must be the header, ##HD"},
-      {"damaged_dz_checksum", "block ##DZ at 0x690: compressed data fail their check (zlib: incorrect data check)"},
+      {"damaged_cn_next_to_cg",
+       "block ##CN at 0x1d8: link 'cn_cn_next' points to a ##CG block (allowed: ##CN)"},
+      {"damaged_cn_composition_self",
+       "block ##CN at 0x1d8: link 'cn_composition' leads back to the ##CN block at 0x1d8"},
+      {"damaged_cn_cycle",
+       "block ##CN at 0x2c0: link 'cn_cn_next' leads back to the ##CN block at 0x1d8"},
+      {"damaged_cn_as_co",
+       "block ##CG at 0x710: link 'cg_cn_first' points to '##CO' at 0x1d8, not an MDF 4 block id "
+       "(allowed: ##CN)"},
+      {"damaged_hd_renamed",
+       "block ##HX at 0x40: the block after the identification must be the header, ##HD"},
+      {"damaged_dz_checksum",
+       "block ##DZ at 0x690: compressed data fail their check (zlib: incorrect data check)"},
       // Found by the fuzzer's structure-aware mutations: a channel's name a renamed block (SIGSEGV
       // before the check), a data group's channel groups a file history (imported without a word),
       // a file history that is its own next (the import hung).
-      {"damaged_found_cn_name_to_ri", "block ##CN at 0x568: link 'cn_tx_name' points to a ##RI block (allowed: ##TX)"},
-      {"damaged_found_dg_cg_to_fh", "block ##DG at 0x1708: link 'dg_cg_first' points to a ##FH block (allowed: ##CG)"},
-      {"damaged_found_fh_cycle", "block ##FH at 0x160: link 'fh_fh_next' leads back to the ##FH block at 0x160 on its own path"},
+      {"damaged_found_cn_name_to_ri",
+       "block ##CN at 0x568: link 'cn_tx_name' points to a ##RI block (allowed: ##TX)"},
+      {"damaged_found_dg_cg_to_fh",
+       "block ##DG at 0x1708: link 'dg_cg_first' points to a ##FH block (allowed: ##CG)"},
+      {"damaged_found_fh_cycle",
+       "block ##FH at 0x160: link 'fh_fh_next' leads back to the ##FH block at 0x160 on its own "
+       "path"},
       // A data list whose count far exceeds its links (the reader walked billions of them: hung).
-      {"damaged_found_dl_count", "block ##DL at 0x10e0: lists 2684354562 data blocks but links to 2: the file is damaged"},
+      {"damaged_found_dl_count",
+       "block ##DL at 0x10e0: lists 2684354562 data blocks but links to 2: the file is damaged"},
   };
-  for (const auto& [file, expect] : cases) expectRefused(dir, file, dtwin_test::slurp(seeds / (file + ".mf4")), expect);
+  for (const auto& [file, expect] : cases)
+    expectRefused(dir, file, dtwin_test::slurp(seeds / (file + ".mf4")), expect);
   std::size_t damaged = 0;
-  for (const auto& e : fs::directory_iterator(seeds)) damaged += e.path().filename().string().rfind("damaged_", 0) == 0;
+  for (const auto& e : fs::directory_iterator(seeds))
+    damaged += e.path().filename().string().rfind("damaged_", 0) == 0;
   EXPECT_EQ(damaged, cases.size()) << "a damaged seed without its case here";
 }
 
@@ -317,8 +389,9 @@ TEST(MdfDamage, TheReaderRefusesTheDamagedSeedsInProcess) {
   const MdfDirectory dir = readMdfDirectory(plain, "plain.mf4");
   ASSERT_EQ(dir.groups.size(), 1u);
   EXPECT_EQ(readMdfGroup(plain, "plain.mf4", 0, {"AccZ_Seat"}).time.size(), 200u);
-  for (const char* f : {"damaged_cn_next_to_cg", "damaged_cn_composition_self", "damaged_cn_cycle", "damaged_cn_as_co", "damaged_hd_renamed",
-                        "damaged_found_cn_name_to_ri", "damaged_found_dg_cg_to_fh", "damaged_found_fh_cycle"}) {
+  for (const char* f : {"damaged_cn_next_to_cg", "damaged_cn_composition_self", "damaged_cn_cycle",
+                        "damaged_cn_as_co", "damaged_hd_renamed", "damaged_found_cn_name_to_ri",
+                        "damaged_found_dg_cg_to_fh", "damaged_found_fh_cycle"}) {
     SCOPED_TRACE(f);
     const std::string bytes = dtwin_test::slurp(seeds / (std::string(f) + ".mf4"));
     try {
@@ -329,11 +402,14 @@ TEST(MdfDamage, TheReaderRefusesTheDamagedSeedsInProcess) {
     }
   }
   const std::string dz = dtwin_test::slurp(seeds / "damaged_dz_checksum.mf4");
-  EXPECT_EQ(readMdfDirectory(dz, "x.mf4").groups.size(), 2u);  // the blocks are whole; the data are not
+  EXPECT_EQ(readMdfDirectory(dz, "x.mf4").groups.size(),
+            2u);  // the blocks are whole; the data are not
   try {
     (void)readMdfGroup(dz, "x.mf4", 0, {"AccZ_Seat"});
     ADD_FAILURE() << "read";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "x.mf4: block ##DZ at 0x690: compressed data fail their check (zlib: incorrect data check)");
+    EXPECT_EQ(std::string(e.what()),
+              "x.mf4: block ##DZ at 0x690: compressed data fail their check (zlib: incorrect data "
+              "check)");
   }
 }

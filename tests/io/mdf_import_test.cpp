@@ -14,9 +14,9 @@
 #include <limits>
 #include <sstream>
 
-#include "test_util.hpp"
 #include "io/log_import.hpp"
 #include "io/mdf_log.hpp"
+#include "test_util.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;
@@ -46,7 +46,8 @@ DemoLog readDemoCsv() {
     for (std::size_t k = 0; k < d.names.size(); ++k) {
       const std::size_t e = std::min(line.find(',', b), line.size());
       const std::string cell = line.substr(b, e - b);
-      d.cols[k].push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(cell.c_str(), nullptr));
+      d.cols[k].push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                       : std::strtod(cell.c_str(), nullptr));
       b = e + 1;
     }
   }
@@ -59,7 +60,8 @@ const char* kUnitsOfDemo[] = {"s", "km/h", "mm", "mm", "g", "degC"};
 /// sample) and "gps" (the speed, every other sample and the last).
 std::vector<MdfWriteGroup> demoGroups(const DemoLog& d, bool split) {
   MdfWriteGroup all{"log", "Time", "s", d.cols[0], {}};
-  for (std::size_t k = 1; k < d.names.size(); ++k) all.channels.push_back({d.names[k], kUnitsOfDemo[k], d.cols[k], {}});
+  for (std::size_t k = 1; k < d.names.size(); ++k)
+    all.channels.push_back({d.names[k], kUnitsOfDemo[k], d.cols[k], {}});
   if (!split) return {all};
   MdfWriteGroup chassis{"chassis", "Time", "s", d.cols[0], {}}, gps{"gps", "Time", "s", {}, {}};
   gps.channels.push_back({"GPS_Speed", "km/h", {}, {}});
@@ -87,7 +89,9 @@ std::string importArgs(const std::string& log, const std::string& map, const fs:
 const fs::path& csvImport() {
   static const fs::path out = [] {
     const fs::path dir = dtwin_test::freshDir("mdf_csv_ref");
-    const auto r = dtwin_test::runTwin(importArgs(kDrives + "stop_and_go.csv", kDrives + "stop_and_go_map.toml", dir / "drive"), dir);
+    const auto r = dtwin_test::runTwin(
+        importArgs(kDrives + "stop_and_go.csv", kDrives + "stop_and_go_map.toml", dir / "drive"),
+        dir);
     EXPECT_EQ(r.code, 0) << r.err;
     return dir / "drive";
   }();
@@ -118,9 +122,11 @@ TEST(MdfImport, TheDemonstrationDriveImportsAsItsCsvDoes) {
     writeMdfLog(log, demoGroups(d, false), compress);
     const std::string bytes = dtwin_test::slurp(log);
     ASSERT_EQ(bytes.compare(0, 8, "MDF     "), 0);
-    EXPECT_EQ(bytes.find("##DZ") != std::string::npos, compress) << "DZ blocks when compressed, none otherwise";
+    EXPECT_EQ(bytes.find("##DZ") != std::string::npos, compress)
+        << "DZ blocks when compressed, none otherwise";
     EXPECT_LT(bytes.size(), compress ? 250000u : 400000u);
-    const auto r = dtwin_test::runTwin(importArgs(log, kDrives + "stop_and_go_map.toml", dir / "drive"), dir);
+    const auto r =
+        dtwin_test::runTwin(importArgs(log, kDrives + "stop_and_go_map.toml", dir / "drive"), dir);
     ASSERT_EQ(r.code, 0) << r.err;
     expectSameFiles(csvImport(), dir / "drive");
     const auto side = nlohmann::json::parse(dtwin_test::slurp(dir / "drive" / "measurements.json"));
@@ -129,9 +135,11 @@ TEST(MdfImport, TheDemonstrationDriveImportsAsItsCsvDoes) {
     EXPECT_EQ(src.at("rows"), 6001);
     EXPECT_EQ(src.at("mdf").at("groups_read").size(), 1u);
     EXPECT_EQ(src.at("mdf").at("groups_read")[0].at("group"), "log");
-    EXPECT_EQ(src.at("mdf").at("groups_read")[0].at("channels").size(), 4u);  // speed, two roads, seat: not the cabin's temperature
+    EXPECT_EQ(src.at("mdf").at("groups_read")[0].at("channels").size(),
+              4u);  // speed, two roads, seat: not the cabin's temperature
     EXPECT_EQ(src.at("mdf").at("samples_outside_other_groups"), 0);
-    EXPECT_EQ(side.at("dropped_cells"), 6);  // the accelerometer's NaN samples, as the CSV's empty cells
+    EXPECT_EQ(side.at("dropped_cells"),
+              6);  // the accelerometer's NaN samples, as the CSV's empty cells
   }
 }
 
@@ -150,7 +158,8 @@ TEST(MdfImport, TwoTimeBasesResampleOntoTheTimeChannelsGroup) {
   dtwin_test::writeText(dir / "map.toml", map);
   auto r = dtwin_test::runTwin(importArgs(log, (dir / "map.toml").string(), dir / "drive"), dir);
   ASSERT_EQ(r.code, 0) << r.err;
-  r = dtwin_test::runTwin(importArgs(kDrives + "stop_and_go.csv", (dir / "map.toml").string(), dir / "csv"), dir);
+  r = dtwin_test::runTwin(
+      importArgs(kDrives + "stop_and_go.csv", (dir / "map.toml").string(), dir / "csv"), dir);
   ASSERT_EQ(r.code, 0) << r.err;
   expectSameFiles(dir / "csv", dir / "drive", /*speed_too=*/false);
   std::istringstream speed(dtwin_test::slurp(dir / "drive" / "speed.csv"));
@@ -194,9 +203,9 @@ TEST(MdfImport, TheFilesConversionsAreApplied) {
   std::vector<double> raw_v, raw_a, raw_state;
   for (int k = 0; k < 200; ++k) {
     g.time.push_back(0.01 * k);
-    raw_v.push_back(1000 + k);    // speed: 0.01 km/h per bit, from 0 at 0
-    raw_a.push_back(k % 7);       // accelerometer: (2x + 1) / (x + 4) m/s^2, a rational
-    raw_state.push_back(k % 2);   // a state as text
+    raw_v.push_back(1000 + k);   // speed: 0.01 km/h per bit, from 0 at 0
+    raw_a.push_back(k % 7);      // accelerometer: (2x + 1) / (x + 4) m/s^2, a rational
+    raw_state.push_back(k % 2);  // a state as text
   }
   MdfWriteConversion lin{"linear", {0.0, 0.01, 0, 0, 0, 0}, {}};
   MdfWriteConversion rat{"rational", {0.0, 2.0, 1.0, 0.0, 1.0, 4.0}, {}};
@@ -206,7 +215,9 @@ TEST(MdfImport, TheFilesConversionsAreApplied) {
   g.channels.push_back({"state", "", raw_state, txt});
   const std::string log = (dir / "conv.mf4").string();
   writeMdfLog(log, {g}, false);
-  const std::string args = "import --log " + log + " --time Time:s --speed v:km/h --channel az:chassis_heave_acc_mps2:m/s^2 --quiet --out ";
+  const std::string args =
+      "import --log " + log +
+      " --time Time:s --speed v:km/h --channel az:chassis_heave_acc_mps2:m/s^2 --quiet --out ";
   auto r = dtwin_test::runTwin(args + (dir / "out").string(), dir);
   ASSERT_EQ(r.code, 0) << r.err;
   std::istringstream speed(dtwin_test::slurp(dir / "out" / "speed.csv"));
@@ -222,11 +233,16 @@ TEST(MdfImport, TheFilesConversionsAreApplied) {
     ASSERT_NEAR(std::stod(line.substr(line.rfind(',') + 1)), (2 * x + 1) / (x + 4), 1e-12) << line;
   }
   EXPECT_EQ(rows, 200);
-  r = dtwin_test::runTwin("import --log " + log + " --time Time:s --speed v:km/h --channel state:chassis_heave_acc_mps2:m/s^2 --quiet --out " +
+  r = dtwin_test::runTwin("import --log " + log +
+                              " --time Time:s --speed v:km/h --channel "
+                              "state:chassis_heave_acc_mps2:m/s^2 --quiet --out " +
                               (dir / "text").string(),
                           dir);
   EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_NE(r.err.find("channel 'state' (group 'log'): its values are text (a value-to-text conversion)"), std::string::npos) << r.err;
+  EXPECT_NE(
+      r.err.find("channel 'state' (group 'log'): its values are text (a value-to-text conversion)"),
+      std::string::npos)
+      << r.err;
   EXPECT_FALSE(fs::exists(dir / "text"));
 }
 
@@ -260,23 +276,33 @@ TEST(MdfImport, BadFilesGiveOneLineErrorsAndWriteNothing) {
       {"cut_in_header", bytes.substr(0, 100), map, "truncated or damaged"},
       {"cut_in_id", bytes.substr(0, 20), map, "is not an MDF file"},
       {"cut_before_data", bytes.substr(0, bytes.find("##DT") + 30), map, "block ##DT at 0x"},
-      {"missing_channel", bytes, (dir / "missing.toml").string(), "no channel 'AccZ_Seet' (" + (dir / "missing.toml").string() + ":"},
-      {"unit", bytes, (dir / "unit.toml").string(), "channel 'GPS_Speed' (group 'log'): the file gives its unit as 'km/h', the mapping declares 'mph'"},
-      {"shared", dtwin_test::slurp(split), (dir / "shared.toml").string(), "channel 'Time' (" + (dir / "shared.toml").string() + ":6: import.road_left) is in group 'chassis', group 'gps': name one as GROUP/Time"},
+      {"missing_channel", bytes, (dir / "missing.toml").string(),
+       "no channel 'AccZ_Seet' (" + (dir / "missing.toml").string() + ":"},
+      {"unit", bytes, (dir / "unit.toml").string(),
+       "channel 'GPS_Speed' (group 'log'): the file gives its unit as 'km/h', the mapping declares "
+       "'mph'"},
+      {"shared", dtwin_test::slurp(split), (dir / "shared.toml").string(),
+       "channel 'Time' (" + (dir / "shared.toml").string() +
+           ":6: import.road_left) is in group 'chassis', group 'gps': name one as GROUP/Time"},
       {"not_mdf", dtwin_test::slurp(kDrives + "stop_and_go.csv"), map, "is not an MDF file"},
       // Two files the fuzzer made: records of 0 bytes (a reader would never move on) and a DZ block
       // that claims more data than deflate can pack into its bytes (a reader would reserve it).
-      {"zero_size_records", dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import/zero_size_records.mf4"), map,
-       "declares records of 0 bytes"},
-      {"dz_size_too_large", dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "tests/fuzz/seeds/mf4_import/dz_size_too_large.mf4"), map,
-       "block ##DZ at 0x690: declares 26177172834095008 bytes from 1270 compressed ones"},
+      {"zero_size_records",
+       dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) /
+                         "tests/fuzz/seeds/mf4_import/zero_size_records.mf4"),
+       map, "declares records of 0 bytes"},
+      {"dz_size_too_large",
+       dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) /
+                         "tests/fuzz/seeds/mf4_import/dz_size_too_large.mf4"),
+       map, "block ##DZ at 0x690: declares 26177172834095008 bytes from 1270 compressed ones"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
     const fs::path log = dir / (c.name + ".mf4");
     dtwin_test::writeText(log, c.bytes);
     const fs::path out = dir / ("out_" + c.name);
-    const auto r = dtwin_test::runTwin("import --log " + log.string() + " --map " + c.map + " --out " + out.string(), dir);
+    const auto r = dtwin_test::runTwin(
+        "import --log " + log.string() + " --map " + c.map + " --out " + out.string(), dir);
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(r.err.rfind("twin: error: " + log.string() + ": ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
@@ -285,7 +311,10 @@ TEST(MdfImport, BadFilesGiveOneLineErrorsAndWriteNothing) {
     EXPECT_FALSE(fs::exists(dir / ("out_" + c.name + ".import-tmp")));
   }
   // The near names of a missing channel.
-  const auto r = dtwin_test::runTwin("import --log " + good.string() + " --map " + (dir / "missing.toml").string() + " --out " + (dir / "o").string(), dir);
+  const auto r =
+      dtwin_test::runTwin("import --log " + good.string() + " --map " +
+                              (dir / "missing.toml").string() + " --out " + (dir / "o").string(),
+                          dir);
   EXPECT_NE(r.err.find("near: 'AccZ_Seat'"), std::string::npos) << r.err;
 }
 
@@ -293,20 +322,27 @@ TEST(MdfImport, BadFilesGiveOneLineErrorsAndWriteNothing) {
 // block, or in two DZ blocks under a DL and an HL block, deflated or transposed and deflated, in
 // one data group or in two with their own masters. Each imports as the CSV does.
 TEST(MdfImport, AnIndependentWritersFilesImportAsTheCsvDoes) {
-  if (std::system("python3 -c 'import zlib' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3 is not installed";
+  if (std::system("python3 -c 'import zlib' > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "python3 is not installed";
   const fs::path dir = dtwin_test::freshDir("mdf_python");
   const std::string script = std::string(DTWIN_SOURCE_DIR) + "/tests/io/write_mf4.py";
-  const std::string units = " --units GPS_Speed=km/h,Road_L=mm,Road_R=mm,AccZ_Seat=g,Cabin_Temp=degC";
+  const std::string units =
+      " --units GPS_Speed=km/h,Road_L=mm,Road_R=mm,AccZ_Seat=g,Cabin_Temp=degC";
   std::string map = dtwin_test::slurp(kDrives + "stop_and_go_map.toml");
   map.replace(map.find("speed_lowpass_hz"), 3, "#sp");
   dtwin_test::writeText(dir / "map.toml", map);
-  auto r = dtwin_test::runTwin(importArgs(kDrives + "stop_and_go.csv", (dir / "map.toml").string(), dir / "csv_nolp"), dir);
+  auto r = dtwin_test::runTwin(
+      importArgs(kDrives + "stop_and_go.csv", (dir / "map.toml").string(), dir / "csv_nolp"), dir);
   ASSERT_EQ(r.code, 0) << r.err;
   for (const std::string data : {"dt", "deflate", "transposed"}) {
     SCOPED_TRACE(data);
     const fs::path log = dir / (data + ".mf4");
-    ASSERT_EQ(std::system(("python3 " + script + " " + kDrives + "stop_and_go.csv " + log.string() + " --data " + data + units).c_str()), 0);
-    r = dtwin_test::runTwin(importArgs(log.string(), kDrives + "stop_and_go_map.toml", dir / data), dir);
+    ASSERT_EQ(std::system(("python3 " + script + " " + kDrives + "stop_and_go.csv " + log.string() +
+                           " --data " + data + units)
+                              .c_str()),
+              0);
+    r = dtwin_test::runTwin(importArgs(log.string(), kDrives + "stop_and_go_map.toml", dir / data),
+                            dir);
     ASSERT_EQ(r.code, 0) << r.err;
     expectSameFiles(csvImport(), dir / data);
     if (data == "dt") continue;
@@ -315,11 +351,16 @@ TEST(MdfImport, AnIndependentWritersFilesImportAsTheCsvDoes) {
     EXPECT_NE(bytes.find("##DZ"), std::string::npos);
     // Two data groups: the speed in its own, every other sample; read on the accelerometer's times.
     const fs::path split = dir / (data + "_split.mf4");
-    ASSERT_EQ(std::system(("python3 " + script + " " + kDrives + "stop_and_go.csv " + split.string() + " --data " + data + " --split GPS_Speed" + units).c_str()), 0);
-    r = dtwin_test::runTwin(importArgs(split.string(), (dir / "map.toml").string(), dir / (data + "_split")), dir);
+    ASSERT_EQ(std::system(("python3 " + script + " " + kDrives + "stop_and_go.csv " +
+                           split.string() + " --data " + data + " --split GPS_Speed" + units)
+                              .c_str()),
+              0);
+    r = dtwin_test::runTwin(
+        importArgs(split.string(), (dir / "map.toml").string(), dir / (data + "_split")), dir);
     ASSERT_EQ(r.code, 0) << r.err;
     expectSameFiles(dir / "csv_nolp", dir / (data + "_split"), /*speed_too=*/false);
-    const auto side = nlohmann::json::parse(dtwin_test::slurp(dir / (data + "_split") / "measurements.json"));
+    const auto side =
+        nlohmann::json::parse(dtwin_test::slurp(dir / (data + "_split") / "measurements.json"));
     EXPECT_EQ(side.at("source").at("mdf").at("groups_read").size(), 2u);
     EXPECT_EQ(side.at("source").at("mdf").at("time_base").at("group"), "log");
   }

@@ -30,7 +30,8 @@ std::string variant(const std::string& name, const std::string& from, const std:
   const std::string path = ::testing::TempDir() + "/" + name + ".toml";
   std::string t2 = text;
   const std::string veh = "vehicle = \"../vehicle/midsize_sedan.toml\"";
-  t2.replace(t2.find(veh), veh.size(), "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  t2.replace(t2.find(veh), veh.size(),
+             "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
   std::ofstream(path) << t2;
   return path;
 }
@@ -68,51 +69,87 @@ TEST(Study, MalformedTomlNamesFileAndLine) {
 }
 
 TEST(Study, UnknownOptionEffectFieldAndScenario) {
-  EXPECT_NE(errorOf(variant("opt", "\"fiala\"]", "\"michelin\"]")).find("unknown tire option 'michelin'"), std::string::npos);
-  const std::string e2 = errorOf(variant("eff", "[noise]", "[effects.bumpstop]\nstiffness = 1.0\n[noise]"));
+  EXPECT_NE(
+      errorOf(variant("opt", "\"fiala\"]", "\"michelin\"]")).find("unknown tire option 'michelin'"),
+      std::string::npos);
+  const std::string e2 =
+      errorOf(variant("eff", "[noise]", "[effects.bumpstop]\nstiffness = 1.0\n[noise]"));
   EXPECT_NE(e2.find("unknown effect 'bumpstop'"), std::string::npos) << e2;
   const std::string e3 = errorOf(variant("field", "variance_N2", "varience_N2"));
-  EXPECT_NE(e3.find("noise.varience_N2: unknown field (did you mean 'variance_N2'?)"), std::string::npos) << e3;
+  EXPECT_NE(e3.find("noise.varience_N2: unknown field (did you mean 'variance_N2'?)"),
+            std::string::npos)
+      << e3;
   const Study s = loadStudy(kSrc + "/data/studies/paper.toml");
   try {
     s.scenario("track");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("unknown scenario 'track' (this study defines: lab, field)"), std::string::npos) << e.what();
+    EXPECT_NE(
+        std::string(e.what()).find("unknown scenario 'track' (this study defines: lab, field)"),
+        std::string::npos)
+        << e.what();
   }
   try {
     s.assembly("M9");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("unknown assembly 'M9' (this study defines: M1, M2, M3, M4)"), std::string::npos) << e.what();
+    EXPECT_NE(
+        std::string(e.what()).find("unknown assembly 'M9' (this study defines: M1, M2, M3, M4)"),
+        std::string::npos)
+        << e.what();
   }
 }
 
 TEST(Study, BoundsAndSigns) {
   const std::string e1 = errorOf(variant("bounds", "lower = 120e3", "lower = 900e3"));
-  EXPECT_NE(e1.find("calibrated[0].lower: lower bound must be < upper bound"), std::string::npos) << e1;
-  const std::string e2 = errorOf(variant("sign", "lower = 500.0\nupper = 7000.0", "lower = -500.0\nupper = 7000.0"));
+  EXPECT_NE(e1.find("calibrated[0].lower: lower bound must be < upper bound"), std::string::npos)
+      << e1;
+  const std::string e2 =
+      errorOf(variant("sign", "lower = 500.0\nupper = 7000.0", "lower = -500.0\nupper = 7000.0"));
   EXPECT_NE(e2.find("bound of tire.damping must be >= 0"), std::string::npos) << e2;
   const std::string e3 = errorOf(variant("unit", "unit = \"N/m\"", "unit = \"kN/m\""));
-  EXPECT_NE(e3.find("unit of 'tire.stiffness' must be \"N/m\", got \"kN/m\""), std::string::npos) << e3;
+  EXPECT_NE(e3.find("unit of 'tire.stiffness' must be \"N/m\", got \"kN/m\""), std::string::npos)
+      << e3;
   const std::string e4 = errorOf(variant("truth_out", "truth = 3000.0", "truth = 9000.0"));
-  EXPECT_NE(e4.find("calibrated[1].truth: must lie within [lower, upper]"), std::string::npos) << e4;
+  EXPECT_NE(e4.find("calibrated[1].truth: must lie within [lower, upper]"), std::string::npos)
+      << e4;
 }
 
 // What the catalogue and the sizes can judge is judged when the file is read, not at first use.
 TEST(Study, AssembliesRoadsAndSizesAreCheckedWhenRead) {
-  const std::string e1 = errorOf(variant("m9", "[subsystems]", "[assemblies]\ninclude = [\"M1\", \"M9\"]\n\n[subsystems]"));
-  EXPECT_NE(e1.find(".toml:9: assemblies.include: names assembly 'M9', which [subsystems] does not define (it defines M1..M4)"),
-            std::string::npos) << e1;
-  const std::string e2 = errorOf(variant("twice", "[subsystems]", "[assemblies]\ninclude = [\"M2\", \"M2\"]\n\n[subsystems]"));
+  const std::string e1 = errorOf(
+      variant("m9", "[subsystems]", "[assemblies]\ninclude = [\"M1\", \"M9\"]\n\n[subsystems]"));
+  EXPECT_NE(e1.find(".toml:9: assemblies.include: names assembly 'M9', which [subsystems] does not "
+                    "define (it defines M1..M4)"),
+            std::string::npos)
+      << e1;
+  const std::string e2 = errorOf(
+      variant("twice", "[subsystems]", "[assemblies]\ninclude = [\"M2\", \"M2\"]\n\n[subsystems]"));
   EXPECT_NE(e2.find("assemblies.include: names assembly 'M2' twice"), std::string::npos) << e2;
-  const std::string e3 = errorOf(variant("smooth", "smooth_until_s = 6.0", "smooth_until_s = -1.0"));
-  EXPECT_NE(e3.find("scenarios.field.road.smooth_until_s: must be >= 0 s (0: rough from the start), got -1"), std::string::npos) << e3;
+  const std::string e3 =
+      errorOf(variant("smooth", "smooth_until_s = 6.0", "smooth_until_s = -1.0"));
+  EXPECT_NE(
+      e3.find(
+          "scenarios.field.road.smooth_until_s: must be >= 0 s (0: rough from the start), got -1"),
+      std::string::npos)
+      << e3;
   const std::string e4 = errorOf(variant("burn", "gibbs_burn_in = 15000", "gibbs_burn_in = 50000"));
-  EXPECT_NE(e4.find("sizes.gibbs_burn_in: gibbs_burn_in (50000) must be below gibbs_iterations (50000)"), std::string::npos) << e4;
-  const std::string e5 = errorOf(variant("iters", "gibbs_iterations = 50000\ngibbs_burn_in = 15000", "gibbs_iterations = 10000"));
-  EXPECT_NE(e5.find("sizes.gibbs_iterations: gibbs_burn_in (15000) must be below gibbs_iterations (10000)"), std::string::npos) << e5;
-  EXPECT_EQ(loadStudy(variant("m2", "[subsystems]", "[assemblies]\ninclude = [\"M2\"]\n\n[subsystems]")).assemblies().size(), 1u);
+  EXPECT_NE(
+      e4.find("sizes.gibbs_burn_in: gibbs_burn_in (50000) must be below gibbs_iterations (50000)"),
+      std::string::npos)
+      << e4;
+  const std::string e5 = errorOf(variant("iters", "gibbs_iterations = 50000\ngibbs_burn_in = 15000",
+                                         "gibbs_iterations = 10000"));
+  EXPECT_NE(
+      e5.find(
+          "sizes.gibbs_iterations: gibbs_burn_in (15000) must be below gibbs_iterations (10000)"),
+      std::string::npos)
+      << e5;
+  EXPECT_EQ(
+      loadStudy(variant("m2", "[subsystems]", "[assemblies]\ninclude = [\"M2\"]\n\n[subsystems]"))
+          .assemblies()
+          .size(),
+      1u);
 }
 
 // The [calibration] table: defaults, the paper's procedure, and every bad value named.
@@ -120,12 +157,15 @@ TEST(Study, CalibrationSettings) {
   const Study d = loadStudy(kSrc + "/data/studies/demo.toml");
   EXPECT_EQ(d.calibration.region, "joint");
   EXPECT_EQ(d.calibration.designOrDefault(), "adaptive");
-  const Study p = loadStudy(variant("cal_paper", "[noise]", "[calibration]\nregion = \"paper\"\n\n[noise]"));
+  const Study p =
+      loadStudy(variant("cal_paper", "[noise]", "[calibration]\nregion = \"paper\"\n\n[noise]"));
   EXPECT_EQ(p.calibration.region, "paper");
   EXPECT_EQ(p.calibration.designOrDefault(), "lhs");
-  const Study q = loadStudy(variant("cal_all", "[noise]",
-                                    "[calibration]\nregion = \"paper\"\ndesign = \"adaptive\"\nround_points = 50\nmax_rounds = 3\n"
-                                    "target_ess = 250.5\nmargin = 1.5\nridge_steps = 5\nsteps = \"adaptive\"\n\n[noise]"));
+  const Study q = loadStudy(variant(
+      "cal_all", "[noise]",
+      "[calibration]\nregion = \"paper\"\ndesign = \"adaptive\"\nround_points = 50\nmax_rounds = "
+      "3\n"
+      "target_ess = 250.5\nmargin = 1.5\nridge_steps = 5\nsteps = \"adaptive\"\n\n[noise]"));
   EXPECT_EQ(q.calibration.designOrDefault(), "adaptive");
   EXPECT_EQ(q.calibration.round_points, 50);
   EXPECT_EQ(q.calibration.max_rounds, 3);
@@ -147,15 +187,17 @@ TEST(Study, CalibrationSettings) {
       {"max_round = 3", "calibration.max_round: unknown field (did you mean 'max_rounds'?)"},
   };
   for (const auto& [line, want] : bad) {
-    const std::string e = errorOf(variant("cal_bad", "[noise]", "[calibration]\n" + line + "\n\n[noise]"));
+    const std::string e =
+        errorOf(variant("cal_bad", "[noise]", "[calibration]\n" + line + "\n\n[noise]"));
     EXPECT_NE(e.find(want), std::string::npos) << line << " -> " << e;
     EXPECT_NE(e.find(".toml:"), std::string::npos) << e;
   }
 }
 
 TEST(Study, CsvRoadMustExistAndCoverTheRun) {
-  const std::string p = variant("csvroad", "road = { type = \"bump\", height_m = 0.2, length_m = 0.1, time_s = 6.0 }",
-                                "road = { type = \"csv\", path = \"no_such_road.csv\" }");
+  const std::string p =
+      variant("csvroad", "road = { type = \"bump\", height_m = 0.2, length_m = 0.1, time_s = 6.0 }",
+              "road = { type = \"csv\", path = \"no_such_road.csv\" }");
   const std::string short_road = ::testing::TempDir() + "/no_such_road.csv";
   std::remove(short_road.c_str());  // hermetic: a previous run may have left it
   const Study s = loadStudy(p);
@@ -164,14 +206,17 @@ TEST(Study, CsvRoadMustExistAndCoverTheRun) {
     makeRoad(s.scenario("lab"), model->vehicle(), 1);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("no_such_road.csv: cannot be read (a road profile)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no_such_road.csv: cannot be read (a road profile)"),
+              std::string::npos)
+        << e.what();
   }
   std::ofstream(short_road) << "distance_m,left_m,right_m\n0,0,0\n1,0,0\n2,0,0\n";
   try {
     makeRoad(s.scenario("lab"), model->vehicle(), 1);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("road profile covers distance_m"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("road profile covers distance_m"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -182,15 +227,20 @@ TEST(Study, SettingsFromTheCommandLine) {
     s.makeModel(s.assembly("M1"), {}, {parseSetting("tire.stifness=2e5", "--set")});
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("unknown parameter 'tire.stifness' (did you mean 'tire.stiffness'?)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "unknown parameter 'tire.stifness' (did you mean 'tire.stiffness'?)"),
+              std::string::npos)
+        << e.what();
   }
   try {
     s.makeModel(s.assembly("M1"), {}, {parseSetting("suspension.damping=-5", "--set")});
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("suspension.damping must be >= 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("suspension.damping must be >= 0"), std::string::npos)
+        << e.what();
   }
-  auto m = s.makeModel(s.assembly("M1"), {parseEffectSetting("bump_stop:stiffness=1e6,gap_m=0.03", "--effect", s.effectCatalog())});
+  auto m = s.makeModel(s.assembly("M1"), {parseEffectSetting("bump_stop:stiffness=1e6,gap_m=0.03",
+                                                             "--effect", s.effectCatalog())});
   EXPECT_DOUBLE_EQ(m->table().value("bump_stop.gap_m"), 0.03);
   EXPECT_GE(m->slot("bump_stop.stiffness"), 0);
 }

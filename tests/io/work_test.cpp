@@ -24,7 +24,8 @@ TEST(Work, CountsFollowTheSizes) {
   s.calibration.max_rounds = 2;
   s.calibration.round_points = 50;
   const auto all = dtwin::estimateStudyWork(s);
-  ASSERT_EQ(all.size(), 2u + 2u * s.assemblies().size());  // lab, field, then calibrate/synthesize each
+  ASSERT_EQ(all.size(),
+            2u + 2u * s.assemblies().size());  // lab, field, then calibrate/synthesize each
   const double field_s = s.scenario("field").duration_s, lab_s = s.scenario("lab").duration_s;
   const auto field = dtwin::selectStages(all, {"field"});
   ASSERT_EQ(field.size(), 1u);
@@ -38,12 +39,14 @@ TEST(Work, CountsFollowTheSizes) {
   ASSERT_EQ(cal.size(), 1u);
   EXPECT_EQ(cal[0].stage, "calibrate M2");
   // design 100 + 2 rounds x 50, the optimiser's and the profile's budgets
-  EXPECT_DOUBLE_EQ(cal[0].simulations, 200 + s.sizes.optimizer_starts * 500.0 + s.calibrated.size() * 2400.0);
+  EXPECT_DOUBLE_EQ(cal[0].simulations,
+                   200 + s.sizes.optimizer_starts * 500.0 + s.calibrated.size() * 2400.0);
   EXPECT_DOUBLE_EQ(cal[0].simulated_s, cal[0].simulations * lab_s);
 }
 
 TEST(Work, StageNamesMatchWholeWordsOnly) {
-  const std::vector<dtwin::StageWork> all = {{"calibrate M1", 1, 1, 0}, {"calibrate M10", 1, 1, 0}, {"labx", 1, 1, 0}};
+  const std::vector<dtwin::StageWork> all = {
+      {"calibrate M1", 1, 1, 0}, {"calibrate M10", 1, 1, 0}, {"labx", 1, 1, 0}};
   EXPECT_EQ(dtwin::selectStages(all, {"calibrate M1"}).size(), 1u);
   EXPECT_EQ(dtwin::selectStages(all, {"calibrate"}).size(), 2u);
   EXPECT_EQ(dtwin::selectStages(all, {"lab"}).size(), 0u);
@@ -71,10 +74,11 @@ TEST(Work, ThePaperSizeStudyRunsWithoutForce) {
   const dtwin::Study paper = dtwin::loadStudy(kSrc + "/data/studies/paper.toml");
   const auto all = dtwin::estimateStudyWork(paper);
   const double sim_s = total(all, &dtwin::StageWork::simulated_s);
-  EXPECT_GT(sim_s, 1e6);  // the paper's sizes are large ...
+  EXPECT_GT(sim_s, 1e6);                                  // the paper's sizes are large ...
   EXPECT_LT(sim_s, dtwin::WorkLimits{}.simulated_s / 2);  // ... and well inside the limit
   EXPECT_NO_THROW(dtwin::checkWork(all, paper.path, false));
-  std::printf("paper-size study: %.3g simulated s, %.3g simulations\n", sim_s, total(all, &dtwin::StageWork::simulations));
+  std::printf("paper-size study: %.3g simulated s, %.3g simulations\n", sim_s,
+              total(all, &dtwin::StageWork::simulations));
 }
 
 }  // namespace

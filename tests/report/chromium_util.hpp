@@ -20,7 +20,8 @@ inline std::string findOnPath(const std::string& exe) {
   const char* path = std::getenv("PATH");
   std::stringstream ss(path ? path : "/usr/bin:/bin");
   for (std::string dir; std::getline(ss, dir, ':');)
-    if (!dir.empty() && ::access((std::filesystem::path(dir) / exe).c_str(), X_OK) == 0) return (std::filesystem::path(dir) / exe).string();
+    if (!dir.empty() && ::access((std::filesystem::path(dir) / exe).c_str(), X_OK) == 0)
+      return (std::filesystem::path(dir) / exe).string();
   return "";
 }
 
@@ -33,13 +34,17 @@ inline std::string findChromium() {
 /// The page `html` loaded in headless Chromium with #selftest: the JSON its script wrote into
 /// <pre id="selftest"> (a test failure and {} when there is none). `scratch` holds the profile
 /// and the dumped DOM.
-inline nlohmann::json pageSelftest(const std::string& chromium, const std::filesystem::path& html, const std::filesystem::path& scratch) {
+inline nlohmann::json pageSelftest(const std::string& chromium, const std::filesystem::path& html,
+                                   const std::filesystem::path& scratch) {
   std::filesystem::create_directories(scratch);
   const std::filesystem::path dom = scratch / "dom.html", log = scratch / "chromium.log";
   const std::string cmd = chromium +
-                          " --headless --no-sandbox --disable-gpu --disable-background-networking --window-size=1400,1200"
-                          " --user-data-dir=" + (scratch / "profile").string() + " --dump-dom 'file://" +
-                          std::filesystem::absolute(html).string() + "#selftest' >" + dom.string() + " 2>" + log.string();
+                          " --headless --no-sandbox --disable-gpu --disable-background-networking "
+                          "--window-size=1400,1200"
+                          " --user-data-dir=" +
+                          (scratch / "profile").string() + " --dump-dom 'file://" +
+                          std::filesystem::absolute(html).string() + "#selftest' >" + dom.string() +
+                          " 2>" + log.string();
   EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(log);
   const std::string text = slurp(dom);
   const auto a = text.find("<pre id=\"selftest\">"), b = text.find("</pre>", a);

@@ -20,7 +20,8 @@ constexpr double kPiTest = 3.14159265358979323846;
 
 double trapezoid(const Density& d) {
   double s = 0.0;
-  for (std::size_t k = 1; k < d.x.size(); ++k) s += 0.5 * (d.f[k] + d.f[k - 1]) * (d.x[k] - d.x[k - 1]);
+  for (std::size_t k = 1; k < d.x.size(); ++k)
+    s += 0.5 * (d.f[k] + d.f[k - 1]) * (d.x[k] - d.x[k - 1]);
   return s;
 }
 
@@ -46,12 +47,14 @@ calib::Region region2(double angle, double lo0, double hi0, double lo1, double h
 }  // namespace
 
 TEST(PosteriorPlots, DensityIntegratesToOneAndIsTheKernelForOneAtom) {
-  const std::vector<double> v{1.0, 1.0, 2.0, 2.0, 2.0, 5.0};  // three design points, masses 2/6, 3/6, 1/6
+  const std::vector<double> v{1.0, 1.0, 2.0,
+                              2.0, 2.0, 5.0};  // three design points, masses 2/6, 3/6, 1/6
   const Density d = weightedDensity(v, -20.0, 30.0, 2001);
   ASSERT_EQ(d.atoms.size(), 3u);
   EXPECT_DOUBLE_EQ(d.mass[1], 0.5);
   EXPECT_NEAR(trapezoid(d), 1.0, 1e-6);
-  EXPECT_GE(d.bandwidth, 1.0 - 1e-12) << "never narrower than the design's spacing (median gap 1.0 + 3.0 -> 2.0)";
+  EXPECT_GE(d.bandwidth, 1.0 - 1e-12)
+      << "never narrower than the design's spacing (median gap 1.0 + 3.0 -> 2.0)";
   EXPECT_DOUBLE_EQ(d.bandwidth, std::max(2.0, d.bandwidth));
   // One atom: the Gaussian N(3, h²) with h the range's 1/200.
   const Density one = weightedDensity({3.0, 3.0, 3.0}, 2.0, 4.0, 201);
@@ -77,7 +80,8 @@ TEST(PosteriorPlots, RegionProjectionIsTheBoxOrAZonogonOfItsArea) {
   const auto rot = projectedRegion(region2(kPiTest / 6, -0.1, 0.2, -0.3, 0.1), 0, 1);
   EXPECT_NEAR(area(rot), (0.3 * 200.0) * (0.4 * 2.0), 1e-9);
   // The swapped pair (1, 0) is the mirror image: the same area, clockwise... drawn the same way.
-  EXPECT_NEAR(std::abs(area(projectedRegion(region2(kPiTest / 6, -0.1, 0.2, -0.3, 0.1), 1, 0))), (0.3 * 200.0) * (0.4 * 2.0), 1e-9);
+  EXPECT_NEAR(std::abs(area(projectedRegion(region2(kPiTest / 6, -0.1, 0.2, -0.3, 0.1), 1, 0))),
+              (0.3 * 200.0) * (0.4 * 2.0), 1e-9);
 }
 
 TEST(PosteriorPlots, CorrelationOfALineIsOne) {
@@ -90,7 +94,9 @@ TEST(LabPage, EveryRepetitionAtItsTimeAndTheBandsCoverage) {
   study::LabBands b;
   b.draws = 10;
   for (long rep : {1L, 2L})
-    for (double t : {0.5, 1.0}) b.lab.records.push_back(LabRecord{rep, t, "hub_force_fl_N", t * 100.0 + (rep == 1 ? 1.0 : 30.0)});
+    for (double t : {0.5, 1.0})
+      b.lab.records.push_back(
+          LabRecord{rep, t, "hub_force_fl_N", t * 100.0 + (rep == 1 ? 1.0 : 30.0)});
   study::AssemblyBands a;
   a.assembly.id = "M1";
   study::ChannelBand g;
@@ -107,7 +113,8 @@ TEST(LabPage, EveryRepetitionAtItsTimeAndTheBandsCoverage) {
   b.assemblies.push_back(a);
   const auto data = labPageData(b, "lab view");
   const auto& c = data["sets"][0]["channels"][0];
-  // One series of points: the grid's 5 times, and repetition 2 a step after each of the 2 lab times.
+  // One series of points: the grid's 5 times, and repetition 2 a step after each of the 2 lab
+  // times.
   ASSERT_EQ(c["points"].size(), 1u);
   EXPECT_EQ(c["points"][0]["label"], "lab data (2 repetitions)");
   const auto& v = c["points"][0]["v"];
@@ -121,8 +128,10 @@ TEST(LabPage, EveryRepetitionAtItsTimeAndTheBandsCoverage) {
   EXPECT_EQ(v[6], 130.0);
   EXPECT_EQ(c["models"][0]["p"][3], 50.0);  // the model at the repeated time is its value at 0.5
   ASSERT_EQ(c["models"].size(), 1u);
-  EXPECT_DOUBLE_EQ(c["models"][0]["coverage"].get<double>(), 0.5);  // repetition 1 inside (±1), 2 outside (30 > 10)
-  EXPECT_NEAR(c["models"][0]["rms"].get<double>(), std::sqrt((1.0 + 1.0 + 900.0 + 900.0) / 4.0), 1e-12);
+  EXPECT_DOUBLE_EQ(c["models"][0]["coverage"].get<double>(),
+                   0.5);  // repetition 1 inside (±1), 2 outside (30 > 10)
+  EXPECT_NEAR(c["models"][0]["rms"].get<double>(), std::sqrt((1.0 + 1.0 + 900.0 + 900.0) / 4.0),
+              1e-12);
   EXPECT_TRUE(data["no_windows"].get<bool>());
   b.assemblies[0].channels.clear();
   EXPECT_THROW(labPageData(b, "x"), InputError);

@@ -16,13 +16,16 @@ using dtwin::report::tickLabel;
 TEST(Ticks, StepsAreOneTwoTwoAndAHalfOrFiveTimesAPowerOfTen) {
   EXPECT_DOUBLE_EQ(niceStep(0.0, 153970.0), 50000.0);  // raw 25 662 -> 50 000 (2.5 × 10⁴ is below)
   EXPECT_DOUBLE_EQ(niceStep(0.0, 6.0), 1.0);
-  EXPECT_DOUBLE_EQ(niceStep(0.0, 1.4), 0.25);          // raw 0.2333
-  EXPECT_DOUBLE_EQ(niceStep(-3.6e6, -3.5e6), 20000.0); // raw 16 667
+  EXPECT_DOUBLE_EQ(niceStep(0.0, 1.4), 0.25);           // raw 0.2333
+  EXPECT_DOUBLE_EQ(niceStep(-3.6e6, -3.5e6), 20000.0);  // raw 16 667
   EXPECT_EQ(niceStep(1.0, 1.0), 0.0);
   EXPECT_EQ(niceStep(NAN, 1.0), 0.0);
   for (double span : {1e-7, 3e-3, 0.7, 13.0, 4.2e5, 9.9e9}) {
-    const double st = niceStep(0.0, span), m = st / std::pow(10.0, std::floor(std::log10(st) + 1e-12));
-    EXPECT_TRUE(std::abs(m - 1) < 1e-9 || std::abs(m - 2) < 1e-9 || std::abs(m - 2.5) < 1e-9 || std::abs(m - 5) < 1e-9) << span;
+    const double st = niceStep(0.0, span),
+                 m = st / std::pow(10.0, std::floor(std::log10(st) + 1e-12));
+    EXPECT_TRUE(std::abs(m - 1) < 1e-9 || std::abs(m - 2) < 1e-9 || std::abs(m - 2.5) < 1e-9 ||
+                std::abs(m - 5) < 1e-9)
+        << span;
     const auto t = niceTicks(0.0, span);
     EXPECT_GE(t.size(), 3u) << span;
     EXPECT_LE(t.size(), 7u) << span;
@@ -60,7 +63,8 @@ TEST(Ticks, GnuplotCommandsSetTheRangeAndLabelledTicks) {
   EXPECT_EQ(s.find("e+05"), std::string::npos) << s;
   // A degenerate range is widened, never left empty.
   EXPECT_NE(gnuplotTics("x", 5.0, 5.0).find("set xrange [4.99"), std::string::npos);
-  EXPECT_NE(gnuplotTics("x", 5.0, 5.0).find("\"5.000\" 5"), std::string::npos) << gnuplotTics("x", 5.0, 5.0);
+  EXPECT_NE(gnuplotTics("x", 5.0, 5.0).find("\"5.000\" 5"), std::string::npos)
+      << gnuplotTics("x", 5.0, 5.0);
   EXPECT_EQ(dtwin::report::axisLabel("tire.stiffness", "N/m"), "tire.stiffness [N/m]");
   EXPECT_EQ(dtwin::report::axisLabel("ratio", "1"), "ratio");
 }

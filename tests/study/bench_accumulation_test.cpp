@@ -19,7 +19,8 @@ TEST(AccumulationModel, NodeCountsAreTheTreesOwn) {
           leaf.add(Eigen::VectorXd::Constant(1, static_cast<double>(i)));
           t.pushLeaf(std::move(leaf));
         }
-        ASSERT_EQ(classify::MomentTree::nodeCount(n, a, b), static_cast<long>(t.nodes().size())) << n << " leaves, [" << a << ", " << b << ")";
+        ASSERT_EQ(classify::MomentTree::nodeCount(n, a, b), static_cast<long>(t.nodes().size()))
+            << n << " leaves, [" << a << ", " << b << ")";
       }
 }
 
@@ -41,7 +42,8 @@ TEST(AccumulationModel, FreeCommunicationAndEvenLeavesGiveTheIdealSpeedUp) {
     EXPECT_EQ(r.combine_s, 0.0);
   }
   // The earlier scheme adds every vector on every rank: its wall never falls below that.
-  EXPECT_GE(modelSynthesisWall(c, 64).ordered_wall_s, static_cast<double>(c.draws * c.roads) * c.add_per_vector_s);
+  EXPECT_GE(modelSynthesisWall(c, 64).ordered_wall_s,
+            static_cast<double>(c.draws * c.roads) * c.add_per_vector_s);
 }
 
 TEST(AccumulationModel, MergesAndTransfersCostTheCombination) {

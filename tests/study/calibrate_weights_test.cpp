@@ -13,11 +13,13 @@ using namespace dtwin;
 namespace {
 Study twoSensorStudy(const std::string& name) {
   const auto dir = dtwin_test::freshDir(name);
-  return loadStudy(dtwin_test::writeDemoStudy(dir / "study.toml",
-                                              "lab_repetitions = 2\n[sensors.seat]\nquantity = \"acceleration_z\"\n"
-                                              "noise_sd = 0.03\n[sensors.pot]\nbody = \"wheel_fl\"\nquantity = \"travel\"\n"
-                                              "noise_sd = 5e-5\n[sensors.bare]\nquantity = \"acceleration_z\"\n")
-                       .string());
+  return loadStudy(
+      dtwin_test::writeDemoStudy(
+          dir / "study.toml",
+          "lab_repetitions = 2\n[sensors.seat]\nquantity = \"acceleration_z\"\n"
+          "noise_sd = 0.03\n[sensors.pot]\nbody = \"wheel_fl\"\nquantity = \"travel\"\n"
+          "noise_sd = 5e-5\n[sensors.bare]\nquantity = \"acceleration_z\"\n")
+          .string());
 }
 
 LabData records(const std::vector<std::string>& channels) {
@@ -35,15 +37,18 @@ TEST(CalibrateWeights, ChannelsOfDifferentUnitsAreWeighedByTheirNoise) {
   EXPECT_DOUBLE_EQ(w.at("seat_mps2"), 1.0 / (0.03 * 0.03));
   EXPECT_DOUBLE_EQ(w.at("pot_m"), 1.0 / (5e-5 * 5e-5));
   // A force channel with one repetition, beside another unit, takes the study's [noise] variance.
-  const auto f = channelWeights(s, {"drive.csv", "diag_rough", records({"seat_mps2", "hub_force_fl_N"})});
+  const auto f =
+      channelWeights(s, {"drive.csv", "diag_rough", records({"seat_mps2", "hub_force_fl_N"})});
   EXPECT_DOUBLE_EQ(f.at("hub_force_fl_N"), 1.0 / s.noise_variance_N2);
 }
 
 TEST(CalibrateWeights, OneChannelOrForcesAloneStayUnweighted) {
   const Study s = twoSensorStudy("calw_one");
   EXPECT_TRUE(channelWeights(s, {"lab.csv", "diag_rough", records({"seat_mps2"})}).empty());
-  // Hub forces alone share the study's one [noise] variance: unweighted, as the lab calibration was.
-  EXPECT_TRUE(channelWeights(s, {"lab.csv", "lab", records({"hub_force_fl_N", "hub_force_fr_N"})}).empty());
+  // Hub forces alone share the study's one [noise] variance: unweighted, as the lab calibration
+  // was.
+  EXPECT_TRUE(
+      channelWeights(s, {"lab.csv", "lab", records({"hub_force_fl_N", "hub_force_fr_N"})}).empty());
 }
 
 TEST(CalibrateWeights, AChannelWithNoNoiseIsAOneLineErrorNamingIt) {

@@ -24,9 +24,11 @@ dtwin_test::TwinRun twin(const std::string& args) { return dtwin_test::runTwin(a
 /// The demo study with its vehicle file by absolute path and suspension.damping's truth `damping`.
 fs::path study(const std::string& name, const std::string& damping) {
   std::string s = dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "data/studies/demo.toml");
-  s = std::regex_replace(s, std::regex(R"(vehicle = "\.\./vehicle/)"), std::string("vehicle = \"") + DTWIN_SOURCE_DIR + "/data/vehicle/");
+  s = std::regex_replace(s, std::regex(R"(vehicle = "\.\./vehicle/)"),
+                         std::string("vehicle = \"") + DTWIN_SOURCE_DIR + "/data/vehicle/");
   const auto at = s.find("truth = 2500.0", s.find("name = \"suspension.damping\""));
-  if (at != std::string::npos) s.replace(at, std::string("truth = 2500.0").size(), "truth = " + damping);
+  if (at != std::string::npos)
+    s.replace(at, std::string("truth = 2500.0").size(), "truth = " + damping);
   const fs::path p = kTmp() / name;
   std::ofstream(p) << s;
   return p;
@@ -42,15 +44,24 @@ TEST(ChangesCli, AWornDamperIsNamedFirstAndNothingElseChanged) {
   const std::string d = kTmp().string();
   // The hub forces on the diag_bump scenario, every 5 ms, three repetitions; the sidecar names the
   // scenario, which `twin calibrate --data FILE` takes from it.
-  const std::string lab = " --scenario diag_bump --times all --rate 200 --repetitions 3 "
-                          "--channels hub_force_fl_N,hub_force_fr_N,hub_force_rl_N,hub_force_rr_N";
-  ASSERT_EQ(twin("generate lab --quiet --study " + s1.string() + lab + " --seed 11 --out " + d + "/lab1.csv").code, 0);
-  ASSERT_EQ(twin("generate lab --quiet --study " + s2.string() + lab + " --seed 12 --out " + d + "/lab2.csv").code, 0);
+  const std::string lab =
+      " --scenario diag_bump --times all --rate 200 --repetitions 3 "
+      "--channels hub_force_fl_N,hub_force_fr_N,hub_force_rl_N,hub_force_rr_N";
+  ASSERT_EQ(twin("generate lab --quiet --study " + s1.string() + lab + " --seed 11 --out " + d +
+                 "/lab1.csv")
+                .code,
+            0);
+  ASSERT_EQ(twin("generate lab --quiet --study " + s2.string() + lab + " --seed 12 --out " + d +
+                 "/lab2.csv")
+                .code,
+            0);
   for (const char* k : {"1", "2"}) {
-    const auto r = twin("calibrate --quiet --study " + s1.string() + " --assembly M1 --data " + d + "/lab" + k + ".csv --out " + d + "/cal" + k);
+    const auto r = twin("calibrate --quiet --study " + s1.string() + " --assembly M1 --data " + d +
+                        "/lab" + k + ".csv --out " + d + "/cal" + k);
     ASSERT_EQ(r.code, 0) << r.err;
   }
-  const auto r = twin("changes --before " + d + "/cal1/M1 --after " + d + "/cal2/M1 --out " + d + "/changes");
+  const auto r =
+      twin("changes --before " + d + "/cal1/M1 --after " + d + "/cal2/M1 --out " + d + "/changes");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 of 4 values changed significantly"), std::string::npos) << r.out;
   const auto j = nlohmann::json::parse(dtwin_test::slurp(kTmp() / "changes/changes.json"));
@@ -60,7 +71,8 @@ TEST(ChangesCli, AWornDamperIsNamedFirstAndNothingElseChanged) {
   EXPECT_EQ(j["changes"][0]["kind"], "ratio");
   EXPECT_LE(j["changes"][0]["ci95"][0].get<double>(), 0.55) << r.out;
   EXPECT_GE(j["changes"][0]["ci95"][1].get<double>(), 0.55) << r.out;
-  for (std::size_t i = 1; i < j["changes"].size(); ++i) EXPECT_EQ(j["changes"][i]["significant"], false) << j["changes"][i]["sentence"];
+  for (std::size_t i = 1; i < j["changes"].size(); ++i)
+    EXPECT_EQ(j["changes"][i]["significant"], false) << j["changes"][i]["sentence"];
   const std::string page = dtwin_test::slurp(kTmp() / "changes/changes.html");
   EXPECT_NE(page.find("suspension.damping"), std::string::npos);
   EXPECT_NE(page.find("<b>1 of 4</b>"), std::string::npos);
@@ -76,24 +88,31 @@ TEST(ChangesCli, OneWornDamperIsNamedFirstWithItsCorner) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::string text = dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "data/studies/demo.toml");
-  text = std::regex_replace(text, std::regex(R"(vehicle = "\.\./vehicle/)"), std::string("vehicle = \"") + DTWIN_SOURCE_DIR + "/data/vehicle/");
+  text = std::regex_replace(text, std::regex(R"(vehicle = "\.\./vehicle/)"),
+                            std::string("vehicle = \"") + DTWIN_SOURCE_DIR + "/data/vehicle/");
   const fs::path s = dir / "corner.toml";
   std::ofstream(s) << text;
   const auto twin = [&](const std::string& args) { return dtwin_test::runTwin(args, dir); };
   const std::string d = dir.string();
-  const std::string lab = " --scenario diag_bump --times all --rate 200 --repetitions 3 "
-                          "--channels hub_force_fl_N,hub_force_fr_N,hub_force_rl_N,hub_force_rr_N";
-  ASSERT_EQ(twin("generate lab --quiet --study " + s.string() + lab + " --seed 11 --out " + d + "/lab1.csv").code, 0);
-  ASSERT_EQ(twin("generate lab --quiet --study " + s.string() + lab + " --seed 12 --hidden-value suspension.damping@rr=0.55 --out " + d +
-                 "/lab2.csv")
+  const std::string lab =
+      " --scenario diag_bump --times all --rate 200 --repetitions 3 "
+      "--channels hub_force_fl_N,hub_force_fr_N,hub_force_rl_N,hub_force_rr_N";
+  ASSERT_EQ(twin("generate lab --quiet --study " + s.string() + lab + " --seed 11 --out " + d +
+                 "/lab1.csv")
+                .code,
+            0);
+  ASSERT_EQ(twin("generate lab --quiet --study " + s.string() + lab +
+                 " --seed 12 --hidden-value suspension.damping@rr=0.55 --out " + d + "/lab2.csv")
                 .code,
             0);
   for (const char* k : {"1", "2"}) {
-    const auto r = twin("calibrate --quiet --study " + s.string() + " --assembly M1 --free suspension.damping@rr --data " + d + "/lab" + k +
+    const auto r = twin("calibrate --quiet --study " + s.string() +
+                        " --assembly M1 --free suspension.damping@rr --data " + d + "/lab" + k +
                         ".csv --out " + d + "/cal" + k);
     ASSERT_EQ(r.code, 0) << r.err;
   }
-  const auto r = twin("changes --before " + d + "/cal1/M1 --after " + d + "/cal2/M1 --out " + d + "/changes");
+  const auto r =
+      twin("changes --before " + d + "/cal1/M1 --after " + d + "/cal2/M1 --out " + d + "/changes");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 of 5 values changed significantly"), std::string::npos) << r.out;
   const auto j = nlohmann::json::parse(dtwin_test::slurp(dir / "changes/changes.json"));
@@ -102,7 +121,8 @@ TEST(ChangesCli, OneWornDamperIsNamedFirstWithItsCorner) {
   EXPECT_EQ(j["changes"][0]["significant"], true) << r.out;
   EXPECT_LE(j["changes"][0]["ci95"][0].get<double>(), 0.55) << r.out;
   EXPECT_GE(j["changes"][0]["ci95"][1].get<double>(), 0.55) << r.out;
-  for (std::size_t i = 1; i < j["changes"].size(); ++i) EXPECT_EQ(j["changes"][i]["significant"], false) << j["changes"][i]["sentence"];
+  for (std::size_t i = 1; i < j["changes"].size(); ++i)
+    EXPECT_EQ(j["changes"][i]["significant"], false) << j["changes"][i]["sentence"];
   // The calibration records the freed value in its setup.
   const auto summary = nlohmann::json::parse(dtwin_test::slurp(dir / "cal1/M1/summary.json"));
   EXPECT_NE(summary.dump().find("suspension.damping@rr"), std::string::npos);
@@ -111,7 +131,8 @@ TEST(ChangesCli, OneWornDamperIsNamedFirstWithItsCorner) {
 
 TEST(ChangesCli, AMissingFolderIsOneLineAndExitCodeTwo) {
   fs::create_directories(kTmp());
-  const auto r = twin("changes --before " + (kTmp() / "nosuch").string() + " --after " + (kTmp() / "nosuch2").string());
+  const auto r = twin("changes --before " + (kTmp() / "nosuch").string() + " --after " +
+                      (kTmp() / "nosuch2").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("nosuch"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

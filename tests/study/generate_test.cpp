@@ -10,10 +10,10 @@
 #include <map>
 #include <set>
 
-#include "shipped_study.hpp"
 #include "common/errors.hpp"
-#include "study/generate.hpp"
 #include "common/parallel.hpp"
+#include "shipped_study.hpp"
+#include "study/generate.hpp"
 #include "twin/simulator.hpp"
 
 using namespace dtwin;
@@ -30,7 +30,8 @@ std::string readFile(const std::string& p) {
 std::string demoWith(const std::string& name, const std::string& extra) {
   std::string text = readFile(kSrc + "/data/studies/demo.toml");
   const std::string veh = "vehicle = \"../vehicle/midsize_sedan.toml\"";
-  text.replace(text.find(veh), veh.size(), "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
+  text.replace(text.find(veh), veh.size(),
+               "vehicle = \"" + kSrc + "/data/vehicle/midsize_sedan.toml\"");
   const std::string path = ::testing::TempDir() + "/" + name + ".toml";
   std::ofstream(path) << text << "\n" << extra;
   return path;
@@ -86,11 +87,16 @@ TEST(AutomaticTimes, RankedSeparatedExtremaInTimeOrder) {
   for (std::size_t k = 499; k <= 511; ++k) x[k] = -2.0;
   for (std::size_t k = 500; k <= 510; ++k) x[k] = -4.0;
   const Trace t = syntheticTrace(x);
-  EXPECT_EQ(automaticLabTimes(t, "hub_force_fl_N", 0.08, 3, 0.02), (std::vector<double>{0.11, 0.3, 0.505}));
-  EXPECT_EQ(automaticLabTimes(t, "hub_force_fl_N", 0.08, 2, 0.02), (std::vector<double>{0.11, 0.505}));
-  EXPECT_EQ(automaticLabTimes(t, "hub_force_fl_N", 0.08, 10, 0.0), (std::vector<double>{0.1, 0.11, 0.3, 0.505}));
+  EXPECT_EQ(automaticLabTimes(t, "hub_force_fl_N", 0.08, 3, 0.02),
+            (std::vector<double>{0.11, 0.3, 0.505}));
+  EXPECT_EQ(automaticLabTimes(t, "hub_force_fl_N", 0.08, 2, 0.02),
+            (std::vector<double>{0.11, 0.505}));
+  EXPECT_EQ(automaticLabTimes(t, "hub_force_fl_N", 0.08, 10, 0.0),
+            (std::vector<double>{0.1, 0.11, 0.3, 0.505}));
   EXPECT_EQ(automaticLabTimes(t, "hub_force_fl_N", 0.0, 1, 0.02), (std::vector<double>{0.05}));
-  EXPECT_TRUE(automaticLabTimes(syntheticTrace(std::vector<double>(100, 1.0)), "hub_force_fl_N", 0.0, 5, 0.02).empty());
+  EXPECT_TRUE(automaticLabTimes(syntheticTrace(std::vector<double>(100, 1.0)), "hub_force_fl_N",
+                                0.0, 5, 0.02)
+                  .empty());
 }
 
 TEST(GenerateLab, AutomaticTimesAreSeparatedExtremaOfTheNoiseFreeResponse) {
@@ -156,7 +162,8 @@ TEST(GenerateLab, NoiseHasTheStudyVariance) {
   LabOptions few = opt;
   few.repetitions = 3;
   const LabResult r3 = generateLab(s, s.assemblies().front(), few);
-  for (std::size_t i = 0; i < r3.data.records.size(); ++i) EXPECT_EQ(r3.data.records[i].value, r.data.records[i].value);
+  for (std::size_t i = 0; i < r3.data.records.size(); ++i)
+    EXPECT_EQ(r3.data.records[i].value, r.data.records[i].value);
   few.seed = 7;
   const LabResult r7 = generateLab(s, s.assemblies().front(), few);
   EXPECT_NE(r7.data.records[0].value, r3.data.records[0].value);
@@ -164,7 +171,9 @@ TEST(GenerateLab, NoiseHasTheStudyVariance) {
 }
 
 TEST(GenerateLab, StudyChoosesTimesAndChannels) {
-  const Study s = loadStudy(demoWith("lab_explicit", "[lab]\ntimes_s = [6.1, 6.25, 7.0]\nchannels = [\"hub_force_fl_N\", \"susp_defl_fl_m\"]\n"));
+  const Study s = loadStudy(demoWith(
+      "lab_explicit",
+      "[lab]\ntimes_s = [6.1, 6.25, 7.0]\nchannels = [\"hub_force_fl_N\", \"susp_defl_fl_m\"]\n"));
   LabOptions opt;
   opt.repetitions = 2;
   const LabResult r = generateLab(s, s.assembly("M3"), opt);
@@ -181,7 +190,8 @@ TEST(GenerateLab, StudyChoosesTimesAndChannels) {
   EXPECT_EQ(r.provenance["assembly"]["id"], "M3");
   EXPECT_EQ(r.provenance["lab"]["times"]["source"], "explicit");
 
-  const Study a = loadStudy(demoWith("lab_auto3", "[lab]\nauto_times = 3\nmin_separation_s = 0.1\n"));
+  const Study a =
+      loadStudy(demoWith("lab_auto3", "[lab]\nauto_times = 3\nmin_separation_s = 0.1\n"));
   const LabResult r3 = generateLab(a, a.assemblies().front(), opt);
   ASSERT_EQ(r3.times_s.size(), 3u);
   EXPECT_GE(r3.times_s[1] - r3.times_s[0], 0.1 - 1e-9);
@@ -194,12 +204,16 @@ TEST(GenerateLab, BadLabTablesAreInputErrors) {
   };
   const std::vector<Case> cases = {
       {"[lab]\ntime_s = [6.1]\n", "lab.time_s: unknown field (did you mean 'times_s'?)"},
-      {"[lab]\nchannels = [\"hub_force_lf_N\"]\n", "lab.channels: unknown channel 'hub_force_lf_N'"},
-      {"[lab]\nchannels = [\"susp_defl_fl_m\", \"susp_defl_fl_m\"]\n", "channel 'susp_defl_fl_m' listed twice"},
-      {"[lab]\ntimes_s = [6.1, 6.0]\n", "lab.times_s: element 1 (6.000000) must be greater than the one before it"},
+      {"[lab]\nchannels = [\"hub_force_lf_N\"]\n",
+       "lab.channels: unknown channel 'hub_force_lf_N'"},
+      {"[lab]\nchannels = [\"susp_defl_fl_m\", \"susp_defl_fl_m\"]\n",
+       "channel 'susp_defl_fl_m' listed twice"},
+      {"[lab]\ntimes_s = [6.1, 6.0]\n",
+       "lab.times_s: element 1 (6.000000) must be greater than the one before it"},
       {"[lab]\ntimes_s = [6.1005]\n", "is not on the output grid"},
       {"[lab]\ntimes_s = []\n", "must list at least one time"},
-      {"[lab]\ntimes_s = [6.1]\nauto_times = 3\n", "lab.auto_times: give either times_s or auto_times, not both"},
+      {"[lab]\ntimes_s = [6.1]\nauto_times = 3\n",
+       "lab.auto_times: give either times_s or auto_times, not both"},
       {"[lab]\nauto_times = 0\n", "lab.auto_times: must be a positive integer, got 0"},
       {"[lab]\nauto_times = 2.5\n", "lab.auto_times: must be an integer"},
   };
@@ -215,7 +229,10 @@ TEST(GenerateLab, BadLabTablesAreInputErrors) {
     generateLab(s, s.assemblies().front());
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("lab.times_s[0]: 16 s lies outside the scenario (0 .. 15 s)"), std::string::npos) << e.what();
+    EXPECT_NE(
+        std::string(e.what()).find("lab.times_s[0]: 16 s lies outside the scenario (0 .. 15 s)"),
+        std::string::npos)
+        << e.what();
   }
 }
 
@@ -224,11 +241,14 @@ TEST(GenerateField, SameBytesWithOneOrTwoThreadsAndARoadPerRun) {
   opt.runs = 4;
   opt.threads = 1;
   std::vector<std::pair<std::size_t, std::size_t>> calls;
-  const FieldResult one = generateField(demo(), demo().assemblies().front(), opt,
-                                        [&](std::size_t d, std::size_t n) { calls.push_back({d, n}); });
+  const FieldResult one =
+      generateField(demo(), demo().assemblies().front(), opt, [&](std::size_t d, std::size_t n) {
+        calls.push_back({d, n});
+      });
   opt.threads = 2;
   const FieldResult two = generateField(demo(), demo().assemblies().front(), opt);
-  EXPECT_EQ(fieldCsvText(one.data), fieldCsvText(two.data)) << "byte-identical whatever the thread count";
+  EXPECT_EQ(fieldCsvText(one.data), fieldCsvText(two.data))
+      << "byte-identical whatever the thread count";
   EXPECT_EQ(two.provenance["field"]["threads"], 2);
   ASSERT_EQ(calls.size(), 5u);
   EXPECT_EQ(calls.back(), (std::pair<std::size_t, std::size_t>{4, 4}));
@@ -246,7 +266,8 @@ TEST(GenerateField, SameBytesWithOneOrTwoThreadsAndARoadPerRun) {
     EXPECT_LT(d.road_seeds[i], 1ULL << 53);
   }
   double diff = 0;
-  for (std::size_t k = 0; k < d.columnCount(); ++k) diff = std::max(diff, std::abs(d.at(0, k) - d.at(1, k)));
+  for (std::size_t k = 0; k < d.columnCount(); ++k)
+    diff = std::max(diff, std::abs(d.at(0, k) - d.at(1, k)));
   EXPECT_GT(diff, 1000.0) << "class-D roads give different forces";
   EXPECT_EQ(one.provenance["field"]["per_run"][2]["road_seed"], d.road_seeds[2]);
 }
@@ -263,9 +284,11 @@ TEST(GenerateField, SmoothPartIsCommonAndNoiseHasTheStudyVariance) {
   // The road is flat until the front axle reaches it at 6 s. The integrator lands on a knot at
   // 6 s - obstacle_margin_before_s (5.98 s) and never evaluates beyond it before, so samples up
   // to 5.98 s are bit-identical.
-  for (std::size_t k = 0; k <= 5980; ++k) ASSERT_EQ(c.at(0, k), c.at(1, k)) << "t = " << c.times_s[k];
+  for (std::size_t k = 0; k <= 5980; ++k)
+    ASSERT_EQ(c.at(0, k), c.at(1, k)) << "t = " << c.times_s[k];
   double diff = 0;
-  for (std::size_t k = 6500; k < c.columnCount(); ++k) diff = std::max(diff, std::abs(c.at(0, k) - c.at(1, k)));
+  for (std::size_t k = 6500; k < c.columnCount(); ++k)
+    diff = std::max(diff, std::abs(c.at(0, k) - c.at(1, k)));
   EXPECT_GT(diff, 1000.0);
 
   opt.noise_variance_N2.reset();
@@ -295,8 +318,13 @@ TEST(GenerateField, FailedRunIsReportedWithItsSeed) {
     EXPECT_EQ(e.run(), 1u) << "the lowest failing run, whatever the thread count";
     EXPECT_EQ(e.seed(), fieldRoadSeed(s.seed, 1));
     const std::string w = e.what();
-    EXPECT_NE(w.find("field run 1 of 3 (road seed " + std::to_string(e.seed()) + ") failed: "), std::string::npos) << w;
-    EXPECT_NE(w.find("twin simulate --assembly M1 --scenario field --seed " + std::to_string(e.seed())), std::string::npos) << w;
+    EXPECT_NE(w.find("field run 1 of 3 (road seed " + std::to_string(e.seed()) + ") failed: "),
+              std::string::npos)
+        << w;
+    EXPECT_NE(
+        w.find("twin simulate --assembly M1 --scenario field --seed " + std::to_string(e.seed())),
+        std::string::npos)
+        << w;
   }
   FieldOptions bad;
   bad.runs = 1;
@@ -333,7 +361,9 @@ TEST(ParallelFor, EveryIndexOnceAndLowestErrorRethrown) {
 // --- hidden effects and dense lab data (diagnosis) ---
 
 namespace {
-EffectSetting hidden(const std::string& text) { return parseEffectSetting(text, "--hidden-effect", EffectCatalog{}); }
+EffectSetting hidden(const std::string& text) {
+  return parseEffectSetting(text, "--hidden-effect", EffectCatalog{});
+}
 
 LabOptions denseBump() {
   LabOptions opt;
@@ -380,7 +410,8 @@ TEST(GenerateLabHidden, BumpStopChangesTheBumpAndNothingBefore) {
   EXPECT_GT(t_peak, 1.0);
   EXPECT_LT(t_peak, 2.2);
   EXPECT_GT(d0[k_peak], 0.025) << "the stop (gap 0.02 m) is engaged at the peak";
-  EXPECT_GT(std::abs(f1[k_peak] - f0[k_peak]), 10.0) << "base " << f0[k_peak] << " N, hidden " << f1[k_peak] << " N";
+  EXPECT_GT(std::abs(f1[k_peak] - f0[k_peak]), 10.0)
+      << "base " << f0[k_peak] << " N, hidden " << f1[k_peak] << " N";
   EXPECT_NE(hid.noise_free.column("susp_defl_fl_m")[k_peak], d0[k_peak]);
   for (std::size_t i = 0; i < base.data.records.size(); ++i) {
     if (base.data.records[i].time_s == t_peak) {
@@ -388,7 +419,8 @@ TEST(GenerateLabHidden, BumpStopChangesTheBumpAndNothingBefore) {
     }
   }
   double max_diff = 0;
-  for (std::size_t k = 0; k < f0.size(); ++k) max_diff = std::max(max_diff, std::abs(f1[k] - f0[k]));
+  for (std::size_t k = 0; k < f0.size(); ++k)
+    max_diff = std::max(max_diff, std::abs(f1[k] - f0[k]));
   EXPECT_GT(max_diff, 30.0);
 
   // The sidecar records every parameter of the hidden effect with the value used.
@@ -397,8 +429,10 @@ TEST(GenerateLabHidden, BumpStopChangesTheBumpAndNothingBefore) {
   EXPECT_EQ(h[0]["name"], "bump_stop");
   EXPECT_EQ(h[0]["parameters"]["stiffness"].get<double>(), 2e6);
   EXPECT_EQ(h[0]["parameters"]["gap_m"].get<double>(), 0.02);
-  EXPECT_EQ(h[0]["parameters"]["exponent"].get<double>(), 2.0) << "the default of a parameter not given";
-  EXPECT_EQ(hiddenEffectsSummary(h, EffectCatalog{}), "bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)");
+  EXPECT_EQ(h[0]["parameters"]["exponent"].get<double>(), 2.0)
+      << "the default of a parameter not given";
+  EXPECT_EQ(hiddenEffectsSummary(h, EffectCatalog{}),
+            "bump_stop (exponent=2, gap_m=0.02 m, stiffness=2e+06 N/m^n)");
 }
 
 TEST(GenerateLabHidden, EffectAtItsOffValuesGivesTheBaseDataBitForBit) {
@@ -432,21 +466,25 @@ TEST(GenerateLabDense, WindowAndRateGiveEveryDecimatedSample) {
   std::map<std::pair<long, std::string>, std::vector<double>> times;
   for (const auto& rec : r.data.records) times[{rec.repetition, rec.channel}].push_back(rec.time_s);
   ASSERT_EQ(times.size(), 3u * 2u);
-  for (const auto& [key, t] : times) EXPECT_EQ(t, expected) << "repetition " << key.first << " " << key.second;
+  for (const auto& [key, t] : times)
+    EXPECT_EQ(t, expected) << "repetition " << key.first << " " << key.second;
   // Noise on the channel in N only; the values are the noise-free samples at those times.
   const auto& defl = r.noise_free.column("susp_defl_fl_m");
   const auto& force = r.noise_free.column("hub_force_fl_N");
   int noisy = 0;
   for (const auto& rec : r.data.records) {
     const auto k = static_cast<std::size_t>(std::llround(rec.time_s * 1000.0));
-    if (rec.channel == "susp_defl_fl_m") EXPECT_EQ(rec.value, defl[k]);
-    else noisy += rec.value != force[k];
+    if (rec.channel == "susp_defl_fl_m")
+      EXPECT_EQ(rec.value, defl[k]);
+    else
+      noisy += rec.value != force[k];
   }
   EXPECT_EQ(noisy, 3 * 61);
   const auto& tj = r.provenance["lab"]["times"];
   EXPECT_EQ(tj["source"], "all");
   EXPECT_EQ(r.times_rule, "all samples in [0.9,1.2] at 200 Hz");
-  EXPECT_NE(tj["rule"].get<std::string>().find("all samples in [0.9,1.2] at 200 Hz"), std::string::npos);
+  EXPECT_NE(tj["rule"].get<std::string>().find("all samples in [0.9,1.2] at 200 Hz"),
+            std::string::npos);
   EXPECT_EQ(tj["step"], 5);
   EXPECT_EQ(tj["count"], 61);
   EXPECT_EQ(r.provenance["lab"]["channels"].size(), 2u);
@@ -470,20 +508,33 @@ TEST(GenerateLabDense, BadSettingsNameTheField) {
     std::string expect;
   };
   const std::vector<Case> cases = {
-      {[](LabOptions& o) { o.rate_hz = 300.0; }, "lab.rate_hz: must divide the output rate 1000 Hz into an integer step"},
+      {[](LabOptions& o) { o.rate_hz = 300.0; },
+       "lab.rate_hz: must divide the output rate 1000 Hz into an integer step"},
       {[](LabOptions& o) { o.rate_hz = 2000.0; }, "lab.rate_hz: must divide"},
       {[](LabOptions& o) { o.rate_hz = -5.0; }, "lab.rate_hz: must divide"},
-      {[](LabOptions& o) { o.window = std::make_pair(1.2, 0.9); }, "lab.window: expects T0,T1 with T0 < T1"},
-      {[](LabOptions& o) { o.window = std::make_pair(0.0, 9.0); }, "lab.window: 0 .. 9 s lies outside the scenario 'diag_bump'"},
+      {[](LabOptions& o) { o.window = std::make_pair(1.2, 0.9); },
+       "lab.window: expects T0,T1 with T0 < T1"},
+      {[](LabOptions& o) { o.window = std::make_pair(0.0, 9.0); },
+       "lab.window: 0 .. 9 s lies outside the scenario 'diag_bump'"},
       {[](LabOptions& o) { o.channels = {"hub_force_fl_kN"}; }, "lab.channels: wrong unit suffix"},
-      {[](LabOptions& o) { o.channels = {"susp_defl_fl_m", "susp_defl_fl_m"}; }, "lab.channels: channel 'susp_defl_fl_m' listed twice"},
-      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.rate_hz = 200.0; }, "lab.rate_hz: needs every sample kept (times mode all)"},
-      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.window = std::make_pair(0.9, 1.2); }, "lab.window: needs every sample kept (times mode all)"},
-      {[](LabOptions& o) { o.hidden_effects = {EffectSetting{"bump_stop", {}}, EffectSetting{"bump_stop", {}}}; },
+      {[](LabOptions& o) {
+         o.channels = {"susp_defl_fl_m", "susp_defl_fl_m"};
+       },
+       "lab.channels: channel 'susp_defl_fl_m' listed twice"},
+      {[](LabOptions& o) { o.times_mode = LabTimesMode::Study, o.rate_hz = 200.0; },
+       "lab.rate_hz: needs every sample kept (times mode all)"},
+      {[](LabOptions& o) {
+         o.times_mode = LabTimesMode::Study, o.window = std::make_pair(0.9, 1.2);
+       },
+       "lab.window: needs every sample kept (times mode all)"},
+      {[](LabOptions& o) {
+         o.hidden_effects = {EffectSetting{"bump_stop", {}}, EffectSetting{"bump_stop", {}}};
+       },
        "lab.hidden_effects: effect bump_stop given twice"},
       {[](LabOptions& o) { o.hidden_effects = {hidden("bump_stop:stiffnes=1")}; },
        "--hidden-effect stiffnes: unknown parameter 'bump_stop.stiffnes'"},
-      {[](LabOptions& o) { o.hidden_effects = {hidden("bump_stop:gap_m=-1")}; }, "--hidden-effect gap_m: bump_stop.gap_m"},
+      {[](LabOptions& o) { o.hidden_effects = {hidden("bump_stop:gap_m=-1")}; },
+       "--hidden-effect gap_m: bump_stop.gap_m"},
   };
   for (const auto& c : cases) {
     LabOptions o = denseBump();
@@ -512,7 +563,8 @@ TEST(GenerateFieldHidden, HiddenEffectChangesFieldData) {
   ASSERT_EQ(base.data.values.size(), hid.data.values.size());
   EXPECT_EQ(base.data.road_seeds, hid.data.road_seeds) << "the same roads";
   double diff = 0;
-  for (std::size_t i = 0; i < base.data.values.size(); ++i) diff = std::max(diff, std::abs(base.data.values[i] - hid.data.values[i]));
+  for (std::size_t i = 0; i < base.data.values.size(); ++i)
+    diff = std::max(diff, std::abs(base.data.values[i] - hid.data.values[i]));
   EXPECT_GT(diff, 200.0) << "rebound damping x2.5 on a class-C road";
   ASSERT_TRUE(hid.provenance.contains("hidden_effects"));
   EXPECT_EQ(hid.provenance["hidden_effects"][0]["name"], "damper_asymmetry");
@@ -538,7 +590,8 @@ TEST(GenerateLabDense, TwoScenariosWithOneSeedHaveIndependentNoise) {
     const auto& t = r.noise_free.column("time_s");
     std::vector<double> e;
     for (const auto& rec : r.data.records) {
-      const auto k = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), rec.time_s - 1e-9) - t.begin());
+      const auto k = static_cast<std::size_t>(
+          std::lower_bound(t.begin(), t.end(), rec.time_s - 1e-9) - t.begin());
       ASSERT_LT(k, t.size());
       e.push_back(rec.value - clean[k]);
     }
@@ -553,5 +606,6 @@ TEST(GenerateLabDense, TwoScenariosWithOneSeedHaveIndependentNoise) {
   }
   // 601 samples each: the correlation of independent sequences has sd 0.04.
   EXPECT_LT(std::abs(sab / std::sqrt(saa * sbb)), 0.2);
-  EXPECT_NEAR(std::sqrt(saa / static_cast<double>(noise[0].size())), std::sqrt(s.noise_variance_N2), 0.1 * std::sqrt(s.noise_variance_N2));
+  EXPECT_NEAR(std::sqrt(saa / static_cast<double>(noise[0].size())), std::sqrt(s.noise_variance_N2),
+              0.1 * std::sqrt(s.noise_variance_N2));
 }

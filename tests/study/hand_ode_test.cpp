@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "common/errors.hpp"
-#include "test_util.hpp"
-#include "study/hand_ode.hpp"
-#include "twin/simulator.hpp"
 #include "io/study.hpp"
+#include "study/hand_ode.hpp"
+#include "test_util.hpp"
+#include "twin/simulator.hpp"
 
 using namespace dtwin;
 
@@ -18,7 +18,8 @@ namespace {
 const Study& demoStudy() {
   static const Study s = [] {
     const auto dir = dtwin_test::freshDir("hand_ode_test");
-    return loadStudy(dtwin_test::writeDemoStudy(dir / "study.toml", "lab_repetitions = 2\n").string());
+    return loadStudy(
+        dtwin_test::writeDemoStudy(dir / "study.toml", "lab_repetitions = 2\n").string());
   }();
   return s;
 }
@@ -26,7 +27,8 @@ const Study& demoStudy() {
 /// 1 + 4 per accepted step + 3 per rejected one + n per Jacobian: the cost model both integrators
 /// state (twin/rosenbrock.hpp), which `twin bench --hand-ode` uses to count the Simbody run's.
 void expectCostModel(const Ros34pw2Stepper& st, long n) {
-  EXPECT_EQ(st.evaluations(), 1 + 4 * st.steps() + 3 * (st.attempts() - st.steps()) + n * st.jacobians());
+  EXPECT_EQ(st.evaluations(),
+            1 + 4 * st.steps() + 3 * (st.attempts() - st.steps()) + n * st.jacobians());
 }
 
 }  // namespace
@@ -38,14 +40,16 @@ TEST(HandOdeStepper, StiffDecayMatchesTheClosedForm) {
   RosenbrockOptions o;
   o.accuracy = acc;
   o.max_step_s = 1.0;
-  Ros34pw2Stepper st([k](double, const Eigen::VectorXd& y, Eigen::VectorXd& yd) { yd = -k * y; }, o);
+  Ros34pw2Stepper st([k](double, const Eigen::VectorXd& y, Eigen::VectorXd& yd) { yd = -k * y; },
+                     o);
   st.initialize(0.0, Eigen::VectorXd::Constant(1, 1.0));
   double worst = 0;
   for (double t_out : {1e-4, 2e-4, 5e-4, 1e-3, 1e-2, 1.0, 10.0}) {
     while (st.time() < t_out) st.step(t_out);
     worst = std::max(worst, std::abs(st.state()[0] - std::exp(-k * t_out)));
   }
-  std::printf("y' = -1e4 y to 10 s: %ld steps (%ld attempts), worst error %.2e (accuracy %.0e)\n", st.steps(), st.attempts(), worst, acc);
+  std::printf("y' = -1e4 y to 10 s: %ld steps (%ld attempts), worst error %.2e (accuracy %.0e)\n",
+              st.steps(), st.attempts(), worst, acc);
   // The absolute tolerance is accuracy x 1 (unit 1): the global error stays within it.
   EXPECT_LT(worst, acc);
   EXPECT_LT(st.steps(), 200);
@@ -76,7 +80,8 @@ TEST(HandOdeStepper, HarmonicOscillatorMatchesTheClosedForm) {
     worst = std::max(worst, std::abs(st.state()[1] / w + std::sin(w * t_out)));
     EXPECT_LT(worst, 5 * acc * std::ceil(t_out - 1e-9)) << "at t = " << t_out;
   }
-  std::printf("harmonic oscillator, 5 periods: %ld steps, worst error %.2e (accuracy %.0e)\n", st.steps(), worst, acc);
+  std::printf("harmonic oscillator, 5 periods: %ld steps, worst error %.2e (accuracy %.0e)\n",
+              st.steps(), worst, acc);
   EXPECT_GT(st.steps(), 50);  // error-controlled, not the maximum step
   expectCostModel(st, 2);
 }
@@ -102,7 +107,8 @@ TEST(HandOde, AtRestOnAFlatRoadStaysAtTheStaticEquilibrium) {
   const Eigen::VectorXd y = ode.equilibrium();
   Eigen::VectorXd yd(HandOde::kStates);
   ode.rhs(0.0, y, yd);
-  const double k = model->table().value("tire.stiffness"), R0 = model->table().value("tire.unloaded_radius_m");
+  const double k = model->table().value("tire.stiffness"),
+               R0 = model->table().value("tire.unloaded_radius_m");
   for (int c = 0; c < 4; ++c) {
     SCOPED_TRACE(kCornerNames[static_cast<std::size_t>(c)]);
     const HandOde::Hub h = ode.hub(c, y, yd);
@@ -110,16 +116,19 @@ TEST(HandOde, AtRestOnAFlatRoadStaysAtTheStaticEquilibrium) {
     EXPECT_NEAR(ode.tireForce(c, 0.0, h.x, h.z, h.zd), model->staticTireLoad(c), 1e-6);
     EXPECT_DOUBLE_EQ(ode.strutForce(c, y[3 + c], y[10 + c]), model->staticStrutForce(c));
   }
-  std::printf("equilibrium: z %.6f m, roll %.3e, pitch %.3e rad; largest acceleration %.3e\n", y[0], y[1], y[2],
-              yd.tail<HandOde::kDof>().cwiseAbs().maxCoeff());
-  EXPECT_LT(yd.tail<HandOde::kDof>().cwiseAbs().maxCoeff(), 1e-3);  // accelerations [m/s^2, rad/s^2]
+  std::printf("equilibrium: z %.6f m, roll %.3e, pitch %.3e rad; largest acceleration %.3e\n", y[0],
+              y[1], y[2], yd.tail<HandOde::kDof>().cwiseAbs().maxCoeff());
+  EXPECT_LT(yd.tail<HandOde::kDof>().cwiseAbs().maxCoeff(),
+            1e-3);  // accelerations [m/s^2, rad/s^2]
   SimulationOptions o = s.simulation;
   o.accuracy = 1e-8;
   const HandOdeRun run = runHandOde(*model, values, road, sc, o);
   double worst = 0;
   for (std::size_t c = 0; c < 4; ++c)
-    for (double f : run.hub_force_N[c]) worst = std::max(worst, std::abs(f - model->staticTireLoad(static_cast<int>(c))));
-  std::printf("5 s at rest: worst hub force off its static load %.2e N (%ld steps)\n", worst, run.steps);
+    for (double f : run.hub_force_N[c])
+      worst = std::max(worst, std::abs(f - model->staticTireLoad(static_cast<int>(c))));
+  std::printf("5 s at rest: worst hub force off its static load %.2e N (%ld steps)\n", worst,
+              run.steps);
   EXPECT_LT(worst, 0.1);
 }
 
@@ -146,10 +155,12 @@ TEST(HandOde, BumpHubForceAgreesWithTheSimbodyTwin) {
       at = hand.time_s[i];
     }
   }
-  std::printf("bump: peak %.0f N, max |Simbody - hand| %.3g N at %.3f s; steps %ld / %ld\n", peak, worst, at, ref.stats.steps, hand.steps);
+  std::printf("bump: peak %.0f N, max |Simbody - hand| %.3g N at %.3f s; steps %ld / %ld\n", peak,
+              worst, at, ref.stats.steps, hand.steps);
   EXPECT_GT(peak, 10000.0);  // the bump was hit
   EXPECT_LT(worst, 1e-3 * peak);
-  EXPECT_NEAR(static_cast<double>(hand.steps), static_cast<double>(ref.stats.steps), 0.05 * static_cast<double>(ref.stats.steps));
+  EXPECT_NEAR(static_cast<double>(hand.steps), static_cast<double>(ref.stats.steps),
+              0.05 * static_cast<double>(ref.stats.steps));
 }
 
 TEST(HandOde, RefusesWhatItDoesNotModel) {

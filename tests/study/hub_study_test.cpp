@@ -20,12 +20,15 @@ TEST(HubStudy, AStudyWithTheHubInputAsATireOptionRunsWhole) {
   s = std::regex_replace(s, std::regex("tire = \\[[^\\]]*\\]"), "tire = [\"pac2002\", \"hub\"]");
   s = std::regex_replace(s, std::regex("include = \\[[^\\]]*\\]"), "include = [\"M1\", \"M3\"]");
   dtwin_test::writeText(study, s);
-  const auto r = dtwin_test::runTwin("study --study " + study.string() + " --out " + (dir / "out").string() + " --quiet", dir);
+  const auto r = dtwin_test::runTwin(
+      "study --study " + study.string() + " --out " + (dir / "out").string() + " --quiet", dir);
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto m3 = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "calibration" / "M3" / "summary.json"));
+  const auto m3 =
+      nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "calibration" / "M3" / "summary.json"));
   EXPECT_EQ(m3.at("label"), "hub + macpherson");
   EXPECT_EQ(m3.at("left_out"), nlohmann::json({"tire.stiffness", "tire.damping"}));
-  EXPECT_EQ(m3.at("parameter_order"), nlohmann::json({"suspension.stiffness", "suspension.damping"}));
+  EXPECT_EQ(m3.at("parameter_order"),
+            nlohmann::json({"suspension.stiffness", "suspension.damping"}));
   const auto summary = nlohmann::json::parse(dtwin_test::slurp(dir / "out" / "summary.json"));
   ASSERT_TRUE(summary.at("wins").contains("M3"));
   // The field records come from M1 (a tire under the road): the tire assembly wins them.

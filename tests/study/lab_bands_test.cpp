@@ -8,20 +8,20 @@
 #include <vector>
 
 #include "calibration/summary.hpp"
+#include "common/errors.hpp"
 #include "study/lab_bands.hpp"
 #include "study/run.hpp"
-#include "common/errors.hpp"
 
-using dtwin::study::normalMixtureQuantile;
 using dtwin::quantileSorted;
+using dtwin::study::normalMixtureQuantile;
 
 // The bands use the calibration's type-7 quantile (calibration/summary.hpp).
 TEST(LabBands, BandQuantilesAreType7) {
   const std::vector<double> x{1.0, 2.0, 4.0, 8.0};
   EXPECT_DOUBLE_EQ(quantileSorted(x, 0.0), 1.0);
   EXPECT_DOUBLE_EQ(quantileSorted(x, 1.0), 8.0);
-  EXPECT_DOUBLE_EQ(quantileSorted(x, 0.5), 3.0);        // h = 1.5: 2 + 0.5 (4 - 2)
-  EXPECT_DOUBLE_EQ(quantileSorted(x, 0.25), 1.75);      // h = 0.75: 1 + 0.75 (2 - 1)
+  EXPECT_DOUBLE_EQ(quantileSorted(x, 0.5), 3.0);            // h = 1.5: 2 + 0.5 (4 - 2)
+  EXPECT_DOUBLE_EQ(quantileSorted(x, 0.25), 1.75);          // h = 0.75: 1 + 0.75 (2 - 1)
   EXPECT_THROW(quantileSorted({}, 0.5), std::logic_error);  // never asked of an empty band
   EXPECT_DOUBLE_EQ(quantileSorted({7.0}, 0.975), 7.0);
 }
@@ -32,7 +32,8 @@ TEST(LabBands, MixtureOfOneNormalGivesItsQuantiles) {
   EXPECT_NEAR(normalMixtureQuantile({10.0}, {2.0}, 0.025), 10.0 - 2.0 * z975, 1e-9);
   EXPECT_NEAR(normalMixtureQuantile({10.0}, {2.0}, 0.5), 10.0, 1e-9);
   // Equal components: the same normal.
-  EXPECT_NEAR(normalMixtureQuantile({10.0, 10.0, 10.0}, {2.0, 2.0, 2.0}, 0.975), 10.0 + 2.0 * z975, 1e-9);
+  EXPECT_NEAR(normalMixtureQuantile({10.0, 10.0, 10.0}, {2.0, 2.0, 2.0}, 0.975), 10.0 + 2.0 * z975,
+              1e-9);
 }
 
 TEST(LabBands, SymmetricMixtureHasItsMedianAtTheCentre) {

@@ -22,10 +22,13 @@ using dtwin_test::slurp;
 TEST(StudyEndToEnd, DemoStudyPicksTheGeneratingAssemblyAndFollowsTheRule) {
   const fs::path tmp = fs::temp_directory_path() / "e2e";
   fs::create_directories(tmp);
-  dtwin_test::writeDemoStudy(tmp / "demo_small.toml",
-                             "lab_repetitions = 10\nfield_runs = 20\nlhs_points = 60\ngibbs_iterations = 6000\ngibbs_burn_in = 1000\n"
-                             "posterior_draws = 40\nroads_per_draw = 5\nroad_library = 200\noptimizer_starts = 2\n");
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " study --study " + (tmp / "demo_small.toml").string() + " --quiet --out " +
+  dtwin_test::writeDemoStudy(
+      tmp / "demo_small.toml",
+      "lab_repetitions = 10\nfield_runs = 20\nlhs_points = 60\ngibbs_iterations = "
+      "6000\ngibbs_burn_in = 1000\n"
+      "posterior_draws = 40\nroads_per_draw = 5\nroad_library = 200\noptimizer_starts = 2\n");
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " study --study " +
+                          (tmp / "demo_small.toml").string() + " --quiet --out " +
                           (tmp / "study").string();
   ASSERT_EQ(std::system(cmd.c_str()), 0);
 
@@ -53,6 +56,8 @@ TEST(StudyEndToEnd, DemoStudyPicksTheGeneratingAssemblyAndFollowsTheRule) {
     if (c < cost) cost = c, cheapest = id;
   }
   EXPECT_EQ(sum["recommended"], cheapest) << cls["recommendation"].dump();
-  EXPECT_NE(sum["recommendation_sentence"].get<std::string>().find(cheapest + " is recommended"), std::string::npos);
-  for (const char* st : {"lab", "field", "calibrate", "synthesize", "classify"}) EXPECT_GT(sum["stages"][st].get<double>(), 0.0) << st;
+  EXPECT_NE(sum["recommendation_sentence"].get<std::string>().find(cheapest + " is recommended"),
+            std::string::npos);
+  for (const char* st : {"lab", "field", "calibrate", "synthesize", "classify"})
+    EXPECT_GT(sum["stages"][st].get<double>(), 0.0) << st;
 }

@@ -45,7 +45,8 @@ std::vector<std::string> cells(const std::string& line) {
 }
 
 /// The body rows of the table whose header row starts with `header`, keyed by their first cell.
-std::map<std::string, std::vector<std::string>> table(const std::string& doc, const std::string& header) {
+std::map<std::string, std::vector<std::string>> table(const std::string& doc,
+                                                      const std::string& header) {
   std::map<std::string, std::vector<std::string>> rows;
   const auto at = doc.find("\n" + header);
   EXPECT_NE(at, std::string::npos) << "no table with header " << header;
@@ -74,7 +75,9 @@ std::pair<double, double> range(const std::string& s) {
   return {std::stod(s.substr(1, comma - 1)), std::stod(s.substr(comma + 1, s.size() - comma - 2))};
 }
 
-bool same(double doc, double registry) { return doc == registry || std::abs(doc - registry) <= 1e-12 * std::abs(registry); }
+bool same(double doc, double registry) {
+  return doc == registry || std::abs(doc - registry) <= 1e-12 * std::abs(registry);
+}
 
 }  // namespace
 
@@ -104,20 +107,25 @@ TEST(EffectDocs, ModelMdListsEveryEffectAndParameterAsTheRegistrySays) {
       const auto& c = row->second;
       ASSERT_GE(c.size(), 5u) << name;
       EXPECT_EQ(c[1], p.unit) << name;
-      EXPECT_TRUE(same(std::stod(c[2]), p.default_value)) << name << ": off " << c[2] << ", registry " << p.default_value;
+      EXPECT_TRUE(same(std::stod(c[2]), p.default_value))
+          << name << ": off " << c[2] << ", registry " << p.default_value;
       const auto [lo, hi] = range(c[3]);
       EXPECT_TRUE(same(lo, p.prior_lower) && same(hi, p.prior_upper))
-          << name << ": prior " << c[3] << ", registry [" << p.prior_lower << ", " << p.prior_upper << "]";
+          << name << ": prior " << c[3] << ", registry [" << p.prior_lower << ", " << p.prior_upper
+          << "]";
       EXPECT_EQ(c[4], p.shape ? "shape" : "") << name;
       params.erase(row);
     }
   }
-  for (const auto& [name, row] : effects) ADD_FAILURE() << "docs/model.md: effect " << name << " is not registered";
-  for (const auto& [name, row] : params) ADD_FAILURE() << "docs/model.md: parameter " << name << " is not registered";
+  for (const auto& [name, row] : effects)
+    ADD_FAILURE() << "docs/model.md: effect " << name << " is not registered";
+  for (const auto& [name, row] : params)
+    ADD_FAILURE() << "docs/model.md: parameter " << name << " is not registered";
 }
 
 TEST(EffectDocs, DiagnosisMdListsEverySignatureAsTheRegistrySays) {
-  auto rows = table(readDoc("diagnosis.md"), "| effect | state map | feature | engagement threshold |");
+  auto rows =
+      table(readDoc("diagnosis.md"), "| effect | state map | feature | engagement threshold |");
   for (const auto& entry : effectRegistry()) {
     SCOPED_TRACE("effect " + entry.name);
     const auto e = entry.value();
@@ -133,7 +141,8 @@ TEST(EffectDocs, DiagnosisMdListsEverySignatureAsTheRegistrySays) {
     EXPECT_EQ(it->second[3], dash(e->engagementThreshold()));
     rows.erase(it);
   }
-  for (const auto& [name, row] : rows) ADD_FAILURE() << "docs/diagnosis.md: effect " << name << " is not registered";
+  for (const auto& [name, row] : rows)
+    ADD_FAILURE() << "docs/diagnosis.md: effect " << name << " is not registered";
 }
 
 }  // namespace dtwin

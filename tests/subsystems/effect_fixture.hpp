@@ -32,7 +32,8 @@ inline std::vector<double> offValues(const dtwin::Effect& e) {
 }
 
 /// The off values with some parameters replaced by name.
-inline std::vector<double> valuesWith(const dtwin::Effect& e, const std::map<std::string, double>& on) {
+inline std::vector<double> valuesWith(const dtwin::Effect& e,
+                                      const std::map<std::string, double>& on) {
   std::vector<double> v = offValues(e);
   for (const auto& [name, value] : on) v[dtwin::parameterIndex(e.parameters(), name)] = value;
   return v;

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "effect_fixture.hpp"
 #include "subsystems/road.hpp"
 #include "subsystems/strut_law.hpp"
-#include "effect_fixture.hpp"
 
 namespace dtwin {
 namespace {
@@ -45,7 +45,8 @@ void checkEffectContract(const Effect& e) {
   for (const auto& spec : e.parameters()) {
     EXPECT_FALSE(spec.unit.empty()) << spec.name;
     EXPECT_FALSE(spec.description.empty()) << spec.name;
-    EXPECT_EQ(checkParameterValue(spec, spec.default_value), "") << spec.name << ": the off value is invalid";
+    EXPECT_EQ(checkParameterValue(spec, spec.default_value), "")
+        << spec.name << ": the off value is invalid";
     // The prior range: finite, non-empty, valid, and containing the off value.
     EXPECT_TRUE(std::isfinite(spec.prior_lower) && std::isfinite(spec.prior_upper)) << spec.name;
     EXPECT_LT(spec.prior_lower, spec.prior_upper) << spec.name;
@@ -60,7 +61,8 @@ void checkEffectContract(const Effect& e) {
   EXPECT_EQ(sig.state_map.empty(), sig.feature.empty()) << sig.state_map << " / " << sig.feature;
   if (const std::string th = e.engagementThreshold(); !th.empty()) {
     const auto& specs = e.parameters();
-    const auto it = std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& p) { return p.name == th; });
+    const auto it = std::find_if(specs.begin(), specs.end(),
+                                 [&](const ParameterSpec& p) { return p.name == th; });
     ASSERT_NE(it, specs.end()) << "engagementThreshold() names no parameter: " << th;
     EXPECT_EQ(it->unit, "m") << th;
   }
@@ -73,7 +75,8 @@ void checkEffectContract(const Effect& e) {
       EXPECT_EQ(e.calcStrutForce(strut(q, qdot), off), 0.0) << "q " << q << " qdot " << qdot;
     }
   for (double q : {-1.0, 0.5, 2.0})
-    for (double qdot : {-50.0, -1e-9, 1e-9, 50.0}) EXPECT_EQ(e.calcStrutForce(strut(q, qdot), off), 0.0);
+    for (double qdot : {-50.0, -1e-9, 1e-9, 50.0})
+      EXPECT_EQ(e.calcStrutForce(strut(q, qdot), off), 0.0);
 
   // Tire force factor exactly 1; no axle coupling force; no auxiliary state and no filtered force.
   for (double rho : {-0.01, 0.0, 0.02, 0.2})

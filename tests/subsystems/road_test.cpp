@@ -105,7 +105,9 @@ double bandIntegral(const std::vector<double>& psd, double dn, double lo, double
 }
 
 /// Integral of Gd(n) = Gd0 (n/n0)^-2 over [lo, hi], n0 = 0.1 cycles/m.
-double gdBandIntegral(double gd0, double lo, double hi) { return gd0 * 0.01 * (1.0 / lo - 1.0 / hi); }
+double gdBandIntegral(double gd0, double lo, double hi) {
+  return gd0 * 0.01 * (1.0 / lo - 1.0 / hi);
+}
 
 // ------------------------------------------------------------------ flat & bump
 
@@ -190,8 +192,11 @@ TEST_F(BumpRoadTest, SampleAveragedEqualsBruteForceMean) {
       const RoadSample avg = road.sampleAveraged(Track::Left, x, window);
       EXPECT_NEAR(avg.height_m, s / n, 1e-9) << "L = " << window << ", x = " << x;
       // Its slope is the derivative of the averaged height.
-      const auto mean = [&](double y) { return road.sampleAveraged(Track::Left, y, window).height_m; };
-      EXPECT_NEAR(avg.slope, centralDifference(mean, x, 1e-7), 1e-5) << "L = " << window << ", x = " << x;
+      const auto mean = [&](double y) {
+        return road.sampleAveraged(Track::Left, y, window).height_m;
+      };
+      EXPECT_NEAR(avg.slope, centralDifference(mean, x, 1e-7), 1e-5)
+          << "L = " << window << ", x = " << x;
     }
   }
 }
@@ -231,7 +236,8 @@ TEST_F(GridRoadTest, InterpolatesNodesExactly) {
 TEST_F(GridRoadTest, InteriorNodeSlopesAreCatmullRom) {
   for (Track t : kTracks)
     for (int i = 1; i + 1 < n; ++i)
-      EXPECT_NEAR(road.sample(t, x0 + i * dx).slope, (nodes(t)[i + 1] - nodes(t)[i - 1]) / (2 * dx), 1e-12)
+      EXPECT_NEAR(road.sample(t, x0 + i * dx).slope, (nodes(t)[i + 1] - nodes(t)[i - 1]) / (2 * dx),
+                  1e-12)
           << "node " << i;
 }
 
@@ -294,7 +300,8 @@ TEST_F(GridRoadTest, SampleAveragedEqualsBruteForceMean) {
       const double window = 0.4;
       const int m = 100000;
       double s = 0.0;
-      for (int i = 0; i < m; ++i) s += road.sample(t, x - 0.5 * window + window * (i + 0.5) / m).height_m;
+      for (int i = 0; i < m; ++i)
+        s += road.sample(t, x - 0.5 * window + window * (i + 0.5) / m).height_m;
       EXPECT_NEAR(road.sampleAveraged(t, x, window).height_m, s / m, 1e-10);
     }
 }
@@ -321,7 +328,8 @@ TEST(IsoRoad, ClassGd0ValuesAreGeometricMeans) {
 
 TEST(IsoRoad, RmsHeightFormula) {
   // sqrt(Gd(n0) n0^2 (1/n_min - 1/n_max)): the integral of Gd(n0) (n/n0)^-2 over the band.
-  EXPECT_DOUBLE_EQ(isoRmsHeight('D', 0.011, 2.83), std::sqrt(1024e-6 * 0.01 * (1 / 0.011 - 1 / 2.83)));
+  EXPECT_DOUBLE_EQ(isoRmsHeight('D', 0.011, 2.83),
+                   std::sqrt(1024e-6 * 0.01 * (1 / 0.011 - 1 / 2.83)));
   // Each class up doubles the RMS.
   for (char c = 'A'; c < 'H'; ++c)
     EXPECT_NEAR(isoRmsHeight(c + 1, 0.011, 2.83) / isoRmsHeight(c, 0.011, 2.83), 2.0, 1e-14) << c;
@@ -337,7 +345,8 @@ TEST(IsoRoad, MeanSquareOverOnePeriodEqualsBandIntegralOfGd) {
   s.length_m = 65535.0 / 128.0;
   auto road = makeIsoRoad(s);
   const auto& h = road->heights(Track::Left);
-  ASSERT_NEAR(road->describe().at("period_m").get<double>(), static_cast<double>(h.size()) * s.dx_m, 1e-9)
+  ASSERT_NEAR(road->describe().at("period_m").get<double>(), static_cast<double>(h.size()) * s.dx_m,
+              1e-9)
       << "the profile must cover exactly one period for this check";
   for (Track t : kTracks)
     EXPECT_NEAR(rms(road->heights(t)) / isoRmsHeight('D', s.n_min, s.n_max), 1.0, 1e-10);
@@ -346,7 +355,8 @@ TEST(IsoRoad, MeanSquareOverOnePeriodEqualsBandIntegralOfGd) {
   s.waviness = 2.5;
   auto wavy = makeIsoRoad(s);
   const double w = 2.5, gd0 = isoClassGd0('D');
-  const double ms = gd0 * std::pow(0.1, w) * (std::pow(s.n_max, 1 - w) - std::pow(s.n_min, 1 - w)) / (1 - w);
+  const double ms =
+      gd0 * std::pow(0.1, w) * (std::pow(s.n_max, 1 - w) - std::pow(s.n_min, 1 - w)) / (1 - w);
   const double r = rms(wavy->heights(Track::Left));
   EXPECT_NEAR(r * r / ms, 1.0, 1e-10);
 }
@@ -419,8 +429,8 @@ TEST_F(IsoRoadStatistics, WelchPsdMatchesGdInEveryOctaveBand) {
       const double hi = 2.0 * lo;
       const double est = bandIntegral(psd, dn, lo, hi), exact = gdBandIntegral(gd0, lo, hi);
       worst = std::max(worst, std::abs(est / exact - 1.0));
-      EXPECT_NEAR(est / exact, 1.0, 0.10) << "band [" << lo << ", " << hi << "] cycles/m, track "
-                                          << static_cast<int>(t);
+      EXPECT_NEAR(est / exact, 1.0, 0.10)
+          << "band [" << lo << ", " << hi << "] cycles/m, track " << static_cast<int>(t);
     }
     EXPECT_EQ(bands, 5);
   }
@@ -533,7 +543,8 @@ TEST(IsoRoad, SmoothUntilGivesZeroThenFullAmplitude) {
         ++in_taper;
       }
     }
-    EXPECT_GT(before_max, 0.005) << "the untapered profile is not flat there, so the zeros mean something";
+    EXPECT_GT(before_max, 0.005)
+        << "the untapered profile is not flat there, so the zeros mean something";
     EXPECT_GT(in_taper, 100);
     EXPECT_GT(after, 10000);
     // The interpolated road is flat before the start too.
@@ -576,8 +587,8 @@ class RoadCsv : public ::testing::Test {
  protected:
   std::string write(const std::string& name, const std::string& text) {
     // The process id keeps concurrent runs (ctest -j, several build trees) apart.
-    const std::string path =
-        ::testing::TempDir() + "dtwin_road_test_" + std::to_string(::getpid()) + "_" + name + ".csv";
+    const std::string path = ::testing::TempDir() + "dtwin_road_test_" +
+                             std::to_string(::getpid()) + "_" + name + ".csv";
     std::ofstream out(path, std::ios::binary);
     out << text;
     paths_.push_back(path);
@@ -588,7 +599,8 @@ class RoadCsv : public ::testing::Test {
   }
   /// Loading `path` must throw InputError naming `where` (the path, maybe with ":line") and
   /// containing `rule`.
-  static void expectError(const std::string& path, const std::string& where, const std::string& rule) {
+  static void expectError(const std::string& path, const std::string& where,
+                          const std::string& rule) {
     try {
       loadRoadCsv(path);
       ADD_FAILURE() << path << " loaded; expected: " << rule;
@@ -665,7 +677,9 @@ TEST_F(RoadCsv, HeightsInMillimetresOrCentimetresAreConverted) {
   EXPECT_DOUBLE_EQ(loadRoadCsv(cm)->sample(Track::Left, 1.0).height_m, 0.05);
   // One unit for both tracks.
   const std::string mixed = write("mixed", "distance_m,left_mm,right_m\n0,0,0\n1,0,0\n");
-  expectError(mixed, mixed + ":1", "header must be 'distance_m,left_m,right_m' (or left_mm,right_mm or left_cm,right_cm)");
+  expectError(
+      mixed, mixed + ":1",
+      "header must be 'distance_m,left_m,right_m' (or left_mm,right_mm or left_cm,right_cm)");
 }
 
 TEST_F(RoadCsv, WrongHeader) {
@@ -690,7 +704,8 @@ TEST_F(RoadCsv, NanValueNamesItsLine) {
 TEST_F(RoadCsv, NonIncreasingDistance) {
   const std::string path = write("order", "distance_m,left_m,right_m\n0,0,0\n0.1,0,0\n0.1,0,0\n");
   expectError(path, path + ":4", "distance_m must increase strictly");
-  const std::string path2 = write("order2", "distance_m,left_m,right_m\n0,0,0\n0.1,0,0\n0.2,0,0\n0.15,0,0\n");
+  const std::string path2 =
+      write("order2", "distance_m,left_m,right_m\n0,0,0\n0.1,0,0\n0.2,0,0\n0.15,0,0\n");
   expectError(path2, path2 + ":5", "distance_m must increase strictly");
 }
 

@@ -28,7 +28,8 @@ struct Path {
   }
   // The point's height from the rotation itself (Eigen), not from the formula under test.
   double height(double t, const std::array<double, 3>& p) const {
-    const Eigen::Matrix3d R = (Eigen::AngleAxisd(ph(t), Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(th(t), Eigen::Vector3d::UnitY()))
+    const Eigen::Matrix3d R = (Eigen::AngleAxisd(ph(t), Eigen::Vector3d::UnitX()) *
+                               Eigen::AngleAxisd(th(t), Eigen::Vector3d::UnitY()))
                                   .toRotationMatrix();
     return h(t) + (R * Eigen::Vector3d(p[0], p[1], p[2]))(2);
   }
@@ -41,11 +42,15 @@ TEST(Sensor, ChassisPointMotionIsTheExactKinematics) {
   const Path path;
   const std::array<double, 3> p{1.2, -0.7, 0.35};
   for (double t : {0.0, 0.3, 1.1, 2.5}) {
-    const Motion m = chassisPointMotion(path.motion(&Path::h, t), path.motion(&Path::th, t), path.motion(&Path::ph, t), p);
+    const Motion m = chassisPointMotion(path.motion(&Path::h, t), path.motion(&Path::th, t),
+                                        path.motion(&Path::ph, t), p);
     const double e = 1e-4;
     EXPECT_NEAR(m.q, path.height(t, p), 1e-12) << t;
     EXPECT_NEAR(m.qd, (path.height(t + e, p) - path.height(t - e, p)) / (2 * e), 1e-6) << t;
-    EXPECT_NEAR(m.qdd, (path.height(t + e, p) - 2 * path.height(t, p) + path.height(t - e, p)) / (e * e), 2e-4) << t;
+    EXPECT_NEAR(m.qdd,
+                (path.height(t + e, p) - 2 * path.height(t, p) + path.height(t - e, p)) / (e * e),
+                2e-4)
+        << t;
   }
 }
 
@@ -56,7 +61,8 @@ TEST(Sensor, SignsFollowThePitchAndRollConventions) {
   const Motion heave{0, 0, 0.5}, pitch{0, 0, 2.0}, roll{0, 0, -3.0};
   const Motion m = chassisPointMotion(heave, pitch, roll, {1.5, 0.8, 0.0});
   EXPECT_DOUBLE_EQ(m.qdd, 0.5 - 1.5 * 2.0 + 0.8 * -3.0);
-  EXPECT_LT(chassisPointMotion({}, {0.01, 0, 0}, {}, {1.0, 0, 0}).q, 0.0);   // nose down: the front goes down
+  EXPECT_LT(chassisPointMotion({}, {0.01, 0, 0}, {}, {1.0, 0, 0}).q,
+            0.0);  // nose down: the front goes down
   EXPECT_LT(chassisPointMotion({}, {}, {0.01, 0, 0}, {0, -0.7, 0}).q, 0.0);  // right side down
 }
 
@@ -67,8 +73,10 @@ TEST(Sensor, ChassisAxisHeightInvertsThePointsWorldHeight) {
   const Path path;
   for (double t : {0.0, 0.3, 1.1, 2.5}) {
     const std::array<double, 3> p{1.4, 0.75, -0.28};
-    const Motion world = chassisPointMotion(path.motion(&Path::h, t), path.motion(&Path::th, t), path.motion(&Path::ph, t), p);
-    const Motion m = chassisAxisHeight(world, path.motion(&Path::h, t), path.motion(&Path::th, t), path.motion(&Path::ph, t), p[0], p[1]);
+    const Motion world = chassisPointMotion(path.motion(&Path::h, t), path.motion(&Path::th, t),
+                                            path.motion(&Path::ph, t), p);
+    const Motion m = chassisAxisHeight(world, path.motion(&Path::h, t), path.motion(&Path::th, t),
+                                       path.motion(&Path::ph, t), p[0], p[1]);
     EXPECT_NEAR(m.q, p[2], 1e-12) << t;
     EXPECT_NEAR(m.qd, 0.0, 1e-6) << t;
     // Sliding: z(t) = −0.28 + 0.05 sin 7t.
@@ -76,7 +84,8 @@ TEST(Sensor, ChassisAxisHeightInvertsThePointsWorldHeight) {
     auto worldOf = [&](double s) { return path.height(s, {p[0], p[1], zOf(s)}); };
     const double e = 1e-5;
     const Motion wz{worldOf(t), (worldOf(t + e) - worldOf(t - e)) / (2 * e), 0.0};
-    const Motion s = chassisAxisHeight(wz, path.motion(&Path::h, t), path.motion(&Path::th, t), path.motion(&Path::ph, t), p[0], p[1]);
+    const Motion s = chassisAxisHeight(wz, path.motion(&Path::h, t), path.motion(&Path::th, t),
+                                       path.motion(&Path::ph, t), p[0], p[1]);
     EXPECT_NEAR(s.q, zOf(t), 1e-12) << t;
     EXPECT_NEAR(s.qd, 0.35 * std::cos(7.0 * t), 1e-5) << t;
   }
@@ -98,11 +107,14 @@ TEST(Sensor, FirstOrderFilterIsExactForARamp) {
 // error of reading the sampled input as linear between samples: at most max|H| (ωh)²/8.
 TEST(Sensor, FilterSteadyStateMatchesItsFrequencyResponse) {
   const double rate = 1000.0;
-  for (const SensorFilter f : {SensorFilter{1, 20.0}, SensorFilter{2, 20.0}, SensorFilter{2, 8.0, 0.3}}) {
+  for (const SensorFilter f :
+       {SensorFilter{1, 20.0}, SensorFilter{2, 20.0}, SensorFilter{2, 8.0, 0.3}}) {
     for (double fin : {3.0, 20.0, 45.0}) {
       const double w = 2 * kPi * fin, wc = 2 * kPi * f.cutoff_hz;
       const std::complex<double> s(0.0, w);
-      const std::complex<double> H = f.order == 1 ? 1.0 / (1.0 + s / wc) : wc * wc / (s * s + 2.0 * f.damping * wc * s + wc * wc);
+      const std::complex<double> H = f.order == 1
+                                         ? 1.0 / (1.0 + s / wc)
+                                         : wc * wc / (s * s + 2.0 * f.damping * wc * s + wc * wc);
       std::vector<double> u(4000);
       for (std::size_t k = 0; k < u.size(); ++k) u[k] = std::sin(w * static_cast<double>(k) / rate);
       const auto y = lowPass(u, rate, f);
@@ -111,8 +123,11 @@ TEST(Sensor, FilterSteadyStateMatchesItsFrequencyResponse) {
         const double t = static_cast<double>(k) / rate;
         worst = std::max(worst, std::abs(y[k] - std::abs(H) * std::sin(w * t + std::arg(H))));
       }
-      const double peak = f.order == 2 && f.damping < 0.7 ? 1.0 / (2 * f.damping * std::sqrt(1 - f.damping * f.damping)) : 1.0;
-      EXPECT_LT(worst, peak * std::pow(w / rate, 2) / 8) << "order " << f.order << ", fc " << f.cutoff_hz << ", input " << fin << " Hz";
+      const double peak = f.order == 2 && f.damping < 0.7
+                              ? 1.0 / (2 * f.damping * std::sqrt(1 - f.damping * f.damping))
+                              : 1.0;
+      EXPECT_LT(worst, peak * std::pow(w / rate, 2) / 8)
+          << "order " << f.order << ", fc " << f.cutoff_hz << ", input " << fin << " Hz";
     }
   }
 }
@@ -188,10 +203,12 @@ TEST(SensorModel, OffIsTheIdentityExactlyOnTheGrid) {
   std::vector<double> times;
   for (int k = 0; k < 2000; k += 5) times.push_back(k / rate);
   SensorDistortion d;
-  for (const auto& kind : sensorModelKinds()) d.set(kind, sensorModelParameter(kind, "t").default_value);
+  for (const auto& kind : sensorModelKinds())
+    d.set(kind, sensorModelParameter(kind, "t").default_value);
   EXPECT_TRUE(d.identity());
   const auto y = distortChannel(u, rate, times, d);
-  for (std::size_t i = 0; i < times.size(); ++i) EXPECT_EQ(y[i], u[static_cast<std::size_t>(5 * i)]);
+  for (std::size_t i = 0; i < times.size(); ++i)
+    EXPECT_EQ(y[i], u[static_cast<std::size_t>(5 * i)]);
 }
 
 TEST(SensorModel, GainAndDelayAreTheScaledShiftedSignal) {
@@ -204,12 +221,15 @@ TEST(SensorModel, GainAndDelayAreTheScaledShiftedSignal) {
   for (double t = 0.1; t < 1.9; t += 0.0317) times.push_back(t);
   const auto y = distortChannel(u, rate, times, d);
   // Four-point cubic error bound: h⁴ max|u''''| 3/128 with |u''''| ≤ (2π·3)⁴ + 0.3 (2π·7)⁴.
-  const double bound = std::pow(1 / rate, 4) * (std::pow(2 * kPi * 3, 4) + 0.3 * std::pow(2 * kPi * 7, 4)) * 3.0 / 128.0;
-  for (std::size_t i = 0; i < times.size(); ++i) EXPECT_NEAR(y[i], gain * wave(times[i] - delay), gain * bound + 1e-12) << times[i];
+  const double bound = std::pow(1 / rate, 4) *
+                       (std::pow(2 * kPi * 3, 4) + 0.3 * std::pow(2 * kPi * 7, 4)) * 3.0 / 128.0;
+  for (std::size_t i = 0; i < times.size(); ++i)
+    EXPECT_NEAR(y[i], gain * wave(times[i] - delay), gain * bound + 1e-12) << times[i];
 }
 
 TEST(SensorModel, FirstOrderLowPassHasItsClosedFormSteadyState) {
-  // u = sin ωt through 1/(1 + sτ): amplitude 1/√(1 + (ωτ)²), phase −atan(ωτ), after the transient e^{−t/τ}.
+  // u = sin ωt through 1/(1 + sτ): amplitude 1/√(1 + (ωτ)²), phase −atan(ωτ), after the transient
+  // e^{−t/τ}.
   const double rate = 1000, f = 5.0, w = 2 * kPi * f, tau = 1.0 / (2 * kPi * 25.0);  // 25 Hz
   std::vector<double> u;
   for (int k = 0; k <= 3000; ++k) u.push_back(std::sin(w * k / rate));
@@ -221,7 +241,8 @@ TEST(SensorModel, FirstOrderLowPassHasItsClosedFormSteadyState) {
   for (int k = 2000; k <= 3000; k += 7) times.push_back(k / rate);
   const auto y = distortChannel(u, rate, times, d);
   const double amp = 1 / std::sqrt(1 + w * w * tau * tau), ph = -std::atan(w * tau);
-  for (std::size_t i = 0; i < times.size(); ++i) EXPECT_NEAR(y[i], amp * std::sin(w * times[i] + ph), 1e-4);
+  for (std::size_t i = 0; i < times.size(); ++i)
+    EXPECT_NEAR(y[i], amp * std::sin(w * times[i] + ph), 1e-4);
 }
 
 TEST(SensorModel, UnknownKindIsAnInputErrorNamingTheKnownOnes) {

@@ -73,8 +73,10 @@ TEST(SpeedTrace, NeverOvershootsStopAndGoData) {
       EXPECT_GE(sp, lo - 1e-12) << x;
       EXPECT_LE(sp, hi + 1e-12) << x;
       // monotone between samples, in the direction of the data
-      if (v[k + 1] >= v[k]) EXPECT_GE(sp, prev - 1e-12) << x;
-      else EXPECT_LE(sp, prev + 1e-12) << x;
+      if (v[k + 1] >= v[k])
+        EXPECT_GE(sp, prev - 1e-12) << x;
+      else
+        EXPECT_LE(sp, prev + 1e-12) << x;
       prev = sp;
     }
   }
@@ -101,11 +103,14 @@ TEST(SpeedTrace, DistanceIsTheIntegralAndAccelerationTheDerivativeOfTheSpeed) {
   for (double b : {0.5, 1.234, 3.0, 4.9}) {
     // Simpson on panels aligned to nothing: the cubic pieces make it converge at h⁴ except at the
     // knots, so a fine grid is within 1e-7 m.
-    EXPECT_NEAR(s.distance(b), simpson([&](double x) { return s.speed(x); }, 0.0, b, 200000), 1e-7) << b;
+    EXPECT_NEAR(s.distance(b), simpson([&](double x) { return s.speed(x); }, 0.0, b, 200000), 1e-7)
+        << b;
   }
   for (double x = 0.01; x < 4.9; x += 0.0731) {
     const double h = 1e-7;
-    EXPECT_NEAR(s.accel(x), (s.speed(x + h) - s.speed(x - h)) / (2 * h), 1e-4 * (1 + std::abs(s.accel(x)))) << x;
+    EXPECT_NEAR(s.accel(x), (s.speed(x + h) - s.speed(x - h)) / (2 * h),
+                1e-4 * (1 + std::abs(s.accel(x))))
+        << x;
     EXPECT_NEAR(s.timeAtDistance(s.distance(x)), x, 1e-8) << x;
   }
 }
@@ -113,11 +118,14 @@ TEST(SpeedTrace, DistanceIsTheIntegralAndAccelerationTheDerivativeOfTheSpeed) {
 TEST(SpeedTrace, RefusesBadSamplesNamingTheFirst) {
   EXPECT_EQ(errorOf({0.0}, {1.0}), "speed.csv: a speed trace needs at least 2 samples, got 1");
   EXPECT_EQ(errorOf({0.0, 1.0}, {1.0}), "speed.csv: has 2 times but 1 speeds");
-  EXPECT_EQ(errorOf({0.0, 1.0, 1.0}, {1, 2, 3}), "speed.csv: sample 2: time must increase, got 1 after 1");
-  EXPECT_EQ(errorOf({0.0, 2.0, 1.0}, {1, 2, 3}), "speed.csv: sample 2: time must increase, got 1 after 2");
+  EXPECT_EQ(errorOf({0.0, 1.0, 1.0}, {1, 2, 3}),
+            "speed.csv: sample 2: time must increase, got 1 after 1");
+  EXPECT_EQ(errorOf({0.0, 2.0, 1.0}, {1, 2, 3}),
+            "speed.csv: sample 2: time must increase, got 1 after 2");
   EXPECT_EQ(errorOf({0.0, 1.0}, {1.0, -0.5}), "speed.csv: sample 1: speed must be >= 0, got -0.5");
   EXPECT_EQ(errorOf({0.0, NAN}, {1.0, 1.0}), "speed.csv: sample 1: time must be finite, got nan");
-  EXPECT_EQ(errorOf({0.0, 1.0}, {INFINITY, 1.0}), "speed.csv: sample 0: speed must be finite, got inf");
+  EXPECT_EQ(errorOf({0.0, 1.0}, {INFINITY, 1.0}),
+            "speed.csv: sample 0: speed must be finite, got inf");
 }
 
 TEST(SpeedTrace, StartsAfterTimeZeroAndEndsAtRest) {
@@ -138,30 +146,47 @@ std::string csvError(const std::string& text) {
 }  // namespace
 
 TEST(SpeedTraceCsv, ReadsEveryUnitWithABomCrlfAndBlankLines) {
-  const auto kmh = dtwin::parseSpeedTraceCsv("\xEF\xBB\xBFtime_s,speed_kmh\r\n0,36\r\n\r\n1.5,72\r\n", "kmh.csv");
+  const auto kmh = dtwin::parseSpeedTraceCsv(
+      "\xEF\xBB\xBFtime_s,speed_kmh\r\n0,36\r\n\r\n1.5,72\r\n", "kmh.csv");
   ASSERT_EQ(kmh.times().size(), 2u);
   EXPECT_DOUBLE_EQ(kmh.speed(0.0), 10.0);
   EXPECT_DOUBLE_EQ(kmh.speed(1.5), 20.0);
   EXPECT_NEAR(kmh.distance(1.5), 1.5 * 15.0, 1e-12);  // linear between two samples
-  EXPECT_DOUBLE_EQ(dtwin::parseSpeedTraceCsv("time_s,speed_mph\n0,10\n1,10\n", "m").speed(0.5), 4.4704);
-  EXPECT_DOUBLE_EQ(dtwin::parseSpeedTraceCsv("time_s,speed_mps\n-1,+3\n1,3\n", "m").speed(0.0), 3.0);
+  EXPECT_DOUBLE_EQ(dtwin::parseSpeedTraceCsv("time_s,speed_mph\n0,10\n1,10\n", "m").speed(0.5),
+                   4.4704);
+  EXPECT_DOUBLE_EQ(dtwin::parseSpeedTraceCsv("time_s,speed_mps\n-1,+3\n1,3\n", "m").speed(0.0),
+                   3.0);
 }
 
 TEST(SpeedTraceCsv, BadFilesGetOneLineNamingTheLineAndColumn) {
   const std::string known = "(speed_mps, speed_kmh, speed_mph)";
-  EXPECT_EQ(csvError(""), "drive.csv:1: empty file; expected the header 'time_s,speed_<unit>' " + known);
-  EXPECT_EQ(csvError("t,speed_kmh\n"), "drive.csv:1: header must be 'time_s,speed_<unit>' " + known + ", got 't,speed_kmh'");
-  EXPECT_EQ(csvError("time_s,speed_kmh,x\n"), "drive.csv:1: header must be 'time_s,speed_<unit>' " + known + ", got 'time_s,speed_kmh,x'");
-  EXPECT_EQ(csvError("time_s,speed_knots\n"), "drive.csv:1: unknown speed column 'speed_knots'; known: speed_mps, speed_kmh, speed_mph");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n\n1\n"), "drive.csv:4: expected 2 columns (time_s,speed_kmh), got '1'");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,2,3\n"), "drive.csv:3: expected 2 columns (time_s,speed_kmh), got '1,2,3'");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\nx,2\n"), "drive.csv:3: time_s: 'x' is not a finite number");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,nan\n"), "drive.csv:3: speed_kmh: 'nan' is not a finite number");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,1e999\n"), "drive.csv:3: speed_kmh: '1e999' is not a finite number");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,-2\n"), "drive.csv:3: speed_kmh: must be >= 0, got -2");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n0,2\n"), "drive.csv:3: time_s: must increase, got 0 after 0");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n"), "drive.csv: a speed trace needs at least 2 rows, got 1");
-  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,2\r\r\n"), "drive.csv:3: speed_kmh: '2\\r' is not a finite number");
+  EXPECT_EQ(csvError(""),
+            "drive.csv:1: empty file; expected the header 'time_s,speed_<unit>' " + known);
+  EXPECT_EQ(csvError("t,speed_kmh\n"),
+            "drive.csv:1: header must be 'time_s,speed_<unit>' " + known + ", got 't,speed_kmh'");
+  EXPECT_EQ(csvError("time_s,speed_kmh,x\n"), "drive.csv:1: header must be 'time_s,speed_<unit>' " +
+                                                  known + ", got 'time_s,speed_kmh,x'");
+  EXPECT_EQ(
+      csvError("time_s,speed_knots\n"),
+      "drive.csv:1: unknown speed column 'speed_knots'; known: speed_mps, speed_kmh, speed_mph");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n\n1\n"),
+            "drive.csv:4: expected 2 columns (time_s,speed_kmh), got '1'");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,2,3\n"),
+            "drive.csv:3: expected 2 columns (time_s,speed_kmh), got '1,2,3'");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\nx,2\n"),
+            "drive.csv:3: time_s: 'x' is not a finite number");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,nan\n"),
+            "drive.csv:3: speed_kmh: 'nan' is not a finite number");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,1e999\n"),
+            "drive.csv:3: speed_kmh: '1e999' is not a finite number");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,-2\n"),
+            "drive.csv:3: speed_kmh: must be >= 0, got -2");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n0,2\n"),
+            "drive.csv:3: time_s: must increase, got 0 after 0");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n"),
+            "drive.csv: a speed trace needs at least 2 rows, got 1");
+  EXPECT_EQ(csvError("time_s,speed_kmh\n0,1\n1,2\r\r\n"),
+            "drive.csv:3: speed_kmh: '2\\r' is not a finite number");
 }
 
 // The interval lookup (a bucket table, then a step or two) finds the interval a binary search

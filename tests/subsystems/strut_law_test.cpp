@@ -93,7 +93,8 @@ TEST(StrutRegistry, EveryLawKeepsTheContract) {
   }
 }
 
-// ------------------------------------------------------------------ linear strut (paper eq. 4 and 5)
+// ------------------------------------------------------------------ linear strut (paper eq. 4 and
+// 5)
 
 class LinearStrutTest : public ::testing::Test {
  protected:
@@ -113,7 +114,8 @@ TEST_F(LinearStrutTest, PreloadPlusSpringPlusDamperWithinTravel) {
   for (double q : {-0.25, -0.1, 0.0, 0.037, 0.2, 0.25})
     for (double qdot : {-1.2, 0.0, 0.4}) {
       const double expected = 2907.0 + 30000.0 * q + 2500.0 * qdot;
-      EXPECT_NEAR(law.calcForce(strut(q, qdot), p), expected, 1e-9) << "q " << q << " qdot " << qdot;
+      EXPECT_NEAR(law.calcForce(strut(q, qdot), p), expected, 1e-9)
+          << "q " << q << " qdot " << qdot;
     }
   // The effects' base_* fields do not enter the law: its parameters do.
   StrutState s = strut(0.1, 0.2);
@@ -131,10 +133,12 @@ TEST_F(LinearStrutTest, HardstopEngagesBeyondTravelLimit) {
   // Stated stiffness beyond the limit: k + k_hs, by finite differences on both sides.
   const double h = 1e-6;
   for (double q : {0.27, -0.27}) {
-    const double fd = (law.calcForce(strut(q + h, 0), p) - law.calcForce(strut(q - h, 0), p)) / (2 * h);
+    const double fd =
+        (law.calcForce(strut(q + h, 0), p) - law.calcForce(strut(q - h, 0), p)) / (2 * h);
     EXPECT_NEAR(fd / (k + k_hs), 1.0, 1e-6) << q;
   }
-  const double fd_in = (law.calcForce(strut(0.2 + h, 0), p) - law.calcForce(strut(0.2 - h, 0), p)) / (2 * h);
+  const double fd_in =
+      (law.calcForce(strut(0.2 + h, 0), p) - law.calcForce(strut(0.2 - h, 0), p)) / (2 * h);
   EXPECT_NEAR(fd_in / k, 1.0, 1e-6);
   // Continuous at the limits.
   EXPECT_NEAR(law.calcForce(strut(H + 1e-12, 0), p), law.calcForce(strut(H, 0), p), 1e-3);

@@ -33,7 +33,8 @@ TEST(TimeRoad, ParsesEveryForm) {
   EXPECT_DOUBLE_EQ(b.right[1], 0.4);
   auto c = parseTimeRoadCsv("time_s,velocity_mps\n0,0.1\n1,0.3\n", "c.csv");
   EXPECT_EQ(c.form, TimeRoadLog::Form::Velocity);
-  auto d = parseTimeRoadCsv("\"time_s\",\"left_mps\",\"right_mps\"\n0,0.1,0.2\n1,0.3,0.4\n", "d.csv");
+  auto d =
+      parseTimeRoadCsv("\"time_s\",\"left_mps\",\"right_mps\"\n0,0.1,0.2\n1,0.3,0.4\n", "d.csv");
   EXPECT_EQ(d.form, TimeRoadLog::Form::Velocity);
   EXPECT_FALSE(d.identical_tracks);
   // Centimetres and millimetres per second, as loggers write them.
@@ -46,13 +47,20 @@ TEST(TimeRoad, ParsesEveryForm) {
 
 TEST(TimeRoad, BadFilesNameTheLineAndColumn) {
   EXPECT_NE(errorOf("").find("road.csv:1: empty file"), std::string::npos);
-  EXPECT_NE(errorOf("time_s,height_ft\n0,1\n1,2\n").find("road.csv:1: header must be"), std::string::npos);
-  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,x\n").find("road.csv:3: height_m: 'x' is not a finite number"), std::string::npos);
-  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,nan\n").find("road.csv:3: height_m"), std::string::npos);
-  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0,2\n").find("road.csv:3: time_s: must increase"), std::string::npos);
-  EXPECT_NE(errorOf("time_s,left_m,right_m\n0,1\n").find("road.csv:2: expected 3 columns, got 2"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_ft\n0,1\n1,2\n").find("road.csv:1: header must be"),
+            std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,x\n")
+                .find("road.csv:3: height_m: 'x' is not a finite number"),
+            std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0.1,nan\n").find("road.csv:3: height_m"),
+            std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,1\n0,2\n").find("road.csv:3: time_s: must increase"),
+            std::string::npos);
+  EXPECT_NE(errorOf("time_s,left_m,right_m\n0,1\n").find("road.csv:2: expected 3 columns, got 2"),
+            std::string::npos);
   EXPECT_NE(errorOf("time_s,height_m\n0,1\n").find("at least 2 rows"), std::string::npos);
-  EXPECT_NE(errorOf("time_s,height_m\n0,\"1\n").find("road.csv:2: a double quote is not closed"), std::string::npos);
+  EXPECT_NE(errorOf("time_s,height_m\n0,\"1\n").find("road.csv:2: a double quote is not closed"),
+            std::string::npos);
 }
 
 // The gain of the zero-phase high-pass is (f/fc)²/(1 + (f/fc)²) and its phase 0; a linear drift
@@ -88,11 +96,13 @@ TEST(TimeRoad, VelocityIntegratesToHeightWithoutDrift) {
   std::vector<double> t(6000), v(6000);
   for (std::size_t k = 0; k < t.size(); ++k) {
     t[k] = dt * static_cast<double>(k);
-    v[k] = A * 2 * kPi * f * std::cos(2 * kPi * f * t[k]) + 0.004;  // height A sin(2π f t), plus a bias
+    v[k] = A * 2 * kPi * f * std::cos(2 * kPi * f * t[k]) +
+           0.004;  // height A sin(2π f t), plus a bias
   }
   const auto h = roadHeightFromVelocity(t, v, 0.1);
   const double r = (f / 0.1) * (f / 0.1), gain = r / (1 + r);
-  for (std::size_t k = 1500; k < 4500; k += 37) EXPECT_NEAR(h[k], gain * A * std::sin(2 * kPi * f * t[k]), 2e-3 * A + 1e-6) << t[k];
+  for (std::size_t k = 1500; k < 4500; k += 37)
+    EXPECT_NEAR(h[k], gain * A * std::sin(2 * kPi * f * t[k]), 2e-3 * A + 1e-6) << t[k];
 }
 
 // At constant speed v a height sin(2π f t) is the profile sin(2π f x / v); a stop in between
@@ -103,10 +113,13 @@ TEST(TimeRoad, MapsToDistanceThroughTheSpeed) {
   TimeRoadLog log;
   log.name = "x.csv";
   log.identical_tracks = true;
-  auto dist = [&](double t) { return t < 2.0 ? speed * t : t < 3.0 ? 2.0 * speed : speed * (t - 1.0); };
+  auto dist = [&](double t) {
+    return t < 2.0 ? speed * t : t < 3.0 ? 2.0 * speed : speed * (t - 1.0);
+  };
   for (int k = 0; k <= 600; ++k) {
     const double t = dt * k, x = dist(t);
-    const double h = 0.02 * std::sin(2 * kPi * f * x / speed) + (t > 2.0 && t < 3.0 ? 0.5 : 0.0);  // junk while standing
+    const double h = 0.02 * std::sin(2 * kPi * f * x / speed) +
+                     (t > 2.0 && t < 3.0 ? 0.5 : 0.0);  // junk while standing
     log.t_s.push_back(t);
     log.left.push_back(h);
     log.right.push_back(h);
@@ -154,7 +167,8 @@ TEST(TimeRoad, AVelocityLogKeepsItsDetailBetweenSamples) {
     log.name = "v.csv";
     log.form = TimeRoadLog::Form::Velocity;
     log.identical_tracks = true;
-    for (int k = 0; k <= 6000; ++k) {  // 60 s: the drift removal's start-up (0.05 Hz) has died out after 30 s
+    for (int k = 0; k <= 6000;
+         ++k) {  // 60 s: the drift removal's start-up (0.05 Hz) has died out after 30 s
       const double t = dt * k;
       log.t_s.push_back(t);
       log.left.push_back(A * w * std::cos(w * t));
@@ -162,16 +176,20 @@ TEST(TimeRoad, AVelocityLogKeepsItsDetailBetweenSamples) {
     }
     const auto h = roadHeightFromVelocity(log.t_s, log.left, 0.05);
     double worst_h = 0;
-    for (std::size_t k = 3000; k < 4000; ++k) worst_h = std::max(worst_h, std::abs(h[k] - A * std::sin(w * log.t_s[k])));
+    for (std::size_t k = 3000; k < 4000; ++k)
+      worst_h = std::max(worst_h, std::abs(h[k] - A * std::sin(w * log.t_s[k])));
     if (f == 10.0) {
       EXPECT_LT(worst_h, 0.005 * A);
     }
     TimeRoadOptions o;
     o.dx_m = 0.005;
     o.highpass_hz = 0.05;
-    const auto road = roadFromTimeLog(log, [&](double t) { return speed * t; }, o, {{"type", "test"}});
+    const auto road =
+        roadFromTimeLog(log, [&](double t) { return speed * t; }, o, {{"type", "test"}});
     double worst = 0;
-    for (double x = 360.0; x < 480.0; x += 0.00731) worst = std::max(worst, std::abs(road->sample(Track::Left, x).height_m - A * std::sin(w * x / speed)));
+    for (double x = 360.0; x < 480.0; x += 0.00731)
+      worst = std::max(
+          worst, std::abs(road->sample(Track::Left, x).height_m - A * std::sin(w * x / speed)));
     EXPECT_LT(worst, (f == 10.0 ? 0.006 : 0.04) * A) << "worst " << worst / A;
   }
 }

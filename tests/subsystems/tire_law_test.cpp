@@ -17,7 +17,8 @@ namespace {
 
 using Values = std::map<std::string, double>;
 
-/// Nominal values by name (docs/method.md §1 true θ1, θ2; PAC2002 defaults of data/vehicle/midsize_sedan.toml).
+/// Nominal values by name (docs/method.md §1 true θ1, θ2; PAC2002 defaults of
+/// data/vehicle/midsize_sedan.toml).
 Values nominalValues() {
   return {{"stiffness", 180000.0},
           {"damping", 3000.0},
@@ -111,16 +112,20 @@ void checkTireLawContract(const TireLaw& law, const std::vector<double>& p) {
       const double rebound = -(10.0 * law.calcNormalForce(at(rho), p) / c + 1.0);
       EXPECT_EQ(law.calcNormalForce(at(rho, rebound), p), 0.0) << "rho " << rho;
     }
-    for (double rate : {-3.0, -0.3, 0.0, 0.3, 3.0}) EXPECT_GE(law.calcNormalForce(at(rho, rate), p), 0.0);
+    for (double rate : {-3.0, -0.3, 0.0, 0.3, 3.0})
+      EXPECT_GE(law.calcNormalForce(at(rho, rate), p), 0.0);
   }
 
   // Continuous at touch-down: the damping ramps in (kContactDampingRamp_m), so a wheel landing
   // fast meets a force that starts from zero, not a jump to c * rate.
   for (double rate : {0.3, 3.0}) {
-    EXPECT_LT(law.calcNormalForce(at(1e-9, rate), p), 1e-6 * k + 1e-3 * c * rate * 1e-3) << "rate " << rate;
+    EXPECT_LT(law.calcNormalForce(at(1e-9, rate), p), 1e-6 * k + 1e-3 * c * rate * 1e-3)
+        << "rate " << rate;
     const double half = law.calcNormalForce(at(0.5 * kContactDampingRamp_m, rate), p);
     const double full_damping = law.calcNormalForce(at(0.5 * kContactDampingRamp_m), p) + c * rate;
-    EXPECT_NEAR(half, law.calcNormalForce(at(0.5 * kContactDampingRamp_m), p) + 0.5 * c * rate, 1e-9 * full_damping) << "rate " << rate;
+    EXPECT_NEAR(half, law.calcNormalForce(at(0.5 * kContactDampingRamp_m), p) + 0.5 * c * rate,
+                1e-9 * full_damping)
+        << "rate " << rate;
   }
 
   // Monotone non-decreasing in deflection, at several rates; positive in contact at zero rate.
@@ -141,8 +146,10 @@ void checkTireLawContract(const TireLaw& law, const std::vector<double>& p) {
   const double rho0 = law.operatingDeflection(p);
   ASSERT_GT(rho0, 0.0);
   const double h = 1e-6;
-  const double fd = (law.calcNormalForce(at(rho0 + h), p) - law.calcNormalForce(at(rho0 - h), p)) / (2 * h);
-  EXPECT_NEAR(fd / k, 1.0, 1e-6) << "FD stiffness " << fd << " N/m, stated " << k << " N/m at rho " << rho0;
+  const double fd =
+      (law.calcNormalForce(at(rho0 + h), p) - law.calcNormalForce(at(rho0 - h), p)) / (2 * h);
+  EXPECT_NEAR(fd / k, 1.0, 1e-6) << "FD stiffness " << fd << " N/m, stated " << k << " N/m at rho "
+                                 << rho0;
 
   // Damping acts linearly on the deflection rate with the "damping" parameter (while unclamped).
   for (double rate : {-0.1, 0.05, 0.4}) {
@@ -179,7 +186,8 @@ void checkFollowerContract(const TireLaw& law, const std::vector<double>& p) {
   EXPECT_DOUBLE_EQ(law.calcNormalForce(s, p), f_hub);
   const double rho0 = law.operatingDeflection(p);
   const double h = 1e-7;
-  const double fd = (law.calcNormalForce(at(rho0 + h), p) - law.calcNormalForce(at(rho0 - h), p)) / (2 * h);
+  const double fd =
+      (law.calcNormalForce(at(rho0 + h), p) - law.calcNormalForce(at(rho0 - h), p)) / (2 * h);
   EXPECT_NEAR(fd / k, 1.0, 1e-6);
   for (double load : {1000.0, 4000.0, 9000.0}) {
     const double rho = law.calcStaticDeflection(load, p);
@@ -225,7 +233,8 @@ TEST(HubInput, IsATwoSidedLinkToTheSignal) {
   EXPECT_NEAR(law->calcNormalForce(s, p), 4000.0 + 1e5 * 0.1, 1e-6);
   // No shared tire compliance: the study's calibrated tire.stiffness and tire.damping do not apply.
   for (const auto& spec : law->parameters()) {
-    if (spec.name == "stiffness" || spec.name == "damping") ADD_FAILURE() << "the hub input has a tire " << spec.name;
+    if (spec.name == "stiffness" || spec.name == "damping")
+      ADD_FAILURE() << "the hub input has a tire " << spec.name;
   }
 }
 
@@ -277,7 +286,8 @@ TEST(FialaTire, IsExactlyLinearSpringAndDamper) {
   for (double rho : {1e-4, 0.004, 0.0123, 0.03, 0.1})
     for (double rate : {-0.5, -0.01, 0.0, 0.2, 1.5}) {
       // The damping ramps in over the first kContactDampingRamp_m of deflection (tire_law.hpp).
-      const double expected = std::max(0.0, k * rho + b * rate * std::min(1.0, rho / kContactDampingRamp_m));
+      const double expected =
+          std::max(0.0, k * rho + b * rate * std::min(1.0, rho / kContactDampingRamp_m));
       EXPECT_NEAR(law->calcNormalForce(at(rho, rate), p), expected, 1e-12 * (1.0 + expected))
           << "rho " << rho << " rate " << rate;
     }
@@ -309,8 +319,10 @@ TEST_F(Pac2002, WithoutQuadraticAndSpeedTermsIsLinearSpring) {
   const double k = 180000.0, c = 3000.0;
   for (double rho : {1e-4, 0.005, 0.0222, 0.05, 0.12})
     for (double rate : {-0.3, 0.0, 0.7}) {
-      const double expected = std::max(0.0, k * rho + c * rate * std::min(1.0, rho / kContactDampingRamp_m));
-      EXPECT_NEAR(force(at(rho, rate)), expected, 1e-12 * expected) << "rho " << rho << " rate " << rate;
+      const double expected =
+          std::max(0.0, k * rho + c * rate * std::min(1.0, rho / kContactDampingRamp_m));
+      EXPECT_NEAR(force(at(rho, rate)), expected, 1e-12 * expected)
+          << "rho " << rho << " rate " << rate;
     }
   // ... and then the operating point is where the nominal load is carried.
   EXPECT_NEAR(law->operatingDeflection(p), 4000.0 / k, 1e-15);
@@ -401,7 +413,8 @@ TEST_F(Pac2002, MatchesPaperEquationThreeAtAGeneralPoint) {
   s.camber_rad = 0.03;
   const double Cz = 180000, R0 = 0.31, Fz0 = 4000, qfz2 = 10, x = s.deflection_m / R0;
   const double qfz1 = std::sqrt(std::pow(Cz * R0 / Fz0, 2) - 4 * qfz2);
-  const double bracket = 1 + 0.04 * 27.0 * R0 / 16.7 - std::pow(0.3 * 1200 / Fz0, 2) - std::pow(0.2 * -800 / Fz0, 2);
+  const double bracket =
+      1 + 0.04 * 27.0 * R0 / 16.7 - std::pow(0.3 * 1200 / Fz0, 2) - std::pow(0.2 * -800 / Fz0, 2);
   const double expected = bracket * ((qfz1 + 5.0 * 0.03 * 0.03) * x + qfz2 * x * x) *
                               (1 + 0.7 * (240000.0 - 220000.0) / 220000.0) * Fz0 +
                           3000.0 * -0.15;
@@ -411,7 +424,7 @@ TEST_F(Pac2002, MatchesPaperEquationThreeAtAGeneralPoint) {
 TEST_F(Pac2002, CheckCombinationRejectsImaginaryQfz1) {
   EXPECT_EQ(law->checkCombination(p), "");
   const double a = 180000.0 * 0.31 / 4000.0;  // Cz R0 / Fz0
-  setp("qfz2", 0.25 * a * a);                  // (Cz R0/Fz0)^2 == 4 qfz2: qFz1 = 0, not allowed
+  setp("qfz2", 0.25 * a * a);                 // (Cz R0/Fz0)^2 == 4 qfz2: qFz1 = 0, not allowed
   EXPECT_NE(law->checkCombination(p), "");
   setp("qfz2", 60.0);  // 4 * 60 > 194.6
   const std::string msg = law->checkCombination(p);
@@ -439,22 +452,26 @@ TEST(TireParameters, CheckParameterValueMessages) {
     EXPECT_NE(neg.find("must be > 0"), std::string::npos) << neg;
     EXPECT_NE(neg.find("N/m"), std::string::npos) << neg;
     EXPECT_NE(neg.find("got -5"), std::string::npos) << neg;
-    EXPECT_NE(checkParameterValue(k, 0.0).find("must be > 0"), std::string::npos);  // exclusive bound
+    EXPECT_NE(checkParameterValue(k, 0.0).find("must be > 0"),
+              std::string::npos);  // exclusive bound
     const auto& c = specs[parameterIndex(specs, "damping")];
     EXPECT_EQ(checkParameterValue(c, 0.0), "");  // undamped is allowed
     const std::string negc = checkParameterValue(c, -1.0);
     EXPECT_NE(negc.find("must be >= 0"), std::string::npos) << negc;
     const auto& r0 = specs[parameterIndex(specs, "unloaded_radius_m")];
     EXPECT_NE(checkParameterValue(r0, 0.0).find("must be > 0"), std::string::npos);
-    for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    for (double bad :
+         {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
       EXPECT_NE(checkParameterValue(k, bad).find("must be a finite number"), std::string::npos);
     EXPECT_THROW(parameterIndex(specs, "no_such_parameter"), std::logic_error);
   }
   auto pac = makeTireLaw("pac2002", "test");
   const auto& specs = pac->parameters();
-  EXPECT_NE(checkParameterValue(specs[parameterIndex(specs, "qfz2")], -0.1).find("must be >= 0"), std::string::npos);
+  EXPECT_NE(checkParameterValue(specs[parameterIndex(specs, "qfz2")], -0.1).find("must be >= 0"),
+            std::string::npos);
   EXPECT_EQ(checkParameterValue(specs[parameterIndex(specs, "qfcx")], -3.0), "");  // unbounded
-  EXPECT_NE(checkParameterValue(specs[parameterIndex(specs, "fnomin_N")], 0.0).find("must be > 0"), std::string::npos);
+  EXPECT_NE(checkParameterValue(specs[parameterIndex(specs, "fnomin_N")], 0.0).find("must be > 0"),
+            std::string::npos);
 
   ParameterSpec bounded;
   bounded.name = "ratio";

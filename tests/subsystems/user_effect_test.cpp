@@ -59,7 +59,8 @@ TEST(UserEffect, ADigressiveDamperMatchesItsClosedForm) {
     const double expect = v == 0 ? 0.0 : 3000.0 * (v > 0 ? 1 : -1) * std::sqrt(std::abs(v) * 0.2);
     EXPECT_NEAR(e->calcStrutForce(state(0.01, v), p), expect, 1e-9 * (1 + std::abs(expect))) << v;
   }
-  EXPECT_EQ(e->calcStrutForce(state(0.01, 0.4), std::vector<double>{0.0, 0.2}), 0.0) << "off at c2 = 0";
+  EXPECT_EQ(e->calcStrutForce(state(0.01, 0.4), std::vector<double>{0.0, 0.2}), 0.0)
+      << "off at c2 = 0";
 }
 
 // The built-in damper asymmetry, (ratio − 1) c v on rebound (v < 0), written as an expression.
@@ -75,7 +76,9 @@ TEST(UserEffect, EqualsTheBuiltInEffectOfTheSameForm) {
   for (double ratio : {0.7, 1.0, 2.2})
     for (double v : {-1.2, -0.01, 0.0, 0.02, 0.9}) {
       const std::vector<double> p = {ratio};
-      EXPECT_DOUBLE_EQ(user->calcStrutForce(state(-0.02, v), p), builtin->calcStrutForce(state(-0.02, v), p)) << ratio << " " << v;
+      EXPECT_DOUBLE_EQ(user->calcStrutForce(state(-0.02, v), p),
+                       builtin->calcStrutForce(state(-0.02, v), p))
+          << ratio << " " << v;
     }
 }
 
@@ -83,7 +86,9 @@ TEST(UserEffect, EqualsTheBuiltInEffectOfTheSameForm) {
 TEST(UserEffect, ThreadsEvaluateIndependently) {
   const auto e = makeUserEffect(digressive());
   auto run = [&](double scale, std::vector<double>& out) {
-    for (int i = 0; i < 20000; ++i) out.push_back(e->calcStrutForce(state(0.0, scale * std::sin(0.001 * i)), std::vector<double>{1000.0 * scale, 0.3}));
+    for (int i = 0; i < 20000; ++i)
+      out.push_back(e->calcStrutForce(state(0.0, scale * std::sin(0.001 * i)),
+                                      std::vector<double>{1000.0 * scale, 0.3}));
   };
   std::vector<double> a, b, a1, b1;
   std::thread ta([&] { run(1.0, a); }), tb([&] { run(2.0, b); });
@@ -101,35 +106,56 @@ TEST(UserEffect, BadDefinitionsAreOneLineErrors) {
     std::string expect;
   };
   const std::vector<Case> cases = {
-      {[](UserEffectSpec& s) { s.force = "c2 * sign(w)"; }, "user_effects.digressive_damper: force: 'c2 * sign(w)': Unexpected token \"w\""},
-      {[](UserEffectSpec& s) { s.force = "c2 * (v"; }, "user_effects.digressive_damper: force: 'c2 * (v': "},
+      {[](UserEffectSpec& s) { s.force = "c2 * sign(w)"; },
+       "user_effects.digressive_damper: force: 'c2 * sign(w)': Unexpected token \"w\""},
+      {[](UserEffectSpec& s) { s.force = "c2 * (v"; },
+       "user_effects.digressive_damper: force: 'c2 * (v': "},
       {[](UserEffectSpec& s) { s.force = ""; }, "force: is required"},
-      {[](UserEffectSpec& s) { s.element = "wheel"; }, "element: unknown element 'wheel' (known: strut, tire, axle_roll, chassis)"},
-      {[](UserEffectSpec& s) { s.element = "tire"; }, "force: 'c2 * sign(v) * sqrt(abs(v) * v0)': Unexpected token \"v\""},
-      {[](UserEffectSpec& s) { s.parameters[0].unit = "Ns/m"; }, "parameters.c2.unit: unit 'Ns/m': unknown symbol 'Ns'"},
-      {[](UserEffectSpec& s) { s.parameters[1].unit = "mm/s"; }, "parameters.v0.unit: unit 'mm/s': unknown symbol 'mm' (prefixes are not allowed: values are SI)"},
-      {[](UserEffectSpec& s) { s.parameters[0].unit = "N/m"; }, "force: 'c2 * sign(v) * sqrt(abs(v) * v0)' gives N/s, not N"},
+      {[](UserEffectSpec& s) { s.element = "wheel"; },
+       "element: unknown element 'wheel' (known: strut, tire, axle_roll, chassis)"},
+      {[](UserEffectSpec& s) { s.element = "tire"; },
+       "force: 'c2 * sign(v) * sqrt(abs(v) * v0)': Unexpected token \"v\""},
+      {[](UserEffectSpec& s) { s.parameters[0].unit = "Ns/m"; },
+       "parameters.c2.unit: unit 'Ns/m': unknown symbol 'Ns'"},
+      {[](UserEffectSpec& s) { s.parameters[1].unit = "mm/s"; },
+       "parameters.v0.unit: unit 'mm/s': unknown symbol 'mm' (prefixes are not allowed: values are "
+       "SI)"},
+      {[](UserEffectSpec& s) { s.parameters[0].unit = "N/m"; },
+       "force: 'c2 * sign(v) * sqrt(abs(v) * v0)' gives N/s, not N"},
       {[](UserEffectSpec& s) { s.force = "c2 * v * v"; }, "force: 'c2 * v * v' gives N*m/s, not N"},
       {[](UserEffectSpec& s) { s.force = "c2 * sign(v) * sqrt(abs(v) * 0.1)"; },
-       "force: 'c2 * sign(v) * sqrt(abs(v) * 0.1)' gives N*s^0.5/m^0.5, not N, with the variables' units (docs/extending.md) and the parameters' own (a bare number counts as dimensionless"},
-      {[](UserEffectSpec& s) { s.force = "c2 * v + c2 * q"; }, "force: 'c2 * v + c2 * q' mixes units"},
+       "force: 'c2 * sign(v) * sqrt(abs(v) * 0.1)' gives N*s^0.5/m^0.5, not N, with the variables' "
+       "units (docs/extending.md) and the parameters' own (a bare number counts as dimensionless"},
+      {[](UserEffectSpec& s) { s.force = "c2 * v + c2 * q"; },
+       "force: 'c2 * v + c2 * q' mixes units"},
       {[](UserEffectSpec& s) { s.force = "c2 * v * exp(q)"; }, "mixes units"},
-      {[](UserEffectSpec& s) { s.parameters[1].upper = s.parameters[1].lower; }, "parameters.v0: needs a prior range with finite lower < upper"},
-      {[](UserEffectSpec& s) { s.parameters[1].lower = std::nan(""); }, "parameters.v0: needs a prior range"},
-      {[](UserEffectSpec& s) { s.parameters[1].value = 5; }, "parameters.v0.value: must lie in [lower, upper] = [0.01, 1], got 5"},
+      {[](UserEffectSpec& s) { s.parameters[1].upper = s.parameters[1].lower; },
+       "parameters.v0: needs a prior range with finite lower < upper"},
+      {[](UserEffectSpec& s) { s.parameters[1].lower = std::nan(""); },
+       "parameters.v0: needs a prior range"},
+      {[](UserEffectSpec& s) { s.parameters[1].value = 5; },
+       "parameters.v0.value: must lie in [lower, upper] = [0.01, 1], got 5"},
       {[](UserEffectSpec& s) { s.parameters[0].name = "v"; }, "parameters.v: the name is taken"},
-      {[](UserEffectSpec& s) { s.parameters[0].name = "dq"; }, "parameters.dq: the name is taken (state variables of a strut element: q, v, dq, dv, k, c, t, u, front"},
-      {[](UserEffectSpec& s) { s.parameters[0].name = "2x"; }, "parameters.2x: a parameter's name must be letters"},
+      {[](UserEffectSpec& s) { s.parameters[0].name = "dq"; },
+       "parameters.dq: the name is taken (state variables of a strut element: q, v, dq, dv, k, c, "
+       "t, u, front"},
+      {[](UserEffectSpec& s) { s.parameters[0].name = "2x"; },
+       "parameters.2x: a parameter's name must be letters"},
       {[](UserEffectSpec& s) { s.parameters[0].unit = ""; }, "parameters.c2.unit: is required"},
-      {[](UserEffectSpec& s) { s.force = "c2 * v + 5"; }, "force: must be 0 with every parameter at its value (the effect off); at q = -0.08 m, v = -1 m/s it is 5 N"},
-      {[](UserEffectSpec& s) { s.force = "c2 * v / (q - 0.02)"; }, "force: must be 0 with every parameter at its value"},
-      {[](UserEffectSpec& s) { s.force = "c2 * v / v0 / (v0 - 0.01) * 1e-3"; }, "force: is not finite"},
+      {[](UserEffectSpec& s) { s.force = "c2 * v + 5"; },
+       "force: must be 0 with every parameter at its value (the effect off); at q = -0.08 m, v = "
+       "-1 m/s it is 5 N"},
+      {[](UserEffectSpec& s) { s.force = "c2 * v / (q - 0.02)"; },
+       "force: must be 0 with every parameter at its value"},
+      {[](UserEffectSpec& s) { s.force = "c2 * v / v0 / (v0 - 0.01) * 1e-3"; },
+       "force: is not finite"},
   };
   for (const auto& c : cases) {
     UserEffectSpec s = digressive();
     c.spoil(s);
     const std::string what = errorOf(s);
-    EXPECT_NE(what.find(c.expect), std::string::npos) << "expected [" << c.expect << "] in [" << what << "]";
+    EXPECT_NE(what.find(c.expect), std::string::npos)
+        << "expected [" << c.expect << "] in [" << what << "]";
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     EXPECT_EQ(what.rfind("study.toml:30: user_effects.digressive_damper", 0), 0u) << what;
   }
@@ -163,7 +189,8 @@ TEST(UserEffect, EachElementReadsItsDocumentedVariables) {
     s.time_s = 1.5;
     s.speed_mps = 12.0;
     s.front = false;
-    const double expect = 2 * (0.03 + 3 * -0.4 + 9 * 0.02 + 27 * -0.5 + 81 * 3e4 + 243 * 2500 + 729 * 1.5 + 2187 * 12.0 + 6561 * 0.0);
+    const double expect = 2 * (0.03 + 3 * -0.4 + 9 * 0.02 + 27 * -0.5 + 81 * 3e4 + 243 * 2500 +
+                               729 * 1.5 + 2187 * 12.0 + 6561 * 0.0);
     EXPECT_NEAR(make("strut")->calcStrutForce(s, a), expect, 1e-9 * std::abs(expect));
     EXPECT_EQ(make("strut")->kind(), EffectKind::Strut);
   }
@@ -176,7 +203,8 @@ TEST(UserEffect, EachElementReadsItsDocumentedVariables) {
     s.time_s = 2.0;
     s.forward_speed_mps = 10.0;
     s.front = true;
-    const double expect = 2 * (0.02 + 3 * 0.3 + 9 * 4000 + 27 * -0.01 + 81 * 2.0 + 243 * 10.0 + 729 * 1.0);
+    const double expect =
+        2 * (0.02 + 3 * 0.3 + 9 * 4000 + 27 * -0.01 + 81 * 2.0 + 243 * 10.0 + 729 * 1.0);
     EXPECT_NEAR(make("tire")->calcTireLoad(s, a), expect, 1e-9 * std::abs(expect));
     EXPECT_EQ(make("tire")->kind(), EffectKind::TireLoad);
   }
@@ -215,12 +243,34 @@ TEST(UserEffect, HomogeneousExpressionsPassTheUnitCheck) {
   };
   const std::vector<Ok> ok = {
       {"strut", "kb * max(q - g, 0)^2", {{"kb", "N/m^2", 0, 0, 1e7}, {"g", "m", 0.02, 0.0, 0.1}}},
-      {"strut", "F0 * (max(q - g, 0) / g)^n", {{"F0", "N", 0, 0, 1e4}, {"g", "m", 0.02, 0.01, 0.1}, {"n", "1", 2, 1, 3}}},
-      {"strut", "c2 * v0 * tanh(v / v0) + ka * dq + cr * dv", {{"c2", "N*s/m", 0, 0, 1e4}, {"v0", "m/s", 0.1, 0.01, 1}, {"ka", "N/m", 0, 0, 1e4}, {"cr", "kg/s", 0, 0, 1e3}}},
-      {"strut", "mu * k * q * (u / u0)^2 + a * sin(2 * _pi * f * t) * front", {{"mu", "1", 0, 0, 1}, {"u0", "m/s", 10, 1, 30}, {"a", "N", 0, 0, 100}, {"f", "Hz", 2, 1, 10}}},
-      {"tire", "kt * qt + ct * vt + r * fz + kz * zr", {{"kt", "N/m", 0, 0, 1e5}, {"ct", "N*s/m", 0, 0, 1e3}, {"r", "1", 0, -0.5, 0.5}, {"kz", "N/m", 0, 0, 1e5}}},
+      {"strut",
+       "F0 * (max(q - g, 0) / g)^n",
+       {{"F0", "N", 0, 0, 1e4}, {"g", "m", 0.02, 0.01, 0.1}, {"n", "1", 2, 1, 3}}},
+      {"strut",
+       "c2 * v0 * tanh(v / v0) + ka * dq + cr * dv",
+       {{"c2", "N*s/m", 0, 0, 1e4},
+        {"v0", "m/s", 0.1, 0.01, 1},
+        {"ka", "N/m", 0, 0, 1e4},
+        {"cr", "kg/s", 0, 0, 1e3}}},
+      {"strut",
+       "mu * k * q * (u / u0)^2 + a * sin(2 * _pi * f * t) * front",
+       {{"mu", "1", 0, 0, 1},
+        {"u0", "m/s", 10, 1, 30},
+        {"a", "N", 0, 0, 100},
+        {"f", "Hz", 2, 1, 10}}},
+      {"tire",
+       "kt * qt + ct * vt + r * fz + kz * zr",
+       {{"kt", "N/m", 0, 0, 1e5},
+        {"ct", "N*s/m", 0, 0, 1e3},
+        {"r", "1", 0, -0.5, 0.5},
+        {"kz", "N/m", 0, 0, 1e5}}},
       {"axle_roll", "kr * dq + cr * dv", {{"kr", "N/m", 0, 0, 4e4}, {"cr", "N*s/m", 0, 0, 1e3}}},
-      {"chassis", "cl * u^2 + kz * z + cz * w + mp * pitch", {{"cl", "kg/m", 0, -5, 5}, {"kz", "N/m", 0, 0, 1e4}, {"cz", "N*s/m", 0, 0, 1e3}, {"mp", "N/rad", 0, 0, 1e3}}},
+      {"chassis",
+       "cl * u^2 + kz * z + cz * w + mp * pitch",
+       {{"cl", "kg/m", 0, -5, 5},
+        {"kz", "N/m", 0, 0, 1e4},
+        {"cz", "N*s/m", 0, 0, 1e3},
+        {"mp", "N/rad", 0, 0, 1e3}}},
   };
   for (const auto& c : ok) {
     UserEffectSpec s;

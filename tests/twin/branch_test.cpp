@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "shipped_study.hpp"
 #include "common/errors.hpp"
+#include "io/study.hpp"
+#include "shipped_study.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/simulator.hpp"
-#include "io/study.hpp"
 
 using namespace dtwin;
 
@@ -18,7 +18,8 @@ namespace {
 
 const Study& demo() { return dtwin_test::shippedStudy("demo"); }
 
-double rmsDiff(const std::vector<double>& t, const std::vector<double>& a, const std::vector<double>& b, double lo, double hi) {
+double rmsDiff(const std::vector<double>& t, const std::vector<double>& a,
+               const std::vector<double>& b, double lo, double hi) {
   double s = 0;
   long n = 0;
   for (std::size_t i = 0; i < t.size(); ++i)
@@ -35,7 +36,8 @@ struct RoadSet {
   ScenarioSpec scenario = demo().scenario("field");
   std::vector<std::shared_ptr<const Road>> roads;
   std::vector<const Road*> ptrs;
-  explicit RoadSet(const std::string& id) : assembly(demo().assembly(id)), model(demo().makeModel(assembly)) {
+  explicit RoadSet(const std::string& id)
+      : assembly(demo().assembly(id)), model(demo().makeModel(assembly)) {
     for (std::uint64_t seed : {11ULL, 2024ULL, 777777ULL}) {
       roads.push_back(makeRoad(scenario, model->vehicle(), seed));
       ptrs.push_back(roads.back().get());
@@ -54,11 +56,13 @@ TEST(Branch, EachBranchAgreesWithAnUnbranchedRun) {
     RoadSet s(id);
     Simulator sim(s.model, demo().simulation);
     const double tb = sim.branchTime(s.scenario);
-    ASSERT_NEAR(tb, s.scenario.road->roughStart_s() - demo().simulation.obstacle_margin_before_s, 1e-15);
+    ASSERT_NEAR(tb, s.scenario.road->roughStart_s() - demo().simulation.obstacle_margin_before_s,
+                1e-15);
     const auto values = s.model->defaultRunValues();
     const auto t0 = std::chrono::steady_clock::now();
     const auto branched = sim.runBranched(values, s.ptrs, s.scenario);
-    const double wall_branched = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall_branched =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_EQ(branched.size(), s.ptrs.size());
     double wall_plain = 0;
     for (std::size_t r = 0; r < s.ptrs.size(); ++r) {
@@ -75,16 +79,24 @@ TEST(Branch, EachBranchAgreesWithAnUnbranchedRun) {
       // Before the branch: every channel bit-identical to the unbranched run.
       for (std::size_t c = 0; c < b.trace.channels().size(); ++c)
         for (std::size_t i = 0; i < t.size() && t[i] <= tb; ++i)
-          ASSERT_EQ(b.trace.column(c)[i], plain.trace.column(c)[i]) << b.trace.channels()[c].name << " t = " << t[i];
-      const double rms = rmsDiff(t, b.trace.column("hub_force_fl_N"), plain.trace.column("hub_force_fl_N"), 10.0, 15.0);
-      std::printf("%s road %zu: branched vs unbranched hub_force_fl_N RMS difference over 10-15 s: %.3g N\n", id, r, rms);
+          ASSERT_EQ(b.trace.column(c)[i], plain.trace.column(c)[i])
+              << b.trace.channels()[c].name << " t = " << t[i];
+      const double rms = rmsDiff(t, b.trace.column("hub_force_fl_N"),
+                                 plain.trace.column("hub_force_fl_N"), 10.0, 15.0);
+      std::printf(
+          "%s road %zu: branched vs unbranched hub_force_fl_N RMS difference over 10-15 s: %.3g "
+          "N\n",
+          id, r, rms);
       EXPECT_LT(rms, 20.0);
       // The branch really followed its own road: the rough part differs from road 0's.
       if (r > 0) {
-        EXPECT_GT(rmsDiff(t, b.trace.column("hub_force_fl_N"), branched[0].trace.column("hub_force_fl_N"), 10.0, 15.0), 200.0);
+        EXPECT_GT(rmsDiff(t, b.trace.column("hub_force_fl_N"),
+                          branched[0].trace.column("hub_force_fl_N"), 10.0, 15.0),
+                  200.0);
       }
     }
-    std::printf("%s: %zu roads branched %.3f s, unbranched %.3f s\n", id, s.ptrs.size(), wall_branched, wall_plain);
+    std::printf("%s: %zu roads branched %.3f s, unbranched %.3f s\n", id, s.ptrs.size(),
+                wall_branched, wall_plain);
   }
 }
 
@@ -98,7 +110,8 @@ TEST(Branch, OutputsBeforeTheBranchTimeAreIdenticalAcrossRoads) {
   for (std::size_t r = 1; r < res.size(); ++r)
     for (std::size_t c = 0; c < res[0].trace.channels().size(); ++c)
       for (std::size_t i = 0; i < t.size() && t[i] <= tb; ++i) {
-        ASSERT_EQ(res[r].trace.column(c)[i], res[0].trace.column(c)[i]) << res[0].trace.channels()[c].name << " t = " << t[i];
+        ASSERT_EQ(res[r].trace.column(c)[i], res[0].trace.column(c)[i])
+            << res[0].trace.channels()[c].name << " t = " << t[i];
         rows_before = std::max(rows_before, i + 1);
       }
   EXPECT_EQ(rows_before, static_cast<std::size_t>(std::floor(tb * 1000.0 + 1e-9)) + 1);
@@ -114,8 +127,10 @@ TEST(Branch, DeterministicOnRerunAndIndependentOfTheOtherRoads) {
   Simulator sim2(s.model, demo().simulation);
   const auto c = sim2.runBranched(values, {s.ptrs[2]}, s.scenario);
   for (std::size_t r = 0; r < a.size(); ++r)
-    for (std::size_t k = 0; k < a[r].trace.channels().size(); ++k) ASSERT_EQ(a[r].trace.column(k), b[r].trace.column(k));
-  for (std::size_t k = 0; k < a[2].trace.channels().size(); ++k) ASSERT_EQ(a[2].trace.column(k), c[0].trace.column(k));
+    for (std::size_t k = 0; k < a[r].trace.channels().size(); ++k)
+      ASSERT_EQ(a[r].trace.column(k), b[r].trace.column(k));
+  for (std::size_t k = 0; k < a[2].trace.channels().size(); ++k)
+    ASSERT_EQ(a[2].trace.column(k), c[0].trace.column(k));
   EXPECT_EQ(a[2].stats.steps, c[0].stats.steps);
 }
 
@@ -128,7 +143,8 @@ TEST(Branch, RefusesScenariosWithoutASmoothStart) {
   EXPECT_LT(sim.branchTime(lab), 0.0);
   EXPECT_THROW(sim.runBranched(values, {bump.get()}, lab), InputError);
   ScenarioSpec rough = s.scenario;
-  auto rough_from_start = std::make_shared<IsoRoadSetting>(dynamic_cast<const IsoRoadSetting&>(*rough.road));
+  auto rough_from_start =
+      std::make_shared<IsoRoadSetting>(dynamic_cast<const IsoRoadSetting&>(*rough.road));
   rough_from_start->smooth_until_s = 0.0;
   rough.road = rough_from_start;
   auto r0 = makeRoad(rough, s.model->vehicle(), 1);

@@ -22,7 +22,8 @@ Result twin(const std::string& args) { return dtwin_test::runTwin(args); }
 
 TEST(Cli, SimulateWritesTraceAndSidecar) {
   const std::string out = ::testing::TempDir() + "/cli/m3.csv";
-  const auto r = twin("simulate --study " + kSrc + "/data/studies/paper.toml --assembly M3 --scenario lab --out " + out +
+  const auto r = twin("simulate --study " + kSrc +
+                      "/data/studies/paper.toml --assembly M3 --scenario lab --out " + out +
                       " --set tire.stiffness=2.0e5 --window 5.9,6.3");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string csv = slurp(out);
@@ -46,11 +47,15 @@ TEST(Cli, BadInputsExitTwoWithOneLine) {
   const std::vector<Case> cases = {
       {"simulate --study " + study + " --assembly M7 --out " + out, "unknown assembly 'M7'"},
       {"simulate --study " + study + " --scenario moon --out " + out, "unknown scenario 'moon'"},
-      {"simulate --study " + study + " --effect warp_drive --out " + out, "--effect: unknown effect 'warp_drive'"},
-      {"simulate --study " + study + " --set tire.stiffness=-1 --out " + out, "tire.stiffness must be > 0"},
+      {"simulate --study " + study + " --effect warp_drive --out " + out,
+       "--effect: unknown effect 'warp_drive'"},
+      {"simulate --study " + study + " --set tire.stiffness=-1 --out " + out,
+       "tire.stiffness must be > 0"},
       {"simulate --study " + study + " --set tire.stiffness=abc --out " + out, "must be a number"},
-      {"simulate --study /nonexistent/study.toml --out " + out, "/nonexistent/study.toml: study file not found"},
-      {"simulate --study " + study + " --out " + ::testing::TempDir() + "/cli/bad.txt", "--out: must name a .csv file"},
+      {"simulate --study /nonexistent/study.toml --out " + out,
+       "/nonexistent/study.toml: study file not found"},
+      {"simulate --study " + study + " --out " + ::testing::TempDir() + "/cli/bad.txt",
+       "--out: must name a .csv file"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.args);
@@ -65,7 +70,7 @@ TEST(Cli, BadInputsExitTwoWithOneLine) {
 TEST(Cli, ListShowsAssembliesEffectsScenarios) {
   const auto r = twin("list --study " + kSrc + "/data/studies/paper.toml");
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* s : {"M1", "M4", "pac2002 + macpherson", "bump_stop", "tire_enveloping", "strut_friction",
-                        "damper_asymmetry", "lab", "field", "hub_force_fl_N"})
+  for (const char* s : {"M1", "M4", "pac2002 + macpherson", "bump_stop", "tire_enveloping",
+                        "strut_friction", "damper_asymmetry", "lab", "field", "hub_force_fl_N"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
 }

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <string>
 
+#include "io/study.hpp"
 #include "shipped_study.hpp"
 #include "test_util.hpp"
-#include "io/study.hpp"
 #include "twin/simulator.hpp"
 
 using namespace dtwin;
@@ -20,14 +20,16 @@ namespace {
 const Study& demoStudy() { return dtwin_test::shippedStudy("demo"); }
 
 /// The effect `effect` with `values` ("param" -> value) installed as `as` ("bump_stop@rr").
-EffectSetting installed(const std::string& as, const std::vector<std::pair<std::string, double>>& values) {
+EffectSetting installed(const std::string& as,
+                        const std::vector<std::pair<std::string, double>>& values) {
   EffectSetting e;
   e.name = as;
   for (const auto& [p, v] : values) e.values.push_back({as + "." + p, v, "test: " + as, "test"});
   return e;
 }
 
-RunResult runWith(const std::vector<EffectSetting>& effects, const std::string& scenario = "diag_bump") {
+RunResult runWith(const std::vector<EffectSetting>& effects,
+                  const std::string& scenario = "diag_bump") {
   const Study& s = demoStudy();
   const auto model = s.makeModel(s.assembly("M1"), effects);
   Simulator sim(model, s.simulation);
@@ -47,7 +49,8 @@ std::vector<double> channel(const RunResult& r, const std::string& name) {
 
 double maxDiff(const std::vector<double>& a, const std::vector<double>& b) {
   double m = 0;
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+    m = std::max(m, std::fabs(a[i] - b[i]));
   return m;
 }
 
@@ -56,8 +59,11 @@ const std::vector<std::pair<std::string, double>> kBump{{"stiffness", 5e6}, {"ga
 }  // namespace
 
 TEST(CornerEffects, AnEffectAtEachCornerIsTheEffectAtAllFourBitForBit) {
-  for (const auto& [effect, values] : std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>>{
-           {"bump_stop", kBump}, {"strut_friction", {{"force_N", 150}}}, {"top_mount_compliance", {{"compliance_m_per_N", 3e-6}}}}) {
+  for (const auto& [effect, values] :
+       std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>>{
+           {"bump_stop", kBump},
+           {"strut_friction", {{"force_N", 150}}},
+           {"top_mount_compliance", {{"compliance_m_per_N", 3e-6}}}}) {
     SCOPED_TRACE(effect);
     const RunResult all = runWith({installed(effect, values)});
     std::vector<EffectSetting> each;
@@ -76,10 +82,12 @@ TEST(CornerEffects, AtOneCornerItBreaksTheLeftRightSymmetryOfASymmetricRun) {
   const RunResult all = runWith({installed("bump_stop", kBump)});
   const RunResult fl = runWith({installed("bump_stop@fl", kBump)});
   EXPECT_LT(maxDiff(channel(all, "susp_defl_fl_m"), channel(all, "susp_defl_fr_m")), 1e-9);
-  EXPECT_LT(maxDiff(channel(all, "chassis_roll_rad"), std::vector<double>(all.trace.rows(), 0.0)), 1e-9);
+  EXPECT_LT(maxDiff(channel(all, "chassis_roll_rad"), std::vector<double>(all.trace.rows(), 0.0)),
+            1e-9);
   const double fl_fr = maxDiff(channel(fl, "susp_defl_fl_m"), channel(fl, "susp_defl_fr_m"));
   EXPECT_GT(fl_fr, 1e-3);  // the stop holds the front-left strut back over the bump
-  EXPECT_GT(maxDiff(channel(fl, "chassis_roll_rad"), std::vector<double>(fl.trace.rows(), 0.0)), 1e-4);
+  EXPECT_GT(maxDiff(channel(fl, "chassis_roll_rad"), std::vector<double>(fl.trace.rows(), 0.0)),
+            1e-4);
   // Where the stop acts, the front-left strut compresses less than at the front right.
   const auto qfl = channel(fl, "susp_defl_fl_m"), qfr = channel(fl, "susp_defl_fr_m");
   double most_fl = -1, most_fr = -1;

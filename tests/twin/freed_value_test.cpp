@@ -6,19 +6,22 @@
 
 #include <string>
 
-#include "io/vehicle_file.hpp"
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
+#include "io/study.hpp"
+#include "io/vehicle_file.hpp"
 #include "test_util.hpp"
 #include "twin/simulator.hpp"
-#include "io/study.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;
 
 namespace {
 
-Study demo() { return loadStudy(dtwin_test::writeDemoStudy(dtwin_test::freshDir("freed") / "study.toml", "").string()); }
+Study demo() {
+  return loadStudy(
+      dtwin_test::writeDemoStudy(dtwin_test::freshDir("freed") / "study.toml", "").string());
+}
 
 Trace runOf(Simulator& sim, const std::vector<double>& values, const Study& s) {
   const auto& sc = s.scenario("diag_bump");
@@ -31,7 +34,8 @@ Trace runOf(Simulator& sim, const std::vector<double>& values, const Study& s) {
 void expectSame(const Trace& a, const Trace& b) {
   ASSERT_EQ(a.rows(), b.rows());
   for (const char* ch : {"hub_force_fl_N", "hub_force_rr_N", "susp_defl_fl_m", "chassis_heave_m"})
-    for (std::size_t i = 0; i < a.rows(); ++i) ASSERT_EQ(a.column(ch)[i], b.column(ch)[i]) << ch << " row " << i;
+    for (std::size_t i = 0; i < a.rows(); ++i)
+      ASSERT_EQ(a.column(ch)[i], b.column(ch)[i]) << ch << " row " << i;
 }
 
 }  // namespace
@@ -54,7 +58,8 @@ TEST(FreedValue, RunsAreThoseOfAModelBuiltWithTheValue) {
 
   values[static_cast<std::size_t>(slot)] = 1.2 * file;
   const Trace heavier = runOf(sim, values, s);
-  const auto built = s.makeModel(s.assemblies().front(), {}, {{"wheel.mass_kg", 1.2 * file, "test", "test"}});
+  const auto built =
+      s.makeModel(s.assemblies().front(), {}, {{"wheel.mass_kg", 1.2 * file, "test", "test"}});
   Simulator sim_built(built, s.simulation);
   expectSame(heavier, runOf(sim_built, built->defaultRunValues(), s));
   EXPECT_NE(heavier.column("hub_force_fl_N")[0], at_file.column("hub_force_fl_N")[0]);
@@ -62,7 +67,8 @@ TEST(FreedValue, RunsAreThoseOfAModelBuiltWithTheValue) {
   // Static equilibrium: the four hub forces carry the chassis and the four (heavier) wheels.
   const auto& v = built->vehicle();
   double sum = 0;
-  for (const char* c : {"fl", "fr", "rl", "rr"}) sum += heavier.column(std::string("hub_force_") + c + "_N")[0];
+  for (const char* c : {"fl", "fr", "rl", "rr"})
+    sum += heavier.column(std::string("hub_force_") + c + "_N")[0];
   EXPECT_NEAR(sum, (v.chassis_mass + 4 * 1.2 * file) * v.gravity, 1e-6 * sum);
 
   // Back to the file's value: the same numbers as the first run (the system is rebuilt again).
@@ -135,7 +141,8 @@ TEST(FreedValue, APitchInertiaOverItsWholeRangeCarriesTheYawInertiaIntoTheTriang
     values[slot] = iyy;
     const Trace t = runOf(sim, values, s);  // Simbody refused 3150 with Ixx 500, Izz 2300 before
     ASSERT_GT(t.rows(), 0u);
-    EXPECT_NE(t.column("chassis_pitch_rad")[t.rows() / 2], at_file.column("chassis_pitch_rad")[t.rows() / 2]);
+    EXPECT_NE(t.column("chassis_pitch_rad")[t.rows() / 2],
+              at_file.column("chassis_pitch_rad")[t.rows() / 2]);
     EXPECT_EQ(freed->withFreedValues(values)->vehicle().izz, yawInertiaInTriangle(500, iyy, 2300));
   }
 }
@@ -143,7 +150,8 @@ TEST(FreedValue, APitchInertiaOverItsWholeRangeCarriesTheYawInertiaIntoTheTriang
 TEST(FreedValue, InertiasThatNoRigidBodyHasAreRefusedWhereTheyAreWritten) {
   const auto dir = dtwin_test::freshDir("inertia_triangle");
   // In the vehicle file: the file is named.
-  std::string vehicle = dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml");
+  std::string vehicle =
+      dtwin_test::slurp(fs::path(DTWIN_SOURCE_DIR) / "data" / "vehicle" / "midsize_sedan.toml");
   const std::string from = "yaw_inertia_kgm2 = { value = 2300.0";
   ASSERT_NE(vehicle.find(from), std::string::npos);
   vehicle.replace(vehicle.find(from), from.size(), "yaw_inertia_kgm2 = { value = 3000.0");
@@ -154,16 +162,23 @@ TEST(FreedValue, InertiasThatNoRigidBodyHasAreRefusedWhereTheyAreWritten) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string m = e.what();
-    EXPECT_EQ(m.rfind((dir / "vehicle.toml").string() + ": the chassis inertias roll 500, pitch 2100 and yaw 3000", 0), 0u) << m;
+    EXPECT_EQ(m.rfind((dir / "vehicle.toml").string() +
+                          ": the chassis inertias roll 500, pitch 2100 and yaw 3000",
+                      0),
+              0u)
+        << m;
     EXPECT_NE(m.find("triangle inequality"), std::string::npos) << m;
   }
   // In the study's [fixed]: the study and the table are named.
-  const auto study = dtwin_test::writeDemoStudy(dir / "study.toml", "\n[fixed]\n\"chassis.roll_inertia_kgm2\" = 100.0\n");
+  const auto study = dtwin_test::writeDemoStudy(
+      dir / "study.toml", "\n[fixed]\n\"chassis.roll_inertia_kgm2\" = 100.0\n");
   try {
     (void)loadStudy(study.string()).parameterTable();
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("study.toml: fixed: the chassis inertias roll 100"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("study.toml: fixed: the chassis inertias roll 100"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -179,7 +194,8 @@ TEST(FreedValue, TheCgMovesForwardAtAFixedWheelbaseAndTheStaticLoadsFollow) {
   auto values = freed->defaultRunValues();
   const auto slot = static_cast<std::size_t>(freed->slot("chassis.cg_x_m"));
   EXPECT_EQ(values[slot], 0.0);
-  expectSame(runOf(sim, values, s), runOf(sim_base, base->defaultRunValues(), s));  // 0: the file's CG, bit for bit
+  expectSame(runOf(sim, values, s),
+             runOf(sim_base, base->defaultRunValues(), s));  // 0: the file's CG, bit for bit
 
   values[slot] = 0.08;
   const auto moved = freed->withFreedValues(values);
@@ -202,7 +218,8 @@ TEST(FreedValue, TheCgMovesForwardAtAFixedWheelbaseAndTheStaticLoadsFollow) {
     (void)freed->withFreedValues(values);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("puts the CG outside the wheelbase"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("puts the CG outside the wheelbase"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -211,13 +228,18 @@ TEST(FreedValue, TheCgMovesForwardAtAFixedWheelbaseAndTheStaticLoadsFollow) {
 // predicts, bit for bit. Bounds that would move the CG off the wheelbase are refused when read.
 TEST(FreedValue, AVehicleValueInCalibratedIsCalibratedLikeALawValue) {
   const fs::path dir = dtwin_test::freshDir("freed_calibrated");
-  const Study s = loadStudy(dtwin_test::writeDemoStudy(dir / "a.toml", "\n[[calibrated]]\nname = \"chassis.mass_kg\"\nunit = \"kg\"\n"
-                                                                         "lower = 1100\nupper = 1700\ntruth = 1400\n")
-                                .string());
+  const Study s = loadStudy(
+      dtwin_test::writeDemoStudy(dir / "a.toml",
+                                 "\n[[calibrated]]\nname = \"chassis.mass_kg\"\nunit = \"kg\"\n"
+                                 "lower = 1100\nupper = 1700\ntruth = 1400\n")
+          .string());
   ASSERT_EQ(s.calibrated.back().name, "chassis.mass_kg");
-  const Study fixed = loadStudy(dtwin_test::writeDemoStudy(dir / "b.toml", "\n[fixed]\n\"chassis.mass_kg\" = 1530\n").string());
+  const Study fixed = loadStudy(
+      dtwin_test::writeDemoStudy(dir / "b.toml", "\n[fixed]\n\"chassis.mass_kg\" = 1530\n")
+          .string());
   LabData data;
-  for (int k = 200; k <= 2800; k += 20) data.records.push_back({1, k / 1000.0, "hub_force_fl_N", 0.0});
+  for (int k = 200; k <= 2800; k += 20)
+    data.records.push_back({1, k / 1000.0, "hub_force_fl_N", 0.0});
   const std::vector<calib::DataSet> sets{{"d", "diag_bump", data}};
   const calib::LabObjective with(s, s.assemblies().front(), sets, {});
   const calib::LabObjective base(fixed, fixed.assemblies().front(), sets, {});
@@ -230,7 +252,10 @@ TEST(FreedValue, AVehicleValueInCalibratedIsCalibratedLikeALawValue) {
   EXPECT_NE(with.predict(th), expect);
 
   try {
-    loadStudy(dtwin_test::writeDemoStudy(dir / "c.toml", "\n[[calibrated]]\nname = \"chassis.cg_x_m\"\nlower = -0.2\nupper = 1.6\n").string());
+    loadStudy(dtwin_test::writeDemoStudy(
+                  dir / "c.toml",
+                  "\n[[calibrated]]\nname = \"chassis.cg_x_m\"\nlower = -0.2\nupper = 1.6\n")
+                  .string());
     FAIL() << "a CG range beyond the front axle was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("calibrated[4]"), std::string::npos) << e.what();

@@ -11,10 +11,10 @@
 #include <Eigen/Dense>
 
 #include "calibration/calibrate.hpp"
-#include "test_util.hpp"
 #include "io/log_import.hpp"
-#include "twin/simulator.hpp"
 #include "io/study.hpp"
+#include "test_util.hpp"
+#include "twin/simulator.hpp"
 
 using namespace dtwin;
 using cd = std::complex<double>;
@@ -26,7 +26,8 @@ constexpr double kTwoPi = 6.283185307179586;
 /// The linearised 7-DOF vehicle of M3 (Fiala + MacPherson): q = (heave z, roll φ, pitch θ,
 /// u_fl, u_fr, u_rl, u_rr), u the wheel's travel along the chassis z from static.
 struct LinearVehicle {
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(7, 7), C = Eigen::MatrixXd::Zero(7, 7), K = Eigen::MatrixXd::Zero(7, 7);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(7, 7), C = Eigen::MatrixXd::Zero(7, 7),
+                  K = Eigen::MatrixXd::Zero(7, 7);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(4, 7);  ///< row i: ∂Z_i/∂q, the wheel centre's height
   double kt = 0;
 
@@ -35,9 +36,11 @@ struct LinearVehicle {
     const VehicleData& d = m.vehicle();
     const auto& t = m.table();
     kt = t.value("tire.stiffness");
-    const double bt = t.value("tire.damping"), ks = t.value("suspension.stiffness"), cs = t.value("suspension.damping");
-    const double w = -(d.cg_height - t.value("tire.unloaded_radius_m"));  // wheel centre below the CG, chassis z
-    const double mw = d.wheel_mass, iw = 1e-3;                            // the wheel bodies' own inertia (simulator)
+    const double bt = t.value("tire.damping"), ks = t.value("suspension.stiffness"),
+                 cs = t.value("suspension.damping");
+    const double w =
+        -(d.cg_height - t.value("tire.unloaded_radius_m"));  // wheel centre below the CG, chassis z
+    const double mw = d.wheel_mass, iw = 1e-3;  // the wheel bodies' own inertia (simulator)
     M(0, 0) = d.chassis_mass;
     M(1, 1) = d.ixx;
     M(2, 2) = d.iyy;
@@ -69,16 +72,19 @@ struct LinearVehicle {
   /// Complex amplitude of the vertical acceleration of chassis point (px, py) for road inputs
   /// h_i = Im(H_i e^{jωt}) under the four wheels.
   cd pointAcceleration(double omega, const std::array<cd, 4>& H, double px, double py) const {
-    const Eigen::MatrixXcd A = -omega * omega * M.cast<cd>() + cd(0, omega) * C.cast<cd>() + K.cast<cd>();
+    const Eigen::MatrixXcd A =
+        -omega * omega * M.cast<cd>() + cd(0, omega) * C.cast<cd>() + K.cast<cd>();
     Eigen::VectorXcd f = Eigen::VectorXcd::Zero(7);
-    for (int c = 0; c < 4; ++c) f += kt * H[static_cast<std::size_t>(c)] * J.row(c).transpose().cast<cd>();
+    for (int c = 0; c < 4; ++c)
+      f += kt * H[static_cast<std::size_t>(c)] * J.row(c).transpose().cast<cd>();
     const Eigen::VectorXcd q = A.partialPivLu().solve(f);
     return -omega * omega * (q(0) + py * q(1) - px * q(2));
   }
 };
 
 /// Least-squares a sin ωt + b cos ωt + c over the samples with t >= t_from; returns a + j b.
-cd fitSinusoid(const std::vector<double>& t, const std::vector<double>& y, double omega, double t_from) {
+cd fitSinusoid(const std::vector<double>& t, const std::vector<double>& y, double omega,
+               double t_from) {
   Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
   Eigen::Vector3d r = Eigen::Vector3d::Zero();
   for (std::size_t k = 0; k < t.size(); ++k) {
@@ -97,9 +103,11 @@ cd fitSinusoid(const std::vector<double>& t, const std::vector<double>& y, doubl
 // wheel hop). Left and right tracks differ in phase, so heave, pitch and roll are all excited.
 TEST(FrequencyResponse, SensorAccelerationMatchesTheLinearisedVehicle) {
   const auto dir = dtwin_test::freshDir("freq_response");
-  const Study s = loadStudy(
-      dtwin_test::writeDemoStudy(dir / "study.toml", "lab_repetitions = 2\n[sensors.p]\nposition_m = [1.1, 0.45, 0.2]\nquantity = \"acceleration_z\"\n")
-          .string());
+  const Study s =
+      loadStudy(dtwin_test::writeDemoStudy(dir / "study.toml",
+                                           "lab_repetitions = 2\n[sensors.p]\nposition_m = [1.1, "
+                                           "0.45, 0.2]\nquantity = \"acceleration_z\"\n")
+                    .string());
   const auto model = s.makeModel(s.assembly("M3"));
   ASSERT_EQ(model->topology(), SuspensionTopology::MacPherson);
   const LinearVehicle lin(*model), no_geometric(*model, false);
@@ -130,14 +138,17 @@ TEST(FrequencyResponse, SensorAccelerationMatchesTheLinearisedVehicle) {
     const double omega = kTwoPi * speed / lambda;
     // Front wheels meet h(v t); rear wheels h(v t − wb); the right track lags by right_lag.
     const double rear = kTwoPi * wb / lambda;
-    const std::array<cd, 4> H = {amp * std::exp(cd(0, 0.0)), amp * std::exp(cd(0, -right_lag)), amp * std::exp(cd(0, -rear)),
+    const std::array<cd, 4> H = {amp * std::exp(cd(0, 0.0)), amp * std::exp(cd(0, -right_lag)),
+                                 amp * std::exp(cd(0, -rear)),
                                  amp * std::exp(cd(0, -rear - right_lag))};
     const cd want = lin.pointAcceleration(omega, H, 1.1, 0.45);
     const cd got = fitSinusoid(run.trace.column("time_s"), run.trace.column("p_mps2"), omega, 6.0);
     const double amp_err = std::abs(got) / std::abs(want) - 1.0;
     const double phase_err = std::arg(got / want) * 180.0 / 3.141592653589793;
-    std::printf("lambda %5.2f m  f %6.3f Hz  |a| model %.5f  linear %.5f m/s^2  amplitude %+.3f %%  phase %+.3f deg\n", lambda,
-                omega / kTwoPi, std::abs(got), std::abs(want), 100 * amp_err, phase_err);
+    std::printf(
+        "lambda %5.2f m  f %6.3f Hz  |a| model %.5f  linear %.5f m/s^2  amplitude %+.3f %%  phase "
+        "%+.3f deg\n",
+        lambda, omega / kTwoPi, std::abs(got), std::abs(want), 100 * amp_err, phase_err);
     EXPECT_LT(std::abs(amp_err), 0.02);
     EXPECT_LT(std::abs(phase_err), 2.0);
     const cd rough = no_geometric.pointAcceleration(omega, H, 1.1, 0.45);
@@ -145,7 +156,8 @@ TEST(FrequencyResponse, SensorAccelerationMatchesTheLinearisedVehicle) {
   }
   // The check has teeth: without the (small) geometric stiffness of the wheels hanging below the
   // centre of mass, the linear answer moves, at the body modes, by far more than the agreement.
-  std::printf("without the geometric stiffness the linear answer moves %.0f times further\n", teeth);
+  std::printf("without the geometric stiffness the linear answer moves %.0f times further\n",
+              teeth);
   EXPECT_GT(teeth, 10.0);
 }
 
@@ -163,9 +175,10 @@ TEST(FrequencyResponse, TheImportedLogOfTheLinearVehicleIsReproduced) {
   const Study s0 = loadStudy(base);
   const auto model0 = s0.makeModel(s0.assembly("M3"));
   const double speed = 10.0, amp = 1e-3, lambda = 2.5, lag = 1.0, g = 9.80665;
-  const double omega = kTwoPi * speed / lambda, rear = kTwoPi * model0->vehicle().wheelbase() / lambda;
-  const std::array<cd, 4> H = {amp * std::exp(cd(0, 0.0)), amp * std::exp(cd(0, -lag)), amp * std::exp(cd(0, -rear)),
-                               amp * std::exp(cd(0, -rear - lag))};
+  const double omega = kTwoPi * speed / lambda,
+               rear = kTwoPi * model0->vehicle().wheelbase() / lambda;
+  const std::array<cd, 4> H = {amp * std::exp(cd(0, 0.0)), amp * std::exp(cd(0, -lag)),
+                               amp * std::exp(cd(0, -rear)), amp * std::exp(cd(0, -rear - lag))};
   const std::array<double, 3> p{1.1, 0.45, 0.2};
   const cd A = LinearVehicle(*model0).pointAcceleration(omega, H, p[0], p[1]);
   std::string log = "Time,Speed,RoadL,RoadR,Acc\n";
@@ -173,11 +186,14 @@ TEST(FrequencyResponse, TheImportedLogOfTheLinearVehicleIsReproduced) {
   char line[160];
   for (int k = 0; k <= 1200; ++k) {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    const double jitter = k == 0 || k == 1200 ? 0.0 : (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 0.003;
+    const double jitter =
+        k == 0 || k == 1200 ? 0.0
+                            : (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 0.003;
     const double t = 0.01 * k + jitter;
     const double acc = std::imag(A * std::exp(cd(0, omega * t)));
-    std::snprintf(line, sizeof line, "%.5f,36.0,%.6f,%.6f,%.9f\n", 500.0 + t, 1e3 * amp * std::sin(omega * t),
-                  1e3 * amp * std::sin(omega * t - lag), 1.0 + acc / g);
+    std::snprintf(line, sizeof line, "%.5f,36.0,%.6f,%.6f,%.9f\n", 500.0 + t,
+                  1e3 * amp * std::sin(omega * t), 1e3 * amp * std::sin(omega * t - lag),
+                  1.0 + acc / g);
     log += line;
   }
   ImportMapping m;
@@ -196,7 +212,8 @@ TEST(FrequencyResponse, TheImportedLogOfTheLinearVehicleIsReproduced) {
   writeImport(r, (dir / "imported").string());
   Study s = loadStudy((dir / "imported" / "study.toml").string());
   s.simulation.accuracy = 1e-7;
-  const LabData data = readLabCsv((dir / "imported" / "measurements.csv").string(), measurableChannels(s.sensors));
+  const LabData data =
+      readLabCsv((dir / "imported" / "measurements.csv").string(), measurableChannels(s.sensors));
   calib::LabObjective obj(s, s.assembly("M3"), {{"sine.csv", "sine", data}}, {});
   const auto eta = obj.predict(dtwin_test::truthOf(s));
   ASSERT_EQ(eta.size(), data.records.size());
@@ -207,8 +224,10 @@ TEST(FrequencyResponse, TheImportedLogOfTheLinearVehicleIsReproduced) {
       worst = std::max(worst, std::abs(eta[i] - data.records[i].value));
       ++compared;
     }
-  std::printf("imported path: %d samples after 6 s, worst |twin - linear| = %.2e m/s^2 of amplitude %.4f (%.2f %%)\n", compared, worst,
-              std::abs(A), 100 * worst / std::abs(A));
+  std::printf(
+      "imported path: %d samples after 6 s, worst |twin - linear| = %.2e m/s^2 of amplitude %.4f "
+      "(%.2f %%)\n",
+      compared, worst, std::abs(A), 100 * worst / std::abs(A));
   EXPECT_GT(compared, 550);
   EXPECT_LT(worst, 0.02 * std::abs(A));
 }

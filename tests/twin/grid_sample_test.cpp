@@ -52,7 +52,8 @@ TEST(GridSample, SinusoidErrorIsInsideTheStatedBound) {
   for (double f : {2.0, 20.0, 80.0}) {
     const double w = 2 * kPi * f;
     std::vector<double> col(1001);
-    for (std::size_t k = 0; k < col.size(); ++k) col[k] = std::sin(w * static_cast<double>(k) * h + 0.3);
+    for (std::size_t k = 0; k < col.size(); ++k)
+      col[k] = std::sin(w * static_cast<double>(k) * h + 0.3);
     const double interior = 3.0 / 128.0 * std::pow(w * h, 4), edge = std::pow(w * h, 4) / 24.0;
     double worst_interior = 0.0;
     for (int i = 0; i < 20000; ++i) {

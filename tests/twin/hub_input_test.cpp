@@ -29,7 +29,8 @@ namespace {
 constexpr double kTwoPi = 6.283185307179586;
 
 /// Least-squares a sin ωt + b cos ωt + c over the samples with t >= t_from; returns a + j b.
-cd fitSinusoid(const std::vector<double>& t, const std::vector<double>& y, double omega, double t_from) {
+cd fitSinusoid(const std::vector<double>& t, const std::vector<double>& y, double omega,
+               double t_from) {
   Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
   Eigen::Vector3d r = Eigen::Vector3d::Zero();
   for (std::size_t k = 0; k < t.size(); ++k) {
@@ -43,16 +44,19 @@ cd fitSinusoid(const std::vector<double>& t, const std::vector<double>& y, doubl
 }
 
 /// The demo study with one assembly: `tire` on MacPherson struts, the CG midway between the axles.
-Study symmetricStudy(const std::string& name, const std::string& tire, const std::string& extra = "") {
+Study symmetricStudy(const std::string& name, const std::string& tire,
+                     const std::string& extra = "") {
   const auto dir = dtwin_test::freshDir(name);
   const auto path = dtwin_test::writeDemoStudy(dir / "study.toml", "lab_repetitions = 2\n" + extra);
   std::string s = dtwin_test::slurp(path);
   s = std::regex_replace(s, std::regex("tire = \\[[^\\]]*\\]"), "tire = [\"" + tire + "\"]");
-  s = std::regex_replace(s, std::regex("suspension = \\[[^\\]]*\\]"), "suspension = [\"macpherson\"]");
+  s = std::regex_replace(s, std::regex("suspension = \\[[^\\]]*\\]"),
+                         "suspension = [\"macpherson\"]");
   dtwin_test::writeText(path, s);
   Study st = loadStudy(path.string());
   const auto table = st.parameterTable();
-  const double a = table.value("geometry.cg_to_front_axle_m"), b = table.value("geometry.cg_to_rear_axle_m");
+  const double a = table.value("geometry.cg_to_front_axle_m"),
+               b = table.value("geometry.cg_to_rear_axle_m");
   st.fixed.push_back({"chassis.cg_x_m", 0.5 * (a - b), "test", "the CG midway"});
   return st;
 }
@@ -64,16 +68,19 @@ struct Controllers {
 /// The closed form above.
 cd heaveResponse(double omega, double m, double k, double c, const Controllers& u) {
   const cd s(0, omega);
-  return (k + c * s + u.c_gh * s + u.gain * s / (1.0 + u.tau * s)) / (0.25 * m * s * s + (c + u.c_sky) * s + k);
+  return (k + c * s + u.c_gh * s + u.gain * s / (1.0 + u.tau * s)) /
+         (0.25 * m * s * s + (c + u.c_sky) * s + k);
 }
 
 /// The twin's heave acceleration amplitude and phase at frequency f on a sinusoidal signal of
 /// amplitude `amp` whose wavelength is the wheelbase (so front and rear are in phase).
-cd twinHeave(Simulator& sim, const std::vector<double>& values, double f, double amp, double wheelbase) {
+cd twinHeave(Simulator& sim, const std::vector<double>& values, double f, double amp,
+             double wheelbase) {
   const double lambda = wheelbase, speed = f * lambda;
   const double dx = lambda / 400.0, x0 = -wheelbase - 2.0;
   std::vector<double> h;
-  for (double x = x0; x < speed * 16.0 + 5.0; x += dx) h.push_back(amp * std::sin(kTwoPi * x / lambda));
+  for (double x = x0; x < speed * 16.0 + 5.0; x += dx)
+    h.push_back(amp * std::sin(kTwoPi * x / lambda));
   const GridRoad road(x0, dx, h, h, {{"type", "sinusoid"}});
   ScenarioSpec sc;
   sc.name = "sine";
@@ -85,13 +92,15 @@ cd twinHeave(Simulator& sim, const std::vector<double>& values, double f, double
   if (!run.stats.ok) return {};
   const double omega = kTwoPi * f;
   // The signal under the front axle is h(s(t)) = amp sin(ω t) (s(0) = 0): phase 0.
-  return fitSinusoid(run.trace.column("time_s"), run.trace.column("chassis_heave_acc_mps2"), omega, 6.0);
+  return fitSinusoid(run.trace.column("time_s"), run.trace.column("chassis_heave_acc_mps2"), omega,
+                     6.0);
 }
 
 /// `hub_motion`: "prescribed" (the hubs move as the signal: the closed form's own input, to the
 /// integrator's accuracy) or "link" (wheel bodies held to the signal by the stiff link, which
 /// follows it to 0.4 % below 20 Hz: docs/model.md).
-void checkHeave(const char* label, const Controllers& u, const std::string& effects, const std::string& hub_motion = "prescribed") {
+void checkHeave(const char* label, const Controllers& u, const std::string& effects,
+                const std::string& hub_motion = "prescribed") {
   SCOPED_TRACE(std::string(label) + ", hub motion " + hub_motion);
   Study st = symmetricStudy(std::string("hub_input_") + label, "hub");
   AssemblySpec a = st.assemblies().front();
@@ -100,13 +109,15 @@ void checkHeave(const char* label, const Controllers& u, const std::string& effe
   if (u.c_gh > 0) extra.push_back({"groundhook", {{"groundhook.damping", u.c_gh, "test", "test"}}});
   if (u.gain != 0)
     extra.push_back({"road_feedforward",
-                     {{"road_feedforward.gain", u.gain, "test", "test"}, {"road_feedforward.time_constant_s", u.tau, "test", "test"}}});
+                     {{"road_feedforward.gain", u.gain, "test", "test"},
+                      {"road_feedforward.time_constant_s", u.tau, "test", "test"}}});
   (void)effects;
   const auto model = st.makeModel(a, extra);
   ASSERT_TRUE(model->tire().followsSignal());
   const VehicleData& d = model->vehicle();
   ASSERT_NEAR(d.a, d.b, 1e-12);
-  const double k = model->table().value("suspension.stiffness"), c = model->table().value("suspension.damping");
+  const double k = model->table().value("suspension.stiffness"),
+               c = model->table().value("suspension.damping");
   SimulationOptions o = st.simulation;
   o.accuracy = 1e-7;
   o.hub_motion = hub_motion;
@@ -117,9 +128,12 @@ void checkHeave(const char* label, const Controllers& u, const std::string& effe
     const double omega = kTwoPi * f;
     const cd want = -omega * omega * amp * heaveResponse(omega, d.chassis_mass, k, c, u);
     const cd got = twinHeave(sim, model->defaultRunValues(), f, amp, d.wheelbase());
-    const double amp_err = std::abs(got) / std::abs(want) - 1.0, phase_err = std::arg(got / want) * 180.0 / 3.141592653589793;
-    std::printf("%-10s f %5.2f Hz  |a| twin %.6f  closed form %.6f m/s^2  amplitude %+.4f %%  phase %+.4f deg\n", label, f,
-                std::abs(got), std::abs(want), 100 * amp_err, phase_err);
+    const double amp_err = std::abs(got) / std::abs(want) - 1.0,
+                 phase_err = std::arg(got / want) * 180.0 / 3.141592653589793;
+    std::printf(
+        "%-10s f %5.2f Hz  |a| twin %.6f  closed form %.6f m/s^2  amplitude %+.4f %%  phase %+.4f "
+        "deg\n",
+        label, f, std::abs(got), std::abs(want), 100 * amp_err, phase_err);
     worst_amp = std::max(worst_amp, std::abs(amp_err));
     worst_phase = std::max(worst_phase, std::abs(phase_err));
     if (f == fn) {
@@ -127,7 +141,8 @@ void checkHeave(const char* label, const Controllers& u, const std::string& effe
       // aside): the measured amplitude gives the damping ratio.
       if (u.gain == 0) {
         const double num = std::hypot(k, omega * (c + u.c_gh));
-        const double zeta_twin = num / (std::abs(got) / (omega * omega * amp)) / omega / (2.0 * std::sqrt(k * 0.25 * d.chassis_mass));
+        const double zeta_twin = num / (std::abs(got) / (omega * omega * amp)) / omega /
+                                 (2.0 * std::sqrt(k * 0.25 * d.chassis_mass));
         const double zeta = (c + u.c_sky) / (2.0 * std::sqrt(k * 0.25 * d.chassis_mass));
         std::printf("%-10s damping ratio: twin %.5f, closed form %.5f\n", label, zeta_twin, zeta);
         EXPECT_NEAR(zeta_twin / zeta, 1.0, 2e-3);
@@ -199,7 +214,8 @@ TEST(HubInput, ATireUnderTheWheelGivesAnotherResponse) {
   o.accuracy = 1e-7;
   Simulator sim(model, o);
   const VehicleData& d = model->vehicle();
-  const double k = model->table().value("suspension.stiffness"), c = model->table().value("suspension.damping");
+  const double k = model->table().value("suspension.stiffness"),
+               c = model->table().value("suspension.damping");
   const double f = 3.0, omega = kTwoPi * f;
   const cd want = -omega * omega * 1e-3 * heaveResponse(omega, d.chassis_mass, k, c, {});
   const cd got = twinHeave(sim, model->defaultRunValues(), f, 1e-3, d.wheelbase());
@@ -213,7 +229,8 @@ TEST(HubInput, ATireUnderTheWheelGivesAnotherResponse) {
 // mode no longer sets them).
 TEST(HubInput, PrescribedHubsMoveTheBodyAsTheLinkDoesInFewerSteps) {
   Study st = symmetricStudy("hub_input_prescribed", "hub");
-  const auto model = st.makeModel(st.assemblies().front(), {{"skyhook", {{"skyhook.damping", 2500.0, "test", "test"}}}});
+  const auto model = st.makeModel(st.assemblies().front(),
+                                  {{"skyhook", {{"skyhook.damping", 2500.0, "test", "test"}}}});
   const ScenarioSpec sc = st.scenario("field");
   const auto road = makeRoad(sc, model->vehicle(), 7);
   SimulationOptions o = st.simulation;
@@ -257,14 +274,17 @@ TEST(HubInput, PrescribedHubsMoveTheBodyAsTheLinkDoesInFewerSteps) {
     }
     double dm = 0;
     for (double x : d) dm += x / static_cast<double>(d.size());
-    std::printf("%-26s rms difference %.3e (mean %.3e), rms of the link's signal %.3e (%.3f %%)\n", ch.c_str(), rms(d), dm, rms(centred),
-                100 * rms(d) / rms(centred));
+    std::printf("%-26s rms difference %.3e (mean %.3e), rms of the link's signal %.3e (%.3f %%)\n",
+                ch.c_str(), rms(d), dm, rms(centred), 100 * rms(d) / rms(centred));
     EXPECT_LT(rms(d), share * rms(centred)) << ch;
   };
   // Measured (accuracy 1e-6): accelerations 0.4-1.3 %, displacements 0.02-0.25 %, strut rates
   // 0.5 %, hub forces 5 % (1.1 % over 10 ms).
-  for (const char* ch : {"chassis_heave_acc_mps2", "chassis_pitch_acc_radps2", "chassis_roll_acc_radps2"}) compare(ch, 0.025);
-  for (const char* ch : {"chassis_heave_m", "chassis_pitch_rad", "chassis_roll_rad"}) compare(ch, 0.005);
+  for (const char* ch :
+       {"chassis_heave_acc_mps2", "chassis_pitch_acc_radps2", "chassis_roll_acc_radps2"})
+    compare(ch, 0.025);
+  for (const char* ch : {"chassis_heave_m", "chassis_pitch_rad", "chassis_roll_rad"})
+    compare(ch, 0.005);
   for (const char* c : {"fl", "fr", "rl", "rr"}) {
     compare(std::string("susp_defl_") + c + "_m", 0.005);
     compare(std::string("susp_rate_") + c + "_mps", 0.01);
@@ -278,12 +298,13 @@ TEST(HubInput, PrescribedHubsMoveTheBodyAsTheLinkDoesInFewerSteps) {
   Simulator coarse(model, o);
   const RunResult c = coarse.run(values, *road, sc);
   ASSERT_TRUE(c.stats.ok) << c.stats.message;
-  for (const char* ch : {"chassis_heave_acc_mps2", "chassis_pitch_acc_radps2", "chassis_roll_acc_radps2"}) {
+  for (const char* ch :
+       {"chassis_heave_acc_mps2", "chassis_pitch_acc_radps2", "chassis_roll_acc_radps2"}) {
     const auto &a = c.trace.column(ch), &b = p.trace.column(ch);
     std::vector<double> d(a.size());
     for (std::size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
-    std::printf("%-26s at accuracy 3e-4 (%ld steps): rms difference from 1e-6 %.3f %% of its rms\n", ch, c.stats.steps,
-                100 * rms(d) / rms(b));
+    std::printf("%-26s at accuracy 3e-4 (%ld steps): rms difference from 1e-6 %.3f %% of its rms\n",
+                ch, c.stats.steps, 100 * rms(d) / rms(b));
     EXPECT_LT(rms(d), 0.005 * rms(b)) << ch;  // measured 0.05-0.11 %
   }
 }

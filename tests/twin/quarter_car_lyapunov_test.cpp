@@ -34,14 +34,14 @@
 namespace {
 
 struct QuarterCar {
-  double m_s = 295.0;       // sprung mass [kg]
-  double m_u = 40.0;        // unsprung mass [kg]
-  double k_s = 52451.0;     // suspension stiffness [N/m]
-  double c_s = 5565.0;      // suspension damping [N s/m]
-  double k_t = 250000.0;    // tire stiffness [N/m]
-  double R0 = 0.31;         // unloaded radius [m]
-  double v = 8.94;          // speed [m/s]
-  double g = 9.81;          // gravity [m/s^2]
+  double m_s = 295.0;     // sprung mass [kg]
+  double m_u = 40.0;      // unsprung mass [kg]
+  double k_s = 52451.0;   // suspension stiffness [N/m]
+  double c_s = 5565.0;    // suspension damping [N s/m]
+  double k_t = 250000.0;  // tire stiffness [N/m]
+  double R0 = 0.31;       // unloaded radius [m]
+  double v = 8.94;        // speed [m/s]
+  double g = 9.81;        // gravity [m/s^2]
 };
 
 constexpr double kN0 = 0.1;  // ISO 8608 reference spatial frequency [cycles/m]
@@ -55,9 +55,9 @@ struct LinearModel {
 LinearModel linearModel(const QuarterCar& c) {
   LinearModel m;
   // x1 = z_u - z_r (tire compression is -x1), x2 = z_s - z_u, x3 = zdot_s, x4 = zdot_u.
-  m.A << 0, 0, 0, 1,                                                      //
-      0, 0, 1, -1,                                                        //
-      0, -c.k_s / c.m_s, -c.c_s / c.m_s, c.c_s / c.m_s,                   //
+  m.A << 0, 0, 0, 1,                                     //
+      0, 0, 1, -1,                                       //
+      0, -c.k_s / c.m_s, -c.c_s / c.m_s, c.c_s / c.m_s,  //
       -c.k_t / c.m_u, c.k_s / c.m_u, c.c_s / c.m_u, -c.c_s / c.m_u;
   m.B << -1, 0, 0, 0;
   return m;
@@ -86,13 +86,15 @@ Eigen::Matrix4d solveLyapunov(const Eigen::Matrix4d& A, const Eigen::Matrix4d& Q
 /// Variance of the tire deflection x1 due to road heights with Gd(n) = Gd0 (n/n0)^-2 on
 /// [n_lo, n_hi], by Simpson's rule in log n: integral of |H(n)|^2 Gd(n) dn, with H from road
 /// height to x1 at temporal angular frequency 2 pi v n.
-double bandDeflectionVariance(const LinearModel& m, double gd0, double v, double n_lo, double n_hi) {
+double bandDeflectionVariance(const LinearModel& m, double gd0, double v, double n_lo,
+                              double n_hi) {
   const int N = 20000;  // even
   const double a = std::log(n_lo), b = std::log(n_hi), h = (b - a) / N;
   const std::complex<double> j(0.0, 1.0);
   auto f = [&](double u) {
     const double n = std::exp(u), w = 2.0 * M_PI * v * n;
-    const Eigen::Matrix4cd M = j * w * Eigen::Matrix4cd::Identity() - m.A.cast<std::complex<double>>();
+    const Eigen::Matrix4cd M =
+        j * w * Eigen::Matrix4cd::Identity() - m.A.cast<std::complex<double>>();
     const Eigen::Vector4cd X = M.partialPivLu().solve(m.B.cast<std::complex<double>>() * (j * w));
     return std::norm(X(0)) * gd0 * (kN0 / n) * (kN0 / n) * n;  // dn = n du
   };
@@ -123,8 +125,10 @@ struct TireSide {
 class TireElement : public Force::Custom::Implementation {
  public:
   TireElement(const TireSide* tire, MobilizedBody wheel) : tire_(tire), wheel_(wheel) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
-    const double F = tire_->force(s.getTime(), wheel_.getBodyOriginLocation(s)[2], wheel_.getBodyOriginVelocity(s)[2]);
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector&) const override {
+    const double F = tire_->force(s.getTime(), wheel_.getBodyOriginLocation(s)[2],
+                                  wheel_.getBodyOriginVelocity(s)[2]);
     bodyForces[wheel_.getMobilizedBodyIndex()][1] += Vec3(0, 0, F);
   }
   Real calcPotentialEnergy(const State&) const override { return 0; }
@@ -136,12 +140,19 @@ class TireElement : public Force::Custom::Implementation {
 
 class StrutElement : public Force::Custom::Implementation {
  public:
-  StrutElement(MobilizedBody upper, MobilizedBody lower, double z_design, std::vector<double> params, double preload)
-      : upper_(upper), lower_(lower), z_design_(z_design), params_(std::move(params)), preload_(preload) {}
-  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&, Vector&) const override {
+  StrutElement(MobilizedBody upper, MobilizedBody lower, double z_design,
+               std::vector<double> params, double preload)
+      : upper_(upper),
+        lower_(lower),
+        z_design_(z_design),
+        params_(std::move(params)),
+        preload_(preload) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                 Vector&) const override {
     dtwin::StrutState ss;
     // Compression: the lower body moves up relative to the upper one.
-    ss.deflection_m = (lower_.getBodyOriginLocation(s)[2] - upper_.getBodyOriginLocation(s)[2]) - z_design_;
+    ss.deflection_m =
+        (lower_.getBodyOriginLocation(s)[2] - upper_.getBodyOriginLocation(s)[2]) - z_design_;
     ss.rate_mps = lower_.getBodyOriginVelocity(s)[2] - upper_.getBodyOriginVelocity(s)[2];
     ss.preload_N = preload_;
     ss.base_stiffness = params_[0];
@@ -203,7 +214,8 @@ SimResult simulate(const QuarterCar& c, const SimOptions& o) {
   rs.seed = o.seed;
   const auto road = dtwin::makeIsoRoad(rs);
   SimResult r;
-  r.period_covered = c.v * (o.t_end_s - o.transient_s) / road->describe().at("period_m").get<double>();
+  r.period_covered =
+      c.v * (o.t_end_s - o.transient_s) / road->describe().at("period_m").get<double>();
 
   TireSide tire;
   tire.road = road.get();
@@ -221,10 +233,13 @@ SimResult simulate(const QuarterCar& c, const SimOptions& o) {
   Force::UniformGravity(forces, matter, Vec3(0, 0, -c.g));
   const Rotation xToZ(-Pi / 2, YAxis);  // slider x axis along ground z
   MobilizedBody::Slider sprung(matter.Ground(), Transform(xToZ, Vec3(0, 0, z_s0)),
-                               Body::Rigid(MassProperties(c.m_s, Vec3(0), UnitInertia(1))), Transform(xToZ));
+                               Body::Rigid(MassProperties(c.m_s, Vec3(0), UnitInertia(1))),
+                               Transform(xToZ));
   MobilizedBody::Slider unsprung(sprung, Transform(xToZ, Vec3(0, 0, -d_su)),
-                                 Body::Rigid(MassProperties(c.m_u, Vec3(0), UnitInertia(1))), Transform(xToZ));
-  Force::Custom(forces, new StrutElement(sprung, unsprung, -d_su, {c.k_s, c.c_s, 1e6, 0.0}, c.m_s * c.g));
+                                 Body::Rigid(MassProperties(c.m_u, Vec3(0), UnitInertia(1))),
+                                 Transform(xToZ));
+  Force::Custom(forces,
+                new StrutElement(sprung, unsprung, -d_su, {c.k_s, c.c_s, 1e6, 0.0}, c.m_s * c.g));
   Force::Custom(forces, new TireElement(&tire, unsprung));
 
   State s = system.realizeTopology();
@@ -240,10 +255,12 @@ SimResult simulate(const QuarterCar& c, const SimOptions& o) {
 
   std::vector<double> F;
   F.reserve(static_cast<std::size_t>((o.t_end_s - o.transient_s) * o.sample_hz) + 2);
-  const long k0 = std::lround(o.transient_s * o.sample_hz), k1 = std::lround(o.t_end_s * o.sample_hz);
+  const long k0 = std::lround(o.transient_s * o.sample_hz),
+             k1 = std::lround(o.t_end_s * o.sample_hz);
   auto hub = [&](const State& st) {
     system.realize(st, Stage::Velocity);
-    return std::array<double, 3>{st.getTime(), unsprung.getBodyOriginLocation(st)[2], unsprung.getBodyOriginVelocity(st)[2]};
+    return std::array<double, 3>{st.getTime(), unsprung.getBodyOriginLocation(st)[2],
+                                 unsprung.getBodyOriginVelocity(st)[2]};
   };
   // Sample at 1 kHz from the integrator's own steps: cubic Hermite interpolation of the hub
   // height and velocity between consecutive steps (what Simbody's report-time interpolation does;
@@ -263,7 +280,8 @@ SimResult simulate(const QuarterCar& c, const SimOptions& o) {
     if (cur[0] <= prev[0]) continue;  // the first call returns at t = 0 without a step
     const double h = cur[0] - prev[0];
     for (; k <= k1 && static_cast<double>(k) / o.sample_hz <= cur[0]; ++k) {
-      const double t = static_cast<double>(k) / o.sample_hz, u = (t - prev[0]) / h, u2 = u * u, u3 = u2 * u;
+      const double t = static_cast<double>(k) / o.sample_hz, u = (t - prev[0]) / h, u2 = u * u,
+                   u3 = u2 * u;
       const double z = (2 * u3 - 3 * u2 + 1) * prev[1] + (u3 - 2 * u2 + u) * h * prev[2] +
                        (-2 * u3 + 3 * u2) * cur[1] + (u3 - u2) * h * cur[2];
       const double zd = (6 * u2 - 6 * u) * (prev[1] - cur[1]) / h + (3 * u2 - 4 * u + 1) * prev[2] +
@@ -317,21 +335,25 @@ TEST(QuarterCarLyapunov, SimulatedDynamicTireLoadMatchesLyapunovOnClassC) {
   const sim::SimResult r = sim::simulate(c, o);
   const double rel = r.rms_dyn_N / sigma_lyap - 1.0;
 
-  std::cout << std::fixed << std::setprecision(2)
-            << "quarter car, ISO class C, v = " << c.v << " m/s, road band [0.011, " << o.n_max << "] cycles/m, dx "
-            << std::defaultfloat << o.dx_m << std::fixed << " m\n"
+  std::cout << std::fixed << std::setprecision(2) << "quarter car, ISO class C, v = " << c.v
+            << " m/s, road band [0.011, " << o.n_max << "] cycles/m, dx " << std::defaultfloat
+            << o.dx_m << std::fixed << " m\n"
             << "  sigma_Fz Lyapunov (full band)      : " << sigma_lyap << " N\n"
             << "  sigma_Fz frequency integral (band) : " << sigma_band << " N\n"
-            << "  simulated RMS dynamic tire load    : " << r.rms_dyn_N << " N  (" << r.samples << " samples at "
-            << o.sample_hz << " Hz, " << o.transient_s << "-" << o.t_end_s << " s, "
-            << 100.0 * r.period_covered << " % of the road period)\n"
-            << std::setprecision(3) << "  relative error vs Lyapunov         : " << 100.0 * rel << " %\n"
-            << "  relative error vs band integral    : " << 100.0 * (r.rms_dyn_N / sigma_band - 1.0) << " %\n"
-            << std::setprecision(1) << "  tire force mean / min / max        : " << r.mean_N << " / " << r.min_N << " / "
-            << r.max_N << " N (static " << (c.m_s + c.m_u) * c.g << " N)\n"
-            << "  integrator steps                   : " << r.steps << std::defaultfloat << " (accuracy " << o.accuracy
-            << ", max step " << o.max_step_s << " s)\n" << std::fixed
-            << std::setprecision(2) << "  wall time                          : " << r.wall_s << " s\n";
+            << "  simulated RMS dynamic tire load    : " << r.rms_dyn_N << " N  (" << r.samples
+            << " samples at " << o.sample_hz << " Hz, " << o.transient_s << "-" << o.t_end_s
+            << " s, " << 100.0 * r.period_covered << " % of the road period)\n"
+            << std::setprecision(3) << "  relative error vs Lyapunov         : " << 100.0 * rel
+            << " %\n"
+            << "  relative error vs band integral    : " << 100.0 * (r.rms_dyn_N / sigma_band - 1.0)
+            << " %\n"
+            << std::setprecision(1) << "  tire force mean / min / max        : " << r.mean_N
+            << " / " << r.min_N << " / " << r.max_N << " N (static " << (c.m_s + c.m_u) * c.g
+            << " N)\n"
+            << "  integrator steps                   : " << r.steps << std::defaultfloat
+            << " (accuracy " << o.accuracy << ", max step " << o.max_step_s << " s)\n"
+            << std::fixed << std::setprecision(2)
+            << "  wall time                          : " << r.wall_s << " s\n";
   RecordProperty("sigma_lyapunov_N", fmt(sigma_lyap, 6));
   RecordProperty("sigma_band_N", fmt(sigma_band, 6));
   RecordProperty("rms_simulated_N", fmt(r.rms_dyn_N, 6));

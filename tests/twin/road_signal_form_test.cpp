@@ -11,9 +11,9 @@
 #include <cmath>
 #include <string>
 
+#include "io/study.hpp"
 #include "shipped_study.hpp"
 #include "test_util.hpp"
-#include "io/study.hpp"
 #include "twin/simulator.hpp"
 
 using namespace dtwin;
@@ -22,7 +22,8 @@ namespace {
 
 const Study& demoStudy() { return dtwin_test::shippedStudy("demo"); }
 
-RunResult runWith(const std::vector<std::pair<std::string, double>>& set, const std::string& scenario) {
+RunResult runWith(const std::vector<std::pair<std::string, double>>& set,
+                  const std::string& scenario) {
   const Study& s = demoStudy();
   const auto model = s.makeModel(s.assembly("M1"), {});
   Simulator sim(model, s.simulation);
@@ -55,12 +56,14 @@ double maxAbs(const std::vector<double>& a) {
 
 double maxDiff(const std::vector<double>& a, const std::vector<double>& b, double scale = 1.0) {
   double m = 0;
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) m = std::max(m, std::fabs(a[i] - scale * b[i]));
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+    m = std::max(m, std::fabs(a[i] - scale * b[i]));
   return m;
 }
 
 /// a is b (within 3 % of b's largest height: the wheel centre's place moves with the body).
-void expectSameRoad(const std::vector<double>& a, const std::vector<double>& b, const std::string& what, double scale = 1.0) {
+void expectSameRoad(const std::vector<double>& a, const std::vector<double>& b,
+                    const std::string& what, double scale = 1.0) {
   ASSERT_EQ(a.size(), b.size()) << what;
   EXPECT_LT(maxDiff(a, b, scale), 0.03 * scale * maxAbs(b)) << what;
 }
@@ -94,7 +97,8 @@ TEST(RoadSignalForms, OneCornerAloneMeetsTheBaseRoadAndTheOthersNone) {
   // Half-way: the left-out corners meet half the road.
   const RunResult half = runWith({{"road.fl_only", 0.5}}, "diag_rough");
   expectSameRoad(channel(half, "road_fl_m"), channel(base, "road_fl_m"), "fl");
-  for (int c = 1; c < 4; ++c) expectSameRoad(channel(half, kRoad[c]), channel(base, kRoad[c]), kRoad[c], 0.5);
+  for (int c = 1; c < 4; ++c)
+    expectSameRoad(channel(half, kRoad[c]), channel(base, kRoad[c]), kRoad[c], 0.5);
 }
 
 TEST(RoadSignalForms, OneTrackKeepsItsRearWheelsLag) {
@@ -116,7 +120,8 @@ TEST(RoadSignalForms, ARearCornerOrAllFourReadTheSignalWithoutTheWheelbasesLag) 
   for (int c = 0; c < 4; ++c) expectSameRoad(channel(all, kRoad[c]), fl, kRoad[c]);
   const RunResult rl_only = runWith({{"road.rl_only", 1.0}}, "diag_bump");
   expectSameRoad(channel(rl_only, "road_rl_m"), fl, "rl");
-  for (const char* c : {"road_fl_m", "road_fr_m", "road_rr_m"}) EXPECT_EQ(maxAbs(channel(rl_only, c)), 0.0) << c;
+  for (const char* c : {"road_fl_m", "road_fr_m", "road_rr_m"})
+    EXPECT_EQ(maxAbs(channel(rl_only, c)), 0.0) << c;
   // The bump at the rear alone pitches the body the other way from the bump at the front alone.
   const RunResult fl_only = runWith({{"road.fl_only", 1.0}}, "diag_bump");
   const auto pf = channel(fl_only, "chassis_pitch_rad"), pr = channel(rl_only, "chassis_pitch_rad");

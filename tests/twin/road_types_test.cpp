@@ -8,12 +8,12 @@
 #include <map>
 
 #include "common/errors.hpp"
+#include "common/toml_reader.hpp"
+#include "io/study.hpp"
 #include "test_util.hpp"
 #include "twin/road_setting.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/scenario.hpp"
-#include "io/study.hpp"
-#include "common/toml_reader.hpp"
 
 using namespace dtwin;
 
@@ -48,8 +48,9 @@ TEST(RoadTypes, EveryRegisteredTypeReadsNamesRecordsAndMakesItself) {
     SCOPED_TRACE(type.name);
     EXPECT_FALSE(type.description.empty());
     const auto it = kRequiredFields.find(type.name);
-    const auto setting =
-        parseText("[road]\ntype = \"" + type.name + "\"\n" + (it == kRequiredFields.end() ? "" : it->second), (dir / "s.toml").string());
+    const auto setting = parseText(
+        "[road]\ntype = \"" + type.name + "\"\n" + (it == kRequiredFields.end() ? "" : it->second),
+        (dir / "s.toml").string());
     ASSERT_NE(setting, nullptr);
     EXPECT_EQ(setting->type(), type.name);
     EXPECT_EQ(setting->toJson().at("type"), type.name);
@@ -66,7 +67,8 @@ TEST(RoadTypes, EveryRegisteredTypeReadsNamesRecordsAndMakesItself) {
     EXPECT_FALSE(setting->describeWindow(sc, demoVehicle(), 0.0, sc.duration_s).empty());
     // Determinism: the same seed gives the same profile.
     const auto again = makeRoad(sc, demoVehicle(), 7);
-    EXPECT_EQ(road->sample(Track::Left, 1.234).height_m, again->sample(Track::Left, 1.234).height_m);
+    EXPECT_EQ(road->sample(Track::Left, 1.234).height_m,
+              again->sample(Track::Left, 1.234).height_m);
   }
 }
 
@@ -76,7 +78,8 @@ TEST(RoadTypes, UnknownTypesAndFieldsAreNamed) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("scenarios.s.road.type: unknown road type 'bumb' (known: flat, bump, iso8608, csv, csv_time; did you mean 'bump'?)"),
+    EXPECT_NE(what.find("scenarios.s.road.type: unknown road type 'bumb' (known: flat, bump, "
+                        "iso8608, csv, csv_time; did you mean 'bump'?)"),
               std::string::npos)
         << what;
   }
@@ -84,7 +87,9 @@ TEST(RoadTypes, UnknownTypesAndFieldsAreNamed) {
     parseText("[road]\ntype = \"bump\"\nheigth_m = 0.1\n", "s.toml");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("road.heigth_m: unknown field (did you mean 'height_m'?)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("road.heigth_m: unknown field (did you mean 'height_m'?)"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -114,11 +119,15 @@ TEST(RoadTypes, EveryRegisteredTypeIsDocumentedInTheStudyFileReference) {
 TEST(RoadTypes, ARoadLoggedAgainstTimeReachesTheRearAxleAWheelbaseLater) {
   const auto dir = dtwin_test::freshDir("dtwin_road_time");
   std::string log = "time_s,left_mm,right_mm\n";
-  auto height = [](double t, double phase) { return 8.0 * std::sin(2 * 3.14159265358979 * 1.3 * t + phase); };
-  for (int k = 0; k <= 810; ++k) log += std::to_string(0.01 * k) + "," + std::to_string(height(0.01 * k, 0.0)) + "," +
-                                        std::to_string(height(0.01 * k, 1.0)) + "\n";
+  auto height = [](double t, double phase) {
+    return 8.0 * std::sin(2 * 3.14159265358979 * 1.3 * t + phase);
+  };
+  for (int k = 0; k <= 810; ++k)
+    log += std::to_string(0.01 * k) + "," + std::to_string(height(0.01 * k, 0.0)) + "," +
+           std::to_string(height(0.01 * k, 1.0)) + "\n";
   dtwin_test::writeText(dir / "log.csv", log);
-  const auto setting = parseText("[road]\ntype = \"csv_time\"\npath = \"log.csv\"\n", (dir / "s.toml").string());
+  const auto setting =
+      parseText("[road]\ntype = \"csv_time\"\npath = \"log.csv\"\n", (dir / "s.toml").string());
   ScenarioSpec sc;
   sc.name = "s";
   sc.duration_s = 8.0;
@@ -134,7 +143,9 @@ TEST(RoadTypes, ARoadLoggedAgainstTimeReachesTheRearAxleAWheelbaseLater) {
     EXPECT_NEAR(road->sample(Track::Right, 4.0 * t).height_m, 1e-3 * height(t, 1.0), 2e-5) << t;
     // The rear axle, at distance 4 t - wb, is where the front axle was at t - wb / 4.
     if (t > wb / 4.0 + 0.05) {
-      EXPECT_NEAR(road->sample(Track::Left, 4.0 * t - wb).height_m, 1e-3 * height(t - wb / 4.0, 0.0), 2e-5) << t;
+      EXPECT_NEAR(road->sample(Track::Left, 4.0 * t - wb).height_m,
+                  1e-3 * height(t - wb / 4.0, 0.0), 2e-5)
+          << t;
     }
   }
   ScenarioSpec longer = sc;
@@ -143,12 +154,17 @@ TEST(RoadTypes, ARoadLoggedAgainstTimeReachesTheRearAxleAWheelbaseLater) {
     setting->check(longer, "s.toml:3: scenarios.s.road");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("covers 0 .. 8.1 s, but the scenario runs 0 .. 9 s"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("covers 0 .. 8.1 s, but the scenario runs 0 .. 9 s"),
+              std::string::npos)
+        << e.what();
   }
   try {
-    parseText("[road]\ntype = \"csv_time\"\npath = \"log.csv\"\nhighpass_hz = 0.2\n", (dir / "s.toml").string());
+    parseText("[road]\ntype = \"csv_time\"\npath = \"log.csv\"\nhighpass_hz = 0.2\n",
+              (dir / "s.toml").string());
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("road.highpass_hz: applies to a road-velocity log only"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("road.highpass_hz: applies to a road-velocity log only"),
+              std::string::npos)
+        << e.what();
   }
 }

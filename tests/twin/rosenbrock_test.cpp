@@ -43,7 +43,8 @@ class ExtraForce : public Force::Custom::Implementation {
  public:
   ExtraForce(MobilizedBody b, double x_eq, double k3, double F0, double W, double nan_after)
       : b_(b), x_eq_(x_eq), k3_(k3), F0_(F0), W_(W), nan_after_(nan_after) {}
-  void calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&, Vector& mobilityForces) const override {
+  void calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&,
+                 Vector& mobilityForces) const override {
     const double t = s.getTime();
     if (t >= nan_after_) {
       b_.applyOneMobilityForce(s, 0, std::numeric_limits<double>::quiet_NaN(), mobilityForces);
@@ -69,10 +70,12 @@ struct SliderSystem {
 
   SliderSystem(double m, double k, double c, double k3 = 0, double F0 = 0, double W = 0,
                double nan_after = std::numeric_limits<double>::infinity()) {
-    body = MobilizedBody::Slider(matter.Ground(), Transform(), Body::Rigid(MassProperties(m, Vec3(0), Inertia(1))), Transform());
+    body = MobilizedBody::Slider(matter.Ground(), Transform(),
+                                 Body::Rigid(MassProperties(m, Vec3(0), Inertia(1))), Transform());
     Force::MobilityLinearSpring(forces, body, MobilizerQIndex(0), k, x_eq);
     Force::MobilityLinearDamper(forces, body, MobilizerUIndex(0), c);
-    if (k3 != 0 || F0 != 0 || std::isfinite(nan_after)) Force::Custom(forces, new ExtraForce(body, x_eq, k3, F0, W, nan_after));
+    if (k3 != 0 || F0 != 0 || std::isfinite(nan_after))
+      Force::Custom(forces, new ExtraForce(body, x_eq, k3, F0, W, nan_after));
     system.realizeTopology();
   }
   State initial(double xi0, double v0) {
@@ -87,8 +90,8 @@ struct SliderSystem {
 };
 
 /// Largest |x - x_exact| over samples every `dt` up to T (the integrator lands on each sample).
-double maxErrorAgainstExact(RosenbrockIntegrator& integ, const SliderSystem& sys, const DampedOscillator& ex, double T,
-                            double dt) {
+double maxErrorAgainstExact(RosenbrockIntegrator& integ, const SliderSystem& sys,
+                            const DampedOscillator& ex, double T, double dt) {
   double worst = 0;
   for (int i = 1; i * dt <= T + 1e-12; ++i) {
     const double ts = i * dt;
@@ -113,8 +116,9 @@ RkStats rkMerson(SliderSystem& sys, const State& s0, double accuracy, double hma
 }
 
 /// Fixed-step error at T for step counts N: returns the observed orders log2(e_N / e_2N).
-std::vector<double> observedOrders(SliderSystem& sys, const State& s0, double T, const std::vector<int>& Ns,
-                                   const RosenbrockOptions& base, double x_ref, double v_ref, double v_scale) {
+std::vector<double> observedOrders(SliderSystem& sys, const State& s0, double T,
+                                   const std::vector<int>& Ns, const RosenbrockOptions& base,
+                                   double x_ref, double v_ref, double v_scale) {
   std::vector<double> errs;
   for (int N : Ns) {
     RosenbrockOptions o = base;
@@ -130,8 +134,8 @@ std::vector<double> observedOrders(SliderSystem& sys, const State& s0, double T,
   std::vector<double> p;
   for (std::size_t i = 0; i + 1 < errs.size(); ++i) {
     p.push_back(std::log2(errs[i] / errs[i + 1]));
-    std::cout << "  N=" << Ns[i] << " err=" << errs[i] << "  N=" << Ns[i + 1] << " err=" << errs[i + 1] << "  order " << p.back()
-              << "\n";
+    std::cout << "  N=" << Ns[i] << " err=" << errs[i] << "  N=" << Ns[i + 1]
+              << " err=" << errs[i + 1] << "  order " << p.back() << "\n";
   }
   return p;
 }
@@ -158,7 +162,8 @@ TEST(Rosenbrock, Ros34pw2SatisfiesTheWMethodOrderConditions) {
         EXPECT_EQ(T.gamma[i][j], 0.0) << "gamma must be lower triangular";
       }
     }
-  for (int i = 0; i < S; ++i) EXPECT_EQ(T.gamma[i][i], T.gamma[0][0]) << "one LU per step size needs a constant diagonal";
+  for (int i = 0; i < S; ++i)
+    EXPECT_EQ(T.gamma[i][i], T.gamma[0][0]) << "one LU per step size needs a constant diagonal";
   auto conditions = [&](const double* b) {
     double c[8] = {};
     for (int i = 0; i < S; ++i) {
@@ -178,7 +183,8 @@ TEST(Rosenbrock, Ros34pw2SatisfiesTheWMethodOrderConditions) {
   const double want[8] = {1.0, 0.5, 0.0, 1.0 / 3.0, 1.0 / 6.0, 0.0, 0.0, 0.0};
   const auto c3 = conditions(T.b), c2 = conditions(T.b_hat);
   for (int k = 0; k < 8; ++k) EXPECT_NEAR(c3[k], want[k], 1e-14) << "order-3 condition " << k;
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(c2[k], want[k], 1e-14) << "embedded order-2 condition " << k;
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(c2[k], want[k], 1e-14) << "embedded order-2 condition " << k;
   // The embedded method is genuinely of order 2 only (else the error estimate would vanish).
   double off = 0;
   for (int k = 3; k < 8; ++k) off += std::abs(c2[k] - want[k]);
@@ -199,8 +205,9 @@ TEST(Rosenbrock, DampedOscillatorMatchesTheAnalyticSolution) {
     RosenbrockIntegrator integ(sys.system, o);
     integ.initialize(sys.initial(ex.xi0, ex.v0));
     const double e = maxErrorAgainstExact(integ, sys, ex, 3.0, 0.05);
-    std::cout << "accuracy " << acc << ": max |x error| " << e << " m over 3 s (amplitude 0.1 m), " << integ.steps()
-              << " steps, " << integ.evaluations() << " evaluations, " << integ.jacobians() << " Jacobians\n";
+    std::cout << "accuracy " << acc << ": max |x error| " << e << " m over 3 s (amplitude 0.1 m), "
+              << integ.steps() << " steps, " << integ.evaluations() << " evaluations, "
+              << integ.jacobians() << " Jacobians\n";
     // Global error of a locally controlled method: a small multiple of the tolerance times the
     // scale (atol unit 1 + |y| <= 2.1 here) accumulated over ~10 periods.
     EXPECT_LT(e, 10 * acc);
@@ -223,9 +230,10 @@ TEST(Rosenbrock, StiffHeavilyDampedCaseNeedsFarFewerStepsThanRkMerson) {
   integ.initialize(s0);
   const double e = maxErrorAgainstExact(integ, sys, ex, T, 0.25);
   const RkStats rk = rkMerson(sys, s0, acc, hmax, T);
-  std::cout << "stiff: Rosenbrock " << integ.steps() << " steps (" << integ.attempts() << " attempts, " << integ.evaluations()
-            << " evaluations, " << integ.jacobians() << " Jacobians), RK-Merson " << rk.steps << " steps ("
-            << rk.realizations << " realizations); max |x error| " << e << " (RK-Merson end error "
+  std::cout << "stiff: Rosenbrock " << integ.steps() << " steps (" << integ.attempts()
+            << " attempts, " << integ.evaluations() << " evaluations, " << integ.jacobians()
+            << " Jacobians), RK-Merson " << rk.steps << " steps (" << rk.realizations
+            << " realizations); max |x error| " << e << " (RK-Merson end error "
             << std::abs(rk.x_end - ex.x(T)) << ")\n";
   EXPECT_LT(e, 10 * acc);
   EXPECT_LT(integ.steps() * 5, rk.steps);
@@ -239,13 +247,15 @@ TEST(Rosenbrock, FixedStepErrorFallsAtOrderThreeOnTheLinearOscillator) {
   // Exact velocity at T from the closed form (derivative of x(t)).
   const double s = ex.c / (2 * ex.m), wd = std::sqrt(4 * ex.m * ex.k - ex.c * ex.c) / (2 * ex.m);
   const double B = (ex.v0 + s * ex.xi0) / wd;
-  const double v_T = std::exp(-s * T) * (-s * (ex.xi0 * std::cos(wd * T) + B * std::sin(wd * T)) +
-                                         (-ex.xi0 * wd * std::sin(wd * T) + B * wd * std::cos(wd * T)));
+  const double v_T =
+      std::exp(-s * T) * (-s * (ex.xi0 * std::cos(wd * T) + B * std::sin(wd * T)) +
+                          (-ex.xi0 * wd * std::sin(wd * T) + B * wd * std::cos(wd * T)));
   for (int age : {0, 1000000}) {  // fresh Jacobian every step, and one frozen Jacobian
     RosenbrockOptions o;
     o.jacobian_max_age = age;
     std::cout << "linear, jacobian_max_age " << age << "\n";
-    const auto p = observedOrders(sys, sys.initial(ex.xi0, ex.v0), T, {40, 80, 160}, o, ex.x(T), v_T, 20.0);
+    const auto p =
+        observedOrders(sys, sys.initial(ex.xi0, ex.v0), T, {40, 80, 160}, o, ex.x(T), v_T, 20.0);
     for (double q : p) {
       EXPECT_GT(q, 2.7);
       EXPECT_LT(q, 3.3);
@@ -270,7 +280,8 @@ TEST(Rosenbrock, OrderThreeHoldsWithAFrozenJacobianAndTimeDependentForcing) {
       RosenbrockOptions o;
       o.time_derivative = td;
       o.jacobian_max_age = age;
-      std::cout << "nonlinear forced, time_derivative " << td << ", jacobian_max_age " << age << "\n";
+      std::cout << "nonlinear forced, time_derivative " << td << ", jacobian_max_age " << age
+                << "\n";
       const auto p = observedOrders(sys, s0, T, {80, 160, 320}, o, x_ref, v_ref, 20.0);
       for (double q : p) {
         EXPECT_GT(q, 2.6);
@@ -286,7 +297,8 @@ TEST(Rosenbrock, EulerAngleKinematicsUseSimbodysQDot) {
   MultibodySystem system;
   SimbodyMatterSubsystem matter(system);
   GeneralForceSubsystem forces(system);
-  MobilizedBody::Free ball(matter.Ground(), Transform(), Body::Rigid(MassProperties(2.0, Vec3(0), Inertia(0.3))), Transform());
+  MobilizedBody::Free ball(matter.Ground(), Transform(),
+                           Body::Rigid(MassProperties(2.0, Vec3(0), Inertia(0.3))), Transform());
   system.realizeTopology();
   State s = system.getDefaultState();
   matter.setUseEulerAngles(s, true);
@@ -307,7 +319,8 @@ TEST(Rosenbrock, EulerAngleKinematicsUseSimbodysQDot) {
   const Rotation expected = Rotation(w.norm() * T, UnitVec3(w)) * R0;
   const Rotation actual = ball.getBodyRotation(integ.getState());
   const double angle_err = std::abs((~expected * actual).convertRotationToAngleAxis()[0]);
-  std::cout << "Euler angles: rotation error " << angle_err << " rad after " << integ.steps() << " steps\n";
+  std::cout << "Euler angles: rotation error " << angle_err << " rad after " << integ.steps()
+            << " steps\n";
   EXPECT_LT(angle_err, 1e-6);
   // The same body with quaternions is refused: no normalisation is done.
   State sq = system.getDefaultState();
@@ -401,11 +414,20 @@ TEST(Rosenbrock, InvalidOptionsAreRefused) {
     edit(o);
     return o;
   };
-  EXPECT_THROW(RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.accuracy = 0; })), std::invalid_argument);
-  EXPECT_THROW(RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.max_step_s = 0; })), std::invalid_argument);
-  EXPECT_THROW(RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.initial_step_s = -1; })), std::invalid_argument);
-  EXPECT_THROW(RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.jacobian_max_age = -1; })), std::invalid_argument);
-  EXPECT_THROW(RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.jacobian_refresh_rejections = 0; })),
+  EXPECT_THROW(RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.accuracy = 0; })),
+               std::invalid_argument);
+  EXPECT_THROW(
+      RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.max_step_s = 0; })),
+      std::invalid_argument);
+  EXPECT_THROW(
+      RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.initial_step_s = -1; })),
+      std::invalid_argument);
+  EXPECT_THROW(
+      RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) { o.jacobian_max_age = -1; })),
+      std::invalid_argument);
+  EXPECT_THROW(RosenbrockIntegrator(sys.system, with([](RosenbrockOptions& o) {
+                                      o.jacobian_refresh_rejections = 0;
+                                    })),
                std::invalid_argument);
   RosenbrockIntegrator integ(sys.system, RosenbrockOptions{});
   EXPECT_THROW(integ.setMaximumStepSize(0), std::invalid_argument);

@@ -7,10 +7,10 @@
 
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
-#include "test_util.hpp"
-#include "study/generate.hpp"
-#include "twin/simulator.hpp"
 #include "io/study.hpp"
+#include "study/generate.hpp"
+#include "test_util.hpp"
+#include "twin/simulator.hpp"
 
 using namespace dtwin;
 namespace fs = std::filesystem;
@@ -49,7 +49,8 @@ quantity = "acceleration_z"
 
 Study sensorStudy(const std::string& name, const std::string& extra = kSensors) {
   const fs::path dir = dtwin_test::freshDir(name);
-  return loadStudy(dtwin_test::writeDemoStudy(dir / "study.toml", "lab_repetitions = 2\n" + extra).string());
+  return loadStudy(
+      dtwin_test::writeDemoStudy(dir / "study.toml", "lab_repetitions = 2\n" + extra).string());
 }
 
 std::string errorOf(const std::string& name, const std::string& extra) {
@@ -86,9 +87,11 @@ TEST(SensorTwin, ChassisSensorsAreTheMotionOfTheirPoint) {
   const auto &pos = tr.column("cg_pos_m"), &heave = tr.column("chassis_heave_m");
   for (std::size_t i = 0; i < pos.size(); ++i) ASSERT_NEAR(pos[i], heave[i], 1e-12) << i;
   const auto& seat = tr.column("seat_mps2");
-  const auto &h = tr.column("chassis_heave_acc_mps2"), &p = tr.column("chassis_pitch_acc_radps2"), &r = tr.column("chassis_roll_acc_radps2");
+  const auto &h = tr.column("chassis_heave_acc_mps2"), &p = tr.column("chassis_pitch_acc_radps2"),
+             &r = tr.column("chassis_roll_acc_radps2");
   double worst = 0.0;
-  for (std::size_t i = 0; i < seat.size(); ++i) worst = std::max(worst, std::abs(seat[i] - (h[i] - 0.9 * p[i] - 0.4 * r[i])));
+  for (std::size_t i = 0; i < seat.size(); ++i)
+    worst = std::max(worst, std::abs(seat[i] - (h[i] - 0.9 * p[i] - 0.4 * r[i])));
   EXPECT_GT(range(seat), 1.0);
   EXPECT_LT(worst, 0.01 * range(seat));
   // The rigid-body terms matter: the seat is not the centre of mass.
@@ -101,7 +104,8 @@ TEST(SensorTwin, ChassisSensorsAreTheMotionOfTheirPoint) {
 TEST(SensorTwin, WheelSensorsAreConsistentDerivatives) {
   const Study s = sensorStudy("sensor_wheel");
   const Trace tr = roughRun(s).trace;
-  const auto &z = tr.column("hub_rl_m"), &v = tr.column("hub_rl_v_mps"), &a = tr.column("hub_rl_a_mps2");
+  const auto &z = tr.column("hub_rl_m"), &v = tr.column("hub_rl_v_mps"),
+             &a = tr.column("hub_rl_a_mps2");
   EXPECT_EQ(z.front(), 0.0);
   const double h = 1e-3;
   double worst_v = 0.0, worst_a = 0.0;
@@ -142,7 +146,8 @@ filter = { order = 1, cutoff_hz = 30.0 }
     EXPECT_EQ(pot.front(), 0.0);
     EXPECT_GT(range(pot), 0.005) << c;
     double worst = 0.0;
-    for (std::size_t i = 0; i < pot.size(); ++i) worst = std::max(worst, std::abs(pot[i] - (q[i] - q.front())));
+    for (std::size_t i = 0; i < pot.size(); ++i)
+      worst = std::max(worst, std::abs(pot[i] - (q[i] - q.front())));
     EXPECT_LT(worst, 1e-7 * range(pot)) << c;  // the trigonometric round trip of a 0.3 m height
   }
   const auto &v = tr.column("pot_rr_v_mps"), &qd = tr.column("susp_rate_rr_mps");
@@ -194,7 +199,8 @@ TEST(SensorTwin, SensorsAreReadAtOffGridTimes) {
   const Study s = sensorStudy("sensor_offgrid");
   LabData d;
   for (int k = 0; k < 300; ++k)
-    for (const char* ch : {"seat_mps2", "seat_lp_mps2"}) d.records.push_back({1, 0.5005 + 0.005 * k, ch, 0.0});
+    for (const char* ch : {"seat_mps2", "seat_lp_mps2"})
+      d.records.push_back({1, 0.5005 + 0.005 * k, ch, 0.0});
   calib::LabObjective coarse(s, s.assemblies().front(), {{"x.csv", "diag_rough", d}}, {});
   Study fine_study = s;
   fine_study.simulation.output_rate_hz = 2000.0;
@@ -220,17 +226,24 @@ TEST(SensorTwin, BadSensorTablesNameTheField) {
   };
   const Case cases[] = {
       {"[sensors.a]\nbody = \"roof\"\nquantity = \"acceleration_z\"\n", "sensors.a.body"},
-      {"[sensors.a]\nposition_m = [1, 2]\nquantity = \"acceleration_z\"\n", "sensors.a.position_m: must be [x, y, z]"},
+      {"[sensors.a]\nposition_m = [1, 2]\nquantity = \"acceleration_z\"\n",
+       "sensors.a.position_m: must be [x, y, z]"},
       {"[sensors.a]\n", "sensors.a.quantity: is required"},
       {"[sensors.a]\nquantity = \"acceleration_x\"\n", "sensors.a.quantity"},
-      {"[sensors.a]\nquantity = \"acceleration_z\"\nfilter = { order = 3, cutoff_hz = 10 }\n", "sensors.a.filter.order"},
-      {"[sensors.a]\nquantity = \"acceleration_z\"\nfilter = { order = 1 }\n", "sensors.a.filter.cutoff_hz"},
-      {"[sensors.a]\nquantity = \"acceleration_z\"\nfilter = { order = 1, cutoff_hz = 5, cut = 3 }\n", "sensors.a.filter.cut"},
+      {"[sensors.a]\nquantity = \"acceleration_z\"\nfilter = { order = 3, cutoff_hz = 10 }\n",
+       "sensors.a.filter.order"},
+      {"[sensors.a]\nquantity = \"acceleration_z\"\nfilter = { order = 1 }\n",
+       "sensors.a.filter.cutoff_hz"},
+      {"[sensors.a]\nquantity = \"acceleration_z\"\nfilter = { order = 1, cutoff_hz = 5, cut = 3 "
+       "}\n",
+       "sensors.a.filter.cut"},
       {"[sensors.a]\nquantity = \"acceleration_z\"\nnoise_sd = -1\n", "sensors.a.noise_sd"},
       {"[sensors.a]\nquantity = \"acceleration_z\"\nmount = \"chassis\"\n", "sensors.a.mount"},
       {"[sensors.A]\nquantity = \"acceleration_z\"\n", "sensors.A: sensor name 'A'"},
-      {"[sensors.b]\nbody = \"wheel_fl\"\nposition_m = [0.1, 0, 0]\nquantity = \"velocity_z\"\n", "sensors.b.position_m"},
-      {"[sensors.chassis_heave]\nquantity = \"displacement_z\"\n", "is already a channel of the twin"},
+      {"[sensors.b]\nbody = \"wheel_fl\"\nposition_m = [0.1, 0, 0]\nquantity = \"velocity_z\"\n",
+       "sensors.b.position_m"},
+      {"[sensors.chassis_heave]\nquantity = \"displacement_z\"\n",
+       "is already a channel of the twin"},
       {"[sensors]\na = 3\n", "sensors.a: must be a table"},
   };
   int i = 0;
@@ -251,7 +264,8 @@ TEST(SensorTwin, MeasurementsMayNameSensorChannels) {
   EXPECT_FALSE(checkChannelName("seat_mps2").empty());  // not a channel of a study without sensors
   const auto chans = Simulator::channels(s.sensors);
   ASSERT_EQ(chans.size(), Simulator::channels().size() + 7);
-  const auto it = std::find_if(chans.begin(), chans.end(), [](const Channel& c) { return c.name == "hub_rl_a_mps2"; });
+  const auto it = std::find_if(chans.begin(), chans.end(),
+                               [](const Channel& c) { return c.name == "hub_rl_a_mps2"; });
   ASSERT_NE(it, chans.end());
   EXPECT_EQ(it->unit, "m/s^2");
   EXPECT_NE(it->description.find("wheel_rl"), std::string::npos) << it->description;
@@ -313,10 +327,14 @@ quantity = "acceleration_z"
   EXPECT_EQ(with.predict(th), expect);
   th.back() = 0.25;
   const auto shifted = with.predict(th);
-  for (std::size_t i = 0; i < expect.size(); ++i) EXPECT_NEAR(shifted[i], expect[i] + 0.25, 1e-12) << i;
+  for (std::size_t i = 0; i < expect.size(); ++i)
+    EXPECT_NEAR(shifted[i], expect[i] + 0.25, 1e-12) << i;
   // In [fixed] too, and a position beyond 10 m is refused when the study is read.
-  const Study fixed = sensorStudy("sensor_param_c", std::string(kAt) + "\n[fixed]\n\"sensors.seat.x_m\" = 1.2\n");
+  const Study fixed =
+      sensorStudy("sensor_param_c", std::string(kAt) + "\n[fixed]\n\"sensors.seat.x_m\" = 1.2\n");
   const calib::LabObjective f(fixed, fixed.assemblies().front(), sets, {});
   EXPECT_EQ(f.predict(dtwin_test::truthOf(fixed)), expect);
-  EXPECT_NE(errorOf("sensor_param_d", std::string(kAt) + "\n[fixed]\n\"sensors.seat.x_m\" = 12.0\n").find("sensors.seat.x_m"), std::string::npos);
+  EXPECT_NE(errorOf("sensor_param_d", std::string(kAt) + "\n[fixed]\n\"sensors.seat.x_m\" = 12.0\n")
+                .find("sensors.seat.x_m"),
+            std::string::npos);
 }

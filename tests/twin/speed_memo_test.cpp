@@ -38,9 +38,15 @@ TEST(SpeedMemo, GivesTheProfilesNumbersBitForBitInAnyOrder) {
     for (int i = 0; i < 3000; ++i) {
       const double s = times[static_cast<std::size_t>(rng() % (i % 7 == 0 ? times.size() : 3))];
       switch (rng() % 3) {
-        case 0: ASSERT_EQ(m.speed(s), p->speed(s)) << s; break;
-        case 1: ASSERT_EQ(m.accel(s), p->accel(s)) << s; break;
-        default: ASSERT_EQ(m.distance(s), p->distance(s)) << s; break;
+        case 0:
+          ASSERT_EQ(m.speed(s), p->speed(s)) << s;
+          break;
+        case 1:
+          ASSERT_EQ(m.accel(s), p->accel(s)) << s;
+          break;
+        default:
+          ASSERT_EQ(m.distance(s), p->distance(s)) << s;
+          break;
       }
     }
   }

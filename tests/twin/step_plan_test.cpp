@@ -10,11 +10,11 @@
 
 #include "calibration/calibrate.hpp"
 #include "common/errors.hpp"
+#include "io/study.hpp"
 #include "shipped_study.hpp"
 #include "study/generate.hpp"
 #include "twin/roads/iso8608.hpp"
 #include "twin/simulator.hpp"
-#include "io/study.hpp"
 
 using namespace dtwin;
 
@@ -33,16 +33,19 @@ struct Lab {
   }
 };
 
-/// The largest residual of the least-squares quadratic through f at x = -m..m, in units of f's range.
+/// The largest residual of the least-squares quadratic through f at x = -m..m, in units of f's
+/// range.
 double relativeRoughness(const std::vector<double>& f) {
   std::vector<double> x;
-  for (std::size_t i = 0; i < f.size(); ++i) x.push_back(static_cast<double>(i) - 0.5 * static_cast<double>(f.size() - 1));
+  for (std::size_t i = 0; i < f.size(); ++i)
+    x.push_back(static_cast<double>(i) - 0.5 * static_cast<double>(f.size() - 1));
   const auto [lo, hi] = std::minmax_element(f.begin(), f.end());
   return calib::quadraticRoughness(x, f) / std::max(*hi - *lo, 1e-300);
 }
 
 /// A run of `values` that records its steps in `plan`.
-RunResult recordedRun(Simulator& sim, const Lab& s, const std::vector<double>& values, StepPlan& plan) {
+RunResult recordedRun(Simulator& sim, const Lab& s, const std::vector<double>& values,
+                      StepPlan& plan) {
   StepControl record;
   record.record = &plan;
   return sim.run(values, *s.road, s.scenario, record);
@@ -97,7 +100,8 @@ TEST(StepPlan, AReplayedRunIsASmoothFunctionOfTheParameters) {
   const RunResult base = recordedRun(sim, s, values, plan);
   ASSERT_TRUE(base.stats.ok);
   const auto& f0 = base.trace.column("hub_force_fl_N");
-  const std::size_t peak = static_cast<std::size_t>(std::max_element(f0.begin(), f0.end()) - f0.begin());
+  const std::size_t peak =
+      static_cast<std::size_t>(std::max_element(f0.begin(), f0.end()) - f0.begin());
   std::vector<double> frozen, adaptive;
   const double k0 = values[k];
   for (int i = -5; i <= 5; ++i) {
@@ -111,8 +115,11 @@ TEST(StepPlan, AReplayedRunIsASmoothFunctionOfTheParameters) {
     adaptive.push_back(a.trace.column("hub_force_fl_N")[peak]);
   }
   const double rf = relativeRoughness(frozen), ra = relativeRoughness(adaptive);
-  std::printf("[ figures  ] peak hub force along the tire stiffness: departure from a quadratic, in units of its range: "
-              "frozen steps %.3g, adaptive steps %.3g\n", rf, ra);
+  std::printf(
+      "[ figures  ] peak hub force along the tire stiffness: departure from a quadratic, in units "
+      "of its range: "
+      "frozen steps %.3g, adaptive steps %.3g\n",
+      rf, ra);
   EXPECT_LT(rf, 1e-6);
 }
 
@@ -131,7 +138,8 @@ TEST(StepPlan, APlanThatDoesNotFitFailsTheRunWithAReason) {
   replay.replay = &short_plan;
   const RunResult r = sim.run(values, *s.road, s.scenario, replay);
   EXPECT_FALSE(r.stats.ok);
-  EXPECT_NE(r.stats.message.find("frozen step sequence does not fit"), std::string::npos) << r.stats.message;
+  EXPECT_NE(r.stats.message.find("frozen step sequence does not fit"), std::string::npos)
+      << r.stats.message;
 
   SimulationOptions merson = demo().simulation;
   merson.integrator = "rk-merson";

@@ -7,9 +7,9 @@
 #include <numeric>
 #include <sstream>
 
+#include "io/study.hpp"
 #include "shipped_study.hpp"
 #include "twin/simulator.hpp"
-#include "io/study.hpp"
 
 using namespace dtwin;
 
@@ -42,15 +42,18 @@ TEST(Twin, StaticEquilibriumHubForcesCarryTheWeightInCgProportion) {
     const auto& v = model->vehicle();
     const double weight = v.total_mass(model->topology()) * v.gravity;
     // Corner shares from the CG position, computed here independently of the model code.
-    const double m_unsprung_axle = 2 * v.wheel_mass + (model->topology() == SuspensionTopology::SolidAxle ? v.axle_mass : 0.0);
+    const double m_unsprung_axle =
+        2 * v.wheel_mass + (model->topology() == SuspensionTopology::SolidAxle ? v.axle_mass : 0.0);
     const double front_axle = (v.chassis_mass * v.b / v.wheelbase() + m_unsprung_axle) * v.gravity;
-    const double expected[4] = {front_axle / 2, front_axle / 2, (weight - front_axle) / 2, (weight - front_axle) / 2};
+    const double expected[4] = {front_axle / 2, front_axle / 2, (weight - front_axle) / 2,
+                                (weight - front_axle) / 2};
     for (std::size_t row : {std::size_t(0), r.trace.rows() - 1}) {
       double sum = 0;
       for (int c = 0; c < 4; ++c) {
         const double f = r.trace.column(std::string("hub_force_") + kCornerNames[c] + "_N")[row];
         sum += f;
-        EXPECT_NEAR(f, expected[c], 0.005 * expected[c]) << "corner " << kCornerNames[c] << " row " << row;
+        EXPECT_NEAR(f, expected[c], 0.005 * expected[c])
+            << "corner " << kCornerNames[c] << " row " << row;
       }
       EXPECT_NEAR(sum, weight, 0.005 * weight) << "row " << row;
     }
@@ -72,9 +75,11 @@ TEST(Twin, OneSystemRunsManyParameterSetsReproducibly) {
   const auto r1 = sim.run(v1, *road, sc);
   const auto r2 = sim.run(v2, *road, sc);
   const auto r1b = sim.run(v1, *road, sc);
-  const double p1 = maxOf(r1.trace.column("hub_force_fl_N")), p2 = maxOf(r2.trace.column("hub_force_fl_N"));
+  const double p1 = maxOf(r1.trace.column("hub_force_fl_N")),
+               p2 = maxOf(r2.trace.column("hub_force_fl_N"));
   EXPECT_GT(std::abs(p2 - p1), 0.02 * p1) << "a stiffer tire must change the bump peak";
-  EXPECT_EQ(r1.trace.column("hub_force_fl_N"), r1b.trace.column("hub_force_fl_N")) << "no state may leak between runs";
+  EXPECT_EQ(r1.trace.column("hub_force_fl_N"), r1b.trace.column("hub_force_fl_N"))
+      << "no state may leak between runs";
 }
 
 TEST(Twin, BumpIsMetByTheFrontWheelsAtSixSeconds) {
@@ -112,7 +117,9 @@ TEST(Twin, EffectsAtTheirOffValuesChangeNothingAndSwitchedOnTheyDo) {
     std::string channel;
   };
   const std::vector<Case> cases = {
-      {"bump_stop", {{"bump_stop.stiffness", 5e6, "", "test"}, {"bump_stop.gap_m", 0.02, "", "test"}}, "susp_defl_fl_m"},
+      {"bump_stop",
+       {{"bump_stop.stiffness", 5e6, "", "test"}, {"bump_stop.gap_m", 0.02, "", "test"}},
+       "susp_defl_fl_m"},
       {"damper_asymmetry", {{"damper_asymmetry.ratio", 3.0, "", "test"}}, "susp_defl_fl_m"},
       {"strut_friction", {{"strut_friction.force_N", 400.0, "", "test"}}, "susp_defl_fl_m"},
       {"tire_enveloping", {{"tire_enveloping.length_m", 0.3, "", "test"}}, "hub_force_fl_N"}};
@@ -139,7 +146,8 @@ TEST(Twin, EffectsAtTheirOffValuesChangeNothingAndSwitchedOnTheyDo) {
       diff = std::max(diff, std::abs(x0[i] - x1[i]));
       scale = std::max(scale, std::abs(x0[i]));
     }
-    EXPECT_GT(diff, 0.02 * scale) << "switched on, " << c.effect << " must visibly change " << c.channel;
+    EXPECT_GT(diff, 0.02 * scale) << "switched on, " << c.effect << " must visibly change "
+                                  << c.channel;
   }
 }
 
@@ -147,17 +155,21 @@ TEST(Twin, EnvelopingLowersTheBumpPeak) {
   const auto& a = paper().assembly("M1");
   const auto& sc = paper().scenario("lab");
   auto base = paper().makeModel(a);
-  auto env = paper().makeModel(a, {EffectSetting{"tire_enveloping", {{"tire_enveloping.length_m", 0.3, "", "test"}}}});
+  auto env = paper().makeModel(
+      a, {EffectSetting{"tire_enveloping", {{"tire_enveloping.length_m", 0.3, "", "test"}}}});
   auto road = makeRoad(sc, base->vehicle(), 1);
   Simulator s0(base, paper().simulation), s1(env, paper().simulation);
-  const double p0 = maxOf(s0.run(base->defaultRunValues(), *road, sc).trace.column("hub_force_fl_N"));
-  const double p1 = maxOf(s1.run(env->defaultRunValues(), *road, sc).trace.column("hub_force_fl_N"));
+  const double p0 =
+      maxOf(s0.run(base->defaultRunValues(), *road, sc).trace.column("hub_force_fl_N"));
+  const double p1 =
+      maxOf(s1.run(env->defaultRunValues(), *road, sc).trace.column("hub_force_fl_N"));
   EXPECT_LT(p1, 0.8 * p0);
 }
 
 // ---------------------------------------------------------------- reference traces
 namespace {
-std::vector<std::vector<double>> readCsv(const std::string& path, std::vector<std::string>& header) {
+std::vector<std::vector<double>> readCsv(const std::string& path,
+                                         std::vector<std::string>& header) {
   std::ifstream in(path);
   EXPECT_TRUE(in.good()) << path;
   std::string line;
@@ -168,7 +180,8 @@ std::vector<std::vector<double>> readCsv(const std::string& path, std::vector<st
   std::vector<std::vector<double>> cols(header.size());
   while (std::getline(in, line)) {
     std::stringstream ss(line);
-    for (std::size_t c = 0; c < header.size() && std::getline(ss, cell, ','); ++c) cols[c].push_back(std::stod(cell));
+    for (std::size_t c = 0; c < header.size() && std::getline(ss, cell, ','); ++c)
+      cols[c].push_back(std::stod(cell));
   }
   return cols;
 }
@@ -181,7 +194,8 @@ class ReferenceTrace : public ::testing::TestWithParam<std::string> {};
 TEST_P(ReferenceTrace, BumpResponseMatchesStoredReference) {
   const std::string id = GetParam();
   std::vector<std::string> header;
-  const auto ref = readCsv(std::string(DTWIN_SOURCE_DIR) + "/data/reference/" + id + "_lab.csv", header);
+  const auto ref =
+      readCsv(std::string(DTWIN_SOURCE_DIR) + "/data/reference/" + id + "_lab.csv", header);
   ASSERT_GT(ref.at(0).size(), 1000u);
   auto model = paper().makeModel(paper().assembly(id));
   Simulator sim(model, paper().simulation);
@@ -195,7 +209,9 @@ TEST_P(ReferenceTrace, BumpResponseMatchesStoredReference) {
     if (header[c].find("_N") != std::string::npos) peak = std::max(peak, maxOf(ref[c]));
   for (std::size_t c = 1; c < header.size(); ++c) {
     const auto& now = r.trace.column(header[c]);
-    const double tol = header[c].find("_N") != std::string::npos ? 0.01 * peak : header[c].find("_rad") != std::string::npos ? 5e-4 : 5e-4;
+    const double tol = header[c].find("_N") != std::string::npos     ? 0.01 * peak
+                       : header[c].find("_rad") != std::string::npos ? 5e-4
+                                                                     : 5e-4;
     double worst = 0;
     for (std::size_t i = 0; i < ref[0].size(); ++i) {
       const auto row = static_cast<std::size_t>(std::llround(ref[0][i] * rate));

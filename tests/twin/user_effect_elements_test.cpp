@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "io/study.hpp"
 #include "shipped_study.hpp"
 #include "subsystems/effect.hpp"
 #include "subsystems/user_effect.hpp"
 #include "twin/simulator.hpp"
-#include "io/study.hpp"
 
 using namespace dtwin;
 
@@ -29,7 +29,8 @@ Study& paper() {
   return s;
 }
 
-/// The first MacPherson assembly of the paper study (the closed forms below need independent struts).
+/// The first MacPherson assembly of the paper study (the closed forms below need independent
+/// struts).
 AssemblySpec macpherson() {
   for (const auto& a : paper().assemblies())
     if (a.option("suspension") == "macpherson") return a;
@@ -38,7 +39,8 @@ AssemblySpec macpherson() {
 }
 
 /// Adds the definition to the study's catalogue (the same definition again is a no-op).
-void define(const std::string& name, const std::string& element, const std::string& force, std::vector<UserEffectParameter> params) {
+void define(const std::string& name, const std::string& element, const std::string& force,
+            std::vector<UserEffectParameter> params) {
   UserEffectSpec u;
   u.name = name;
   u.element = element;
@@ -48,7 +50,8 @@ void define(const std::string& name, const std::string& element, const std::stri
   paper().addUserEffects({u});
 }
 
-RunResult run(const std::vector<EffectSetting>& effects, const ScenarioSpec& sc, std::uint64_t seed = 1) {
+RunResult run(const std::vector<EffectSetting>& effects, const ScenarioSpec& sc,
+              std::uint64_t seed = 1) {
   auto model = paper().makeModel(macpherson(), effects);
   Simulator sim(model, paper().simulation);
   auto road = makeRoad(sc, model->vehicle(), seed);
@@ -63,22 +66,27 @@ EffectSetting setting(const std::string& name, const std::string& param, double 
 
 using dtwin_test::standstill;
 
-double last(const RunResult& r, const std::string& channel) { return r.trace.column(channel).back(); }
+double last(const RunResult& r, const std::string& channel) {
+  return r.trace.column(channel).back();
+}
 
 }  // namespace
 
 TEST(UserEffectElements, AChassisForceUnloadsTheTiresByItsStaticShare) {
-  define("lift", "chassis", "f0 * min(t / t0, 1)", {{"f0", "N", 0, -3000, 3000}, {"t0", "s", 0.5, 0.1, 2, true}});
+  define("lift", "chassis", "f0 * min(t / t0, 1)",
+         {{"f0", "N", 0, -3000, 3000}, {"t0", "s", 0.5, 0.1, 2, true}});
   const double F = 1500.0;
   const auto r = run({setting("lift", "f0", F)}, standstill(5.0));
   const auto model = paper().makeModel(macpherson(), {});
   const VehicleData& d = model->vehicle();
   const double W = d.total_mass(model->topology()) * d.gravity;
   double sum = 0, front = 0;
-  for (const char* c : {"fl", "fr", "rl", "rr"}) sum += last(r, std::string("hub_force_") + c + "_N");
+  for (const char* c : {"fl", "fr", "rl", "rr"})
+    sum += last(r, std::string("hub_force_") + c + "_N");
   for (const char* c : {"fl", "fr"}) front += last(r, std::string("hub_force_") + c + "_N");
   EXPECT_NEAR(sum, W - F, 1e-3 * W);
-  EXPECT_NEAR(front, model->staticTireLoad(0) + model->staticTireLoad(1) - F * d.b / d.wheelbase(), 1e-3 * W);
+  EXPECT_NEAR(front, model->staticTireLoad(0) + model->staticTireLoad(1) - F * d.b / d.wheelbase(),
+              1e-3 * W);
   // The chassis rises (the force lifts it): heave up.
   EXPECT_GT(last(r, "chassis_heave_m"), 1e-4);
 }
@@ -98,9 +106,13 @@ TEST(UserEffectElements, AFrontTireForceLeavesTheLoadAndShiftsTheLawsShare) {
     EXPECT_NEAR(last(r, "hub_force_" + name + "_N"), load, 1e-3 * load);
     // The law carries load - f at the front (the rear tires carry no extra force): the change of
     // deflection from the base run (which settles alike) is the law's static one.
-    const double change = c == 0 ? model->tire().calcStaticDeflection(load - f, tp) - model->tire().calcStaticDeflection(load, tp) : 0.0;
+    const double change = c == 0 ? model->tire().calcStaticDeflection(load - f, tp) -
+                                       model->tire().calcStaticDeflection(load, tp)
+                                 : 0.0;
     const double got = last(r, "tire_defl_" + name + "_m") - last(base, "tire_defl_" + name + "_m");
-    EXPECT_NEAR(got, change, 2e-3 * std::abs(model->tire().calcStaticDeflection(load - f, tp) - model->tire().calcStaticDeflection(load, tp)));
+    EXPECT_NEAR(got, change,
+                2e-3 * std::abs(model->tire().calcStaticDeflection(load - f, tp) -
+                                model->tire().calcStaticDeflection(load, tp)));
   }
 }
 
@@ -124,19 +136,24 @@ TEST(UserEffectElements, ASpeedDependentStrutForceDeflectsEveryStrutByItsStaticS
 }
 
 TEST(UserEffectElements, AxleRollAndAStrutForceInDqAreTheAntiRollBar) {
-  define("roll_bar_expr", "axle_roll", "(kf * front + kr * (1 - front)) * dq", {{"kf", "N/m", 0, 0, 4e4}, {"kr", "N/m", 0, 0, 4e4}});
-  define("roll_bar_strut", "strut", "(kf * front + kr * (1 - front)) * dq", {{"kf", "N/m", 0, 0, 4e4}, {"kr", "N/m", 0, 0, 4e4}});
+  define("roll_bar_expr", "axle_roll", "(kf * front + kr * (1 - front)) * dq",
+         {{"kf", "N/m", 0, 0, 4e4}, {"kr", "N/m", 0, 0, 4e4}});
+  define("roll_bar_strut", "strut", "(kf * front + kr * (1 - front)) * dq",
+         {{"kf", "N/m", 0, 0, 4e4}, {"kr", "N/m", 0, 0, 4e4}});
   ScenarioSpec sc = paper().scenario("field");
   sc.duration_s = 9.0;
   const double kf = 20000, kr = 10000;
-  const auto builtin = run({EffectSetting{"anti_roll_bar",
-                                          {{"anti_roll_bar.stiffness_front_N_per_m", kf, "t", "t"}, {"anti_roll_bar.stiffness_rear_N_per_m", kr, "t", "t"}}}},
-                           sc);
+  const auto builtin =
+      run({EffectSetting{"anti_roll_bar",
+                         {{"anti_roll_bar.stiffness_front_N_per_m", kf, "t", "t"},
+                          {"anti_roll_bar.stiffness_rear_N_per_m", kr, "t", "t"}}}},
+          sc);
   const auto base = run({}, sc);
   for (const char* name : {"roll_bar_expr", "roll_bar_strut"}) {
     SCOPED_TRACE(name);
     const std::string n(name);
-    const auto r = run({EffectSetting{n, {{n + ".kf", kf, "t", "t"}, {n + ".kr", kr, "t", "t"}}}}, sc);
+    const auto r =
+        run({EffectSetting{n, {{n + ".kf", kf, "t", "t"}, {n + ".kr", kr, "t", "t"}}}}, sc);
     for (const char* c : {"fl", "fr", "rl", "rr"}) {
       const auto& x = r.trace.column(std::string("hub_force_") + c + "_N");
       const auto& y = builtin.trace.column(std::string("hub_force_") + c + "_N");

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "io/study.hpp"
 #include "test_util.hpp"
 #include "twin/simulator.hpp"
-#include "io/study.hpp"
 
 namespace fs = std::filesystem;
 
@@ -26,7 +26,9 @@ namespace {
 std::string studyWith(const fs::path& dir, const std::string& extra) {
   std::string text = dtwin_test::slurp(std::string(DTWIN_SOURCE_DIR) + "/data/studies/demo.toml");
   const std::string rel = "vehicle = \"../vehicle/midsize_sedan.toml\"";
-  text.replace(text.find(rel), rel.size(), "vehicle = \"" + std::string(DTWIN_SOURCE_DIR) + "/data/vehicle/midsize_sedan.toml\"");
+  text.replace(
+      text.find(rel), rel.size(),
+      "vehicle = \"" + std::string(DTWIN_SOURCE_DIR) + "/data/vehicle/midsize_sedan.toml\"");
   const fs::path p = dir / "study.toml";
   dtwin_test::writeText(p, text + "\n" + extra);
   return p.string();
@@ -37,7 +39,8 @@ struct Cli {
   std::string err;
 };
 Cli twin(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " + (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
+  const std::string cmd = std::string(DTWIN_TWIN_EXE) + " " + args + " > " +
+                          (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
   const int st = std::system(cmd.c_str());
   return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, dtwin_test::slurp(dir / "err.txt")};
 }
@@ -54,16 +57,27 @@ TEST(UserEffectTwin, AnExpressionGivesTheBuiltInEffectsTraceBitForBit) {
   const fs::path dir = dtwin_test::freshDir("user_effect_twin");
   const std::string study = studyWith(dir, kMyAsymmetry);
   for (const char* e : {"damper_asymmetry", "my_asymmetry"}) {
-    const Cli r = twin("simulate --study " + study + " --scenario lab --quiet --effect " + e + ":ratio=2.2 --out " + (dir / (std::string(e) + ".csv")).string(),
+    const Cli r = twin("simulate --study " + study + " --scenario lab --quiet --effect " + e +
+                           ":ratio=2.2 --out " + (dir / (std::string(e) + ".csv")).string(),
                        dir);
     ASSERT_EQ(r.code, 0) << r.err;
   }
-  const std::string a = dtwin_test::slurp(dir / "damper_asymmetry.csv"), b = dtwin_test::slurp(dir / "my_asymmetry.csv");
+  const std::string a = dtwin_test::slurp(dir / "damper_asymmetry.csv"),
+                    b = dtwin_test::slurp(dir / "my_asymmetry.csv");
   ASSERT_GT(a.size(), 1000u);
   EXPECT_TRUE(a == b) << "the user-defined effect's trace differs from the built-in one";
   // Off (ratio at its value 1), the trace is the base model's.
-  ASSERT_EQ(twin("simulate --study " + study + " --scenario lab --quiet --out " + (dir / "base.csv").string(), dir).code, 0);
-  ASSERT_EQ(twin("simulate --study " + study + " --scenario lab --quiet --effect my_asymmetry --out " + (dir / "off.csv").string(), dir).code, 0);
+  ASSERT_EQ(twin("simulate --study " + study + " --scenario lab --quiet --out " +
+                     (dir / "base.csv").string(),
+                 dir)
+                .code,
+            0);
+  ASSERT_EQ(
+      twin("simulate --study " + study + " --scenario lab --quiet --effect my_asymmetry --out " +
+               (dir / "off.csv").string(),
+           dir)
+          .code,
+      0);
   EXPECT_TRUE(dtwin_test::slurp(dir / "base.csv") == dtwin_test::slurp(dir / "off.csv"));
   // `twin list` shows it with its parameter.
   ASSERT_EQ(twin("list --study " + study, dir).code, 0);
@@ -76,14 +90,18 @@ TEST(UserEffectTwin, BadDefinitionsInTheStudyFileAreOneLineErrors) {
     std::string extra, expect;
   };
   const std::vector<Case> cases = {
-      {"[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q * w\"\nparameters = { a = { value = 0, unit = \"N/m\", lower = 0, upper = 1e5 } }\n",
-       "study.toml:" },
-      {"[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q\"\nparameters = { a = { value = 0, unit = \"N/m\", lower = 0 } }\n",
+      {"[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q * w\"\nparameters = { a = { "
+       "value = 0, unit = \"N/m\", lower = 0, upper = 1e5 } }\n",
+       "study.toml:"},
+      {"[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q\"\nparameters = { a = { value = "
+       "0, unit = \"N/m\", lower = 0 } }\n",
        "user_effects.soft.parameters.a.upper: is required"},
-      {"[user_effects.damper_asymmetry]\nelement = \"strut\"\nforce = \"a * q\"\nparameters = { a = { value = 0, unit = \"N/m\", lower = 0, upper = 1 } }\n",
+      {"[user_effects.damper_asymmetry]\nelement = \"strut\"\nforce = \"a * q\"\nparameters = { a "
+       "= { value = 0, unit = \"N/m\", lower = 0, upper = 1 } }\n",
        "user_effects.damper_asymmetry: 'damper_asymmetry' is a built-in effect's name"},
       {"[user_effects.soft]\nforce = \"a * q\"\n", "user_effects.soft.element: is required"},
-      {"[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q\"\ncolour = \"red\"\nparameters = { a = { value = 0, unit = \"N/m\", lower = 0, upper = 1 } }\n",
+      {"[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q\"\ncolour = \"red\"\nparameters "
+       "= { a = { value = 0, unit = \"N/m\", lower = 0, upper = 1 } }\n",
        "colour"},
   };
   for (const auto& c : cases) {
@@ -95,10 +113,13 @@ TEST(UserEffectTwin, BadDefinitionsInTheStudyFileAreOneLineErrors) {
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
   }
   // The unknown symbol's message names the line of the table and the field.
-  const std::string study = studyWith(dir, std::string("[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q * w\"\n") +
-                                               "parameters = { a = { value = 0, unit = \"N/m\", lower = 0, upper = 1e5 } }\n");
+  const std::string study = studyWith(
+      dir, std::string("[user_effects.soft]\nelement = \"strut\"\nforce = \"a * q * w\"\n") +
+               "parameters = { a = { value = 0, unit = \"N/m\", lower = 0, upper = 1e5 } }\n");
   const Cli r = twin("list --study " + study, dir);
-  EXPECT_NE(r.err.find(": user_effects.soft: force: 'a * q * w': Unexpected token \"w\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": user_effects.soft: force: 'a * q * w': Unexpected token \"w\""),
+            std::string::npos)
+      << r.err;
 }
 
 namespace {
@@ -106,7 +127,8 @@ namespace {
 /// Two studies that define `extra` differently (a strut force in q, one in v), and one more
 /// effect only the second knows.
 struct TwoStudies {
-  fs::path dir_a = dtwin_test::freshDir("user_effect_two_a"), dir_b = dtwin_test::freshDir("user_effect_two_b");
+  fs::path dir_a = dtwin_test::freshDir("user_effect_two_a"),
+           dir_b = dtwin_test::freshDir("user_effect_two_b");
   dtwin::Study a = dtwin::loadStudy(studyWith(dir_a, R"([user_effects.extra]
 element = "strut"
 force = "a * q"
@@ -127,7 +149,8 @@ parameters = { f = { value = 0, unit = "N", lower = -1000, upper = 1000 } }
 /// The front-left hub force of the lab run of `study`'s first assembly with `extra` at a = value.
 std::vector<double> hubForce(const dtwin::Study& study, double value) {
   using namespace dtwin;
-  const auto model = study.makeModel(study.assemblies().front(), {EffectSetting{"extra", {{"extra.a", value, "test", "test"}}}});
+  const auto model = study.makeModel(
+      study.assemblies().front(), {EffectSetting{"extra", {{"extra.a", value, "test", "test"}}}});
   Simulator sim(model, study.simulation);
   const ScenarioSpec& sc = study.scenario("lab");
   auto road = makeRoad(sc, model->vehicle(), study.seed);
@@ -140,7 +163,9 @@ std::vector<double> hubForce(const dtwin::Study& study, double value) {
 
 TEST(UserEffectTwin, TwoStudiesInOneProcessSeeOnlyTheirOwnDefinitions) {
   const TwoStudies s;
-  auto has = [](const dtwin::Study& st, const std::string& n) { return st.effectCatalog().contains(n); };
+  auto has = [](const dtwin::Study& st, const std::string& n) {
+    return st.effectCatalog().contains(n);
+  };
   EXPECT_TRUE(has(s.a, "extra"));
   EXPECT_FALSE(has(s.a, "only_b"));
   EXPECT_TRUE(has(s.b, "only_b"));

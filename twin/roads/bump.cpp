@@ -1,8 +1,8 @@
 #include "twin/roads/bump.hpp"
 
 #include "common/errors.hpp"
-#include "twin/scenario.hpp"
 #include "common/toml_reader.hpp"
+#include "twin/scenario.hpp"
 
 namespace dtwin {
 
@@ -19,11 +19,14 @@ nlohmann::json BumpRoadSetting::toJson() const {
   return {{"type", "bump"}, {"height_m", height_m}, {"length_m", length_m}, {"time_s", time_s}};
 }
 
-std::shared_ptr<const Road> BumpRoadSetting::make(const ScenarioSpec& s, const VehicleData&, std::uint64_t) const {
+std::shared_ptr<const Road> BumpRoadSetting::make(const ScenarioSpec& s, const VehicleData&,
+                                                  std::uint64_t) const {
   return std::make_shared<BumpRoad>(s.speed.distance(time_s), height_m, length_m);
 }
 
-std::vector<std::string> BumpRoadSetting::describeWindow(const ScenarioSpec& sc, const VehicleData& v, double t0, double t1) const {
+std::vector<std::string> BumpRoadSetting::describeWindow(const ScenarioSpec& sc,
+                                                         const VehicleData& v, double t0,
+                                                         double t1) const {
   const double wb = v.wheelbase();
   auto overlaps = [&](double a, double b) { return t0 <= b && t1 >= a; };
   std::vector<std::string> parts;
@@ -33,7 +36,8 @@ std::vector<std::string> BumpRoadSetting::describeWindow(const ScenarioSpec& sc,
   const double fm = 0.5 * (f0 + f1), rm = 0.5 * (r0 + r1);
   if (overlaps(f0, fm)) parts.push_back("front wheels climbing the bump");
   if (overlaps(fm, f1)) parts.push_back("front wheels leaving the bump");
-  if (overlaps(f1, r0)) parts.push_back("after the front wheels' bump (wheel hop and body response)");
+  if (overlaps(f1, r0))
+    parts.push_back("after the front wheels' bump (wheel hop and body response)");
   if (overlaps(r0, rm)) parts.push_back("rear wheels climbing the bump");
   if (overlaps(rm, r1)) parts.push_back("rear wheels leaving the bump");
   if (t1 > r1) parts.push_back("after the rear wheels' bump (free vibration)");
@@ -42,7 +46,8 @@ std::vector<std::string> BumpRoadSetting::describeWindow(const ScenarioSpec& sc,
 }
 
 void BumpRoadSetting::check(const ScenarioSpec& s, const std::string& where) const {
-  if (time_s >= s.duration_s) throw InputError(where, "bump time_s must be before the end of the scenario");
+  if (time_s >= s.duration_s)
+    throw InputError(where, "bump time_s must be before the end of the scenario");
 }
 
 }  // namespace dtwin

@@ -15,8 +15,10 @@ class BumpRoadSetting final : public RoadSetting {
   static std::shared_ptr<const RoadSetting> parse(TableReader& table);
   std::string type() const override { return "bump"; }
   nlohmann::json toJson() const override;
-  std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v, std::uint64_t seed) const override;
-  std::vector<std::string> describeWindow(const ScenarioSpec& s, const VehicleData& v, double t0, double t1) const override;
+  std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v,
+                                   std::uint64_t seed) const override;
+  std::vector<std::string> describeWindow(const ScenarioSpec& s, const VehicleData& v, double t0,
+                                          double t1) const override;
   double featureTime_s() const override { return time_s; }
   bool obstacle() const override { return true; }
   void check(const ScenarioSpec& s, const std::string& where) const override;

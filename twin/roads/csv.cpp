@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
-#include "twin/scenario.hpp"
 #include "common/toml_reader.hpp"
+#include "twin/scenario.hpp"
 
 namespace dtwin {
 
@@ -16,14 +16,17 @@ std::shared_ptr<const RoadSetting> CsvRoadSetting::parse(TableReader& rr) {
   return rs;
 }
 
-std::shared_ptr<const Road> CsvRoadSetting::make(const ScenarioSpec& s, const VehicleData& v, std::uint64_t) const {
+std::shared_ptr<const Road> CsvRoadSetting::make(const ScenarioSpec& s, const VehicleData& v,
+                                                 std::uint64_t) const {
   auto road = loadRoadCsv(path);
   const auto ext = road->extent();
   if (ext.lo > s.speed.distance(0) - v.wheelbase() || ext.hi < s.speed.distance(s.duration_s))
-    throw InputError(path, "road profile covers distance_m " + std::to_string(ext.lo) + ".." + std::to_string(ext.hi) +
-                               " but scenario '" + s.name + "' needs " + std::to_string(s.speed.distance(0) - v.wheelbase()) + ".." +
+    throw InputError(path, "road profile covers distance_m " + std::to_string(ext.lo) + ".." +
+                               std::to_string(ext.hi) + " but scenario '" + s.name + "' needs " +
+                               std::to_string(s.speed.distance(0) - v.wheelbase()) + ".." +
                                std::to_string(s.speed.distance(s.duration_s)) +
-                               " (front axle starts at the speed's start_m, 0 unless given; rear axle one wheelbase behind)");
+                               " (front axle starts at the speed's start_m, 0 unless given; rear "
+                               "axle one wheelbase behind)");
   return road;
 }
 

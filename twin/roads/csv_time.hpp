@@ -8,9 +8,9 @@ namespace dtwin {
 
 class CsvTimeRoadSetting final : public RoadSetting {
  public:
-  std::string path;               ///< resolved against the study file's folder
-  double highpass_hz = 0.1;       ///< drift removal of a velocity log (only there)
-  double dx_m = 0.02;             ///< spacing of the distance grid
+  std::string path;                        ///< resolved against the study file's folder
+  double highpass_hz = 0.1;                ///< drift removal of a velocity log (only there)
+  double dx_m = 0.02;                      ///< spacing of the distance grid
   std::shared_ptr<const TimeRoadLog> log;  ///< read and checked when the study is read
 
   /// Fields: path (required), dx_m in [1e-3, 1] m (default 0.02), highpass_hz in [1e-3, 10] Hz
@@ -19,8 +19,10 @@ class CsvTimeRoadSetting final : public RoadSetting {
   std::string type() const override { return "csv_time"; }
   bool measured() const override { return true; }
   nlohmann::json toJson() const override;
-  std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v, std::uint64_t seed) const override;
-  std::vector<std::string> describeWindow(const ScenarioSpec&, const VehicleData&, double, double) const override {
+  std::shared_ptr<const Road> make(const ScenarioSpec& s, const VehicleData& v,
+                                   std::uint64_t seed) const override;
+  std::vector<std::string> describeWindow(const ScenarioSpec&, const VehicleData&, double,
+                                          double) const override {
     return {"measured road (logged against time)"};
   }
   /// The log must cover the scenario: its times from <= 0 to >= duration_s.

@@ -36,7 +36,8 @@ int main() {
   using namespace dtwin;
   // common, distributed
   check(formatFixed(2.5, 2) == "2.50", "common: formatFixed(2.5, 2) is not 2.50");
-  check(encodeException(std::make_exception_ptr(std::runtime_error("lost wheel"))).find("lost wheel") != std::string::npos,
+  check(encodeException(std::make_exception_ptr(std::runtime_error("lost wheel")))
+                .find("lost wheel") != std::string::npos,
         "distributed: encodeException lost the message");
   // subsystems, twin
   check(!tireLawNames().empty(), "subsystems: no tire law");
@@ -48,16 +49,21 @@ int main() {
   check(quarter == std::vector<int>(4, 1), "calibration: the Latin hypercube misses a quarter");
   // classification: ln N(0; 0, 1) = -ln(2 pi) / 2
   const classify::GaussianModel normal(Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Identity(1, 1));
-  check(std::abs(normal.logPdf(Eigen::VectorXd::Zero(1)) + 0.5 * std::log(2 * std::acos(-1.0))) < 1e-14, "classification: ln N(0; 0, 1)");
+  check(std::abs(normal.logPdf(Eigen::VectorXd::Zero(1)) + 0.5 * std::log(2 * std::acos(-1.0))) <
+            1e-14,
+        "classification: ln N(0; 0, 1)");
   // diagnosis: times 0, 0.1, ..., 1 make a uniform grid of step 0.1
   std::vector<double> t;
   for (int i = 0; i <= 10; ++i) t.push_back(0.1 * i);
   const diag::UniformGrid grid = diag::uniformGrid(t);
-  check(std::abs(grid.dt - 0.1) < 1e-12 && grid.size() == 11, "diagnosis: the uniform grid of 11 times");
+  check(std::abs(grid.dt - 0.1) < 1e-12 && grid.size() == 11,
+        "diagnosis: the uniform grid of 11 times");
   // report: the tick step of [0, 153970] for 6 ticks
   check(report::niceStep(0.0, 153970.0) == 50000.0, "report: niceStep");
   // io and mdflib: an MF4 log written and its directory read back
-  const std::string mf4 = (std::filesystem::temp_directory_path() / ("dtwin-consumer-" + std::to_string(::getpid()) + ".mf4")).string();
+  const std::string mf4 = (std::filesystem::temp_directory_path() /
+                           ("dtwin-consumer-" + std::to_string(::getpid()) + ".mf4"))
+                              .string();
   MdfWriteGroup group;
   group.name = "drive";
   group.time = {0.0, 0.01, 0.02};
@@ -85,7 +91,8 @@ int main() {
   check(runs.size() == 1 && runs[0].ok, "study: the lab run failed");
   if (runs.size() == 1 && runs[0].ok) {
     const std::vector<double>& time = runs[0].values.column("time_s");
-    check(!time.empty() && std::abs(time.back() - 0.2) < 1e-9, "study: the lab run does not end at 0.2 s");
+    check(!time.empty() && std::abs(time.back() - 0.2) < 1e-9,
+          "study: the lab run does not end at 0.2 s");
     check(runs[0].static_hub_force_fl_N > 0, "study: no static hub force");
   }
   if (failures == 0) std::printf("ok\n");

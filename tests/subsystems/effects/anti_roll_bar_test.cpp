@@ -1,5 +1,5 @@
-// The `anti_roll_bar` effect's closed form (subsystems/effects/anti_roll_bar.hpp); the contract every
-// effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
+// The `anti_roll_bar` effect's closed form (subsystems/effects/anti_roll_bar.hpp); the contract
+// every effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
 #include "subsystems/effects/anti_roll_bar.hpp"
 
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 namespace dtwin {
 namespace {
 
-using dtwin_test::valuesWith;
 using dtwin_test::strut;
+using dtwin_test::valuesWith;
 
 TEST(AntiRollBar, ForceIsAxleRateTimesDeflectionDifference) {
   auto e = makeEffect("anti_roll_bar", "t");
@@ -23,15 +23,20 @@ TEST(AntiRollBar, ForceIsAxleRateTimesDeflectionDifference) {
       EXPECT_NEAR(e->calcAxleCouplingForce(ql, qr, true, v), kf * (ql - qr), 1e-12 * kf);
       EXPECT_NEAR(e->calcAxleCouplingForce(ql, qr, false, v), kr * (ql - qr), 1e-12 * kr);
       // Antisymmetric: swapping the sides negates the force (the right strut gets -F).
-      EXPECT_EQ(e->calcAxleCouplingForce(qr, ql, true, v), -e->calcAxleCouplingForce(ql, qr, true, v));
+      EXPECT_EQ(e->calcAxleCouplingForce(qr, ql, true, v),
+                -e->calcAxleCouplingForce(ql, qr, true, v));
     }
   // Identical deflections: nothing, whatever the stiffness.
   for (double q : {-0.1, 0.0, 0.07}) EXPECT_EQ(e->calcAxleCouplingForce(q, q, true, v), 0.0);
   // Stated stiffness by finite differences (d/dq_left = k, d/dq_right = -k), monotone in q_left.
   const double h = 1e-6;
-  EXPECT_NEAR((e->calcAxleCouplingForce(0.03 + h, 0.01, true, v) - e->calcAxleCouplingForce(0.03 - h, 0.01, true, v)) / (2 * h) / kf,
+  EXPECT_NEAR((e->calcAxleCouplingForce(0.03 + h, 0.01, true, v) -
+               e->calcAxleCouplingForce(0.03 - h, 0.01, true, v)) /
+                  (2 * h) / kf,
               1.0, 1e-6);
-  EXPECT_NEAR((e->calcAxleCouplingForce(0.03, 0.01 + h, false, v) - e->calcAxleCouplingForce(0.03, 0.01 - h, false, v)) / (2 * h) / kr,
+  EXPECT_NEAR((e->calcAxleCouplingForce(0.03, 0.01 + h, false, v) -
+               e->calcAxleCouplingForce(0.03, 0.01 - h, false, v)) /
+                  (2 * h) / kr,
               -1.0, 1e-6);
   // Only one axle's bar installed: the other exerts nothing.
   const auto front_only = valuesWith(*e, {{"stiffness_front_N_per_m", kf}});

@@ -12,19 +12,21 @@
 namespace dtwin {
 namespace {
 
-using dtwin_test::valuesWith;
 using dtwin_test::strut;
+using dtwin_test::valuesWith;
 
 TEST(BumpStop, ZeroBelowGapPowerLawAbove) {
   auto e = makeEffect("bump_stop", "t");
   const double k = 2.0e6, gap = 0.06;
   for (double n : {1.0, 1.5, 2.0, 3.0}) {
     const auto v = valuesWith(*e, {{"stiffness", k}, {"gap_m", gap}, {"exponent", n}});
-    for (double q : {-0.2, 0.0, 0.03, gap - 1e-9, gap}) EXPECT_EQ(e->calcStrutForce(strut(q, 0.3), v), 0.0) << q;
+    for (double q : {-0.2, 0.0, 0.03, gap - 1e-9, gap})
+      EXPECT_EQ(e->calcStrutForce(strut(q, 0.3), v), 0.0) << q;
     for (double q : {gap + 1e-4, 0.07, 0.1, 0.25})
       for (double qdot : {-1.0, 0.0, 2.0}) {  // independent of the rate
         const double expected = k * std::pow(q - gap, n);
-        EXPECT_NEAR(e->calcStrutForce(strut(q, qdot), v), expected, 1e-12 * expected) << "n " << n << " q " << q;
+        EXPECT_NEAR(e->calcStrutForce(strut(q, qdot), v), expected, 1e-12 * expected)
+            << "n " << n << " q " << q;
       }
     // Monotone non-decreasing in deflection, continuous at the gap.
     double prev = 0.0;
@@ -43,11 +45,13 @@ TEST(BumpStop, LinearStopHasStiffnessKJustAboveGap) {
   const double k = 5.0e5, gap = 0.04;
   const auto v = valuesWith(*e, {{"stiffness", k}, {"gap_m", gap}, {"exponent", 1.0}});
   const double q = gap + 1e-3, h = 1e-6;
-  const double fd = (e->calcStrutForce(strut(q + h, 0), v) - e->calcStrutForce(strut(q - h, 0), v)) / (2 * h);
+  const double fd =
+      (e->calcStrutForce(strut(q + h, 0), v) - e->calcStrutForce(strut(q - h, 0), v)) / (2 * h);
   EXPECT_NEAR(fd / k, 1.0, 1e-6);
   // Below the gap there is no stiffness.
-  const double fd_below =
-      (e->calcStrutForce(strut(gap - 1e-3 + h, 0), v) - e->calcStrutForce(strut(gap - 1e-3 - h, 0), v)) / (2 * h);
+  const double fd_below = (e->calcStrutForce(strut(gap - 1e-3 + h, 0), v) -
+                           e->calcStrutForce(strut(gap - 1e-3 - h, 0), v)) /
+                          (2 * h);
   EXPECT_EQ(fd_below, 0.0);
 }
 

@@ -1,5 +1,5 @@
-// The `damper_asymmetry` effect's closed form (subsystems/effects/damper_asymmetry.hpp); the contract every
-// effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
+// The `damper_asymmetry` effect's closed form (subsystems/effects/damper_asymmetry.hpp); the
+// contract every effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
 #include "subsystems/effects/damper_asymmetry.hpp"
 
 #include <gtest/gtest.h>
@@ -12,8 +12,8 @@
 namespace dtwin {
 namespace {
 
-using dtwin_test::valuesWith;
 using dtwin_test::strut;
+using dtwin_test::valuesWith;
 
 TEST(DamperAsymmetry, AddsOnlyInRebound) {
   auto e = makeEffect("damper_asymmetry", "t");
@@ -21,7 +21,8 @@ TEST(DamperAsymmetry, AddsOnlyInRebound) {
     const auto v = valuesWith(*e, {{"ratio", ratio}});
     for (double q : {-0.05, 0.0, 0.08}) {
       for (double qdot : {1e-9, 0.1, 1.0, 3.0})  // compression: no change
-        EXPECT_EQ(e->calcStrutForce(strut(q, qdot), v), 0.0) << "ratio " << ratio << " qdot " << qdot;
+        EXPECT_EQ(e->calcStrutForce(strut(q, qdot), v), 0.0)
+            << "ratio " << ratio << " qdot " << qdot;
       EXPECT_EQ(e->calcStrutForce(strut(q, 0.0), v), 0.0);
       for (double qdot : {-1e-3, -0.2, -1.5}) {  // rebound: (ratio - 1) c qdot
         const double expected = (ratio - 1.0) * 2500.0 * qdot;
@@ -30,7 +31,9 @@ TEST(DamperAsymmetry, AddsOnlyInRebound) {
       }
     }
     // Total damping in rebound is ratio * c: the slope of main + extra force vs rate.
-    const auto total = [&](double qdot) { return 2500.0 * qdot + e->calcStrutForce(strut(0.0, qdot), v); };
+    const auto total = [&](double qdot) {
+      return 2500.0 * qdot + e->calcStrutForce(strut(0.0, qdot), v);
+    };
     EXPECT_NEAR((total(-0.3) - total(-0.5)) / 0.2, ratio * 2500.0, 1e-9);
     EXPECT_NEAR((total(0.5) - total(0.3)) / 0.2, 2500.0, 1e-9);
   }

@@ -1,5 +1,6 @@
-// The `speed_dependent_tire_stiffness` effect's closed form (subsystems/effects/speed_dependent_tire_stiffness.hpp); the contract every
-// effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
+// The `speed_dependent_tire_stiffness` effect's closed form
+// (subsystems/effects/speed_dependent_tire_stiffness.hpp); the contract every effect keeps is
+// checked over the registry in tests/subsystems/effect_test.cpp.
 #include "subsystems/effects/speed_dependent_tire_stiffness.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// The `strut_friction` effect's closed form (subsystems/effects/strut_friction.hpp); the contract every
-// effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
+// The `strut_friction` effect's closed form (subsystems/effects/strut_friction.hpp); the contract
+// every effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
 #include "subsystems/effects/strut_friction.hpp"
 
 #include <gtest/gtest.h>
@@ -12,8 +12,8 @@
 namespace dtwin {
 namespace {
 
-using dtwin_test::valuesWith;
 using dtwin_test::strut;
+using dtwin_test::valuesWith;
 
 TEST(StrutFriction, OddTanhOfRateSaturatingAtCoulombLevel) {
   auto e = makeEffect("strut_friction", "t");
@@ -23,8 +23,8 @@ TEST(StrutFriction, OddTanhOfRateSaturatingAtCoulombLevel) {
   for (double qdot : {1e-4, 0.005, 0.02, 0.05, 0.3, 2.0}) {
     const double f = e->calcStrutForce(strut(0.01, qdot), v);
     EXPECT_EQ(e->calcStrutForce(strut(0.01, -qdot), v), -f) << qdot;  // odd
-    EXPECT_NEAR(f, Fc * std::tanh(qdot / vs), 1e-12 * Fc) << qdot;     // tanh shape
-    EXPECT_GT(f, 0.0);                                                  // opposes compression
+    EXPECT_NEAR(f, Fc * std::tanh(qdot / vs), 1e-12 * Fc) << qdot;    // tanh shape
+    EXPECT_GT(f, 0.0);                                                // opposes compression
     EXPECT_LE(f, Fc);
   }
   // tanh(1) at the smoothing velocity; saturates at +-Fc for |rate| >> v_s.
@@ -33,7 +33,8 @@ TEST(StrutFriction, OddTanhOfRateSaturatingAtCoulombLevel) {
   EXPECT_NEAR(e->calcStrutForce(strut(0, -20 * vs), v), -Fc, 1e-12 * Fc);
   // Small-rate slope Fc / v_s (a viscous-like region).
   const double h = 1e-7;
-  EXPECT_NEAR((e->calcStrutForce(strut(0, h), v) - e->calcStrutForce(strut(0, -h), v)) / (2 * h), Fc / vs, 1e-6 * Fc / vs);
+  EXPECT_NEAR((e->calcStrutForce(strut(0, h), v) - e->calcStrutForce(strut(0, -h), v)) / (2 * h),
+              Fc / vs, 1e-6 * Fc / vs);
   // Monotone in rate, independent of the deflection.
   double prev = -Fc;
   for (int i = -100; i <= 100; ++i) {

@@ -1,5 +1,5 @@
-// The `tire_enveloping` effect's closed form (subsystems/effects/tire_enveloping.hpp); the contract every
-// effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
+// The `tire_enveloping` effect's closed form (subsystems/effects/tire_enveloping.hpp); the contract
+// every effect keeps is checked over the registry in tests/subsystems/effect_test.cpp.
 #include "subsystems/effects/tire_enveloping.hpp"
 
 #include <gtest/gtest.h>
@@ -13,8 +13,8 @@
 namespace dtwin {
 namespace {
 
-using dtwin_test::valuesWith;
 using dtwin_test::kTracks;
+using dtwin_test::valuesWith;
 
 TEST(TireEnveloping, AveragesTheBumpOverTheContactLength) {
   auto e = makeEffect("tire_enveloping", "t");
@@ -31,7 +31,9 @@ TEST(TireEnveloping, AveragesTheBumpOverTheContactLength) {
       EXPECT_LE(s.height_m, plateau * (1 + 1e-12));
       // Slope is the derivative of the averaged height.
       const double h = 1e-6;
-      const double fd = (e->filterRoad(bump, t, x + h, v).height_m - e->filterRoad(bump, t, x - h, v).height_m) / (2 * h);
+      const double fd =
+          (e->filterRoad(bump, t, x + h, v).height_m - e->filterRoad(bump, t, x - h, v).height_m) /
+          (2 * h);
       EXPECT_NEAR(s.slope, fd, 1e-6) << "x " << x;
     }
     // While the window covers the whole bump ([x - 0.15, x + 0.15] contains [x0, x0 + L]):
@@ -56,8 +58,10 @@ TEST(TireEnveloping, ShortWindowTendsToPointContact) {
   BumpRoad bump(5.0, 0.2, 0.1);
   const auto v = valuesWith(*e, {{"length_m", 1e-4}});
   for (double x = 5.001; x < 5.1; x += 0.0071) {
-    EXPECT_NEAR(e->filterRoad(bump, Track::Left, x, v).height_m, bump.sample(Track::Left, x).height_m, 1e-5);
-    EXPECT_NEAR(e->filterRoad(bump, Track::Left, x, v).slope, bump.sample(Track::Left, x).slope, 1e-3);
+    EXPECT_NEAR(e->filterRoad(bump, Track::Left, x, v).height_m,
+                bump.sample(Track::Left, x).height_m, 1e-5);
+    EXPECT_NEAR(e->filterRoad(bump, Track::Left, x, v).slope, bump.sample(Track::Left, x).slope,
+                1e-3);
   }
 }
 

@@ -286,7 +286,7 @@ std::optional<ProbeFigures> takeOverProbe(const nlohmann::json& last,
     return std::nullopt;
   for (std::size_t k = 0; k < d; ++k) {
     if (!(std::abs(theta[k] - at[k]) <= 0.01 * h[k] * (upper[k] - lower[k]))) return std::nullopt;
-    if (!(step[k] >= 0.8 * h[k] && step[k] <= 1.25 * h[k])) return std::nullopt;
+    if (!(step[k] * 1.5 >= h[k] && step[k] <= 1.5 * h[k])) return std::nullopt;
   }
   return ProbeFigures{numberFromJson(last.at("roughness")),
                       numberFromJson(last.at("optimum_shift")),

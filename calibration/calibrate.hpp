@@ -356,7 +356,9 @@ struct ProbeFigures {
 /// steps.accuracy_choice) for the integrator check at `theta` with probe steps `h` (scaled by the
 /// bounds' range) and frozen steps at `accuracy`: when the try was made at that accuracy, kept, at
 /// this optimum (every parameter within a hundredth of its probe step) and with probe steps within
-/// 25 % of `h`, the check's own probes would run the same simulations again. Otherwise nullopt.
+/// a factor 1.5 of `h`, the check's own probes would measure the same (a smooth bias's gradient and
+/// the SSE's jumps do not change with the step over that range; a tenfold step does change the
+/// roughness). Otherwise nullopt.
 std::optional<ProbeFigures> takeOverProbe(const nlohmann::json& last,
                                           const std::vector<double>& theta,
                                           const std::vector<double>& h, double accuracy,

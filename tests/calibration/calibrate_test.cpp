@@ -208,9 +208,9 @@ TEST(Calibrate, FrozenStepsMakeTheObjectiveSmoothAndTheCheckSaysSo) {
   fs::remove_all(dir);
 }
 
-// The integrator check takes over the step choice's last probe only when it would repeat it: the
-// same accuracy, a kept try, the same optimum (within a hundredth of a probe step) and probe steps
-// within 25 %.
+// The integrator check takes over the step choice's last probe only when it would measure the
+// same: the same accuracy, a kept try, the same optimum (within a hundredth of a probe step) and
+// probe steps within a factor 1.5.
 TEST(Calibrate, TheIntegratorCheckTakesOverTheStepChoicesProbeOnlyWhenItWouldRepeatIt) {
   const std::vector<double> lo{0, 100}, up{10, 300}, theta{4, 200}, h{1e-3, 2e-3};
   const nlohmann::json last{
@@ -221,14 +221,16 @@ TEST(Calibrate, TheIntegratorCheckTakesOverTheStepChoicesProbeOnlyWhenItWouldRep
   EXPECT_EQ(taken->roughness, 0.25);
   EXPECT_EQ(taken->optimum_shift, 1.5);
   EXPECT_EQ(taken->shift_floor, 0.125);
-  EXPECT_TRUE(takeOverProbe(last, {4 + 0.9e-5 * 10, 200}, h, 5e-5, lo, up)
-                  .has_value());  // moved 0.9 % of a step
-  EXPECT_FALSE(takeOverProbe(last, {4 + 1.1e-5 * 10, 200}, h, 5e-5, lo, up).has_value());  // 1.1 %
-  EXPECT_FALSE(takeOverProbe(last, theta, h, 4e-5, lo, up).has_value());  // another accuracy
-  EXPECT_FALSE(takeOverProbe(last, theta, {1e-3, 1.7e-3}, 5e-5, lo, up)
-                   .has_value());  // its step 29 % longer
-  EXPECT_FALSE(
-      takeOverProbe(last, theta, {0.7e-3, 2e-3}, 5e-5, lo, up).has_value());  // 43 % longer
+  auto with = [&](const std::vector<double>& th, const std::vector<double>& hh, double acc) {
+    return takeOverProbe(last, th, hh, acc, lo, up).has_value();
+  };
+  EXPECT_TRUE(with({4 + 0.9e-4, 200}, h, 5e-5));    // moved 0.9 % of its probe step
+  EXPECT_FALSE(with({4 + 1.1e-4, 200}, h, 5e-5));   // 1.1 %
+  EXPECT_FALSE(with(theta, h, 4e-5));               // another accuracy
+  EXPECT_TRUE(with(theta, {0.7e-3, 2e-3}, 5e-5));   // the try's step 1.43 times the check's
+  EXPECT_FALSE(with(theta, {0.6e-3, 2e-3}, 5e-5));  // 1.67 times
+  EXPECT_TRUE(with(theta, {1e-3, 3.2e-3}, 5e-5));   // 0.69 times
+  EXPECT_FALSE(with(theta, {1e-3, 3.4e-3}, 5e-5));  // 0.65 times
   nlohmann::json dropped = last;
   dropped["kept"] = false;  // a tighter accuracy that did not halve the shift: undone
   EXPECT_FALSE(takeOverProbe(dropped, theta, h, 5e-5, lo, up).has_value());

@@ -235,8 +235,6 @@ void refine(Diagnosis& d, const std::vector<std::size_t>& to_confirm) {
   });
 }
 
-namespace {
-
 /// The structure a candidate changes (docs/diagnosis.md, "Structure first"): where a sensor sits
 /// (one per sensor), where the road signal enters, or a subsystem's option; "" for a force, a
 /// value or a sensor model.
@@ -248,8 +246,6 @@ std::string structureOf(const Candidate& c) {
       if (c.effect == std::string("free:") + f.name) return "road form";
   return "";
 }
-
-}  // namespace
 
 /// Structure first (docs/diagnosis.md, "Structure first"). Where the sensor sits, where the road
 /// signal enters and which law carries it do not add like forces: each changes how every other

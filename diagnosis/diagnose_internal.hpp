@@ -203,6 +203,7 @@ void furtherCauses(Diagnosis& d);
 /// The other structures of the first stage weighed on top of a first cause that is one
 /// (diagnose_confirm.cpp).
 void structureFirst(Diagnosis& d, const std::vector<const Candidate*>& named);
+std::string structureOf(const Candidate& c);
 
 // ------------------------------------------------------------------ verdict (diagnose_verdict.cpp)
 void explainStage(Diagnosis& d, const Comparison& ref);

@@ -336,6 +336,57 @@ std::string effectSummary(const Diagnosis& d, const Candidate& best,
 
 }  // namespace
 
+/// The lead's own structure weighed with the others installed (docs/diagnosis.md, "Structure
+/// first"): when structure first added other structures to a lead that is itself a structure,
+/// each other strong candidate of the lead's structure (the road signal at another corner, or at
+/// all four wheels) leads instead, structure first runs again from it, and the model with the
+/// lower BIC stands. A road form that fits best alone (the signal at every wheel, standing in for
+/// an accelerometer's place) may fit worse than another once the place is found.
+namespace {
+void leadAlternatives(Diagnosis& d, const std::vector<const Candidate*>& named) {
+  auto& res = d.res;
+  const std::string key = structureOf(*named.front());
+  if (key.empty() || res.causes.size() < 2) return;
+  auto words = [](const std::vector<Cause>& c) {
+    std::string w;
+    for (const auto& k : c) w += (w.empty() ? "" : " + ") + k.name;
+    return w;
+  };
+  for (const Candidate* a : named) {
+    if (a == named.front() || structureOf(*a) != key) continue;
+    auto chain = std::move(res.causes);
+    auto stages = std::move(res.further);
+    res.causes = {causeOf(*a, {})};
+    res.further.clear();
+    std::vector<const Candidate*> from{a};
+    for (const Candidate* c : named)
+      if (c != a) from.push_back(c);
+    const bool ran =
+        d.isolated("the structures from " + a->effect, [&] { structureFirst(d, from); });
+    if (!ran || res.causes.size() < 2 || !(res.causes.back().fit.bic < chain.back().fit.bic)) {
+      if (ran && res.causes.size() >= 2)
+        res.structure_note += (res.structure_note.empty() ? "" : " ") + std::string("With ") +
+                              a->effect + " leading instead, " + words(res.causes) +
+                              " reaches BIC " + fmt("%.1f", res.causes.back().fit.bic) +
+                              " against " + fmt("%.1f", chain.back().fit.bic) + ": " +
+                              words(chain) + " stands.";
+      res.causes = std::move(chain);
+      res.further = std::move(stages);
+    } else {
+      res.structure_note += (res.structure_note.empty() ? "" : " ") + std::string("With ") +
+                            a->effect + " leading instead, " + words(res.causes) + " reaches BIC " +
+                            fmt("%.1f", res.causes.back().fit.bic) + " against " +
+                            fmt("%.1f", chain.back().fit.bic) + " for " + words(chain) +
+                            ": the first stands.";
+    }
+    d.installed.clear();
+    for (std::size_t k = 0; k + 1 < res.causes.size(); ++k)
+      d.installed.push_back(res.causes[k].name);
+    d.reference = nullptr;
+  }
+}
+}  // namespace
+
 /// Verdict (step 4): every candidate's why, then "effect" (the best confirmed candidate with
 /// ΔBIC < −bic_strong, and the causes stagewise selection adds on top of it, which together leave
 /// no significant lack of fit or explain at least explained_min of the excess; ambiguity
@@ -387,6 +438,7 @@ void verdict(Diagnosis& d) {
   res.causes.push_back(causeOf(*named.front(), alike));
   const auto catalogue = d.catalogue;
   structureFirst(d, named);
+  leadAlternatives(d, named);
   furtherCauses(d);
   // Another structure (a subsystem option) is not nested in the forces found on the first cause's
   // model: a car whose road enters at the hub and whose struts carry a controller may fit worse
@@ -394,6 +446,8 @@ void verdict(Diagnosis& d) {
   // strong option that the chain did not take is weighed at its best: the stagewise selection is
   // run again from it, and the chain whose final model has the lower BIC is the verdict.
   const Candidate* lead = named.front();
+  for (const Candidate* c : named)
+    if (c->effect == res.causes.front().name) lead = c;  // another of its structure leads instead
   for (const Candidate* o : named) {
     if (o->kind != "option" || o == named.front()) continue;
     if (std::any_of(res.causes.begin(), res.causes.end(),

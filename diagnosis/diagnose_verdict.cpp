@@ -363,21 +363,17 @@ void leadAlternatives(Diagnosis& d, const std::vector<const Candidate*>& named) 
       if (c != a) from.push_back(c);
     const bool ran =
         d.isolated("the structures from " + a->effect, [&] { structureFirst(d, from); });
-    if (!ran || res.causes.size() < 2 || !(res.causes.back().fit.bic < chain.back().fit.bic)) {
-      if (ran && res.causes.size() >= 2)
-        res.structure_note += (res.structure_note.empty() ? "" : " ") + std::string("With ") +
-                              a->effect + " leading instead, " + words(res.causes) +
-                              " reaches BIC " + fmt("%.1f", res.causes.back().fit.bic) +
-                              " against " + fmt("%.1f", chain.back().fit.bic) + ": " +
-                              words(chain) + " stands.";
-      res.causes = std::move(chain);
-      res.further = std::move(stages);
-    } else {
+    const bool weighed = ran && res.causes.size() >= 2;
+    const bool better = weighed && res.causes.back().fit.bic < chain.back().fit.bic;
+    if (weighed)
       res.structure_note += (res.structure_note.empty() ? "" : " ") + std::string("With ") +
                             a->effect + " leading instead, " + words(res.causes) + " reaches BIC " +
                             fmt("%.1f", res.causes.back().fit.bic) + " against " +
-                            fmt("%.1f", chain.back().fit.bic) + " for " + words(chain) +
-                            ": the first stands.";
+                            fmt("%.1f", chain.back().fit.bic) + " for " + words(chain) + ": " +
+                            (better ? "it stands." : "the latter stands.");
+    if (!better) {
+      res.causes = std::move(chain);
+      res.further = std::move(stages);
     }
     d.installed.clear();
     for (std::size_t k = 0; k + 1 < res.causes.size(); ++k)

@@ -37,9 +37,10 @@ TimeRoadLog readTimeRoadCsv(const std::string& path);
 std::vector<double> zeroPhaseHighPass(const std::vector<double>& t, const std::vector<double>& u,
                                       double cutoff_hz);
 
-/// Heights from vertical road velocities: the exact integral of the velocities' cubic Hermite
-/// interpolant (three-point slopes; fourth order), its drift removed by zeroPhaseHighPass at
-/// `highpass_hz`.
+/// Heights from vertical road velocities: each step the exact integral of the polynomial through
+/// the eight samples around it (eighth order, at any spacing), or of the cubic Hermite interpolant
+/// with three-point slopes where the stencil's spacings differ by more than a factor 3 (a gap);
+/// the drift removed by zeroPhaseHighPass at `highpass_hz`.
 std::vector<double> roadHeightFromVelocity(const std::vector<double>& t,
                                            const std::vector<double>& v, double highpass_hz);
 

@@ -59,21 +59,29 @@ nlohmann::json BumpRoad::describe() const {
 
 // ------------------------------------------------------------------ grid
 GridRoad::GridRoad(double x0_m, double dx_m, std::vector<double> left_m,
-                   std::vector<double> right_m, nlohmann::json description)
+                   std::vector<double> right_m, nlohmann::json description,
+                   std::vector<double> left_slope, std::vector<double> right_slope)
     : x0_(x0_m), dx_(dx_m), description_(std::move(description)) {
   DTWIN_CHECK(dx_m > 0.0, "grid spacing must be positive");
   DTWIN_CHECK(left_m.size() == right_m.size() && left_m.size() >= 2,
               "grid road needs >= 2 equal-length tracks");
+  DTWIN_CHECK(left_slope.size() == right_slope.size() &&
+                  (left_slope.empty() || left_slope.size() == left_m.size()),
+              "grid road slopes: none, or one per node of each track");
   h_[0] = std::move(left_m);
   h_[1] = std::move(right_m);
+  m_[0] = std::move(left_slope);
+  m_[1] = std::move(right_slope);
   for (int t = 0; t < 2; ++t) {
     const auto& h = h_[t];
     const std::size_t n = h.size();
     auto& m = m_[t];
-    m.resize(n);
-    m[0] = (h[1] - h[0]) / dx_;
-    m[n - 1] = (h[n - 1] - h[n - 2]) / dx_;
-    for (std::size_t i = 1; i + 1 < n; ++i) m[i] = (h[i + 1] - h[i - 1]) / (2.0 * dx_);
+    if (m.empty()) {
+      m.resize(n);
+      m[0] = (h[1] - h[0]) / dx_;
+      m[n - 1] = (h[n - 1] - h[n - 2]) / dx_;
+      for (std::size_t i = 1; i + 1 < n; ++i) m[i] = (h[i + 1] - h[i - 1]) / (2.0 * dx_);
+    }
     auto& P = prefix_[t];
     P.resize(n);
     P[0] = 0.0;

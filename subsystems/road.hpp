@@ -63,8 +63,12 @@ class BumpRoad final : public Road {
 /// splines; integrals are exact for that interpolant.
 class GridRoad final : public Road {
  public:
+  /// Slopes at the nodes: `left_slope`/`right_slope` when given (the same length as the
+  /// heights: a profile whose slopes are known better than its heights' central differences),
+  /// else the central differences.
   GridRoad(double x0_m, double dx_m, std::vector<double> left_m, std::vector<double> right_m,
-           nlohmann::json description);
+           nlohmann::json description, std::vector<double> left_slope = {},
+           std::vector<double> right_slope = {});
   RoadSample sample(Track t, double x) const override;
   double integral(Track t, double x) const override;
   Interval extent() const override;

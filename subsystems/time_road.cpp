@@ -237,7 +237,11 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log,
   };
   const auto ml = slopes(hl, rate_l), mr = slopes(hr, rate_r);
   const auto n = static_cast<std::size_t>(std::ceil((x_hi - x_lo) / o.dx_m)) + 1;
-  std::vector<double> gl(n), gr(n);
+  // A velocity log's grid keeps the interpolant's own slopes at its nodes (the velocity between
+  // samples), where central differences of the grid's heights would lose 0.1 % of the body's
+  // response at 8-20 Hz on a 2 cm grid; a height log's grid takes its heights' differences.
+  const bool own_slopes = !rate_l.empty();
+  std::vector<double> gl(n), gr(n), sl(own_slopes ? n : 0), sr(own_slopes ? n : 0);
   std::size_t j = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double xi = x_lo + static_cast<double>(i) * o.dx_m;
@@ -257,9 +261,14 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log,
                  h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
     gl[i] = h00 * hl[j] + h10 * hseg * ml[j] + h01 * hl[j + 1] + h11 * hseg * ml[j + 1];
     gr[i] = h00 * hr[j] + h10 * hseg * mr[j] + h01 * hr[j + 1] + h11 * hseg * mr[j + 1];
+    if (own_slopes) {
+      const double d00 = 6 * u * (u - 1), d10 = (1 - u) * (1 - 3 * u), d11 = u * (3 * u - 2);
+      sl[i] = d00 * (hl[j] - hl[j + 1]) / hseg + d10 * ml[j] + d11 * ml[j + 1];
+      sr[i] = d00 * (hr[j] - hr[j + 1]) / hseg + d10 * mr[j] + d11 * mr[j + 1];
+    }
   }
   return std::make_shared<GridRoad>(x_lo, o.dx_m, std::move(gl), std::move(gr),
-                                    std::move(description));
+                                    std::move(description), std::move(sl), std::move(sr));
 }
 
 }  // namespace dtwin

@@ -1,13 +1,11 @@
 // `twin changes`: what changed between two calibrations of one car (two drives). Parses, calls
-// study/changes.hpp, prints the list and writes the page (report/changes_page.hpp).
+// study/changes.hpp (which writes changes.json and the page) and prints the list.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
-#include "common/files.hpp"
-#include "report/changes_page.hpp"
 #include "study/changes.hpp"
 
 namespace dtwin::cli {
@@ -27,18 +25,6 @@ int runChanges(const ChangesConfig& cfg, const std::string& command) {
   req.level = cfg.level;
   req.command = command;
   const diag::ChangeReport r = detectChanges(req);
-  if (!cfg.out.empty()) {
-    // The folders by their last two names (drive_may/M1), which tell the drives apart.
-    auto shortName = [](const std::string& dir) {
-      const std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
-      const std::filesystem::path leaf = p.filename().empty() ? p.parent_path() : p;
-      return (leaf.parent_path().filename() / leaf.filename()).string();
-    };
-    const std::string title = "What changed: " + shortName(cfg.before) + " -> " +
-                              shortName(cfg.after) + " (" + r.assembly + ")";
-    writeFileAtomic((std::filesystem::path(cfg.out) / "changes.html").string(),
-                    changesPage(r.toJson(), title));
-  }
   if (!cfg.quiet) {
     std::printf("%s", r.text().c_str());
     if (!cfg.out.empty())

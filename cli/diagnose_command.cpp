@@ -1,7 +1,6 @@
 // `twin compare` and `twin diagnose` (diagnosis/compare.hpp, diagnosis/diagnose.hpp,
 // docs/diagnosis.md): the model against measurements, where it fails, which effect is missing.
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <memory>
 
@@ -10,14 +9,9 @@
 #include "cli/progress.hpp"
 #include "common/distributed.hpp"
 #include "common/errors.hpp"
-#include "common/files.hpp"  // writeFileAtomic
 #include "common/folder_lock.hpp"
 #include "common/format.hpp"
-#include "report/compare_page.hpp"
-#include "report/diagnosis_report.hpp"
 #include "study/diagnose.hpp"
-
-namespace fs = std::filesystem;
 
 namespace dtwin::cli {
 namespace {
@@ -49,15 +43,8 @@ int runCompare(const CompareConfig& cfg, const std::string& command) {
   };
   const CompareRun run = compareMeasurements(study, req, say);
   if (!cfg.quiet) std::printf("%s", run.text().c_str());
-  if (!run.written.empty()) {
-    say("wrote " + run.written);
-    // The interactive page beside compare.json, titled without absolute paths.
-    const std::string page =
-        (std::filesystem::path(run.written).parent_path() / "compare.html").string();
-    const std::string html = comparePage(run, study.name, cfg.data);
-    rootWrites(cfg.processes, [&] { writeFileAtomic(page, html); });
-    say("wrote " + page + " (zoom into the drive, the failing windows listed beside it)");
-  }
+  if (!run.written.empty()) say("wrote " + run.written);
+  for (const auto& line : run.pages) say(line);
   return 0;
 }
 
@@ -124,27 +111,8 @@ int runDiagnose(const DiagnoseConfig& cfg, const std::string& command) {
   if (!cfg.quiet) std::printf("%s", run.result.text().c_str());
   if (run.written.empty()) return 0;
   if (!cfg.quiet) std::printf("\nwrote %s\n", run.written.c_str());
-  // The HTML page (overlays, band powers, force-state map, waterfall); needs gnuplot.
-  if (isRootProcess(cfg.processes)) {
-    const std::string page = (fs::path(cfg.out) / "compare.html").string();
-    try {
-      writeFileAtomic(page, diagnosisPage(run.result, study.name + ", " + cfg.assembly, cfg.data));
-      if (!cfg.quiet)
-        std::printf(
-            "wrote %s (the models overlaid: zoom into the data, the base's failing windows "
-            "listed)\n",
-            page.c_str());
-    } catch (const InputError& e) {
-      std::printf("note: no interactive page (%s)\n", e.what());
-    }
-    const std::string html = (fs::path(cfg.out) / "report.html").string();
-    try {
-      report::writeDiagnosisReport(cfg.out, html, command);
-      if (!cfg.quiet) std::printf("wrote %s\n", html.c_str());
-    } catch (const InputError& e) {
-      std::printf("note: no HTML report (%s)\n", e.what());
-    }
-  }
+  for (const auto& line : run.pages)
+    if (!cfg.quiet || line.rfind("note:", 0) == 0) std::printf("%s\n", line.c_str());
   return 0;
 }
 

@@ -8,10 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
-#include "report/diagnosis_report.hpp"
-#include "report/study_report.hpp"
-#include "report/svg_plot.hpp"
-#include "study/lab_bands.hpp"
+#include "study/report.hpp"
 
 namespace dtwin::cli {
 namespace {
@@ -46,51 +43,19 @@ int runReportCommand(ReportConfig cfg, const std::string& command) {
     deprecationNote("twin report STUDY_DIR", "twin report --study-dir STUDY_DIR", cfg.processes);
     cfg.dir = cfg.positional;
   }
-  if (cfg.dir.empty() && cfg.diagnoses.empty())
-    throw InputError("twin report",
-                     "give a study folder (--study-dir DIR), --diagnosis DIR, or both");
-  if (cfg.dir.empty()) {  // diagnosis-only page
-    const std::string out = reportPath(cfg.out, cfg.diagnoses[0], cfg.processes);
-    const auto r = report::writeDiagnosisReport(cfg.diagnoses, out, command);
-    for (const auto& w : r["warnings"])
-      std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
-    if (!cfg.quiet)
-      std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(),
-                  r["wall_s"].get<double>());
-    return 0;
-  }
-  const std::string out = reportPath(cfg.out, cfg.dir, cfg.processes);
-  report::requireGnuplot("`twin report`");  // before any simulation
-  report::ReportOptions o;
-  std::vector<std::string> diag_warnings;
-  for (std::size_t k = 0; k < cfg.diagnoses.size();
-       ++k) {  // read (and checked) before the study's simulations
-    report::DiagnosisSectionOptions so;
-    so.anchor = "diagnosis-" + std::to_string(k + 1);
-    so.id_prefix = "d" + std::to_string(k + 1) + "p";
-    so.heading_prefix = std::to_string(6 + k) + ". ";
-    nlohmann::json drawn;
-    report::ReportSection s;
-    s.html = report::diagnosisSectionHtml(cfg.diagnoses[k], so, &drawn);
-    s.id = so.anchor;
-    s.title = "Diagnosis: " + cfg.diagnoses[k];
-    s.svg_count = drawn["svg_count"].get<int>();
-    for (const auto& w : drawn["warnings"]) diag_warnings.push_back(w.get<std::string>());
-    o.appendix.push_back(std::move(s));
-  }
-  study::LabBandOptions bo;
-  bo.draws = cfg.draws;
-  bo.threads = cfg.threads;
-  const study::LabBands bands = study::predictLabBands(cfg.dir, bo);
-  const auto r = report::writeStudyReport(bands, cfg.dir, out, command, o);
-  for (const auto& w : r["warnings"])
-    std::fprintf(stderr, "twin report: warning: %s\n", w.get<std::string>().c_str());
-  for (const auto& w : diag_warnings) std::fprintf(stderr, "twin report: warning: %s\n", w.c_str());
+  study::ReportRequest req;
+  req.study_dir = cfg.dir;
+  req.diagnoses = cfg.diagnoses;
+  if (!cfg.dir.empty() || !cfg.diagnoses.empty())
+    req.page = reportPath(cfg.out, cfg.dir.empty() ? cfg.diagnoses[0] : cfg.dir, cfg.processes);
+  req.draws = cfg.draws;
+  req.threads = cfg.threads;
+  req.command = command;
+  const study::ReportRun r = study::writeReport(req);
+  for (const auto& w : r.warnings) std::fprintf(stderr, "twin report: warning: %s\n", w.c_str());
   if (!cfg.quiet) {
-    std::printf("report: %s (%d plots, %.1f s)\n", out.c_str(), r["svg_count"].get<int>(),
-                r["wall_s"].get<double>());
-    if (r["interactive"].is_string())
-      std::printf("interactive lab view: %s\n", r["interactive"].get<std::string>().c_str());
+    std::printf("report: %s (%d plots, %.1f s)\n", r.page.c_str(), r.svg_count, r.wall_s);
+    if (!r.interactive.empty()) std::printf("interactive lab view: %s\n", r.interactive.c_str());
   }
   return 0;
 }

@@ -12,8 +12,6 @@
 #include "common/errors.hpp"
 #include "common/files.hpp"
 #include "common/format.hpp"
-#include "report/compare_page.hpp"
-#include "report/diagnosis_report.hpp"
 #include "study/calibrate.hpp"
 #include "study/diagnose.hpp"
 #include "study/import_drive.hpp"
@@ -253,12 +251,9 @@ py::object compare(const PyStudy& s, const Arguments& a) {
         const Study study = withStop(*s.study, callbacks.stop());
         run = compareMeasurements(study, req, say);
         if (say) say(withoutFinalNewline(run.text()));
-        if (!run.written.empty()) {
-          if (say) say("wrote " + run.written);
-          const std::string page = (fs::path(run.written).parent_path() / "compare.html").string();
-          writeFileAtomic(page, comparePage(run, study.name, req.data));
-          if (say) say("wrote " + page);
-        }
+        if (!run.written.empty() && say) say("wrote " + run.written);
+        if (say)
+          for (const auto& line : run.pages) say(line);
       },
       a.keywords(), &callbacks);
   return toPython(run.json);
@@ -306,22 +301,8 @@ py::object diagnose(const PyStudy& s, const Arguments& a) {
         if (say) say(withoutFinalNewline(run.result.text()));
         if (run.written.empty()) return;
         if (say) say("wrote " + run.written);
-        // The pages `twin diagnose` writes beside diagnosis.json (report.html needs gnuplot).
-        try {
-          const std::string page = (fs::path(req.out) / "compare.html").string();
-          writeFileAtomic(page,
-                          diagnosisPage(run.result, study.name + ", " + req.assembly, req.data));
-          if (say) say("wrote " + page);
-        } catch (const InputError& e) {
-          if (say) say(std::string("note: no interactive page (") + e.what() + ")");
-        }
-        try {
-          const std::string html = (fs::path(req.out) / "report.html").string();
-          report::writeDiagnosisReport(req.out, html, o.command);
-          if (say) say("wrote " + html);
-        } catch (const InputError& e) {
-          if (say) say(std::string("note: no HTML report (") + e.what() + ")");
-        }
+        if (say)
+          for (const auto& line : run.pages) say(line);
       },
       keywords, &callbacks);
   return toPython(run.json);

@@ -8,7 +8,6 @@
 #include "diagnosis/diagnose.hpp"
 #include "dtwin/uplot_assets.hpp"
 #include "report/study_report.hpp"
-#include "study/diagnose.hpp"
 
 namespace dtwin {
 
@@ -565,14 +564,6 @@ std::string timeSeriesPage(const nlohmann::json& data, const std::string& note) 
   html += kScript;
   html += "</script>\n</body></html>\n";
   return html;
-}
-
-std::string comparePage(const CompareRun& run, const std::string& study_name,
-                        const std::vector<std::string>& data) {
-  std::string title = "twin compare: " + study_name + ", " + run.assembly.id + " (" +
-                      run.assembly.label() + ") against";
-  for (const auto& d : data) title += " " + std::filesystem::path(d).filename().string();
-  return comparePage(run.comparison.toJson(true), title);
 }
 
 std::string diagnosisPage(const diag::DiagnosisResult& r, const std::string& what,

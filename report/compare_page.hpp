@@ -17,7 +17,6 @@ namespace dtwin {
 namespace diag {
 struct DiagnosisResult;
 }
-struct CompareRun;
 
 /// One model's comparison on the page: its label (e.g. "base", "+ bump_stop") and its JSON
 /// (diag::Comparison::toJson with its series data, as compare.json holds it).
@@ -35,11 +34,6 @@ std::string comparePage(const std::vector<PageModel>& models, const std::string&
 
 /// The page of one comparison (`twin compare`).
 std::string comparePage(const nlohmann::json& compare, const std::string& title);
-
-/// The page of `twin compare --out DIR` (DIR/compare.html): `run` (study/diagnose.hpp) of the study
-/// named `study_name` against the measurement files `data`, titled without absolute paths.
-std::string comparePage(const CompareRun& run, const std::string& study_name,
-                        const std::vector<std::string>& data);
 
 /// The page of a diagnosis (`twin diagnose --out DIR` writes DIR/compare.html): the base, then
 /// each applied effect (--apply) or each cause in turn, overlaid; titled "twin diagnose: `what`

@@ -14,7 +14,7 @@ namespace {
 /// One channel of the page: the grid of `grid` (the first assembly's band of it) with every
 /// lab record at its time (a repetition after the first a nanosecond-scale step later, so that
 /// one series holds them all), the records as points, and every assembly's median and band.
-nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBand& grid) {
+nlohmann::json channelData(const classify::LabBands& bands, const classify::ChannelBand& grid) {
   std::map<double, std::vector<double>>
       at_time;  // lab time -> the values of its repetitions, in file order
   long repetitions = 0;
@@ -54,7 +54,7 @@ nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBan
       {"bands", nlohmann::json::array()},
       {"bands_note", "the lab scenario's points are too few and uneven for a spectrum"}};
   for (const auto& ab : bands.assemblies) {
-    const study::ChannelBand* d = nullptr;
+    const classify::ChannelBand* d = nullptr;
     for (const auto& b : ab.channels)
       if (b.channel == grid.channel && b.times == grid.times) d = &b;
     if (!d) continue;
@@ -87,8 +87,8 @@ nlohmann::json channelData(const study::LabBands& bands, const study::ChannelBan
 
 }  // namespace
 
-nlohmann::json labPageData(const study::LabBands& bands, const std::string& title) {
-  const study::AssemblyBands* first = nullptr;
+nlohmann::json labPageData(const classify::LabBands& bands, const std::string& title) {
+  const classify::AssemblyBands* first = nullptr;
   for (const auto& ab : bands.assemblies)
     if (!ab.channels.empty() && !first) first = &ab;
   if (!first)
@@ -113,7 +113,7 @@ nlohmann::json labPageData(const study::LabBands& bands, const std::string& titl
           {"whole", "whole scenario"}};
 }
 
-std::string labPage(const study::LabBands& bands, const std::string& title) {
+std::string labPage(const classify::LabBands& bands, const std::string& title) {
   return timeSeriesPage(
       labPageData(bands, title),
       "Each assembly's median prediction through the lab scenario (one colour each; " +

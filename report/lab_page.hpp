@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/lab_bands.hpp"
+#include "classification/lab_bands.hpp"
 
 namespace dtwin::report {
 
@@ -18,9 +18,9 @@ namespace dtwin::report {
 /// lab times), and per assembly with a band its median ("p"), predictive band ("lo", "hi"), the
 /// RMS of the lab points about the median and the share of them inside the band ("coverage").
 /// InputError when no assembly has a band (every draw failed).
-nlohmann::json labPageData(const study::LabBands& bands, const std::string& title);
+nlohmann::json labPageData(const classify::LabBands& bands, const std::string& title);
 
 /// The page (self-contained HTML).
-std::string labPage(const study::LabBands& bands, const std::string& title);
+std::string labPage(const classify::LabBands& bands, const std::string& title);
 
 }  // namespace dtwin::report

@@ -114,8 +114,8 @@ StudyFiles readStudyFiles(const fs::path& dir) {
 /// One figure of section 1: the lab data of channel `g.channel` against the assembly's predictive
 /// band, drawn through the lab scenario on the dense grid, and the same relative to the median
 /// prediction (the lab points against the median at their times).
-void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, const study::ChannelBand& g,
-                    const LabData& lab, const std::string& unit) {
+void predictivePlot(ReportPage& pg, const classify::AssemblyBands& ab,
+                    const classify::ChannelBand& g, const LabData& lab, const std::string& unit) {
   const auto& a = ab.assembly;
   std::ostringstream band, pts;
   double ylo = INFINITY, yhi = -INFINITY, rlo = INFINITY, rhi = -INFINITY;
@@ -187,7 +187,8 @@ void predictivePlot(ReportPage& pg, const study::AssemblyBands& ab, const study:
 }
 
 /// Section 1: the lab data against every assembly's posterior predictive bands.
-void predictiveSection(ReportPage& pg, const study::LabBands& bands, const std::string& lab_link) {
+void predictiveSection(ReportPage& pg, const classify::LabBands& bands,
+                       const std::string& lab_link) {
   const int draws = bands.draws;
   pg.body << "<h2 id=\"lab\">1. Lab data against the posterior predictive bands</h2>\n"
           << "<p>For each assembly, " << draws
@@ -259,7 +260,7 @@ std::optional<calib::Region> regionOf(const json& cal_summary) {
 
 /// The figures of section 2 for one assembly: the weighted density of every θ and of τ (one
 /// panel each), then the pair plot of θ.
-void posteriorFigure(ReportPage& pg, const study::AssemblyBands& ab, const Study& study,
+void posteriorFigure(ReportPage& pg, const classify::AssemblyBands& ab, const Study& study,
                      const fs::path& dir) {
   const auto& a = ab.assembly;
   const auto& post = ab.posterior;
@@ -321,7 +322,7 @@ void posteriorFigure(ReportPage& pg, const study::AssemblyBands& ab, const Study
 }
 
 /// Section 2: the posterior densities and pair plot of every assembly.
-void posteriorSection(ReportPage& pg, const study::LabBands& bands, const fs::path& dir) {
+void posteriorSection(ReportPage& pg, const classify::LabBands& bands, const fs::path& dir) {
   pg.body << "<h2 id=\"posterior\">2. Posterior of θ and τ</h2>\n<p>Griddy Gibbs draws θ only at "
              "design points, so the "
              "kept iterations of <code>calibration/&lt;id&gt;/posterior.csv</code> are a few "
@@ -483,7 +484,7 @@ void evidencePlot(ReportPage& pg, const std::vector<std::string>& ids, const jso
 
 /// Section 4: the recommendation, the evidence-against-cost figure, and the table of evidence,
 /// cost and wins per assembly with the rule.
-void evidenceSection(ReportPage& pg, const study::LabBands& bands,
+void evidenceSection(ReportPage& pg, const classify::LabBands& bands,
                      const std::vector<std::string>& ids, const json& csum, const json& wins,
                      const std::string& recommended, const std::string& sentence) {
   const json L = csum.value("total_log_likelihood", json::object()),
@@ -522,7 +523,7 @@ void evidenceSection(ReportPage& pg, const study::LabBands& bands,
 }
 
 /// Section 5, second table: per assembly, the sizes and seeds of its calibration and synthesis.
-void perAssemblyProvenance(std::ostringstream& body, const study::LabBands& bands,
+void perAssemblyProvenance(std::ostringstream& body, const classify::LabBands& bands,
                            const fs::path& dir) {
   body
       << "</table>\n<h3>Per assembly (from the calibration and synthesis summaries)</h3>\n<table>\n"
@@ -569,7 +570,7 @@ std::string relativeTo(const fs::path& p, const fs::path& base) {
 }
 
 /// Section 5: program, commands, paths (relative to the page's folder), times, seeds and sizes.
-void provenanceSection(ReportPage& pg, const study::LabBands& bands, const fs::path& dir,
+void provenanceSection(ReportPage& pg, const classify::LabBands& bands, const fs::path& dir,
                        const StudyFiles& files, const std::string& command,
                        const fs::path& page_dir) {
   const json& record = files.record;
@@ -620,8 +621,9 @@ void provenanceSection(ReportPage& pg, const study::LabBands& bands, const fs::p
 
 /// The whole page: head and style, title, study line, recommendation, warnings, contents, the
 /// sections 1–5 and the appendix.
-std::string pageHtml(const study::LabBands& bands, const fs::path& dir, const std::string& sentence,
-                     const ReportPage& pg, const ReportOptions& options) {
+std::string pageHtml(const classify::LabBands& bands, const fs::path& dir,
+                     const std::string& sentence, const ReportPage& pg,
+                     const ReportOptions& options) {
   const std::string title = "twin study report: " +
                             (bands.study.name.empty() ? dir.filename().string() : bands.study.name);
   std::ostringstream page;
@@ -671,7 +673,7 @@ void ReportOptions::validate() const {
 // The stages: the study folder's files → sections 1 (predictive bands), 2 (posteriors),
 // 3 (selection), 4 (evidence against cost), 5 (provenance) → the page with the appendix,
 // written atomically → what was drawn.
-json writeStudyReport(const study::LabBands& bands, const std::string& study_dir,
+json writeStudyReport(const classify::LabBands& bands, const std::string& study_dir,
                       const std::string& out_html, const std::string& command,
                       const ReportOptions& options) {
   const auto t_start = std::chrono::steady_clock::now();

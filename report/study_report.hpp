@@ -24,7 +24,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/lab_bands.hpp"
+#include "classification/lab_bands.hpp"
 
 namespace dtwin::report {
 
@@ -53,7 +53,7 @@ struct ReportOptions {
 /// "kind", "assembly"}...], "svg_count",
 /// "assemblies", "draws", "prediction_failures", "noise_sd", "warnings", "wall_s"}.
 /// InputError when a needed file is missing or malformed, or when gnuplot is not installed.
-nlohmann::json writeStudyReport(const study::LabBands& bands, const std::string& study_dir,
+nlohmann::json writeStudyReport(const classify::LabBands& bands, const std::string& study_dir,
                                 const std::string& out_html, const std::string& command,
                                 const ReportOptions& options = {});
 

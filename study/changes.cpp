@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "common/files.hpp"
 #include "io/provenance.hpp"
+#include "report/changes_page.hpp"
 
 namespace dtwin {
 
@@ -26,6 +27,17 @@ diag::ChangeReport detectChanges(const ChangesRequest& request) {
     stampProvenance(j, request.command);
     writeFileAtomic((std::filesystem::path(request.out) / "changes.json").string(),
                     j.dump(2) + "\n");
+    // The page, titled by the folders' last two names (drive_may/M1), which tell the drives
+    // apart.
+    auto shortName = [](const std::string& dir) {
+      const std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
+      const std::filesystem::path leaf = p.filename().empty() ? p.parent_path() : p;
+      return (leaf.parent_path().filename() / leaf.filename()).string();
+    };
+    const std::string title = "What changed: " + shortName(request.before) + " -> " +
+                              shortName(request.after) + " (" + r.assembly + ")";
+    writeFileAtomic((std::filesystem::path(request.out) / "changes.html").string(),
+                    changesPage(r.toJson(), title));
   }
   return r;
 }

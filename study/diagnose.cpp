@@ -18,6 +18,8 @@
 #include "diagnosis/measurements.hpp"
 #include "io/provenance.hpp"
 #include "io/work.hpp"
+#include "report/compare_page.hpp"
+#include "report/diagnosis_report.hpp"
 
 namespace fs = std::filesystem;
 
@@ -268,6 +270,15 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   if (!request.out.empty()) {
     run.written = (fs::path(request.out) / "compare.json").string();
     rootWrites(request.processes, [&] { writeFileAtomic(run.written, j.dump(2) + "\n"); });
+    // The interactive page beside it, titled without absolute paths.
+    std::string title = "twin compare: " + study.name + ", " + run.assembly.id + " (" +
+                        run.assembly.label() + ") against";
+    for (const auto& d : request.data) title += " " + fs::path(d).filename().string();
+    const std::string page = (fs::path(request.out) / "compare.html").string();
+    const std::string html = comparePage(run.comparison.toJson(true), title);
+    rootWrites(request.processes, [&] { writeFileAtomic(page, html); });
+    run.pages.push_back("wrote " + page +
+                        " (zoom into the drive, the failing windows listed beside it)");
   }
   return run;
 }
@@ -353,6 +364,30 @@ void writeDiagnosis(const DiagnoseRequest& request, const DiagnoseRun& run) {
   });
 }
 
+/// The pages beside diagnosis.json: compare.html (the base and each cause or applied step,
+/// overlaid) and report.html (needs gnuplot); a page that cannot be drawn is a note, not a
+/// failure of the diagnosis.
+void writeDiagnosisPages(const Study& study, const DiagnoseRequest& request, DiagnoseRun& run) {
+  const fs::path out(request.out);
+  try {
+    const std::string page = (out / "compare.html").string();
+    writeFileAtomic(page,
+                    diagnosisPage(run.result, study.name + ", " + request.assembly, request.data));
+    run.pages.push_back("wrote " + page +
+                        " (the models overlaid: zoom into the data, the base's failing windows "
+                        "listed)");
+  } catch (const InputError& e) {
+    run.pages.push_back(std::string("note: no interactive page (") + e.what() + ")");
+  }
+  try {
+    const std::string html = (out / "report.html").string();
+    report::writeDiagnosisReport(request.out, html, run.options.command);
+    run.pages.push_back("wrote " + html);
+  } catch (const InputError& e) {
+    run.pages.push_back(std::string("note: no HTML report (") + e.what() + ")");
+  }
+}
+
 }  // namespace
 
 DiagnoseRun diagnoseMeasurements(const Study& base_study, const DiagnoseRequest& request,
@@ -396,6 +431,7 @@ DiagnoseRun diagnoseMeasurements(const Study& base_study, const DiagnoseRequest&
   if (!request.out.empty()) {
     writeDiagnosis(request, run);
     run.written = (fs::path(request.out) / "diagnosis.json").string();
+    if (isRootProcess(request.options.processes)) writeDiagnosisPages(study, request, run);
   }
   return run;
 }

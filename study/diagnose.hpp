@@ -44,6 +44,9 @@ struct CompareRun {
   nlohmann::json json;  ///< what compare.json holds (built with or without --out)
   std::map<std::string, std::string>
       baseline;  ///< per channel: the FIR baseline, described (--baseline)
+  /// What was written beside compare.json, a line each, to print as it stands: "wrote
+  /// OUT/compare.html (...)" (the interactive page); empty without an out folder.
+  std::vector<std::string> pages;
   /// The table, the windows and bands where the model fails, the state maps and the notes, as
   /// `twin compare` prints them: per series the windows' counts in words and the largest windows,
   /// largest share first (at most 8; compare.html lists every listed one, compare.json every one).
@@ -51,7 +54,8 @@ struct CompareRun {
 };
 
 /// Compares the calibrated model of `request.calibration` with `request.data` (InputError for a
-/// bad request or a file that cannot be read; the work is checked before anything runs).
+/// bad request or a file that cannot be read; the work is checked before anything runs); with an
+/// out folder writes compare.json and compare.html (titled without absolute paths).
 CompareRun compareMeasurements(const Study& study, const CompareRequest& request,
                                const SayFn& say = {});
 
@@ -72,12 +76,18 @@ struct DiagnoseRun {
   diag::DiagnoseOptions options;  ///< as run (the .toml items of apply replaced by their effects)
   std::string written;            ///< the diagnosis.json written ("" without an out folder)
   nlohmann::json json;  ///< what diagnosis.json holds (built with or without an out folder)
+  /// The pages beside diagnosis.json, a line each, to print as it stands: "wrote OUT/compare.html
+  /// (...)" and "wrote OUT/report.html", or "note: no ... (why)" when one could not be drawn
+  /// (report.html needs gnuplot); empty without an out folder and on processes other than the
+  /// first.
+  std::vector<std::string> pages;
 };
 
 /// Diagnoses `request.assembly` of `study` on the measurements (docs/diagnosis.md): the work is
 /// checked first, then diagnose() runs with calibrations under OUT/calibrations, and
-/// OUT/diagnosis.json, OUT/proposal.toml (when the sparse regression proposes terms) and
-/// OUT/comparisons/*.json (base, every confirmed candidate, every applied step) are written.
+/// OUT/diagnosis.json, OUT/proposal.toml (when the sparse regression proposes terms),
+/// OUT/comparisons/*.json (base, every confirmed candidate, every applied step) and the pages
+/// OUT/compare.html (the models overlaid) and OUT/report.html (needs gnuplot) are written.
 DiagnoseRun diagnoseMeasurements(const Study& study, const DiagnoseRequest& request,
                                  const SayFn& say = {},
                                  const diag::DiagnoseProgress& progress = {});

@@ -91,15 +91,15 @@ TEST(PosteriorPlots, CorrelationOfALineIsOne) {
 }
 
 TEST(LabPage, EveryRepetitionAtItsTimeAndTheBandsCoverage) {
-  study::LabBands b;
+  classify::LabBands b;
   b.draws = 10;
   for (long rep : {1L, 2L})
     for (double t : {0.5, 1.0})
       b.lab.records.push_back(
           LabRecord{rep, t, "hub_force_fl_N", t * 100.0 + (rep == 1 ? 1.0 : 30.0)});
-  study::AssemblyBands a;
+  classify::AssemblyBands a;
   a.assembly.id = "M1";
-  study::ChannelBand g;
+  classify::ChannelBand g;
   g.channel = "hub_force_fl_N";
   g.times = {0.0, 0.25, 0.5, 0.75, 1.0};
   for (double t : g.times) {

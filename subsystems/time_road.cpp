@@ -118,9 +118,7 @@ std::vector<double> threePointSlopes(const std::vector<double>& x, const std::ve
   }
   return m;
 }
-}  // namespace
 
-namespace {
 /// ∫ over [t[k−1], t[k]] of the polynomial through the samples t[lo .. lo+m) (m ≤ 8): the
 /// Lagrange basis at 4-point Gauss–Legendre nodes, exact for degree ≤ 7.
 double lagrangeIntervalIntegral(const std::vector<double>& t, const std::vector<double>& v,

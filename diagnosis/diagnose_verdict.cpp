@@ -325,8 +325,12 @@ std::string effectSummary(const Diagnosis& d, const Candidate& best,
   if (!first.fit.integrator.ok || !res.base.integrator.ok)
     s += -first.delta_bic > options.bic_strong + 2 * jitter
              ? " The integrator's jitter in the SSE (" + fmt("%.3g", jitter) +
-                   ") is far below this evidence, so the verdict stands, but the intervals do not "
-                   "(note below)."
+                   ") is far below this evidence, so the verdict stands, but " +
+                   (first.fit.integrator.ok
+                        ? std::string("the base calibration's intervals do not (note below); the "
+                                      "model with the cause's do")
+                        : std::string("the intervals do not (note below)")) +
+                   "."
              : " Caution: the integrator's jitter in the SSE (" + fmt("%.3g", jitter) +
                    ") is comparable with this evidence: tighten [simulation] accuracy and rerun "
                    "before trusting the verdict (note below).";

@@ -173,6 +173,29 @@ void addDiscrepancy(const Study& study, const AssemblySpec& assembly,
   }
 }
 
+/// The study as the calibration in `folder` simulated it: at the accuracy its steps were chosen
+/// at (summary.json integrator_check.accuracy) when that is tighter than the study's
+/// [simulation] accuracy (docs/calibration.md, "The accuracy from the data"), with a note saying
+/// so; the study itself otherwise. A comparison at the looser accuracy would score the
+/// integrator's error the calibration kept out of its fit.
+Study asCalibrated(const Study& study, const calib::CalibrationFolder& folder,
+                   std::vector<std::string>& notes) {
+  const auto& s = folder.summary;
+  if (!s.is_object() || !s.contains("integrator_check")) return study;
+  const auto& c = s.at("integrator_check");
+  if (!c.is_object() || !c.contains("accuracy") || !c.at("accuracy").is_number()) return study;
+  const double accuracy = c.at("accuracy").get<double>();
+  if (!(accuracy > 0.0 && accuracy < study.simulation.accuracy)) return study;
+  Study at = study;
+  at.simulation.accuracy = accuracy;
+  notes.push_back("simulated at integrator accuracy " + formatPrintf("%.3g", accuracy) +
+                  ", the accuracy the calibration chose its steps at (the study's [simulation] "
+                  "accuracy " +
+                  formatPrintf("%.3g", study.simulation.accuracy) +
+                  " leaves an integrator error these data see)");
+  return at;
+}
+
 }  // namespace
 
 std::string CompareRun::text() const {
@@ -213,10 +236,12 @@ std::string CompareRun::text() const {
   return out;
 }
 
-CompareRun compareMeasurements(const Study& study, const CompareRequest& request,
+CompareRun compareMeasurements(const Study& study_file, const CompareRequest& request,
                                const SayFn& say) {
   checkOutFolder(request.out, "compare.out");
   const calib::CalibrationFolder folder = calib::readCalibrationFolder(request.calibration);
+  std::vector<std::string> accuracy_notes;
+  const Study study = asCalibrated(study_file, folder, accuracy_notes);
   CompareRun run;
   run.assembly = calib::calibratedAssembly(study, folder);
   const calib::CalibrationSetup& setup = folder.setup;
@@ -243,6 +268,7 @@ CompareRun compareMeasurements(const Study& study, const CompareRequest& request
   co.threads = request.threads;
   co.fitted_parameters = static_cast<int>(obj.names().size());
   run.comparison = diag::compareModel(obj, sets, rows, noise, co);
+  for (const auto& n : accuracy_notes) run.comparison.notes.push_back(n);
   // What the calibration found of its own values: a value on its bound is no estimate.
   for (const auto& f : folder.bound_findings)
     run.comparison.notes.push_back("the calibration: " + f.sentence());

@@ -94,10 +94,12 @@ RoadSample GridRoad::sample(Track t, double x) const {
   const auto& h = h_[static_cast<int>(t)];
   const auto& m = m_[static_cast<int>(t)];
   const double s = (x - x0_) / dx_;
-  if (s <= 0.0) return {h.front(), 0.0};
   const std::size_t n = h.size();
-  if (s >= static_cast<double>(n - 1)) return {h.back(), 0.0};
-  const std::size_t i = static_cast<std::size_t>(s);
+  // Held flat outside the grid; on its first and last node the interpolant's own slope (a run
+  // that ends on the last node of a logged road reads the log's slope there, not the hold's 0).
+  if (s < 0.0) return {h.front(), 0.0};
+  if (s > static_cast<double>(n - 1)) return {h.back(), 0.0};
+  const std::size_t i = std::min(static_cast<std::size_t>(s), n - 2);
   const double u = s - static_cast<double>(i), u2 = u * u, u3 = u2 * u;
   const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2,
                h11 = u3 - u2;

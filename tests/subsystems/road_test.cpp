@@ -294,6 +294,24 @@ TEST_F(GridRoadTest, HoldsEndValuesOutsideExtent) {
   }
 }
 
+// A run that ends exactly on the last node of a logged road (a drive's last record) reads the
+// interpolant's slope there: the hold's zero slope made the hubs stop dead on the last sample.
+TEST_F(GridRoadTest, TheFirstAndLastNodesKeepTheirSlopes) {
+  const double end = x0 + (n - 1) * dx;
+  for (Track t : kTracks) {
+    const auto h = [&](double x) { return road.sample(t, x).height_m; };
+    const double last = (nodes(t)[n - 1] - nodes(t)[n - 2]) / dx;
+    const double first = (nodes(t)[1] - nodes(t)[0]) / dx;
+    EXPECT_NEAR(road.sample(t, end).slope, last, 1e-12);
+    EXPECT_NEAR(road.sample(t, x0).slope, first, 1e-12);
+    EXPECT_EQ(road.sample(t, end).height_m, nodes(t).back());
+    EXPECT_EQ(road.sample(t, x0).height_m, nodes(t).front());
+    // The one-sided difference from inside agrees (the interpolant is C1 up to its ends).
+    EXPECT_NEAR(road.sample(t, end).slope, (h(end) - h(end - 1e-7)) / 1e-7, 1e-5);
+    EXPECT_NEAR(road.sample(t, x0).slope, (h(x0 + 1e-7) - h(x0)) / 1e-7, 1e-5);
+  }
+}
+
 TEST_F(GridRoadTest, SampleAveragedEqualsBruteForceMean) {
   for (Track t : kTracks)
     for (double x : {x0 + 0.6, x0 + 3.03, x0 + 8.0}) {

@@ -2,7 +2,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <tuple>
 #include <utility>
 
 #include "cli/calibration_flags.hpp"
@@ -12,57 +11,37 @@
 #include "common/folder_lock.hpp"
 #include "common/format.hpp"
 #include "common/json.hpp"
-#include "diagnosis/measurements.hpp"
-#include "io/provenance.hpp"
 #include "study/calibrate.hpp"
+#include "study/request.hpp"
 
 namespace dtwin::cli {
 namespace {
 
 struct CalibrateConfig {
-  const Distributed* processes = nullptr;  ///< the process context (CommandContext)
-  std::string study = defaultStudy(), data, assembly = "all", scenario, out;
-  std::vector<std::string> free;  ///< --free: fixed values calibrated too
-  int threads = 0;
+  std::string study = defaultStudy(), assembly = "all";
+  CalibrateSettings settings;  ///< the flags bound to its fields; processes from CommandContext
   CalibrationFlags calibration;
-  std::optional<std::uint64_t> seed;  ///< unset: the study's
-  bool quiet = false, force = false;
+  bool quiet = false;
 };
-
-/// The lab data file and its scenario: --data FILE[@SCENARIO] (calibrationData,
-/// study/calibrate.hpp). The older --scenario NAME is still accepted, with a note.
-std::pair<std::string, std::string> calibrationDataOf(const CalibrateConfig& cfg) {
-  if (cfg.scenario.empty()) return calibrationData(cfg.data, "--data");
-  const diag::MeasurementSpec spec = diag::parseMeasurementArg(cfg.data, "--data");
-  if (!spec.scenario.empty() && spec.scenario != cfg.scenario)
-    throw InputError("--scenario", "'" + cfg.scenario + "' differs from the scenario of --data " +
-                                       cfg.data + ": give it once, as --data FILE@SCENARIO");
-  deprecationNote("twin calibrate --data FILE --scenario NAME", "twin calibrate --data FILE@NAME",
-                  cfg.processes);
-  return calibrationData(cfg.data, "--data", cfg.scenario);
-}
 
 int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
-  CalibrateRequest req;
-  std::tie(req.data, req.scenario) = calibrationDataOf(cfg);
+  CalibrateSettings settings = cfg.settings;
+  if (!settings.scenario.empty()) {  // the older shape --data FILE --scenario NAME
+    checkDataScenario(settings.data, settings.scenario);
+    deprecationNote("twin calibrate --data FILE --scenario NAME", "twin calibrate --data FILE@NAME",
+                    settings.processes);
+  }
   if (cfg.assembly != "all")
     for (auto& id : splitOn(cfg.assembly, ','))
-      if (!id.empty()) req.assemblies.push_back(std::move(id));
-  req.out = cfg.out;
-  req.free = cfg.free;
-  req.command = command;
-  calib::CalibrationOptions& opt = req.options;
-  opt = calib::CalibrationOptions::fromStudy(study);
-  opt.threads = cfg.threads;
-  opt.processes = cfg.processes;
-  if (cfg.seed) opt.seed = *cfg.seed;
-  cfg.calibration.applyTo(opt);
-  req.validate(
-      study);  // before anything is printed; main() shows a field as its flag (field_flags below)
-  checkCalibrateWork(study, req, cfg.calibration, cfg.force);
-  const FolderLock lock(cfg.out, "--out", cfg.processes);  // one run at a time in the folder
-  const bool bar_on = progressOn(cfg.quiet, cfg.processes);
+      if (!id.empty()) settings.assemblies.push_back(std::move(id));
+  settings.overrides = cfg.calibration;
+  settings.command = command;
+  // validated before anything is printed; main() shows a field as its flag (field_flags below)
+  const CalibrateRequest req = calibrateRequest(study, settings);
+  const FolderLock lock(settings.out, "--out",
+                        settings.processes);  // one run at a time in the folder
+  const bool bar_on = progressOn(cfg.quiet, settings.processes);
   std::unique_ptr<ProgressBar> bar;
   std::string current;
   const auto progress_of = [&](const AssemblySpec& a) -> StageProgress {
@@ -91,11 +70,11 @@ int runCalibrate(const CalibrateConfig& cfg, const std::string& command) {
 CommandHandle addCalibrateCommand(CLI::App& root, const CommandContext& context) {
   const std::string& command_line = context.command_line;
   auto cfg = std::make_shared<CalibrateConfig>();
-  cfg->processes = context.processes;
+  cfg->settings.processes = context.processes;
   auto* c = addSubcommand(root, "calibrate");
   c->add_option("--study", cfg->study, "Study file (TOML)")->capture_default_str();
   c->add_option(
-       "--data", cfg->data,
+       "--data", cfg->settings.data,
        "Lab data FILE[@SCENARIO] (repetition,time_s,channel,value), e.g. from `twin generate lab`; "
        "SCENARIO: the "
        "study's scenario it was measured on (default: the one its JSON sidecar names, else lab)")
@@ -105,18 +84,18 @@ CommandHandle addCalibrateCommand(CLI::App& root, const CommandContext& context)
       ->capture_default_str()
       ->delimiter(',')
       ->multi_option_policy(CLI::MultiOptionPolicy::Join);
-  c->add_option("--scenario", cfg->scenario, "Deprecated: give --data FILE@SCENARIO");
-  c->add_option("--out", cfg->out,
+  c->add_option("--scenario", cfg->settings.scenario, "Deprecated: give --data FILE@SCENARIO");
+  c->add_option("--out", cfg->settings.out,
                 "Output folder; each assembly writes OUT/<id>/ (summary.json, posterior.csv, "
                 "design.csv, the stages' files); "
                 "a rerun into it resumes")
       ->required();
   c->add_option(
-       "--threads", cfg->threads,
+       "--threads", cfg->settings.threads,
        "Worker threads per process (0: all cores, shared among the MPI ranks of a machine)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));
-  c->add_option("--free", cfg->free,
+  c->add_option("--free", cfg->settings.free,
                 "A fixed value calibrated too, over the range `twin diagnose` gives it (comma "
                 "separated or repeated): a per-corner or "
                 "per-axle factor such as suspension.damping@rr (over [0.2, 2]), or a vehicle value "
@@ -124,9 +103,10 @@ CommandHandle addCalibrateCommand(CLI::App& root, const CommandContext& context)
       ->delimiter(',');
   cfg->calibration.addTo(c, CalibrationFlags::kSizes | CalibrationFlags::kRegion |
                                 CalibrationFlags::kRounds | CalibrationFlags::kSteps);
-  addSeedOption(c, cfg->seed, "Seed of the design and the sampler (default: the study's seed)");
+  addSeedOption(c, cfg->settings.seed,
+                "Seed of the design and the sampler (default: the study's seed)");
   c->add_flag("--quiet", cfg->quiet, "Print nothing on success (no progress bar)");
-  addForceOption(c, cfg->force);
+  addForceOption(c, cfg->settings.force);
   addExamples(c, {"twin calibrate --study data/studies/demo.toml --data out/lab.csv --assembly M3 "
                   "--lhs-points 20 --iterations 600 --burn-in 200 --max-rounds 0 --ridge-steps 0 "
                   "--out out/calibration",

@@ -7,7 +7,6 @@
 
 #include <string>
 
-#include "calibration/calibrate.hpp"
 #include "cli/commands.hpp"
 #include "study/calibrate.hpp"
 

@@ -1,16 +1,13 @@
 // `twin classify`: Bayesian classification of field records among synthesized assemblies, and
-// the cost-aware recommendation (classification/classify_field.hpp).
+// the cost-aware recommendation (study/classify.hpp).
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <sstream>
 
-#include "classification/classify_field.hpp"
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
-#include "io/study.hpp"
-
-namespace fs = std::filesystem;
+#include "study/classify.hpp"
+#include "study/request.hpp"
 
 namespace dtwin::cli {
 namespace {
@@ -25,42 +22,22 @@ struct ClassifyConfig {
 
 int runClassify(const ClassifyConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
-  classify::FieldClassifyOptions opt;
+  ClassifyRequest req;
   if (cfg.assembly != "all") {
     std::stringstream ss(cfg.assembly);
     std::string id;
-    while (std::getline(ss, id, ',')) opt.assemblies.push_back(id);
+    while (std::getline(ss, id, ',')) req.options.assemblies.push_back(id);
   }
-  opt.covariance = cfg.covariance;
-  if (!cfg.prior.empty()) opt.prior = classify::parsePriorList(cfg.prior, "--prior");
-  opt.threshold = cfg.threshold;
-  opt.threads = cfg.threads;
-  opt.command = command;
-  opt.validate();
-  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out))
-    throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
-  if (!fs::exists(cfg.field)) throw InputError(cfg.field, "field data file not found (--field)");
-  if (!fs::is_directory(cfg.synthetic))
-    throw InputError(cfg.synthetic, "synthetic data folder not found (--synthetic)");
-  const classify::FieldClassification c =
-      classify::classifyFieldFile(study, cfg.field, cfg.synthetic, opt);
-  classify::writeFieldClassification(c, cfg.out);
-  if (!cfg.quiet) {
-    std::printf("%zu field records x %d samples; covariance: %s (%s)\n", c.records.size(),
-                c.models.empty() ? 0 : c.models.front().dimension, c.covariance_method.c_str(),
-                c.covariance_reason.c_str());
-    for (const auto& m : c.models)
-      std::printf("  %-4s %-24s n = %lld, factorization %s%s, cost %.4g s/s\n", m.id.c_str(),
-                  m.label.c_str(), static_cast<long long>(m.vectors), m.factorization.c_str(),
-                  m.covariance == "ledoit-wolf"
-                      ? (", shrinkage " + std::to_string(m.shrinkage_intensity)).c_str()
-                      : "",
-                  m.cost_s_per_s);
-    std::printf("%s", c.result.briefReport().c_str());
-    std::printf("%s\n", c.recommendation.explanation.c_str());
-    std::printf("-> %s, %s\n", (fs::path(cfg.out) / "records.csv").string().c_str(),
-                (fs::path(cfg.out) / "summary.json").string().c_str());
-  }
+  req.options.covariance = cfg.covariance;
+  req.prior = cfg.prior;
+  req.options.threshold = cfg.threshold;
+  req.options.threads = cfg.threads;
+  req.options.command = command;
+  req.field = cfg.field;
+  req.synthetic = cfg.synthetic;
+  req.out = cfg.out;
+  const ClassifyRun run = classifyFieldRecords(study, req);
+  if (!cfg.quiet) std::fputs(run.text().c_str(), stdout);
   return 0;
 }
 

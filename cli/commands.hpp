@@ -11,8 +11,6 @@
 
 #include "common/distributed.hpp"
 #include "common/registry.hpp"
-#include "io/study.hpp"
-#include "io/work.hpp"
 
 namespace dtwin::cli {
 

@@ -8,7 +8,6 @@
 #include "cli/commands.hpp"
 #include "common/distributed.hpp"
 #include "common/errors.hpp"
-#include "io/work.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,7 +1,6 @@
 // `twin coverage`: how often the calibration's 95 % intervals hold the truth, over noise seeds
 // (study/coverage.hpp, docs/calibration.md).
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 #include "cli/calibration_flags.hpp"
@@ -9,10 +8,8 @@
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "common/folder_lock.hpp"
-#include "io/study.hpp"
 #include "study/coverage.hpp"
-
-namespace fs = std::filesystem;
+#include "study/request.hpp"
 
 namespace dtwin::cli {
 namespace {
@@ -29,38 +26,20 @@ struct CoverageConfig {
 
 int runCoverage(const CoverageConfig& cfg, const std::string& command) {
   const Study study = loadStudy(cfg.study);
-  for (const auto& id : cfg.assemblies) study.assembly(id);  // validates the ids
-  if (fs::exists(cfg.out) && !fs::is_directory(cfg.out))
-    throw InputError("--out", "'" + cfg.out + "' exists and is not a folder");
-  {
-    std::vector<std::string> stages;
-    for (const auto& id : cfg.assemblies) stages.push_back("calibrate " + id);
-    if (stages.empty()) stages.push_back("calibrate");
-    checkCommandWork(cfg.calibration.sized(study), stages, cfg.force,
-                     cfg.seeds);  // each seed is one calibration
-  }
-  calib::CoverageOptions o;
-  o.seeds = cfg.seeds;
-  o.first_seed = static_cast<std::uint64_t>(cfg.first_seed);
-  o.assemblies = cfg.assemblies;
-  o.out_dir = cfg.out;
-  o.command = command;
-  o.calibration = calib::CalibrationOptions::fromStudy(study);
-  o.calibration.threads = cfg.threads;
-  o.calibration.processes = cfg.processes;
-  cfg.calibration.applyTo(o.calibration);
-  o.validate();  // before anything is printed; main() shows a field as its flag (field_flags below)
+  calib::CoverageOptions given;
+  given.seeds = cfg.seeds;
+  given.first_seed = static_cast<std::uint64_t>(cfg.first_seed);
+  given.assemblies = cfg.assemblies;
+  given.out_dir = cfg.out;
+  given.command = command;
+  given.calibration.threads = cfg.threads;
+  given.calibration.processes = cfg.processes;
+  // checked before anything is printed; main() shows a field as its flag (field_flags below)
+  const calib::CoverageOptions o = calib::coverageOptions(study, given, cfg.calibration, cfg.force);
   const FolderLock lock(
       cfg.out, "--out",
       nullptr);  // one run at a time in the folder (on the root alone: command registry)
-  const std::size_t n_asm =
-      cfg.assemblies.empty() ? study.assemblies().size() : cfg.assemblies.size();
-  if (!cfg.quiet)
-    std::printf(
-        "coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n",
-        n_asm, n_asm == 1 ? "y" : "ies", cfg.seeds, cfg.first_seed, cfg.first_seed + cfg.seeds - 1,
-        o.calibration.region.c_str(), o.calibration.design.adaptive ? "adaptive" : "lhs",
-        cfg.out.c_str());
+  if (!cfg.quiet) std::fputs(calib::coveragePlan(study, o).c_str(), stdout);
   const bool bar_on = progressOn(cfg.quiet, cfg.processes);
   ProgressBar bar("coverage", bar_on, stderrIsTerminal());
   std::string current;
@@ -80,11 +59,7 @@ int runCoverage(const CoverageConfig& cfg, const std::string& command) {
                            bar.update(done, total);
                          });
   bar.finish();
-  if (!cfg.quiet) {
-    std::printf("\n%s\nmedian calibration %.1f s, total %.0f s; %s/coverage.json, %s/coverage.md\n",
-                r.markdown().c_str(), r.median_calibration_wall_s, r.wall_s, cfg.out.c_str(),
-                cfg.out.c_str());
-  }
+  if (!cfg.quiet) std::fputs(calib::coverageText(r, cfg.out).c_str(), stdout);
   return 0;
 }
 

@@ -12,6 +12,7 @@
 #include "common/folder_lock.hpp"
 #include "common/format.hpp"
 #include "study/diagnose.hpp"
+#include "study/request.hpp"
 
 namespace dtwin::cli {
 namespace {

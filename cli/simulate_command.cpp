@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
+#include "study/request.hpp"
 #include "study/simulate.hpp"
 
 namespace dtwin::cli {

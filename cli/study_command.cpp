@@ -6,7 +6,7 @@
 #include "cli/progress.hpp"
 #include "common/errors.hpp"
 #include "common/folder_lock.hpp"
-#include "io/study.hpp"
+#include "study/request.hpp"
 #include "study/run.hpp"
 
 namespace dtwin::cli {
@@ -29,17 +29,14 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command,
     study_file = cfg.positional;
   }
   const Study study = loadStudy(study_file);
-  std::vector<std::string> stages = {"calibrate", "synthesize"};
-  if (cfg.lab.empty()) stages.push_back("lab");
-  if (cfg.field.empty()) stages.push_back("field");
-  checkCommandWork(study, stages, cfg.force);
-  const FolderLock lock(cfg.out, "--out", cfg.processes);  // one run at a time in the folder
   study::StudyRunOptions o;
   o.threads = cfg.threads;
   o.processes = cfg.processes;
   o.lab_file = cfg.lab;
   o.field_file = cfg.field;
   o.command = command;
+  study::checkStudyWork(study, o, cfg.force);
+  const FolderLock lock(cfg.out, "--out", cfg.processes);  // one run at a time in the folder
   ProgressBar bar("study", progressOn(cfg.quiet, cfg.processes), stderrIsTerminal());
   std::string current;
   auto progress = [&](const std::string& stage, std::size_t d, std::size_t t) {
@@ -59,11 +56,7 @@ int runStudyCommand(const StudyConfig& cfg, const std::string& command,
   bar.finish();
   if (!cfg.quiet &&
       isRootProcess(cfg.processes)) {  // under MPI the other ranks do not run the classification
-    std::printf("wins:");
-    for (auto& [id, n] : s["wins"].items()) std::printf(" %s %d", id.c_str(), n.get<int>());
-    std::printf("\n%s\nstages [s]:", s["recommendation_sentence"].get<std::string>().c_str());
-    for (auto& [k, v] : s["stages"].items()) std::printf(" %s %.1f", k.c_str(), v.get<double>());
-    std::printf("\nsummary: %s/summary.json\n", cfg.out.c_str());
+    std::fputs(study::summaryText(s, cfg.out).c_str(), stdout);
   }
   return 0;
 }

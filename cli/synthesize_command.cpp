@@ -9,8 +9,7 @@
 #include "common/distributed.hpp"
 #include "common/errors.hpp"
 #include "common/folder_lock.hpp"
-#include "io/provenance.hpp"
-#include "io/study.hpp"
+#include "study/request.hpp"
 #include "study/synthesize.hpp"
 
 namespace fs = std::filesystem;
@@ -47,12 +46,7 @@ int runSynthesize(const SynthesizeConfig& cfg, const std::string& command) {
   if (cfg.seed) opt.seed = *cfg.seed;
   opt.scenario = cfg.scenario;
   opt.channel = cfg.channel;
-  if (!cfg.window.empty()) {
-    if (cfg.window.size() != 2 || !(cfg.window[0] < cfg.window[1]))
-      throw InputError("--window", "expects T0,T1 with T0 < T1");
-    opt.t_begin_s = cfg.window[0];
-    opt.t_end_s = cfg.window[1];
-  }
+  applyTimeWindow(cfg.window, opt.t_begin_s, opt.t_end_s);
   opt.branch = !cfg.no_branch;
   opt.track_fourth_moment = !cfg.no_fourth;
   opt.command = command;

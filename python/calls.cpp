@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
-#include <tuple>
 #include <utility>
 
 #include "common/errors.hpp"
@@ -176,19 +175,22 @@ py::object simulate(const PyStudy& s, const Arguments& a) {
 
 // ------------------------------------------------------------------ calibrate
 py::object calibrate(const PyStudy& s, const Arguments& a) {
-  const std::string data = a.path("data"), out = a.path("out");
-  const CalibrationOverrides overrides = overridesOf(a, true);
-  std::vector<std::string> assemblies;
+  CalibrateSettings settings;
+  settings.data = a.path("data");
+  settings.out = a.path("out");
+  settings.overrides = overridesOf(a, true);
   for (auto& id : a.names("assembly"))
-    if (id != "all") assemblies.push_back(std::move(id));
-  const auto seed_value = a.seed("seed");
-  const int threads = a.smallInteger("threads");
-  const bool force = a.flag("force");
+    if (id != "all") settings.assemblies.push_back(std::move(id));
+  settings.seed = a.seed("seed");
+  settings.threads = a.smallInteger("threads");
+  settings.processes = nullptr;  // this process alone
+  settings.force = a.flag("force");
   CallText call(studyCall(s, "calibrate"));
-  call.add("data", data).add("assembly", a["assembly"]).add("out", out);
+  call.add("data", settings.data).add("assembly", a["assembly"]).add("out", settings.out);
   addAll(call, a,
          {"lhs_points", "iterations", "burn_in", "starts", "region", "design", "interval", "steps",
           "max_rounds", "ridge_steps", "seed"});
+  settings.command = call.str();
   Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();
   const SayFn say = callbacks.say();
@@ -196,19 +198,7 @@ py::object calibrate(const PyStudy& s, const Arguments& a) {
   runReleased(
       [&] {
         const Study study = withStop(*s.study, callbacks.stop());
-        CalibrateRequest req;
-        std::tie(req.data, req.scenario) = calibrationData(data, "--data");
-        req.assemblies = assemblies;
-        req.out = out;
-        req.command = call.str();
-        calib::CalibrationOptions& opt = req.options;
-        opt = calib::CalibrationOptions::fromStudy(study);
-        opt.threads = threads;
-        opt.processes = nullptr;  // this process alone
-        if (seed_value) opt.seed = *seed_value;
-        overrides.applyTo(opt);
-        req.validate(study);
-        checkCalibrateWork(study, req, overrides, force);
+        const CalibrateRequest req = calibrateRequest(study, settings);
         const auto progress_of = [&](const AssemblySpec& as) -> StageProgress {
           return [&, id = as.id](const std::string& stage, std::size_t d, std::size_t t) {
             stage_progress(id + " " + stage, d, t);
@@ -222,7 +212,8 @@ py::object calibrate(const PyStudy& s, const Arguments& a) {
       calibrationKeywords(a), &callbacks);
   py::dict result;
   for (const auto& id : done)
-    result[py::str(id)] = toPython(readJsonFile((fs::path(out) / id / "summary.json").string()));
+    result[py::str(id)] =
+        toPython(readJsonFile((fs::path(settings.out) / id / "summary.json").string()));
   return std::move(result);
 }
 

@@ -6,9 +6,9 @@
 #include <memory>
 #include <string>
 
-#include "io/study.hpp"
 #include "python/arguments.hpp"
 #include "python/bridge.hpp"
+#include "study/request.hpp"
 
 namespace dtwin::python {
 

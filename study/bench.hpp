@@ -1,5 +1,6 @@
 #pragma once
 // Speed measurement of the twin: wall time per run, median over repeated runs.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -87,5 +88,30 @@ struct HandOdeBench {
 /// InputError for an assembly the hand ODE does not model (HandOde), or `runs` < 1.
 HandOdeBench benchHandOde(const Study& study, const AssemblySpec& a, const ScenarioSpec& scenario,
                           int runs);
+
+/// Where a call puts its text as it goes: a piece of output, its line ends included.
+using TextSink = std::function<void(const std::string& text)>;
+
+/// What `twin bench` times: by default the bump and the rough road of each assembly (or those of
+/// `assemblies`) as a table; instead, when set, `twin import` on a synthetic log (import_rows),
+/// a user-defined effect against the built-in one (user_effect), the hand ODE (hand_ode) or a
+/// synthesis's accumulation (accumulation).
+struct BenchRequest {
+  std::string study;                    ///< the study file
+  int runs = 5;                         ///< timed runs per case (after one warm-up)
+  bool markdown = false;                ///< the tables in Markdown (docs/performance.md)
+  std::vector<std::string> assemblies;  ///< empty: every assembly (hand ODE: M3; else the first)
+  long import_rows = 0;                 ///< > 0: rows of the synthetic log `twin import` reads
+  long user_effect = 0;                 ///< > 0: evaluations of the strut effects
+  std::string scenario = "field";       ///< user_effect: the scenario of the whole runs
+  bool hand_ode = false;                ///< the bump run against the hand-written 7-DOF ODE
+  bool accumulation = false;            ///< a synthesis's costs and its modelled wall on K ranks
+  double link_gb_per_s = 10.0;          ///< accumulation: the bandwidth between ranks [GB/s]
+};
+
+/// `twin bench` as one call: runs what `request` asks and hands its text over as it goes: `print`
+/// the tables (the program's standard output), `note` what is being timed (its standard error).
+/// InputError for a study or request it cannot time.
+void runBench(const BenchRequest& request, const TextSink& print, const TextSink& note);
 
 }  // namespace dtwin

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 
 #include "common/distributed.hpp"
 #include "common/errors.hpp"
@@ -122,6 +123,31 @@ std::pair<std::string, std::string> calibrationData(const std::string& data,
   const std::string s = dataScenario(spec.path, scenario.empty() ? spec.scenario : scenario,
                                      readSidecarFacts(spec.path));
   return {spec.path, s.empty() ? std::string("lab") : s};
+}
+
+void checkDataScenario(const std::string& data, const std::string& scenario) {
+  const diag::MeasurementSpec spec = diag::parseMeasurementArg(data, "--data");
+  if (!spec.scenario.empty() && spec.scenario != scenario)
+    throw InputError("--scenario", "'" + scenario + "' differs from the scenario of --data " +
+                                       data + ": give it once, as --data FILE@SCENARIO");
+}
+
+CalibrateRequest calibrateRequest(const Study& study, const CalibrateSettings& settings) {
+  CalibrateRequest req;
+  std::tie(req.data, req.scenario) = calibrationData(settings.data, "--data", settings.scenario);
+  req.assemblies = settings.assemblies;
+  req.out = settings.out;
+  req.free = settings.free;
+  req.command = settings.command;
+  calib::CalibrationOptions& opt = req.options;
+  opt = calib::CalibrationOptions::fromStudy(study);
+  opt.threads = settings.threads;
+  opt.processes = settings.processes;
+  if (settings.seed) opt.seed = *settings.seed;
+  settings.overrides.applyTo(opt);
+  req.validate(study);  // before anything is printed
+  checkCalibrateWork(study, req, settings.overrides, settings.force);
+  return req;
 }
 
 void checkCalibrateWork(const Study& study, const CalibrateRequest& request,

@@ -3,13 +3,16 @@
 // data file (calibration/calibrate.hpp), each into OUT/<id>/ (resumable), and OUT/calibration.json
 // indexing them with how they were made. The CLI parses its flags into the request, checks the
 // work, calls, and prints.
+#include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "calibration/calibrate.hpp"
+#include "common/distributed.hpp"
 #include "common/progress.hpp"
 #include "diagnosis/candidates.hpp"
 #include "io/study.hpp"
@@ -58,6 +61,31 @@ std::pair<std::string, std::string> calibrationData(const std::string& data,
 /// above them unless `force`), before anything runs.
 void checkCalibrateWork(const Study& study, const CalibrateRequest& request,
                         const CalibrationOverrides& overrides, bool force);
+
+/// The older shape `--data FILE --scenario NAME`: InputError("--scenario") when FILE@SCENARIO
+/// names another scenario than `scenario`.
+void checkDataScenario(const std::string& data, const std::string& scenario);
+
+/// One calibration as a front end gives it (the flags of `twin calibrate`, the keywords of the
+/// Python module's Study.calibrate).
+struct CalibrateSettings {
+  std::string data;                        ///< the lab data, FILE[@SCENARIO]
+  std::string scenario;                    ///< the scenario given apart ("": FILE@SCENARIO's, ...)
+  std::vector<std::string> assemblies;     ///< assembly ids; empty: every assembly of the study
+  std::string out;                         ///< the folder; each assembly writes OUT/<id>/
+  std::vector<std::string> free;           ///< CalibrateRequest::free
+  int threads = 0;                         ///< worker threads per process (0: all cores)
+  const Distributed* processes = nullptr;  ///< the process context; nullptr: this process alone
+  std::optional<std::uint64_t> seed;       ///< unset: the study's
+  CalibrationOverrides overrides;          ///< the sizes and settings given
+  bool force = false;                      ///< run even above the work limits
+  std::string command;                     ///< recorded in every output
+};
+
+/// The request of `settings` on `study`: the data and their scenario (calibrationData, errors
+/// naming --data), the study's calibration options with the settings over them; validated
+/// (CalibrateRequest::validate) and its work checked (checkCalibrateWork) before anything runs.
+CalibrateRequest calibrateRequest(const Study& study, const CalibrateSettings& settings);
 
 /// One calibrated assembly.
 struct CalibrateRun {

@@ -12,8 +12,10 @@
 
 #include "common/distributed.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/validate.hpp"
 #include "io/provenance.hpp"
+#include "io/work.hpp"
 #include "study/generate.hpp"
 
 namespace fs = std::filesystem;
@@ -255,6 +257,44 @@ CoverageResult runCoverage(const Study& study, const CoverageOptions& options,
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
   writeCoverage(study, options, res);
   return res;
+}
+
+CoverageOptions coverageOptions(const Study& study, CoverageOptions options,
+                                const CalibrationOverrides& overrides, bool force) {
+  for (const auto& id : options.assemblies) study.assembly(id);  // validates the ids
+  if (fs::exists(options.out_dir) && !fs::is_directory(options.out_dir))
+    throw InputError("--out", "'" + options.out_dir + "' exists and is not a folder");
+  std::vector<std::string> stages;
+  for (const auto& id : options.assemblies) stages.push_back("calibrate " + id);
+  if (stages.empty()) stages.push_back("calibrate");
+  checkCommandWork(overrides.sized(study), stages, force,
+                   options.seeds);  // each seed is one calibration
+  const int threads = options.calibration.threads;
+  const Distributed* processes = options.calibration.processes;
+  options.calibration = CalibrationOptions::fromStudy(study);
+  options.calibration.threads = threads;
+  options.calibration.processes = processes;
+  overrides.applyTo(options.calibration);
+  options.validate();
+  return options;
+}
+
+std::string coveragePlan(const Study& study, const CoverageOptions& options) {
+  const std::size_t n_asm =
+      options.assemblies.empty() ? study.assemblies().size() : options.assemblies.size();
+  const auto first = static_cast<long long>(options.first_seed);
+  return formatPrintf(
+      "coverage: %zu assembl%s x %d noise seeds (%lld..%lld), %s region, %s design -> %s\n", n_asm,
+      n_asm == 1 ? "y" : "ies", options.seeds, first, first + options.seeds - 1,
+      options.calibration.region.c_str(), options.calibration.design.adaptive ? "adaptive" : "lhs",
+      options.out_dir.c_str());
+}
+
+std::string coverageText(const CoverageResult& result, const std::string& out_dir) {
+  return formatPrintf(
+      "\n%s\nmedian calibration %.1f s, total %.0f s; %s/coverage.json, %s/coverage.md\n",
+      result.markdown().c_str(), result.median_calibration_wall_s, result.wall_s, out_dir.c_str(),
+      out_dir.c_str());
 }
 
 }  // namespace dtwin::calib

@@ -32,6 +32,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "io/study.hpp"
+#include "study/calibrate.hpp"
 
 namespace dtwin::calib {
 
@@ -87,6 +88,22 @@ using CoverageProgress =
 /// at the end.
 CoverageResult runCoverage(const Study& study, const CoverageOptions& options,
                            const CoverageProgress& progress = {});
+
+/// `twin coverage`'s options from a front end's settings, checked before anything runs: the
+/// assembly ids, out_dir a folder or absent (InputError naming --out), the work of `seeds`
+/// calibrations of each assembly at the study's sizes with `overrides` within the limits unless
+/// `force`; then `calibration` the study's options (fromStudy; the given threads and processes
+/// kept) with `overrides` over them, and the whole validated.
+CoverageOptions coverageOptions(const Study& study, CoverageOptions options,
+                                const CalibrationOverrides& overrides, bool force);
+
+/// The line `twin coverage` prints before it starts: the assemblies, the seeds, the region and
+/// the design, and the folder.
+std::string coveragePlan(const Study& study, const CoverageOptions& options);
+
+/// The lines `twin coverage` prints at the end: the table, the calibrations' wall times and the
+/// files written in `out_dir`.
+std::string coverageText(const CoverageResult& result, const std::string& out_dir);
 
 /// 95 % Wilson score interval of k successes in m trials.
 std::pair<double, double> wilsonInterval(int k, int m);

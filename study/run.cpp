@@ -10,11 +10,13 @@
 #include "classification/synthesis.hpp"
 #include "common/distributed.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/json.hpp"
 #include "common/validate.hpp"
 #include "io/measurement.hpp"
 #include "io/posterior_file.hpp"
 #include "io/provenance.hpp"
+#include "io/work.hpp"
 #include "study/generate.hpp"
 
 namespace fs = std::filesystem;
@@ -277,6 +279,24 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options,
 
   nlohmann::json s = studySummary(study, options, out, c, stages, calibrated, lab_path, field_path);
   writeFileAtomic((out / "summary.json").string(), s.dump(2) + "\n");
+  return s;
+}
+
+void checkStudyWork(const Study& study, const StudyRunOptions& options, bool force) {
+  std::vector<std::string> stages = {"calibrate", "synthesize"};
+  if (options.lab_file.empty()) stages.push_back("lab");
+  if (options.field_file.empty()) stages.push_back("field");
+  checkCommandWork(study, stages, force);
+}
+
+std::string summaryText(const nlohmann::json& summary, const std::string& out_dir) {
+  std::string s = "wins:";
+  for (auto& [id, n] : summary["wins"].items())
+    s += formatPrintf(" %s %d", id.c_str(), n.get<int>());
+  s += "\n" + summary["recommendation_sentence"].get<std::string>() + "\nstages [s]:";
+  for (auto& [k, v] : summary["stages"].items())
+    s += formatPrintf(" %s %.1f", k.c_str(), v.get<double>());
+  s += "\nsummary: " + out_dir + "/summary.json\n";
   return s;
 }
 

@@ -45,4 +45,13 @@ nlohmann::json runStudy(const Study& study, const StudyRunOptions& options,
                         const std::string& out_dir, const StudyProgress& progress = {},
                         const StudyLog& log = {});
 
+/// The work of `twin study` on `study` checked against the limits (io/work.hpp): the calibration
+/// and the synthesis, and the lab and field data unless `options` give their files. InputError
+/// naming the study file above them, unless `force`.
+void checkStudyWork(const Study& study, const StudyRunOptions& options, bool force);
+
+/// The lines `twin study` prints at the end: the wins, the recommendation, each stage's wall time
+/// and where the summary is.
+std::string summaryText(const nlohmann::json& summary, const std::string& out_dir);
+
 }  // namespace dtwin::study

@@ -132,7 +132,7 @@ class Parser {
 
 void Parser::header() {
   Section section = Section::None;
-  std::size_t pos = 0;
+  std::size_t pos = text_.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a byte-order mark
   long line_no = 0;
   while (pos < text_.size()) {
     std::size_t end = text_.find('\n', pos);

@@ -336,6 +336,12 @@ TEST(Crg, TheSamplesOfTheFormatParse) {
   EXPECT_NEAR(s.ref_z_m[2], 0.022, 1e-15);
   EXPECT_NEAR(s.height(2.0, 0.0), 0.022, 1e-15);
   EXPECT_NEAR(s.height(1.5, 0.0), 0.0165 + 0.5 * 0.0111111, 1e-15);
+  // A byte-order mark and CRLF line ends change nothing.
+  std::string crlf = "\xEF\xBB\xBF";
+  for (char c : t) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const CrgSurface w = parseCrg(crlf, "windows.crg");
+  EXPECT_EQ(w.z_m, s.z_m);
+  EXPECT_EQ(w.ref_z_m, s.ref_z_m);
 }
 
 TEST(Crg, BadFilesAreRefusedInOneLineNamingTheFileAndLine) {

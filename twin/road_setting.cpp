@@ -4,6 +4,7 @@
 #include "common/names.hpp"
 #include "common/toml_reader.hpp"
 #include "twin/roads/bump.hpp"
+#include "twin/roads/crg.hpp"
 #include "twin/roads/csv.hpp"
 #include "twin/roads/csv_time.hpp"
 #include "twin/roads/flat.hpp"
@@ -26,6 +27,8 @@ const Registry<RoadParser>& roadTypes() {
            "a road logged against time (height or road velocity), mapped to distance through the "
            "speed",
            &CsvTimeRoadSetting::parse},
+          {"crg", "an ASAM OpenCRG road surface: two wheel tracks at offsets v along u",
+           &CrgRoadSetting::parse},
       });
   return r;
 }

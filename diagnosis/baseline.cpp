@@ -34,11 +34,9 @@ RoadInput roadInput(const ScenarioSpec& sc, const VehicleData& vehicle, std::uin
   for (auto& v : in.u) v.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const double x = sc.speed.distance(static_cast<double>(k) * dt_s);
-    for (int c = 0; c < 4; ++c) {
-      const Track track = c % 2 == 0 ? Track::Left : Track::Right;
+    for (int c = 0; c < 4; ++c)
       in.u[static_cast<std::size_t>(c)][k] =
-          road->sample(track, c < 2 ? x : x - vehicle.wheelbase()).height_m;
-    }
+          road->sampleAt(c, c < 2 ? x : x - vehicle.wheelbase()).height_m;
   }
   return in;
 }

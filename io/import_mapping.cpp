@@ -107,6 +107,25 @@ ImportColumn readColumn(TableReader& r, const std::string& key, const std::strin
   return c;
 }
 
+/// road_fl, road_fr, road_rl, road_rr: all four or none, and then no road, road_left or road_right.
+void readWheelRoads(TableReader& r, ImportMapping& m) {
+  static const char* kKeys[4] = {"road_fl", "road_fr", "road_rl", "road_rr"};
+  int given = 0;
+  for (const char* k : kKeys) given += r.has(k) ? 1 : 0;
+  if (given == 0) return;
+  for (const char* k : kKeys)
+    if (r.has(k) && (m.road || m.road_left))
+      throw InputError(r.where(k), std::string("give either ") +
+                                       (m.road ? "road" : "road_left and road_right") +
+                                       " (the road under the axles) or road_fl, road_fr, road_rl "
+                                       "and road_rr (each wheel's motion), not both");
+  for (const char* k : kKeys)
+    if (!r.has(k))
+      throw InputError(r.where(k),
+                       "is required with the other wheels' columns (road_fl, road_fr, road_rl and "
+                       "road_rr: all four or none)");
+  for (std::size_t c = 0; c < 4; ++c) m.road_wheels[c] = readColumn(r, kKeys[c], "");
+}
 }  // namespace
 
 char parseSeparator(const std::string& text, const std::string& where) {
@@ -234,6 +253,7 @@ ImportMapping readImportMapping(const std::string& path) {
     m.road_left = readColumn(r, "road_left", "");
     m.road_right = readColumn(r, "road_right", "");
   }
+  readWheelRoads(r, m);
   if (r.has("highpass_hz")) {
     m.highpass_given = true;
     m.highpass_hz = *r.number("highpass_hz");

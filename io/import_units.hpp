@@ -59,10 +59,24 @@ const Unit kUnits[] = {
 /// before a million rows are read).
 struct ImportUnits {
   double time = 1.0, speed = 1.0;
-  std::vector<const ImportColumn*> road_cols;  ///< none, one (both tracks) or left and right
-  bool road_velocity = false;                  ///< the road columns are velocities, not heights
+  /// none, one (both tracks), left and right, or four (each wheel's: fl, fr, rl, rr)
+  std::vector<const ImportColumn*> road_cols;
+  bool road_velocity = false;      ///< the road columns are velocities, not heights
+  bool road_acceleration = false;  ///< the road columns are accelerations (four wheels' only)
   std::vector<double> road, channel;
 };
+
+/// The road columns' units (road, road_left/road_right or the four wheels'): their factors and
+/// form into `u`. Errors name the column's mapping entry (import_road.cpp).
+void resolveRoadUnits(const ImportMapping& m, ImportUnits& u);
+/// road.csv's text of the run's road columns (SI, times from 0); "" without a mapped road.
+std::string roadCsvText(const ImportUnits& u, const std::vector<double>& t,
+                        const std::vector<std::vector<double>>& road);
+/// The sidecar's "road" entry (null without a mapped road).
+nlohmann::json roadSidecar(const ImportMapping& m, const ImportUnits& u);
+/// The four wheels' accelerations (SI) must have had gravity removed (the column's offset): a
+/// mean beyond half a g is refused, naming the column's mapping entry.
+void checkWheelAccelerations(const ImportUnits& u, const std::vector<std::vector<double>>& road);
 
 /// The log's rows in SI units: times (as logged), speeds, road columns, and the channels (NaN: a
 /// dropout).

@@ -240,23 +240,7 @@ ImportUnits resolveUnits(const ImportMapping& m, const std::vector<Channel>& kno
   u.time = unitFactor(m.time.unit, "s", m.time.unitWhere());
   if (!m.speed) throw InputError(m.source + ": import.speed", "is required");
   u.speed = unitFactor(m.speed->unit, "m/s", m.speed->unitWhere());
-  if (m.road) u.road_cols = {&*m.road};
-  if (m.road_left) u.road_cols = {&*m.road_left, &*m.road_right};
-  for (const auto* c : u.road_cols) {
-    bool velocity = false;
-    for (const auto& k : kUnits)
-      if (c->unit == k.name && std::string(k.si) == "m/s") velocity = true;
-    u.road.push_back(unitFactor(c->unit, velocity ? "m/s" : "m", c->unitWhere()));
-    if (c != u.road_cols.front() && velocity != u.road_velocity)
-      throw InputError(c->where,
-                       "both tracks must be heights (m, mm) or both road velocities (m/s, mm/s)");
-    u.road_velocity = velocity;
-  }
-  if (m.highpass_given && !u.road_velocity)
-    throw InputError(m.source == "command line" ? std::string("--highpass-hz")
-                                                : m.source + ": import.highpass_hz",
-                     "applies to a road velocity (m/s, mm/s) only; the road here is " +
-                         (u.road_cols.empty() ? std::string("not mapped") : "a height"));
+  resolveRoadUnits(m, u);
   for (const auto& c : m.channels) {
     const std::string rule = checkChannelName(c.channel, known);
     if (!rule.empty()) throw InputError(c.source.where, "channel '" + c.channel + "' " + rule);
@@ -503,16 +487,7 @@ void writeInputs(ImportResult& res, const ImportUnits& u, const std::vector<doub
   for (std::size_t i = 0; i < t.size(); ++i)
     s += formatExact(t[i]) + "," + formatExact(v[i]) + "\n";
   res.speed_csv = std::move(s);
-  if (u.road_cols.empty()) return;
-  const bool two = u.road_cols.size() == 2;
-  std::string r = u.road_velocity ? (two ? "time_s,left_mps,right_mps\n" : "time_s,velocity_mps\n")
-                                  : (two ? "time_s,left_m,right_m\n" : "time_s,height_m\n");
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    r += formatExact(t[i]) + "," + formatExact(road[0][i]);
-    if (two) r += "," + formatExact(road[1][i]);
-    r += "\n";
-  }
-  res.road_csv = std::move(r);
+  res.road_csv = roadCsvText(u, t, road);
 }
 
 /// The study: the base file's text (paths made absolute), then the drive and the mapping's
@@ -545,7 +520,8 @@ std::string importedStudyText(const std::string& log_name, const ImportMapping& 
       << "\n";
   if (!u.road_cols.empty()) {
     study << "road = { type = \"csv_time\", path = \"road.csv\"";
-    if (u.road_velocity) study << ", highpass_hz = " << formatExact(m.highpass_hz);
+    if (u.road_velocity || u.road_acceleration)
+      study << ", highpass_hz = " << formatExact(m.highpass_hz);
     study << " }\n";
   } else {
     study << "road = { type = \"flat\" }  # no road column was mapped\n";
@@ -600,15 +576,7 @@ nlohmann::json importSidecar(const ImportResult& res, const std::string& log_tex
                     {"unit", c.source.unit},
                     {"offset", c.source.offset},
                     {"scale", c.source.scale}});
-  nlohmann::json rj = nullptr;
-  if (!u.road_cols.empty()) {
-    rj = {{"form", u.road_velocity ? "velocity" : "height"},
-          {"tracks", u.road_cols.size() == 2 ? "left and right" : "identical"}};
-    rj["columns"] = nlohmann::json::array();
-    for (const auto* c : u.road_cols)
-      rj["columns"].push_back({{"column", c->column}, {"unit", c->unit}});
-    if (u.road_velocity) rj["highpass_hz"] = m.highpass_hz;
-  }
+  const nlohmann::json rj = roadSidecar(m, u);
   return {{"made_by", "twin import"},
           {"program", programInfo()},
           {"created_utc", utcNow()},
@@ -737,6 +705,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
                " s";
       },
       known);
+  checkWheelAccelerations(units, road);
   writeInputs(res, units, tr, vr, road);
   res.study_toml =
       importedStudyText(log_name, added, units, base_study, scenario, res.duration_s, res.start_m);

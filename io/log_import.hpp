@@ -53,8 +53,16 @@ struct ImportMapping {
   /// The road under the front axle, against time: one column for both tracks or left and right;
   /// unit m or mm (height) or m/s or mm/s (vertical road velocity). None: a flat road.
   std::optional<ImportColumn> road, road_left, road_right;
-  double highpass_hz = 0.1;     ///< drift removal of a road velocity (docs/measurements.md)
-  bool highpass_given = false;  ///< set explicitly: then the road must be a velocity
+  /// Each wheel's own vertical motion (road_fl, road_fr, road_rl, road_rr: all four or none, not
+  /// with road or road_left/road_right), as a wheel-carrier sensor logs it: unit m or mm
+  /// (height), m/s (velocity), m/s^2 or g (acceleration; gravity removed by the column's offset,
+  /// e.g. 1 for g). Written as a four-corner road.csv (subsystems/time_road.hpp).
+  std::array<std::optional<ImportColumn>, 4> road_wheels;
+  /// Drift removal of a road velocity, or of each integration of a wheel's acceleration
+  /// (docs/measurements.md).
+  double highpass_hz = 0.1;
+  bool highpass_given =
+      false;  ///< set explicitly: then the road must be a velocity or acceleration
   /// > 0: the speed is smoothed by a zero-phase low-pass at this cut-off before it becomes the
   /// trace (a GPS speed in 0.1 km/h steps otherwise gives the model acceleration spikes).
   double speed_lowpass_hz = 0.0;
@@ -76,7 +84,8 @@ struct ImportMapping {
   std::string source;               ///< the mapping file, or "command line"
 };
 
-/// Reads a mapping TOML ([import] table: time, speed, road | road_left + road_right, highpass_hz,
+/// Reads a mapping TOML ([import] table: time, speed, road | road_left + road_right | road_fl +
+/// road_fr + road_rl + road_rr, highpass_hz,
 /// separator, max_dropout_rows, [[import.channels]]; optional [sensors.NAME] as in a study).
 /// Unknown keys and bad values: InputError naming file:line: field.
 ImportMapping readImportMapping(const std::string& path);

@@ -139,7 +139,7 @@ double HandOde::tireForce(int corner, double t, double hub_x, double hub_z, doub
   const ParamValues p(values_.data() + tire0_, ntire_);
   const double v = speed_.speed(t);
   const double x_road = speed_.distance(t) + hub_x - a_;  // docs/model.md, "Forward motion"
-  const RoadSample rs = road_.sample(corners_[static_cast<std::size_t>(corner)].track, x_road);
+  const RoadSample rs = road_.sampleAt(corner, x_road);
   const double rho = R0_ - (hub_z - rs.height_m);
   if (hub_above_road) *hub_above_road = hub_z - rs.height_m;
   TireState ts;
@@ -246,7 +246,7 @@ Eigen::VectorXd HandOde::equilibrium() const {
   for (int c = 0; c < 3; ++c) {
     const double rho = model_.tire().calcStaticDeflection(model_.staticTireLoad(c), tp);
     target[static_cast<std::size_t>(c)] =
-        road_.sample(cornerTrack(c), isFront(c) ? 0.0 : -wb).height_m + R0_ - rho;
+        road_.sampleAt(c, isFront(c) ? 0.0 : -wb).height_m + R0_ - rho;
   }
   // Newton on (heave, pitch, roll) for the FL, FR, RL hub heights: the iteration of the
   // simulator's StaticStart (its start, difference step and tolerance), so both runs start from the

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include <unsupported/Eigen/FFT>
 
@@ -127,6 +128,24 @@ double GridRoad::integral(Track t, double x) const {
 
 Interval GridRoad::extent() const {
   return {x0_, x0_ + dx_ * static_cast<double>(h_[0].size() - 1)};
+}
+
+// ------------------------------------------------------------------ four corners
+CornerRoad::CornerRoad(std::shared_ptr<const Road> front, std::shared_ptr<const Road> rear,
+                       nlohmann::json description)
+    : front_(std::move(front)), rear_(std::move(rear)), description_(std::move(description)) {
+  DTWIN_CHECK(front_ && rear_, "CornerRoad: a front and a rear road");
+}
+
+Interval CornerRoad::extent() const {
+  const Interval f = front_->extent(), r = rear_->extent();
+  return {std::min(f.lo, r.lo), std::max(f.hi, r.hi)};
+}
+
+std::vector<Interval> CornerRoad::obstacles() const {
+  std::vector<Interval> o = front_->obstacles();
+  for (const Interval& i : rear_->obstacles()) o.push_back(i);
+  return o;
 }
 
 // ------------------------------------------------------------------ ISO 8608

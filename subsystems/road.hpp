@@ -12,6 +12,10 @@ namespace dtwin {
 
 enum class Track : int { Left = 0, Right = 1 };
 
+/// The track of a corner: 0 front left, 1 front right, 2 rear left, 3 rear right (twin/model.hpp's
+/// Corner).
+inline Track cornerTrack(int corner) { return corner % 2 == 0 ? Track::Left : Track::Right; }
+
 struct RoadSample {
   double height_m = 0.0;
   double slope = 0.0;  ///< dh/dx [m/m]
@@ -27,6 +31,14 @@ class Road {
   virtual RoadSample sample(Track t, double x) const = 0;
   /// Antiderivative of h for track t (any fixed origin); used for moving averages.
   virtual double integral(Track t, double x) const = 0;
+  /// The road under corner `corner` (0 FL, 1 FR, 2 RL, 3 RR) at the wheel's road distance x (a
+  /// rear wheel's is the front's less the wheelbase). Every wheel reads its track's profile
+  /// (sample(cornerTrack(corner), x)) but on a four-corner road (CornerRoad), where each reads its
+  /// own.
+  virtual RoadSample sampleAt(int corner, double x) const { return sample(cornerTrack(corner), x); }
+  /// The antiderivative under corner `corner` (integral(cornerTrack(corner), x) but on a
+  /// four-corner road).
+  virtual double integralAt(int corner, double x) const { return integral(cornerTrack(corner), x); }
   /// Mean height over [x - L/2, x + L/2] and its derivative with respect to x.
   RoadSample sampleAveraged(Track t, double x, double L) const;
   /// Range of x over which the profile is defined (outside it, the end value is held).
@@ -81,6 +93,52 @@ class GridRoad final : public Road {
   double x0_, dx_;
   std::vector<double> h_[2], m_[2], prefix_[2];  // heights, slopes at nodes, integral at nodes
   nlohmann::json description_;
+};
+
+/// A road whose four wheels each read their own profile (a log of each wheel's motion,
+/// subsystems/time_road.hpp): the front wheels the tracks of `front`, the rear wheels those of
+/// `rear`, each at its own road distance x (a rear wheel's is the front's less the wheelbase, as
+/// on every road: `rear` is laid out on that distance). sample(Track, x) and integral(Track, x)
+/// read the front wheel of that side; extent() and obstacles() are both roads'.
+class CornerRoad final : public Road {
+ public:
+  CornerRoad(std::shared_ptr<const Road> front, std::shared_ptr<const Road> rear,
+             nlohmann::json description);
+  RoadSample sample(Track t, double x) const override { return front_->sample(t, x); }
+  double integral(Track t, double x) const override { return front_->integral(t, x); }
+  RoadSample sampleAt(int corner, double x) const override {
+    return (corner < 2 ? front_ : rear_)->sample(cornerTrack(corner), x);
+  }
+  double integralAt(int corner, double x) const override {
+    return (corner < 2 ? front_ : rear_)->integral(cornerTrack(corner), x);
+  }
+  Interval extent() const override;
+  std::vector<Interval> obstacles() const override;
+  nlohmann::json describe() const override { return description_; }
+  const Road& front() const { return *front_; }
+  const Road& rear() const { return *rear_; }
+
+ private:
+  std::shared_ptr<const Road> front_, rear_;
+  nlohmann::json description_;
+};
+
+/// One corner of a road seen as a road whose both tracks are that corner's (sample(t, x) is
+/// road.sampleAt(corner, x), integral likewise): what a tire-input effect (Effect::filterRoad,
+/// which reads a track) is given, so that on a four-corner road it reads its wheel's own profile.
+/// Holds a reference: lives no longer than the road.
+class CornerView final : public Road {
+ public:
+  CornerView(const Road& road, int corner) : road_(road), corner_(corner) {}
+  RoadSample sample(Track, double x) const override { return road_.sampleAt(corner_, x); }
+  double integral(Track, double x) const override { return road_.integralAt(corner_, x); }
+  Interval extent() const override { return road_.extent(); }
+  std::vector<Interval> obstacles() const override { return road_.obstacles(); }
+  nlohmann::json describe() const override { return road_.describe(); }
+
+ private:
+  const Road& road_;
+  int corner_;
 };
 
 /// ISO 8608 random road (docs/method.md §2): Gd(n) = Gd(n0) (n/n0)^-w, n0 = 0.1 cycles/m, w = 2 by

@@ -14,7 +14,7 @@ namespace dtwin {
 namespace {
 
 struct Layout {
-  const char* columns[2];  // one or two value columns
+  const char* columns[4];  // one, two (left, right) or four (fl, fr, rl, rr) value columns
   int count;
   TimeRoadLog::Form form;
   double scale;  // to m or m/s
@@ -30,10 +30,15 @@ const Layout kLayouts[] = {
     {{"left_mmps", "right_mmps"}, 2, TimeRoadLog::Form::Velocity, 1e-3},
     {{"velocity_mps", nullptr}, 1, TimeRoadLog::Form::Velocity, 1.0},
     {{"left_mps", "right_mps"}, 2, TimeRoadLog::Form::Velocity, 1.0},
+    {{"fl_m", "fr_m", "rl_m", "rr_m"}, 4, TimeRoadLog::Form::Height, 1.0},
+    {{"fl_mm", "fr_mm", "rl_mm", "rr_mm"}, 4, TimeRoadLog::Form::Height, 1e-3},
+    {{"fl_mps", "fr_mps", "rl_mps", "rr_mps"}, 4, TimeRoadLog::Form::Velocity, 1.0},
+    {{"fl_mps2", "fr_mps2", "rl_mps2", "rr_mps2"}, 4, TimeRoadLog::Form::Acceleration, 1.0},
 };
 const char* kHeaders =
     "time_s,height_m | time_s,left_m,right_m | time_s,velocity_mps | time_s,left_mps,right_mps (or "
-    "_mm or _cm for heights, _mmps for velocities)";
+    "_mm or _cm for heights, _mmps for velocities) | each wheel's motion: "
+    "time_s,fl_m,fr_m,rl_m,rr_m (or _mm), time_s,fl_mps,...,rr_mps, time_s,fl_mps2,...,rr_mps2";
 }  // namespace
 
 TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
@@ -42,10 +47,12 @@ TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
     throw InputError(name + ":1", std::string("empty file; expected a header ") + kHeaders);
   const auto& h = csv.fields();
   const Layout* layout = nullptr;
-  for (const auto& l : kLayouts)
-    if (h.size() == static_cast<std::size_t>(l.count) + 1 && h[0] == "time_s" &&
-        h[1] == l.columns[0] && (l.count == 1 || h[2] == l.columns[1]))
-      layout = &l;
+  for (const auto& l : kLayouts) {
+    bool same = h.size() == static_cast<std::size_t>(l.count) + 1 && h[0] == "time_s";
+    for (int c = 0; same && c < l.count; ++c)
+      same = h[static_cast<std::size_t>(c) + 1] == l.columns[c];
+    if (same) layout = &l;
+  }
   if (!layout) {
     std::string got;
     for (auto f : h) got += (got.empty() ? "" : ",") + std::string(f);
@@ -55,6 +62,7 @@ TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
   TimeRoadLog log;
   log.form = layout->form;
   log.identical_tracks = layout->count == 1;
+  log.four_corners = layout->count == 4;
   log.name = name;
   const std::size_t n = static_cast<std::size_t>(layout->count) + 1;
   while (csv.next()) {
@@ -62,7 +70,7 @@ TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
     if (f.size() != n)
       throw InputError(csv.where(), "expected " + std::to_string(n) + " columns, got " +
                                         std::to_string(f.size()));
-    double v[3] = {0, 0, 0};
+    double v[5] = {0, 0, 0, 0, 0};
     for (std::size_t c = 0; c < n; ++c)
       if (!parseNumber(f[c], v[c]) || !std::isfinite(v[c]))
         throw InputError(csv.where(), std::string(c == 0 ? "time_s" : layout->columns[c - 1]) +
@@ -73,6 +81,10 @@ TimeRoadLog parseTimeRoadCsv(const std::string& text, const std::string& name) {
     log.t_s.push_back(v[0]);
     log.left.push_back(v[1] * layout->scale);
     log.right.push_back((layout->count == 1 ? v[1] : v[2]) * layout->scale);
+    if (log.four_corners) {
+      log.rear_left.push_back(v[3] * layout->scale);
+      log.rear_right.push_back(v[4] * layout->scale);
+    }
   }
   if (log.t_s.size() < 2)
     throw InputError(name,
@@ -180,6 +192,15 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log,
                                                 const TimeRoadOptions& o,
                                                 nlohmann::json description) {
   DTWIN_CHECK(o.dx_m > 0 && o.highpass_hz > 0, "roadFromTimeLog: options");
+  if (log.form == TimeRoadLog::Form::Acceleration) {
+    // Integrated once to a velocity (the same quadrature and drift removal), then read as one.
+    TimeRoadLog v = log;
+    v.form = TimeRoadLog::Form::Velocity;
+    v.left = roadHeightFromVelocity(log.t_s, log.left, o.highpass_hz);
+    v.right =
+        log.identical_tracks ? v.left : roadHeightFromVelocity(log.t_s, log.right, o.highpass_hz);
+    return roadFromTimeLog(v, distance, o, std::move(description));
+  }
   std::vector<double> left = log.left, right = log.right;
   const bool velocity = log.form == TimeRoadLog::Form::Velocity;
   std::vector<double> rate_l,
@@ -267,6 +288,29 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log,
   }
   return std::make_shared<GridRoad>(x_lo, o.dx_m, std::move(gl), std::move(gr),
                                     std::move(description), std::move(sl), std::move(sr));
+}
+
+std::shared_ptr<const CornerRoad> cornerRoadFromTimeLog(
+    const TimeRoadLog& log, const std::function<double(double)>& distance, double wheelbase_m,
+    const TimeRoadOptions& o, nlohmann::json description) {
+  DTWIN_CHECK(log.four_corners && log.rear_left.size() == log.t_s.size() &&
+                  log.rear_right.size() == log.t_s.size(),
+              "cornerRoadFromTimeLog: a four-corner log");
+  TimeRoadLog front = log, rear = log;
+  front.four_corners = rear.four_corners = false;
+  front.rear_left.clear();
+  front.rear_right.clear();
+  rear.left = log.rear_left;
+  rear.right = log.rear_right;
+  rear.rear_left.clear();
+  rear.rear_right.clear();
+  auto f = roadFromTimeLog(front, distance, o, description);
+  // The rear wheels' profile on the distance their contact points have: a rear wheel at time t is
+  // at distance(t) - wheelbase_m and reads its sample of time t there.
+  auto r = roadFromTimeLog(
+      rear, [&distance, wheelbase_m](double t) { return distance(t) - wheelbase_m; }, o,
+      description);
+  return std::make_shared<CornerRoad>(std::move(f), std::move(r), std::move(description));
 }
 
 }  // namespace dtwin

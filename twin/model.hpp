@@ -22,7 +22,6 @@ namespace dtwin {
 enum class Corner : int { FL = 0, FR = 1, RL = 2, RR = 3 };
 inline constexpr std::array<const char*, 4> kCornerNames = {"fl", "fr", "rl", "rr"};
 inline bool isFront(int corner) { return corner < 2; }
-inline Track cornerTrack(int corner) { return corner % 2 == 0 ? Track::Left : Track::Right; }
 
 enum class SuspensionTopology { MacPherson, SolidAxle };
 

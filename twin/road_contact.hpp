@@ -136,7 +136,7 @@ struct TireCorner {
     c.signalAt(corner, weight, ahead);
     signalPoint(c, t, c.speed.distance(t) + hub_x - model->vehicle().a + ahead, hub_xd, x,
                 contact_speed);
-    return weight * c.road->sample(cornerTrack(corner), x).slope * contact_speed;
+    return weight * c.road->sampleAt(corner, x).slope * contact_speed;
   }
   /// The road the wheel meets at road distance x_road (tire-input effects and the signal's gain
   /// applied), the speed at which the wheel travels along it, and the road before the tire-input
@@ -151,10 +151,15 @@ struct TireCorner {
     c.signalAt(corner, gain, ahead);
     double x = 0.0;
     signalPoint(c, t, x_road + ahead, hub_xd, x, contact_speed);
-    RoadSample rs = c.road->sample(tr, x);
+    RoadSample rs = c.road->sampleAt(corner, x);
     road_h = rs.height_m;  // the road under the wheel, before tire-input effects
-    for (auto& [eff, s] : filters)
-      rs = eff->filterRoad(*c.road, tr, x, ParamValues(c.p + s, eff->parameters().size()));
+    if (!filters.empty()) {
+      // A tire-input effect reads a track: given this corner's view of the road, it reads the
+      // wheel's own profile on a four-corner road (on any other the track's, as before).
+      const CornerView view(*c.road, corner);
+      for (auto& [eff, s] : filters)
+        rs = eff->filterRoad(view, tr, x, ParamValues(c.p + s, eff->parameters().size()));
+    }
     if (gain != 1.0) {
       rs.height_m *= gain;
       rs.slope *= gain;

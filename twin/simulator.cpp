@@ -128,8 +128,8 @@ struct Simulator::Impl {
       const double x_hi = sc.speed.distance(tb) + 0.1,
                    x_lo = sc.speed.distance(0) - model->vehicle().wheelbase() - 1.0;
       for (double x = x_lo; x <= x_hi; x += 0.05)
-        for (Track t : {Track::Left, Track::Right}) {
-          const RoadSample a = roads[0]->sample(t, x), b = roads[r]->sample(t, x);
+        for (int c = 0; c < 4; ++c) {
+          const RoadSample a = roads[0]->sampleAt(c, x), b = roads[r]->sampleAt(c, x);
           if (a.height_m != b.height_m || a.slope != b.slope)
             throw InputError("runBranched",
                              "road " + std::to_string(r) +

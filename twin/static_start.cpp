@@ -122,8 +122,7 @@ void StaticStart::setEquilibrium(State& s) {
                  shift = delay != 0.0 ? ctx.speed.distance(delay) - ctx.speed.distance(0.0) : 0.0;
     double weight = 1.0, ahead = 0.0;
     ctx.signalAt(c, weight, ahead);
-    target[c] =
-        weight * ctx.road->sample(cornerTrack(c), x_road + ahead + shift).height_m + R0 - rho;
+    target[c] = weight * ctx.road->sampleAt(c, x_road + ahead + shift).height_m + R0 - rho;
     if (M.topology() == SuspensionTopology::SolidAxle) {
       const double* p = ctx.p;
       const double k = p[M.interfaceSlots()[0]], F0 = p[M.interfacePreloadSlot()];

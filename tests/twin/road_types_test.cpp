@@ -191,7 +191,8 @@ TEST(RoadTypes, ARoadLoggedAgainstTimeReachesTheRearAxleAWheelbaseLater) {
               (dir / "s.toml").string());
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("road.highpass_hz: applies to a road-velocity log only"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "road.highpass_hz: applies to a road-velocity or acceleration log only"),
               std::string::npos)
         << e.what();
   }

@@ -21,9 +21,10 @@ std::shared_ptr<const RoadSetting> CsvTimeRoadSetting::parse(TableReader& rr) {
     throw InputError(rr.where("dx_m"), "must lie in [1e-3, 1] m, got " + formatNumber(rs->dx_m));
   rs->log = std::make_shared<const TimeRoadLog>(readTimeRoadCsv(rs->path));
   if (rr.has("highpass_hz")) {
-    if (rs->log->form != TimeRoadLog::Form::Velocity)
-      throw InputError(rr.where("highpass_hz"),
-                       "applies to a road-velocity log only (" + rs->path + " gives heights)");
+    if (rs->log->form == TimeRoadLog::Form::Height)
+      throw InputError(
+          rr.where("highpass_hz"),
+          "applies to a road-velocity or acceleration log only (" + rs->path + " gives heights)");
     rs->highpass_hz = *rr.number("highpass_hz");
     if (!(rs->highpass_hz >= 1e-3 && rs->highpass_hz <= 10.0))
       throw InputError(rr.where("highpass_hz"),
@@ -34,16 +35,21 @@ std::shared_ptr<const RoadSetting> CsvTimeRoadSetting::parse(TableReader& rr) {
 
 nlohmann::json CsvTimeRoadSetting::toJson() const {
   std::string bytes;
-  for (const auto* v : {&log->t_s, &log->left, &log->right})
+  for (const auto* v : {&log->t_s, &log->left, &log->right, &log->rear_left, &log->rear_right})
     bytes.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
+  const char* form = log->form == TimeRoadLog::Form::Height     ? "height"
+                     : log->form == TimeRoadLog::Form::Velocity ? "velocity"
+                                                                : "acceleration";
   nlohmann::json j = {{"type", "csv_time"},
                       {"path", path},
-                      {"form", log->form == TimeRoadLog::Form::Height ? "height" : "velocity"},
-                      {"tracks", log->identical_tracks ? "identical" : "left and right"},
+                      {"form", form},
+                      {"tracks", log->four_corners       ? "four corners"
+                                 : log->identical_tracks ? "identical"
+                                                         : "left and right"},
                       {"rows", log->t_s.size()},
                       {"content", hexId(fnv1a64(bytes))},
                       {"dx_m", dx_m}};
-  if (log->form == TimeRoadLog::Form::Velocity) j["highpass_hz"] = highpass_hz;
+  if (log->form != TimeRoadLog::Form::Height) j["highpass_hz"] = highpass_hz;
   return j;
 }
 
@@ -61,8 +67,9 @@ std::shared_ptr<const Road> CsvTimeRoadSetting::make(const ScenarioSpec& s, cons
   o.dx_m = dx_m;
   o.highpass_hz = highpass_hz;
   o.x_from_m = -v.wheelbase() - 1.0;
-  return roadFromTimeLog(
-      *log, [&s](double t) { return s.speed.distance(t); }, o, toJson());
+  const auto distance = [&s](double t) { return s.speed.distance(t); };
+  if (log->four_corners) return cornerRoadFromTimeLog(*log, distance, v.wheelbase(), o, toJson());
+  return roadFromTimeLog(*log, distance, o, toJson());
 }
 
 }  // namespace dtwin

@@ -234,7 +234,7 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log,
     throw InputError(
         log.name,
         "the vehicle moves past fewer than two of its samples: no profile against distance");
-  const double x_lo = std::min(o.x_from_m, x.front()), x_hi = x.back();
+  const double x_lo = std::min(o.x_from_m, x.front()), x_hi = x.back() + std::max(0.0, o.x_past_m);
   const double points = (x_hi - x_lo) / o.dx_m + 1;
   if (!(points <= 1e7))
     throw InputError(log.name, "the profile would need " + formatNumber(points, 3) +
@@ -269,9 +269,13 @@ std::shared_ptr<const GridRoad> roadFromTimeLog(const TimeRoadLog& log,
       gr[i] = hr.front();
       continue;
     }
-    if (xi >= x.back()) {
-      gl[i] = hl.back();
-      gr[i] = hr.back();
+    if (xi >= x.back()) {  // run on along the last slope (TimeRoadOptions::x_past_m)
+      gl[i] = hl.back() + ml.back() * (xi - x.back());
+      gr[i] = hr.back() + mr.back() * (xi - x.back());
+      if (own_slopes) {
+        sl[i] = ml.back();
+        sr[i] = mr.back();
+      }
       continue;
     }
     while (x[j + 1] < xi) ++j;

@@ -57,6 +57,10 @@ struct TimeRoadOptions {
   double highpass_hz =
       0.1;  ///< drift removal of a velocity log (each integration of an acceleration)
   double x_from_m = -5.0;  ///< the grid starts here (the rear axle's start, with a margin)
+  /// The grid runs on this far past the last sample, along its last slope: a wheel whose hub
+  /// sits a little ahead of its static place (the suspension's kinematics) meets the log's last
+  /// sample before the run ends, and would otherwise read the hold's zero slope there.
+  double x_past_m = 0.5;
 };
 
 /// The profile against distance: each sample at the distance the front axle had travelled at its
@@ -65,7 +69,8 @@ struct TimeRoadOptions {
 /// The kept samples are joined by the cubic Hermite interpolant and sampled on the uniform grid of
 /// dx_m. Its slopes: a velocity log's own velocity over the speed (dx/dt from `distance`) where the
 /// vehicle moves faster than 0.5 m/s, else three-point slopes (exact for quadratics). Before the
-/// first kept distance the first height is held, after the last the last. Throws
+/// first kept distance the first height is held; after the last the profile runs on along its
+/// last slope for options.x_past_m, and is held from there. Throws
 /// InputError(log.name, rule) when a height (after integration) is beyond ±10 m, fewer than two
 /// samples are at distinct distances, or the grid would exceed 1e7 points. An acceleration log is
 /// integrated to a velocity first (roadHeightFromVelocity) and then read as one. Of a four-corner

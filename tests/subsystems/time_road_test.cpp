@@ -271,3 +271,42 @@ TEST(TimeRoad, AVelocityLogsGridKeepsItsOwnSlopes) {
                                      A * w / speed * std::cos(w * x / speed)));
   EXPECT_LT(worst, 0.003 * A * w / speed) << worst / (A * w / speed);
 }
+
+// Past the log's last sample the profile runs on along its last slope for x_past_m, then holds:
+// a wheel a few centimetres ahead of its static place at the run's last time still reads the
+// road's motion (the hold's zero slope stopped the hub dead on a drive's last record, a 17-sigma
+// miss of the body accelerometer there). Closed form: a road rising at a constant rate.
+TEST(TimeRoad, TheProfileRunsOnAlongItsLastSlopePastTheLogsEnd) {
+  const double dt = 0.01, speed = 10.0, rate = 0.03;  // m/s of vertical velocity
+  for (const auto form : {TimeRoadLog::Form::Height, TimeRoadLog::Form::Velocity}) {
+    TimeRoadLog log;
+    log.name = "end.csv";
+    log.form = form;
+    log.identical_tracks = true;
+    for (int k = 0; k <= 6000; ++k) {
+      const double t = dt * k;
+      log.t_s.push_back(t);
+      // The height form a ramp; the velocity form a 1 Hz sine (a constant velocity is drift).
+      log.left.push_back(form == TimeRoadLog::Form::Height ? rate * t
+                                                           : rate * std::cos(2 * kPi * t + 0.3));
+      log.right.push_back(log.left.back());
+    }
+    TimeRoadOptions o;
+    o.highpass_hz = 0.05;  // (a height log has none)
+    const auto road = roadFromTimeLog(log, [&](double t) { return speed * t; }, o, {});
+    const double end = speed * 60.0, slope = rate / speed;
+    const RoadSample at_end = road->sample(Track::Left, end);
+    for (const double past : {0.01, 0.05, 0.3}) {
+      const RoadSample s = road->sample(Track::Left, end + past);
+      EXPECT_NEAR(s.slope, at_end.slope, 1e-9 + 1e-6 * slope) << past;
+      EXPECT_NEAR(s.height_m, at_end.height_m + at_end.slope * past, 1e-9) << past;
+    }
+    const double last =
+        form == TimeRoadLog::Form::Height ? slope : slope * std::cos(120 * kPi + 0.3);
+    EXPECT_NEAR(at_end.slope, last, 0.02 * slope);
+    // Held from x_past_m on.
+    EXPECT_EQ(road->sample(Track::Left, end + 2.0).slope, 0.0);
+    EXPECT_NEAR(road->sample(Track::Left, end + 2.0).height_m, at_end.height_m + at_end.slope * 0.5,
+                0.02 * slope * 0.5 + 1e-6);
+  }
+}

@@ -683,20 +683,25 @@ CrgSurface Parser::run() {
 
 }  // namespace
 
+/// The long sections' interval j and the fraction fv of v in it, as crgEvaluv2z finds them: held
+/// at the outer sections (fv 0 at the rightmost, 1 at the leftmost).
+static void vInterval(const std::vector<double>& v_m, double v, std::size_t& j, double& fv) {
+  j = 0;
+  fv = 0.0;
+  if (v <= v_m.front()) return;
+  if (v >= v_m.back()) {
+    j = v_m.size() - 2;
+    fv = 1.0;
+    return;
+  }
+  j = static_cast<std::size_t>(std::upper_bound(v_m.begin(), v_m.end(), v) - v_m.begin()) - 1;
+  fv = (v - v_m[j]) / (v_m[j + 1] - v_m[j]);
+}
+
 double CrgSurface::nodeHeight(std::size_t k, double v) const {
-  const std::size_t nv = v_m.size();
   std::size_t j = 0;
   double fv = 0.0;
-  if (v <= v_m.front()) {
-    j = 0;
-    fv = 0.0;
-  } else if (v >= v_m.back()) {
-    j = nv - 2;
-    fv = 1.0;
-  } else {
-    j = static_cast<std::size_t>(std::upper_bound(v_m.begin(), v_m.end(), v) - v_m.begin()) - 1;
-    fv = (v - v_m[j]) / (v_m[j + 1] - v_m[j]);
-  }
+  vInterval(v_m, v, j, fv);
   const double z0 = gridHeight(k, j), z1 = gridHeight(k, j + 1);
   double z = fv == 0.0 ? z0 : fv == 1.0 ? z1 : z0 + (z1 - z0) * fv;
   z += ref_z_m[k];
@@ -719,18 +724,9 @@ double CrgSurface::height(double u, double v) const {
       fu -= static_cast<double>(k);
     }
   }
-  const std::size_t nv = v_m.size();
   std::size_t j = 0;
   double fv = 0.0;
-  if (v <= v_m.front()) {
-    fv = 0.0;
-  } else if (v >= v_m.back()) {
-    j = nv - 2;
-    fv = 1.0;
-  } else {
-    j = static_cast<std::size_t>(std::upper_bound(v_m.begin(), v_m.end(), v) - v_m.begin()) - 1;
-    fv = (v - v_m[j]) / (v_m[j + 1] - v_m[j]);
-  }
+  vInterval(v_m, v, j, fv);
   // Bilinear, written as the C API writes it.
   const double z00 = gridHeight(k, j);
   const double z10 = gridHeight(k + 1, j) - z00;

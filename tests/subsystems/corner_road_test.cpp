@@ -13,19 +13,13 @@
 #include "common/errors.hpp"
 #include "subsystems/road.hpp"
 #include "subsystems/time_road.hpp"
+#include "time_road_util.hpp"
 
 using namespace dtwin;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-std::string errorOf(const std::string& text) {
-  try {
-    parseTimeRoadCsv(text, "road.csv");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using dtwin_test::kPi;
+std::string errorOf(const std::string& text) { return dtwin_test::timeRoadError(text); }
 /// Each wheel's height at time t: a different sum of sines per corner.
 double wheel(int c, double t) {
   return 1e-3 * (std::sin(2 * kPi * (0.7 + 0.4 * c) * t + c) + 0.3 * std::cos(2 * kPi * 3.1 * t));

@@ -7,19 +7,13 @@
 
 #include "common/errors.hpp"
 #include "subsystems/time_road.hpp"
+#include "time_road_util.hpp"
 
 using namespace dtwin;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-std::string errorOf(const std::string& text) {
-  try {
-    parseTimeRoadCsv(text, "road.csv");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using dtwin_test::kPi;
+std::string errorOf(const std::string& text) { return dtwin_test::timeRoadError(text); }
 }  // namespace
 
 TEST(TimeRoad, ParsesEveryForm) {

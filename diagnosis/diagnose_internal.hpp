@@ -163,20 +163,16 @@ struct Linearisation {
   Eigen::VectorXd r;
   Eigen::MatrixXd J;  ///< ∂η/∂θ, weighted
   Eigen::HouseholderQR<Eigen::MatrixXd> qr;
-  Eigen::MatrixXd Q;  ///< orthonormal basis of span(J)
-  /// G with span(J) projected out.
+  /// Per value of θ: it sits on a bound of its range and the residual pushes it beyond (the
+  /// unconstrained step Jₖᵀ r points out of the range). Re-calibrating cannot move it that way,
+  /// so what it would absorb is not projected out of a candidate's contribution.
+  std::vector<bool> held;
+  Eigen::MatrixXd Q;  ///< orthonormal basis of the span of J's columns not held
+  /// G with what re-calibrating θ could absorb (span(Q)) projected out.
   Eigen::MatrixXd project(const Eigen::MatrixXd& G) const { return G - Q * (Q.transpose() * G); }
-  /// G with the span of J's other columns than `k` projected out: what re-calibrating every value
-  /// but θ_k could absorb (the score of θ_k beyond its bound).
-  Eigen::MatrixXd projectWithout(std::size_t k, const Eigen::MatrixXd& G) const {
-    if (J.cols() <= 1) return G;
-    Eigen::MatrixXd Jk(J.rows(), J.cols() - 1);
-    for (long c = 0, o = 0; c < J.cols(); ++c)
-      if (c != static_cast<long>(k)) Jk.col(o++) = J.col(c);
-    Eigen::HouseholderQR<Eigen::MatrixXd> q(Jk);
-    const Eigen::MatrixXd Qk = q.householderQ() * Eigen::MatrixXd::Identity(Jk.rows(), Jk.cols());
-    return G - Qk * (Qk.transpose() * G);
-  }
+  /// G with the span of J's other columns than `k` (and than the held ones) projected out: what
+  /// re-calibrating every value but θ_k could absorb (the score of θ_k beyond its bound).
+  Eigen::MatrixXd projectWithout(std::size_t k, const Eigen::MatrixXd& G) const;
 };
 
 /// One probe of one effect: columns of its parameter vectors (one strength parameter moved per
@@ -190,6 +186,10 @@ struct ProbeGroup {
 };
 
 Linearisation linearise(const Diagnosis& d);
+/// Fills lin.held and lin.Q from lin.J and lin.r, given which values sit on their lower or upper
+/// bound (linearise() calls it; a test may on a hand-made J).
+void setProjection(Linearisation& lin, const std::vector<bool>& at_lower,
+                   const std::vector<bool>& at_upper);
 std::vector<ProbeGroup> probesOf(std::size_t e, const CandidateSpec& candidate,
                                  double at = std::numeric_limits<double>::quiet_NaN(),
                                  long theta_index = -1);

@@ -49,6 +49,18 @@ std::string withoutUnit(const std::string& parameter) {
   return w;
 }
 
+/// An orthonormal basis of the span of J's columns not marked in `skip` (n × 0 when none is left).
+Eigen::MatrixXd basisWithout(const Eigen::MatrixXd& J, const std::vector<bool>& skip) {
+  long kept = 0;
+  for (long c = 0; c < J.cols(); ++c) kept += skip[static_cast<std::size_t>(c)] ? 0 : 1;
+  Eigen::MatrixXd Jk(J.rows(), kept);
+  for (long c = 0, o = 0; c < J.cols(); ++c)
+    if (!skip[static_cast<std::size_t>(c)]) Jk.col(o++) = J.col(c);
+  if (kept == 0) return Jk;
+  Eigen::HouseholderQR<Eigen::MatrixXd> q(Jk);
+  return q.householderQ() * Eigen::MatrixXd::Identity(Jk.rows(), kept);
+}
+
 }  // namespace
 
 Linearisation linearise(const Diagnosis& d) {
@@ -103,10 +115,32 @@ Linearisation linearise(const Diagnosis& d) {
           std::sqrt(w[i]) * (plus[k][i] - minus[k][i]) / (up[k] + down[k]);
   }
   lin.qr.compute(J);
-  lin.Q = lin.qr.householderQ() *
-          Eigen::MatrixXd::Identity(static_cast<long>(n), static_cast<long>(dim));
   lin.J = std::move(J);
+  std::vector<bool> at_lower(dim), at_upper(dim);
+  for (std::size_t k = 0; k < dim; ++k) at_lower[k] = down[k] == 0.0, at_upper[k] = up[k] == 0.0;
+  setProjection(lin, at_lower, at_upper);
   return lin;
+}
+
+void setProjection(Linearisation& lin, const std::vector<bool>& at_lower,
+                   const std::vector<bool>& at_upper) {
+  // A value on a bound that the residual pushes beyond (a compensation the range stops, e.g. an
+  // inertia at its lower bound): its column absorbs nothing a candidate explains.
+  const Eigen::VectorXd push = lin.J.transpose() * lin.r;  // the unconstrained step's direction
+  const auto dim = static_cast<std::size_t>(lin.J.cols());
+  lin.held.assign(dim, false);
+  for (std::size_t k = 0; k < dim; ++k) {
+    const auto kk = static_cast<long>(k);
+    lin.held[k] = (at_lower[k] && push[kk] < 0.0) || (at_upper[k] && push[kk] > 0.0);
+  }
+  lin.Q = basisWithout(lin.J, lin.held);
+}
+
+Eigen::MatrixXd Linearisation::projectWithout(std::size_t k, const Eigen::MatrixXd& G) const {
+  auto skip = held;
+  if (k < skip.size()) skip[k] = true;
+  const Eigen::MatrixXd Qk = basisWithout(J, skip);
+  return G - Qk * (Qk.transpose() * G);
 }
 
 /// The probes of effect `e` (docs/diagnosis.md, screening): every strength parameter at 5, 20 and

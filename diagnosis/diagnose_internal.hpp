@@ -163,16 +163,22 @@ struct Linearisation {
   Eigen::VectorXd r;
   Eigen::MatrixXd J;  ///< ∂η/∂θ, weighted
   Eigen::HouseholderQR<Eigen::MatrixXd> qr;
-  /// Per value of θ: it sits on a bound of its range and the residual pushes it beyond (the
-  /// unconstrained step Jₖᵀ r points out of the range). Re-calibrating cannot move it that way,
-  /// so what it would absorb is not projected out of a candidate's contribution.
-  std::vector<bool> held;
+  /// Per value of θ: +1 (−1) when it sits on its lower (upper) bound and the residual pushes it
+  /// beyond (the unconstrained step Jₖᵀ r points out of the range): re-calibrating may move it
+  /// back inside only, so it is not projected out like the free values; 0 otherwise.
+  std::vector<int> held;
   Eigen::MatrixXd Q;  ///< orthonormal basis of the span of J's columns not held
-  /// G with what re-calibrating θ could absorb (span(Q)) projected out.
+  /// G with what re-calibrating the free values could absorb (span(Q)) projected out.
   Eigen::MatrixXd project(const Eigen::MatrixXd& G) const { return G - Q * (Q.transpose() * G); }
-  /// G with the span of J's other columns than `k` (and than the held ones) projected out: what
-  /// re-calibrating every value but θ_k could absorb (the score of θ_k beyond its bound).
+  /// G with the span of the free columns of J other than `k` projected out: what re-calibrating
+  /// every free value but θ_k could absorb (the score of θ_k beyond its bound).
   Eigen::MatrixXd projectWithout(std::size_t k, const Eigen::MatrixXd& G) const;
+  /// The score of a probe group whose contributions are `Gp` (project(G), or projectWithout(skip,
+  /// G) for θ_skip's own probes): the weighted SSE the group removes, S = ‖r‖² − min ‖r − Gp c −
+  /// H a‖² over c and over a ≥ 0, H the held values' columns (projected alike, signed inward),
+  /// less what H alone removes. With no held value, S = rᵀ P_Gp r. `coef` receives the c of the
+  /// minimum; `rank` the rank of Gp (the score's degrees of freedom).
+  double score(const Eigen::MatrixXd& Gp, long skip, Eigen::VectorXd& coef, long& rank) const;
 };
 
 /// One probe of one effect: columns of its parameter vectors (one strength parameter moved per

@@ -125,22 +125,65 @@ Linearisation linearise(const Diagnosis& d) {
 void setProjection(Linearisation& lin, const std::vector<bool>& at_lower,
                    const std::vector<bool>& at_upper) {
   // A value on a bound that the residual pushes beyond (a compensation the range stops, e.g. an
-  // inertia at its lower bound): its column absorbs nothing a candidate explains.
+  // inertia at its lower bound): re-calibrating cannot move it that way.
   const Eigen::VectorXd push = lin.J.transpose() * lin.r;  // the unconstrained step's direction
   const auto dim = static_cast<std::size_t>(lin.J.cols());
-  lin.held.assign(dim, false);
+  lin.held.assign(dim, 0);
+  std::vector<bool> skip(dim, false);
   for (std::size_t k = 0; k < dim; ++k) {
     const auto kk = static_cast<long>(k);
-    lin.held[k] = (at_lower[k] && push[kk] < 0.0) || (at_upper[k] && push[kk] > 0.0);
+    lin.held[k] = at_lower[k] && push[kk] < 0.0 ? 1 : at_upper[k] && push[kk] > 0.0 ? -1 : 0;
+    skip[k] = lin.held[k] != 0;
   }
-  lin.Q = basisWithout(lin.J, lin.held);
+  lin.Q = basisWithout(lin.J, skip);
 }
 
 Eigen::MatrixXd Linearisation::projectWithout(std::size_t k, const Eigen::MatrixXd& G) const {
-  auto skip = held;
-  if (k < skip.size()) skip[k] = true;
+  std::vector<bool> skip(held.size());
+  for (std::size_t c = 0; c < held.size(); ++c) skip[c] = held[c] != 0 || c == k;
   const Eigen::MatrixXd Qk = basisWithout(J, skip);
   return G - Qk * (Qk.transpose() * G);
+}
+
+double Linearisation::score(const Eigen::MatrixXd& Gp, long skip, Eigen::VectorXd& coef,
+                            long& rank) const {
+  // The held values' columns, signed inward and projected as Gp is (at most kMaxHeld: beyond, the
+  // rest stay fixed on their bounds).
+  constexpr std::size_t kMaxHeld = 6;
+  std::vector<std::size_t> hk;
+  for (std::size_t k = 0; k < held.size(); ++k)
+    if (held[k] != 0 && static_cast<long>(k) != skip && hk.size() < kMaxHeld) hk.push_back(k);
+  Eigen::MatrixXd H(J.rows(), static_cast<long>(hk.size()));
+  for (std::size_t i = 0; i < hk.size(); ++i)
+    H.col(static_cast<long>(i)) = held[hk[i]] * J.col(static_cast<long>(hk[i]));
+  if (!hk.empty()) H = skip >= 0 ? projectWithout(static_cast<std::size_t>(skip), H) : project(H);
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod_g(Gp);
+  rank = cod_g.rank();
+  coef = Eigen::VectorXd::Zero(Gp.cols());
+  // Bounded least squares by its active sets: for each subset of the held columns let free, the
+  // unconstrained fit; the best fit whose held coefficients are all ≥ 0 is the bounded minimum.
+  auto best = [&](bool with_g, Eigen::VectorXd* c_out) {
+    double top = 0.0;
+    for (std::size_t mask = 0; mask < (std::size_t{1} << hk.size()); ++mask) {
+      const long nh = __builtin_popcountll(mask);
+      Eigen::MatrixXd M(J.rows(), nh + (with_g ? Gp.cols() : 0));
+      for (long i = 0, o = 0; i < static_cast<long>(hk.size()); ++i)
+        if (mask >> i & 1U) M.col(o++) = H.col(i);
+      if (with_g) M.rightCols(Gp.cols()) = Gp;
+      if (M.cols() == 0) continue;
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(M);
+      const Eigen::VectorXd x = cod.solve(r);
+      if (nh > 0 && x.head(nh).minCoeff() < 0.0) continue;
+      const double s = (M * x).squaredNorm();
+      if (s <= top) continue;
+      top = s;
+      if (c_out) *c_out = x.tail(Gp.cols());
+    }
+    return top;
+  };
+  if (rank == 0) return 0.0;
+  const double with = best(true, &coef);
+  return hk.empty() ? with : std::max(0.0, with - best(false, nullptr));
 }
 
 /// The probes of effect `e` (docs/diagnosis.md, screening): every strength parameter at 5, 20 and
@@ -268,12 +311,12 @@ std::vector<bool> scoreProbes(Diagnosis& d, const Linearisation& lin,
         k_range >= 0 ? lin.projectWithout(static_cast<std::size_t>(k_range), G) : lin.project(G);
     auto& cand = d.stage()[e];
     cand.max_signal = std::max(cand.max_signal, Gp.squaredNorm());
-    // S = rᵀ Gp (Gpᵀ Gp)⁺ Gpᵀ r (rank-revealing: a column the base absorbs entirely drops out).
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(Gp);
-    const long rank = cod.rank();
+    // S = rᵀ Gp (Gpᵀ Gp)⁺ Gpᵀ r (rank-revealing: a column the base absorbs entirely drops out),
+    // with a value held on its bound free to move back inside only (Linearisation::score).
+    Eigen::VectorXd coef;
+    long rank = 0;
+    const double S = lin.score(Gp, k_range, coef, rank);
     if (rank == 0) continue;
-    const Eigen::VectorXd coef = cod.solve(lin.r);
-    const double S = (Gp * coef).squaredNorm();
     if (S <= cand.score) continue;
     cand.score = S;
     cand.score_dof = static_cast<int>(rank);

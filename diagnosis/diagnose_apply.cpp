@@ -15,26 +15,16 @@ namespace dtwin::diag {
 
 // ------------------------------------------------------------------ propose
 
-/// Propose (verdict "unexplained"; docs/diagnosis.md): every library term (proposal.hpp) simulated
-/// as a small strut force at θ̂ (its peak 200 N over the base run's states), its contribution
-/// projected off span(J), and the best subset of at most options.propose_terms terms by BIC. A
-/// subset is proposed only when it beats the empty model by more than bic_strong.
-void propose(Diagnosis& d) {
-  auto& res = d.res;
-  const Linearisation lin = linearise(d);
-  double q_comp = 0, q_reb = 0;
-  const auto traces = d.base_obj->traces(lin.theta_hat);
-  for (const auto& t : traces)
-    for (const char* c : {"fl", "fr", "rl", "rr"})
-      for (double q : t.column(std::string("susp_defl_") + c + "_m")) {
-        q_comp = std::max(q_comp, q);
-        q_reb = std::max(q_reb, -q);
-      }
-  const auto library = termLibrary(q_comp, q_reb);
+namespace {
+
+/// Each library term's amplitude: the one that makes its force peak at 200 N over the base run's
+/// suspension states (0 for a term that exerts no force there).
+std::vector<double> termAmplitudes(const std::vector<LibraryTerm>& library,
+                                   const std::vector<Trace>& traces) {
   std::vector<double> amplitude(library.size(), 0.0);
+  const char* corners[] = {"fl", "fr", "rl", "rr"};
   for (std::size_t j = 0; j < library.size(); ++j) {
     double peak = 0;
-    const char* corners[] = {"fl", "fr", "rl", "rr"};
     for (const auto& t : traces)
       for (int c = 0; c < 4; ++c) {
         const auto& q = t.column(std::string("susp_defl_") + corners[c] + "_m");
@@ -47,6 +37,15 @@ void propose(Diagnosis& d) {
       }
     if (peak > 0) amplitude[j] = 200.0 / peak;
   }
+  return amplitude;
+}
+
+/// The predictions with each library term added at its amplitude to the base optimum (empty for
+/// a term of amplitude 0 or whose run failed).
+std::vector<std::vector<double>> termPredictions(const Diagnosis& d,
+                                                 const std::vector<LibraryTerm>& library,
+                                                 const std::vector<double>& amplitude,
+                                                 const std::vector<double>& theta_hat) {
   std::vector<std::unique_ptr<calib::LabObjective>> objs(library.size());
   for (std::size_t j = 0; j < library.size(); ++j) {
     if (amplitude[j] == 0) continue;
@@ -67,11 +66,50 @@ void propose(Diagnosis& d) {
   d.report("propose: library terms", 0, library.size());
   parallelFor(library.size(), d.options.threads, [&](std::size_t j, int) {
     if (!objs[j]) return;
-    auto th = lin.theta_hat;
+    auto th = theta_hat;
     th.push_back(amplitude[j]);
     eta[j] = objs[j]->predict(th);
   });
   d.report("propose: library terms", library.size(), library.size());
+  return eta;
+}
+
+/// The proposal's sentence: how many terms, the first's ΔBIC, their share, the weak ones left out.
+std::string proposalNote(const std::vector<ProposedTerm>& proposal, const std::string& lib_words,
+                         std::size_t dropped, double bic_strong) {
+  double kept_share = 0;
+  for (const auto& t : proposal) kept_share += t.explained;
+  return "A sparse regression of the residual on " + lib_words +
+         " (best subset by BIC, linearised at the base optimum) proposes " +
+         std::to_string(proposal.size()) + " term" + (proposal.size() > 1 ? "s" : "") + " (ΔBIC " +
+         fmt("%.1f", proposal.front().delta_bic) + " for the first; together about " +
+         fmt("%.0f", 100 * std::min(1.0, kept_share)) + " % of the excess residual" +
+         (dropped ? "; " + std::to_string(dropped) + " weaker term" + (dropped > 1 ? "s" : "") +
+                        " with ΔBIC above −" + fmt("%.0f", bic_strong) + " left out"
+                  : std::string()) +
+         "): paste it into the study file, or pass proposal.toml to --apply, and apply it.";
+}
+
+}  // namespace
+
+/// Propose (verdict "unexplained"; docs/diagnosis.md): every library term (proposal.hpp) simulated
+/// as a small strut force at θ̂ (its peak 200 N over the base run's states), its contribution
+/// projected off span(J), and the best subset of at most options.propose_terms terms by BIC. A
+/// subset is proposed only when it beats the empty model by more than bic_strong.
+void propose(Diagnosis& d) {
+  auto& res = d.res;
+  const Linearisation lin = linearise(d);
+  double q_comp = 0, q_reb = 0;
+  const auto traces = d.base_obj->traces(lin.theta_hat);
+  for (const auto& t : traces)
+    for (const char* c : {"fl", "fr", "rl", "rr"})
+      for (double q : t.column(std::string("susp_defl_") + c + "_m")) {
+        q_comp = std::max(q_comp, q);
+        q_reb = std::max(q_reb, -q);
+      }
+  const auto library = termLibrary(q_comp, q_reb);
+  const auto amplitude = termAmplitudes(library, traces);
+  const auto eta = termPredictions(d, library, amplitude, lin.theta_hat);
   const auto& w = d.base_obj->weights();
   const long n = lin.r.size();
   std::vector<std::size_t> used;
@@ -129,18 +167,7 @@ void propose(Diagnosis& d) {
   }
   for (std::size_t i = 0; i < res.proposal.size(); ++i)
     res.proposal[i].name = "proposed_" + std::to_string(i + 1);
-  double kept_share = 0;
-  for (const auto& t : res.proposal) kept_share += t.explained;
-  res.proposal_note =
-      "A sparse regression of the residual on " + lib_words +
-      " (best subset by BIC, linearised at the base optimum) proposes " +
-      std::to_string(res.proposal.size()) + " term" + (res.proposal.size() > 1 ? "s" : "") +
-      " (ΔBIC " + fmt("%.1f", res.proposal.front().delta_bic) + " for the first; together about " +
-      fmt("%.0f", 100 * std::min(1.0, kept_share)) + " % of the excess residual" +
-      (dropped ? "; " + std::to_string(dropped) + " weaker term" + (dropped > 1 ? "s" : "") +
-                     " with ΔBIC above −" + fmt("%.0f", d.options.bic_strong) + " left out"
-               : std::string()) +
-      "): paste it into the study file, or pass proposal.toml to --apply, and apply it.";
+  res.proposal_note = proposalNote(res.proposal, lib_words, dropped, d.options.bic_strong);
   res.summary += " " + res.proposal_note;
 }
 

@@ -95,8 +95,8 @@ TEST(FmuController, SkyhookOutsideMatchesTheSkyhookEffectInside) {
   for (const char* k : corners) act_vr.push_back(vr.at(std::string("in_actuator_") + k + "_N"));
   for (const char* k : corners) vz_vr.push_back(vr.at(std::string("body_vz_") + k + "_mps"));
   const std::vector<std::string> compared = {
-      "chassis_heave_m", "chassis_pitch_rad", "chassis_roll_rad", "chassis_heave_acc_mps2",
-      "hub_force_fl_N",  "hub_force_rr_N",    "susp_defl_fl_m",   "susp_defl_rl_m"};
+      "chassis_heave_m", "chassis_pitch_rad", "chassis_pitch_acc_radps2", "chassis_heave_acc_mps2",
+      "hub_force_fl_N",  "hub_force_rr_N",    "susp_defl_fl_m",           "susp_defl_rl_m"};
   std::vector<fmi2ValueReference> out_vr;
   for (const auto& n : compared) out_vr.push_back(vr.at(n));
   const auto in = fmu_test::scenarioInputs("diag_bump", dt);
@@ -151,11 +151,12 @@ TEST(FmuController, SkyhookOutsideMatchesTheSkyhookEffectInside) {
   ASSERT_EQ(off.code, 0) << off.err;
   const auto a = fmu_test::readCsv(d / "sky.csv"), b = fmu_test::readCsv(d / "off.csv");
   for (const auto& n : compared) {
-    const auto inside = fmu_test::compare(rows, a, n), passive = fmu_test::compare(rows, b, n);
-    ASSERT_GE(inside.rows, 3000u) << n;
+    const auto inside = fmu_test::compare(rows, a, n, 1e-3),
+               passive = fmu_test::compare(rows, b, n, 1e-3);
+    ASSERT_GE(inside.rows, 2999u) << n;
     std::printf("  %-24s max |outside - inside| %.3e (%.2f %% of range); vs no skyhook %.3e\n",
                 n.c_str(), inside.max_abs, 100 * inside.max_abs / inside.range, passive.max_abs);
-    EXPECT_LE(inside.max_abs, 0.02 * inside.range) << n;
+    EXPECT_LE(inside.max_abs, 0.01 * inside.range) << n;
     EXPECT_LE(inside.max_abs, 0.2 * passive.max_abs) << n << ": the skyhook changes it far more";
   }
 }

@@ -71,11 +71,11 @@ TEST(FmuExport, WritesTheLayoutAndADescriptionTheSchemaAccepts) {
   const auto vr = fmu_test::valueReferences(xml);
   std::set<unsigned> refs;
   for (const auto& [n, r] : vr) EXPECT_TRUE(refs.insert(r).second) << n << " repeats " << r;
-  EXPECT_EQ(vr.size(), 9u + 36u + 4u)
-      << "9 inputs, 32 run channels and 4 body velocities, 4 values";
+  EXPECT_EQ(vr.size(), 9u + 31u + 4u)
+      << "9 inputs, 27 run channels and 4 body velocities, 4 values";
   const std::regex var(
       "<ScalarVariable name=\"([^\"]+)\"[^>]*causality=\"([a-z]+)\" "
-      "variability=\"([a-z]+)\"( initial=\"([a-z]+)\")?>\\s*<Real([^/]*)/>");
+      "variability=\"([a-z]+)\"( initial=\"([a-z]+)\")?>\\s*<Real([^>]*)/>");
   int inputs = 0, outputs = 0, parameters = 0;
   for (auto it = std::sregex_iterator(xml.begin(), xml.end(), var); it != std::sregex_iterator();
        ++it) {
@@ -93,7 +93,7 @@ TEST(FmuExport, WritesTheLayoutAndADescriptionTheSchemaAccepts) {
     }
   }
   EXPECT_EQ(inputs, 9);
-  EXPECT_EQ(outputs, 36);
+  EXPECT_EQ(outputs, 31);
   EXPECT_EQ(parameters, 4);
   // The calibration's optimum is each parameter's start value.
   EXPECT_NE(xml.find("name=\"tire.stiffness\""), std::string::npos);
@@ -187,17 +187,22 @@ TEST(FmuExport, FmusimMatchesTwinSimulateOnTheSameDrive) {
       "fmusim: %zu communication steps of 1 ms in %.2f s wall (%.0f us per doStep, load "
       "and unzip included)\n",
       a.cols[0].size() - 1, fmusim_s, 1e6 * fmusim_s / static_cast<double>(a.cols[0].size()));
-  // Per channel: the largest difference over the drive, within 1 % of the channel's range over
-  // the drive (docs/fmu.md states the measured figures).
+  // Per channel: the largest difference over the drive, within 0.5 % of the channel's range over
+  // the drive (docs/fmu.md states the measured figures: at most 0.11 %). From the first step on:
+  // at t = 0 the scenario's speed is 0 (it jumps to 4 m/s right after, SpeedProfile) where the
+  // FMU is given the speed the car drives at, and the tire's force at rest differs with it.
   int compared = 0;
   for (const auto& name : b.names) {
     if (name == "time_s") continue;
-    const auto d = fmu_test::compare(a, b, name);
-    ASSERT_GE(d.rows, 3000u) << name;
+    const auto d = fmu_test::compare(a, b, name, 1e-3);
+    ASSERT_GE(d.rows, 2999u) << name;
     ++compared;
     std::printf("  %-26s max |FMU - simulate| %.3e  (range %.3e, %.3f %%)\n", name.c_str(),
                 d.max_abs, d.range, d.range > 0 ? 100 * d.max_abs / d.range : 0.0);
-    EXPECT_LE(d.max_abs, 0.01 * d.range + 1e-9) << name;
+    EXPECT_LE(d.max_abs, 0.005 * d.range + 1e-9) << name;
   }
-  EXPECT_EQ(compared, 32);
+  EXPECT_EQ(compared, 27);
+  // At t = 0 both are at the static equilibrium: the body's heave and pitch agree.
+  for (const char* name : {"chassis_heave_m", "chassis_pitch_rad", "susp_defl_fl_m"})
+    EXPECT_NEAR(a.column(name)->front(), b.column(name)->front(), 1e-9) << name;
 }

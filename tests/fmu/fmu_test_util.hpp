@@ -2,6 +2,8 @@
 // What the FMU tests share: the demo study's M1 exported from a calibration folder, the FMU
 // unzipped, a CSV read into columns, the inputs of a scenario as an FMU's input CSV, and the
 // variables of a modelDescription.xml by name.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -118,7 +120,11 @@ inline ScenarioInputs scenarioInputs(const std::string& name, double dt) {
   for (std::size_t k = 0; k <= n; ++k) {
     const double t = static_cast<double>(k) * dt, x = sc.speed.distance(t);
     in.t.push_back(t);
-    in.speed.push_back(sc.speed.speed(t));
+    // The speed just after t: a scenario that starts at speed (ramp_s = 0) has 0 at t = 0 and its
+    // speed right after, with no acceleration between (SpeedProfile); an FMU takes the slope of
+    // its speed input between communication points for the acceleration, so it is given the
+    // speed the car drives at.
+    in.speed.push_back(sc.speed.speed(std::max(t, 1e-12)));
     std::array<double, 4> h{};
     for (int c = 0; c < 4; ++c)
       h[static_cast<std::size_t>(c)] = road->sampleAt(c, x - (c < 2 ? 0.0 : wb)).height_m;
@@ -156,8 +162,9 @@ struct Difference {
   std::size_t rows = 0;
 };
 
+/// Rows at t < t_min are left out.
 inline Difference compare(const Table& a, const Table& b, const std::string& col,
-                          const std::string& time_a = "time",
+                          double t_min = 0.0, const std::string& time_a = "time",
                           const std::string& time_b = "time_s") {
   Difference d;
   const auto *ta = a.column(time_a), *tb = b.column(time_b), *ca = a.column(col),
@@ -167,7 +174,7 @@ inline Difference compare(const Table& a, const Table& b, const std::string& col
   std::size_t j = 0;
   for (std::size_t i = 0; i < ta->size(); ++i) {
     while (j < tb->size() && (*tb)[j] < (*ta)[i] - 1e-9) ++j;
-    if (j >= tb->size() || std::abs((*tb)[j] - (*ta)[i]) > 1e-9) continue;
+    if (j >= tb->size() || std::abs((*tb)[j] - (*ta)[i]) > 1e-9 || (*ta)[i] < t_min) continue;
     d.max_abs = std::max(d.max_abs, std::abs((*ca)[i] - (*cb)[j]));
     lo = std::min(lo, (*cb)[j]);
     hi = std::max(hi, (*cb)[j]);

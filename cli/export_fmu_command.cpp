@@ -61,10 +61,11 @@ CommandHandle addExportFmuCommand(CLI::App& root, const CommandContext& context)
       "--binaries", c.binaries,
       "Folder of the FMU runtime (dtwin_fmu.so and its libraries); default: this build's");
   s->add_flag("--quiet", c.quiet, "Print nothing on success");
-  addExamples(s, {"twin export-fmu --study data/studies/demo.toml --calibration out/calibration/M1 "
-                  "--out out/m1.fmu",
-                  "twin export-fmu --study data/studies/demo.toml --assembly M1 --effect "
-                  "skyhook:damping=2500 --out out/m1_skyhook.fmu"});
+  addExamples(s,
+              {"twin export-fmu --study data/studies/demo.toml --calibration out/calibration_rr/M1 "
+               "--out out/m1.fmu",
+               "twin export-fmu --study data/studies/demo.toml --assembly M1 --effect "
+               "skyhook:damping=2500 --out out/m1_skyhook.fmu"});
   CommandHandle handle{s, [cfg, command_line] { return runExportFmu(*cfg, command_line); }};
   handle.field_flags = {{"effects", "--effect"}, {"step", "--step"}, {"stop-time", "--stop-time"}};
   return handle;

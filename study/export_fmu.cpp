@@ -104,9 +104,21 @@ nlohmann::json settingsJson(const std::vector<ParameterSetting>& s) {
   return a;
 }
 
+/// The accuracy the calibration chose its integrator steps at (summary.json
+/// integrator_check.accuracy) when it is tighter than the study's, else 0: the twin runs at it, as
+/// `twin compare` does (docs/calibration.md, "The accuracy from the data").
+double calibratedAccuracy(const Study& study, const nlohmann::json& summary) {
+  if (!summary.is_object() || !summary.contains("integrator_check")) return 0.0;
+  const auto& c = summary.at("integrator_check");
+  if (!c.is_object() || !c.contains("accuracy") || !c.at("accuracy").is_number()) return 0.0;
+  const double a = c.at("accuracy").get<double>();
+  return a > 0.0 && a < study.simulation.accuracy ? a : 0.0;
+}
+
 /// The study the runtime reads: the user's, its vehicle file beside it, without the scenarios
-/// (their roads and speed traces are the FMU's inputs) and the [lab] times that need them.
-std::string runtimeStudy(const Study& study) {
+/// (their roads and speed traces are the FMU's inputs) and the [lab] times that need them;
+/// `accuracy` > 0 replaces [simulation] accuracy.
+std::string runtimeStudy(const Study& study, double accuracy) {
   toml::table t;
   try {
     t = toml::parse_file(study.path);
@@ -116,6 +128,10 @@ std::string runtimeStudy(const Study& study) {
   if (auto* s = t["study"].as_table()) s->insert_or_assign("vehicle", "vehicle.toml");
   t.erase("scenarios");
   t.erase("lab");
+  if (accuracy > 0.0) {
+    if (!t.contains("simulation")) t.insert("simulation", toml::table{});
+    if (auto* sim = t["simulation"].as_table()) sim->insert_or_assign("accuracy", accuracy);
+  }
   std::ostringstream os;
   os << "# Written by twin export-fmu from " << study.path
      << ": the study without its scenarios and [lab]\n"
@@ -252,6 +268,7 @@ std::string ExportFmuResult::text() const {
   s += "  assembly " + assembly + " (" + label + "), values: " + values_from + "\n";
   s += "  " + std::to_string(inputs) + " inputs, " + std::to_string(outputs) + " outputs, " +
        std::to_string(parameters) + " parameters; modelIdentifier " + model_identifier + "\n";
+  for (const auto& n : notes) s += "  note: " + n + "\n";
   return s;
 }
 
@@ -267,7 +284,8 @@ ExportFmuResult exportFmu(const Study& study, const ExportFmuRequest& request) {
   const fs::path res = scratch.path / "resources";
   const nlohmann::json config = fmuConfig(v, request, guid);
   writeFileAtomic((res / kCoSimConfig).string(), config.dump(2) + "\n");
-  writeFileAtomic((res / "runtime" / "study.toml").string(), runtimeStudy(study));
+  const double accuracy = calibratedAccuracy(study, v.calibration_summary);
+  writeFileAtomic((res / "runtime" / "study.toml").string(), runtimeStudy(study, accuracy));
   writeFileAtomic((res / "runtime" / "vehicle.toml").string(), readTextFile(study.vehicle_path));
   writeFileAtomic((res / "study.toml").string(), readTextFile(study.path));
   if (!v.calibration_summary.is_null())
@@ -283,6 +301,10 @@ ExportFmuResult exportFmu(const Study& study, const ExportFmuRequest& request) {
   out.model_identifier = id;
   out.guid = guid;
   out.values_from = v.from;
+  if (accuracy > 0.0)
+    out.notes.push_back("integrated at accuracy " + formatNumber(accuracy, 3) +
+                        ", the accuracy the calibration chose its steps at (the study's is " +
+                        formatNumber(study.simulation.accuracy, 3) + ")");
   for (const auto& x : twin.variables()) {
     out.inputs += x.kind == CoSimVariable::Kind::Input;
     out.outputs += x.kind == CoSimVariable::Kind::Output;

@@ -39,6 +39,7 @@ struct ExportFmuResult {
   std::string values_from;  ///< "the optimum of DIR", "draw K of DIR" or "the study's values"
   std::size_t inputs = 0, outputs = 0, parameters = 0;
   std::vector<std::string> libraries;  ///< the binaries/linux64 files
+  std::vector<std::string> notes;      ///< e.g. the calibration's tighter integrator accuracy
   std::size_t bytes = 0;
   double wall_s = 0.0;
   /// Lines a front end prints.

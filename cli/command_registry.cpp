@@ -84,6 +84,12 @@ const Registry<CommandEntry>& commandRegistry() {
            "ones first (Holm's rule, family-wise 5 %), as text, changes.json and changes.html",
            {&addChangesCommand, false, kCommandGroups[1],
             "list the values that changed between two calibrations of one car", false}},
+          {"export-fmu",
+           "Export one assembly with its calibrated values (and any --effect, --set) as an FMI "
+           "2.0 co-simulation FMU for linux64: inputs the speed, the road under each wheel and an "
+           "actuator force per strut; outputs every channel (docs/fmu.md)",
+           {&addExportFmuCommand, false, kCommandGroups[2],
+            "export a calibrated assembly as an FMI 2.0 co-simulation FMU", false}},
           {"list",
            "Show the assemblies, scenarios, calibrated parameters, effects and channels a study "
            "defines",

@@ -86,6 +86,7 @@ bool progressOn(bool quiet, const Distributed* processes);
 
 CommandHandle addSimulateCommand(CLI::App& root, const CommandContext& context);
 CommandHandle addListCommand(CLI::App& root, const CommandContext& context);
+CommandHandle addExportFmuCommand(CLI::App& root, const CommandContext& context);
 CommandHandle addBenchCommand(CLI::App& root, const CommandContext& context);
 /// `twin generate lab|field`: synthetic measurements (study/generate.hpp, docs/data-files.md).
 CommandHandle addGenerateCommand(CLI::App& root, const CommandContext& context);

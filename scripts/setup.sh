@@ -16,7 +16,8 @@ PKGS=(build-essential cmake ninja-build pkg-config git
       python3-build python3-setuptools python3-wheel python3-venv   # the wheel and its test (docs/install.md)
       file                    # cpack -G DEB: which files dpkg-shlibdeps reads (docs/install.md)
       clang-format            # the format check of the tests (scripts/format_check.sh, .clang-format)
-      libopenmpi-dev openmpi-bin)   # MPI: `mpirun -n K twin ...` (docs/cluster.md)
+      libopenmpi-dev openmpi-bin    # MPI: `mpirun -n K twin ...` (docs/cluster.md)
+      libxml2-dev libminizip-dev libxml2-utils)   # fmusim and xmllint for the FMU's tests (third_party/reference-fmus)
 # `setup.sh demo`: only what the demo needs (no test framework, no browser for the report test, no
 # MPI: the demo runs in one process, and MPI's 80 packages, gfortran among them, add about 105 MB;
 # no matplotlib: the demo builds the Python module but plots nothing with it; no mypy: it checks
@@ -25,7 +26,7 @@ PKGS=(build-essential cmake ninja-build pkg-config git
 if [ "${1:-}" = "demo" ]; then
   keep=()
   for p in "${PKGS[@]}"; do
-    case "$p" in googletest|libgtest-dev|libgmock-dev|chromium|libopenmpi-dev|openmpi-bin|python3-matplotlib|mypy|python3-build|python3-setuptools|python3-wheel|python3-venv|file|clang-format) ;; *) keep+=("$p") ;; esac
+    case "$p" in googletest|libgtest-dev|libgmock-dev|chromium|libxml2-dev|libminizip-dev|libxml2-utils|libopenmpi-dev|openmpi-bin|python3-matplotlib|mypy|python3-build|python3-setuptools|python3-wheel|python3-venv|file|clang-format) ;; *) keep+=("$p") ;; esac
   done
   PKGS=("${keep[@]}")
 fi

@@ -229,6 +229,47 @@ std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const 
   return y;
 }
 
+double LowPassStream::start(double u) {
+  x_[0] = u;
+  x_[1] = 0.0;
+  u_ = u;
+  return u;
+}
+
+double LowPassStream::step(double u, double h) {
+  if (f_.order == 0) return u_ = u;
+  DTWIN_CHECK(f_.order <= 2 && h > 0 && f_.cutoff_hz > 0, "LowPassStream: bad filter or step");
+  const int n = f_.order;
+  if (h != h_) {  // lowPass's augmented matrix, exponentiated for this spacing
+    const double wc = 2.0 * kPi * f_.cutoff_hz;
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 2, n + 2);
+    if (n == 1) {
+      M(0, 0) = -wc;
+      M(0, 1) = wc;
+    } else {
+      M(0, 1) = 1.0;
+      M(1, 0) = -wc * wc;
+      M(1, 1) = -2.0 * f_.damping * wc;
+      M(1, 2) = wc * wc;
+    }
+    M(n, n + 1) = 1.0;
+    const Eigen::MatrixXd E = (M * h).exp();
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n + 2; ++j) E_[i][j] = E(i, j);
+    h_ = h;
+  }
+  const double slope = (u - u_) / h;
+  double next[2] = {0.0, 0.0};
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) next[i] += E_[i][j] * x_[j];
+    next[i] += E_[i][n] * u_ + E_[i][n + 1] * slope;
+  }
+  x_[0] = next[0];
+  x_[1] = next[1];
+  u_ = u;
+  return x_[0];
+}
+
 namespace {
 ParameterSpec sensorParameter(std::string name, std::string unit, std::string description,
                               double off, double lo, bool lo_inclusive, double prior_lo,

@@ -100,6 +100,25 @@ Motion chassisAxisHeight(const Motion& world_z, const Motion& heave, const Motio
 /// the error is at most max|H| (ω/rate_hz)²/8 (the linear reading's). Order 0 returns u.
 std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const SensorFilter& f);
 
+/// lowPass one sample at a time, at any spacing (a co-simulation's outputs, one per communication
+/// point): the same exact discretisation (the input linear between samples), so at the output
+/// grid's spacing it gives lowPass's numbers.
+class LowPassStream {
+ public:
+  explicit LowPassStream(const SensorFilter& f) : f_(f) {}
+  /// The first sample: the filter at rest at `u`; returns it.
+  double start(double u);
+  /// The next sample `u`, `h` [s] after the last; returns the filter's output there.
+  double step(double u, double h);
+
+ private:
+  SensorFilter f_;
+  double x_[2] = {0.0, 0.0};  ///< the filter's state
+  double u_ = 0.0;            ///< the last input
+  double h_ = -1.0;           ///< the spacing E_ was made for
+  double E_[2][4] = {};       ///< exp(M h)'s first rows (lowPass's M)
+};
+
 /// How a logger may have distorted a channel (twin diagnose's sensor candidates,
 /// docs/diagnosis.md):
 ///   lowpass   a first-order low-pass,           parameter time_constant_s τ = 1/ωc (off: 0)

@@ -40,6 +40,9 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       // (neither includes the other).
       {"cli", {"common", "study", "cli"}},
       {"python", {"common", "study", "python"}},
+      // The runtime of the FMU `twin export-fmu` writes: FMI calls translated into study/'s
+      // co-simulation twin (study/cosim.hpp), at the level of cli/.
+      {"fmu", {"common", "study", "fmu"}},
   };
   return a;
 }
@@ -47,7 +50,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
 const std::set<std::string>& projectFolders() {
   static const std::set<std::string> f = {
       "common",    "subsystems", "twin",   "io",  "calibration", "classification",
-      "diagnosis", "study",      "report", "cli", "python"};
+      "diagnosis", "study",      "report", "cli", "python",      "fmu"};
   return f;
 }
 

@@ -319,6 +319,7 @@ class StrutElement : public Force::Custom::Implementation {
     const double* p = ctx_->p;
     LawValueBuffer buf;
     double F = law_->calcForce(ss, lawValues(buf));
+    if (corner_ >= 0) F += ctx_->actuator_N[static_cast<std::size_t>(corner_)];
     if (effects_) {
       const auto& effs = m_->effects();
       for (std::size_t i = 0; i < effs.size(); ++i)

@@ -18,14 +18,16 @@ class Recorder {
   void finish(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
               RunResult& res) const;
 
+  /// The output channels at the ascending times `ts` (within the knots' span), from the cubic
+  /// Hermite interpolant of the knots: the integrator's dense output, whatever the times. The
+  /// sensors unfiltered (their filters run on the output grid: makeOutput).
+  void writeRows(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
+                 const std::vector<double>& ts, Trace& tr) const;
+
  private:
   /// The output grid (output_rate_hz) over the knots' span, the filtered sensors filtered.
   void makeOutput(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
                   Trace& tr) const;
-  /// The output channels at the ascending times `ts` (within the knots' span), from the cubic
-  /// Hermite interpolant of the knots: the integrator's dense output, whatever the times.
-  void writeRows(const Knots& knots, const std::vector<double>& times, const ScenarioSpec& sc,
-                 const std::vector<double>& ts, Trace& tr) const;
   using Knot = std::array<double, knot::KNOT>;
   /// Prescribed hubs: `st` set to the body's coordinates and auxiliary states interpolated between
   /// knots `a` and `b` (span h, fraction u) at time t, realised to accelerations.

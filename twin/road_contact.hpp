@@ -76,6 +76,10 @@ struct RunContext {
   /// deflection at each corner at the start (StaticStart): the hub rides R0 minus it above the
   /// signal.
   std::array<double, 4> hub_rho{};
+  /// An actuator force in each main strut (Corner order; strut sign: positive pushes the body up
+  /// and the wheel down), set from outside the twin between steps (a co-simulation's controller,
+  /// twin/stepped_run.hpp). Zero in every other run.
+  std::array<double, 4> actuator_N{};
   /// Where corner `c` meets the road signal (roadSignalForms): the signal's weight there (gain
   /// included) and how far ahead [m] it reads the signal. At every form's default (0) exactly
   /// the gain and no read-ahead.

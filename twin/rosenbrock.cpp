@@ -436,6 +436,16 @@ struct RosenbrockIntegrator::Impl : rosenbrock_detail::Ros34pw2Core {
     realize(state);
   }
 
+  void refreshDerivative() {
+    if (!initialized) throw std::logic_error(who + ": refreshDerivative() before initialize()");
+    state.invalidateAllCacheAtOrAbove(SimTK::Stage::Time);
+    realize(state);
+    readYDot(state, f0);
+    if (!f0.allFinite())
+      throw std::runtime_error(
+          who + ": non-finite state derivative after the inputs changed at t = " + fmt(t) + " s");
+  }
+
   void initialize(const SimTK::State& s) {
     if (s.getNQErr() + s.getNUErr() + s.getNUDotErr() > 0)
       throw std::invalid_argument(
@@ -475,6 +485,7 @@ RosenbrockIntegrator::RosenbrockIntegrator(RosenbrockIntegrator&&) noexcept = de
 RosenbrockIntegrator& RosenbrockIntegrator::operator=(RosenbrockIntegrator&&) noexcept = default;
 
 void RosenbrockIntegrator::initialize(const SimTK::State& s) { impl_->initialize(s); }
+void RosenbrockIntegrator::refreshDerivative() { impl_->refreshDerivative(); }
 void RosenbrockIntegrator::setMaximumStepSize(double h) { impl_->setMaximumStepSize(h); }
 void RosenbrockIntegrator::step(double t_stop) { impl_->step(t_stop); }
 void RosenbrockIntegrator::stepTo(double t_next, bool new_jacobian) {

@@ -82,6 +82,11 @@ class RosenbrockIntegrator {
   /// std::invalid_argument for an unsupported system (constraints, quaternions) and
   /// std::runtime_error if the initial state derivative is not finite.
   void initialize(const SimTK::State& s);
+  /// The system's inputs changed between steps (a force element reads other values from now on,
+  /// e.g. a co-simulation's road or actuator inputs): the current State's cache is invalidated and
+  /// its derivative, the next step's first stage, evaluated again. The Jacobian and the proposed
+  /// step are kept (a W-method tolerates a Jacobian taken before the change).
+  void refreshDerivative();
   /// Largest step from now on (may be changed between steps); overrides options.max_step_s.
   void setMaximumStepSize(double h);
   /// One accepted step, never beyond t_stop (lands exactly on t_stop when within reach).

@@ -47,7 +47,6 @@ class Stepper {
                      bool record_start, Knots& knots, std::vector<double>& times, State* end,
                      StepControl steps = {});
 
- private:
   /// Appends the knot of `s` (realized to accelerations here if it is not yet) and its time.
   void record(const State& s, Knots& knots, std::vector<double>& times);
   std::unique_ptr<Integrator> makeIntegrator(const std::string& method);

@@ -113,7 +113,7 @@ TEST(HelpText, GroupsTheCommandsByTask) {
     EXPECT_NE(r.out.find(s), std::string::npos) << s << " in\n" << r.out;
   const std::vector<std::string> expected = {
       "simulate", "generate", "calibrate", "coverage", "synthesize", "classify", "study", "report",
-      "import",   "compare",  "diagnose",  "changes",  "list",       "bench",    "help"};
+      "import",   "compare",  "diagnose",  "changes",  "export-fmu", "list",     "bench", "help"};
   EXPECT_EQ(listedCommands(r.out), expected) << r.out;
   EXPECT_EQ(r.out.find("Griddy"), std::string::npos) << "tasks, not internals";
   // `twin` alone and `twin help` print the same overview.

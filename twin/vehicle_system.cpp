@@ -61,14 +61,19 @@ void VehicleSystem::build(bool filter_states, bool link_hubs) {
   std::vector<StrutElement*> slider_elems;
   const Rotation xToZ(-Pi / 2, YAxis);  // a slider's x axis along the parent's z
   const Rotation zToX(Pi / 2, YAxis);   // a pin's z axis along the parent's x
+  const double z_wc =
+      -(d.cg_height - M.table().value("tire.unloaded_radius_m"));  // wheel centre below CG
+  // A wheel carrier slides along the chassis z: the chassis's roll and pitch carry it sideways and
+  // fore-aft, m_w z_wc² each. With the hubs' motion prescribed there is no wheel body to carry it,
+  // so the chassis does (the same kinetic energy; the vertical motion stays the signal's).
+  const double carried = prescribed_hubs ? 4.0 * d.wheel_mass * z_wc * z_wc : 0.0;
   heave =
       MobilizedBody::Slider(matter.Ground(), Transform(xToZ), Body::Massless(), Transform(xToZ));
   chassis = MobilizedBody::Universal(
       heave, Transform(),
-      Body::Rigid(MassProperties(d.chassis_mass, Vec3(0), Inertia(d.ixx, d.iyy, d.izz))),
+      Body::Rigid(MassProperties(d.chassis_mass, Vec3(0),
+                                 Inertia(d.ixx + carried, d.iyy + carried, d.izz))),
       Transform());
-  const double z_wc =
-      -(d.cg_height - M.table().value("tire.unloaded_radius_m"));  // wheel centre below CG
   const Body::Rigid wheelBody(MassProperties(d.wheel_mass, Vec3(0), Inertia(1e-3)));
   std::vector<std::pair<MobilizedBody, double>> massive = {{chassis, d.chassis_mass}};
   for (int c = 0; c < 4; ++c) {

@@ -27,6 +27,7 @@ const std::string kSrc = DTWIN_SOURCE_DIR;
 
 /// Imports drive `name` into DIR/drive (the study with the drive as scenario `drive`).
 fs::path importDrive(const fs::path& dir, const std::string& name) {
+  fs::create_directories(dir);
   const auto r = dtwin_test::runTwin(
       "import --log " + kSrc + "/data/drives/fleet_car_" + name + ".csv --map " + kSrc +
           "/data/drives/fleet_car_map.toml --study " + kSrc +

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
@@ -13,6 +15,7 @@ namespace {
 
 struct ChangesConfig {
   std::string before, after, out;
+  std::vector<std::string> calibrations, dates;
   double level = 0.05;
   bool quiet = false;
 };
@@ -24,9 +27,12 @@ int runChanges(const ChangesConfig& cfg, const std::string& command) {
   req.out = cfg.out;
   req.level = cfg.level;
   req.command = command;
-  const diag::ChangeReport r = detectChanges(req);
+  req.calibrations = cfg.calibrations;
+  req.dates = cfg.dates;
+  const std::string text =
+      cfg.calibrations.empty() ? detectChanges(req).text() : detectChangesOverDrives(req).text();
   if (!cfg.quiet) {
-    std::printf("%s", r.text().c_str());
+    std::printf("%s", text.c_str());
     if (!cfg.out.empty())
       std::printf("wrote %s, %s\n",
                   (std::filesystem::path(cfg.out) / "changes.json").string().c_str(),
@@ -42,10 +48,17 @@ CommandHandle addChangesCommand(CLI::App& root, const CommandContext& context) {
   auto cfg = std::make_shared<ChangesConfig>();
   auto* c = addSubcommand(root, "changes");
   c->add_option("--before", cfg->before,
-                "The first drive's calibration folder (twin calibrate's OUT/<id>)")
-      ->required();
-  c->add_option("--after", cfg->after, "The second drive's calibration folder, of the same car")
-      ->required();
+                "The first drive's calibration folder (twin calibrate's OUT/<id>)");
+  c->add_option("--after", cfg->after, "The second drive's calibration folder, of the same car");
+  c->add_option("--calibrations", cfg->calibrations,
+                "Instead of --before/--after: three or more calibration folders of one car, in "
+                "any order (comma separated or repeated); ordered by their drives' dates")
+      ->delimiter(',');
+  c->add_option("--dates", cfg->dates,
+                "With --calibrations: each drive's date YYYY-MM-DD[THH:MM:SS], in their order; "
+                "default: the date of each calibration's data (twin import of a log with dated "
+                "clock times)")
+      ->delimiter(',');
   c->add_option(
       "--out", cfg->out,
       "Output folder: changes.json and changes.html (the list as a page); default: print only");

@@ -93,6 +93,16 @@ CommandHandle addImportCommand(CLI::App& root, const CommandContext& context) {
                 "road velocity)");
   c->add_option("--road-left", cfg->request.road_left, "Left track's road column, COLUMN:UNIT");
   c->add_option("--road-right", cfg->request.road_right, "Right track's road column, COLUMN:UNIT");
+  static const char* kWheels[4][2] = {{"--road-fl", "front-left"},
+                                      {"--road-fr", "front-right"},
+                                      {"--road-rl", "rear-left"},
+                                      {"--road-rr", "rear-right"}};
+  for (std::size_t w = 0; w < 4; ++w)
+    c->add_option(kWheels[w][0], cfg->request.road_wheels[w],
+                  std::string("The ") + kWheels[w][1] +
+                      " wheel's own motion, COLUMN:UNIT[:OFFSET[:SCALE]] (m, mm: height; m/s: "
+                      "velocity; m/s^2, g: acceleration, gravity removed by the offset); all "
+                      "four wheels or none");
   c->add_option("--channel", cfg->request.channels,
                 "A measured channel, COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]] (repeatable), e.g. "
                 "az:seat_mps2:g:1");

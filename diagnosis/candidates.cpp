@@ -335,7 +335,7 @@ std::vector<std::string> cornerCandidates(const Study& study, const AssemblySpec
 
 std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpec& assembly,
                                            const std::vector<std::string>& channels,
-                                           bool measured_road) {
+                                           bool measured_road, bool each_wheel) {
   std::vector<std::string> out = study.effectCatalog().names();
   for (const auto& f : freeableOf(assembly)) out.push_back(kFree + f);
   for (const auto& f : cornerCandidates(study, assembly)) out.push_back(f);
@@ -345,8 +345,10 @@ std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpe
   if (measured_road) {
     out.push_back(std::string(kFree) + kRoadGain);
     out.push_back(std::string(kFree) + kRoadDelay);
+    // Each wheel's own motion: where the signal enters is known (each column is its wheel's).
     for (const auto& f : roadSignalForms())
-      if (!calibratedInStudy(study, f.name) && study.parameterTable().value(f.name) == 0.0)
+      if (!each_wheel && !calibratedInStudy(study, f.name) &&
+          study.parameterTable().value(f.name) == 0.0)
         out.push_back(std::string(kFree) + f.name);
     if (assembly.option("tire") != "hub") out.push_back("tire=hub");
   }

@@ -96,10 +96,11 @@ CandidateSpec candidateSpec(const std::string& name, const Study& study,
 /// measured (sensorPlaceCandidates); when `measured_road` (a data set's road is a measured
 /// signal, RoadSetting::measured), the road signal's gain, delay and place (each form of
 /// roadSignalForms the study leaves at 0) and, unless the assembly has it, the hub input
-/// (tire=hub).
+/// (tire=hub). With `each_wheel` (every data set's road is each wheel's own measured motion, a
+/// four-corner road) the signal's places are known and left out: only its gain and delay stay.
 std::vector<std::string> defaultCandidates(const Study& study, const AssemblySpec& assembly,
                                            const std::vector<std::string>& channels,
-                                           bool measured_road = false);
+                                           bool measured_road = false, bool each_wheel = false);
 
 /// The sensor-place candidates of the default catalogue: "free:sensors.NAME.x_m" and ".y_m" for
 /// each chassis sensor whose channel is in `channels`, whose position the study does not declare

@@ -332,16 +332,26 @@ bool measuredRoad(const Study& study, const std::vector<calib::DataSet>& sets) {
   return false;
 }
 
+/// Whether every data set's road is each wheel's own measured motion (a four-corner road).
+bool eachWheelRoad(const Study& study, const std::vector<calib::DataSet>& sets) {
+  for (const auto& s : sets) {
+    const auto j = study.scenario(s.scenario).road->toJson();
+    if (!j.is_object() || !j.contains("tracks") || j["tracks"] != "four corners") return false;
+  }
+  return !sets.empty();
+}
+
 std::vector<std::string> catalogueOf(const Study& study, const AssemblySpec& assembly,
                                      const DiagnoseOptions& options,
                                      const std::vector<std::string>& channels,
                                      std::map<std::string, CandidateSpec>& specs,
-                                     bool measured_road) {
+                                     bool measured_road, bool each_wheel) {
   const OptionCheck check("diagnose");
   const auto installed = refuseInstalled(study, assembly, options);
   std::vector<std::string> catalogue =
-      options.effects.empty() ? defaultCandidates(study, assembly, channels, measured_road)
-                              : options.effects;
+      options.effects.empty()
+          ? defaultCandidates(study, assembly, channels, measured_road, each_wheel)
+          : options.effects;
   // The default catalogue leaves out what the model has already: an installed effect, a value the
   // study calibrates (a named one is refused by candidateSpec).
   const auto calibrated = [&](const std::string& e) {
@@ -437,8 +447,8 @@ std::vector<StageWork> estimateDiagnoseWork(const Study& study, const AssemblySp
     for (const auto& ch : s.data.channels())
       if (std::find(channels.begin(), channels.end(), ch) == channels.end()) channels.push_back(ch);
   std::map<std::string, CandidateSpec> specs;
-  for (const auto& e :
-       catalogueOf(study, assembly, options, channels, specs, measuredRoad(study, fit))) {
+  for (const auto& e : catalogueOf(study, assembly, options, channels, specs,
+                                   measuredRoad(study, fit), eachWheelRoad(study, fit))) {
     const auto groups = probesOf(0, specs.at(e));
     for (const auto& g : groups) catalogue_probes += static_cast<double>(g.cols.size());
     most_effect_params =
@@ -504,7 +514,7 @@ DiagnosisResult diagnose(const Study& study, const AssemblySpec& assembly,
   refuseInstalled(study, assembly, options);  // before the data are read
   prepareData(d, fit, holdout);
   d.catalogue = catalogueOf(study, assembly, options, d.res.fitted_channels, d.specs,
-                            measuredRoad(study, fit));
+                            measuredRoad(study, fit), eachWheelRoad(study, fit));
   d.res.base = d.calibrateWith({}, "base");
   addRangeCandidates(d);
   screen(d);

@@ -85,6 +85,8 @@ struct LogRows {
   std::vector<std::vector<double>> road, values;
   std::vector<std::vector<double>> mask;  ///< per mask: |value| in SI, NaN for an empty cell
   long dropped_cells = 0;
+  /// A clock time column with dates: the first row's day (days since 1970-01-01, UTC); else -1.
+  long first_day = -1;
 };
 
 /// The rows of an MF4 log (mdf_import.cpp): the mapped channels, each found by name (or

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -252,6 +253,17 @@ ImportUnits resolveUnits(const ImportMapping& m, const std::vector<Channel>& kno
   return u;
 }
 
+/// "YYYY-MM-DDTHH:MM:SS.sssZ": `seconds` after the midnight of `day` (days since 1970-01-01).
+std::string utcText(long day, double seconds) {
+  const double whole = std::floor(seconds);
+  const std::time_t t = static_cast<std::time_t>(day) * 86400 + static_cast<std::time_t>(whole);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[40];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S", &tm);
+  return buf + formatPrintf(".%03dZ", std::min(999, static_cast<int>((seconds - whole) * 1000)));
+}
+
 /// Clock times (unit "clock") count from the first row's day. Without a date, a time that falls
 /// back by more than 12 hours is the next day (a drive past midnight).
 class ClockCounter {
@@ -260,17 +272,21 @@ class ClockCounter {
   bool seconds(std::string_view cell, bool first, double& out) {
     ClockTime c;
     if (!parseClockTime(cell, c)) return false;
-    if (first)
+    if (first) {
       day0_ = c.day;
-    else if (!c.has_date && c.seconds < previous_ - 43200.0)
+      dated_ = c.has_date;
+    } else if (!c.has_date && c.seconds < previous_ - 43200.0)
       ++day_;
     if (c.has_date) day_ = c.day - day0_;
     previous_ = c.seconds;
     out = static_cast<double>(day_) * 86400.0 + c.seconds;
     return true;
   }
+  /// The first row's day (days since 1970-01-01), or -1 when it had no date.
+  long firstDay() const { return dated_ ? day0_ : -1; }
 
  private:
+  bool dated_ = false;
   long day0_ = 0, day_ = 0;
   double previous_ = 0.0;
 };
@@ -294,6 +310,7 @@ class LogRowReader {
       if (progress && (rows_.t.size() & 4095) == 0) progress("import", csv_.offset(), csv_.size());
     }
     if (progress) progress("import", csv_.size(), csv_.size());
+    rows_.first_day = clock_.firstDay();
     return std::move(rows_);
   }
 
@@ -577,32 +594,34 @@ nlohmann::json importSidecar(const ImportResult& res, const std::string& log_tex
                     {"offset", c.source.offset},
                     {"scale", c.source.scale}});
   const nlohmann::json rj = roadSidecar(m, u);
-  return {{"made_by", "twin import"},
-          {"program", programInfo()},
-          {"created_utc", utcNow()},
-          {"scenario", {{"name", res.scenario}, {"duration_s", res.duration_s}}},
-          {"source",
-           {{"file", log_name},
-            {"content", hexId(fnv1a64(log_text))},
-            {"rows", res.rows},
-            {"t0_s", res.t0_s}}},
-          {"mapping",
-           {{"file", m.source},
-            {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
-            {"speed",
-             {{"column", m.speed->column},
-              {"unit", m.speed->unit},
-              {"lowpass_hz", m.speed_lowpass_hz}}},
-            {"road", rj},
-            {"channels", cols},
-            {"max_dropout_rows", m.max_dropout_rows},
-            {"header_line", m.header_line},
-            {"skip_rows", m.skip_rows},
-            {"decimal_comma", m.decimal_comma}}},
-          {"dropped_cells", res.dropped_cells},
-          {"window", windowJson(res, m)},
-          {"records", res.data.records.size()},
-          {"study", base_study}};
+  return {
+      {"made_by", "twin import"},
+      {"program", programInfo()},
+      {"created_utc", utcNow()},
+      {"scenario", {{"name", res.scenario}, {"duration_s", res.duration_s}}},
+      {"source",
+       {{"file", log_name},
+        {"content", hexId(fnv1a64(log_text))},
+        {"rows", res.rows},
+        {"t0_s", res.t0_s},
+        {"start_utc", res.start_utc.empty() ? nlohmann::json() : nlohmann::json(res.start_utc)}}},
+      {"mapping",
+       {{"file", m.source},
+        {"time", {{"column", m.time.column}, {"unit", m.time.unit}}},
+        {"speed",
+         {{"column", m.speed->column},
+          {"unit", m.speed->unit},
+          {"lowpass_hz", m.speed_lowpass_hz}}},
+        {"road", rj},
+        {"channels", cols},
+        {"max_dropout_rows", m.max_dropout_rows},
+        {"header_line", m.header_line},
+        {"skip_rows", m.skip_rows},
+        {"decimal_comma", m.decimal_comma}}},
+      {"dropped_cells", res.dropped_cells},
+      {"window", windowJson(res, m)},
+      {"records", res.data.records.size()},
+      {"study", base_study}};
 }
 
 }  // namespace
@@ -638,6 +657,7 @@ ImportResult importLog(const std::string& log_text, const std::string& log_name,
   smoothSpeed(m, t, rows.v);
   res.start_m = span.start_m(t, rows.v);
   res.t0_s = log_t0 + t[span.first];
+  if (rows.first_day >= 0) res.start_utc = utcText(rows.first_day, res.t0_s);
   // Times from the run's first row, rounded to 1 ns (so 100.0129 - 100 is written 0.0129).
   const double shift = t[span.first];
   std::vector<double> tr(span.last + 1 - span.first), vr(tr.size());

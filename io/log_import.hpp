@@ -126,7 +126,10 @@ struct ImportResult {
   long outside_window = 0;
   std::vector<std::pair<std::string, long>> masked;
   double start_m = 0.0;  ///< the distance travelled before the run's start (0 without a window)
-  LabData data;          ///< the measurements (repetition 1), times from 0
+  /// The run's first row as a UTC date and time ("2026-03-09T07:35:00.000Z") when the log's time
+  /// column is a clock time with dates; "" otherwise. `twin changes` orders drives by it.
+  std::string start_utc;
+  LabData data;                              ///< the measurements (repetition 1), times from 0
   std::string lab_csv, speed_csv, road_csv;  ///< file texts (road_csv empty: flat road)
   std::string study_toml;  ///< the study with the drive's scenario and the mapping's sensors
   nlohmann::json sidecar;  ///< how the files were made

@@ -312,6 +312,7 @@ py::object importLog(const Arguments& a) {
   req.road = a.str("road");
   req.road_left = a.str("road_left");
   req.road_right = a.str("road_right");
+  req.road_wheels = {a.str("road_fl"), a.str("road_fr"), a.str("road_rl"), a.str("road_rr")};
   req.separator = a.str("separator");
   req.channels = a.strings("channel");
   req.highpass_hz = a.optionalReal("highpass_hz").value_or(0.0);
@@ -319,10 +320,11 @@ py::object importLog(const Arguments& a) {
   req.window = a.window("window");
   req.run_in = a.optionalReal("run_in").value_or(-1.0);
   CallText call("python: dtwin.import_log(");
-  addAll(
-      call, a,
-      {"log", "map", "out", "study", "scenario", "time", "speed", "road", "road_left", "road_right",
-       "channel", "highpass_hz", "speed_lowpass_hz", "separator", "window", "run_in"});
+  addAll(call, a,
+         {"log",     "map",     "out",       "study",       "scenario",         "time",
+          "speed",   "road",    "road_left", "road_right",  "road_fl",          "road_fr",
+          "road_rl", "road_rr", "channel",   "highpass_hz", "speed_lowpass_hz", "separator",
+          "window",  "run_in"});
   req.command = call.str();
   Callbacks callbacks(a["progress"], a.flag("quiet"));
   const StageProgress stage_progress = callbacks.progress();

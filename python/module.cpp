@@ -211,6 +211,10 @@ void bindImport(py::module_& m) {
                                                          .arg("road", T::Str)
                                                          .arg("road_left", T::Str)
                                                          .arg("road_right", T::Str)
+                                                         .arg("road_fl", T::Str)
+                                                         .arg("road_fr", T::Str)
+                                                         .arg("road_rl", T::Str)
+                                                         .arg("road_rr", T::Str)
                                                          .arg("channel", T::Names)
                                                          .arg("highpass_hz", T::Float)
                                                          .arg("speed_lowpass_hz", T::Float)
@@ -227,7 +231,8 @@ void bindImport(py::module_& m) {
       table
           ->doc(
               R"(A logger's CSV or MF4 log into OUT/ (measurements.csv + .json, speed.csv, road.csv, study.toml), as
-`twin import`: the mapping from `map` (a TOML file) or from time/speed/road/channel. Returns the
+`twin import`: the mapping from `map` (a TOML file) or from time/speed/road (or road_left/road_right,
+or each wheel's own motion road_fl/road_fr/road_rl/road_rr, all four)/channel. Returns the
 measurements.json dict; OUT/study.toml is the study that holds the drive (scenario `scenario`).)")
           .c_str());
 }

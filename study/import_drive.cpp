@@ -30,7 +30,36 @@ void applyWindowFlags(const ImportRequest& cfg, ImportMapping& m) {
   }
 }
 
-/// The mapping from the command line: --time, --speed, --road | --road-left/--road-right,
+bool anyWheel(const ImportRequest& cfg) {
+  for (const auto& w : cfg.road_wheels)
+    if (!w.empty()) return true;
+  return false;
+}
+
+/// --road-fl, --road-fr, --road-rl, --road-rr: each wheel's own motion, all four or none, not with
+/// --road or --road-left/--road-right (as the mapping file's road_fl..road_rr).
+void wheelsFromFlags(const ImportRequest& cfg, ImportMapping& m) {
+  static const char* kFlags[4] = {"--road-fl", "--road-fr", "--road-rl", "--road-rr"};
+  if (!anyWheel(cfg)) return;
+  for (std::size_t c = 0; c < 4; ++c) {
+    if (cfg.road_wheels[c].empty()) continue;
+    if (m.road || m.road_left)
+      throw InputError(kFlags[c], std::string("give either ") +
+                                      (m.road ? "--road" : "--road-left and --road-right") +
+                                      " (the road under the axles) or --road-fl, --road-fr, "
+                                      "--road-rl and --road-rr (each wheel's own motion)");
+  }
+  for (std::size_t c = 0; c < 4; ++c)
+    if (cfg.road_wheels[c].empty())
+      throw InputError(kFlags[c],
+                       "is required with the other wheels' columns (--road-fl, --road-fr, "
+                       "--road-rl and --road-rr: all four or none)");
+  for (std::size_t c = 0; c < 4; ++c)
+    m.road_wheels[c] = parseImportColumn(cfg.road_wheels[c], kFlags[c]);
+}
+
+/// The mapping from the command line: --time, --speed, --road | --road-left/--road-right |
+/// --road-fl..--road-rr,
 /// --channel COL:CHANNEL:UNIT[:OFFSET[:SCALE]] (repeatable).
 ImportMapping mappingFromFlags(const ImportRequest& cfg) {
   ImportMapping m;
@@ -53,6 +82,7 @@ ImportMapping mappingFromFlags(const ImportRequest& cfg) {
     m.road_left = parseImportColumn(cfg.road_left, "--road-left");
     m.road_right = parseImportColumn(cfg.road_right, "--road-right");
   }
+  wheelsFromFlags(cfg, m);
   if (cfg.highpass_hz > 0) {
     m.highpass_hz = cfg.highpass_hz;
     m.highpass_given = true;
@@ -78,8 +108,9 @@ ImportMapping mappingFromFlags(const ImportRequest& cfg) {
 
 ImportMapping importMapping(const ImportRequest& cfg) {
   const bool flags = !cfg.time.empty() || !cfg.speed.empty() || !cfg.road.empty() ||
-                     !cfg.road_left.empty() || !cfg.road_right.empty() || !cfg.channels.empty() ||
-                     cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 || !cfg.separator.empty();
+                     !cfg.road_left.empty() || !cfg.road_right.empty() || anyWheel(cfg) ||
+                     !cfg.channels.empty() || cfg.highpass_hz > 0 || cfg.speed_lowpass_hz > 0 ||
+                     !cfg.separator.empty();
   if (!cfg.map.empty() && flags)
     throw InputError("--map",
                      "give the mapping either in the file or as flags (--time, --speed, --road, "

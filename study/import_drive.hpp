@@ -3,6 +3,7 @@
 // columns given one by one), into the twin's files and a study that holds the drive
 // (io/log_import.hpp, docs/measurements.md). The CLI and the Python module fill the request
 // from their flags and keywords, call, and print.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct ImportRequest {
   /// The mapping without a file (--time, --speed, --road, --road-left, --road-right, --channel
   /// COLUMN:CHANNEL:UNIT[:OFFSET[:SCALE]], --separator); all empty with a mapping file.
   std::string time, speed, road, road_left, road_right, separator;
+  /// Each wheel's own motion (--road-fl, --road-fr, --road-rl, --road-rr, COLUMN:UNIT[:OFFSET[:
+  /// SCALE]]): all four or none, not with road or road_left/road_right; fl, fr, rl, rr.
+  std::array<std::string, 4> road_wheels;
   std::vector<std::string> channels;
   double highpass_hz = 0.0, speed_lowpass_hz = 0.0;  ///< 0: not given
   std::vector<double> window;  ///< START,END (s from the log's first row); empty: the mapping's

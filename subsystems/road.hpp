@@ -39,6 +39,10 @@ class Road {
   /// The antiderivative under corner `corner` (integral(cornerTrack(corner), x) but on a
   /// four-corner road).
   virtual double integralAt(int corner, double x) const { return integral(cornerTrack(corner), x); }
+  /// True on a four-corner road (CornerRoad): each wheel's profile is that wheel's own motion,
+  /// the rear ones already at their own times, so a road-signal form reads a rear wheel's without
+  /// the wheelbase's read-ahead (twin/road_contact.hpp, RunContext::signalAt).
+  virtual bool eachWheelOwn() const { return false; }
   /// Mean height over [x - L/2, x + L/2] and its derivative with respect to x.
   RoadSample sampleAveraged(Track t, double x, double L) const;
   /// Range of x over which the profile is defined (outside it, the end value is held).
@@ -115,6 +119,7 @@ class CornerRoad final : public Road {
   Interval extent() const override;
   std::vector<Interval> obstacles() const override;
   nlohmann::json describe() const override { return description_; }
+  bool eachWheelOwn() const override { return true; }
   const Road& front() const { return *front_; }
   const Road& rear() const { return *rear_; }
 

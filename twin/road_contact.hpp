@@ -82,7 +82,8 @@ struct RunContext {
   std::array<double, 4> actuator_N{};
   /// Where corner `c` meets the road signal (roadSignalForms): the signal's weight there (gain
   /// included) and how far ahead [m] it reads the signal. At every form's default (0) exactly
-  /// the gain and no read-ahead.
+  /// the gain and no read-ahead. On a four-corner road (Road::eachWheelOwn) a rear wheel's column
+  /// is its own motion at its own time already: no form reads it ahead.
   void signalAt(int c, double& weight, double& ahead_m) const {
     weight = p[gain_slot];
     ahead_m = 0.0;
@@ -95,7 +96,7 @@ struct RunContext {
       lag += l * forms[f].no_lag[c];
     }
     if (w != 1.0) weight *= w;
-    if (lag != 0.0) ahead_m = lag * wheelbase;
+    if (lag != 0.0 && !road->eachWheelOwn()) ahead_m = lag * wheelbase;
   }
 };
 

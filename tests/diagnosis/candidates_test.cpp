@@ -412,6 +412,12 @@ TEST(Candidates, TheRoadSignalsFormsAreInputCandidatesOfAMeasuredRoad) {
   for (const auto& f : roadSignalForms())
     EXPECT_EQ(std::count(measured.begin(), measured.end(), std::string("free:") + f.name), 1)
         << f.name;
+  // Each wheel's own motion (a four-corner road): the places are known, the gain and delay stay.
+  const auto wheels = defaultCandidates(s, a, kHub, true, true);
+  for (const auto& f : roadSignalForms())
+    EXPECT_EQ(std::count(wheels.begin(), wheels.end(), std::string("free:") + f.name), 0) << f.name;
+  EXPECT_EQ(std::count(wheels.begin(), wheels.end(), "free:road.gain"), 1);
+  EXPECT_EQ(std::count(wheels.begin(), wheels.end(), "free:road.delay_s"), 1);
   const auto fl = candidateSpec("free:road.fl_only", s, a, kHub, "t");
   EXPECT_EQ(fl.kind, "input");
   EXPECT_DOUBLE_EQ(fl.parameters[0].default_value, 0.0);

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -131,4 +133,84 @@ TEST(CornerImport, BadWheelCombinationsAreOneLineErrors) {
   e = errorOf(dir, kHead + no_offset + kChannel);
   EXPECT_NE(e.find("import.road_fl"), std::string::npos) << e;
   EXPECT_NE(e.find("reads gravity too"), std::string::npos) << e;
+}
+
+// The same mapping given as flags (--road-fl COLUMN:UNIT:OFFSET, ...): the same road.csv, byte for
+// byte, as the mapping file's; three of the four, or the four beside --road, are one line naming
+// the flag, exit 2, nothing written.
+TEST(CornerImport, TheFourWheelsAsFlagsAreTheMappingFilesRoad) {
+  const fs::path dir = dtwin_test::freshDir("corner_import_flags");
+  dtwin_test::writeText(dir / "log.csv", makeLog());
+  const std::string channel = R"(
+[[import.channels]]
+column = "az"
+channel = "chassis_heave_acc_mps2"
+unit = "m/s^2"
+)";
+  dtwin_test::writeText(dir / "map.toml", kHead + fourWheels() + channel);
+  const std::string log = " --log " + (dir / "log.csv").string() + " --quiet --out ";
+  const auto file = dtwin_test::runTwin(
+      "import" + log + (dir / "a").string() + " --map " + (dir / "map.toml").string(), dir);
+  ASSERT_EQ(file.code, 0) << file.err;
+  const std::string base = "import" + log +
+                           "%OUT% --time t:s --speed v:m/s --channel "
+                           "az:chassis_heave_acc_mps2:m/s^2";
+  auto with = [&](const std::string& out, const std::string& extra) {
+    std::string args = base;
+    args.replace(args.find("%OUT%"), 5, (dir / out).string());
+    return dtwin_test::runTwin(args + extra, dir);
+  };
+  const std::string wheels =
+      " --road-fl a_fl:g:1 --road-fr a_fr:g:1 --road-rl a_rl:g:1 --road-rr a_rr:g:1";
+  const auto flags = with("b", wheels);
+  ASSERT_EQ(flags.code, 0) << flags.err;
+  const std::string a = dtwin_test::slurp(dir / "a" / "road.csv"),
+                    b = dtwin_test::slurp(dir / "b" / "road.csv");
+  EXPECT_EQ(a.substr(0, a.find('\n')), "time_s,fl_mps2,fr_mps2,rl_mps2,rr_mps2");
+  EXPECT_EQ(a, b);
+  const auto three = with("c", " --road-fl a_fl:g:1 --road-fr a_fr:g:1 --road-rl a_rl:g:1");
+  EXPECT_EQ(three.code, 2);
+  EXPECT_NE(three.err.find("twin: error: --road-rr: is required with the other wheels' columns"),
+            std::string::npos)
+      << three.err;
+  const auto both = with("d", " --road a_fl:mm" + wheels);
+  EXPECT_EQ(both.code, 2);
+  EXPECT_NE(both.err.find("--road-fl: give either --road"), std::string::npos) << both.err;
+  const auto gravity = with("e",
+                            " --road-fl a_fl:g --road-fr a_fr:g:1 --road-rl a_rl:g:1 "
+                            "--road-rr a_rr:g:1");
+  EXPECT_EQ(gravity.code, 2);
+  EXPECT_NE(gravity.err.find("--road-fl: column 'a_fl' reads"), std::string::npos) << gravity.err;
+  for (const char* out : {"c", "d", "e"}) EXPECT_FALSE(fs::exists(dir / out)) << out;
+}
+
+// A time column of dated clock times: the sidecar records the run's first row as a UTC date and
+// time (source.start_utc), which `twin changes` orders a car's drives by; a window moves it to the
+// run's start; plain seconds record none.
+TEST(CornerImport, ADatedClockRecordsTheDrivesStart) {
+  std::string log = "t,v,a_fl,a_fr,a_rl,a_rr,az\n";
+  for (int k = 0; k <= 600; ++k) {
+    // From 07:33:00.00 UTC at 100 Hz, written as local time with its UTC offset.
+    char t[64];
+    std::snprintf(t, sizeof t, "2026-03-09T09:%02d:%02d.%02d+02:00", 33 + k / 6000, k / 100 % 60,
+                  k % 100);
+    log += std::string(t) + ",8,1,1,1,1,0\n";
+  }
+  const fs::path dir = dtwin_test::freshDir("corner_import_date");
+  dtwin_test::writeText(
+      dir / "map.toml",
+      std::string("[import]\ntime = { column = \"t\", unit = \"clock\" }\nspeed = "
+                  "{ column = \"v\", unit = \"m/s\" }\n") +
+          fourWheels() + kChannel);
+  ImportMapping m = readImportMapping((dir / "map.toml").string());
+  EXPECT_EQ(importLog(log, "log.csv", m, kDemo, "drive").sidecar["source"]["start_utc"],
+            "2026-03-09T07:33:00.000Z");
+  m.window_s = std::array<double, 2>{3.0, 5.0};
+  m.run_in_s = 1.0;
+  EXPECT_EQ(importLog(log, "log.csv", m, kDemo, "drive").sidecar["source"]["start_utc"],
+            "2026-03-09T07:33:02.000Z");
+  dtwin_test::writeText(dir / "plain.toml", kHead + fourWheels() + kChannel);
+  const ImportResult plain = importLog(
+      makeLog(), "log.csv", readImportMapping((dir / "plain.toml").string()), kDemo, "drive");
+  EXPECT_TRUE(plain.sidecar["source"]["start_utc"].is_null());
 }

@@ -121,6 +121,17 @@ double wheelbaseOf(const fs::path& dir) {
   return st.makeModel(st.assemblies().front(), {})->vehicle().wheelbase();
 }
 
+/// The run values of `r`'s model with the road-signal form `name` at share 1.
+std::vector<double> withForm(const Runs& r, const std::string& name) {
+  std::vector<double> v = r.model->defaultRunValues();
+  std::size_t form = 0;
+  while (form < roadSignalForms().size() && roadSignalForms()[form].name != name) ++form;
+  EXPECT_LT(form, roadSignalForms().size()) << name;
+  if (form < roadSignalForms().size())
+    v[static_cast<std::size_t>(r.model->roadFormSlot()) + form] = 1.0;
+  return v;
+}
+
 }  // namespace
 
 TEST(CornerHub, TheFrontLeftColumnAloneIsTheFrontLeftForm) {
@@ -134,13 +145,7 @@ TEST(CornerHub, TheFrontLeftColumnAloneIsTheFrontLeftForm) {
   EXPECT_EQ(st.scenario("four").road->toJson()["tracks"], "four corners");
   const Runs r = prepare(st);
   ASSERT_TRUE(r.model->tire().followsSignal());
-  std::vector<double> fl_only = r.model->defaultRunValues();
-  std::size_t form = 0;
-  while (form < roadSignalForms().size() &&
-         std::string(roadSignalForms()[form].name) != "road.fl_only")
-    ++form;
-  ASSERT_LT(form, roadSignalForms().size());
-  fl_only[static_cast<std::size_t>(r.model->roadFormSlot()) + form] = 1.0;
+  const std::vector<double> fl_only = withForm(r, "road.fl_only");
   const RunResult four = r.run("four", r.model->defaultRunValues());
   const RunResult one = r.run("one", fl_only);
   const double worst = worstDifference(four.trace, one.trace);
@@ -169,4 +174,28 @@ TEST(CornerHub, RearColumnsAWheelbaseLateAreTheTwoTrackLog) {
   // The two roads' rear nodes agree to the rounding of their distances; the integrator's steps
   // then part by its tolerance (3e-5 of each channel's change at accuracy 1e-7).
   EXPECT_LT(worst, 2e-4);
+}
+
+// On a four-corner road a rear column is its wheel's own motion at its own time: road.rl_only = 1
+// keeps the rear-left column where it is (no wheelbase's read-ahead, which the form needs on a
+// road under the front axle) and drops the other three.
+TEST(CornerHub, TheRearLeftFormKeepsTheRearLeftColumnAtItsOwnTime) {
+  const fs::path dir = dtwin_test::freshDir("corner_hub_rl");
+  writeLog(dir / "four.csv", "time_s,fl_m,fr_m,rl_m,rr_m", [](int k) {
+    return std::vector<double>{track(0, k), track(1, k), track(2, k), track(3, k)};
+  });
+  writeLog(dir / "rl.csv", "time_s,fl_m,fr_m,rl_m,rr_m", [](int k) {
+    return std::vector<double>{0.0, 0.0, track(2, k), 0.0};
+  });
+  const Study st = hubStudy(dir, 10.0, {"four", "rl"});
+  const Runs r = prepare(st);
+  const RunResult four = r.run("four", withForm(r, "road.rl_only"));
+  const RunResult rl = r.run("rl", r.model->defaultRunValues());
+  const double worst = worstDifference(four.trace, rl.trace);
+  std::printf("road.rl_only on four columns against the rear-left column alone: worst %.3g\n",
+              worst);
+  EXPECT_LT(worst, 1e-6);
+  // The same form on the right rear's column is another run (the check can fail).
+  const RunResult rr = r.run("four", withForm(r, "road.rr_only"));
+  EXPECT_GT(worstDifference(rr.trace, rl.trace), 1e-2);
 }

@@ -278,13 +278,15 @@ TEST(HubInput, PrescribedHubsMoveTheBodyAsTheLinkDoesInFewerSteps) {
                 ch.c_str(), rms(d), dm, rms(centred), 100 * rms(d) / rms(centred));
     EXPECT_LT(rms(d), share * rms(centred)) << ch;
   };
-  // Measured (accuracy 1e-6): accelerations 0.4-1.3 %, displacements 0.02-0.25 %, strut rates
-  // 0.5 %, hub forces 5 % (1.1 % over 10 ms).
+  // Measured (accuracy 1e-6): accelerations 0.4-0.7 %, displacements 0.02-0.03 %, strut rates
+  // 0.5 %, hub forces 5 % (1.1 % over 10 ms). Without the wheel carriers' share of the roll and
+  // pitch inertia on the chassis (twin/vehicle_system.cpp), the accelerations differed by up to
+  // 1.3 % and the displacements by up to 0.25 %.
   for (const char* ch :
        {"chassis_heave_acc_mps2", "chassis_pitch_acc_radps2", "chassis_roll_acc_radps2"})
-    compare(ch, 0.025);
+    compare(ch, 0.012);
   for (const char* ch : {"chassis_heave_m", "chassis_pitch_rad", "chassis_roll_rad"})
-    compare(ch, 0.005);
+    compare(ch, 0.001);
   for (const char* c : {"fl", "fr", "rl", "rr"}) {
     compare(std::string("susp_defl_") + c + "_m", 0.005);
     compare(std::string("susp_rate_") + c + "_mps", 0.01);

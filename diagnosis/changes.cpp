@@ -40,18 +40,6 @@ double lowerBound(const calib::CalibrationFolder& f, const std::string& name) {
   return std::nan("");
 }
 
-std::vector<std::string> parameterNames(const calib::CalibrationFolder& f) {
-  std::vector<std::string> names;
-  const auto& s = f.summary;
-  if (s.contains("parameter_order") && s["parameter_order"].is_array()) {
-    for (const auto& n : s["parameter_order"])
-      if (n.is_string()) names.push_back(n.get<std::string>());
-  } else if (s.contains("parameters") && s["parameters"].is_object()) {
-    for (const auto& [k, v] : s["parameters"].items()) names.push_back(k);
-  }
-  return names;
-}
-
 std::string number(double v) { return formatNumber(v, 4); }
 
 std::string describe(const ValueChange& c) {
@@ -84,6 +72,18 @@ std::string describe(const ValueChange& c) {
 }
 
 }  // namespace
+
+std::vector<std::string> parameterNames(const calib::CalibrationFolder& f) {
+  std::vector<std::string> names;
+  const auto& s = f.summary;
+  if (s.contains("parameter_order") && s["parameter_order"].is_array()) {
+    for (const auto& n : s["parameter_order"])
+      if (n.is_string()) names.push_back(n.get<std::string>());
+  } else if (s.contains("parameters") && s["parameters"].is_object()) {
+    for (const auto& [k, v] : s["parameters"].items()) names.push_back(k);
+  }
+  return names;
+}
 
 ValueEstimate valueEstimate(const calib::CalibrationFolder& folder, const std::string& name) {
   const std::string where = summaryPath(folder) + ": parameters." + name;

@@ -61,6 +61,10 @@ struct ChangeReport {
   std::string text() const;
 };
 
+/// The values a calibration folder holds, in its summary.json's parameter_order (or the keys of
+/// its "parameters" when that order is absent).
+std::vector<std::string> parameterNames(const calib::CalibrationFolder& f);
+
 /// The estimate of `name` in a calibration's summary.json (InputError naming summary.json and the
 /// field when the parameter's optimum or ci95 is missing or not finite, or lo > hi).
 ValueEstimate valueEstimate(const calib::CalibrationFolder& folder, const std::string& name);

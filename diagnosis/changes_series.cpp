@@ -16,18 +16,6 @@ namespace {
 const double kSeriesZ975 = normalQuantile(0.975);
 constexpr double kDaysPerYear = 365.25;
 
-std::vector<std::string> namesOf(const calib::CalibrationFolder& f) {
-  std::vector<std::string> names;
-  const auto& s = f.summary;
-  if (s.contains("parameter_order") && s["parameter_order"].is_array()) {
-    for (const auto& n : s["parameter_order"])
-      if (n.is_string()) names.push_back(n.get<std::string>());
-  } else if (s.contains("parameters") && s["parameters"].is_object()) {
-    for (const auto& [k, v] : s["parameters"].items()) names.push_back(k);
-  }
-  return names;
-}
-
 std::string seriesNumber(double v) { return formatNumber(v, 4); }
 
 std::string dateOnly(const std::string& d) {
@@ -129,9 +117,9 @@ SeriesReport compareSeries(std::vector<DatedCalibration> drives, double level,
                         drives[i].folder.assembly + "): values of the same name are compared");
   }
   // The values every drive calibrated.
-  std::vector<std::string> names = namesOf(drives.front().folder);
+  std::vector<std::string> names = parameterNames(drives.front().folder);
   for (std::size_t i = 1; i < drives.size(); ++i) {
-    const auto other = namesOf(drives[i].folder);
+    const auto other = parameterNames(drives[i].folder);
     for (const auto& n : names)
       if (std::find(other.begin(), other.end(), n) == other.end())
         r.notes.push_back(n + " is not calibrated in " + drives[i].folder.dir + ": left out");

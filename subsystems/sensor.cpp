@@ -196,13 +196,12 @@ Motion chassisAxisHeight(const Motion& world_z, const Motion& heave, const Motio
   return m;
 }
 
-std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const SensorFilter& f) {
-  if (f.order == 0 || u.empty()) return u;
-  DTWIN_CHECK(f.order <= 2 && rate_hz > 0 && f.cutoff_hz > 0, "lowPass: bad filter or rate");
-  const double wc = 2.0 * kPi * f.cutoff_hz, h = 1.0 / rate_hz;
+namespace {
+/// One step h of the filter x' = A x + B u, y = x_0, augmented with the input u and its slope s
+/// (constant over a step): [x; u; s]' = M [x; u; s], the step exp(M h).
+Eigen::MatrixXd lowPassStep(const SensorFilter& f, double h) {
+  const double wc = 2.0 * kPi * f.cutoff_hz;
   const int n = f.order;
-  // The filter x' = A x + B u, y = x_0, augmented with the input u and its slope s (constant over a
-  // step): [x; u; s]' = M [x; u; s]. One step is exp(M h).
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 2, n + 2);
   if (n == 1) {
     M(0, 0) = -wc;
@@ -214,7 +213,15 @@ std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const 
     M(1, 2) = wc * wc;
   }
   M(n, n + 1) = 1.0;
-  const Eigen::MatrixXd E = (M * h).exp();
+  return (M * h).exp();
+}
+}  // namespace
+
+std::vector<double> lowPass(const std::vector<double>& u, double rate_hz, const SensorFilter& f) {
+  if (f.order == 0 || u.empty()) return u;
+  DTWIN_CHECK(f.order <= 2 && rate_hz > 0 && f.cutoff_hz > 0, "lowPass: bad filter or rate");
+  const int n = f.order;
+  const Eigen::MatrixXd E = lowPassStep(f, 1.0 / rate_hz);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   x(0) = u[0];
   std::vector<double> y(u.size());
@@ -241,19 +248,7 @@ double LowPassStream::step(double u, double h) {
   DTWIN_CHECK(f_.order <= 2 && h > 0 && f_.cutoff_hz > 0, "LowPassStream: bad filter or step");
   const int n = f_.order;
   if (h != h_) {  // lowPass's augmented matrix, exponentiated for this spacing
-    const double wc = 2.0 * kPi * f_.cutoff_hz;
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 2, n + 2);
-    if (n == 1) {
-      M(0, 0) = -wc;
-      M(0, 1) = wc;
-    } else {
-      M(0, 1) = 1.0;
-      M(1, 0) = -wc * wc;
-      M(1, 1) = -2.0 * f_.damping * wc;
-      M(1, 2) = wc * wc;
-    }
-    M(n, n + 1) = 1.0;
-    const Eigen::MatrixXd E = (M * h).exp();
+    const Eigen::MatrixXd E = lowPassStep(f_, h);
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n + 2; ++j) E_[i][j] = E(i, j);
     h_ = h;
